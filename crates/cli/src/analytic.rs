@@ -1,0 +1,110 @@
+//! `frictrack analytic`: the closed-form steady state of an infinite beam on a viscoelastic foundation under a
+//! moving load (MODEL.md §8), at one speed or as a dynamic-amplification curve over a speed range.
+
+use crate::Format;
+use anyhow::{Context, Result, bail};
+use clap::Args;
+use fem_beam::reference::{InfiniteBeam, uic60_on_soft_soil};
+use serde::Serialize;
+
+/// Options of `frictrack analytic`.
+#[derive(Debug, Args)]
+pub struct AnalyticArgs {
+    /// Load speed (m/s).
+    #[arg(long, conflicts_with = "speeds", required_unless_present = "speeds")]
+    speed: Option<f64>,
+    /// Speed range A:B:STEP (m/s) for a dynamic-amplification curve.
+    #[arg(long)]
+    speeds: Option<String>,
+    /// Foundation damping ratio ζ = c_f / c_cr (needed > 0 at and above the critical speed).
+    #[arg(long, default_value_t = 0.0)]
+    damping_ratio: f64,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = Format::Text)]
+    format: Format,
+}
+
+#[derive(Debug, Serialize)]
+struct Point {
+    speed: f64,
+    max_downward_deflection: f64,
+    max_downward_position: f64,
+    max_upward_deflection: f64,
+    max_upward_position: f64,
+    amplification_downward: f64,
+    amplification_upward: f64,
+}
+
+/// Parse `A:B:STEP` into the list of speeds A, A+STEP, … ≤ B (inclusive up to round-off).
+pub fn parse_range(text: &str) -> Result<Vec<f64>> {
+    let parts: Vec<&str> = text.split(':').collect();
+    if parts.len() != 3 {
+        bail!("invalid speed range `{text}`: expected A:B:STEP, e.g. 10:300:5");
+    }
+    let num = |s: &str, what: &str| {
+        s.trim().parse::<f64>().with_context(|| format!("invalid {what} `{s}` in speed range `{text}`"))
+    };
+    let (a, b, step) = (num(parts[0], "start")?, num(parts[1], "end")?, num(parts[2], "step")?);
+    if !(a.is_finite() && b.is_finite() && step.is_finite() && a >= 0.0 && b >= a && step > 0.0) {
+        bail!("invalid speed range `{text}`: need 0 ≤ A ≤ B and STEP > 0");
+    }
+    let count = ((b - a) / step + 1e-9).floor() as usize + 1;
+    if count > 1_000_000 {
+        bail!("invalid speed range `{text}`: {count} points, at most 1 000 000 allowed");
+    }
+    Ok((0..count).map(|i| a + i as f64 * step).collect())
+}
+
+/// Execute `frictrack analytic`.
+pub fn run(args: &AnalyticArgs) -> Result<()> {
+    let case = uic60_on_soft_soil();
+    let foundation = case.foundation.with_damping_ratio(args.damping_ratio, &case.beam)?;
+    let inf = InfiniteBeam::new(&case.beam, &foundation)?;
+    let speeds = match (&args.speeds, args.speed) {
+        (Some(range), _) => parse_range(range)?,
+        (None, Some(v)) => vec![v],
+        (None, None) => bail!("give --speed V or --speeds A:B:STEP"),
+    };
+    let w0 = inf.static_deflection(case.load);
+    let mut points = Vec::with_capacity(speeds.len());
+    for v in speeds {
+        let e = inf.steady_state(v, case.load)?.extremes();
+        points.push(Point {
+            speed: v,
+            max_downward_deflection: e.max_downward.magnitude,
+            max_downward_position: e.max_downward.position,
+            max_upward_deflection: e.max_upward.magnitude,
+            max_upward_position: e.max_upward.position,
+            amplification_downward: e.max_downward.magnitude / w0,
+            amplification_upward: e.max_upward.magnitude / w0,
+        });
+    }
+    match (args.format, points.len()) {
+        (Format::Json, 1) => println!("{}", serde_json::to_string_pretty(&points[0])?),
+        (Format::Json, _) => println!("{}", serde_json::to_string_pretty(&points)?),
+        (Format::Text, _) => {
+            println!(
+                "infinite UIC60 beam on soft soil, F = {:.1} kN, ζ = {}, v_cr = {:.2} m/s, static w₀ = {:.2} mm",
+                case.load / 1e3,
+                args.damping_ratio,
+                inf.critical_speed(),
+                w0 * 1e3
+            );
+            println!("  speed (m/s)  max down (mm)  at s (m)  max up (mm)  at s (m)   DAF down  DAF up");
+            for p in &points {
+                println!(
+                    "  {:>10.2}  {:>13.3}  {:>8.2}  {:>11.3}  {:>8.2}  {:>8.3}  {:>6.3}",
+                    p.speed,
+                    p.max_downward_deflection * 1e3,
+                    p.max_downward_position,
+                    p.max_upward_deflection * 1e3,
+                    p.max_upward_position,
+                    p.amplification_downward,
+                    p.amplification_upward
+                );
+            }
+            println!("  (s = x − vt: positive ahead of the load)");
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,59 @@
+//! Runs the `frictrack` binary and checks its output and exit codes.
+
+use std::process::{Command, Output};
+
+fn frictrack(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_frictrack")).args(args).output().expect("run frictrack")
+}
+
+fn json(output: &Output) -> serde_json::Value {
+    assert!(output.status.success(), "stderr: {}", String::from_utf8_lossy(&output.stderr));
+    serde_json::from_slice(&output.stdout).expect("stdout is one JSON value")
+}
+
+#[test]
+fn run_reports_reference_case_against_closed_form() {
+    let out = frictrack(&["run", "--format", "json"]);
+    let v = json(&out);
+    let w = v["midspan_deflection"].as_f64().unwrap();
+    let w0 = v["midspan_deflection_closed_form"].as_f64().unwrap();
+    assert!((w - w0).abs() / w0.abs() < 1e-4, "{w} vs {w0}");
+    assert!((w0 + 52.40e-3).abs() < 0.005e-3);
+    assert_eq!(v["modes"].as_array().unwrap().len(), 5);
+    let text = frictrack(&["run"]);
+    assert!(text.status.success());
+    assert!(String::from_utf8_lossy(&text.stdout).contains("critical speed v_cr = 205.57 m/s"));
+}
+
+#[test]
+fn analytic_matches_model_md_value() {
+    let v = json(&frictrack(&["analytic", "--speed", "200", "--damping-ratio", "0.05", "--format", "json"]));
+    // MODEL.md §8: 176.17 mm at v = 200 m/s, ζ = 0.05.
+    let w = v["max_downward_deflection"].as_f64().unwrap();
+    assert!((w - 0.17617).abs() < 0.5e-5, "{w}");
+    let curve = json(&frictrack(&["analytic", "--speeds", "10:300:10", "--damping-ratio", "0.1", "--format", "json"]));
+    let points = curve.as_array().unwrap();
+    assert_eq!(points.len(), 30);
+    let peak = points
+        .iter()
+        .max_by(|a, b| {
+            a["max_downward_deflection"].as_f64().partial_cmp(&b["max_downward_deflection"].as_f64()).unwrap()
+        })
+        .unwrap();
+    let v_peak = peak["speed"].as_f64().unwrap();
+    assert!((190.0..=210.0).contains(&v_peak), "peak at {v_peak}");
+}
+
+#[test]
+fn invalid_input_exits_2_with_a_named_field() {
+    let out = frictrack(&["run", "--elements", "0"]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("mesh.elements"), "{err}");
+    let out = frictrack(&["analytic", "--speed", "250"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("damping > 0"));
+    let out = frictrack(&["analytic", "--speeds", "10:5:1"]);
+    assert_ne!(out.status.code(), Some(0));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("speed range"));
+}

@@ -1,0 +1,156 @@
+//! Global assembly of the semi-discrete beam–foundation system M q̈ + C q̇ + K q = f (MODEL.md §3).
+//!
+//! M = Σ ρA·l/420·P, K = Σ (EI/l³·[…] + k_f·l/420·P), C = Σ c_f,e·l/420·P over the elements, assembled into
+//! [`SymmetricBanded`] matrices over the free DOFs (half-bandwidth 3). The foundation damping may vary from element
+//! to element (absorbing end zones); by default it is the uniform c_f of the [`Foundation`].
+
+use crate::banded::SymmetricBanded;
+use crate::element::{ElementMatrix, hermite};
+use crate::error::{FemError, Result};
+use crate::mesh::Mesh;
+use crate::properties::{Beam, Foundation};
+use crate::supports::{DofMap, Supports};
+
+/// Half-bandwidth of assembled Hermite beam matrices.
+pub const BANDWIDTH: usize = 3;
+
+/// The assembled beam on its foundation: parameters, DOF map and the banded M, C, K over the free DOFs.
+#[derive(Debug, Clone)]
+pub struct BeamModel {
+    beam: Beam,
+    foundation: Foundation,
+    mesh: Mesh,
+    supports: Supports,
+    dofs: DofMap,
+    element_damping: Vec<f64>,
+    mass: SymmetricBanded,
+    stiffness: SymmetricBanded,
+    damping: SymmetricBanded,
+}
+
+impl BeamModel {
+    /// Validate the parameters and assemble, with the foundation's uniform damping on every element.
+    pub fn new(beam: Beam, foundation: Foundation, mesh: Mesh, supports: Supports) -> Result<Self> {
+        mesh.validate()?;
+        let damping = vec![foundation.damping; mesh.elements];
+        Self::with_element_damping(beam, foundation, mesh, supports, damping)
+    }
+
+    /// Validate and assemble with a foundation damping c_f,e (N·s/m²) given per element (e.g. graded absorbing
+    /// zones at the ends). `foundation.damping` is then only informative.
+    pub fn with_element_damping(
+        beam: Beam,
+        foundation: Foundation,
+        mesh: Mesh,
+        supports: Supports,
+        element_damping: Vec<f64>,
+    ) -> Result<Self> {
+        beam.validate()?;
+        foundation.validate()?;
+        mesh.validate()?;
+        if element_damping.len() != mesh.elements {
+            return Err(FemError::LengthMismatch {
+                what: "element damping",
+                actual: element_damping.len(),
+                expected: mesh.elements,
+            });
+        }
+        if let Some(&bad) = element_damping.iter().find(|c| !(c.is_finite() && **c >= 0.0)) {
+            return Err(FemError::InvalidField {
+                field: "foundation.damping (element)",
+                value: bad,
+                allowed: "must be finite and ≥ 0",
+            });
+        }
+        let dofs = DofMap::new(mesh.nodes(), supports);
+        let l = mesh.element_length();
+        let me = hermite::consistent_mass(beam.mass_per_length(), l);
+        let ke = Self::element_stiffness_of(&beam, &foundation, l);
+        let n = dofs.free_len();
+        let (mut mass, mut stiffness, mut damping) = (
+            SymmetricBanded::zeros(n, BANDWIDTH),
+            SymmetricBanded::zeros(n, BANDWIDTH),
+            SymmetricBanded::zeros(n, BANDWIDTH),
+        );
+        for e in 0..mesh.elements {
+            let ce = hermite::consistent_mass(element_damping[e], l);
+            let free: [Option<usize>; 4] = std::array::from_fn(|k| dofs.free_index(2 * e + k));
+            for a in 0..4 {
+                for b in 0..=a {
+                    if let (Some(i), Some(j)) = (free[a], free[b]) {
+                        mass.add(i, j, me[a][b]);
+                        stiffness.add(i, j, ke[a][b]);
+                        damping.add(i, j, ce[a][b]);
+                    }
+                }
+            }
+        }
+        Ok(Self { beam, foundation, mesh, supports, dofs, element_damping, mass, stiffness, damping })
+    }
+
+    fn element_stiffness_of(beam: &Beam, foundation: &Foundation, l: f64) -> ElementMatrix {
+        let kb = hermite::bending_stiffness(beam.bending_stiffness(), l);
+        let kf = hermite::consistent_mass(foundation.stiffness, l);
+        hermite::combine(1.0, &kb, 1.0, &kf)
+    }
+
+    /// Beam (rail) parameters.
+    pub fn beam(&self) -> &Beam {
+        &self.beam
+    }
+
+    /// Foundation parameters.
+    pub fn foundation(&self) -> &Foundation {
+        &self.foundation
+    }
+
+    /// The mesh.
+    pub fn mesh(&self) -> &Mesh {
+        &self.mesh
+    }
+
+    /// The end supports.
+    pub fn supports(&self) -> Supports {
+        self.supports
+    }
+
+    /// Full ↔ free DOF map.
+    pub fn dofs(&self) -> &DofMap {
+        &self.dofs
+    }
+
+    /// Foundation damping c_f of each element (N·s/m²).
+    pub fn element_damping(&self) -> &[f64] {
+        &self.element_damping
+    }
+
+    /// Mass matrix M (free DOFs).
+    pub fn mass(&self) -> &SymmetricBanded {
+        &self.mass
+    }
+
+    /// Stiffness matrix K, bending plus foundation (free DOFs).
+    pub fn stiffness(&self) -> &SymmetricBanded {
+        &self.stiffness
+    }
+
+    /// Damping matrix C from the foundation dashpots (free DOFs).
+    pub fn damping(&self) -> &SymmetricBanded {
+        &self.damping
+    }
+
+    /// Element stiffness (bending + foundation), identical for all elements.
+    pub fn element_stiffness(&self) -> ElementMatrix {
+        Self::element_stiffness_of(&self.beam, &self.foundation, self.mesh.element_length())
+    }
+
+    /// Element mass matrix, identical for all elements.
+    pub fn element_mass(&self) -> ElementMatrix {
+        hermite::consistent_mass(self.beam.mass_per_length(), self.mesh.element_length())
+    }
+
+    /// Element damping matrix of element `e`.
+    pub fn element_damping_matrix(&self, e: usize) -> ElementMatrix {
+        hermite::consistent_mass(self.element_damping[e], self.mesh.element_length())
+    }
+}

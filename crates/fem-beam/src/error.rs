@@ -1,0 +1,85 @@
+//! The error type of the `fem-beam` crate.
+
+use thiserror::Error;
+
+/// Everything that can go wrong when building or solving a beam model.
+///
+/// Every variant names what was wrong; no input to this crate makes it panic.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum FemError {
+    /// A parameter is out of its allowed range (or not finite).
+    #[error("invalid {field} = {value}: {allowed}")]
+    InvalidField {
+        /// Name of the parameter, e.g. `beam.youngs_modulus`.
+        field: &'static str,
+        /// The offending value.
+        value: f64,
+        /// What is allowed, in words.
+        allowed: &'static str,
+    },
+    /// A count (elements, modes, …) is out of its allowed range.
+    #[error("invalid {field} = {value}: {allowed}")]
+    InvalidCount {
+        /// Name of the parameter.
+        field: &'static str,
+        /// The offending value.
+        value: usize,
+        /// What is allowed, in words.
+        allowed: &'static str,
+    },
+    /// A vector does not have the length the model expects.
+    #[error("{what} has length {actual}, expected {expected}")]
+    LengthMismatch {
+        /// Which vector.
+        what: &'static str,
+        /// Its length.
+        actual: usize,
+        /// The expected length.
+        expected: usize,
+    },
+    /// A symmetric matrix that must be positive definite is not: the LDLᵀ factorisation met a pivot ≤ 0.
+    /// Typically a beam with no supports and no foundation (a rigid-body mode).
+    #[error(
+        "matrix is not positive definite: pivot {pivot:e} at equation {index} (is the beam free to move as a rigid body?)"
+    )]
+    NonPositivePivot {
+        /// Equation (free-DOF index) where the factorisation failed.
+        index: usize,
+        /// The pivot found there.
+        pivot: f64,
+    },
+    /// The closed-form infinite-beam steady state does not exist for these parameters (undamped at or above
+    /// the critical speed: the response is unbounded or needs a radiation condition).
+    #[error(
+        "no bounded steady state at speed {speed} m/s with damping ratio {damping_ratio} (critical speed {critical_speed:.3} m/s): at or above the critical speed the foundation needs damping > 0"
+    )]
+    NoSteadyState {
+        /// Load speed (m/s).
+        speed: f64,
+        /// Foundation damping ratio ζ = c_f / c_cr.
+        damping_ratio: f64,
+        /// Critical speed of the system (m/s).
+        critical_speed: f64,
+    },
+}
+
+/// Result alias of this crate.
+pub type Result<T, E = FemError> = std::result::Result<T, E>;
+
+/// Check that `value` is finite and strictly positive.
+pub(crate) fn positive(field: &'static str, value: f64) -> Result<f64> {
+    if value.is_finite() && value > 0.0 {
+        Ok(value)
+    } else {
+        Err(FemError::InvalidField { field, value, allowed: "must be finite and > 0" })
+    }
+}
+
+/// Check that `value` is finite and non-negative.
+pub(crate) fn non_negative(field: &'static str, value: f64) -> Result<f64> {
+    if value.is_finite() && value >= 0.0 {
+        Ok(value)
+    } else {
+        Err(FemError::InvalidField { field, value, allowed: "must be finite and ≥ 0" })
+    }
+}

@@ -1,0 +1,38 @@
+//! # fem-beam: an Euler–Bernoulli rail on a viscoelastic Winkler foundation
+//!
+//! The first layer of frictrack (MODEL.md §2–§3): Hermite cubic beam elements on [0, L], the consistent mass
+//! ρA·l/420·[…], bending stiffness EI/l³·[…] and consistent foundation stiffness/damping k_f·l/420·[…],
+//! c_f·l/420·[…], assembled into symmetric banded matrices of half-bandwidth 3 over the DOFs left free by the
+//! supports, for the semi-discrete equation M q̈ + C q̇ + K q = f. Units are SI; w is positive upward.
+//!
+//! - [`properties`]: [`Beam`] (E, I, A, ρ) and [`Foundation`] (k_f, c_f) with UIC60 / soft-soil defaults.
+//! - [`mesh`], [`supports`]: the uniform mesh, end supports and the full ↔ free DOF map.
+//! - [`element`]: Hermite shape functions and element matrices; [`assembly`]: the global [`BeamModel`].
+//! - [`banded`]: banded SPD storage and an LDLᵀ factorisation (factor once, solve many times).
+//! - [`load`]: consistent point forces/moments and uniform loads; [`section`]: w, θ, M from a DOF vector.
+//! - [`statics`], [`modal`]: K q = f and K φ = ω² M φ.
+//! - [`reference`]: the reference case and closed-form results (β, w₀, M₀, v_cr, ω_n, moving-load steady state).
+
+pub mod assembly;
+pub mod banded;
+pub mod element;
+pub mod error;
+pub mod load;
+pub mod mesh;
+pub mod modal;
+pub mod properties;
+pub mod reference;
+pub mod section;
+pub mod statics;
+pub mod supports;
+
+pub use assembly::BeamModel;
+pub use banded::{BandedLdlt, SymmetricBanded};
+pub use error::{FemError, Result};
+pub use load::LoadVector;
+pub use mesh::Mesh;
+pub use properties::{Beam, Foundation};
+pub use supports::{DofMap, Support, Supports};
+
+/// Standard gravity g (m/s²), for self-weight.
+pub const GRAVITY: f64 = 9.81;

@@ -1,0 +1,114 @@
+//! Consistent load vectors: point forces and moments anywhere on the beam, uniform distributed loads.
+//!
+//! A point force P at x (N, positive upward) contributes P·N(ξ) to the four DOFs of the one element containing x
+//! (forces *and* moments at its two nodes); a point moment C (N·m, counter-clockwise) contributes C·N′(ξ). A load on
+//! a node is assigned to a single element (see [`Mesh::locate`]), so it is never counted twice. A uniform load q
+//! (N/m) contributes (ql/2, ql²/12, ql/2, −ql²/12) per element.
+//!
+//! Loads are kept per element so that element end forces (hence bending moments at nodes) can be recovered.
+
+use crate::element::{ElementVector, hermite};
+use crate::error::{FemError, Result};
+use crate::mesh::Mesh;
+use crate::supports::DofMap;
+
+/// The consistent nodal loads of one element, in element DOF order.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ElementLoad {
+    /// Element index.
+    pub element: usize,
+    /// Nodal forces (N) and moments (N·m) on (w_a, θ_a, w_b, θ_b).
+    pub nodal: ElementVector,
+}
+
+/// A load case: a list of element contributions.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct LoadVector {
+    contributions: Vec<ElementLoad>,
+}
+
+fn finite(field: &'static str, value: f64) -> Result<f64> {
+    if value.is_finite() { Ok(value) } else { Err(FemError::InvalidField { field, value, allowed: "must be finite" }) }
+}
+
+impl LoadVector {
+    /// No load.
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// A point force `force` (N, positive upward) at `x` (m).
+    pub fn point_force(mesh: &Mesh, x: f64, force: f64) -> Result<Self> {
+        let mut load = Self::new();
+        load.add_point_force(mesh, x, force)?;
+        Ok(load)
+    }
+
+    /// Add a point force `force` (N, positive upward) at `x` (m).
+    pub fn add_point_force(&mut self, mesh: &Mesh, x: f64, force: f64) -> Result<()> {
+        finite("force", force)?;
+        let p = mesh.locate(x)?;
+        let n = hermite::shape(p.xi, mesh.element_length());
+        self.contributions.push(ElementLoad { element: p.element, nodal: n.map(|v| v * force) });
+        Ok(())
+    }
+
+    /// Add a point moment `moment` (N·m, positive counter-clockwise, i.e. work-conjugate to θ = dw/dx) at `x`.
+    pub fn add_point_moment(&mut self, mesh: &Mesh, x: f64, moment: f64) -> Result<()> {
+        finite("moment", moment)?;
+        let p = mesh.locate(x)?;
+        let n = hermite::shape_dx(p.xi, mesh.element_length());
+        self.contributions.push(ElementLoad { element: p.element, nodal: n.map(|v| v * moment) });
+        Ok(())
+    }
+
+    /// A uniform load `per_length` (N/m, positive upward) over the whole beam, e.g. self-weight −ρA·g.
+    pub fn uniform(mesh: &Mesh, per_length: f64) -> Result<Self> {
+        finite("uniform load", per_length)?;
+        let l = mesh.element_length();
+        let nodal = hermite::uniform_load(per_length, l);
+        Ok(Self { contributions: (0..mesh.elements).map(|element| ElementLoad { element, nodal }).collect() })
+    }
+
+    /// Append another load case.
+    pub fn extend(&mut self, other: &LoadVector) {
+        self.contributions.extend_from_slice(&other.contributions);
+    }
+
+    /// The element contributions.
+    pub fn contributions(&self) -> &[ElementLoad] {
+        &self.contributions
+    }
+
+    /// Sum of the element load vectors acting on element `element`.
+    pub fn on_element(&self, element: usize) -> ElementVector {
+        let mut sum = [0.0; 4];
+        for c in self.contributions.iter().filter(|c| c.element == element) {
+            for k in 0..4 {
+                sum[k] += c.nodal[k];
+            }
+        }
+        sum
+    }
+
+    /// Assembled full-DOF vector (length 2·(n_e + 1)).
+    pub fn to_full(&self, mesh: &Mesh) -> Vec<f64> {
+        let mut full = vec![0.0; 2 * mesh.nodes()];
+        for c in &self.contributions {
+            for k in 0..4 {
+                full[2 * c.element + k] += c.nodal[k];
+            }
+        }
+        full
+    }
+
+    /// Assembled free-DOF vector (loads on constrained DOFs are taken by the supports).
+    pub fn to_free(&self, mesh: &Mesh, dofs: &DofMap) -> Vec<f64> {
+        dofs.reduce(&self.to_full(mesh))
+    }
+
+    /// Sum of all nodal forces (the w components), N: equals the total applied force.
+    pub fn total_force(&self) -> f64 {
+        self.contributions.iter().map(|c| c.nodal[0] + c.nodal[2]).sum()
+    }
+}

@@ -1,0 +1,39 @@
+//! Undamped natural frequencies: the generalised eigenproblem K φ = ω² M φ over the free DOFs.
+//!
+//! Solved densely: M = L Lᵀ (Cholesky), then the symmetric standard problem L⁻¹ K L⁻ᵀ y = ω² y. Cost O(n³): fine
+//! for the reference mesh (400 free DOFs, well under a second), meant for verification and reporting rather than
+//! meshes of many thousand DOFs. For the pinned reference beam the closed form is
+//! ω_n² = (EI(nπ/L)⁴ + k_f)/(ρA) (MODEL.md §8).
+
+use crate::assembly::BeamModel;
+use crate::error::{FemError, Result};
+
+impl BeamModel {
+    /// All eigenvalues ω² (rad²/s²) in ascending order. Zero (rigid-body) modes give values at round-off level,
+    /// possibly slightly negative.
+    pub fn eigenvalues(&self) -> Result<Vec<f64>> {
+        let m = self.mass().to_dense();
+        let k = self.stiffness().to_dense();
+        let chol = m.cholesky().ok_or(FemError::NonPositivePivot { index: 0, pivot: f64::NAN })?;
+        let l = chol.l();
+        let x = l.solve_lower_triangular(&k).ok_or(FemError::NonPositivePivot { index: 0, pivot: 0.0 })?;
+        let a = l.solve_lower_triangular(&x.transpose()).ok_or(FemError::NonPositivePivot { index: 0, pivot: 0.0 })?;
+        let a = (&a + a.transpose()) * 0.5;
+        let mut values: Vec<f64> = a.symmetric_eigenvalues().iter().copied().collect();
+        values.sort_by(f64::total_cmp);
+        Ok(values)
+    }
+
+    /// The lowest `count` natural circular frequencies ω (rad/s), ascending; zero modes give 0.
+    pub fn natural_frequencies(&self, count: usize) -> Result<Vec<f64>> {
+        let n = self.dofs().free_len();
+        if count == 0 || count > n {
+            return Err(FemError::InvalidCount {
+                field: "mode count",
+                value: count,
+                allowed: "must be between 1 and the number of free DOFs",
+            });
+        }
+        Ok(self.eigenvalues()?.into_iter().take(count).map(|w2| w2.max(0.0).sqrt()).collect())
+    }
+}

@@ -1,0 +1,87 @@
+//! Physical parameters: the rail as an Euler–Bernoulli beam and the soil as a viscoelastic Winkler foundation.
+//!
+//! Defaults are the reference case of MODEL.md §2: a UIC60 rail (A = 7684 mm², I = 3055 cm⁴, ρ = 7800 kg/m³,
+//! E = 210 GPa, hence EI = 6.4155 MN·m² and ρA = 59.935 kg/m) on a soil of k_f = 250 kN/m², undamped.
+
+use crate::error::{Result, non_negative, positive};
+
+/// Cross-section and material of the rail (an Euler–Bernoulli beam). SI units.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Beam {
+    /// Young's modulus E (Pa). Default 210 GPa; must be > 0.
+    pub youngs_modulus: f64,
+    /// Second moment of area I (m⁴). Default 3055 cm⁴ = 3.055e-5 m⁴ (UIC60); must be > 0.
+    pub second_moment: f64,
+    /// Cross-section area A (m²). Default 7684 mm² = 7.684e-3 m² (UIC60); must be > 0.
+    pub area: f64,
+    /// Density ρ (kg/m³). Default 7800 kg/m³; must be > 0.
+    pub density: f64,
+}
+
+impl Default for Beam {
+    fn default() -> Self {
+        Self { youngs_modulus: 210.0e9, second_moment: 3055.0e-8, area: 7684.0e-6, density: 7800.0 }
+    }
+}
+
+impl Beam {
+    /// Check every field; the error names the first bad one.
+    pub fn validate(&self) -> Result<()> {
+        positive("beam.youngs_modulus", self.youngs_modulus)?;
+        positive("beam.second_moment", self.second_moment)?;
+        positive("beam.area", self.area)?;
+        positive("beam.density", self.density)?;
+        Ok(())
+    }
+
+    /// Bending stiffness EI (N·m²).
+    pub fn bending_stiffness(&self) -> f64 {
+        self.youngs_modulus * self.second_moment
+    }
+
+    /// Mass per unit length ρA (kg/m).
+    pub fn mass_per_length(&self) -> f64 {
+        self.density * self.area
+    }
+}
+
+/// A viscoelastic Winkler foundation: a distributed spring k_f and dashpot c_f per unit length of beam.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Foundation {
+    /// Stiffness k_f (N/m², force per unit length per unit deflection). Default 250 kN/m²; must be ≥ 0.
+    pub stiffness: f64,
+    /// Viscous damping c_f (N·s/m²). Default 0; must be ≥ 0. See [`Foundation::critical_damping`].
+    pub damping: f64,
+}
+
+impl Default for Foundation {
+    fn default() -> Self {
+        Self { stiffness: 250.0e3, damping: 0.0 }
+    }
+}
+
+impl Foundation {
+    /// Check every field; the error names the first bad one.
+    pub fn validate(&self) -> Result<()> {
+        non_negative("foundation.stiffness", self.stiffness)?;
+        non_negative("foundation.damping", self.damping)?;
+        Ok(())
+    }
+
+    /// Critical damping c_cr = 2√(k_f ρA) (N·s/m²); ≈ 7742 N·s/m² for the reference case.
+    pub fn critical_damping(&self, beam: &Beam) -> f64 {
+        2.0 * (self.stiffness * beam.mass_per_length()).sqrt()
+    }
+
+    /// Damping ratio ζ = c_f / c_cr (0 when c_cr = 0).
+    pub fn damping_ratio(&self, beam: &Beam) -> f64 {
+        let critical = self.critical_damping(beam);
+        if critical > 0.0 { self.damping / critical } else { 0.0 }
+    }
+
+    /// The same foundation with c_f = ζ·c_cr. Errors if ζ is negative or not finite.
+    pub fn with_damping_ratio(self, ratio: f64, beam: &Beam) -> Result<Self> {
+        non_negative("foundation.damping_ratio", ratio)?;
+        Ok(Self { damping: ratio * self.critical_damping(beam), ..self })
+    }
+}

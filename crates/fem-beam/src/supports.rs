@@ -1,0 +1,114 @@
+//! End supports and the map between full nodal DOFs and the free DOFs that remain after supports.
+//!
+//! Supports are imposed by removing DOFs: `Pinned` removes w at that end, `Clamped` removes w and θ, `Free`
+//! removes nothing. Full DOFs are ordered (w₀, θ₀, w₁, θ₁, …, w_n, θ_n); free DOFs keep that order, so the
+//! assembled matrices keep half-bandwidth 3.
+
+/// Boundary condition at one end of the beam.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Support {
+    /// w = 0, rotation free (the default, MODEL.md §2).
+    #[default]
+    Pinned,
+    /// w = 0 and θ = 0.
+    Clamped,
+    /// No constraint.
+    Free,
+}
+
+impl Support {
+    /// (w constrained, θ constrained).
+    fn constrains(self) -> (bool, bool) {
+        match self {
+            Support::Pinned => (true, false),
+            Support::Clamped => (true, true),
+            Support::Free => (false, false),
+        }
+    }
+}
+
+/// Supports at both ends.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Supports {
+    /// Support at x = 0. Default pinned.
+    pub left: Support,
+    /// Support at x = L. Default pinned.
+    pub right: Support,
+}
+
+impl Supports {
+    /// The same support at both ends.
+    pub fn both(support: Support) -> Self {
+        Self { left: support, right: support }
+    }
+}
+
+/// Index map between the full nodal DOFs and the free (unconstrained) DOFs.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct DofMap {
+    free_of_full: Vec<Option<usize>>,
+    full_of_free: Vec<usize>,
+}
+
+impl DofMap {
+    /// The map for a mesh with `nodes` nodes and the given end supports.
+    pub fn new(nodes: usize, supports: Supports) -> Self {
+        let full = 2 * nodes;
+        let mut constrained = vec![false; full];
+        let (lw, lt) = supports.left.constrains();
+        let (rw, rt) = supports.right.constrains();
+        constrained[0] = lw;
+        constrained[1] = lt;
+        constrained[full - 2] |= rw;
+        constrained[full - 1] |= rt;
+        let mut free_of_full = vec![None; full];
+        let mut full_of_free = Vec::with_capacity(full);
+        for (dof, &c) in constrained.iter().enumerate() {
+            if !c {
+                free_of_full[dof] = Some(full_of_free.len());
+                full_of_free.push(dof);
+            }
+        }
+        Self { free_of_full, full_of_free }
+    }
+
+    /// Number of full DOFs, 2·(n_e + 1).
+    pub fn full_len(&self) -> usize {
+        self.free_of_full.len()
+    }
+
+    /// Number of free DOFs.
+    pub fn free_len(&self) -> usize {
+        self.full_of_free.len()
+    }
+
+    /// Free index of a full DOF (None if constrained).
+    pub fn free_index(&self, full_dof: usize) -> Option<usize> {
+        self.free_of_full[full_dof]
+    }
+
+    /// Full index of each free DOF, in order.
+    pub fn full_indices(&self) -> &[usize] {
+        &self.full_of_free
+    }
+
+    /// Scatter a free-DOF vector into a full one (constrained DOFs = 0).
+    pub fn expand_into(&self, free: &[f64], full: &mut [f64]) {
+        full.iter_mut().for_each(|v| *v = 0.0);
+        for (k, &dof) in self.full_of_free.iter().enumerate() {
+            full[dof] = free[k];
+        }
+    }
+
+    /// Scatter a free-DOF vector into a new full one.
+    pub fn expand(&self, free: &[f64]) -> Vec<f64> {
+        let mut full = vec![0.0; self.full_len()];
+        self.expand_into(free, &mut full);
+        full
+    }
+
+    /// Gather the free DOFs of a full vector.
+    pub fn reduce(&self, full: &[f64]) -> Vec<f64> {
+        self.full_of_free.iter().map(|&d| full[d]).collect()
+    }
+}

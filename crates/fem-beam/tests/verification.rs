@@ -1,0 +1,11 @@
+//! Verification of the fem-beam layer against closed-form results (MODEL.md §2, §8).
+//! One test binary; each module checks one family of results with stated tolerances.
+
+mod verification {
+    mod banded;
+    mod closed_form;
+    mod frequencies;
+    mod invalid_input;
+    mod loads;
+    mod statics;
+}

@@ -1,0 +1,3 @@
+//! Workspace-level integration tests: results that cross crate boundaries or cover a whole field.
+
+mod static_shape;
