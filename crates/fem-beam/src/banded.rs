@@ -104,13 +104,30 @@ impl SymmetricBanded {
         DMatrix::from_fn(self.n, self.n, |i, j| self.get(i, j))
     }
 
+    /// Overwrite this matrix with `other` (same order and bandwidth), without allocating.
+    pub fn copy_from(&mut self, other: &SymmetricBanded) {
+        assert!(self.n == other.n && self.bandwidth == other.bandwidth, "copy_from of mismatched matrices");
+        self.data.copy_from_slice(&other.data);
+    }
+
     /// Factor A = L D Lᵀ (L unit lower triangular with the same band). Errors with the equation index if a pivot
     /// is not strictly positive (A not positive definite) or not finite.
     pub fn factor(&self) -> Result<BandedLdlt> {
-        let b = self.bandwidth;
+        let mut out = BandedLdlt { n: self.n, bandwidth: self.bandwidth, factors: self.data.clone() };
+        Self::factor_in_place(self.n, self.bandwidth, &mut out.factors)?;
+        Ok(out)
+    }
+
+    /// Factor into existing storage of the same shape (no allocation: for repeated factorisations).
+    pub fn factor_into(&self, out: &mut BandedLdlt) -> Result<()> {
+        assert!(out.n == self.n && out.bandwidth == self.bandwidth, "factor_into of mismatched shapes");
+        out.factors.copy_from_slice(&self.data);
+        Self::factor_in_place(self.n, self.bandwidth, &mut out.factors)
+    }
+
+    fn factor_in_place(n: usize, b: usize, f: &mut [f64]) -> Result<()> {
         let w = b + 1;
-        let mut f = self.data.clone();
-        for i in 0..self.n {
+        for i in 0..n {
             let first = i.saturating_sub(b);
             for j in first..i {
                 // L_ij D_j = A_ij − Σ_{k<j} L_ik L_jk D_k
@@ -130,7 +147,7 @@ impl SymmetricBanded {
             }
             f[i * w + b] = d;
         }
-        Ok(BandedLdlt { n: self.n, bandwidth: b, factors: f })
+        Ok(())
     }
 }
 

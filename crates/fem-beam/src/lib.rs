@@ -13,6 +13,7 @@
 //! - [`statics`], [`modal`]: K q = f and K φ = ω² M φ.
 //! - [`reference`]: the reference case and closed-form results (β, w₀, M₀, v_cr, ω_n, moving-load steady state).
 
+pub mod absorbing;
 pub mod assembly;
 pub mod banded;
 pub mod element;
@@ -26,6 +27,7 @@ pub mod section;
 pub mod statics;
 pub mod supports;
 
+pub use absorbing::AbsorbingZones;
 pub use assembly::BeamModel;
 pub use banded::{BandedLdlt, SymmetricBanded};
 pub use error::{FemError, Result};

@@ -1,4 +1,24 @@
-//! Nonsmooth contact dynamics for frictrack (not yet implemented).
+//! # nscd: nonsmooth contact dynamics for frictrack (MODEL.md §5–§6)
 //!
-//! This crate will hold the Moreau–Jean θ-method stepper, the per-step friction solvers and the energy
-//! bookkeeping of MODEL.md §5–§6. It is empty until the time-stepping issue lands.
+//! The Moreau–Jean θ-method integrates M q̈ + C q̇ + K q ∈ F(t) + R(q̇), the friction R set-valued, with friction
+//! *impulses* per step found by a per-step solver, and an exact discrete energy balance.
+//!
+//! - [`system`], [`forcing`]: the banded linear system and the moving load.
+//! - [`stepper`]: [`MoreauJean`], one step at a time, with its [`EnergyLedger`].
+//! - [`solver`]: projected Gauss–Seidel, augmented-Lagrangian semismooth Newton, Clarabel (feature `clarabel`).
+//! - [`simulation`]: a whole run of the beam under a moving load, with its observers (extremes, histories at
+//!   sections, the global norm W̄, solver statistics).
+
+pub mod error;
+pub mod forcing;
+pub mod simulation;
+pub mod solver;
+pub mod stepper;
+pub mod system;
+
+pub use error::{NscdError, Result};
+pub use forcing::{Forcing, MovingLoad};
+pub use simulation::{InitialState, RunResult, RunSettings, Simulation};
+pub use solver::{SolverKind, SolverSettings, StepReport};
+pub use stepper::{EnergyLedger, Integration, MoreauJean};
+pub use system::LinearSystem;

@@ -1,0 +1,70 @@
+//! The error type of the `nscd` crate.
+
+use thiserror::Error;
+
+/// What can go wrong when setting up or running a simulation.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum NscdError {
+    /// A setting is out of range; names the field, the value and what is allowed.
+    #[error("invalid {field} = {value}: {allowed}")]
+    InvalidField {
+        /// Setting name, e.g. `integration.theta`.
+        field: &'static str,
+        /// The offending value.
+        value: f64,
+        /// What is allowed.
+        allowed: String,
+    },
+    /// The friction solver stopped short of its tolerance.
+    #[error(
+        "friction solver {solver} did not converge at step {step} (t = {time:.6} s): residual {residual:.3e} m/s after {iterations} iterations (tolerance {tolerance:.3e} m/s); {hint}"
+    )]
+    Unconverged {
+        /// Solver name.
+        solver: &'static str,
+        /// Step index (1-based: the step being computed).
+        step: usize,
+        /// Time at the end of the step (s).
+        time: f64,
+        /// Final residual of the friction law (m/s).
+        residual: f64,
+        /// Iterations spent.
+        iterations: usize,
+        /// The tolerance asked for (m/s).
+        tolerance: f64,
+        /// What to try.
+        hint: &'static str,
+    },
+    /// A state value became NaN or infinite.
+    #[error("non-finite state at step {step} (t = {time:.6} s): {what}; {hint}")]
+    NonFinite {
+        /// Step index.
+        step: usize,
+        /// Time (s).
+        time: f64,
+        /// Which quantity.
+        what: &'static str,
+        /// What to try.
+        hint: &'static str,
+    },
+    /// The requested solver is not available in this build.
+    #[error("solver {0} is not available: rebuild with the cargo feature `clarabel`")]
+    Unavailable(&'static str),
+    /// The Clarabel interior-point solver failed.
+    #[error("Clarabel failed at step {step}: {status}")]
+    Clarabel {
+        /// Step index.
+        step: usize,
+        /// Clarabel's status or error, as text.
+        status: String,
+    },
+    /// An error from the beam layer.
+    #[error(transparent)]
+    Beam(#[from] fem_beam::FemError),
+    /// An error from the friction layer.
+    #[error(transparent)]
+    Friction(#[from] friction::FrictionError),
+}
+
+/// Result alias of this crate.
+pub type Result<T, E = NscdError> = std::result::Result<T, E>;

@@ -1,0 +1,559 @@
+//! A whole run: the beam under a load crossing it at constant speed, with friction, observed as it goes
+//! (MODEL.md §3, §6).
+//!
+//! The state is the perturbation from the self-weight equilibrium q₀ = K⁻¹P: with a linear foundation and
+//! velocity-driven friction P drops out exactly, so deflections are reported relative to q₀. The load enters at
+//! x = 0 (or at the start position of an analytic steady state) and the run ends when it leaves at x = L
+//! (t_on), or at a later end time (free vibration). The step is h = Δx/v with the load advance Δx per step.
+//!
+//! Memory of a run is O(DOFs + sections) plus O(steps) per recorded section history.
+
+use crate::error::{NscdError, Result};
+use crate::forcing::MovingLoad;
+use crate::solver::{FrictionProblem, SolverKind, SolverSettings, build_solver};
+use crate::stepper::{EnergyLedger, Integration, MoreauJean, iteration_matrix};
+use crate::system::LinearSystem;
+use fem_beam::BeamModel;
+use fem_beam::element::hermite;
+use fem_beam::reference::InfiniteBeam;
+use friction::ContactSet;
+use std::time::Instant;
+
+/// How the run starts.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub enum InitialState {
+    /// At rest in the self-weight equilibrium, the load entering at x = 0 (default).
+    #[default]
+    Rest,
+    /// In the analytic steady state of the infinite beam (MODEL.md §8) with the load at `position` (m):
+    /// removes the entry transient. Needs damping > 0 at or above the critical speed.
+    SteadyState {
+        /// Load position at t = 0 (m).
+        position: f64,
+    },
+}
+
+/// Settings of one run. Defaults: the reference case of MODEL.md §2 at 200 m/s.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RunSettings {
+    /// Load speed v (m/s) > 0. Default 200.
+    pub speed: f64,
+    /// Load magnitude F (N), acting downward, ≥ 0. Default 83.4 kN.
+    pub load: f64,
+    /// θ ∈ [½, 1]. Default ½.
+    pub theta: f64,
+    /// Load advance per step Δx (m) > 0, so h = Δx/v. Default 0.1 m; must not exceed one element.
+    pub load_advance: f64,
+    /// Initial state. Default rest.
+    pub initial: InitialState,
+    /// End time (s); None stops when the load leaves the beam. Must not be before that.
+    pub end_time: Option<f64>,
+    /// Friction solver settings.
+    pub solver: SolverSettings,
+    /// Positions (m) whose histories (w, M, friction impulse) are recorded. Default: none.
+    pub record_sections: Vec<f64>,
+    /// Track the extremes only while the load is inside this range of positions (m). Default: the whole run.
+    pub extremes_window: Option<(f64, f64)>,
+}
+
+impl Default for RunSettings {
+    fn default() -> Self {
+        Self {
+            speed: 200.0,
+            load: 83.4e3,
+            theta: 0.5,
+            load_advance: 0.1,
+            initial: InitialState::Rest,
+            end_time: None,
+            solver: SolverSettings::default(),
+            record_sections: Vec::new(),
+            extremes_window: None,
+        }
+    }
+}
+
+fn invalid(field: &'static str, value: f64, allowed: impl Into<String>) -> NscdError {
+    NscdError::InvalidField { field, value, allowed: allowed.into() }
+}
+
+impl RunSettings {
+    /// Check the settings against the model.
+    pub fn validate(&self, model: &BeamModel) -> Result<()> {
+        let length = model.mesh().length;
+        if !(self.speed.is_finite() && self.speed > 0.0) {
+            return Err(invalid("speed", self.speed, "must be finite and > 0 (m/s)"));
+        }
+        if !(self.load.is_finite() && self.load >= 0.0) {
+            return Err(invalid("load", self.load, "must be finite and ≥ 0 (N, acting downward)"));
+        }
+        let l = model.mesh().element_length();
+        if !(self.load_advance.is_finite() && self.load_advance > 0.0 && self.load_advance <= l) {
+            return Err(invalid(
+                "load_advance",
+                self.load_advance,
+                format!("must be > 0 and ≤ the element length {l} m"),
+            ));
+        }
+        Integration { theta: self.theta, step: self.load_advance / self.speed }.validate()?;
+        if !(self.solver.tolerance.is_finite() && self.solver.tolerance > 0.0 && self.solver.tolerance <= 1e-2) {
+            return Err(invalid("solver.tolerance", self.solver.tolerance, "must lie in (0, 1e-2]"));
+        }
+        if self.solver.max_iterations == 0 {
+            return Err(invalid("solver.max_iterations", 0.0, "must be ≥ 1"));
+        }
+        if let InitialState::SteadyState { position } = self.initial
+            && !(position.is_finite() && (0.0..length).contains(&position))
+        {
+            return Err(invalid("initial.position", position, format!("must lie in [0, {length}) m")));
+        }
+        for &x in &self.record_sections {
+            if !(x.is_finite() && (0.0..=length).contains(&x)) {
+                return Err(invalid("record_sections", x, format!("must lie on the beam, in [0, {length}] m")));
+            }
+        }
+        if let Some(end) = self.end_time
+            && !(end.is_finite() && end >= self.crossing_time(length) * (1.0 - 1e-12))
+        {
+            return Err(invalid(
+                "end_time",
+                end,
+                format!("must be ≥ the crossing time {} s", self.crossing_time(length)),
+            ));
+        }
+        Ok(())
+    }
+
+    fn start_position(&self) -> f64 {
+        match self.initial {
+            InitialState::Rest => 0.0,
+            InitialState::SteadyState { position } => position,
+        }
+    }
+
+    /// Time for the load to reach x = L (s).
+    pub fn crossing_time(&self, length: f64) -> f64 {
+        (length - self.start_position()) / self.speed
+    }
+}
+
+/// An extreme deflection over the run.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Extreme {
+    /// Magnitude (m, ≥ 0).
+    pub magnitude: f64,
+    /// Node position (m).
+    pub position: f64,
+    /// Time (s).
+    pub time: f64,
+}
+
+/// Histories at one section.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct SectionHistory {
+    /// Requested position (m).
+    pub position: f64,
+    /// Node whose bending moment is reported (m): the nearest node.
+    pub moment_node: f64,
+    /// Times t_k (s), starting at 0.
+    pub time: Vec<f64>,
+    /// Load position at t_k (m).
+    pub load_position: Vec<f64>,
+    /// Deflection w (m, upward).
+    pub deflection: Vec<f64>,
+    /// Bending moment at `moment_node` (N·m, sagging positive) from element end forces at the θ-point of each step
+    /// (where the discrete equilibrium holds); the initial entry is the static formula.
+    pub moment: Vec<f64>,
+    /// Friction impulse of the contact section at this position (N·s), if there is one.
+    pub impulse: Option<Vec<f64>>,
+}
+
+/// The state after a step, lent to observers.
+#[derive(Debug, Clone, Copy)]
+pub struct StepView<'a> {
+    /// Step index (1-based).
+    pub step: usize,
+    /// Time t_{k+1} (s).
+    pub time: f64,
+    /// Load position (m).
+    pub load_position: f64,
+    /// q_{k+1} (free DOFs).
+    pub displacement: &'a [f64],
+    /// v_{k+1}.
+    pub velocity: &'a [f64],
+    /// v_k.
+    pub previous_velocity: &'a [f64],
+    /// Friction impulses p (N·s).
+    pub impulses: &'a [f64],
+    /// Section velocities u_{k+1} = H v_{k+1} (m/s).
+    pub section_velocities: &'a [f64],
+    /// Impulse bounds a_j = h·F_j (N·s).
+    pub bounds: &'a [f64],
+    /// The friction solver's report.
+    pub report: crate::solver::StepReport,
+}
+
+/// Solver statistics of a run.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct SolverStatistics {
+    /// Solver used.
+    pub solver: &'static str,
+    /// Friction sections.
+    pub sections: usize,
+    /// Steps taken.
+    pub steps: usize,
+    /// Mean iterations per step (over steps with friction).
+    pub mean_iterations: f64,
+    /// Max iterations in one step.
+    pub max_iterations: usize,
+    /// Largest final law residual of a step (m/s).
+    pub max_residual: f64,
+    /// Wall time of the time loop (s).
+    pub wall_time: f64,
+}
+
+/// What a run reports (MODEL.md §6).
+#[derive(Debug, Clone, PartialEq)]
+pub struct RunResult {
+    /// Largest downward deflection over nodes and steps.
+    pub max_downward: Extreme,
+    /// Largest upward deflection over nodes and steps.
+    pub max_upward: Extreme,
+    /// Energy terms.
+    pub energy: EnergyLedger,
+    /// W̄ = (1/t_on)∫₀^{t_on}∫₀^L |w| dx dt (m), trapezoid in x (nodes) and t (steps).
+    pub global_norm: f64,
+    /// Histories at the recorded sections.
+    pub histories: Vec<SectionHistory>,
+    /// Solver statistics.
+    pub statistics: SolverStatistics,
+    /// Step size h (s).
+    pub step: f64,
+    /// Positions of the friction sections (m), e.g. the snapped device positions.
+    pub section_positions: Vec<f64>,
+    /// Final state: displacement and velocity of the free DOFs.
+    pub final_displacement: Vec<f64>,
+    /// Final velocity of the free DOFs.
+    pub final_velocity: Vec<f64>,
+}
+
+/// The coupling length ℓ = (EI·h²θ²/ρA)^¼ (m): sections closer than this are strongly coupled in one step.
+pub fn coupling_length(model: &BeamModel, step: f64, theta: f64) -> f64 {
+    let beam = model.beam();
+    (beam.bending_stiffness() * step * step * theta * theta / beam.mass_per_length()).powf(0.25)
+}
+
+/// Resolve [`SolverKind::Auto`]: projection when the sections are spaced wider than twice the coupling length,
+/// the banded interior point otherwise.
+pub fn resolve_solver(kind: SolverKind, model: &BeamModel, contacts: &ContactSet, step: f64, theta: f64) -> SolverKind {
+    if kind != SolverKind::Auto {
+        return kind;
+    }
+    let mut x = contacts.positions().to_vec();
+    x.sort_by(f64::total_cmp);
+    let spacing = x.windows(2).map(|w| w[1] - w[0]).fold(f64::INFINITY, f64::min);
+    if spacing < 2.0 * coupling_length(model, step, theta) { SolverKind::InteriorPoint } else { SolverKind::Projection }
+}
+
+/// A run of `model` with friction `contacts` under `settings`.
+#[derive(Debug, Clone, Copy)]
+pub struct Simulation<'a> {
+    model: &'a BeamModel,
+    contacts: &'a ContactSet,
+    settings: &'a RunSettings,
+}
+
+struct Recorder {
+    position: f64,
+    node: usize,
+    contact: Option<usize>,
+    history: SectionHistory,
+}
+
+impl<'a> Simulation<'a> {
+    /// Validate and prepare a run.
+    pub fn new(model: &'a BeamModel, contacts: &'a ContactSet, settings: &'a RunSettings) -> Result<Self> {
+        settings.validate(model)?;
+        Ok(Self { model, contacts, settings })
+    }
+
+    /// Initial (q, v) over the free DOFs.
+    fn initial_state(&self) -> Result<(Vec<f64>, Vec<f64>)> {
+        let dofs = self.model.dofs();
+        let n = dofs.free_len();
+        match self.settings.initial {
+            InitialState::Rest => Ok((vec![0.0; n], vec![0.0; n])),
+            InitialState::SteadyState { position } => {
+                let infinite = InfiniteBeam::new(self.model.beam(), self.model.foundation())?;
+                let state = infinite.steady_state(self.settings.speed, self.settings.load)?;
+                let mesh = self.model.mesh();
+                let mut q = vec![0.0; dofs.full_len()];
+                let mut v = vec![0.0; dofs.full_len()];
+                for i in 0..mesh.nodes() {
+                    let s = mesh.node_x(i) - position;
+                    q[2 * i] = state.deflection(s);
+                    q[2 * i + 1] = state.slope(s);
+                    v[2 * i] = state.velocity(s);
+                    v[2 * i + 1] = state.rotation_rate(s);
+                }
+                Ok((dofs.reduce(&q), dofs.reduce(&v)))
+            }
+        }
+    }
+
+    /// Integrate and observe.
+    pub fn run(&self) -> Result<RunResult> {
+        self.run_observed(&mut |_| true)
+    }
+
+    /// Integrate, calling `observer` with the borrowed state after every step; the run stops early (with the
+    /// results so far) when it returns false.
+    pub fn run_observed(&self, observer: &mut dyn FnMut(&StepView<'_>) -> bool) -> Result<RunResult> {
+        let (model, settings) = (self.model, self.settings);
+        let mesh = *model.mesh();
+        let dofs = model.dofs();
+        let h = settings.load_advance / settings.speed;
+        let integration = Integration { theta: settings.theta, step: h };
+        let system = LinearSystem::from_beam(model);
+        let m_hat = iteration_matrix(&system, integration);
+        let factor = m_hat.factor()?;
+        let kind = resolve_solver(settings.solver.kind, model, self.contacts, h, settings.theta);
+        let problem = FrictionProblem::new(self.contacts, &m_hat, &factor, h);
+        let solver = build_solver(kind, &problem, &settings.solver)?;
+        let (q0, v0) = self.initial_state()?;
+        let start = settings.start_position();
+        let load = MovingLoad::new(mesh, dofs, settings.load, settings.speed, start);
+        let mut stepper = MoreauJean::new(&system, self.contacts, integration, problem, solver, q0, v0);
+
+        let t_on = settings.crossing_time(mesh.length);
+        let crossing_steps = (t_on / h).round() as usize;
+        let total_steps = match settings.end_time {
+            Some(end) => crossing_steps.max((end / h - 1e-9).ceil() as usize),
+            None => crossing_steps,
+        };
+        // w DOFs (free index, x) for extremes and W̄; constrained ones are zero.
+        let w_dofs: Vec<(Option<usize>, f64)> =
+            (0..mesh.nodes()).map(|i| (dofs.free_index(2 * i), mesh.node_x(i))).collect();
+        let mut recorders: Vec<Recorder> = settings
+            .record_sections
+            .iter()
+            .map(|&x| {
+                let node = mesh.nearest_node(x).unwrap_or(0);
+                Recorder {
+                    position: x,
+                    node,
+                    contact: self.contacts.section_at(x, 1e-9 * mesh.length),
+                    history: SectionHistory { position: x, moment_node: mesh.node_x(node), ..Default::default() },
+                }
+            })
+            .collect();
+        for r in &mut recorders {
+            r.history.impulse = r.contact.map(|_| Vec::with_capacity(total_steps + 1));
+            for series in
+                [&mut r.history.time, &mut r.history.load_position, &mut r.history.deflection, &mut r.history.moment]
+            {
+                series.reserve(total_steps + 1);
+            }
+        }
+        let mut extremes = (Extreme::default(), Extreme::default());
+        let in_window = |x_load: f64| settings.extremes_window.is_none_or(|(a, b)| (a..=b).contains(&x_load));
+        let observe_extremes = |q: &[f64], time: f64, extremes: &mut (Extreme, Extreme)| {
+            for &(dof, x) in &w_dofs {
+                let w = dof.map_or(0.0, |d| q[d]);
+                if -w > extremes.0.magnitude {
+                    extremes.0 = Extreme { magnitude: -w, position: x, time };
+                }
+                if w > extremes.1.magnitude {
+                    extremes.1 = Extreme { magnitude: w, position: x, time };
+                }
+            }
+        };
+        let spatial_norm = |q: &[f64]| {
+            let mut sum = 0.0;
+            for k in 0..w_dofs.len() {
+                let w = w_dofs[k].0.map_or(0.0, |d| q[d]).abs();
+                sum += if k == 0 || k + 1 == w_dofs.len() { 0.5 * w } else { w };
+            }
+            sum * mesh.element_length()
+        };
+        if in_window(start) {
+            observe_extremes(&stepper.q, 0.0, &mut extremes);
+        }
+        let mut norm_integral = 0.0;
+        let mut previous_norm = spatial_norm(&stepper.q);
+        let mut full = Buffers::new(dofs.full_len());
+        for r in &mut recorders {
+            full.expand(dofs, &stepper.q, &stepper.v);
+            let m0 = self.moment_at_node(r.node, &full, 0.0, &load, None);
+            record(r, 0.0, start, model.deflection_at(&full.q, r.position)?, m0, 0.0);
+        }
+
+        let clock = Instant::now();
+        let (mut iteration_sum, mut max_iterations, mut max_residual) = (0usize, 0usize, 0.0f64);
+        let mut v_before = vec![0.0; dofs.free_len()];
+        let mut q_before = vec![0.0; dofs.free_len()];
+        for k in 1..=total_steps {
+            v_before.copy_from_slice(&stepper.v);
+            q_before.copy_from_slice(&stepper.q);
+            let report = stepper.step(&load)?;
+            let keep_going = observer(&StepView {
+                step: k,
+                time: stepper.time,
+                load_position: load.position(stepper.time),
+                displacement: &stepper.q,
+                velocity: &stepper.v,
+                previous_velocity: &v_before,
+                impulses: &stepper.p,
+                section_velocities: &stepper.u,
+                bounds: stepper.bounds(),
+                report,
+            });
+            iteration_sum += report.iterations;
+            max_iterations = max_iterations.max(report.iterations);
+            max_residual = max_residual.max(report.residual);
+            let time = stepper.time;
+            if in_window(load.position(time)) {
+                observe_extremes(&stepper.q, time, &mut extremes);
+            }
+            if k <= crossing_steps {
+                let norm = spatial_norm(&stepper.q);
+                norm_integral += 0.5 * (norm + previous_norm) * h;
+                previous_norm = norm;
+            }
+            for r in &mut recorders {
+                // θ-point state: q_θ = θq₁ + (1−θ)q₀, v_θ likewise, acceleration Δv/h.
+                let theta = settings.theta;
+                full.expand_theta(dofs, (&q_before, &stepper.q), (&v_before, &stepper.v), theta, h);
+                let t_theta = time - h + theta * h;
+                let impulse = r.contact.map_or(0.0, |j| stepper.p[j]);
+                let moment = self.moment_at_node(r.node, &full, t_theta, &load, Some((&stepper.p, h)));
+                full.expand(dofs, &stepper.q, &stepper.v);
+                let w = model.deflection_at(&full.q, r.position)?;
+                record(r, time, load.position(time), w, moment, impulse);
+            }
+            if !keep_going {
+                break;
+            }
+        }
+        let wall_time = clock.elapsed().as_secs_f64();
+        let steps = stepper.steps;
+        Ok(RunResult {
+            max_downward: extremes.0,
+            max_upward: extremes.1,
+            energy: stepper.energy,
+            global_norm: if t_on > 0.0 { norm_integral / t_on } else { 0.0 },
+            histories: recorders.into_iter().map(|r| r.history).collect(),
+            statistics: SolverStatistics {
+                solver: if self.contacts.is_empty() { "none" } else { stepper.solver_name() },
+                sections: self.contacts.len(),
+                steps,
+                mean_iterations: if steps > 0 { iteration_sum as f64 / steps as f64 } else { 0.0 },
+                max_iterations,
+                max_residual,
+                wall_time,
+            },
+            step: h,
+            section_positions: self.contacts.positions().to_vec(),
+            final_displacement: stepper.q.clone(),
+            final_velocity: stepper.v.clone(),
+        })
+    }
+
+    /// Bending moment at `node` (N·m) from the end forces of its adjacent elements,
+    /// f = K_e q_e + C_e v_e + M_e a_e − f_e, with f_e the moving load at `time` and the friction impulses / h of
+    /// the sections inside the element. Averaged over the (one or two) adjacent elements.
+    fn moment_at_node(
+        &self,
+        node: usize,
+        full: &Buffers,
+        time: f64,
+        load: &MovingLoad,
+        friction: Option<(&[f64], f64)>,
+    ) -> f64 {
+        let model = self.model;
+        let mesh = model.mesh();
+        let l = mesh.element_length();
+        let ke = model.element_stiffness();
+        let me = model.element_mass();
+        let mut sum = 0.0;
+        let mut count = 0.0;
+        for e in [node.wrapping_sub(1), node] {
+            if e >= mesh.elements {
+                continue;
+            }
+            let pick = |v: &[f64]| [v[2 * e], v[2 * e + 1], v[2 * e + 2], v[2 * e + 3]];
+            let mut f = hermite::apply(&ke, &pick(&full.q));
+            let cv = hermite::apply(&model.element_damping_matrix(e), &pick(&full.v));
+            let ma = hermite::apply(&me, &pick(&full.a));
+            let (x_a, x_b) = (mesh.node_x(e), mesh.node_x(e + 1));
+            let x_load = load.position(time);
+            let mut external = [0.0; 4];
+            if load.force != 0.0 && (x_a..x_b).contains(&x_load) || (e + 1 == mesh.elements && x_load == x_b) {
+                let n = hermite::shape((x_load - x_a) / l, l);
+                (0..4).for_each(|k| external[k] -= load.force * n[k]);
+            }
+            if let Some((p, h)) = friction {
+                for (j, &x) in self.contacts.positions().iter().enumerate() {
+                    if x > x_a && x < x_b {
+                        let n = hermite::shape((x - x_a) / l, l);
+                        (0..4).for_each(|k| external[k] += p[j] / h * n[k]);
+                    }
+                }
+            }
+            (0..4).for_each(|k| f[k] += cv[k] + ma[k] - external[k]);
+            if e + 1 == node {
+                sum += f[3];
+            } else {
+                sum -= f[1];
+            }
+            count += 1.0;
+        }
+        sum / count
+    }
+}
+
+fn record(r: &mut Recorder, time: f64, load_position: f64, w: f64, moment: f64, impulse: f64) {
+    r.history.time.push(time);
+    r.history.load_position.push(load_position);
+    r.history.deflection.push(w);
+    r.history.moment.push(moment);
+    if let Some(series) = r.history.impulse.as_mut() {
+        series.push(impulse);
+    }
+}
+
+/// Full-DOF scratch vectors for section results.
+struct Buffers {
+    q: Vec<f64>,
+    v: Vec<f64>,
+    a: Vec<f64>,
+    free: Vec<f64>,
+}
+
+impl Buffers {
+    fn new(n: usize) -> Self {
+        Self { q: vec![0.0; n], v: vec![0.0; n], a: vec![0.0; n], free: Vec::new() }
+    }
+
+    fn expand(&mut self, dofs: &fem_beam::DofMap, q: &[f64], v: &[f64]) {
+        dofs.expand_into(q, &mut self.q);
+        dofs.expand_into(v, &mut self.v);
+        self.a.iter_mut().for_each(|a| *a = 0.0);
+    }
+
+    fn expand_theta(&mut self, dofs: &fem_beam::DofMap, q: (&[f64], &[f64]), v: (&[f64], &[f64]), theta: f64, h: f64) {
+        let n = q.0.len();
+        self.free.resize(n, 0.0);
+        for i in 0..n {
+            self.free[i] = theta * q.1[i] + (1.0 - theta) * q.0[i];
+        }
+        dofs.expand_into(&self.free, &mut self.q);
+        for i in 0..n {
+            self.free[i] = theta * v.1[i] + (1.0 - theta) * v.0[i];
+        }
+        dofs.expand_into(&self.free, &mut self.v);
+        for i in 0..n {
+            self.free[i] = (v.1[i] - v.0[i]) / h;
+        }
+        dofs.expand_into(&self.free, &mut self.a);
+    }
+}

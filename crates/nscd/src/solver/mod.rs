@@ -1,0 +1,176 @@
+//! Per-step friction solvers (MODEL.md §5).
+//!
+//! Each step poses: find impulses p with v = v_free + M̂⁻¹Hᵀp, u = H v = W p + u_free, W = H M̂⁻¹ Hᵀ, and
+//! p_j ∈ −a_j Sign(u_j), a_j = h F_j. Equivalently the box QP min ½pᵀWp + u_freeᵀp, |p_j| ≤ a_j, or the strongly
+//! convex primal min_v ½‖v − v_free‖²_M̂ + Σ a_j |H_j v|. v is unique; p need not be (W is singular when sections
+//! outnumber DOFs), so solvers are compared on v and Hᵀp.
+//!
+//! - [`projection::ProjectedGaussSeidel`]: nonsmooth Gauss–Seidel on the dense W, the NSCD default for devices.
+//! - [`interior_point::BandedInteriorPoint`]: a primal–dual interior-point method whose Newton systems are banded
+//!   (Woodbury on M̂ + HᵀΣ⁻¹H); built for dense distributed friction, where Gauss–Seidel stalls.
+//! - `clarabel::ClarabelQp` (feature `clarabel`): the interior-point QP solver Clarabel on the sparse lifted form,
+//!   an independent cross-check.
+//!
+//! Every solver reports its iterations and the final residual of the law, max_j |p_j − proj(p_j − u_j/W_jj)|·W_jj
+//! (m/s), and the stepper refuses an unconverged step.
+
+pub mod interior_point;
+pub mod projection;
+
+#[cfg(feature = "clarabel")]
+pub mod clarabel;
+
+use fem_beam::{BandedLdlt, SymmetricBanded};
+use friction::ContactSet;
+use friction::coulomb::natural_residual;
+
+/// Which per-step friction solver to use.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum SolverKind {
+    /// Projection for sections spaced wider than twice the coupling length, interior point otherwise.
+    #[default]
+    Auto,
+    /// Nonsmooth (projected) Gauss–Seidel.
+    Projection,
+    /// Banded primal–dual interior point.
+    InteriorPoint,
+    /// Clarabel interior-point QP (feature `clarabel`).
+    Clarabel,
+}
+
+impl SolverKind {
+    /// Lower-case name, as used on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            SolverKind::Auto => "auto",
+            SolverKind::Projection => "projection",
+            SolverKind::InteriorPoint => "interior-point",
+            SolverKind::Clarabel => "clarabel",
+        }
+    }
+}
+
+/// Tolerances and limits of the friction solvers.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SolverSettings {
+    /// Solver choice. Default [`SolverKind::Auto`].
+    pub kind: SolverKind,
+    /// Relative tolerance on the law residual, relative to max_j |u_free,j| (m/s). Default 1e-10; in (0, 1e-2].
+    pub tolerance: f64,
+    /// Iteration cap per step: sweeps for projection, iterations for interior point. Default 20 000.
+    pub max_iterations: usize,
+}
+
+impl Default for SolverSettings {
+    fn default() -> Self {
+        Self { kind: SolverKind::Auto, tolerance: 1e-10, max_iterations: 20_000 }
+    }
+}
+
+/// Below this velocity (m/s) a section is considered at rest when scaling tolerances.
+pub const VELOCITY_FLOOR: f64 = 1e-14;
+
+/// How one friction step ended.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct StepReport {
+    /// Iterations: sweeps (projection), interior-point iterations (interior point, Clarabel).
+    pub iterations: usize,
+    /// Final law residual (m/s).
+    pub residual: f64,
+    /// The tolerance it had to meet (m/s).
+    pub tolerance: f64,
+    /// Whether the residual met the tolerance.
+    pub converged: bool,
+}
+
+/// The data of every friction step of a run: M̂ and its factors, the contact rows, the bounds a_j = h·F_j and the
+/// diagonal of the Delassus matrix W_jj = H_j M̂⁻¹ H_jᵀ.
+#[derive(Debug)]
+pub struct FrictionProblem<'a> {
+    /// Contact rows.
+    pub contacts: &'a ContactSet,
+    /// M̂ = M + hθC + h²θ²K.
+    pub m_hat: &'a SymmetricBanded,
+    /// LDLᵀ factors of M̂.
+    pub factor: &'a BandedLdlt,
+    /// a_j = h·F_j (N·s).
+    pub bounds: Vec<f64>,
+    /// W_jj (m/s per N·s).
+    pub delassus_diagonal: Vec<f64>,
+}
+
+impl<'a> FrictionProblem<'a> {
+    /// Set up for step size `h` (s).
+    pub fn new(contacts: &'a ContactSet, m_hat: &'a SymmetricBanded, factor: &'a BandedLdlt, h: f64) -> Self {
+        let bounds = contacts.bounds().iter().map(|f| h * f).collect();
+        let mut column = vec![0.0; m_hat.order()];
+        let delassus_diagonal = contacts
+            .rows()
+            .iter()
+            .map(|row| {
+                column.iter_mut().for_each(|c| *c = 0.0);
+                row.add_transpose(1.0, &mut column);
+                factor.solve_in_place(&mut column);
+                row.dot(&column)
+            })
+            .collect();
+        Self { contacts, m_hat, factor, bounds, delassus_diagonal }
+    }
+
+    /// Number of sections.
+    pub fn len(&self) -> usize {
+        self.bounds.len()
+    }
+
+    /// Whether there is no section.
+    pub fn is_empty(&self) -> bool {
+        self.bounds.is_empty()
+    }
+
+    /// max_j |p_j − proj(p_j − u_j/W_jj)|·W_jj (m/s): zero exactly when (u, p) satisfy the law.
+    pub fn law_residual(&self, u: &[f64], p: &[f64]) -> f64 {
+        (0..self.len())
+            .map(|j| natural_residual(u[j], p[j], self.bounds[j], 1.0 / self.delassus_diagonal[j]))
+            .fold(0.0, f64::max)
+    }
+
+    /// Absolute tolerance (m/s) for a relative tolerance and the free velocities u_free.
+    pub fn absolute_tolerance(&self, relative: f64, u_free: &[f64]) -> f64 {
+        relative * u_free.iter().fold(VELOCITY_FLOOR, |m, u| m.max(u.abs()))
+    }
+}
+
+/// A per-step friction solver. `p` holds the warm start (the previous step's impulses) on entry and the solution
+/// on exit; `u_free = H v_free`. The stepper then sets v = v_free + M̂⁻¹Hᵀp.
+pub trait FrictionSolver {
+    /// Name for reports.
+    fn name(&self) -> &'static str;
+    /// Solve one step.
+    fn solve(
+        &mut self,
+        problem: &FrictionProblem<'_>,
+        v_free: &[f64],
+        u_free: &[f64],
+        p: &mut [f64],
+    ) -> crate::Result<StepReport>;
+}
+
+/// Build the solver `kind` (not `Auto`: resolve it first) for `problem`.
+pub fn build_solver<'a>(
+    kind: SolverKind,
+    problem: &FrictionProblem<'_>,
+    settings: &SolverSettings,
+) -> crate::Result<Box<dyn FrictionSolver + 'a>> {
+    Ok(match kind {
+        SolverKind::Projection | SolverKind::Auto => {
+            Box::new(projection::ProjectedGaussSeidel::new(problem, settings.tolerance, settings.max_iterations))
+        }
+        SolverKind::InteriorPoint => {
+            Box::new(interior_point::BandedInteriorPoint::new(problem, settings.tolerance, settings.max_iterations))
+        }
+        #[cfg(feature = "clarabel")]
+        SolverKind::Clarabel => Box::new(clarabel::ClarabelQp::new(problem, settings.tolerance)?),
+        #[cfg(not(feature = "clarabel"))]
+        SolverKind::Clarabel => return Err(crate::NscdError::Unavailable("clarabel")),
+    })
+}

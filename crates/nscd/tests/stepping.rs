@@ -1,0 +1,12 @@
+//! Verification of the Moreau–Jean stepper and its friction solvers (MODEL.md §5–§8).
+
+mod stepping {
+    mod common;
+    mod critical_speed;
+    mod energy;
+    mod friction_law;
+    mod linear;
+    mod oscillator;
+    mod solvers_agree;
+    mod steady_state;
+}
