@@ -54,6 +54,23 @@ impl SymmetricBanded {
         self.data[slot] += value;
     }
 
+    /// Add w·h hᵀ for a sparse vector h given by ascending `dofs` (all within one band window) and `values`:
+    /// the rank-one update of a Newton or penalty matrix, without bounds bookkeeping per entry.
+    #[inline]
+    pub fn add_outer(&mut self, dofs: &[usize], values: &[f64], w: f64) {
+        let stride = self.bandwidth + 1;
+        for a in 0..dofs.len() {
+            let i = dofs[a];
+            let wa = w * values[a];
+            let row = i * stride + self.bandwidth;
+            for b in 0..=a {
+                let j = dofs[b];
+                debug_assert!(i >= j && i - j <= self.bandwidth, "add_outer: entries outside the band or unsorted");
+                self.data[row - (i - j)] += wa * values[b];
+            }
+        }
+    }
+
     /// y = A x.
     pub fn mul_vec(&self, x: &[f64], y: &mut [f64]) {
         let b = self.bandwidth;

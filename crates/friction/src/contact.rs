@@ -22,16 +22,17 @@ pub struct ContactRow {
 }
 
 impl ContactRow {
-    /// A row from (free DOF, value) pairs; exact zeros are skipped. At most four entries.
+    /// A row from (free DOF, value) pairs; exact zeros are skipped, entries are sorted by DOF. At most four
+    /// distinct entries.
     pub fn from_entries(entries: impl IntoIterator<Item = (usize, f64)>) -> Self {
-        let mut row = Self { dofs: [0; 4], values: [0.0; 4], len: 0 };
-        for (dof, value) in entries {
-            if value != 0.0 {
-                assert!(row.len < 4, "a contact row has at most four entries");
-                row.dofs[row.len] = dof;
-                row.values[row.len] = value;
-                row.len += 1;
-            }
+        let mut pairs: Vec<(usize, f64)> = entries.into_iter().filter(|e| e.1 != 0.0).collect();
+        pairs.sort_by_key(|e| e.0);
+        assert!(pairs.len() <= 4, "a contact row has at most four entries");
+        assert!(pairs.windows(2).all(|w| w[0].0 < w[1].0), "a contact row names each DOF once");
+        let mut row = Self { dofs: [0; 4], values: [0.0; 4], len: pairs.len() };
+        for (k, (dof, value)) in pairs.into_iter().enumerate() {
+            row.dofs[k] = dof;
+            row.values[k] = value;
         }
         row
     }
@@ -49,6 +50,16 @@ impl ContactRow {
     /// The (free DOF, value) entries.
     pub fn entries(&self) -> impl Iterator<Item = (usize, f64)> + '_ {
         (0..self.len).map(|k| (self.dofs[k], self.values[k]))
+    }
+
+    /// The free DOFs of the entries, ascending.
+    pub fn dofs(&self) -> &[usize] {
+        &self.dofs[..self.len]
+    }
+
+    /// The values of the entries, in the order of [`ContactRow::dofs`].
+    pub fn values(&self) -> &[f64] {
+        &self.values[..self.len]
     }
 
     /// H_j·v.
