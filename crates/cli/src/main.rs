@@ -1,6 +1,7 @@
 //! The `frictrack` command: railway track dynamics with Coulomb frictional damping.
 
 mod analytic;
+mod reference;
 mod run;
 
 use clap::{Parser, Subcommand, ValueEnum};
@@ -8,7 +9,7 @@ use std::process::ExitCode;
 
 /// Railway track dynamics under moving loads: an Euler–Bernoulli rail on a viscoelastic Winkler foundation.
 #[derive(Debug, Parser)]
-#[command(name = "frictrack", version, about, long_about = None, after_help = "Examples:\n  frictrack run\n  frictrack run --elements 400 --format json\n  frictrack analytic --speed 200 --damping-ratio 0.05\n  frictrack analytic --damping-ratio 0.05 --speeds 10:300:10 --format json")]
+#[command(name = "frictrack", version, about, long_about = None, after_help = "Examples:\n  frictrack run\n  frictrack run --speed 180 --devices 31 --device-force 50e3\n  frictrack run --distributed-friction 5000 --format json\n  frictrack reference --elements 400\n  frictrack analytic --speed 200 --damping-ratio 0.05\n  frictrack analytic --damping-ratio 0.05 --speeds 10:300:10 --format json")]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -16,9 +17,10 @@ struct Cli {
 
 #[derive(Debug, Subcommand)]
 enum Command {
-    /// Run the reference case (MODEL.md §2): static response under the load at mid-span, lowest natural
-    /// frequencies, and their closed-form references.
+    /// Simulate the reference case under a moving load, with friction devices or distributed friction.
     Run(run::RunArgs),
+    /// Static response and natural frequencies of the reference case beside their closed forms.
+    Reference(reference::ReferenceArgs),
     /// Closed-form steady state of an infinite beam under a moving load: max downward/upward deflection, and the
     /// dynamic amplification curve over a speed range.
     Analytic(analytic::AnalyticArgs),
@@ -38,6 +40,7 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Run(args) => run::run(&args),
+        Command::Reference(args) => reference::run(&args),
         Command::Analytic(args) => analytic::run(&args),
     };
     match result {
@@ -49,11 +52,29 @@ fn main() -> ExitCode {
     }
 }
 
-/// 2 for invalid input (a parameter the model rejects), 1 for anything else.
+/// 2 for invalid input (a parameter the model rejects), 1 for anything else (e.g. a solver failure).
 fn error_code(error: &anyhow::Error) -> u8 {
-    match error.downcast_ref::<fem_beam::FemError>() {
-        Some(fem_beam::FemError::InvalidField { .. } | fem_beam::FemError::InvalidCount { .. }) => 2,
-        Some(fem_beam::FemError::NoSteadyState { .. }) => 2,
-        _ => 1,
-    }
+    use fem_beam::FemError as F;
+    use friction::FrictionError as R;
+    use nscd::NscdError as N;
+    let beam = |e: &F| matches!(e, F::InvalidField { .. } | F::InvalidCount { .. } | F::NoSteadyState { .. });
+    let friction = |e: &R| match e {
+        R::InvalidField { .. } | R::InvalidCount { .. } => true,
+        R::Beam(b) => beam(b),
+    };
+    let invalid = if let Some(e) = error.downcast_ref::<F>() {
+        beam(e)
+    } else if let Some(e) = error.downcast_ref::<R>() {
+        friction(e)
+    } else if let Some(e) = error.downcast_ref::<N>() {
+        match e {
+            N::InvalidField { .. } | N::Unavailable(_) => true,
+            N::Beam(b) => beam(b),
+            N::Friction(f) => friction(f),
+            _ => false,
+        }
+    } else {
+        false
+    };
+    if invalid { 2 } else { 1 }
 }

@@ -12,15 +12,15 @@ fn json(output: &Output) -> serde_json::Value {
 }
 
 #[test]
-fn run_reports_reference_case_against_closed_form() {
-    let out = frictrack(&["run", "--format", "json"]);
+fn reference_reports_static_case_against_closed_form() {
+    let out = frictrack(&["reference", "--format", "json"]);
     let v = json(&out);
     let w = v["midspan_deflection"].as_f64().unwrap();
     let w0 = v["midspan_deflection_closed_form"].as_f64().unwrap();
     assert!((w - w0).abs() / w0.abs() < 1e-4, "{w} vs {w0}");
     assert!((w0 + 52.40e-3).abs() < 0.005e-3);
     assert_eq!(v["modes"].as_array().unwrap().len(), 5);
-    let text = frictrack(&["run"]);
+    let text = frictrack(&["reference"]);
     assert!(text.status.success());
     assert!(String::from_utf8_lossy(&text.stdout).contains("critical speed v_cr = 205.57 m/s"));
 }
@@ -45,8 +45,53 @@ fn analytic_matches_model_md_value() {
 }
 
 #[test]
+fn run_prints_the_documented_json() {
+    let v =
+        json(&frictrack(&["run", "--speed", "180", "--devices", "31", "--device-force", "50e3", "--format", "json"]));
+    for key in [
+        "max_downward_deflection",
+        "max_upward_deflection",
+        "max_downward_deflection_position",
+        "max_downward_deflection_time",
+        "max_upward_deflection_position",
+        "max_upward_deflection_time",
+        "load_work",
+        "friction_work",
+        "dissipated_energy",
+        "numerical_dissipation",
+        "energy_residual",
+        "steps",
+        "mean_iterations",
+        "max_iterations",
+        "solver",
+        "wall_time",
+    ] {
+        assert!(v.get(key).is_some(), "missing {key}");
+    }
+    let f = |k: &str| v[k].as_f64().unwrap();
+    assert_eq!(v["solver"], "projection");
+    assert_eq!(v["steps"], 2000);
+    assert!(f("max_downward_deflection") > 0.0 && f("max_upward_deflection") > 0.0);
+    assert!(f("dissipated_energy") > 0.0 && f("friction_work") < 0.0);
+    assert!(f("energy_residual").abs() < 1e-9 * f("load_work"));
+    assert_eq!(v["device_positions"].as_array().unwrap().len(), 31);
+    // Friction cuts the peak of the friction-free run.
+    let free = json(&frictrack(&["run", "--speed", "180", "--format", "json"]));
+    assert!(f("max_downward_deflection") < free["max_downward_deflection"].as_f64().unwrap());
+}
+
+#[test]
 fn invalid_input_exits_2_with_a_named_field() {
-    let out = frictrack(&["run", "--elements", "0"]);
+    let out = frictrack(&["run", "--theta", "0.4"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("integration.theta"));
+    let out = frictrack(&["run", "--devices", "500"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("devices.count"));
+    let out = frictrack(&["run", "--speed=-3"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("speed"));
+    let out = frictrack(&["reference", "--elements", "0"]);
     assert_eq!(out.status.code(), Some(2));
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(err.contains("mesh.elements"), "{err}");

@@ -3,6 +3,7 @@
 mod stepping {
     mod common;
     mod critical_speed;
+    mod discrete_vs_continuous;
     mod energy;
     mod friction_law;
     mod linear;

@@ -1,0 +1,111 @@
+//! `frictrack reference`: the reference case's static response under the load at mid-span and its lowest natural
+//! frequencies, each beside its closed form (MODEL.md §2, §8).
+
+use crate::Format;
+use anyhow::Result;
+use clap::Args;
+use fem_beam::reference::uic60_on_soft_soil;
+use fem_beam::section::Motion;
+use fem_beam::{LoadVector, Mesh};
+use serde::Serialize;
+use std::time::Instant;
+
+/// Options of `frictrack reference`.
+#[derive(Debug, Args)]
+pub struct ReferenceArgs {
+    /// Number of beam elements (the reference case has 200 on 200 m).
+    #[arg(long, default_value_t = 200)]
+    elements: usize,
+    /// Number of natural frequencies to report.
+    #[arg(long, default_value_t = 5)]
+    modes: usize,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = Format::Text)]
+    format: Format,
+}
+
+#[derive(Debug, Serialize)]
+struct Mode {
+    n: usize,
+    omega: f64,
+    omega_closed_form: f64,
+}
+
+#[derive(Debug, Serialize)]
+struct ReferenceReport {
+    elements: usize,
+    dofs: usize,
+    load: f64,
+    midspan_deflection: f64,
+    midspan_deflection_closed_form: f64,
+    midspan_moment: f64,
+    midspan_moment_closed_form: f64,
+    critical_speed: f64,
+    modes: Vec<Mode>,
+    wall_time: f64,
+}
+
+/// Execute `frictrack reference`.
+pub fn run(args: &ReferenceArgs) -> Result<()> {
+    let start = Instant::now();
+    let mut case = uic60_on_soft_soil();
+    case.mesh = Mesh::new(case.mesh.length, args.elements)?;
+    let model = case.model()?;
+    let inf = case.infinite_beam()?;
+    let mid = case.mesh.length / 2.0;
+    let load = LoadVector::point_force(&case.mesh, mid, -case.load)?;
+    let q = model.static_solve(&load)?;
+    let moments = model.nodal_moments(&q, &load, Motion::default())?;
+    let omega = model.natural_frequencies(args.modes.min(model.dofs().free_len()))?;
+    let report = ReferenceReport {
+        elements: args.elements,
+        dofs: model.dofs().free_len(),
+        load: case.load,
+        midspan_deflection: model.deflection_at(&q, mid)?,
+        midspan_deflection_closed_form: -inf.static_deflection(case.load),
+        midspan_moment: moments.at(mid),
+        midspan_moment_closed_form: inf.static_moment(case.load),
+        critical_speed: inf.critical_speed(),
+        modes: omega
+            .iter()
+            .enumerate()
+            .map(|(i, &w)| Mode { n: i + 1, omega: w, omega_closed_form: case.pinned_natural_frequency(i + 1) })
+            .collect(),
+        wall_time: start.elapsed().as_secs_f64(),
+    };
+    match args.format {
+        Format::Json => println!("{}", serde_json::to_string_pretty(&report)?),
+        Format::Text => print_text(&report),
+    }
+    Ok(())
+}
+
+fn print_text(r: &ReferenceReport) {
+    println!(
+        "frictrack — reference case: UIC60 rail on soft soil, 200 m pinned beam, {} elements ({} DOFs)",
+        r.elements, r.dofs
+    );
+    println!(
+        "static load {:.1} kN at mid-span                  FE            closed form (infinite beam)",
+        r.load / 1e3
+    );
+    println!(
+        "  deflection under the load           {:>10.3} mm   {:>10.3} mm",
+        r.midspan_deflection * 1e3,
+        r.midspan_deflection_closed_form * 1e3
+    );
+    println!(
+        "  bending moment under the load       {:>10.3} kN·m {:>10.3} kN·m",
+        r.midspan_moment / 1e3,
+        r.midspan_moment_closed_form / 1e3
+    );
+    println!("critical speed v_cr = {:.2} m/s ({:.0} km/h)", r.critical_speed, r.critical_speed * 3.6);
+    println!("natural circular frequencies (pinned beam)     FE            closed form");
+    for m in &r.modes {
+        println!(
+            "  ω{:<3}                               {:>10.4} rad/s {:>10.4} rad/s",
+            m.n, m.omega, m.omega_closed_form
+        );
+    }
+    println!("wall time {:.3} s", r.wall_time);
+}
