@@ -121,10 +121,45 @@ impl SymmetricBanded {
         DMatrix::from_fn(self.n, self.n, |i, j| self.get(i, j))
     }
 
-    /// Overwrite this matrix with `other` (same order and bandwidth), without allocating.
+    /// Change the order to `n`, all entries zero (reuses the storage once it is large enough).
+    pub fn resize(&mut self, n: usize) {
+        self.n = n;
+        self.data.clear();
+        self.data.resize(n * (self.bandwidth + 1), 0.0);
+    }
+
+    /// The same matrix with the DOF order reversed (i → n − 1 − i).
+    pub fn reversed(&self) -> SymmetricBanded {
+        let mut out = Self::zeros(self.n, self.bandwidth);
+        for i in 0..self.n {
+            for j in i.saturating_sub(self.bandwidth)..=i {
+                out.add(self.n - 1 - j, self.n - 1 - i, self.get(i, j));
+            }
+        }
+        out
+    }
+
+    /// Copy the principal submatrix of rows and columns [start, end) into `out` (resized to end − start).
+    pub fn principal_submatrix_into(&self, start: usize, end: usize, out: &mut SymmetricBanded) {
+        assert!(start <= end && end <= self.n && out.bandwidth == self.bandwidth, "principal_submatrix_into");
+        out.resize(end - start);
+        let w = self.bandwidth + 1;
+        out.data.copy_from_slice(&self.data[start * w..end * w]);
+        // Slots that reach before `start` belong to the eliminated block: clear them.
+        for i in 0..(end - start).min(self.bandwidth) {
+            for slot in 0..self.bandwidth - i {
+                out.data[i * w + slot] = 0.0;
+            }
+        }
+    }
+
+    /// Overwrite this matrix with `other` (same bandwidth; the order follows `other`), without allocating once
+    /// the storage is large enough.
     pub fn copy_from(&mut self, other: &SymmetricBanded) {
-        assert!(self.n == other.n && self.bandwidth == other.bandwidth, "copy_from of mismatched matrices");
-        self.data.copy_from_slice(&other.data);
+        assert!(self.bandwidth == other.bandwidth, "copy_from of matrices with different bandwidths");
+        self.n = other.n;
+        self.data.clear();
+        self.data.extend_from_slice(&other.data);
     }
 
     /// Factor A = L D Lᵀ (L unit lower triangular with the same band). Errors with the equation index if a pivot
@@ -135,10 +170,12 @@ impl SymmetricBanded {
         Ok(out)
     }
 
-    /// Factor into existing storage of the same shape (no allocation: for repeated factorisations).
+    /// Factor into existing storage (reshaped to this matrix; no allocation once its capacity suffices).
     pub fn factor_into(&self, out: &mut BandedLdlt) -> Result<()> {
-        assert!(out.n == self.n && out.bandwidth == self.bandwidth, "factor_into of mismatched shapes");
-        out.factors.copy_from_slice(&self.data);
+        out.n = self.n;
+        out.bandwidth = self.bandwidth;
+        out.factors.clear();
+        out.factors.extend_from_slice(&self.data);
         Self::factor_in_place(self.n, self.bandwidth, &mut out.factors)
     }
 
@@ -214,6 +251,39 @@ impl BandedLdlt {
         let mut x = rhs.to_vec();
         self.solve_in_place(&mut x);
         x
+    }
+
+    /// Subtract from `target` — the principal submatrix A[start..start + target.order()] of the factored matrix A —
+    /// the Schur-complement correction of eliminating the leading block [0, start):
+    /// C_ij = Σ_{k<start} L_ik D_k L_jk, non-zero only for i, j < start + b.
+    pub fn subtract_leading_schur(&self, start: usize, target: &mut SymmetricBanded) {
+        self.subtract_schur(start, target, |i| i - start);
+    }
+
+    /// For the factor of the *reversed* matrix (see [`SymmetricBanded::reversed`]), subtract from `target` — the
+    /// principal submatrix A[start..end] of the original A, end = start + target.order() — the Schur-complement
+    /// correction of eliminating the trailing block [end, n) of A.
+    pub fn subtract_trailing_schur(&self, end: usize, target: &mut SymmetricBanded) {
+        let start = end - target.order();
+        let n = self.n;
+        self.subtract_schur(n - end, target, |i| n - 1 - i - start);
+    }
+
+    fn subtract_schur(&self, eliminated: usize, target: &mut SymmetricBanded, local: impl Fn(usize) -> usize) {
+        let (b, w) = (self.bandwidth, self.bandwidth + 1);
+        let f = &self.factors;
+        let last = (eliminated + b).min(self.n).min(eliminated + target.order());
+        for i in eliminated..last {
+            for j in eliminated..=i {
+                let mut c = 0.0;
+                for k in i.saturating_sub(b)..eliminated {
+                    c += f[i * w + b - (i - k)] * f[k * w + b] * f[j * w + b - (j - k)];
+                }
+                if c != 0.0 {
+                    target.add(local(i), local(j), -c);
+                }
+            }
+        }
     }
 
     /// The diagonal pivots D (all > 0).

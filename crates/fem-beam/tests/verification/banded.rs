@@ -53,3 +53,38 @@ fn indefinite_matrix_is_reported_with_its_equation() {
         other => panic!("expected a pivot error, got {other:?}"),
     }
 }
+
+/// S_W = A_WW − A_WO A_OO⁻¹ A_OW from the forward and reversed factors: S_W⁻¹ b = (A⁻¹ [0; b; 0])_W.
+#[test]
+fn window_schur_complement_matches_block_of_the_inverse() {
+    let mut rng = Lcg(11);
+    let (n, b) = (60usize, 3usize);
+    let mut a = SymmetricBanded::zeros(n, b);
+    for i in 0..n {
+        for j in i.saturating_sub(b)..i {
+            a.add(i, j, rng.next() - 0.5);
+        }
+        a.add(i, i, 4.0 + rng.next());
+    }
+    let forward = a.factor().unwrap();
+    let backward = a.reversed().factor().unwrap();
+    for (start, end) in [(0usize, 60usize), (0, 25), (20, 60), (20, 35), (7, 11)] {
+        let mut s = SymmetricBanded::zeros(1, b);
+        a.principal_submatrix_into(start, end, &mut s);
+        if start > 0 {
+            forward.subtract_leading_schur(start, &mut s);
+        }
+        if end < n {
+            backward.subtract_trailing_schur(end, &mut s);
+        }
+        let rhs: Vec<f64> = (start..end).map(|_| rng.next() - 0.5).collect();
+        let local = s.factor().unwrap().solve(&rhs);
+        let mut full = vec![0.0; n];
+        full[start..end].copy_from_slice(&rhs);
+        let reference = forward.solve(&full);
+        for (k, x) in local.iter().enumerate() {
+            // Diagonally dominant: both are exact to round-off.
+            assert!((x - reference[start + k]).abs() < 1e-13, "window [{start}, {end}) entry {k}");
+        }
+    }
+}

@@ -21,20 +21,42 @@
 //! M̂⁻¹Hᵀp is carried along, so W p is never needed either. Redundant stuck sections (more sections than DOFs)
 //! only make Σ⁻¹ large on them, which B absorbs. Iterates stop when the law residual meets the tolerance.
 //! Sections with a zero bound are fixed at p = 0 and left out.
+//!
+//! # The moving window
+//! Far from the load nothing changes from one step to the next: stuck sections keep their impulses, and the
+//! coupling through M̂⁻¹ decays like e^{−x/(√2ℓ)} with the coupling length ℓ = (EI h²θ²/ρA)^¼. So each step first
+//! tries the previous impulses; the sections where they violate the law, widened by a margin of 40ℓ (coupling
+//! below 1e-12), form the window. Only the window's impulses are re-solved, on the window's DOFs, with the rest of
+//! the beam condensed exactly into the window matrix by Schur complements taken from the LDLᵀ factors of M̂ and of
+//! M̂ reversed (S_W = M̂_WW − M̂_WO M̂_OO⁻¹ M̂_OW, whose inverse is the W block of M̂⁻¹). The law residual is then
+//! checked on *every* section; should a section outside the window fail, the whole problem is solved instead.
+//! The answer is therefore exact to the same tolerance; only the cost depends on the window.
 
 use super::{FrictionProblem, FrictionSolver, StepReport};
 use fem_beam::{BandedLdlt, SymmetricBanded};
+use friction::coulomb::natural_residual;
 
 /// Fraction of the distance to the boundary of the positive orthant taken by a step.
 const FRACTION_TO_BOUNDARY: f64 = 0.995;
 
-/// Banded primal–dual interior-point solver; scratch allocated once per run.
+/// How the steps of a run were solved.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct WindowStatistics {
+    /// Steps where the previous impulses already satisfied the law.
+    pub unchanged: usize,
+    /// Steps solved on a window.
+    pub windowed: usize,
+    /// Steps solved on the whole beam.
+    pub full: usize,
+    /// Sections re-solved, summed over the steps.
+    pub sections_solved: usize,
+}
+
+/// Per-section and per-DOF scratch of the interior-point iteration.
 #[derive(Debug)]
-pub struct BandedInteriorPoint {
-    tolerance: f64,
-    max_iterations: usize,
-    /// Sections with a_j > 0 (the others stay at p = 0).
+struct Work {
     active: Vec<usize>,
+    u_free: Vec<f64>,
     s1: Vec<f64>,
     s2: Vec<f64>,
     z1: Vec<f64>,
@@ -51,60 +73,55 @@ pub struct BandedInteriorPoint {
     u: Vec<f64>,
     y: Vec<f64>,
     dy: Vec<f64>,
-    v: Vec<f64>,
     b: SymmetricBanded,
     b_factor: BandedLdlt,
 }
 
-impl BandedInteriorPoint {
-    /// Scratch for `problem`.
-    pub fn new(problem: &FrictionProblem<'_>, tolerance: f64, max_iterations: usize) -> Self {
-        let (n, m) = (problem.m_hat.order(), problem.len());
-        let zeros = || vec![0.0; m];
-        Self {
-            tolerance,
-            max_iterations,
-            active: (0..m).filter(|&j| problem.bounds[j] > 0.0).collect(),
-            s1: zeros(),
-            s2: zeros(),
-            z1: zeros(),
-            z2: zeros(),
-            inv_s1: zeros(),
-            inv_s2: zeros(),
-            inv_sigma: zeros(),
-            r: zeros(),
-            c1: zeros(),
-            c2: zeros(),
-            dp: zeros(),
-            dz1: zeros(),
-            dz2: zeros(),
-            u: zeros(),
-            y: vec![0.0; n],
-            dy: vec![0.0; n],
-            v: vec![0.0; n],
-            b: problem.m_hat.clone(),
-            b_factor: problem.factor.clone(),
+/// Banded primal–dual interior-point solver with a moving window; scratch allocated once per run.
+#[derive(Debug)]
+pub struct BandedInteriorPoint {
+    tolerance: f64,
+    max_iterations: usize,
+    /// Window margin (m); None solves the whole beam every step.
+    margin: Option<f64>,
+    all_active: Vec<usize>,
+    backward: Option<BandedLdlt>,
+    window_matrix: SymmetricBanded,
+    work: Work,
+    v: Vec<f64>,
+    correction: Vec<f64>,
+    check: Vec<f64>,
+    started: bool,
+    /// How the steps were solved.
+    pub statistics: WindowStatistics,
+}
+
+impl Work {
+    /// u_j = u_free,j + H_j y over the active sections (y holds the DOFs from `offset` on).
+    fn refresh(&mut self, problem: &FrictionProblem<'_>, offset: usize) {
+        let rows = problem.contacts.rows();
+        for &j in &self.active {
+            self.u[j] = self.u_free[j] + rows[j].dot_shifted(&self.y, offset);
         }
     }
 
-    /// u = H(v_free + y).
-    fn refresh_velocities(&mut self, problem: &FrictionProblem<'_>, v_free: &[f64]) {
-        for ((v, vf), y) in self.v.iter_mut().zip(v_free).zip(&self.y) {
-            *v = vf + y;
-        }
-        problem.contacts.velocities(&self.v, &mut self.u);
+    fn residual(&self, problem: &FrictionProblem<'_>, p: &[f64]) -> f64 {
+        self.active
+            .iter()
+            .map(|&j| natural_residual(self.u[j], p[j], problem.bounds[j], 1.0 / problem.delassus_diagonal[j]))
+            .fold(0.0, f64::max)
     }
 
-    /// Solve (W + Σ)Δp = r (B factored): Δp into `dp`, M̂⁻¹HᵀΔp into `dy`.
-    fn solve_newton(&mut self, problem: &FrictionProblem<'_>) {
+    /// Solve (W + Σ)Δp = r (B factored): Δp into `dp`, the velocity correction into `dy`.
+    fn solve_newton(&mut self, problem: &FrictionProblem<'_>, offset: usize) {
         let rows = problem.contacts.rows();
         self.dy.iter_mut().for_each(|x| *x = 0.0);
         for &j in &self.active {
-            rows[j].add_transpose(self.r[j] * self.inv_sigma[j], &mut self.dy);
+            rows[j].add_transpose_shifted(self.r[j] * self.inv_sigma[j], &mut self.dy, offset);
         }
         self.b_factor.solve_in_place(&mut self.dy);
         for &j in &self.active {
-            self.dp[j] = (self.r[j] - rows[j].dot(&self.dy)) * self.inv_sigma[j];
+            self.dp[j] = (self.r[j] - rows[j].dot_shifted(&self.dy, offset)) * self.inv_sigma[j];
         }
     }
 
@@ -143,6 +160,236 @@ impl BandedInteriorPoint {
             .sum();
         sum / (2 * self.active.len()) as f64
     }
+
+    /// Mehrotra predictor–corrector on the active sections, from p = 0, with `base` = the matrix M̂ (or its window
+    /// condensation) over the DOFs from `offset` on and u_free set. Returns (iterations, residual).
+    fn iterate(
+        &mut self,
+        problem: &FrictionProblem<'_>,
+        base: &SymmetricBanded,
+        offset: usize,
+        p: &mut [f64],
+        tolerance: f64,
+        max_iterations: usize,
+    ) -> crate::Result<(usize, f64)> {
+        let a = &problem.bounds;
+        let rows = problem.contacts.rows();
+        let nw = base.order();
+        self.y.resize(nw, 0.0);
+        self.dy.resize(nw, 0.0);
+        self.y.iter_mut().for_each(|x| *x = 0.0);
+        // Start at p = 0, the centre of every box: warm starts from the previous step's (p, z) were measured to
+        // cost more iterations, not fewer (18.6 cold vs 19.8–23.9 warm per step, distributed 5 kN/m).
+        let scale = self.active.iter().fold(super::VELOCITY_FLOOR, |s, &j| s.max(self.u_free[j].abs()));
+        let shift = 0.01 * scale;
+        for &j in &self.active {
+            p[j] = 0.0;
+            self.u[j] = self.u_free[j];
+            self.s1[j] = a[j];
+            self.s2[j] = a[j];
+            // Split u into z₂ − z₁, both kept away from zero.
+            self.z1[j] = (-self.u[j]).max(0.0) + shift;
+            self.z2[j] = self.u[j].max(0.0) + shift;
+        }
+        let mut residual = self.residual(problem, p);
+        let mut iterations = 0;
+        while residual > tolerance && iterations < max_iterations && !self.active.is_empty() {
+            iterations += 1;
+            let mu = self.complementarity(0.0);
+            // B = base + HᵀΣ⁻¹H, Σ = z₁/s₁ + z₂/s₂, floored so that Σ⁻¹ stays finite for sections stuck to
+            // round-off (z → 0): beyond ~1e15·W_jj the extra stiffness changes nothing.
+            self.b.copy_from(base);
+            for &j in &self.active {
+                self.inv_s1[j] = 1.0 / self.s1[j];
+                self.inv_s2[j] = 1.0 / self.s2[j];
+                let sigma = (self.z1[j] * self.inv_s1[j] + self.z2[j] * self.inv_s2[j])
+                    .max(1e-15 * problem.delassus_diagonal[j]);
+                self.inv_sigma[j] = 1.0 / sigma;
+                let (dofs, len) = rows[j].dofs_shifted(offset);
+                self.b.add_outer(&dofs[..len], rows[j].values(), self.inv_sigma[j]);
+            }
+            self.b.factor_into(&mut self.b_factor)?;
+            // Predictor (affine scaling, c = 0): r = −u.
+            for &j in &self.active {
+                self.r[j] = -self.u[j];
+                self.c1[j] = 0.0;
+                self.c2[j] = 0.0;
+            }
+            self.solve_newton(problem, offset);
+            self.multiplier_steps();
+            let alpha_affine = self.max_step();
+            let centring = (self.complementarity(alpha_affine) / mu).powi(3).min(1.0);
+            // Corrector: targets σμ − Δs_aff∘Δz_aff (Δs₁ = −Δp, Δs₂ = Δp), and r = −u − c₁/s₁ + c₂/s₂.
+            for &j in &self.active {
+                self.c1[j] = centring * mu + self.dp[j] * self.dz1[j];
+                self.c2[j] = centring * mu - self.dp[j] * self.dz2[j];
+                self.r[j] = -self.u[j] - self.c1[j] * self.inv_s1[j] + self.c2[j] * self.inv_s2[j];
+            }
+            self.solve_newton(problem, offset);
+            self.multiplier_steps();
+            let alpha = (FRACTION_TO_BOUNDARY * self.max_step()).min(1.0);
+            for &j in &self.active {
+                let dp = alpha * self.dp[j];
+                p[j] += dp;
+                // Slacks are updated, not recomputed from p: near a bound a − p loses all precision.
+                self.s1[j] -= dp;
+                self.s2[j] += dp;
+                self.z1[j] += alpha * self.dz1[j];
+                self.z2[j] += alpha * self.dz2[j];
+            }
+            for (y, dy) in self.y.iter_mut().zip(&self.dy) {
+                *y += alpha * dy;
+            }
+            self.refresh(problem, offset);
+            residual = self.residual(problem, p);
+        }
+        Ok((iterations, residual))
+    }
+}
+
+impl BandedInteriorPoint {
+    /// Scratch for `problem`. With `window_margin` = Some(m) (metres; 40 coupling lengths is safe) each step
+    /// re-solves only a window around the sections that change; None always solves the whole problem.
+    pub fn new(
+        problem: &FrictionProblem<'_>,
+        tolerance: f64,
+        max_iterations: usize,
+        window_margin: Option<f64>,
+    ) -> crate::Result<Self> {
+        let (n, m) = (problem.m_hat.order(), problem.len());
+        let zeros = || vec![0.0; m];
+        let backward = match window_margin {
+            Some(_) => Some(problem.m_hat.reversed().factor()?),
+            None => None,
+        };
+        Ok(Self {
+            tolerance,
+            max_iterations,
+            margin: window_margin,
+            all_active: (0..m).filter(|&j| problem.bounds[j] > 0.0).collect(),
+            backward,
+            window_matrix: problem.m_hat.clone(),
+            work: Work {
+                active: Vec::with_capacity(m),
+                u_free: zeros(),
+                s1: zeros(),
+                s2: zeros(),
+                z1: zeros(),
+                z2: zeros(),
+                inv_s1: zeros(),
+                inv_s2: zeros(),
+                inv_sigma: zeros(),
+                r: zeros(),
+                c1: zeros(),
+                c2: zeros(),
+                dp: zeros(),
+                dz1: zeros(),
+                dz2: zeros(),
+                u: zeros(),
+                y: vec![0.0; n],
+                dy: vec![0.0; n],
+                b: problem.m_hat.clone(),
+                b_factor: problem.factor.clone(),
+            },
+            v: vec![0.0; n],
+            correction: vec![0.0; n],
+            check: zeros(),
+            started: false,
+            statistics: WindowStatistics::default(),
+        })
+    }
+
+    /// v = v_free + M̂⁻¹Hᵀp and the law residual of every section, into `self.check` (u) — one banded solve.
+    fn full_residual(&mut self, problem: &FrictionProblem<'_>, v_free: &[f64], p: &[f64]) -> f64 {
+        self.correction.iter_mut().for_each(|x| *x = 0.0);
+        problem.contacts.add_transpose(p, &mut self.correction);
+        problem.factor.solve_in_place(&mut self.correction);
+        for ((v, vf), c) in self.v.iter_mut().zip(v_free).zip(&self.correction) {
+            *v = vf + c;
+        }
+        problem.contacts.velocities(&self.v, &mut self.check);
+        (0..p.len())
+            .map(|j| natural_residual(self.check[j], p[j], problem.bounds[j], 1.0 / problem.delassus_diagonal[j]))
+            .fold(0.0, f64::max)
+    }
+
+    fn solve_whole(
+        &mut self,
+        problem: &FrictionProblem<'_>,
+        u_free: &[f64],
+        p: &mut [f64],
+        tolerance: f64,
+    ) -> crate::Result<(usize, f64)> {
+        self.statistics.full += 1;
+        self.statistics.sections_solved += self.all_active.len();
+        self.work.active.clear();
+        self.work.active.extend_from_slice(&self.all_active);
+        self.work.u_free.copy_from_slice(u_free);
+        self.work.iterate(problem, problem.m_hat, 0, p, tolerance, self.max_iterations)
+    }
+
+    /// Re-solve the sections within `margin` of the ones violating the law (residuals in `self.check`, v in
+    /// `self.v`), on the window's DOFs. Returns None when the window would be the whole problem.
+    fn solve_window(
+        &mut self,
+        problem: &FrictionProblem<'_>,
+        p: &mut [f64],
+        tolerance: f64,
+        margin: f64,
+    ) -> crate::Result<Option<usize>> {
+        let positions = problem.contacts.positions();
+        let rows = problem.contacts.rows();
+        let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+        for &j in &self.all_active {
+            let r = natural_residual(self.check[j], p[j], problem.bounds[j], 1.0 / problem.delassus_diagonal[j]);
+            if r > tolerance {
+                lo = lo.min(positions[j]);
+                hi = hi.max(positions[j]);
+            }
+        }
+        let (lo, hi) = (lo - margin, hi + margin);
+        self.work.active.clear();
+        let (mut start, mut end) = (usize::MAX, 0);
+        for &j in &self.all_active {
+            if (lo..=hi).contains(&positions[j]) {
+                self.work.active.push(j);
+                if let Some((first, last)) = rows[j].dof_span() {
+                    start = start.min(first);
+                    end = end.max(last + 1);
+                }
+            }
+        }
+        let n = problem.m_hat.order();
+        let bandwidth = problem.m_hat.bandwidth();
+        if self.work.active.len() == self.all_active.len() || end <= start {
+            return Ok(None);
+        }
+        // The condensation needs the window wider than the band.
+        if end - start <= bandwidth {
+            end = (start + bandwidth + 1).min(n);
+            start = end.saturating_sub(bandwidth + 1);
+        }
+        // v' = v − M̂⁻¹H_Wᵀp_W: the motion with the window's impulses removed; u_free of the window from it.
+        self.correction.iter_mut().for_each(|x| *x = 0.0);
+        for &j in &self.work.active {
+            rows[j].add_transpose(p[j], &mut self.correction);
+        }
+        problem.factor.solve_in_place(&mut self.correction);
+        for &j in &self.work.active {
+            self.work.u_free[j] = rows[j].dot(&self.v) - rows[j].dot(&self.correction);
+        }
+        problem.m_hat.principal_submatrix_into(start, end, &mut self.window_matrix);
+        if start > 0 {
+            problem.factor.subtract_leading_schur(start, &mut self.window_matrix);
+        }
+        if end < n {
+            self.backward.as_ref().expect("window factors").subtract_trailing_schur(end, &mut self.window_matrix);
+        }
+        self.statistics.sections_solved += self.work.active.len();
+        let (iterations, _) =
+            self.work.iterate(problem, &self.window_matrix, start, p, tolerance, self.max_iterations)?;
+        Ok(Some(iterations))
+    }
 }
 
 impl FrictionSolver for BandedInteriorPoint {
@@ -158,72 +405,32 @@ impl FrictionSolver for BandedInteriorPoint {
         p: &mut [f64],
     ) -> crate::Result<StepReport> {
         let tolerance = problem.absolute_tolerance(self.tolerance, u_free);
-        let a = &problem.bounds;
-        let rows = problem.contacts.rows();
-        // Start at p = 0, the centre of every box: warm starts from the previous step's (p, z) were measured to
-        // cost more iterations, not fewer (18.6 cold vs 19.8–23.9 warm per step, distributed 5 kN/m).
-        p.iter_mut().for_each(|x| *x = 0.0);
-        self.y.iter_mut().for_each(|x| *x = 0.0);
-        self.u.copy_from_slice(u_free);
-        let shift = 0.01 * u_free.iter().fold(super::VELOCITY_FLOOR, |s, u| s.max(u.abs()));
-        for &j in &self.active {
-            self.s1[j] = a[j];
-            self.s2[j] = a[j];
-            // Split u into z₂ − z₁, both kept away from zero.
-            self.z1[j] = (-self.u[j]).max(0.0) + shift;
-            self.z2[j] = self.u[j].max(0.0) + shift;
-        }
-        let mut residual = problem.law_residual(&self.u, p);
-        let mut iterations = 0;
-        while residual > tolerance && iterations < self.max_iterations && !self.active.is_empty() {
-            iterations += 1;
-            let mu = self.complementarity(0.0);
-            // B = M̂ + HᵀΣ⁻¹H, Σ = z₁/s₁ + z₂/s₂, floored so that Σ⁻¹ stays finite for sections stuck to
-            // round-off (z → 0): beyond ~1e15·W_jj the extra stiffness changes nothing.
-            self.b.copy_from(problem.m_hat);
-            for &j in &self.active {
-                self.inv_s1[j] = 1.0 / self.s1[j];
-                self.inv_s2[j] = 1.0 / self.s2[j];
-                let sigma = (self.z1[j] * self.inv_s1[j] + self.z2[j] * self.inv_s2[j])
-                    .max(1e-15 * problem.delassus_diagonal[j]);
-                self.inv_sigma[j] = 1.0 / sigma;
-                self.b.add_outer(rows[j].dofs(), rows[j].values(), self.inv_sigma[j]);
+        let first = !self.started;
+        self.started = true;
+        let (iterations, residual) = match self.margin {
+            Some(margin) if !first => {
+                let predicted = self.full_residual(problem, v_free, p);
+                if predicted <= tolerance {
+                    self.statistics.unchanged += 1;
+                    (0, predicted)
+                } else {
+                    match self.solve_window(problem, p, tolerance, margin)? {
+                        Some(iterations) => {
+                            let residual = self.full_residual(problem, v_free, p);
+                            if residual <= tolerance {
+                                self.statistics.windowed += 1;
+                                (iterations, residual)
+                            } else {
+                                let (more, residual) = self.solve_whole(problem, u_free, p, tolerance)?;
+                                (iterations + more, residual)
+                            }
+                        }
+                        None => self.solve_whole(problem, u_free, p, tolerance)?,
+                    }
+                }
             }
-            self.b.factor_into(&mut self.b_factor)?;
-            // Predictor (affine scaling, c = 0): r = −u.
-            for &j in &self.active {
-                self.r[j] = -self.u[j];
-                self.c1[j] = 0.0;
-                self.c2[j] = 0.0;
-            }
-            self.solve_newton(problem);
-            self.multiplier_steps();
-            let alpha_affine = self.max_step();
-            let centring = (self.complementarity(alpha_affine) / mu).powi(3).min(1.0);
-            // Corrector: targets σμ − Δs_aff∘Δz_aff (Δs₁ = −Δp, Δs₂ = Δp), and r = −u − c₁/s₁ + c₂/s₂.
-            for &j in &self.active {
-                self.c1[j] = centring * mu + self.dp[j] * self.dz1[j];
-                self.c2[j] = centring * mu - self.dp[j] * self.dz2[j];
-                self.r[j] = -self.u[j] - self.c1[j] * self.inv_s1[j] + self.c2[j] * self.inv_s2[j];
-            }
-            self.solve_newton(problem);
-            self.multiplier_steps();
-            let alpha = (FRACTION_TO_BOUNDARY * self.max_step()).min(1.0);
-            for &j in &self.active {
-                let dp = alpha * self.dp[j];
-                p[j] += dp;
-                // Slacks are updated, not recomputed from p: near a bound a − p loses all precision.
-                self.s1[j] -= dp;
-                self.s2[j] += dp;
-                self.z1[j] += alpha * self.dz1[j];
-                self.z2[j] += alpha * self.dz2[j];
-            }
-            for (y, dy) in self.y.iter_mut().zip(&self.dy) {
-                *y += alpha * dy;
-            }
-            self.refresh_velocities(problem, v_free);
-            residual = problem.law_residual(&self.u, p);
-        }
+            _ => self.solve_whole(problem, u_free, p, tolerance)?,
+        };
         Ok(StepReport { iterations, residual, tolerance, converged: residual <= tolerance })
     }
 }

@@ -59,11 +59,14 @@ pub struct SolverSettings {
     pub tolerance: f64,
     /// Iteration cap per step: sweeps for projection, iterations for interior point. Default 20 000.
     pub max_iterations: usize,
+    /// Let the interior point re-solve only a moving window around the sections that change (exact to the same
+    /// tolerance: every section is checked; see [`interior_point`]). Default true.
+    pub moving_window: bool,
 }
 
 impl Default for SolverSettings {
     fn default() -> Self {
-        Self { kind: SolverKind::Auto, tolerance: 1e-10, max_iterations: 20_000 }
+        Self { kind: SolverKind::Auto, tolerance: 1e-10, max_iterations: 20_000, moving_window: true }
     }
 }
 
@@ -155,19 +158,24 @@ pub trait FrictionSolver {
     ) -> crate::Result<StepReport>;
 }
 
-/// Build the solver `kind` (not `Auto`: resolve it first) for `problem`.
+/// Build the solver `kind` (not `Auto`: resolve it first) for `problem`. `window_margin` (m) is the interior
+/// point's moving-window margin, used when `settings.moving_window` is set (40 coupling lengths is safe).
 pub fn build_solver<'a>(
     kind: SolverKind,
     problem: &FrictionProblem<'_>,
     settings: &SolverSettings,
+    window_margin: Option<f64>,
 ) -> crate::Result<Box<dyn FrictionSolver + 'a>> {
     Ok(match kind {
         SolverKind::Projection | SolverKind::Auto => {
             Box::new(projection::ProjectedGaussSeidel::new(problem, settings.tolerance, settings.max_iterations))
         }
-        SolverKind::InteriorPoint => {
-            Box::new(interior_point::BandedInteriorPoint::new(problem, settings.tolerance, settings.max_iterations))
-        }
+        SolverKind::InteriorPoint => Box::new(interior_point::BandedInteriorPoint::new(
+            problem,
+            settings.tolerance,
+            settings.max_iterations,
+            window_margin.filter(|_| settings.moving_window),
+        )?),
         #[cfg(feature = "clarabel")]
         SolverKind::Clarabel => Box::new(clarabel::ClarabelQp::new(problem, settings.tolerance)?),
         #[cfg(not(feature = "clarabel"))]

@@ -32,7 +32,7 @@ fn oscillator(
     let factor = m_hat.factor().unwrap();
     let problem = FrictionProblem::new(&contacts, &m_hat, &factor, h);
     let settings = SolverSettings { kind, tolerance: 1e-12, ..SolverSettings::default() };
-    let solver = build_solver(kind, &problem, &settings).unwrap();
+    let solver = build_solver(kind, &problem, &settings, None).unwrap();
     let mut stepper = MoreauJean::new(&system, &contacts, integration, problem, solver, vec![x0], vec![0.0]);
     let mut out = vec![(0.0, x0)];
     for _ in 0..steps {

@@ -26,8 +26,13 @@ fn velocities(
 }
 
 fn compare(contacts: &ContactSet, a: SolverKind, b: SolverKind, settings: &RunSettings, steps: usize) {
-    let (va, ra) = velocities(contacts, a, settings, steps);
-    let (vb, rb) = velocities(contacts, b, settings, steps);
+    compare_settings(contacts, (a, settings), (b, settings), steps);
+}
+
+fn compare_settings(contacts: &ContactSet, a: (SolverKind, &RunSettings), b: (SolverKind, &RunSettings), steps: usize) {
+    let ((a, sa), (b, sb)) = (a, b);
+    let (va, ra) = velocities(contacts, a, sa, steps);
+    let (vb, rb) = velocities(contacts, b, sb, steps);
     assert_eq!(va.len(), steps);
     for (k, (x, y)) in va.iter().zip(&vb).enumerate() {
         // The bound; both solvers stop at law residuals ≤ 1e-10 relative, Clarabel at 1e-13 gaps.
@@ -55,6 +60,17 @@ fn clarabel_agrees_with_interior_point_for_distributed_friction() {
     let settings =
         RunSettings { speed: 200.0, initial: InitialState::SteadyState { position: 95.0 }, ..RunSettings::default() };
     compare(&contacts, SolverKind::InteriorPoint, SolverKind::Clarabel, &settings, 25);
+}
+
+/// The moving window re-solves only part of the beam but checks every section: same answer as the whole solve.
+#[test]
+fn moving_window_agrees_with_whole_beam_solve() {
+    let model = reference();
+    let contacts = DistributedFriction::new(2e3).contact_set(&model).unwrap();
+    let windowed = RunSettings { speed: 150.0, ..RunSettings::default() };
+    let mut whole = windowed.clone();
+    whole.solver.moving_window = false;
+    compare_settings(&contacts, (SolverKind::InteriorPoint, &windowed), (SolverKind::InteriorPoint, &whole), 600);
 }
 
 /// Whole runs (release build: `cargo test --release -p nscd -- --ignored`).
