@@ -117,6 +117,7 @@ pub struct MoreauJean<'a> {
     work: Vec<f64>,
     work2: Vec<f64>,
     u_free: Vec<f64>,
+    v_free: Vec<f64>,
 }
 
 impl<'a> MoreauJean<'a> {
@@ -155,6 +156,7 @@ impl<'a> MoreauJean<'a> {
             work: vec![0.0; n],
             work2: vec![0.0; n],
             u_free: vec![0.0; m],
+            v_free: vec![0.0; n],
         };
         let (kinetic, strain) = stepper.energies();
         stepper.energy.initial = kinetic + strain;
@@ -183,13 +185,12 @@ impl<'a> MoreauJean<'a> {
         (0.5 * self.system.mass.quadratic_form(&self.v), 0.5 * self.system.stiffness.quadratic_form(&self.q))
     }
 
-    /// Advance one step under `forcing`. Errors (without changing the state's meaning) if the friction solver does
-    /// not converge or a value becomes non-finite.
-    pub fn step(&mut self, forcing: &dyn Forcing) -> Result<StepReport> {
+    /// The free velocity v_free of the next step (no friction impulse), without advancing:
+    /// v_free = v_k + M̂⁻¹ h [θF_{k+1} + (1−θ)F_k − C v_k − K(q_k + hθ v_k)].
+    pub fn free_velocity(&mut self, forcing: &dyn Forcing) -> &[f64] {
         let (h, theta) = (self.h, self.theta);
         let (t0, t1) = (self.time, self.time + h);
         let n = self.q.len();
-        // rhs = h[θF₁ + (1−θ)F₀ − C v − K(q + hθ v)]
         for i in 0..n {
             self.work2[i] = self.q[i] + h * theta * self.v[i];
         }
@@ -206,12 +207,22 @@ impl<'a> MoreauJean<'a> {
         forcing.add_to(t1, h * theta, &mut self.work);
         forcing.add_to(t0, h * (1.0 - theta), &mut self.work);
         self.factor.solve_in_place(&mut self.work);
+        for i in 0..n {
+            self.v_free[i] = self.v[i] + self.work[i];
+        }
+        &self.v_free
+    }
+
+    /// Advance one step under `forcing`. Errors (without changing the state's meaning) if the friction solver does
+    /// not converge or a value becomes non-finite.
+    pub fn step(&mut self, forcing: &dyn Forcing) -> Result<StepReport> {
+        let (h, theta) = (self.h, self.theta);
+        let (t0, t1) = (self.time, self.time + h);
+        let n = self.q.len();
+        self.free_velocity(forcing);
         self.v_prev.copy_from_slice(&self.v);
         self.q_prev.copy_from_slice(&self.q);
-        // v_free, kept in self.v until the friction correction is added.
-        for i in 0..n {
-            self.v[i] += self.work[i];
-        }
+        self.v.copy_from_slice(&self.v_free);
         let report = if self.contacts.is_empty() {
             StepReport { converged: true, ..StepReport::default() }
         } else {
