@@ -71,6 +71,21 @@ impl SymmetricBanded {
         }
     }
 
+    /// Add w·h hᵀ for a dense h on the consecutive rows `first..first + h.len()` (at most bandwidth + 1 of them).
+    #[inline]
+    pub fn add_outer_contiguous(&mut self, first: usize, h: &[f64], w: f64) {
+        let b = self.bandwidth;
+        let stride = b + 1;
+        assert!(h.len() <= stride && first + h.len() <= self.n, "add_outer_contiguous: block outside the matrix");
+        for k in 0..h.len() {
+            let wk = w * h[k];
+            let row = (first + k) * stride + b;
+            for l in 0..=k {
+                self.data[row - (k - l)] += wk * h[l];
+            }
+        }
+    }
+
     /// y = A x.
     pub fn mul_vec(&self, x: &[f64], y: &mut [f64]) {
         let b = self.bandwidth;
@@ -153,6 +168,32 @@ impl SymmetricBanded {
         }
     }
 
+    /// The factorisation for half-bandwidth 3 (every Hermite beam matrix), unrolled: row i holds
+    /// (A_{i,i−3}, A_{i,i−2}, A_{i,i−1}, A_ii) and becomes (L_{i,i−3}, L_{i,i−2}, L_{i,i−1}, D_i).
+    fn factor_in_place_3(n: usize, f: &mut [f64]) -> Result<()> {
+        // Rows i−1, i−2 as their L entries, and D of rows i−1..i−3; missing rows are zero with D = 1.
+        let (mut r1, mut r2) = ([0.0f64; 3], [0.0f64; 3]);
+        let (mut d1, mut d2, mut d3) = (1.0f64, 1.0f64, 1.0f64);
+        for i in 0..n {
+            let row = &mut f[4 * i..4 * i + 4];
+            // r1 = (L_{i−1,i−4}, L_{i−1,i−3}, L_{i−1,i−2}), r2 = (L_{i−2,i−5}, L_{i−2,i−4}, L_{i−2,i−3})
+            let l3 = if i >= 3 { row[0] / d3 } else { 0.0 };
+            let l2 = if i >= 2 { (row[1] - l3 * r2[2] * d3) / d2 } else { 0.0 };
+            let l1 = if i >= 1 { (row[2] - l3 * r1[1] * d3 - l2 * r1[2] * d2) / d1 } else { 0.0 };
+            let d = row[3] - l3 * l3 * d3 - l2 * l2 * d2 - l1 * l1 * d1;
+            if !(d.is_finite() && d > 0.0) {
+                return Err(FemError::NonPositivePivot { index: i, pivot: d });
+            }
+            row[0] = l3;
+            row[1] = l2;
+            row[2] = l1;
+            row[3] = d;
+            (r2, r1) = (r1, [l3, l2, l1]);
+            (d3, d2, d1) = (d2, d1, d);
+        }
+        Ok(())
+    }
+
     /// Overwrite this matrix with `other` (same bandwidth; the order follows `other`), without allocating once
     /// the storage is large enough.
     pub fn copy_from(&mut self, other: &SymmetricBanded) {
@@ -180,6 +221,9 @@ impl SymmetricBanded {
     }
 
     fn factor_in_place(n: usize, b: usize, f: &mut [f64]) -> Result<()> {
+        if b == 3 {
+            return Self::factor_in_place_3(n, f);
+        }
         let w = b + 1;
         for i in 0..n {
             let first = i.saturating_sub(b);
@@ -223,6 +267,9 @@ impl BandedLdlt {
     /// no allocation.
     pub fn solve_in_place(&self, x: &mut [f64]) {
         assert_eq!(x.len(), self.n, "right-hand side length");
+        if self.bandwidth == 3 {
+            return self.solve_in_place_3(x);
+        }
         let b = self.bandwidth;
         let w = b + 1;
         let f = &self.factors;
@@ -243,6 +290,29 @@ impl BandedLdlt {
             for j in i.saturating_sub(b)..i {
                 x[j] -= row[b - (i - j)] * xi;
             }
+        }
+    }
+
+    /// [`BandedLdlt::solve_in_place`] unrolled for half-bandwidth 3.
+    fn solve_in_place_3(&self, x: &mut [f64]) {
+        let f = &self.factors;
+        let n = self.n;
+        let (mut y1, mut y2, mut y3) = (0.0, 0.0, 0.0);
+        for i in 0..n {
+            let row = &f[4 * i..4 * i + 4];
+            let y = x[i] - row[2] * y1 - row[1] * y2 - row[0] * y3;
+            x[i] = y;
+            (y3, y2, y1) = (y2, y1, y);
+        }
+        let (mut x1, mut x2, mut x3) = (0.0, 0.0, 0.0);
+        for i in (0..n).rev() {
+            // x_i = y_i/D_i − L_{i+1,i} x_{i+1} − L_{i+2,i} x_{i+2} − L_{i+3,i} x_{i+3}
+            let l1 = if i + 1 < n { f[4 * (i + 1) + 2] } else { 0.0 };
+            let l2 = if i + 2 < n { f[4 * (i + 2) + 1] } else { 0.0 };
+            let l3 = if i + 3 < n { f[4 * (i + 3)] } else { 0.0 };
+            let xi = x[i] / f[4 * i + 3] - l1 * x1 - l2 * x2 - l3 * x3;
+            x[i] = xi;
+            (x3, x2, x1) = (x2, x1, xi);
         }
     }
 

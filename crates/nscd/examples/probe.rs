@@ -1,42 +1,35 @@
-//! Scratch probe.
+//! Times one reference run: `cargo run --release -p nscd --example probe -- <case>` with case one of
+//! `none`, `devices7`, `devices31`, `distributed1k`, `distributed10k`, `distributed5k` (default), `distributed5k-whole`,
+//! optionally followed by a step count to stop early (for instruction counts under callgrind).
+//! Prints the wall time of the time loop and the solver statistics.
+
 use fem_beam::reference::uic60_on_soft_soil;
 use friction::{ContactSet, Devices, DistributedFriction};
-use nscd::{RunSettings, Simulation, SolverKind};
+use nscd::{RunSettings, Simulation};
 
 fn main() {
-    let case = uic60_on_soft_soil();
-    let model = case.model().unwrap();
-    let cases: Vec<(&str, ContactSet, SolverKind)> = vec![
-        ("none", ContactSet::new(), SolverKind::Auto),
-        ("dist 5k only", DistributedFriction::new(5e3).contact_set(&model).unwrap(), SolverKind::InteriorPoint),
-        ("31 dev", Devices::uniform(31, 100e3).contact_set(&model).unwrap(), SolverKind::Auto),
-        ("31 dev newton", Devices::uniform(31, 100e3).contact_set(&model).unwrap(), SolverKind::InteriorPoint),
-        ("dist 1k", DistributedFriction::new(1e3).contact_set(&model).unwrap(), SolverKind::InteriorPoint),
-        ("dist 5k", DistributedFriction::new(5e3).contact_set(&model).unwrap(), SolverKind::InteriorPoint),
-        ("dist 10k", DistributedFriction::new(10e3).contact_set(&model).unwrap(), SolverKind::InteriorPoint),
-    ];
-    for (name, contacts, kind) in cases {
-        let mut s = RunSettings::default();
-        s.solver.kind = kind;
-
-        let t = std::time::Instant::now();
-        match Simulation::new(&model, &contacts, &s).unwrap().run() {
-            Ok(r) => println!(
-                "{name:>14}: down {:.5} up {:.5} solver {} mean it {:.2} max it {} res {:.2e} loop {:.3}s total {:.3}s  E resid {:.2e} load {:.3e} fric {:.3e} num {:.3e}",
-                r.max_downward.magnitude,
-                r.max_upward.magnitude,
-                r.statistics.solver,
-                r.statistics.mean_iterations,
-                r.statistics.max_iterations,
-                r.statistics.max_residual,
-                r.statistics.wall_time,
-                t.elapsed().as_secs_f64(),
-                r.energy.residual(),
-                r.energy.load_work,
-                r.energy.friction_work,
-                r.energy.numerical_dissipation
-            ),
-            Err(e) => println!("{name}: error {e}"),
+    let case = std::env::args().nth(1).unwrap_or_else(|| "distributed5k".into());
+    let model = uic60_on_soft_soil().model().expect("reference model");
+    let mut settings = RunSettings::default();
+    let contacts = match case.as_str() {
+        "none" => ContactSet::new(),
+        "devices7" => Devices::uniform(7, 100e3).contact_set(&model).expect("devices"),
+        "devices31" => Devices::uniform(31, 100e3).contact_set(&model).expect("devices"),
+        "distributed1k" => DistributedFriction::new(1e3).contact_set(&model).expect("friction"),
+        "distributed10k" => DistributedFriction::new(10e3).contact_set(&model).expect("friction"),
+        "distributed5k-whole" => {
+            settings.solver.moving_window = false;
+            DistributedFriction::new(5e3).contact_set(&model).expect("friction")
         }
-    }
+        _ => DistributedFriction::new(5e3).contact_set(&model).expect("friction"),
+    };
+    let steps: usize = std::env::args().nth(2).and_then(|s| s.parse().ok()).unwrap_or(usize::MAX);
+    let result = Simulation::new(&model, &contacts, &settings)
+        .and_then(|s| s.run_observed(&mut |view| view.step < steps))
+        .expect("run");
+    let s = &result.statistics;
+    println!(
+        "{case}: max down {:.6} m, solver {}, {:.2} iterations/step (max {}), loop {:.3} s",
+        result.max_downward.magnitude, s.solver, s.mean_iterations, s.max_iterations, s.wall_time
+    );
 }

@@ -52,25 +52,67 @@ pub struct WindowStatistics {
     pub sections_solved: usize,
 }
 
+/// Interior-point state of one section (kept together: the iteration sweeps the sections in order).
+#[derive(Debug, Clone, Copy, Default)]
+struct Section {
+    /// First DOF of the row (window-local): rows touch consecutive free DOFs.
+    first: usize,
+    /// Entries of the row, zero-padded to four.
+    h: [f64; 4],
+    /// Number of entries.
+    len: usize,
+    /// Bound a_j (N·s), W_jj and 1/W_jj.
+    a: f64,
+    w: f64,
+    inv_w: f64,
+    u_free: f64,
+    u: f64,
+    s1: f64,
+    s2: f64,
+    z1: f64,
+    z2: f64,
+    inv_s1: f64,
+    inv_s2: f64,
+    inv_z1: f64,
+    inv_z2: f64,
+    inv_sigma: f64,
+    r: f64,
+    c1: f64,
+    c2: f64,
+    dp: f64,
+    dz1: f64,
+    dz2: f64,
+}
+
+impl Section {
+    /// The law residual at (u, p): |p − proj(p − u/W_jj)|·W_jj (m/s), as [`natural_residual`].
+    #[inline]
+    fn law_residual(&self, p: f64) -> f64 {
+        (p - (p - self.u * self.inv_w).clamp(-self.a, self.a)).abs() * self.w
+    }
+
+    /// H_j·x (x padded with three zeros past its end).
+    #[inline]
+    fn dot(&self, x: &[f64]) -> f64 {
+        let x = &x[self.first..self.first + 4];
+        self.h[0] * x[0] + self.h[1] * x[1] + self.h[2] * x[2] + self.h[3] * x[3]
+    }
+
+    /// out += s·H_jᵀ (out padded with three zeros past its end).
+    #[inline]
+    fn add_transpose(&self, s: f64, out: &mut [f64]) {
+        let out = &mut out[self.first..self.first + 4];
+        for k in 0..4 {
+            out[k] += s * self.h[k];
+        }
+    }
+}
+
 /// Per-section and per-DOF scratch of the interior-point iteration.
 #[derive(Debug)]
 struct Work {
     active: Vec<usize>,
-    u_free: Vec<f64>,
-    s1: Vec<f64>,
-    s2: Vec<f64>,
-    z1: Vec<f64>,
-    z2: Vec<f64>,
-    inv_s1: Vec<f64>,
-    inv_s2: Vec<f64>,
-    inv_sigma: Vec<f64>,
-    r: Vec<f64>,
-    c1: Vec<f64>,
-    c2: Vec<f64>,
-    dp: Vec<f64>,
-    dz1: Vec<f64>,
-    dz2: Vec<f64>,
-    u: Vec<f64>,
+    sections: Vec<Section>,
     y: Vec<f64>,
     dy: Vec<f64>,
     b: SymmetricBanded,
@@ -97,68 +139,24 @@ pub struct BandedInteriorPoint {
 }
 
 impl Work {
-    /// u_j = u_free,j + H_j y over the active sections (y holds the DOFs from `offset` on).
-    fn refresh(&mut self, problem: &FrictionProblem<'_>, offset: usize) {
-        let rows = problem.contacts.rows();
-        for &j in &self.active {
-            self.u[j] = self.u_free[j] + rows[j].dot_shifted(&self.y, offset);
-        }
-    }
-
-    fn residual(&self, problem: &FrictionProblem<'_>, p: &[f64]) -> f64 {
-        self.active
-            .iter()
-            .map(|&j| natural_residual(self.u[j], p[j], problem.bounds[j], 1.0 / problem.delassus_diagonal[j]))
-            .fold(0.0, f64::max)
-    }
-
-    /// Solve (W + Σ)Δp = r (B factored): Δp into `dp`, the velocity correction into `dy`.
-    fn solve_newton(&mut self, problem: &FrictionProblem<'_>, offset: usize) {
-        let rows = problem.contacts.rows();
-        self.dy.iter_mut().for_each(|x| *x = 0.0);
-        for &j in &self.active {
-            rows[j].add_transpose_shifted(self.r[j] * self.inv_sigma[j], &mut self.dy, offset);
-        }
-        self.b_factor.solve_in_place(&mut self.dy);
-        for &j in &self.active {
-            self.dp[j] = (self.r[j] - rows[j].dot_shifted(&self.dy, offset)) * self.inv_sigma[j];
-        }
-    }
-
-    /// Δz from Δp and the complementarity targets c: s₁Δz₁ = c₁ − s₁z₁ + z₁Δp, s₂Δz₂ = c₂ − s₂z₂ − z₂Δp.
-    fn multiplier_steps(&mut self) {
-        for &j in &self.active {
-            self.dz1[j] = (self.c1[j] + self.z1[j] * self.dp[j]) * self.inv_s1[j] - self.z1[j];
-            self.dz2[j] = (self.c2[j] - self.z2[j] * self.dp[j]) * self.inv_s2[j] - self.z2[j];
-        }
-    }
-
-    /// Largest α ≤ 1 keeping s₁ − αΔp, s₂ + αΔp, z₁ + αΔz₁, z₂ + αΔz₂ positive.
-    fn max_step(&self) -> f64 {
+    /// From rhs = Σ H_jᵀ r_j Σ_j⁻¹ (in `dy`): dy ← B⁻¹ rhs, Δp_j = Σ_j⁻¹(r_j − H_j dy), Δz from the complementarity
+    /// targets c (s₁Δz₁ = c₁ − s₁z₁ + z₁Δp, s₂Δz₂ = c₂ − s₂z₂ − z₂Δp); returns the largest feasible step ≤ 1.
+    fn newton_direction(&mut self) -> f64 {
+        let n = self.b_factor.order();
+        self.b_factor.solve_in_place(&mut self.dy[..n]);
+        let dy = &self.dy;
         let mut ratio: f64 = 1.0; // max of −Δx/x over all variables; α = 1/ratio
         for &j in &self.active {
-            let dp = self.dp[j];
-            ratio = ratio
-                .max(dp * self.inv_s1[j])
-                .max(-dp * self.inv_s2[j])
-                .max(-self.dz1[j] / self.z1[j])
-                .max(-self.dz2[j] / self.z2[j]);
+            let q = &mut self.sections[j];
+            let dp = (q.r - q.dot(dy)) * q.inv_sigma;
+            let dz1 = (q.c1 + q.z1 * dp) * q.inv_s1 - q.z1;
+            let dz2 = (q.c2 - q.z2 * dp) * q.inv_s2 - q.z2;
+            q.dp = dp;
+            q.dz1 = dz1;
+            q.dz2 = dz2;
+            ratio = ratio.max(dp * q.inv_s1).max(-dp * q.inv_s2).max(-dz1 * q.inv_z1).max(-dz2 * q.inv_z2);
         }
         1.0 / ratio
-    }
-
-    /// Mean complementarity μ = (s₁ᵀz₁ + s₂ᵀz₂)/(2m), or its value after a step α along (Δp, Δz).
-    fn complementarity(&self, alpha: f64) -> f64 {
-        let sum: f64 = self
-            .active
-            .iter()
-            .map(|&j| {
-                let dp = alpha * self.dp[j];
-                (self.s1[j] - dp) * (self.z1[j] + alpha * self.dz1[j])
-                    + (self.s2[j] + dp) * (self.z2[j] + alpha * self.dz2[j])
-            })
-            .sum();
-        sum / (2 * self.active.len()) as f64
     }
 
     /// Mehrotra predictor–corrector on the active sections, from p = 0, with `base` = the matrix M̂ (or its window
@@ -175,73 +173,98 @@ impl Work {
         let a = &problem.bounds;
         let rows = problem.contacts.rows();
         let nw = base.order();
-        self.y.resize(nw, 0.0);
-        self.dy.resize(nw, 0.0);
+        // Three zeros of padding past the end let every row be read and written four entries wide.
+        self.y.resize(nw + 3, 0.0);
+        self.dy.resize(nw + 3, 0.0);
         self.y.iter_mut().for_each(|x| *x = 0.0);
+        for &j in &self.active {
+            let q = &mut self.sections[j];
+            let row = &rows[j];
+            debug_assert!(row.dofs().windows(2).all(|d| d[1] == d[0] + 1), "rows touch consecutive free DOFs");
+            q.first = row.dofs()[0] - offset;
+            q.len = row.len();
+            q.h = [0.0; 4];
+            q.h[..q.len].copy_from_slice(row.values());
+            q.a = a[j];
+            q.w = problem.delassus_diagonal[j];
+            q.inv_w = 1.0 / q.w;
+        }
         // Start at p = 0, the centre of every box: warm starts from the previous step's (p, z) were measured to
         // cost more iterations, not fewer (18.6 cold vs 19.8–23.9 warm per step, distributed 5 kN/m).
-        let scale = self.active.iter().fold(super::VELOCITY_FLOOR, |s, &j| s.max(self.u_free[j].abs()));
+        let scale = self.active.iter().fold(super::VELOCITY_FLOOR, |s, &j| s.max(self.sections[j].u_free.abs()));
         let shift = 0.01 * scale;
+        let mut residual: f64 = 0.0;
         for &j in &self.active {
             p[j] = 0.0;
-            self.u[j] = self.u_free[j];
-            self.s1[j] = a[j];
-            self.s2[j] = a[j];
+            let q = &mut self.sections[j];
+            q.u = q.u_free;
+            q.s1 = a[j];
+            q.s2 = a[j];
             // Split u into z₂ − z₁, both kept away from zero.
-            self.z1[j] = (-self.u[j]).max(0.0) + shift;
-            self.z2[j] = self.u[j].max(0.0) + shift;
+            q.z1 = (-q.u).max(0.0) + shift;
+            q.z2 = q.u.max(0.0) + shift;
+            residual = residual.max(q.law_residual(0.0));
         }
-        let mut residual = self.residual(problem, p);
+        let inv_count = 1.0 / (2 * self.active.len().max(1)) as f64;
         let mut iterations = 0;
         while residual > tolerance && iterations < max_iterations && !self.active.is_empty() {
             iterations += 1;
-            let mu = self.complementarity(0.0);
             // B = base + HᵀΣ⁻¹H, Σ = z₁/s₁ + z₂/s₂, floored so that Σ⁻¹ stays finite for sections stuck to
-            // round-off (z → 0): beyond ~1e15·W_jj the extra stiffness changes nothing.
+            // round-off (z → 0): beyond ~1e15·W_jj the extra stiffness changes nothing. Predictor (affine
+            // scaling, targets c = 0): r = −u, right-hand side Σ H_jᵀ r_j/Σ_j.
             self.b.copy_from(base);
+            self.dy.iter_mut().for_each(|x| *x = 0.0);
+            let mut mu = 0.0;
             for &j in &self.active {
-                self.inv_s1[j] = 1.0 / self.s1[j];
-                self.inv_s2[j] = 1.0 / self.s2[j];
-                let sigma = (self.z1[j] * self.inv_s1[j] + self.z2[j] * self.inv_s2[j])
-                    .max(1e-15 * problem.delassus_diagonal[j]);
-                self.inv_sigma[j] = 1.0 / sigma;
-                let (dofs, len) = rows[j].dofs_shifted(offset);
-                self.b.add_outer(&dofs[..len], rows[j].values(), self.inv_sigma[j]);
+                let q = &mut self.sections[j];
+                mu += q.s1 * q.z1 + q.s2 * q.z2;
+                q.inv_s1 = 1.0 / q.s1;
+                q.inv_s2 = 1.0 / q.s2;
+                q.inv_z1 = 1.0 / q.z1;
+                q.inv_z2 = 1.0 / q.z2;
+                q.inv_sigma = 1.0 / (q.z1 * q.inv_s1 + q.z2 * q.inv_s2).max(1e-15 * q.w);
+                q.r = -q.u;
+                q.c1 = 0.0;
+                q.c2 = 0.0;
+                self.b.add_outer_contiguous(q.first, &q.h[..q.len], q.inv_sigma);
+                q.add_transpose(q.r * q.inv_sigma, &mut self.dy);
             }
+            mu *= inv_count;
             self.b.factor_into(&mut self.b_factor)?;
-            // Predictor (affine scaling, c = 0): r = −u.
+            let alpha_affine = self.newton_direction();
+            // Corrector: targets σμ − Δs_aff∘Δz_aff (Δs₁ = −Δp, Δs₂ = Δp), σ = (μ_aff/μ)³, r = −u − c₁/s₁ + c₂/s₂.
+            let mut mu_affine = 0.0;
             for &j in &self.active {
-                self.r[j] = -self.u[j];
-                self.c1[j] = 0.0;
-                self.c2[j] = 0.0;
+                let q = &self.sections[j];
+                let dp = alpha_affine * q.dp;
+                mu_affine += (q.s1 - dp) * (q.z1 + alpha_affine * q.dz1) + (q.s2 + dp) * (q.z2 + alpha_affine * q.dz2);
             }
-            self.solve_newton(problem, offset);
-            self.multiplier_steps();
-            let alpha_affine = self.max_step();
-            let centring = (self.complementarity(alpha_affine) / mu).powi(3).min(1.0);
-            // Corrector: targets σμ − Δs_aff∘Δz_aff (Δs₁ = −Δp, Δs₂ = Δp), and r = −u − c₁/s₁ + c₂/s₂.
+            let target = (mu_affine * inv_count / mu).powi(3).min(1.0) * mu;
+            self.dy.iter_mut().for_each(|x| *x = 0.0);
             for &j in &self.active {
-                self.c1[j] = centring * mu + self.dp[j] * self.dz1[j];
-                self.c2[j] = centring * mu - self.dp[j] * self.dz2[j];
-                self.r[j] = -self.u[j] - self.c1[j] * self.inv_s1[j] + self.c2[j] * self.inv_s2[j];
+                let q = &mut self.sections[j];
+                q.c1 = target + q.dp * q.dz1;
+                q.c2 = target - q.dp * q.dz2;
+                q.r = -q.u - q.c1 * q.inv_s1 + q.c2 * q.inv_s2;
+                q.add_transpose(q.r * q.inv_sigma, &mut self.dy);
             }
-            self.solve_newton(problem, offset);
-            self.multiplier_steps();
-            let alpha = (FRACTION_TO_BOUNDARY * self.max_step()).min(1.0);
-            for &j in &self.active {
-                let dp = alpha * self.dp[j];
-                p[j] += dp;
-                // Slacks are updated, not recomputed from p: near a bound a − p loses all precision.
-                self.s1[j] -= dp;
-                self.s2[j] += dp;
-                self.z1[j] += alpha * self.dz1[j];
-                self.z2[j] += alpha * self.dz2[j];
-            }
+            let alpha = (FRACTION_TO_BOUNDARY * self.newton_direction()).min(1.0);
             for (y, dy) in self.y.iter_mut().zip(&self.dy) {
                 *y += alpha * dy;
             }
-            self.refresh(problem, offset);
-            residual = self.residual(problem, p);
+            residual = 0.0;
+            for &j in &self.active {
+                let q = &mut self.sections[j];
+                let dp = alpha * q.dp;
+                p[j] += dp;
+                // Slacks are updated, not recomputed from p: near a bound a − p loses all precision.
+                q.s1 -= dp;
+                q.s2 += dp;
+                q.z1 += alpha * q.dz1;
+                q.z2 += alpha * q.dz2;
+                q.u = q.u_free + q.dot(&self.y);
+                residual = residual.max(q.law_residual(p[j]));
+            }
         }
         Ok((iterations, residual))
     }
@@ -257,7 +280,6 @@ impl BandedInteriorPoint {
         window_margin: Option<f64>,
     ) -> crate::Result<Self> {
         let (n, m) = (problem.m_hat.order(), problem.len());
-        let zeros = || vec![0.0; m];
         let backward = match window_margin {
             Some(_) => Some(problem.m_hat.reversed().factor()?),
             None => None,
@@ -271,21 +293,7 @@ impl BandedInteriorPoint {
             window_matrix: problem.m_hat.clone(),
             work: Work {
                 active: Vec::with_capacity(m),
-                u_free: zeros(),
-                s1: zeros(),
-                s2: zeros(),
-                z1: zeros(),
-                z2: zeros(),
-                inv_s1: zeros(),
-                inv_s2: zeros(),
-                inv_sigma: zeros(),
-                r: zeros(),
-                c1: zeros(),
-                c2: zeros(),
-                dp: zeros(),
-                dz1: zeros(),
-                dz2: zeros(),
-                u: zeros(),
+                sections: vec![Section::default(); m],
                 y: vec![0.0; n],
                 dy: vec![0.0; n],
                 b: problem.m_hat.clone(),
@@ -293,7 +301,7 @@ impl BandedInteriorPoint {
             },
             v: vec![0.0; n],
             correction: vec![0.0; n],
-            check: zeros(),
+            check: vec![0.0; m],
             started: false,
             statistics: WindowStatistics::default(),
         })
@@ -324,7 +332,9 @@ impl BandedInteriorPoint {
         self.statistics.sections_solved += self.all_active.len();
         self.work.active.clear();
         self.work.active.extend_from_slice(&self.all_active);
-        self.work.u_free.copy_from_slice(u_free);
+        for (q, &u) in self.work.sections.iter_mut().zip(u_free) {
+            q.u_free = u;
+        }
         self.work.iterate(problem, problem.m_hat, 0, p, tolerance, self.max_iterations)
     }
 
@@ -376,7 +386,7 @@ impl BandedInteriorPoint {
         }
         problem.factor.solve_in_place(&mut self.correction);
         for &j in &self.work.active {
-            self.work.u_free[j] = rows[j].dot(&self.v) - rows[j].dot(&self.correction);
+            self.work.sections[j].u_free = rows[j].dot(&self.v) - rows[j].dot(&self.correction);
         }
         problem.m_hat.principal_submatrix_into(start, end, &mut self.window_matrix);
         if start > 0 {
