@@ -77,6 +77,22 @@ impl SymmetricBanded {
         let b = self.bandwidth;
         let stride = b + 1;
         assert!(h.len() <= stride && first + h.len() <= self.n, "add_outer_contiguous: block outside the matrix");
+        if b == 3 && h.len() == 4 {
+            // The interior section of a Hermite element: one dense 4×4 block, unrolled.
+            let d = &mut self.data[first * 4..first * 4 + 16];
+            let wh = [w * h[0], w * h[1], w * h[2], w * h[3]];
+            d[3] += wh[0] * h[0];
+            d[6] += wh[1] * h[0];
+            d[7] += wh[1] * h[1];
+            d[9] += wh[2] * h[0];
+            d[10] += wh[2] * h[1];
+            d[11] += wh[2] * h[2];
+            d[12] += wh[3] * h[0];
+            d[13] += wh[3] * h[1];
+            d[14] += wh[3] * h[2];
+            d[15] += wh[3] * h[3];
+            return;
+        }
         for k in 0..h.len() {
             let wk = w * h[k];
             let row = (first + k) * stride + b;
@@ -304,15 +320,16 @@ impl BandedLdlt {
             x[i] = y;
             (y3, y2, y1) = (y2, y1, y);
         }
+        // Backward: x_i = y_i/D_i − L_{i+1,i} x_{i+1} − L_{i+2,i} x_{i+2} − L_{i+3,i} x_{i+3}, carrying the L rows
+        // below (zero past the end) instead of testing bounds.
         let (mut x1, mut x2, mut x3) = (0.0, 0.0, 0.0);
+        let (mut below1, mut below2, mut below3) = ([0.0f64; 3], [0.0f64; 3], [0.0f64; 3]);
         for i in (0..n).rev() {
-            // x_i = y_i/D_i − L_{i+1,i} x_{i+1} − L_{i+2,i} x_{i+2} − L_{i+3,i} x_{i+3}
-            let l1 = if i + 1 < n { f[4 * (i + 1) + 2] } else { 0.0 };
-            let l2 = if i + 2 < n { f[4 * (i + 2) + 1] } else { 0.0 };
-            let l3 = if i + 3 < n { f[4 * (i + 3)] } else { 0.0 };
-            let xi = x[i] / f[4 * i + 3] - l1 * x1 - l2 * x2 - l3 * x3;
+            let row = &f[4 * i..4 * i + 4];
+            let xi = x[i] / row[3] - below1[2] * x1 - below2[1] * x2 - below3[0] * x3;
             x[i] = xi;
             (x3, x2, x1) = (x2, x1, xi);
+            (below3, below2, below1) = (below2, below1, [row[0], row[1], row[2]]);
         }
     }
 

@@ -88,3 +88,20 @@ fn window_schur_complement_matches_block_of_the_inverse() {
         }
     }
 }
+
+/// The unrolled 4×4 block update equals the generic rank-one update.
+#[test]
+fn contiguous_outer_update_matches_generic() {
+    let mut rng = Lcg(5);
+    for len in 1..=4usize {
+        for first in [0usize, 3, 12 - len] {
+            let h: Vec<f64> = (0..len).map(|_| rng.next() - 0.5).collect();
+            let mut a = SymmetricBanded::zeros(12, 3);
+            let mut b = SymmetricBanded::zeros(12, 3);
+            a.add_outer_contiguous(first, &h, 1.7);
+            let dofs: Vec<usize> = (first..first + len).collect();
+            b.add_outer(&dofs, &h, 1.7);
+            assert_eq!(a, b, "len {len}, first {first}");
+        }
+    }
+}

@@ -154,7 +154,12 @@ impl Work {
             q.dp = dp;
             q.dz1 = dz1;
             q.dz2 = dz2;
-            ratio = ratio.max(dp * q.inv_s1).max(-dp * q.inv_s2).max(-dz1 * q.inv_z1).max(-dz2 * q.inv_z2);
+            // Plain comparisons (no NaN handling needed: every quantity is finite here) are cheaper than f64::max.
+            for candidate in [dp * q.inv_s1, -dp * q.inv_s2, -dz1 * q.inv_z1, -dz2 * q.inv_z2] {
+                if candidate > ratio {
+                    ratio = candidate;
+                }
+            }
         }
         1.0 / ratio
     }
@@ -203,7 +208,10 @@ impl Work {
             // Split u into z₂ − z₁, both kept away from zero.
             q.z1 = (-q.u).max(0.0) + shift;
             q.z2 = q.u.max(0.0) + shift;
-            residual = residual.max(q.law_residual(0.0));
+            let r = q.law_residual(0.0);
+            if r > residual {
+                residual = r;
+            }
         }
         let inv_count = 1.0 / (2 * self.active.len().max(1)) as f64;
         let mut iterations = 0;
@@ -263,7 +271,10 @@ impl Work {
                 q.z1 += alpha * q.dz1;
                 q.z2 += alpha * q.dz2;
                 q.u = q.u_free + q.dot(&self.y);
-                residual = residual.max(q.law_residual(p[j]));
+                let r = q.law_residual(p[j]);
+                if r > residual {
+                    residual = r;
+                }
             }
         }
         Ok((iterations, residual))
