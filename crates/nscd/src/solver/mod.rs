@@ -159,7 +159,7 @@ pub trait FrictionSolver {
 }
 
 /// Build the solver `kind` (not `Auto`: resolve it first) for `problem`. `window_margin` (m) is the interior
-/// point's moving-window margin, used when `settings.moving_window` is set (40 coupling lengths is safe).
+/// point's moving-window margin, used when `settings.moving_window` is set (30 coupling lengths is safe).
 pub fn build_solver<'a>(
     kind: SolverKind,
     problem: &FrictionProblem<'_>,

@@ -88,7 +88,7 @@ fn moving_window_agrees_with_whole_beam_solve_every_step() {
     let m_hat = iteration_matrix(&system, integration);
     let factor = m_hat.factor().unwrap();
     let settings = SolverSettings { kind: SolverKind::InteriorPoint, ..SolverSettings::default() };
-    let margin = 40.0 * coupling_length(&model, h, theta);
+    let margin = 30.0 * coupling_length(&model, h, theta);
     let stepping = FrictionProblem::new(&contacts, &m_hat, &factor, h);
     let windowed = build_solver(SolverKind::InteriorPoint, &stepping, &settings, Some(margin)).unwrap();
     let checking = FrictionProblem::new(&contacts, &m_hat, &factor, h);
