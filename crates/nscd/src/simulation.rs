@@ -276,8 +276,8 @@ impl<'a> Simulation<'a> {
         Ok(Self { model, contacts, settings })
     }
 
-    /// Initial (q, v) over the free DOFs.
-    fn initial_state(&self) -> Result<(Vec<f64>, Vec<f64>)> {
+    /// Initial (q, v) over the free DOFs, per [`RunSettings::initial`].
+    pub fn initial_state(&self) -> Result<(Vec<f64>, Vec<f64>)> {
         let dofs = self.model.dofs();
         let n = dofs.free_len();
         match self.settings.initial {
