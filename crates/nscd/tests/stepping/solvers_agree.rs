@@ -3,13 +3,15 @@
 use super::common::{reference, relative_difference};
 use friction::{ContactSet, Devices, DistributedFriction};
 use nscd::simulation::coupling_length;
-use nscd::solver::{FrictionProblem, SolverSettings, build_solver};
+use nscd::solver::{FrictionProblem, FrictionSolver, SolverSettings, build_solver};
 use nscd::stepper::{Integration, iteration_matrix};
 use nscd::{InitialState, LinearSystem, MoreauJean, MovingLoad, RunSettings, Simulation, SolverKind};
 
 /// Step a run with solver `a` and, at every step, solve the same step (same v_free) with solver `b`: the largest
 /// relative difference of v_{k+1} over `steps` steps. Independent trajectories would also drift apart through the
-/// stick–slip history (1e-8 after ~1500 steps for two exact solvers), which says nothing about a step.
+/// stick–slip history (1e-8 after ~1500 steps for two exact solvers), which says nothing about a step. Steps where
+/// `b`'s own law residual exceeds 1e-8 of the velocity scale (Clarabel's stopping rule, on degenerate steps) cannot
+/// be held to 1e-8 and are not compared; they are counted and must stay below 5 % of the steps.
 fn same_state_difference(
     contacts: &ContactSet,
     a: SolverKind,
@@ -40,26 +42,36 @@ fn same_state_difference(
     let (mut u_free, mut p) = (vec![0.0; contacts.len()], vec![0.0; contacts.len()]);
     let crossing = ((model.mesh().length - start) / settings.load_advance).round() as usize;
     let mut worst: f64 = 0.0;
+    let (mut compared, mut skipped) = (0usize, 0usize);
     for step in 1..=steps.min(crossing) {
         let v_free = stepper.free_velocity(&load).to_vec();
         contacts.velocities(&v_free, &mut u_free);
-        solver_b.solve(&checking, &v_free, &u_free, &mut p).unwrap();
+        let report_b = solver_b.solve(&checking, &v_free, &u_free, &mut p).unwrap();
         let mut v_b = vec![0.0; n];
         contacts.add_transpose(&p, &mut v_b);
         factor.solve_in_place(&mut v_b);
         v_b.iter_mut().zip(&v_free).for_each(|(v, f)| *v += f);
-        stepper.step(&load).unwrap();
+        let report_a = stepper.step(&load).unwrap();
+        compared += 1;
+        if report_b.residual > 100.0 * report_a.tolerance {
+            skipped += 1;
+            continue;
+        }
         let d = relative_difference(&stepper.v, &v_b);
         // The per-step bound for two exact solvers.
-        assert!(d <= 1e-8, "{a:?} vs {b:?}, step {step}: {d:e}");
+        assert!(d <= 1e-8, "{a:?} vs {b:?}, step {step}: {d:e}; law residuals {report_a:?} vs {report_b:?}");
         worst = worst.max(d);
     }
-    eprintln!("{a:?} vs {b:?}: largest per-step velocity difference {worst:.2e}");
+    eprintln!(
+        "{a:?} vs {b:?}: largest per-step velocity difference {worst:.2e} ({skipped} of {compared} steps where {b:?} misses 1e-8)"
+    );
+    // Measured: Clarabel misses 1e-8 on 2 of 2000 device steps and 46 of 1950 distributed steps (2.4 %).
+    assert!(skipped * 20 <= compared, "{skipped} of {compared} steps where {b:?} is not accurate to 1e-8");
     worst
 }
 
-/// Max deflection of whole independent runs with solvers `a` and `b` agree within 1e-6 relative.
-fn same_max_deflection(contacts: &ContactSet, a: SolverKind, b: SolverKind, settings: &RunSettings) {
+/// Max deflection of whole independent runs with solvers `a` and `b` agree within `bound` relative.
+fn same_max_deflection(contacts: &ContactSet, a: SolverKind, b: SolverKind, settings: &RunSettings, bound: f64) {
     let model = reference();
     let run = |kind| {
         let mut s = settings.clone();
@@ -71,7 +83,7 @@ fn same_max_deflection(contacts: &ContactSet, a: SolverKind, b: SolverKind, sett
         [(ra.max_downward.magnitude, rb.max_downward.magnitude), (ra.max_upward.magnitude, rb.max_upward.magnitude)]
     {
         eprintln!("{a:?} vs {b:?}: max deflection {x:.9} vs {y:.9} m ({:.2e})", (x - y).abs() / y);
-        assert!((x - y).abs() <= 1e-6 * y, "{a:?} vs {b:?}: {x} vs {y}");
+        assert!((x - y).abs() <= bound * y, "{a:?} vs {b:?}: {x} vs {y}");
     }
 }
 
@@ -115,9 +127,13 @@ fn whole_runs_agree() {
     let settings = RunSettings { speed: 200.0, ..RunSettings::default() };
     let devices = Devices::uniform(31, 100e3).contact_set(&model).unwrap();
     same_state_difference(&devices, SolverKind::Projection, SolverKind::Clarabel, &settings, usize::MAX);
-    same_max_deflection(&devices, SolverKind::Projection, SolverKind::Clarabel, &settings);
+    same_max_deflection(&devices, SolverKind::Projection, SolverKind::Clarabel, &settings, 1e-6);
     let distributed = DistributedFriction::new(5e3).contact_set(&model).unwrap();
     let steady = RunSettings { initial: InitialState::SteadyState { position: 5.0 }, ..settings.clone() };
     same_state_difference(&distributed, SolverKind::InteriorPoint, SolverKind::Clarabel, &steady, usize::MAX);
-    same_max_deflection(&distributed, SolverKind::InteriorPoint, SolverKind::Clarabel, &settings);
+    // With 799 sections the run's max deflection is itself only defined to ~1e-6: the interior point alone gives
+    // 0.17768265, 0.17768305, 0.17768295, 0.17768316 m at tolerances 1e-8, 1e-9, 1e-10, 1e-11 (stick–slip
+    // transitions shift by a step under 1e-10 perturbations). Clarabel lands 1.5e-6 from the 1e-10 run, inside
+    // that spread; the bound is the spread (3e-6) plus margin.
+    same_max_deflection(&distributed, SolverKind::InteriorPoint, SolverKind::Clarabel, &settings, 5e-6);
 }
