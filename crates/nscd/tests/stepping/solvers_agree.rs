@@ -3,7 +3,7 @@
 use super::common::{reference, relative_difference};
 use friction::{ContactSet, Devices, DistributedFriction};
 use nscd::simulation::coupling_length;
-use nscd::solver::{FrictionProblem, FrictionSolver, SolverSettings, build_solver};
+use nscd::solver::{FrictionProblem, SolverSettings, build_solver};
 use nscd::stepper::{Integration, iteration_matrix};
 use nscd::{InitialState, LinearSystem, MoreauJean, MovingLoad, RunSettings, Simulation, SolverKind};
 
