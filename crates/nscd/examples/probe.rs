@@ -1,6 +1,6 @@
 //! Times one reference run: `cargo run --release -p nscd --example probe -- <case>` with case one of
 //! `none`, `devices7`, `devices31`, `distributed1k`, `distributed10k`, `distributed5k` (default), `distributed5k-whole`,
-//! optionally followed by a step count to stop early (for instruction counts under callgrind).
+//! optionally followed by a step count to stop early (for instruction counts under callgrind) and a solver tolerance.
 //! Prints the wall time of the time loop and the solver statistics.
 
 use fem_beam::reference::uic60_on_soft_soil;
@@ -11,6 +11,9 @@ fn main() {
     let case = std::env::args().nth(1).unwrap_or_else(|| "distributed5k".into());
     let model = uic60_on_soft_soil().model().expect("reference model");
     let mut settings = RunSettings::default();
+    if let Some(t) = std::env::args().nth(3).and_then(|s| s.parse().ok()) {
+        settings.solver.tolerance = t;
+    }
     let contacts = match case.as_str() {
         "none" => ContactSet::new(),
         "devices7" => Devices::uniform(7, 100e3).contact_set(&model).expect("devices"),
@@ -29,7 +32,13 @@ fn main() {
         .expect("run");
     let s = &result.statistics;
     println!(
-        "{case}: max down {:.6} m, solver {}, {:.2} iterations/step (max {}), loop {:.3} s",
-        result.max_downward.magnitude, s.solver, s.mean_iterations, s.max_iterations, s.wall_time
+        "{case}: max down {:.6} m, solver {}, {:.2} iterations/step (max {}), {:.0} of {} sections re-solved per step, loop {:.3} s",
+        result.max_downward.magnitude,
+        s.solver,
+        s.mean_iterations,
+        s.max_iterations,
+        s.mean_sections_solved,
+        s.sections,
+        s.wall_time
     );
 }

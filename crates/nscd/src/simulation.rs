@@ -207,6 +207,8 @@ pub struct SolverStatistics {
     pub max_iterations: usize,
     /// Largest final law residual of a step (m/s).
     pub max_residual: f64,
+    /// Mean number of sections re-solved per step (below `sections` with the interior point's moving window).
+    pub mean_sections_solved: f64,
     /// Wall time of the time loop (s).
     pub wall_time: f64,
 }
@@ -393,6 +395,7 @@ impl<'a> Simulation<'a> {
 
         let clock = Instant::now();
         let (mut iteration_sum, mut max_iterations, mut max_residual) = (0usize, 0usize, 0.0f64);
+        let mut sections_sum = 0usize;
         let mut v_before = vec![0.0; dofs.free_len()];
         let mut q_before = vec![0.0; dofs.free_len()];
         for k in 1..=total_steps {
@@ -412,6 +415,7 @@ impl<'a> Simulation<'a> {
                 report,
             });
             iteration_sum += report.iterations;
+            sections_sum += report.sections;
             max_iterations = max_iterations.max(report.iterations);
             max_residual = max_residual.max(report.residual);
             let time = stepper.time;
@@ -453,6 +457,7 @@ impl<'a> Simulation<'a> {
                 mean_iterations: if steps > 0 { iteration_sum as f64 / steps as f64 } else { 0.0 },
                 max_iterations,
                 max_residual,
+                mean_sections_solved: if steps > 0 { sections_sum as f64 / steps as f64 } else { 0.0 },
                 wall_time,
             },
             step: h,

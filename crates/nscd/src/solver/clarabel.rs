@@ -126,6 +126,6 @@ impl FrictionSolver for ClarabelQp {
         // to ~3e-7 on degenerate steps (a section at the stick–slip boundary). It is accepted up to 1e-6 of that
         // scale (or the requested tolerance if looser); beyond, the stepper refuses the step.
         let accepted = tolerance.max(problem.absolute_tolerance(1e-6, u_free));
-        Ok(StepReport { iterations, residual, tolerance: accepted, converged: residual <= accepted })
+        Ok(StepReport { iterations, residual, tolerance: accepted, converged: residual <= accepted, sections: p.len() })
     }
 }

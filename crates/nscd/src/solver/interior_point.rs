@@ -457,6 +457,7 @@ impl FrictionSolver for BandedInteriorPoint {
         p: &mut [f64],
     ) -> crate::Result<StepReport> {
         let tolerance = problem.absolute_tolerance(self.tolerance, u_free);
+        let solved_before = self.statistics.sections_solved;
         let first = !self.started;
         self.started = true;
         let (iterations, residual) = match self.margin {
@@ -471,6 +472,12 @@ impl FrictionSolver for BandedInteriorPoint {
             }
             _ => self.solve_whole(problem, u_free, p, tolerance)?,
         };
-        Ok(StepReport { iterations, residual, tolerance, converged: residual <= tolerance })
+        Ok(StepReport {
+            iterations,
+            residual,
+            tolerance,
+            converged: residual <= tolerance,
+            sections: self.statistics.sections_solved - solved_before,
+        })
     }
 }

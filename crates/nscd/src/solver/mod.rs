@@ -84,6 +84,8 @@ pub struct StepReport {
     pub tolerance: f64,
     /// Whether the residual met the tolerance.
     pub converged: bool,
+    /// Sections actually re-solved this step (all of them, except with the interior point's moving window).
+    pub sections: usize,
 }
 
 /// The data of every friction step of a run: M̂ and its factors, the contact rows, the bounds a_j = h·F_j and the

@@ -96,6 +96,6 @@ impl FrictionSolver for ProjectedGaussSeidel {
         if residual > tolerance {
             residual = self.residual(problem, u_free, p);
         }
-        Ok(StepReport { iterations: sweeps, residual, tolerance, converged: residual <= tolerance })
+        Ok(StepReport { iterations: sweeps, residual, tolerance, converged: residual <= tolerance, sections: self.m })
     }
 }
