@@ -105,6 +105,7 @@ pub struct RunReport {
     mean_iterations: f64,
     max_iterations: usize,
     max_residual: f64,
+    mean_sections_solved: f64,
     solver: String,
     wall_time: f64,
 }
@@ -179,6 +180,7 @@ pub fn run(args: &RunArgs) -> Result<()> {
         mean_iterations: s.mean_iterations,
         max_iterations: s.max_iterations,
         max_residual: s.max_residual,
+        mean_sections_solved: s.mean_sections_solved,
         solver: s.solver.to_string(),
         wall_time: start.elapsed().as_secs_f64(),
     };
@@ -224,8 +226,16 @@ fn print_text(r: &RunReport) {
         r.energy_residual
     );
     println!(
-        "  {} steps of {:.3e} s, {} friction sections, solver {}: {:.2} iterations/step (max {}), max residual {:.2e} m/s",
-        r.steps, r.time_step, r.sections, r.solver, r.mean_iterations, r.max_iterations, r.max_residual
+        "  {} steps of {:.3e} s, {} friction sections ({:.0} re-solved per step), solver {}: {:.2} iterations/step \
+         (max {}), max residual {:.2e} m/s",
+        r.steps,
+        r.time_step,
+        r.sections,
+        r.mean_sections_solved,
+        r.solver,
+        r.mean_iterations,
+        r.max_iterations,
+        r.max_residual
     );
     println!("  wall time {:.3} s", r.wall_time);
 }
