@@ -1,7 +1,7 @@
 //! Project automation: `cargo xtask ci` runs exactly what `.ci/run` runs.
 
 use anyhow::{Context, Result, bail};
-use std::process::Command;
+use std::process::{Command, ExitCode};
 
 /// The CI steps, in order: format check, lints, tests (the README's test command).
 const CI_STEPS: &[&[&str]] = &[
@@ -10,13 +10,19 @@ const CI_STEPS: &[&[&str]] = &[
     &["test", "--workspace"],
 ];
 
-fn main() -> Result<()> {
+fn main() -> ExitCode {
     let task = std::env::args().nth(1);
     match task.as_deref() {
-        Some("ci") => ci(),
+        Some("ci") => match ci() {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(error) => {
+                eprintln!("error: {error:#}");
+                ExitCode::FAILURE
+            }
+        },
         _ => {
             eprintln!("usage: cargo xtask ci    # format check, clippy -D warnings, cargo test --workspace");
-            bail!("unknown or missing task")
+            ExitCode::from(2)
         }
     }
 }
