@@ -72,34 +72,6 @@ impl ContactRow {
         s
     }
 
-    /// H_j·v for a vector holding only the DOFs from `offset` on (v[0] is DOF `offset`).
-    #[inline]
-    pub fn dot_shifted(&self, v: &[f64], offset: usize) -> f64 {
-        let mut s = 0.0;
-        for k in 0..self.len {
-            s += self.values[k] * v[self.dofs[k] - offset];
-        }
-        s
-    }
-
-    /// out += scale·H_jᵀ for a vector holding only the DOFs from `offset` on.
-    #[inline]
-    pub fn add_transpose_shifted(&self, scale: f64, out: &mut [f64], offset: usize) {
-        for k in 0..self.len {
-            out[self.dofs[k] - offset] += scale * self.values[k];
-        }
-    }
-
-    /// The DOFs shifted down by `offset`, and how many there are.
-    #[inline]
-    pub fn dofs_shifted(&self, offset: usize) -> ([usize; 4], usize) {
-        let mut out = [0; 4];
-        for k in 0..self.len {
-            out[k] = self.dofs[k] - offset;
-        }
-        (out, self.len)
-    }
-
     /// out += scale·H_jᵀ.
     #[inline]
     pub fn add_transpose(&self, scale: f64, out: &mut [f64]) {

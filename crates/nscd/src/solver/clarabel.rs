@@ -17,6 +17,7 @@ pub struct ClarabelQp {
     n: usize,
     q: Vec<f64>,
     u: Vec<f64>,
+    v: Vec<f64>,
     tolerance: f64,
     step: usize,
 }
@@ -86,7 +87,7 @@ impl ClarabelQp {
         let q = vec![0.0; n + m];
         let solver = DefaultSolver::new(&p_matrix, &q, &a_matrix, &b, &cones, settings)
             .map_err(|e| NscdError::Clarabel { step: 0, status: e.to_string() })?;
-        Ok(Self { solver, n, q, u: vec![0.0; m], tolerance, step: 0 })
+        Ok(Self { solver, n, q, u: vec![0.0; m], v: vec![0.0; n], tolerance, step: 0 })
     }
 }
 
@@ -112,15 +113,8 @@ impl FrictionSolver for ClarabelQp {
         }
         p.copy_from_slice(&self.solver.solution.x[self.n..]);
         // The law residual on v = v_free + M̂⁻¹Hᵀp, as the stepper will form it.
-        let mut v = vec![0.0; self.n];
-        problem.contacts.add_transpose(p, &mut v);
-        problem.factor.solve_in_place(&mut v);
-        for (vi, vf) in v.iter_mut().zip(v_free) {
-            *vi += vf;
-        }
-        problem.contacts.velocities(&v, &mut self.u);
         let tolerance = problem.absolute_tolerance(self.tolerance, u_free);
-        let residual = problem.law_residual(&self.u, p);
+        let residual = problem.outcome(v_free, p, &mut self.v, &mut self.u);
         let iterations = self.solver.solution.iterations as usize;
         // Clarabel stops on its own duality-gap criteria: its law residuals are ~1e-9 of the velocity scale, and up
         // to ~3e-7 on degenerate steps (a section at the stick–slip boundary). It is accepted up to 1e-6 of that

@@ -35,7 +35,6 @@
 
 use super::{FrictionProblem, FrictionSolver, StepReport};
 use fem_beam::{BandedLdlt, SymmetricBanded};
-use friction::coulomb::natural_residual;
 
 /// Fraction of the distance to the boundary of the positive orthant taken by a step.
 const FRACTION_TO_BOUNDARY: f64 = 0.995;
@@ -86,7 +85,8 @@ struct Section {
 }
 
 impl Section {
-    /// The law residual at (u, p): |p − proj(p − u/W_jj)|·W_jj (m/s), as [`natural_residual`].
+    /// The law residual at (u, p): |p − proj(p − u/W_jj)|·W_jj (m/s), as [`FrictionProblem::section_residual`]
+    /// with 1/W_jj kept at hand.
     #[inline]
     fn law_residual(&self, p: f64) -> f64 {
         (p - (p - self.u * self.inv_w).clamp(-self.a, self.a)).abs() * self.w
@@ -331,16 +331,7 @@ impl BandedInteriorPoint {
 
     /// v = v_free + M̂⁻¹Hᵀp and the law residual of every section, into `self.check` (u) — one banded solve.
     fn full_residual(&mut self, problem: &FrictionProblem<'_>, v_free: &[f64], p: &[f64]) -> f64 {
-        self.correction.iter_mut().for_each(|x| *x = 0.0);
-        problem.contacts.add_transpose(p, &mut self.correction);
-        problem.factor.solve_in_place(&mut self.correction);
-        for ((v, vf), c) in self.v.iter_mut().zip(v_free).zip(&self.correction) {
-            *v = vf + c;
-        }
-        problem.contacts.velocities(&self.v, &mut self.check);
-        (0..p.len())
-            .map(|j| natural_residual(self.check[j], p[j], problem.bounds[j], 1.0 / problem.delassus_diagonal[j]))
-            .fold(0.0, f64::max)
+        problem.outcome(v_free, p, &mut self.v, &mut self.check)
     }
 
     fn solve_whole(
@@ -373,8 +364,7 @@ impl BandedInteriorPoint {
         let rows = problem.contacts.rows();
         let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
         for &j in &self.all_active {
-            let r = natural_residual(self.check[j], p[j], problem.bounds[j], 1.0 / problem.delassus_diagonal[j]);
-            if r > tolerance {
+            if problem.section_residual(j, self.check[j], p[j]) > tolerance {
                 lo = lo.min(positions[j]);
                 hi = hi.max(positions[j]);
             }

@@ -132,11 +132,28 @@ impl<'a> FrictionProblem<'a> {
         self.bounds.is_empty()
     }
 
-    /// max_j |p_j − proj(p_j − u_j/W_jj)|·W_jj (m/s): zero exactly when (u, p) satisfy the law.
+    /// |p_j − proj(p_j − u_j/W_jj)|·W_jj (m/s) of section j: zero exactly when (u_j, p_j) satisfy the law.
+    #[inline]
+    pub fn section_residual(&self, j: usize, u: f64, p: f64) -> f64 {
+        natural_residual(u, p, self.bounds[j], 1.0 / self.delassus_diagonal[j])
+    }
+
+    /// max_j of [`FrictionProblem::section_residual`] (m/s).
     pub fn law_residual(&self, u: &[f64], p: &[f64]) -> f64 {
-        (0..self.len())
-            .map(|j| natural_residual(u[j], p[j], self.bounds[j], 1.0 / self.delassus_diagonal[j]))
-            .fold(0.0, f64::max)
+        (0..self.len()).map(|j| self.section_residual(j, u[j], p[j])).fold(0.0, f64::max)
+    }
+
+    /// The step's outcome for impulses p, as the stepper will form it: v = v_free + M̂⁻¹Hᵀp and u = H v (into the
+    /// given buffers; one banded solve), and the law residual (m/s).
+    pub fn outcome(&self, v_free: &[f64], p: &[f64], v: &mut [f64], u: &mut [f64]) -> f64 {
+        v.iter_mut().for_each(|x| *x = 0.0);
+        self.contacts.add_transpose(p, v);
+        self.factor.solve_in_place(v);
+        for (x, f) in v.iter_mut().zip(v_free) {
+            *x += f;
+        }
+        self.contacts.velocities(v, u);
+        self.law_residual(u, p)
     }
 
     /// Absolute tolerance (m/s) for a relative tolerance and the free velocities u_free.
