@@ -254,7 +254,12 @@ impl SteadyState {
         -self.amplitude * self.beta * self.g(self.beta * s, 1)
     }
 
-    /// Bending moment EI·∂²w/∂x² is not needed by callers; velocity ∂w/∂t = −v·∂w/∂s (m/s) at s.
+    /// Curvature ∂²w/∂x² (1/m) at s; the bending moment is EI times it (sagging positive).
+    pub fn curvature(&self, s: f64) -> f64 {
+        -self.amplitude * self.beta * self.beta * self.g(self.beta * s, 2)
+    }
+
+    /// Velocity ∂w/∂t = −v·∂w/∂s (m/s) at s.
     pub fn velocity(&self, s: f64) -> f64 {
         -self.speed * self.slope(s)
     }

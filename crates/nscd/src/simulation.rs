@@ -160,8 +160,8 @@ pub struct SectionHistory {
     pub load_position: Vec<f64>,
     /// Deflection w (m, upward).
     pub deflection: Vec<f64>,
-    /// Bending moment at `moment_node` (N·m, sagging positive) from element end forces at the θ-point of each step
-    /// (where the discrete equilibrium holds); the initial entry is the static formula.
+    /// Bending moment at `moment_node` (N·m, sagging positive) from element end forces K_e q + C_e q̇ + M_e q̈ − f_e
+    /// after each step, with q̈ the mean acceleration of the step; the initial entry omits inertia.
     pub moment: Vec<f64>,
     /// Friction impulse of the contact section at this position (N·s), if there is one.
     pub impulse: Option<Vec<f64>>,
@@ -268,6 +268,7 @@ struct Recorder {
     position: f64,
     node: usize,
     contact: Option<usize>,
+    inside: Vec<InsideSection>,
     history: SectionHistory,
 }
 
@@ -344,9 +345,27 @@ impl<'a> Simulation<'a> {
             .iter()
             .map(|&x| {
                 let node = mesh.nearest_node(x).unwrap_or(0);
+                let l = mesh.element_length();
+                let inside = self
+                    .contacts
+                    .positions()
+                    .iter()
+                    .enumerate()
+                    .filter_map(|(contact, &xs)| {
+                        [node.wrapping_sub(1), node].into_iter().filter(|&e| e < mesh.elements).find_map(|element| {
+                            let x_a = mesh.node_x(element);
+                            (xs > x_a && xs < x_a + l).then(|| InsideSection {
+                                element,
+                                contact,
+                                shape: hermite::shape((xs - x_a) / l, l),
+                            })
+                        })
+                    })
+                    .collect();
                 Recorder {
                     position: x,
                     node,
+                    inside,
                     contact: self.contacts.section_at(x, 1e-9 * mesh.length),
                     history: SectionHistory { position: x, moment_node: mesh.node_x(node), ..Default::default() },
                 }
@@ -389,7 +408,7 @@ impl<'a> Simulation<'a> {
         let mut full = Buffers::new(dofs.full_len());
         for r in &mut recorders {
             full.expand(dofs, &stepper.q, &stepper.v);
-            let m0 = self.moment_at_node(r.node, &full, 0.0, &load, None);
+            let m0 = self.moment_at_node(r.node, &full, &load, &[(0.0, 1.0)], None);
             record(r, 0.0, start, model.deflection_at(&full.q, r.position)?, m0, 0.0);
         }
 
@@ -397,10 +416,8 @@ impl<'a> Simulation<'a> {
         let (mut iteration_sum, mut max_iterations, mut max_residual) = (0usize, 0usize, 0.0f64);
         let mut sections_sum = 0usize;
         let mut v_before = vec![0.0; dofs.free_len()];
-        let mut q_before = vec![0.0; dofs.free_len()];
         for k in 1..=total_steps {
             v_before.copy_from_slice(&stepper.v);
-            q_before.copy_from_slice(&stepper.q);
             let report = stepper.step(&load)?;
             let keep_going = observer(&StepView {
                 step: k,
@@ -428,13 +445,12 @@ impl<'a> Simulation<'a> {
                 previous_norm = norm;
             }
             for r in &mut recorders {
-                // θ-point state: q_θ = θq₁ + (1−θ)q₀, v_θ likewise, acceleration Δv/h.
-                let theta = settings.theta;
-                full.expand_theta(dofs, (&q_before, &stepper.q), (&v_before, &stepper.v), theta, h);
-                let t_theta = time - h + theta * h;
+                // State after the step with the mean acceleration over it, the load where it now is, and the
+                // friction forces p/h of the step.
+                full.expand_step(dofs, &stepper.q, &stepper.v, &v_before, h);
                 let impulse = r.contact.map_or(0.0, |j| stepper.p[j]);
-                let moment = self.moment_at_node(r.node, &full, t_theta, &load, Some((&stepper.p, h)));
-                full.expand(dofs, &stepper.q, &stepper.v);
+                let moment =
+                    self.moment_at_node(r.node, &full, &load, &[(time, 1.0)], Some((&stepper.p, h, &r.inside)));
                 let w = model.deflection_at(&full.q, r.position)?;
                 record(r, time, load.position(time), w, moment, impulse);
             }
@@ -468,15 +484,17 @@ impl<'a> Simulation<'a> {
     }
 
     /// Bending moment at `node` (N·m) from the end forces of its adjacent elements,
-    /// f = K_e q_e + C_e v_e + M_e a_e − f_e, with f_e the moving load at `time` and the friction impulses / h of
-    /// the sections inside the element. Averaged over the (one or two) adjacent elements.
+    /// f = K_e q_e + C_e q̇_e + M_e q̈_e − f_e (MODEL.md §6), averaged over the (one or two) adjacent elements. The
+    /// element loads f_e are the moving load at the weighted `load_times` and the friction forces p_j/h of the
+    /// sections inside the element (`inside`, precomputed with their shape functions); sections on nodes act on w
+    /// only and leave the moments unchanged.
     fn moment_at_node(
         &self,
         node: usize,
         full: &Buffers,
-        time: f64,
         load: &MovingLoad,
-        friction: Option<(&[f64], f64)>,
+        load_times: &[(f64, f64)],
+        friction: Option<(&[f64], f64, &[InsideSection])>,
     ) -> f64 {
         let model = self.model;
         let mesh = model.mesh();
@@ -494,18 +512,19 @@ impl<'a> Simulation<'a> {
             let cv = hermite::apply(&model.element_damping_matrix(e), &pick(&full.v));
             let ma = hermite::apply(&me, &pick(&full.a));
             let (x_a, x_b) = (mesh.node_x(e), mesh.node_x(e + 1));
-            let x_load = load.position(time);
             let mut external = [0.0; 4];
-            if load.force != 0.0 && (x_a..x_b).contains(&x_load) || (e + 1 == mesh.elements && x_load == x_b) {
-                let n = hermite::shape((x_load - x_a) / l, l);
-                (0..4).for_each(|k| external[k] -= load.force * n[k]);
+            for &(time, weight) in load_times {
+                let x_load = load.position(time);
+                // The element owning the load, as Mesh::locate decides: [x_a, x_b), the last one closed.
+                let owns = (x_a..x_b).contains(&x_load) || (e + 1 == mesh.elements && x_load == x_b);
+                if weight != 0.0 && owns {
+                    let n = hermite::shape((x_load - x_a) / l, l);
+                    (0..4).for_each(|k| external[k] -= weight * load.force * n[k]);
+                }
             }
-            if let Some((p, h)) = friction {
-                for (j, &x) in self.contacts.positions().iter().enumerate() {
-                    if x > x_a && x < x_b {
-                        let n = hermite::shape((x - x_a) / l, l);
-                        (0..4).for_each(|k| external[k] += p[j] / h * n[k]);
-                    }
+            if let Some((p, h, inside)) = friction {
+                for section in inside.iter().filter(|s| s.element == e) {
+                    (0..4).for_each(|k| external[k] += p[section.contact] / h * section.shape[k]);
                 }
             }
             (0..4).for_each(|k| f[k] += cv[k] + ma[k] - external[k]);
@@ -518,6 +537,14 @@ impl<'a> Simulation<'a> {
         }
         sum / count
     }
+}
+
+/// A friction section strictly inside an element next to a recorded node.
+#[derive(Debug, Clone, Copy)]
+struct InsideSection {
+    element: usize,
+    contact: usize,
+    shape: [f64; 4],
 }
 
 fn record(r: &mut Recorder, time: f64, load_position: f64, w: f64, moment: f64, impulse: f64) {
@@ -549,19 +576,13 @@ impl Buffers {
         self.a.iter_mut().for_each(|a| *a = 0.0);
     }
 
-    fn expand_theta(&mut self, dofs: &fem_beam::DofMap, q: (&[f64], &[f64]), v: (&[f64], &[f64]), theta: f64, h: f64) {
-        let n = q.0.len();
-        self.free.resize(n, 0.0);
-        for i in 0..n {
-            self.free[i] = theta * q.1[i] + (1.0 - theta) * q.0[i];
-        }
-        dofs.expand_into(&self.free, &mut self.q);
-        for i in 0..n {
-            self.free[i] = theta * v.1[i] + (1.0 - theta) * v.0[i];
-        }
-        dofs.expand_into(&self.free, &mut self.v);
-        for i in 0..n {
-            self.free[i] = (v.1[i] - v.0[i]) / h;
+    /// The state after a step: q_{k+1}, v_{k+1} and the mean acceleration (v_{k+1} − v_k)/h.
+    fn expand_step(&mut self, dofs: &fem_beam::DofMap, q: &[f64], v: &[f64], v_before: &[f64], h: f64) {
+        dofs.expand_into(q, &mut self.q);
+        dofs.expand_into(v, &mut self.v);
+        self.free.resize(v.len(), 0.0);
+        for i in 0..v.len() {
+            self.free[i] = (v[i] - v_before[i]) / h;
         }
         dofs.expand_into(&self.free, &mut self.a);
     }
