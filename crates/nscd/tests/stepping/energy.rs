@@ -40,3 +40,25 @@ fn energy_balance_closes() {
         }
     }
 }
+
+/// A run may continue after the load has left (free vibration): the extra steps are taken, the load does no more
+/// work, friction keeps dissipating and the balance still closes.
+#[test]
+fn free_vibration_after_the_load_leaves() {
+    let model = beam(60.0, 60);
+    let contacts = Devices::uniform(7, 20e3).contact_set(&model).unwrap();
+    let base = RunSettings { speed: 150.0, load_advance: 0.2, ..RunSettings::default() };
+    let t_on = 60.0 / 150.0;
+    let crossing = Simulation::new(&model, &contacts, &base).unwrap().run().unwrap();
+    let longer = RunSettings { end_time: Some(1.5 * t_on), ..base.clone() };
+    let after = Simulation::new(&model, &contacts, &longer).unwrap().run().unwrap();
+    assert_eq!(crossing.statistics.steps, 300);
+    assert_eq!(after.statistics.steps, 450);
+    assert!((after.energy.load_work - crossing.energy.load_work).abs() <= 1e-12 * crossing.energy.load_work);
+    assert!(after.energy.dissipated() > crossing.energy.dissipated());
+    assert!(after.energy.residual().abs() <= 1e-9 * after.energy.load_work);
+    // W̄ integrates over the crossing only.
+    assert_eq!(after.global_norm, crossing.global_norm);
+    let too_early = RunSettings { end_time: Some(0.5 * t_on), ..base };
+    assert!(Simulation::new(&model, &contacts, &too_early).is_err());
+}
