@@ -1,0 +1,81 @@
+//! The error type of the `study` crate.
+
+use thiserror::Error;
+
+/// What can go wrong with a scenario or a study.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum StudyError {
+    /// A scenario value is out of range; names its path in the file, the value and what is allowed.
+    #[error("invalid {path} = {value}: {allowed}")]
+    InvalidField {
+        /// Dotted path in the scenario, e.g. `foundation.damping_ratio`.
+        path: String,
+        /// The offending value, as written.
+        value: String,
+        /// What is allowed.
+        allowed: String,
+    },
+    /// The scenario is not valid TOML or has unknown keys / wrong types.
+    #[error("{source_name}:{line}:{column}: {message}")]
+    Syntax {
+        /// File name (or `<string>`).
+        source_name: String,
+        /// 1-based line.
+        line: usize,
+        /// 1-based column.
+        column: usize,
+        /// What the parser said.
+        message: String,
+    },
+    /// A file could not be read or written.
+    #[error("{path}: {message}")]
+    Io {
+        /// The file.
+        path: String,
+        /// What went wrong.
+        message: String,
+    },
+    /// An error from the beam layer.
+    #[error(transparent)]
+    Beam(#[from] fem_beam::FemError),
+    /// An error from the friction layer.
+    #[error(transparent)]
+    Friction(#[from] friction::FrictionError),
+    /// An error from the stepper (invalid setting or a failed run).
+    #[error(transparent)]
+    Stepping(#[from] nscd::NscdError),
+}
+
+impl StudyError {
+    /// Whether the error is the user's input (exit code 2) rather than a runtime failure.
+    pub fn is_invalid_input(&self) -> bool {
+        use fem_beam::FemError as F;
+        use friction::FrictionError as R;
+        use nscd::NscdError as N;
+        let beam = |e: &F| matches!(e, F::InvalidField { .. } | F::InvalidCount { .. } | F::NoSteadyState { .. });
+        let friction = |e: &R| match e {
+            R::InvalidField { .. } | R::InvalidCount { .. } => true,
+            R::Beam(b) => beam(b),
+        };
+        match self {
+            StudyError::InvalidField { .. } | StudyError::Syntax { .. } => true,
+            StudyError::Io { .. } => false,
+            StudyError::Beam(e) => beam(e),
+            StudyError::Friction(e) => friction(e),
+            StudyError::Stepping(e) => match e {
+                N::InvalidField { .. } | N::Unavailable(_) => true,
+                N::Beam(b) => beam(b),
+                N::Friction(f) => friction(f),
+                _ => false,
+            },
+        }
+    }
+}
+
+/// Result alias of this crate.
+pub type Result<T, E = StudyError> = std::result::Result<T, E>;
+
+/// An `InvalidField` error.
+pub(crate) fn invalid(path: &str, value: impl std::fmt::Display, allowed: impl Into<String>) -> StudyError {
+    StudyError::InvalidField { path: path.into(), value: value.to_string(), allowed: allowed.into() }
+}

@@ -1,0 +1,239 @@
+//! Speed sweeps, the critical speed and the optimal device force (MODEL.md §7).
+//!
+//! A sweep runs one simulation per speed, in parallel on a rayon pool of `jobs` threads; every run is independent and
+//! deterministic and the results are returned in speed order, so the output is identical for any thread count.
+//! The critical speed is the speed of the largest max downward deflection, refined below the sweep step by a
+//! golden-section search on fresh runs inside the bracket around the sweep's maximum. The optimal device force for
+//! fixed N and speed minimises the max downward deflection: a log-spaced scan of the bounds, then golden section
+//! around the best scanned force; every evaluated force is returned with its value.
+
+use crate::error::{Result, invalid};
+use crate::scenario::{Case, Scenario};
+use nscd::Simulation;
+use rayon::prelude::*;
+use serde::Serialize;
+use std::io::Write;
+
+/// What one run of a sweep reports.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SweepPoint {
+    /// Load speed (m/s).
+    pub speed: f64,
+    /// Max downward deflection over nodes and steps (m, magnitude).
+    pub max_downward_deflection: f64,
+    /// Max upward deflection (m, magnitude).
+    pub max_upward_deflection: f64,
+    /// Energy removed by friction and viscous damping (J).
+    pub dissipated_energy: f64,
+    /// W̄ (m²).
+    pub global_norm: f64,
+    /// Where the max downward deflection occurred (m).
+    pub max_downward_position: f64,
+    /// When (s).
+    pub max_downward_time: f64,
+    /// Work of the load (J).
+    pub load_work: f64,
+    /// Residual of the discrete energy balance (J).
+    pub energy_residual: f64,
+    /// Mean friction-solver iterations per step.
+    pub mean_iterations: f64,
+}
+
+/// One run of `case` at `speed` (m/s).
+pub fn run_point(case: &Case, speed: f64) -> Result<SweepPoint> {
+    let mut settings = case.settings.clone();
+    settings.speed = speed;
+    settings.record_sections.clear();
+    let r = Simulation::new(&case.model, &case.contacts, &settings)?.run()?;
+    Ok(SweepPoint {
+        speed,
+        max_downward_deflection: r.max_downward.magnitude,
+        max_upward_deflection: r.max_upward.magnitude,
+        dissipated_energy: r.energy.dissipated(),
+        global_norm: r.global_norm,
+        max_downward_position: r.max_downward.position,
+        max_downward_time: r.max_downward.time,
+        load_work: r.energy.load_work,
+        energy_residual: r.energy.residual(),
+        mean_iterations: r.statistics.mean_iterations,
+    })
+}
+
+/// Run `case` at every speed on `jobs` threads (0 = all cores); `progress` is called with the number of finished
+/// points after each one. Results are in the order of `speeds`.
+pub fn speed_sweep(
+    case: &Case,
+    speeds: &[f64],
+    jobs: usize,
+    progress: &(dyn Fn(usize) + Sync),
+) -> Result<Vec<SweepPoint>> {
+    if let Some(&v) = speeds.iter().find(|v| !(v.is_finite() && **v > 0.0)) {
+        return Err(invalid("speeds", v, "every speed must be finite and > 0 (m/s)"));
+    }
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(jobs)
+        .build()
+        .map_err(|e| invalid("jobs", jobs, format!("cannot start the thread pool: {e}")))?;
+    let done = std::sync::atomic::AtomicUsize::new(0);
+    let results: Vec<Result<SweepPoint>> = pool.install(|| {
+        speeds
+            .par_iter()
+            .map(|&speed| {
+                let point = run_point(case, speed);
+                progress(done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1);
+                point
+            })
+            .collect()
+    });
+    results.into_iter().collect()
+}
+
+/// CSV header of sweep output.
+pub const CSV_HEADER: &str = "speed,max_downward_deflection,max_upward_deflection,dissipated_energy,global_norm,\
+max_downward_position,max_downward_time,load_work,energy_residual,mean_iterations";
+
+/// Write sweep points as CSV (header + one line per point, full precision).
+pub fn write_csv(points: &[SweepPoint], out: &mut dyn Write) -> std::io::Result<()> {
+    writeln!(out, "{CSV_HEADER}")?;
+    for p in points {
+        writeln!(
+            out,
+            "{},{},{},{},{},{},{},{},{},{}",
+            p.speed,
+            p.max_downward_deflection,
+            p.max_upward_deflection,
+            p.dissipated_energy,
+            p.global_norm,
+            p.max_downward_position,
+            p.max_downward_time,
+            p.load_work,
+            p.energy_residual,
+            p.mean_iterations
+        )?;
+    }
+    Ok(())
+}
+
+/// The refined critical speed of a configuration.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct CriticalSpeed {
+    /// Speed of the largest max downward deflection (m/s).
+    pub speed: f64,
+    /// That deflection (m).
+    pub max_downward_deflection: f64,
+    /// The sweep's own maximum (speed, deflection) before refinement.
+    pub sweep_maximum: (f64, f64),
+    /// Fresh runs of the refinement: (speed, max downward deflection).
+    pub evaluations: Vec<(f64, f64)>,
+}
+
+/// Refine the sweep's maximum of the max downward deflection to `tolerance` (m/s) by golden section on fresh runs
+/// inside [v_{i−1}, v_{i+1}] around the sweep's best speed v_i.
+pub fn critical_speed(case: &Case, sweep: &[SweepPoint], tolerance: f64) -> Result<CriticalSpeed> {
+    if sweep.is_empty() {
+        return Err(invalid("sweep", "empty", "needs at least one speed"));
+    }
+    if !(tolerance.is_finite() && tolerance > 0.0) {
+        return Err(invalid("tolerance", tolerance, "must be finite and > 0 (m/s)"));
+    }
+    let best = (0..sweep.len())
+        .max_by(|&a, &b| sweep[a].max_downward_deflection.total_cmp(&sweep[b].max_downward_deflection))
+        .expect("non-empty");
+    let sweep_maximum = (sweep[best].speed, sweep[best].max_downward_deflection);
+    let lo = sweep[best.saturating_sub(1)].speed;
+    let hi = sweep[(best + 1).min(sweep.len() - 1)].speed;
+    let mut evaluations = Vec::new();
+    let mut f = |v: f64| -> Result<f64> {
+        let w = run_point(case, v)?.max_downward_deflection;
+        evaluations.push((v, w));
+        Ok(w)
+    };
+    let (speed, value) = golden_section(&mut f, lo, hi, tolerance, true)?;
+    // The refinement never reports less than the sweep found.
+    let (speed, max_downward_deflection) = if value >= sweep_maximum.1 { (speed, value) } else { sweep_maximum };
+    Ok(CriticalSpeed { speed, max_downward_deflection, sweep_maximum, evaluations })
+}
+
+/// The device force minimising the max downward deflection.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct OptimalForce {
+    /// F_u (N).
+    pub force: f64,
+    /// Max downward deflection there (m).
+    pub max_downward_deflection: f64,
+    /// Every evaluated (F_u, max downward deflection), in evaluation order.
+    pub explored: Vec<(f64, f64)>,
+}
+
+/// Minimise the max downward deflection of `scenario` (which must have `[friction.devices]`) over the device force
+/// in [lower, upper] (N) at `speed` (m/s): `scan` log-spaced forces, then golden section to a relative `tolerance`.
+pub fn optimal_device_force(
+    scenario: &Scenario,
+    speed: f64,
+    (lower, upper): (f64, f64),
+    scan: usize,
+    tolerance: f64,
+) -> Result<OptimalForce> {
+    if scenario.friction.devices.is_none() {
+        return Err(invalid("friction.devices", "absent", "the optimal force needs [friction.devices]"));
+    }
+    if !(lower.is_finite() && lower > 0.0 && upper.is_finite() && upper > lower) {
+        return Err(invalid("force bounds", format!("{lower}:{upper}"), "need 0 < lower < upper (N)"));
+    }
+    if scan < 3 {
+        return Err(invalid("scan", scan, "needs at least 3 forces"));
+    }
+    let mut explored = Vec::new();
+    let mut f = |force: f64| -> Result<f64> {
+        let mut s = scenario.clone();
+        if let Some(d) = s.friction.devices.as_mut() {
+            d.force = force;
+        }
+        let w = run_point(&s.build()?, speed)?.max_downward_deflection;
+        explored.push((force, w));
+        Ok(w)
+    };
+    let ratio = (upper / lower).powf(1.0 / (scan - 1) as f64);
+    let forces: Vec<f64> = (0..scan).map(|i| lower * ratio.powi(i as i32)).collect();
+    let values: Vec<f64> = forces.iter().map(|&force| f(force)).collect::<Result<_>>()?;
+    let best = (0..scan).min_by(|&a, &b| values[a].total_cmp(&values[b])).expect("scan ≥ 3");
+    let (lo, hi) = (forces[best.saturating_sub(1)], forces[(best + 1).min(scan - 1)]);
+    // Golden section in log F: the response varies over decades of force.
+    let mut g = |log_force: f64| f(log_force.exp()).map(|w| -w);
+    let (log_force, value) = golden_section(&mut g, lo.ln(), hi.ln(), tolerance, true)?;
+    let (force, max_downward_deflection) =
+        if -value <= values[best] { (log_force.exp(), -value) } else { (forces[best], values[best]) };
+    Ok(OptimalForce { force, max_downward_deflection, explored })
+}
+
+/// Golden-section search for the maximum (`maximise`) of f on [a, b] to an interval width `tolerance`;
+/// returns (argmax, max) among the evaluated points.
+fn golden_section(
+    f: &mut dyn FnMut(f64) -> Result<f64>,
+    mut a: f64,
+    mut b: f64,
+    tolerance: f64,
+    maximise: bool,
+) -> Result<(f64, f64)> {
+    let sign = if maximise { 1.0 } else { -1.0 };
+    let ratio = (5f64.sqrt() - 1.0) / 2.0;
+    let mut c = b - ratio * (b - a);
+    let mut d = a + ratio * (b - a);
+    let (mut fc, mut fd) = (sign * f(c)?, sign * f(d)?);
+    while (b - a).abs() > tolerance {
+        if fc >= fd {
+            b = d;
+            d = c;
+            fd = fc;
+            c = b - ratio * (b - a);
+            fc = sign * f(c)?;
+        } else {
+            a = c;
+            c = d;
+            fc = fd;
+            d = a + ratio * (b - a);
+            fd = sign * f(d)?;
+        }
+    }
+    Ok(if fc >= fd { (c, sign * fc) } else { (d, sign * fd) })
+}
