@@ -1,15 +1,20 @@
 //! The `frictrack` command: railway track dynamics with Coulomb frictional damping.
 
 mod analytic;
+mod check;
+mod files;
+mod init;
 mod reference;
 mod run;
+mod scenario_args;
+mod sweep;
 
 use clap::{Parser, Subcommand, ValueEnum};
 use std::process::ExitCode;
 
 /// Railway track dynamics under moving loads: an Euler–Bernoulli rail on a viscoelastic Winkler foundation.
 #[derive(Debug, Parser)]
-#[command(name = "frictrack", version, about, long_about = None, after_help = "Examples:\n  frictrack run\n  frictrack run --speed 180 --devices 31 --device-force 50e3\n  frictrack run --distributed-friction 5000 --format json\n  frictrack reference --elements 400\n  frictrack analytic --speed 200 --damping-ratio 0.05\n  frictrack analytic --damping-ratio 0.05 --speeds 10:300:10 --format json")]
+#[command(name = "frictrack", version, about, long_about = None, after_help = "Examples:\n  frictrack run\n  frictrack init case.toml && frictrack check case.toml\n  frictrack run case.toml --speed 180\n  frictrack sweep case.toml --speeds 150:260:5 --out sweep.csv --critical\n  frictrack run --speed 180 --devices 31 --device-force 50e3\n  frictrack run --distributed-friction 5000 --format json\n  frictrack reference --elements 400\n  frictrack analytic --speed 200 --damping-ratio 0.05\n  frictrack analytic --damping-ratio 0.05 --speeds 10:300:10 --format json")]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -17,8 +22,15 @@ struct Cli {
 
 #[derive(Debug, Subcommand)]
 enum Command {
-    /// Simulate the reference case under a moving load, with friction devices or distributed friction.
+    /// Simulate a scenario (default: the reference case) under a moving load, with friction devices and/or
+    /// distributed friction; flags override the scenario.
     Run(run::RunArgs),
+    /// Run a scenario at many speeds in parallel; CSV of max deflections, dissipated energy and W̄ per speed.
+    Sweep(sweep::SweepArgs),
+    /// Validate a scenario file.
+    Check(check::CheckArgs),
+    /// Write the documented scenario template (the reference case).
+    Init(init::InitArgs),
     /// Static response and natural frequencies of the reference case beside their closed forms.
     Reference(reference::ReferenceArgs),
     /// Closed-form steady state of an infinite beam under a moving load: max downward/upward deflection, and the
@@ -40,6 +52,9 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Run(args) => run::run(&args),
+        Command::Sweep(args) => sweep::run(&args),
+        Command::Check(args) => check::run(&args),
+        Command::Init(args) => init::run(&args),
         Command::Reference(args) => reference::run(&args),
         Command::Analytic(args) => analytic::run(&args),
     };
@@ -62,7 +77,9 @@ fn error_code(error: &anyhow::Error) -> u8 {
         R::InvalidField { .. } | R::InvalidCount { .. } => true,
         R::Beam(b) => beam(b),
     };
-    let invalid = if let Some(e) = error.downcast_ref::<F>() {
+    let invalid = if let Some(e) = error.downcast_ref::<study::StudyError>() {
+        e.is_invalid_input()
+    } else if let Some(e) = error.downcast_ref::<F>() {
         beam(e)
     } else if let Some(e) = error.downcast_ref::<R>() {
         friction(e)

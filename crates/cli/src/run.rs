@@ -1,79 +1,20 @@
-//! `frictrack run`: one Moreau–Jean simulation of the reference case (MODEL.md §2–§6) with the chosen speed,
-//! friction and integration settings; prints max deflections, energies, solver statistics and wall time.
+//! `frictrack run`: one Moreau–Jean simulation of a scenario (default: the reference case of MODEL.md §2) with flags
+//! overriding it; prints max deflections, energies, solver statistics and wall time.
 
 use crate::Format;
-use anyhow::{Result, bail};
-use clap::{Args, ValueEnum};
-use fem_beam::reference::uic60_on_soft_soil;
-use fem_beam::{AbsorbingZones, BeamModel, Mesh};
-use friction::{ContactSet, Devices, DistributedFriction};
-use nscd::{InitialState, RunSettings, Simulation, SolverKind};
+use crate::scenario_args::ScenarioArgs;
+use anyhow::Result;
+use clap::Args;
+use friction::ContactKind;
+use nscd::Simulation;
 use serde::Serialize;
 use std::time::Instant;
-
-/// Friction solver choice on the command line.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum SolverChoice {
-    /// Projection for sparse devices, interior point for dense sections.
-    Auto,
-    /// Projected (nonsmooth) Gauss–Seidel.
-    Projection,
-    /// Banded primal–dual interior point.
-    InteriorPoint,
-    /// Clarabel QP (cross-check; slow for many sections).
-    Clarabel,
-}
-
-impl From<SolverChoice> for SolverKind {
-    fn from(choice: SolverChoice) -> Self {
-        match choice {
-            SolverChoice::Auto => SolverKind::Auto,
-            SolverChoice::Projection => SolverKind::Projection,
-            SolverChoice::InteriorPoint => SolverKind::InteriorPoint,
-            SolverChoice::Clarabel => SolverKind::Clarabel,
-        }
-    }
-}
 
 /// Options of `frictrack run`.
 #[derive(Debug, Args)]
 pub struct RunArgs {
-    /// Load speed (m/s).
-    #[arg(long, default_value_t = 200.0)]
-    speed: f64,
-    /// Number of friction devices, evenly spaced at i·L/(N+1) and snapped to nodes.
-    #[arg(long, default_value_t = 0)]
-    devices: usize,
-    /// Maximal force of one device F_u (N).
-    #[arg(long, default_value_t = 100e3)]
-    device_force: f64,
-    /// Distributed friction f_u (N/m).
-    #[arg(long, default_value_t = 0.0)]
-    distributed_friction: f64,
-    /// Foundation damping ratio ζ = c_f/c_cr.
-    #[arg(long, default_value_t = 0.0)]
-    damping_ratio: f64,
-    /// θ of the Moreau–Jean scheme, in [0.5, 1].
-    #[arg(long, default_value_t = 0.5)]
-    theta: f64,
-    /// Number of beam elements on the 200 m beam.
-    #[arg(long, default_value_t = 200)]
-    elements: usize,
-    /// Load advance per time step (m): h = advance / speed.
-    #[arg(long, default_value_t = 0.1)]
-    load_advance: f64,
-    /// Friction solver.
-    #[arg(long, value_enum, default_value_t = SolverChoice::Auto)]
-    solver: SolverChoice,
-    /// Relative tolerance of the friction solver.
-    #[arg(long, default_value_t = 1e-10)]
-    tolerance: f64,
-    /// Start from the analytic steady state with the load at this position (m) instead of at rest.
-    #[arg(long)]
-    steady_start: Option<f64>,
-    /// Absorbing end zones of this length (m), foundation damping graded up to c_cr.
-    #[arg(long)]
-    absorbing_zones: Option<f64>,
+    #[command(flatten)]
+    scenario: ScenarioArgs,
     /// Output format.
     #[arg(long, value_enum, default_value_t = Format::Text)]
     format: Format,
@@ -113,54 +54,20 @@ pub struct RunReport {
 /// Execute `frictrack run`.
 pub fn run(args: &RunArgs) -> Result<()> {
     let start = Instant::now();
-    let mut case = uic60_on_soft_soil();
-    case.mesh = Mesh::new(case.mesh.length, args.elements)?;
-    let foundation = case.foundation.with_damping_ratio(args.damping_ratio, &case.beam)?;
-    let damping = match args.absorbing_zones {
-        Some(length) => AbsorbingZones { length, peak_damping: foundation.critical_damping(&case.beam) }
-            .element_damping(&case.mesh, foundation.damping)?,
-        None => vec![foundation.damping; case.mesh.elements],
-    };
-    let model = BeamModel::with_element_damping(case.beam, foundation, case.mesh, case.supports, damping)?;
-    let mut contacts = ContactSet::new();
-    if args.devices > 0 {
-        contacts.extend(Devices::uniform(args.devices, args.device_force).contact_set(&model)?);
-    }
-    if !(args.distributed_friction.is_finite() && args.distributed_friction >= 0.0) {
-        bail!(friction::FrictionError::InvalidField {
-            field: "distributed-friction",
-            value: args.distributed_friction,
-            allowed: "must be finite and ≥ 0 (N/m)".into(),
-        });
-    }
-    if args.distributed_friction > 0.0 {
-        contacts.extend(DistributedFriction::new(args.distributed_friction).contact_set(&model)?);
-    }
-    let mut settings = RunSettings {
-        speed: args.speed,
-        load: case.load,
-        theta: args.theta,
-        load_advance: args.load_advance,
-        ..RunSettings::default()
-    };
-    settings.solver.kind = args.solver.into();
-    settings.solver.tolerance = args.tolerance;
-    if let Some(position) = args.steady_start {
-        settings.initial = InitialState::SteadyState { position };
-    }
-    let result = Simulation::new(&model, &contacts, &settings)?.run()?;
+    let scenario = args.scenario.load()?;
+    let case = scenario.build()?;
+    let result = Simulation::new(&case.model, &case.contacts, &case.settings)?.run()?;
     let e = &result.energy;
     let s = &result.statistics;
-    let device_positions = if args.devices > 0 {
-        Devices::uniform(args.devices, args.device_force).snapped_positions(&model)?
-    } else {
-        Vec::new()
-    };
+    let device_positions: Vec<f64> = (0..case.contacts.len())
+        .filter(|&j| case.contacts.kinds()[j] == ContactKind::Device)
+        .map(|j| case.contacts.positions()[j])
+        .collect();
     let report = RunReport {
-        speed: args.speed,
-        devices: args.devices,
+        speed: case.settings.speed,
+        devices: device_positions.len(),
         device_positions,
-        distributed_friction: args.distributed_friction,
+        distributed_friction: scenario.friction.distributed.as_ref().map_or(0.0, |d| d.force_per_length),
         max_downward_deflection: result.max_downward.magnitude,
         max_downward_deflection_position: result.max_downward.position,
         max_downward_deflection_time: result.max_downward.time,
@@ -192,7 +99,7 @@ pub fn run(args: &RunArgs) -> Result<()> {
 }
 
 fn print_text(r: &RunReport) {
-    println!("frictrack run — reference beam, load {:.2} m/s ({:.0} km/h)", r.speed, r.speed * 3.6);
+    println!("frictrack run — load {:.2} m/s ({:.0} km/h)", r.speed, r.speed * 3.6);
     if r.devices > 0 {
         println!(
             "  friction devices     {} (snapped to {:?} … m)",

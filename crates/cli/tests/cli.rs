@@ -102,3 +102,69 @@ fn invalid_input_exits_2_with_a_named_field() {
     assert_ne!(out.status.code(), Some(0));
     assert!(String::from_utf8_lossy(&out.stderr).contains("speed range"));
 }
+
+fn temporary_folder(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("frictrack-cli-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+#[test]
+fn init_check_run_and_sweep_a_scenario_file() {
+    let dir = temporary_folder("scenario");
+    let template = dir.join("case.toml");
+    let out = frictrack(&["init", template.to_str().unwrap()]);
+    assert!(out.status.success());
+    let out = frictrack(&["check", template.to_str().unwrap()]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(String::from_utf8_lossy(&out.stdout).contains(": ok"));
+    // Refuses to overwrite.
+    assert!(!frictrack(&["init", template.to_str().unwrap()]).status.success());
+
+    let small = dir.join("small.toml");
+    std::fs::write(
+        &small,
+        "[mesh]\nlength = 60.0\nelements = 60\n[friction.devices]\ncount = 7\nforce = 20e3\n\
+         [sweep]\nfrom = 100.0\nto = 220.0\nstep = 40.0\n",
+    )
+    .unwrap();
+    let path = small.to_str().unwrap();
+    let v = json(&frictrack(&["run", path, "--speed", "150", "--format", "json"]));
+    assert_eq!(v["devices"], 7);
+    assert_eq!(v["steps"], 600);
+    assert!((v["speed"].as_f64().unwrap() - 150.0).abs() < 1e-12);
+
+    let csv_path = dir.join("sweep.csv");
+    let out = frictrack(&["sweep", path, "--out", csv_path.to_str().unwrap(), "--jobs", "2"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let csv = std::fs::read_to_string(&csv_path).unwrap();
+    let lines: Vec<&str> = csv.lines().collect();
+    assert!(lines[0].starts_with("speed,max_downward_deflection,max_upward_deflection,dissipated_energy,global_norm"));
+    assert_eq!(lines.len(), 5);
+    assert!(lines[1].starts_with("100,"));
+    // The same sweep with the range on the command line and one thread, on stdout: the same bytes.
+    let out = frictrack(&["sweep", path, "--speeds", "100:220:40", "--jobs", "1"]);
+    assert_eq!(String::from_utf8_lossy(&out.stdout), csv);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn bad_scenarios_exit_2_with_line_or_path() {
+    let dir = temporary_folder("bad");
+    let typo = dir.join("typo.toml");
+    std::fs::write(&typo, "[foundation]\ndampng = 0.1\n").unwrap();
+    let out = frictrack(&["check", typo.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("typo.toml:2:1") && err.contains("dampng"), "{err}");
+    let range = dir.join("range.toml");
+    std::fs::write(&range, "[integration]\ntheta = 2.0\n").unwrap();
+    let out = frictrack(&["run", range.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("integration.theta"));
+    let missing = dir.join("missing.toml");
+    let out = frictrack(&["check", missing.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(1));
+    let _ = std::fs::remove_dir_all(&dir);
+}

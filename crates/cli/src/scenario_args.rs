@@ -1,0 +1,126 @@
+//! The scenario of a command: a TOML file (or the reference case) with command-line overrides on top.
+
+use anyhow::{Context, Result};
+use clap::{Args, ValueEnum};
+use std::path::PathBuf;
+use study::Scenario;
+use study::scenario::{AbsorbingZonesSection, DevicesSection, DistributedSection, SolverChoice};
+
+/// Friction solver choice on the command line.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum SolverArg {
+    /// Projection for sparse devices, interior point for dense sections.
+    Auto,
+    /// Projected (nonsmooth) Gauss–Seidel.
+    Projection,
+    /// Banded primal–dual interior point.
+    InteriorPoint,
+    /// Clarabel QP (cross-check; slow for many sections).
+    Clarabel,
+}
+
+impl From<SolverArg> for SolverChoice {
+    fn from(arg: SolverArg) -> Self {
+        match arg {
+            SolverArg::Auto => SolverChoice::Auto,
+            SolverArg::Projection => SolverChoice::Projection,
+            SolverArg::InteriorPoint => SolverChoice::InteriorPoint,
+            SolverArg::Clarabel => SolverChoice::Clarabel,
+        }
+    }
+}
+
+/// A scenario file and the flags that override it.
+#[derive(Debug, Args)]
+pub struct ScenarioArgs {
+    /// Scenario file (TOML); without it, the reference case. Flags override the file.
+    pub scenario: Option<PathBuf>,
+    /// Load speed (m/s).
+    #[arg(long)]
+    pub speed: Option<f64>,
+    /// Number of friction devices, evenly spaced at i·L/(N+1) and snapped to nodes.
+    #[arg(long)]
+    pub devices: Option<usize>,
+    /// Maximal force of one device F_u (N); default 100 kN when --devices is given without a scenario force.
+    #[arg(long)]
+    pub device_force: Option<f64>,
+    /// Distributed friction f_u (N/m).
+    #[arg(long)]
+    pub distributed_friction: Option<f64>,
+    /// Foundation damping ratio ζ = c_f/c_cr.
+    #[arg(long)]
+    pub damping_ratio: Option<f64>,
+    /// θ of the Moreau–Jean scheme, in [0.5, 1].
+    #[arg(long)]
+    pub theta: Option<f64>,
+    /// Number of beam elements.
+    #[arg(long)]
+    pub elements: Option<usize>,
+    /// Load advance per time step (m): h = advance / speed.
+    #[arg(long)]
+    pub load_advance: Option<f64>,
+    /// Friction solver.
+    #[arg(long, value_enum)]
+    pub solver: Option<SolverArg>,
+    /// Relative tolerance of the friction law residual (relative to the largest free section velocity).
+    #[arg(long)]
+    pub tolerance: Option<f64>,
+    /// Start from the analytic steady state with the load at this position (m) instead of at rest.
+    #[arg(long)]
+    pub steady_start: Option<f64>,
+    /// Absorbing end zones of this length (m), foundation damping graded up to c_cr.
+    #[arg(long)]
+    pub absorbing_zones: Option<f64>,
+}
+
+impl ScenarioArgs {
+    /// The scenario file (or the reference case) with the flags applied.
+    pub fn load(&self) -> Result<Scenario> {
+        let mut s = match &self.scenario {
+            Some(path) => Scenario::from_path(path).with_context(|| format!("reading scenario {}", path.display()))?,
+            None => Scenario::default(),
+        };
+        if let Some(v) = self.speed {
+            s.load.speed = v;
+        }
+        if self.devices.is_some() || self.device_force.is_some() {
+            let d = s.friction.devices.get_or_insert(DevicesSection { force: 100e3, ..DevicesSection::default() });
+            if let Some(count) = self.devices {
+                d.count = Some(count);
+                d.positions = None;
+            }
+            if let Some(force) = self.device_force {
+                d.force = force;
+            }
+        }
+        if let Some(f) = self.distributed_friction {
+            s.friction.distributed.get_or_insert_with(DistributedSection::default).force_per_length = f;
+        }
+        if let Some(ratio) = self.damping_ratio {
+            s.foundation.damping = None;
+            s.foundation.damping_ratio = Some(ratio);
+        }
+        if let Some(theta) = self.theta {
+            s.integration.theta = theta;
+        }
+        if let Some(elements) = self.elements {
+            s.mesh.elements = elements;
+        }
+        if let Some(dx) = self.load_advance {
+            s.integration.load_advance = dx;
+        }
+        if let Some(solver) = self.solver {
+            s.integration.solver = solver.into();
+        }
+        if let Some(t) = self.tolerance {
+            s.integration.tolerance = t;
+        }
+        if let Some(x) = self.steady_start {
+            s.integration.steady_start = Some(x);
+        }
+        if let Some(length) = self.absorbing_zones {
+            s.foundation.absorbing_zones = Some(AbsorbingZonesSection { length, peak_ratio: 1.0 });
+        }
+        Ok(s)
+    }
+}
