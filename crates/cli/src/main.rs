@@ -7,6 +7,7 @@ mod init;
 mod reference;
 mod run;
 mod scenario_args;
+mod study_cmd;
 mod sweep;
 
 use clap::{Parser, Subcommand, ValueEnum};
@@ -27,6 +28,8 @@ enum Command {
     Run(run::RunArgs),
     /// Run a scenario at many speeds in parallel; CSV of max deflections, dissipated energy and W̄ per speed.
     Sweep(sweep::SweepArgs),
+    /// Run one of the six studies of MODEL.md §7 (CSV + JSON in the output folder).
+    Study(study_cmd::StudyArgs),
     /// Validate a scenario file.
     Check(check::CheckArgs),
     /// Write the documented scenario template (the reference case).
@@ -53,6 +56,7 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Command::Run(args) => run::run(&args),
         Command::Sweep(args) => sweep::run(&args),
+        Command::Study(args) => study_cmd::run(&args),
         Command::Check(args) => check::run(&args),
         Command::Init(args) => init::run(&args),
         Command::Reference(args) => reference::run(&args),

@@ -5,6 +5,8 @@
 //!   critical speed refined below the sweep step on fresh runs; the optimal device force at a fixed speed.
 
 pub mod error;
+pub mod metrics;
+pub mod presets;
 pub mod scenario;
 pub mod sweep;
 

@@ -67,6 +67,17 @@ pub fn speed_sweep(
     jobs: usize,
     progress: &(dyn Fn(usize) + Sync),
 ) -> Result<Vec<SweepPoint>> {
+    Ok(sweep_many(std::slice::from_ref(case), speeds, jobs, progress)?.pop().expect("one case"))
+}
+
+/// Run every case at every speed, all (case, speed) pairs on one pool of `jobs` threads; results per case in the
+/// order of `speeds`, identical for any thread count.
+pub fn sweep_many(
+    cases: &[Case],
+    speeds: &[f64],
+    jobs: usize,
+    progress: &(dyn Fn(usize) + Sync),
+) -> Result<Vec<Vec<SweepPoint>>> {
     if let Some(&v) = speeds.iter().find(|v| !(v.is_finite() && **v > 0.0)) {
         return Err(invalid("speeds", v, "every speed must be finite and > 0 (m/s)"));
     }
@@ -75,17 +86,19 @@ pub fn speed_sweep(
         .build()
         .map_err(|e| invalid("jobs", jobs, format!("cannot start the thread pool: {e}")))?;
     let done = std::sync::atomic::AtomicUsize::new(0);
+    let pairs: Vec<(usize, f64)> = (0..cases.len()).flat_map(|c| speeds.iter().map(move |&v| (c, v))).collect();
     let results: Vec<Result<SweepPoint>> = pool.install(|| {
-        speeds
+        pairs
             .par_iter()
-            .map(|&speed| {
-                let point = run_point(case, speed);
+            .map(|&(c, speed)| {
+                let point = run_point(&cases[c], speed);
                 progress(done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1);
                 point
             })
             .collect()
     });
-    results.into_iter().collect()
+    let mut points = results.into_iter().collect::<Result<Vec<_>>>()?.into_iter();
+    Ok((0..cases.len()).map(|_| points.by_ref().take(speeds.len()).collect()).collect())
 }
 
 /// CSV header of sweep output.
@@ -193,17 +206,45 @@ pub fn optimal_device_force(
         explored.push((force, w));
         Ok(w)
     };
-    let ratio = (upper / lower).powf(1.0 / (scan - 1) as f64);
-    let forces: Vec<f64> = (0..scan).map(|i| lower * ratio.powi(i as i32)).collect();
+    let forces = log_spaced(lower, upper, scan);
     let values: Vec<f64> = forces.iter().map(|&force| f(force)).collect::<Result<_>>()?;
     let best = (0..scan).min_by(|&a, &b| values[a].total_cmp(&values[b])).expect("scan ≥ 3");
-    let (lo, hi) = (forces[best.saturating_sub(1)], forces[(best + 1).min(scan - 1)]);
-    // Golden section in log F: the response varies over decades of force.
-    let mut g = |log_force: f64| f(log_force.exp()).map(|w| -w);
-    let (log_force, value) = golden_section(&mut g, lo.ln(), hi.ln(), tolerance, true)?;
-    let (force, max_downward_deflection) =
-        if -value <= values[best] { (log_force.exp(), -value) } else { (forces[best], values[best]) };
-    Ok(OptimalForce { force, max_downward_deflection, explored })
+    let bracket = (forces[best.saturating_sub(1)], forces[(best + 1).min(scan - 1)]);
+    let mut refined = refine_device_force(scenario, speed, bracket, tolerance)?;
+    if values[best] < refined.max_downward_deflection {
+        (refined.force, refined.max_downward_deflection) = (forces[best], values[best]);
+    }
+    explored.append(&mut refined.explored);
+    Ok(OptimalForce { force: refined.force, max_downward_deflection: refined.max_downward_deflection, explored })
+}
+
+/// `count` log-spaced values from `lower` to `upper` (both included).
+pub fn log_spaced(lower: f64, upper: f64, count: usize) -> Vec<f64> {
+    let ratio = (upper / lower).powf(1.0 / (count.max(2) - 1) as f64);
+    (0..count).map(|i| lower * ratio.powi(i as i32)).collect()
+}
+
+/// Golden section in log F_u on `bracket` (N) for the device force minimising the max downward deflection of
+/// `scenario` at `speed`, to a relative `tolerance` in F_u.
+pub fn refine_device_force(
+    scenario: &Scenario,
+    speed: f64,
+    (lo, hi): (f64, f64),
+    tolerance: f64,
+) -> Result<OptimalForce> {
+    let mut explored = Vec::new();
+    let mut f = |log_force: f64| -> Result<f64> {
+        let force = log_force.exp();
+        let mut s = scenario.clone();
+        if let Some(d) = s.friction.devices.as_mut() {
+            d.force = force;
+        }
+        let w = run_point(&s.build()?, speed)?.max_downward_deflection;
+        explored.push((force, w));
+        Ok(-w)
+    };
+    let (log_force, value) = golden_section(&mut f, lo.ln(), hi.ln(), tolerance, true)?;
+    Ok(OptimalForce { force: log_force.exp(), max_downward_deflection: -value, explored })
 }
 
 /// Golden-section search for the maximum (`maximise`) of f on [a, b] to an interval width `tolerance`;

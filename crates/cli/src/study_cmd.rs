@@ -1,0 +1,115 @@
+//! `frictrack study <preset>`: run one of the six studies of MODEL.md §7 and write `<preset>.csv` (the data) and
+//! `<preset>.json` (scenario, version, git revision, resolution, summary, wall time) into the output folder.
+
+use crate::files::write_atomically;
+use anyhow::{Context, Result};
+use clap::{Args, ValueEnum};
+use serde_json::json;
+use std::io::IsTerminal;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+use study::Scenario;
+use study::presets::{Preset, Resolution, StudyData, run_preset};
+
+/// Sampling of a study.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ResolutionArg {
+    /// 20 m/s speed steps, 9 forces: quick.
+    Coarse,
+    /// 1 m/s speed steps, 41 forces: the paper's curves.
+    Paper,
+}
+
+impl From<ResolutionArg> for Resolution {
+    fn from(r: ResolutionArg) -> Self {
+        match r {
+            ResolutionArg::Coarse => Resolution::Coarse,
+            ResolutionArg::Paper => Resolution::Paper,
+        }
+    }
+}
+
+/// Options of `frictrack study`.
+#[derive(Debug, Args)]
+pub struct StudyArgs {
+    /// discrete-speed, equal-cost, optimal-force, distributed-speed, amplification or discrete-vs-distributed.
+    preset: String,
+    /// Base scenario (default: the reference case); the study varies friction and speed on top of it.
+    #[arg(long)]
+    scenario: Option<PathBuf>,
+    /// Speed and force sampling.
+    #[arg(long, value_enum, default_value_t = ResolutionArg::Coarse)]
+    resolution: ResolutionArg,
+    /// Output folder (created if needed).
+    #[arg(long, default_value = "out")]
+    out: PathBuf,
+    /// Worker threads (0 = all cores).
+    #[arg(long, default_value_t = 0)]
+    jobs: usize,
+    /// No progress on standard error.
+    #[arg(long)]
+    quiet: bool,
+}
+
+/// Execute `frictrack study`.
+pub fn run(args: &StudyArgs) -> Result<()> {
+    let preset = Preset::from_name(&args.preset)?;
+    let base = match &args.scenario {
+        Some(path) => Scenario::from_path(path)?,
+        None => Scenario::default(),
+    };
+    let data = run_study(preset, args.resolution.into(), &base, &args.out, args.jobs, args.quiet)?;
+    for line in &data.lines {
+        println!("{line}");
+    }
+    Ok(())
+}
+
+/// Run a preset and write its CSV and JSON into `out`.
+pub fn run_study(
+    preset: Preset,
+    resolution: Resolution,
+    base: &Scenario,
+    out: &Path,
+    jobs: usize,
+    quiet: bool,
+) -> Result<StudyData> {
+    base.validate()?;
+    std::fs::create_dir_all(out).with_context(|| format!("creating {}", out.display()))?;
+    let show = !quiet && std::io::stderr().is_terminal();
+    let progress = |done: usize| {
+        if show {
+            eprint!("\r{}: {done} runs", preset.name());
+        }
+    };
+    let start = Instant::now();
+    let data = run_preset(preset, resolution, base, jobs, &progress)?;
+    let wall_time = start.elapsed().as_secs_f64();
+    if show {
+        eprintln!();
+    }
+    write_atomically(&out.join(format!("{}.csv", preset.name())), data.csv.as_bytes())?;
+    let metadata = json!({
+        "study": data.name,
+        "title": data.title,
+        "resolution": data.resolution,
+        "runs": data.runs,
+        "wall_time": wall_time,
+        "frictrack_version": env!("CARGO_PKG_VERSION"),
+        "git_revision": git_revision(),
+        "summary": data.summary,
+        "lines": data.lines,
+        "scenario": base,
+    });
+    write_atomically(
+        &out.join(format!("{}.json", preset.name())),
+        serde_json::to_string_pretty(&metadata)?.as_bytes(),
+    )?;
+    Ok(data)
+}
+
+/// The git revision of the working directory, if git and a repository are there.
+fn git_revision() -> Option<String> {
+    let out = std::process::Command::new("git").args(["rev-parse", "--short=12", "HEAD"]).output().ok()?;
+    out.status.success().then(|| String::from_utf8_lossy(&out.stdout).trim().to_string())
+}

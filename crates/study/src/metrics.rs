@@ -1,0 +1,51 @@
+//! Metrics of MODEL.md §6 beyond what a run reports: the static mid-span references and the dynamic amplification
+//! factors φ_w(τ) = w(τ)/w_sta and φ_M(τ) = M(τ)/M_sta at mid-span, τ = x_c/L the load's relative position.
+
+use crate::error::Result;
+use crate::scenario::Case;
+use fem_beam::LoadVector;
+use fem_beam::section::Motion;
+use nscd::simulation::SectionHistory;
+use serde::Serialize;
+
+/// Static mid-span response with the load at mid-span and no friction.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct StaticReference {
+    /// w_sta (m, negative: downward).
+    pub deflection: f64,
+    /// M_sta (N·m, from element end forces).
+    pub moment: f64,
+}
+
+/// w_sta and M_sta of `case` (load magnitude from its settings).
+pub fn static_midspan(case: &Case) -> Result<StaticReference> {
+    let model = &case.model;
+    let mid = model.mesh().length / 2.0;
+    let load = LoadVector::point_force(model.mesh(), mid, -case.settings.load)?;
+    let q = model.static_solve(&load)?;
+    let moments = model.nodal_moments(&q, &load, Motion::default())?;
+    Ok(StaticReference { deflection: model.deflection_at(&q, mid)?, moment: moments.at(mid) })
+}
+
+/// One sample of the dynamic amplification at a section.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Amplification {
+    /// τ = x_c/L.
+    pub tau: f64,
+    /// φ_w = w/w_sta.
+    pub deflection: f64,
+    /// φ_M = M/M_sta.
+    pub moment: f64,
+}
+
+/// φ_w(τ), φ_M(τ) along a recorded history (one sample per step, only while the load is on the beam).
+pub fn amplification(history: &SectionHistory, reference: StaticReference, length: f64) -> Vec<Amplification> {
+    (0..history.time.len())
+        .filter(|&k| (0.0..=length).contains(&history.load_position[k]))
+        .map(|k| Amplification {
+            tau: history.load_position[k] / length,
+            deflection: history.deflection[k] / reference.deflection,
+            moment: history.moment[k] / reference.moment,
+        })
+        .collect()
+}
