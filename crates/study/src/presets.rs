@@ -147,7 +147,7 @@ pub fn run_preset(
 
 fn with_devices(base: &Scenario, count: usize, force: f64) -> Scenario {
     let mut s = base.clone();
-    s.friction.devices = (count > 0).then(|| DevicesSection { count: Some(count), positions: None, force });
+    s.friction.devices = (count > 0).then_some(DevicesSection { count: Some(count), positions: None, force });
     s.friction.distributed = None;
     s
 }
