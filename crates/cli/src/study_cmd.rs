@@ -1,5 +1,6 @@
-//! `frictrack study <preset>`: run one of the six studies of MODEL.md §7 and write `<preset>.csv` (the data) and
-//! `<preset>.json` (scenario, version, git revision, resolution, summary, wall time) into the output folder.
+//! `frictrack study <preset>`: run one of the six studies of MODEL.md §7 and write `<preset>.csv` (the data),
+//! `<preset>.json` (scenario, version, git revision, resolution, summary, wall time) and its figures (PNG and SVG)
+//! into the output folder.
 
 use crate::files::write_atomically;
 use anyhow::{Context, Result};
@@ -99,12 +100,17 @@ pub fn run_study(
         "git_revision": git_revision(),
         "summary": data.summary,
         "lines": data.lines,
+        "plots": data.plots.iter().map(|p| p.stem.as_str()).collect::<Vec<_>>(),
+        "plots": data.plots.iter().map(|p| p.stem.as_str()).collect::<Vec<_>>(),
         "scenario": base,
     });
     write_atomically(
         &out.join(format!("{}.json", preset.name())),
         serde_json::to_string_pretty(&metadata)?.as_bytes(),
     )?;
+    for spec in &data.plots {
+        study::plot::render(spec, out)?;
+    }
     Ok(data)
 }
 

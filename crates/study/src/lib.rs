@@ -6,6 +6,7 @@
 
 pub mod error;
 pub mod metrics;
+pub mod plot;
 pub mod presets;
 pub mod scenario;
 pub mod sweep;

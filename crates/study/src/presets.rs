@@ -4,6 +4,7 @@
 
 use crate::error::{Result, invalid};
 use crate::metrics::{amplification, static_midspan};
+use crate::plot::{PlotSpec, Series};
 use crate::scenario::{DevicesSection, DistributedSection, Scenario};
 use crate::sweep::{SweepPoint, critical_speed, log_spaced, refine_device_force, run_point, sweep_many};
 use nscd::Simulation;
@@ -122,6 +123,8 @@ pub struct StudyData {
     pub summary: Value,
     /// Human-readable summary lines.
     pub lines: Vec<String>,
+    /// The figures.
+    pub plots: Vec<PlotSpec>,
     /// Number of simulations run.
     pub runs: usize,
 }
@@ -161,7 +164,16 @@ fn with_distributed(base: &Scenario, force_per_length: f64) -> Scenario {
 }
 
 fn blank(runs: usize) -> StudyData {
-    StudyData { name: "", title: "", resolution: "", csv: String::new(), summary: Value::Null, lines: Vec::new(), runs }
+    StudyData {
+        name: "",
+        title: "",
+        resolution: "",
+        csv: String::new(),
+        summary: Value::Null,
+        lines: Vec::new(),
+        plots: Vec::new(),
+        runs,
+    }
 }
 
 /// A labelled family of speed sweeps with the critical speed of each curve.
@@ -197,6 +209,63 @@ fn sweep_curves(
 }
 
 impl Curves {
+    /// Max downward (positive) and upward (negative) deflection vs speed for the curves `members`.
+    fn deflection_plot(
+        &self,
+        stem: &str,
+        title: &str,
+        members: &[usize],
+        legend: &dyn Fn(usize) -> String,
+    ) -> PlotSpec {
+        let mut series = Vec::new();
+        for (color, &c) in members.iter().enumerate() {
+            let p = &self.points[c];
+            series.push(Series {
+                color,
+                label: format!("{} ↓", legend(c)),
+                points: p.iter().map(|q| (q.speed, q.max_downward_deflection * 1e3)).collect(),
+            });
+            series.push(Series {
+                color,
+                label: format!("{} ↑", legend(c)),
+                points: p.iter().map(|q| (q.speed, -q.max_upward_deflection * 1e3)).collect(),
+            });
+        }
+        PlotSpec {
+            stem: stem.into(),
+            title: title.into(),
+            x_label: "load speed v (m/s)".into(),
+            y_label: "max deflection (mm): downward ↓ > 0, upward ↑ < 0".into(),
+            log_x: false,
+            series,
+        }
+    }
+
+    /// One quantity vs speed for every curve.
+    fn quantity_plot(
+        &self,
+        stem: &str,
+        title: &str,
+        y_label: &str,
+        value: fn(&SweepPoint) -> f64,
+        legend: &dyn Fn(usize) -> String,
+    ) -> PlotSpec {
+        PlotSpec {
+            stem: stem.into(),
+            title: title.into(),
+            x_label: "load speed v (m/s)".into(),
+            y_label: y_label.into(),
+            log_x: false,
+            series: (0..self.points.len())
+                .map(|c| Series {
+                    color: c,
+                    label: legend(c),
+                    points: self.points[c].iter().map(|q| (q.speed, value(q))).collect(),
+                })
+                .collect(),
+        }
+    }
+
     fn csv(&self) -> String {
         let mut out = String::new();
         let label_names: Vec<&str> = self.labels[0].iter().map(|(n, _)| n.as_str()).collect();
@@ -264,7 +333,25 @@ fn discrete_speed(
             ));
         }
     }
-    curves_study(scenarios, resolution, jobs, progress)
+    let mut data = curves_study(scenarios, resolution, jobs, progress, &|curves| {
+        let legend =
+            |c: usize| if c == 0 { "no friction".to_string() } else { format!("N = {}", [3, 7, 15, 31][(c - 1) % 4]) };
+        [10, 50, 100]
+            .iter()
+            .enumerate()
+            .map(|(i, kn)| {
+                let members: Vec<usize> = std::iter::once(0).chain((1 + 4 * i)..(5 + 4 * i)).collect();
+                curves.deflection_plot(
+                    &format!("discrete-speed-{kn}kN"),
+                    &format!("Discrete devices, F_u = {kn} kN: max deflection vs speed"),
+                    &members,
+                    &legend,
+                )
+            })
+            .collect()
+    })?;
+    data.lines.insert(0, "Discrete devices: critical speed and peak of each curve (refined on fresh runs).".into());
+    Ok(data)
 }
 
 fn equal_cost(
@@ -281,7 +368,24 @@ fn equal_cost(
             scenarios.push((labels, with_devices(base, count, force)));
         }
     }
-    curves_study(scenarios, resolution, jobs, progress)
+    curves_study(scenarios, resolution, jobs, progress, &|curves| {
+        [3100, 1550, 310]
+            .iter()
+            .enumerate()
+            .map(|(i, cost)| {
+                let legend = |c: usize| {
+                    let n = [31, 15, 7, 3][c % 4];
+                    format!("N = {n}, F_u = {:.1} kN", f64::from(*cost) / f64::from(n))
+                };
+                curves.deflection_plot(
+                    &format!("equal-cost-{cost}kN"),
+                    &format!("Equal cost N·F_u = {cost} kN: max deflection vs speed"),
+                    &((4 * i)..(4 * i + 4)).collect::<Vec<_>>(),
+                    &legend,
+                )
+            })
+            .collect()
+    })
 }
 
 fn distributed_speed(
@@ -294,7 +398,31 @@ fn distributed_speed(
         .into_iter()
         .map(|f| (vec![("force_per_length".into(), f)], with_distributed(base, f)))
         .collect();
-    curves_study(scenarios, resolution, jobs, progress)
+    curves_study(scenarios, resolution, jobs, progress, &|curves| {
+        let legend = |c: usize| format!("f_u = {} kN/m", [0, 1, 2, 5, 10][c]);
+        vec![
+            curves.deflection_plot(
+                "distributed-speed-deflection",
+                "Distributed friction: max deflection vs speed",
+                &(0..5).collect::<Vec<_>>(),
+                &legend,
+            ),
+            curves.quantity_plot(
+                "distributed-speed-global-norm",
+                "Distributed friction: global norm W̄ vs speed",
+                "W̄ = (1/t_on)∫∫|w| dx dt (m²)",
+                |q| q.global_norm,
+                &legend,
+            ),
+            curves.quantity_plot(
+                "distributed-speed-dissipated",
+                "Distributed friction: dissipated energy vs speed",
+                "energy dissipated by friction (kJ)",
+                |q| q.dissipated_energy / 1e3,
+                &legend,
+            ),
+        ]
+    })
 }
 
 fn curves_study(
@@ -302,10 +430,11 @@ fn curves_study(
     resolution: Resolution,
     jobs: usize,
     progress: &(dyn Fn(usize) + Sync),
+    plots: &dyn Fn(&Curves) -> Vec<PlotSpec>,
 ) -> Result<StudyData> {
     let curves = sweep_curves(scenarios, resolution, jobs, progress)?;
     let (summary, lines) = curves.summary();
-    Ok(StudyData { csv: curves.csv(), summary, lines, ..blank(curves.runs) })
+    Ok(StudyData { csv: curves.csv(), summary, lines, plots: plots(&curves), ..blank(curves.runs) })
 }
 
 fn optimal_force(
@@ -341,8 +470,19 @@ fn optimal_force(
     let mut items = Vec::new();
     let mut lines = Vec::new();
     let mut runs = points.len();
+    let mut series = Vec::new();
     for (i, &n) in counts.iter().enumerate() {
         let curve = &points[i * forces.len()..(i + 1) * forces.len()];
+        series.push(Series {
+            color: i,
+            label: format!("N = {n} ↓"),
+            points: forces.iter().zip(curve).map(|(f, p)| (*f, p.max_downward_deflection * 1e3)).collect(),
+        });
+        series.push(Series {
+            color: i,
+            label: format!("N = {n} ↑"),
+            points: forces.iter().zip(curve).map(|(f, p)| (*f, -p.max_upward_deflection * 1e3)).collect(),
+        });
         for (f, p) in forces.iter().zip(curve) {
             let _ = writeln!(
                 csv,
@@ -366,7 +506,15 @@ fn optimal_force(
             refined.max_downward_deflection * 1e3
         ));
     }
-    Ok(StudyData { csv, summary: json!({ "speed": speed, "optima": items }), lines, ..blank(runs) })
+    let plot = PlotSpec {
+        stem: "optimal-force".into(),
+        title: format!("Max deflection vs device force at {speed} m/s"),
+        x_label: "device force F_u (N, log scale)".into(),
+        y_label: "max deflection (mm): downward ↓ > 0, upward ↑ < 0".into(),
+        log_x: true,
+        series,
+    };
+    Ok(StudyData { csv, summary: json!({ "speed": speed, "optima": items }), lines, plots: vec![plot], ..blank(runs) })
 }
 
 fn amplification_study(base: &Scenario, jobs: usize, progress: &(dyn Fn(usize) + Sync)) -> Result<StudyData> {
@@ -403,7 +551,36 @@ fn amplification_study(base: &Scenario, jobs: usize, progress: &(dyn Fn(usize) +
         items.push(json!({ "force_per_length": f, "speed": v, "max_phi_w": max_w, "max_phi_m": max_m }));
         lines.push(format!("f_u = {:.0} kN/m, v = {v} m/s: max φ_w {max_w:.3}, max φ_M {max_m:.3}", f / 1e3));
     }
-    Ok(StudyData { csv, summary: json!({ "curves": items }), lines, ..blank(results.len()) })
+    let mut plots = Vec::new();
+    for (f, kn) in [(1e3, 1), (2e3, 2)] {
+        for (which, symbol, value) in [
+            (
+                "deflection",
+                "φ_w = w/w_sta",
+                (|a: &crate::metrics::Amplification| a.deflection) as fn(&crate::metrics::Amplification) -> f64,
+            ),
+            ("moment", "φ_M = M/M_sta", |a| a.moment),
+        ] {
+            plots.push(PlotSpec {
+                stem: format!("amplification-{which}-{kn}kN"),
+                title: format!("Mid-span {which} amplification, f_u = {kn} kN/m"),
+                x_label: "load position τ = x_c/L (-)".into(),
+                y_label: format!("{symbol} (-)"),
+                log_x: false,
+                series: results
+                    .iter()
+                    .filter(|(ff, _, _)| *ff == f)
+                    .enumerate()
+                    .map(|(color, (_, v, samples))| Series {
+                        color,
+                        label: format!("v = {v} m/s"),
+                        points: samples.iter().map(|a| (a.tau, value(a))).collect(),
+                    })
+                    .collect(),
+            });
+        }
+    }
+    Ok(StudyData { csv, summary: json!({ "curves": items }), lines, plots, ..blank(results.len()) })
 }
 
 fn discrete_vs_distributed(base: &Scenario, jobs: usize, progress: &(dyn Fn(usize) + Sync)) -> Result<StudyData> {
@@ -466,5 +643,40 @@ fn discrete_vs_distributed(base: &Scenario, jobs: usize, progress: &(dyn Fn(usiz
         "dissipated_devices": runs[0].energy.dissipated(),
         "dissipated_distributed": runs[1].energy.dissipated(),
     });
-    Ok(StudyData { csv, summary, lines, ..blank(2) })
+    let history = |i: usize, value: &dyn Fn(&nscd::simulation::SectionHistory, usize) -> f64| -> Vec<(f64, f64)> {
+        let h = &runs[i].histories[0];
+        (0..h.time.len()).map(|k| (h.time[k], value(h, k))).collect()
+    };
+    let labels = ["199 devices × 1 kN", "f_u = 0.995 kN/m"];
+    let plots = vec![
+        PlotSpec {
+            stem: "discrete-vs-distributed-deflection".into(),
+            title: "Mid-span deflection at 150 m/s, equal friction capacity".into(),
+            x_label: "time t (s)".into(),
+            y_label: "mid-span deflection w (mm, upward > 0)".into(),
+            log_x: false,
+            series: (0..2)
+                .map(|i| Series {
+                    color: i,
+                    label: labels[i].into(),
+                    points: history(i, &|h, k| h.deflection[k] * 1e3),
+                })
+                .collect(),
+        },
+        PlotSpec {
+            stem: "discrete-vs-distributed-impulse".into(),
+            title: "Friction impulse per step at mid-span, 150 m/s".into(),
+            x_label: "time t (s)".into(),
+            y_label: "impulse p (N·s): device, or section of 0.25 m".into(),
+            log_x: false,
+            series: (0..2)
+                .map(|i| Series {
+                    color: i,
+                    label: labels[i].into(),
+                    points: history(i, &|h, k| h.impulse.as_ref().map_or(0.0, |p| p[k])),
+                })
+                .collect(),
+        },
+    ];
+    Ok(StudyData { csv, summary, lines, plots, ..blank(2) })
 }
