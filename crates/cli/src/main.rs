@@ -5,6 +5,7 @@ mod check;
 mod files;
 mod init;
 mod reference;
+mod reproduce;
 mod run;
 mod scenario_args;
 mod study_cmd;
@@ -15,7 +16,7 @@ use std::process::ExitCode;
 
 /// Railway track dynamics under moving loads: an Euler–Bernoulli rail on a viscoelastic Winkler foundation.
 #[derive(Debug, Parser)]
-#[command(name = "frictrack", version, about, long_about = None, after_help = "Examples:\n  frictrack run\n  frictrack init case.toml && frictrack check case.toml\n  frictrack run case.toml --speed 180\n  frictrack sweep case.toml --speeds 150:260:5 --out sweep.csv --critical\n  frictrack run --speed 180 --devices 31 --device-force 50e3\n  frictrack run --distributed-friction 5000 --format json\n  frictrack reference --elements 400\n  frictrack analytic --speed 200 --damping-ratio 0.05\n  frictrack analytic --damping-ratio 0.05 --speeds 10:300:10 --format json")]
+#[command(name = "frictrack", version, about, long_about = None, after_help = "Examples:\n  frictrack run\n  frictrack init case.toml && frictrack check case.toml\n  frictrack run case.toml --speed 180\n  frictrack sweep case.toml --speeds 150:260:5 --out sweep.csv --critical\n  frictrack study optimal-force --out results\n  frictrack reproduce --out results --resolution coarse\n  frictrack run --speed 180 --devices 31 --device-force 50e3\n  frictrack run --distributed-friction 5000 --format json\n  frictrack reference --elements 400\n  frictrack analytic --speed 200 --damping-ratio 0.05\n  frictrack analytic --damping-ratio 0.05 --speeds 10:300:10 --format json")]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -30,6 +31,8 @@ enum Command {
     Sweep(sweep::SweepArgs),
     /// Run one of the six studies of MODEL.md §7 (CSV + JSON in the output folder).
     Study(study_cmd::StudyArgs),
+    /// Run all six studies and write their data, figures and report.md.
+    Reproduce(reproduce::ReproduceArgs),
     /// Validate a scenario file.
     Check(check::CheckArgs),
     /// Write the documented scenario template (the reference case).
@@ -57,6 +60,7 @@ fn main() -> ExitCode {
         Command::Run(args) => run::run(&args),
         Command::Sweep(args) => sweep::run(&args),
         Command::Study(args) => study_cmd::run(&args),
+        Command::Reproduce(args) => reproduce::run(&args),
         Command::Check(args) => check::run(&args),
         Command::Init(args) => init::run(&args),
         Command::Reference(args) => reference::run(&args),

@@ -21,6 +21,13 @@ pub enum ResolutionArg {
     Paper,
 }
 
+impl ResolutionArg {
+    /// Name on the command line.
+    pub fn name(self) -> &'static str {
+        Resolution::from(self).name()
+    }
+}
+
 impl From<ResolutionArg> for Resolution {
     fn from(r: ResolutionArg) -> Self {
         match r {

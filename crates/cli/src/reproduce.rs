@@ -1,0 +1,83 @@
+//! `frictrack reproduce [--out DIR] [--resolution coarse|paper]`: all six studies of MODEL.md §7, their data, figures
+//! and a `report.md` that shows every figure with a two-line summary of what it shows.
+
+use crate::files::write_atomically;
+use crate::study_cmd::{ResolutionArg, run_study};
+use anyhow::Result;
+use clap::Args;
+use std::fmt::Write as _;
+use std::path::PathBuf;
+use std::time::Instant;
+use study::Scenario;
+use study::presets::Preset;
+
+/// Options of `frictrack reproduce`.
+#[derive(Debug, Args)]
+pub struct ReproduceArgs {
+    /// Output folder (created if needed).
+    #[arg(long, default_value = "out")]
+    out: PathBuf,
+    /// Speed and force sampling.
+    #[arg(long, value_enum, default_value_t = ResolutionArg::Coarse)]
+    resolution: ResolutionArg,
+    /// Base scenario (default: the reference case).
+    #[arg(long)]
+    scenario: Option<PathBuf>,
+    /// Worker threads (0 = all cores).
+    #[arg(long, default_value_t = 0)]
+    jobs: usize,
+    /// No progress on standard error.
+    #[arg(long)]
+    quiet: bool,
+}
+
+/// Execute `frictrack reproduce`.
+pub fn run(args: &ReproduceArgs) -> Result<()> {
+    let base = match &args.scenario {
+        Some(path) => Scenario::from_path(path)?,
+        None => Scenario::default(),
+    };
+    let start = Instant::now();
+    let mut report = String::new();
+    let _ = writeln!(report, "# frictrack — the studies of MODEL.md §7\n");
+    let _ = writeln!(
+        report,
+        "Reference case unless a scenario was given: UIC60 rail (EI = 6.4155 MN·m², ρA = 59.935 kg/m) on a Winkler soil of \
+         k_f = 250 kN/m², 200 m pinned beam of 200 Hermite elements, load F = 83.4 kN, θ = ½, load advance 0.1 m per step. \
+         Resolution: {}. Every figure has its data beside it (`<study>.csv`, SI units) and its metadata (`<study>.json`).\n",
+        args.resolution.name()
+    );
+    for (i, preset) in Preset::ALL.into_iter().enumerate() {
+        let timer = Instant::now();
+        let data = run_study(preset, args.resolution.into(), &base, &args.out, args.jobs, args.quiet)?;
+        if !args.quiet {
+            eprintln!("{}: {} runs in {:.1} s", preset.name(), data.runs, timer.elapsed().as_secs_f64());
+        }
+        let _ = writeln!(report, "## {}. {}\n", i + 1, data.title);
+        for line in &data.headline {
+            let _ = writeln!(report, "{line}  ");
+        }
+        let _ = writeln!(report);
+        for plot in &data.plots {
+            let _ = writeln!(report, "![{}]({}.png)\n", plot.title, plot.stem);
+            let _ = writeln!(report, "*{}* — [SVG]({}.svg)\n", plot.title, plot.stem);
+        }
+        let _ = writeln!(
+            report,
+            "Data: [{name}.csv]({name}.csv), metadata: [{name}.json]({name}.json); {} simulations.\n",
+            data.runs,
+            name = data.name
+        );
+        let _ = writeln!(report, "<details><summary>Per curve</summary>\n");
+        for line in &data.lines {
+            let _ = writeln!(report, "- {line}");
+        }
+        let _ = writeln!(report, "\n</details>\n");
+    }
+    let _ = writeln!(report, "All six studies took {:.1} s.", start.elapsed().as_secs_f64());
+    write_atomically(&args.out.join("report.md"), report.as_bytes())?;
+    if !args.quiet {
+        eprintln!("wrote {}", args.out.join("report.md").display());
+    }
+    Ok(())
+}
