@@ -168,3 +168,68 @@ fn bad_scenarios_exit_2_with_line_or_path() {
     assert_eq!(out.status.code(), Some(1));
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+fn is_png(path: &std::path::Path) -> bool {
+    std::fs::read(path)
+        .is_ok_and(|b| b.len() > 1000 && b.starts_with(&[0x89, b'P', b'N', b'G', 0x0d, 0x0a, 0x1a, 0x0a]))
+}
+
+fn is_svg(path: &std::path::Path) -> bool {
+    std::fs::read_to_string(path).is_ok_and(|s| s.contains("<svg") && s.trim_end().ends_with("</svg>"))
+}
+
+#[test]
+fn study_writes_data_metadata_and_figures() {
+    let dir = temporary_folder("study");
+    let out = frictrack(&["study", "optimal-force", "--out", dir.to_str().unwrap(), "--quiet"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let csv = std::fs::read_to_string(dir.join("optimal-force.csv")).unwrap();
+    assert!(csv.starts_with("devices,device_force,speed,max_downward_deflection"));
+    assert_eq!(csv.lines().count(), 1 + 4 * 9);
+    let meta: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("optimal-force.json")).unwrap()).unwrap();
+    assert_eq!(meta["study"], "optimal-force");
+    assert_eq!(meta["summary"]["optima"].as_array().unwrap().len(), 4);
+    assert!(meta["wall_time"].as_f64().unwrap() > 0.0);
+    assert!(is_png(&dir.join("optimal-force.png")) && is_svg(&dir.join("optimal-force.svg")));
+    let bad = frictrack(&["study", "no-such-study", "--out", dir.to_str().unwrap()]);
+    assert_eq!(bad.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("discrete-speed"));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// All six studies at coarse resolution (about 1.5 minutes): every file exists and parses, every figure is a valid
+/// PNG and SVG, and the report shows every figure.
+#[test]
+fn reproduce_coarse_writes_every_study_and_a_report() {
+    let dir = temporary_folder("reproduce");
+    let out = frictrack(&["reproduce", "--out", dir.to_str().unwrap(), "--resolution", "coarse", "--quiet"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let report = std::fs::read_to_string(dir.join("report.md")).unwrap();
+    let mut figures = 0;
+    for name in [
+        "discrete-speed",
+        "equal-cost",
+        "optimal-force",
+        "distributed-speed",
+        "amplification",
+        "discrete-vs-distributed",
+    ] {
+        let csv = std::fs::read_to_string(dir.join(format!("{name}.csv"))).unwrap();
+        let columns = csv.lines().next().unwrap().split(',').count();
+        assert!(csv.lines().skip(1).all(|l| l.split(',').count() == columns), "{name}.csv is ragged");
+        let meta: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(dir.join(format!("{name}.json"))).unwrap()).unwrap();
+        for stem in meta["plots"].as_array().unwrap() {
+            let stem = stem.as_str().unwrap();
+            assert!(is_png(&dir.join(format!("{stem}.png"))), "{stem}.png");
+            assert!(is_svg(&dir.join(format!("{stem}.svg"))), "{stem}.svg");
+            assert!(report.contains(&format!("({stem}.png)")), "report misses {stem}");
+            figures += 1;
+        }
+        assert!(report.contains(&format!("({name}.csv)")));
+    }
+    // 3 + 3 + 1 + 3 + 4 + 2 figures.
+    assert_eq!(figures, 16);
+    let _ = std::fs::remove_dir_all(&dir);
+}
