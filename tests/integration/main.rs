@@ -1,3 +1,4 @@
 //! Workspace-level integration tests: results that cross crate boundaries or cover a whole field.
 
 mod static_shape;
+mod study_curves;
