@@ -4,6 +4,7 @@ mod analytic;
 mod check;
 mod files;
 mod init;
+mod progress;
 mod reference;
 mod reproduce;
 mod run;

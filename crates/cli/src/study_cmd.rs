@@ -6,7 +6,6 @@ use crate::files::write_atomically;
 use anyhow::{Context, Result};
 use clap::{Args, ValueEnum};
 use serde_json::json;
-use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 use study::Scenario;
@@ -84,18 +83,11 @@ pub fn run_study(
 ) -> Result<StudyData> {
     base.validate()?;
     std::fs::create_dir_all(out).with_context(|| format!("creating {}", out.display()))?;
-    let show = !quiet && std::io::stderr().is_terminal();
-    let progress = |done: usize| {
-        if show {
-            eprint!("\r{}: {done} runs", preset.name());
-        }
-    };
+    let bar = crate::progress::bar(preset.name(), None, quiet);
     let start = Instant::now();
-    let data = run_preset(preset, resolution, base, jobs, &progress)?;
+    let data = run_preset(preset, resolution, base, jobs, &|done| bar.set_position(done as u64))?;
     let wall_time = start.elapsed().as_secs_f64();
-    if show {
-        eprintln!();
-    }
+    bar.finish_and_clear();
     write_atomically(&out.join(format!("{}.csv", preset.name())), data.csv.as_bytes())?;
     let metadata = json!({
         "study": data.name,

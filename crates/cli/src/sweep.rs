@@ -7,7 +7,6 @@ use crate::files::write_atomically;
 use crate::scenario_args::ScenarioArgs;
 use anyhow::Result;
 use clap::Args;
-use std::io::IsTerminal;
 use std::path::PathBuf;
 use study::sweep::{critical_speed, speed_sweep, write_csv};
 
@@ -41,17 +40,9 @@ pub fn run(args: &SweepArgs) -> Result<()> {
         Some(range) => parse_range(range)?,
         None => scenario.sweep.speeds(),
     };
-    let total = speeds.len();
-    let show = !args.quiet && std::io::stderr().is_terminal();
-    let progress = |done: usize| {
-        if show {
-            eprint!("\rsweep: {done}/{total} speeds");
-        }
-    };
-    let points = speed_sweep(&case, &speeds, args.jobs, &progress)?;
-    if show {
-        eprintln!();
-    }
+    let bar = crate::progress::bar("sweep", Some(speeds.len() as u64), args.quiet);
+    let points = speed_sweep(&case, &speeds, args.jobs, &|done| bar.set_position(done as u64))?;
+    bar.finish_and_clear();
     let mut csv = Vec::new();
     write_csv(&points, &mut csv)?;
     match &args.out {
