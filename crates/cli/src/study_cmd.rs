@@ -94,6 +94,7 @@ pub fn run_study(
         "title": data.title,
         "resolution": data.resolution,
         "runs": data.runs,
+        "solver_statistics": { "mean_iterations_per_step": data.mean_iterations },
         "wall_time": wall_time,
         "frictrack_version": env!("CARGO_PKG_VERSION"),
         "git_revision": git_revision(),

@@ -129,6 +129,8 @@ pub struct StudyData {
     pub plots: Vec<PlotSpec>,
     /// Number of simulations run.
     pub runs: usize,
+    /// Mean friction-solver iterations per step over the study's sweep runs (solver statistics).
+    pub mean_iterations: f64,
 }
 
 /// Run `preset` on top of `base` (normally the reference case).
@@ -294,7 +296,13 @@ fn blank(runs: usize) -> StudyData {
         headline: Vec::new(),
         plots: Vec::new(),
         runs,
+        mean_iterations: 0.0,
     }
+}
+
+fn mean_iterations<'a>(points: impl Iterator<Item = &'a SweepPoint>) -> f64 {
+    let (sum, count) = points.fold((0.0, 0usize), |(s, c), p| (s + p.mean_iterations, c + 1));
+    if count > 0 { sum / count as f64 } else { 0.0 }
 }
 
 /// A labelled family of speed sweeps with the critical speed of each curve.
@@ -555,7 +563,14 @@ fn curves_study(
 ) -> Result<StudyData> {
     let curves = sweep_curves(scenarios, resolution, jobs, progress)?;
     let (summary, lines) = curves.summary();
-    Ok(StudyData { csv: curves.csv(), summary, lines, plots: plots(&curves), ..blank(curves.runs) })
+    Ok(StudyData {
+        csv: curves.csv(),
+        summary,
+        lines,
+        plots: plots(&curves),
+        mean_iterations: mean_iterations(curves.points.iter().flatten()),
+        ..blank(curves.runs)
+    })
 }
 
 fn optimal_force(
@@ -635,7 +650,14 @@ fn optimal_force(
         log_x: true,
         series,
     };
-    Ok(StudyData { csv, summary: json!({ "speed": speed, "optima": items }), lines, plots: vec![plot], ..blank(runs) })
+    Ok(StudyData {
+        csv,
+        summary: json!({ "speed": speed, "optima": items }),
+        lines,
+        plots: vec![plot],
+        mean_iterations: mean_iterations(points.iter()),
+        ..blank(runs)
+    })
 }
 
 fn amplification_study(base: &Scenario, jobs: usize, progress: &(dyn Fn(usize) + Sync)) -> Result<StudyData> {

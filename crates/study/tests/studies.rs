@@ -143,3 +143,20 @@ fn optimal_device_force_is_interior() {
     assert!(best.max_downward_deflection < first && best.max_downward_deflection < last);
     assert!(best.explored.iter().all(|&(_, w)| w >= best.max_downward_deflection));
 }
+
+/// The commented example scenarios shipped in `examples/` are valid.
+#[test]
+fn example_scenarios_are_valid() {
+    let folder = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples");
+    let mut count = 0;
+    for entry in std::fs::read_dir(&folder).unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_some_and(|e| e == "toml") {
+            let scenario = Scenario::from_path(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+            scenario.build().unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+            assert!(!scenario.title.is_empty(), "{}", path.display());
+            count += 1;
+        }
+    }
+    assert_eq!(count, 6, "one example per study");
+}
