@@ -6,7 +6,7 @@ use crate::error::{Result, invalid};
 use crate::metrics::{amplification, static_midspan};
 use crate::plot::{PlotSpec, Series};
 use crate::scenario::{DevicesSection, DistributedSection, Scenario};
-use crate::sweep::{SweepPoint, critical_speed, log_spaced, refine_device_force, run_point, sweep_many};
+use crate::sweep::{SweepPoint, critical_speed, log_spaced, refine_device_force, run_point, sweep_many, thread_pool};
 use nscd::Simulation;
 use rayon::prelude::*;
 use serde::Serialize;
@@ -322,8 +322,7 @@ fn sweep_curves(
     let speeds = resolution.speeds();
     let cases = scenarios.iter().map(|(_, s)| s.build()).collect::<Result<Vec<_>>>()?;
     let points = sweep_many(&cases, &speeds, jobs, progress)?;
-    let pool =
-        rayon::ThreadPoolBuilder::new().num_threads(jobs).build().map_err(|e| invalid("jobs", jobs, e.to_string()))?;
+    let pool = thread_pool(jobs)?;
     let step = speeds[1] - speeds[0];
     let refined: Vec<Result<crate::sweep::CriticalSpeed>> =
         pool.install(|| cases.par_iter().zip(&points).map(|(case, p)| critical_speed(case, p, 0.02 * step)).collect());
@@ -587,8 +586,7 @@ fn optimal_force(
         .flat_map(|&n| forces.iter().map(move |&f| (n, f)))
         .map(|(n, f)| with_devices(base, n, f))
         .collect();
-    let pool =
-        rayon::ThreadPoolBuilder::new().num_threads(jobs).build().map_err(|e| invalid("jobs", jobs, e.to_string()))?;
+    let pool = thread_pool(jobs)?;
     let done = std::sync::atomic::AtomicUsize::new(0);
     let points: Vec<Result<SweepPoint>> = pool.install(|| {
         scenarios
@@ -661,10 +659,10 @@ fn optimal_force(
 }
 
 fn amplification_study(base: &Scenario, jobs: usize, progress: &(dyn Fn(usize) + Sync)) -> Result<StudyData> {
+    let reference = static_midspan(&with_distributed(base, 0.0).build()?)?;
     let combos: Vec<(f64, f64)> =
         [1e3, 2e3].into_iter().flat_map(|f| [50.0, 100.0, 150.0, 200.0].map(|v| (f, v))).collect();
-    let pool =
-        rayon::ThreadPoolBuilder::new().num_threads(jobs).build().map_err(|e| invalid("jobs", jobs, e.to_string()))?;
+    let pool = thread_pool(jobs)?;
     let done = std::sync::atomic::AtomicUsize::new(0);
     let results: Vec<Result<(f64, f64, Vec<crate::metrics::Amplification>)>> = pool.install(|| {
         combos
@@ -674,7 +672,6 @@ fn amplification_study(base: &Scenario, jobs: usize, progress: &(dyn Fn(usize) +
                 s.load.speed = v;
                 s.output.sections = vec![s.mesh.length / 2.0];
                 let case = s.build()?;
-                let reference = static_midspan(&with_distributed(base, 0.0).build()?)?;
                 let r = Simulation::new(&case.model, &case.contacts, &case.settings)?.run()?;
                 progress(done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1);
                 Ok((f, v, amplification(&r.histories[0], reference, case.model.mesh().length)))
@@ -733,8 +730,7 @@ fn discrete_vs_distributed(base: &Scenario, jobs: usize, progress: &(dyn Fn(usiz
         s.load.speed = 150.0;
         s.output.sections = vec![s.mesh.length / 2.0];
     }
-    let pool =
-        rayon::ThreadPoolBuilder::new().num_threads(jobs).build().map_err(|e| invalid("jobs", jobs, e.to_string()))?;
+    let pool = thread_pool(jobs)?;
     let done = std::sync::atomic::AtomicUsize::new(0);
     let runs: Vec<Result<nscd::RunResult>> = pool.install(|| {
         [&devices, &distributed]

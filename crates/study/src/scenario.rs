@@ -426,7 +426,7 @@ impl Scenario {
         let contacts = self.contacts(&model)?;
         finite_non_negative("load.force", self.load.force, "N")?;
         finite_positive("load.speed", self.load.speed, "m/s")?;
-        let settings = self.run_settings(self.load.speed)?;
+        let settings = self.run_settings(self.load.speed);
         settings.validate(&model).map_err(scenario_path)?;
         self.sweep.validate("sweep")?;
         Ok(Case { model, contacts, settings })
@@ -469,8 +469,8 @@ impl Scenario {
         Ok(contacts)
     }
 
-    /// Run settings for a load speed `speed` (m/s).
-    pub fn run_settings(&self, speed: f64) -> Result<RunSettings> {
+    /// Run settings for a load speed `speed` (m/s), not yet validated (see [`Scenario::build`]).
+    pub fn run_settings(&self, speed: f64) -> RunSettings {
         let i = &self.integration;
         let mut settings = RunSettings {
             speed,
@@ -488,7 +488,7 @@ impl Scenario {
         if let Some(position) = i.steady_start {
             settings.initial = InitialState::SteadyState { position };
         }
-        Ok(settings)
+        settings
     }
 }
 

@@ -81,10 +81,7 @@ pub fn sweep_many(
     if let Some(&v) = speeds.iter().find(|v| !(v.is_finite() && **v > 0.0)) {
         return Err(invalid("speeds", v, "every speed must be finite and > 0 (m/s)"));
     }
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(jobs)
-        .build()
-        .map_err(|e| invalid("jobs", jobs, format!("cannot start the thread pool: {e}")))?;
+    let pool = thread_pool(jobs)?;
     let done = std::sync::atomic::AtomicUsize::new(0);
     let pairs: Vec<(usize, f64)> = (0..cases.len()).flat_map(|c| speeds.iter().map(move |&v| (c, v))).collect();
     let results: Vec<Result<SweepPoint>> = pool.install(|| {
@@ -99,6 +96,14 @@ pub fn sweep_many(
     });
     let mut points = results.into_iter().collect::<Result<Vec<_>>>()?.into_iter();
     Ok((0..cases.len()).map(|_| points.by_ref().take(speeds.len()).collect()).collect())
+}
+
+/// A rayon pool of `jobs` threads (0 = all cores).
+pub(crate) fn thread_pool(jobs: usize) -> Result<rayon::ThreadPool> {
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(jobs)
+        .build()
+        .map_err(|e| invalid("jobs", jobs, format!("cannot start the thread pool: {e}")))
 }
 
 /// CSV header of sweep output.
