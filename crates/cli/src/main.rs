@@ -78,29 +78,16 @@ fn main() -> ExitCode {
 
 /// 2 for invalid input (a parameter the model rejects), 1 for anything else (e.g. a solver failure).
 fn error_code(error: &anyhow::Error) -> u8 {
-    use fem_beam::FemError as F;
-    use friction::FrictionError as R;
-    use nscd::NscdError as N;
-    let beam = |e: &F| matches!(e, F::InvalidField { .. } | F::InvalidCount { .. } | F::NoSteadyState { .. });
-    let friction = |e: &R| match e {
-        R::InvalidField { .. } | R::InvalidCount { .. } => true,
-        R::Beam(b) => beam(b),
-    };
-    let invalid = if let Some(e) = error.downcast_ref::<study::StudyError>() {
-        e.is_invalid_input()
-    } else if let Some(e) = error.downcast_ref::<F>() {
-        beam(e)
-    } else if let Some(e) = error.downcast_ref::<R>() {
-        friction(e)
-    } else if let Some(e) = error.downcast_ref::<N>() {
-        match e {
-            N::InvalidField { .. } | N::Unavailable(_) => true,
-            N::Beam(b) => beam(b),
-            N::Friction(f) => friction(f),
-            _ => false,
-        }
+    use study::StudyError;
+    // Every library error converts into the study layer's, which knows which of them are the user's input.
+    let as_study = if let Some(e) = error.downcast_ref::<StudyError>() {
+        Some(e.clone())
+    } else if let Some(e) = error.downcast_ref::<fem_beam::FemError>() {
+        Some(StudyError::from(e.clone()))
+    } else if let Some(e) = error.downcast_ref::<friction::FrictionError>() {
+        Some(StudyError::from(e.clone()))
     } else {
-        false
+        error.downcast_ref::<nscd::NscdError>().map(|e| StudyError::from(e.clone()))
     };
-    if invalid { 2 } else { 1 }
+    if as_study.is_some_and(|e| e.is_invalid_input()) { 2 } else { 1 }
 }
