@@ -80,17 +80,6 @@ impl LoadVector {
         &self.contributions
     }
 
-    /// Sum of the element load vectors acting on element `element`.
-    pub fn on_element(&self, element: usize) -> ElementVector {
-        let mut sum = [0.0; 4];
-        for c in self.contributions.iter().filter(|c| c.element == element) {
-            for k in 0..4 {
-                sum[k] += c.nodal[k];
-            }
-        }
-        sum
-    }
-
     /// Assembled full-DOF vector (length 2·(n_e + 1)).
     pub fn to_full(&self, mesh: &Mesh) -> Vec<f64> {
         let mut full = vec![0.0; 2 * mesh.nodes()];

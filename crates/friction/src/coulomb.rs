@@ -17,9 +17,3 @@ pub fn project(p: f64, a: f64) -> f64 {
 pub fn natural_residual(u: f64, p: f64, a: f64, rho: f64) -> f64 {
     (p - project(p - rho * u, a)).abs() / rho
 }
-
-/// Whether the section slips (|u| above `tolerance`), and if so the impulse the law prescribes, −a·sign(u).
-#[inline]
-pub fn slip_impulse(u: f64, a: f64, tolerance: f64) -> Option<f64> {
-    (u.abs() > tolerance).then(|| -a * u.signum())
-}

@@ -6,7 +6,7 @@ use crate::error::{Result, invalid};
 use crate::metrics::{amplification, static_midspan};
 use crate::plot::{PlotSpec, Series};
 use crate::scenario::{DevicesSection, DistributedSection, Scenario};
-use crate::sweep::{SweepPoint, critical_speed, log_spaced, refine_device_force, run_point, sweep_many, thread_pool};
+use crate::sweep::{SweepPoint, critical_speed, log_spaced, refine_from_scan, run_point, sweep_many, thread_pool};
 use nscd::Simulation;
 use rayon::prelude::*;
 use serde::Serialize;
@@ -624,15 +624,9 @@ fn optimal_force(
                 p.max_downward_deflection, p.max_upward_deflection, p.dissipated_energy
             );
         }
-        let best = (0..forces.len())
-            .min_by(|&a, &b| curve[a].max_downward_deflection.total_cmp(&curve[b].max_downward_deflection))
-            .expect("forces");
-        let bracket = (forces[best.saturating_sub(1)], forces[(best + 1).min(forces.len() - 1)]);
-        let mut refined = refine_device_force(&with_devices(base, n, 1.0), speed, bracket, 0.02)?;
+        let values: Vec<f64> = curve.iter().map(|p| p.max_downward_deflection).collect();
+        let refined = refine_from_scan(&with_devices(base, n, 1.0), speed, &forces, &values, 0.02)?;
         runs += refined.explored.len();
-        if curve[best].max_downward_deflection < refined.max_downward_deflection {
-            (refined.force, refined.max_downward_deflection) = (forces[best], curve[best].max_downward_deflection);
-        }
         items.push(json!({ "devices": n, "optimal_device_force": refined.force, "max_downward_deflection": refined.max_downward_deflection }));
         lines.push(format!(
             "N = {n}: optimal F_u {:.1} kN gives max downward deflection {:.1} mm at {speed} m/s",

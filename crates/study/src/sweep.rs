@@ -213,14 +213,28 @@ pub fn optimal_device_force(
     };
     let forces = log_spaced(lower, upper, scan);
     let values: Vec<f64> = forces.iter().map(|&force| f(force)).collect::<Result<_>>()?;
-    let best = (0..scan).min_by(|&a, &b| values[a].total_cmp(&values[b])).expect("scan ≥ 3");
-    let bracket = (forces[best.saturating_sub(1)], forces[(best + 1).min(scan - 1)]);
+    let mut refined = refine_from_scan(scenario, speed, &forces, &values, tolerance)?;
+    explored.append(&mut refined.explored);
+    Ok(OptimalForce { explored, ..refined })
+}
+
+/// From a scan of device forces (ascending) and their max downward deflections: golden section in the bracket
+/// around the best scanned force, keeping the scanned point if the refinement finds nothing lower. `explored`
+/// holds the refinement's runs only.
+pub fn refine_from_scan(
+    scenario: &Scenario,
+    speed: f64,
+    forces: &[f64],
+    values: &[f64],
+    tolerance: f64,
+) -> Result<OptimalForce> {
+    let best = (0..forces.len()).min_by(|&a, &b| values[a].total_cmp(&values[b])).expect("a non-empty scan");
+    let bracket = (forces[best.saturating_sub(1)], forces[(best + 1).min(forces.len() - 1)]);
     let mut refined = refine_device_force(scenario, speed, bracket, tolerance)?;
     if values[best] < refined.max_downward_deflection {
         (refined.force, refined.max_downward_deflection) = (forces[best], values[best]);
     }
-    explored.append(&mut refined.explored);
-    Ok(OptimalForce { force: refined.force, max_downward_deflection: refined.max_downward_deflection, explored })
+    Ok(refined)
 }
 
 /// `count` log-spaced values from `lower` to `upper` (both included).
