@@ -6,9 +6,8 @@ use crate::error::{Result, invalid};
 use crate::metrics::{amplification, static_midspan};
 use crate::plot::{PlotSpec, Series};
 use crate::scenario::{DevicesSection, DistributedSection, Scenario};
-use crate::sweep::{SweepPoint, critical_speed, log_spaced, refine_from_scan, run_point, sweep_many, thread_pool};
+use crate::sweep::{SweepPoint, critical_speed, log_spaced, parallel_map, refine_from_scan, run_point, sweep_many};
 use nscd::Simulation;
-use rayon::prelude::*;
 use serde::Serialize;
 use serde_json::{Value, json};
 use std::fmt::Write as _;
@@ -322,11 +321,9 @@ fn sweep_curves(
     let speeds = resolution.speeds();
     let cases = scenarios.iter().map(|(_, s)| s.build()).collect::<Result<Vec<_>>>()?;
     let points = sweep_many(&cases, &speeds, jobs, progress)?;
-    let pool = thread_pool(jobs)?;
     let step = speeds[1] - speeds[0];
-    let refined: Vec<Result<crate::sweep::CriticalSpeed>> =
-        pool.install(|| cases.par_iter().zip(&points).map(|(case, p)| critical_speed(case, p, 0.02 * step)).collect());
-    let refined = refined.into_iter().collect::<Result<Vec<_>>>()?;
+    let curves: Vec<usize> = (0..cases.len()).collect();
+    let refined = parallel_map(&curves, jobs, &|_| {}, |&c| critical_speed(&cases[c], &points[c], 0.02 * step))?;
     let runs = cases.len() * speeds.len() + refined.iter().map(|c| c.evaluations.len()).sum::<usize>();
     Ok(Curves {
         labels: scenarios.into_iter().map(|(l, _)| l).collect(),
@@ -586,19 +583,7 @@ fn optimal_force(
         .flat_map(|&n| forces.iter().map(move |&f| (n, f)))
         .map(|(n, f)| with_devices(base, n, f))
         .collect();
-    let pool = thread_pool(jobs)?;
-    let done = std::sync::atomic::AtomicUsize::new(0);
-    let points: Vec<Result<SweepPoint>> = pool.install(|| {
-        scenarios
-            .par_iter()
-            .map(|s| {
-                let p = s.build().and_then(|case| run_point(&case, speed));
-                progress(done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1);
-                p
-            })
-            .collect()
-    });
-    let points = points.into_iter().collect::<Result<Vec<_>>>()?;
+    let points = parallel_map(&scenarios, jobs, progress, |s| s.build().and_then(|case| run_point(&case, speed)))?;
     let mut csv =
         String::from("devices,device_force,speed,max_downward_deflection,max_upward_deflection,dissipated_energy\n");
     let mut items = Vec::new();
@@ -656,23 +641,14 @@ fn amplification_study(base: &Scenario, jobs: usize, progress: &(dyn Fn(usize) +
     let reference = static_midspan(&with_distributed(base, 0.0).build()?)?;
     let combos: Vec<(f64, f64)> =
         [1e3, 2e3].into_iter().flat_map(|f| [50.0, 100.0, 150.0, 200.0].map(|v| (f, v))).collect();
-    let pool = thread_pool(jobs)?;
-    let done = std::sync::atomic::AtomicUsize::new(0);
-    let results: Vec<Result<(f64, f64, Vec<crate::metrics::Amplification>)>> = pool.install(|| {
-        combos
-            .par_iter()
-            .map(|&(f, v)| {
-                let mut s = with_distributed(base, f);
-                s.load.speed = v;
-                s.output.sections = vec![s.mesh.length / 2.0];
-                let case = s.build()?;
-                let r = Simulation::new(&case.model, &case.contacts, &case.settings)?.run()?;
-                progress(done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1);
-                Ok((f, v, amplification(&r.histories[0], reference, case.model.mesh().length)))
-            })
-            .collect()
-    });
-    let results = results.into_iter().collect::<Result<Vec<_>>>()?;
+    let results = parallel_map(&combos, jobs, progress, |&(f, v)| {
+        let mut s = with_distributed(base, f);
+        s.load.speed = v;
+        s.output.sections = vec![s.mesh.length / 2.0];
+        let case = s.build()?;
+        let r = Simulation::new(&case.model, &case.contacts, &case.settings)?.run()?;
+        Ok((f, v, amplification(&r.histories[0], reference, case.model.mesh().length)))
+    })?;
     let mut csv = String::from("force_per_length,speed,tau,phi_w,phi_m\n");
     let mut items = Vec::new();
     let mut lines = Vec::new();
@@ -724,20 +700,10 @@ fn discrete_vs_distributed(base: &Scenario, jobs: usize, progress: &(dyn Fn(usiz
         s.load.speed = 150.0;
         s.output.sections = vec![s.mesh.length / 2.0];
     }
-    let pool = thread_pool(jobs)?;
-    let done = std::sync::atomic::AtomicUsize::new(0);
-    let runs: Vec<Result<nscd::RunResult>> = pool.install(|| {
-        [&devices, &distributed]
-            .par_iter()
-            .map(|s| {
-                let case = s.build()?;
-                let r = Simulation::new(&case.model, &case.contacts, &case.settings)?.run()?;
-                progress(done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1);
-                Ok(r)
-            })
-            .collect()
-    });
-    let runs = runs.into_iter().collect::<Result<Vec<_>>>()?;
+    let runs = parallel_map(&[&devices, &distributed], jobs, progress, |s| {
+        let case = s.build()?;
+        Ok(Simulation::new(&case.model, &case.contacts, &case.settings)?.run()?)
+    })?;
     let mut csv = String::from("model,time,load_position,deflection,impulse\n");
     for (name, r) in ["devices", "distributed"].iter().zip(&runs) {
         let h = &r.histories[0];

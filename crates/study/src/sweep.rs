@@ -81,21 +81,31 @@ pub fn sweep_many(
     if let Some(&v) = speeds.iter().find(|v| !(v.is_finite() && **v > 0.0)) {
         return Err(invalid("speeds", v, "every speed must be finite and > 0 (m/s)"));
     }
-    let pool = thread_pool(jobs)?;
-    let done = std::sync::atomic::AtomicUsize::new(0);
     let pairs: Vec<(usize, f64)> = (0..cases.len()).flat_map(|c| speeds.iter().map(move |&v| (c, v))).collect();
-    let results: Vec<Result<SweepPoint>> = pool.install(|| {
-        pairs
+    let mut points = parallel_map(&pairs, jobs, progress, |&(c, speed)| run_point(&cases[c], speed))?.into_iter();
+    Ok((0..cases.len()).map(|_| points.by_ref().take(speeds.len()).collect()).collect())
+}
+
+/// `f` over `items` on a pool of `jobs` threads (0 = all cores), results in the order of `items` whatever the
+/// thread count; `progress` gets the number of finished items after each one; the first error is returned.
+pub(crate) fn parallel_map<T: Sync, R: Send>(
+    items: &[T],
+    jobs: usize,
+    progress: &(dyn Fn(usize) + Sync),
+    f: impl Fn(&T) -> Result<R> + Sync,
+) -> Result<Vec<R>> {
+    let done = std::sync::atomic::AtomicUsize::new(0);
+    let results: Vec<Result<R>> = thread_pool(jobs)?.install(|| {
+        items
             .par_iter()
-            .map(|&(c, speed)| {
-                let point = run_point(&cases[c], speed);
+            .map(|item| {
+                let result = f(item);
                 progress(done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1);
-                point
+                result
             })
             .collect()
     });
-    let mut points = results.into_iter().collect::<Result<Vec<_>>>()?.into_iter();
-    Ok((0..cases.len()).map(|_| points.by_ref().take(speeds.len()).collect()).collect())
+    results.into_iter().collect()
 }
 
 /// A rayon pool of `jobs` threads (0 = all cores).
