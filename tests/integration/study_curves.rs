@@ -5,6 +5,7 @@
 
 use study::Scenario;
 use study::presets::{Preset, Resolution, run_preset};
+use study::sweep::Runner;
 
 /// `value` rounded to four significant digits.
 fn round4(value: f64) -> f64 {
@@ -48,7 +49,7 @@ fn thinned_table(csv: &str) -> serde_json::Value {
 }
 
 fn snapshot(preset: Preset) {
-    let data = run_preset(preset, Resolution::Coarse, &Scenario::default(), 0, &|_| {}).unwrap();
+    let data = run_preset(preset, Resolution::Coarse, &Scenario::default(), &Runner::new(0)).unwrap();
     let value = serde_json::json!({
         "headline": data.headline,
         "summary": rounded_json(&data.summary),

@@ -2,7 +2,7 @@
 //! moving load (MODEL.md §8), at one speed or as a dynamic-amplification curve over a speed range.
 
 use crate::Format;
-use anyhow::{Context, Result, bail};
+use anyhow::Result;
 use clap::Args;
 use fem_beam::reference::{InfiniteBeam, uic60_on_soft_soil};
 use serde::Serialize;
@@ -37,20 +37,19 @@ struct Point {
 
 /// Parse `A:B:STEP` into the list of speeds A, A+STEP, … ≤ B (inclusive up to round-off).
 pub fn parse_range(text: &str) -> Result<Vec<f64>> {
+    let bad = |allowed: &str| crate::files::input_error("--speeds", text, allowed);
     let parts: Vec<&str> = text.split(':').collect();
     if parts.len() != 3 {
-        bail!("invalid speed range `{text}`: expected A:B:STEP, e.g. 10:300:5");
+        return Err(bad("expected A:B:STEP (m/s), e.g. 10:300:5"));
     }
-    let num = |s: &str, what: &str| {
-        s.trim().parse::<f64>().with_context(|| format!("invalid {what} `{s}` in speed range `{text}`"))
-    };
-    let (a, b, step) = (num(parts[0], "start")?, num(parts[1], "end")?, num(parts[2], "step")?);
-    if !(a.is_finite() && b.is_finite() && step.is_finite() && a >= 0.0 && b >= a && step > 0.0) {
-        bail!("invalid speed range `{text}`: need 0 ≤ A ≤ B and STEP > 0");
+    let num = |s: &str| s.trim().parse::<f64>().map_err(|_| bad(&format!("`{s}` is not a number; expected A:B:STEP")));
+    let (a, b, step) = (num(parts[0])?, num(parts[1])?, num(parts[2])?);
+    if !(a.is_finite() && b.is_finite() && step.is_finite() && a > 0.0 && b >= a && step > 0.0) {
+        return Err(bad("need 0 < A ≤ B and STEP > 0 (m/s)"));
     }
     let count = ((b - a) / step + 1e-9).floor() as usize + 1;
     if count > 1_000_000 {
-        bail!("invalid speed range `{text}`: {count} points, at most 1 000 000 allowed");
+        return Err(bad(&format!("gives {count} speeds, at most 1 000 000 allowed")));
     }
     Ok((0..count).map(|i| a + i as f64 * step).collect())
 }
@@ -63,7 +62,9 @@ pub fn run(args: &AnalyticArgs) -> Result<()> {
     let speeds = match (&args.speeds, args.speed) {
         (Some(range), _) => parse_range(range)?,
         (None, Some(v)) => vec![v],
-        (None, None) => bail!("give --speed V or --speeds A:B:STEP"),
+        (None, None) => {
+            return Err(crate::files::input_error("--speed", "absent", "give --speed V or --speeds A:B:STEP"));
+        }
     };
     let w0 = inf.static_deflection(case.load);
     let mut points = Vec::with_capacity(speeds.len());

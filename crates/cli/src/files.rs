@@ -20,3 +20,15 @@ pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<()> {
     }
     result.with_context(|| format!("writing {}", path.display()))
 }
+
+/// The journal of finished runs kept beside the output `out`: `out.journal`.
+pub fn journal_beside(out: &Path) -> std::path::PathBuf {
+    let mut name = out.as_os_str().to_owned();
+    name.push(".journal");
+    name.into()
+}
+
+/// An invalid-input error (exit code 2) naming the option, its value and what is allowed.
+pub fn input_error(field: &str, value: impl std::fmt::Display, allowed: impl Into<String>) -> anyhow::Error {
+    study::StudyError::InvalidField { path: field.into(), value: value.to_string(), allowed: allowed.into() }.into()
+}

@@ -4,6 +4,8 @@ mod analytic;
 mod check;
 mod files;
 mod init;
+mod interrupt;
+mod merge;
 mod progress;
 mod reference;
 mod reproduce;
@@ -17,7 +19,7 @@ use std::process::ExitCode;
 
 /// Railway track dynamics under moving loads: an Euler–Bernoulli rail on a viscoelastic Winkler foundation.
 #[derive(Debug, Parser)]
-#[command(name = "frictrack", version, about, long_about = None, after_help = "Examples:\n  frictrack run\n  frictrack init case.toml && frictrack check case.toml\n  frictrack run case.toml --speed 180\n  frictrack sweep case.toml --speeds 150:260:5 --out sweep.csv --critical\n  frictrack study optimal-force --out results\n  frictrack reproduce --out results --resolution coarse\n  frictrack run --speed 180 --devices 31 --device-force 50e3\n  frictrack run --distributed-friction 5000 --format json\n  frictrack reference --elements 400\n  frictrack analytic --speed 200 --damping-ratio 0.05\n  frictrack analytic --damping-ratio 0.05 --speeds 10:300:10 --format json")]
+#[command(name = "frictrack", version, about, long_about = None, after_help = "Examples:\n  frictrack run\n  frictrack init case.toml && frictrack check case.toml\n  frictrack run case.toml --speed 180\n  frictrack sweep case.toml --speeds 150:260:5 --out sweep.csv --critical\n  frictrack sweep case.toml --out sweep.csv --resume\n  frictrack sweep case.toml --out part1.csv --shard 1/3  (… 2/3, 3/3)\n  frictrack merge --out sweep.csv part1.csv part2.csv part3.csv\n  frictrack study optimal-force --out results\n  frictrack reproduce --out results --resolution coarse\n  frictrack run --speed 180 --devices 31 --device-force 50e3\n  frictrack run --distributed-friction 5000 --format json\n  frictrack reference --elements 400\n  frictrack analytic --speed 200 --damping-ratio 0.05\n  frictrack analytic --damping-ratio 0.05 --speeds 10:300:10 --format json")]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -36,6 +38,8 @@ enum Command {
     Reproduce(reproduce::ReproduceArgs),
     /// Validate a scenario file.
     Check(check::CheckArgs),
+    /// Combine the outputs of `frictrack sweep --shard K/N` (all N shards) into the file one unsharded sweep writes.
+    Merge(merge::MergeArgs),
     /// Write the documented scenario template (the reference case).
     Init(init::InitArgs),
     /// Static response and natural frequencies of the reference case beside their closed forms.
@@ -63,6 +67,7 @@ fn main() -> ExitCode {
         Command::Study(args) => study_cmd::run(&args),
         Command::Reproduce(args) => reproduce::run(&args),
         Command::Check(args) => check::run(&args),
+        Command::Merge(args) => merge::run(&args),
         Command::Init(args) => init::run(&args),
         Command::Reference(args) => reference::run(&args),
         Command::Analytic(args) => analytic::run(&args),
@@ -76,9 +81,13 @@ fn main() -> ExitCode {
     }
 }
 
-/// 2 for invalid input (a parameter the model rejects), 1 for anything else (e.g. a solver failure).
+/// 2 for invalid input (a parameter the model rejects), 130 after Ctrl-C, 1 for anything else (e.g. a solver
+/// failure).
 fn error_code(error: &anyhow::Error) -> u8 {
     use study::StudyError;
+    if matches!(error.downcast_ref::<StudyError>(), Some(StudyError::Interrupted)) {
+        return interrupt::EXIT_CODE;
+    }
     // Every library error converts into the study layer's, which knows which of them are the user's input.
     let as_study = if let Some(e) = error.downcast_ref::<StudyError>() {
         Some(e.clone())

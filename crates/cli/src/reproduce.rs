@@ -29,6 +29,9 @@ pub struct ReproduceArgs {
     /// No progress on standard error.
     #[arg(long)]
     quiet: bool,
+    /// Continue an interrupted reproduction: studies take the runs already in their journals (OUT/.<study>.journal).
+    #[arg(long)]
+    resume: bool,
 }
 
 /// Execute `frictrack reproduce`.
@@ -47,12 +50,16 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
          Resolution: {}. Every figure has its data beside it (`<study>.csv`, SI units) and its metadata (`<study>.json`).\n",
         args.resolution.name()
     );
+    // Journals stay until the report is written, so that --resume after an interruption re-runs nothing.
+    let mut journals = Vec::new();
     for (i, preset) in Preset::ALL.into_iter().enumerate() {
         let timer = Instant::now();
-        let data = run_study(preset, args.resolution.into(), &base, &args.out, args.jobs, args.quiet)?;
+        let (data, journal) =
+            run_study(preset, args.resolution.into(), &base, &args.out, args.jobs, args.quiet, args.resume)?;
         if !args.quiet {
             eprintln!("{}: {} runs in {:.1} s", preset.name(), data.runs, timer.elapsed().as_secs_f64());
         }
+        journals.push(journal);
         let _ = writeln!(report, "## {}. {}\n", i + 1, data.title);
         for line in &data.headline {
             let _ = writeln!(report, "{line}  ");
@@ -76,6 +83,9 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
     }
     let _ = writeln!(report, "All six studies took {:.1} s.", start.elapsed().as_secs_f64());
     write_atomically(&args.out.join("report.md"), report.as_bytes())?;
+    for journal in journals {
+        journal.remove()?;
+    }
     if !args.quiet {
         eprintln!("wrote {}", args.out.join("report.md").display());
     }

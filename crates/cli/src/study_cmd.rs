@@ -10,6 +10,7 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 use study::Scenario;
 use study::presets::{Preset, Resolution, StudyData, run_preset};
+use study::sweep::Runner;
 
 /// Sampling of a study.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -56,6 +57,9 @@ pub struct StudyArgs {
     /// No progress on standard error.
     #[arg(long)]
     quiet: bool,
+    /// Continue an interrupted study: take the runs already in OUT/.<preset>.journal, run the others.
+    #[arg(long)]
+    resume: bool,
 }
 
 /// Execute `frictrack study`.
@@ -65,14 +69,17 @@ pub fn run(args: &StudyArgs) -> Result<()> {
         Some(path) => Scenario::from_path(path)?,
         None => Scenario::default(),
     };
-    let data = run_study(preset, args.resolution.into(), &base, &args.out, args.jobs, args.quiet)?;
+    let (data, journal) =
+        run_study(preset, args.resolution.into(), &base, &args.out, args.jobs, args.quiet, args.resume)?;
+    journal.remove()?;
     for line in &data.lines {
         println!("{line}");
     }
     Ok(())
 }
 
-/// Run a preset and write its CSV and JSON into `out`.
+/// Run a preset and write its CSV, JSON and figures into `out`; finished runs are kept in `out/.<preset>.journal`
+/// (taken from there with `resume`), returned for the caller to remove once nothing else depends on them.
 pub fn run_study(
     preset: Preset,
     resolution: Resolution,
@@ -80,12 +87,22 @@ pub fn run_study(
     out: &Path,
     jobs: usize,
     quiet: bool,
-) -> Result<StudyData> {
+    resume: bool,
+) -> Result<(StudyData, study::Journal)> {
     base.validate()?;
     std::fs::create_dir_all(out).with_context(|| format!("creating {}", out.display()))?;
+    let journal = study::Journal::open(&out.join(format!(".{}.journal", preset.name())), resume)?;
+    if journal.resumed() > 0 && !quiet {
+        eprintln!("{}: resuming with {} finished runs", preset.name(), journal.resumed());
+    }
     let bar = crate::progress::bar(preset.name(), None, quiet);
+    let progress = |done: usize| bar.set_position(done as u64);
+    let runner = Runner::new(jobs)
+        .with_progress(&progress)
+        .with_journal(Some(&journal))
+        .with_stop(crate::interrupt::stop_flag());
     let start = Instant::now();
-    let data = run_preset(preset, resolution, base, jobs, &|done| bar.set_position(done as u64))?;
+    let data = crate::interrupt::explain(run_preset(preset, resolution, base, &runner), Some(&journal))?;
     let wall_time = start.elapsed().as_secs_f64();
     bar.finish_and_clear();
     write_atomically(&out.join(format!("{}.csv", preset.name())), data.csv.as_bytes())?;
@@ -101,7 +118,6 @@ pub fn run_study(
         "summary": data.summary,
         "lines": data.lines,
         "plots": data.plots.iter().map(|p| p.stem.as_str()).collect::<Vec<_>>(),
-        "plots": data.plots.iter().map(|p| p.stem.as_str()).collect::<Vec<_>>(),
         "scenario": base,
     });
     write_atomically(
@@ -111,7 +127,7 @@ pub fn run_study(
     for spec in &data.plots {
         study::plot::render(spec, out)?;
     }
-    Ok(data)
+    Ok((data, journal))
 }
 
 /// The git revision of the working directory, if git and a repository are there.

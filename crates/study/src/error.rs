@@ -35,6 +35,17 @@ pub enum StudyError {
         /// What went wrong.
         message: String,
     },
+    /// A journal of finished runs could not be opened, read or written.
+    #[error("{path}: {message}")]
+    Journal {
+        /// The journal file.
+        path: String,
+        /// What is wrong.
+        message: String,
+    },
+    /// The run was asked to stop (Ctrl-C) before it finished; finished runs are in the journal.
+    #[error("interrupted")]
+    Interrupted,
     /// An error from the beam layer.
     #[error(transparent)]
     Beam(#[from] fem_beam::FemError),
@@ -59,7 +70,8 @@ impl StudyError {
         };
         match self {
             StudyError::InvalidField { .. } | StudyError::Syntax { .. } => true,
-            StudyError::Io { .. } => false,
+            StudyError::Journal { .. } => true,
+            StudyError::Io { .. } | StudyError::Interrupted => false,
             StudyError::Beam(e) => beam(e),
             StudyError::Friction(e) => friction(e),
             StudyError::Stepping(e) => match e {

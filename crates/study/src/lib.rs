@@ -3,14 +3,19 @@
 //! - [`scenario`]: the TOML scenario format (every key optional, defaults = the reference case) and its validation.
 //! - [`sweep`]: speed sweeps run in parallel with results in speed order, identical for any thread count; the
 //!   critical speed refined below the sweep step on fresh runs; the optimal device force at a fixed speed.
+//! - [`shard`]: a deterministic 1/N of a sweep's points per machine, and the merge of the shards' outputs.
+//! - [`journal`]: every finished run on disk at once, so that an interrupted sweep resumes where it stopped.
 
 pub mod error;
+pub mod journal;
 pub mod metrics;
 pub mod plot;
 pub mod presets;
 pub mod scenario;
+pub mod shard;
 pub mod sweep;
 
 pub use error::{Result, StudyError};
+pub use journal::Journal;
 pub use scenario::{Case, Scenario};
 pub use sweep::{CriticalSpeed, OptimalForce, SweepPoint};

@@ -6,7 +6,7 @@ use crate::scenario::Case;
 use fem_beam::LoadVector;
 use fem_beam::section::Motion;
 use nscd::simulation::SectionHistory;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 /// Static mid-span response with the load at mid-span and no friction.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -28,7 +28,7 @@ pub fn static_midspan(case: &Case) -> Result<StaticReference> {
 }
 
 /// One sample of the dynamic amplification at a section.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Amplification {
     /// τ = x_c/L.
     pub tau: f64,

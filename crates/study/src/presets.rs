@@ -6,7 +6,7 @@ use crate::error::{Result, invalid};
 use crate::metrics::{amplification, static_midspan};
 use crate::plot::{PlotSpec, Series};
 use crate::scenario::{DevicesSection, DistributedSection, Scenario};
-use crate::sweep::{SweepPoint, critical_speed, log_spaced, parallel_map, refine_from_scan, run_point, sweep_many};
+use crate::sweep::{Runner, SweepPoint, critical_speed, log_spaced, refine_from_scan};
 use nscd::Simulation;
 use serde::Serialize;
 use serde_json::{Value, json};
@@ -133,20 +133,14 @@ pub struct StudyData {
 }
 
 /// Run `preset` on top of `base` (normally the reference case).
-pub fn run_preset(
-    preset: Preset,
-    resolution: Resolution,
-    base: &Scenario,
-    jobs: usize,
-    progress: &(dyn Fn(usize) + Sync),
-) -> Result<StudyData> {
+pub fn run_preset(preset: Preset, resolution: Resolution, base: &Scenario, runner: &Runner) -> Result<StudyData> {
     let data = match preset {
-        Preset::DiscreteSpeed => discrete_speed(resolution, base, jobs, progress)?,
-        Preset::EqualCost => equal_cost(resolution, base, jobs, progress)?,
-        Preset::OptimalForce => optimal_force(resolution, base, jobs, progress)?,
-        Preset::DistributedSpeed => distributed_speed(resolution, base, jobs, progress)?,
-        Preset::Amplification => amplification_study(base, jobs, progress)?,
-        Preset::DiscreteVsDistributed => discrete_vs_distributed(base, jobs, progress)?,
+        Preset::DiscreteSpeed => discrete_speed(resolution, base, runner)?,
+        Preset::EqualCost => equal_cost(resolution, base, runner)?,
+        Preset::OptimalForce => optimal_force(resolution, base, runner)?,
+        Preset::DistributedSpeed => distributed_speed(resolution, base, runner)?,
+        Preset::Amplification => amplification_study(base, runner)?,
+        Preset::DiscreteVsDistributed => discrete_vs_distributed(base, runner)?,
     };
     let headline = headline(preset, &data.summary);
     Ok(StudyData { name: preset.name(), title: preset.title(), resolution: resolution.name(), headline, ..data })
@@ -315,15 +309,14 @@ struct Curves {
 fn sweep_curves(
     scenarios: Vec<(Vec<(String, f64)>, Scenario)>,
     resolution: Resolution,
-    jobs: usize,
-    progress: &(dyn Fn(usize) + Sync),
+    runner: &Runner,
 ) -> Result<Curves> {
     let speeds = resolution.speeds();
     let cases = scenarios.iter().map(|(_, s)| s.build()).collect::<Result<Vec<_>>>()?;
-    let points = sweep_many(&cases, &speeds, jobs, progress)?;
+    let points = runner.sweep_many(&cases, &speeds)?;
     let step = speeds[1] - speeds[0];
     let curves: Vec<usize> = (0..cases.len()).collect();
-    let refined = parallel_map(&curves, jobs, &|_| {}, |&c| critical_speed(&cases[c], &points[c], 0.02 * step))?;
+    let refined = runner.silent().map(&curves, |&c| critical_speed(&cases[c], &points[c], 0.02 * step, runner))?;
     let runs = cases.len() * speeds.len() + refined.iter().map(|c| c.evaluations.len()).sum::<usize>();
     Ok(Curves {
         labels: scenarios.into_iter().map(|(l, _)| l).collect(),
@@ -443,12 +436,7 @@ impl Curves {
     }
 }
 
-fn discrete_speed(
-    resolution: Resolution,
-    base: &Scenario,
-    jobs: usize,
-    progress: &(dyn Fn(usize) + Sync),
-) -> Result<StudyData> {
+fn discrete_speed(resolution: Resolution, base: &Scenario, runner: &Runner) -> Result<StudyData> {
     let mut scenarios = vec![(vec![("device_force".into(), 0.0), ("devices".into(), 0.0)], with_devices(base, 0, 0.0))];
     for force in [10e3, 50e3, 100e3] {
         for count in [3usize, 7, 15, 31] {
@@ -458,7 +446,7 @@ fn discrete_speed(
             ));
         }
     }
-    let mut data = curves_study(scenarios, resolution, jobs, progress, &|curves| {
+    let mut data = curves_study(scenarios, resolution, runner, &|curves| {
         let legend =
             |c: usize| if c == 0 { "no friction".to_string() } else { format!("N = {}", [3, 7, 15, 31][(c - 1) % 4]) };
         [10, 50, 100]
@@ -479,12 +467,7 @@ fn discrete_speed(
     Ok(data)
 }
 
-fn equal_cost(
-    resolution: Resolution,
-    base: &Scenario,
-    jobs: usize,
-    progress: &(dyn Fn(usize) + Sync),
-) -> Result<StudyData> {
+fn equal_cost(resolution: Resolution, base: &Scenario, runner: &Runner) -> Result<StudyData> {
     let mut scenarios = Vec::new();
     for cost in [3100e3, 1550e3, 310e3] {
         for count in [31usize, 15, 7, 3] {
@@ -493,7 +476,7 @@ fn equal_cost(
             scenarios.push((labels, with_devices(base, count, force)));
         }
     }
-    curves_study(scenarios, resolution, jobs, progress, &|curves| {
+    curves_study(scenarios, resolution, runner, &|curves| {
         [3100, 1550, 310]
             .iter()
             .enumerate()
@@ -513,17 +496,12 @@ fn equal_cost(
     })
 }
 
-fn distributed_speed(
-    resolution: Resolution,
-    base: &Scenario,
-    jobs: usize,
-    progress: &(dyn Fn(usize) + Sync),
-) -> Result<StudyData> {
+fn distributed_speed(resolution: Resolution, base: &Scenario, runner: &Runner) -> Result<StudyData> {
     let scenarios = [0.0, 1e3, 2e3, 5e3, 10e3]
         .into_iter()
         .map(|f| (vec![("force_per_length".into(), f)], with_distributed(base, f)))
         .collect();
-    curves_study(scenarios, resolution, jobs, progress, &|curves| {
+    curves_study(scenarios, resolution, runner, &|curves| {
         let legend = |c: usize| format!("f_u = {} kN/m", [0, 1, 2, 5, 10][c]);
         vec![
             curves.deflection_plot(
@@ -553,11 +531,10 @@ fn distributed_speed(
 fn curves_study(
     scenarios: Vec<(Vec<(String, f64)>, Scenario)>,
     resolution: Resolution,
-    jobs: usize,
-    progress: &(dyn Fn(usize) + Sync),
+    runner: &Runner,
     plots: &dyn Fn(&Curves) -> Vec<PlotSpec>,
 ) -> Result<StudyData> {
-    let curves = sweep_curves(scenarios, resolution, jobs, progress)?;
+    let curves = sweep_curves(scenarios, resolution, runner)?;
     let (summary, lines) = curves.summary();
     Ok(StudyData {
         csv: curves.csv(),
@@ -569,12 +546,7 @@ fn curves_study(
     })
 }
 
-fn optimal_force(
-    resolution: Resolution,
-    base: &Scenario,
-    jobs: usize,
-    progress: &(dyn Fn(usize) + Sync),
-) -> Result<StudyData> {
+fn optimal_force(resolution: Resolution, base: &Scenario, runner: &Runner) -> Result<StudyData> {
     let speed = 206.0;
     let forces = log_spaced(1e3, 1e7, resolution.forces());
     let counts = [3usize, 7, 15, 31];
@@ -583,7 +555,7 @@ fn optimal_force(
         .flat_map(|&n| forces.iter().map(move |&f| (n, f)))
         .map(|(n, f)| with_devices(base, n, f))
         .collect();
-    let points = parallel_map(&scenarios, jobs, progress, |s| s.build().and_then(|case| run_point(&case, speed)))?;
+    let points = runner.map(&scenarios, |s| runner.point(&s.build()?, speed))?;
     let mut csv =
         String::from("devices,device_force,speed,max_downward_deflection,max_upward_deflection,dissipated_energy\n");
     let mut items = Vec::new();
@@ -610,7 +582,7 @@ fn optimal_force(
             );
         }
         let values: Vec<f64> = curve.iter().map(|p| p.max_downward_deflection).collect();
-        let refined = refine_from_scan(&with_devices(base, n, 1.0), speed, &forces, &values, 0.02)?;
+        let refined = refine_from_scan(&with_devices(base, n, 1.0), speed, &forces, &values, 0.02, runner)?;
         runs += refined.explored.len();
         items.push(json!({ "devices": n, "optimal_device_force": refined.force, "max_downward_deflection": refined.max_downward_deflection }));
         lines.push(format!(
@@ -637,17 +609,20 @@ fn optimal_force(
     })
 }
 
-fn amplification_study(base: &Scenario, jobs: usize, progress: &(dyn Fn(usize) + Sync)) -> Result<StudyData> {
+fn amplification_study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
     let reference = static_midspan(&with_distributed(base, 0.0).build()?)?;
     let combos: Vec<(f64, f64)> =
         [1e3, 2e3].into_iter().flat_map(|f| [50.0, 100.0, 150.0, 200.0].map(|v| (f, v))).collect();
-    let results = parallel_map(&combos, jobs, progress, |&(f, v)| {
+    let results = runner.map(&combos, |&(f, v)| {
         let mut s = with_distributed(base, f);
         s.load.speed = v;
         s.output.sections = vec![s.mesh.length / 2.0];
         let case = s.build()?;
-        let r = Simulation::new(&case.model, &case.contacts, &case.settings)?.run()?;
-        Ok((f, v, amplification(&r.histories[0], reference, case.model.mesh().length)))
+        let samples = runner.cached(&format!("{:016x}@{v}/midspan-amplification", case.fingerprint), || {
+            let r = Simulation::new(&case.model, &case.contacts, &case.settings)?.run()?;
+            Ok(amplification(&r.histories[0], reference, case.model.mesh().length))
+        })?;
+        Ok((f, v, samples))
     })?;
     let mut csv = String::from("force_per_length,speed,tau,phi_w,phi_m\n");
     let mut items = Vec::new();
@@ -693,14 +668,14 @@ fn amplification_study(base: &Scenario, jobs: usize, progress: &(dyn Fn(usize) +
     Ok(StudyData { csv, summary: json!({ "curves": items }), lines, plots, ..blank(results.len()) })
 }
 
-fn discrete_vs_distributed(base: &Scenario, jobs: usize, progress: &(dyn Fn(usize) + Sync)) -> Result<StudyData> {
+fn discrete_vs_distributed(base: &Scenario, runner: &Runner) -> Result<StudyData> {
     let mut devices = with_devices(base, 199, 1e3);
     let mut distributed = with_distributed(base, 995.0);
     for s in [&mut devices, &mut distributed] {
         s.load.speed = 150.0;
         s.output.sections = vec![s.mesh.length / 2.0];
     }
-    let runs = parallel_map(&[&devices, &distributed], jobs, progress, |s| {
+    let runs = runner.map(&[&devices, &distributed], |s| {
         let case = s.build()?;
         Ok(Simulation::new(&case.model, &case.contacts, &case.settings)?.run()?)
     })?;

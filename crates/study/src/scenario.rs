@@ -334,6 +334,9 @@ pub struct Case {
     pub contacts: ContactSet,
     /// Run settings (speed from `[load]`).
     pub settings: RunSettings,
+    /// Identifies what a run of this case at a given speed computes: a hash (64-bit FNV-1a) of the frictrack version
+    /// and the scenario without its title, load speed, recorded sections and sweep range. Keys journal entries.
+    pub fingerprint: u64,
 }
 
 fn finite_positive(path: &str, value: f64, unit: &str) -> Result<()> {
@@ -356,15 +359,22 @@ impl Scenario {
     /// Parse TOML; `source_name` (a file name) prefixes syntax errors with line and column.
     pub fn from_toml(text: &str, source_name: &str) -> Result<Self> {
         toml::from_str(text).map_err(|e| {
-            let (line, column) = e.span().map_or((1, 1), |span| line_column(text, span.start));
-            StudyError::Syntax { source_name: source_name.into(), line, column, message: e.message().trim().into() }
+            let offset = e.span().map_or(0, |span| span.start);
+            let (line, column) = line_column(text, offset);
+            let message = e.message().trim();
+            let message = match key_path(text, offset) {
+                Some(path) => format!("{path}: {message}{}", did_you_mean(message)),
+                None => format!("{message}{}", did_you_mean(message)),
+            };
+            StudyError::Syntax { source_name: source_name.into(), line, column, message }
         })
     }
 
     /// Read and parse a file.
     pub fn from_path(path: &std::path::Path) -> Result<Self> {
+        // A scenario that cannot be read is the user's input error (exit code 2), not a failure of the run.
         let text = std::fs::read_to_string(path)
-            .map_err(|e| StudyError::Io { path: path.display().to_string(), message: e.to_string() })?;
+            .map_err(|e| invalid("scenario file", path.display(), format!("cannot be read: {e}")))?;
         Self::from_toml(&text, &path.display().to_string())
     }
 
@@ -423,13 +433,31 @@ impl Scenario {
             None => vec![foundation.damping; mesh.elements],
         };
         let model = BeamModel::with_element_damping(beam, foundation, mesh, supports, damping)?;
-        let contacts = self.contacts(&model)?;
+        let contacts = self.contacts(&model).map_err(|e| match e {
+            StudyError::Friction(friction::FrictionError::InvalidField { field, value, allowed }) => {
+                invalid(&format!("friction.{field}"), value, allowed)
+            }
+            StudyError::Friction(friction::FrictionError::InvalidCount { field, value, allowed }) => {
+                invalid(&format!("friction.{field}"), value, allowed)
+            }
+            other => other,
+        })?;
         finite_non_negative("load.force", self.load.force, "N")?;
         finite_positive("load.speed", self.load.speed, "m/s")?;
         let settings = self.run_settings(self.load.speed);
         settings.validate(&model).map_err(scenario_path)?;
         self.sweep.validate("sweep")?;
-        Ok(Case { model, contacts, settings })
+        Ok(Case { model, contacts, settings, fingerprint: self.fingerprint() })
+    }
+
+    /// See [`Case::fingerprint`].
+    pub fn fingerprint(&self) -> u64 {
+        let mut physics = self.clone();
+        physics.title.clear();
+        physics.load.speed = 0.0;
+        physics.output.sections.clear();
+        physics.sweep = SweepSection::default();
+        fnv1a(format!("frictrack {}\n{}", env!("CARGO_PKG_VERSION"), physics.to_toml()).as_bytes())
     }
 
     fn contacts(&self, model: &BeamModel) -> Result<ContactSet> {
@@ -511,6 +539,48 @@ fn scenario_path(error: nscd::NscdError) -> StudyError {
             invalid(path, value, allowed)
         }
         other => other.into(),
+    }
+}
+
+/// 64-bit FNV-1a hash: stable across platforms, Rust versions and runs (unlike `std`'s `DefaultHasher`).
+pub fn fnv1a(bytes: &[u8]) -> u64 {
+    bytes.iter().fold(0xcbf2_9ce4_8422_2325, |h, &b| (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3))
+}
+
+/// The dotted path of the key at byte `offset`: the enclosing `[table]` header and the key on that line (or the
+/// header itself when the offset is inside one). `None` for a syntax error not on a key.
+fn key_path(text: &str, offset: usize) -> Option<String> {
+    let offset = offset.min(text.len());
+    let line_start = text[..offset].rfind('\n').map_or(0, |i| i + 1);
+    let line = text[line_start..].lines().next().unwrap_or("").trim();
+    let header = |l: &str| l.trim_start_matches('[').split(']').next().map(|h| h.trim().replace(' ', ""));
+    if line.starts_with('[') {
+        return header(line).filter(|h| !h.is_empty());
+    }
+    let key = line.split_once('=')?.0.trim().trim_matches('"');
+    if key.is_empty() {
+        return None;
+    }
+    let table = text[..line_start].lines().rev().map(str::trim).find(|l| l.starts_with('[')).and_then(header);
+    Some(match table {
+        Some(t) if !t.is_empty() => format!("{t}.{key}"),
+        _ => key.to_string(),
+    })
+}
+
+/// For serde's "unknown field `x`, expected `a`, `b`…" (or variant): ", did you mean `a`?" when one of the
+/// expected names is within a third of its length in edit distance, else nothing.
+fn did_you_mean(message: &str) -> String {
+    let Some(rest) = message.strip_prefix("unknown field `").or_else(|| message.strip_prefix("unknown variant `"))
+    else {
+        return String::new();
+    };
+    let Some((given, expected)) = rest.split_once('`') else { return String::new() };
+    let candidates = expected.split('`').skip(1).step_by(2);
+    let best = candidates.map(|c| (strsim::damerau_levenshtein(given, c), c)).min();
+    match best {
+        Some((distance, name)) if distance <= (name.chars().count() / 3).max(1) => format!("; did you mean `{name}`?"),
+        _ => String::new(),
     }
 }
 

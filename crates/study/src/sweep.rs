@@ -7,15 +7,18 @@
 //! fixed N and speed minimises the max downward deflection: a log-spaced scan of the bounds, then golden section
 //! around the best scanned force; every evaluated force is returned with its value.
 
-use crate::error::{Result, invalid};
+use crate::error::{Result, StudyError, invalid};
+use crate::journal::Journal;
 use crate::scenario::{Case, Scenario};
 use nscd::Simulation;
 use rayon::prelude::*;
-use serde::Serialize;
+use serde::de::DeserializeOwned;
+use serde::{Deserialize, Serialize};
 use std::io::Write;
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
 /// What one run of a sweep reports.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct SweepPoint {
     /// Load speed (m/s).
     pub speed: f64,
@@ -39,7 +42,7 @@ pub struct SweepPoint {
     pub mean_iterations: f64,
 }
 
-/// One run of `case` at `speed` (m/s).
+/// One run of `case` at `speed` (m/s), without journal (see [`Runner::point`]).
 pub fn run_point(case: &Case, speed: f64) -> Result<SweepPoint> {
     let mut settings = case.settings.clone();
     settings.speed = speed;
@@ -59,57 +62,126 @@ pub fn run_point(case: &Case, speed: f64) -> Result<SweepPoint> {
     })
 }
 
-/// Run `case` at every speed on `jobs` threads (0 = all cores); `progress` is called with the number of finished
-/// points after each one. Results are in the order of `speeds`.
-pub fn speed_sweep(
-    case: &Case,
-    speeds: &[f64],
-    jobs: usize,
-    progress: &(dyn Fn(usize) + Sync),
-) -> Result<Vec<SweepPoint>> {
-    Ok(sweep_many(std::slice::from_ref(case), speeds, jobs, progress)?.pop().expect("one case"))
+/// How the runs of a sweep or study are carried out: on `jobs` threads (0 = all cores), reporting the number of
+/// finished runs to `progress`, keeping every finished run in an optional [`Journal`] (and taking runs already there
+/// from it), and stopping before the next run once an optional `stop` flag is raised (Ctrl-C).
+#[derive(Clone, Copy)]
+pub struct Runner<'a> {
+    /// Worker threads (0 = all cores).
+    pub jobs: usize,
+    /// Called with the number of finished runs of the current parallel loop after each one.
+    pub progress: &'a (dyn Fn(usize) + Sync),
+    /// Finished runs, on disk.
+    pub journal: Option<&'a Journal>,
+    /// Raised to stop: runs not yet started fail with [`StudyError::Interrupted`].
+    pub stop: Option<&'a AtomicBool>,
 }
 
-/// Run every case at every speed, all (case, speed) pairs on one pool of `jobs` threads; results per case in the
-/// order of `speeds`, identical for any thread count.
-pub fn sweep_many(
-    cases: &[Case],
-    speeds: &[f64],
-    jobs: usize,
-    progress: &(dyn Fn(usize) + Sync),
-) -> Result<Vec<Vec<SweepPoint>>> {
-    if let Some(&v) = speeds.iter().find(|v| !(v.is_finite() && **v > 0.0)) {
-        return Err(invalid("speeds", v, "every speed must be finite and > 0 (m/s)"));
+static NO_PROGRESS: fn(usize) = |_| {};
+
+impl Runner<'static> {
+    /// `jobs` threads, no progress, no journal, no stop flag.
+    pub fn new(jobs: usize) -> Self {
+        Runner { jobs, progress: &NO_PROGRESS, journal: None, stop: None }
     }
-    let pairs: Vec<(usize, f64)> = (0..cases.len()).flat_map(|c| speeds.iter().map(move |&v| (c, v))).collect();
-    let mut points = parallel_map(&pairs, jobs, progress, |&(c, speed)| run_point(&cases[c], speed))?.into_iter();
-    Ok((0..cases.len()).map(|_| points.by_ref().take(speeds.len()).collect()).collect())
 }
 
-/// `f` over `items` on a pool of `jobs` threads (0 = all cores), results in the order of `items` whatever the
-/// thread count; `progress` gets the number of finished items after each one; the first error is returned.
-pub(crate) fn parallel_map<T: Sync, R: Send>(
-    items: &[T],
-    jobs: usize,
-    progress: &(dyn Fn(usize) + Sync),
-    f: impl Fn(&T) -> Result<R> + Sync,
-) -> Result<Vec<R>> {
-    let done = std::sync::atomic::AtomicUsize::new(0);
-    let results: Vec<Result<R>> = thread_pool(jobs)?.install(|| {
-        items
-            .par_iter()
-            .map(|item| {
-                let result = f(item);
-                progress(done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1);
-                result
-            })
-            .collect()
-    });
-    results.into_iter().collect()
+impl<'a> Runner<'a> {
+    /// The same with progress reported to `progress`.
+    pub fn with_progress<'b>(self, progress: &'b (dyn Fn(usize) + Sync)) -> Runner<'b>
+    where
+        'a: 'b,
+    {
+        Runner { progress, ..self }
+    }
+
+    /// The same keeping finished runs in `journal`.
+    pub fn with_journal<'b>(self, journal: Option<&'b Journal>) -> Runner<'b>
+    where
+        'a: 'b,
+    {
+        Runner { journal, ..self }
+    }
+
+    /// The same, stopping once `stop` is raised.
+    pub fn with_stop<'b>(self, stop: &'b AtomicBool) -> Runner<'b>
+    where
+        'a: 'b,
+    {
+        Runner { stop: Some(stop), ..self }
+    }
+
+    /// The same without progress reports.
+    pub fn silent(self) -> Self {
+        Runner { progress: &NO_PROGRESS, ..self }
+    }
+
+    /// `run` unless the journal already holds the result under `key`; a fresh result is journaled at once.
+    pub fn cached<R: Serialize + DeserializeOwned>(&self, key: &str, run: impl FnOnce() -> Result<R>) -> Result<R> {
+        if let Some(done) = self.journal.and_then(|j| j.get(key)) {
+            return Ok(done);
+        }
+        if self.stop.is_some_and(|s| s.load(Ordering::Relaxed)) {
+            return Err(StudyError::Interrupted);
+        }
+        let result = run()?;
+        if let Some(journal) = self.journal {
+            journal.record(key, &result)?;
+        }
+        Ok(result)
+    }
+
+    /// One run of `case` at `speed` (m/s), through the journal.
+    pub fn point(&self, case: &Case, speed: f64) -> Result<SweepPoint> {
+        self.cached(&format!("{:016x}@{speed}", case.fingerprint), || run_point(case, speed))
+    }
+
+    /// `f` over `items` on the pool, results in the order of `items` whatever the thread count; the first error
+    /// is returned (after the runs in flight end, so that their results reach the journal).
+    pub fn map<T: Sync, R: Send>(&self, items: &[T], f: impl Fn(&T) -> Result<R> + Sync) -> Result<Vec<R>> {
+        let done = AtomicUsize::new(0);
+        let results: Vec<Result<R>> = thread_pool(self.jobs)?.install(|| {
+            items
+                .par_iter()
+                .map(|item| {
+                    let result = f(item);
+                    (self.progress)(done.fetch_add(1, Ordering::Relaxed) + 1);
+                    result
+                })
+                .collect()
+        });
+        // An interruption is reported only if nothing worse happened.
+        let mut interrupted = false;
+        let mut out = Vec::with_capacity(results.len());
+        for result in results {
+            match result {
+                Ok(r) => out.push(r),
+                Err(StudyError::Interrupted) => interrupted = true,
+                Err(e) => return Err(e),
+            }
+        }
+        if interrupted { Err(StudyError::Interrupted) } else { Ok(out) }
+    }
+
+    /// Run `case` at every speed; results in the order of `speeds`.
+    pub fn speed_sweep(&self, case: &Case, speeds: &[f64]) -> Result<Vec<SweepPoint>> {
+        Ok(self.sweep_many(std::slice::from_ref(case), speeds)?.pop().expect("one case"))
+    }
+
+    /// Run every case at every speed, all (case, speed) pairs on one pool; results per case in the order of
+    /// `speeds`, identical for any thread count.
+    pub fn sweep_many(&self, cases: &[Case], speeds: &[f64]) -> Result<Vec<Vec<SweepPoint>>> {
+        if let Some(&v) = speeds.iter().find(|v| !(v.is_finite() && **v > 0.0)) {
+            return Err(invalid("speeds", v, "every speed must be finite and > 0 (m/s)"));
+        }
+        let pairs: Vec<(usize, f64)> = (0..cases.len()).flat_map(|c| speeds.iter().map(move |&v| (c, v))).collect();
+        let mut points = self.map(&pairs, |&(c, speed)| self.point(&cases[c], speed))?.into_iter();
+        Ok((0..cases.len()).map(|_| points.by_ref().take(speeds.len()).collect()).collect())
+    }
 }
 
 /// A rayon pool of `jobs` threads (0 = all cores).
-pub(crate) fn thread_pool(jobs: usize) -> Result<rayon::ThreadPool> {
+fn thread_pool(jobs: usize) -> Result<rayon::ThreadPool> {
     rayon::ThreadPoolBuilder::new()
         .num_threads(jobs)
         .build()
@@ -157,7 +229,7 @@ pub struct CriticalSpeed {
 
 /// Refine the sweep's maximum of the max downward deflection to `tolerance` (m/s) by golden section on fresh runs
 /// inside [v_{i−1}, v_{i+1}] around the sweep's best speed v_i.
-pub fn critical_speed(case: &Case, sweep: &[SweepPoint], tolerance: f64) -> Result<CriticalSpeed> {
+pub fn critical_speed(case: &Case, sweep: &[SweepPoint], tolerance: f64, runner: &Runner) -> Result<CriticalSpeed> {
     if sweep.is_empty() {
         return Err(invalid("sweep", "empty", "needs at least one speed"));
     }
@@ -172,7 +244,7 @@ pub fn critical_speed(case: &Case, sweep: &[SweepPoint], tolerance: f64) -> Resu
     let hi = sweep[(best + 1).min(sweep.len() - 1)].speed;
     let mut evaluations = Vec::new();
     let mut f = |v: f64| -> Result<f64> {
-        let w = run_point(case, v)?.max_downward_deflection;
+        let w = runner.point(case, v)?.max_downward_deflection;
         evaluations.push((v, w));
         Ok(w)
     };
@@ -201,6 +273,7 @@ pub fn optimal_device_force(
     (lower, upper): (f64, f64),
     scan: usize,
     tolerance: f64,
+    runner: &Runner,
 ) -> Result<OptimalForce> {
     if scenario.friction.devices.is_none() {
         return Err(invalid("friction.devices", "absent", "the optimal force needs [friction.devices]"));
@@ -211,19 +284,12 @@ pub fn optimal_device_force(
     if scan < 3 {
         return Err(invalid("scan", scan, "needs at least 3 forces"));
     }
-    let mut explored = Vec::new();
-    let mut f = |force: f64| -> Result<f64> {
-        let mut s = scenario.clone();
-        if let Some(d) = s.friction.devices.as_mut() {
-            d.force = force;
-        }
-        let w = run_point(&s.build()?, speed)?.max_downward_deflection;
-        explored.push((force, w));
-        Ok(w)
-    };
     let forces = log_spaced(lower, upper, scan);
-    let values: Vec<f64> = forces.iter().map(|&force| f(force)).collect::<Result<_>>()?;
-    let mut refined = refine_from_scan(scenario, speed, &forces, &values, tolerance)?;
+    let values = runner.map(&forces, |&force| {
+        Ok(runner.point(&with_device_force(scenario, force).build()?, speed)?.max_downward_deflection)
+    })?;
+    let mut explored: Vec<(f64, f64)> = forces.iter().copied().zip(values.iter().copied()).collect();
+    let mut refined = refine_from_scan(scenario, speed, &forces, &values, tolerance, runner)?;
     explored.append(&mut refined.explored);
     Ok(OptimalForce { explored, ..refined })
 }
@@ -237,14 +303,24 @@ pub fn refine_from_scan(
     forces: &[f64],
     values: &[f64],
     tolerance: f64,
+    runner: &Runner,
 ) -> Result<OptimalForce> {
     let best = (0..forces.len()).min_by(|&a, &b| values[a].total_cmp(&values[b])).expect("a non-empty scan");
     let bracket = (forces[best.saturating_sub(1)], forces[(best + 1).min(forces.len() - 1)]);
-    let mut refined = refine_device_force(scenario, speed, bracket, tolerance)?;
+    let mut refined = refine_device_force(scenario, speed, bracket, tolerance, runner)?;
     if values[best] < refined.max_downward_deflection {
         (refined.force, refined.max_downward_deflection) = (forces[best], values[best]);
     }
     Ok(refined)
+}
+
+/// `scenario` with device force `force` (N).
+fn with_device_force(scenario: &Scenario, force: f64) -> Scenario {
+    let mut s = scenario.clone();
+    if let Some(d) = s.friction.devices.as_mut() {
+        d.force = force;
+    }
+    s
 }
 
 /// `count` log-spaced values from `lower` to `upper` (both included).
@@ -260,15 +336,12 @@ pub fn refine_device_force(
     speed: f64,
     (lo, hi): (f64, f64),
     tolerance: f64,
+    runner: &Runner,
 ) -> Result<OptimalForce> {
     let mut explored = Vec::new();
     let mut f = |log_force: f64| -> Result<f64> {
         let force = log_force.exp();
-        let mut s = scenario.clone();
-        if let Some(d) = s.friction.devices.as_mut() {
-            d.force = force;
-        }
-        let w = run_point(&s.build()?, speed)?.max_downward_deflection;
+        let w = runner.point(&with_device_force(scenario, force).build()?, speed)?.max_downward_deflection;
         explored.push((force, w));
         Ok(-w)
     };

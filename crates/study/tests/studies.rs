@@ -2,7 +2,7 @@
 
 use study::StudyError;
 use study::scenario::{Scenario, TEMPLATE};
-use study::sweep::{critical_speed, optimal_device_force, speed_sweep, write_csv};
+use study::sweep::{Runner, critical_speed, optimal_device_force, write_csv};
 
 fn path_of(err: StudyError) -> String {
     match err {
@@ -65,11 +65,11 @@ fn bad_values_name_their_path() {
         ("[integration]\ntolerance = 0.5", "integration.tolerance"),
         ("[integration]\nsteady_start = 250.0", "integration.steady_start"),
         ("[friction.devices]\ncount = 3\npositions = [1.0]\nforce = 1.0", "friction.devices.count"),
-        ("[friction.devices]\ncount = 500\nforce = 1.0", "devices.count"),
+        ("[friction.devices]\ncount = 500\nforce = 1.0", "friction.devices.count"),
         ("[friction.devices]\npositions = [300.0]\nforce = 1.0", "friction.devices.positions"),
         (
             "[friction.distributed]\nforce_per_length = 1.0\nsubdivisions = 3\nquadrature = \"simpson\"",
-            "distributed.subdivisions",
+            "friction.distributed.subdivisions",
         ),
         ("[sweep]\nfrom = 100.0\nto = 50.0", "sweep.to"),
         ("[output]\nsections = [201.0]", "output.sections"),
@@ -93,7 +93,7 @@ fn sweeps_do_not_depend_on_thread_count() {
     let case = s.build().unwrap();
     let speeds = [120.0, 150.0, 180.0, 210.0];
     let csv = |jobs| {
-        let points = speed_sweep(&case, &speeds, jobs, &|_| {}).unwrap();
+        let points = Runner::new(jobs).speed_sweep(&case, &speeds).unwrap();
         let mut out = Vec::new();
         write_csv(&points, &mut out).unwrap();
         String::from_utf8(out).unwrap()
@@ -109,8 +109,8 @@ fn sweeps_do_not_depend_on_thread_count() {
 fn refined_linear_critical_speed() {
     let case = Scenario::default().build().unwrap();
     let speeds: Vec<f64> = (0..=11).map(|i| 150.0 + 10.0 * i as f64).collect();
-    let sweep = speed_sweep(&case, &speeds, 0, &|_| {}).unwrap();
-    let critical = critical_speed(&case, &sweep, 0.05).unwrap();
+    let sweep = Runner::new(0).speed_sweep(&case, &speeds).unwrap();
+    let critical = critical_speed(&case, &sweep, 0.05, &Runner::new(0)).unwrap();
     let v_cr = fem_beam::reference::uic60_on_soft_soil().infinite_beam().unwrap().critical_speed();
     eprintln!(
         "critical speed {:.2} m/s, peak {:.4} m (sweep max at {:?}), {} refinement runs",
@@ -128,7 +128,7 @@ fn refined_linear_critical_speed() {
 #[test]
 fn optimal_device_force_is_interior() {
     let s = Scenario::from_toml("[friction.devices]\ncount = 7\nforce = 1.0", "s").unwrap();
-    let best = optimal_device_force(&s, 206.0, (1e3, 1e7), 9, 0.05).unwrap();
+    let best = optimal_device_force(&s, 206.0, (1e3, 1e7), 9, 0.05, &Runner::new(0)).unwrap();
     let first = best.explored[0].1;
     let last = best.explored[8].1;
     eprintln!(
@@ -159,4 +159,82 @@ fn example_scenarios_are_valid() {
         }
     }
     assert_eq!(count, 6, "one example per study");
+}
+
+fn small_case() -> study::Case {
+    Scenario::from_toml("[mesh]\nlength = 60.0\nelements = 60\n[friction.devices]\ncount = 7\nforce = 20e3", "s")
+        .unwrap()
+        .build()
+        .unwrap()
+}
+
+fn temporary(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("frictrack-study-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// A sweep stopped half-way and resumed from its journal gives the same points, bit for bit, as one uninterrupted
+/// sweep, and runs only the missing speeds; a line cut short by a kill is dropped.
+#[test]
+fn journal_resumes_a_stopped_sweep_exactly() {
+    use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+    let case = small_case();
+    let speeds = [100.0, 130.0, 160.0, 190.0, 220.0, 250.0];
+    let whole = Runner::new(1).speed_sweep(&case, &speeds).unwrap();
+
+    let path = temporary("journal").join("sweep.journal");
+    let journal = study::Journal::open(&path, false).unwrap();
+    let stop = AtomicBool::new(false);
+    let done = AtomicUsize::new(0);
+    let progress = |n: usize| {
+        done.store(n, Ordering::Relaxed);
+        if n == 3 {
+            stop.store(true, Ordering::Relaxed);
+        }
+    };
+    let runner = Runner::new(1).with_progress(&progress).with_journal(Some(&journal)).with_stop(&stop);
+    assert_eq!(runner.speed_sweep(&case, &speeds), Err(study::StudyError::Interrupted));
+    drop(journal);
+    // Simulate a kill while a line was being written.
+    let mut bytes = std::fs::read(&path).unwrap();
+    assert_eq!(bytes.iter().filter(|&&b| b == b'\n').count(), 1 + 3, "header + three finished points");
+    bytes.extend_from_slice(b"{\"key\":\"cut sh");
+    std::fs::write(&path, &bytes).unwrap();
+
+    assert!(study::Journal::open(&path, false).is_err(), "an existing journal needs --resume");
+    let journal = study::Journal::open(&path, true).unwrap();
+    assert_eq!(journal.resumed(), 3);
+    let resumed = Runner::new(2).with_journal(Some(&journal)).speed_sweep(&case, &speeds).unwrap();
+    assert_eq!(resumed, whole, "bit-identical points after resume");
+    drop(journal);
+    let text = std::fs::read_to_string(&path).unwrap();
+    assert_eq!(text.lines().count(), 1 + speeds.len(), "the cut line is gone, each speed once:\n{text}");
+    assert!(text.ends_with('\n'));
+}
+
+/// A journal of another case does not feed this one: the key holds the case fingerprint.
+#[test]
+fn journal_keys_hold_the_case_fingerprint() {
+    let case = small_case();
+    let mut other =
+        Scenario::from_toml("[mesh]\nlength = 60.0\nelements = 60\n[friction.devices]\ncount = 7\nforce = 21e3", "s")
+            .unwrap();
+    assert_ne!(other.fingerprint(), Scenario::default().fingerprint());
+    let path = temporary("fingerprint").join("j");
+    let journal = study::Journal::open(&path, false).unwrap();
+    let runner = Runner::new(1).with_journal(Some(&journal));
+    let a = runner.point(&case, 150.0).unwrap();
+    let b = runner.point(&other.build().unwrap(), 150.0).unwrap();
+    assert_ne!(a, b);
+    // Title, speed, recorded sections and sweep range do not change what a point computes.
+    other.title = "renamed".into();
+    other.load.speed = 17.0;
+    other.output.sections = vec![3.0];
+    other.sweep.step = 1.0;
+    assert_eq!(other.fingerprint(), other.build().unwrap().fingerprint);
+    let mut same = other.clone();
+    same.title.clear();
+    assert_eq!(same.fingerprint(), other.fingerprint());
 }

@@ -1,0 +1,139 @@
+//! Finished work survives: an append-only journal with one JSON line per finished run, written and flushed to the
+//! operating system as soon as the run ends, so that a killed or interrupted sweep loses at most the runs that were
+//! in flight. A resumed sweep reads the journal back and skips every run whose key (case fingerprint + speed, see
+//! [`crate::Case::fingerprint`]) it holds; floats are written in shortest round-trip form and read back exactly, so a
+//! resumed sweep writes the same bytes as an uninterrupted one.
+//!
+//! Format: a first line `{"frictrack_journal":1}`, then lines `{"key":"…","value":…}`. A last line cut short by a
+//! kill is dropped (and truncated away) when the journal is reopened.
+
+use crate::error::{Result, StudyError};
+use serde::Serialize;
+use serde::de::DeserializeOwned;
+use serde_json::Value;
+use std::collections::HashMap;
+use std::fs::{File, OpenOptions};
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::sync::Mutex;
+
+const HEADER: &str = "{\"frictrack_journal\":1}";
+
+/// An append-only record of finished runs; shared by all worker threads.
+#[derive(Debug)]
+pub struct Journal {
+    path: PathBuf,
+    file: Mutex<File>,
+    finished: HashMap<String, Value>,
+}
+
+#[derive(Serialize)]
+struct Entry<'a, R> {
+    key: &'a str,
+    value: &'a R,
+}
+
+impl Journal {
+    /// Open the journal at `path`. A journal already there is an error unless `resume`, in which case its finished
+    /// runs are loaded; without one, `resume` starts an empty journal.
+    pub fn open(path: &Path, resume: bool) -> Result<Self> {
+        let error = |message: String| StudyError::Journal { path: path.display().to_string(), message };
+        let mut finished = HashMap::new();
+        let existing = match std::fs::read(path) {
+            Ok(bytes) => Some(bytes),
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => None,
+            Err(e) => return Err(error(e.to_string())),
+        };
+        let file = match existing {
+            Some(_) if !resume => {
+                return Err(error(
+                    "results of an unfinished earlier run are kept here: pass --resume to continue it, or delete \
+                     the file to start over"
+                        .into(),
+                ));
+            }
+            Some(bytes) => {
+                let good = read_entries(&bytes, &mut finished).map_err(error)?;
+                let file = OpenOptions::new().write(true).open(path).map_err(|e| error(e.to_string()))?;
+                // Drop a line cut short by a kill so that appends start on a fresh line.
+                file.set_len(good as u64).map_err(|e| error(e.to_string()))?;
+                let mut file = OpenOptions::new().append(true).open(path).map_err(|e| error(e.to_string()))?;
+                if good == 0 {
+                    writeln!(file, "{HEADER}").map_err(|e| error(e.to_string()))?;
+                }
+                file
+            }
+            None => {
+                if let Some(folder) = path.parent().filter(|p| !p.as_os_str().is_empty()) {
+                    std::fs::create_dir_all(folder).map_err(|e| error(e.to_string()))?;
+                }
+                let mut file = File::create(path).map_err(|e| error(e.to_string()))?;
+                writeln!(file, "{HEADER}").map_err(|e| error(e.to_string()))?;
+                file
+            }
+        };
+        Ok(Self { path: path.to_path_buf(), file: Mutex::new(file), finished })
+    }
+
+    /// Where it is.
+    pub fn path(&self) -> &Path {
+        &self.path
+    }
+
+    /// How many finished runs were read back when it was opened.
+    pub fn resumed(&self) -> usize {
+        self.finished.len()
+    }
+
+    /// The result stored under `key` by an earlier run, if any.
+    pub fn get<R: DeserializeOwned>(&self, key: &str) -> Option<R> {
+        self.finished.get(key).and_then(|v| R::deserialize(v).ok())
+    }
+
+    /// Append `value` under `key` as one line, written in one call and handed to the operating system at once.
+    pub fn record<R: Serialize>(&self, key: &str, value: &R) -> Result<()> {
+        let error = |message: String| StudyError::Journal { path: self.path.display().to_string(), message };
+        let mut line = serde_json::to_string(&Entry { key, value }).map_err(|e| error(e.to_string()))?;
+        line.push('\n');
+        let mut file = self.file.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
+        file.write_all(line.as_bytes()).and_then(|()| file.flush()).map_err(|e| error(e.to_string()))
+    }
+
+    /// Delete the journal once the final result files are written.
+    pub fn remove(self) -> Result<()> {
+        std::fs::remove_file(&self.path)
+            .map_err(|e| StudyError::Journal { path: self.path.display().to_string(), message: e.to_string() })
+    }
+}
+
+/// Load the entries of a journal; returns the length in bytes of its well-formed prefix.
+fn read_entries(bytes: &[u8], finished: &mut HashMap<String, Value>) -> std::result::Result<usize, String> {
+    let mut good = 0;
+    for (number, line) in bytes.split_inclusive(|&b| b == b'\n').enumerate() {
+        let complete = line.ends_with(b"\n");
+        let text = std::str::from_utf8(line).map(str::trim_end);
+        if number == 0 {
+            if text != Ok(HEADER) {
+                if !complete && HEADER.as_bytes().starts_with(line) {
+                    return Ok(0);
+                }
+                return Err("not a frictrack journal (first line differs); delete it or choose another output".into());
+            }
+        } else {
+            let entry: Option<(String, Value)> = text
+                .ok()
+                .and_then(|t| serde_json::from_str::<Value>(t).ok())
+                .and_then(|mut v| Some((v.get("key")?.as_str()?.to_string(), v.get_mut("value").map(Value::take)?)));
+            match entry {
+                Some((key, value)) if complete => {
+                    finished.insert(key, value);
+                }
+                // Only the very last line may be cut short (the process was killed while writing it).
+                _ if !complete => break,
+                _ => return Err(format!("line {} is not a journal entry", number + 1)),
+            }
+        }
+        good += line.len();
+    }
+    Ok(good)
+}
