@@ -428,7 +428,12 @@ impl Scenario {
                     length: z.length,
                     peak_damping: z.peak_ratio * foundation.critical_damping(&beam),
                 };
-                zones.element_damping(&mesh, foundation.damping)?
+                zones.element_damping(&mesh, foundation.damping).map_err(|e| match e {
+                    fem_beam::FemError::InvalidField { field: "absorbing_zones.length", value, allowed } => {
+                        invalid("foundation.absorbing_zones.length", value, allowed)
+                    }
+                    other => other.into(),
+                })?
             }
             None => vec![foundation.damping; mesh.elements],
         };

@@ -112,6 +112,11 @@ impl FrictionSolver for ClarabelQp {
             return Err(NscdError::Clarabel { step: self.step, status: format!("{status:?}") });
         }
         p.copy_from_slice(&self.solver.solution.x[self.n..]);
+        // An interior point stops a hair inside or outside the box (|p_j| − a_j ~ 1e-14 seen on zero bounds): clip,
+        // so that the impulses the stepper applies never exceed the device capacity.
+        for (pj, &a) in p.iter_mut().zip(&problem.bounds) {
+            *pj = pj.clamp(-a, a);
+        }
         // The law residual on v = v_free + M̂⁻¹Hᵀp, as the stepper will form it.
         let tolerance = problem.absolute_tolerance(self.tolerance, u_free);
         let residual = problem.outcome(v_free, p, &mut self.v, &mut self.u);
