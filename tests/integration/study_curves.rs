@@ -25,11 +25,17 @@ fn rounded_json(value: &serde_json::Value) -> serde_json::Value {
     }
 }
 
-/// The CSV as rows of rounded numbers (non-numeric cells kept as text), thinned to about 40 rows.
+/// The CSV as rows of rounded numbers (non-numeric cells kept as text), thinned to about 40 rows. Each number is
+/// rounded to four significant digits, and set to 0 below 1e-6 of its column's largest magnitude, so that values
+/// that are zero up to round-off (e.g. 1e-11 m against a 0.1 m peak) print as 0 instead of as noise.
 fn thinned_table(csv: &str) -> serde_json::Value {
     let mut lines = csv.lines();
     let header = lines.next().unwrap_or_default().to_string();
-    let rows: Vec<&str> = lines.collect();
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    let columns = rows.first().map_or(0, Vec::len);
+    let scale: Vec<f64> = (0..columns)
+        .map(|c| rows.iter().filter_map(|r| r.get(c)?.parse::<f64>().ok()).fold(0.0, |m: f64, x| m.max(x.abs())))
+        .collect();
     let stride = rows.len().div_ceil(40).max(1);
     let picked: Vec<serde_json::Value> = rows
         .iter()
@@ -37,9 +43,16 @@ fn thinned_table(csv: &str) -> serde_json::Value {
         .filter(|(i, _)| i % stride == 0 || *i + 1 == rows.len())
         .map(|(_, row)| {
             serde_json::Value::Array(
-                row.split(',')
-                    .map(|cell| {
-                        cell.parse::<f64>().map_or_else(|_| serde_json::json!(cell), |x| serde_json::json!(round4(x)))
+                row.iter()
+                    .zip(&scale)
+                    .map(|(cell, &scale)| {
+                        cell.parse::<f64>().map_or_else(
+                            |_| serde_json::json!(cell),
+                            |x| {
+                                let x = if x.abs() < 1e-6 * scale { 0.0 } else { x };
+                                serde_json::json!(round4(x))
+                            },
+                        )
                     })
                     .collect(),
             )

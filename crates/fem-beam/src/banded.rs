@@ -105,6 +105,9 @@ impl SymmetricBanded {
     /// y = A x.
     pub fn mul_vec(&self, x: &[f64], y: &mut [f64]) {
         let b = self.bandwidth;
+        if b == 3 && self.n >= 4 {
+            return self.mul_vec_bandwidth3(x, y);
+        }
         y.iter_mut().for_each(|v| *v = 0.0);
         for i in 0..self.n {
             let row = &self.data[i * (b + 1)..(i + 1) * (b + 1)];
@@ -116,6 +119,37 @@ impl SymmetricBanded {
                 y[j] += a * x[i];
             }
             y[i] += acc;
+        }
+    }
+
+    /// y = A x for half-bandwidth 3 (Hermite beams), row by row from the stored lower band and the upper band by
+    /// symmetry: y_i = Σ_{|i−j|≤3} A_ij x_j, each y_i written once.
+    fn mul_vec_bandwidth3(&self, x: &[f64], y: &mut [f64]) {
+        let (n, d) = (self.n, &self.data);
+        // Row i stores [A_{i,i−3}, A_{i,i−2}, A_{i,i−1}, A_ii] at 4i..4i+4; A_{i,i+k} = A_{i+k,i} is at 4(i+k) + 3 − k.
+        let lower = |i: usize, k: usize| d[4 * i + 3 - k];
+        let edge = |i: usize| {
+            let mut acc = lower(i, 0) * x[i];
+            for k in 1..=3 {
+                if i >= k {
+                    acc += lower(i, k) * x[i - k];
+                }
+                if i + k < n {
+                    acc += lower(i + k, k) * x[i + k];
+                }
+            }
+            acc
+        };
+        let interior = 3..n.saturating_sub(3).max(3);
+        for i in (0..3).chain(interior.end..n) {
+            y[i] = edge(i);
+        }
+        for i in interior {
+            // One bounds check per slice: a = data[4i..4i+13] holds A_{i,i−3..i} and A_{i+1,i}, A_{i+2,i}, A_{i+3,i}.
+            let a: &[f64; 13] = d[4 * i..4 * i + 13].try_into().expect("inside the band");
+            let z: &[f64; 7] = x[i - 3..i + 4].try_into().expect("inside the vector");
+            y[i] =
+                a[3] * z[3] + (a[2] * z[2] + a[6] * z[4]) + (a[1] * z[1] + a[9] * z[5]) + (a[0] * z[0] + a[12] * z[6]);
         }
     }
 
@@ -314,20 +348,20 @@ impl BandedLdlt {
         let f = &self.factors;
         let n = self.n;
         let (mut y1, mut y2, mut y3) = (0.0, 0.0, 0.0);
-        for i in 0..n {
-            let row = &f[4 * i..4 * i + 4];
-            let y = x[i] - row[2] * y1 - row[1] * y2 - row[0] * y3;
-            x[i] = y;
+        // Rows of 4 zipped with x: no bounds checks in the loops.
+        debug_assert_eq!(f.len(), 4 * n);
+        for (row, xi) in f.chunks_exact(4).zip(x.iter_mut()) {
+            let y = *xi - row[2] * y1 - row[1] * y2 - row[0] * y3;
+            *xi = y;
             (y3, y2, y1) = (y2, y1, y);
         }
         // Backward: x_i = y_i/D_i − L_{i+1,i} x_{i+1} − L_{i+2,i} x_{i+2} − L_{i+3,i} x_{i+3}, carrying the L rows
         // below (zero past the end) instead of testing bounds.
         let (mut x1, mut x2, mut x3) = (0.0, 0.0, 0.0);
         let (mut below1, mut below2, mut below3) = ([0.0f64; 3], [0.0f64; 3], [0.0f64; 3]);
-        for i in (0..n).rev() {
-            let row = &f[4 * i..4 * i + 4];
-            let xi = x[i] / row[3] - below1[2] * x1 - below2[1] * x2 - below3[0] * x3;
-            x[i] = xi;
+        for (row, x_i) in f.chunks_exact(4).zip(x.iter_mut()).rev() {
+            let xi = *x_i / row[3] - below1[2] * x1 - below2[1] * x2 - below3[0] * x3;
+            *x_i = xi;
             (x3, x2, x1) = (x2, x1, xi);
             (below3, below2, below1) = (below2, below1, [row[0], row[1], row[2]]);
         }

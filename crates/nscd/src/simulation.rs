@@ -401,13 +401,13 @@ impl<'a> Simulation<'a> {
             sum * mesh.element_length()
         };
         if in_window(start) {
-            observe_extremes(&stepper.q, 0.0, &mut extremes);
+            observe_extremes(stepper.q(), 0.0, &mut extremes);
         }
         let mut norm_integral = 0.0;
-        let mut previous_norm = spatial_norm(&stepper.q);
+        let mut previous_norm = spatial_norm(stepper.q());
         let mut full = Buffers::new(dofs.full_len());
         for r in &mut recorders {
-            full.expand(dofs, &stepper.q, &stepper.v);
+            full.expand(dofs, stepper.q(), stepper.v());
             let m0 = self.moment_at_node(r.node, &full, &load, &[(0.0, 1.0)], None);
             record(r, 0.0, start, model.deflection_at(&full.q, r.position)?, m0, 0.0);
         }
@@ -417,14 +417,14 @@ impl<'a> Simulation<'a> {
         let mut sections_sum = 0usize;
         let mut v_before = vec![0.0; dofs.free_len()];
         for k in 1..=total_steps {
-            v_before.copy_from_slice(&stepper.v);
+            v_before.copy_from_slice(stepper.v());
             let report = stepper.step(&load)?;
             let keep_going = observer(&StepView {
                 step: k,
                 time: stepper.time,
                 load_position: load.position(stepper.time),
-                displacement: &stepper.q,
-                velocity: &stepper.v,
+                displacement: stepper.q(),
+                velocity: stepper.v(),
                 previous_velocity: &v_before,
                 impulses: &stepper.p,
                 section_velocities: &stepper.u,
@@ -437,17 +437,17 @@ impl<'a> Simulation<'a> {
             max_residual = max_residual.max(report.residual);
             let time = stepper.time;
             if in_window(load.position(time)) {
-                observe_extremes(&stepper.q, time, &mut extremes);
+                observe_extremes(stepper.q(), time, &mut extremes);
             }
             if k <= crossing_steps {
-                let norm = spatial_norm(&stepper.q);
+                let norm = spatial_norm(stepper.q());
                 norm_integral += 0.5 * (norm + previous_norm) * h;
                 previous_norm = norm;
             }
             for r in &mut recorders {
                 // State after the step with the mean acceleration over it, the load where it now is, and the
                 // friction forces p/h of the step.
-                full.expand_step(dofs, &stepper.q, &stepper.v, &v_before, h);
+                full.expand_step(dofs, stepper.q(), stepper.v(), &v_before, h);
                 let impulse = r.contact.map_or(0.0, |j| stepper.p[j]);
                 let moment =
                     self.moment_at_node(r.node, &full, &load, &[(time, 1.0)], Some((&stepper.p, h, &r.inside)));
@@ -478,8 +478,8 @@ impl<'a> Simulation<'a> {
             },
             step: h,
             section_positions: self.contacts.positions().to_vec(),
-            final_displacement: stepper.q.clone(),
-            final_velocity: stepper.v.clone(),
+            final_displacement: stepper.q().to_vec(),
+            final_velocity: stepper.v().to_vec(),
         })
     }
 

@@ -96,10 +96,8 @@ pub struct MoreauJean<'a> {
     factor: &'a BandedLdlt,
     problem: FrictionProblem<'a>,
     solver: Box<dyn FrictionSolver + 'a>,
-    /// Displacement q_k (free DOFs).
-    pub q: Vec<f64>,
-    /// Velocity v_k.
-    pub v: Vec<f64>,
+    q: Vec<f64>,
+    v: Vec<f64>,
     /// Friction impulses of the last step (N·s), also the next warm start.
     pub p: Vec<f64>,
     /// Section velocities u_{k+1} = H v_{k+1} of the last step (m/s).
@@ -114,6 +112,16 @@ pub struct MoreauJean<'a> {
     pub last_report: StepReport,
     v_prev: Vec<f64>,
     q_prev: Vec<f64>,
+    /// K q_k, K v_k, C v_k, M v_k: every banded product a step needs, one product per matrix per step (K q is
+    /// carried forward as K q_{k+1} = K q_k + h K v_θ, exact up to round-off).
+    kq: Vec<f64>,
+    kv: Vec<f64>,
+    cv: Vec<f64>,
+    mv: Vec<f64>,
+    /// The same products of v_{k+1}, swapped into place at the end of a step.
+    kv_next: Vec<f64>,
+    cv_next: Vec<f64>,
+    mv_next: Vec<f64>,
     work: Vec<f64>,
     work2: Vec<f64>,
     u_free: Vec<f64>,
@@ -153,11 +161,24 @@ impl<'a> MoreauJean<'a> {
             last_report: StepReport::default(),
             v_prev: vec![0.0; n],
             q_prev: vec![0.0; n],
+            kq: vec![0.0; n],
+            kv: vec![0.0; n],
+            cv: vec![0.0; n],
+            mv: vec![0.0; n],
+            kv_next: vec![0.0; n],
+            cv_next: vec![0.0; n],
+            mv_next: vec![0.0; n],
             work: vec![0.0; n],
             work2: vec![0.0; n],
             u_free: vec![0.0; m],
             v_free: vec![0.0; n],
         };
+        stepper.system.stiffness.mul_vec(&stepper.q, &mut stepper.kq);
+        stepper.system.stiffness.mul_vec(&stepper.v, &mut stepper.kv);
+        stepper.system.mass.mul_vec(&stepper.v, &mut stepper.mv);
+        if stepper.damped {
+            stepper.system.damping.mul_vec(&stepper.v, &mut stepper.cv);
+        }
         let (kinetic, strain) = stepper.energies();
         stepper.energy.initial = kinetic + strain;
         stepper.energy.current = kinetic + strain;
@@ -181,8 +202,19 @@ impl<'a> MoreauJean<'a> {
         self.h
     }
 
+    /// Displacement q_k of the free DOFs (m, rad).
+    pub fn q(&self) -> &[f64] {
+        &self.q
+    }
+
+    /// Velocity v_k of the free DOFs (m/s, rad/s).
+    pub fn v(&self) -> &[f64] {
+        &self.v
+    }
+
+    /// Kinetic ½vᵀMv and strain ½qᵀKq energy (J), from the cached products.
     fn energies(&self) -> (f64, f64) {
-        (0.5 * self.system.mass.quadratic_form(&self.v), 0.5 * self.system.stiffness.quadratic_form(&self.q))
+        (0.5 * dot(&self.v, &self.mv), 0.5 * dot(&self.q, &self.kq))
     }
 
     /// The free velocity v_free of the next step (no friction impulse), without advancing:
@@ -190,25 +222,16 @@ impl<'a> MoreauJean<'a> {
     pub fn free_velocity(&mut self, forcing: &dyn Forcing) -> &[f64] {
         let (h, theta) = (self.h, self.theta);
         let (t0, t1) = (self.time, self.time + h);
-        let n = self.q.len();
-        for i in 0..n {
-            self.work2[i] = self.q[i] + h * theta * self.v[i];
-        }
-        self.system.stiffness.mul_vec(&self.work2, &mut self.work);
-        if self.damped {
-            self.system.damping.mul_vec(&self.v, &mut self.work2);
-            for i in 0..n {
-                self.work[i] += self.work2[i];
-            }
-        }
-        for w in self.work.iter_mut() {
-            *w *= -h;
+        // −h [C v_k + K(q_k + hθ v_k)] from the cached products.
+        let damped = if self.damped { 1.0 } else { 0.0 };
+        for (((w, kq), kv), cv) in self.work.iter_mut().zip(&self.kq).zip(&self.kv).zip(&self.cv) {
+            *w = -h * (kq + h * theta * kv + damped * cv);
         }
         forcing.add_to(t1, h * theta, &mut self.work);
         forcing.add_to(t0, h * (1.0 - theta), &mut self.work);
         self.factor.solve_in_place(&mut self.work);
-        for i in 0..n {
-            self.v_free[i] = self.v[i] + self.work[i];
+        for ((f, v), w) in self.v_free.iter_mut().zip(&self.v).zip(&self.work) {
+            *f = v + w;
         }
         &self.v_free
     }
@@ -218,7 +241,6 @@ impl<'a> MoreauJean<'a> {
     pub fn step(&mut self, forcing: &dyn Forcing) -> Result<StepReport> {
         let (h, theta) = (self.h, self.theta);
         let (t0, t1) = (self.time, self.time + h);
-        let n = self.q.len();
         self.free_velocity(forcing);
         self.v_prev.copy_from_slice(&self.v);
         self.q_prev.copy_from_slice(&self.q);
@@ -236,19 +258,19 @@ impl<'a> MoreauJean<'a> {
                     residual: report.residual,
                     iterations: report.iterations,
                     tolerance: report.tolerance,
-                    hint: "raise the iteration cap or the tolerance, or choose another solver (--solver newton|clarabel)",
+                    hint: "raise the iteration cap or the tolerance, or choose another solver (--solver clarabel or projection)",
                 });
             }
             self.work.iter_mut().for_each(|w| *w = 0.0);
             self.contacts.add_transpose(&self.p, &mut self.work);
             self.factor.solve_in_place(&mut self.work);
-            for i in 0..n {
-                self.v[i] += self.work[i];
+            for (v, w) in self.v.iter_mut().zip(&self.work) {
+                *v += w;
             }
             report
         };
-        for i in 0..n {
-            self.q[i] += h * (theta * self.v[i] + (1.0 - theta) * self.v_prev[i]);
+        for ((q, v), v_prev) in self.q.iter_mut().zip(&self.v).zip(&self.v_prev) {
+            *q += h * (theta * v + (1.0 - theta) * v_prev);
         }
         if !self.v.iter().chain(&self.q).all(|x| x.is_finite()) {
             return Err(NscdError::NonFinite {
@@ -270,24 +292,44 @@ impl<'a> MoreauJean<'a> {
 
     fn book_energy(&mut self, forcing: &dyn Forcing, t0: f64, t1: f64) {
         let (h, theta) = (self.h, self.theta);
-        let n = self.q.len();
-        // work = v_θ
-        for i in 0..n {
-            self.work[i] = theta * self.v[i] + (1.0 - theta) * self.v_prev[i];
+        // The products of v_{k+1}: the only banded products of a step.
+        self.system.stiffness.mul_vec(&self.v, &mut self.kv_next);
+        self.system.mass.mul_vec(&self.v, &mut self.mv_next);
+        if self.damped {
+            self.system.damping.mul_vec(&self.v, &mut self.cv_next);
+        }
+        // work = v_θ, work2 = K v_θ, so that K Δq = h K v_θ.
+        for ((w, v), v_prev) in self.work.iter_mut().zip(&self.v).zip(&self.v_prev) {
+            *w = theta * v + (1.0 - theta) * v_prev;
+        }
+        for ((w, kv_next), kv) in self.work2.iter_mut().zip(&self.kv_next).zip(&self.kv) {
+            *w = theta * kv_next + (1.0 - theta) * kv;
         }
         let load = h * (theta * forcing.power(t1, &self.work) + (1.0 - theta) * forcing.power(t0, &self.work));
-        let viscous = if self.damped { h * self.system.damping.quadratic_form(&self.work) } else { 0.0 };
-        let friction: f64 = self.contacts.rows().iter().zip(&self.p).map(|(row, p)| row.dot(&self.work) * p).sum();
-        let numerical = if theta > 0.5 {
-            for i in 0..n {
-                self.work[i] = self.v[i] - self.v_prev[i];
-                self.work2[i] = self.q[i] - self.q_prev[i];
-            }
-            (theta - 0.5)
-                * (self.system.mass.quadratic_form(&self.work) + self.system.stiffness.quadratic_form(&self.work2))
+        let viscous = if self.damped {
+            let cv_theta = |i: usize| theta * self.cv_next[i] + (1.0 - theta) * self.cv[i];
+            h * (0..self.v.len()).map(|i| self.work[i] * cv_theta(i)).sum::<f64>()
         } else {
             0.0
         };
+        let friction: f64 = self.contacts.rows().iter().zip(&self.p).map(|(row, p)| row.dot(&self.work) * p).sum();
+        let numerical = if theta > 0.5 {
+            // (θ − ½)[ΔvᵀMΔv + ΔqᵀKΔq] with MΔv = Mv_{k+1} − Mv_k and KΔq = h K v_θ.
+            let (mut kinetic, mut strain) = (0.0, 0.0);
+            for i in 0..self.v.len() {
+                kinetic += (self.v[i] - self.v_prev[i]) * (self.mv_next[i] - self.mv[i]);
+                strain += (self.q[i] - self.q_prev[i]) * h * self.work2[i];
+            }
+            (theta - 0.5) * (kinetic + strain)
+        } else {
+            0.0
+        };
+        for (kq, kv_theta) in self.kq.iter_mut().zip(&self.work2) {
+            *kq += h * kv_theta;
+        }
+        std::mem::swap(&mut self.kv, &mut self.kv_next);
+        std::mem::swap(&mut self.mv, &mut self.mv_next);
+        std::mem::swap(&mut self.cv, &mut self.cv_next);
         let before = self.energy.current;
         let (kinetic, strain) = self.energies();
         let e = &mut self.energy;
@@ -301,6 +343,10 @@ impl<'a> MoreauJean<'a> {
         let step_residual = e.current - before - (load - viscous + friction - numerical);
         e.max_step_residual = e.max_step_residual.max(step_residual.abs());
     }
+}
+
+fn dot(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum()
 }
 
 /// M̂ = M + hθC + h²θ²K.

@@ -15,7 +15,7 @@ impl Lcg {
 #[test]
 fn banded_ldlt_matches_dense_solve() {
     let mut rng = Lcg(7);
-    for &(n, b) in &[(1usize, 0usize), (5, 1), (40, 3), (101, 3), (64, 7)] {
+    for &(n, b) in &[(1usize, 0usize), (5, 1), (4, 3), (6, 3), (7, 3), (40, 3), (101, 3), (64, 7)] {
         let mut a = SymmetricBanded::zeros(n, b);
         for i in 0..n {
             for j in i.saturating_sub(b)..i {

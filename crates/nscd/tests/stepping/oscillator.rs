@@ -37,7 +37,7 @@ fn oscillator(
     let mut out = vec![(0.0, x0)];
     for _ in 0..steps {
         stepper.step(forcing).unwrap();
-        out.push((stepper.time, stepper.q[0]));
+        out.push((stepper.time, stepper.q()[0]));
         // The energy identity holds in the nonsmooth case too, up to the round-off accumulated over the steps.
         let scale = stepper.energy.initial.max(stepper.energy.load_work.abs());
         assert!(stepper.energy.residual().abs() <= 1e-10 * scale);

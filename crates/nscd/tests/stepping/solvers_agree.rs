@@ -57,7 +57,7 @@ fn same_state_difference(
             skipped += 1;
             continue;
         }
-        let d = relative_difference(&stepper.v, &v_b);
+        let d = relative_difference(stepper.v(), &v_b);
         // The per-step bound for two exact solvers.
         assert!(d <= 1e-8, "{a:?} vs {b:?}, step {step}: {d:e}; law residuals {report_a:?} vs {report_b:?}");
         worst = worst.max(d);
