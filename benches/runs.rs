@@ -35,5 +35,58 @@ fn whole_runs(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, whole_runs);
+/// The friction-free run beside the 2000 bare banded solves with the same M̂ (the yardstick: ≤ 1.3×).
+fn friction_free_against_bare_solves(c: &mut Criterion) {
+    let model = uic60_on_soft_soil().model().unwrap();
+    let settings = RunSettings::default();
+    let system = nscd::LinearSystem::from_beam(&model);
+    let h = settings.load_advance / settings.speed;
+    let m_hat = nscd::stepper::iteration_matrix(&system, nscd::stepper::Integration { theta: settings.theta, step: h });
+    let factor = m_hat.factor().unwrap();
+    let steps = (model.mesh().length / settings.load_advance).round() as usize;
+    let mut group = c.benchmark_group("friction_free_vs_bare_solves");
+    group.sample_size(20).warm_up_time(Duration::from_secs(1)).measurement_time(Duration::from_secs(5));
+    group.bench_function(BenchmarkId::new("bare_banded_solves", steps), |b| {
+        let mut x = vec![1.0; system.dofs()];
+        b.iter(|| {
+            for _ in 0..steps {
+                factor.solve_in_place(black_box(&mut x));
+            }
+        })
+    });
+    let none = ContactSet::new();
+    group.bench_function(BenchmarkId::new("whole_run_no_friction", steps), |b| {
+        b.iter(|| Simulation::new(&model, black_box(&none), &settings).unwrap().run().unwrap())
+    });
+    group.finish();
+}
+
+/// Whole-run time against the element count (200 m beam, Δx = 0.1 m ≤ the element length, so 2000 steps each):
+/// it must grow linearly with DOFs × steps.
+fn scaling(c: &mut Criterion) {
+    let settings = RunSettings::default();
+    let mut group = c.benchmark_group("scaling");
+    group.sample_size(10).warm_up_time(Duration::from_secs(1)).measurement_time(Duration::from_secs(5));
+    for elements in [200usize, 400, 1000, 2000] {
+        let mut case = uic60_on_soft_soil();
+        case.mesh.elements = elements;
+        let model = case.model().unwrap();
+        let mut cases = vec![
+            ("no_friction", ContactSet::new()),
+            ("devices_31_100kN", Devices::uniform(31, 100e3).contact_set(&model).unwrap()),
+        ];
+        // Distributed friction on 2000 elements takes ~15 s a run: measured by the probe example instead.
+        if elements <= 1000 {
+            cases.push(("distributed_5kN_per_m", DistributedFriction::new(5e3).contact_set(&model).unwrap()));
+        }
+        for (name, contacts) in cases {
+            group.bench_function(BenchmarkId::new(name, elements), |b| {
+                b.iter(|| Simulation::new(&model, black_box(&contacts), &settings).unwrap().run().unwrap())
+            });
+        }
+    }
+    group.finish();
+}
+
+criterion_group!(benches, whole_runs, friction_free_against_bare_solves, scaling);
 criterion_main!(benches);

@@ -1,7 +1,7 @@
 //! `frictrack init [path]`: write the documented scenario template (the reference case, every key explained).
 
 use crate::files::write_atomically;
-use anyhow::{Result, bail};
+use anyhow::Result;
 use clap::Args;
 use std::path::PathBuf;
 use study::scenario::TEMPLATE;
@@ -22,7 +22,11 @@ pub fn run(args: &InitArgs) -> Result<()> {
         None => print!("{TEMPLATE}"),
         Some(path) => {
             if path.exists() && !args.force {
-                bail!("{} exists; use --force to overwrite it", path.display());
+                return Err(crate::files::input_error(
+                    "scenario file",
+                    path.display(),
+                    "exists already; use --force to overwrite it",
+                ));
             }
             write_atomically(path, TEMPLATE.as_bytes())?;
             eprintln!("wrote {}", path.display());

@@ -119,8 +119,8 @@ fn init_check_run_and_sweep_a_scenario_file() {
     let out = frictrack(&["check", template.to_str().unwrap()]);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     assert!(String::from_utf8_lossy(&out.stdout).contains(": ok"));
-    // Refuses to overwrite.
-    assert!(!frictrack(&["init", template.to_str().unwrap()]).status.success());
+    // Refuses to overwrite (invalid input: exit 2).
+    assert_eq!(frictrack(&["init", template.to_str().unwrap()]).status.code(), Some(2));
 
     let small = dir.join("small.toml");
     std::fs::write(

@@ -1,7 +1,8 @@
 //! Times one reference run: `cargo run --release -p nscd --example probe -- <case>` with case one of
 //! `none`, `devices7`, `devices31`, `distributed1k`, `distributed10k`, `distributed5k` (default), `distributed5k-whole`,
-//! optionally followed by a step count to stop early (for instruction counts under callgrind) and a solver tolerance.
-//! Prints the wall time of the time loop and the solver statistics.
+//! optionally followed by a step count to stop early (for instruction counts under callgrind), a solver tolerance and
+//! an element count (200 m beam; default 200). Prints the wall time of the time loop, the solver statistics and the
+//! peak resident memory of the process (VmHWM, Linux).
 
 use fem_beam::reference::uic60_on_soft_soil;
 use friction::{ContactSet, Devices, DistributedFriction};
@@ -9,7 +10,11 @@ use nscd::{RunSettings, Simulation};
 
 fn main() {
     let case = std::env::args().nth(1).unwrap_or_else(|| "distributed5k".into());
-    let model = uic60_on_soft_soil().model().expect("reference model");
+    let mut reference = uic60_on_soft_soil();
+    if let Some(elements) = std::env::args().nth(4).and_then(|s| s.parse().ok()) {
+        reference.mesh.elements = elements;
+    }
+    let model = reference.model().expect("reference model");
     let mut settings = RunSettings::default();
     if let Some(t) = std::env::args().nth(3).and_then(|s| s.parse().ok()) {
         settings.solver.tolerance = t;
@@ -41,4 +46,8 @@ fn main() {
         s.sections,
         s.wall_time
     );
+    let peak = std::fs::read_to_string("/proc/self/status")
+        .ok()
+        .and_then(|t| t.lines().find(|l| l.starts_with("VmHWM:")).map(|l| l["VmHWM:".len()..].trim().to_string()));
+    println!("peak resident memory: {}", peak.unwrap_or_else(|| "unknown".into()));
 }
