@@ -222,10 +222,9 @@ impl<'a> MoreauJean<'a> {
     pub fn free_velocity(&mut self, forcing: &dyn Forcing) -> &[f64] {
         let (h, theta) = (self.h, self.theta);
         let (t0, t1) = (self.time, self.time + h);
-        // −h [C v_k + K(q_k + hθ v_k)] from the cached products.
-        let damped = if self.damped { 1.0 } else { 0.0 };
+        // −h [C v_k + K(q_k + hθ v_k)] from the cached products (C v stays zero without damping).
         for (((w, kq), kv), cv) in self.work.iter_mut().zip(&self.kq).zip(&self.kv).zip(&self.cv) {
-            *w = -h * (kq + h * theta * kv + damped * cv);
+            *w = -h * (kq + h * theta * kv + cv);
         }
         forcing.add_to(t1, h * theta, &mut self.work);
         forcing.add_to(t0, h * (1.0 - theta), &mut self.work);

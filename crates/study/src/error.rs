@@ -87,7 +87,7 @@ impl StudyError {
 /// Result alias of this crate.
 pub type Result<T, E = StudyError> = std::result::Result<T, E>;
 
-/// An `InvalidField` error.
-pub(crate) fn invalid(path: &str, value: impl std::fmt::Display, allowed: impl Into<String>) -> StudyError {
+/// An `InvalidField` error: the field (dotted path or command-line option), its value, what is allowed.
+pub fn invalid(path: &str, value: impl std::fmt::Display, allowed: impl Into<String>) -> StudyError {
     StudyError::InvalidField { path: path.into(), value: value.to_string(), allowed: allowed.into() }
 }

@@ -54,10 +54,9 @@ impl Journal {
             }
             Some(bytes) => {
                 let good = read_entries(&bytes, &mut finished).map_err(error)?;
-                let file = OpenOptions::new().write(true).open(path).map_err(|e| error(e.to_string()))?;
-                // Drop a line cut short by a kill so that appends start on a fresh line.
-                file.set_len(good as u64).map_err(|e| error(e.to_string()))?;
                 let mut file = OpenOptions::new().append(true).open(path).map_err(|e| error(e.to_string()))?;
+                // Drop a line cut short by a kill so that appends start on a fresh line (appends go to the new end).
+                file.set_len(good as u64).map_err(|e| error(e.to_string()))?;
                 if good == 0 {
                     writeln!(file, "{HEADER}").map_err(|e| error(e.to_string()))?;
                 }

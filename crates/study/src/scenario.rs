@@ -428,25 +428,12 @@ impl Scenario {
                     length: z.length,
                     peak_damping: z.peak_ratio * foundation.critical_damping(&beam),
                 };
-                zones.element_damping(&mesh, foundation.damping).map_err(|e| match e {
-                    fem_beam::FemError::InvalidField { field: "absorbing_zones.length", value, allowed } => {
-                        invalid("foundation.absorbing_zones.length", value, allowed)
-                    }
-                    other => other.into(),
-                })?
+                zones.element_damping(&mesh, foundation.damping).map_err(|e| under("foundation", e.into()))?
             }
             None => vec![foundation.damping; mesh.elements],
         };
         let model = BeamModel::with_element_damping(beam, foundation, mesh, supports, damping)?;
-        let contacts = self.contacts(&model).map_err(|e| match e {
-            StudyError::Friction(friction::FrictionError::InvalidField { field, value, allowed }) => {
-                invalid(&format!("friction.{field}"), value, allowed)
-            }
-            StudyError::Friction(friction::FrictionError::InvalidCount { field, value, allowed }) => {
-                invalid(&format!("friction.{field}"), value, allowed)
-            }
-            other => other,
-        })?;
+        let contacts = self.contacts(&model).map_err(|e| under("friction", e))?;
         finite_non_negative("load.force", self.load.force, "N")?;
         finite_positive("load.speed", self.load.speed, "m/s")?;
         let settings = self.run_settings(self.load.speed);
@@ -522,6 +509,28 @@ impl Scenario {
             settings.initial = InitialState::SteadyState { position };
         }
         settings
+    }
+}
+
+/// A field error of a lower layer, whose name is relative to the scenario section `section` (e.g. `devices.count` in
+/// `[friction]`), renamed to its full path; other errors unchanged.
+fn under(section: &str, error: StudyError) -> StudyError {
+    use fem_beam::FemError as F;
+    use friction::FrictionError as R;
+    match error {
+        StudyError::Friction(R::InvalidField { field, value, allowed }) => {
+            invalid(&format!("{section}.{field}"), value, allowed)
+        }
+        StudyError::Friction(R::InvalidCount { field, value, allowed }) => {
+            invalid(&format!("{section}.{field}"), value, allowed)
+        }
+        StudyError::Beam(F::InvalidField { field, value, allowed }) => {
+            invalid(&format!("{section}.{field}"), value, allowed)
+        }
+        StudyError::Beam(F::InvalidCount { field, value, allowed }) => {
+            invalid(&format!("{section}.{field}"), value, allowed)
+        }
+        other => other,
     }
 }
 
