@@ -6,6 +6,8 @@ use anyhow::Result;
 use clap::Args;
 use fem_beam::reference::{InfiniteBeam, uic60_on_soft_soil};
 use serde::Serialize;
+use study::StudyError;
+use study::scenario::SweepSection;
 
 /// Options of `frictrack analytic`.
 #[derive(Debug, Args)]
@@ -37,21 +39,23 @@ struct Point {
 
 /// Parse `A:B:STEP` into the list of speeds A, A+STEP, … ≤ B (inclusive up to round-off).
 pub fn parse_range(text: &str) -> Result<Vec<f64>> {
-    let bad = |allowed: &str| crate::files::input_error("--speeds", text, allowed);
+    let bad = |allowed: &str| study::error::invalid("--speeds", text, allowed);
     let parts: Vec<&str> = text.split(':').collect();
     if parts.len() != 3 {
-        return Err(bad("expected A:B:STEP (m/s), e.g. 10:300:5"));
+        return Err(bad("expected A:B:STEP (m/s), e.g. 10:300:5").into());
     }
     let num = |s: &str| s.trim().parse::<f64>().map_err(|_| bad(&format!("`{s}` is not a number; expected A:B:STEP")));
-    let (a, b, step) = (num(parts[0])?, num(parts[1])?, num(parts[2])?);
-    if !(a.is_finite() && b.is_finite() && step.is_finite() && a > 0.0 && b >= a && step > 0.0) {
-        return Err(bad("need 0 < A ≤ B and STEP > 0 (m/s)"));
+    let range = SweepSection { from: num(parts[0])?, to: num(parts[1])?, step: num(parts[2])? };
+    // The same checks and the same speeds as a scenario's [sweep] section.
+    range.validate("--speeds").map_err(|e| match e {
+        StudyError::InvalidField { path, allowed, .. } => bad(&format!("{}: {allowed}", &path["--speeds.".len()..])),
+        other => other,
+    })?;
+    let speeds = range.speeds();
+    if speeds.len() > 1_000_000 {
+        return Err(bad(&format!("gives {} speeds, at most 1 000 000 allowed", speeds.len())).into());
     }
-    let count = ((b - a) / step + 1e-9).floor() as usize + 1;
-    if count > 1_000_000 {
-        return Err(bad(&format!("gives {count} speeds, at most 1 000 000 allowed")));
-    }
-    Ok((0..count).map(|i| a + i as f64 * step).collect())
+    Ok(speeds)
 }
 
 /// Execute `frictrack analytic`.
@@ -63,7 +67,7 @@ pub fn run(args: &AnalyticArgs) -> Result<()> {
         (Some(range), _) => parse_range(range)?,
         (None, Some(v)) => vec![v],
         (None, None) => {
-            return Err(crate::files::input_error("--speed", "absent", "give --speed V or --speeds A:B:STEP"));
+            return Err(study::error::invalid("--speed", "absent", "give --speed V or --speeds A:B:STEP").into());
         }
     };
     let w0 = inf.static_deflection(case.load);

@@ -27,8 +27,3 @@ pub fn journal_beside(out: &Path) -> std::path::PathBuf {
     name.push(".journal");
     name.into()
 }
-
-/// An invalid-input error (exit code 2) naming the option, its value and what is allowed.
-pub fn input_error(field: &str, value: impl std::fmt::Display, allowed: impl Into<String>) -> anyhow::Error {
-    study::StudyError::InvalidField { path: field.into(), value: value.to_string(), allowed: allowed.into() }.into()
-}

@@ -22,11 +22,12 @@ pub fn run(args: &InitArgs) -> Result<()> {
         None => print!("{TEMPLATE}"),
         Some(path) => {
             if path.exists() && !args.force {
-                return Err(crate::files::input_error(
+                return Err(study::error::invalid(
                     "scenario file",
                     path.display(),
                     "exists already; use --force to overwrite it",
-                ));
+                )
+                .into());
             }
             write_atomically(path, TEMPLATE.as_bytes())?;
             eprintln!("wrote {}", path.display());

@@ -2,44 +2,23 @@
 //! and a `report.md` that shows every figure with a two-line summary of what it shows.
 
 use crate::files::write_atomically;
-use crate::study_cmd::{ResolutionArg, run_study};
+use crate::study_cmd::{StudyOptions, run_study};
 use anyhow::Result;
 use clap::Args;
 use std::fmt::Write as _;
-use std::path::PathBuf;
 use std::time::Instant;
-use study::Scenario;
 use study::presets::Preset;
 
 /// Options of `frictrack reproduce`.
 #[derive(Debug, Args)]
 pub struct ReproduceArgs {
-    /// Output folder (created if needed).
-    #[arg(long, default_value = "out")]
-    out: PathBuf,
-    /// Speed and force sampling.
-    #[arg(long, value_enum, default_value_t = ResolutionArg::Coarse)]
-    resolution: ResolutionArg,
-    /// Base scenario (default: the reference case).
-    #[arg(long)]
-    scenario: Option<PathBuf>,
-    /// Worker threads (0 = all cores).
-    #[arg(long, default_value_t = 0)]
-    jobs: usize,
-    /// No progress on standard error.
-    #[arg(long)]
-    quiet: bool,
-    /// Continue an interrupted reproduction: studies take the runs already in their journals (OUT/.<study>.journal).
-    #[arg(long)]
-    resume: bool,
+    #[command(flatten)]
+    options: StudyOptions,
 }
 
 /// Execute `frictrack reproduce`.
 pub fn run(args: &ReproduceArgs) -> Result<()> {
-    let base = match &args.scenario {
-        Some(path) => Scenario::from_path(path)?,
-        None => Scenario::default(),
-    };
+    let (options, base) = (&args.options, args.options.base()?);
     let start = Instant::now();
     let mut report = String::new();
     let _ = writeln!(report, "# frictrack — the studies of MODEL.md §7\n");
@@ -48,15 +27,14 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
         "Reference case unless a scenario was given: UIC60 rail (EI = 6.4155 MN·m², ρA = 59.935 kg/m) on a Winkler soil of \
          k_f = 250 kN/m², 200 m pinned beam of 200 Hermite elements, load F = 83.4 kN, θ = ½, load advance 0.1 m per step. \
          Resolution: {}. Every figure has its data beside it (`<study>.csv`, SI units) and its metadata (`<study>.json`).\n",
-        args.resolution.name()
+        options.resolution.name()
     );
     // Journals stay until the report is written, so that --resume after an interruption re-runs nothing.
     let mut journals = Vec::new();
     for (i, preset) in Preset::ALL.into_iter().enumerate() {
         let timer = Instant::now();
-        let (data, journal) =
-            run_study(preset, args.resolution.into(), &base, &args.out, args.jobs, args.quiet, args.resume)?;
-        if !args.quiet {
+        let (data, journal) = run_study(preset, options, &base)?;
+        if !options.quiet {
             eprintln!("{}: {} runs in {:.1} s", preset.name(), data.runs, timer.elapsed().as_secs_f64());
         }
         journals.push(journal);
@@ -82,12 +60,12 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
         let _ = writeln!(report, "\n</details>\n");
     }
     let _ = writeln!(report, "All six studies took {:.1} s.", start.elapsed().as_secs_f64());
-    write_atomically(&args.out.join("report.md"), report.as_bytes())?;
+    write_atomically(&options.out.join("report.md"), report.as_bytes())?;
     for journal in journals {
         journal.remove()?;
     }
-    if !args.quiet {
-        eprintln!("wrote {}", args.out.join("report.md").display());
+    if !options.quiet {
+        eprintln!("wrote {}", options.out.join("report.md").display());
     }
     Ok(())
 }

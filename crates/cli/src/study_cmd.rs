@@ -6,7 +6,7 @@ use crate::files::write_atomically;
 use anyhow::{Context, Result};
 use clap::{Args, ValueEnum};
 use serde_json::json;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::time::Instant;
 use study::Scenario;
 use study::presets::{Preset, Resolution, StudyData, run_preset};
@@ -37,40 +37,52 @@ impl From<ResolutionArg> for Resolution {
     }
 }
 
-/// Options of `frictrack study`.
+/// Options shared by `frictrack study` and `frictrack reproduce`.
 #[derive(Debug, Args)]
-pub struct StudyArgs {
-    /// discrete-speed, equal-cost, optimal-force, distributed-speed, amplification or discrete-vs-distributed.
-    preset: String,
-    /// Base scenario (default: the reference case); the study varies friction and speed on top of it.
+pub struct StudyOptions {
+    /// Base scenario (default: the reference case); the studies vary friction and speed on top of it.
     #[arg(long)]
     scenario: Option<PathBuf>,
     /// Speed and force sampling.
     #[arg(long, value_enum, default_value_t = ResolutionArg::Coarse)]
-    resolution: ResolutionArg,
+    pub resolution: ResolutionArg,
     /// Output folder (created if needed).
     #[arg(long, default_value = "out")]
-    out: PathBuf,
+    pub out: PathBuf,
     /// Worker threads (0 = all cores).
     #[arg(long, default_value_t = 0)]
     jobs: usize,
     /// No progress on standard error.
     #[arg(long)]
-    quiet: bool,
-    /// Continue an interrupted study: take the runs already in OUT/.<preset>.journal, run the others.
+    pub quiet: bool,
+    /// Continue after an interruption: take the runs already in OUT/.<study>.journal, run the others.
     #[arg(long)]
     resume: bool,
+}
+
+impl StudyOptions {
+    /// The base scenario: the file given, or the reference case.
+    pub fn base(&self) -> Result<Scenario> {
+        Ok(match &self.scenario {
+            Some(path) => Scenario::from_path(path)?,
+            None => Scenario::default(),
+        })
+    }
+}
+
+/// Options of `frictrack study`.
+#[derive(Debug, Args)]
+pub struct StudyArgs {
+    /// discrete-speed, equal-cost, optimal-force, distributed-speed, amplification or discrete-vs-distributed.
+    preset: String,
+    #[command(flatten)]
+    options: StudyOptions,
 }
 
 /// Execute `frictrack study`.
 pub fn run(args: &StudyArgs) -> Result<()> {
     let preset = Preset::from_name(&args.preset)?;
-    let base = match &args.scenario {
-        Some(path) => Scenario::from_path(path)?,
-        None => Scenario::default(),
-    };
-    let (data, journal) =
-        run_study(preset, args.resolution.into(), &base, &args.out, args.jobs, args.quiet, args.resume)?;
+    let (data, journal) = run_study(preset, &args.options, &args.options.base()?)?;
     journal.remove()?;
     for line in &data.lines {
         println!("{line}");
@@ -78,30 +90,25 @@ pub fn run(args: &StudyArgs) -> Result<()> {
     Ok(())
 }
 
-/// Run a preset and write its CSV, JSON and figures into `out`; finished runs are kept in `out/.<preset>.journal`
-/// (taken from there with `resume`), returned for the caller to remove once nothing else depends on them.
-pub fn run_study(
-    preset: Preset,
-    resolution: Resolution,
-    base: &Scenario,
-    out: &Path,
-    jobs: usize,
-    quiet: bool,
-    resume: bool,
-) -> Result<(StudyData, study::Journal)> {
+/// Run a preset on `base` and write its CSV, JSON and figures into the output folder; finished runs are kept in
+/// `OUT/.<preset>.journal` (taken from there with `--resume`), returned for the caller to remove once nothing else
+/// depends on them.
+pub fn run_study(preset: Preset, options: &StudyOptions, base: &Scenario) -> Result<(StudyData, study::Journal)> {
+    let (out, quiet) = (options.out.as_path(), options.quiet);
     base.validate()?;
     std::fs::create_dir_all(out).with_context(|| format!("creating {}", out.display()))?;
-    let journal = study::Journal::open(&out.join(format!(".{}.journal", preset.name())), resume)?;
+    let journal = study::Journal::open(&out.join(format!(".{}.journal", preset.name())), options.resume)?;
     if journal.resumed() > 0 && !quiet {
         eprintln!("{}: resuming with {} finished runs", preset.name(), journal.resumed());
     }
     let bar = crate::progress::bar(preset.name(), None, quiet);
     let progress = |done: usize| bar.set_position(done as u64);
-    let runner = Runner::new(jobs)
+    let runner = Runner::new(options.jobs)
         .with_progress(&progress)
         .with_journal(Some(&journal))
         .with_stop(crate::interrupt::stop_flag());
     let start = Instant::now();
+    let resolution = Resolution::from(options.resolution);
     let data = crate::interrupt::explain(run_preset(preset, resolution, base, &runner), Some(&journal))?;
     let wall_time = start.elapsed().as_secs_f64();
     bar.finish_and_clear();
