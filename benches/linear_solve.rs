@@ -6,7 +6,7 @@
 
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use fem_beam::reference::uic60_on_soft_soil;
-use fem_beam::{BeamModel, Mesh, SymmetricBanded};
+use fem_beam::{BandDiagonals, BeamModel, Mesh, SymmetricBanded};
 use nalgebra::DVector;
 use nalgebra_sparse::{CscMatrix, factorization::CscCholesky};
 use std::hint::black_box;
@@ -43,6 +43,16 @@ fn linear_solve(c: &mut Criterion) {
                 x.copy_from_slice(&rhs);
                 ldlt.solve_in_place(black_box(&mut x));
             })
+        });
+
+        // The stepper's other per-step kernel: one product with a banded matrix, in both storage layouts.
+        let mut y = vec![0.0; n];
+        group.bench_function(BenchmarkId::new("product_row_band", n), |b| {
+            b.iter(|| m_hat.mul_vec(black_box(&rhs), &mut y))
+        });
+        let diagonals = BandDiagonals::new(&m_hat);
+        group.bench_function(BenchmarkId::new("product_by_diagonals", n), |b| {
+            b.iter(|| diagonals.mul_vec(black_box(&rhs), &mut y))
         });
 
         group.bench_function(BenchmarkId::new("csc_cholesky_factor", n), |b| {

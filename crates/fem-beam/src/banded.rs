@@ -220,26 +220,29 @@ impl SymmetricBanded {
 
     /// The factorisation for half-bandwidth 3 (every Hermite beam matrix), unrolled: row i holds
     /// (A_{i,i−3}, A_{i,i−2}, A_{i,i−1}, A_ii) and becomes (L_{i,i−3}, L_{i,i−2}, L_{i,i−1}, D_i).
-    fn factor_in_place_3(n: usize, f: &mut [f64]) -> Result<()> {
-        // Rows i−1, i−2 as their L entries, and D of rows i−1..i−3; missing rows are zero with D = 1.
+    fn factor_in_place_3(n: usize, f: &mut [f64], inverse_pivots: &mut [f64]) -> Result<()> {
+        // Rows i−1, i−2 as their L entries, and D (with 1/D) of rows i−1..i−3; missing rows are zero with D = 1.
         let (mut r1, mut r2) = ([0.0f64; 3], [0.0f64; 3]);
         let (mut d1, mut d2, mut d3) = (1.0f64, 1.0f64, 1.0f64);
-        for i in 0..n {
-            let row = &mut f[4 * i..4 * i + 4];
+        let (mut e1, mut e2, mut e3) = (1.0f64, 1.0f64, 1.0f64);
+        for (i, (row, inverse)) in f.chunks_exact_mut(4).zip(inverse_pivots.iter_mut()).take(n).enumerate() {
             // r1 = (L_{i−1,i−4}, L_{i−1,i−3}, L_{i−1,i−2}), r2 = (L_{i−2,i−5}, L_{i−2,i−4}, L_{i−2,i−3})
-            let l3 = if i >= 3 { row[0] / d3 } else { 0.0 };
-            let l2 = if i >= 2 { (row[1] - l3 * r2[2] * d3) / d2 } else { 0.0 };
-            let l1 = if i >= 1 { (row[2] - l3 * r1[1] * d3 - l2 * r1[2] * d2) / d1 } else { 0.0 };
+            let l3 = if i >= 3 { row[0] * e3 } else { 0.0 };
+            let l2 = if i >= 2 { (row[1] - l3 * r2[2] * d3) * e2 } else { 0.0 };
+            let l1 = if i >= 1 { (row[2] - l3 * r1[1] * d3 - l2 * r1[2] * d2) * e1 } else { 0.0 };
             let d = row[3] - l3 * l3 * d3 - l2 * l2 * d2 - l1 * l1 * d1;
             if !(d.is_finite() && d > 0.0) {
                 return Err(FemError::NonPositivePivot { index: i, pivot: d });
             }
+            let e = 1.0 / d;
             row[0] = l3;
             row[1] = l2;
             row[2] = l1;
             row[3] = d;
+            *inverse = e;
             (r2, r1) = (r1, [l3, l2, l1]);
             (d3, d2, d1) = (d2, d1, d);
+            (e3, e2, e1) = (e2, e1, e);
         }
         Ok(())
     }
@@ -256,8 +259,8 @@ impl SymmetricBanded {
     /// Factor A = L D Lᵀ (L unit lower triangular with the same band). Errors with the equation index if a pivot
     /// is not strictly positive (A not positive definite) or not finite.
     pub fn factor(&self) -> Result<BandedLdlt> {
-        let mut out = BandedLdlt { n: self.n, bandwidth: self.bandwidth, factors: self.data.clone() };
-        Self::factor_in_place(self.n, self.bandwidth, &mut out.factors)?;
+        let mut out = BandedLdlt { n: 0, bandwidth: self.bandwidth, factors: Vec::new(), inverse_pivots: Vec::new() };
+        self.factor_into(&mut out)?;
         Ok(out)
     }
 
@@ -267,12 +270,14 @@ impl SymmetricBanded {
         out.bandwidth = self.bandwidth;
         out.factors.clear();
         out.factors.extend_from_slice(&self.data);
-        Self::factor_in_place(self.n, self.bandwidth, &mut out.factors)
+        out.inverse_pivots.clear();
+        out.inverse_pivots.resize(self.n, 0.0);
+        Self::factor_in_place(self.n, self.bandwidth, &mut out.factors, &mut out.inverse_pivots)
     }
 
-    fn factor_in_place(n: usize, b: usize, f: &mut [f64]) -> Result<()> {
+    fn factor_in_place(n: usize, b: usize, f: &mut [f64], inverse_pivots: &mut [f64]) -> Result<()> {
         if b == 3 {
-            return Self::factor_in_place_3(n, f);
+            return Self::factor_in_place_3(n, f, inverse_pivots);
         }
         let w = b + 1;
         for i in 0..n {
@@ -294,17 +299,20 @@ impl SymmetricBanded {
                 return Err(FemError::NonPositivePivot { index: i, pivot: d });
             }
             f[i * w + b] = d;
+            inverse_pivots[i] = 1.0 / d;
         }
         Ok(())
     }
 }
 
-/// The LDLᵀ factors of a [`SymmetricBanded`] SPD matrix: L's strict lower band and D on the diagonal slots.
+/// The LDLᵀ factors of a [`SymmetricBanded`] SPD matrix: L's strict lower band and D on the diagonal slots, and
+/// 1/D apart so that solves multiply instead of divide.
 #[derive(Debug, Clone, PartialEq)]
 pub struct BandedLdlt {
     n: usize,
     bandwidth: usize,
     factors: Vec<f64>,
+    inverse_pivots: Vec<f64>,
 }
 
 impl BandedLdlt {
@@ -331,8 +339,8 @@ impl BandedLdlt {
             }
             x[i] = s;
         }
-        for i in 0..self.n {
-            x[i] /= f[i * w + b];
+        for (x, e) in x.iter_mut().zip(&self.inverse_pivots) {
+            *x *= e;
         }
         for i in (0..self.n).rev() {
             let xi = x[i];
@@ -350,8 +358,11 @@ impl BandedLdlt {
         let (mut y1, mut y2, mut y3) = (0.0, 0.0, 0.0);
         // Rows of 4 zipped with x: no bounds checks in the loops.
         debug_assert_eq!(f.len(), 4 * n);
+        // Each row waits only on y_{i−1}: the terms in y_{i−3}, y_{i−2} are formed first, off the critical path
+        // (one multiply and one subtraction per row instead of three of each; about twice as fast, the pass being
+        // latency-bound).
         for (row, xi) in f.chunks_exact(4).zip(x.iter_mut()) {
-            let y = *xi - row[2] * y1 - row[1] * y2 - row[0] * y3;
+            let y = (*xi - row[0] * y3 - row[1] * y2) - row[2] * y1;
             *xi = y;
             (y3, y2, y1) = (y2, y1, y);
         }
@@ -359,8 +370,8 @@ impl BandedLdlt {
         // below (zero past the end) instead of testing bounds.
         let (mut x1, mut x2, mut x3) = (0.0, 0.0, 0.0);
         let (mut below1, mut below2, mut below3) = ([0.0f64; 3], [0.0f64; 3], [0.0f64; 3]);
-        for (row, x_i) in f.chunks_exact(4).zip(x.iter_mut()).rev() {
-            let xi = *x_i / row[3] - below1[2] * x1 - below2[1] * x2 - below3[0] * x3;
+        for ((row, x_i), e) in f.chunks_exact(4).zip(x.iter_mut()).zip(&self.inverse_pivots).rev() {
+            let xi = (*x_i * e - below3[0] * x3 - below2[1] * x2) - below1[2] * x1;
             *x_i = xi;
             (x3, x2, x1) = (x2, x1, xi);
             (below3, below2, below1) = (below2, below1, [row[0], row[1], row[2]]);

@@ -16,6 +16,7 @@
 pub mod absorbing;
 pub mod assembly;
 pub mod banded;
+pub mod diagonals;
 pub mod element;
 pub mod error;
 pub mod load;
@@ -30,6 +31,7 @@ pub mod supports;
 pub use absorbing::AbsorbingZones;
 pub use assembly::BeamModel;
 pub use banded::{BandedLdlt, SymmetricBanded};
+pub use diagonals::BandDiagonals;
 pub use error::{FemError, Result};
 pub use load::LoadVector;
 pub use mesh::Mesh;

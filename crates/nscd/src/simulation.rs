@@ -337,9 +337,7 @@ impl<'a> Simulation<'a> {
             Some(end) => crossing_steps.max((end / h - 1e-9).ceil() as usize),
             None => crossing_steps,
         };
-        // w DOFs (free index, x) for extremes and W̄; constrained ones are zero.
-        let w_dofs: Vec<(Option<usize>, f64)> =
-            (0..mesh.nodes()).map(|i| (dofs.free_index(2 * i), mesh.node_x(i))).collect();
+        let deflections = NodalDeflections::new(&mesh, dofs);
         let mut recorders: Vec<Recorder> = settings
             .record_sections
             .iter()
@@ -381,30 +379,12 @@ impl<'a> Simulation<'a> {
         }
         let mut extremes = (Extreme::default(), Extreme::default());
         let in_window = |x_load: f64| settings.extremes_window.is_none_or(|(a, b)| (a..=b).contains(&x_load));
-        let observe_extremes = |q: &[f64], time: f64, extremes: &mut (Extreme, Extreme)| {
-            for &(dof, x) in &w_dofs {
-                let w = dof.map_or(0.0, |d| q[d]);
-                if -w > extremes.0.magnitude {
-                    extremes.0 = Extreme { magnitude: -w, position: x, time };
-                }
-                if w > extremes.1.magnitude {
-                    extremes.1 = Extreme { magnitude: w, position: x, time };
-                }
-            }
-        };
-        let spatial_norm = |q: &[f64]| {
-            let mut sum = 0.0;
-            for k in 0..w_dofs.len() {
-                let w = w_dofs[k].0.map_or(0.0, |d| q[d]).abs();
-                sum += if k == 0 || k + 1 == w_dofs.len() { 0.5 * w } else { w };
-            }
-            sum * mesh.element_length()
-        };
+        let scan = deflections.scan(stepper.q());
         if in_window(start) {
-            observe_extremes(stepper.q(), 0.0, &mut extremes);
+            scan.update(&mut extremes, 0.0);
         }
         let mut norm_integral = 0.0;
-        let mut previous_norm = spatial_norm(stepper.q());
+        let mut previous_norm = scan.norm;
         let mut full = Buffers::new(dofs.full_len());
         for r in &mut recorders {
             full.expand(dofs, stepper.q(), stepper.v());
@@ -415,9 +395,7 @@ impl<'a> Simulation<'a> {
         let clock = Instant::now();
         let (mut iteration_sum, mut max_iterations, mut max_residual) = (0usize, 0usize, 0.0f64);
         let mut sections_sum = 0usize;
-        let mut v_before = vec![0.0; dofs.free_len()];
         for k in 1..=total_steps {
-            v_before.copy_from_slice(stepper.v());
             let report = stepper.step(&load)?;
             let keep_going = observer(&StepView {
                 step: k,
@@ -425,7 +403,7 @@ impl<'a> Simulation<'a> {
                 load_position: load.position(stepper.time),
                 displacement: stepper.q(),
                 velocity: stepper.v(),
-                previous_velocity: &v_before,
+                previous_velocity: stepper.previous_v(),
                 impulses: &stepper.p,
                 section_velocities: &stepper.u,
                 bounds: stepper.bounds(),
@@ -436,18 +414,21 @@ impl<'a> Simulation<'a> {
             max_iterations = max_iterations.max(report.iterations);
             max_residual = max_residual.max(report.residual);
             let time = stepper.time;
-            if in_window(load.position(time)) {
-                observe_extremes(stepper.q(), time, &mut extremes);
-            }
-            if k <= crossing_steps {
-                let norm = spatial_norm(stepper.q());
-                norm_integral += 0.5 * (norm + previous_norm) * h;
-                previous_norm = norm;
+            let (extremes_wanted, norm_wanted) = (in_window(load.position(time)), k <= crossing_steps);
+            if extremes_wanted || norm_wanted {
+                let scan = deflections.scan(stepper.q());
+                if extremes_wanted {
+                    scan.update(&mut extremes, time);
+                }
+                if norm_wanted {
+                    norm_integral += 0.5 * (scan.norm + previous_norm) * h;
+                    previous_norm = scan.norm;
+                }
             }
             for r in &mut recorders {
                 // State after the step with the mean acceleration over it, the load where it now is, and the
                 // friction forces p/h of the step.
-                full.expand_step(dofs, stepper.q(), stepper.v(), &v_before, h);
+                full.expand_step(dofs, stepper.q(), stepper.v(), stepper.previous_v(), h);
                 let impulse = r.contact.map_or(0.0, |j| stepper.p[j]);
                 let moment =
                     self.moment_at_node(r.node, &full, &load, &[(time, 1.0)], Some((&stepper.p, h, &r.inside)));
@@ -536,6 +517,64 @@ impl<'a> Simulation<'a> {
             count += 1.0;
         }
         sum / count
+    }
+}
+
+/// The nodal deflections of the free w DOFs, read in one pass per step for the extremes and for W̄ (constrained
+/// nodes have w = 0: they never set an extreme and add nothing to the norm).
+struct NodalDeflections {
+    /// (free DOF index, node x (m), trapezoid weight (m)) of every node whose w is free.
+    nodes: Vec<(usize, f64, f64)>,
+}
+
+/// What one pass over the deflections finds.
+struct DeflectionScan {
+    /// Lowest w (m) and its node x, first such node.
+    lowest: (f64, f64),
+    /// Highest w (m) and its node x, first such node.
+    highest: (f64, f64),
+    /// ∫|w| dx by the trapezoid rule over the nodes (m²).
+    norm: f64,
+}
+
+impl NodalDeflections {
+    fn new(mesh: &fem_beam::Mesh, dofs: &fem_beam::DofMap) -> Self {
+        let last = mesh.nodes() - 1;
+        let l = mesh.element_length();
+        let nodes = (0..=last)
+            .filter_map(|i| {
+                let weight = if i == 0 || i == last { 0.5 * l } else { l };
+                dofs.free_index(2 * i).map(|d| (d, mesh.node_x(i), weight))
+            })
+            .collect();
+        Self { nodes }
+    }
+
+    fn scan(&self, q: &[f64]) -> DeflectionScan {
+        let mut scan = DeflectionScan { lowest: (0.0, 0.0), highest: (0.0, 0.0), norm: 0.0 };
+        for &(d, x, weight) in &self.nodes {
+            let w = q[d];
+            if w < scan.lowest.0 {
+                scan.lowest = (w, x);
+            }
+            if w > scan.highest.0 {
+                scan.highest = (w, x);
+            }
+            scan.norm += weight * w.abs();
+        }
+        scan
+    }
+}
+
+impl DeflectionScan {
+    /// Keep the record extremes (downward, upward) up to date at `time`.
+    fn update(&self, extremes: &mut (Extreme, Extreme), time: f64) {
+        if -self.lowest.0 > extremes.0.magnitude {
+            extremes.0 = Extreme { magnitude: -self.lowest.0, position: self.lowest.1, time };
+        }
+        if self.highest.0 > extremes.1.magnitude {
+            extremes.1 = Extreme { magnitude: self.highest.0, position: self.highest.1, time };
+        }
     }
 }
 

@@ -16,7 +16,7 @@ use crate::error::{NscdError, Result};
 use crate::forcing::Forcing;
 use crate::solver::{FrictionProblem, FrictionSolver, StepReport};
 use crate::system::LinearSystem;
-use fem_beam::{BandedLdlt, SymmetricBanded};
+use fem_beam::{BandDiagonals, BandedLdlt, SymmetricBanded};
 use friction::ContactSet;
 
 /// Cumulative energy terms of a run (J).
@@ -88,7 +88,6 @@ impl Integration {
 
 /// The state and scratch of a Moreau–Jean integration; nothing allocates inside [`MoreauJean::step`].
 pub struct MoreauJean<'a> {
-    system: &'a LinearSystem,
     contacts: &'a ContactSet,
     theta: f64,
     h: f64,
@@ -111,7 +110,10 @@ pub struct MoreauJean<'a> {
     /// The last step's solver report.
     pub last_report: StepReport,
     v_prev: Vec<f64>,
-    q_prev: Vec<f64>,
+    /// K, M, C stored by diagonals for the per-step products (see [`BandDiagonals`]).
+    stiffness: BandDiagonals,
+    mass: BandDiagonals,
+    damping: BandDiagonals,
     /// K q_k, K v_k, C v_k, M v_k: every banded product a step needs, one product per matrix per step (K q is
     /// carried forward as K q_{k+1} = K q_k + h K v_θ, exact up to round-off).
     kq: Vec<f64>,
@@ -143,7 +145,6 @@ impl<'a> MoreauJean<'a> {
         let n = system.dofs();
         let m = contacts.len();
         let mut stepper = Self {
-            system,
             contacts,
             theta: integration.theta,
             h: integration.step,
@@ -160,7 +161,9 @@ impl<'a> MoreauJean<'a> {
             energy: EnergyLedger::default(),
             last_report: StepReport::default(),
             v_prev: vec![0.0; n],
-            q_prev: vec![0.0; n],
+            stiffness: BandDiagonals::new(&system.stiffness),
+            mass: BandDiagonals::new(&system.mass),
+            damping: BandDiagonals::new(&system.damping),
             kq: vec![0.0; n],
             kv: vec![0.0; n],
             cv: vec![0.0; n],
@@ -173,12 +176,13 @@ impl<'a> MoreauJean<'a> {
             u_free: vec![0.0; m],
             v_free: vec![0.0; n],
         };
-        stepper.system.stiffness.mul_vec(&stepper.q, &mut stepper.kq);
-        stepper.system.stiffness.mul_vec(&stepper.v, &mut stepper.kv);
-        stepper.system.mass.mul_vec(&stepper.v, &mut stepper.mv);
+        stepper.stiffness.mul_vec(&stepper.q, &mut stepper.kq);
+        stepper.stiffness.mul_vec(&stepper.v, &mut stepper.kv);
+        stepper.mass.mul_vec(&stepper.v, &mut stepper.mv);
         if stepper.damped {
-            stepper.system.damping.mul_vec(&stepper.v, &mut stepper.cv);
+            stepper.damping.mul_vec(&stepper.v, &mut stepper.cv);
         }
+        stepper.v_prev.copy_from_slice(&stepper.v);
         let (kinetic, strain) = stepper.energies();
         stepper.energy.initial = kinetic + strain;
         stepper.energy.current = kinetic + strain;
@@ -212,6 +216,11 @@ impl<'a> MoreauJean<'a> {
         &self.v
     }
 
+    /// Velocity v_{k−1} before the last step (m/s, rad/s; v₀ before the first step).
+    pub fn previous_v(&self) -> &[f64] {
+        &self.v_prev
+    }
+
     /// Kinetic ½vᵀMv and strain ½qᵀKq energy (J), from the cached products.
     fn energies(&self) -> (f64, f64) {
         (0.5 * dot(&self.v, &self.mv), 0.5 * dot(&self.q, &self.kq))
@@ -241,9 +250,9 @@ impl<'a> MoreauJean<'a> {
         let (h, theta) = (self.h, self.theta);
         let (t0, t1) = (self.time, self.time + h);
         self.free_velocity(forcing);
-        self.v_prev.copy_from_slice(&self.v);
-        self.q_prev.copy_from_slice(&self.q);
-        self.v.copy_from_slice(&self.v_free);
+        // v_prev ← v_k, v ← v_free; the stale vector left in v_free is overwritten by the next free velocity.
+        std::mem::swap(&mut self.v_prev, &mut self.v);
+        std::mem::swap(&mut self.v, &mut self.v_free);
         let report = if self.contacts.is_empty() {
             StepReport { converged: true, ..StepReport::default() }
         } else {
@@ -268,18 +277,12 @@ impl<'a> MoreauJean<'a> {
             }
             report
         };
-        for ((q, v), v_prev) in self.q.iter_mut().zip(&self.v).zip(&self.v_prev) {
-            *q += h * (theta * v + (1.0 - theta) * v_prev);
+        // work = v_θ, the velocity of the step: q_{k+1} = q_k + h v_θ.
+        for (((w, q), v), v_prev) in self.work.iter_mut().zip(self.q.iter_mut()).zip(&self.v).zip(&self.v_prev) {
+            *w = theta * v + (1.0 - theta) * v_prev;
+            *q += h * *w;
         }
-        if !self.v.iter().chain(&self.q).all(|x| x.is_finite()) {
-            return Err(NscdError::NonFinite {
-                step: self.steps + 1,
-                time: t1,
-                what: "displacement or velocity",
-                hint: "check the inputs for extreme values; try θ > 0.5",
-            });
-        }
-        self.book_energy(forcing, t0, t1);
+        self.book_energy(forcing, t0, t1)?;
         if !self.contacts.is_empty() {
             self.contacts.velocities(&self.v, &mut self.u);
         }
@@ -289,48 +292,51 @@ impl<'a> MoreauJean<'a> {
         Ok(report)
     }
 
-    fn book_energy(&mut self, forcing: &dyn Forcing, t0: f64, t1: f64) {
+    /// Book the energy terms of the step just taken (`work` holds v_θ) and carry the products forward. A
+    /// non-finite energy — some displacement or velocity overflowed or became NaN, which the quadratic forms
+    /// ½vᵀMv and ½qᵀKq always propagate (M has a positive diagonal) — stops the run before the ledger changes.
+    fn book_energy(&mut self, forcing: &dyn Forcing, t0: f64, t1: f64) -> Result<()> {
         let (h, theta) = (self.h, self.theta);
         // The products of v_{k+1}: the only banded products of a step.
-        self.system.stiffness.mul_vec(&self.v, &mut self.kv_next);
-        self.system.mass.mul_vec(&self.v, &mut self.mv_next);
+        self.stiffness.mul_vec(&self.v, &mut self.kv_next);
+        self.mass.mul_vec(&self.v, &mut self.mv_next);
         if self.damped {
-            self.system.damping.mul_vec(&self.v, &mut self.cv_next);
+            self.damping.mul_vec(&self.v, &mut self.cv_next);
         }
-        // work = v_θ, work2 = K v_θ, so that K Δq = h K v_θ.
-        for ((w, v), v_prev) in self.work.iter_mut().zip(&self.v).zip(&self.v_prev) {
-            *w = theta * v + (1.0 - theta) * v_prev;
-        }
-        for ((w, kv_next), kv) in self.work2.iter_mut().zip(&self.kv_next).zip(&self.kv) {
+        // work2 = K v_θ, so that K Δq = h K v_θ; then K q_{k+1} = K q_k + h K v_θ.
+        for (((w, kv_next), kv), kq) in self.work2.iter_mut().zip(&self.kv_next).zip(&self.kv).zip(self.kq.iter_mut()) {
             *w = theta * kv_next + (1.0 - theta) * kv;
+            *kq += h * *w;
+        }
+        let (kinetic, strain) = (0.5 * dot(&self.v, &self.mv_next), 0.5 * dot(&self.q, &self.kq));
+        if !(kinetic + strain).is_finite() {
+            return Err(NscdError::NonFinite {
+                step: self.steps + 1,
+                time: t1,
+                what: "displacement or velocity",
+                hint: "check the inputs for extreme values; try θ > 0.5",
+            });
         }
         let load = h * (theta * forcing.power(t1, &self.work) + (1.0 - theta) * forcing.power(t0, &self.work));
         let viscous = if self.damped {
-            let cv_theta = |i: usize| theta * self.cv_next[i] + (1.0 - theta) * self.cv[i];
-            h * (0..self.v.len()).map(|i| self.work[i] * cv_theta(i)).sum::<f64>()
+            // h v_θᵀ C v_θ with C v_θ = θ C v_{k+1} + (1 − θ) C v_k.
+            h * (theta * dot(&self.work, &self.cv_next) + (1.0 - theta) * dot(&self.work, &self.cv))
         } else {
             0.0
         };
         let friction: f64 = self.contacts.rows().iter().zip(&self.p).map(|(row, p)| row.dot(&self.work) * p).sum();
         let numerical = if theta > 0.5 {
-            // (θ − ½)[ΔvᵀMΔv + ΔqᵀKΔq] with MΔv = Mv_{k+1} − Mv_k and KΔq = h K v_θ.
-            let (mut kinetic, mut strain) = (0.0, 0.0);
-            for i in 0..self.v.len() {
-                kinetic += (self.v[i] - self.v_prev[i]) * (self.mv_next[i] - self.mv[i]);
-                strain += (self.q[i] - self.q_prev[i]) * h * self.work2[i];
-            }
-            (theta - 0.5) * (kinetic + strain)
+            // (θ − ½)[ΔvᵀMΔv + ΔqᵀKΔq] with MΔv = Mv_{k+1} − Mv_k, Δq = h v_θ and KΔq = h K v_θ.
+            let kinetic: f64 =
+                (0..self.v.len()).map(|i| (self.v[i] - self.v_prev[i]) * (self.mv_next[i] - self.mv[i])).sum();
+            (theta - 0.5) * (kinetic + h * h * dot(&self.work, &self.work2))
         } else {
             0.0
         };
-        for (kq, kv_theta) in self.kq.iter_mut().zip(&self.work2) {
-            *kq += h * kv_theta;
-        }
         std::mem::swap(&mut self.kv, &mut self.kv_next);
         std::mem::swap(&mut self.mv, &mut self.mv_next);
         std::mem::swap(&mut self.cv, &mut self.cv_next);
         let before = self.energy.current;
-        let (kinetic, strain) = self.energies();
         let e = &mut self.energy;
         e.kinetic = kinetic;
         e.strain = strain;
@@ -341,11 +347,22 @@ impl<'a> MoreauJean<'a> {
         e.numerical_dissipation += numerical;
         let step_residual = e.current - before - (load - viscous + friction - numerical);
         e.max_step_residual = e.max_step_residual.max(step_residual.abs());
+        Ok(())
     }
 }
 
+/// Σ aᵢbᵢ with four independent partial sums, so that the additions pipeline (and pack) instead of waiting on
+/// one another.
 fn dot(a: &[f64], b: &[f64]) -> f64 {
-    a.iter().zip(b).map(|(x, y)| x * y).sum()
+    let mut partial = [0.0; 4];
+    let (a4, b4) = (a.chunks_exact(4), b.chunks_exact(4));
+    let tail: f64 = a4.remainder().iter().zip(b4.remainder()).map(|(x, y)| x * y).sum();
+    for (x, y) in a4.zip(b4) {
+        for k in 0..4 {
+            partial[k] += x[k] * y[k];
+        }
+    }
+    (partial[0] + partial[1]) + (partial[2] + partial[3]) + tail
 }
 
 /// M̂ = M + hθC + h²θ²K.
