@@ -5,12 +5,13 @@
 //!
 //! - [`system`], [`forcing`]: the banded linear system and the moving load.
 //! - [`stepper`]: [`MoreauJean`], one step at a time, with its [`EnergyLedger`].
-//! - [`solver`]: projected Gauss–Seidel, augmented-Lagrangian semismooth Newton, Clarabel (feature `clarabel`).
+//! - [`solver`]: projected Gauss–Seidel, a banded interior point, Clarabel (feature `clarabel`).
 //! - [`simulation`]: a whole run of the beam under a moving load, with its observers (extremes, histories at
 //!   sections, the global norm W̄, solver statistics).
 
 pub mod error;
 pub mod forcing;
+mod kernels;
 pub mod simulation;
 pub mod solver;
 pub mod stepper;

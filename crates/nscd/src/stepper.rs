@@ -14,6 +14,7 @@
 
 use crate::error::{NscdError, Result};
 use crate::forcing::Forcing;
+use crate::kernels::dot;
 use crate::solver::{FrictionProblem, FrictionSolver, StepReport};
 use crate::system::LinearSystem;
 use fem_beam::{BandDiagonals, BandedLdlt, SymmetricBanded};
@@ -269,12 +270,7 @@ impl<'a> MoreauJean<'a> {
                     hint: "raise the iteration cap or the tolerance, or choose another solver (--solver clarabel or projection)",
                 });
             }
-            self.work.iter_mut().for_each(|w| *w = 0.0);
-            self.contacts.add_transpose(&self.p, &mut self.work);
-            self.factor.solve_in_place(&mut self.work);
-            for (v, w) in self.v.iter_mut().zip(&self.work) {
-                *v += w;
-            }
+            self.problem.add_response(&self.p, &mut self.v, &mut self.work);
             report
         };
         // work = v_θ, the velocity of the step: q_{k+1} = q_k + h v_θ.
@@ -349,20 +345,6 @@ impl<'a> MoreauJean<'a> {
         e.max_step_residual = e.max_step_residual.max(step_residual.abs());
         Ok(())
     }
-}
-
-/// Σ aᵢbᵢ with four independent partial sums, so that the additions pipeline (and pack) instead of waiting on
-/// one another.
-fn dot(a: &[f64], b: &[f64]) -> f64 {
-    let mut partial = [0.0; 4];
-    let (a4, b4) = (a.chunks_exact(4), b.chunks_exact(4));
-    let tail: f64 = a4.remainder().iter().zip(b4.remainder()).map(|(x, y)| x * y).sum();
-    for (x, y) in a4.zip(b4) {
-        for k in 0..4 {
-            partial[k] += x[k] * y[k];
-        }
-    }
-    (partial[0] + partial[1]) + (partial[2] + partial[3]) + tail
 }
 
 /// M̂ = M + hθC + h²θ²K.

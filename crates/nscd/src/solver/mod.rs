@@ -16,6 +16,7 @@
 
 pub mod interior_point;
 pub mod projection;
+pub mod response;
 
 #[cfg(feature = "clarabel")]
 pub mod clarabel;
@@ -23,6 +24,7 @@ pub mod clarabel;
 use fem_beam::{BandedLdlt, SymmetricBanded};
 use friction::ContactSet;
 use friction::coulomb::natural_residual;
+use response::ImpulseResponses;
 
 /// Which per-step friction solver to use.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -102,24 +104,31 @@ pub struct FrictionProblem<'a> {
     pub bounds: Vec<f64>,
     /// W_jj (m/s per N·s).
     pub delassus_diagonal: Vec<f64>,
+    /// G_j = M̂⁻¹H_jᵀ, truncated to round-off, when few and short enough to beat a solve (see [`response`]).
+    pub responses: Option<ImpulseResponses>,
 }
 
 impl<'a> FrictionProblem<'a> {
     /// Set up for step size `h` (s).
     pub fn new(contacts: &'a ContactSet, m_hat: &'a SymmetricBanded, factor: &'a BandedLdlt, h: f64) -> Self {
         let bounds = contacts.bounds().iter().map(|f| h * f).collect();
-        let mut column = vec![0.0; m_hat.order()];
-        let delassus_diagonal = contacts
-            .rows()
-            .iter()
-            .map(|row| {
-                column.iter_mut().for_each(|c| *c = 0.0);
-                row.add_transpose(1.0, &mut column);
-                factor.solve_in_place(&mut column);
-                row.dot(&column)
-            })
-            .collect();
-        Self { contacts, m_hat, factor, bounds, delassus_diagonal }
+        let (responses, delassus_diagonal) = ImpulseResponses::new(contacts, factor);
+        Self { contacts, m_hat, factor, bounds, delassus_diagonal, responses }
+    }
+
+    /// v += M̂⁻¹Hᵀp: from the stored responses when there are any, else by one banded solve (`work`: n scratch).
+    pub fn add_response(&self, p: &[f64], v: &mut [f64], work: &mut [f64]) {
+        match &self.responses {
+            Some(responses) => responses.add(p, v),
+            None => {
+                work.iter_mut().for_each(|x| *x = 0.0);
+                self.contacts.add_transpose(p, work);
+                self.factor.solve_in_place(work);
+                for (x, w) in v.iter_mut().zip(work.iter()) {
+                    *x += w;
+                }
+            }
+        }
     }
 
     /// Number of sections.
@@ -144,13 +153,18 @@ impl<'a> FrictionProblem<'a> {
     }
 
     /// The step's outcome for impulses p, as the stepper will form it: v = v_free + M̂⁻¹Hᵀp and u = H v (into the
-    /// given buffers; one banded solve), and the law residual (m/s).
+    /// given buffers), and the law residual (m/s).
     pub fn outcome(&self, v_free: &[f64], p: &[f64], v: &mut [f64], u: &mut [f64]) -> f64 {
-        v.iter_mut().for_each(|x| *x = 0.0);
-        self.contacts.add_transpose(p, v);
-        self.factor.solve_in_place(v);
-        for (x, f) in v.iter_mut().zip(v_free) {
-            *x += f;
+        if let Some(responses) = &self.responses {
+            v.copy_from_slice(v_free);
+            responses.add(p, v);
+        } else {
+            v.iter_mut().for_each(|x| *x = 0.0);
+            self.contacts.add_transpose(p, v);
+            self.factor.solve_in_place(v);
+            for (x, f) in v.iter_mut().zip(v_free) {
+                *x += f;
+            }
         }
         self.contacts.velocities(v, u);
         self.law_residual(u, p)

@@ -1,0 +1,86 @@
+//! Velocity responses to unit section impulses, G_j = M̂⁻¹ H_jᵀ, kept when they are short.
+//!
+//! The step's correction v = v_free + M̂⁻¹Hᵀp is one banded solve, latency-bound (each row waits on the previous
+//! one). G_j decays like e^{−|x − x_j|/(√2ℓ)} away from section j, ℓ = (EI h²θ²/ρA)^¼ (0.29 m for the reference
+//! case), so each G_j is short once its entries below the solve's own round-off are dropped; with few sections
+//! (devices) Σ_j p_j G_j over the non-zero impulses is several times cheaper than the solve and vectorises.
+
+use fem_beam::BandedLdlt;
+use friction::ContactSet;
+
+/// Entries of G_j below this fraction of max |G_j| are dropped: the banded solve that produced G_j mixes every
+/// entry with its neighbours at relative precision ~1.1e-16, so such entries are below its round-off already.
+pub const DROP_BELOW: f64 = 1e-17;
+
+/// The columns are kept only while their total length stays below this many times the number of DOFs: beyond
+/// that, a step with many active sections would cost more than the solve they replace (and memory would grow
+/// with sections × DOFs for distributed friction).
+pub const MAX_FILL: usize = 8;
+
+/// The truncated columns G_j: `start[j]` is the first DOF of column j, its entries are
+/// `values[offset[j]..offset[j + 1]]`.
+#[derive(Debug, Clone)]
+pub struct ImpulseResponses {
+    start: Vec<usize>,
+    offset: Vec<usize>,
+    values: Vec<f64>,
+}
+
+impl ImpulseResponses {
+    /// Solve for every column G_j (one banded solve each) and return the truncated columns — None once their
+    /// entries exceed [`MAX_FILL`]·n — with the Delassus diagonal W_jj = H_j G_j of the full columns.
+    pub fn new(contacts: &ContactSet, factor: &BandedLdlt) -> (Option<Self>, Vec<f64>) {
+        let n = factor.order();
+        let mut column = vec![0.0; n];
+        let mut kept = Some(Self { start: Vec::new(), offset: vec![0], values: Vec::new() });
+        let mut diagonal = Vec::with_capacity(contacts.len());
+        for row in contacts.rows() {
+            column.iter_mut().for_each(|c| *c = 0.0);
+            row.add_transpose(1.0, &mut column);
+            factor.solve_in_place(&mut column);
+            diagonal.push(row.dot(&column));
+            if let Some(responses) = kept.as_mut() {
+                let largest = column.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+                let significant = |c: &f64| c.abs() > DROP_BELOW * largest;
+                let first = column.iter().position(significant).unwrap_or(0);
+                let last = column.iter().rposition(significant).map_or(first, |i| i + 1);
+                responses.start.push(first);
+                responses.values.extend_from_slice(&column[first..last]);
+                responses.offset.push(responses.values.len());
+                if responses.values.len() > MAX_FILL * n {
+                    kept = None;
+                }
+            }
+        }
+        (kept, diagonal)
+    }
+
+    /// v += Σ_j p_j G_j over the non-zero impulses.
+    pub fn add(&self, p: &[f64], v: &mut [f64]) {
+        for (j, &pj) in p.iter().enumerate() {
+            if pj != 0.0 {
+                let g = &self.values[self.offset[j]..self.offset[j + 1]];
+                for (v, g) in v[self.start[j]..self.start[j] + g.len()].iter_mut().zip(g) {
+                    *v += pj * g;
+                }
+            }
+        }
+    }
+
+    /// H_i G_j, the Delassus entry W_ij (zero where G_j was truncated away).
+    pub fn delassus(&self, contacts: &ContactSet, i: usize, j: usize) -> f64 {
+        let (start, g) = (self.start[j], &self.values[self.offset[j]..self.offset[j + 1]]);
+        let row = &contacts.rows()[i];
+        row.entries().map(|(dof, h)| if dof >= start && dof < start + g.len() { h * g[dof - start] } else { 0.0 }).sum()
+    }
+
+    /// Stored entries (for reports and tests).
+    pub fn len(&self) -> usize {
+        self.values.len()
+    }
+
+    /// Whether no entry is stored.
+    pub fn is_empty(&self) -> bool {
+        self.values.is_empty()
+    }
+}
