@@ -267,7 +267,18 @@ impl<'a> MoreauJean<'a> {
                     residual: report.residual,
                     iterations: report.iterations,
                     tolerance: report.tolerance,
-                    hint: "raise the iteration cap or the tolerance, or choose another solver (--solver clarabel or projection)",
+                    hint: match self.solver.name() {
+                        // Measured (examples/solver_table.rs): projection stalls on dense distributed sections.
+                        "projection" => {
+                            "raise the iteration cap or the tolerance, or choose another solver (--solver interior-point or clarabel)"
+                        }
+                        "clarabel" => {
+                            "raise the tolerance, or choose another solver (--solver interior-point or projection)"
+                        }
+                        _ => {
+                            "raise the iteration cap or the tolerance, or choose another solver (--solver clarabel or projection)"
+                        }
+                    },
                 });
             }
             self.problem.add_response(&self.p, &mut self.v, &mut self.work);
