@@ -104,3 +104,35 @@ fn ramp_forced_block_breaks_away_on_time() {
         assert!(history.iter().filter(|&&(t, _)| t < t_star - h).all(|&(_, x)| x == 0.5));
     }
 }
+
+/// A force that overflows or turns NaN stops the run with a NonFinite error at that step, before the energy ledger
+/// takes the step in: the step finds it through ½vᵀMv + ½qᵀKq, which any ∞ or NaN in v or q reaches.
+#[test]
+fn non_finite_state_stops_the_run_at_its_step() {
+    for (bad, label) in [(f64::NAN, "NaN"), (f64::MAX, "overflow"), (f64::INFINITY, "∞")] {
+        let system = LinearSystem { mass: scalar(2.0), damping: scalar(0.0), stiffness: scalar(50.0) };
+        let contacts = ContactSet::new();
+        let integration = Integration { theta: 0.5, step: 1e-3 };
+        let m_hat = iteration_matrix(&system, integration);
+        let factor = m_hat.factor().unwrap();
+        let problem = FrictionProblem::new(&contacts, &m_hat, &factor, integration.step);
+        let solver = build_solver(SolverKind::Projection, &problem, &SolverSettings::default(), None).unwrap();
+        let mut stepper = MoreauJean::new(&system, &contacts, integration, problem, solver, vec![0.1], vec![0.0]);
+        // Finite until t = 5 ms, then the bad value (f64::MAX·h² overflows the energy although q stays finite).
+        let forcing = DofForce { dof: 0, force: move |t: f64| if t < 5e-3 - 1e-12 { 1.0 } else { bad } };
+        let mut failure = None;
+        for _ in 0..10 {
+            if let Err(error) = stepper.step(&forcing) {
+                failure = Some(error);
+                break;
+            }
+        }
+        match failure {
+            Some(nscd::NscdError::NonFinite { step, .. }) => assert_eq!(step, 5, "{label}"),
+            other => panic!("{label}: expected a NonFinite error, got {other:?}"),
+        }
+        let ledger = stepper.energy;
+        assert!(ledger.current.is_finite() && ledger.load_work.is_finite(), "{label}: the ledger took the bad step");
+        assert_eq!(stepper.steps, 4, "{label}");
+    }
+}
