@@ -121,14 +121,19 @@ impl<'a> FrictionProblem<'a> {
         match &self.responses {
             Some(responses) => responses.add(p, v),
             None => {
-                work.iter_mut().for_each(|x| *x = 0.0);
-                self.contacts.add_transpose(p, work);
-                self.factor.solve_in_place(work);
+                self.solve_response(p, work);
                 for (x, w) in v.iter_mut().zip(work.iter()) {
                     *x += w;
                 }
             }
         }
+    }
+
+    /// out = M̂⁻¹Hᵀp by one banded solve.
+    fn solve_response(&self, p: &[f64], out: &mut [f64]) {
+        out.iter_mut().for_each(|x| *x = 0.0);
+        self.contacts.add_transpose(p, out);
+        self.factor.solve_in_place(out);
     }
 
     /// Number of sections.
@@ -159,9 +164,7 @@ impl<'a> FrictionProblem<'a> {
             v.copy_from_slice(v_free);
             responses.add(p, v);
         } else {
-            v.iter_mut().for_each(|x| *x = 0.0);
-            self.contacts.add_transpose(p, v);
-            self.factor.solve_in_place(v);
+            self.solve_response(p, v);
             for (x, f) in v.iter_mut().zip(v_free) {
                 *x += f;
             }

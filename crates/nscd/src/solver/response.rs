@@ -67,13 +67,6 @@ impl ImpulseResponses {
         }
     }
 
-    /// H_i G_j, the Delassus entry W_ij (zero where G_j was truncated away).
-    pub fn delassus(&self, contacts: &ContactSet, i: usize, j: usize) -> f64 {
-        let (start, g) = (self.start[j], &self.values[self.offset[j]..self.offset[j + 1]]);
-        let row = &contacts.rows()[i];
-        row.entries().map(|(dof, h)| if dof >= start && dof < start + g.len() { h * g[dof - start] } else { 0.0 }).sum()
-    }
-
     /// Stored entries (for reports and tests).
     pub fn len(&self) -> usize {
         self.values.len()
