@@ -46,6 +46,10 @@ fn main() {
         s.sections,
         s.wall_time
     );
+    println!(
+        "bits: max down {:.17e}, max up {:.17e}, friction work {:.17e} J",
+        result.max_downward.magnitude, result.max_upward.magnitude, result.energy.friction_work
+    );
     let peak = std::fs::read_to_string("/proc/self/status")
         .ok()
         .and_then(|t| t.lines().find(|l| l.starts_with("VmHWM:")).map(|l| l["VmHWM:".len()..].trim().to_string()));

@@ -52,72 +52,353 @@ pub struct WindowStatistics {
     pub sections_solved: usize,
 }
 
-/// Interior-point state of one section (kept together: the iteration sweeps the sections in order).
-#[derive(Debug, Clone, Copy, Default)]
-struct Section {
+/// Interior-point state of the active sections, one array per quantity, k = 0..len in the order of `index`. The
+/// per-section arithmetic runs as straight loops over contiguous arrays (which the compiler vectorises); the scatters
+/// into B and the right-hand side and the sums μ stay in section order, so every result is the same to the bit as
+/// section-by-section evaluation.
+#[derive(Debug, Default)]
+struct Sections {
+    /// Section index j of each active section.
+    index: Vec<usize>,
     /// First DOF of the row (window-local): rows touch consecutive free DOFs.
-    first: usize,
-    /// Entries of the row, zero-padded to four.
-    h: [f64; 4],
-    /// Number of entries.
-    len: usize,
+    first: Vec<usize>,
+    /// Entries of the row, zero-padded to four, and their number.
+    h: Vec<[f64; 4]>,
+    len: Vec<usize>,
     /// Bound a_j (N·s), W_jj and 1/W_jj.
-    a: f64,
-    w: f64,
-    inv_w: f64,
-    u_free: f64,
-    u: f64,
-    s1: f64,
-    s2: f64,
-    z1: f64,
-    z2: f64,
-    inv_s1: f64,
-    inv_s2: f64,
-    inv_z1: f64,
-    inv_z2: f64,
-    inv_sigma: f64,
-    r: f64,
-    c1: f64,
-    c2: f64,
-    dp: f64,
-    dz1: f64,
-    dz2: f64,
+    a: Vec<f64>,
+    w: Vec<f64>,
+    inv_w: Vec<f64>,
+    u_free: Vec<f64>,
+    u: Vec<f64>,
+    p: Vec<f64>,
+    s1: Vec<f64>,
+    s2: Vec<f64>,
+    z1: Vec<f64>,
+    z2: Vec<f64>,
+    inv_s1: Vec<f64>,
+    inv_s2: Vec<f64>,
+    inv_z1: Vec<f64>,
+    inv_z2: Vec<f64>,
+    inv_sigma: Vec<f64>,
+    r: Vec<f64>,
+    c1: Vec<f64>,
+    c2: Vec<f64>,
+    dp: Vec<f64>,
+    dz1: Vec<f64>,
+    dz2: Vec<f64>,
+    /// H_j·x gathered for each section, and per-section terms of the sums.
+    gathered: Vec<f64>,
 }
 
-impl Section {
-    /// The law residual at (u, p): |p − proj(p − u/W_jj)|·W_jj (m/s), as [`FrictionProblem::section_residual`]
-    /// with 1/W_jj kept at hand.
-    #[inline]
-    fn law_residual(&self, p: f64) -> f64 {
-        (p - (p - self.u * self.inv_w).clamp(-self.a, self.a)).abs() * self.w
-    }
-
-    /// H_j·x (x padded with three zeros past its end).
-    #[inline]
-    fn dot(&self, x: &[f64]) -> f64 {
-        let x = &x[self.first..self.first + 4];
-        self.h[0] * x[0] + self.h[1] * x[1] + self.h[2] * x[2] + self.h[3] * x[3]
-    }
-
-    /// out += s·H_jᵀ (out padded with three zeros past its end).
-    #[inline]
-    fn add_transpose(&self, s: f64, out: &mut [f64]) {
-        let out = &mut out[self.first..self.first + 4];
-        for k in 0..4 {
-            out[k] += s * self.h[k];
+impl Sections {
+    /// Size every array to `index.len()` (no allocation once the capacity is there).
+    fn fit(&mut self) {
+        let len = self.index.len();
+        self.first.resize(len, 0);
+        self.h.resize(len, [0.0; 4]);
+        self.len.resize(len, 0);
+        for v in [
+            &mut self.a,
+            &mut self.w,
+            &mut self.inv_w,
+            &mut self.u_free,
+            &mut self.u,
+            &mut self.p,
+            &mut self.s1,
+            &mut self.s2,
+            &mut self.z1,
+            &mut self.z2,
+            &mut self.inv_s1,
+            &mut self.inv_s2,
+            &mut self.inv_z1,
+            &mut self.inv_z2,
+            &mut self.inv_sigma,
+            &mut self.r,
+            &mut self.c1,
+            &mut self.c2,
+            &mut self.dp,
+            &mut self.dz1,
+            &mut self.dz2,
+            &mut self.gathered,
+        ] {
+            v.resize(len, 0.0);
         }
+    }
+
+    /// gathered_k = H_k·x (x padded with three zeros past its end).
+    fn gather(&mut self, x: &[f64]) {
+        for ((g, &first), h) in self.gathered.iter_mut().zip(&self.first).zip(&self.h) {
+            let x = &x[first..first + 4];
+            *g = h[0] * x[0] + h[1] * x[1] + h[2] * x[2] + h[3] * x[3];
+        }
+    }
+
+    /// out += Σ_k s_k·H_kᵀ, in section order (out padded with three zeros past its end).
+    fn scatter(&self, s: impl Iterator<Item = f64>, out: &mut [f64]) {
+        for ((s, &first), h) in s.zip(&self.first).zip(&self.h) {
+            let out = &mut out[first..first + 4];
+            for k in 0..4 {
+                out[k] += s * h[k];
+            }
+        }
+    }
+
+    /// max_k of the law residual |p − proj(p − u/W)|·W (m/s).
+    fn law_residual(&self) -> f64 {
+        let mut residual: f64 = 0.0;
+        for ((((&p, &u), &a), &w), &inv_w) in self.p.iter().zip(&self.u).zip(&self.a).zip(&self.w).zip(&self.inv_w) {
+            residual = residual.max((p - (p - u * inv_w).clamp(-a, a)).abs() * w);
+        }
+        residual
     }
 }
 
 /// Per-section and per-DOF scratch of the interior-point iteration.
 #[derive(Debug)]
 struct Work {
-    active: Vec<usize>,
-    sections: Vec<Section>,
+    sections: Sections,
     y: Vec<f64>,
     dy: Vec<f64>,
     b: SymmetricBanded,
     b_factor: BandedLdlt,
+}
+
+impl Work {
+    /// From rhs = Σ H_jᵀ r_j Σ_j⁻¹ (in `dy`): dy ← B⁻¹ rhs, Δp_j = Σ_j⁻¹(r_j − H_j dy), Δz from the complementarity
+    /// targets c (s₁Δz₁ = c₁ − s₁z₁ + z₁Δp, s₂Δz₂ = c₂ − s₂z₂ − z₂Δp); returns the largest feasible primal (p, s)
+    /// and dual (z) steps ≤ 1. Taking them separately saves 11–13 % of the iterations (measured) and is safe here:
+    /// convergence is judged on the law residual of (u, p), not on the dual residual.
+    fn newton_direction(&mut self) -> (f64, f64) {
+        let n = self.b_factor.order();
+        self.b_factor.solve_in_place(&mut self.dy[..n]);
+        let q = &mut self.sections;
+        q.gather(&self.dy);
+        let len = q.index.len();
+        let (primal, dual) = direction_terms(
+            [&q.r[..len], &q.gathered[..len], &q.inv_sigma[..len], &q.c1[..len], &q.c2[..len], &q.z1[..len]],
+            [&q.z2[..len], &q.inv_s1[..len], &q.inv_s2[..len], &q.inv_z1[..len], &q.inv_z2[..len]],
+            [&mut q.dp[..len], &mut q.dz1[..len], &mut q.dz2[..len]],
+        );
+        (1.0 / primal, 1.0 / dual)
+    }
+
+    /// Mehrotra predictor–corrector on the active sections (`sections.index`, with `u_free` set), from p = 0, with
+    /// `base` = the matrix M̂ (or its window condensation) over the DOFs from `offset` on. Writes the impulses of
+    /// the active sections into `p`. Returns (iterations, residual).
+    fn iterate(
+        &mut self,
+        problem: &FrictionProblem<'_>,
+        base: &SymmetricBanded,
+        offset: usize,
+        p: &mut [f64],
+        tolerance: f64,
+        max_iterations: usize,
+    ) -> crate::Result<(usize, f64)> {
+        let rows = problem.contacts.rows();
+        let nw = base.order();
+        // Three zeros of padding past the end let every row be read and written four entries wide.
+        self.y.resize(nw + 3, 0.0);
+        self.dy.resize(nw + 3, 0.0);
+        self.y.iter_mut().for_each(|x| *x = 0.0);
+        let q = &mut self.sections;
+        let len = q.index.len();
+        for k in 0..len {
+            let j = q.index[k];
+            let row = &rows[j];
+            debug_assert!(row.dofs().windows(2).all(|d| d[1] == d[0] + 1), "rows touch consecutive free DOFs");
+            q.first[k] = row.dofs()[0] - offset;
+            q.h[k] = [0.0; 4];
+            q.h[k][..row.len()].copy_from_slice(row.values());
+            q.len[k] = row.len();
+            q.a[k] = problem.bounds[j];
+            q.w[k] = problem.delassus_diagonal[j];
+            q.inv_w[k] = 1.0 / q.w[k];
+        }
+        // Start at p = 0, the centre of every box: warm starts from the previous step's (p, z) were measured to
+        // cost more iterations, not fewer (18.6 cold vs 19.8–23.9 warm per step, distributed 5 kN/m).
+        let scale = q.u_free.iter().fold(super::VELOCITY_FLOOR, |s, u| s.max(u.abs()));
+        let shift = 0.01 * scale;
+        for k in 0..len {
+            q.p[k] = 0.0;
+            q.u[k] = q.u_free[k];
+            q.s1[k] = q.a[k];
+            q.s2[k] = q.a[k];
+            // Split u into z₂ − z₁, both kept away from zero.
+            q.z1[k] = (-q.u[k]).max(0.0) + shift;
+            q.z2[k] = q.u[k].max(0.0) + shift;
+        }
+        let mut residual = q.law_residual();
+        let inv_count = 1.0 / (2 * len.max(1)) as f64;
+        let mut iterations = 0;
+        while residual > tolerance && iterations < max_iterations && len > 0 {
+            iterations += 1;
+            // B = base + HᵀΣ⁻¹H, Σ = z₁/s₁ + z₂/s₂, floored so that Σ⁻¹ stays finite for sections stuck to
+            // round-off (z → 0): beyond ~1e15·W_jj the extra stiffness changes nothing. Predictor (affine
+            // scaling, targets c = 0): r = −u, right-hand side Σ H_jᵀ r_j/Σ_j.
+            let q = &mut self.sections;
+            predictor_terms(
+                [&q.s1[..len], &q.s2[..len], &q.z1[..len], &q.z2[..len], &q.w[..len], &q.u[..len]],
+                [&mut q.inv_s1[..len], &mut q.inv_s2[..len], &mut q.inv_z1[..len], &mut q.inv_z2[..len]],
+                [&mut q.inv_sigma[..len], &mut q.r[..len], &mut q.c1[..len], &mut q.c2[..len]],
+            );
+            let mut mu = 0.0;
+            for (((s1, z1), s2), z2) in q.s1.iter().zip(&q.z1).zip(&q.s2).zip(&q.z2) {
+                mu += s1 * z1 + s2 * z2;
+            }
+            mu *= inv_count;
+            self.b.copy_from(base);
+            for (((&first, h), &entries), &inv_sigma) in q.first.iter().zip(&q.h).zip(&q.len).zip(&q.inv_sigma) {
+                self.b.add_outer_contiguous(first, &h[..entries], inv_sigma);
+            }
+            self.dy.iter_mut().for_each(|x| *x = 0.0);
+            q.scatter(q.r.iter().zip(&q.inv_sigma).map(|(r, s)| r * s), &mut self.dy);
+            self.b.factor_into(&mut self.b_factor)?;
+            let (alpha_p_aff, alpha_d_aff) = self.newton_direction();
+            // Corrector: targets σμ − Δs_aff∘Δz_aff (Δs₁ = −Δp, Δs₂ = Δp), σ = (μ_aff/μ)³, r = −u − c₁/s₁ + c₂/s₂.
+            let q = &mut self.sections;
+            affine_terms(
+                (alpha_p_aff, alpha_d_aff),
+                [&q.s1[..len], &q.s2[..len], &q.z1[..len], &q.z2[..len]],
+                [&q.dp[..len], &q.dz1[..len], &q.dz2[..len]],
+                &mut q.gathered[..len],
+            );
+            let mut mu_affine = 0.0;
+            for term in &q.gathered {
+                mu_affine += term;
+            }
+            let target = (mu_affine * inv_count / mu).powi(3).min(1.0) * mu;
+            corrector_terms(
+                target,
+                [&q.dp[..len], &q.dz1[..len], &q.dz2[..len], &q.u[..len], &q.inv_s1[..len], &q.inv_s2[..len]],
+                [&mut q.c1[..len], &mut q.c2[..len], &mut q.r[..len]],
+            );
+            self.dy.iter_mut().for_each(|x| *x = 0.0);
+            q.scatter(q.r.iter().zip(&q.inv_sigma).map(|(r, s)| r * s), &mut self.dy);
+            let (alpha_p, alpha_d) = self.newton_direction();
+            let (alpha, alpha_d) =
+                ((FRACTION_TO_BOUNDARY * alpha_p).min(1.0), (FRACTION_TO_BOUNDARY * alpha_d).min(1.0));
+            for (y, dy) in self.y.iter_mut().zip(&self.dy) {
+                *y += alpha * dy;
+            }
+            let q = &mut self.sections;
+            q.gather(&self.y);
+            take_step(
+                (alpha, alpha_d),
+                [&q.dp[..len], &q.dz1[..len], &q.dz2[..len], &q.u_free[..len], &q.gathered[..len]],
+                [
+                    &mut q.p[..len],
+                    &mut q.s1[..len],
+                    &mut q.s2[..len],
+                    &mut q.z1[..len],
+                    &mut q.z2[..len],
+                    &mut q.u[..len],
+                ],
+            );
+            residual = q.law_residual();
+        }
+        for (&j, &pk) in self.sections.index.iter().zip(&self.sections.p) {
+            p[j] = pk;
+        }
+        Ok((iterations, residual))
+    }
+}
+
+// The per-section loops of the iteration, as functions of slices so that the compiler knows the arrays do not
+// overlap (and, all of one length, needs no bounds checks): it then vectorises them.
+
+/// Predictor set-up: 1/s₁, 1/s₂, 1/z₁, 1/z₂, Σ⁻¹ = 1/max(z₁/s₁ + z₂/s₂, 1e-15·W), r = −u, c₁ = c₂ = 0.
+fn predictor_terms(input: [&[f64]; 6], inverses: [&mut [f64]; 4], out: [&mut [f64]; 4]) {
+    let [s1, s2, z1, z2, w, u] = input;
+    let [inv_s1, inv_s2, inv_z1, inv_z2] = inverses;
+    let [inv_sigma, r, c1, c2] = out;
+    let len = s1.len();
+    let (s2, z1, z2, w, u) = (&s2[..len], &z1[..len], &z2[..len], &w[..len], &u[..len]);
+    let (inv_s1, inv_s2, inv_z1, inv_z2) =
+        (&mut inv_s1[..len], &mut inv_s2[..len], &mut inv_z1[..len], &mut inv_z2[..len]);
+    let (inv_sigma, r, c1, c2) = (&mut inv_sigma[..len], &mut r[..len], &mut c1[..len], &mut c2[..len]);
+    for k in 0..len {
+        inv_s1[k] = 1.0 / s1[k];
+        inv_s2[k] = 1.0 / s2[k];
+        inv_z1[k] = 1.0 / z1[k];
+        inv_z2[k] = 1.0 / z2[k];
+        inv_sigma[k] = 1.0 / (z1[k] * inv_s1[k] + z2[k] * inv_s2[k]).max(1e-15 * w[k]);
+        r[k] = -u[k];
+        c1[k] = 0.0;
+        c2[k] = 0.0;
+    }
+}
+
+/// Newton direction per section: Δp = (r − H dy)Σ⁻¹, Δz₁ = (c₁ + z₁Δp)/s₁ − z₁, Δz₂ = (c₂ − z₂Δp)/s₂ − z₂; returns
+/// the largest ratios −Δx/x over the primal (s) and dual (z) variables, at least 1.
+fn direction_terms(first: [&[f64]; 6], second: [&[f64]; 5], out: [&mut [f64]; 3]) -> (f64, f64) {
+    let [r, g, inv_sigma, c1, c2, z1] = first;
+    let [z2, inv_s1, inv_s2, inv_z1, inv_z2] = second;
+    let [dp_out, dz1_out, dz2_out] = out;
+    let len = r.len();
+    let (g, inv_sigma, c1, c2, z1) = (&g[..len], &inv_sigma[..len], &c1[..len], &c2[..len], &z1[..len]);
+    let (z2, inv_s1, inv_s2, inv_z1, inv_z2) =
+        (&z2[..len], &inv_s1[..len], &inv_s2[..len], &inv_z1[..len], &inv_z2[..len]);
+    let (dp_out, dz1_out, dz2_out) = (&mut dp_out[..len], &mut dz1_out[..len], &mut dz2_out[..len]);
+    let (mut primal, mut dual): (f64, f64) = (1.0, 1.0);
+    for k in 0..len {
+        let dp = (r[k] - g[k]) * inv_sigma[k];
+        let dz1 = (c1[k] + z1[k] * dp) * inv_s1[k] - z1[k];
+        let dz2 = (c2[k] - z2[k] * dp) * inv_s2[k] - z2[k];
+        dp_out[k] = dp;
+        dz1_out[k] = dz1;
+        dz2_out[k] = dz2;
+        primal = primal.max(dp * inv_s1[k]).max(-dp * inv_s2[k]);
+        dual = dual.max(-dz1 * inv_z1[k]).max(-dz2 * inv_z2[k]);
+    }
+    (primal, dual)
+}
+
+/// Terms of μ_aff: (s₁ − α_pΔp)(z₁ + α_dΔz₁) + (s₂ + α_pΔp)(z₂ + α_dΔz₂).
+fn affine_terms((alpha_p, alpha_d): (f64, f64), state: [&[f64]; 4], direction: [&[f64]; 3], out: &mut [f64]) {
+    let [s1, s2, z1, z2] = state;
+    let [dp, dz1, dz2] = direction;
+    let len = out.len();
+    let (s1, s2, z1, z2, dp, dz1, dz2) =
+        (&s1[..len], &s2[..len], &z1[..len], &z2[..len], &dp[..len], &dz1[..len], &dz2[..len]);
+    for k in 0..len {
+        let step = alpha_p * dp[k];
+        out[k] = (s1[k] - step) * (z1[k] + alpha_d * dz1[k]) + (s2[k] + step) * (z2[k] + alpha_d * dz2[k]);
+    }
+}
+
+/// Corrector targets c₁ = t + Δp Δz₁, c₂ = t − Δp Δz₂ and r = −u − c₁/s₁ + c₂/s₂.
+fn corrector_terms(target: f64, input: [&[f64]; 6], out: [&mut [f64]; 3]) {
+    let [dp, dz1, dz2, u, inv_s1, inv_s2] = input;
+    let [c1, c2, r] = out;
+    let len = dp.len();
+    let (dz1, dz2, u, inv_s1, inv_s2) = (&dz1[..len], &dz2[..len], &u[..len], &inv_s1[..len], &inv_s2[..len]);
+    let (c1, c2, r) = (&mut c1[..len], &mut c2[..len], &mut r[..len]);
+    for k in 0..len {
+        c1[k] = target + dp[k] * dz1[k];
+        c2[k] = target - dp[k] * dz2[k];
+        r[k] = -u[k] - c1[k] * inv_s1[k] + c2[k] * inv_s2[k];
+    }
+}
+
+/// The step: p += αΔp, s₁ −= αΔp, s₂ += αΔp (slacks are updated, not recomputed from p: near a bound a − p loses
+/// all precision), z += α_dΔz, u = u_free + H y.
+fn take_step((alpha, alpha_d): (f64, f64), input: [&[f64]; 5], state: [&mut [f64]; 6]) {
+    let [dp, dz1, dz2, u_free, hy] = input;
+    let [p, s1, s2, z1, z2, u] = state;
+    let len = dp.len();
+    let (dz1, dz2, u_free, hy) = (&dz1[..len], &dz2[..len], &u_free[..len], &hy[..len]);
+    let (p, s1, s2, z1, z2, u) =
+        (&mut p[..len], &mut s1[..len], &mut s2[..len], &mut z1[..len], &mut z2[..len], &mut u[..len]);
+    for k in 0..len {
+        let step = alpha * dp[k];
+        p[k] += step;
+        s1[k] -= step;
+        s2[k] += step;
+        z1[k] += alpha_d * dz1[k];
+        z2[k] += alpha_d * dz2[k];
+        u[k] = u_free[k] + hy[k];
+    }
 }
 
 /// Banded primal–dual interior-point solver with a moving window; scratch allocated once per run.
@@ -137,159 +418,6 @@ pub struct BandedInteriorPoint {
     started: bool,
     /// How the steps were solved.
     pub statistics: WindowStatistics,
-}
-
-impl Work {
-    /// From rhs = Σ H_jᵀ r_j Σ_j⁻¹ (in `dy`): dy ← B⁻¹ rhs, Δp_j = Σ_j⁻¹(r_j − H_j dy), Δz from the complementarity
-    /// targets c (s₁Δz₁ = c₁ − s₁z₁ + z₁Δp, s₂Δz₂ = c₂ − s₂z₂ − z₂Δp); returns the largest feasible primal (p, s)
-    /// and dual (z) steps ≤ 1. Taking them separately saves 11–13 % of the iterations (measured) and is safe here:
-    /// convergence is judged on the law residual of (u, p), not on the dual residual.
-    fn newton_direction(&mut self) -> (f64, f64) {
-        let n = self.b_factor.order();
-        self.b_factor.solve_in_place(&mut self.dy[..n]);
-        let dy = &self.dy;
-        // max of −Δx/x over the primal (s) and the dual (z) variables; α = 1/ratio
-        let (mut primal, mut dual): (f64, f64) = (1.0, 1.0);
-        for &j in &self.active {
-            let q = &mut self.sections[j];
-            let dp = (q.r - q.dot(dy)) * q.inv_sigma;
-            let dz1 = (q.c1 + q.z1 * dp) * q.inv_s1 - q.z1;
-            let dz2 = (q.c2 - q.z2 * dp) * q.inv_s2 - q.z2;
-            q.dp = dp;
-            q.dz1 = dz1;
-            q.dz2 = dz2;
-            // Plain comparisons (no NaN handling needed: every quantity is finite here) are cheaper than f64::max.
-            for candidate in [dp * q.inv_s1, -dp * q.inv_s2] {
-                if candidate > primal {
-                    primal = candidate;
-                }
-            }
-            for candidate in [-dz1 * q.inv_z1, -dz2 * q.inv_z2] {
-                if candidate > dual {
-                    dual = candidate;
-                }
-            }
-        }
-        (1.0 / primal, 1.0 / dual)
-    }
-
-    /// Mehrotra predictor–corrector on the active sections, from p = 0, with `base` = the matrix M̂ (or its window
-    /// condensation) over the DOFs from `offset` on and u_free set. Returns (iterations, residual).
-    fn iterate(
-        &mut self,
-        problem: &FrictionProblem<'_>,
-        base: &SymmetricBanded,
-        offset: usize,
-        p: &mut [f64],
-        tolerance: f64,
-        max_iterations: usize,
-    ) -> crate::Result<(usize, f64)> {
-        let a = &problem.bounds;
-        let rows = problem.contacts.rows();
-        let nw = base.order();
-        // Three zeros of padding past the end let every row be read and written four entries wide.
-        self.y.resize(nw + 3, 0.0);
-        self.dy.resize(nw + 3, 0.0);
-        self.y.iter_mut().for_each(|x| *x = 0.0);
-        for &j in &self.active {
-            let q = &mut self.sections[j];
-            let row = &rows[j];
-            debug_assert!(row.dofs().windows(2).all(|d| d[1] == d[0] + 1), "rows touch consecutive free DOFs");
-            q.first = row.dofs()[0] - offset;
-            q.len = row.len();
-            q.h = [0.0; 4];
-            q.h[..q.len].copy_from_slice(row.values());
-            q.a = a[j];
-            q.w = problem.delassus_diagonal[j];
-            q.inv_w = 1.0 / q.w;
-        }
-        // Start at p = 0, the centre of every box: warm starts from the previous step's (p, z) were measured to
-        // cost more iterations, not fewer (18.6 cold vs 19.8–23.9 warm per step, distributed 5 kN/m).
-        let scale = self.active.iter().fold(super::VELOCITY_FLOOR, |s, &j| s.max(self.sections[j].u_free.abs()));
-        let shift = 0.01 * scale;
-        let mut residual: f64 = 0.0;
-        for &j in &self.active {
-            p[j] = 0.0;
-            let q = &mut self.sections[j];
-            q.u = q.u_free;
-            q.s1 = a[j];
-            q.s2 = a[j];
-            // Split u into z₂ − z₁, both kept away from zero.
-            q.z1 = (-q.u).max(0.0) + shift;
-            q.z2 = q.u.max(0.0) + shift;
-            let r = q.law_residual(0.0);
-            if r > residual {
-                residual = r;
-            }
-        }
-        let inv_count = 1.0 / (2 * self.active.len().max(1)) as f64;
-        let mut iterations = 0;
-        while residual > tolerance && iterations < max_iterations && !self.active.is_empty() {
-            iterations += 1;
-            // B = base + HᵀΣ⁻¹H, Σ = z₁/s₁ + z₂/s₂, floored so that Σ⁻¹ stays finite for sections stuck to
-            // round-off (z → 0): beyond ~1e15·W_jj the extra stiffness changes nothing. Predictor (affine
-            // scaling, targets c = 0): r = −u, right-hand side Σ H_jᵀ r_j/Σ_j.
-            self.b.copy_from(base);
-            self.dy.iter_mut().for_each(|x| *x = 0.0);
-            let mut mu = 0.0;
-            for &j in &self.active {
-                let q = &mut self.sections[j];
-                mu += q.s1 * q.z1 + q.s2 * q.z2;
-                q.inv_s1 = 1.0 / q.s1;
-                q.inv_s2 = 1.0 / q.s2;
-                q.inv_z1 = 1.0 / q.z1;
-                q.inv_z2 = 1.0 / q.z2;
-                q.inv_sigma = 1.0 / (q.z1 * q.inv_s1 + q.z2 * q.inv_s2).max(1e-15 * q.w);
-                q.r = -q.u;
-                q.c1 = 0.0;
-                q.c2 = 0.0;
-                self.b.add_outer_contiguous(q.first, &q.h[..q.len], q.inv_sigma);
-                q.add_transpose(q.r * q.inv_sigma, &mut self.dy);
-            }
-            mu *= inv_count;
-            self.b.factor_into(&mut self.b_factor)?;
-            let (alpha_p_aff, alpha_d_aff) = self.newton_direction();
-            // Corrector: targets σμ − Δs_aff∘Δz_aff (Δs₁ = −Δp, Δs₂ = Δp), σ = (μ_aff/μ)³, r = −u − c₁/s₁ + c₂/s₂.
-            let mut mu_affine = 0.0;
-            for &j in &self.active {
-                let q = &self.sections[j];
-                let dp = alpha_p_aff * q.dp;
-                mu_affine += (q.s1 - dp) * (q.z1 + alpha_d_aff * q.dz1) + (q.s2 + dp) * (q.z2 + alpha_d_aff * q.dz2);
-            }
-            let target = (mu_affine * inv_count / mu).powi(3).min(1.0) * mu;
-            self.dy.iter_mut().for_each(|x| *x = 0.0);
-            for &j in &self.active {
-                let q = &mut self.sections[j];
-                q.c1 = target + q.dp * q.dz1;
-                q.c2 = target - q.dp * q.dz2;
-                q.r = -q.u - q.c1 * q.inv_s1 + q.c2 * q.inv_s2;
-                q.add_transpose(q.r * q.inv_sigma, &mut self.dy);
-            }
-            let (alpha_p, alpha_d) = self.newton_direction();
-            let (alpha, alpha_d) =
-                ((FRACTION_TO_BOUNDARY * alpha_p).min(1.0), (FRACTION_TO_BOUNDARY * alpha_d).min(1.0));
-            for (y, dy) in self.y.iter_mut().zip(&self.dy) {
-                *y += alpha * dy;
-            }
-            residual = 0.0;
-            for &j in &self.active {
-                let q = &mut self.sections[j];
-                let dp = alpha * q.dp;
-                p[j] += dp;
-                // Slacks are updated, not recomputed from p: near a bound a − p loses all precision.
-                q.s1 -= dp;
-                q.s2 += dp;
-                q.z1 += alpha_d * q.dz1;
-                q.z2 += alpha_d * q.dz2;
-                q.u = q.u_free + q.dot(&self.y);
-                let r = q.law_residual(p[j]);
-                if r > residual {
-                    residual = r;
-                }
-            }
-        }
-        Ok((iterations, residual))
-    }
 }
 
 impl BandedInteriorPoint {
@@ -314,8 +442,7 @@ impl BandedInteriorPoint {
             backward,
             window_matrix: problem.m_hat.clone(),
             work: Work {
-                active: Vec::with_capacity(m),
-                sections: vec![Section::default(); m],
+                sections: Sections::default(),
                 y: vec![0.0; n],
                 dy: vec![0.0; n],
                 b: problem.m_hat.clone(),
@@ -343,10 +470,12 @@ impl BandedInteriorPoint {
     ) -> crate::Result<(usize, f64)> {
         self.statistics.full += 1;
         self.statistics.sections_solved += self.all_active.len();
-        self.work.active.clear();
-        self.work.active.extend_from_slice(&self.all_active);
-        for (q, &u) in self.work.sections.iter_mut().zip(u_free) {
-            q.u_free = u;
+        let q = &mut self.work.sections;
+        q.index.clear();
+        q.index.extend_from_slice(&self.all_active);
+        q.fit();
+        for (u, &j) in q.u_free.iter_mut().zip(&q.index) {
+            *u = u_free[j];
         }
         self.work.iterate(problem, problem.m_hat, 0, p, tolerance, self.max_iterations)
     }
@@ -370,11 +499,11 @@ impl BandedInteriorPoint {
             }
         }
         let (lo, hi) = (lo - margin, hi + margin);
-        self.work.active.clear();
+        self.work.sections.index.clear();
         let (mut start, mut end) = (usize::MAX, 0);
         for &j in &self.all_active {
             if (lo..=hi).contains(&positions[j]) {
-                self.work.active.push(j);
+                self.work.sections.index.push(j);
                 if let Some((first, last)) = rows[j].dof_span() {
                     start = start.min(first);
                     end = end.max(last + 1);
@@ -383,7 +512,7 @@ impl BandedInteriorPoint {
         }
         let n = problem.m_hat.order();
         let bandwidth = problem.m_hat.bandwidth();
-        if self.work.active.len() == self.all_active.len() || end <= start {
+        if self.work.sections.index.len() == self.all_active.len() || end <= start {
             return Ok(None);
         }
         // The condensation needs the window wider than the band.
@@ -393,12 +522,14 @@ impl BandedInteriorPoint {
         }
         // v' = v − M̂⁻¹H_Wᵀp_W: the motion with the window's impulses removed; u_free of the window from it.
         self.correction.iter_mut().for_each(|x| *x = 0.0);
-        for &j in &self.work.active {
+        for &j in &self.work.sections.index {
             rows[j].add_transpose(p[j], &mut self.correction);
         }
         problem.factor.solve_in_place(&mut self.correction);
-        for &j in &self.work.active {
-            self.work.sections[j].u_free = rows[j].dot(&self.v) - rows[j].dot(&self.correction);
+        let q = &mut self.work.sections;
+        q.fit();
+        for (u, &j) in q.u_free.iter_mut().zip(&q.index) {
+            *u = rows[j].dot(&self.v) - rows[j].dot(&self.correction);
         }
         problem.m_hat.principal_submatrix_into(start, end, &mut self.window_matrix);
         if start > 0 {
@@ -407,7 +538,7 @@ impl BandedInteriorPoint {
         if end < n {
             self.backward.as_ref().expect("window factors").subtract_trailing_schur(end, &mut self.window_matrix);
         }
-        self.statistics.sections_solved += self.work.active.len();
+        self.statistics.sections_solved += self.work.sections.index.len();
         let (iterations, _) =
             self.work.iterate(problem, &self.window_matrix, start, p, tolerance, self.max_iterations)?;
         Ok(Some(iterations))
