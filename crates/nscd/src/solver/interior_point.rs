@@ -92,6 +92,15 @@ struct Sections {
 }
 
 impl Sections {
+    /// Arrays with room for `m` sections, so that no step allocates.
+    fn with_capacity(m: usize) -> Self {
+        let mut sections = Self::default();
+        sections.index.resize(m, 0);
+        sections.fit();
+        sections.index.clear();
+        sections
+    }
+
     /// Size every array to `index.len()` (no allocation once the capacity is there).
     fn fit(&mut self) {
         let len = self.index.len();
@@ -442,7 +451,7 @@ impl BandedInteriorPoint {
             backward,
             window_matrix: problem.m_hat.clone(),
             work: Work {
-                sections: Sections::default(),
+                sections: Sections::with_capacity(m),
                 y: vec![0.0; n],
                 dy: vec![0.0; n],
                 b: problem.m_hat.clone(),
