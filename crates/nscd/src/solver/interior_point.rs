@@ -143,9 +143,12 @@ impl Sections {
         }
     }
 
-    /// out += Σ_k s_k·H_kᵀ, in section order (out padded with three zeros past its end).
-    fn scatter(&self, s: impl Iterator<Item = f64>, out: &mut [f64]) {
-        for ((s, &first), h) in s.zip(&self.first).zip(&self.h) {
+    /// The Newton right-hand side out = Σ_k H_kᵀ r_k Σ_k⁻¹, summed in section order (out padded with three zeros
+    /// past its end).
+    fn right_hand_side(&self, out: &mut [f64]) {
+        out.iter_mut().for_each(|x| *x = 0.0);
+        for (((&r, &inv_sigma), &first), h) in self.r.iter().zip(&self.inv_sigma).zip(&self.first).zip(&self.h) {
+            let s = r * inv_sigma;
             let out = &mut out[first..first + 4];
             for k in 0..4 {
                 out[k] += s * h[k];
@@ -260,8 +263,7 @@ impl Work {
             for (((&first, h), &entries), &inv_sigma) in q.first.iter().zip(&q.h).zip(&q.len).zip(&q.inv_sigma) {
                 self.b.add_outer_contiguous(first, &h[..entries], inv_sigma);
             }
-            self.dy.iter_mut().for_each(|x| *x = 0.0);
-            q.scatter(q.r.iter().zip(&q.inv_sigma).map(|(r, s)| r * s), &mut self.dy);
+            q.right_hand_side(&mut self.dy);
             self.b.factor_into(&mut self.b_factor)?;
             let (alpha_p_aff, alpha_d_aff) = self.newton_direction();
             // Corrector: targets σμ − Δs_aff∘Δz_aff (Δs₁ = −Δp, Δs₂ = Δp), σ = (μ_aff/μ)³, r = −u − c₁/s₁ + c₂/s₂.
@@ -282,8 +284,7 @@ impl Work {
                 [&q.dp[..len], &q.dz1[..len], &q.dz2[..len], &q.u[..len], &q.inv_s1[..len], &q.inv_s2[..len]],
                 [&mut q.c1[..len], &mut q.c2[..len], &mut q.r[..len]],
             );
-            self.dy.iter_mut().for_each(|x| *x = 0.0);
-            q.scatter(q.r.iter().zip(&q.inv_sigma).map(|(r, s)| r * s), &mut self.dy);
+            q.right_hand_side(&mut self.dy);
             let (alpha_p, alpha_d) = self.newton_direction();
             let (alpha, alpha_d) =
                 ((FRACTION_TO_BOUNDARY * alpha_p).min(1.0), (FRACTION_TO_BOUNDARY * alpha_d).min(1.0));
