@@ -54,6 +54,37 @@ fn friction_free_against_bare_solves(c: &mut Criterion) {
             }
         })
     });
+    // The least any θ-method step must do, in plain loops: the right-hand side −h[Kq + hθKv + Cv] + F, the solve,
+    // v and q updated, the two products K v and C v of the new velocity and K q carried forward — no energy ledger,
+    // no observers. If this alone exceeds 1.3× the bare solves, so must a whole run.
+    group.bench_function(BenchmarkId::new("least_step_loop", steps), |b| {
+        let stiffness = fem_beam::BandDiagonals::new(&system.stiffness);
+        let damping = fem_beam::BandDiagonals::new(&system.damping);
+        let (h, theta, n) = (h, settings.theta, system.dofs());
+        b.iter(|| {
+            let [mut q, mut v, mut kq, mut kv, mut kv_next, mut cv, mut w] = std::array::from_fn(|_| vec![0.0; n]);
+            for step in 0..steps {
+                for (((w, kq), kv), cv) in w.iter_mut().zip(&kq).zip(&kv).zip(&cv) {
+                    *w = -h * (kq + h * theta * kv + cv);
+                }
+                w[(2 * step / 10) % n] += h * 83.4e3;
+                factor.solve_in_place(&mut w);
+                for ((w, v), q) in w.iter_mut().zip(v.iter_mut()).zip(q.iter_mut()) {
+                    let next = *v + *w;
+                    *w = theta * next + (1.0 - theta) * *v;
+                    *v = next;
+                    *q += h * *w;
+                }
+                stiffness.mul_vec(&v, &mut kv_next);
+                damping.mul_vec(&v, &mut cv);
+                for ((kq, kv_next), kv) in kq.iter_mut().zip(&kv_next).zip(&kv) {
+                    *kq += h * (theta * kv_next + (1.0 - theta) * kv);
+                }
+                std::mem::swap(&mut kv, &mut kv_next);
+            }
+            black_box(q)
+        })
+    });
     let none = ContactSet::new();
     group.bench_function(BenchmarkId::new("whole_run_no_friction", steps), |b| {
         b.iter(|| Simulation::new(&model, black_box(&none), &settings).unwrap().run().unwrap())

@@ -1,5 +1,5 @@
 //! Per configuration and per friction solver: iterations per step and wall time per step of the reference run
-//! (200 elements, v = 200 m/s, θ = ½, tolerance 1e-10), as a Markdown table for BENCHMARKS.md.
+//! (200 elements, v = 200 m/s, θ = ½, the default tolerance), as a Markdown table for BENCHMARKS.md.
 //!
 //! `cargo run --release -p nscd --example solver_table -- [steps]` (default: the whole 2000-step run). A solver
 //! that fails a step (unconverged within its iteration cap) is reported with the step where it stopped.
