@@ -21,6 +21,7 @@ pub mod response;
 #[cfg(feature = "clarabel")]
 pub mod clarabel;
 
+use crate::kernels::axpy;
 use fem_beam::{BandedLdlt, SymmetricBanded};
 use friction::ContactSet;
 use friction::coulomb::natural_residual;
@@ -125,9 +126,7 @@ impl<'a> FrictionProblem<'a> {
             Some(responses) => responses.add(p, v),
             None => {
                 self.solve_response(p, work);
-                for (x, w) in v.iter_mut().zip(work.iter()) {
-                    *x += w;
-                }
+                axpy(1.0, work, v);
             }
         }
     }
@@ -168,9 +167,7 @@ impl<'a> FrictionProblem<'a> {
             responses.add(p, v);
         } else {
             self.solve_response(p, v);
-            for (x, f) in v.iter_mut().zip(v_free) {
-                *x += f;
-            }
+            axpy(1.0, v_free, v);
         }
         self.contacts.velocities(v, u);
         self.law_residual(u, p)

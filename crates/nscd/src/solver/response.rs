@@ -5,6 +5,7 @@
 //! case), so each G_j is short once its entries below the solve's own round-off are dropped; with few sections
 //! (devices) Σ_j p_j G_j over the non-zero impulses is several times cheaper than the solve and vectorises.
 
+use crate::kernels::axpy;
 use fem_beam::BandedLdlt;
 use friction::ContactSet;
 
@@ -60,9 +61,7 @@ impl ImpulseResponses {
         for (j, &pj) in p.iter().enumerate() {
             if pj != 0.0 {
                 let g = &self.values[self.offset[j]..self.offset[j + 1]];
-                for (v, g) in v[self.start[j]..self.start[j] + g.len()].iter_mut().zip(g) {
-                    *v += pj * g;
-                }
+                axpy(pj, g, &mut v[self.start[j]..self.start[j] + g.len()]);
             }
         }
     }
