@@ -1,7 +1,7 @@
 //! Times one reference run: `cargo run --release -p nscd --example probe -- <case>` with case one of
 //! `none`, `devices7`, `devices31`, `distributed1k`, `distributed10k`, `distributed5k` (default), `distributed5k-whole`,
-//! optionally followed by a step count to stop early (for instruction counts under callgrind), a solver tolerance and
-//! an element count (200 m beam; default 200). Prints the wall time of the time loop, the solver statistics and the
+//! optionally followed by a step count to stop early (for instruction counts under callgrind), a solver tolerance,
+//! an element count (200 m beam; default 200) and a speed (m/s; default 200). Prints the wall time of the time loop, the solver statistics and the
 //! peak resident memory of the process (VmHWM, Linux).
 
 use fem_beam::reference::uic60_on_soft_soil;
@@ -18,6 +18,9 @@ fn main() {
     let mut settings = RunSettings::default();
     if let Some(t) = std::env::args().nth(3).and_then(|s| s.parse().ok()) {
         settings.solver.tolerance = t;
+    }
+    if let Some(v) = std::env::args().nth(5).and_then(|s| s.parse().ok()) {
+        settings.speed = v;
     }
     let contacts = match case.as_str() {
         "none" => ContactSet::new(),
