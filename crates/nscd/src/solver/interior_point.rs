@@ -169,6 +169,17 @@ impl Sections {
     }
 }
 
+/// What one interior-point solve works on besides the sections: the step's problem, `base` = the matrix M̂ (or its
+/// window condensation) over the DOFs from `offset` on, the absolute tolerance (m/s) and the iteration cap.
+#[derive(Clone, Copy)]
+struct Subproblem<'s, 'a> {
+    problem: &'s FrictionProblem<'a>,
+    base: &'s SymmetricBanded,
+    offset: usize,
+    tolerance: f64,
+    max_iterations: usize,
+}
+
 /// Per-section and per-DOF scratch of the interior-point iteration.
 #[derive(Debug)]
 struct Work {
@@ -199,57 +210,33 @@ impl Work {
         (1.0 / primal, 1.0 / dual)
     }
 
-    /// Mehrotra predictor–corrector on the active sections (`sections.index`, with `u_free` set), from p = 0, with
-    /// `base` = the matrix M̂ (or its window condensation) over the DOFs from `offset` on. Writes the impulses of
-    /// the active sections into `p`. Returns (iterations, residual).
+    /// Mehrotra predictor–corrector on the active sections (`sections.index`, with `u_free` set), from p = 0, on
+    /// `subproblem`. Writes the impulses of the active sections into `p`. Returns (iterations, residual).
     ///
     /// Compiled twice: for AVX2 where the CPU has it (detected at run time; four sections per instruction in the
     /// per-section loops instead of two), and for the baseline. Both execute the same operations in the same order
     /// — no fused multiply–add, sums still in section order — so they give the same bits.
-    fn iterate(
-        &mut self,
-        problem: &FrictionProblem<'_>,
-        base: &SymmetricBanded,
-        offset: usize,
-        p: &mut [f64],
-        tolerance: f64,
-        max_iterations: usize,
-    ) -> crate::Result<(usize, f64)> {
+    fn iterate(&mut self, subproblem: &Subproblem<'_, '_>, p: &mut [f64]) -> crate::Result<(usize, f64)> {
         #[cfg(target_arch = "x86_64")]
         #[allow(unsafe_code)]
         if std::arch::is_x86_feature_detected!("avx2") {
             // SAFETY: the CPU supports AVX2 (checked just above); the body is plain safe Rust.
-            return unsafe { self.iterate_avx2(problem, base, offset, p, tolerance, max_iterations) };
+            return unsafe { self.iterate_avx2(subproblem, p) };
         }
-        self.iterate_body(problem, base, offset, p, tolerance, max_iterations)
+        self.iterate_body(subproblem, p)
     }
 
     /// [`Work::iterate`] compiled for AVX2.
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
     #[allow(unsafe_code)]
-    unsafe fn iterate_avx2(
-        &mut self,
-        problem: &FrictionProblem<'_>,
-        base: &SymmetricBanded,
-        offset: usize,
-        p: &mut [f64],
-        tolerance: f64,
-        max_iterations: usize,
-    ) -> crate::Result<(usize, f64)> {
-        self.iterate_body(problem, base, offset, p, tolerance, max_iterations)
+    unsafe fn iterate_avx2(&mut self, subproblem: &Subproblem<'_, '_>, p: &mut [f64]) -> crate::Result<(usize, f64)> {
+        self.iterate_body(subproblem, p)
     }
 
     #[inline(always)]
-    fn iterate_body(
-        &mut self,
-        problem: &FrictionProblem<'_>,
-        base: &SymmetricBanded,
-        offset: usize,
-        p: &mut [f64],
-        tolerance: f64,
-        max_iterations: usize,
-    ) -> crate::Result<(usize, f64)> {
+    fn iterate_body(&mut self, subproblem: &Subproblem<'_, '_>, p: &mut [f64]) -> crate::Result<(usize, f64)> {
+        let Subproblem { problem, base, offset, tolerance, max_iterations } = *subproblem;
         let rows = problem.contacts.rows();
         let nw = base.order();
         // Three zeros of padding past the end let every row be read and written four entries wide.
@@ -535,7 +522,9 @@ impl BandedInteriorPoint {
         for (u, &j) in q.u_free.iter_mut().zip(&q.index) {
             *u = u_free[j];
         }
-        self.work.iterate(problem, problem.m_hat, 0, p, tolerance, self.max_iterations)
+        let subproblem =
+            Subproblem { problem, base: problem.m_hat, offset: 0, tolerance, max_iterations: self.max_iterations };
+        self.work.iterate(&subproblem, p)
     }
 
     /// Re-solve the sections within `margin` of the ones violating the law (residuals in `self.check`, v in
@@ -597,8 +586,16 @@ impl BandedInteriorPoint {
             self.backward.as_ref().expect("window factors").subtract_trailing_schur(end, &mut self.window_matrix);
         }
         self.statistics.sections_solved += self.work.sections.index.len();
-        let (iterations, _) =
-            self.work.iterate(problem, &self.window_matrix, start, p, tolerance, self.max_iterations)?;
+        let (iterations, _) = self.work.iterate(
+            &Subproblem {
+                problem,
+                base: &self.window_matrix,
+                offset: start,
+                tolerance,
+                max_iterations: self.max_iterations,
+            },
+            p,
+        )?;
         Ok(Some(iterations))
     }
 }
@@ -695,6 +692,7 @@ mod tests {
             let mut u_free = vec![0.0; contacts.len()];
             contacts.velocities(&v_free, &mut u_free);
             let tolerance = problem.absolute_tolerance(1e-8, &u_free);
+            let subproblem = Subproblem { problem: &problem, base: &m_hat, offset: 0, tolerance, max_iterations: 200 };
             let solve = |avx2: bool| {
                 let mut solver = BandedInteriorPoint::new(&problem, 1e-8, 200, None).expect("solver");
                 let work = &mut solver.work;
@@ -705,9 +703,9 @@ mod tests {
                 #[allow(unsafe_code)]
                 let (iterations, residual) = if avx2 {
                     // SAFETY: AVX2 detected above.
-                    unsafe { work.iterate_avx2(&problem, &m_hat, 0, &mut p, tolerance, 200) }
+                    unsafe { work.iterate_avx2(&subproblem, &mut p) }
                 } else {
-                    work.iterate_body(&problem, &m_hat, 0, &mut p, tolerance, 200)
+                    work.iterate_body(&subproblem, &mut p)
                 }
                 .expect("iterate");
                 assert!(residual <= tolerance, "{residual} > {tolerance}");
