@@ -1,5 +1,5 @@
 //! Snapshots of the response curves of every study at coarse resolution (insta). Values are rounded to four
-//! significant digits — far coarser than the solver tolerance (1e-8) and the spread of stick–slip peaks under the
+//! significant digits — far coarser than the solver tolerance (1e-6) and the spread of stick–slip peaks under the
 //! load (~1e-4) — so only a change in the physics or the numerics shows as a reviewable diff. Residual deflections,
 //! stuck impulses and W̄ or energy of slow, strongly damped runs are ill-determined to a few digits (README: how far
 //! to trust the numbers) and move whenever the numerics do: review such diffs against those spreads.
