@@ -1,8 +1,8 @@
 //! Times one reference run: `cargo run --release -p nscd --example probe -- <case>` with case one of
 //! `none`, `devices7`, `devices31`, `distributed1k`, `distributed10k`, `distributed5k` (default), `distributed5k-whole`,
 //! optionally followed by a step count to stop early (for instruction counts under callgrind), a solver tolerance,
-//! an element count (200 m beam; default 200) and a speed (m/s; default 200). Prints the wall time of the time loop, the solver statistics and the
-//! peak resident memory of the process (VmHWM, Linux).
+//! an element count (200 m beam; default 200) and a speed (m/s; default 200). Prints the wall time of the time
+//! loop, the solver statistics and the peak resident memory of the process (VmHWM, Linux).
 
 use fem_beam::reference::uic60_on_soft_soil;
 use friction::{ContactSet, Devices, DistributedFriction};

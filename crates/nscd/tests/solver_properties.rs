@@ -73,7 +73,7 @@ fn solve_all(problem: &Problem) -> Vec<(&'static str, Vec<f64>)> {
         kinds.push(SolverKind::Clarabel);
     }
     for kind in kinds {
-        // 1e-10, not the default 1e-8: the agreement bound below is set by the exact solvers' tolerance.
+        // 1e-10, not the default 1e-6: the agreement bound below is set by the exact solvers' tolerance.
         let settings = SolverSettings { kind, moving_window: false, tolerance: 1e-10, ..SolverSettings::default() };
         let mut solver = build_solver(kind, &stepping, &settings, None).unwrap();
         let mut p = vec![0.0; m];

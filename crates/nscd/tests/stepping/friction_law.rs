@@ -7,7 +7,7 @@ use nscd::{RunSettings, Simulation, SolverKind};
 fn check_law_every_step(model: &fem_beam::BeamModel, contacts: &friction::ContactSet, kind: SolverKind) -> usize {
     let mut settings = RunSettings { speed: 190.0, ..RunSettings::default() };
     settings.solver.kind = kind;
-    // Held to 1e-10, not the default 1e-8: the law residual bounds a slipping impulse's distance from its bound only
+    // Held to 1e-10, not the default 1e-6: the law residual bounds a slipping impulse's distance from its bound only
     // by tolerance/W_jj, and the 1e-6·a asserted below needs the tighter tolerance to hold with margin.
     settings.solver.tolerance = 1e-10;
     let mut slipping_seen = 0;

@@ -7,7 +7,7 @@ use nscd::solver::{FrictionProblem, SolverSettings, build_solver};
 use nscd::stepper::{Integration, iteration_matrix};
 use nscd::{InitialState, LinearSystem, MoreauJean, MovingLoad, RunSettings, Simulation, SolverKind};
 
-/// Settings at `speed` with the solvers held to 1e-10, not the default 1e-8: two exact solvers are compared step by
+/// Settings at `speed` with the solvers held to 1e-10, not the default 1e-6: two exact solvers are compared step by
 /// step to 1e-8 here, which needs their own tolerance well below it.
 fn tight(speed: f64) -> RunSettings {
     let mut settings = RunSettings { speed, ..RunSettings::default() };
