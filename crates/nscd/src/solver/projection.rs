@@ -68,6 +68,12 @@ impl ProjectedGaussSeidel {
             *u = u_free[j] + dot(&self.w[j * self.m + first..j * self.m + last], &p[first..last]);
         }
     }
+
+    /// The law residual (m/s) of p, on velocities formed afresh.
+    fn residual(&mut self, problem: &FrictionProblem<'_>, u_free: &[f64], p: &[f64]) -> f64 {
+        self.refresh_velocities(u_free, p);
+        problem.law_residual(&self.u, p)
+    }
 }
 
 impl FrictionSolver for ProjectedGaussSeidel {
@@ -103,16 +109,14 @@ impl FrictionSolver for ProjectedGaussSeidel {
             }
             // The sweep's largest update is the residual met on the way; confirm on the final p and a fresh u.
             if largest <= tolerance {
-                self.refresh_velocities(u_free, p);
-                residual = problem.law_residual(&self.u, p);
+                residual = self.residual(problem, u_free, p);
                 if residual <= tolerance {
                     break;
                 }
             }
         }
         if residual > tolerance {
-            self.refresh_velocities(u_free, p);
-            residual = problem.law_residual(&self.u, p);
+            residual = self.residual(problem, u_free, p);
         }
         Ok(StepReport { iterations: sweeps, residual, tolerance, converged: residual <= tolerance, sections: self.m })
     }
