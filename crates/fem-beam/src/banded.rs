@@ -102,12 +102,10 @@ impl SymmetricBanded {
         }
     }
 
-    /// y = A x.
+    /// y = A x, row by row from the stored lower band (the upper band by symmetry). Products repeated every time
+    /// step go through [`crate::BandDiagonals`], whose layout vectorises.
     pub fn mul_vec(&self, x: &[f64], y: &mut [f64]) {
         let b = self.bandwidth;
-        if b == 3 && self.n >= 4 {
-            return self.mul_vec_bandwidth3(x, y);
-        }
         y.iter_mut().for_each(|v| *v = 0.0);
         for i in 0..self.n {
             let row = &self.data[i * (b + 1)..(i + 1) * (b + 1)];
@@ -119,37 +117,6 @@ impl SymmetricBanded {
                 y[j] += a * x[i];
             }
             y[i] += acc;
-        }
-    }
-
-    /// y = A x for half-bandwidth 3 (Hermite beams), row by row from the stored lower band and the upper band by
-    /// symmetry: y_i = Σ_{|i−j|≤3} A_ij x_j, each y_i written once.
-    fn mul_vec_bandwidth3(&self, x: &[f64], y: &mut [f64]) {
-        let (n, d) = (self.n, &self.data);
-        // Row i stores [A_{i,i−3}, A_{i,i−2}, A_{i,i−1}, A_ii] at 4i..4i+4; A_{i,i+k} = A_{i+k,i} is at 4(i+k) + 3 − k.
-        let lower = |i: usize, k: usize| d[4 * i + 3 - k];
-        let edge = |i: usize| {
-            let mut acc = lower(i, 0) * x[i];
-            for k in 1..=3 {
-                if i >= k {
-                    acc += lower(i, k) * x[i - k];
-                }
-                if i + k < n {
-                    acc += lower(i + k, k) * x[i + k];
-                }
-            }
-            acc
-        };
-        let interior = 3..n.saturating_sub(3).max(3);
-        for i in (0..3).chain(interior.end..n) {
-            y[i] = edge(i);
-        }
-        for i in interior {
-            // One bounds check per slice: a = data[4i..4i+13] holds A_{i,i−3..i} and A_{i+1,i}, A_{i+2,i}, A_{i+3,i}.
-            let a: &[f64; 13] = d[4 * i..4 * i + 13].try_into().expect("inside the band");
-            let z: &[f64; 7] = x[i - 3..i + 4].try_into().expect("inside the vector");
-            y[i] =
-                a[3] * z[3] + (a[2] * z[2] + a[6] * z[4]) + (a[1] * z[1] + a[9] * z[5]) + (a[0] * z[0] + a[12] * z[6]);
         }
     }
 

@@ -56,9 +56,10 @@ impl BandDiagonals {
     }
 
     /// y = A x for half-bandwidth 3 (every Hermite beam matrix) in one pass over the rows: the interior rows read
-    /// fourteen equally long, shifted slices, so the loop has no bounds checks and runs on packed registers. The
-    /// terms are added in the order of [`SymmetricBanded::mul_vec`], so both give the same bits. (Fusing the three
-    /// products of a time step into one pass over x measured no faster: 1.68 against 1.88 µs, within the noise.)
+    /// fourteen equally long, shifted slices, so the loop has no bounds checks and runs on packed registers. It
+    /// agrees with [`SymmetricBanded::mul_vec`] to round-off (the terms are summed in another order). (Fusing the
+    /// three products of a time step into one pass over x measured no faster: 1.68 against 1.88 µs, within the
+    /// noise.)
     fn mul_vec_bandwidth3(&self, x: &[f64], y: &mut [f64]) {
         let n = self.n;
         let entry = |i: usize, j: usize| if i >= j { self.diagonals[i - j][i] } else { self.diagonals[j - i][j] };
@@ -92,7 +93,7 @@ struct Interior<'a> {
 }
 
 impl Interior<'_> {
-    /// y_i = A_ii x_i + Σ_k (A_{i,i−k} x_{i−k} + A_{i,i+k} x_{i+k}), in the order of [`SymmetricBanded::mul_vec`].
+    /// y_i = A_ii x_i + Σ_k (A_{i,i−k} x_{i−k} + A_{i,i+k} x_{i+k}), summed in that order, each pair first.
     #[inline(always)]
     fn product(&self, y: &mut [f64]) {
         let [x3, x2, x1, x0, xu1, xu2, xu3] = self.x;
