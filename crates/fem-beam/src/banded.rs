@@ -71,37 +71,6 @@ impl SymmetricBanded {
         }
     }
 
-    /// Add w·h hᵀ for a dense h on the consecutive rows `first..first + h.len()` (at most bandwidth + 1 of them).
-    #[inline]
-    pub fn add_outer_contiguous(&mut self, first: usize, h: &[f64], w: f64) {
-        let b = self.bandwidth;
-        let stride = b + 1;
-        assert!(h.len() <= stride && first + h.len() <= self.n, "add_outer_contiguous: block outside the matrix");
-        if b == 3 && h.len() == 4 {
-            // The interior section of a Hermite element: one dense 4×4 block, unrolled.
-            let d = &mut self.data[first * 4..first * 4 + 16];
-            let wh = [w * h[0], w * h[1], w * h[2], w * h[3]];
-            d[3] += wh[0] * h[0];
-            d[6] += wh[1] * h[0];
-            d[7] += wh[1] * h[1];
-            d[9] += wh[2] * h[0];
-            d[10] += wh[2] * h[1];
-            d[11] += wh[2] * h[2];
-            d[12] += wh[3] * h[0];
-            d[13] += wh[3] * h[1];
-            d[14] += wh[3] * h[2];
-            d[15] += wh[3] * h[3];
-            return;
-        }
-        for k in 0..h.len() {
-            let wk = w * h[k];
-            let row = (first + k) * stride + b;
-            for l in 0..=k {
-                self.data[row - (k - l)] += wk * h[l];
-            }
-        }
-    }
-
     /// y = A x, row by row from the stored lower band (the upper band by symmetry). Products repeated every time
     /// step go through [`crate::BandDiagonals`], whose layout vectorises.
     pub fn mul_vec(&self, x: &[f64], y: &mut [f64]) {
@@ -169,6 +138,12 @@ impl SymmetricBanded {
             }
         }
         out
+    }
+
+    /// The stored lower band, b + 1 slots per row: row i is (A_{i,i−b}, …, A_ii), the slots before column 0
+    /// zero. For assembly loops that add whole band rows at a time (see [`crate::BlockRows`]).
+    pub fn lower_band_mut(&mut self) -> &mut [f64] {
+        &mut self.data
     }
 
     /// Copy the principal submatrix of rows and columns [start, end) into `out` (resized to end − start).

@@ -17,8 +17,13 @@ pub enum ContactKind {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ContactRow {
     dofs: [usize; 4],
+    /// The entries, zero past `len`.
     values: [f64; 4],
     len: usize,
+    /// Whether the entries sit in consecutive DOFs from the first on (every Hermite element row does): products
+    /// then read four DOFs from the first, the missing entries multiplying exact zeros — the same sums without a
+    /// loop of variable length.
+    contiguous: bool,
 }
 
 impl ContactRow {
@@ -29,7 +34,8 @@ impl ContactRow {
         pairs.sort_by_key(|e| e.0);
         assert!(pairs.len() <= 4, "a contact row has at most four entries");
         assert!(pairs.windows(2).all(|w| w[0].0 < w[1].0), "a contact row names each DOF once");
-        let mut row = Self { dofs: [0; 4], values: [0.0; 4], len: pairs.len() };
+        let contiguous = pairs.iter().enumerate().all(|(k, e)| e.0 == pairs[0].0 + k);
+        let mut row = Self { dofs: [0; 4], values: [0.0; 4], len: pairs.len(), contiguous };
         for (k, (dof, value)) in pairs.into_iter().enumerate() {
             row.dofs[k] = dof;
             row.values[k] = value;
@@ -65,6 +71,11 @@ impl ContactRow {
     /// H_j·v.
     #[inline]
     pub fn dot(&self, v: &[f64]) -> f64 {
+        let first = self.dofs[0];
+        if self.contiguous && first + 4 <= v.len() {
+            let (h, x) = (&self.values, &v[first..first + 4]);
+            return h[0] * x[0] + h[1] * x[1] + h[2] * x[2] + h[3] * x[3];
+        }
         let mut s = 0.0;
         for k in 0..self.len {
             s += self.values[k] * v[self.dofs[k]];
@@ -75,6 +86,14 @@ impl ContactRow {
     /// out += scale·H_jᵀ.
     #[inline]
     pub fn add_transpose(&self, scale: f64, out: &mut [f64]) {
+        let first = self.dofs[0];
+        if self.contiguous && first + 4 <= out.len() {
+            let out = &mut out[first..first + 4];
+            for k in 0..4 {
+                out[k] += scale * self.values[k];
+            }
+            return;
+        }
         for k in 0..self.len {
             out[self.dofs[k]] += scale * self.values[k];
         }
@@ -82,8 +101,9 @@ impl ContactRow {
 
     /// Smallest and largest free DOF touched (for band structure).
     pub fn dof_span(&self) -> Option<(usize, usize)> {
+        // The DOFs are sorted.
         let d = &self.dofs[..self.len];
-        Some((*d.iter().min()?, *d.iter().max()?))
+        Some((*d.first()?, *d.last()?))
     }
 }
 

@@ -34,7 +34,7 @@
 //! The answer is therefore exact to the same tolerance; only the cost depends on the window.
 
 use super::{FrictionProblem, FrictionSolver, StepReport};
-use fem_beam::{BandedLdlt, SymmetricBanded};
+use fem_beam::{BandedLdlt, BlockRows, SymmetricBanded};
 
 /// Fraction of the distance to the boundary of the positive orthant taken by a step.
 const FRACTION_TO_BOUNDARY: f64 = 0.995;
@@ -53,18 +53,15 @@ pub struct WindowStatistics {
 }
 
 /// Interior-point state of the active sections, one array per quantity, k = 0..len in the order of `index`. The
-/// per-section arithmetic runs as straight loops over contiguous arrays (which the compiler vectorises); the scatters
-/// into B and the right-hand side and the sums μ stay in section order, so every result is the same to the bit as
-/// section-by-section evaluation.
+/// per-section arithmetic runs as straight loops over contiguous arrays (which the compiler vectorises); B and the
+/// right-hand side are summed per entry in section order ([`BlockRows`]) and the sums μ in section order, so every
+/// result is the same to the bit as section-by-section evaluation.
 #[derive(Debug, Default)]
 struct Sections {
     /// Section index j of each active section.
     index: Vec<usize>,
-    /// First DOF of the row (window-local): rows touch consecutive free DOFs.
-    first: Vec<usize>,
-    /// Entries of the row, zero-padded to four, and their number.
-    h: Vec<[f64; 4]>,
-    len: Vec<usize>,
+    /// The rows H_k over the window's DOFs (rows touch consecutive free DOFs).
+    rows: BlockRows,
     /// Bound a_j (N·s), W_jj and 1/W_jj.
     a: Vec<f64>,
     w: Vec<f64>,
@@ -89,12 +86,14 @@ struct Sections {
     dz2: Vec<f64>,
     /// H_j·x gathered for each section, and per-section terms of the sums.
     gathered: Vec<f64>,
+    /// r_k Σ_k⁻¹, the weights of the Newton right-hand side.
+    weighted: Vec<f64>,
 }
 
 impl Sections {
     /// Arrays with room for `m` sections, so that no step allocates.
     fn with_capacity(m: usize) -> Self {
-        let mut sections = Self::default();
+        let mut sections = Self { rows: BlockRows::with_capacity(m), ..Self::default() };
         sections.index.resize(m, 0);
         sections.fit();
         sections.index.clear();
@@ -104,9 +103,6 @@ impl Sections {
     /// Size every array to `index.len()` (no allocation once the capacity is there).
     fn fit(&mut self) {
         let len = self.index.len();
-        self.first.resize(len, 0);
-        self.h.resize(len, [0.0; 4]);
-        self.len.resize(len, 0);
         for v in [
             &mut self.a,
             &mut self.w,
@@ -130,6 +126,7 @@ impl Sections {
             &mut self.dz1,
             &mut self.dz2,
             &mut self.gathered,
+            &mut self.weighted,
         ] {
             v.resize(len, 0.0);
         }
@@ -138,24 +135,19 @@ impl Sections {
     /// gathered_k = H_k·x (x padded with three zeros past its end).
     #[inline(always)]
     fn gather(&mut self, x: &[f64]) {
-        for ((g, &first), h) in self.gathered.iter_mut().zip(&self.first).zip(&self.h) {
-            let x = &x[first..first + 4];
-            *g = h[0] * x[0] + h[1] * x[1] + h[2] * x[2] + h[3] * x[3];
-        }
+        self.rows.mul(x, &mut self.gathered);
     }
 
     /// The Newton right-hand side out = Σ_k H_kᵀ r_k Σ_k⁻¹, summed in section order (out padded with three zeros
     /// past its end).
     #[inline(always)]
-    fn right_hand_side(&self, out: &mut [f64]) {
-        out.iter_mut().for_each(|x| *x = 0.0);
-        for (((&r, &inv_sigma), &first), h) in self.r.iter().zip(&self.inv_sigma).zip(&self.first).zip(&self.h) {
-            let s = r * inv_sigma;
-            let out = &mut out[first..first + 4];
-            for k in 0..4 {
-                out[k] += s * h[k];
-            }
+    fn right_hand_side(&mut self, out: &mut [f64]) {
+        let len = self.index.len();
+        let (r, inv_sigma, weighted) = (&self.r[..len], &self.inv_sigma[..len], &mut self.weighted[..len]);
+        for k in 0..len {
+            weighted[k] = r[k] * inv_sigma[k];
         }
+        self.rows.transpose_mul(weighted, out);
     }
 
     /// max_k of the law residual |p − proj(p − u/W)|·W (m/s).
@@ -246,14 +238,12 @@ impl Work {
         self.y.iter_mut().for_each(|x| *x = 0.0);
         let q = &mut self.sections;
         let len = q.index.len();
+        q.rows.clear();
         for k in 0..len {
             let j = q.index[k];
             let row = &rows[j];
             debug_assert!(row.dofs().windows(2).all(|d| d[1] == d[0] + 1), "rows touch consecutive free DOFs");
-            q.first[k] = row.dofs()[0] - offset;
-            q.h[k] = [0.0; 4];
-            q.h[k][..row.len()].copy_from_slice(row.values());
-            q.len[k] = row.len();
+            q.rows.push(row.dofs()[0] - offset, row.values());
             q.a[k] = problem.bounds[j];
             q.w[k] = problem.delassus_diagonal[j];
             q.inv_w[k] = 1.0 / q.w[k];
@@ -290,10 +280,7 @@ impl Work {
                 mu += s1 * z1 + s2 * z2;
             }
             mu *= inv_count;
-            self.b.copy_from(base);
-            for (((&first, h), &entries), &inv_sigma) in q.first.iter().zip(&q.h).zip(&q.len).zip(&q.inv_sigma) {
-                self.b.add_outer_contiguous(first, &h[..entries], inv_sigma);
-            }
+            q.rows.weighted_gram_into(base, &q.inv_sigma, &mut self.b);
             q.right_hand_side(&mut self.dy);
             self.b.factor_into(&mut self.b_factor)?;
             let (alpha_p_aff, alpha_d_aff) = self.newton_direction();
