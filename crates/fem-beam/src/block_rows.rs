@@ -76,8 +76,8 @@ impl BlockRows {
         out.iter_mut().for_each(|x| *x = 0.0);
         for ((&s, &first), h) in s.iter().zip(&self.first).zip(&self.padded) {
             // Entry by entry: rows of neighbouring elements overlap by two entries, and a packed store followed by
-            // a packed load that overlaps it only in part stalls store-to-load forwarding (measured: 25 % of the
-            // interior point's time), while scalar entries forward.
+            // a packed load that overlaps it only in part stalls store-to-load forwarding (measured: those two
+            // instructions took 25 % of the interior point's samples), while scalar entries forward.
             let out = &mut out[first..first + 4];
             for a in 0..4 {
                 out[a] += s * h[3 + a];
