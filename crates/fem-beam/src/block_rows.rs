@@ -39,16 +39,6 @@ impl BlockRows {
         self.lens.clear();
     }
 
-    /// Number of rows.
-    pub fn len(&self) -> usize {
-        self.first.len()
-    }
-
-    /// True without rows.
-    pub fn is_empty(&self) -> bool {
-        self.first.is_empty()
-    }
-
     /// Append a row whose entries `values` (at most four) sit in columns first, first + 1, ….
     pub fn push(&mut self, first: usize, values: &[f64]) {
         assert!(values.len() <= 4, "BlockRows::push: {} entries, at most 4", values.len());
@@ -107,24 +97,27 @@ impl BlockRows {
         for ((&d, &first), h) in d.iter().zip(&self.first).zip(&self.padded) {
             let weighted = [d * h[3], d * h[4], d * h[5], d * h[6]];
             if first + 4 <= n {
-                let block = &mut band[4 * first..4 * first + 16];
-                for (a, row) in block.chunks_exact_mut(4).enumerate() {
-                    let row: &mut [f64; 4] = row.try_into().expect("four slots");
-                    let window: &[f64; 4] = h[a..a + 4].try_into().expect("four entries");
-                    let terms = window.map(|h| weighted[a] * h);
-                    for slot in 0..4 {
-                        row[slot] += terms[slot];
-                    }
-                }
+                // Sixteen slots known at compile time: the four band rows unroll into packed operations.
+                let block: &mut [f64; 16] = (&mut band[4 * first..4 * first + 16]).try_into().expect("16 slots");
+                add_windows(block, h, &weighted);
             } else {
                 // A row at the end of the matrix: band rows past the order take no entries (its trailing h are 0).
                 debug_assert!(h[3 + n - first..].iter().all(|&x| x == 0.0), "BlockRows: a row reaches past the matrix");
-                for a in 0..n - first {
-                    for slot in 0..4 {
-                        band[4 * (first + a) + slot] += weighted[a] * h[a + slot];
-                    }
-                }
+                add_windows(&mut band[4 * first..4 * n], h, &weighted);
             }
+        }
+    }
+}
+
+/// Band row a of `block` (four slots each) += weighted_a · h[a..a + 4], for as many rows as `block` holds.
+#[inline(always)]
+fn add_windows(block: &mut [f64], h: &[f64; 7], weighted: &[f64; 4]) {
+    for (a, row) in block.chunks_exact_mut(4).enumerate() {
+        let row: &mut [f64; 4] = row.try_into().expect("four slots");
+        let window: &[f64; 4] = h[a..a + 4].try_into().expect("four entries");
+        let terms = window.map(|h| weighted[a] * h);
+        for slot in 0..4 {
+            row[slot] += terms[slot];
         }
     }
 }

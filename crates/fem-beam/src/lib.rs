@@ -9,7 +9,7 @@
 //! - [`mesh`], [`supports`]: the uniform mesh, end supports and the full ↔ free DOF map.
 //! - [`element`]: Hermite shape functions and element matrices; [`assembly`]: the global [`BeamModel`].
 //! - [`banded`]: banded SPD storage and an LDLᵀ factorisation (factor once, solve many times); [`block_rows`]:
-//!   contact rows of four consecutive DOFs and the products H x, Hᵀs, A + Hᵀ diag(d) H by output entry.
+//!   contact rows of four consecutive DOFs and the products H x, Hᵀs, A + Hᵀ diag(d) H, four entries at a time.
 //! - [`load`]: consistent point forces/moments and uniform loads; [`section`]: w, θ, M from a DOF vector.
 //! - [`statics`], [`modal`]: K q = f and K φ = ω² M φ.
 //! - [`reference`]: the reference case and closed-form results (β, w₀, M₀, v_cr, ω_n, moving-load steady state).

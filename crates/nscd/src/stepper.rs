@@ -184,7 +184,7 @@ impl<'a> MoreauJean<'a> {
             stepper.damping.mul_vec(&stepper.v, &mut stepper.cv);
         }
         stepper.v_prev.copy_from_slice(&stepper.v);
-        let (kinetic, strain) = stepper.energies();
+        let (kinetic, strain) = energies(&stepper.v, &stepper.mv, &stepper.q, &stepper.kq);
         stepper.energy.initial = kinetic + strain;
         stepper.energy.current = kinetic + strain;
         stepper.energy.kinetic = kinetic;
@@ -220,11 +220,6 @@ impl<'a> MoreauJean<'a> {
     /// Velocity v_{k−1} before the last step (m/s, rad/s; v₀ before the first step).
     pub fn previous_v(&self) -> &[f64] {
         &self.v_prev
-    }
-
-    /// Kinetic ½vᵀMv and strain ½qᵀKq energy (J), from the cached products.
-    fn energies(&self) -> (f64, f64) {
-        (0.5 * dot(&self.v, &self.mv), 0.5 * dot(&self.q, &self.kq))
     }
 
     /// The free velocity v_free of the next step (no friction impulse), without advancing:
@@ -315,7 +310,7 @@ impl<'a> MoreauJean<'a> {
             *w = theta * kv_next + (1.0 - theta) * kv;
             *kq += h * *w;
         }
-        let (kinetic, strain) = (0.5 * dot(&self.v, &self.mv_next), 0.5 * dot(&self.q, &self.kq));
+        let (kinetic, strain) = energies(&self.v, &self.mv_next, &self.q, &self.kq);
         if !(kinetic + strain).is_finite() {
             return Err(NscdError::NonFinite {
                 step: self.steps + 1,
@@ -356,6 +351,11 @@ impl<'a> MoreauJean<'a> {
         e.max_step_residual = e.max_step_residual.max(step_residual.abs());
         Ok(())
     }
+}
+
+/// Kinetic ½vᵀMv and strain ½qᵀKq energy (J), from the products M v and K q.
+fn energies(v: &[f64], mv: &[f64], q: &[f64], kq: &[f64]) -> (f64, f64) {
+    (0.5 * dot(v, mv), 0.5 * dot(q, kq))
 }
 
 /// M̂ = M + hθC + h²θ²K.

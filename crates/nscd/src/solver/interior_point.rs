@@ -54,7 +54,7 @@ pub struct WindowStatistics {
 
 /// Interior-point state of the active sections, one array per quantity, k = 0..len in the order of `index`. The
 /// per-section arithmetic runs as straight loops over contiguous arrays (which the compiler vectorises); B and the
-/// right-hand side are summed per entry in section order ([`BlockRows`]) and the sums μ in section order, so every
+/// right-hand side are accumulated section after section ([`BlockRows`]) and the sums μ in section order, so every
 /// result is the same to the bit as section-by-section evaluation.
 #[derive(Debug, Default)]
 struct Sections {
