@@ -64,7 +64,7 @@ fn thinned_table(csv: &str) -> serde_json::Value {
 }
 
 fn snapshot(preset: Preset) {
-    let data = run_preset(preset, Resolution::Coarse, &Scenario::default(), &Runner::new(0)).unwrap();
+    let data = run_preset(preset, Resolution::Coarse, &Scenario::default(), &Runner::new(0).unwrap()).unwrap();
     let value = serde_json::json!({
         "headline": data.headline,
         "summary": rounded_json(&data.summary),

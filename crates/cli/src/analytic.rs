@@ -13,13 +13,13 @@ use study::scenario::SweepSection;
 #[derive(Debug, Args)]
 pub struct AnalyticArgs {
     /// Load speed (m/s).
-    #[arg(long, conflicts_with = "speeds", required_unless_present = "speeds")]
+    #[arg(long, conflicts_with = "speeds", required_unless_present = "speeds", allow_negative_numbers = true)]
     speed: Option<f64>,
     /// Speed range A:B:STEP (m/s) for a dynamic-amplification curve.
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     speeds: Option<String>,
     /// Foundation damping ratio ζ = c_f / c_cr (needed > 0 at and above the critical speed).
-    #[arg(long, default_value_t = 0.0)]
+    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
     damping_ratio: f64,
     /// Output format.
     #[arg(long, value_enum, default_value_t = Format::Text)]

@@ -17,6 +17,7 @@ pub struct CheckArgs {
 pub fn run(args: &CheckArgs) -> Result<()> {
     let scenario = Scenario::from_path(&args.scenario)?;
     let case = scenario.build()?;
+    let range = scenario.speed_range()?;
     let devices = case.contacts.kinds().iter().filter(|k| **k == ContactKind::Device).count();
     println!(
         "{}: ok — {} m beam, {} elements ({} DOFs), {} friction sections ({} devices), load {:.1} kN at {} m/s, sweep {}–{} m/s by {}",
@@ -28,9 +29,9 @@ pub fn run(args: &CheckArgs) -> Result<()> {
         devices,
         scenario.load.force / 1e3,
         scenario.load.speed,
-        scenario.sweep.from,
-        scenario.sweep.to,
-        scenario.sweep.step
+        range.from,
+        range.to,
+        range.step
     );
     Ok(())
 }

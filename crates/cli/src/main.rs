@@ -5,6 +5,7 @@ mod check;
 mod files;
 mod init;
 mod interrupt;
+mod jobs;
 mod merge;
 mod progress;
 mod reference;

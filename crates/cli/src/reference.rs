@@ -14,10 +14,10 @@ use std::time::Instant;
 #[derive(Debug, Args)]
 pub struct ReferenceArgs {
     /// Number of beam elements (the reference case has 200 on 200 m).
-    #[arg(long, default_value_t = 200)]
+    #[arg(long, default_value_t = 200, allow_negative_numbers = true)]
     elements: usize,
     /// Number of natural frequencies to report.
-    #[arg(long, default_value_t = 5)]
+    #[arg(long, default_value_t = 5, allow_negative_numbers = true)]
     modes: usize,
     /// Output format.
     #[arg(long, value_enum, default_value_t = Format::Text)]
@@ -56,7 +56,16 @@ pub fn run(args: &ReferenceArgs) -> Result<()> {
     let load = LoadVector::point_force(&case.mesh, mid, -case.load)?;
     let q = model.static_solve(&load)?;
     let moments = model.nodal_moments(&q, &load, Motion::default())?;
-    let omega = model.natural_frequencies(args.modes.min(model.dofs().free_len()))?;
+    let free = model.dofs().free_len();
+    if args.modes == 0 || args.modes > free {
+        return Err(study::error::invalid(
+            "--modes",
+            args.modes,
+            format!("must lie in [1, {free}], the number of free DOFs of this mesh"),
+        )
+        .into());
+    }
+    let omega = model.natural_frequencies(args.modes)?;
     let report = ReferenceReport {
         elements: args.elements,
         dofs: model.dofs().free_len(),

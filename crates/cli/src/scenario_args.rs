@@ -36,44 +36,59 @@ pub struct ScenarioArgs {
     /// Scenario file (TOML); without it, the reference case. Flags override the file.
     pub scenario: Option<PathBuf>,
     /// Load speed (m/s).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub speed: Option<f64>,
     /// Number of friction devices, evenly spaced at i·L/(N+1) and snapped to nodes.
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub devices: Option<usize>,
-    /// Maximal force of one device F_u (N); default 100 kN when --devices is given without a scenario force.
-    #[arg(long)]
+    /// Maximal force of one device F_u (N); required with --devices unless the scenario gives it.
+    #[arg(long, allow_negative_numbers = true)]
     pub device_force: Option<f64>,
     /// Distributed friction f_u (N/m).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub distributed_friction: Option<f64>,
     /// Foundation damping ratio ζ = c_f/c_cr.
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub damping_ratio: Option<f64>,
     /// θ of the Moreau–Jean scheme, in [0.5, 1].
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub theta: Option<f64>,
     /// Number of beam elements.
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub elements: Option<usize>,
     /// Load advance per time step (m): h = advance / speed.
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub load_advance: Option<f64>,
     /// Friction solver.
     #[arg(long, value_enum)]
     pub solver: Option<SolverArg>,
     /// Relative tolerance of the friction law residual (relative to the largest free section velocity).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub tolerance: Option<f64>,
     /// Start from the analytic steady state with the load at this position (m) instead of at rest.
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub steady_start: Option<f64>,
     /// Absorbing end zones of this length (m), foundation damping graded up to c_cr.
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub absorbing_zones: Option<f64>,
 }
 
+/// Print the warnings of a built scenario on stderr (always: they say a result may be wrong).
+pub fn print_warnings(scenario: &Scenario, case: &study::Case) {
+    for warning in study::diagnostics::warnings(scenario, case) {
+        eprintln!("warning: {warning}");
+    }
+}
+
 impl ScenarioArgs {
+    /// The scenario with the flags applied, built, with its warnings printed on stderr.
+    pub fn build(&self) -> Result<(Scenario, study::Case)> {
+        let scenario = self.load()?;
+        let case = scenario.build()?;
+        print_warnings(&scenario, &case);
+        Ok((scenario, case))
+    }
+
     /// The scenario file (or the reference case) with the flags applied.
     pub fn load(&self) -> Result<Scenario> {
         let mut s = match &self.scenario {
@@ -84,13 +99,13 @@ impl ScenarioArgs {
             s.load.speed = v;
         }
         if self.devices.is_some() || self.device_force.is_some() {
-            let d = s.friction.devices.get_or_insert(DevicesSection { force: 100e3, ..DevicesSection::default() });
+            let d = s.friction.devices.get_or_insert_with(DevicesSection::default);
             if let Some(count) = self.devices {
                 d.count = Some(count);
                 d.positions = None;
             }
             if let Some(force) = self.device_force {
-                d.force = force;
+                d.force = Some(force);
             }
         }
         if let Some(f) = self.distributed_friction {

@@ -2,15 +2,14 @@
 //! `<preset>.json` (scenario, version, git revision, resolution, summary, wall time) and its figures (PNG and SVG)
 //! into the output folder.
 
-use crate::files::write_atomically;
-use anyhow::{Context, Result};
+use crate::files::{prepare_output_folder, write_atomically};
+use anyhow::Result;
 use clap::{Args, ValueEnum};
 use serde_json::json;
 use std::path::PathBuf;
 use std::time::Instant;
 use study::Scenario;
 use study::presets::{Preset, Resolution, StudyData, run_preset};
-use study::sweep::Runner;
 
 /// Sampling of a study.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -95,20 +94,25 @@ pub fn run(args: &StudyArgs) -> Result<()> {
 /// depends on them.
 pub fn run_study(preset: Preset, options: &StudyOptions, base: &Scenario) -> Result<(StudyData, study::Journal)> {
     let (out, quiet) = (options.out.as_path(), options.quiet);
-    base.validate()?;
-    std::fs::create_dir_all(out).with_context(|| format!("creating {}", out.display()))?;
+    let case = base.build()?;
+    crate::scenario_args::print_warnings(base, &case);
+    prepare_output_folder("--out", out)?;
     let journal = study::Journal::open(&out.join(format!(".{}.journal", preset.name())), options.resume)?;
     if journal.resumed() > 0 && !quiet {
         eprintln!("{}: resuming with {} finished runs", preset.name(), journal.resumed());
     }
+    let resolution = Resolution::from(options.resolution);
+    let overrides = preset.overrides(base);
+    for note in &overrides {
+        eprintln!("note: {}: {note}", preset.name());
+    }
     let bar = crate::progress::bar(preset.name(), None, quiet);
     let progress = |done: usize| bar.set_position(done as u64);
-    let runner = Runner::new(options.jobs)
+    let runner = crate::jobs::runner(options.jobs, quiet)?
         .with_progress(&progress)
         .with_journal(Some(&journal))
         .with_stop(crate::interrupt::stop_flag());
     let start = Instant::now();
-    let resolution = Resolution::from(options.resolution);
     let data = crate::interrupt::explain(run_preset(preset, resolution, base, &runner), Some(&journal))?;
     let wall_time = start.elapsed().as_secs_f64();
     bar.finish_and_clear();
@@ -126,6 +130,9 @@ pub fn run_study(preset: Preset, options: &StudyOptions, base: &Scenario) -> Res
         "lines": data.lines,
         "plots": data.plots.iter().map(|p| p.stem.as_str()).collect::<Vec<_>>(),
         "scenario": base,
+        "speeds": resolution.speeds(base)?,
+        "study_sets": overrides,
+        "csv_columns": data.columns,
     });
     write_atomically(
         &out.join(format!("{}.json", preset.name())),

@@ -1,6 +1,8 @@
 //! `frictrack sweep [scenario] --speeds A:B:STEP`: one run per speed, in parallel; CSV on stdout or to `--out`
-//! (columns `speed,max_downward_deflection,max_upward_deflection,dissipated_energy,global_norm,…`), and the refined
-//! critical speed on stderr with `--critical`.
+//! (columns `speed,max_downward_deflection,max_upward_deflection,dissipated_energy,global_norm,…`; `OUT.json` beside
+//! it names their units), and with `--critical` the refined critical speed — or the bound, when the largest
+//! deflection lies at an end of the range — in `OUT.json` (or a `# critical_speed {…}` line after the CSV on
+//! stdout) and on stderr.
 //!
 //! With `--out FILE`, every finished point goes to `FILE.journal` at once; the CSV is written atomically at the end
 //! and the journal deleted. After an interruption (Ctrl-C, a kill, a node failure) the same command with `--resume`
@@ -8,13 +10,15 @@
 //! shards' files into the file one unsharded run writes.
 
 use crate::analytic::parse_range;
-use crate::files::{journal_beside, write_atomically};
+use crate::files::{check_output_file, journal_beside, metadata_beside, write_atomically};
 use crate::scenario_args::ScenarioArgs;
 use anyhow::Result;
 use clap::Args;
+use serde_json::json;
 use std::path::PathBuf;
+use study::error::invalid;
 use study::shard::Shard;
-use study::sweep::{Runner, critical_speed, write_csv};
+use study::sweep::{critical_speed, write_csv};
 
 /// Options of `frictrack sweep`.
 #[derive(Debug, Args)]
@@ -46,24 +50,37 @@ pub struct SweepArgs {
 
 /// Execute `frictrack sweep`.
 pub fn run(args: &SweepArgs) -> Result<()> {
-    let scenario = args.scenario.load()?;
-    let case = scenario.build()?;
+    if args.scenario.speed.is_some() {
+        return Err(invalid(
+            "--speed",
+            args.scenario.speed.unwrap_or_default(),
+            "sweep runs many speeds: give --speeds A:B:STEP",
+        )
+        .into());
+    }
+    let (scenario, case) = args.scenario.build()?;
     let all_speeds = match &args.speeds {
         Some(range) => parse_range(range)?,
-        None => scenario.sweep.speeds(),
+        None => scenario.speed_range()?.speeds(),
     };
     let shard = args.shard.as_deref().map(Shard::parse).transpose()?;
     let speeds = shard.map_or_else(|| all_speeds.clone(), |s| s.select(&all_speeds));
+    if args.critical && speeds.len() < 3 {
+        return Err(invalid("--speeds", speeds.len(), "--critical needs at least 3 speeds").into());
+    }
+    if let Some(out) = &args.out {
+        check_output_file("--out", out)?;
+        check_output_file("--out", &metadata_beside(out))?;
+    }
     let journal = args.out.as_deref().map(|out| study::Journal::open(&journal_beside(out), args.resume)).transpose()?;
     if let Some(j) = journal.as_ref().filter(|j| j.resumed() > 0 && !args.quiet) {
         eprintln!("resuming: {} finished runs in {}", j.resumed(), j.path().display());
     }
+    let runner = crate::jobs::runner(args.jobs, args.quiet)?;
     let bar = crate::progress::bar("sweep", Some(speeds.len() as u64), args.quiet);
     let progress = |done: usize| bar.set_position(done as u64);
-    let runner = Runner::new(args.jobs)
-        .with_progress(&progress)
-        .with_journal(journal.as_ref())
-        .with_stop(crate::interrupt::stop_flag());
+    let runner =
+        runner.with_progress(&progress).with_journal(journal.as_ref()).with_stop(crate::interrupt::stop_flag());
     let points = crate::interrupt::explain(runner.speed_sweep(&case, &speeds), journal.as_ref())?;
     bar.finish_and_clear();
     let mut csv = Vec::new();
@@ -72,25 +89,37 @@ pub fn run(args: &SweepArgs) -> Result<()> {
         csv.push(b'\n');
     }
     write_csv(&points, &mut csv)?;
-    if args.critical {
+    let critical = if args.critical {
         let step = speeds.windows(2).map(|w| w[1] - w[0]).fold(f64::INFINITY, f64::min);
         let tolerance = if step.is_finite() { (0.01 * step).max(1e-3) } else { 0.1 };
         let c = crate::interrupt::explain(critical_speed(&case, &points, tolerance, &runner), journal.as_ref())?;
         if !args.quiet {
-            eprintln!(
-                "critical speed {:.2} m/s ({:.0} km/h): max downward deflection {:.2} mm (sweep maximum {:.2} mm at {} m/s, {} refinement runs)",
-                c.speed,
-                c.speed * 3.6,
-                c.max_downward_deflection * 1e3,
-                c.sweep_maximum.1 * 1e3,
-                c.sweep_maximum.0,
-                c.evaluations.len()
-            );
+            eprintln!("{}", c.describe());
         }
-    }
+        Some(c)
+    } else {
+        None
+    };
     match &args.out {
-        Some(path) => write_atomically(path, &csv)?,
-        None => print!("{}", String::from_utf8(csv)?),
+        Some(path) => {
+            write_atomically(path, &csv)?;
+            let metadata = json!({
+                "csv": path.file_name().map(|n| n.to_string_lossy().into_owned()),
+                "columns": study::sweep::CSV_COLUMNS.iter().map(|(name, unit, meaning)| json!({ "name": name, "unit": unit, "meaning": meaning })).collect::<Vec<_>>(),
+                "extremes_window": scenario.output.extremes_window(scenario.mesh.length),
+                "critical_speed": critical.as_ref().map(|c| json!({ "description": c.describe(), "result": c })),
+                "frictrack_version": env!("CARGO_PKG_VERSION"),
+                "scenario": scenario,
+            });
+            write_atomically(&metadata_beside(path), serde_json::to_string_pretty(&metadata)?.as_bytes())?;
+        }
+        None => {
+            print!("{}", String::from_utf8(csv)?);
+            // A comment line after the data (pandas: comment="#"), so that --quiet never loses the answer.
+            if let Some(c) = &critical {
+                println!("# critical_speed {}", serde_json::to_string(c)?);
+            }
+        }
     }
     if let Some(j) = journal {
         j.remove()?;

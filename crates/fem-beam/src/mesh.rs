@@ -7,7 +7,7 @@ use crate::error::{FemError, Result, positive};
 pub struct Mesh {
     /// Beam length L (m). Default 200 m; must be > 0.
     pub length: f64,
-    /// Number of elements n_e. Default 200; must be ≥ 1.
+    /// Number of elements n_e. Default 200; must lie in [1, [`Mesh::MAX_ELEMENTS`]].
     pub elements: usize,
 }
 
@@ -27,6 +27,9 @@ pub struct ElementPoint {
 }
 
 impl Mesh {
+    /// The largest mesh accepted: 10⁶ elements (2·10⁶ DOFs, a few hundred MB of banded matrices and state).
+    pub const MAX_ELEMENTS: usize = 1_000_000;
+
     /// A mesh of `elements` equal elements on [0, `length`], validated.
     pub fn new(length: f64, elements: usize) -> Result<Self> {
         let mesh = Self { length, elements };
@@ -37,8 +40,12 @@ impl Mesh {
     /// Check every field; the error names the first bad one.
     pub fn validate(&self) -> Result<()> {
         positive("mesh.length", self.length)?;
-        if self.elements == 0 {
-            return Err(FemError::InvalidCount { field: "mesh.elements", value: 0, allowed: "must be ≥ 1" });
+        if self.elements == 0 || self.elements > Self::MAX_ELEMENTS {
+            return Err(FemError::InvalidCount {
+                field: "mesh.elements",
+                value: self.elements,
+                allowed: "must lie in [1, 1000000] (checked before any memory is allocated)",
+            });
         }
         Ok(())
     }

@@ -9,9 +9,22 @@ use crate::assembly::BeamModel;
 use crate::error::{FemError, Result};
 
 impl BeamModel {
+    /// The largest eigenproblem solved densely: 2000 free DOFs (1000 elements; 32 MB per dense matrix, a few
+    /// seconds). Larger meshes are refused before any dense matrix is allocated.
+    pub const MAX_MODAL_DOFS: usize = 2000;
+
     /// All eigenvalues ω² (rad²/s²) in ascending order. Zero (rigid-body) modes give values at round-off level,
-    /// possibly slightly negative.
+    /// possibly slightly negative. Errors for more than [`BeamModel::MAX_MODAL_DOFS`] free DOFs.
     pub fn eigenvalues(&self) -> Result<Vec<f64>> {
+        let n = self.dofs().free_len();
+        if n > Self::MAX_MODAL_DOFS {
+            return Err(FemError::InvalidCount {
+                field: "mesh.elements",
+                value: self.mesh().elements,
+                allowed: "gives more than 2000 free DOFs, the limit of the dense eigenproblem of the natural \
+                          frequencies (use at most 1000 elements)",
+            });
+        }
         let m = self.mass().to_dense();
         let k = self.stiffness().to_dense();
         let chol = m.cholesky().ok_or(FemError::NonPositivePivot { index: 0, pivot: f64::NAN })?;

@@ -54,11 +54,14 @@ impl DistributedFriction {
                 allowed: "must be finite and ≥ 0 (N/m)".into(),
             });
         }
-        if self.subdivisions == 0 {
+        if self.subdivisions == 0 || self.subdivisions > Self::MAX_SUBDIVISIONS {
             return Err(FrictionError::InvalidCount {
                 field: "distributed.subdivisions",
-                value: 0,
-                allowed: "must be ≥ 1".into(),
+                value: self.subdivisions,
+                allowed: format!(
+                    "must lie in [1, {}]: finer sections than that add nothing a cubic element can show",
+                    Self::MAX_SUBDIVISIONS
+                ),
             });
         }
         if self.quadrature == Quadrature::Simpson && self.subdivisions % 2 == 1 {
@@ -70,6 +73,9 @@ impl DistributedFriction {
         }
         Ok(())
     }
+
+    /// The most sub-intervals per element accepted (checked before the sections are allocated).
+    pub const MAX_SUBDIVISIONS: usize = 64;
 
     /// Weight of sub-section s ∈ 0..=J of one element, as a fraction of the element length.
     fn weight_fraction(&self, s: usize) -> f64 {

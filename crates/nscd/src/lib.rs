@@ -19,7 +19,7 @@ pub mod system;
 
 pub use error::{NscdError, Result};
 pub use forcing::{Forcing, MovingLoad};
-pub use simulation::{InitialState, RunResult, RunSettings, Simulation};
+pub use simulation::{InitialState, RunResult, RunSettings, Simulation, WindowExtremes};
 pub use solver::{SolverKind, SolverSettings, StepReport};
 pub use stepper::{EnergyLedger, Integration, MoreauJean};
 pub use system::LinearSystem;

@@ -52,7 +52,9 @@ pub struct RunSettings {
     pub solver: SolverSettings,
     /// Positions (m) whose histories (w, M, friction impulse) are recorded. Default: none.
     pub record_sections: Vec<f64>,
-    /// Track the extremes only while the load is inside this range of positions (m). Default: the whole run.
+    /// Also track the extremes while the load is inside this range of load positions [A, B] (m), reported in
+    /// [`RunResult::window`] beside the whole-run extremes: away from the entry and exit transients they read the
+    /// response of a long track. Default: none.
     pub extremes_window: Option<(f64, f64)>,
 }
 
@@ -111,6 +113,12 @@ impl RunSettings {
                 return Err(invalid("record_sections", x, format!("must lie on the beam, in [0, {length}] m")));
             }
         }
+        if let Some((a, b)) = self.extremes_window
+            && !(a.is_finite() && b.is_finite() && a < b)
+        {
+            let allowed = format!("needs finite load positions A < B (m), got {a}:{b}");
+            return Err(invalid("extremes_window", if a.is_finite() { b } else { a }, allowed));
+        }
         if let Some(end) = self.end_time
             && !(end.is_finite() && end >= self.crossing_time(length) * (1.0 - 1e-12))
         {
@@ -120,7 +128,49 @@ impl RunSettings {
                 format!("must be ≥ the crossing time {} s", self.crossing_time(length)),
             ));
         }
+        let steps = self.step_count(length);
+        if steps > Self::MAX_STEPS as f64 {
+            let h = self.load_advance / self.speed;
+            let allowed = format!(
+                "gives {steps:.3e} time steps of {h:.3e} s; at most {} are allowed (shorten the run or lengthen the \
+                 load advance)",
+                Self::MAX_STEPS
+            );
+            return match self.end_time {
+                Some(end) => Err(invalid("end_time", end, allowed)),
+                None => Err(invalid("load_advance", self.load_advance, allowed)),
+            };
+        }
+        let samples = (steps + 1.0) * self.record_sections.len() as f64;
+        if samples > Self::MAX_RECORDED_SAMPLES as f64 {
+            return Err(invalid(
+                "record_sections",
+                self.record_sections.len() as f64,
+                format!(
+                    "{} sections × {steps:.3e} steps exceed {} recorded samples; record fewer sections",
+                    self.record_sections.len(),
+                    Self::MAX_RECORDED_SAMPLES
+                ),
+            ));
+        }
         Ok(())
+    }
+
+    /// The most time steps a run may take (checked before anything is allocated): 2·10⁷, about 100 s without
+    /// friction and over an hour with distributed friction on the reference mesh.
+    pub const MAX_STEPS: usize = 20_000_000;
+
+    /// The most history samples (steps × recorded sections) a run may keep: 5·10⁷, about 2 GB.
+    pub const MAX_RECORDED_SAMPLES: usize = 50_000_000;
+
+    /// Number of time steps of the run (as a float, so that absurd inputs do not overflow).
+    pub fn step_count(&self, length: f64) -> f64 {
+        let h = self.load_advance / self.speed;
+        let crossing = (self.crossing_time(length) / h).round();
+        match self.end_time {
+            Some(end) => crossing.max((end / h - 1e-9).ceil()),
+            None => crossing,
+        }
     }
 
     fn start_position(&self) -> f64 {
@@ -145,6 +195,18 @@ pub struct Extreme {
     pub position: f64,
     /// Time (s).
     pub time: f64,
+}
+
+/// The extremes while the load was inside a range of positions (MODEL.md §8: away from the entry and exit
+/// transients of a finite beam started from rest).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct WindowExtremes {
+    /// The range of load positions [A, B] (m).
+    pub load_range: (f64, f64),
+    /// Largest downward deflection over nodes and the steps with the load inside the range.
+    pub max_downward: Extreme,
+    /// Largest upward deflection over the same steps.
+    pub max_upward: Extreme,
 }
 
 /// Histories at one section.
@@ -220,6 +282,8 @@ pub struct RunResult {
     pub max_downward: Extreme,
     /// Largest upward deflection over nodes and steps.
     pub max_upward: Extreme,
+    /// The extremes while the load was inside [`RunSettings::extremes_window`], if one was set.
+    pub window: Option<WindowExtremes>,
     /// Energy terms.
     pub energy: EnergyLedger,
     /// W̄ = (1/t_on)∫₀^{t_on}∫₀^L |w| dx dt (m), trapezoid in x (nodes) and t (steps).
@@ -378,10 +442,12 @@ impl<'a> Simulation<'a> {
             }
         }
         let mut extremes = (Extreme::default(), Extreme::default());
-        let in_window = |x_load: f64| settings.extremes_window.is_none_or(|(a, b)| (a..=b).contains(&x_load));
+        let mut window = settings.extremes_window.map(|load_range| WindowExtremes { load_range, ..Default::default() });
+        let in_window = |x_load: f64| settings.extremes_window.is_some_and(|(a, b)| (a..=b).contains(&x_load));
         let scan = deflections.scan(stepper.q());
-        if in_window(start) {
-            scan.update(&mut extremes, 0.0);
+        scan.update(&mut extremes, 0.0);
+        if let Some(w) = window.as_mut().filter(|_| in_window(start)) {
+            scan.update_window(w, 0.0);
         }
         let mut norm_integral = 0.0;
         let mut previous_norm = scan.norm;
@@ -414,16 +480,14 @@ impl<'a> Simulation<'a> {
             max_iterations = max_iterations.max(report.iterations);
             max_residual = max_residual.max(report.residual);
             let time = stepper.time;
-            let (extremes_wanted, norm_wanted) = (in_window(load.position(time)), k <= crossing_steps);
-            if extremes_wanted || norm_wanted {
-                let scan = deflections.scan(stepper.q());
-                if extremes_wanted {
-                    scan.update(&mut extremes, time);
-                }
-                if norm_wanted {
-                    norm_integral += 0.5 * (scan.norm + previous_norm) * h;
-                    previous_norm = scan.norm;
-                }
+            let scan = deflections.scan(stepper.q());
+            scan.update(&mut extremes, time);
+            if let Some(w) = window.as_mut().filter(|_| in_window(load.position(time))) {
+                scan.update_window(w, time);
+            }
+            if k <= crossing_steps {
+                norm_integral += 0.5 * (scan.norm + previous_norm) * h;
+                previous_norm = scan.norm;
             }
             for r in &mut recorders {
                 // State after the step with the mean acceleration over it, the load where it now is, and the
@@ -444,6 +508,7 @@ impl<'a> Simulation<'a> {
         Ok(RunResult {
             max_downward: extremes.0,
             max_upward: extremes.1,
+            window,
             energy: stepper.energy,
             global_norm: if t_on > 0.0 { norm_integral / t_on } else { 0.0 },
             histories: recorders.into_iter().map(|r| r.history).collect(),
@@ -575,6 +640,13 @@ impl DeflectionScan {
         if self.highest.0 > extremes.1.magnitude {
             extremes.1 = Extreme { magnitude: self.highest.0, position: self.highest.1, time };
         }
+    }
+
+    /// The same for the extremes of a load-position window.
+    fn update_window(&self, window: &mut WindowExtremes, time: f64) {
+        let mut pair = (window.max_downward, window.max_upward);
+        self.update(&mut pair, time);
+        (window.max_downward, window.max_upward) = pair;
     }
 }
 

@@ -6,16 +6,19 @@
 //! - [`shard`]: a deterministic 1/N of a sweep's points per machine, and the merge of the shards' outputs.
 //! - [`journal`]: every finished run on disk at once, so that an interrupted sweep resumes where it stopped.
 
+pub mod diagnostics;
 pub mod error;
 pub mod journal;
 pub mod metrics;
+pub mod number;
 pub mod plot;
 pub mod presets;
 pub mod scenario;
 pub mod shard;
+pub mod speeds;
 pub mod sweep;
 
 pub use error::{Result, StudyError};
 pub use journal::Journal;
 pub use scenario::{Case, Scenario};
-pub use sweep::{CriticalSpeed, OptimalForce, SweepPoint};
+pub use sweep::{CriticalSpeed, OptimalForce, PeakLocation, SweepPoint};

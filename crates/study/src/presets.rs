@@ -4,10 +4,11 @@
 
 use crate::error::{Result, invalid};
 use crate::metrics::{amplification, static_midspan};
+use crate::number::row;
 use crate::plot::{PlotSpec, Series};
 use crate::scenario::{DevicesSection, DistributedSection, Scenario};
-use crate::sweep::{Runner, SweepPoint, critical_speed, log_spaced, refine_from_scan};
-use nscd::Simulation;
+use crate::speeds::SpeedScale;
+use crate::sweep::{CriticalSpeed, Runner, SweepPoint, critical_speed, log_spaced, refine_from_scan};
 use serde::Serialize;
 use serde_json::{Value, json};
 use std::fmt::Write as _;
@@ -39,11 +40,20 @@ pub enum Resolution {
 }
 
 impl Resolution {
-    fn speeds(self) -> Vec<f64> {
-        match self {
-            Resolution::Coarse => (0..15).map(|i| 10.0 + 20.0 * i as f64).collect(),
-            Resolution::Paper => (10..=300).map(f64::from).collect(),
+    /// The speeds of a study on `base`: its `[sweep]` as given, whatever the resolution; otherwise the default
+    /// range around the case's critical speed ([`SpeedScale::default_range`], 10–300 m/s by 10 for the reference
+    /// case) sampled every second step (coarse: 10–290 m/s by 20) or every tenth of a step (paper: 1 m/s).
+    pub fn speeds(self, base: &Scenario) -> Result<Vec<f64>> {
+        if let Some(sweep) = &base.sweep {
+            return Ok(sweep.speeds());
         }
+        let range = SpeedScale::of(base)?.default_range();
+        let step = match self {
+            Resolution::Coarse => 2.0 * range.step,
+            Resolution::Paper => 0.1 * range.step,
+        };
+        let count = ((range.to - range.from) / step + 1e-9).floor() as usize + 1;
+        Ok((0..count).map(|i| range.from + i as f64 * step).collect())
     }
 
     fn forces(self) -> usize {
@@ -93,6 +103,48 @@ impl Preset {
         })
     }
 
+    /// What the study sets itself on top of the base scenario (the friction set-ups it compares, the speeds of
+    /// fixed-speed studies, the recorded section).
+    pub fn sets(self) -> &'static [&'static str] {
+        match self {
+            Preset::DiscreteSpeed => &["friction: none, and N ∈ {3, 7, 15, 31} devices of F_u ∈ {10, 50, 100} kN"],
+            Preset::EqualCost => &["friction: N·F_u ∈ {3100, 1550, 310} kN shared by N ∈ {31, 15, 7, 3} devices"],
+            Preset::OptimalForce => &[
+                "friction: N ∈ {3, 7, 15, 31} devices, F_u scanned over 1 kN–10 MN",
+                "load.speed: the critical speed v_cr rounded (206 m/s for the reference case)",
+            ],
+            Preset::DistributedSpeed => &["friction: distributed f_u ∈ {0, 1, 2, 5, 10} kN/m, no devices"],
+            Preset::Amplification => &[
+                "friction: distributed f_u ∈ {1, 2} kN/m, no devices",
+                "load.speed: ¼, ½, ¾ and 1 × v_cr rounded (50, 100, 150, 200 m/s for the reference case)",
+                "output.sections: mid-span",
+            ],
+            Preset::DiscreteVsDistributed => &[
+                "friction: 199 devices of 1 kN, and distributed 0.995 kN/m",
+                "load.speed: ¾ v_cr rounded (150 m/s for the reference case)",
+                "output.sections: mid-span",
+            ],
+        }
+    }
+
+    /// The parts of `base` that this study replaces with its own (see [`Preset::sets`]), one sentence each; empty
+    /// when the base scenario leaves them at their defaults.
+    pub fn overrides(self, base: &Scenario) -> Vec<String> {
+        let mut notes = Vec::new();
+        let f = &base.friction;
+        if f.devices.is_some() || f.distributed.is_some() {
+            notes.push(format!(
+                "the scenario's [friction] is not used: the study compares its own set-ups ({})",
+                self.sets()[0].trim_start_matches("friction: ")
+            ));
+        }
+        let fixed_speed = !matches!(self, Preset::DiscreteSpeed | Preset::EqualCost | Preset::DistributedSpeed);
+        if fixed_speed && base.sweep.is_some() {
+            notes.push("the scenario's [sweep] is not used: this study runs at fixed speeds".into());
+        }
+        notes
+    }
+
     /// A one-line title.
     pub fn title(self) -> &'static str {
         match self {
@@ -130,6 +182,24 @@ pub struct StudyData {
     pub runs: usize,
     /// Mean friction-solver iterations per step over the study's sweep runs (solver statistics).
     pub mean_iterations: f64,
+    /// The CSV's columns with their units, in order.
+    pub columns: Vec<(String, &'static str)>,
+}
+
+/// The unit of a column of a study's CSV (SI; "1" for counts and ratios).
+fn unit_of(column: &str) -> &'static str {
+    match column {
+        "speed" => "m/s",
+        "device_force" | "cost" => "N",
+        "force_per_length" => "N/m",
+        "dissipated_energy" => "J",
+        "global_norm" => "m²",
+        "time" => "s",
+        "impulse" => "N·s",
+        "model" => "text",
+        "devices" | "tau" | "phi_w" | "phi_m" => "1",
+        _ => "m",
+    }
 }
 
 /// Run `preset` on top of `base` (normally the reference case).
@@ -143,7 +213,16 @@ pub fn run_preset(preset: Preset, resolution: Resolution, base: &Scenario, runne
         Preset::DiscreteVsDistributed => discrete_vs_distributed(base, runner)?,
     };
     let headline = headline(preset, &data.summary);
-    Ok(StudyData { name: preset.name(), title: preset.title(), resolution: resolution.name(), headline, ..data })
+    let header = data.csv.lines().next().unwrap_or_default();
+    let columns = header.split(',').map(|c| (c.to_string(), unit_of(c))).collect();
+    Ok(StudyData {
+        columns,
+        name: preset.name(),
+        title: preset.title(),
+        resolution: resolution.name(),
+        headline,
+        ..data
+    })
 }
 
 fn number(v: &Value, key: &str) -> f64 {
@@ -156,11 +235,14 @@ fn headline(preset: Preset, summary: &Value) -> Vec<String> {
     let items = summary.get("curves").or_else(|| summary.get("optima")).and_then(Value::as_array).unwrap_or(&empty);
     let find = |pred: &dyn Fn(&Value) -> bool| items.iter().find(|v| pred(v)).cloned().unwrap_or(Value::Null);
     let curve_text = |v: &Value| {
-        format!(
-            "{:.1} m/s with a peak of {:.0} mm",
-            number(v, "critical_speed"),
-            1e3 * number(v, "peak_max_downward_deflection")
-        )
+        let (speed, peak) = (number(v, "critical_speed"), 1e3 * number(v, "peak_max_downward_deflection"));
+        match v.get("critical_speed_location").and_then(Value::as_str) {
+            Some("upper-end") => format!("at or above {speed:.1} m/s, the top of the range (peak there {peak:.0} mm)"),
+            Some("lower-end") => {
+                format!("at or below {speed:.1} m/s, the bottom of the range (peak there {peak:.0} mm)")
+            }
+            _ => format!("{speed:.1} m/s with a peak of {peak:.0} mm"),
+        }
     };
     match preset {
         Preset::DiscreteSpeed => {
@@ -236,11 +318,12 @@ fn headline(preset: Preset, summary: &Value) -> Vec<String> {
             ]
         }
         Preset::Amplification => {
-            let at = |f: f64| find(&|v| number(v, "force_per_length") == f && number(v, "speed") == 200.0);
+            let top = items.iter().map(|v| number(v, "speed")).fold(0.0, f64::max);
+            let at = |f: f64| find(&|v| number(v, "force_per_length") == f && number(v, "speed") == top);
             vec![
                 "Mid-span amplification grows with speed towards the critical speed.".into(),
                 format!(
-                    "At 200 m/s: max φ_w {:.2} and φ_M {:.2} with f_u = 1 kN/m, {:.2} and {:.2} with 2 kN/m.",
+                    "At {top} m/s: max φ_w {:.2} and φ_M {:.2} with f_u = 1 kN/m, {:.2} and {:.2} with 2 kN/m.",
                     number(&at(1e3), "max_phi_w"),
                     number(&at(1e3), "max_phi_m"),
                     number(&at(2e3), "max_phi_w"),
@@ -265,7 +348,8 @@ fn headline(preset: Preset, summary: &Value) -> Vec<String> {
 
 fn with_devices(base: &Scenario, count: usize, force: f64) -> Scenario {
     let mut s = base.clone();
-    s.friction.devices = (count > 0).then_some(DevicesSection { count: Some(count), positions: None, force });
+    s.friction.devices =
+        (count > 0).then_some(DevicesSection { count: Some(count), positions: None, force: Some(force) });
     s.friction.distributed = None;
     s
 }
@@ -290,6 +374,7 @@ fn blank(runs: usize) -> StudyData {
         plots: Vec::new(),
         runs,
         mean_iterations: 0.0,
+        columns: Vec::new(),
     }
 }
 
@@ -302,28 +387,18 @@ fn mean_iterations<'a>(points: impl Iterator<Item = &'a SweepPoint>) -> f64 {
 struct Curves {
     labels: Vec<Vec<(String, f64)>>,
     points: Vec<Vec<SweepPoint>>,
-    critical: Vec<(f64, f64)>,
+    critical: Vec<CriticalSpeed>,
     runs: usize,
 }
 
-fn sweep_curves(
-    scenarios: Vec<(Vec<(String, f64)>, Scenario)>,
-    resolution: Resolution,
-    runner: &Runner,
-) -> Result<Curves> {
-    let speeds = resolution.speeds();
+fn sweep_curves(scenarios: Vec<(Vec<(String, f64)>, Scenario)>, speeds: &[f64], runner: &Runner) -> Result<Curves> {
     let cases = scenarios.iter().map(|(_, s)| s.build()).collect::<Result<Vec<_>>>()?;
-    let points = runner.sweep_many(&cases, &speeds)?;
+    let points = runner.sweep_many(&cases, speeds)?;
     let step = speeds[1] - speeds[0];
     let curves: Vec<usize> = (0..cases.len()).collect();
     let refined = runner.silent().map(&curves, |&c| critical_speed(&cases[c], &points[c], 0.02 * step, runner))?;
     let runs = cases.len() * speeds.len() + refined.iter().map(|c| c.evaluations.len()).sum::<usize>();
-    Ok(Curves {
-        labels: scenarios.into_iter().map(|(l, _)| l).collect(),
-        points,
-        critical: refined.iter().map(|c| (c.speed, c.max_downward_deflection)).collect(),
-        runs,
-    })
+    Ok(Curves { labels: scenarios.into_iter().map(|(l, _)| l).collect(), points, critical: refined, runs })
 }
 
 impl Curves {
@@ -389,22 +464,23 @@ impl Curves {
         let label_names: Vec<&str> = self.labels[0].iter().map(|(n, _)| n.as_str()).collect();
         let _ = writeln!(
             out,
-            "{},speed,max_downward_deflection,max_upward_deflection,dissipated_energy,global_norm",
+            "{},speed,max_downward_deflection,max_upward_deflection,dissipated_energy,global_norm,\
+             window_max_downward_deflection,window_max_upward_deflection",
             label_names.join(",")
         );
         for (labels, points) in self.labels.iter().zip(&self.points) {
-            let prefix: Vec<String> = labels.iter().map(|(_, v)| v.to_string()).collect();
+            let prefix: Vec<f64> = labels.iter().map(|(_, v)| *v).collect();
             for p in points {
-                let _ = writeln!(
-                    out,
-                    "{},{},{},{},{},{}",
-                    prefix.join(","),
+                let values = [
                     p.speed,
                     p.max_downward_deflection,
                     p.max_upward_deflection,
                     p.dissipated_energy,
-                    p.global_norm
-                );
+                    p.global_norm,
+                    p.window_max_downward_deflection,
+                    p.window_max_upward_deflection,
+                ];
+                let _ = writeln!(out, "{},{}", row(&prefix), row(&values));
             }
         }
         out
@@ -413,24 +489,31 @@ impl Curves {
     fn summary(&self) -> (Value, Vec<String>) {
         let mut items = Vec::new();
         let mut lines = Vec::new();
-        for ((labels, points), &(speed, peak)) in self.labels.iter().zip(&self.points).zip(&self.critical) {
+        for ((labels, points), critical) in self.labels.iter().zip(&self.points).zip(&self.critical) {
             let upward = points.iter().fold(0.0f64, |m, p| m.max(p.max_upward_deflection));
+            let window = points.iter().fold(0.0f64, |m, p| m.max(p.window_max_downward_deflection));
             let mut item = serde_json::Map::new();
             for (name, value) in labels {
                 item.insert(name.clone(), json!(value));
             }
-            item.insert("critical_speed".into(), json!(speed));
-            item.insert("peak_max_downward_deflection".into(), json!(peak));
+            item.insert("critical_speed".into(), json!(critical.speed));
+            item.insert("critical_speed_location".into(), json!(critical.location));
+            item.insert("peak_max_downward_deflection".into(), json!(critical.max_downward_deflection));
             item.insert("peak_max_upward_deflection_sampled".into(), json!(upward));
+            item.insert("peak_window_max_downward_deflection_sampled".into(), json!(window));
             items.push(Value::Object(item));
             let label: Vec<String> = labels.iter().map(|(n, v)| format!("{n} = {v}")).collect();
-            lines.push(format!(
-                "{}: critical speed {:.1} m/s ({:.0} km/h), peak max downward deflection {:.1} mm",
-                label.join(", "),
-                speed,
-                speed * 3.6,
-                peak * 1e3
-            ));
+            let text = if critical.is_interior() {
+                format!(
+                    "critical speed {:.1} m/s ({:.0} km/h), peak max downward deflection {:.1} mm",
+                    critical.speed,
+                    critical.speed * 3.6,
+                    critical.max_downward_deflection * 1e3
+                )
+            } else {
+                critical.describe()
+            };
+            lines.push(format!("{}: {text}", label.join(", ")));
         }
         (json!({ "curves": items }), lines)
     }
@@ -446,7 +529,7 @@ fn discrete_speed(resolution: Resolution, base: &Scenario, runner: &Runner) -> R
             ));
         }
     }
-    let mut data = curves_study(scenarios, resolution, runner, &|curves| {
+    let mut data = curves_study(scenarios, &resolution.speeds(base)?, runner, &|curves| {
         let legend =
             |c: usize| if c == 0 { "no friction".to_string() } else { format!("N = {}", [3, 7, 15, 31][(c - 1) % 4]) };
         [10, 50, 100]
@@ -476,7 +559,7 @@ fn equal_cost(resolution: Resolution, base: &Scenario, runner: &Runner) -> Resul
             scenarios.push((labels, with_devices(base, count, force)));
         }
     }
-    curves_study(scenarios, resolution, runner, &|curves| {
+    curves_study(scenarios, &resolution.speeds(base)?, runner, &|curves| {
         [3100, 1550, 310]
             .iter()
             .enumerate()
@@ -501,7 +584,7 @@ fn distributed_speed(resolution: Resolution, base: &Scenario, runner: &Runner) -
         .into_iter()
         .map(|f| (vec![("force_per_length".into(), f)], with_distributed(base, f)))
         .collect();
-    curves_study(scenarios, resolution, runner, &|curves| {
+    curves_study(scenarios, &resolution.speeds(base)?, runner, &|curves| {
         let legend = |c: usize| format!("f_u = {} kN/m", [0, 1, 2, 5, 10][c]);
         vec![
             curves.deflection_plot(
@@ -530,11 +613,11 @@ fn distributed_speed(resolution: Resolution, base: &Scenario, runner: &Runner) -
 
 fn curves_study(
     scenarios: Vec<(Vec<(String, f64)>, Scenario)>,
-    resolution: Resolution,
+    speeds: &[f64],
     runner: &Runner,
     plots: &dyn Fn(&Curves) -> Vec<PlotSpec>,
 ) -> Result<StudyData> {
-    let curves = sweep_curves(scenarios, resolution, runner)?;
+    let curves = sweep_curves(scenarios, speeds, runner)?;
     let (summary, lines) = curves.summary();
     Ok(StudyData {
         csv: curves.csv(),
@@ -547,7 +630,7 @@ fn curves_study(
 }
 
 fn optimal_force(resolution: Resolution, base: &Scenario, runner: &Runner) -> Result<StudyData> {
-    let speed = 206.0;
+    let speed = SpeedScale::of(base)?.near_critical(206.0);
     let forces = log_spaced(1e3, 1e7, resolution.forces());
     let counts = [3usize, 7, 15, 31];
     let scenarios: Vec<Scenario> = counts
@@ -575,11 +658,8 @@ fn optimal_force(resolution: Resolution, base: &Scenario, runner: &Runner) -> Re
             points: forces.iter().zip(curve).map(|(f, p)| (*f, -p.max_upward_deflection * 1e3)).collect(),
         });
         for (f, p) in forces.iter().zip(curve) {
-            let _ = writeln!(
-                csv,
-                "{n},{f},{speed},{},{},{}",
-                p.max_downward_deflection, p.max_upward_deflection, p.dissipated_energy
-            );
+            let values = [n as f64, *f, speed, p.max_downward_deflection, p.max_upward_deflection, p.dissipated_energy];
+            let _ = writeln!(csv, "{}", row(&values));
         }
         let values: Vec<f64> = curve.iter().map(|p| p.max_downward_deflection).collect();
         let refined = refine_from_scan(&with_devices(base, n, 1.0), speed, &forces, &values, 0.02, runner)?;
@@ -611,15 +691,16 @@ fn optimal_force(resolution: Resolution, base: &Scenario, runner: &Runner) -> Re
 
 fn amplification_study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
     let reference = static_midspan(&with_distributed(base, 0.0).build()?)?;
-    let combos: Vec<(f64, f64)> =
-        [1e3, 2e3].into_iter().flat_map(|f| [50.0, 100.0, 150.0, 200.0].map(|v| (f, v))).collect();
+    let scale = SpeedScale::of(base)?;
+    let speeds = [(0.25, 50.0), (0.5, 100.0), (0.75, 150.0), (1.0, 200.0)].map(|(f, v)| scale.fraction(f, v));
+    let combos: Vec<(f64, f64)> = [1e3, 2e3].into_iter().flat_map(|f| speeds.map(|v| (f, v))).collect();
     let results = runner.map(&combos, |&(f, v)| {
         let mut s = with_distributed(base, f);
         s.load.speed = v;
         s.output.sections = vec![s.mesh.length / 2.0];
         let case = s.build()?;
         let samples = runner.cached(&format!("{:016x}@{v}/midspan-amplification", case.fingerprint), || {
-            let r = Simulation::new(&case.model, &case.contacts, &case.settings)?.run()?;
+            let r = runner.simulate(&case, &case.settings)?;
             Ok(amplification(&r.histories[0], reference, case.model.mesh().length))
         })?;
         Ok((f, v, samples))
@@ -629,7 +710,7 @@ fn amplification_study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
     let mut lines = Vec::new();
     for (f, v, samples) in &results {
         for a in samples {
-            let _ = writeln!(csv, "{f},{v},{},{},{}", a.tau, a.deflection, a.moment);
+            let _ = writeln!(csv, "{}", row(&[*f, *v, a.tau, a.deflection, a.moment]));
         }
         let max_w = samples.iter().fold(f64::NEG_INFINITY, |m, a| m.max(a.deflection));
         let max_m = samples.iter().fold(f64::NEG_INFINITY, |m, a| m.max(a.moment));
@@ -669,29 +750,24 @@ fn amplification_study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
 }
 
 fn discrete_vs_distributed(base: &Scenario, runner: &Runner) -> Result<StudyData> {
+    let speed = SpeedScale::of(base)?.fraction(0.75, 150.0);
     let mut devices = with_devices(base, 199, 1e3);
     let mut distributed = with_distributed(base, 995.0);
     for s in [&mut devices, &mut distributed] {
-        s.load.speed = 150.0;
+        s.load.speed = speed;
         s.output.sections = vec![s.mesh.length / 2.0];
     }
     let runs = runner.map(&[&devices, &distributed], |s| {
         let case = s.build()?;
-        Ok(Simulation::new(&case.model, &case.contacts, &case.settings)?.run()?)
+        runner.simulate(&case, &case.settings)
     })?;
     let mut csv = String::from("model,time,load_position,deflection,impulse\n");
     for (name, r) in ["devices", "distributed"].iter().zip(&runs) {
         let h = &r.histories[0];
         let impulse = h.impulse.as_deref().unwrap_or(&[]);
         for k in 0..h.time.len() {
-            let _ = writeln!(
-                csv,
-                "{name},{},{},{},{}",
-                h.time[k],
-                h.load_position[k],
-                h.deflection[k],
-                impulse.get(k).copied().unwrap_or(0.0)
-            );
+            let values = [h.time[k], h.load_position[k], h.deflection[k], impulse.get(k).copied().unwrap_or(0.0)];
+            let _ = writeln!(csv, "{name},{}", row(&values));
         }
     }
     let (a, b) = (&runs[0].histories[0], &runs[1].histories[0]);
@@ -711,7 +787,7 @@ fn discrete_vs_distributed(base: &Scenario, runner: &Runner) -> Result<StudyData
         ),
     ];
     let summary = json!({
-        "speed": 150.0,
+        "speed": speed,
         "max_history_gap": gap,
         "peak_midspan_deflection": peak,
         "dissipated_devices": runs[0].energy.dissipated(),
@@ -725,7 +801,7 @@ fn discrete_vs_distributed(base: &Scenario, runner: &Runner) -> Result<StudyData
     let plots = vec![
         PlotSpec {
             stem: "discrete-vs-distributed-deflection".into(),
-            title: "Mid-span deflection at 150 m/s, equal friction capacity".into(),
+            title: format!("Mid-span deflection at {speed} m/s, equal friction capacity"),
             x_label: "time t (s)".into(),
             y_label: "mid-span deflection w (mm, upward > 0)".into(),
             log_x: false,
@@ -739,7 +815,7 @@ fn discrete_vs_distributed(base: &Scenario, runner: &Runner) -> Result<StudyData
         },
         PlotSpec {
             stem: "discrete-vs-distributed-impulse".into(),
-            title: "Friction impulse per step at mid-span, 150 m/s".into(),
+            title: format!("Friction impulse per step at mid-span, {speed} m/s"),
             x_label: "time t (s)".into(),
             y_label: "impulse p (N·s): device, or section of 0.25 m".into(),
             log_x: false,

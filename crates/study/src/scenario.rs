@@ -29,8 +29,9 @@ pub struct Scenario {
     pub friction: FrictionSection,
     /// Time integration and the friction solver.
     pub integration: IntegrationSection,
-    /// Speed range of sweeps.
-    pub sweep: SweepSection,
+    /// Speed range of sweeps and studies; without it, a range around the case's critical speed
+    /// ([`crate::speeds::SpeedScale`]).
+    pub sweep: Option<SweepSection>,
     /// What is recorded.
     pub output: OutputSection,
 }
@@ -176,8 +177,8 @@ pub struct DevicesSection {
     pub count: Option<usize>,
     /// Device positions (m), snapped to nodes.
     pub positions: Option<Vec<f64>>,
-    /// Maximal force of one device F_u (N).
-    pub force: f64,
+    /// Maximal force of one device F_u (N); required.
+    pub force: Option<f64>,
 }
 
 /// Quadrature of distributed friction.
@@ -323,6 +324,16 @@ impl SweepSection {
 pub struct OutputSection {
     /// Positions (m) whose histories are recorded in single runs.
     pub sections: Vec<f64>,
+    /// Load positions [A, B] (m) over which the "window" extremes are taken besides the whole-run ones; default the
+    /// middle third of the beam, [L/3, 2L/3], away from the entry and exit transients.
+    pub extremes_window: Option<[f64; 2]>,
+}
+
+impl OutputSection {
+    /// The window of load positions (m) for a beam of length `length` (m): the one given, or the middle third.
+    pub fn extremes_window(&self, length: f64) -> (f64, f64) {
+        self.extremes_window.map_or((length / 3.0, 2.0 * length / 3.0), |[a, b]| (a, b))
+    }
 }
 
 /// A scenario turned into what the stepper runs.
@@ -433,12 +444,25 @@ impl Scenario {
             None => vec![foundation.damping; mesh.elements],
         };
         let model = BeamModel::with_element_damping(beam, foundation, mesh, supports, damping)?;
+        crate::diagnostics::refuse_degenerate(&model)?;
         let contacts = self.contacts(&model).map_err(|e| under("friction", e))?;
         finite_non_negative("load.force", self.load.force, "N")?;
         finite_positive("load.speed", self.load.speed, "m/s")?;
+        if let Some([a, b]) = self.output.extremes_window {
+            let length = model.mesh().length;
+            if !(a.is_finite() && b.is_finite() && 0.0 <= a && a < b && b <= length) {
+                return Err(invalid(
+                    "output.extremes_window",
+                    format!("[{a}, {b}]"),
+                    format!("needs load positions 0 ≤ A < B ≤ L = {length} m"),
+                ));
+            }
+        }
         let settings = self.run_settings(self.load.speed);
         settings.validate(&model).map_err(scenario_path)?;
-        self.sweep.validate("sweep")?;
+        if let Some(sweep) = &self.sweep {
+            sweep.validate("sweep")?;
+        }
         Ok(Case { model, contacts, settings, fingerprint: self.fingerprint() })
     }
 
@@ -448,14 +472,24 @@ impl Scenario {
         physics.title.clear();
         physics.load.speed = 0.0;
         physics.output.sections.clear();
-        physics.sweep = SweepSection::default();
-        fnv1a(format!("frictrack {}\n{}", env!("CARGO_PKG_VERSION"), physics.to_toml()).as_bytes())
+        physics.sweep = None;
+        fnv1a(
+            format!("frictrack {} results {RESULT_FORMAT}\n{}", env!("CARGO_PKG_VERSION"), physics.to_toml())
+                .as_bytes(),
+        )
+    }
+
+    /// The speeds of a sweep: `[sweep]` if given, else the default range around the critical speed.
+    pub fn speed_range(&self) -> Result<SweepSection> {
+        match &self.sweep {
+            Some(sweep) => Ok(sweep.clone()),
+            None => Ok(crate::speeds::SpeedScale::of(self)?.default_range()),
+        }
     }
 
     fn contacts(&self, model: &BeamModel) -> Result<ContactSet> {
         let mut contacts = ContactSet::new();
         if let Some(d) = &self.friction.devices {
-            finite_non_negative("friction.devices.force", d.force, "N")?;
             let layout = match (d.count, &d.positions) {
                 (Some(count), None) => DeviceLayout::Uniform { count },
                 (None, Some(positions)) => {
@@ -475,7 +509,14 @@ impl Scenario {
                 }
                 (None, None) => return Err(invalid("friction.devices", "{}", "give count or positions")),
             };
-            contacts.extend(Devices { layout, force: d.force }.contact_set(model)?);
+            // The layout's own checks (e.g. the count against the mesh) come first, then the force.
+            let mut devices = Devices { layout, force: 0.0 };
+            devices.validate(model)?;
+            devices.force = d.force.ok_or_else(|| {
+                invalid("friction.devices.force", "missing", "give the maximal force of one device F_u (N)")
+            })?;
+            finite_non_negative("friction.devices.force", devices.force, "N")?;
+            contacts.extend(devices.contact_set(model)?);
         }
         if let Some(d) = &self.friction.distributed {
             let quadrature = match d.quadrature {
@@ -499,6 +540,7 @@ impl Scenario {
             load_advance: i.load_advance,
             end_time: i.end_time,
             record_sections: self.output.sections.clone(),
+            extremes_window: Some(self.output.extremes_window(self.mesh.length)),
             ..RunSettings::default()
         };
         settings.solver.kind = i.solver.into();
@@ -555,6 +597,10 @@ fn scenario_path(error: nscd::NscdError) -> StudyError {
         other => other.into(),
     }
 }
+
+/// Version of what a run reports ([`crate::SweepPoint`]'s fields), part of every fingerprint so that journals of
+/// an older format are never read back as results of this one.
+const RESULT_FORMAT: u32 = 2;
 
 /// 64-bit FNV-1a hash: stable across platforms, Rust versions and runs (unlike `std`'s `DefaultHasher`).
 pub fn fnv1a(bytes: &[u8]) -> u64 {

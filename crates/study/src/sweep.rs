@@ -9,12 +9,14 @@
 
 use crate::error::{Result, StudyError, invalid};
 use crate::journal::Journal;
+use crate::number::row;
 use crate::scenario::{Case, Scenario};
-use nscd::Simulation;
+use nscd::{RunResult, RunSettings, Simulation};
 use rayon::prelude::*;
 use serde::de::DeserializeOwned;
 use serde::{Deserialize, Serialize};
 use std::io::Write;
+use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
 /// What one run of a sweep reports.
@@ -40,14 +42,32 @@ pub struct SweepPoint {
     pub energy_residual: f64,
     /// Mean friction-solver iterations per step.
     pub mean_iterations: f64,
+    /// Max downward deflection while the load was inside the extremes window (m, magnitude).
+    pub window_max_downward_deflection: f64,
+    /// Where (m).
+    pub window_max_downward_position: f64,
+    /// When (s).
+    pub window_max_downward_time: f64,
+    /// Max upward deflection while the load was inside the extremes window (m, magnitude).
+    pub window_max_upward_deflection: f64,
+    /// Where (m).
+    pub window_max_upward_position: f64,
+    /// When (s).
+    pub window_max_upward_time: f64,
 }
 
 /// One run of `case` at `speed` (m/s), without journal (see [`Runner::point`]).
 pub fn run_point(case: &Case, speed: f64) -> Result<SweepPoint> {
+    point_until(case, speed, None)
+}
+
+/// One run of `case` at `speed`, abandoned at the first step after `stop` is raised.
+fn point_until(case: &Case, speed: f64, stop: Option<&AtomicBool>) -> Result<SweepPoint> {
     let mut settings = case.settings.clone();
     settings.speed = speed;
     settings.record_sections.clear();
-    let r = Simulation::new(&case.model, &case.contacts, &settings)?.run()?;
+    let r = simulate_until(case, &settings, stop)?;
+    let window = r.window.unwrap_or_default();
     Ok(SweepPoint {
         speed,
         max_downward_deflection: r.max_downward.magnitude,
@@ -59,30 +79,58 @@ pub fn run_point(case: &Case, speed: f64) -> Result<SweepPoint> {
         load_work: r.energy.load_work,
         energy_residual: r.energy.residual(),
         mean_iterations: r.statistics.mean_iterations,
+        window_max_downward_deflection: window.max_downward.magnitude,
+        window_max_downward_position: window.max_downward.position,
+        window_max_downward_time: window.max_downward.time,
+        window_max_upward_deflection: window.max_upward.magnitude,
+        window_max_upward_position: window.max_upward.position,
+        window_max_upward_time: window.max_upward.time,
     })
 }
 
-/// How the runs of a sweep or study are carried out: on `jobs` threads (0 = all cores), reporting the number of
-/// finished runs to `progress`, keeping every finished run in an optional [`Journal`] (and taking runs already there
-/// from it), and stopping before the next run once an optional `stop` flag is raised (Ctrl-C).
-#[derive(Clone, Copy)]
+/// Run `case` under `settings`, abandoned with [`StudyError::Interrupted`] at the first step after `stop` is raised
+/// (a load of one atomic flag per step), so that Ctrl-C or SIGTERM ends a long run within a step.
+fn simulate_until(case: &Case, settings: &RunSettings, stop: Option<&AtomicBool>) -> Result<RunResult> {
+    let simulation = Simulation::new(&case.model, &case.contacts, settings)?;
+    let stopped = || stop.is_some_and(|s| s.load(Ordering::Relaxed));
+    let result = simulation.run_observed(&mut |_| !stopped())?;
+    if stopped() { Err(StudyError::Interrupted) } else { Ok(result) }
+}
+
+/// The worker threads a request for `jobs` gets: all cores for 0, and never more than the cores the machine
+/// has (`std::thread::available_parallelism`): more threads than cores only add memory and switching.
+pub fn worker_threads(jobs: usize) -> usize {
+    let cores = std::thread::available_parallelism().map_or(1, usize::from);
+    if jobs == 0 { cores } else { jobs.min(cores) }
+}
+
+/// How the runs of a sweep or study are carried out: on one thread pool built once (see [`worker_threads`]),
+/// reporting the number of finished runs to `progress`, keeping every finished run in an optional [`Journal`] (and
+/// taking runs already there from it), and stopping once an optional `stop` flag is raised (Ctrl-C, SIGTERM): runs
+/// not started fail with [`StudyError::Interrupted`], runs in flight are abandoned at their next step.
+#[derive(Clone)]
 pub struct Runner<'a> {
-    /// Worker threads (0 = all cores).
-    pub jobs: usize,
+    pool: Arc<rayon::ThreadPool>,
     /// Called with the number of finished runs of the current parallel loop after each one.
     pub progress: &'a (dyn Fn(usize) + Sync),
     /// Finished runs, on disk.
     pub journal: Option<&'a Journal>,
-    /// Raised to stop: runs not yet started fail with [`StudyError::Interrupted`].
+    /// Raised to stop: runs not yet started fail with [`StudyError::Interrupted`], runs in flight stop at their next
+    /// step.
     pub stop: Option<&'a AtomicBool>,
 }
 
 static NO_PROGRESS: fn(usize) = |_| {};
 
 impl Runner<'static> {
-    /// `jobs` threads, no progress, no journal, no stop flag.
-    pub fn new(jobs: usize) -> Self {
-        Runner { jobs, progress: &NO_PROGRESS, journal: None, stop: None }
+    /// A pool of [`worker_threads`]`(jobs)` threads, no progress, no journal, no stop flag.
+    pub fn new(jobs: usize) -> Result<Self> {
+        let threads = worker_threads(jobs);
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .map_err(|e| invalid("jobs", jobs, format!("cannot start {threads} worker threads: {e}")))?;
+        Ok(Runner { pool: Arc::new(pool), progress: &NO_PROGRESS, journal: None, stop: None })
     }
 }
 
@@ -112,8 +160,18 @@ impl<'a> Runner<'a> {
     }
 
     /// The same without progress reports.
-    pub fn silent(self) -> Self {
-        Runner { progress: &NO_PROGRESS, ..self }
+    pub fn silent(&self) -> Self {
+        Runner { progress: &NO_PROGRESS, ..self.clone() }
+    }
+
+    /// The number of worker threads.
+    pub fn threads(&self) -> usize {
+        self.pool.current_num_threads()
+    }
+
+    /// One run of `case` under `settings` that stops with [`StudyError::Interrupted`] when the stop flag is raised.
+    pub fn simulate(&self, case: &Case, settings: &RunSettings) -> Result<RunResult> {
+        simulate_until(case, settings, self.stop)
     }
 
     /// `run` unless the journal already holds the result under `key`; a fresh result is journaled at once.
@@ -133,14 +191,14 @@ impl<'a> Runner<'a> {
 
     /// One run of `case` at `speed` (m/s), through the journal.
     pub fn point(&self, case: &Case, speed: f64) -> Result<SweepPoint> {
-        self.cached(&format!("{:016x}@{speed}", case.fingerprint), || run_point(case, speed))
+        self.cached(&format!("{:016x}@{speed}", case.fingerprint), || point_until(case, speed, self.stop))
     }
 
     /// `f` over `items` on the pool, results in the order of `items` whatever the thread count; the first error
     /// is returned (after the runs in flight end, so that their results reach the journal).
     pub fn map<T: Sync, R: Send>(&self, items: &[T], f: impl Fn(&T) -> Result<R> + Sync) -> Result<Vec<R>> {
         let done = AtomicUsize::new(0);
-        let results: Vec<Result<R>> = thread_pool(self.jobs)?.install(|| {
+        let results: Vec<Result<R>> = self.pool.install(|| {
             items
                 .par_iter()
                 .map(|item| {
@@ -180,44 +238,83 @@ impl<'a> Runner<'a> {
     }
 }
 
-/// A rayon pool of `jobs` threads (0 = all cores).
-fn thread_pool(jobs: usize) -> Result<rayon::ThreadPool> {
-    rayon::ThreadPoolBuilder::new()
-        .num_threads(jobs)
-        .build()
-        .map_err(|e| invalid("jobs", jobs, format!("cannot start the thread pool: {e}")))
-}
+/// The columns of sweep output: name, unit, meaning (in this order; the README and the JSON beside a sweep's CSV
+/// list them).
+pub const CSV_COLUMNS: [(&str, &str, &str); 16] = [
+    ("speed", "m/s", "load speed"),
+    ("max_downward_deflection", "m", "largest downward deflection over all nodes and steps (magnitude)"),
+    ("max_upward_deflection", "m", "largest upward deflection over all nodes and steps (magnitude)"),
+    ("dissipated_energy", "J", "energy removed by friction and viscous damping"),
+    ("global_norm", "m²", "W̄ = (1/t_on)∫∫|w| dx dt over the crossing"),
+    ("max_downward_position", "m", "node of the largest downward deflection"),
+    ("max_downward_time", "s", "time of the largest downward deflection"),
+    ("load_work", "J", "work of the moving load"),
+    ("energy_residual", "J", "residual of the discrete energy balance"),
+    ("mean_iterations", "1", "mean friction-solver iterations per step"),
+    ("window_max_downward_deflection", "m", "largest downward deflection while the load is in the extremes window"),
+    ("window_max_downward_position", "m", "its node"),
+    ("window_max_downward_time", "s", "its time"),
+    ("window_max_upward_deflection", "m", "largest upward deflection while the load is in the extremes window"),
+    ("window_max_upward_position", "m", "its node"),
+    ("window_max_upward_time", "s", "its time"),
+];
 
-/// CSV header of sweep output.
-pub const CSV_HEADER: &str = "speed,max_downward_deflection,max_upward_deflection,dissipated_energy,global_norm,\
-max_downward_position,max_downward_time,load_work,energy_residual,mean_iterations";
+/// The CSV header line of sweep output (no newline).
+pub fn csv_header() -> String {
+    CSV_COLUMNS.map(|(name, _, _)| name).join(",")
+}
 
 /// Write sweep points as CSV (header + one line per point, full precision).
 pub fn write_csv(points: &[SweepPoint], out: &mut dyn Write) -> std::io::Result<()> {
-    writeln!(out, "{CSV_HEADER}")?;
+    writeln!(out, "{}", csv_header())?;
     for p in points {
         writeln!(
             out,
-            "{},{},{},{},{},{},{},{},{},{}",
-            p.speed,
-            p.max_downward_deflection,
-            p.max_upward_deflection,
-            p.dissipated_energy,
-            p.global_norm,
-            p.max_downward_position,
-            p.max_downward_time,
-            p.load_work,
-            p.energy_residual,
-            p.mean_iterations
+            "{}",
+            row(&[
+                p.speed,
+                p.max_downward_deflection,
+                p.max_upward_deflection,
+                p.dissipated_energy,
+                p.global_norm,
+                p.max_downward_position,
+                p.max_downward_time,
+                p.load_work,
+                p.energy_residual,
+                p.mean_iterations,
+                p.window_max_downward_deflection,
+                p.window_max_downward_position,
+                p.window_max_downward_time,
+                p.window_max_upward_deflection,
+                p.window_max_upward_position,
+                p.window_max_upward_time,
+            ])
         )?;
     }
     Ok(())
 }
 
-/// The refined critical speed of a configuration.
+/// Where the largest max downward deflection of a sweep lies in its speed range.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum PeakLocation {
+    /// Inside the range: a critical speed, refined between the sweep's neighbours of the maximum.
+    Interior,
+    /// At the lowest speed: only a bound — the peak is at or below it.
+    LowerEnd,
+    /// At the highest speed: only a bound — the peak is at or above it.
+    UpperEnd,
+}
+
+/// The refined critical speed of a configuration, or the bound the sweep gives when its maximum lies at an end of
+/// the range.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct CriticalSpeed {
-    /// Speed of the largest max downward deflection (m/s).
+    /// Whether `speed` is a critical speed (interior maximum) or a bound (maximum at an end of the range).
+    pub location: PeakLocation,
+    /// The sweep's speed range (m/s).
+    pub range: (f64, f64),
+    /// Speed of the largest max downward deflection (m/s); at an end of the range, that end.
     pub speed: f64,
     /// That deflection (m).
     pub max_downward_deflection: f64,
@@ -227,11 +324,47 @@ pub struct CriticalSpeed {
     pub evaluations: Vec<(f64, f64)>,
 }
 
+impl CriticalSpeed {
+    /// Whether `speed` is a critical speed rather than a bound.
+    pub fn is_interior(&self) -> bool {
+        self.location == PeakLocation::Interior
+    }
+
+    /// One sentence: the critical speed, or the bound and why.
+    pub fn describe(&self) -> String {
+        let (from, to) = self.range;
+        let peak = format!("max downward deflection {:.2} mm", self.max_downward_deflection * 1e3);
+        match self.location {
+            PeakLocation::Interior => format!(
+                "critical speed {:.2} m/s ({:.0} km/h): {peak} (sweep maximum {:.2} mm at {} m/s, {} refinement runs)",
+                self.speed,
+                self.speed * 3.6,
+                self.sweep_maximum.1 * 1e3,
+                self.sweep_maximum.0,
+                self.evaluations.len()
+            ),
+            PeakLocation::LowerEnd => format!(
+                "no interior maximum in {from}–{to} m/s: the peak is at or below {from} m/s ({peak} there); \
+                 extend the range downwards"
+            ),
+            PeakLocation::UpperEnd => format!(
+                "no interior maximum in {from}–{to} m/s: the peak is at or above {to} m/s ({peak} there); \
+                 extend the range upwards"
+            ),
+        }
+    }
+}
+
 /// Refine the sweep's maximum of the max downward deflection to `tolerance` (m/s) by golden section on fresh runs
-/// inside [v_{i−1}, v_{i+1}] around the sweep's best speed v_i.
+/// inside [v_{i−1}, v_{i+1}] around the sweep's best speed v_i. A maximum at the first or last speed is no critical
+/// speed: it is returned unrefined as a bound ([`PeakLocation::LowerEnd`] / [`PeakLocation::UpperEnd`]).
 pub fn critical_speed(case: &Case, sweep: &[SweepPoint], tolerance: f64, runner: &Runner) -> Result<CriticalSpeed> {
-    if sweep.is_empty() {
-        return Err(invalid("sweep", "empty", "needs at least one speed"));
+    if sweep.len() < 3 {
+        return Err(invalid(
+            "speeds",
+            format!("{} speed(s)", sweep.len()),
+            "a critical speed needs a sweep of at least 3 speeds (an interior maximum)",
+        ));
     }
     if !(tolerance.is_finite() && tolerance > 0.0) {
         return Err(invalid("tolerance", tolerance, "must be finite and > 0 (m/s)"));
@@ -240,6 +373,21 @@ pub fn critical_speed(case: &Case, sweep: &[SweepPoint], tolerance: f64, runner:
         .max_by(|&a, &b| sweep[a].max_downward_deflection.total_cmp(&sweep[b].max_downward_deflection))
         .expect("non-empty");
     let sweep_maximum = (sweep[best].speed, sweep[best].max_downward_deflection);
+    let range = (sweep[0].speed, sweep[sweep.len() - 1].speed);
+    let bound = |location| CriticalSpeed {
+        location,
+        range,
+        speed: sweep_maximum.0,
+        max_downward_deflection: sweep_maximum.1,
+        sweep_maximum,
+        evaluations: Vec::new(),
+    };
+    if best == 0 {
+        return Ok(bound(PeakLocation::LowerEnd));
+    }
+    if best == sweep.len() - 1 {
+        return Ok(bound(PeakLocation::UpperEnd));
+    }
     let lo = sweep[best.saturating_sub(1)].speed;
     let hi = sweep[(best + 1).min(sweep.len() - 1)].speed;
     let mut evaluations = Vec::new();
@@ -251,7 +399,14 @@ pub fn critical_speed(case: &Case, sweep: &[SweepPoint], tolerance: f64, runner:
     let (speed, value) = golden_section(&mut f, lo, hi, tolerance, true)?;
     // The refinement never reports less than the sweep found.
     let (speed, max_downward_deflection) = if value >= sweep_maximum.1 { (speed, value) } else { sweep_maximum };
-    Ok(CriticalSpeed { speed, max_downward_deflection, sweep_maximum, evaluations })
+    Ok(CriticalSpeed {
+        location: PeakLocation::Interior,
+        range,
+        speed,
+        max_downward_deflection,
+        sweep_maximum,
+        evaluations,
+    })
 }
 
 /// The device force minimising the max downward deflection.
@@ -318,7 +473,7 @@ pub fn refine_from_scan(
 fn with_device_force(scenario: &Scenario, force: f64) -> Scenario {
     let mut s = scenario.clone();
     if let Some(d) = s.friction.devices.as_mut() {
-        d.force = force;
+        d.force = Some(force);
     }
     s
 }

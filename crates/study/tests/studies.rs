@@ -93,7 +93,7 @@ fn sweeps_do_not_depend_on_thread_count() {
     let case = s.build().unwrap();
     let speeds = [120.0, 150.0, 180.0, 210.0];
     let csv = |jobs| {
-        let points = Runner::new(jobs).speed_sweep(&case, &speeds).unwrap();
+        let points = Runner::new(jobs).unwrap().speed_sweep(&case, &speeds).unwrap();
         let mut out = Vec::new();
         write_csv(&points, &mut out).unwrap();
         String::from_utf8(out).unwrap()
@@ -109,8 +109,8 @@ fn sweeps_do_not_depend_on_thread_count() {
 fn refined_linear_critical_speed() {
     let case = Scenario::default().build().unwrap();
     let speeds: Vec<f64> = (0..=11).map(|i| 150.0 + 10.0 * i as f64).collect();
-    let sweep = Runner::new(0).speed_sweep(&case, &speeds).unwrap();
-    let critical = critical_speed(&case, &sweep, 0.05, &Runner::new(0)).unwrap();
+    let sweep = Runner::new(0).unwrap().speed_sweep(&case, &speeds).unwrap();
+    let critical = critical_speed(&case, &sweep, 0.05, &Runner::new(0).unwrap()).unwrap();
     let v_cr = fem_beam::reference::uic60_on_soft_soil().infinite_beam().unwrap().critical_speed();
     eprintln!(
         "critical speed {:.2} m/s, peak {:.4} m (sweep max at {:?}), {} refinement runs",
@@ -128,7 +128,7 @@ fn refined_linear_critical_speed() {
 #[test]
 fn optimal_device_force_is_interior() {
     let s = Scenario::from_toml("[friction.devices]\ncount = 7\nforce = 1.0", "s").unwrap();
-    let best = optimal_device_force(&s, 206.0, (1e3, 1e7), 9, 0.05, &Runner::new(0)).unwrap();
+    let best = optimal_device_force(&s, 206.0, (1e3, 1e7), 9, 0.05, &Runner::new(0).unwrap()).unwrap();
     let first = best.explored[0].1;
     let last = best.explored[8].1;
     eprintln!(
@@ -182,7 +182,7 @@ fn journal_resumes_a_stopped_sweep_exactly() {
     use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
     let case = small_case();
     let speeds = [100.0, 130.0, 160.0, 190.0, 220.0, 250.0];
-    let whole = Runner::new(1).speed_sweep(&case, &speeds).unwrap();
+    let whole = Runner::new(1).unwrap().speed_sweep(&case, &speeds).unwrap();
 
     let path = temporary("journal").join("sweep.journal");
     let journal = study::Journal::open(&path, false).unwrap();
@@ -194,7 +194,7 @@ fn journal_resumes_a_stopped_sweep_exactly() {
             stop.store(true, Ordering::Relaxed);
         }
     };
-    let runner = Runner::new(1).with_progress(&progress).with_journal(Some(&journal)).with_stop(&stop);
+    let runner = Runner::new(1).unwrap().with_progress(&progress).with_journal(Some(&journal)).with_stop(&stop);
     assert_eq!(runner.speed_sweep(&case, &speeds), Err(study::StudyError::Interrupted));
     drop(journal);
     // Simulate a kill while a line was being written.
@@ -206,7 +206,7 @@ fn journal_resumes_a_stopped_sweep_exactly() {
     assert!(study::Journal::open(&path, false).is_err(), "an existing journal needs --resume");
     let journal = study::Journal::open(&path, true).unwrap();
     assert_eq!(journal.resumed(), 3);
-    let resumed = Runner::new(2).with_journal(Some(&journal)).speed_sweep(&case, &speeds).unwrap();
+    let resumed = Runner::new(2).unwrap().with_journal(Some(&journal)).speed_sweep(&case, &speeds).unwrap();
     assert_eq!(resumed, whole, "bit-identical points after resume");
     drop(journal);
     let text = std::fs::read_to_string(&path).unwrap();
@@ -224,7 +224,7 @@ fn journal_keys_hold_the_case_fingerprint() {
     assert_ne!(other.fingerprint(), Scenario::default().fingerprint());
     let path = temporary("fingerprint").join("j");
     let journal = study::Journal::open(&path, false).unwrap();
-    let runner = Runner::new(1).with_journal(Some(&journal));
+    let runner = Runner::new(1).unwrap().with_journal(Some(&journal));
     let a = runner.point(&case, 150.0).unwrap();
     let b = runner.point(&other.build().unwrap(), 150.0).unwrap();
     assert_ne!(a, b);
@@ -232,7 +232,7 @@ fn journal_keys_hold_the_case_fingerprint() {
     other.title = "renamed".into();
     other.load.speed = 17.0;
     other.output.sections = vec![3.0];
-    other.sweep.step = 1.0;
+    other.sweep = Some(study::scenario::SweepSection { step: 1.0, ..Default::default() });
     assert_eq!(other.fingerprint(), other.build().unwrap().fingerprint);
     let mut same = other.clone();
     same.title.clear();

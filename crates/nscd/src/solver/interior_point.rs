@@ -500,6 +500,7 @@ impl BandedInteriorPoint {
         u_free: &[f64],
         p: &mut [f64],
         tolerance: f64,
+        budget: usize,
     ) -> crate::Result<(usize, f64)> {
         self.statistics.full += 1;
         self.statistics.sections_solved += self.all_active.len();
@@ -510,8 +511,7 @@ impl BandedInteriorPoint {
         for (u, &j) in q.u_free.iter_mut().zip(&q.index) {
             *u = u_free[j];
         }
-        let subproblem =
-            Subproblem { problem, base: problem.m_hat, offset: 0, tolerance, max_iterations: self.max_iterations };
+        let subproblem = Subproblem { problem, base: problem.m_hat, offset: 0, tolerance, max_iterations: budget };
         self.work.iterate(&subproblem, p)
     }
 
@@ -523,6 +523,7 @@ impl BandedInteriorPoint {
         p: &mut [f64],
         tolerance: f64,
         margin: f64,
+        budget: usize,
     ) -> crate::Result<Option<usize>> {
         let positions = problem.contacts.positions();
         let rows = problem.contacts.rows();
@@ -575,13 +576,7 @@ impl BandedInteriorPoint {
         }
         self.statistics.sections_solved += self.work.sections.index.len();
         let (iterations, _) = self.work.iterate(
-            &Subproblem {
-                problem,
-                base: &self.window_matrix,
-                offset: start,
-                tolerance,
-                max_iterations: self.max_iterations,
-            },
+            &Subproblem { problem, base: &self.window_matrix, offset: start, tolerance, max_iterations: budget },
             p,
         )?;
         Ok(Some(iterations))
@@ -589,7 +584,8 @@ impl BandedInteriorPoint {
 }
 
 impl BandedInteriorPoint {
-    /// Window solves with growing margins (the final check on every section decides), then the whole problem.
+    /// Window solves with growing margins (the final check on every section decides), then the whole problem; all
+    /// of them together within `max_iterations`.
     fn solve_windows(
         &mut self,
         problem: &FrictionProblem<'_>,
@@ -601,7 +597,8 @@ impl BandedInteriorPoint {
     ) -> crate::Result<(usize, f64)> {
         let mut iterations = 0;
         for widen in [1.0, 2.0, 4.0] {
-            match self.solve_window(problem, p, tolerance, widen * margin)? {
+            let budget = self.max_iterations - iterations;
+            match self.solve_window(problem, p, tolerance, widen * margin, budget)? {
                 Some(used) => {
                     iterations += used;
                     let residual = self.full_residual(problem, v_free, p);
@@ -613,7 +610,10 @@ impl BandedInteriorPoint {
                 None => break,
             }
         }
-        let (more, residual) = self.solve_whole(problem, u_free, p, tolerance)?;
+        if iterations >= self.max_iterations {
+            return Ok((iterations, self.full_residual(problem, v_free, p)));
+        }
+        let (more, residual) = self.solve_whole(problem, u_free, p, tolerance, self.max_iterations - iterations)?;
         Ok((iterations + more, residual))
     }
 }
@@ -644,7 +644,7 @@ impl FrictionSolver for BandedInteriorPoint {
                     self.solve_windows(problem, v_free, u_free, p, tolerance, margin)?
                 }
             }
-            _ => self.solve_whole(problem, u_free, p, tolerance)?,
+            _ => self.solve_whole(problem, u_free, p, tolerance, self.max_iterations)?,
         };
         Ok(StepReport {
             iterations,

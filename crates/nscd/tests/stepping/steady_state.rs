@@ -25,7 +25,8 @@ fn fe_response_matches_infinite_beam_steady_state() {
             extremes_window: Some((190.0, 210.0)),
             ..RunSettings::default()
         };
-        let r = Simulation::new(&model, &contacts, &settings).unwrap().run().unwrap();
+        let run = Simulation::new(&model, &contacts, &settings).unwrap().run().unwrap();
+        let r = run.window.unwrap();
         let exact = infinite.steady_state(speed, case.load).unwrap().extremes();
         let down = (r.max_downward.magnitude - exact.max_downward.magnitude) / exact.max_downward.magnitude;
         let up = (r.max_upward.magnitude - exact.max_upward.magnitude) / exact.max_upward.magnitude;
