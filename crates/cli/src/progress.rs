@@ -23,3 +23,17 @@ pub fn bar(message: &str, total: Option<u64>, quiet: bool) -> ProgressBar {
     bar.set_message(message.to_string());
     bar
 }
+
+/// A bar over the `total` time steps of one run, hidden unless standard error is a terminal and `quiet` is off
+/// (cleared when the run ends).
+pub fn steps_bar(total: u64, quiet: bool) -> ProgressBar {
+    let bar = ProgressBar::new(total);
+    if quiet || !std::io::stderr().is_terminal() {
+        bar.set_draw_target(ProgressDrawTarget::hidden());
+    }
+    if let Ok(style) = ProgressStyle::with_template("run [{bar:40}] {pos}/{len} steps, {elapsed} elapsed, ~{eta} left")
+    {
+        bar.set_style(style.progress_chars("=> "));
+    }
+    bar
+}

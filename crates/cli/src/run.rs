@@ -1,14 +1,19 @@
 //! `frictrack run`: one Moreau–Jean simulation of a scenario (default: the reference case of MODEL.md §2) with flags
-//! overriding it; prints max deflections, energies, solver statistics and wall time.
+//! overriding it; prints the key inputs, the whole-run extremes and the extremes while the load is in the middle
+//! third (or `--extremes-window`), energies, solver statistics and wall time. With `--out DIR` it also writes
+//! `summary.json`, `histories.csv`, `snapshots.csv` and their figures ([`study::run_output`]).
 
 use crate::Format;
+use crate::files::{prepare_output_folder, write_atomically};
 use crate::scenario_args::ScenarioArgs;
 use anyhow::Result;
 use clap::Args;
 use friction::ContactKind;
-use nscd::Simulation;
+use nscd::{RunResult, SnapshotAt};
 use serde::Serialize;
+use std::path::PathBuf;
 use std::time::Instant;
+use study::{Case, Scenario};
 
 /// Options of `frictrack run`.
 #[derive(Debug, Args)]
@@ -18,13 +23,41 @@ pub struct RunArgs {
     /// Output format.
     #[arg(long, value_enum, default_value_t = Format::Text)]
     format: Format,
+    /// Write summary.json, histories.csv, snapshots.csv and figures (PNG + SVG) into this folder.
+    #[arg(long, value_name = "DIR")]
+    out: Option<PathBuf>,
+    /// Sections (m) whose histories are recorded, e.g. 50,100 (default: the scenario's [output] sections, or
+    /// mid-span with --out).
+    #[arg(long, value_delimiter = ',', value_name = "X,…", allow_negative_numbers = true)]
+    record: Vec<f64>,
+    /// Load positions (m) at which whole-beam snapshots are taken, e.g. 50,100,150 (default: the scenario's
+    /// [output] snapshots, or the load at L/4, L/2, 3L/4).
+    #[arg(long, value_delimiter = ',', value_name = "X,…", allow_negative_numbers = true)]
+    snapshot_at_load: Vec<f64>,
+    /// No progress bar.
+    #[arg(long)]
+    quiet: bool,
+}
+
+/// Extremes in the JSON report (m, m, s; magnitudes).
+#[derive(Debug, Serialize)]
+struct ExtremeReport {
+    deflection: f64,
+    position: f64,
+    time: f64,
+    load_position: f64,
 }
 
 /// The JSON report of `frictrack run`. Deflections are positive magnitudes (m), relative to the self-weight state.
 #[derive(Debug, Serialize)]
 pub struct RunReport {
+    title: String,
     speed: f64,
+    load: f64,
+    critical_speed: Option<f64>,
+    damping_ratio: f64,
     devices: usize,
+    device_force: f64,
     device_positions: Vec<f64>,
     distributed_friction: f64,
     max_downward_deflection: f64,
@@ -33,6 +66,9 @@ pub struct RunReport {
     max_upward_deflection: f64,
     max_upward_deflection_position: f64,
     max_upward_deflection_time: f64,
+    extremes_window: (f64, f64),
+    window_max_downward: ExtremeReport,
+    window_max_upward: ExtremeReport,
     global_norm: f64,
     load_work: f64,
     friction_work: f64,
@@ -54,18 +90,109 @@ pub struct RunReport {
 /// Execute `frictrack run`.
 pub fn run(args: &RunArgs) -> Result<()> {
     let start = Instant::now();
-    let scenario = args.scenario.load()?;
+    let mut scenario = args.scenario.load()?;
+    if !args.record.is_empty() {
+        scenario.output.sections = args.record.clone();
+    }
+    if !args.snapshot_at_load.is_empty() {
+        scenario.output.snapshot_times.clear();
+        scenario.output.snapshot_load_positions = args.snapshot_at_load.clone();
+    }
+    if args.out.is_some() && scenario.output.sections.is_empty() {
+        scenario.output.sections = vec![scenario.mesh.length / 2.0];
+    }
     let case = scenario.build()?;
-    let result = Simulation::new(&case.model, &case.contacts, &case.settings)?.run()?;
+    crate::scenario_args::print_warnings(&scenario, &case);
+    if let Some(out) = &args.out {
+        prepare_output_folder("--out", out)?;
+    }
+    let requests = if args.out.is_some() { scenario.output.snapshots(scenario.mesh.length) } else { Vec::new() };
+    let runner = study::sweep::Runner::new(1)?.with_stop(crate::interrupt::stop_flag());
+    let steps = case.settings.step_count(scenario.mesh.length);
+    let bar = crate::progress::steps_bar(steps as u64, args.quiet || args.format == Format::Json);
+    let progress = |fraction: f64| bar.set_position((fraction * steps) as u64);
+    let ran = study::run_output::run_with_snapshots(&case, &requests, &runner, &progress);
+    bar.finish_and_clear();
+    let (result, snapshots) = crate::interrupt::explain(ran, None)?;
+    let report = report(&scenario, &case, &result, start.elapsed().as_secs_f64())?;
+    match args.format {
+        Format::Json => println!("{}", serde_json::to_string_pretty(&report)?),
+        Format::Text => print_text(&report),
+    }
+    if let Some(out) = &args.out {
+        write_outputs(out, &scenario, &report, &result, &snapshots)?;
+        if args.format == Format::Text {
+            println!("  wrote {}/summary.json, histories.csv, snapshots.csv and figures", out.display());
+        }
+    }
+    Ok(())
+}
+
+fn write_outputs(
+    out: &std::path::Path,
+    scenario: &Scenario,
+    report: &RunReport,
+    result: &RunResult,
+    snapshots: &[nscd::Snapshot],
+) -> Result<()> {
+    use study::run_output::{HISTORY_COLUMNS, SNAPSHOT_COLUMNS, histories_csv, run_plots, snapshots_csv};
+    let columns = |list: &[(&str, &str)]| {
+        list.iter().map(|(name, unit)| serde_json::json!({ "name": name, "unit": unit })).collect::<Vec<_>>()
+    };
+    let requested: Vec<String> = snapshots
+        .iter()
+        .map(|s| match s.requested {
+            SnapshotAt::Time(t) => format!("time {t} s"),
+            SnapshotAt::LoadPosition(x) => format!("load at {x} m"),
+        })
+        .collect();
+    let summary = serde_json::json!({
+        "report": report,
+        "files": {
+            "histories.csv": { "columns": columns(&HISTORY_COLUMNS), "sections": scenario.output.sections },
+            "snapshots.csv": { "columns": columns(&SNAPSHOT_COLUMNS), "requested": requested },
+        },
+        "conventions": "deflection positive upward; moment sagging-positive; extremes are magnitudes",
+        "frictrack_version": env!("CARGO_PKG_VERSION"),
+        "scenario": scenario,
+    });
+    write_atomically(&out.join("summary.json"), serde_json::to_string_pretty(&summary)?.as_bytes())?;
+    write_atomically(&out.join("histories.csv"), histories_csv(result).as_bytes())?;
+    write_atomically(&out.join("snapshots.csv"), snapshots_csv(snapshots).as_bytes())?;
+    let title = if scenario.title.is_empty() { format!("{} m/s", report.speed) } else { scenario.title.clone() };
+    for spec in run_plots(result, snapshots, &title) {
+        study::plot::render(&spec, out)?;
+    }
+    Ok(())
+}
+
+fn report(scenario: &Scenario, case: &Case, result: &RunResult, wall_time: f64) -> Result<RunReport> {
     let e = &result.energy;
     let s = &result.statistics;
+    let settings = &case.settings;
     let device_positions: Vec<f64> = (0..case.contacts.len())
         .filter(|&j| case.contacts.kinds()[j] == ContactKind::Device)
         .map(|j| case.contacts.positions()[j])
         .collect();
-    let report = RunReport {
-        speed: case.settings.speed,
+    let window = result.window.unwrap_or_default();
+    let x0 = settings.start_position();
+    let extreme = |x: &nscd::simulation::Extreme| ExtremeReport {
+        deflection: x.magnitude,
+        position: x.position,
+        time: x.time,
+        load_position: x0 + settings.speed * x.time,
+    };
+    let critical = study::speeds::SpeedScale::of(scenario)?.critical_speed;
+    let foundation = case.model.foundation();
+    let c_cr = 2.0 * (foundation.stiffness * case.model.beam().mass_per_length()).sqrt();
+    Ok(RunReport {
+        title: scenario.title.clone(),
+        speed: settings.speed,
+        load: settings.load,
+        critical_speed: critical,
+        damping_ratio: if c_cr > 0.0 { foundation.damping / c_cr } else { 0.0 },
         devices: device_positions.len(),
+        device_force: scenario.friction.devices.as_ref().and_then(|d| d.force).unwrap_or(0.0),
         device_positions,
         distributed_friction: scenario.friction.distributed.as_ref().map_or(0.0, |d| d.force_per_length),
         max_downward_deflection: result.max_downward.magnitude,
@@ -74,6 +201,9 @@ pub fn run(args: &RunArgs) -> Result<()> {
         max_upward_deflection: result.max_upward.magnitude,
         max_upward_deflection_position: result.max_upward.position,
         max_upward_deflection_time: result.max_upward.time,
+        extremes_window: window.load_range,
+        window_max_downward: extreme(&window.max_downward),
+        window_max_upward: extreme(&window.max_upward),
         global_norm: result.global_norm,
         load_work: e.load_work,
         friction_work: e.friction_work,
@@ -89,39 +219,50 @@ pub fn run(args: &RunArgs) -> Result<()> {
         max_residual: s.max_residual,
         mean_sections_solved: s.mean_sections_solved,
         solver: s.solver.to_string(),
-        wall_time: start.elapsed().as_secs_f64(),
-    };
-    match args.format {
-        Format::Json => println!("{}", serde_json::to_string_pretty(&report)?),
-        Format::Text => print_text(&report),
-    }
-    Ok(())
+        wall_time,
+    })
 }
 
 fn print_text(r: &RunReport) {
-    println!("frictrack run — load {:.2} m/s ({:.0} km/h)", r.speed, r.speed * 3.6);
-    if r.devices > 0 {
+    let title = if r.title.is_empty() { String::new() } else { format!(" — {}", r.title) };
+    println!("frictrack run{title}: load {:.1} kN at {:.2} m/s ({:.0} km/h)", r.load / 1e3, r.speed, r.speed * 3.6);
+    if let Some(v_cr) = r.critical_speed {
         println!(
-            "  friction devices     {} (snapped to {:?} … m)",
-            r.devices,
-            &r.device_positions[..r.device_positions.len().min(5)]
+            "  critical speed of the infinite track v_cr = {v_cr:.2} m/s; foundation damping ζ = {}",
+            r.damping_ratio
         );
     }
-    if r.distributed_friction > 0.0 {
-        println!("  distributed friction {:.1} N/m", r.distributed_friction);
+    match (r.devices, r.distributed_friction > 0.0) {
+        (0, false) => println!("  friction: none"),
+        (n, distributed) => {
+            if n > 0 {
+                let shown: Vec<String> = r.device_positions.iter().take(5).map(|x| format!("{x}")).collect();
+                let more = if n > 5 { ", …" } else { "" };
+                println!("  friction devices: {n} × {:.1} kN at {}{more} m", r.device_force / 1e3, shown.join(", "));
+            }
+            if distributed {
+                println!("  distributed friction: {:.1} N/m", r.distributed_friction);
+            }
+        }
     }
-    println!(
-        "  max downward deflection {:>9.3} mm at x = {:.1} m, t = {:.4} s",
-        r.max_downward_deflection * 1e3,
+    let line = |what: &str, d: f64, x: f64, t: f64, x_load: Option<f64>| {
+        let load = x_load.map_or(String::new(), |x| format!(", load at {x:.1} m"));
+        println!("    max {what:<8} deflection {:>9.3} mm at x = {x:.1} m, t = {t:.4} s{load}", d * 1e3);
+    };
+    println!("  whole run (includes the entry transient from rest and the exit near x = L):");
+    line(
+        "downward",
+        r.max_downward_deflection,
         r.max_downward_deflection_position,
-        r.max_downward_deflection_time
+        r.max_downward_deflection_time,
+        None,
     );
-    println!(
-        "  max upward deflection   {:>9.3} mm at x = {:.1} m, t = {:.4} s",
-        r.max_upward_deflection * 1e3,
-        r.max_upward_deflection_position,
-        r.max_upward_deflection_time
-    );
+    line("upward", r.max_upward_deflection, r.max_upward_deflection_position, r.max_upward_deflection_time, None);
+    let (a, b) = r.extremes_window;
+    println!("  while the load is at {a:.1}–{b:.1} m (away from the ends: the response of a long track):");
+    for (what, e) in [("downward", &r.window_max_downward), ("upward", &r.window_max_upward)] {
+        line(what, e.deflection, e.position, e.time, Some(e.load_position));
+    }
     println!("  global norm W̄          {:>9.4} m²", r.global_norm);
     println!(
         "  energy (J): load work {:.4e}, dissipated {:.4e} (friction {:.4e}, viscous {:.4e}), numerical {:.4e}, balance residual {:.2e}",

@@ -71,6 +71,10 @@ pub struct ScenarioArgs {
     /// Absorbing end zones of this length (m), foundation damping graded up to c_cr.
     #[arg(long, allow_negative_numbers = true)]
     pub absorbing_zones: Option<f64>,
+    /// Load positions A:B (m) over which the "window" extremes are reported beside the whole-run ones; default the
+    /// middle third of the beam.
+    #[arg(long, value_name = "A:B", allow_negative_numbers = true)]
+    pub extremes_window: Option<String>,
 }
 
 /// Print the warnings of a built scenario on stderr (always: they say a result may be wrong).
@@ -132,6 +136,12 @@ impl ScenarioArgs {
         }
         if let Some(x) = self.steady_start {
             s.integration.steady_start = Some(x);
+        }
+        if let Some(text) = &self.extremes_window {
+            let bad = || study::error::invalid("--extremes-window", text, "expected A:B, two load positions in m");
+            let (a, b) = text.split_once(':').ok_or_else(bad)?;
+            let number = |t: &str| t.trim().parse::<f64>().map_err(|_| bad());
+            s.output.extremes_window = Some([number(a)?, number(b)?]);
         }
         if let Some(length) = self.absorbing_zones {
             s.foundation.absorbing_zones = Some(AbsorbingZonesSection { length, peak_ratio: 1.0 });

@@ -173,7 +173,8 @@ impl RunSettings {
         }
     }
 
-    fn start_position(&self) -> f64 {
+    /// Load position at t = 0 (m).
+    pub fn start_position(&self) -> f64 {
         match self.initial {
             InitialState::Rest => 0.0,
             InitialState::SteadyState { position } => position,
@@ -222,6 +223,10 @@ pub struct SectionHistory {
     pub load_position: Vec<f64>,
     /// Deflection w (m, upward).
     pub deflection: Vec<f64>,
+    /// Velocity ẇ (m/s, upward) after each step.
+    pub velocity: Vec<f64>,
+    /// Mean acceleration of each step (ẇ_{k+1} − ẇ_k)/h (m/s², upward); 0 in the initial entry.
+    pub acceleration: Vec<f64>,
     /// Bending moment at `moment_node` (N·m, sagging positive) from element end forces K_e q + C_e q̇ + M_e q̈ − f_e
     /// after each step, with q̈ the mean acceleration of the step; the initial entry omits inertia.
     pub moment: Vec<f64>,
@@ -435,9 +440,15 @@ impl<'a> Simulation<'a> {
             .collect();
         for r in &mut recorders {
             r.history.impulse = r.contact.map(|_| Vec::with_capacity(total_steps + 1));
-            for series in
-                [&mut r.history.time, &mut r.history.load_position, &mut r.history.deflection, &mut r.history.moment]
-            {
+            let h = &mut r.history;
+            for series in [
+                &mut h.time,
+                &mut h.load_position,
+                &mut h.deflection,
+                &mut h.velocity,
+                &mut h.acceleration,
+                &mut h.moment,
+            ] {
                 series.reserve(total_steps + 1);
             }
         }
@@ -455,7 +466,7 @@ impl<'a> Simulation<'a> {
         for r in &mut recorders {
             full.expand(dofs, stepper.q(), stepper.v());
             let m0 = self.moment_at_node(r.node, &full, &load, &[(0.0, 1.0)], None);
-            record(r, 0.0, start, model.deflection_at(&full.q, r.position)?, m0, 0.0);
+            record(r, 0.0, start, full.motion_at(model, r.position)?, m0, 0.0);
         }
 
         let clock = Instant::now();
@@ -496,8 +507,7 @@ impl<'a> Simulation<'a> {
                 let impulse = r.contact.map_or(0.0, |j| stepper.p[j]);
                 let moment =
                     self.moment_at_node(r.node, &full, &load, &[(time, 1.0)], Some((&stepper.p, h, &r.inside)));
-                let w = model.deflection_at(&full.q, r.position)?;
-                record(r, time, load.position(time), w, moment, impulse);
+                record(r, time, load.position(time), full.motion_at(model, r.position)?, moment, impulse);
             }
             if !keep_going {
                 break;
@@ -658,10 +668,12 @@ struct InsideSection {
     shape: [f64; 4],
 }
 
-fn record(r: &mut Recorder, time: f64, load_position: f64, w: f64, moment: f64, impulse: f64) {
+fn record(r: &mut Recorder, time: f64, load_position: f64, motion: [f64; 3], moment: f64, impulse: f64) {
     r.history.time.push(time);
     r.history.load_position.push(load_position);
-    r.history.deflection.push(w);
+    r.history.deflection.push(motion[0]);
+    r.history.velocity.push(motion[1]);
+    r.history.acceleration.push(motion[2]);
     r.history.moment.push(moment);
     if let Some(series) = r.history.impulse.as_mut() {
         series.push(impulse);
@@ -685,6 +697,11 @@ impl Buffers {
         dofs.expand_into(q, &mut self.q);
         dofs.expand_into(v, &mut self.v);
         self.a.iter_mut().for_each(|a| *a = 0.0);
+    }
+
+    /// Deflection, velocity and acceleration at `x` (m, m/s, m/s²), interpolated with the Hermite shapes.
+    fn motion_at(&self, model: &BeamModel, x: f64) -> Result<[f64; 3]> {
+        Ok([model.deflection_at(&self.q, x)?, model.deflection_at(&self.v, x)?, model.deflection_at(&self.a, x)?])
     }
 
     /// The state after a step: q_{k+1}, v_{k+1} and the mean acceleration (v_{k+1} − v_k)/h.

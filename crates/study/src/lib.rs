@@ -13,6 +13,7 @@ pub mod metrics;
 pub mod number;
 pub mod plot;
 pub mod presets;
+pub mod run_output;
 pub mod scenario;
 pub mod shard;
 pub mod speeds;

@@ -327,9 +327,25 @@ pub struct OutputSection {
     /// Load positions [A, B] (m) over which the "window" extremes are taken besides the whole-run ones; default the
     /// middle third of the beam, [L/3, 2L/3], away from the entry and exit transients.
     pub extremes_window: Option<[f64; 2]>,
+    /// Times (s) of whole-beam snapshots (`run --out`).
+    pub snapshot_times: Vec<f64>,
+    /// Load positions (m) of whole-beam snapshots (`run --out`); with neither list, L/4, L/2 and 3L/4.
+    pub snapshot_load_positions: Vec<f64>,
 }
 
 impl OutputSection {
+    /// The snapshot requests for a beam of length `length` (m): the times and load positions given, or the load at
+    /// L/4, L/2 and 3L/4.
+    pub fn snapshots(&self, length: f64) -> Vec<nscd::SnapshotAt> {
+        use nscd::SnapshotAt;
+        let mut requests: Vec<SnapshotAt> = self.snapshot_times.iter().map(|&t| SnapshotAt::Time(t)).collect();
+        requests.extend(self.snapshot_load_positions.iter().map(|&x| SnapshotAt::LoadPosition(x)));
+        if requests.is_empty() {
+            requests = [0.25, 0.5, 0.75].iter().map(|f| SnapshotAt::LoadPosition(f * length)).collect();
+        }
+        requests
+    }
+
     /// The window of load positions (m) for a beam of length `length` (m): the one given, or the middle third.
     pub fn extremes_window(&self, length: f64) -> (f64, f64) {
         self.extremes_window.map_or((length / 3.0, 2.0 * length / 3.0), |[a, b]| (a, b))
@@ -472,6 +488,8 @@ impl Scenario {
         physics.title.clear();
         physics.load.speed = 0.0;
         physics.output.sections.clear();
+        physics.output.snapshot_times.clear();
+        physics.output.snapshot_load_positions.clear();
         physics.sweep = None;
         fnv1a(
             format!("frictrack {} results {RESULT_FORMAT}\n{}", env!("CARGO_PKG_VERSION"), physics.to_toml())

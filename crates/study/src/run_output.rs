@@ -1,0 +1,174 @@
+//! The files of one run (`frictrack run --out DIR`): histories at the recorded sections and whole-beam snapshots
+//! as long-format CSV, their column units, and their figures (MODEL.md §6).
+//!
+//! - `histories.csv`: `section,time,load_position,deflection,velocity,acceleration,moment,friction_force` — one row
+//!   per recorded section and time step (m, s, m, m, m/s, m/s², N·m, N). Velocity is ẇ after the step, acceleration
+//!   the step's mean (ẇ_{k+1} − ẇ_k)/h, the moment comes from element end forces at the nearest node, the friction
+//!   force is the impulse of a friction section at that position divided by h (0 where there is none).
+//! - `snapshots.csv`: `time,load_position,x,deflection,moment` — one row per node and snapshot (s, m, m, m, N·m).
+//!
+//! Deflection is positive upward, the moment sagging-positive; every number in shortest round-trip form.
+
+use crate::error::{Result, StudyError};
+use crate::number::row;
+use crate::plot::{PlotSpec, Series};
+use crate::scenario::Case;
+use crate::sweep::Runner;
+use nscd::{RunResult, Simulation, Snapshot, SnapshotAt, SnapshotTaker};
+use std::fmt::Write as _;
+use std::sync::atomic::Ordering;
+
+/// Columns of `histories.csv`: name and unit.
+pub const HISTORY_COLUMNS: [(&str, &str); 8] = [
+    ("section", "m"),
+    ("time", "s"),
+    ("load_position", "m"),
+    ("deflection", "m"),
+    ("velocity", "m/s"),
+    ("acceleration", "m/s²"),
+    ("moment", "N·m"),
+    ("friction_force", "N"),
+];
+
+/// Columns of `snapshots.csv`: name and unit.
+pub const SNAPSHOT_COLUMNS: [(&str, &str); 5] =
+    [("time", "s"), ("load_position", "m"), ("x", "m"), ("deflection", "m"), ("moment", "N·m")];
+
+/// One run with histories (the case's recorded sections) and the requested snapshots, reporting the finished
+/// fraction of steps to `progress` every 1 % and stopping at the runner's stop flag.
+pub fn run_with_snapshots(
+    case: &Case,
+    requests: &[SnapshotAt],
+    runner: &Runner,
+    progress: &dyn Fn(f64),
+) -> Result<(RunResult, Vec<Snapshot>)> {
+    let settings = &case.settings;
+    let mut taker = SnapshotTaker::new(&case.model, &case.contacts, settings, requests).map_err(|e| match e {
+        nscd::NscdError::InvalidField { value, allowed, .. } => {
+            crate::error::invalid("output.snapshot_times / snapshot_load_positions", value, allowed)
+        }
+        other => other.into(),
+    })?;
+    let total = settings.step_count(case.model.mesh().length).max(1.0);
+    let every = ((total / 100.0).ceil() as usize).max(1);
+    let stopped = || runner.stop.is_some_and(|s| s.load(Ordering::Relaxed));
+    let result = Simulation::new(&case.model, &case.contacts, settings)?.run_observed(&mut |view| {
+        if view.step % every == 0 {
+            progress(view.step as f64 / total);
+        }
+        taker.observe(view) && !stopped()
+    })?;
+    if stopped() {
+        return Err(StudyError::Interrupted);
+    }
+    Ok((result, taker.finish()?))
+}
+
+/// The header line of a CSV with `columns`.
+fn header(columns: &[(&str, &str)]) -> String {
+    columns.iter().map(|(name, _)| *name).collect::<Vec<_>>().join(",")
+}
+
+/// `histories.csv` of a run with step `h` (s).
+pub fn histories_csv(result: &RunResult) -> String {
+    let mut out = header(&HISTORY_COLUMNS) + "\n";
+    let h = result.step;
+    for s in &result.histories {
+        for k in 0..s.time.len() {
+            let force = s.impulse.as_ref().map_or(0.0, |p| p[k] / h);
+            let values = [
+                s.position,
+                s.time[k],
+                s.load_position[k],
+                s.deflection[k],
+                s.velocity[k],
+                s.acceleration[k],
+                s.moment[k],
+                force,
+            ];
+            let _ = writeln!(out, "{}", row(&values));
+        }
+    }
+    out
+}
+
+/// `snapshots.csv`.
+pub fn snapshots_csv(snapshots: &[Snapshot]) -> String {
+    let mut out = header(&SNAPSHOT_COLUMNS) + "\n";
+    for s in snapshots {
+        for i in 0..s.x.len() {
+            let _ = writeln!(out, "{}", row(&[s.time, s.load_position, s.x[i], s.deflection[i], s.moment[i]]));
+        }
+    }
+    out
+}
+
+/// Figures of the histories (deflection and moment against the load position, one curve per section) and of the
+/// snapshots (deflected shape and moment along the beam, one curve per instant).
+pub fn run_plots(result: &RunResult, snapshots: &[Snapshot], title: &str) -> Vec<PlotSpec> {
+    let by_section = |value: &dyn Fn(&nscd::simulation::SectionHistory, usize) -> f64| -> Vec<Series> {
+        result
+            .histories
+            .iter()
+            .enumerate()
+            .map(|(i, s)| Series {
+                label: format!("x = {} m", s.position),
+                color: i,
+                points: (0..s.time.len()).map(|k| (s.load_position[k], value(s, k))).collect(),
+            })
+            .collect()
+    };
+    let by_instant = |value: &dyn Fn(&Snapshot, usize) -> f64| -> Vec<Series> {
+        snapshots
+            .iter()
+            .enumerate()
+            .map(|(i, s)| Series {
+                label: format!("load at {:.1} m (t = {:.3} s)", s.load_position, s.time),
+                color: i,
+                points: (0..s.x.len()).map(|n| (s.x[n], value(s, n))).collect(),
+            })
+            .collect()
+    };
+    let figure = |stem: &str, what: &str, x_label: &str, y_label: &str, series: Vec<Series>| PlotSpec {
+        stem: stem.into(),
+        title: format!("{title}: {what}"),
+        x_label: x_label.into(),
+        y_label: y_label.into(),
+        log_x: false,
+        series,
+    };
+    let mut plots = Vec::new();
+    if !result.histories.is_empty() {
+        plots.push(figure(
+            "histories-deflection",
+            "deflection at the recorded sections",
+            "load position x_c (m)",
+            "deflection w (mm, upward > 0)",
+            by_section(&|s, k| s.deflection[k] * 1e3),
+        ));
+        plots.push(figure(
+            "histories-moment",
+            "bending moment at the recorded sections",
+            "load position x_c (m)",
+            "bending moment M (kN·m, sagging > 0)",
+            by_section(&|s, k| s.moment[k] / 1e3),
+        ));
+    }
+    if !snapshots.is_empty() {
+        plots.push(figure(
+            "snapshots-deflection",
+            "deflected shape",
+            "position along the beam x (m)",
+            "deflection w (mm, upward > 0)",
+            by_instant(&|s, n| s.deflection[n] * 1e3),
+        ));
+        plots.push(figure(
+            "snapshots-moment",
+            "bending moment along the beam",
+            "position along the beam x (m)",
+            "bending moment M (kN·m, sagging > 0)",
+            by_instant(&|s, n| s.moment[n] / 1e3),
+        ));
+    }
+    plots
+}
