@@ -1,5 +1,9 @@
 //! Runs the `frictrack` binary and checks its output and exit codes.
 
+mod bad_inputs;
+mod run_out;
+mod trust;
+
 use std::process::{Command, Output};
 
 fn frictrack(args: &[&str]) -> Output {

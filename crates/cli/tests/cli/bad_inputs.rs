@@ -1,0 +1,101 @@
+//! The bad and borderline inputs of issue 15, each with its exit code and the parameter its message names. None
+//! panics (exit 101) or aborts (134); crashes, hangs and destroyed files found by a new user are regressions here.
+
+use super::{frictrack, temporary_folder};
+use std::path::Path;
+
+/// (arguments, expected exit code, text the message must contain).
+const CASES: &[(&[&str], i32, &str)] = &[
+    (&["run", "--elements", "1"], 2, "mesh.elements"),
+    (&["run", "--elements", "4000000000"], 2, "mesh.elements"),
+    (&["run", "--elements", "18446744073709551615"], 2, "mesh.elements"),
+    (&["reference", "--elements", "100000"], 2, "mesh.elements"),
+    (&["reference", "--modes", "1000"], 2, "--modes"),
+    (&["run", "--speed", "-5"], 2, "load.speed"),
+    (&["run", "--devices", "3", "--device-force", "-10"], 2, "friction.devices.force"),
+    (&["run", "--damping-ratio", "-0.1"], 2, "foundation.damping_ratio"),
+    (&["run", "--devices", "15"], 2, "friction.devices.force"),
+    (&["sweep", "--speed", "100"], 2, "--speed"),
+    (&["sweep", "--speeds", "100:110:10", "--critical"], 2, "--speeds"),
+    (&["run", "--extremes-window", "150:50"], 2, "output.extremes_window"),
+    (&["analytic", "--speed", "-3"], 2, "speed"),
+    // The interior point honours max_iterations over its window and whole-beam solves together, then stops the run.
+    (&["run", "--distributed-friction", "5000", "--tolerance", "1e-15"], 1, "after 20000 iterations"),
+];
+
+/// Scenario files: (TOML, expected exit code, text the message must contain).
+const FILES: &[(&str, i32, &str)] = &[
+    ("[mesh]\nelements = 18446744073709551615\n", 2, "mesh.elements"),
+    ("[friction.distributed]\nforce_per_length = 1e3\nsubdivisions = 100000\n", 2, "subdivisions"),
+    ("[integration]\nend_time = 1e9\n", 2, "integration.end_time"),
+    ("[foundation]\nstiffness = 0.0\n[supports]\nleft = \"free\"\nright = \"free\"\n", 2, "supports"),
+    ("[foundation]\nstiffness = 0.0\n[supports]\nright = \"free\"\n", 2, "supports"),
+    ("[friction.devices]\ncount = 15\n", 2, "friction.devices.force"),
+    // 2·10⁶ steps × 30 recorded sections: more history samples than the stated limit, refused before allocating.
+    (
+        "[integration]\nload_advance = 1e-4\n[output]\nsections = [1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0, 10.0, \
+         11.0, 12.0, 13.0, 14.0, 15.0, 16.0, 17.0, 18.0, 19.0, 20.0, 21.0, 22.0, 23.0, 24.0, 25.0, 26.0, 27.0, 28.0, \
+         29.0, 30.0]\n",
+        2,
+        "output.sections",
+    ),
+];
+
+fn check(args: &[&str], code: i32, needle: &str) {
+    let out = frictrack(args);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(code), "{args:?}: {err}");
+    assert!(err.contains(needle), "{args:?}: expected `{needle}` in: {err}");
+    assert!(!err.contains("panicked"), "{args:?}: {err}");
+}
+
+#[test]
+fn bad_inputs_exit_with_a_message_naming_the_parameter() {
+    for (args, code, needle) in CASES {
+        check(args, *code, needle);
+    }
+    let dir = temporary_folder("bad-files");
+    for (i, (toml, code, needle)) in FILES.iter().enumerate() {
+        let path = dir.join(format!("case{i}.toml"));
+        std::fs::write(&path, toml).unwrap();
+        check(&["run", path.to_str().unwrap()], *code, needle);
+    }
+}
+
+#[test]
+fn suspicious_inputs_run_with_a_warning_naming_the_value_and_limit() {
+    let out = frictrack(&["run", "--elements", "3", "--speed", "100"]);
+    assert!(out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("warning: mesh.elements = 3") && err.contains("π/β = 10.000 m"), "{err}");
+    let dir = temporary_folder("merged");
+    let path = dir.join("merged.toml");
+    std::fs::write(&path, "[friction.devices]\npositions = [50.0, 50.2, 50.3]\nforce = 1e4\n").unwrap();
+    let out = frictrack(&["run", path.to_str().unwrap(), "--speed", "100"]);
+    assert!(out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("warning: friction.devices = 3 devices") && err.contains("only 1 distinct"), "{err}");
+}
+
+/// Whatever `--out` names, a target that is not a regular file is refused before any run (exit 2), and left as it
+/// was; an unusable folder gives the same exit code from sweep, study and reproduce.
+#[test]
+fn output_targets_that_are_not_regular_files_are_refused_and_kept() {
+    let dir = temporary_folder("targets");
+    let target = dir.join("kept.csv");
+    std::fs::write(&target, "precious").unwrap();
+    let link = dir.join("link.csv");
+    std::os::unix::fs::symlink(&target, &link).unwrap();
+    let fifo = dir.join("fifo.csv");
+    assert!(std::process::Command::new("mkfifo").arg(&fifo).status().unwrap().success());
+    for bad in [link.as_path(), fifo.as_path(), Path::new("/dev/null"), dir.as_path()] {
+        check(&["sweep", "--speeds", "100:120:10", "--out", bad.to_str().unwrap()], 2, "--out");
+    }
+    assert_eq!(std::fs::read_to_string(&target).unwrap(), "precious");
+    assert!(std::fs::symlink_metadata(&link).unwrap().file_type().is_symlink());
+    let unusable = dir.join("kept.csv/inside");
+    let unusable = unusable.to_str().unwrap();
+    check(&["sweep", "--speeds", "100:120:10", "--out", &format!("{unusable}/x.csv")], 2, "--out");
+    check(&["study", "amplification", "--out", unusable], 2, "--out");
+    check(&["reproduce", "--out", unusable], 2, "--out");
+}

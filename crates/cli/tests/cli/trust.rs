@@ -1,0 +1,70 @@
+//! Answers that used to be silently wrong or lost: a maximum at the end of a sweep, the critical speed under
+//! `--quiet`, thread counts beyond the machine, and SIGTERM during long runs.
+
+use super::{frictrack, temporary_folder};
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+
+/// Below v_cr = 205.57 m/s the largest deflection of 10–100 m/s is at 100 m/s: a bound, not a critical speed —
+/// reported on stdout even with --quiet, and in OUT.json with --out.
+#[test]
+fn maximum_at_the_end_of_a_sweep_is_a_bound() {
+    let out = frictrack(&["sweep", "--speeds", "10:100:10", "--critical", "--quiet"]);
+    assert!(out.status.success());
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let line = stdout.lines().find(|l| l.starts_with("# critical_speed ")).expect("critical speed line on stdout");
+    let c: serde_json::Value = serde_json::from_str(&line["# critical_speed ".len()..]).unwrap();
+    assert_eq!(c["location"], "upper-end");
+    assert_eq!(c["speed"], 100.0);
+    assert!(out.stderr.is_empty(), "--quiet: {}", String::from_utf8_lossy(&out.stderr));
+
+    let dir = temporary_folder("bound");
+    let csv = dir.join("s.csv");
+    let out = frictrack(&["sweep", "--speeds", "10:100:10", "--critical", "--out", csv.to_str().unwrap()]);
+    assert!(out.status.success());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("no interior maximum in 10–100 m/s"));
+    let meta: serde_json::Value = serde_json::from_slice(&std::fs::read(dir.join("s.json")).unwrap()).unwrap();
+    assert_eq!(meta["critical_speed"]["result"]["location"], "upper-end");
+    let columns = meta["columns"].as_array().unwrap();
+    let header = std::fs::read_to_string(&csv).unwrap().lines().next().unwrap().to_string();
+    assert_eq!(header.split(',').count(), columns.len());
+    assert_eq!(columns[1]["unit"], "m");
+}
+
+/// --jobs beyond the cores is capped (and said so): a 3-speed sweep with --jobs 100000 runs as fast as usual.
+#[test]
+fn jobs_beyond_the_cores_are_capped() {
+    let out = frictrack(&["sweep", "--speeds", "100:120:10", "--jobs", "100000"]);
+    assert!(out.status.success());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--jobs 100000 capped at"));
+    assert_eq!(String::from_utf8_lossy(&out.stdout).lines().count(), 4);
+}
+
+/// SIGTERM stops a sweep of long runs (distributed friction, ~0.4 s each) within seconds: runs in flight are
+/// abandoned at their next step, the command exits with 130 and says how to resume.
+#[test]
+fn sigterm_stops_a_sweep_within_seconds() {
+    let dir = temporary_folder("sigterm");
+    let out = dir.join("s.csv");
+    let mut child = Command::new(env!("CARGO_BIN_EXE_frictrack"))
+        .args(["sweep", "--distributed-friction", "5000", "--speeds", "10:300:1", "--jobs", "100000"])
+        .args(["--out", out.to_str().unwrap()])
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    std::thread::sleep(Duration::from_millis(1500));
+    let sent = Instant::now();
+    assert!(Command::new("kill").args(["-TERM", &child.id().to_string()]).status().unwrap().success());
+    let output = loop {
+        if child.try_wait().unwrap().is_some() {
+            break child.wait_with_output().unwrap();
+        }
+        assert!(sent.elapsed() < Duration::from_secs(20), "still running 20 s after SIGTERM");
+        std::thread::sleep(Duration::from_millis(50));
+    };
+    let stopped = sent.elapsed();
+    assert_eq!(output.status.code(), Some(130), "{}", String::from_utf8_lossy(&output.stderr));
+    assert!(String::from_utf8_lossy(&output.stderr).contains("--resume"));
+    assert!(stopped < Duration::from_secs(10), "took {stopped:?}");
+}
