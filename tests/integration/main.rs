@@ -1,4 +1,5 @@
 //! Workspace-level integration tests: results that cross crate boundaries or cover a whole field.
 
+mod figures;
 mod static_shape;
 mod study_curves;

@@ -71,6 +71,7 @@ fn snapshot(preset: Preset) {
         "table": thinned_table(&data.csv),
     });
     insta::assert_yaml_snapshot!(preset.name(), value);
+    crate::figures::assert_drawn_inside(&data.plots, preset.name());
 }
 
 #[test]

@@ -8,6 +8,7 @@
 
 pub mod diagnostics;
 pub mod error;
+pub mod figures;
 pub mod journal;
 pub mod metrics;
 pub mod number;

@@ -1,21 +1,52 @@
-//! Line plots of study results, as PNG and SVG, drawn with plotters and a bundled DejaVu font (no system fonts,
-//! no Python or gnuplot). Axes are labelled with units; every plot has a title and a legend.
+//! Line plots of results, as PNG and SVG, drawn with plotters and a bundled DejaVu font (no system fonts, no Python
+//! or gnuplot).
+//!
+//! One convention for every figure: a colour-blind-safe palette (Okabe & Ito 2008, without its yellow, which
+//! vanishes on white) where a colour index always means the same configuration across a study's figures (0 = no
+//! friction, black); markers on sampled points, so a coarse grid is not mistaken for a sharp resonance; solid and
+//! dashed strokes for the two quantities of one configuration (e.g. downward and upward deflection magnitudes), each
+//! configuration once in the legend; refined optima marked with a triangle; the legend outside the data, in a column
+//! to the right; tick labels rounded to the axis' own resolution (no `-0.000000000000000111022`).
 
 use crate::error::{Result, StudyError};
+use plotters::coord::Shift;
 use plotters::prelude::*;
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 use std::sync::Once;
 
+/// How a curve is stroked.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Default)]
+pub enum Stroke {
+    /// A solid line.
+    #[default]
+    Solid,
+    /// A dashed line.
+    Dashed,
+}
+
 /// One curve.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Series {
-    /// Legend text.
-    pub label: String,
-    /// Colour index in the palette (curves of one configuration share it).
+    /// Legend text; `None` keeps the curve out of the legend (e.g. the dashed twin of a configuration).
+    pub label: Option<String>,
+    /// Colour index in the palette: one configuration, one index, in every figure of a study.
     pub color: usize,
+    /// Solid or dashed.
+    pub stroke: Stroke,
+    /// Draw a marker at every point.
+    pub markers: bool,
     /// (x, y) in plot units.
     pub points: Vec<(f64, f64)>,
+}
+
+/// A marked point (a refined critical speed or optimum), drawn as a triangle in its configuration's colour.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Mark {
+    /// Colour index.
+    pub color: usize,
+    /// (x, y) in plot units.
+    pub point: (f64, f64),
 }
 
 /// One figure.
@@ -25,15 +56,75 @@ pub struct PlotSpec {
     pub stem: String,
     /// Title.
     pub title: String,
+    /// A second title line (e.g. the reference values a ratio is taken against), or empty.
+    pub subtitle: String,
     /// x-axis label with unit.
     pub x_label: String,
     /// y-axis label with unit.
     pub y_label: String,
     /// Logarithmic x axis (x must be > 0).
     pub log_x: bool,
-    /// The curves.
+    /// The curves, drawn in this order.
     pub series: Vec<Series>,
+    /// Marked points.
+    pub marks: Vec<Mark>,
+    /// What the strokes mean, shown in black after the curves in the legend (e.g. "downward" for solid).
+    pub key: Vec<(Stroke, String)>,
+    /// Legend text for the marks, or empty.
+    pub mark_label: String,
 }
+
+impl PlotSpec {
+    /// A figure with no curves yet.
+    pub fn new(stem: impl Into<String>, title: impl Into<String>, x_label: &str, y_label: &str) -> Self {
+        Self {
+            stem: stem.into(),
+            title: title.into(),
+            subtitle: String::new(),
+            x_label: x_label.into(),
+            y_label: y_label.into(),
+            log_x: false,
+            series: Vec::new(),
+            marks: Vec::new(),
+            key: Vec::new(),
+            mark_label: String::new(),
+        }
+    }
+}
+
+/// Where a figure was drawn: pixel rectangles (left, top, right, bottom) of the whole image, the plotting area
+/// (inside the axes) and the legend column. Every curve, marker and mark lies in the plotting area; legend samples
+/// in the legend column.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Layout {
+    /// The image.
+    pub image: (i32, i32, i32, i32),
+    /// Inside the axes.
+    pub plot: (i32, i32, i32, i32),
+    /// The legend column.
+    pub legend: (i32, i32, i32, i32),
+}
+
+/// Okabe–Ito colours without yellow: black, orange, sky blue, bluish green, blue, vermillion, reddish purple, grey.
+const PALETTE: [(u8, u8, u8); 8] = [
+    (0, 0, 0),
+    (230, 159, 0),
+    (86, 180, 233),
+    (0, 158, 115),
+    (0, 114, 178),
+    (213, 94, 0),
+    (204, 121, 167),
+    (128, 128, 128),
+];
+
+/// The colour of index `i` (cycling through the palette).
+pub fn color(i: usize) -> RGBColor {
+    let (r, g, b) = PALETTE[i % PALETTE.len()];
+    RGBColor(r, g, b)
+}
+
+const SIZE: (u32, u32) = (1200, 800);
+const LEGEND_WIDTH: u32 = 300;
 
 static FONTS: Once = Once::new();
 
@@ -49,57 +140,68 @@ fn plot_error(path: &Path, e: impl std::fmt::Display) -> StudyError {
     StudyError::Io { path: path.display().to_string(), message: format!("plotting failed: {e}") }
 }
 
-/// Draw `spec` into `folder` as `<stem>.png` (1200×800) and `<stem>.svg`; returns both paths.
-pub fn render(spec: &PlotSpec, folder: &Path) -> Result<(PathBuf, PathBuf)> {
+/// Draw `spec` into `folder` as `<stem>.png` (1200×800) and `<stem>.svg`; returns both paths and the layout.
+pub fn render(spec: &PlotSpec, folder: &Path) -> Result<(PathBuf, PathBuf, Layout)> {
     register_fonts();
     let png = folder.join(format!("{}.png", spec.stem));
     let svg = folder.join(format!("{}.svg", spec.stem));
-    {
-        let root = BitMapBackend::new(&png, (1200, 800)).into_drawing_area();
-        draw(&root, spec).map_err(|e| plot_error(&png, e))?;
+    let layout = {
+        let root = BitMapBackend::new(&png, SIZE).into_drawing_area();
+        let layout = draw(&root, spec).map_err(|e| plot_error(&png, e))?;
         root.present().map_err(|e| plot_error(&png, e))?;
-    }
+        layout
+    };
     {
-        let root = SVGBackend::new(&svg, (1200, 800)).into_drawing_area();
+        let root = SVGBackend::new(&svg, SIZE).into_drawing_area();
         draw(&root, spec).map_err(|e| plot_error(&svg, e))?;
         root.present().map_err(|e| plot_error(&svg, e))?;
     }
-    Ok((png, svg))
+    Ok((png, svg, layout))
 }
 
-fn draw<DB: DrawingBackend>(
-    root: &DrawingArea<DB, plotters::coord::Shift>,
-    spec: &PlotSpec,
-) -> std::result::Result<(), String> {
-    let err = |e: &dyn std::fmt::Display| e.to_string();
-    root.fill(&WHITE).map_err(|e| err(&e))?;
-    let tx = |x: f64| if spec.log_x { x.log10() } else { x };
-    let points = spec.series.iter().flat_map(|s| s.points.iter()).filter(|(x, y)| x.is_finite() && y.is_finite());
+/// The data range of the figure (after the log transform of x), padded by 5 % in y.
+fn ranges(spec: &PlotSpec, tx: &dyn Fn(f64) -> f64) -> Option<((f64, f64), (f64, f64))> {
+    let curves = spec.series.iter().flat_map(|s| s.points.iter());
+    let marks = spec.marks.iter().map(|m| &m.point);
     let (mut x0, mut x1, mut y0, mut y1) = (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY);
-    for &(x, y) in points {
-        x0 = x0.min(tx(x));
-        x1 = x1.max(tx(x));
-        y0 = y0.min(y);
-        y1 = y1.max(y);
+    for &(x, y) in curves.chain(marks) {
+        let x = tx(x);
+        if x.is_finite() && y.is_finite() {
+            (x0, x1, y0, y1) = (x0.min(x), x1.max(x), y0.min(y), y1.max(y));
+        }
     }
     if !(x0.is_finite() && y0.is_finite()) {
-        return Err("nothing to plot".into());
+        return None;
     }
     if x1 <= x0 {
         x1 = x0 + 1.0;
     }
     let pad = if y1 > y0 { 0.05 * (y1 - y0) } else { 1.0 };
-    let (y0, y1) = (y0 - pad, y1 + pad);
-    let mut chart = ChartBuilder::on(root)
-        .caption(&spec.title, ("sans-serif", 30))
-        .margin(20)
+    Some(((x0, x1), (y0 - pad, y1 + pad)))
+}
+
+fn draw<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, spec: &PlotSpec) -> std::result::Result<Layout, String> {
+    let err = |e: &dyn std::fmt::Display| e.to_string();
+    root.fill(&WHITE).map_err(|e| err(&e))?;
+    let (titled, body) = root.split_vertically(if spec.subtitle.is_empty() { 50 } else { 80 });
+    titled.draw(&Text::new(spec.title.as_str(), (20, 12), ("sans-serif", 28).into_font())).map_err(|e| err(&e))?;
+    if !spec.subtitle.is_empty() {
+        let style = ("sans-serif", 19).into_font().color(&RGBColor(60, 60, 60));
+        titled.draw(&Text::new(spec.subtitle.as_str(), (20, 48), style)).map_err(|e| err(&e))?;
+    }
+    let (chart_area, legend_area) = body.split_horizontally(SIZE.0 - LEGEND_WIDTH);
+    let log_x = spec.log_x;
+    let tx = move |x: f64| if log_x { x.log10() } else { x };
+    let ((x0, x1), (y0, y1)) = ranges(spec, &tx).ok_or("nothing to plot")?;
+    let mut chart = ChartBuilder::on(&chart_area)
+        .margin(15)
         .x_label_area_size(60)
-        .y_label_area_size(90)
+        .y_label_area_size(95)
         .build_cartesian_2d(x0..x1, y0..y1)
         .map_err(|e| err(&e))?;
-    let log_x = spec.log_x;
-    let x_format = move |x: &f64| if log_x { format!("{:.0e}", 10f64.powf(*x)) } else { tick(*x) };
-    let y_format = |y: &f64| tick(*y);
+    let (x_step, y_step) = ((x1 - x0) / 10.0, (y1 - y0) / 10.0);
+    let x_format = move |x: &f64| if log_x { tick(10f64.powf(*x), 10f64.powf(*x) / 10.0) } else { tick(*x, x_step) };
+    let y_format = move |y: &f64| tick(*y, y_step);
     chart
         .configure_mesh()
         .x_desc(spec.x_label.as_str())
@@ -107,36 +209,110 @@ fn draw<DB: DrawingBackend>(
         .x_label_formatter(&x_format)
         .y_label_formatter(&y_format)
         .label_style(("sans-serif", 18))
-        .axis_desc_style(("sans-serif", 22))
+        .axis_desc_style(("sans-serif", 21))
+        .light_line_style(RGBColor(235, 235, 235))
+        .bold_line_style(RGBColor(205, 205, 205))
         .draw()
         .map_err(|e| err(&e))?;
     for s in &spec.series {
-        let color = Palette99::pick(s.color).mix(0.9);
+        // More points than pixel columns: a 1 px stroke. plotters' bitmap backend widens a thicker stroke segment by
+        // segment, and on dense zig-zags (a friction force chattering every step) the widened segments shoot out of
+        // the frame.
+        let width = if s.points.len() > (SIZE.0 - LEGEND_WIDTH) as usize { 1 } else { 2 };
+        let style = color(s.color).stroke_width(width);
         let line: Vec<(f64, f64)> =
             s.points.iter().map(|&(x, y)| (tx(x), y)).filter(|(x, y)| x.is_finite() && y.is_finite()).collect();
-        chart
-            .draw_series(LineSeries::new(line, color.stroke_width(2)))
-            .map_err(|e| err(&e))?
-            .label(s.label.as_str())
-            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], color.stroke_width(3)));
-    }
-    chart
-        .configure_series_labels()
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .label_font(("sans-serif", 18))
-        .position(SeriesLabelPosition::UpperRight)
-        .draw()
+        match s.stroke {
+            Stroke::Solid => chart.draw_series(LineSeries::new(line.clone(), style)).map(|_| ()),
+            Stroke::Dashed => chart.draw_series(DashedLineSeries::new(line.clone(), 9, 6, style)).map(|_| ()),
+        }
         .map_err(|e| err(&e))?;
+        if s.markers {
+            let marker = |p: (f64, f64)| Circle::new(p, 3, color(s.color).filled());
+            chart.draw_series(line.into_iter().map(marker)).map_err(|e| err(&e))?;
+        }
+    }
+    let triangle = |p: (f64, f64), c: usize| TriangleMarker::new(p, 9, color(c).filled());
+    chart.draw_series(spec.marks.iter().map(|m| triangle((tx(m.point.0), m.point.1), m.color))).map_err(|e| err(&e))?;
+    let (px, py) = chart.plotting_area().get_pixel_range();
+    draw_legend(&legend_area, spec).map_err(|e| err(&e))?;
+    let (lx, ly) = legend_area.get_pixel_range();
+    Ok(Layout {
+        image: (0, 0, SIZE.0 as i32, SIZE.1 as i32),
+        plot: (px.start, py.start, px.end, py.end),
+        legend: (lx.start, ly.start, lx.end, ly.end),
+    })
+}
+
+/// The legend column: one entry per labelled curve (its stroke and marker), then the key of strokes and marks.
+fn draw_legend<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    spec: &PlotSpec,
+) -> std::result::Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
+    let (width, _) = area.dim_in_pixel();
+    // Each text at 17 px, or smaller (down to 11 px) where that is needed to fit the column.
+    let fitted = |text: &str| -> std::result::Result<FontDesc<'static>, DrawingAreaErrorKind<DB::ErrorType>> {
+        let room = f64::from(width) - 64.0;
+        let (w, _) = area.estimate_text_size(text, &("sans-serif", 17).into_text_style(area))?;
+        let size = if f64::from(w) > room { (17.0 * room / f64::from(w)).floor().max(11.0) } else { 17.0 };
+        Ok(("sans-serif", size).into_font())
+    };
+    let sample = |y: i32, stroke: Stroke| -> Vec<Vec<(i32, i32)>> {
+        match stroke {
+            Stroke::Solid => vec![vec![(10, y), (50, y)]],
+            Stroke::Dashed => vec![vec![(10, y), (20, y)], vec![(26, y), (36, y)], vec![(42, y), (50, y)]],
+        }
+    };
+    let mut y = 30;
+    for s in spec.series.iter().filter(|s| s.label.is_some()) {
+        for segment in sample(y, s.stroke) {
+            area.draw(&PathElement::new(segment, color(s.color).stroke_width(3)))?;
+        }
+        if s.markers {
+            area.draw(&Circle::new((30, y), 3, color(s.color).filled()))?;
+        }
+        let label = s.label.as_deref().unwrap_or_default();
+        area.draw(&Text::new(label, (58, y - 9), fitted(label)?))?;
+        y += 26;
+    }
+    y += 10;
+    for (stroke, text) in &spec.key {
+        for segment in sample(y, *stroke) {
+            area.draw(&PathElement::new(segment, BLACK.stroke_width(2)))?;
+        }
+        area.draw(&Text::new(text.as_str(), (58, y - 9), fitted(text)?))?;
+        y += 26;
+    }
+    if !spec.marks.is_empty() && !spec.mark_label.is_empty() {
+        area.draw(&TriangleMarker::new((30, y), 9, BLACK.filled()))?;
+        area.draw(&Text::new(spec.mark_label.as_str(), (58, y - 9), fitted(&spec.mark_label)?))?;
+    }
     Ok(())
 }
 
-/// A tick label: the value rounded to six significant digits, without float noise (0.30000000000000004 → 0.3).
-fn tick(value: f64) -> String {
-    if value == 0.0 || !value.is_finite() {
+/// A tick label rounded to the resolution of its axis (`step`, the span of a tenth of the axis): as many decimals
+/// as that step needs and no more, so float noise (0.30000000000000004, −1.1e-16) never shows.
+fn tick(value: f64, step: f64) -> String {
+    if !value.is_finite() {
         return format!("{value}");
     }
-    let digits = 5 - value.abs().log10().floor() as i32;
-    let scale = 10f64.powi(digits.clamp(-300, 300));
-    format!("{}", (value * scale).round() / scale)
+    let decimals = if step > 0.0 && step.is_finite() { (1.0 - step.log10().floor()).clamp(0.0, 12.0) } else { 0.0 };
+    let text = format!("{value:.*}", decimals as usize);
+    // Trailing zeros after the point add nothing; "-0" is 0.
+    let text = if text.contains('.') { text.trim_end_matches('0').trim_end_matches('.').to_string() } else { text };
+    if text.trim_start_matches('-').chars().all(|c| c == '0' || c == '.') { "0".into() } else { text }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::tick;
+
+    #[test]
+    fn ticks_follow_the_axis_resolution() {
+        assert_eq!(tick(-1.1102230246251565e-16, 0.02), "0");
+        assert_eq!(tick(0.30000000000000004, 0.1), "0.3");
+        assert_eq!(tick(150.0, 30.0), "150");
+        assert_eq!(tick(0.0125, 0.001), "0.0125");
+        assert_eq!(tick(1e4, 1e3), "10000");
+    }
 }

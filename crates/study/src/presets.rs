@@ -3,9 +3,10 @@
 //! All runs of a study share one rayon pool; results do not depend on the thread count.
 
 use crate::error::{Result, invalid};
+use crate::figures::{DeflectionCurve, deflection_figure, device_color, quantity_figure};
 use crate::metrics::{amplification, static_midspan};
 use crate::number::row;
-use crate::plot::{PlotSpec, Series};
+use crate::plot::PlotSpec;
 use crate::scenario::{DevicesSection, DistributedSection, Scenario};
 use crate::speeds::SpeedScale;
 use crate::sweep::{CriticalSpeed, Runner, SweepPoint, critical_speed, log_spaced, refine_from_scan};
@@ -402,36 +403,29 @@ fn sweep_curves(scenarios: Vec<(Vec<(String, f64)>, Scenario)>, speeds: &[f64], 
 }
 
 impl Curves {
-    /// Max downward (positive) and upward (negative) deflection vs speed for the curves `members`.
+    /// Max downward and upward deflection magnitudes vs speed for the curves `members`, coloured by `color`, with
+    /// each interior critical speed marked.
     fn deflection_plot(
         &self,
         stem: &str,
         title: &str,
         members: &[usize],
         legend: &dyn Fn(usize) -> String,
+        color: &dyn Fn(usize) -> usize,
     ) -> PlotSpec {
-        let mut series = Vec::new();
-        for (color, &c) in members.iter().enumerate() {
-            let p = &self.points[c];
-            series.push(Series {
-                color,
-                label: format!("{} ↓", legend(c)),
-                points: p.iter().map(|q| (q.speed, q.max_downward_deflection * 1e3)).collect(),
-            });
-            series.push(Series {
-                color,
-                label: format!("{} ↑", legend(c)),
-                points: p.iter().map(|q| (q.speed, -q.max_upward_deflection * 1e3)).collect(),
-            });
-        }
-        PlotSpec {
-            stem: stem.into(),
-            title: title.into(),
-            x_label: "load speed v (m/s)".into(),
-            y_label: "max deflection (mm): downward ↓ > 0, upward ↑ < 0".into(),
-            log_x: false,
-            series,
-        }
+        let curves = members
+            .iter()
+            .map(|&c| DeflectionCurve {
+                label: legend(c),
+                color: color(c),
+                downward: self.points[c].iter().map(|q| (q.speed, q.max_downward_deflection)).collect(),
+                upward: self.points[c].iter().map(|q| (q.speed, q.max_upward_deflection)).collect(),
+                optimum: Some(&self.critical[c])
+                    .filter(|k| k.is_interior())
+                    .map(|k| (k.speed, k.max_downward_deflection)),
+            })
+            .collect();
+        deflection_figure(stem, title, "load speed v (m/s)", curves, "refined critical speed")
     }
 
     /// One quantity vs speed for every curve.
@@ -442,21 +436,12 @@ impl Curves {
         y_label: &str,
         value: fn(&SweepPoint) -> f64,
         legend: &dyn Fn(usize) -> String,
+        color: &dyn Fn(usize) -> usize,
     ) -> PlotSpec {
-        PlotSpec {
-            stem: stem.into(),
-            title: title.into(),
-            x_label: "load speed v (m/s)".into(),
-            y_label: y_label.into(),
-            log_x: false,
-            series: (0..self.points.len())
-                .map(|c| Series {
-                    color: c,
-                    label: legend(c),
-                    points: self.points[c].iter().map(|q| (q.speed, value(q))).collect(),
-                })
-                .collect(),
-        }
+        let curves = (0..self.points.len())
+            .map(|c| (legend(c), color(c), self.points[c].iter().map(|q| (q.speed, value(q))).collect()))
+            .collect();
+        quantity_figure(stem, title, "load speed v (m/s)", y_label, curves, true)
     }
 
     fn csv(&self) -> String {
@@ -542,6 +527,7 @@ fn discrete_speed(resolution: Resolution, base: &Scenario, runner: &Runner) -> R
                     &format!("Discrete devices, F_u = {kn} kN: max deflection vs speed"),
                     &members,
                     &legend,
+                    &|c| if c == 0 { 0 } else { device_color([3, 7, 15, 31][(c - 1) % 4]) },
                 )
             })
             .collect()
@@ -573,6 +559,7 @@ fn equal_cost(resolution: Resolution, base: &Scenario, runner: &Runner) -> Resul
                     &format!("Equal cost N·F_u = {cost} kN: max deflection vs speed"),
                     &((4 * i)..(4 * i + 4)).collect::<Vec<_>>(),
                     &legend,
+                    &|c| device_color([31, 15, 7, 3][c % 4]),
                 )
             })
             .collect()
@@ -585,27 +572,35 @@ fn distributed_speed(resolution: Resolution, base: &Scenario, runner: &Runner) -
         .map(|f| (vec![("force_per_length".into(), f)], with_distributed(base, f)))
         .collect();
     curves_study(scenarios, &resolution.speeds(base)?, runner, &|curves| {
-        let legend = |c: usize| format!("f_u = {} kN/m", [0, 1, 2, 5, 10][c]);
+        let legend = |c: usize| match c {
+            0 => "no friction".to_string(),
+            _ => format!("f_u = {} kN/m", [0, 1, 2, 5, 10][c]),
+        };
+        // f_u = 0 is "no friction", black as in every study; 1–10 kN/m take the next colours in order.
+        let color = |c: usize| c;
         vec![
             curves.deflection_plot(
                 "distributed-speed-deflection",
                 "Distributed friction: max deflection vs speed",
                 &(0..5).collect::<Vec<_>>(),
                 &legend,
+                &color,
             ),
             curves.quantity_plot(
                 "distributed-speed-global-norm",
-                "Distributed friction: global norm W̄ vs speed",
-                "W̄ = (1/t_on)∫∫|w| dx dt (m²)",
+                "Distributed friction: global norm vs speed",
+                "global norm (1/t_on)∫∫|w| dx dt (m²)",
                 |q| q.global_norm,
                 &legend,
+                &color,
             ),
             curves.quantity_plot(
                 "distributed-speed-dissipated",
                 "Distributed friction: dissipated energy vs speed",
-                "energy dissipated by friction (kJ)",
+                "energy dissipated by friction and damping (kJ)",
                 |q| q.dissipated_energy / 1e3,
                 &legend,
+                &color,
             ),
         ]
     })
@@ -644,19 +639,10 @@ fn optimal_force(resolution: Resolution, base: &Scenario, runner: &Runner) -> Re
     let mut items = Vec::new();
     let mut lines = Vec::new();
     let mut runs = points.len();
-    let mut series = Vec::new();
+    let mut figure_curves = Vec::new();
     for (i, &n) in counts.iter().enumerate() {
         let curve = &points[i * forces.len()..(i + 1) * forces.len()];
-        series.push(Series {
-            color: i,
-            label: format!("N = {n} ↓"),
-            points: forces.iter().zip(curve).map(|(f, p)| (*f, p.max_downward_deflection * 1e3)).collect(),
-        });
-        series.push(Series {
-            color: i,
-            label: format!("N = {n} ↑"),
-            points: forces.iter().zip(curve).map(|(f, p)| (*f, -p.max_upward_deflection * 1e3)).collect(),
-        });
+        let kn = |f: &f64| f / 1e3;
         for (f, p) in forces.iter().zip(curve) {
             let values = [n as f64, *f, speed, p.max_downward_deflection, p.max_upward_deflection, p.dissipated_energy];
             let _ = writeln!(csv, "{}", row(&values));
@@ -664,6 +650,13 @@ fn optimal_force(resolution: Resolution, base: &Scenario, runner: &Runner) -> Re
         let values: Vec<f64> = curve.iter().map(|p| p.max_downward_deflection).collect();
         let refined = refine_from_scan(&with_devices(base, n, 1.0), speed, &forces, &values, 0.02, runner)?;
         runs += refined.explored.len();
+        figure_curves.push(DeflectionCurve {
+            label: format!("N = {n}"),
+            color: device_color(n),
+            downward: forces.iter().zip(curve).map(|(f, p)| (kn(f), p.max_downward_deflection)).collect(),
+            upward: forces.iter().zip(curve).map(|(f, p)| (kn(f), p.max_upward_deflection)).collect(),
+            optimum: Some((kn(&refined.force), refined.max_downward_deflection)),
+        });
         items.push(json!({ "devices": n, "optimal_device_force": refined.force, "max_downward_deflection": refined.max_downward_deflection }));
         lines.push(format!(
             "N = {n}: optimal F_u {:.1} kN gives max downward deflection {:.1} mm at {speed} m/s",
@@ -671,14 +664,14 @@ fn optimal_force(resolution: Resolution, base: &Scenario, runner: &Runner) -> Re
             refined.max_downward_deflection * 1e3
         ));
     }
-    let plot = PlotSpec {
-        stem: "optimal-force".into(),
-        title: format!("Max deflection vs device force at {speed} m/s"),
-        x_label: "device force F_u (N, log scale)".into(),
-        y_label: "max deflection (mm): downward ↓ > 0, upward ↑ < 0".into(),
-        log_x: true,
-        series,
-    };
+    let mut plot = deflection_figure(
+        "optimal-force",
+        &format!("Max deflection vs device force at {speed} m/s"),
+        "device force F_u (kN, log scale)",
+        figure_curves,
+        "refined optimal force",
+    );
+    plot.log_x = true;
     Ok(StudyData {
         csv,
         summary: json!({ "speed": speed, "optima": items }),
@@ -717,6 +710,11 @@ fn amplification_study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
         items.push(json!({ "force_per_length": f, "speed": v, "max_phi_w": max_w, "max_phi_m": max_m }));
         lines.push(format!("f_u = {:.0} kN/m, v = {v} m/s: max φ_w {max_w:.3}, max φ_M {max_m:.3}", f / 1e3));
     }
+    let subtitle = format!(
+        "w_sta = {:.2} mm, M_sta = {:.2} kN·m: mid-span static deflection and moment, load at mid-span, no friction",
+        reference.deflection.abs() * 1e3,
+        reference.moment.abs() / 1e3
+    );
     let mut plots = Vec::new();
     for (f, kn) in [(1e3, 1), (2e3, 2)] {
         for (which, symbol, value) in [
@@ -727,23 +725,27 @@ fn amplification_study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
             ),
             ("moment", "φ_M = M/M_sta", |a| a.moment),
         ] {
-            plots.push(PlotSpec {
-                stem: format!("amplification-{which}-{kn}kN"),
-                title: format!("Mid-span {which} amplification, f_u = {kn} kN/m"),
-                x_label: "load position τ = x_c/L (-)".into(),
-                y_label: format!("{symbol} (-)"),
-                log_x: false,
-                series: results
-                    .iter()
-                    .filter(|(ff, _, _)| *ff == f)
-                    .enumerate()
-                    .map(|(color, (_, v, samples))| Series {
-                        color,
-                        label: format!("v = {v} m/s"),
-                        points: samples.iter().map(|a| (a.tau, value(a))).collect(),
-                    })
-                    .collect(),
-            });
+            // Fastest first, so that the slower, smaller curves are drawn on top and stay visible.
+            let curves = results
+                .iter()
+                .enumerate()
+                .filter(|(_, (ff, _, _))| *ff == f)
+                .rev()
+                .map(|(i, (_, v, samples))| {
+                    let points = samples.iter().map(|a| (a.tau, value(a))).collect();
+                    (format!("v = {v} m/s"), 1 + i % speeds.len(), points)
+                })
+                .collect();
+            let mut plot = quantity_figure(
+                &format!("amplification-{which}-{kn}kN"),
+                &format!("Mid-span {which} amplification, f_u = {kn} kN/m"),
+                "load position τ = x_c/L (-)",
+                &format!("{symbol} (-)"),
+                curves,
+                false,
+            );
+            plot.subtitle = subtitle.clone();
+            plots.push(plot);
         }
     }
     Ok(StudyData { csv, summary: json!({ "curves": items }), lines, plots, ..blank(results.len()) })
@@ -757,10 +759,14 @@ fn discrete_vs_distributed(base: &Scenario, runner: &Runner) -> Result<StudyData
         s.load.speed = speed;
         s.output.sections = vec![s.mesh.length / 2.0];
     }
+    // Each run with the capacity F_j (N) of its friction section at mid-span, to compare what each mobilises.
     let runs = runner.map(&[&devices, &distributed], |s| {
         let case = s.build()?;
-        runner.simulate(&case, &case.settings)
+        let middle = case.contacts.positions().iter().position(|&x| (x - s.mesh.length / 2.0).abs() < 1e-9);
+        let capacity = middle.map_or(f64::NAN, |j| case.contacts.bounds()[j]);
+        Ok((runner.simulate(&case, &case.settings)?, capacity))
     })?;
+    let (capacities, runs): (Vec<f64>, Vec<_>) = runs.into_iter().map(|(r, c)| (c, r)).unzip();
     let mut csv = String::from("model,time,load_position,deflection,impulse\n");
     for (name, r) in ["devices", "distributed"].iter().zip(&runs) {
         let h = &r.histories[0];
@@ -798,34 +804,38 @@ fn discrete_vs_distributed(base: &Scenario, runner: &Runner) -> Result<StudyData
         (0..h.time.len()).map(|k| (h.time[k], value(h, k))).collect()
     };
     let labels = ["199 devices × 1 kN", "f_u = 0.995 kN/m"];
+    let colors = [4, 5];
+    let h = runs[0].step;
+    let deflection = (0..2).map(|i| (labels[i].to_string(), colors[i], history(i, &|s, k| s.deflection[k] * 1e3)));
+    let mobilised = (0..2).map(|i| {
+        let fraction = &|s: &nscd::simulation::SectionHistory, k: usize| {
+            s.impulse.as_ref().map_or(0.0, |p| p[k] / (h * capacities[i]))
+        };
+        (labels[i].to_string(), colors[i], history(i, fraction))
+    });
     let plots = vec![
-        PlotSpec {
-            stem: "discrete-vs-distributed-deflection".into(),
-            title: format!("Mid-span deflection at {speed} m/s, equal friction capacity"),
-            x_label: "time t (s)".into(),
-            y_label: "mid-span deflection w (mm, upward > 0)".into(),
-            log_x: false,
-            series: (0..2)
-                .map(|i| Series {
-                    color: i,
-                    label: labels[i].into(),
-                    points: history(i, &|h, k| h.deflection[k] * 1e3),
-                })
-                .collect(),
-        },
-        PlotSpec {
-            stem: "discrete-vs-distributed-impulse".into(),
-            title: format!("Friction impulse per step at mid-span, {speed} m/s"),
-            x_label: "time t (s)".into(),
-            y_label: "impulse p (N·s): device, or section of 0.25 m".into(),
-            log_x: false,
-            series: (0..2)
-                .map(|i| Series {
-                    color: i,
-                    label: labels[i].into(),
-                    points: history(i, &|h, k| h.impulse.as_ref().map_or(0.0, |p| p[k])),
-                })
-                .collect(),
+        quantity_figure(
+            "discrete-vs-distributed-deflection",
+            &format!("Mid-span deflection at {speed} m/s, equal friction capacity"),
+            "time t (s)",
+            "mid-span deflection w (mm, upward > 0)",
+            deflection.collect(),
+            false,
+        ),
+        {
+            let mut plot = quantity_figure(
+                "discrete-vs-distributed-mobilised",
+                &format!("Friction mobilised at mid-span, {speed} m/s"),
+                "time t (s)",
+                "friction force / capacity of the section (-1 … 1)",
+                mobilised.collect(),
+                false,
+            );
+            plot.subtitle = format!(
+                "capacity at mid-span: a device of {:.0} N against a section of {:.0} N (0.995 kN/m × 0.25 m)",
+                capacities[0], capacities[1]
+            );
+            plot
         },
     ];
     Ok(StudyData { csv, summary, lines, plots, ..blank(2) })

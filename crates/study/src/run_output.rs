@@ -10,8 +10,9 @@
 //! Deflection is positive upward, the moment sagging-positive; every number in shortest round-trip form.
 
 use crate::error::{Result, StudyError};
+use crate::figures::quantity_figure;
 use crate::number::row;
-use crate::plot::{PlotSpec, Series};
+use crate::plot::PlotSpec;
 use crate::scenario::Case;
 use crate::sweep::Runner;
 use nscd::{RunResult, Simulation, Snapshot, SnapshotAt, SnapshotTaker};
@@ -106,67 +107,57 @@ pub fn snapshots_csv(snapshots: &[Snapshot]) -> String {
 /// Figures of the histories (deflection and moment against the load position, one curve per section) and of the
 /// snapshots (deflected shape and moment along the beam, one curve per instant).
 pub fn run_plots(result: &RunResult, snapshots: &[Snapshot], title: &str) -> Vec<PlotSpec> {
-    let by_section = |value: &dyn Fn(&nscd::simulation::SectionHistory, usize) -> f64| -> Vec<Series> {
-        result
-            .histories
-            .iter()
-            .enumerate()
-            .map(|(i, s)| Series {
-                label: format!("x = {} m", s.position),
-                color: i,
-                points: (0..s.time.len()).map(|k| (s.load_position[k], value(s, k))).collect(),
-            })
-            .collect()
+    type Curves = Vec<(String, usize, Vec<(f64, f64)>)>;
+    let by_section = |value: &dyn Fn(&nscd::simulation::SectionHistory, usize) -> f64| -> Curves {
+        let curve = |(i, s): (usize, &nscd::simulation::SectionHistory)| {
+            let points = (0..s.time.len()).map(|k| (s.load_position[k], value(s, k))).collect();
+            (format!("x = {} m", s.position), 1 + i, points)
+        };
+        result.histories.iter().enumerate().map(curve).collect()
     };
-    let by_instant = |value: &dyn Fn(&Snapshot, usize) -> f64| -> Vec<Series> {
-        snapshots
-            .iter()
-            .enumerate()
-            .map(|(i, s)| Series {
-                label: format!("load at {:.1} m (t = {:.3} s)", s.load_position, s.time),
-                color: i,
-                points: (0..s.x.len()).map(|n| (s.x[n], value(s, n))).collect(),
-            })
-            .collect()
+    let by_instant = |value: &dyn Fn(&Snapshot, usize) -> f64| -> Curves {
+        let curve = |(i, s): (usize, &Snapshot)| {
+            let points = (0..s.x.len()).map(|n| (s.x[n], value(s, n))).collect();
+            (format!("load at {:.1} m (t = {:.3} s)", s.load_position, s.time), 1 + i, points)
+        };
+        snapshots.iter().enumerate().map(curve).collect()
     };
-    let figure = |stem: &str, what: &str, x_label: &str, y_label: &str, series: Vec<Series>| PlotSpec {
-        stem: stem.into(),
-        title: format!("{title}: {what}"),
-        x_label: x_label.into(),
-        y_label: y_label.into(),
-        log_x: false,
-        series,
+    let figure = |stem: &str, what: &str, x_label: &str, y_label: &str, curves: Curves| {
+        quantity_figure(stem, &format!("{title}: {what}"), x_label, y_label, curves, false)
     };
+    let (deflection, moment) = ("deflection w (mm, upward > 0)", "bending moment M (kN·m, sagging > 0)");
     let mut plots = Vec::new();
     if !result.histories.is_empty() {
+        let x = "load position x_c (m)";
         plots.push(figure(
             "histories-deflection",
             "deflection at the recorded sections",
-            "load position x_c (m)",
-            "deflection w (mm, upward > 0)",
+            x,
+            deflection,
             by_section(&|s, k| s.deflection[k] * 1e3),
         ));
         plots.push(figure(
             "histories-moment",
             "bending moment at the recorded sections",
-            "load position x_c (m)",
-            "bending moment M (kN·m, sagging > 0)",
+            x,
+            moment,
             by_section(&|s, k| s.moment[k] / 1e3),
         ));
     }
     if !snapshots.is_empty() {
+        let x = "position along the beam x (m)";
         plots.push(figure(
             "snapshots-deflection",
             "deflected shape",
-            "position along the beam x (m)",
-            "deflection w (mm, upward > 0)",
+            x,
+            deflection,
             by_instant(&|s, n| s.deflection[n] * 1e3),
         ));
         plots.push(figure(
             "snapshots-moment",
             "bending moment along the beam",
-            "position along the beam x (m)",
-            "bending moment M (kN·m, sagging > 0)",
+            x,
+            moment,
             by_instant(&|s, n| s.moment[n] / 1e3),
         ));
     }

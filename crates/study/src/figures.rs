@@ -1,0 +1,70 @@
+//! The figures of the studies, drawn one way ([`crate::plot`]'s convention): deflections as magnitudes in mm,
+//! downward solid and upward dashed in the configuration's colour, markers on sampled points, refined optima marked,
+//! forces in kN.
+
+use crate::plot::{Mark, PlotSpec, Series, Stroke};
+
+/// One configuration's curve pair: downward and upward deflection magnitudes (m) against x.
+pub struct DeflectionCurve {
+    /// Legend text.
+    pub label: String,
+    /// Colour index (one per configuration across a study).
+    pub color: usize,
+    /// (x, max downward deflection in m).
+    pub downward: Vec<(f64, f64)>,
+    /// (x, max upward deflection in m).
+    pub upward: Vec<(f64, f64)>,
+    /// A refined optimum (x, max downward deflection in m), marked with a triangle.
+    pub optimum: Option<(f64, f64)>,
+}
+
+/// Max downward (solid) and upward (dashed) deflection magnitudes in mm against `x_label`, one colour per curve.
+pub fn deflection_figure(
+    stem: &str,
+    title: &str,
+    x_label: &str,
+    curves: Vec<DeflectionCurve>,
+    mark_label: &str,
+) -> PlotSpec {
+    let mut spec = PlotSpec::new(stem, title, x_label, "max deflection magnitude (mm)");
+    let mm = |p: &[(f64, f64)]| p.iter().map(|&(x, w)| (x, w * 1e3)).collect();
+    for c in curves {
+        let (label, color) = (Some(c.label), c.color);
+        spec.series.push(Series { label, color, stroke: Stroke::Solid, markers: true, points: mm(&c.downward) });
+        spec.series.push(Series { label: None, color, stroke: Stroke::Dashed, markers: true, points: mm(&c.upward) });
+        if let Some((x, w)) = c.optimum {
+            spec.marks.push(Mark { color, point: (x, w * 1e3) });
+        }
+    }
+    spec.key = vec![(Stroke::Solid, "downward".into()), (Stroke::Dashed, "upward".into())];
+    spec.mark_label = mark_label.into();
+    spec
+}
+
+/// One quantity against x for several configurations: (label, colour, points), solid with markers.
+pub fn quantity_figure(
+    stem: &str,
+    title: &str,
+    x_label: &str,
+    y_label: &str,
+    curves: Vec<(String, usize, Vec<(f64, f64)>)>,
+    markers: bool,
+) -> PlotSpec {
+    let mut spec = PlotSpec::new(stem, title, x_label, y_label);
+    for (label, color, points) in curves {
+        spec.series.push(Series { label: Some(label), color, stroke: Stroke::Solid, markers, points });
+    }
+    spec
+}
+
+/// The colour of a device count N ∈ {3, 7, 15, 31} (0, black, is "no friction"), the same in every study.
+pub fn device_color(count: usize) -> usize {
+    match count {
+        0 => 0,
+        3 => 1,
+        7 => 2,
+        15 => 3,
+        31 => 4,
+        _ => 7,
+    }
+}

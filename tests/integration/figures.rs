@@ -1,0 +1,113 @@
+//! Every figure of a study is drawn inside its frame: checked in the SVG, where each element's coordinates can be
+//! read. Curves, markers and marks must lie in the plotting area (the axes' tick marks just left of and below it)
+//! or in the legend column; every text must start and end inside the image (its width estimated at 0.62 em per
+//! character, generous for DejaVu Sans, whose average advance is ~0.55 em).
+
+use study::plot::{Layout, PlotSpec, render};
+
+/// Numbers of an attribute `name="…"` of an SVG element.
+fn attribute(element: &str, name: &str) -> Option<String> {
+    let start = element.find(&format!(" {name}=\""))? + name.len() + 3;
+    let end = start + element[start..].find('"')?;
+    Some(element[start..end].to_string())
+}
+
+fn number(element: &str, name: &str) -> f64 {
+    attribute(element, name).and_then(|v| v.parse().ok()).unwrap_or(f64::NAN)
+}
+
+fn inside((left, top, right, bottom): (i32, i32, i32, i32), (x, y): (f64, f64), slack: f64) -> bool {
+    let (l, t, r, b) = (f64::from(left), f64::from(top), f64::from(right), f64::from(bottom));
+    x >= l - slack && x <= r + slack && y >= t - slack && y <= b + slack
+}
+
+/// Check one rendered SVG against its layout; returns the offending elements.
+fn outside_elements(svg: &str, layout: &Layout) -> Vec<String> {
+    let (left, top, right, bottom) = layout.plot;
+    let tick_zone_left = (left - 12, top, left, bottom);
+    let tick_zone_below = (left, bottom, right, bottom + 12);
+    let allowed = |p: (f64, f64)| {
+        [layout.plot, layout.legend, tick_zone_left, tick_zone_below].into_iter().any(|area| inside(area, p, 1.5))
+    };
+    let mut bad = Vec::new();
+    for element in svg.split('<').skip(1) {
+        let tag = element.split([' ', '>', '/']).next().unwrap_or_default();
+        let points: Vec<(f64, f64)> = match tag {
+            "polyline" | "polygon" => attribute(element, "points")
+                .unwrap_or_default()
+                .split_whitespace()
+                .filter_map(|pair| {
+                    let (x, y) = pair.split_once(',')?;
+                    Some((x.parse().ok()?, y.parse().ok()?))
+                })
+                .collect(),
+            "circle" => vec![(number(element, "cx"), number(element, "cy"))],
+            "text" => {
+                let (x, y) = (number(element, "x"), number(element, "y"));
+                let text = element.split_once('>').map_or("", |(_, t)| t);
+                let width = 0.62 * number(element, "font-size") * text.trim().chars().count() as f64;
+                let (from, to) = match attribute(element, "text-anchor").as_deref() {
+                    Some("middle") => (x - width / 2.0, x + width / 2.0),
+                    Some("end") => (x - width, x),
+                    _ => (x, x + width),
+                };
+                // Rotated labels (the y axis) are checked by their anchor only.
+                if element.contains("rotate(") {
+                    vec![(x, y)]
+                } else {
+                    if !(inside(layout.image, (from, y), 0.0) && inside(layout.image, (to, y), 0.0)) {
+                        bad.push(format!("text {:?} spans {from:.0}–{to:.0} px", text.trim()));
+                    }
+                    continue;
+                }
+            }
+            _ => continue,
+        };
+        let check = |p: &(f64, f64)| if tag == "text" { inside(layout.image, *p, 0.0) } else { allowed(*p) };
+        if let Some(p) = points.iter().find(|p| !check(p)) {
+            bad.push(format!("{tag} at ({:.0}, {:.0}): {}", p.0, p.1, &element[..element.len().min(120)]));
+        }
+    }
+    bad
+}
+
+/// Render every figure of `plots` into a fresh folder and check each SVG.
+pub fn assert_drawn_inside(plots: &[PlotSpec], name: &str) {
+    let folder = std::env::temp_dir().join(format!("frictrack-figures-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&folder);
+    std::fs::create_dir_all(&folder).unwrap();
+    assert!(!plots.is_empty(), "{name}: no figure");
+    for spec in plots {
+        let (_, svg, layout) = render(spec, &folder).unwrap();
+        let bad = outside_elements(&std::fs::read_to_string(&svg).unwrap(), &layout);
+        assert!(
+            bad.is_empty(),
+            "{}: {} elements outside their area, e.g. {:?}",
+            spec.stem,
+            bad.len(),
+            &bad[..3.min(bad.len())]
+        );
+    }
+    let _ = std::fs::remove_dir_all(&folder);
+}
+
+#[test]
+fn a_curve_out_of_its_frame_is_caught() {
+    // A layout whose plotting area misses the data: the checker must report the curve.
+    let mut spec = PlotSpec::new("probe", "probe", "x", "y");
+    spec.series.push(study::plot::Series {
+        label: Some("probe".into()),
+        color: 1,
+        stroke: study::plot::Stroke::Solid,
+        markers: true,
+        points: vec![(0.0, 0.0), (1.0, 1.0)],
+    });
+    let folder = std::env::temp_dir().join(format!("frictrack-figures-probe-{}", std::process::id()));
+    std::fs::create_dir_all(&folder).unwrap();
+    let (_, svg, mut layout) = render(&spec, &folder).unwrap();
+    let svg = std::fs::read_to_string(svg).unwrap();
+    assert!(outside_elements(&svg, &layout).is_empty());
+    layout.plot.1 += 200;
+    assert!(!outside_elements(&svg, &layout).is_empty());
+    let _ = std::fs::remove_dir_all(&folder);
+}
