@@ -4,23 +4,27 @@
 use crate::Format;
 use anyhow::Result;
 use clap::Args;
-use fem_beam::reference::{InfiniteBeam, uic60_on_soft_soil};
+use fem_beam::reference::InfiniteBeam;
 use serde::Serialize;
-use study::StudyError;
+use std::path::PathBuf;
 use study::scenario::SweepSection;
+use study::{Scenario, StudyError};
 
 /// Options of `frictrack analytic`.
 #[derive(Debug, Args)]
 pub struct AnalyticArgs {
+    /// Scenario file (its beam, foundation and load force); without it, the reference case.
+    scenario: Option<PathBuf>,
     /// Load speed (m/s).
     #[arg(long, conflicts_with = "speeds", required_unless_present = "speeds", allow_negative_numbers = true)]
     speed: Option<f64>,
     /// Speed range A:B:STEP (m/s) for a dynamic-amplification curve.
     #[arg(long, allow_negative_numbers = true)]
     speeds: Option<String>,
-    /// Foundation damping ratio ζ = c_f / c_cr (needed > 0 at and above the critical speed).
-    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
-    damping_ratio: f64,
+    /// Foundation damping ratio ζ = c_f / c_cr (needed > 0 at and above the critical speed); default the
+    /// scenario's (0 for the reference case).
+    #[arg(long, allow_negative_numbers = true)]
+    damping_ratio: Option<f64>,
     /// Output format.
     #[arg(long, value_enum, default_value_t = Format::Text)]
     format: Format,
@@ -60,8 +64,15 @@ pub fn parse_range(text: &str) -> Result<Vec<f64>> {
 
 /// Execute `frictrack analytic`.
 pub fn run(args: &AnalyticArgs) -> Result<()> {
-    let case = uic60_on_soft_soil();
-    let foundation = case.foundation.with_damping_ratio(args.damping_ratio, &case.beam)?;
+    let scenario = match &args.scenario {
+        Some(path) => Scenario::from_path(path)?,
+        None => Scenario::default(),
+    };
+    let case = scenario.reference_case()?;
+    let foundation = match args.damping_ratio {
+        Some(ratio) => case.foundation.with_damping_ratio(ratio, &case.beam)?,
+        None => case.foundation,
+    };
     let inf = InfiniteBeam::new(&case.beam, &foundation)?;
     let speeds = match (&args.speeds, args.speed) {
         (Some(range), _) => parse_range(range)?,
@@ -89,9 +100,14 @@ pub fn run(args: &AnalyticArgs) -> Result<()> {
         (Format::Json, _) => println!("{}", serde_json::to_string_pretty(&points)?),
         (Format::Text, _) => {
             println!(
-                "infinite UIC60 beam on soft soil, F = {:.1} kN, ζ = {}, v_cr = {:.2} m/s, static w₀ = {:.2} mm",
+                "infinite beam{}, EI = {:.4} MN·m², ρA = {:.3} kg/m, k_f = {:.1} kN/m², F = {:.1} kN, ζ = {:.4}, \
+                 v_cr = {:.2} m/s, static w₀ = {:.2} mm",
+                if scenario.title.is_empty() { String::new() } else { format!(" ({})", scenario.title) },
+                case.beam.bending_stiffness() / 1e6,
+                case.beam.mass_per_length(),
+                foundation.stiffness / 1e3,
                 case.load / 1e3,
-                args.damping_ratio,
+                foundation.damping / inf.critical_damping(),
                 inf.critical_speed(),
                 w0 * 1e3
             );

@@ -1,32 +1,68 @@
-//! `frictrack check <scenario>`: parse and validate a scenario file without running it.
+//! `frictrack check <scenario>…`: parse and validate scenario files without running them, echoing what each
+//! describes (title, beam, foundation and damping, friction set-up, load, sweep) and its warnings.
 
 use anyhow::Result;
 use clap::Args;
-use friction::ContactKind;
 use std::path::PathBuf;
 use study::Scenario;
 
 /// Options of `frictrack check`.
 #[derive(Debug, Args)]
 pub struct CheckArgs {
-    /// Scenario file (TOML).
-    scenario: PathBuf,
+    /// Scenario files (TOML), e.g. examples/*.toml.
+    #[arg(required = true)]
+    scenarios: Vec<PathBuf>,
 }
 
-/// Execute `frictrack check`.
+/// Execute `frictrack check`: every file is checked; the first error is returned after all were tried.
 pub fn run(args: &CheckArgs) -> Result<()> {
-    let scenario = Scenario::from_path(&args.scenario)?;
+    let mut first_error = None;
+    for path in &args.scenarios {
+        if let Err(e) = check(path) {
+            eprintln!("{}: {e:#}", path.display());
+            first_error.get_or_insert(e);
+        }
+    }
+    match first_error {
+        Some(e) if args.scenarios.len() > 1 => Err(e.context("at least one scenario is invalid")),
+        Some(e) => Err(e),
+        None => Ok(()),
+    }
+}
+
+fn check(path: &std::path::Path) -> Result<()> {
+    let scenario = Scenario::from_path(path)?;
     let case = scenario.build()?;
+    crate::scenario_args::print_warnings(&scenario, &case);
     let range = scenario.speed_range()?;
-    let devices = case.contacts.kinds().iter().filter(|k| **k == ContactKind::Device).count();
+    let mesh = case.model.mesh();
+    let foundation = case.model.foundation();
+    let c_cr = 2.0 * (foundation.stiffness * case.model.beam().mass_per_length()).sqrt();
+    let damping = if c_cr > 0.0 { format!("ζ = {:.4}", foundation.damping / c_cr) } else { "no foundation".into() };
+    let friction = match (&scenario.friction.devices, &scenario.friction.distributed) {
+        (None, None) => "no friction".to_string(),
+        (devices, distributed) => {
+            let mut parts = Vec::new();
+            if let Some(d) = devices {
+                let placed = case.contacts.kinds().iter().filter(|k| **k == friction::ContactKind::Device).count();
+                parts.push(format!("{placed} devices of {:.1} kN", d.force.unwrap_or(0.0) / 1e3));
+            }
+            if let Some(d) = distributed {
+                parts.push(format!("distributed {:.1} N/m", d.force_per_length));
+            }
+            parts.join(" and ")
+        }
+    };
+    let title = if scenario.title.is_empty() { String::new() } else { format!(" \"{}\"", scenario.title) };
     println!(
-        "{}: ok — {} m beam, {} elements ({} DOFs), {} friction sections ({} devices), load {:.1} kN at {} m/s, sweep {}–{} m/s by {}",
-        args.scenario.display(),
-        case.model.mesh().length,
-        case.model.mesh().elements,
+        "{}{title}: ok — {} m beam, {} elements ({} DOFs), k_f = {:.1} kN/m², {damping}, {friction} ({} sections), \
+         load {:.1} kN at {} m/s, sweep {}–{} m/s by {}",
+        path.display(),
+        mesh.length,
+        mesh.elements,
         case.model.dofs().free_len(),
+        foundation.stiffness / 1e3,
         case.contacts.len(),
-        devices,
         scenario.load.force / 1e3,
         scenario.load.speed,
         range.from,

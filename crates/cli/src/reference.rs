@@ -4,18 +4,21 @@
 use crate::Format;
 use anyhow::Result;
 use clap::Args;
-use fem_beam::reference::uic60_on_soft_soil;
+use fem_beam::LoadVector;
 use fem_beam::section::Motion;
-use fem_beam::{LoadVector, Mesh};
 use serde::Serialize;
+use std::path::PathBuf;
 use std::time::Instant;
+use study::Scenario;
 
 /// Options of `frictrack reference`.
 #[derive(Debug, Args)]
 pub struct ReferenceArgs {
-    /// Number of beam elements (the reference case has 200 on 200 m).
-    #[arg(long, default_value_t = 200, allow_negative_numbers = true)]
-    elements: usize,
+    /// Scenario file (its beam, foundation, mesh, supports and load force); without it, the reference case.
+    scenario: Option<PathBuf>,
+    /// Number of beam elements (default: the scenario's; the reference case has 200 on 200 m).
+    #[arg(long, allow_negative_numbers = true)]
+    elements: Option<usize>,
     /// Number of natural frequencies to report.
     #[arg(long, default_value_t = 5, allow_negative_numbers = true)]
     modes: usize,
@@ -33,6 +36,9 @@ struct Mode {
 
 #[derive(Debug, Serialize)]
 struct ReferenceReport {
+    title: String,
+    length: f64,
+    supports: String,
     elements: usize,
     dofs: usize,
     load: f64,
@@ -48,8 +54,14 @@ struct ReferenceReport {
 /// Execute `frictrack reference`.
 pub fn run(args: &ReferenceArgs) -> Result<()> {
     let start = Instant::now();
-    let mut case = uic60_on_soft_soil();
-    case.mesh = Mesh::new(case.mesh.length, args.elements)?;
+    let mut scenario = match &args.scenario {
+        Some(path) => Scenario::from_path(path)?,
+        None => Scenario::default(),
+    };
+    if let Some(elements) = args.elements {
+        scenario.mesh.elements = elements;
+    }
+    let case = scenario.reference_case()?;
     let model = case.model()?;
     let inf = case.infinite_beam()?;
     let mid = case.mesh.length / 2.0;
@@ -67,7 +79,14 @@ pub fn run(args: &ReferenceArgs) -> Result<()> {
     }
     let omega = model.natural_frequencies(args.modes)?;
     let report = ReferenceReport {
-        elements: args.elements,
+        title: if scenario.title.is_empty() {
+            "reference case: UIC60 rail on soft soil".into()
+        } else {
+            scenario.title.clone()
+        },
+        length: case.mesh.length,
+        supports: format!("{:?}/{:?}", case.supports.left, case.supports.right).to_lowercase(),
+        elements: case.mesh.elements,
         dofs: model.dofs().free_len(),
         load: case.load,
         midspan_deflection: model.deflection_at(&q, mid)?,
@@ -91,8 +110,8 @@ pub fn run(args: &ReferenceArgs) -> Result<()> {
 
 fn print_text(r: &ReferenceReport) {
     println!(
-        "frictrack — reference case: UIC60 rail on soft soil, 200 m pinned beam, {} elements ({} DOFs)",
-        r.elements, r.dofs
+        "frictrack — {}: {} m beam ({} ends), {} elements ({} DOFs)",
+        r.title, r.length, r.supports, r.elements, r.dofs
     );
     println!(
         "static load {:.1} kN at mid-span                  FE            closed form (infinite beam)",

@@ -41,13 +41,16 @@ pub fn deflection_figure(
     spec
 }
 
-/// One quantity against x for several configurations: (label, colour, points), solid with markers.
+/// Curves of one quantity: (legend text, colour index, points).
+pub type Curves = Vec<(String, usize, Vec<(f64, f64)>)>;
+
+/// One quantity against x for several configurations, solid, with markers if asked.
 pub fn quantity_figure(
     stem: &str,
     title: &str,
     x_label: &str,
     y_label: &str,
-    curves: Vec<(String, usize, Vec<(f64, f64)>)>,
+    curves: Curves,
     markers: bool,
 ) -> PlotSpec {
     let mut spec = PlotSpec::new(stem, title, x_label, y_label);

@@ -10,7 +10,7 @@
 //! Deflection is positive upward, the moment sagging-positive; every number in shortest round-trip form.
 
 use crate::error::{Result, StudyError};
-use crate::figures::quantity_figure;
+use crate::figures::{Curves, quantity_figure};
 use crate::number::row;
 use crate::plot::PlotSpec;
 use crate::scenario::Case;
@@ -107,7 +107,6 @@ pub fn snapshots_csv(snapshots: &[Snapshot]) -> String {
 /// Figures of the histories (deflection and moment against the load position, one curve per section) and of the
 /// snapshots (deflected shape and moment along the beam, one curve per instant).
 pub fn run_plots(result: &RunResult, snapshots: &[Snapshot], title: &str) -> Vec<PlotSpec> {
-    type Curves = Vec<(String, usize, Vec<(f64, f64)>)>;
     let by_section = |value: &dyn Fn(&nscd::simulation::SectionHistory, usize) -> f64| -> Curves {
         let curve = |(i, s): (usize, &nscd::simulation::SectionHistory)| {
             let points = (0..s.time.len()).map(|k| (s.load_position[k], value(s, k))).collect();

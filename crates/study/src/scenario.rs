@@ -57,6 +57,18 @@ impl Default for BeamSection {
     }
 }
 
+impl BeamSection {
+    /// The rail section these values describe (not yet validated).
+    pub fn beam(&self) -> fem_beam::Beam {
+        fem_beam::Beam {
+            youngs_modulus: self.youngs_modulus,
+            second_moment: self.second_moment,
+            area: self.area,
+            density: self.density,
+        }
+    }
+}
+
 /// `[mesh]`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
@@ -415,14 +427,10 @@ impl Scenario {
         self.build().map(|_| ())
     }
 
-    /// Build the model, contact set and run settings, checking every value on the way.
-    pub fn build(&self) -> Result<Case> {
-        let beam = fem_beam::Beam {
-            youngs_modulus: self.beam.youngs_modulus,
-            second_moment: self.beam.second_moment,
-            area: self.beam.area,
-            density: self.beam.density,
-        };
+    /// The assembled beam model (beam, mesh, foundation with its damping and absorbing zones, supports), checked;
+    /// refuses degenerate meshes and mechanisms ([`crate::diagnostics::refuse_degenerate`]).
+    pub fn model(&self) -> Result<BeamModel> {
+        let beam = self.beam.beam();
         beam.validate()?;
         let mesh = Mesh::new(self.mesh.length, self.mesh.elements)?;
         let f = &self.foundation;
@@ -461,6 +469,12 @@ impl Scenario {
         };
         let model = BeamModel::with_element_damping(beam, foundation, mesh, supports, damping)?;
         crate::diagnostics::refuse_degenerate(&model)?;
+        Ok(model)
+    }
+
+    /// Build the model, contact set and run settings, checking every value on the way.
+    pub fn build(&self) -> Result<Case> {
+        let model = self.model()?;
         let contacts = self.contacts(&model).map_err(|e| under("friction", e))?;
         finite_non_negative("load.force", self.load.force, "N")?;
         finite_positive("load.speed", self.load.speed, "m/s")?;
@@ -495,6 +509,20 @@ impl Scenario {
             format!("frictrack {} results {RESULT_FORMAT}\n{}", env!("CARGO_PKG_VERSION"), physics.to_toml())
                 .as_bytes(),
         )
+    }
+
+    /// The scenario's beam, foundation (with its damping), mesh, supports and load force as the closed-form
+    /// reference case (`frictrack reference` and `analytic` on a scenario).
+    pub fn reference_case(&self) -> Result<fem_beam::reference::ReferenceCase> {
+        finite_non_negative("load.force", self.load.force, "N")?;
+        let model = self.model()?;
+        Ok(fem_beam::reference::ReferenceCase {
+            beam: *model.beam(),
+            foundation: *model.foundation(),
+            mesh: *model.mesh(),
+            supports: model.supports(),
+            load: self.load.force,
+        })
     }
 
     /// The speeds of a sweep: `[sweep]` if given, else the default range around the critical speed.

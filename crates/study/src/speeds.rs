@@ -32,13 +32,7 @@ impl SpeedScale {
         if scenario.foundation.stiffness <= 0.0 {
             return Ok(Self { critical_speed: None, step: 10.0 });
         }
-        let b = &scenario.beam;
-        let beam = fem_beam::Beam {
-            youngs_modulus: b.youngs_modulus,
-            second_moment: b.second_moment,
-            area: b.area,
-            density: b.density,
-        };
+        let beam = scenario.beam.beam();
         let foundation = fem_beam::Foundation { stiffness: scenario.foundation.stiffness, damping: 0.0 };
         let critical = InfiniteBeam::new(&beam, &foundation)?.critical_speed();
         Ok(Self { critical_speed: Some(critical), step: nice(critical / STEPS_TO_CRITICAL) })
