@@ -1,5 +1,5 @@
 //! `frictrack analytic`: the closed-form steady state of an infinite beam on a viscoelastic foundation under a
-//! moving load (MODEL.md §8), at one speed or as a dynamic-amplification curve over a speed range.
+//! moving load (docs/theory.md §8), at one speed or as a dynamic-amplification curve over a speed range.
 
 use crate::Format;
 use anyhow::Result;

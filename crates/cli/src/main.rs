@@ -33,7 +33,7 @@ enum Command {
     Run(run::RunArgs),
     /// Run a scenario at many speeds in parallel; CSV of max deflections, dissipated energy and W̄ per speed.
     Sweep(sweep::SweepArgs),
-    /// Run one of the six studies of MODEL.md §7 (CSV + JSON in the output folder).
+    /// Run one of the six studies of docs/theory.md §7 (CSV + JSON in the output folder).
     Study(study_cmd::StudyArgs),
     /// Run all six studies and write their data, figures and report.md.
     Reproduce(reproduce::ReproduceArgs),

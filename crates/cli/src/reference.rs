@@ -1,5 +1,5 @@
 //! `frictrack reference`: the reference case's static response under the load at mid-span and its lowest natural
-//! frequencies, each beside its closed form (MODEL.md §2, §8).
+//! frequencies, each beside its closed form (docs/theory.md §2, §8).
 
 use crate::Format;
 use anyhow::Result;

@@ -1,4 +1,4 @@
-//! `frictrack reproduce [--out DIR] [--resolution coarse|paper]`: all six studies of MODEL.md §7, their data, figures
+//! `frictrack reproduce [--out DIR] [--resolution coarse|paper]`: all six studies of docs/theory.md §7, their data, figures
 //! and a `report.md` that shows every figure with a two-line summary of what it shows.
 
 use crate::files::write_atomically;
@@ -21,7 +21,7 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
     let (options, base) = (&args.options, args.options.base()?);
     let start = Instant::now();
     let mut report = String::new();
-    let _ = writeln!(report, "# frictrack — the studies of MODEL.md §7\n");
+    let _ = writeln!(report, "# frictrack — the studies of docs/theory.md §7\n");
     let _ = writeln!(
         report,
         "Reference case unless a scenario was given: UIC60 rail (EI = 6.4155 MN·m², ρA = 59.935 kg/m) on a Winkler soil of \

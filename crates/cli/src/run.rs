@@ -1,4 +1,4 @@
-//! `frictrack run`: one Moreau–Jean simulation of a scenario (default: the reference case of MODEL.md §2) with flags
+//! `frictrack run`: one Moreau–Jean simulation of a scenario (default: the reference case of docs/theory.md §2) with flags
 //! overriding it; prints the key inputs, the whole-run extremes and the extremes while the load is in the middle
 //! third (or `--extremes-window`), energies, solver statistics and wall time. With `--out DIR` it also writes
 //! `summary.json`, `histories.csv`, `snapshots.csv` and their figures ([`study::run_output`]).

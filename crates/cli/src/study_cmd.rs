@@ -1,4 +1,4 @@
-//! `frictrack study <preset>`: run one of the six studies of MODEL.md §7 and write `<preset>.csv` (the data),
+//! `frictrack study <preset>`: run one of the six studies of docs/theory.md §7 and write `<preset>.csv` (the data),
 //! `<preset>.json` (scenario, version, git revision, resolution, summary, wall time) and its figures (PNG and SVG)
 //! into the output folder.
 

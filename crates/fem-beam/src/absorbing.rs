@@ -1,4 +1,4 @@
-//! Absorbing end zones: foundation damping graded up towards the beam ends (MODEL.md §8).
+//! Absorbing end zones: foundation damping graded up towards the beam ends (docs/theory.md §8).
 //!
 //! A finite beam reflects the waves a moving load radiates (the wave train that trails a supercritical load reaches
 //! the left end). Grading the foundation damping quadratically from the base value c_f to a peak c_peak over end

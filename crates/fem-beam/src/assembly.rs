@@ -1,4 +1,4 @@
-//! Global assembly of the semi-discrete beam–foundation system M q̈ + C q̇ + K q = f (MODEL.md §3).
+//! Global assembly of the semi-discrete beam–foundation system M q̈ + C q̇ + K q = f (docs/theory.md §3).
 //!
 //! M = Σ ρA·l/420·P, K = Σ (EI/l³·[…] + k_f·l/420·P), C = Σ c_f,e·l/420·P over the elements, assembled into
 //! [`SymmetricBanded`] matrices over the free DOFs (half-bandwidth 3). The foundation damping may vary from element

@@ -1,6 +1,6 @@
 //! # fem-beam: an Euler–Bernoulli rail on a viscoelastic Winkler foundation
 //!
-//! The first layer of frictrack (MODEL.md §2–§3): Hermite cubic beam elements on [0, L], the consistent mass
+//! The first layer of frictrack (docs/theory.md §2–§3): Hermite cubic beam elements on [0, L], the consistent mass
 //! ρA·l/420·[…], bending stiffness EI/l³·[…] and consistent foundation stiffness/damping k_f·l/420·[…],
 //! c_f·l/420·[…], assembled into symmetric banded matrices of half-bandwidth 3 over the DOFs left free by the
 //! supports, for the semi-discrete equation M q̈ + C q̇ + K q = f. Units are SI; w is positive upward.

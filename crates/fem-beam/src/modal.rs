@@ -3,7 +3,7 @@
 //! Solved densely: M = L Lᵀ (Cholesky), then the symmetric standard problem L⁻¹ K L⁻ᵀ y = ω² y. Cost O(n³): fine
 //! for the reference mesh (400 free DOFs, well under a second), meant for verification and reporting rather than
 //! meshes of many thousand DOFs. For the pinned reference beam the closed form is
-//! ω_n² = (EI(nπ/L)⁴ + k_f)/(ρA) (MODEL.md §8).
+//! ω_n² = (EI(nπ/L)⁴ + k_f)/(ρA) (docs/theory.md §8).
 
 use crate::assembly::BeamModel;
 use crate::error::{FemError, Result};

@@ -1,6 +1,6 @@
 //! Physical parameters: the rail as an Euler–Bernoulli beam and the soil as a viscoelastic Winkler foundation.
 //!
-//! Defaults are the reference case of MODEL.md §2: a UIC60 rail (A = 7684 mm², I = 3055 cm⁴, ρ = 7800 kg/m³,
+//! Defaults are the reference case of docs/theory.md §2: a UIC60 rail (A = 7684 mm², I = 3055 cm⁴, ρ = 7800 kg/m³,
 //! E = 210 GPa, hence EI = 6.4155 MN·m² and ρA = 59.935 kg/m) on a soil of k_f = 250 kN/m², undamped.
 
 use crate::error::{Result, non_negative, positive};

@@ -1,4 +1,4 @@
-//! The reference case of MODEL.md §2 and the closed-form results that tests, benches and the CLI share (§2, §8).
+//! The reference case of docs/theory.md §2 and the closed-form results that tests, benches and the CLI share (§2, §8).
 //!
 //! # Infinite beam on a viscoelastic foundation under a moving load
 //! For EI w'''' + ρA w_tt + c_f w_t + k_f w = F δ(x − vt) (w positive *downward* in this derivation only), in the
@@ -40,7 +40,7 @@ pub struct ReferenceCase {
     pub load: f64,
 }
 
-/// The reference case of MODEL.md §2 (all defaults).
+/// The reference case of docs/theory.md §2 (all defaults).
 pub fn uic60_on_soft_soil() -> ReferenceCase {
     ReferenceCase {
         beam: Beam::default(),

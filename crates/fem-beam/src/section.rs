@@ -1,4 +1,4 @@
-//! Section results from a full DOF vector: deflection w(x), rotation θ(x), bending moment M(x) (MODEL.md §6).
+//! Section results from a full DOF vector: deflection w(x), rotation θ(x), bending moment M(x) (docs/theory.md §6).
 //!
 //! Two moments are offered:
 //! - [`BeamModel::interpolated_moment`]: EI·w″ of the cubic interpolation. It is linear on each element and

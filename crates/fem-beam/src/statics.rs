@@ -1,4 +1,4 @@
-//! Static response K q = f (MODEL.md §3 without inertia): factor the banded K once, solve.
+//! Static response K q = f (docs/theory.md §3 without inertia): factor the banded K once, solve.
 
 use crate::assembly::BeamModel;
 use crate::error::Result;

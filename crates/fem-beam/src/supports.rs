@@ -7,7 +7,7 @@
 /// Boundary condition at one end of the beam.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Support {
-    /// w = 0, rotation free (the default, MODEL.md §2).
+    /// w = 0, rotation free (the default, docs/theory.md §2).
     #[default]
     Pinned,
     /// w = 0 and θ = 0.

@@ -1,4 +1,4 @@
-//! The contact set: the rows H_j and bounds F_j that both friction models reduce to (MODEL.md §4).
+//! The contact set: the rows H_j and bounds F_j that both friction models reduce to (docs/theory.md §4).
 //!
 //! Row j maps the free-DOF velocity q̇ to the velocity of section j, u_j = H_j q̇ (m/s); its friction force r_j
 //! (N) acts on the DOFs as H_jᵀ r_j. A row has at most four entries: the Hermite shape functions of the element

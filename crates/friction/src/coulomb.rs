@@ -1,4 +1,4 @@
-//! The set-valued Coulomb law p ∈ −a·Sign(u) (MODEL.md §4), written for impulses p = h·r over a step with bound
+//! The set-valued Coulomb law p ∈ −a·Sign(u) (docs/theory.md §4), written for impulses p = h·r over a step with bound
 //! a = h·F_u.
 //!
 //! Sign(u) = {−1} for u < 0, [−1, 1] for u = 0, {+1} for u > 0. For any ρ > 0 the law is equivalent to the

@@ -1,4 +1,4 @@
-//! Discrete friction devices (FDD) on mesh nodes (MODEL.md §4).
+//! Discrete friction devices (FDD) on mesh nodes (docs/theory.md §4).
 //!
 //! N devices at x_i = i·L/(N+1), i = 1..N, each snapped to the nearest mesh node, a tie going to the node of larger
 //! x (N = 15 on 1 m elements: 12.5 m → 13 m); or devices at explicit positions, snapped the same way. Each device

@@ -1,4 +1,4 @@
-//! Distributed (ballast) friction of f_u newtons per metre (MODEL.md §4).
+//! Distributed (ballast) friction of f_u newtons per metre (docs/theory.md §4).
 //!
 //! Each element is cut into J equal sub-intervals; the law is applied at the J+1 sections of every element, and the
 //! distributed impulses are integrated against the shape functions with composite trapezoid weights l/J (interior)

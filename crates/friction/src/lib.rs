@@ -1,4 +1,4 @@
-//! # friction: Coulomb friction on the rail (MODEL.md §4)
+//! # friction: Coulomb friction on the rail (docs/theory.md §4)
 //!
 //! A friction device with maximal force F_u on a section of velocity u applies r ∈ −F_u·Sign(u): stuck while
 //! |r| ≤ F_u, slipping with |r| = F_u against the motion. Discrete devices and friction distributed in the ballast

@@ -1,4 +1,4 @@
-//! External forces F(t) on the free DOFs: the moving point load of MODEL.md §3, or any time function.
+//! External forces F(t) on the free DOFs: the moving point load of docs/theory.md §3, or any time function.
 
 use fem_beam::element::hermite;
 use fem_beam::{DofMap, Mesh};

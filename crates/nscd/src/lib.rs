@@ -1,4 +1,4 @@
-//! # nscd: nonsmooth contact dynamics for frictrack (MODEL.md §5–§6)
+//! # nscd: nonsmooth contact dynamics for frictrack (docs/theory.md §5–§6)
 //!
 //! The Moreau–Jean θ-method integrates M q̈ + C q̇ + K q ∈ F(t) + R(q̇), the friction R set-valued, with friction
 //! *impulses* per step found by a per-step solver, and an exact discrete energy balance.

@@ -1,5 +1,5 @@
 //! A whole run: the beam under a load crossing it at constant speed, with friction, observed as it goes
-//! (MODEL.md §3, §6).
+//! (docs/theory.md §3, §6).
 //!
 //! The state is the perturbation from the self-weight equilibrium q₀ = K⁻¹P: with a linear foundation and
 //! velocity-driven friction P drops out exactly, so deflections are reported relative to q₀. The load enters at
@@ -25,7 +25,7 @@ pub enum InitialState {
     /// At rest in the self-weight equilibrium, the load entering at x = 0 (default).
     #[default]
     Rest,
-    /// In the analytic steady state of the infinite beam (MODEL.md §8) with the load at `position` (m):
+    /// In the analytic steady state of the infinite beam (docs/theory.md §8) with the load at `position` (m):
     /// removes the entry transient. Needs damping > 0 at or above the critical speed.
     SteadyState {
         /// Load position at t = 0 (m).
@@ -33,7 +33,7 @@ pub enum InitialState {
     },
 }
 
-/// Settings of one run. Defaults: the reference case of MODEL.md §2 at 200 m/s.
+/// Settings of one run. Defaults: the reference case of docs/theory.md §2 at 200 m/s.
 #[derive(Debug, Clone, PartialEq)]
 pub struct RunSettings {
     /// Load speed v (m/s) > 0. Default 200.
@@ -198,7 +198,7 @@ pub struct Extreme {
     pub time: f64,
 }
 
-/// The extremes while the load was inside a range of positions (MODEL.md §8: away from the entry and exit
+/// The extremes while the load was inside a range of positions (docs/theory.md §8: away from the entry and exit
 /// transients of a finite beam started from rest).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct WindowExtremes {
@@ -280,7 +280,7 @@ pub struct SolverStatistics {
     pub wall_time: f64,
 }
 
-/// What a run reports (MODEL.md §6).
+/// What a run reports (docs/theory.md §6).
 #[derive(Debug, Clone, PartialEq)]
 pub struct RunResult {
     /// Largest downward deflection over nodes and steps.
@@ -540,7 +540,7 @@ impl<'a> Simulation<'a> {
     }
 
     /// Bending moment at `node` (N·m) from the end forces of its adjacent elements,
-    /// f = K_e q_e + C_e q̇_e + M_e q̈_e − f_e (MODEL.md §6), averaged over the (one or two) adjacent elements. The
+    /// f = K_e q_e + C_e q̇_e + M_e q̈_e − f_e (docs/theory.md §6), averaged over the (one or two) adjacent elements. The
     /// element loads f_e are the moving load at the weighted `load_times` and the friction forces p_j/h of the
     /// sections inside the element (`inside`, precomputed with their shape functions); sections on nodes act on w
     /// only and leave the moments unchanged.

@@ -1,4 +1,4 @@
-//! Whole-beam snapshots of a run at chosen instants: nodal deflection w_i and bending moment M_i (MODEL.md §6).
+//! Whole-beam snapshots of a run at chosen instants: nodal deflection w_i and bending moment M_i (docs/theory.md §6).
 //!
 //! An observer for [`crate::Simulation::run_observed`]. Each request — a time t or a load position x_c — is taken
 //! at the first step whose time reaches it (t_{k+1} ≥ t, or t_{k+1} ≥ (x_c − x₀)/v), so it lies within one step h

@@ -1,4 +1,4 @@
-//! The Moreau–Jean θ-method (MODEL.md §5) with exact discrete energy bookkeeping (MODEL.md §6).
+//! The Moreau–Jean θ-method (docs/theory.md §5) with exact discrete energy bookkeeping (docs/theory.md §6).
 //!
 //! With constant step h and M̂ = M + hθC + h²θ²K (SPD, banded, factored once per run), per step k → k+1:
 //!

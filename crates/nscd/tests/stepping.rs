@@ -1,4 +1,4 @@
-//! Verification of the Moreau–Jean stepper and its friction solvers (MODEL.md §5–§8).
+//! Verification of the Moreau–Jean stepper and its friction solvers (docs/theory.md §5–§8).
 
 mod stepping {
     mod common;

@@ -1,5 +1,5 @@
 //! What a scenario's numbers mean for the model, before anything runs: refusals for inputs that cannot give an
-//! answer, and warnings for legitimate but suspicious ones (MODEL.md §2–§4).
+//! answer, and warnings for legitimate but suspicious ones (docs/theory.md §2–§4).
 //!
 //! - Refused: a mesh with no free deflection DOF (one pinned element: the load has nothing to bend), and a beam
 //!   without foundation whose supports leave a rigid-body motion (free–free, pinned–free: a mechanism).

@@ -1,4 +1,4 @@
-//! # study: scenarios, speed sweeps, critical speed, optimal device force (MODEL.md §7)
+//! # study: scenarios, speed sweeps, critical speed, optimal device force (docs/theory.md §7)
 //!
 //! - [`scenario`]: the TOML scenario format (every key optional, defaults = the reference case) and its validation.
 //! - [`sweep`]: speed sweeps run in parallel with results in speed order, identical for any thread count; the

@@ -1,4 +1,4 @@
-//! The six studies of MODEL.md §7 as named presets. Each returns its data as CSV (long format, one row per point,
+//! The six studies of docs/theory.md §7 as named presets. Each returns its data as CSV (long format, one row per point,
 //! SI units), a JSON summary (critical speeds, peaks, optimal forces) and a few human-readable summary lines.
 //! All runs of a study share one rayon pool; results do not depend on the thread count.
 
@@ -14,7 +14,7 @@ use serde::Serialize;
 use serde_json::{Value, json};
 use std::fmt::Write as _;
 
-/// The studies of MODEL.md §7.
+/// The studies of docs/theory.md §7.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Preset {
     /// 1. Critical speed with discrete devices: N ∈ {3, 7, 15, 31}, F_u ∈ {10, 50, 100} kN, and no friction.
@@ -74,7 +74,7 @@ impl Resolution {
 }
 
 impl Preset {
-    /// All six, in MODEL.md order.
+    /// All six, in docs/theory.md order.
     pub const ALL: [Preset; 6] = [
         Preset::DiscreteSpeed,
         Preset::EqualCost,

@@ -1,5 +1,5 @@
 //! The files of one run (`frictrack run --out DIR`): histories at the recorded sections and whole-beam snapshots
-//! as long-format CSV, their column units, and their figures (MODEL.md §6).
+//! as long-format CSV, their column units, and their figures (docs/theory.md §6).
 //!
 //! - `histories.csv`: `section,time,load_position,deflection,velocity,acceleration,moment,friction_force` — one row
 //!   per recorded section and time step (m, s, m, m, m/s, m/s², N·m, N). Velocity is ẇ after the step, acceleration

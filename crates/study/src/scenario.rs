@@ -1,5 +1,5 @@
-//! The scenario file: everything MODEL.md describes, in TOML, every key optional (defaults = the reference case of
-//! MODEL.md §2). Unknown keys are errors. [`Scenario::build`] turns it into the beam model, the contact set and the
+//! The scenario file: everything docs/theory.md describes, in TOML, every key optional (defaults = the reference case of
+//! docs/theory.md §2). Unknown keys are errors. [`Scenario::build`] turns it into the beam model, the contact set and the
 //! run settings; [`Scenario::validate`] names the offending key by its dotted path.
 
 use crate::error::{Result, StudyError, invalid};

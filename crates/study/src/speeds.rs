@@ -1,7 +1,7 @@
-//! Speeds that follow the case (MODEL.md §2, §7): sweeps and studies sample around the critical speed of the
+//! Speeds that follow the case (docs/theory.md §2, §7): sweeps and studies sample around the critical speed of the
 //! infinite beam on the case's foundation, v_cr = (4 k_f EI/(ρA)²)^¼, instead of a fixed range.
 //!
-//! The reference case (v_cr = 205.57 m/s) gets exactly the range of MODEL.md §7: a step of v_cr/20.557 rounded to a
+//! The reference case (v_cr = 205.57 m/s) gets exactly the range of docs/theory.md §7: a step of v_cr/20.557 rounded to a
 //! "nice" number (1, 2, 2.5 or 5 × 10ᵏ m/s: 10 m/s), from one step to 1.46·v_cr rounded to the step (10–300 m/s).
 //! A stiff soil, k_f = 10 MN/m² (v_cr ≈ 517 m/s), gets 25–750 m/s by 25. Without a foundation (k_f = 0, a bridge
 //! span) there is no v_cr and the reference range is kept. Fixed-speed studies scale the same way: a fraction f of

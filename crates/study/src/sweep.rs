@@ -1,4 +1,4 @@
-//! Speed sweeps, the critical speed and the optimal device force (MODEL.md §7).
+//! Speed sweeps, the critical speed and the optimal device force (docs/theory.md §7).
 //!
 //! A sweep runs one simulation per speed, in parallel on a rayon pool of `jobs` threads; every run is independent and
 //! deterministic and the results are returned in speed order, so the output is identical for any thread count.

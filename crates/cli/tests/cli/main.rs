@@ -32,7 +32,7 @@ fn reference_reports_static_case_against_closed_form() {
 #[test]
 fn analytic_matches_model_md_value() {
     let v = json(&frictrack(&["analytic", "--speed", "200", "--damping-ratio", "0.05", "--format", "json"]));
-    // MODEL.md §8: 176.17 mm at v = 200 m/s, ζ = 0.05.
+    // docs/theory.md §8: 176.17 mm at v = 200 m/s, ζ = 0.05.
     let w = v["max_downward_deflection"].as_f64().unwrap();
     assert!((w - 0.17617).abs() < 0.5e-5, "{w}");
     let curve = json(&frictrack(&["analytic", "--speeds", "10:300:10", "--damping-ratio", "0.1", "--format", "json"]));

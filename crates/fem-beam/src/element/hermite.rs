@@ -1,4 +1,4 @@
-//! Hermite cubic Euler–Bernoulli beam element of length l (MODEL.md §3).
+//! Hermite cubic Euler–Bernoulli beam element of length l (docs/theory.md §3).
 //!
 //! With ξ = (x − x_a)/l ∈ [0, 1] the shape functions are
 //! N₁ = 1 − 3ξ² + 2ξ³, N₂ = l(ξ − 2ξ² + ξ³), N₃ = 3ξ² − 2ξ³, N₄ = l(−ξ² + ξ³), and w(x) = Σ Nᵢ qᵢ.

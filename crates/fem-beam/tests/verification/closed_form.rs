@@ -11,7 +11,7 @@ fn rel(a: f64, b: f64) -> f64 {
 fn reference_values_match_model_md() {
     let case = uic60_on_soft_soil();
     let inf = case.infinite_beam().unwrap();
-    // MODEL.md quotes 5 significant digits: the tolerance is half a unit of the last quoted digit.
+    // docs/theory.md quotes 5 significant digits: the tolerance is half a unit of the last quoted digit.
     assert!((case.beam.bending_stiffness() - 6.4155e6).abs() < 0.00005e6);
     assert!((case.beam.mass_per_length() - 59.935).abs() < 0.0005);
     assert!((inf.beta() - 0.31417).abs() < 0.000005);
@@ -109,7 +109,7 @@ fn damped_amplification_peaks_near_critical_speed() {
     let w0 = inf.static_deflection(case.load);
     let daf = |v: f64| inf.steady_state(v, case.load).unwrap().extremes().max_downward.magnitude / w0;
     assert!(daf(100.0) > 1.0 && daf(100.0) < daf(150.0) && daf(150.0) < daf(200.0));
-    // MODEL.md §8 quotes the closed form at v = 200 m/s, ζ = 0.05: 176.17 mm (to 0.01 mm).
+    // docs/theory.md §8 quotes the closed form at v = 200 m/s, ζ = 0.05: 176.17 mm (to 0.01 mm).
     let at_200 = daf(200.0) * w0;
     assert!((at_200 - 0.17617).abs() < 0.5e-5, "w_max(200 m/s) = {at_200}");
     // At v_cr the roots split by O(√ζ) from ±i√2, so the amplification scales like 1/√ζ (not 1/ζ as for an

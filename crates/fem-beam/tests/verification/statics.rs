@@ -27,7 +27,7 @@ fn midspan_point_load_matches_infinite_beam() {
     let m = moments.values()[100];
     assert!(rel(m, m0) < 0.01, "M = {m}, M0 = {m0}");
     assert!(rel(m, m0) < 1e-4, "end-force moment is accurate to ~1e-5: M = {m}, M0 = {m0}");
-    // EI·w″ of the cubic interpolation reads low under the load (MODEL.md §6: ~1.6 % on 1 m elements).
+    // EI·w″ of the cubic interpolation reads low under the load (docs/theory.md §6: ~1.6 % on 1 m elements).
     let interp = model.interpolated_moment(&q, 100.0).unwrap();
     let low = (m0 - interp) / m0;
     assert!(low > 0.01 && low < 0.025, "interpolated moment {interp} is {:.2} % low", 100.0 * low);

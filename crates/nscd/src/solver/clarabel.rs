@@ -1,5 +1,5 @@
 //! The friction step as a QP solved by the interior-point solver Clarabel (feature `clarabel`): an independent
-//! cross-check of the other solvers (MODEL.md §5, `DEPENDENCIES.md`).
+//! cross-check of the other solvers (docs/theory.md §5, `DEPENDENCIES.md`).
 //!
 //! Sparse lifted form, so that W is never formed: unknowns x = (y, p) with y = M̂⁻¹Hᵀp the velocity correction,
 //! min ½ yᵀM̂y + u_freeᵀp (= ½pᵀWp + u_freeᵀp) subject to M̂y − Hᵀp = 0 (zero cone, n rows) and p ≤ a, −p ≤ a

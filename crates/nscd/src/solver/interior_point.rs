@@ -1,5 +1,5 @@
 //! A primal–dual interior-point method for the friction step whose Newton systems are banded: the solver built for
-//! dense distributed friction (MODEL.md §5), where Gauss–Seidel stalls because W = H M̂⁻¹ Hᵀ is singular.
+//! dense distributed friction (docs/theory.md §5), where Gauss–Seidel stalls because W = H M̂⁻¹ Hᵀ is singular.
 //!
 //! The step is the box QP min ½pᵀWp + u_freeᵀp, −a ≤ p ≤ a. With slacks s₁ = a − p, s₂ = a + p and multipliers
 //! z₁, z₂ ≥ 0 (velocities, m/s) the optimality conditions are

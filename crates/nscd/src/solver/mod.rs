@@ -1,4 +1,4 @@
-//! Per-step friction solvers (MODEL.md §5).
+//! Per-step friction solvers (docs/theory.md §5).
 //!
 //! Each step poses: find impulses p with v = v_free + M̂⁻¹Hᵀp, u = H v = W p + u_free, W = H M̂⁻¹ Hᵀ, and
 //! p_j ∈ −a_j Sign(u_j), a_j = h F_j. Equivalently the box QP min ½pᵀWp + u_freeᵀp, |p_j| ≤ a_j, or the strongly

@@ -1,4 +1,4 @@
-//! Nonsmooth (projected) Gauss–Seidel on the dense Delassus matrix (the NSCD local solver, MODEL.md §5).
+//! Nonsmooth (projected) Gauss–Seidel on the dense Delassus matrix (the NSCD local solver, docs/theory.md §5).
 //!
 //! Sweep j = 1..m: p_j ← proj_[−a_j, a_j](p_j − u_j / W_jj), warm-started from the previous step, until the
 //! largest update in a sweep, |Δp_j|·W_jj (m/s), is below the tolerance; the law residual is then evaluated on the

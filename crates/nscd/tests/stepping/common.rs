@@ -9,7 +9,7 @@ pub fn beam(length: f64, elements: usize) -> BeamModel {
     BeamModel::new(case.beam, case.foundation, Mesh::new(length, elements).unwrap(), case.supports).unwrap()
 }
 
-/// The reference model of MODEL.md §2.
+/// The reference model of docs/theory.md §2.
 pub fn reference() -> BeamModel {
     uic60_on_soft_soil().model().unwrap()
 }

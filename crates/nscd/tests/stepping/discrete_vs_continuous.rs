@@ -1,4 +1,4 @@
-//! Study 6 of MODEL.md §7: 199 devices of 1 kN against f_u = 0.995 kN/m (equal total capacity 199 kN) at 150 m/s.
+//! Study 6 of docs/theory.md §7: 199 devices of 1 kN against f_u = 0.995 kN/m (equal total capacity 199 kN) at 150 m/s.
 
 use super::common::reference;
 use friction::{Devices, DistributedFriction};

@@ -1,4 +1,4 @@
-//! The discrete energy identity (MODEL.md §6) closes to round-off for any θ and any friction.
+//! The discrete energy identity (docs/theory.md §6) closes to round-off for any θ and any friction.
 
 use super::common::beam;
 use friction::{ContactSet, Devices, DistributedFriction};

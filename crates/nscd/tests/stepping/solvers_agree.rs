@@ -1,4 +1,4 @@
-//! Independent solvers agree on v_{k+1} (MODEL.md §5: p need not be unique, v is).
+//! Independent solvers agree on v_{k+1} (docs/theory.md §5: p need not be unique, v is).
 
 use super::common::{reference, relative_difference};
 use friction::{ContactSet, Devices, DistributedFriction};

@@ -1,4 +1,4 @@
-//! Started from the analytic steady state, the FE response matches the closed form (MODEL.md §8).
+//! Started from the analytic steady state, the FE response matches the closed form (docs/theory.md §8).
 
 use fem_beam::reference::{InfiniteBeam, uic60_on_soft_soil};
 use fem_beam::{AbsorbingZones, BeamModel};
@@ -74,7 +74,7 @@ fn recorded_histories_match_steady_state_under_the_load() {
             100.0 * dm
         );
         // Measured ≤ 0.013 % (w) and ≤ 0.07 % (M, whose inertia term uses the step's mean acceleration): bounds of
-        // 0.05 % and 0.2 % keep the MODEL.md §8 accuracy (~0.1 %) without tripping on it.
+        // 0.05 % and 0.2 % keep the docs/theory.md §8 accuracy (~0.1 %) without tripping on it.
         assert!(dw.abs() < 5e-4 && dm.abs() < 2e-3, "v = {speed}: deflection {dw:+e}, moment {dm:+e}");
     }
 }
