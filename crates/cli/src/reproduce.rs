@@ -19,6 +19,8 @@ pub struct ReproduceArgs {
 /// Execute `frictrack reproduce`.
 pub fn run(args: &ReproduceArgs) -> Result<()> {
     let (options, base) = (&args.options, args.options.base()?);
+    crate::files::prepare_output_folder("--out", &options.out)?;
+    crate::files::check_output_file("--out", &options.out.join("report.md"))?;
     let start = Instant::now();
     let mut report = String::new();
     let _ = writeln!(report, "# frictrack — the studies of docs/theory.md §7\n");

@@ -159,7 +159,7 @@ fn write_outputs(
     write_atomically(&out.join("summary.json"), serde_json::to_string_pretty(&summary)?.as_bytes())?;
     write_atomically(&out.join("histories.csv"), histories_csv(result).as_bytes())?;
     write_atomically(&out.join("snapshots.csv"), snapshots_csv(snapshots).as_bytes())?;
-    let title = if scenario.title.is_empty() { format!("{} m/s", report.speed) } else { scenario.title.clone() };
+    let title = if scenario.title.is_empty() { format!("v = {} m/s", report.speed) } else { scenario.title.clone() };
     for spec in run_plots(result, snapshots, &title) {
         study::plot::render(&spec, out)?;
     }

@@ -2,7 +2,7 @@
 //! `<preset>.json` (scenario, version, git revision, resolution, summary, wall time) and its figures (PNG and SVG)
 //! into the output folder.
 
-use crate::files::{prepare_output_folder, write_atomically};
+use crate::files::{check_output_file, prepare_output_folder, write_atomically};
 use anyhow::Result;
 use clap::{Args, ValueEnum};
 use serde_json::json;
@@ -97,6 +97,9 @@ pub fn run_study(preset: Preset, options: &StudyOptions, base: &Scenario) -> Res
     let case = base.build()?;
     crate::scenario_args::print_warnings(base, &case);
     prepare_output_folder("--out", out)?;
+    for extension in ["csv", "json"] {
+        check_output_file("--out", &out.join(format!("{}.{extension}", preset.name())))?;
+    }
     let journal = study::Journal::open(&out.join(format!(".{}.journal", preset.name())), options.resume)?;
     if journal.resumed() > 0 && !quiet {
         eprintln!("{}: resuming with {} finished runs", preset.name(), journal.resumed());
