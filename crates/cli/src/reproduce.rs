@@ -21,6 +21,7 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
     let (options, base) = (&args.options, args.options.base()?);
     crate::files::prepare_output_folder("--out", &options.out)?;
     crate::files::check_output_file("--out", &options.out.join("report.md"))?;
+    let workers = options.workers()?;
     let start = Instant::now();
     let mut report = String::new();
     let _ = writeln!(report, "# frictrack — the studies of docs/theory.md §7\n");
@@ -35,7 +36,7 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
     let mut journals = Vec::new();
     for (i, preset) in Preset::ALL.into_iter().enumerate() {
         let timer = Instant::now();
-        let (data, journal) = run_study(preset, options, &base)?;
+        let (data, journal) = run_study(preset, options, &base, &workers)?;
         if !options.quiet {
             eprintln!("{}: {} runs in {:.1} s", preset.name(), data.runs, timer.elapsed().as_secs_f64());
         }

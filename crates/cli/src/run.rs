@@ -107,11 +107,11 @@ pub fn run(args: &RunArgs) -> Result<()> {
         prepare_output_folder("--out", out)?;
     }
     let requests = if args.out.is_some() { scenario.output.snapshots(scenario.mesh.length) } else { Vec::new() };
-    let runner = study::sweep::Runner::new(1)?.with_stop(crate::interrupt::stop_flag());
     let steps = case.settings.step_count(scenario.mesh.length);
     let bar = crate::progress::steps_bar(steps as u64, args.quiet || args.format == Format::Json);
     let progress = |fraction: f64| bar.set_position((fraction * steps) as u64);
-    let ran = study::run_output::run_with_snapshots(&case, &requests, &runner, &progress);
+    let stop = Some(crate::interrupt::stop_flag());
+    let ran = study::run_output::run_with_snapshots(&case, &requests, stop, &progress);
     bar.finish_and_clear();
     let (result, snapshots) = crate::interrupt::explain(ran, None)?;
     let report = report(&scenario, &case, &result, start.elapsed().as_secs_f64())?;

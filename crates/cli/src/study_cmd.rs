@@ -10,6 +10,7 @@ use std::path::PathBuf;
 use std::time::Instant;
 use study::Scenario;
 use study::presets::{Preset, Resolution, StudyData, run_preset};
+use study::sweep::Runner;
 
 /// Sampling of a study.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -60,6 +61,11 @@ pub struct StudyOptions {
 }
 
 impl StudyOptions {
+    /// The command's one pool of worker threads (`--jobs`, capped at the cores).
+    pub fn workers(&self) -> Result<Runner<'static>> {
+        crate::jobs::runner(self.jobs, self.quiet)
+    }
+
     /// The base scenario: the file given, or the reference case.
     pub fn base(&self) -> Result<Scenario> {
         Ok(match &self.scenario {
@@ -81,7 +87,8 @@ pub struct StudyArgs {
 /// Execute `frictrack study`.
 pub fn run(args: &StudyArgs) -> Result<()> {
     let preset = Preset::from_name(&args.preset)?;
-    let (data, journal) = run_study(preset, &args.options, &args.options.base()?)?;
+    let workers = args.options.workers()?;
+    let (data, journal) = run_study(preset, &args.options, &args.options.base()?, &workers)?;
     journal.remove()?;
     for line in &data.lines {
         println!("{line}");
@@ -92,7 +99,12 @@ pub fn run(args: &StudyArgs) -> Result<()> {
 /// Run a preset on `base` and write its CSV, JSON and figures into the output folder; finished runs are kept in
 /// `OUT/.<preset>.journal` (taken from there with `--resume`), returned for the caller to remove once nothing else
 /// depends on them.
-pub fn run_study(preset: Preset, options: &StudyOptions, base: &Scenario) -> Result<(StudyData, study::Journal)> {
+pub fn run_study(
+    preset: Preset,
+    options: &StudyOptions,
+    base: &Scenario,
+    workers: &Runner<'static>,
+) -> Result<(StudyData, study::Journal)> {
     let (out, quiet) = (options.out.as_path(), options.quiet);
     let case = base.build()?;
     crate::scenario_args::print_warnings(base, &case);
@@ -111,10 +123,8 @@ pub fn run_study(preset: Preset, options: &StudyOptions, base: &Scenario) -> Res
     }
     let bar = crate::progress::bar(preset.name(), None, quiet);
     let progress = |done: usize| bar.set_position(done as u64);
-    let runner = crate::jobs::runner(options.jobs, quiet)?
-        .with_progress(&progress)
-        .with_journal(Some(&journal))
-        .with_stop(crate::interrupt::stop_flag());
+    let runner =
+        workers.clone().with_progress(&progress).with_journal(Some(&journal)).with_stop(crate::interrupt::stop_flag());
     let start = Instant::now();
     let data = crate::interrupt::explain(run_preset(preset, resolution, base, &runner), Some(&journal))?;
     let wall_time = start.elapsed().as_secs_f64();

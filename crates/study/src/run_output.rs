@@ -9,15 +9,14 @@
 //!
 //! Deflection is positive upward, the moment sagging-positive; every number in shortest round-trip form.
 
-use crate::error::{Result, StudyError};
+use crate::error::Result;
 use crate::figures::{Curves, quantity_figure};
 use crate::number::row;
 use crate::plot::PlotSpec;
 use crate::scenario::Case;
-use crate::sweep::Runner;
-use nscd::{RunResult, Simulation, Snapshot, SnapshotAt, SnapshotTaker};
+use nscd::{RunResult, Snapshot, SnapshotAt, SnapshotTaker};
 use std::fmt::Write as _;
-use std::sync::atomic::Ordering;
+use std::sync::atomic::AtomicBool;
 
 /// Columns of `histories.csv`: name and unit.
 pub const HISTORY_COLUMNS: [(&str, &str); 8] = [
@@ -36,11 +35,12 @@ pub const SNAPSHOT_COLUMNS: [(&str, &str); 5] =
     [("time", "s"), ("load_position", "m"), ("x", "m"), ("deflection", "m"), ("moment", "N·m")];
 
 /// One run with histories (the case's recorded sections) and the requested snapshots, reporting the finished
-/// fraction of steps to `progress` every 1 % and stopping at the runner's stop flag.
+/// fraction of steps to `progress` every 1 % and abandoned with [`crate::StudyError::Interrupted`] at the first step after
+/// `stop` is raised.
 pub fn run_with_snapshots(
     case: &Case,
     requests: &[SnapshotAt],
-    runner: &Runner,
+    stop: Option<&AtomicBool>,
     progress: &dyn Fn(f64),
 ) -> Result<(RunResult, Vec<Snapshot>)> {
     let settings = &case.settings;
@@ -52,16 +52,12 @@ pub fn run_with_snapshots(
     })?;
     let total = settings.step_count(case.model.mesh().length).max(1.0);
     let every = ((total / 100.0).ceil() as usize).max(1);
-    let stopped = || runner.stop.is_some_and(|s| s.load(Ordering::Relaxed));
-    let result = Simulation::new(&case.model, &case.contacts, settings)?.run_observed(&mut |view| {
+    let result = crate::sweep::simulate_observed(case, settings, stop, &mut |view| {
         if view.step % every == 0 {
             progress(view.step as f64 / total);
         }
-        taker.observe(view) && !stopped()
+        taker.observe(view)
     })?;
-    if stopped() {
-        return Err(StudyError::Interrupted);
-    }
     Ok((result, taker.finish()?))
 }
 
@@ -126,39 +122,26 @@ pub fn run_plots(result: &RunResult, snapshots: &[Snapshot], title: &str) -> Vec
     };
     let (deflection, moment) = ("deflection w (mm, upward > 0)", "bending moment M (kN·m, sagging > 0)");
     let mut plots = Vec::new();
+    // Each family as a deflection figure and a moment figure: (stem prefix, x label, the two titles, the curves).
+    let mut pair = |prefix: &str, x: &str, (what_w, what_m): (&str, &str), (w, m): (Curves, Curves)| {
+        plots.push(figure(&format!("{prefix}-deflection"), what_w, x, deflection, w));
+        plots.push(figure(&format!("{prefix}-moment"), what_m, x, moment, m));
+    };
     if !result.histories.is_empty() {
-        let x = "load position x_c (m)";
-        plots.push(figure(
-            "histories-deflection",
-            "deflection at the recorded sections",
-            x,
-            deflection,
-            by_section(&|s, k| s.deflection[k] * 1e3),
-        ));
-        plots.push(figure(
-            "histories-moment",
-            "bending moment at the recorded sections",
-            x,
-            moment,
-            by_section(&|s, k| s.moment[k] / 1e3),
-        ));
+        pair(
+            "histories",
+            "load position x_c (m)",
+            ("deflection at the recorded sections", "bending moment at the recorded sections"),
+            (by_section(&|s, k| s.deflection[k] * 1e3), by_section(&|s, k| s.moment[k] / 1e3)),
+        );
     }
     if !snapshots.is_empty() {
-        let x = "position along the beam x (m)";
-        plots.push(figure(
-            "snapshots-deflection",
-            "deflected shape",
-            x,
-            deflection,
-            by_instant(&|s, n| s.deflection[n] * 1e3),
-        ));
-        plots.push(figure(
-            "snapshots-moment",
-            "bending moment along the beam",
-            x,
-            moment,
-            by_instant(&|s, n| s.moment[n] / 1e3),
-        ));
+        pair(
+            "snapshots",
+            "position along the beam x (m)",
+            ("deflected shape", "bending moment along the beam"),
+            (by_instant(&|s, n| s.deflection[n] * 1e3), by_instant(&|s, n| s.moment[n] / 1e3)),
+        );
     }
     plots
 }

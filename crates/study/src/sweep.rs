@@ -11,6 +11,7 @@ use crate::error::{Result, StudyError, invalid};
 use crate::journal::Journal;
 use crate::number::row;
 use crate::scenario::{Case, Scenario};
+use nscd::simulation::StepView;
 use nscd::{RunResult, RunSettings, Simulation};
 use rayon::prelude::*;
 use serde::de::DeserializeOwned;
@@ -91,9 +92,19 @@ fn point_until(case: &Case, speed: f64, stop: Option<&AtomicBool>) -> Result<Swe
 /// Run `case` under `settings`, abandoned with [`StudyError::Interrupted`] at the first step after `stop` is raised
 /// (a load of one atomic flag per step), so that Ctrl-C or SIGTERM ends a long run within a step.
 fn simulate_until(case: &Case, settings: &RunSettings, stop: Option<&AtomicBool>) -> Result<RunResult> {
+    simulate_observed(case, settings, stop, &mut |_| true)
+}
+
+/// The same, with `observer` called after every step (it may stop the run early by returning false).
+pub(crate) fn simulate_observed(
+    case: &Case,
+    settings: &RunSettings,
+    stop: Option<&AtomicBool>,
+    observer: &mut dyn FnMut(&StepView<'_>) -> bool,
+) -> Result<RunResult> {
     let simulation = Simulation::new(&case.model, &case.contacts, settings)?;
     let stopped = || stop.is_some_and(|s| s.load(Ordering::Relaxed));
-    let result = simulation.run_observed(&mut |_| !stopped())?;
+    let result = simulation.run_observed(&mut |view| observer(view) && !stopped())?;
     if stopped() { Err(StudyError::Interrupted) } else { Ok(result) }
 }
 
