@@ -143,8 +143,9 @@ pub fn run_study(
         "lines": data.lines,
         "plots": data.plots.iter().map(|p| p.stem.as_str()).collect::<Vec<_>>(),
         "scenario": base,
-        "speeds": resolution.speeds(base)?,
-        "study_sets": overrides,
+        "speeds": if preset.sweeps_speed() { Some(resolution.speeds(base)?) } else { None },
+        "study_sets": preset.sets(),
+        "scenario_parts_not_used": overrides,
         "csv_columns": data.columns,
     });
     write_atomically(

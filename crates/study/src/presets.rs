@@ -139,11 +139,15 @@ impl Preset {
                 self.sets()[0].trim_start_matches("friction: ")
             ));
         }
-        let fixed_speed = !matches!(self, Preset::DiscreteSpeed | Preset::EqualCost | Preset::DistributedSpeed);
-        if fixed_speed && base.sweep.is_some() {
+        if !self.sweeps_speed() && base.sweep.is_some() {
             notes.push("the scenario's [sweep] is not used: this study runs at fixed speeds".into());
         }
         notes
+    }
+
+    /// Whether the study sweeps the load speed (the others run at fixed speeds).
+    pub fn sweeps_speed(self) -> bool {
+        matches!(self, Preset::DiscreteSpeed | Preset::EqualCost | Preset::DistributedSpeed)
     }
 
     /// A one-line title.

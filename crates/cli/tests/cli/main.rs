@@ -361,6 +361,24 @@ fn study_writes_data_metadata_and_figures() {
     assert_eq!(meta["summary"]["optima"].as_array().unwrap().len(), 4);
     assert!(meta["wall_time"].as_f64().unwrap() > 0.0);
     assert!(is_png(&dir.join("optimal-force.png")) && is_svg(&dir.join("optimal-force.svg")));
+    assert!(meta["speeds"].is_null(), "a fixed-speed study has no speed list");
+    assert_eq!(meta["csv_columns"][1], serde_json::json!(["device_force", "N"]));
+    assert!(meta["study_sets"][1].as_str().unwrap().starts_with("load.speed"));
+    assert!(meta["scenario_parts_not_used"].as_array().unwrap().is_empty());
+    // A base scenario with its own friction and [sweep]: the study says what it does not use, on stderr and in the
+    // JSON, which records the scenario as given.
+    let base = dir.join("base.toml");
+    std::fs::write(&base, "[friction.distributed]\nforce_per_length = 5e3\n[sweep]\nfrom = 100\nto = 120\nstep = 10\n")
+        .unwrap();
+    let out =
+        frictrack(&["study", "optimal-force", "--scenario", base.to_str().unwrap(), "--out", dir.to_str().unwrap()]);
+    assert!(out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("the scenario's [friction] is not used") && err.contains("[sweep] is not used"), "{err}");
+    let meta: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("optimal-force.json")).unwrap()).unwrap();
+    assert_eq!(meta["scenario_parts_not_used"].as_array().unwrap().len(), 2);
+    assert_eq!(meta["scenario"]["friction"]["distributed"]["force_per_length"], 5e3);
     let bad = frictrack(&["study", "no-such-study", "--out", dir.to_str().unwrap()]);
     assert_eq!(bad.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&bad.stderr).contains("discrete-speed"));
