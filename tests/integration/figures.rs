@@ -1,7 +1,8 @@
 //! Every figure of a study is drawn inside its frame: checked in the SVG, where each element's coordinates can be
 //! read. Curves, markers and marks must lie in the plotting area (the axes' tick marks just left of and below it)
 //! or in the legend column; every text must start and end inside the image (its width estimated at 0.62 em per
-//! character, generous for DejaVu Sans, whose average advance is ~0.55 em).
+//! character, generous for DejaVu Sans, whose average advance is ~0.55 em). The PNG's blank margins around the
+//! plotting area must stay white.
 
 use study::plot::{Layout, PlotSpec, render};
 
@@ -71,14 +72,27 @@ fn outside_elements(svg: &str, layout: &Layout) -> Vec<String> {
     bad
 }
 
-/// Render every figure of `plots` into a fresh folder and check each SVG.
+/// In the PNG, the blank margins around the plotting area — a strip above it and one between it and the legend
+/// column — must stay white: a curve leaving its frame (as plotters' widened strokes did on dense zig-zags, a
+/// bitmap-only fault) paints them. Returns the number of painted pixels.
+fn painted_margin_pixels(png: &std::path::Path, layout: &Layout) -> usize {
+    let image = image::open(png).unwrap().to_rgb8();
+    let (left, top, right, bottom) = layout.plot;
+    let above = (left..right).flat_map(|x| (top - 12..top - 2).map(move |y| (x, y)));
+    let beside = (right + 2..layout.legend.0 - 1).flat_map(|x| (top..bottom).map(move |y| (x, y)));
+    above.chain(beside).filter(|&(x, y)| image.get_pixel(x as u32, y as u32).0 != [255, 255, 255]).count()
+}
+
+/// Render every figure of `plots` into a fresh folder and check each SVG and PNG.
 pub fn assert_drawn_inside(plots: &[PlotSpec], name: &str) {
     let folder = std::env::temp_dir().join(format!("frictrack-figures-{name}-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&folder);
     std::fs::create_dir_all(&folder).unwrap();
     assert!(!plots.is_empty(), "{name}: no figure");
     for spec in plots {
-        let (_, svg, layout) = render(spec, &folder).unwrap();
+        let (png, svg, layout) = render(spec, &folder).unwrap();
+        let painted = painted_margin_pixels(&png, &layout);
+        assert_eq!(painted, 0, "{}: {painted} pixels painted in the PNG's margins", spec.stem);
         let bad = outside_elements(&std::fs::read_to_string(&svg).unwrap(), &layout);
         assert!(
             bad.is_empty(),

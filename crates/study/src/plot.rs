@@ -159,7 +159,8 @@ pub fn render(spec: &PlotSpec, folder: &Path) -> Result<(PathBuf, PathBuf, Layou
     Ok((png, svg, layout))
 }
 
-/// The data range of the figure (after the log transform of x), padded by 5 % in y.
+/// The data range of the figure (after the log transform of x), padded by 2 % in x and 5 % in y so that markers
+/// at the ends stay inside the frame.
 fn ranges(spec: &PlotSpec, tx: &dyn Fn(f64) -> f64) -> Option<((f64, f64), (f64, f64))> {
     let curves = spec.series.iter().flat_map(|s| s.points.iter());
     let marks = spec.marks.iter().map(|m| &m.point);
@@ -177,7 +178,8 @@ fn ranges(spec: &PlotSpec, tx: &dyn Fn(f64) -> f64) -> Option<((f64, f64), (f64,
         x1 = x0 + 1.0;
     }
     let pad = if y1 > y0 { 0.05 * (y1 - y0) } else { 1.0 };
-    Some(((x0, x1), (y0 - pad, y1 + pad)))
+    let x_pad = 0.02 * (x1 - x0);
+    Some(((x0 - x_pad, x1 + x_pad), (y0 - pad, y1 + pad)))
 }
 
 fn draw<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, spec: &PlotSpec) -> std::result::Result<Layout, String> {
