@@ -1,16 +1,23 @@
 //! Speed sweeps, the critical speed and the optimal device force (docs/theory.md §7).
 //!
-//! A sweep runs one simulation per speed, in parallel on a rayon pool of `jobs` threads; every run is independent and
+//! A sweep runs one simulation per speed, in parallel on the runner's one thread pool; every run is independent and
 //! deterministic and the results are returned in speed order, so the output is identical for any thread count.
 //! The critical speed is the speed of the largest max downward deflection, refined below the sweep step by a
 //! golden-section search on fresh runs inside the bracket around the sweep's maximum. The optimal device force for
 //! fixed N and speed minimises the max downward deflection: a log-spaced scan of the bounds, then golden section
 //! around the best scanned force; every evaluated force is returned with its value.
 
+mod critical;
+mod golden;
+mod optimal_force;
+
+pub use critical::{CriticalSpeed, PeakLocation, critical_speed};
+pub use optimal_force::{OptimalForce, log_spaced, optimal_device_force, refine_device_force, refine_from_scan};
+
 use crate::error::{Result, StudyError, invalid};
 use crate::journal::Journal;
 use crate::number::row;
-use crate::scenario::{Case, Scenario};
+use crate::scenario::Case;
 use nscd::simulation::StepView;
 use nscd::{RunResult, RunSettings, Simulation};
 use rayon::prelude::*;
@@ -303,246 +310,4 @@ pub fn write_csv(points: &[SweepPoint], out: &mut dyn Write) -> std::io::Result<
         )?;
     }
     Ok(())
-}
-
-/// Where the largest max downward deflection of a sweep lies in its speed range.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum PeakLocation {
-    /// Inside the range: a critical speed, refined between the sweep's neighbours of the maximum.
-    Interior,
-    /// At the lowest speed: only a bound — the peak is at or below it.
-    LowerEnd,
-    /// At the highest speed: only a bound — the peak is at or above it.
-    UpperEnd,
-}
-
-/// The refined critical speed of a configuration, or the bound the sweep gives when its maximum lies at an end of
-/// the range.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct CriticalSpeed {
-    /// Whether `speed` is a critical speed (interior maximum) or a bound (maximum at an end of the range).
-    pub location: PeakLocation,
-    /// The sweep's speed range (m/s).
-    pub range: (f64, f64),
-    /// Speed of the largest max downward deflection (m/s); at an end of the range, that end.
-    pub speed: f64,
-    /// That deflection (m).
-    pub max_downward_deflection: f64,
-    /// The sweep's own maximum (speed, deflection) before refinement.
-    pub sweep_maximum: (f64, f64),
-    /// Fresh runs of the refinement: (speed, max downward deflection).
-    pub evaluations: Vec<(f64, f64)>,
-}
-
-impl CriticalSpeed {
-    /// Whether `speed` is a critical speed rather than a bound.
-    pub fn is_interior(&self) -> bool {
-        self.location == PeakLocation::Interior
-    }
-
-    /// One sentence: the critical speed, or the bound and why.
-    pub fn describe(&self) -> String {
-        let (from, to) = self.range;
-        let peak = format!("max downward deflection {:.2} mm", self.max_downward_deflection * 1e3);
-        match self.location {
-            PeakLocation::Interior => format!(
-                "critical speed {:.2} m/s ({:.0} km/h): {peak} (sweep maximum {:.2} mm at {} m/s, {} refinement runs)",
-                self.speed,
-                self.speed * 3.6,
-                self.sweep_maximum.1 * 1e3,
-                self.sweep_maximum.0,
-                self.evaluations.len()
-            ),
-            PeakLocation::LowerEnd => format!(
-                "no interior maximum in {from}–{to} m/s: the peak is at or below {from} m/s ({peak} there); \
-                 extend the range downwards"
-            ),
-            PeakLocation::UpperEnd => format!(
-                "no interior maximum in {from}–{to} m/s: the peak is at or above {to} m/s ({peak} there); \
-                 extend the range upwards"
-            ),
-        }
-    }
-}
-
-/// Refine the sweep's maximum of the max downward deflection to `tolerance` (m/s) by golden section on fresh runs
-/// inside [v_{i−1}, v_{i+1}] around the sweep's best speed v_i. A maximum at the first or last speed is no critical
-/// speed: it is returned unrefined as a bound ([`PeakLocation::LowerEnd`] / [`PeakLocation::UpperEnd`]).
-pub fn critical_speed(case: &Case, sweep: &[SweepPoint], tolerance: f64, runner: &Runner) -> Result<CriticalSpeed> {
-    if sweep.len() < 3 {
-        return Err(invalid(
-            "speeds",
-            format!("{} speed(s)", sweep.len()),
-            "a critical speed needs a sweep of at least 3 speeds (an interior maximum)",
-        ));
-    }
-    if !(tolerance.is_finite() && tolerance > 0.0) {
-        return Err(invalid("tolerance", tolerance, "must be finite and > 0 (m/s)"));
-    }
-    let best = (0..sweep.len())
-        .max_by(|&a, &b| sweep[a].max_downward_deflection.total_cmp(&sweep[b].max_downward_deflection))
-        .expect("non-empty");
-    let sweep_maximum = (sweep[best].speed, sweep[best].max_downward_deflection);
-    let range = (sweep[0].speed, sweep[sweep.len() - 1].speed);
-    let bound = |location| CriticalSpeed {
-        location,
-        range,
-        speed: sweep_maximum.0,
-        max_downward_deflection: sweep_maximum.1,
-        sweep_maximum,
-        evaluations: Vec::new(),
-    };
-    if best == 0 {
-        return Ok(bound(PeakLocation::LowerEnd));
-    }
-    if best == sweep.len() - 1 {
-        return Ok(bound(PeakLocation::UpperEnd));
-    }
-    let lo = sweep[best.saturating_sub(1)].speed;
-    let hi = sweep[(best + 1).min(sweep.len() - 1)].speed;
-    let mut evaluations = Vec::new();
-    let mut f = |v: f64| -> Result<f64> {
-        let w = runner.point(case, v)?.max_downward_deflection;
-        evaluations.push((v, w));
-        Ok(w)
-    };
-    let (speed, value) = golden_section(&mut f, lo, hi, tolerance, true)?;
-    // The refinement never reports less than the sweep found.
-    let (speed, max_downward_deflection) = if value >= sweep_maximum.1 { (speed, value) } else { sweep_maximum };
-    Ok(CriticalSpeed {
-        location: PeakLocation::Interior,
-        range,
-        speed,
-        max_downward_deflection,
-        sweep_maximum,
-        evaluations,
-    })
-}
-
-/// The device force minimising the max downward deflection.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct OptimalForce {
-    /// F_u (N).
-    pub force: f64,
-    /// Max downward deflection there (m).
-    pub max_downward_deflection: f64,
-    /// Every evaluated (F_u, max downward deflection), in evaluation order.
-    pub explored: Vec<(f64, f64)>,
-}
-
-/// Minimise the max downward deflection of `scenario` (which must have `[friction.devices]`) over the device force
-/// in [lower, upper] (N) at `speed` (m/s): `scan` log-spaced forces, then golden section to a relative `tolerance`.
-pub fn optimal_device_force(
-    scenario: &Scenario,
-    speed: f64,
-    (lower, upper): (f64, f64),
-    scan: usize,
-    tolerance: f64,
-    runner: &Runner,
-) -> Result<OptimalForce> {
-    if scenario.friction.devices.is_none() {
-        return Err(invalid("friction.devices", "absent", "the optimal force needs [friction.devices]"));
-    }
-    if !(lower.is_finite() && lower > 0.0 && upper.is_finite() && upper > lower) {
-        return Err(invalid("force bounds", format!("{lower}:{upper}"), "need 0 < lower < upper (N)"));
-    }
-    if scan < 3 {
-        return Err(invalid("scan", scan, "needs at least 3 forces"));
-    }
-    let forces = log_spaced(lower, upper, scan);
-    let values = runner.map(&forces, |&force| {
-        Ok(runner.point(&with_device_force(scenario, force).build()?, speed)?.max_downward_deflection)
-    })?;
-    let mut explored: Vec<(f64, f64)> = forces.iter().copied().zip(values.iter().copied()).collect();
-    let mut refined = refine_from_scan(scenario, speed, &forces, &values, tolerance, runner)?;
-    explored.append(&mut refined.explored);
-    Ok(OptimalForce { explored, ..refined })
-}
-
-/// From a scan of device forces (ascending) and their max downward deflections: golden section in the bracket
-/// around the best scanned force, keeping the scanned point if the refinement finds nothing lower. `explored`
-/// holds the refinement's runs only.
-pub fn refine_from_scan(
-    scenario: &Scenario,
-    speed: f64,
-    forces: &[f64],
-    values: &[f64],
-    tolerance: f64,
-    runner: &Runner,
-) -> Result<OptimalForce> {
-    let best = (0..forces.len()).min_by(|&a, &b| values[a].total_cmp(&values[b])).expect("a non-empty scan");
-    let bracket = (forces[best.saturating_sub(1)], forces[(best + 1).min(forces.len() - 1)]);
-    let mut refined = refine_device_force(scenario, speed, bracket, tolerance, runner)?;
-    if values[best] < refined.max_downward_deflection {
-        (refined.force, refined.max_downward_deflection) = (forces[best], values[best]);
-    }
-    Ok(refined)
-}
-
-/// `scenario` with device force `force` (N).
-fn with_device_force(scenario: &Scenario, force: f64) -> Scenario {
-    let mut s = scenario.clone();
-    if let Some(d) = s.friction.devices.as_mut() {
-        d.force = Some(force);
-    }
-    s
-}
-
-/// `count` log-spaced values from `lower` to `upper` (both included).
-pub fn log_spaced(lower: f64, upper: f64, count: usize) -> Vec<f64> {
-    let ratio = (upper / lower).powf(1.0 / (count.max(2) - 1) as f64);
-    (0..count).map(|i| lower * ratio.powi(i as i32)).collect()
-}
-
-/// Golden section in log F_u on `bracket` (N) for the device force minimising the max downward deflection of
-/// `scenario` at `speed`, to a relative `tolerance` in F_u.
-pub fn refine_device_force(
-    scenario: &Scenario,
-    speed: f64,
-    (lo, hi): (f64, f64),
-    tolerance: f64,
-    runner: &Runner,
-) -> Result<OptimalForce> {
-    let mut explored = Vec::new();
-    let mut f = |log_force: f64| -> Result<f64> {
-        let force = log_force.exp();
-        let w = runner.point(&with_device_force(scenario, force).build()?, speed)?.max_downward_deflection;
-        explored.push((force, w));
-        Ok(-w)
-    };
-    let (log_force, value) = golden_section(&mut f, lo.ln(), hi.ln(), tolerance, true)?;
-    Ok(OptimalForce { force: log_force.exp(), max_downward_deflection: -value, explored })
-}
-
-/// Golden-section search for the maximum (`maximise`) of f on [a, b] to an interval width `tolerance`;
-/// returns (argmax, max) among the evaluated points.
-fn golden_section(
-    f: &mut dyn FnMut(f64) -> Result<f64>,
-    mut a: f64,
-    mut b: f64,
-    tolerance: f64,
-    maximise: bool,
-) -> Result<(f64, f64)> {
-    let sign = if maximise { 1.0 } else { -1.0 };
-    let ratio = (5f64.sqrt() - 1.0) / 2.0;
-    let mut c = b - ratio * (b - a);
-    let mut d = a + ratio * (b - a);
-    let (mut fc, mut fd) = (sign * f(c)?, sign * f(d)?);
-    while (b - a).abs() > tolerance {
-        if fc >= fd {
-            b = d;
-            d = c;
-            fd = fc;
-            c = b - ratio * (b - a);
-            fc = sign * f(c)?;
-        } else {
-            a = c;
-            c = d;
-            fc = fd;
-            d = a + ratio * (b - a);
-            fd = sign * f(d)?;
-        }
-    }
-    Ok(if fc >= fd { (c, sign * fc) } else { (d, sign * fd) })
 }

@@ -1,0 +1,82 @@
+//! Study 5: dynamic amplification at mid-span, φ_w(τ) = w/w_sta and φ_M(τ) = M/M_sta, at ¼, ½, ¾ and 1 × v_cr for
+//! f_u ∈ {1, 2} kN/m (docs/theory.md §6–§7).
+
+use super::{StudyData, blank, with_distributed};
+use crate::error::Result;
+use crate::figures::quantity_figure;
+use crate::metrics::{amplification, static_midspan};
+use crate::number::row;
+use crate::scenario::Scenario;
+use crate::speeds::SpeedScale;
+use crate::sweep::Runner;
+use serde_json::json;
+use std::fmt::Write as _;
+
+pub(super) fn study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
+    let reference = static_midspan(&with_distributed(base, 0.0).build()?)?;
+    let scale = SpeedScale::of(base)?;
+    let speeds = [(0.25, 50.0), (0.5, 100.0), (0.75, 150.0), (1.0, 200.0)].map(|(f, v)| scale.fraction(f, v));
+    let combos: Vec<(f64, f64)> = [1e3, 2e3].into_iter().flat_map(|f| speeds.map(|v| (f, v))).collect();
+    let results = runner.map(&combos, |&(f, v)| {
+        let mut s = with_distributed(base, f);
+        s.load.speed = v;
+        s.output.sections = vec![s.mesh.length / 2.0];
+        let case = s.build()?;
+        let samples = runner.cached(&format!("{:016x}@{v}/midspan-amplification", case.fingerprint), || {
+            let r = runner.simulate(&case, &case.settings)?;
+            Ok(amplification(&r.histories[0], reference, case.model.mesh().length))
+        })?;
+        Ok((f, v, samples))
+    })?;
+    let mut csv = String::from("force_per_length,speed,tau,phi_w,phi_m\n");
+    let mut items = Vec::new();
+    let mut lines = Vec::new();
+    for (f, v, samples) in &results {
+        for a in samples {
+            let _ = writeln!(csv, "{}", row(&[*f, *v, a.tau, a.deflection, a.moment]));
+        }
+        let max_w = samples.iter().fold(f64::NEG_INFINITY, |m, a| m.max(a.deflection));
+        let max_m = samples.iter().fold(f64::NEG_INFINITY, |m, a| m.max(a.moment));
+        items.push(json!({ "force_per_length": f, "speed": v, "max_phi_w": max_w, "max_phi_m": max_m }));
+        lines.push(format!("f_u = {:.0} kN/m, v = {v} m/s: max φ_w {max_w:.3}, max φ_M {max_m:.3}", f / 1e3));
+    }
+    let subtitle = format!(
+        "w_sta = {:.2} mm, M_sta = {:.2} kN·m: mid-span static deflection and moment, load at mid-span, no friction",
+        reference.deflection.abs() * 1e3,
+        reference.moment.abs() / 1e3
+    );
+    let mut plots = Vec::new();
+    for (f, kn) in [(1e3, 1), (2e3, 2)] {
+        for (which, symbol, value) in [
+            (
+                "deflection",
+                "φ_w = w/w_sta",
+                (|a: &crate::metrics::Amplification| a.deflection) as fn(&crate::metrics::Amplification) -> f64,
+            ),
+            ("moment", "φ_M = M/M_sta", |a| a.moment),
+        ] {
+            // Fastest first, so that the slower, smaller curves are drawn on top and stay visible.
+            let curves = results
+                .iter()
+                .enumerate()
+                .filter(|(_, (ff, _, _))| *ff == f)
+                .rev()
+                .map(|(i, (_, v, samples))| {
+                    let points = samples.iter().map(|a| (a.tau, value(a))).collect();
+                    (format!("v = {v} m/s"), 1 + i % speeds.len(), points)
+                })
+                .collect();
+            let mut plot = quantity_figure(
+                &format!("amplification-{which}-{kn}kN"),
+                &format!("Mid-span {which} amplification, f_u = {kn} kN/m"),
+                "load position τ = x_c/L (-)",
+                &format!("{symbol} (-)"),
+                curves,
+                false,
+            );
+            plot.subtitle = subtitle.clone();
+            plots.push(plot);
+        }
+    }
+    Ok(StudyData { csv, summary: json!({ "curves": items }), lines, plots, ..blank(results.len()) })
+}

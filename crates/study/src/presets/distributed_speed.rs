@@ -1,0 +1,48 @@
+//! Study 4: the critical speed with distributed friction f_u ∈ {0, 1, 2, 5, 10} kN/m: max deflections, W̄ and
+//! dissipated energy vs speed (docs/theory.md §7).
+
+use super::curves::curves_study;
+use super::{Resolution, StudyData, with_distributed};
+use crate::error::Result;
+use crate::scenario::Scenario;
+use crate::sweep::Runner;
+
+pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) -> Result<StudyData> {
+    let scenarios = [0.0, 1e3, 2e3, 5e3, 10e3]
+        .into_iter()
+        .map(|f| (vec![("force_per_length".into(), f)], with_distributed(base, f)))
+        .collect();
+    curves_study(scenarios, &resolution.speeds(base)?, runner, &|curves| {
+        let legend = |c: usize| match c {
+            0 => "no friction".to_string(),
+            _ => format!("f_u = {} kN/m", [0, 1, 2, 5, 10][c]),
+        };
+        // f_u = 0 is "no friction", black as in every study; 1–10 kN/m take the next colours in order.
+        let color = |c: usize| c;
+        vec![
+            curves.deflection_plot(
+                "distributed-speed-deflection",
+                "Distributed friction: max deflection vs speed",
+                &(0..5).collect::<Vec<_>>(),
+                &legend,
+                &color,
+            ),
+            curves.quantity_plot(
+                "distributed-speed-global-norm",
+                "Distributed friction: global norm vs speed",
+                "global norm (1/t_on)∫∫|w| dx dt (m²)",
+                |q| q.global_norm,
+                &legend,
+                &color,
+            ),
+            curves.quantity_plot(
+                "distributed-speed-dissipated",
+                "Distributed friction: dissipated energy vs speed",
+                "energy dissipated by friction and damping (kJ)",
+                |q| q.dissipated_energy / 1e3,
+                &legend,
+                &color,
+            ),
+        ]
+    })
+}

@@ -1,0 +1,39 @@
+//! Study 2: equal-cost device solutions, N·F_u ∈ {3100, 1550, 310} kN shared by N ∈ {31, 15, 7, 3}
+//! (docs/theory.md §7).
+
+use super::curves::curves_study;
+use super::{Resolution, StudyData, with_devices};
+use crate::error::Result;
+use crate::figures::device_color;
+use crate::scenario::Scenario;
+use crate::sweep::Runner;
+
+pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) -> Result<StudyData> {
+    let mut scenarios = Vec::new();
+    for cost in [3100e3, 1550e3, 310e3] {
+        for count in [31usize, 15, 7, 3] {
+            let force = cost / count as f64;
+            let labels = vec![("cost".into(), cost), ("devices".into(), count as f64), ("device_force".into(), force)];
+            scenarios.push((labels, with_devices(base, count, force)));
+        }
+    }
+    curves_study(scenarios, &resolution.speeds(base)?, runner, &|curves| {
+        [3100, 1550, 310]
+            .iter()
+            .enumerate()
+            .map(|(i, cost)| {
+                let legend = |c: usize| {
+                    let n = [31, 15, 7, 3][c % 4];
+                    format!("N = {n}, F_u = {:.1} kN", f64::from(*cost) / f64::from(n))
+                };
+                curves.deflection_plot(
+                    &format!("equal-cost-{cost}kN"),
+                    &format!("Equal cost N·F_u = {cost} kN: max deflection vs speed"),
+                    &((4 * i)..(4 * i + 4)).collect::<Vec<_>>(),
+                    &legend,
+                    &|c| device_color([31, 15, 7, 3][c % 4]),
+                )
+            })
+            .collect()
+    })
+}

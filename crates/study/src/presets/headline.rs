@@ -1,0 +1,125 @@
+//! The two sentences on what each study shows, for `reproduce`'s report, from its summary.
+
+use super::Preset;
+use serde_json::Value;
+
+fn number(v: &Value, key: &str) -> f64 {
+    v.get(key).and_then(Value::as_f64).unwrap_or(f64::NAN)
+}
+
+/// Two sentences on what a study shows, from its summary.
+pub(super) fn headline(preset: Preset, summary: &Value) -> Vec<String> {
+    let empty = Vec::new();
+    let items = summary.get("curves").or_else(|| summary.get("optima")).and_then(Value::as_array).unwrap_or(&empty);
+    let find = |pred: &dyn Fn(&Value) -> bool| items.iter().find(|v| pred(v)).cloned().unwrap_or(Value::Null);
+    let curve_text = |v: &Value| {
+        let (speed, peak) = (number(v, "critical_speed"), 1e3 * number(v, "peak_max_downward_deflection"));
+        match v.get("critical_speed_location").and_then(Value::as_str) {
+            Some("upper-end") => format!("at or above {speed:.1} m/s, the top of the range (peak there {peak:.0} mm)"),
+            Some("lower-end") => {
+                format!("at or below {speed:.1} m/s, the bottom of the range (peak there {peak:.0} mm)")
+            }
+            _ => format!("{speed:.1} m/s with a peak of {peak:.0} mm"),
+        }
+    };
+    match preset {
+        Preset::DiscreteSpeed => {
+            let none = find(&|v| number(v, "devices") == 0.0);
+            let best = items
+                .iter()
+                .min_by(|a, b| {
+                    number(a, "peak_max_downward_deflection").total_cmp(&number(b, "peak_max_downward_deflection"))
+                })
+                .cloned()
+                .unwrap_or(Value::Null);
+            let cut =
+                1.0 - number(&best, "peak_max_downward_deflection") / number(&none, "peak_max_downward_deflection");
+            vec![
+                format!("Without friction the track's critical speed is {}.", curve_text(&none)),
+                format!(
+                    "The best set, {} devices of {:.0} kN, cuts that peak by {:.0} % (critical speed {}).",
+                    number(&best, "devices"),
+                    number(&best, "device_force") / 1e3,
+                    100.0 * cut,
+                    curve_text(&best)
+                ),
+            ]
+        }
+        Preset::EqualCost => {
+            let mut text = Vec::new();
+            for cost in [3100e3, 1550e3, 310e3] {
+                let group: Vec<&Value> = items.iter().filter(|v| number(v, "cost") == cost).collect();
+                let best = group.iter().min_by(|a, b| {
+                    number(a, "peak_max_downward_deflection").total_cmp(&number(b, "peak_max_downward_deflection"))
+                });
+                if let Some(b) = best {
+                    text.push(format!(
+                        "{:.0} kN: {} × {:.0} kN (peak {:.0} mm)",
+                        cost / 1e3,
+                        number(b, "devices"),
+                        number(b, "device_force") / 1e3,
+                        1e3 * number(b, "peak_max_downward_deflection")
+                    ));
+                }
+            }
+            vec![
+                "For a given total friction capacity N·F_u, the lowest resonance peak comes from:".into(),
+                format!("{}.", text.join("; ")),
+            ]
+        }
+        Preset::OptimalForce => {
+            let text: Vec<String> = items
+                .iter()
+                .map(|v| {
+                    format!(
+                        "N = {}: {:.0} kN ({:.0} mm)",
+                        number(v, "devices"),
+                        number(v, "optimal_device_force") / 1e3,
+                        1e3 * number(v, "max_downward_deflection")
+                    )
+                })
+                .collect();
+            vec![
+                format!(
+                    "At {} m/s the max downward deflection is smallest for an intermediate device force:",
+                    number(summary, "speed")
+                ),
+                format!("{}.", text.join("; ")),
+            ]
+        }
+        Preset::DistributedSpeed => {
+            let none = find(&|v| number(v, "force_per_length") == 0.0);
+            let strong = find(&|v| number(v, "force_per_length") == 10e3);
+            vec![
+                format!("Without ballast friction the critical speed is {}.", curve_text(&none)),
+                format!("With f_u = 10 kN/m it is {}.", curve_text(&strong)),
+            ]
+        }
+        Preset::Amplification => {
+            let top = items.iter().map(|v| number(v, "speed")).fold(0.0, f64::max);
+            let at = |f: f64| find(&|v| number(v, "force_per_length") == f && number(v, "speed") == top);
+            vec![
+                "Mid-span amplification grows with speed towards the critical speed.".into(),
+                format!(
+                    "At {top} m/s: max φ_w {:.2} and φ_M {:.2} with f_u = 1 kN/m, {:.2} and {:.2} with 2 kN/m.",
+                    number(&at(1e3), "max_phi_w"),
+                    number(&at(1e3), "max_phi_m"),
+                    number(&at(2e3), "max_phi_w"),
+                    number(&at(2e3), "max_phi_m")
+                ),
+            ]
+        }
+        Preset::DiscreteVsDistributed => vec![
+            format!(
+                "With equal capacity, 199 devices of 1 kN and f_u = 0.995 kN/m give mid-span histories within {:.2} mm of each other on a {:.1} mm peak.",
+                1e3 * number(summary, "max_history_gap"),
+                1e3 * number(summary, "peak_midspan_deflection")
+            ),
+            format!(
+                "They dissipate {:.0} J and {:.0} J.",
+                number(summary, "dissipated_devices"),
+                number(summary, "dissipated_distributed")
+            ),
+        ],
+    }
+}

@@ -1,0 +1,276 @@
+//! The six studies of docs/theory.md §7 as named presets. Each returns its data as CSV (long format, one row per point,
+//! SI units), a JSON summary (critical speeds, peaks, optimal forces) and a few human-readable summary lines.
+//! All runs of a study share one rayon pool; results do not depend on the thread count.
+//!
+//! One file per study; [`curves`] holds the families of speed sweeps that three of them share, [`headline`] the
+//! two sentences of each study's report section.
+
+mod amplification;
+mod curves;
+mod discrete_speed;
+mod discrete_vs_distributed;
+mod distributed_speed;
+mod equal_cost;
+mod headline;
+mod optimal_force;
+
+use crate::error::{Result, invalid};
+use crate::plot::PlotSpec;
+use crate::scenario::{DevicesSection, DistributedSection, Scenario};
+use crate::speeds::SpeedScale;
+use crate::sweep::{Runner, SweepPoint};
+use serde::Serialize;
+use serde_json::Value;
+
+/// The studies of docs/theory.md §7.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Preset {
+    /// 1. Critical speed with discrete devices: N ∈ {3, 7, 15, 31}, F_u ∈ {10, 50, 100} kN, and no friction.
+    DiscreteSpeed,
+    /// 2. Equal-cost solutions: N·F_u ∈ {3100, 1550, 310} kN for N ∈ {31, 15, 7, 3}.
+    EqualCost,
+    /// 3. Optimal device force at 206 m/s for N ∈ {3, 7, 15, 31}.
+    OptimalForce,
+    /// 4. Critical speed with distributed friction f_u ∈ {0, 1, 2, 5, 10} kN/m.
+    DistributedSpeed,
+    /// 5. Dynamic amplification at mid-span for v ∈ {50, 100, 150, 200} m/s, f_u ∈ {1, 2} kN/m.
+    Amplification,
+    /// 6. 199 devices of 1 kN against f_u = 0.995 kN/m at 150 m/s: mid-span histories.
+    DiscreteVsDistributed,
+}
+
+/// How finely the studies sample speeds and forces.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Resolution {
+    /// 10–290 m/s by 20 m/s, 9 forces per decade-scan: quick, for tests and previews.
+    Coarse,
+    /// 10–300 m/s by 1 m/s, 41 forces: the paper's curves.
+    Paper,
+}
+
+impl Resolution {
+    /// The speeds of a study on `base`: its `[sweep]` as given, whatever the resolution; otherwise the default
+    /// range around the case's critical speed ([`SpeedScale::default_range`], 10–300 m/s by 10 for the reference
+    /// case) sampled every second step (coarse: 10–290 m/s by 20) or every tenth of a step (paper: 1 m/s).
+    pub fn speeds(self, base: &Scenario) -> Result<Vec<f64>> {
+        if let Some(sweep) = &base.sweep {
+            return Ok(sweep.speeds());
+        }
+        let range = SpeedScale::of(base)?.default_range();
+        let step = match self {
+            Resolution::Coarse => 2.0 * range.step,
+            Resolution::Paper => 0.1 * range.step,
+        };
+        let count = ((range.to - range.from) / step + 1e-9).floor() as usize + 1;
+        Ok((0..count).map(|i| range.from + i as f64 * step).collect())
+    }
+
+    fn forces(self) -> usize {
+        match self {
+            Resolution::Coarse => 9,
+            Resolution::Paper => 41,
+        }
+    }
+
+    /// Name on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            Resolution::Coarse => "coarse",
+            Resolution::Paper => "paper",
+        }
+    }
+}
+
+impl Preset {
+    /// All six, in docs/theory.md order.
+    pub const ALL: [Preset; 6] = [
+        Preset::DiscreteSpeed,
+        Preset::EqualCost,
+        Preset::OptimalForce,
+        Preset::DistributedSpeed,
+        Preset::Amplification,
+        Preset::DiscreteVsDistributed,
+    ];
+
+    /// Name on the command line and of the output files.
+    pub fn name(self) -> &'static str {
+        match self {
+            Preset::DiscreteSpeed => "discrete-speed",
+            Preset::EqualCost => "equal-cost",
+            Preset::OptimalForce => "optimal-force",
+            Preset::DistributedSpeed => "distributed-speed",
+            Preset::Amplification => "amplification",
+            Preset::DiscreteVsDistributed => "discrete-vs-distributed",
+        }
+    }
+
+    /// The preset called `name`.
+    pub fn from_name(name: &str) -> Result<Self> {
+        Self::ALL.into_iter().find(|p| p.name() == name).ok_or_else(|| {
+            let names: Vec<&str> = Self::ALL.iter().map(|p| p.name()).collect();
+            invalid("preset", name, format!("must be one of {}", names.join(", ")))
+        })
+    }
+
+    /// What the study sets itself on top of the base scenario (the friction set-ups it compares, the speeds of
+    /// fixed-speed studies, the recorded section).
+    pub fn sets(self) -> &'static [&'static str] {
+        match self {
+            Preset::DiscreteSpeed => &["friction: none, and N ∈ {3, 7, 15, 31} devices of F_u ∈ {10, 50, 100} kN"],
+            Preset::EqualCost => &["friction: N·F_u ∈ {3100, 1550, 310} kN shared by N ∈ {31, 15, 7, 3} devices"],
+            Preset::OptimalForce => &[
+                "friction: N ∈ {3, 7, 15, 31} devices, F_u scanned over 1 kN–10 MN",
+                "load.speed: the critical speed v_cr rounded (206 m/s for the reference case)",
+            ],
+            Preset::DistributedSpeed => &["friction: distributed f_u ∈ {0, 1, 2, 5, 10} kN/m, no devices"],
+            Preset::Amplification => &[
+                "friction: distributed f_u ∈ {1, 2} kN/m, no devices",
+                "load.speed: ¼, ½, ¾ and 1 × v_cr rounded (50, 100, 150, 200 m/s for the reference case)",
+                "output.sections: mid-span",
+            ],
+            Preset::DiscreteVsDistributed => &[
+                "friction: 199 devices of 1 kN, and distributed 0.995 kN/m",
+                "load.speed: ¾ v_cr rounded (150 m/s for the reference case)",
+                "output.sections: mid-span",
+            ],
+        }
+    }
+
+    /// The parts of `base` that this study replaces with its own (see [`Preset::sets`]), one sentence each; empty
+    /// when the base scenario leaves them at their defaults.
+    pub fn overrides(self, base: &Scenario) -> Vec<String> {
+        let mut notes = Vec::new();
+        let f = &base.friction;
+        if f.devices.is_some() || f.distributed.is_some() {
+            notes.push(format!(
+                "the scenario's [friction] is not used: the study compares its own set-ups ({})",
+                self.sets()[0].trim_start_matches("friction: ")
+            ));
+        }
+        if !self.sweeps_speed() && base.sweep.is_some() {
+            notes.push("the scenario's [sweep] is not used: this study runs at fixed speeds".into());
+        }
+        notes
+    }
+
+    /// Whether the study sweeps the load speed (the others run at fixed speeds).
+    pub fn sweeps_speed(self) -> bool {
+        matches!(self, Preset::DiscreteSpeed | Preset::EqualCost | Preset::DistributedSpeed)
+    }
+
+    /// A one-line title.
+    pub fn title(self) -> &'static str {
+        match self {
+            Preset::DiscreteSpeed => "Critical speed with discrete friction devices",
+            Preset::EqualCost => "Equal-cost device solutions (N·F_u constant)",
+            Preset::OptimalForce => "Optimal device force at 206 m/s",
+            Preset::DistributedSpeed => "Critical speed with distributed friction",
+            Preset::Amplification => "Dynamic amplification at mid-span",
+            Preset::DiscreteVsDistributed => "199 devices × 1 kN against 0.995 kN/m distributed friction",
+        }
+    }
+}
+
+/// What a study produces.
+#[derive(Debug, Clone, Serialize)]
+pub struct StudyData {
+    /// Preset name.
+    pub name: &'static str,
+    /// Title.
+    pub title: &'static str,
+    /// Resolution name.
+    pub resolution: &'static str,
+    /// The data, CSV with a header line.
+    #[serde(skip)]
+    pub csv: String,
+    /// Machine-readable summary (critical speeds, peaks, optimal forces…).
+    pub summary: Value,
+    /// Human-readable summary lines, one per curve or case.
+    pub lines: Vec<String>,
+    /// Two sentences saying what the study shows, for reports.
+    pub headline: Vec<String>,
+    /// The figures.
+    pub plots: Vec<PlotSpec>,
+    /// Number of simulations run.
+    pub runs: usize,
+    /// Mean friction-solver iterations per step over the study's sweep runs (solver statistics).
+    pub mean_iterations: f64,
+    /// The CSV's columns with their units, in order.
+    pub columns: Vec<(String, &'static str)>,
+}
+
+/// The unit of a column of a study's CSV (SI; "1" for counts and ratios).
+fn unit_of(column: &str) -> &'static str {
+    match column {
+        "speed" => "m/s",
+        "device_force" | "cost" => "N",
+        "force_per_length" => "N/m",
+        "dissipated_energy" => "J",
+        "global_norm" => "m²",
+        "time" => "s",
+        "impulse" => "N·s",
+        "model" => "text",
+        "devices" | "tau" | "phi_w" | "phi_m" => "1",
+        _ => "m",
+    }
+}
+
+/// Run `preset` on top of `base` (normally the reference case).
+pub fn run_preset(preset: Preset, resolution: Resolution, base: &Scenario, runner: &Runner) -> Result<StudyData> {
+    let data = match preset {
+        Preset::DiscreteSpeed => discrete_speed::study(resolution, base, runner)?,
+        Preset::EqualCost => equal_cost::study(resolution, base, runner)?,
+        Preset::OptimalForce => optimal_force::study(resolution, base, runner)?,
+        Preset::DistributedSpeed => distributed_speed::study(resolution, base, runner)?,
+        Preset::Amplification => amplification::study(base, runner)?,
+        Preset::DiscreteVsDistributed => discrete_vs_distributed::study(base, runner)?,
+    };
+    let headline = headline::headline(preset, &data.summary);
+    let header = data.csv.lines().next().unwrap_or_default();
+    let columns = header.split(',').map(|c| (c.to_string(), unit_of(c))).collect();
+    Ok(StudyData {
+        columns,
+        name: preset.name(),
+        title: preset.title(),
+        resolution: resolution.name(),
+        headline,
+        ..data
+    })
+}
+
+pub(super) fn with_devices(base: &Scenario, count: usize, force: f64) -> Scenario {
+    let mut s = base.clone();
+    s.friction.devices =
+        (count > 0).then_some(DevicesSection { count: Some(count), positions: None, force: Some(force) });
+    s.friction.distributed = None;
+    s
+}
+
+pub(super) fn with_distributed(base: &Scenario, force_per_length: f64) -> Scenario {
+    let mut s = base.clone();
+    s.friction.devices = None;
+    s.friction.distributed =
+        (force_per_length > 0.0).then(|| DistributedSection { force_per_length, ..DistributedSection::default() });
+    s
+}
+
+pub(super) fn blank(runs: usize) -> StudyData {
+    StudyData {
+        name: "",
+        title: "",
+        resolution: "",
+        csv: String::new(),
+        summary: Value::Null,
+        lines: Vec::new(),
+        headline: Vec::new(),
+        plots: Vec::new(),
+        runs,
+        mean_iterations: 0.0,
+        columns: Vec::new(),
+    }
+}
+
+pub(super) fn mean_iterations<'a>(points: impl Iterator<Item = &'a SweepPoint>) -> f64 {
+    let (sum, count) = points.fold((0.0, 0usize), |(s, c), p| (s + p.mean_iterations, c + 1));
+    if count > 0 { sum / count as f64 } else { 0.0 }
+}

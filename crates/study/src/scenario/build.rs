@@ -1,0 +1,251 @@
+//! From a scenario's sections to what the stepper runs: the beam model, the friction sections and the run
+//! settings, every value checked on the way and errors renamed to their dotted path in the file.
+
+use super::{Case, QuadratureKind, Scenario, SweepSection, fnv1a};
+use crate::error::{Result, StudyError, invalid};
+use fem_beam::{AbsorbingZones, BeamModel, Foundation, Mesh, Supports};
+use friction::{ContactSet, DeviceLayout, Devices, DistributedFriction, Quadrature};
+use nscd::{InitialState, RunSettings};
+
+fn finite_positive(path: &str, value: f64, unit: &str) -> Result<()> {
+    if value.is_finite() && value > 0.0 {
+        Ok(())
+    } else {
+        Err(invalid(path, value, format!("must be finite and > 0 ({unit})")))
+    }
+}
+
+fn finite_non_negative(path: &str, value: f64, unit: &str) -> Result<()> {
+    if value.is_finite() && value >= 0.0 {
+        Ok(())
+    } else {
+        Err(invalid(path, value, format!("must be finite and ≥ 0 ({unit})")))
+    }
+}
+
+impl Scenario {
+    /// Check every value that the lower layers do not already name by its path.
+    pub fn validate(&self) -> Result<()> {
+        self.build().map(|_| ())
+    }
+
+    /// The assembled beam model (beam, mesh, foundation with its damping and absorbing zones, supports), checked;
+    /// refuses degenerate meshes and mechanisms ([`crate::diagnostics::refuse_degenerate`]).
+    pub fn model(&self) -> Result<BeamModel> {
+        let beam = self.beam.beam();
+        beam.validate()?;
+        let mesh = Mesh::new(self.mesh.length, self.mesh.elements)?;
+        let f = &self.foundation;
+        let mut foundation = Foundation { stiffness: f.stiffness, damping: 0.0 };
+        foundation.validate()?;
+        match (f.damping, f.damping_ratio) {
+            (Some(_), Some(ratio)) => {
+                return Err(invalid(
+                    "foundation.damping_ratio",
+                    ratio,
+                    "give foundation.damping or damping_ratio, not both",
+                ));
+            }
+            (Some(c), None) => {
+                finite_non_negative("foundation.damping", c, "N·s/m²")?;
+                foundation.damping = c;
+            }
+            (None, Some(ratio)) => {
+                finite_non_negative("foundation.damping_ratio", ratio, "ratio of c_cr")?;
+                foundation = foundation.with_damping_ratio(ratio, &beam)?;
+            }
+            (None, None) => {}
+        }
+        let supports = Supports { left: self.supports.left.into(), right: self.supports.right.into() };
+        let damping = match &f.absorbing_zones {
+            Some(z) => {
+                finite_positive("foundation.absorbing_zones.length", z.length, "m")?;
+                finite_non_negative("foundation.absorbing_zones.peak_ratio", z.peak_ratio, "ratio of c_cr")?;
+                let zones = AbsorbingZones {
+                    length: z.length,
+                    peak_damping: z.peak_ratio * foundation.critical_damping(&beam),
+                };
+                zones.element_damping(&mesh, foundation.damping).map_err(|e| under("foundation", e.into()))?
+            }
+            None => vec![foundation.damping; mesh.elements],
+        };
+        let model = BeamModel::with_element_damping(beam, foundation, mesh, supports, damping)?;
+        crate::diagnostics::refuse_degenerate(&model)?;
+        Ok(model)
+    }
+
+    /// Build the model, contact set and run settings, checking every value on the way.
+    pub fn build(&self) -> Result<Case> {
+        let model = self.model()?;
+        let contacts = self.contacts(&model).map_err(|e| under("friction", e))?;
+        finite_non_negative("load.force", self.load.force, "N")?;
+        finite_positive("load.speed", self.load.speed, "m/s")?;
+        if let Some([a, b]) = self.output.extremes_window {
+            let length = model.mesh().length;
+            if !(a.is_finite() && b.is_finite() && 0.0 <= a && a < b && b <= length) {
+                return Err(invalid(
+                    "output.extremes_window",
+                    format!("[{a}, {b}]"),
+                    format!("needs load positions 0 ≤ A < B ≤ L = {length} m"),
+                ));
+            }
+        }
+        let settings = self.run_settings(self.load.speed);
+        settings.validate(&model).map_err(scenario_path)?;
+        if let Some(sweep) = &self.sweep {
+            sweep.validate("sweep")?;
+        }
+        Ok(Case { model, contacts, settings, fingerprint: self.fingerprint() })
+    }
+
+    /// See [`Case::fingerprint`].
+    pub fn fingerprint(&self) -> u64 {
+        let mut physics = self.clone();
+        physics.title.clear();
+        physics.load.speed = 0.0;
+        physics.output.sections.clear();
+        physics.output.snapshot_times.clear();
+        physics.output.snapshot_load_positions.clear();
+        physics.sweep = None;
+        fnv1a(
+            format!("frictrack {} results {RESULT_FORMAT}\n{}", env!("CARGO_PKG_VERSION"), physics.to_toml())
+                .as_bytes(),
+        )
+    }
+
+    /// The scenario's beam, foundation (with its damping), mesh, supports and load force as the closed-form
+    /// reference case (`frictrack reference` and `analytic` on a scenario).
+    pub fn reference_case(&self) -> Result<fem_beam::reference::ReferenceCase> {
+        finite_non_negative("load.force", self.load.force, "N")?;
+        let model = self.model()?;
+        Ok(fem_beam::reference::ReferenceCase {
+            beam: *model.beam(),
+            foundation: *model.foundation(),
+            mesh: *model.mesh(),
+            supports: model.supports(),
+            load: self.load.force,
+        })
+    }
+
+    /// The speeds of a sweep: `[sweep]` if given, else the default range around the critical speed.
+    pub fn speed_range(&self) -> Result<SweepSection> {
+        match &self.sweep {
+            Some(sweep) => Ok(sweep.clone()),
+            None => Ok(crate::speeds::SpeedScale::of(self)?.default_range()),
+        }
+    }
+
+    fn contacts(&self, model: &BeamModel) -> Result<ContactSet> {
+        let mut contacts = ContactSet::new();
+        if let Some(d) = &self.friction.devices {
+            let layout = match (d.count, &d.positions) {
+                (Some(count), None) => DeviceLayout::Uniform { count },
+                (None, Some(positions)) => {
+                    if let Some(&x) =
+                        positions.iter().find(|x| !(x.is_finite() && (0.0..=model.mesh().length).contains(*x)))
+                    {
+                        return Err(invalid("friction.devices.positions", x, "every position must lie on the beam"));
+                    }
+                    DeviceLayout::Positions(positions.clone())
+                }
+                (Some(count), Some(_)) => {
+                    return Err(invalid(
+                        "friction.devices.count",
+                        count,
+                        "give friction.devices.count or positions, not both",
+                    ));
+                }
+                (None, None) => return Err(invalid("friction.devices", "{}", "give count or positions")),
+            };
+            // The layout's own checks (e.g. the count against the mesh) come first, then the force.
+            let mut devices = Devices { layout, force: 0.0 };
+            devices.validate(model)?;
+            devices.force = d.force.ok_or_else(|| {
+                invalid("friction.devices.force", "missing", "give the maximal force of one device F_u (N)")
+            })?;
+            finite_non_negative("friction.devices.force", devices.force, "N")?;
+            contacts.extend(devices.contact_set(model)?);
+        }
+        if let Some(d) = &self.friction.distributed {
+            let quadrature = match d.quadrature {
+                QuadratureKind::Trapezoid => Quadrature::Trapezoid,
+                QuadratureKind::Simpson => Quadrature::Simpson,
+            };
+            let distributed =
+                DistributedFriction { force_per_length: d.force_per_length, subdivisions: d.subdivisions, quadrature };
+            contacts.extend(distributed.contact_set(model)?);
+        }
+        Ok(contacts)
+    }
+
+    /// Run settings for a load speed `speed` (m/s), not yet validated (see [`Scenario::build`]).
+    pub fn run_settings(&self, speed: f64) -> RunSettings {
+        let i = &self.integration;
+        let mut settings = RunSettings {
+            speed,
+            load: self.load.force,
+            theta: i.theta,
+            load_advance: i.load_advance,
+            end_time: i.end_time,
+            record_sections: self.output.sections.clone(),
+            extremes_window: Some(self.output.extremes_window(self.mesh.length)),
+            ..RunSettings::default()
+        };
+        settings.solver.kind = i.solver.into();
+        settings.solver.tolerance = i.tolerance;
+        settings.solver.max_iterations = i.max_iterations;
+        settings.solver.moving_window = i.moving_window;
+        if let Some(position) = i.steady_start {
+            settings.initial = InitialState::SteadyState { position };
+        }
+        settings
+    }
+}
+
+/// A field error of a lower layer, whose name is relative to the scenario section `section` (e.g. `devices.count` in
+/// `[friction]`), renamed to its full path; other errors unchanged.
+fn under(section: &str, error: StudyError) -> StudyError {
+    use fem_beam::FemError as F;
+    use friction::FrictionError as R;
+    match error {
+        StudyError::Friction(R::InvalidField { field, value, allowed }) => {
+            invalid(&format!("{section}.{field}"), value, allowed)
+        }
+        StudyError::Friction(R::InvalidCount { field, value, allowed }) => {
+            invalid(&format!("{section}.{field}"), value, allowed)
+        }
+        StudyError::Beam(F::InvalidField { field, value, allowed }) => {
+            invalid(&format!("{section}.{field}"), value, allowed)
+        }
+        StudyError::Beam(F::InvalidCount { field, value, allowed }) => {
+            invalid(&format!("{section}.{field}"), value, allowed)
+        }
+        other => other,
+    }
+}
+
+/// Rename a run-setting error's field to its path in the scenario file.
+fn scenario_path(error: nscd::NscdError) -> StudyError {
+    match error {
+        nscd::NscdError::InvalidField { field, value, allowed } => {
+            let path = match field {
+                "speed" => "load.speed",
+                "load" => "load.force",
+                "load_advance" => "integration.load_advance",
+                "integration.step" => "integration.load_advance",
+                "solver.tolerance" => "integration.tolerance",
+                "solver.max_iterations" => "integration.max_iterations",
+                "initial.position" => "integration.steady_start",
+                "end_time" => "integration.end_time",
+                "record_sections" => "output.sections",
+                other => other,
+            };
+            invalid(path, value, allowed)
+        }
+        other => other.into(),
+    }
+}
+
+/// Version of what a run reports ([`crate::SweepPoint`]'s fields), part of every fingerprint so that journals of
+/// an older format are never read back as results of this one.
+const RESULT_FORMAT: u32 = 2;

@@ -1,0 +1,99 @@
+//! The scenario file: everything docs/theory.md describes, in TOML, every key optional (defaults = the reference case of
+//! docs/theory.md §2). Unknown keys are errors. [`Scenario::build`] turns it into the beam model, the contact set and the
+//! run settings; [`Scenario::validate`] names the offending key by its dotted path.
+//!
+//! - [`sections`]: the schema, one struct per `[section]` with the reference case as default.
+//! - `build`: from the sections to the beam model, friction sections and run settings, each value checked and named
+//!   by its dotted path ([`Scenario::build`], [`Scenario::model`], [`Scenario::run_settings`]).
+//! - `parse`: TOML errors with file, line, column, the key's path and a "did you mean".
+
+mod build;
+mod parse;
+pub mod sections;
+
+pub use sections::*;
+
+use crate::error::{Result, StudyError, invalid};
+use fem_beam::BeamModel;
+use friction::ContactSet;
+use nscd::RunSettings;
+use parse::{did_you_mean, key_path, line_column};
+use serde::{Deserialize, Serialize};
+
+/// A whole case: beam, mesh, supports, foundation, load, friction, integration, sweep, output.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
+#[serde(default, deny_unknown_fields)]
+pub struct Scenario {
+    /// A title for reports.
+    pub title: String,
+    /// The rail section.
+    pub beam: BeamSection,
+    /// Length and elements.
+    pub mesh: MeshSection,
+    /// End supports.
+    pub supports: SupportsSection,
+    /// The soil.
+    pub foundation: FoundationSection,
+    /// The moving load.
+    pub load: LoadSection,
+    /// Friction devices and/or distributed friction.
+    pub friction: FrictionSection,
+    /// Time integration and the friction solver.
+    pub integration: IntegrationSection,
+    /// Speed range of sweeps and studies; without it, a range around the case's critical speed
+    /// ([`crate::speeds::SpeedScale`]).
+    pub sweep: Option<SweepSection>,
+    /// What is recorded.
+    pub output: OutputSection,
+}
+
+/// A scenario turned into what the stepper runs.
+#[derive(Debug, Clone)]
+pub struct Case {
+    /// The assembled beam.
+    pub model: BeamModel,
+    /// All friction sections.
+    pub contacts: ContactSet,
+    /// Run settings (speed from `[load]`).
+    pub settings: RunSettings,
+    /// Identifies what a run of this case at a given speed computes: a hash (64-bit FNV-1a) of the frictrack version
+    /// and the scenario without its title, load speed, recorded sections and sweep range. Keys journal entries.
+    pub fingerprint: u64,
+}
+
+impl Scenario {
+    /// Parse TOML; `source_name` (a file name) prefixes syntax errors with line and column.
+    pub fn from_toml(text: &str, source_name: &str) -> Result<Self> {
+        toml::from_str(text).map_err(|e| {
+            let offset = e.span().map_or(0, |span| span.start);
+            let (line, column) = line_column(text, offset);
+            let message = e.message().trim();
+            let message = match key_path(text, offset) {
+                Some(path) => format!("{path}: {message}{}", did_you_mean(message)),
+                None => format!("{message}{}", did_you_mean(message)),
+            };
+            StudyError::Syntax { source_name: source_name.into(), line, column, message }
+        })
+    }
+
+    /// Read and parse a file.
+    pub fn from_path(path: &std::path::Path) -> Result<Self> {
+        // A scenario that cannot be read is the user's input error (exit code 2), not a failure of the run.
+        let text = std::fs::read_to_string(path)
+            .map_err(|e| invalid("scenario file", path.display(), format!("cannot be read: {e}")))?;
+        Self::from_toml(&text, &path.display().to_string())
+    }
+
+    /// The scenario as TOML (all keys, defaults included).
+    pub fn to_toml(&self) -> String {
+        toml::to_string(self).expect("a scenario always serialises")
+    }
+}
+
+/// 64-bit FNV-1a hash: stable across platforms, Rust versions and runs (unlike `std`'s `DefaultHasher`).
+pub fn fnv1a(bytes: &[u8]) -> u64 {
+    bytes.iter().fold(0xcbf2_9ce4_8422_2325, |h, &b| (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3))
+}
+
+/// A documented scenario template: every key with its default, unit and meaning (`frictrack init`).
+pub const TEMPLATE: &str = include_str!("template.toml");

@@ -1,0 +1,336 @@
+//! The scenario schema: one struct per TOML section, every key optional with the reference case as default
+//! (docs/theory.md §2), unknown keys refused.
+
+use crate::error::{Result, invalid};
+use fem_beam::reference::uic60_on_soft_soil;
+use fem_beam::{Foundation, Mesh, Support};
+use nscd::{RunSettings, SolverKind};
+use serde::{Deserialize, Serialize};
+
+/// `[beam]`: the rail (UIC60 by default).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct BeamSection {
+    /// E (Pa).
+    pub youngs_modulus: f64,
+    /// I (m⁴).
+    pub second_moment: f64,
+    /// A (m²).
+    pub area: f64,
+    /// ρ (kg/m³).
+    pub density: f64,
+}
+
+impl Default for BeamSection {
+    fn default() -> Self {
+        let b = fem_beam::Beam::default();
+        Self { youngs_modulus: b.youngs_modulus, second_moment: b.second_moment, area: b.area, density: b.density }
+    }
+}
+
+impl BeamSection {
+    /// The rail section these values describe (not yet validated).
+    pub fn beam(&self) -> fem_beam::Beam {
+        fem_beam::Beam {
+            youngs_modulus: self.youngs_modulus,
+            second_moment: self.second_moment,
+            area: self.area,
+            density: self.density,
+        }
+    }
+}
+
+/// `[mesh]`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct MeshSection {
+    /// Beam length L (m).
+    pub length: f64,
+    /// Number of equal elements.
+    pub elements: usize,
+}
+
+impl Default for MeshSection {
+    fn default() -> Self {
+        let m = Mesh::default();
+        Self { length: m.length, elements: m.elements }
+    }
+}
+
+/// An end support.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "kebab-case")]
+pub enum SupportKind {
+    /// w = 0.
+    #[default]
+    Pinned,
+    /// w = 0, θ = 0.
+    Clamped,
+    /// No constraint.
+    Free,
+}
+
+impl From<SupportKind> for Support {
+    fn from(kind: SupportKind) -> Self {
+        match kind {
+            SupportKind::Pinned => Support::Pinned,
+            SupportKind::Clamped => Support::Clamped,
+            SupportKind::Free => Support::Free,
+        }
+    }
+}
+
+/// `[supports]`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(default, deny_unknown_fields)]
+pub struct SupportsSection {
+    /// Support at x = 0.
+    pub left: SupportKind,
+    /// Support at x = L.
+    pub right: SupportKind,
+}
+
+/// `[foundation]`: Winkler stiffness and viscous damping (as a value or as a ratio of c_cr, not both).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct FoundationSection {
+    /// k_f (N/m²).
+    pub stiffness: f64,
+    /// c_f (N·s/m²).
+    pub damping: Option<f64>,
+    /// ζ = c_f/c_cr.
+    pub damping_ratio: Option<f64>,
+    /// Damping graded up towards both ends.
+    pub absorbing_zones: Option<AbsorbingZonesSection>,
+}
+
+impl Default for FoundationSection {
+    fn default() -> Self {
+        Self { stiffness: Foundation::default().stiffness, damping: None, damping_ratio: None, absorbing_zones: None }
+    }
+}
+
+/// `[foundation.absorbing_zones]`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct AbsorbingZonesSection {
+    /// Zone length at each end (m).
+    pub length: f64,
+    /// Damping reached at the ends, as a ratio of c_cr.
+    pub peak_ratio: f64,
+}
+
+impl Default for AbsorbingZonesSection {
+    fn default() -> Self {
+        Self { length: 40.0, peak_ratio: 1.0 }
+    }
+}
+
+/// `[load]`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct LoadSection {
+    /// Magnitude F (N), acting downward.
+    pub force: f64,
+    /// Speed v (m/s) of a single run.
+    pub speed: f64,
+}
+
+impl Default for LoadSection {
+    fn default() -> Self {
+        Self { force: uic60_on_soft_soil().load, speed: 200.0 }
+    }
+}
+
+/// `[friction]`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
+#[serde(default, deny_unknown_fields)]
+pub struct FrictionSection {
+    /// `[friction.devices]`.
+    pub devices: Option<DevicesSection>,
+    /// `[friction.distributed]`.
+    pub distributed: Option<DistributedSection>,
+}
+
+/// `[friction.devices]`: `count` evenly spaced devices or explicit `positions`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
+#[serde(default, deny_unknown_fields)]
+pub struct DevicesSection {
+    /// N devices at i·L/(N+1), snapped to nodes.
+    pub count: Option<usize>,
+    /// Device positions (m), snapped to nodes.
+    pub positions: Option<Vec<f64>>,
+    /// Maximal force of one device F_u (N); required.
+    pub force: Option<f64>,
+}
+
+/// Quadrature of distributed friction.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "kebab-case")]
+pub enum QuadratureKind {
+    /// Composite trapezoid.
+    #[default]
+    Trapezoid,
+    /// Composite Simpson (even subdivisions).
+    Simpson,
+}
+
+/// `[friction.distributed]`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct DistributedSection {
+    /// f_u (N/m).
+    pub force_per_length: f64,
+    /// Sub-intervals J per element.
+    pub subdivisions: usize,
+    /// Quadrature rule.
+    pub quadrature: QuadratureKind,
+}
+
+impl Default for DistributedSection {
+    fn default() -> Self {
+        Self { force_per_length: 0.0, subdivisions: 4, quadrature: QuadratureKind::Trapezoid }
+    }
+}
+
+/// Friction solver choice.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "kebab-case")]
+pub enum SolverChoice {
+    /// Projection for sparse devices, interior point for dense sections.
+    #[default]
+    Auto,
+    /// Projected Gauss–Seidel.
+    Projection,
+    /// Banded interior point.
+    InteriorPoint,
+    /// Clarabel QP.
+    Clarabel,
+}
+
+impl From<SolverChoice> for SolverKind {
+    fn from(choice: SolverChoice) -> Self {
+        match choice {
+            SolverChoice::Auto => SolverKind::Auto,
+            SolverChoice::Projection => SolverKind::Projection,
+            SolverChoice::InteriorPoint => SolverKind::InteriorPoint,
+            SolverChoice::Clarabel => SolverKind::Clarabel,
+        }
+    }
+}
+
+/// `[integration]`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct IntegrationSection {
+    /// θ ∈ [0.5, 1].
+    pub theta: f64,
+    /// Load advance per step Δx (m); h = Δx/v.
+    pub load_advance: f64,
+    /// Friction solver.
+    pub solver: SolverChoice,
+    /// Relative tolerance of the friction law.
+    pub tolerance: f64,
+    /// Iteration cap per step.
+    pub max_iterations: usize,
+    /// Interior point re-solves a moving window.
+    pub moving_window: bool,
+    /// Start from the analytic steady state with the load here (m) instead of at rest.
+    pub steady_start: Option<f64>,
+    /// Run until this time (s) instead of stopping when the load leaves.
+    pub end_time: Option<f64>,
+}
+
+impl Default for IntegrationSection {
+    fn default() -> Self {
+        let s = RunSettings::default();
+        Self {
+            theta: s.theta,
+            load_advance: s.load_advance,
+            solver: SolverChoice::Auto,
+            tolerance: s.solver.tolerance,
+            max_iterations: s.solver.max_iterations,
+            moving_window: s.solver.moving_window,
+            steady_start: None,
+            end_time: None,
+        }
+    }
+}
+
+/// `[sweep]`: speeds from, to, step (m/s).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct SweepSection {
+    /// First speed (m/s).
+    pub from: f64,
+    /// Last speed (m/s), included up to round-off.
+    pub to: f64,
+    /// Step (m/s).
+    pub step: f64,
+}
+
+impl Default for SweepSection {
+    fn default() -> Self {
+        Self { from: 10.0, to: 300.0, step: 10.0 }
+    }
+}
+
+impl SweepSection {
+    /// Check the range (`path` prefixes the field names in errors).
+    pub fn validate(&self, path: &str) -> Result<()> {
+        let (from, to, step) = (self.from, self.to, self.step);
+        if !(from.is_finite() && from > 0.0) {
+            return Err(invalid(&format!("{path}.from"), from, "must be finite and > 0 (m/s)"));
+        }
+        if !(to.is_finite() && to >= from) {
+            return Err(invalid(&format!("{path}.to"), to, format!("must be finite and ≥ from = {from} (m/s)")));
+        }
+        if !(step.is_finite() && step > 0.0) {
+            return Err(invalid(&format!("{path}.step"), step, "must be finite and > 0 (m/s)"));
+        }
+        if (to - from) / step > 1e6 {
+            return Err(invalid(&format!("{path}.step"), step, "gives more than a million speeds"));
+        }
+        Ok(())
+    }
+
+    /// The speeds from, from + step, … ≤ to (up to round-off).
+    pub fn speeds(&self) -> Vec<f64> {
+        let count = ((self.to - self.from) / self.step + 1e-9).floor() as usize + 1;
+        (0..count).map(|i| self.from + i as f64 * self.step).collect()
+    }
+}
+
+/// `[output]`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
+#[serde(default, deny_unknown_fields)]
+pub struct OutputSection {
+    /// Positions (m) whose histories are recorded in single runs.
+    pub sections: Vec<f64>,
+    /// Load positions [A, B] (m) over which the "window" extremes are taken besides the whole-run ones; default the
+    /// middle third of the beam, [L/3, 2L/3], away from the entry and exit transients.
+    pub extremes_window: Option<[f64; 2]>,
+    /// Times (s) of whole-beam snapshots (`run --out`).
+    pub snapshot_times: Vec<f64>,
+    /// Load positions (m) of whole-beam snapshots (`run --out`); with neither list, L/4, L/2 and 3L/4.
+    pub snapshot_load_positions: Vec<f64>,
+}
+
+impl OutputSection {
+    /// The snapshot requests for a beam of length `length` (m): the times and load positions given, or the load at
+    /// L/4, L/2 and 3L/4.
+    pub fn snapshots(&self, length: f64) -> Vec<nscd::SnapshotAt> {
+        use nscd::SnapshotAt;
+        let mut requests: Vec<SnapshotAt> = self.snapshot_times.iter().map(|&t| SnapshotAt::Time(t)).collect();
+        requests.extend(self.snapshot_load_positions.iter().map(|&x| SnapshotAt::LoadPosition(x)));
+        if requests.is_empty() {
+            requests = [0.25, 0.5, 0.75].iter().map(|f| SnapshotAt::LoadPosition(f * length)).collect();
+        }
+        requests
+    }
+
+    /// The window of load positions (m) for a beam of length `length` (m): the one given, or the middle third.
+    pub fn extremes_window(&self, length: f64) -> (f64, f64) {
+        self.extremes_window.map_or((length / 3.0, 2.0 * length / 3.0), |[a, b]| (a, b))
+    }
+}

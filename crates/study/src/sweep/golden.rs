@@ -1,0 +1,35 @@
+//! Golden-section search for the maximum of a unimodal function on an interval (Kiefer 1953).
+
+use crate::error::Result;
+
+/// Golden-section search for the maximum (`maximise`) of f on [a, b] to an interval width `tolerance`;
+/// returns (argmax, max) among the evaluated points.
+pub(super) fn golden_section(
+    f: &mut dyn FnMut(f64) -> Result<f64>,
+    mut a: f64,
+    mut b: f64,
+    tolerance: f64,
+    maximise: bool,
+) -> Result<(f64, f64)> {
+    let sign = if maximise { 1.0 } else { -1.0 };
+    let ratio = (5f64.sqrt() - 1.0) / 2.0;
+    let mut c = b - ratio * (b - a);
+    let mut d = a + ratio * (b - a);
+    let (mut fc, mut fd) = (sign * f(c)?, sign * f(d)?);
+    while (b - a).abs() > tolerance {
+        if fc >= fd {
+            b = d;
+            d = c;
+            fd = fc;
+            c = b - ratio * (b - a);
+            fc = sign * f(c)?;
+        } else {
+            a = c;
+            c = d;
+            fc = fd;
+            d = a + ratio * (b - a);
+            fd = sign * f(d)?;
+        }
+    }
+    Ok(if fc >= fd { (c, sign * fc) } else { (d, sign * fd) })
+}
