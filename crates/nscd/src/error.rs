@@ -17,11 +17,13 @@ pub enum NscdError {
     },
     /// The friction solver stopped short of its tolerance.
     #[error(
-        "friction solver {solver} did not converge at step {step} (t = {time:.6} s): residual {residual:.3e} m/s after {iterations} iterations (tolerance {tolerance:.3e} m/s); {hint}"
+        "friction solver {solver} did not converge at step {step} (t = {time:.6} s), {status}: residual {residual:.3e} m/s after {iterations} iterations (tolerance {tolerance:.3e} m/s)"
     )]
     Unconverged {
         /// Solver name.
         solver: &'static str,
+        /// How the solver's step ended.
+        status: crate::solver::StepStatus,
         /// Step index (1-based: the step being computed).
         step: usize,
         /// Time at the end of the step (s).
@@ -32,8 +34,6 @@ pub enum NscdError {
         iterations: usize,
         /// The tolerance asked for (m/s).
         tolerance: f64,
-        /// What to try.
-        hint: &'static str,
     },
     /// A state value became NaN or infinite.
     #[error("non-finite state at step {step} (t = {time:.6} s): {what}; {hint}")]

@@ -22,6 +22,6 @@ pub use error::{NscdError, Result};
 pub use forcing::{Forcing, MovingLoad};
 pub use simulation::{InitialState, RunResult, RunSettings, Simulation, WindowExtremes};
 pub use snapshots::{Snapshot, SnapshotAt, SnapshotTaker};
-pub use solver::{SolverKind, SolverSettings, StepReport};
+pub use solver::{SolverKind, SolverSettings, StepReport, StepStatus};
 pub use stepper::{EnergyLedger, Integration, MoreauJean};
 pub use system::LinearSystem;

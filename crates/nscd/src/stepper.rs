@@ -250,30 +250,19 @@ impl<'a> MoreauJean<'a> {
         std::mem::swap(&mut self.v_prev, &mut self.v);
         std::mem::swap(&mut self.v, &mut self.v_free);
         let report = if self.contacts.is_empty() {
-            StepReport { converged: true, ..StepReport::default() }
+            StepReport::default()
         } else {
             self.contacts.velocities(&self.v, &mut self.u_free);
             let report = self.solver.solve(&self.problem, &self.v, &self.u_free, &mut self.p)?;
-            if !report.converged {
+            if !report.converged() {
                 return Err(NscdError::Unconverged {
                     solver: self.solver.name(),
+                    status: report.status,
                     step: self.steps + 1,
                     time: t1,
                     residual: report.residual,
                     iterations: report.iterations,
                     tolerance: report.tolerance,
-                    hint: match self.solver.name() {
-                        // Measured (examples/solver_table.rs): projection stalls on dense distributed sections.
-                        "projection" => {
-                            "raise the iteration cap or the tolerance, or choose another solver (--solver interior-point or clarabel)"
-                        }
-                        "clarabel" => {
-                            "raise the tolerance, or choose another solver (--solver interior-point or projection)"
-                        }
-                        _ => {
-                            "raise the iteration cap or the tolerance, or choose another solver (--solver clarabel or projection)"
-                        }
-                    },
                 });
             }
             self.problem.add_response(&self.p, &mut self.v, &mut self.work);

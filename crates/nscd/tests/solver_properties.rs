@@ -90,7 +90,7 @@ fn solve_all(problem: &Problem) -> Vec<(&'static str, Vec<f64>)> {
             _ => settings.tolerance,
         };
         let allowed = relative * u_free.iter().fold(1e-14f64, |a, x| a.max(x.abs()));
-        assert!(report.converged, "{kind:?} did not converge: {report:?}");
+        assert!(report.converged(), "{kind:?} did not converge: {report:?}");
         assert!(residual <= allowed * (1.0 + 1e-6), "{kind:?}: law residual {residual:e} > {allowed:e}");
         for (j, (&pj, &a)) in p.iter().zip(problem.contacts.bounds()).enumerate() {
             assert!(pj.abs() <= a * (1.0 + 1e-9) + 1e-300, "{kind:?}: |p_{j}| = {} > a = {a}", pj.abs());

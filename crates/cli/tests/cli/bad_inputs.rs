@@ -20,7 +20,9 @@ const CASES: &[(&[&str], i32, &str)] = &[
     (&["run", "--extremes-window", "150:50"], 2, "output.extremes_window"),
     (&["analytic", "--speed", "-3"], 2, "speed"),
     // The interior point honours max_iterations over its window and whole-beam solves together, then stops the run.
+    (&["run", "--distributed-friction", "5000", "--tolerance", "1e-15"], 1, "iteration limit reached"),
     (&["run", "--distributed-friction", "5000", "--tolerance", "1e-15"], 1, "after 20000 iterations"),
+    (&["run", "--distributed-friction", "5000", "--tolerance", "1e-15"], 1, "hint: raise [integration] max_iterations"),
 ];
 
 /// Scenario files: (TOML, expected exit code, text the message must contain).

@@ -6,7 +6,7 @@
 //! (non-negative cone, 2m rows). Only the upper triangle of P = blkdiag(M̂, 0) is passed (Clarabel ignores the rest).
 //! The set-up is built once per run; each step only replaces q by `update_q`.
 
-use super::{FrictionProblem, FrictionSolver, StepReport};
+use super::{FrictionProblem, FrictionSolver, StepReport, StepStatus};
 use crate::error::NscdError;
 use clarabel::algebra::CscMatrix;
 use clarabel::solver::{DefaultSettingsBuilder, DefaultSolver, IPSolver, SolverStatus, SupportedConeT};
@@ -125,6 +125,8 @@ impl FrictionSolver for ClarabelQp {
         // to ~3e-7 on degenerate steps (a section at the stick–slip boundary). It is accepted up to 1e-6 of that
         // scale (or the requested tolerance if looser); beyond, the stepper refuses the step.
         let accepted = tolerance.max(problem.absolute_tolerance(1e-6, u_free));
-        Ok(StepReport { iterations, residual, tolerance: accepted, converged: residual <= accepted, sections: p.len() })
+        // Clarabel ran to its own stopping criteria (Solved or AlmostSolved): short of the law, it stalled.
+        let status = StepStatus::of(residual, accepted, iterations, usize::MAX);
+        Ok(StepReport { status, iterations, residual, tolerance: accepted, sections: p.len() })
     }
 }

@@ -33,7 +33,7 @@
 //! last the whole problem is solved instead.
 //! The answer is therefore exact to the same tolerance; only the cost depends on the window.
 
-use super::{FrictionProblem, FrictionSolver, StepReport};
+use super::{FrictionProblem, FrictionSolver, StepReport, StepStatus};
 use fem_beam::{BandedLdlt, BlockRows, SymmetricBanded};
 
 /// Fraction of the distance to the boundary of the positive orthant taken by a step.
@@ -647,10 +647,10 @@ impl FrictionSolver for BandedInteriorPoint {
             _ => self.solve_whole(problem, u_free, p, tolerance, self.max_iterations)?,
         };
         Ok(StepReport {
+            status: StepStatus::of(residual, tolerance, iterations, self.max_iterations),
             iterations,
             residual,
             tolerance,
-            converged: residual <= tolerance,
             sections: self.statistics.sections_solved - solved_before,
         })
     }

@@ -7,7 +7,7 @@
 //! Fast for devices spaced wider than the coupling length ℓ = (EI h²θ²/ρA)^¼ (2–6 sweeps); it stalls for
 //! distributed friction, where [`super::interior_point::BandedInteriorPoint`] is the tool.
 
-use super::{FrictionProblem, FrictionSolver, StepReport};
+use super::{FrictionProblem, FrictionSolver, StepReport, StepStatus};
 use crate::kernels::{axpy, dot};
 
 /// Projected Gauss–Seidel with the dense W of the run.
@@ -118,6 +118,7 @@ impl FrictionSolver for ProjectedGaussSeidel {
         if residual > tolerance {
             residual = self.residual(problem, u_free, p);
         }
-        Ok(StepReport { iterations: sweeps, residual, tolerance, converged: residual <= tolerance, sections: self.m })
+        let status = StepStatus::of(residual, tolerance, sweeps, self.max_sweeps);
+        Ok(StepReport { status, iterations: sweeps, residual, tolerance, sections: self.m })
     }
 }
