@@ -14,20 +14,24 @@ pub struct CheckArgs {
     scenarios: Vec<PathBuf>,
 }
 
-/// Execute `frictrack check`: every file is checked; the first error is returned after all were tried.
+/// Execute `frictrack check`: one file's error is the command's; with several, every file is checked, each error
+/// printed, and the count returned as an invalid-input error (exit code 2).
 pub fn run(args: &CheckArgs) -> Result<()> {
-    let mut first_error = None;
+    if let [path] = args.scenarios.as_slice() {
+        return check(path);
+    }
+    let mut invalid = 0;
     for path in &args.scenarios {
         if let Err(e) = check(path) {
-            eprintln!("{}: {e:#}", path.display());
-            first_error.get_or_insert(e);
+            eprintln!("error: {e:#}");
+            invalid += 1;
         }
     }
-    match first_error {
-        Some(e) if args.scenarios.len() > 1 => Err(e.context("at least one scenario is invalid")),
-        Some(e) => Err(e),
-        None => Ok(()),
+    if invalid > 0 {
+        let count = format!("{invalid} of {}", args.scenarios.len());
+        return Err(study::error::invalid("scenario files", count, "see the errors above").into());
     }
+    Ok(())
 }
 
 fn check(path: &std::path::Path) -> Result<()> {

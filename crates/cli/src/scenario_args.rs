@@ -1,33 +1,17 @@
 //! The scenario of a command: a TOML file (or the reference case) with command-line overrides on top.
 
 use anyhow::{Context, Result};
-use clap::{Args, ValueEnum};
+use clap::Args;
+use clap::builder::{PossibleValuesParser, TypedValueParser};
+use nscd::SolverKind;
 use std::path::PathBuf;
 use study::Scenario;
-use study::scenario::{AbsorbingZonesSection, DevicesSection, DistributedSection, SolverChoice};
+use study::scenario::{AbsorbingZonesSection, DevicesSection, DistributedSection};
 
-/// Friction solver choice on the command line.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum SolverArg {
-    /// Projection for sparse devices, interior point for dense sections.
-    Auto,
-    /// Projected (nonsmooth) Gauss–Seidel.
-    Projection,
-    /// Banded primal–dual interior point.
-    InteriorPoint,
-    /// Clarabel QP (cross-check; slow for many sections).
-    Clarabel,
-}
-
-impl From<SolverArg> for SolverChoice {
-    fn from(arg: SolverArg) -> Self {
-        match arg {
-            SolverArg::Auto => SolverChoice::Auto,
-            SolverArg::Projection => SolverChoice::Projection,
-            SolverArg::InteriorPoint => SolverChoice::InteriorPoint,
-            SolverArg::Clarabel => SolverChoice::Clarabel,
-        }
-    }
+/// `--solver NAME`: the names of [`SolverKind::ALL`], checked by clap, mapped to the kind.
+fn solver_parser() -> impl TypedValueParser<Value = SolverKind> {
+    PossibleValuesParser::new(SolverKind::ALL.map(SolverKind::name))
+        .map(|name| name.parse::<SolverKind>().unwrap_or_default())
 }
 
 /// A scenario file and the flags that override it.
@@ -59,9 +43,10 @@ pub struct ScenarioArgs {
     /// Load advance per time step (m): h = advance / speed.
     #[arg(long, allow_negative_numbers = true)]
     pub load_advance: Option<f64>,
-    /// Friction solver.
-    #[arg(long, value_enum)]
-    pub solver: Option<SolverArg>,
+    /// Friction solver: auto (projection for sparse devices, interior point for dense sections), projection
+    /// (nonsmooth Gauss–Seidel), interior-point (banded primal–dual) or clarabel (cross-check; slow for many sections).
+    #[arg(long, value_parser = solver_parser())]
+    pub solver: Option<SolverKind>,
     /// Relative tolerance of the friction law residual (relative to the largest free section velocity).
     #[arg(long, allow_negative_numbers = true)]
     pub tolerance: Option<f64>,
@@ -129,7 +114,7 @@ impl ScenarioArgs {
             s.integration.load_advance = dx;
         }
         if let Some(solver) = self.solver {
-            s.integration.solver = solver.into();
+            s.integration.solver = solver;
         }
         if let Some(t) = self.tolerance {
             s.integration.tolerance = t;

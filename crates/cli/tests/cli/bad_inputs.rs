@@ -101,3 +101,25 @@ fn output_targets_that_are_not_regular_files_are_refused_and_kept() {
     check(&["study", "amplification", "--out", unusable], 2, "--out");
     check(&["reproduce", "--out", unusable], 2, "--out");
 }
+
+/// `frictrack check examples/*.toml` (the README's command) checks every file; one bad file among good ones is
+/// reported by name and makes the command exit 2.
+#[test]
+fn check_takes_several_files() {
+    let examples = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples");
+    let mut files: Vec<String> = std::fs::read_dir(&examples)
+        .unwrap()
+        .map(|e| e.unwrap().path().to_string_lossy().into_owned())
+        .filter(|p| p.ends_with(".toml"))
+        .collect();
+    files.sort();
+    let args: Vec<&str> = std::iter::once("check").chain(files.iter().map(String::as_str)).collect();
+    let out = frictrack(&args);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(String::from_utf8_lossy(&out.stdout).lines().filter(|l| l.contains(": ok")).count(), files.len());
+    let dir = temporary_folder("check-several");
+    let bad = dir.join("bad.toml");
+    std::fs::write(&bad, "[integration]\nsolver = \"interor-point\"\n").unwrap();
+    check(&["check", &files[0], bad.to_str().unwrap()], 2, "did you mean `interior-point`?");
+    check(&["check", &files[0], bad.to_str().unwrap()], 2, "scenario files = 1 of 2");
+}

@@ -27,8 +27,10 @@ use friction::ContactSet;
 use friction::coulomb::natural_residual;
 use response::ImpulseResponses;
 
-/// Which per-step friction solver to use.
+/// Which per-step friction solver to use: the one choice type of every layer (scenario files through the `serde`
+/// feature, the command line through [`SolverKind::ALL`] and `FromStr`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize), serde(rename_all = "kebab-case"))]
 pub enum SolverKind {
     /// Projection for sections spaced wider than twice the coupling length, interior point otherwise.
     #[default]
@@ -42,7 +44,11 @@ pub enum SolverKind {
 }
 
 impl SolverKind {
-    /// Lower-case name, as used on the command line.
+    /// Every choice, in the order they are documented.
+    pub const ALL: [SolverKind; 4] =
+        [SolverKind::Auto, SolverKind::Projection, SolverKind::InteriorPoint, SolverKind::Clarabel];
+
+    /// Lower-case name, as used in scenario files and on the command line.
     pub fn name(self) -> &'static str {
         match self {
             SolverKind::Auto => "auto",
@@ -50,6 +56,18 @@ impl SolverKind {
             SolverKind::InteriorPoint => "interior-point",
             SolverKind::Clarabel => "clarabel",
         }
+    }
+}
+
+impl std::str::FromStr for SolverKind {
+    type Err = String;
+
+    /// The kind named `name` ([`SolverKind::name`]); the error lists the names.
+    fn from_str(name: &str) -> Result<Self, String> {
+        Self::ALL.into_iter().find(|k| k.name() == name).ok_or_else(|| {
+            let names: Vec<&str> = Self::ALL.iter().map(|k| k.name()).collect();
+            format!("unknown solver `{name}`, expected one of {}", names.join(", "))
+        })
     }
 }
 

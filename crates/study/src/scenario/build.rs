@@ -191,7 +191,7 @@ impl Scenario {
             extremes_window: Some(self.output.extremes_window(self.mesh.length)),
             ..RunSettings::default()
         };
-        settings.solver.kind = i.solver.into();
+        settings.solver.kind = i.solver;
         settings.solver.tolerance = i.tolerance;
         settings.solver.max_iterations = i.max_iterations;
         settings.solver.moving_window = i.moving_window;

@@ -193,32 +193,6 @@ impl Default for DistributedSection {
     }
 }
 
-/// Friction solver choice.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
-#[serde(rename_all = "kebab-case")]
-pub enum SolverChoice {
-    /// Projection for sparse devices, interior point for dense sections.
-    #[default]
-    Auto,
-    /// Projected Gauss–Seidel.
-    Projection,
-    /// Banded interior point.
-    InteriorPoint,
-    /// Clarabel QP.
-    Clarabel,
-}
-
-impl From<SolverChoice> for SolverKind {
-    fn from(choice: SolverChoice) -> Self {
-        match choice {
-            SolverChoice::Auto => SolverKind::Auto,
-            SolverChoice::Projection => SolverKind::Projection,
-            SolverChoice::InteriorPoint => SolverKind::InteriorPoint,
-            SolverChoice::Clarabel => SolverKind::Clarabel,
-        }
-    }
-}
-
 /// `[integration]`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
@@ -228,7 +202,7 @@ pub struct IntegrationSection {
     /// Load advance per step Δx (m); h = Δx/v.
     pub load_advance: f64,
     /// Friction solver.
-    pub solver: SolverChoice,
+    pub solver: SolverKind,
     /// Relative tolerance of the friction law.
     pub tolerance: f64,
     /// Iteration cap per step.
@@ -247,7 +221,7 @@ impl Default for IntegrationSection {
         Self {
             theta: s.theta,
             load_advance: s.load_advance,
-            solver: SolverChoice::Auto,
+            solver: SolverKind::Auto,
             tolerance: s.solver.tolerance,
             max_iterations: s.solver.max_iterations,
             moving_window: s.solver.moving_window,
