@@ -4,9 +4,10 @@
 //! Cholesky, on the reference beam (pinned, h = 0.1 m / 200 m/s, θ = ½) with 200 and 2000 elements
 //! (400 and 4000 free DOFs). Run with `cargo bench -p frictrack-benches --bench linear_solve`.
 
+use banded::{BandDiagonals, SymmetricBanded};
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use fem_beam::reference::uic60_on_soft_soil;
-use fem_beam::{BandDiagonals, BeamModel, Mesh, SymmetricBanded};
+use fem_beam::{BeamModel, Mesh};
 use nalgebra::DVector;
 use nalgebra_sparse::{CscMatrix, factorization::CscCholesky};
 use std::hint::black_box;

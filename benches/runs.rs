@@ -58,8 +58,8 @@ fn friction_free_against_bare_solves(c: &mut Criterion) {
     // v and q updated, the two products K v and C v of the new velocity and K q carried forward — no energy ledger,
     // no observers. If this alone exceeds 1.3× the bare solves, so must a whole run.
     group.bench_function(BenchmarkId::new("least_step_loop", steps), |b| {
-        let stiffness = fem_beam::BandDiagonals::new(&system.stiffness);
-        let damping = fem_beam::BandDiagonals::new(&system.damping);
+        let stiffness = banded::BandDiagonals::new(&system.stiffness);
+        let damping = banded::BandDiagonals::new(&system.damping);
         let (h, theta, n) = (h, settings.theta, system.dofs());
         b.iter(|| {
             let [mut q, mut v, mut kq, mut kv, mut kv_next, mut cv, mut w] = std::array::from_fn(|_| vec![0.0; n]);

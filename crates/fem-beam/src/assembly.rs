@@ -4,12 +4,12 @@
 //! [`SymmetricBanded`] matrices over the free DOFs (half-bandwidth 3). The foundation damping may vary from element
 //! to element (absorbing end zones); by default it is the uniform c_f of the [`Foundation`].
 
-use crate::banded::SymmetricBanded;
 use crate::element::{ElementMatrix, hermite};
 use crate::error::{FemError, Result};
 use crate::mesh::Mesh;
 use crate::properties::{Beam, Foundation};
 use crate::supports::{DofMap, Supports};
+use banded::SymmetricBanded;
 
 /// Half-bandwidth of assembled Hermite beam matrices.
 pub const BANDWIDTH: usize = 3;

@@ -63,6 +63,14 @@ pub enum FemError {
     },
 }
 
+impl From<banded::BandedError> for FemError {
+    fn from(error: banded::BandedError) -> Self {
+        match error {
+            banded::BandedError::NonPositivePivot { index, pivot } => FemError::NonPositivePivot { index, pivot },
+        }
+    }
+}
+
 /// Result alias of this crate.
 pub type Result<T, E = FemError> = std::result::Result<T, E>;
 

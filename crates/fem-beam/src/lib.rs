@@ -8,17 +8,14 @@
 //! - [`properties`]: [`Beam`] (E, I, A, ρ) and [`Foundation`] (k_f, c_f) with UIC60 / soft-soil defaults.
 //! - [`mesh`], [`supports`]: the uniform mesh, end supports and the full ↔ free DOF map.
 //! - [`element`]: Hermite shape functions and element matrices; [`assembly`]: the global [`BeamModel`].
-//! - [`banded`]: banded SPD storage and an LDLᵀ factorisation (factor once, solve many times); [`block_rows`]:
-//!   contact rows of four consecutive DOFs and the products H x, Hᵀs, A + Hᵀ diag(d) H, four entries at a time.
+//! - Matrices are the `banded` crate's [`banded::SymmetricBanded`] (storage, LDLᵀ, Schur condensation), the layer
+//!   below this one.
 //! - [`load`]: consistent point forces/moments and uniform loads; [`section`]: w, θ, M from a DOF vector.
 //! - [`statics`], [`modal`]: K q = f and K φ = ω² M φ.
 //! - [`reference`]: the reference case and closed-form results (β, w₀, M₀, v_cr, ω_n, moving-load steady state).
 
 pub mod absorbing;
 pub mod assembly;
-pub mod banded;
-pub mod block_rows;
-pub mod diagonals;
 pub mod element;
 pub mod error;
 pub mod load;
@@ -32,9 +29,6 @@ pub mod supports;
 
 pub use absorbing::AbsorbingZones;
 pub use assembly::BeamModel;
-pub use banded::{BandedLdlt, SymmetricBanded};
-pub use block_rows::BlockRows;
-pub use diagonals::BandDiagonals;
 pub use error::{FemError, Result};
 pub use load::LoadVector;
 pub use mesh::Mesh;

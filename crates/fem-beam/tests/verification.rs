@@ -2,7 +2,6 @@
 //! One test binary; each module checks one family of results with stated tolerances.
 
 mod verification {
-    mod banded;
     mod closed_form;
     mod frequencies;
     mod invalid_input;

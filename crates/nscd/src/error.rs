@@ -58,6 +58,9 @@ pub enum NscdError {
         /// Clarabel's status or error, as text.
         status: String,
     },
+    /// A matrix of the step (M̂, or an interior-point Newton matrix) is not positive definite.
+    #[error(transparent)]
+    Linear(#[from] banded::BandedError),
     /// An error from the beam layer.
     #[error(transparent)]
     Beam(#[from] fem_beam::FemError),

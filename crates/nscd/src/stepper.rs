@@ -17,7 +17,7 @@ use crate::forcing::Forcing;
 use crate::kernels::dot;
 use crate::solver::{FrictionProblem, FrictionSolver, StepReport};
 use crate::system::LinearSystem;
-use fem_beam::{BandDiagonals, BandedLdlt, SymmetricBanded};
+use banded::{BandDiagonals, BandedLdlt, SymmetricBanded};
 use friction::ContactSet;
 
 /// Cumulative energy terms of a run (J).

@@ -3,7 +3,8 @@
 //! Kept independent of the beam so that the same stepper integrates any banded system: the beam on its foundation
 //! ([`LinearSystem::from_beam`]) and, in tests, a single-DOF Coulomb oscillator.
 
-use fem_beam::{BeamModel, SymmetricBanded};
+use banded::SymmetricBanded;
+use fem_beam::BeamModel;
 
 /// Banded symmetric M (kg), C (N·s/m), K (N/m) over the free DOFs.
 #[derive(Debug, Clone)]

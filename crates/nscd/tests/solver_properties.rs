@@ -4,7 +4,7 @@
 //! (some zero) and a random free velocity. Every solver must meet the friction law to its tolerance, and all must
 //! agree on v (unique, unlike p).
 
-use fem_beam::SymmetricBanded;
+use banded::SymmetricBanded;
 use friction::{ContactKind, ContactRow, ContactSet};
 use nscd::SolverKind;
 use nscd::solver::{FrictionProblem, SolverSettings, build_solver};

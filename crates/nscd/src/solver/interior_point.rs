@@ -34,7 +34,7 @@
 //! The answer is therefore exact to the same tolerance; only the cost depends on the window.
 
 use super::{FrictionProblem, FrictionSolver, StepReport, StepStatus};
-use fem_beam::{BandedLdlt, BlockRows, SymmetricBanded};
+use banded::{BandedLdlt, BlockRows, SymmetricBanded};
 
 /// Fraction of the distance to the boundary of the positive orthant taken by a step.
 const FRACTION_TO_BOUNDARY: f64 = 0.995;

@@ -22,7 +22,7 @@ pub mod response;
 pub mod clarabel;
 
 use crate::kernels::axpy;
-use fem_beam::{BandedLdlt, SymmetricBanded};
+use banded::{BandedLdlt, SymmetricBanded};
 use friction::ContactSet;
 use friction::coulomb::natural_residual;
 use response::ImpulseResponses;

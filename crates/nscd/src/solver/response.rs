@@ -6,7 +6,7 @@
 //! (devices) Σ_j p_j G_j over the non-zero impulses is several times cheaper than the solve and vectorises.
 
 use crate::kernels::axpy;
-use fem_beam::BandedLdlt;
+use banded::BandedLdlt;
 use friction::ContactSet;
 
 /// Entries of G_j below this fraction of max |G_j| are dropped: the banded solve that produced G_j mixes every

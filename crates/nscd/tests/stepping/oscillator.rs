@@ -1,6 +1,6 @@
 //! A single-DOF Coulomb oscillator driven through the same stepper and solvers.
 
-use fem_beam::SymmetricBanded;
+use banded::SymmetricBanded;
 use friction::{ContactKind, ContactRow, ContactSet};
 use nscd::forcing::{DofForce, Unloaded};
 use nscd::solver::{FrictionProblem, SolverKind, SolverSettings, build_solver};

@@ -13,7 +13,7 @@
 //! (row after row, each entry computed as (d·h_a)·h_c), so the results are the same to the bit; the slots a scatter
 //! would skip receive exact zeros.
 
-use crate::banded::SymmetricBanded;
+use crate::symmetric::SymmetricBanded;
 
 /// Rows of H, each with up to four nonzeros in consecutive columns.
 #[derive(Debug, Clone, Default)]

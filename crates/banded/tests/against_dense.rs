@@ -1,6 +1,6 @@
 //! The banded LDLᵀ against nalgebra's dense Cholesky on random SPD band matrices.
 
-use fem_beam::{BandDiagonals, BlockRows, SymmetricBanded};
+use banded::{BandDiagonals, BlockRows, SymmetricBanded};
 use nalgebra::DVector;
 
 /// Deterministic pseudo-random numbers in [0, 1) (64-bit LCG, Knuth's constants).
@@ -53,7 +53,7 @@ fn indefinite_matrix_is_reported_with_its_equation() {
     }
     a.add(3, 2, 2.0);
     match a.factor() {
-        Err(fem_beam::FemError::NonPositivePivot { index, .. }) => assert_eq!(index, 3),
+        Err(banded::BandedError::NonPositivePivot { index, .. }) => assert_eq!(index, 3),
         other => panic!("expected a pivot error, got {other:?}"),
     }
 }

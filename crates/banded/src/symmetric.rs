@@ -9,7 +9,7 @@
 //! Storage: the lower band, row by row; entry (i, j) with i − b ≤ j ≤ i lives at `data[i·(b+1) + b − (i − j)]`.
 //! Slots that would fall before column 0 are kept at zero.
 
-use crate::error::{FemError, Result};
+use crate::error::{BandedError, Result};
 use nalgebra::DMatrix;
 
 /// A symmetric n×n matrix with half-bandwidth b, storing its lower band.
@@ -174,7 +174,7 @@ impl SymmetricBanded {
             let l1 = if i >= 1 { (row[2] - l3 * r1[1] * d3 - l2 * r1[2] * d2) * e1 } else { 0.0 };
             let d = row[3] - l3 * l3 * d3 - l2 * l2 * d2 - l1 * l1 * d1;
             if !(d.is_finite() && d > 0.0) {
-                return Err(FemError::NonPositivePivot { index: i, pivot: d });
+                return Err(BandedError::NonPositivePivot { index: i, pivot: d });
             }
             let e = 1.0 / d;
             row[0] = l3;
@@ -238,7 +238,7 @@ impl SymmetricBanded {
                 d -= l * l * f[k * w + b];
             }
             if !(d.is_finite() && d > 0.0) {
-                return Err(FemError::NonPositivePivot { index: i, pivot: d });
+                return Err(BandedError::NonPositivePivot { index: i, pivot: d });
             }
             f[i * w + b] = d;
             inverse_pivots[i] = 1.0 / d;

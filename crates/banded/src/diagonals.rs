@@ -10,7 +10,7 @@
 //!
 //! reads only contiguous slices, so the compiler turns each term into packed multiply–adds over whole rows.
 
-use crate::banded::SymmetricBanded;
+use crate::symmetric::SymmetricBanded;
 
 /// The diagonals e_0…e_b of a symmetric banded matrix (see the module documentation).
 #[derive(Debug, Clone, PartialEq)]

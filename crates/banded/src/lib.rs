@@ -1,0 +1,21 @@
+//! # banded: the linear algebra under frictrack
+//!
+//! The bottom layer: matrices of a 1-D finite-element mesh are symmetric and banded (half-bandwidth 3 for Hermite
+//! beam elements in the DOF order (w₀, θ₀, w₁, θ₁, …)). Everything the layers above need of them, and nothing about
+//! beams (docs/theory.md §3, §5):
+//!
+//! - [`symmetric`]: [`SymmetricBanded`] storage and its [`BandedLdlt`] factorisation (factor once, solve many
+//!   times, O(n·b²) and O(n·b)), principal submatrices and the Schur condensation of leading or trailing blocks.
+//! - [`diagonals`]: [`BandDiagonals`], the band as diagonals for fast products.
+//! - [`block_rows`]: [`BlockRows`], rows of at most four consecutive nonzeros and the products H x, Hᵀs and
+//!   A + Hᵀ diag(d) H, four entries at a time.
+
+pub mod block_rows;
+pub mod diagonals;
+pub mod error;
+pub mod symmetric;
+
+pub use block_rows::BlockRows;
+pub use diagonals::BandDiagonals;
+pub use error::{BandedError, Result};
+pub use symmetric::{BandedLdlt, SymmetricBanded};
