@@ -1,0 +1,308 @@
+//! A whole run: the beam under a load crossing it at constant speed, with friction, observed as it goes
+//! (docs/theory.md §3, §6).
+//!
+//! The state is the perturbation from the self-weight equilibrium q₀ = K⁻¹P: with a linear foundation and
+//! velocity-driven friction P drops out exactly, so deflections are reported relative to q₀. The load enters at
+//! x = 0 (or at the start position of an analytic steady state) and the run ends when it leaves at x = L
+//! (t_on), or at a later end time (free vibration). The step is h = Δx/v with the load advance Δx per step.
+//!
+//! Memory of a run is O(DOFs + sections) plus O(steps) per recorded section history.
+
+mod observers;
+mod results;
+mod settings;
+
+pub use results::{Extreme, RunResult, SectionHistory, SolverStatistics, StepView, WindowExtremes};
+pub use settings::{InitialState, RunSettings};
+
+use crate::error::Result;
+use crate::forcing::MovingLoad;
+use crate::solver::{FrictionProblem, SolverKind, build_solver};
+use crate::stepper::{Integration, MoreauJean, iteration_matrix};
+use crate::system::LinearSystem;
+use fem_beam::BeamModel;
+use fem_beam::element::hermite;
+use fem_beam::reference::InfiniteBeam;
+use friction::ContactSet;
+use observers::{Buffers, InsideSection, NodalDeflections, Recorder, record};
+use std::time::Instant;
+
+/// The coupling length ℓ = (EI·h²θ²/ρA)^¼ (m): sections closer than this are strongly coupled in one step.
+pub fn coupling_length(model: &BeamModel, step: f64, theta: f64) -> f64 {
+    let beam = model.beam();
+    (beam.bending_stiffness() * step * step * theta * theta / beam.mass_per_length()).powf(0.25)
+}
+
+/// Resolve [`SolverKind::Auto`]: projection when the sections are spaced wider than twice the coupling length,
+/// the banded interior point otherwise.
+pub fn resolve_solver(kind: SolverKind, model: &BeamModel, contacts: &ContactSet, step: f64, theta: f64) -> SolverKind {
+    if kind != SolverKind::Auto {
+        return kind;
+    }
+    let mut x = contacts.positions().to_vec();
+    x.sort_by(f64::total_cmp);
+    let spacing = x.windows(2).map(|w| w[1] - w[0]).fold(f64::INFINITY, f64::min);
+    if spacing < 2.0 * coupling_length(model, step, theta) { SolverKind::InteriorPoint } else { SolverKind::Projection }
+}
+
+/// A run of `model` with friction `contacts` under `settings`.
+#[derive(Debug, Clone, Copy)]
+pub struct Simulation<'a> {
+    model: &'a BeamModel,
+    contacts: &'a ContactSet,
+    settings: &'a RunSettings,
+}
+
+impl<'a> Simulation<'a> {
+    /// Validate and prepare a run.
+    pub fn new(model: &'a BeamModel, contacts: &'a ContactSet, settings: &'a RunSettings) -> Result<Self> {
+        settings.validate(model)?;
+        Ok(Self { model, contacts, settings })
+    }
+
+    /// Initial (q, v) over the free DOFs, per [`RunSettings::initial`].
+    pub fn initial_state(&self) -> Result<(Vec<f64>, Vec<f64>)> {
+        let dofs = self.model.dofs();
+        let n = dofs.free_len();
+        match self.settings.initial {
+            InitialState::Rest => Ok((vec![0.0; n], vec![0.0; n])),
+            InitialState::SteadyState { position } => {
+                let infinite = InfiniteBeam::new(self.model.beam(), self.model.foundation())?;
+                let state = infinite.steady_state(self.settings.speed, self.settings.load)?;
+                let mesh = self.model.mesh();
+                let mut q = vec![0.0; dofs.full_len()];
+                let mut v = vec![0.0; dofs.full_len()];
+                for i in 0..mesh.nodes() {
+                    let s = mesh.node_x(i) - position;
+                    q[2 * i] = state.deflection(s);
+                    q[2 * i + 1] = state.slope(s);
+                    v[2 * i] = state.velocity(s);
+                    v[2 * i + 1] = state.rotation_rate(s);
+                }
+                Ok((dofs.reduce(&q), dofs.reduce(&v)))
+            }
+        }
+    }
+
+    /// Integrate and observe.
+    pub fn run(&self) -> Result<RunResult> {
+        self.run_observed(&mut |_| true)
+    }
+
+    /// Integrate, calling `observer` with the borrowed state after every step; the run stops early (with the
+    /// results so far) when it returns false.
+    pub fn run_observed(&self, observer: &mut dyn FnMut(&StepView<'_>) -> bool) -> Result<RunResult> {
+        let (model, settings) = (self.model, self.settings);
+        let mesh = *model.mesh();
+        let dofs = model.dofs();
+        let h = settings.load_advance / settings.speed;
+        let integration = Integration { theta: settings.theta, step: h };
+        let system = LinearSystem::from_beam(model);
+        let m_hat = iteration_matrix(&system, integration);
+        let factor = m_hat.factor()?;
+        let kind = resolve_solver(settings.solver.kind, model, self.contacts, h, settings.theta);
+        let problem = FrictionProblem::new(self.contacts, &m_hat, &factor, h);
+        // Coupling through M̂⁻¹ decays like e^{−x/(√2ℓ)}: 30ℓ leaves ~6e-10, and a window that fails the final
+        // check is retried wider. Instruction counts over 1000 steps (1, 5, 10 kN/m): 30ℓ is 4–11 % below 40ℓ,
+        // 20ℓ and 15ℓ no better than 30ℓ.
+        let margin = 30.0 * coupling_length(model, h, settings.theta);
+        let solver = build_solver(kind, &problem, &settings.solver, Some(margin))?;
+        let (q0, v0) = self.initial_state()?;
+        let start = settings.start_position();
+        let load = MovingLoad::new(mesh, dofs, settings.load, settings.speed, start);
+        let mut stepper = MoreauJean::new(&system, self.contacts, integration, problem, solver, q0, v0);
+
+        let t_on = settings.crossing_time(mesh.length);
+        let crossing_steps = (t_on / h).round() as usize;
+        let total_steps = match settings.end_time {
+            Some(end) => crossing_steps.max((end / h - 1e-9).ceil() as usize),
+            None => crossing_steps,
+        };
+        let deflections = NodalDeflections::new(&mesh, dofs);
+        let mut recorders: Vec<Recorder> = settings
+            .record_sections
+            .iter()
+            .map(|&x| {
+                let node = mesh.nearest_node(x).unwrap_or(0);
+                let l = mesh.element_length();
+                let inside = self
+                    .contacts
+                    .positions()
+                    .iter()
+                    .enumerate()
+                    .filter_map(|(contact, &xs)| {
+                        [node.wrapping_sub(1), node].into_iter().filter(|&e| e < mesh.elements).find_map(|element| {
+                            let x_a = mesh.node_x(element);
+                            (xs > x_a && xs < x_a + l).then(|| InsideSection {
+                                element,
+                                contact,
+                                shape: hermite::shape((xs - x_a) / l, l),
+                            })
+                        })
+                    })
+                    .collect();
+                Recorder {
+                    position: x,
+                    node,
+                    inside,
+                    contact: self.contacts.section_at(x, 1e-9 * mesh.length),
+                    history: SectionHistory { position: x, moment_node: mesh.node_x(node), ..Default::default() },
+                }
+            })
+            .collect();
+        for r in &mut recorders {
+            r.history.impulse = r.contact.map(|_| Vec::with_capacity(total_steps + 1));
+            let h = &mut r.history;
+            for series in [
+                &mut h.time,
+                &mut h.load_position,
+                &mut h.deflection,
+                &mut h.velocity,
+                &mut h.acceleration,
+                &mut h.moment,
+            ] {
+                series.reserve(total_steps + 1);
+            }
+        }
+        let mut extremes = (Extreme::default(), Extreme::default());
+        let mut window = settings.extremes_window.map(|load_range| WindowExtremes { load_range, ..Default::default() });
+        let in_window = |x_load: f64| settings.extremes_window.is_some_and(|(a, b)| (a..=b).contains(&x_load));
+        let scan = deflections.scan(stepper.q());
+        scan.update(&mut extremes, 0.0);
+        if let Some(w) = window.as_mut().filter(|_| in_window(start)) {
+            scan.update_window(w, 0.0);
+        }
+        let mut norm_integral = 0.0;
+        let mut previous_norm = scan.norm;
+        let mut full = Buffers::new(dofs.full_len());
+        for r in &mut recorders {
+            full.expand(dofs, stepper.q(), stepper.v());
+            let m0 = self.moment_at_node(r.node, &full, &load, &[(0.0, 1.0)], None);
+            record(r, 0.0, start, full.motion_at(model, r.position)?, m0, 0.0);
+        }
+
+        let clock = Instant::now();
+        let (mut iteration_sum, mut max_iterations, mut max_residual) = (0usize, 0usize, 0.0f64);
+        let mut sections_sum = 0usize;
+        for k in 1..=total_steps {
+            let report = stepper.step(&load)?;
+            let keep_going = observer(&StepView {
+                step: k,
+                time: stepper.time,
+                load_position: load.position(stepper.time),
+                displacement: stepper.q(),
+                velocity: stepper.v(),
+                previous_velocity: stepper.previous_v(),
+                impulses: &stepper.p,
+                section_velocities: &stepper.u,
+                bounds: stepper.bounds(),
+                report,
+            });
+            iteration_sum += report.iterations;
+            sections_sum += report.sections;
+            max_iterations = max_iterations.max(report.iterations);
+            max_residual = max_residual.max(report.residual);
+            let time = stepper.time;
+            let scan = deflections.scan(stepper.q());
+            scan.update(&mut extremes, time);
+            if let Some(w) = window.as_mut().filter(|_| in_window(load.position(time))) {
+                scan.update_window(w, time);
+            }
+            if k <= crossing_steps {
+                norm_integral += 0.5 * (scan.norm + previous_norm) * h;
+                previous_norm = scan.norm;
+            }
+            for r in &mut recorders {
+                // State after the step with the mean acceleration over it, the load where it now is, and the
+                // friction forces p/h of the step.
+                full.expand_step(dofs, stepper.q(), stepper.v(), stepper.previous_v(), h);
+                let impulse = r.contact.map_or(0.0, |j| stepper.p[j]);
+                let moment =
+                    self.moment_at_node(r.node, &full, &load, &[(time, 1.0)], Some((&stepper.p, h, &r.inside)));
+                record(r, time, load.position(time), full.motion_at(model, r.position)?, moment, impulse);
+            }
+            if !keep_going {
+                break;
+            }
+        }
+        let wall_time = clock.elapsed().as_secs_f64();
+        let steps = stepper.steps;
+        Ok(RunResult {
+            max_downward: extremes.0,
+            max_upward: extremes.1,
+            window,
+            energy: stepper.energy,
+            global_norm: if t_on > 0.0 { norm_integral / t_on } else { 0.0 },
+            histories: recorders.into_iter().map(|r| r.history).collect(),
+            statistics: SolverStatistics {
+                solver: if self.contacts.is_empty() { "none" } else { stepper.solver_name() },
+                sections: self.contacts.len(),
+                steps,
+                mean_iterations: if steps > 0 { iteration_sum as f64 / steps as f64 } else { 0.0 },
+                max_iterations,
+                max_residual,
+                mean_sections_solved: if steps > 0 { sections_sum as f64 / steps as f64 } else { 0.0 },
+                wall_time,
+            },
+            step: h,
+            section_positions: self.contacts.positions().to_vec(),
+            final_displacement: stepper.q().to_vec(),
+            final_velocity: stepper.v().to_vec(),
+        })
+    }
+
+    /// Bending moment at `node` (N·m) from the end forces of its adjacent elements,
+    /// f = K_e q_e + C_e q̇_e + M_e q̈_e − f_e (docs/theory.md §6), averaged over the (one or two) adjacent elements. The
+    /// element loads f_e are the moving load at the weighted `load_times` and the friction forces p_j/h of the
+    /// sections inside the element (`inside`, precomputed with their shape functions); sections on nodes act on w
+    /// only and leave the moments unchanged.
+    fn moment_at_node(
+        &self,
+        node: usize,
+        full: &Buffers,
+        load: &MovingLoad,
+        load_times: &[(f64, f64)],
+        friction: Option<(&[f64], f64, &[InsideSection])>,
+    ) -> f64 {
+        let model = self.model;
+        let mesh = model.mesh();
+        let l = mesh.element_length();
+        let ke = model.element_stiffness();
+        let me = model.element_mass();
+        let mut sum = 0.0;
+        let mut count = 0.0;
+        for e in [node.wrapping_sub(1), node] {
+            if e >= mesh.elements {
+                continue;
+            }
+            let pick = |v: &[f64]| [v[2 * e], v[2 * e + 1], v[2 * e + 2], v[2 * e + 3]];
+            let mut f = hermite::apply(&ke, &pick(&full.q));
+            let cv = hermite::apply(&model.element_damping_matrix(e), &pick(&full.v));
+            let ma = hermite::apply(&me, &pick(&full.a));
+            let (x_a, x_b) = (mesh.node_x(e), mesh.node_x(e + 1));
+            let mut external = [0.0; 4];
+            for &(time, weight) in load_times {
+                let x_load = load.position(time);
+                // The element owning the load, as Mesh::locate decides: [x_a, x_b), the last one closed.
+                let owns = (x_a..x_b).contains(&x_load) || (e + 1 == mesh.elements && x_load == x_b);
+                if weight != 0.0 && owns {
+                    let n = hermite::shape((x_load - x_a) / l, l);
+                    (0..4).for_each(|k| external[k] -= weight * load.force * n[k]);
+                }
+            }
+            if let Some((p, h, inside)) = friction {
+                for section in inside.iter().filter(|s| s.element == e) {
+                    (0..4).for_each(|k| external[k] += p[section.contact] / h * section.shape[k]);
+                }
+            }
+            (0..4).for_each(|k| f[k] += cv[k] + ma[k] - external[k]);
+            if e + 1 == node {
+                sum += f[3];
+            } else {
+                sum -= f[1];
+            }
+            count += 1.0;
+        }
+        sum / count
+    }
+}

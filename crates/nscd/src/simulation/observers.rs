@@ -1,0 +1,135 @@
+//! What the time loop reads after each step: the nodal deflections (extremes and W̄ in one pass), the recorders
+//! of section histories and their full-DOF scratch vectors.
+
+use super::results::{Extreme, SectionHistory, WindowExtremes};
+use crate::error::Result;
+use fem_beam::BeamModel;
+
+pub(super) struct Recorder {
+    pub(super) position: f64,
+    pub(super) node: usize,
+    pub(super) contact: Option<usize>,
+    pub(super) inside: Vec<InsideSection>,
+    pub(super) history: SectionHistory,
+}
+
+/// The nodal deflections of the free w DOFs, read in one pass per step for the extremes and for W̄ (constrained
+/// nodes have w = 0: they never set an extreme and add nothing to the norm).
+pub(super) struct NodalDeflections {
+    /// (free DOF index, node x (m), trapezoid weight (m)) of every node whose w is free.
+    pub(super) nodes: Vec<(usize, f64, f64)>,
+}
+
+/// What one pass over the deflections finds.
+pub(super) struct DeflectionScan {
+    /// Lowest w (m) and its node x, first such node.
+    pub(super) lowest: (f64, f64),
+    /// Highest w (m) and its node x, first such node.
+    pub(super) highest: (f64, f64),
+    /// ∫|w| dx by the trapezoid rule over the nodes (m²).
+    pub(super) norm: f64,
+}
+
+impl NodalDeflections {
+    pub(super) fn new(mesh: &fem_beam::Mesh, dofs: &fem_beam::DofMap) -> Self {
+        let last = mesh.nodes() - 1;
+        let l = mesh.element_length();
+        let nodes = (0..=last)
+            .filter_map(|i| {
+                let weight = if i == 0 || i == last { 0.5 * l } else { l };
+                dofs.free_index(2 * i).map(|d| (d, mesh.node_x(i), weight))
+            })
+            .collect();
+        Self { nodes }
+    }
+
+    pub(super) fn scan(&self, q: &[f64]) -> DeflectionScan {
+        let mut scan = DeflectionScan { lowest: (0.0, 0.0), highest: (0.0, 0.0), norm: 0.0 };
+        for &(d, x, weight) in &self.nodes {
+            let w = q[d];
+            if w < scan.lowest.0 {
+                scan.lowest = (w, x);
+            }
+            if w > scan.highest.0 {
+                scan.highest = (w, x);
+            }
+            scan.norm += weight * w.abs();
+        }
+        scan
+    }
+}
+
+impl DeflectionScan {
+    /// Keep the record extremes (downward, upward) up to date at `time`.
+    pub(super) fn update(&self, extremes: &mut (Extreme, Extreme), time: f64) {
+        if -self.lowest.0 > extremes.0.magnitude {
+            extremes.0 = Extreme { magnitude: -self.lowest.0, position: self.lowest.1, time };
+        }
+        if self.highest.0 > extremes.1.magnitude {
+            extremes.1 = Extreme { magnitude: self.highest.0, position: self.highest.1, time };
+        }
+    }
+
+    /// The same for the extremes of a load-position window.
+    pub(super) fn update_window(&self, window: &mut WindowExtremes, time: f64) {
+        let mut pair = (window.max_downward, window.max_upward);
+        self.update(&mut pair, time);
+        (window.max_downward, window.max_upward) = pair;
+    }
+}
+
+/// A friction section strictly inside an element next to a recorded node.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct InsideSection {
+    pub(super) element: usize,
+    pub(super) contact: usize,
+    pub(super) shape: [f64; 4],
+}
+
+pub(super) fn record(r: &mut Recorder, time: f64, load_position: f64, motion: [f64; 3], moment: f64, impulse: f64) {
+    r.history.time.push(time);
+    r.history.load_position.push(load_position);
+    r.history.deflection.push(motion[0]);
+    r.history.velocity.push(motion[1]);
+    r.history.acceleration.push(motion[2]);
+    r.history.moment.push(moment);
+    if let Some(series) = r.history.impulse.as_mut() {
+        series.push(impulse);
+    }
+}
+
+/// Full-DOF scratch vectors for section results.
+pub(super) struct Buffers {
+    pub(super) q: Vec<f64>,
+    pub(super) v: Vec<f64>,
+    pub(super) a: Vec<f64>,
+    pub(super) free: Vec<f64>,
+}
+
+impl Buffers {
+    pub(super) fn new(n: usize) -> Self {
+        Self { q: vec![0.0; n], v: vec![0.0; n], a: vec![0.0; n], free: Vec::new() }
+    }
+
+    pub(super) fn expand(&mut self, dofs: &fem_beam::DofMap, q: &[f64], v: &[f64]) {
+        dofs.expand_into(q, &mut self.q);
+        dofs.expand_into(v, &mut self.v);
+        self.a.iter_mut().for_each(|a| *a = 0.0);
+    }
+
+    /// Deflection, velocity and acceleration at `x` (m, m/s, m/s²), interpolated with the Hermite shapes.
+    pub(super) fn motion_at(&self, model: &BeamModel, x: f64) -> Result<[f64; 3]> {
+        Ok([model.deflection_at(&self.q, x)?, model.deflection_at(&self.v, x)?, model.deflection_at(&self.a, x)?])
+    }
+
+    /// The state after a step: q_{k+1}, v_{k+1} and the mean acceleration (v_{k+1} − v_k)/h.
+    pub(super) fn expand_step(&mut self, dofs: &fem_beam::DofMap, q: &[f64], v: &[f64], v_before: &[f64], h: f64) {
+        dofs.expand_into(q, &mut self.q);
+        dofs.expand_into(v, &mut self.v);
+        self.free.resize(v.len(), 0.0);
+        for i in 0..v.len() {
+            self.free[i] = (v[i] - v_before[i]) / h;
+        }
+        dofs.expand_into(&self.free, &mut self.a);
+    }
+}

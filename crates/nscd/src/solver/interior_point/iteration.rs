@@ -1,0 +1,296 @@
+//! The Mehrotra predictor–corrector iteration on a (sub)problem: Newton directions through the banded
+//! B = M̂ + HᵀΣ⁻¹H, step lengths to the boundary, and the per-section slice kernels the compiler vectorises (built
+//! twice: baseline and AVX2, the same operations in the same order).
+
+use super::sections::Sections;
+use crate::solver::FrictionProblem;
+use banded::{BandedLdlt, SymmetricBanded};
+
+/// Fraction of the distance to the boundary of the positive orthant taken by a step.
+const FRACTION_TO_BOUNDARY: f64 = 0.995;
+
+/// What one interior-point solve works on besides the sections: the step's problem, `base` = the matrix M̂ (or its
+/// window condensation) over the DOFs from `offset` on, the absolute tolerance (m/s) and the iteration cap.
+#[derive(Clone, Copy)]
+pub(super) struct Subproblem<'s, 'a> {
+    pub(super) problem: &'s FrictionProblem<'a>,
+    pub(super) base: &'s SymmetricBanded,
+    pub(super) offset: usize,
+    pub(super) tolerance: f64,
+    pub(super) max_iterations: usize,
+}
+
+/// Per-section and per-DOF scratch of the interior-point iteration.
+#[derive(Debug)]
+pub(super) struct Work {
+    pub(super) sections: Sections,
+    pub(super) y: Vec<f64>,
+    pub(super) dy: Vec<f64>,
+    pub(super) b: SymmetricBanded,
+    pub(super) b_factor: BandedLdlt,
+}
+
+impl Work {
+    /// From rhs = Σ H_jᵀ r_j Σ_j⁻¹ (in `dy`): dy ← B⁻¹ rhs, Δp_j = Σ_j⁻¹(r_j − H_j dy), Δz from the complementarity
+    /// targets c (s₁Δz₁ = c₁ − s₁z₁ + z₁Δp, s₂Δz₂ = c₂ − s₂z₂ − z₂Δp); returns the largest feasible primal (p, s)
+    /// and dual (z) steps ≤ 1. Taking them separately saves 11–13 % of the iterations (measured) and is safe here:
+    /// convergence is judged on the law residual of (u, p), not on the dual residual.
+    #[inline(always)]
+    pub(super) fn newton_direction(&mut self) -> (f64, f64) {
+        let n = self.b_factor.order();
+        self.b_factor.solve_in_place(&mut self.dy[..n]);
+        let q = &mut self.sections;
+        q.gather(&self.dy);
+        let len = q.index.len();
+        let (primal, dual) = direction_terms(
+            [&q.r[..len], &q.gathered[..len], &q.inv_sigma[..len], &q.c1[..len], &q.c2[..len], &q.z1[..len]],
+            [&q.z2[..len], &q.inv_s1[..len], &q.inv_s2[..len], &q.inv_z1[..len], &q.inv_z2[..len]],
+            [&mut q.dp[..len], &mut q.dz1[..len], &mut q.dz2[..len]],
+        );
+        (1.0 / primal, 1.0 / dual)
+    }
+
+    /// Mehrotra predictor–corrector on the active sections (`sections.index`, with `u_free` set), from p = 0, on
+    /// `subproblem`. Writes the impulses of the active sections into `p`. Returns (iterations, residual).
+    ///
+    /// Compiled twice: for AVX2 where the CPU has it (detected at run time; four sections per instruction in the
+    /// per-section loops instead of two), and for the baseline. Both execute the same operations in the same order
+    /// — no fused multiply–add, sums still in section order — so they give the same bits.
+    pub(super) fn iterate(&mut self, subproblem: &Subproblem<'_, '_>, p: &mut [f64]) -> crate::Result<(usize, f64)> {
+        #[cfg(target_arch = "x86_64")]
+        #[allow(unsafe_code)]
+        if std::arch::is_x86_feature_detected!("avx2") {
+            // SAFETY: the CPU supports AVX2 (checked just above); the body is plain safe Rust.
+            return unsafe { self.iterate_avx2(subproblem, p) };
+        }
+        self.iterate_body(subproblem, p)
+    }
+
+    /// [`Work::iterate`] compiled for AVX2.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    #[allow(unsafe_code)]
+    pub(super) unsafe fn iterate_avx2(
+        &mut self,
+        subproblem: &Subproblem<'_, '_>,
+        p: &mut [f64],
+    ) -> crate::Result<(usize, f64)> {
+        self.iterate_body(subproblem, p)
+    }
+
+    /// The body of [`Work::iterate`], inlined into the baseline and the AVX2 build.
+    #[inline(always)]
+    pub(super) fn iterate_body(
+        &mut self,
+        subproblem: &Subproblem<'_, '_>,
+        p: &mut [f64],
+    ) -> crate::Result<(usize, f64)> {
+        let Subproblem { problem, base, offset, tolerance, max_iterations } = *subproblem;
+        let rows = problem.contacts.rows();
+        let nw = base.order();
+        // Three zeros of padding past the end let every row be read and written four entries wide.
+        self.y.resize(nw + 3, 0.0);
+        self.dy.resize(nw + 3, 0.0);
+        self.y.iter_mut().for_each(|x| *x = 0.0);
+        let q = &mut self.sections;
+        let len = q.index.len();
+        q.rows.clear();
+        for k in 0..len {
+            let j = q.index[k];
+            let row = &rows[j];
+            debug_assert!(row.dofs().windows(2).all(|d| d[1] == d[0] + 1), "rows touch consecutive free DOFs");
+            q.rows.push(row.dofs()[0] - offset, row.values());
+            q.a[k] = problem.bounds[j];
+            q.w[k] = problem.delassus_diagonal[j];
+            q.inv_w[k] = 1.0 / q.w[k];
+        }
+        // Start at p = 0, the centre of every box: warm starts from the previous step's (p, z) were measured to
+        // cost more iterations, not fewer (18.6 cold vs 19.8–23.9 warm per step, distributed 5 kN/m).
+        let scale = q.u_free.iter().fold(crate::solver::VELOCITY_FLOOR, |s, u| s.max(u.abs()));
+        let shift = 0.01 * scale;
+        for k in 0..len {
+            q.p[k] = 0.0;
+            q.u[k] = q.u_free[k];
+            q.s1[k] = q.a[k];
+            q.s2[k] = q.a[k];
+            // Split u into z₂ − z₁, both kept away from zero.
+            q.z1[k] = (-q.u[k]).max(0.0) + shift;
+            q.z2[k] = q.u[k].max(0.0) + shift;
+        }
+        let mut residual = q.law_residual();
+        let inv_count = 1.0 / (2 * len.max(1)) as f64;
+        let mut iterations = 0;
+        while residual > tolerance && iterations < max_iterations && len > 0 {
+            iterations += 1;
+            // B = base + HᵀΣ⁻¹H, Σ = z₁/s₁ + z₂/s₂, floored so that Σ⁻¹ stays finite for sections stuck to
+            // round-off (z → 0): beyond ~1e15·W_jj the extra stiffness changes nothing. Predictor (affine
+            // scaling, targets c = 0): r = −u, right-hand side Σ H_jᵀ r_j/Σ_j.
+            let q = &mut self.sections;
+            predictor_terms(
+                [&q.s1[..len], &q.s2[..len], &q.z1[..len], &q.z2[..len], &q.w[..len], &q.u[..len]],
+                [&mut q.inv_s1[..len], &mut q.inv_s2[..len], &mut q.inv_z1[..len], &mut q.inv_z2[..len]],
+                [&mut q.inv_sigma[..len], &mut q.r[..len], &mut q.c1[..len], &mut q.c2[..len]],
+            );
+            let mut mu = 0.0;
+            for (((s1, z1), s2), z2) in q.s1.iter().zip(&q.z1).zip(&q.s2).zip(&q.z2) {
+                mu += s1 * z1 + s2 * z2;
+            }
+            mu *= inv_count;
+            q.rows.weighted_gram_into(base, &q.inv_sigma, &mut self.b);
+            q.right_hand_side(&mut self.dy);
+            self.b.factor_into(&mut self.b_factor)?;
+            let (alpha_p_aff, alpha_d_aff) = self.newton_direction();
+            // Corrector: targets σμ − Δs_aff∘Δz_aff (Δs₁ = −Δp, Δs₂ = Δp), σ = (μ_aff/μ)³, r = −u − c₁/s₁ + c₂/s₂.
+            let q = &mut self.sections;
+            affine_terms(
+                (alpha_p_aff, alpha_d_aff),
+                [&q.s1[..len], &q.s2[..len], &q.z1[..len], &q.z2[..len]],
+                [&q.dp[..len], &q.dz1[..len], &q.dz2[..len]],
+                &mut q.gathered[..len],
+            );
+            let mut mu_affine = 0.0;
+            for term in &q.gathered {
+                mu_affine += term;
+            }
+            let target = (mu_affine * inv_count / mu).powi(3).min(1.0) * mu;
+            corrector_terms(
+                target,
+                [&q.dp[..len], &q.dz1[..len], &q.dz2[..len], &q.u[..len], &q.inv_s1[..len], &q.inv_s2[..len]],
+                [&mut q.c1[..len], &mut q.c2[..len], &mut q.r[..len]],
+            );
+            q.right_hand_side(&mut self.dy);
+            let (alpha_p, alpha_d) = self.newton_direction();
+            let (alpha, alpha_d) =
+                ((FRACTION_TO_BOUNDARY * alpha_p).min(1.0), (FRACTION_TO_BOUNDARY * alpha_d).min(1.0));
+            for (y, dy) in self.y.iter_mut().zip(&self.dy) {
+                *y += alpha * dy;
+            }
+            let q = &mut self.sections;
+            q.gather(&self.y);
+            take_step(
+                (alpha, alpha_d),
+                [&q.dp[..len], &q.dz1[..len], &q.dz2[..len], &q.u_free[..len], &q.gathered[..len]],
+                [
+                    &mut q.p[..len],
+                    &mut q.s1[..len],
+                    &mut q.s2[..len],
+                    &mut q.z1[..len],
+                    &mut q.z2[..len],
+                    &mut q.u[..len],
+                ],
+            );
+            residual = q.law_residual();
+        }
+        for (&j, &pk) in self.sections.index.iter().zip(&self.sections.p) {
+            p[j] = pk;
+        }
+        Ok((iterations, residual))
+    }
+}
+
+// The per-section loops of the iteration, as functions of slices so that the compiler knows the arrays do not
+// overlap (and, all of one length, needs no bounds checks): it then vectorises them.
+
+/// Predictor set-up: 1/s₁, 1/s₂, 1/z₁, 1/z₂, Σ⁻¹ = 1/max(z₁/s₁ + z₂/s₂, 1e-15·W), r = −u, c₁ = c₂ = 0.
+#[inline(always)]
+pub(super) fn predictor_terms(input: [&[f64]; 6], inverses: [&mut [f64]; 4], out: [&mut [f64]; 4]) {
+    let [s1, s2, z1, z2, w, u] = input;
+    let [inv_s1, inv_s2, inv_z1, inv_z2] = inverses;
+    let [inv_sigma, r, c1, c2] = out;
+    let len = s1.len();
+    let (s2, z1, z2, w, u) = (&s2[..len], &z1[..len], &z2[..len], &w[..len], &u[..len]);
+    let (inv_s1, inv_s2, inv_z1, inv_z2) =
+        (&mut inv_s1[..len], &mut inv_s2[..len], &mut inv_z1[..len], &mut inv_z2[..len]);
+    let (inv_sigma, r, c1, c2) = (&mut inv_sigma[..len], &mut r[..len], &mut c1[..len], &mut c2[..len]);
+    for k in 0..len {
+        inv_s1[k] = 1.0 / s1[k];
+        inv_s2[k] = 1.0 / s2[k];
+        inv_z1[k] = 1.0 / z1[k];
+        inv_z2[k] = 1.0 / z2[k];
+        inv_sigma[k] = 1.0 / (z1[k] * inv_s1[k] + z2[k] * inv_s2[k]).max(1e-15 * w[k]);
+        r[k] = -u[k];
+        c1[k] = 0.0;
+        c2[k] = 0.0;
+    }
+}
+
+/// Newton direction per section: Δp = (r − H dy)Σ⁻¹, Δz₁ = (c₁ + z₁Δp)/s₁ − z₁, Δz₂ = (c₂ − z₂Δp)/s₂ − z₂; returns
+/// the largest ratios −Δx/x over the primal (s) and dual (z) variables, at least 1.
+#[inline(always)]
+pub(super) fn direction_terms(first: [&[f64]; 6], second: [&[f64]; 5], out: [&mut [f64]; 3]) -> (f64, f64) {
+    let [r, g, inv_sigma, c1, c2, z1] = first;
+    let [z2, inv_s1, inv_s2, inv_z1, inv_z2] = second;
+    let [dp_out, dz1_out, dz2_out] = out;
+    let len = r.len();
+    let (g, inv_sigma, c1, c2, z1) = (&g[..len], &inv_sigma[..len], &c1[..len], &c2[..len], &z1[..len]);
+    let (z2, inv_s1, inv_s2, inv_z1, inv_z2) =
+        (&z2[..len], &inv_s1[..len], &inv_s2[..len], &inv_z1[..len], &inv_z2[..len]);
+    let (dp_out, dz1_out, dz2_out) = (&mut dp_out[..len], &mut dz1_out[..len], &mut dz2_out[..len]);
+    let (mut primal, mut dual): (f64, f64) = (1.0, 1.0);
+    for k in 0..len {
+        let dp = (r[k] - g[k]) * inv_sigma[k];
+        let dz1 = (c1[k] + z1[k] * dp) * inv_s1[k] - z1[k];
+        let dz2 = (c2[k] - z2[k] * dp) * inv_s2[k] - z2[k];
+        dp_out[k] = dp;
+        dz1_out[k] = dz1;
+        dz2_out[k] = dz2;
+        primal = primal.max(dp * inv_s1[k]).max(-dp * inv_s2[k]);
+        dual = dual.max(-dz1 * inv_z1[k]).max(-dz2 * inv_z2[k]);
+    }
+    (primal, dual)
+}
+
+/// Terms of μ_aff: (s₁ − α_pΔp)(z₁ + α_dΔz₁) + (s₂ + α_pΔp)(z₂ + α_dΔz₂).
+#[inline(always)]
+pub(super) fn affine_terms(
+    (alpha_p, alpha_d): (f64, f64),
+    state: [&[f64]; 4],
+    direction: [&[f64]; 3],
+    out: &mut [f64],
+) {
+    let [s1, s2, z1, z2] = state;
+    let [dp, dz1, dz2] = direction;
+    let len = out.len();
+    let (s1, s2, z1, z2, dp, dz1, dz2) =
+        (&s1[..len], &s2[..len], &z1[..len], &z2[..len], &dp[..len], &dz1[..len], &dz2[..len]);
+    for k in 0..len {
+        let step = alpha_p * dp[k];
+        out[k] = (s1[k] - step) * (z1[k] + alpha_d * dz1[k]) + (s2[k] + step) * (z2[k] + alpha_d * dz2[k]);
+    }
+}
+
+/// Corrector targets c₁ = t + Δp Δz₁, c₂ = t − Δp Δz₂ and r = −u − c₁/s₁ + c₂/s₂.
+#[inline(always)]
+pub(super) fn corrector_terms(target: f64, input: [&[f64]; 6], out: [&mut [f64]; 3]) {
+    let [dp, dz1, dz2, u, inv_s1, inv_s2] = input;
+    let [c1, c2, r] = out;
+    let len = dp.len();
+    let (dz1, dz2, u, inv_s1, inv_s2) = (&dz1[..len], &dz2[..len], &u[..len], &inv_s1[..len], &inv_s2[..len]);
+    let (c1, c2, r) = (&mut c1[..len], &mut c2[..len], &mut r[..len]);
+    for k in 0..len {
+        c1[k] = target + dp[k] * dz1[k];
+        c2[k] = target - dp[k] * dz2[k];
+        r[k] = -u[k] - c1[k] * inv_s1[k] + c2[k] * inv_s2[k];
+    }
+}
+
+/// The step: p += αΔp, s₁ −= αΔp, s₂ += αΔp (slacks are updated, not recomputed from p: near a bound a − p loses
+/// all precision), z += α_dΔz, u = u_free + H y.
+#[inline(always)]
+pub(super) fn take_step((alpha, alpha_d): (f64, f64), input: [&[f64]; 5], state: [&mut [f64]; 6]) {
+    let [dp, dz1, dz2, u_free, hy] = input;
+    let [p, s1, s2, z1, z2, u] = state;
+    let len = dp.len();
+    let (dz1, dz2, u_free, hy) = (&dz1[..len], &dz2[..len], &u_free[..len], &hy[..len]);
+    let (p, s1, s2, z1, z2, u) =
+        (&mut p[..len], &mut s1[..len], &mut s2[..len], &mut z1[..len], &mut z2[..len], &mut u[..len]);
+    for k in 0..len {
+        let step = alpha * dp[k];
+        p[k] += step;
+        s1[k] -= step;
+        s2[k] += step;
+        z1[k] += alpha_d * dz1[k];
+        z2[k] += alpha_d * dz2[k];
+        u[k] = u_free[k] + hy[k];
+    }
+}

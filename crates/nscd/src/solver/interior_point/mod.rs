@@ -1,0 +1,230 @@
+//! A primal–dual interior-point method for the friction step whose Newton systems are banded: the solver built for
+//! dense distributed friction (docs/theory.md §5), where Gauss–Seidel stalls because W = H M̂⁻¹ Hᵀ is singular.
+//!
+//! The step is the box QP min ½pᵀWp + u_freeᵀp, −a ≤ p ≤ a. With slacks s₁ = a − p, s₂ = a + p and multipliers
+//! z₁, z₂ ≥ 0 (velocities, m/s) the optimality conditions are
+//!
+//! ```text
+//! W p + u_free + z₁ − z₂ = 0,   s₁∘z₁ = 0,   s₂∘z₂ = 0,   s, z ≥ 0
+//! ```
+//!
+//! so u = W p + u_free = z₂ − z₁: a section at p_j = a_j moves backwards, one at −a_j forwards, one inside is stuck.
+//! Mehrotra predictor–corrector steps keep p strictly inside the box (the slacks s₁, s₂ are carried as variables: near a bound, a − p would lose all precision). Each Newton system
+//! (W + Σ)Δp = r, Σ = z₁/s₁ + z₂/s₂ > 0, is solved without ever forming W, by the Woodbury identity
+//!
+//! ```text
+//! B = M̂ + Hᵀ Σ⁻¹ H  (banded, half-bandwidth 3: each row H_j touches one element),
+//! y = B⁻¹ Hᵀ Σ⁻¹ r,   Δp = Σ⁻¹ (r − H y),   M̂⁻¹ Hᵀ Δp = y,
+//! ```
+//!
+//! so one banded factorisation and two banded solves per iteration, O(n + m). The velocity correction
+//! M̂⁻¹Hᵀp is carried along, so W p is never needed either. Redundant stuck sections (more sections than DOFs)
+//! only make Σ⁻¹ large on them, which B absorbs. Iterates stop when the law residual meets the tolerance.
+//! Sections with a zero bound are fixed at p = 0 and left out.
+//!
+//! # The moving window
+//! Far from the load nothing changes from one step to the next: stuck sections keep their impulses, and the
+//! coupling through M̂⁻¹ decays like e^{−x/(√2ℓ)} with the coupling length ℓ = (EI h²θ²/ρA)^¼. So each step first
+//! tries the previous impulses; the sections where they violate the law, widened by a margin of 30ℓ (coupling
+//! below 1e-9), form the window. Only the window's impulses are re-solved, on the window's DOFs, with the rest of
+//! the beam condensed exactly into the window matrix by Schur complements taken from the LDLᵀ factors of M̂ and of
+//! M̂ reversed (S_W = M̂_WW − M̂_WO M̂_OO⁻¹ M̂_OW, whose inverse is the W block of M̂⁻¹). The law residual is then
+//! checked on *every* section; should a section outside the window fail, the window is widened (2×, 4×) and at
+//! last the whole problem is solved instead.
+//! The answer is therefore exact to the same tolerance; only the cost depends on the window.
+
+mod iteration;
+mod sections;
+mod window;
+
+use super::{FrictionProblem, FrictionSolver, StepReport, StepStatus};
+use banded::{BandedLdlt, SymmetricBanded};
+use iteration::{Subproblem, Work};
+use sections::Sections;
+
+/// How the steps of a run were solved.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct WindowStatistics {
+    /// Steps where the previous impulses already satisfied the law.
+    pub unchanged: usize,
+    /// Steps solved on a window.
+    pub windowed: usize,
+    /// Steps solved on the whole beam.
+    pub full: usize,
+    /// Sections re-solved, summed over the steps.
+    pub sections_solved: usize,
+}
+
+/// Banded primal–dual interior-point solver with a moving window; scratch allocated once per run.
+#[derive(Debug)]
+pub struct BandedInteriorPoint {
+    tolerance: f64,
+    max_iterations: usize,
+    /// Window margin (m); None solves the whole beam every step.
+    margin: Option<f64>,
+    all_active: Vec<usize>,
+    backward: Option<BandedLdlt>,
+    window_matrix: SymmetricBanded,
+    work: Work,
+    v: Vec<f64>,
+    correction: Vec<f64>,
+    check: Vec<f64>,
+    started: bool,
+    /// How the steps were solved.
+    pub statistics: WindowStatistics,
+}
+
+impl BandedInteriorPoint {
+    /// Scratch for `problem`. With `window_margin` = Some(m) (metres; 30 coupling lengths is safe) each step
+    /// re-solves only a window around the sections that change; None always solves the whole problem.
+    pub fn new(
+        problem: &FrictionProblem<'_>,
+        tolerance: f64,
+        max_iterations: usize,
+        window_margin: Option<f64>,
+    ) -> crate::Result<Self> {
+        let (n, m) = (problem.m_hat.order(), problem.len());
+        let backward = match window_margin {
+            Some(_) => Some(problem.m_hat.reversed().factor()?),
+            None => None,
+        };
+        Ok(Self {
+            tolerance,
+            max_iterations,
+            margin: window_margin,
+            all_active: (0..m).filter(|&j| problem.bounds[j] > 0.0).collect(),
+            backward,
+            window_matrix: problem.m_hat.clone(),
+            work: Work {
+                sections: Sections::with_capacity(m),
+                y: vec![0.0; n],
+                dy: vec![0.0; n],
+                b: problem.m_hat.clone(),
+                b_factor: problem.factor.clone(),
+            },
+            v: vec![0.0; n],
+            correction: vec![0.0; n],
+            check: vec![0.0; m],
+            started: false,
+            statistics: WindowStatistics::default(),
+        })
+    }
+
+    /// v = v_free + M̂⁻¹Hᵀp and the law residual of every section, into `self.check` (u) — one banded solve.
+    fn full_residual(&mut self, problem: &FrictionProblem<'_>, v_free: &[f64], p: &[f64]) -> f64 {
+        problem.outcome(v_free, p, &mut self.v, &mut self.check)
+    }
+
+    fn solve_whole(
+        &mut self,
+        problem: &FrictionProblem<'_>,
+        u_free: &[f64],
+        p: &mut [f64],
+        tolerance: f64,
+        budget: usize,
+    ) -> crate::Result<(usize, f64)> {
+        self.statistics.full += 1;
+        self.statistics.sections_solved += self.all_active.len();
+        let q = &mut self.work.sections;
+        q.index.clear();
+        q.index.extend_from_slice(&self.all_active);
+        q.fit();
+        for (u, &j) in q.u_free.iter_mut().zip(&q.index) {
+            *u = u_free[j];
+        }
+        let subproblem = Subproblem { problem, base: problem.m_hat, offset: 0, tolerance, max_iterations: budget };
+        self.work.iterate(&subproblem, p)
+    }
+}
+
+impl FrictionSolver for BandedInteriorPoint {
+    fn name(&self) -> &'static str {
+        "interior-point"
+    }
+
+    fn solve(
+        &mut self,
+        problem: &FrictionProblem<'_>,
+        v_free: &[f64],
+        u_free: &[f64],
+        p: &mut [f64],
+    ) -> crate::Result<StepReport> {
+        let tolerance = problem.absolute_tolerance(self.tolerance, u_free);
+        let solved_before = self.statistics.sections_solved;
+        let first = !self.started;
+        self.started = true;
+        let (iterations, residual) = match self.margin {
+            Some(margin) if !first => {
+                let predicted = self.full_residual(problem, v_free, p);
+                if predicted <= tolerance {
+                    self.statistics.unchanged += 1;
+                    (0, predicted)
+                } else {
+                    self.solve_windows(problem, v_free, u_free, p, tolerance, margin)?
+                }
+            }
+            _ => self.solve_whole(problem, u_free, p, tolerance, self.max_iterations)?,
+        };
+        Ok(StepReport {
+            status: StepStatus::of(residual, tolerance, iterations, self.max_iterations),
+            iterations,
+            residual,
+            tolerance,
+            sections: self.statistics.sections_solved - solved_before,
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use fem_beam::reference::uic60_on_soft_soil;
+    use friction::DistributedFriction;
+
+    /// The AVX2 build of the iteration must give the same bits as the baseline build: same operations, same order,
+    /// no fused multiply–add. A whole-beam step of the reference case with distributed friction and a wavy free
+    /// velocity (stick and slip of both signs), solved by both. (Without AVX2 there is only the baseline build and
+    /// nothing to compare.)
+    #[test]
+    fn avx2_and_baseline_iterations_agree_to_the_bit() {
+        #[cfg(target_arch = "x86_64")]
+        if std::arch::is_x86_feature_detected!("avx2") {
+            let model = uic60_on_soft_soil().model().expect("reference model");
+            let contacts = DistributedFriction::new(5e3).contact_set(&model).expect("distributed friction");
+            let h = 0.1 / 200.0;
+            let system = crate::LinearSystem::from_beam(&model);
+            let m_hat = crate::stepper::iteration_matrix(&system, crate::Integration { theta: 0.5, step: h });
+            let factor = m_hat.factor().expect("M̂ is SPD");
+            let problem = FrictionProblem::new(&contacts, &m_hat, &factor, h);
+            let v_free: Vec<f64> = (0..m_hat.order()).map(|i| 0.3 * (0.05 * i as f64).sin() - 0.05).collect();
+            let mut u_free = vec![0.0; contacts.len()];
+            contacts.velocities(&v_free, &mut u_free);
+            let tolerance = problem.absolute_tolerance(1e-8, &u_free);
+            let subproblem = Subproblem { problem: &problem, base: &m_hat, offset: 0, tolerance, max_iterations: 200 };
+            let solve = |avx2: bool| {
+                let mut solver = BandedInteriorPoint::new(&problem, 1e-8, 200, None).expect("solver");
+                let work = &mut solver.work;
+                work.sections.index.extend(0..contacts.len());
+                work.sections.fit();
+                work.sections.u_free.copy_from_slice(&u_free);
+                let mut p = vec![0.0; contacts.len()];
+                #[allow(unsafe_code)]
+                let (iterations, residual) = if avx2 {
+                    // SAFETY: AVX2 detected above.
+                    unsafe { work.iterate_avx2(&subproblem, &mut p) }
+                } else {
+                    work.iterate_body(&subproblem, &mut p)
+                }
+                .expect("iterate");
+                assert!(residual <= tolerance, "{residual} > {tolerance}");
+                (iterations, p)
+            };
+            let (baseline, avx2) = (solve(false), solve(true));
+            assert!(baseline.0 > 3, "a nontrivial step: {} iterations", baseline.0);
+            let slipping = baseline.1.iter().zip(&problem.bounds).filter(|(p, a)| p.abs() > 0.999 * *a).count();
+            assert!(slipping > 10 && slipping < contacts.len() - 10, "stick and slip: {slipping} slipping");
+            assert_eq!(baseline.0, avx2.0);
+            assert!(baseline.1.iter().zip(&avx2.1).all(|(a, b)| a.to_bits() == b.to_bits()));
+        }
+    }
+}

@@ -1,0 +1,112 @@
+//! The interior-point state of the active sections, one array per quantity, and the per-section passes over it.
+
+use banded::BlockRows;
+
+/// Interior-point state of the active sections, one array per quantity, k = 0..len in the order of `index`. The
+/// per-section arithmetic runs as straight loops over contiguous arrays (which the compiler vectorises); B and the
+/// right-hand side are accumulated section after section ([`BlockRows`]) and the sums μ in section order, so every
+/// result is the same to the bit as section-by-section evaluation.
+#[derive(Debug, Default)]
+pub(super) struct Sections {
+    /// Section index j of each active section.
+    pub(super) index: Vec<usize>,
+    /// The rows H_k over the window's DOFs (rows touch consecutive free DOFs).
+    pub(super) rows: BlockRows,
+    /// Bound a_j (N·s), W_jj and 1/W_jj.
+    pub(super) a: Vec<f64>,
+    pub(super) w: Vec<f64>,
+    pub(super) inv_w: Vec<f64>,
+    pub(super) u_free: Vec<f64>,
+    pub(super) u: Vec<f64>,
+    pub(super) p: Vec<f64>,
+    pub(super) s1: Vec<f64>,
+    pub(super) s2: Vec<f64>,
+    pub(super) z1: Vec<f64>,
+    pub(super) z2: Vec<f64>,
+    pub(super) inv_s1: Vec<f64>,
+    pub(super) inv_s2: Vec<f64>,
+    pub(super) inv_z1: Vec<f64>,
+    pub(super) inv_z2: Vec<f64>,
+    pub(super) inv_sigma: Vec<f64>,
+    pub(super) r: Vec<f64>,
+    pub(super) c1: Vec<f64>,
+    pub(super) c2: Vec<f64>,
+    pub(super) dp: Vec<f64>,
+    pub(super) dz1: Vec<f64>,
+    pub(super) dz2: Vec<f64>,
+    /// H_j·x gathered for each section, and per-section terms of the sums.
+    pub(super) gathered: Vec<f64>,
+    /// r_k Σ_k⁻¹, the weights of the Newton right-hand side.
+    pub(super) weighted: Vec<f64>,
+}
+
+impl Sections {
+    /// Arrays with room for `m` sections, so that no step allocates.
+    pub(super) fn with_capacity(m: usize) -> Self {
+        let mut sections = Self { rows: BlockRows::with_capacity(m), ..Self::default() };
+        sections.index.resize(m, 0);
+        sections.fit();
+        sections.index.clear();
+        sections
+    }
+
+    /// Size every array to `index.len()` (no allocation once the capacity is there).
+    pub(super) fn fit(&mut self) {
+        let len = self.index.len();
+        for v in [
+            &mut self.a,
+            &mut self.w,
+            &mut self.inv_w,
+            &mut self.u_free,
+            &mut self.u,
+            &mut self.p,
+            &mut self.s1,
+            &mut self.s2,
+            &mut self.z1,
+            &mut self.z2,
+            &mut self.inv_s1,
+            &mut self.inv_s2,
+            &mut self.inv_z1,
+            &mut self.inv_z2,
+            &mut self.inv_sigma,
+            &mut self.r,
+            &mut self.c1,
+            &mut self.c2,
+            &mut self.dp,
+            &mut self.dz1,
+            &mut self.dz2,
+            &mut self.gathered,
+            &mut self.weighted,
+        ] {
+            v.resize(len, 0.0);
+        }
+    }
+
+    /// gathered_k = H_k·x (x padded with three zeros past its end).
+    #[inline(always)]
+    pub(super) fn gather(&mut self, x: &[f64]) {
+        self.rows.mul(x, &mut self.gathered);
+    }
+
+    /// The Newton right-hand side out = Σ_k H_kᵀ r_k Σ_k⁻¹, summed in section order (out padded with three zeros
+    /// past its end).
+    #[inline(always)]
+    pub(super) fn right_hand_side(&mut self, out: &mut [f64]) {
+        let len = self.index.len();
+        let (r, inv_sigma, weighted) = (&self.r[..len], &self.inv_sigma[..len], &mut self.weighted[..len]);
+        for k in 0..len {
+            weighted[k] = r[k] * inv_sigma[k];
+        }
+        self.rows.transpose_mul(weighted, out);
+    }
+
+    /// max_k of the law residual |p − proj(p − u/W)|·W (m/s).
+    #[inline(always)]
+    pub(super) fn law_residual(&self) -> f64 {
+        let mut residual: f64 = 0.0;
+        for ((((&p, &u), &a), &w), &inv_w) in self.p.iter().zip(&self.u).zip(&self.a).zip(&self.w).zip(&self.inv_w) {
+            residual = residual.max((p - (p - u * inv_w).clamp(-a, a)).abs() * w);
+        }
+        residual
+    }
+}

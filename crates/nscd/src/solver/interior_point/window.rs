@@ -1,0 +1,109 @@
+//! The moving window: re-solve only the sections within a margin of those whose previous impulses violate the
+//! law, on the window's DOFs, with the rest of the beam condensed exactly by Schur complements; widen it, and at
+//! last solve the whole problem, while any section fails the law (see the module documentation above).
+
+use super::BandedInteriorPoint;
+use super::iteration::Subproblem;
+use crate::solver::FrictionProblem;
+
+impl BandedInteriorPoint {
+    /// Re-solve the sections within `margin` of the ones violating the law (residuals in `self.check`, v in
+    /// `self.v`), on the window's DOFs. Returns None when the window would be the whole problem.
+    pub(super) fn solve_window(
+        &mut self,
+        problem: &FrictionProblem<'_>,
+        p: &mut [f64],
+        tolerance: f64,
+        margin: f64,
+        budget: usize,
+    ) -> crate::Result<Option<usize>> {
+        let positions = problem.contacts.positions();
+        let rows = problem.contacts.rows();
+        let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+        for &j in &self.all_active {
+            if problem.section_residual(j, self.check[j], p[j]) > tolerance {
+                lo = lo.min(positions[j]);
+                hi = hi.max(positions[j]);
+            }
+        }
+        let (lo, hi) = (lo - margin, hi + margin);
+        self.work.sections.index.clear();
+        let (mut start, mut end) = (usize::MAX, 0);
+        for &j in &self.all_active {
+            if (lo..=hi).contains(&positions[j]) {
+                self.work.sections.index.push(j);
+                if let Some((first, last)) = rows[j].dof_span() {
+                    start = start.min(first);
+                    end = end.max(last + 1);
+                }
+            }
+        }
+        let n = problem.m_hat.order();
+        let bandwidth = problem.m_hat.bandwidth();
+        if self.work.sections.index.len() == self.all_active.len() || end <= start {
+            return Ok(None);
+        }
+        // The condensation needs the window wider than the band.
+        if end - start <= bandwidth {
+            end = (start + bandwidth + 1).min(n);
+            start = end.saturating_sub(bandwidth + 1);
+        }
+        // v' = v − M̂⁻¹H_Wᵀp_W: the motion with the window's impulses removed; u_free of the window from it.
+        self.correction.iter_mut().for_each(|x| *x = 0.0);
+        for &j in &self.work.sections.index {
+            rows[j].add_transpose(p[j], &mut self.correction);
+        }
+        problem.factor.solve_in_place(&mut self.correction);
+        let q = &mut self.work.sections;
+        q.fit();
+        for (u, &j) in q.u_free.iter_mut().zip(&q.index) {
+            *u = rows[j].dot(&self.v) - rows[j].dot(&self.correction);
+        }
+        problem.m_hat.principal_submatrix_into(start, end, &mut self.window_matrix);
+        if start > 0 {
+            problem.factor.subtract_leading_schur(start, &mut self.window_matrix);
+        }
+        if end < n {
+            self.backward.as_ref().expect("window factors").subtract_trailing_schur(end, &mut self.window_matrix);
+        }
+        self.statistics.sections_solved += self.work.sections.index.len();
+        let (iterations, _) = self.work.iterate(
+            &Subproblem { problem, base: &self.window_matrix, offset: start, tolerance, max_iterations: budget },
+            p,
+        )?;
+        Ok(Some(iterations))
+    }
+
+    /// Window solves with growing margins (the final check on every section decides), then the whole problem; all
+    /// of them together within `max_iterations`.
+    pub(super) fn solve_windows(
+        &mut self,
+        problem: &FrictionProblem<'_>,
+        v_free: &[f64],
+        u_free: &[f64],
+        p: &mut [f64],
+        tolerance: f64,
+        margin: f64,
+    ) -> crate::Result<(usize, f64)> {
+        let mut iterations = 0;
+        for widen in [1.0, 2.0, 4.0] {
+            let budget = self.max_iterations - iterations;
+            match self.solve_window(problem, p, tolerance, widen * margin, budget)? {
+                Some(used) => {
+                    iterations += used;
+                    let residual = self.full_residual(problem, v_free, p);
+                    if residual <= tolerance {
+                        self.statistics.windowed += 1;
+                        return Ok((iterations, residual));
+                    }
+                }
+                None => break,
+            }
+        }
+        if iterations >= self.max_iterations {
+            return Ok((iterations, self.full_residual(problem, v_free, p)));
+        }
+        let (more, residual) = self.solve_whole(problem, u_free, p, tolerance, self.max_iterations - iterations)?;
+        Ok((iterations + more, residual))
+    }
+}
