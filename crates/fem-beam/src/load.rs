@@ -21,6 +21,17 @@ pub struct ElementLoad {
     pub nodal: ElementVector,
 }
 
+impl ElementLoad {
+    /// The consistent nodal loads F·Ψ(ξ) of a point force `force` (N, positive upward) at `x` (m), on the element
+    /// that owns x ([`Mesh::locate`]: [x_a, x_b), the last element closed): nodal forces and moments, the one
+    /// formula every point load of frictrack uses (static loads, the moving load, section results).
+    pub fn point_force(mesh: &Mesh, x: f64, force: f64) -> Result<Self> {
+        let p = mesh.locate(x)?;
+        let n = hermite::shape(p.xi, mesh.element_length());
+        Ok(Self { element: p.element, nodal: n.map(|v| v * force) })
+    }
+}
+
 /// A load case: a list of element contributions.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct LoadVector {
@@ -47,9 +58,7 @@ impl LoadVector {
     /// Add a point force `force` (N, positive upward) at `x` (m).
     pub fn add_point_force(&mut self, mesh: &Mesh, x: f64, force: f64) -> Result<()> {
         finite("force", force)?;
-        let p = mesh.locate(x)?;
-        let n = hermite::shape(p.xi, mesh.element_length());
-        self.contributions.push(ElementLoad { element: p.element, nodal: n.map(|v| v * force) });
+        self.contributions.push(ElementLoad::point_force(mesh, x, force)?);
         Ok(())
     }
 

@@ -83,6 +83,23 @@ impl BeamModel {
         Ok(q.iter().step_by(2).copied().collect())
     }
 
+    /// End forces of element `e`, f = K_e q_e + C_e q̇_e + M_e q̈_e − f_e (N on w, N·m on θ, element DOF order), from
+    /// full-DOF vectors already checked by the caller (`motion` optional, `load` the element's applied nodal loads).
+    /// The moment at its left end is −f[1], at its right end +f[3] (sagging-positive, M = EI·w″).
+    pub fn element_end_forces(&self, e: usize, q: &[f64], motion: Motion<'_>, load: &ElementVector) -> ElementVector {
+        let mut f = hermite::apply(&self.element_stiffness(), &Self::element_dofs(q, e));
+        if let Some(v) = motion.velocity {
+            let cv = hermite::apply(&self.element_damping_matrix(e), &Self::element_dofs(v, e));
+            (0..4).for_each(|k| f[k] += cv[k]);
+        }
+        if let Some(a) = motion.acceleration {
+            let ma = hermite::apply(&self.element_mass(), &Self::element_dofs(a, e));
+            (0..4).for_each(|k| f[k] += ma[k]);
+        }
+        (0..4).for_each(|k| f[k] -= load[k]);
+        f
+    }
+
     /// Nodal bending moments from element end forces, with the applied `loads` and optional `motion`.
     pub fn nodal_moments(&self, q: &[f64], loads: &LoadVector, motion: Motion<'_>) -> Result<NodalMoments> {
         self.check_full("DOF vector", q)?;
@@ -96,21 +113,10 @@ impl BeamModel {
                 element_loads[c.element][k] += c.nodal[k];
             }
         }
-        let ke = self.element_stiffness();
-        let me = self.element_mass();
         let mut sum = vec![0.0; mesh.nodes()];
         let mut count = vec![0u32; mesh.nodes()];
         for e in 0..mesh.elements {
-            let mut f = hermite::apply(&ke, &Self::element_dofs(q, e));
-            if let Some(v) = motion.velocity {
-                let cv = hermite::apply(&self.element_damping_matrix(e), &Self::element_dofs(v, e));
-                (0..4).for_each(|k| f[k] += cv[k]);
-            }
-            if let Some(a) = motion.acceleration {
-                let ma = hermite::apply(&me, &Self::element_dofs(a, e));
-                (0..4).for_each(|k| f[k] += ma[k]);
-            }
-            (0..4).for_each(|k| f[k] -= element_loads[e][k]);
+            let f = self.element_end_forces(e, q, motion, &element_loads[e]);
             sum[e] -= f[1];
             sum[e + 1] += f[3];
             count[e] += 1;

@@ -1,6 +1,6 @@
 //! External forces F(t) on the free DOFs: the moving point load of docs/theory.md §3, or any time function.
 
-use fem_beam::element::hermite;
+use fem_beam::load::ElementLoad;
 use fem_beam::{DofMap, Mesh};
 
 /// A time-dependent external force over the free DOFs.
@@ -58,10 +58,9 @@ impl MovingLoad {
         if x < -tol || x > self.mesh.length + tol {
             return None;
         }
-        let p = self.mesh.locate(x.clamp(0.0, self.mesh.length)).ok()?;
-        let n = hermite::shape(p.xi, self.mesh.element_length());
-        let dofs = std::array::from_fn(|k| self.free[2 * p.element + k]);
-        Some((dofs, n.map(|v| -self.force * v)))
+        let load = ElementLoad::point_force(&self.mesh, x.clamp(0.0, self.mesh.length), -self.force).ok()?;
+        let dofs = std::array::from_fn(|k| self.free[2 * load.element + k]);
+        Some((dofs, load.nodal))
     }
 }
 

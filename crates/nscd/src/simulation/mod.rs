@@ -22,7 +22,9 @@ use crate::stepper::{Integration, MoreauJean, iteration_matrix};
 use crate::system::LinearSystem;
 use fem_beam::BeamModel;
 use fem_beam::element::hermite;
+use fem_beam::load::ElementLoad;
 use fem_beam::reference::InfiniteBeam;
+use fem_beam::section::Motion;
 use friction::ContactSet;
 use observers::{Buffers, InsideSection, NodalDeflections, Recorder, record};
 use std::time::Instant;
@@ -177,7 +179,7 @@ impl<'a> Simulation<'a> {
         let mut full = Buffers::new(dofs.full_len());
         for r in &mut recorders {
             full.expand(dofs, stepper.q(), stepper.v());
-            let m0 = self.moment_at_node(r.node, &full, &load, &[(0.0, 1.0)], None);
+            let m0 = self.moment_at_node(r.node, &full, &load, 0.0, None);
             record(r, 0.0, start, full.motion_at(model, r.position)?, m0, 0.0);
         }
 
@@ -217,8 +219,7 @@ impl<'a> Simulation<'a> {
                 // friction forces p/h of the step.
                 full.expand_step(dofs, stepper.q(), stepper.v(), stepper.previous_v(), h);
                 let impulse = r.contact.map_or(0.0, |j| stepper.p[j]);
-                let moment =
-                    self.moment_at_node(r.node, &full, &load, &[(time, 1.0)], Some((&stepper.p, h, &r.inside)));
+                let moment = self.moment_at_node(r.node, &full, &load, time, Some((&stepper.p, h, &r.inside)));
                 record(r, time, load.position(time), full.motion_at(model, r.position)?, moment, impulse);
             }
             if !keep_going {
@@ -251,51 +252,43 @@ impl<'a> Simulation<'a> {
         })
     }
 
-    /// Bending moment at `node` (N·m) from the end forces of its adjacent elements,
-    /// f = K_e q_e + C_e q̇_e + M_e q̈_e − f_e (docs/theory.md §6), averaged over the (one or two) adjacent elements. The
-    /// element loads f_e are the moving load at the weighted `load_times` and the friction forces p_j/h of the
-    /// sections inside the element (`inside`, precomputed with their shape functions); sections on nodes act on w
-    /// only and leave the moments unchanged.
+    /// Bending moment at `node` (N·m) from the end forces of its adjacent elements
+    /// ([`BeamModel::element_end_forces`], docs/theory.md §6), averaged over the (one or two) adjacent elements. The
+    /// element loads are the moving load where it stands at `time` and the friction forces p_j/h of the sections
+    /// inside the element (`inside`, precomputed with their shape functions); sections on nodes act on w only and
+    /// leave the moments unchanged.
     fn moment_at_node(
         &self,
         node: usize,
         full: &Buffers,
         load: &MovingLoad,
-        load_times: &[(f64, f64)],
+        time: f64,
         friction: Option<(&[f64], f64, &[InsideSection])>,
     ) -> f64 {
         let model = self.model;
         let mesh = model.mesh();
-        let l = mesh.element_length();
-        let ke = model.element_stiffness();
-        let me = model.element_mass();
+        let x_load = load.position(time);
+        let moving = (0.0..=mesh.length)
+            .contains(&x_load)
+            .then(|| ElementLoad::point_force(mesh, x_load, -load.force).ok())
+            .flatten();
+        let motion = Motion { velocity: Some(&full.v), acceleration: Some(&full.a) };
         let mut sum = 0.0;
         let mut count = 0.0;
         for e in [node.wrapping_sub(1), node] {
             if e >= mesh.elements {
                 continue;
             }
-            let pick = |v: &[f64]| [v[2 * e], v[2 * e + 1], v[2 * e + 2], v[2 * e + 3]];
-            let mut f = hermite::apply(&ke, &pick(&full.q));
-            let cv = hermite::apply(&model.element_damping_matrix(e), &pick(&full.v));
-            let ma = hermite::apply(&me, &pick(&full.a));
-            let (x_a, x_b) = (mesh.node_x(e), mesh.node_x(e + 1));
             let mut external = [0.0; 4];
-            for &(time, weight) in load_times {
-                let x_load = load.position(time);
-                // The element owning the load, as Mesh::locate decides: [x_a, x_b), the last one closed.
-                let owns = (x_a..x_b).contains(&x_load) || (e + 1 == mesh.elements && x_load == x_b);
-                if weight != 0.0 && owns {
-                    let n = hermite::shape((x_load - x_a) / l, l);
-                    (0..4).for_each(|k| external[k] -= weight * load.force * n[k]);
-                }
+            if let Some(point) = moving.filter(|p| p.element == e) {
+                external = point.nodal;
             }
             if let Some((p, h, inside)) = friction {
                 for section in inside.iter().filter(|s| s.element == e) {
                     (0..4).for_each(|k| external[k] += p[section.contact] / h * section.shape[k]);
                 }
             }
-            (0..4).for_each(|k| f[k] += cv[k] + ma[k] - external[k]);
+            let f = model.element_end_forces(e, &full.q, motion, &external);
             if e + 1 == node {
                 sum += f[3];
             } else {
