@@ -1,6 +1,7 @@
-//! Ctrl-C (SIGINT, and SIGTERM as sent by batch schedulers): the first stops sweeps and studies before their next
-//! run, so that the runs in flight finish and reach the journal; the second quits at once. Either way the journal
-//! holds every finished run and `--resume` continues from it.
+//! Ctrl-C (SIGINT, and SIGTERM as sent by batch schedulers): the first stops sweeps, studies and single runs within
+//! a time step — runs not started are skipped, runs in flight are abandoned at their next step — and the command
+//! exits with 130; the second quits at once. Either way the journal holds every finished run and `--resume`
+//! continues from it.
 
 use std::sync::OnceLock;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -18,7 +19,7 @@ pub fn stop_flag() -> &'static AtomicBool {
             if STOP.swap(true, Ordering::SeqCst) {
                 std::process::exit(i32::from(EXIT_CODE));
             }
-            eprintln!("\nstopping after the runs in flight (Ctrl-C again to quit at once) …");
+            eprintln!("\nstopping: runs in flight end at their next step, finished runs are kept (Ctrl-C again to quit at once) …");
         });
         if let Err(e) = installed {
             eprintln!("warning: no Ctrl-C handler ({e}); an interrupt will still keep the finished runs");
