@@ -95,11 +95,11 @@ fn hint(error: &anyhow::Error) -> Option<&'static str> {
         _ => error.downcast_ref::<NscdError>(),
     };
     match stepping? {
-        NscdError::Unconverged { solver: "projection", .. } => Some(
+        NscdError::Unconverged { solver: nscd::SolverKind::Projection, .. } => Some(
             "raise [integration] max_iterations or --tolerance, or choose another solver (--solver interior-point or \
              clarabel)",
         ),
-        NscdError::Unconverged { solver: "clarabel", .. } => {
+        NscdError::Unconverged { solver: nscd::SolverKind::Clarabel, .. } => {
             Some("raise --tolerance, or choose another solver (--solver interior-point or projection)")
         }
         NscdError::Unconverged { .. } => Some(

@@ -218,7 +218,7 @@ fn report(scenario: &Scenario, case: &Case, result: &RunResult, wall_time: f64) 
         max_iterations: s.max_iterations,
         max_residual: s.max_residual,
         mean_sections_solved: s.mean_sections_solved,
-        solver: s.solver.to_string(),
+        solver: s.solver_name().to_string(),
         wall_time,
     })
 }

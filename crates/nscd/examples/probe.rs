@@ -42,7 +42,7 @@ fn main() {
     println!(
         "{case}: max down {:.6} m, solver {}, {:.2} iterations/step (max {}), {:.0} of {} sections re-solved per step, loop {:.3} s",
         result.max_downward.magnitude,
-        s.solver,
+        s.solver_name(),
         s.mean_iterations,
         s.max_iterations,
         s.mean_sections_solved,

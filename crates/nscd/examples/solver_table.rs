@@ -33,7 +33,7 @@ fn main() {
             let outcome = Simulation::new(&model, contacts, &settings)
                 .and_then(|s| s.run_observed(&mut |view| view.step < steps));
             let label = match kind {
-                SolverKind::Auto => format!("auto ({})", outcome.as_ref().map_or("—", |r| r.statistics.solver)),
+                SolverKind::Auto => format!("auto ({})", outcome.as_ref().map_or("—", |r| r.statistics.solver_name())),
                 other => other.name().to_string(),
             };
             match outcome {

@@ -20,8 +20,8 @@ pub enum NscdError {
         "friction solver {solver} did not converge at step {step} (t = {time:.6} s), {status}: residual {residual:.3e} m/s after {iterations} iterations (tolerance {tolerance:.3e} m/s)"
     )]
     Unconverged {
-        /// Solver name.
-        solver: &'static str,
+        /// The solver.
+        solver: crate::solver::SolverKind,
         /// How the solver's step ended.
         status: crate::solver::StepStatus,
         /// Step index (1-based: the step being computed).

@@ -15,7 +15,7 @@
 use crate::error::{NscdError, Result};
 use crate::forcing::Forcing;
 use crate::kernels::dot;
-use crate::solver::{FrictionProblem, FrictionSolver, StepReport};
+use crate::solver::{FrictionProblem, FrictionSolver, SolverKind, StepReport};
 use crate::system::LinearSystem;
 use banded::{BandDiagonals, BandedLdlt, SymmetricBanded};
 use friction::ContactSet;
@@ -193,8 +193,8 @@ impl<'a> MoreauJean<'a> {
     }
 
     /// Name of the friction solver in use.
-    pub fn solver_name(&self) -> &'static str {
-        self.solver.name()
+    pub fn solver_kind(&self) -> SolverKind {
+        self.solver.kind()
     }
 
     /// Impulse bounds a_j = h·F_j (N·s).
@@ -256,7 +256,7 @@ impl<'a> MoreauJean<'a> {
             let report = self.solver.solve(&self.problem, &self.v, &self.u_free, &mut self.p)?;
             if !report.converged() {
                 return Err(NscdError::Unconverged {
-                    solver: self.solver.name(),
+                    solver: self.solver.kind(),
                     status: report.status,
                     step: self.steps + 1,
                     time: t1,

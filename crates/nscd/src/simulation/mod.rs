@@ -236,7 +236,7 @@ impl<'a> Simulation<'a> {
             global_norm: if t_on > 0.0 { norm_integral / t_on } else { 0.0 },
             histories: recorders.into_iter().map(|r| r.history).collect(),
             statistics: SolverStatistics {
-                solver: if self.contacts.is_empty() { "none" } else { stepper.solver_name() },
+                solver: (!self.contacts.is_empty()).then(|| stepper.solver_kind()),
                 sections: self.contacts.len(),
                 steps,
                 mean_iterations: if steps > 0 { iteration_sum as f64 / steps as f64 } else { 0.0 },

@@ -78,8 +78,8 @@ pub struct StepView<'a> {
 /// Solver statistics of a run.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct SolverStatistics {
-    /// Solver used.
-    pub solver: &'static str,
+    /// The friction solver the run used (resolved from `auto`); `None` without friction sections.
+    pub solver: Option<crate::solver::SolverKind>,
     /// Friction sections.
     pub sections: usize,
     /// Steps taken.
@@ -94,6 +94,13 @@ pub struct SolverStatistics {
     pub mean_sections_solved: f64,
     /// Wall time of the time loop (s).
     pub wall_time: f64,
+}
+
+impl SolverStatistics {
+    /// The solver's name for reports, `none` without friction sections.
+    pub fn solver_name(&self) -> &'static str {
+        self.solver.map_or("none", crate::solver::SolverKind::name)
+    }
 }
 
 /// What a run reports (docs/theory.md §6).

@@ -6,7 +6,7 @@
 //! (non-negative cone, 2m rows). Only the upper triangle of P = blkdiag(M̂, 0) is passed (Clarabel ignores the rest).
 //! The set-up is built once per run; each step only replaces q by `update_q`.
 
-use super::{FrictionProblem, FrictionSolver, StepReport, StepStatus};
+use super::{FrictionProblem, FrictionSolver, SolverKind, StepReport, StepStatus};
 use crate::error::NscdError;
 use clarabel::algebra::CscMatrix;
 use clarabel::solver::{DefaultSettingsBuilder, DefaultSolver, IPSolver, SolverStatus, SupportedConeT};
@@ -92,8 +92,8 @@ impl ClarabelQp {
 }
 
 impl FrictionSolver for ClarabelQp {
-    fn name(&self) -> &'static str {
-        "clarabel"
+    fn kind(&self) -> SolverKind {
+        SolverKind::Clarabel
     }
 
     fn solve(

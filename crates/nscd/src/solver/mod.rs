@@ -59,6 +59,12 @@ impl SolverKind {
     }
 }
 
+impl std::fmt::Display for SolverKind {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
 impl std::str::FromStr for SolverKind {
     type Err = String;
 
@@ -249,8 +255,8 @@ impl<'a> FrictionProblem<'a> {
 /// A per-step friction solver. `p` holds the warm start (the previous step's impulses) on entry and the solution
 /// on exit; `u_free = H v_free`. The stepper then sets v = v_free + M̂⁻¹Hᵀp.
 pub trait FrictionSolver {
-    /// Name for reports.
-    fn name(&self) -> &'static str;
+    /// Which solver this is.
+    fn kind(&self) -> SolverKind;
     /// Solve one step.
     fn solve(
         &mut self,

@@ -7,7 +7,7 @@
 //! Fast for devices spaced wider than the coupling length ℓ = (EI h²θ²/ρA)^¼ (2–6 sweeps); it stalls for
 //! distributed friction, where [`super::interior_point::BandedInteriorPoint`] is the tool.
 
-use super::{FrictionProblem, FrictionSolver, StepReport, StepStatus};
+use super::{FrictionProblem, FrictionSolver, SolverKind, StepReport, StepStatus};
 use crate::kernels::{axpy, dot};
 
 /// Projected Gauss–Seidel with the dense W of the run.
@@ -77,8 +77,8 @@ impl ProjectedGaussSeidel {
 }
 
 impl FrictionSolver for ProjectedGaussSeidel {
-    fn name(&self) -> &'static str {
-        "projection"
+    fn kind(&self) -> SolverKind {
+        SolverKind::Projection
     }
 
     fn solve(

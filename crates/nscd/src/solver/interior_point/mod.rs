@@ -37,7 +37,7 @@ mod iteration;
 mod sections;
 mod window;
 
-use super::{FrictionProblem, FrictionSolver, StepReport, StepStatus};
+use super::{FrictionProblem, FrictionSolver, SolverKind, StepReport, StepStatus};
 use banded::{BandedLdlt, SymmetricBanded};
 use iteration::{Subproblem, Work};
 use sections::Sections;
@@ -138,8 +138,8 @@ impl BandedInteriorPoint {
 }
 
 impl FrictionSolver for BandedInteriorPoint {
-    fn name(&self) -> &'static str {
-        "interior-point"
+    fn kind(&self) -> SolverKind {
+        SolverKind::InteriorPoint
     }
 
     fn solve(
