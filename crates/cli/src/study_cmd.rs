@@ -112,6 +112,14 @@ pub fn run_study(
     for extension in ["csv", "json"] {
         check_output_file("--out", &out.join(format!("{}.{extension}", preset.name())))?;
     }
+    // Every file a study writes is named after it (its figures too): any such name taken by a link, device or FIFO
+    // is refused before the first run.
+    for entry in std::fs::read_dir(out).into_iter().flatten().flatten() {
+        let name = entry.file_name().to_string_lossy().into_owned();
+        if name.starts_with(preset.name()) && [".png", ".svg"].iter().any(|e| name.ends_with(e)) {
+            check_output_file("--out", &entry.path())?;
+        }
+    }
     let journal = study::Journal::open(&out.join(format!(".{}.journal", preset.name())), options.resume)?;
     if journal.resumed() > 0 && !quiet {
         eprintln!("{}: resuming with {} finished runs", preset.name(), journal.resumed());

@@ -145,6 +145,12 @@ pub fn render(spec: &PlotSpec, folder: &Path) -> Result<(PathBuf, PathBuf, Layou
     register_fonts();
     let png = folder.join(format!("{}.png", spec.stem));
     let svg = folder.join(format!("{}.svg", spec.stem));
+    // Only regular files are replaced: a link, device or FIFO in the output folder is refused, never written through.
+    for path in [&png, &svg] {
+        if std::fs::symlink_metadata(path).is_ok_and(|meta| !meta.is_file()) {
+            return Err(crate::error::invalid("figure", path.display(), "exists and is not a regular file"));
+        }
+    }
     let layout = {
         let root = BitMapBackend::new(&png, SIZE).into_drawing_area();
         let layout = draw(&root, spec).map_err(|e| plot_error(&png, e))?;

@@ -95,6 +95,13 @@ fn output_targets_that_are_not_regular_files_are_refused_and_kept() {
     }
     assert_eq!(std::fs::read_to_string(&target).unwrap(), "precious");
     assert!(std::fs::symlink_metadata(&link).unwrap().file_type().is_symlink());
+    // A figure's name taken by a link in a study's output folder: refused before the first run, link and target kept.
+    let study_dir = dir.join("study");
+    std::fs::create_dir_all(&study_dir).unwrap();
+    std::os::unix::fs::symlink(&target, study_dir.join("optimal-force.png")).unwrap();
+    check(&["study", "optimal-force", "--out", study_dir.to_str().unwrap(), "--quiet"], 2, "symbolic link");
+    assert!(!study_dir.join("optimal-force.csv").exists(), "refused before any run");
+    assert_eq!(std::fs::read_to_string(&target).unwrap(), "precious");
     let unusable = dir.join("kept.csv/inside");
     let unusable = unusable.to_str().unwrap();
     check(&["sweep", "--speeds", "100:120:10", "--out", &format!("{unusable}/x.csv")], 2, "--out");
