@@ -4,7 +4,7 @@
 //! `summary.json`, `histories.csv`, `snapshots.csv` and their figures ([`study::run_output`]).
 
 use crate::Format;
-use crate::files::{prepare_output_folder, write_atomically};
+use crate::files::{check_output_file, prepare_output_folder, write_atomically};
 use crate::scenario_args::ScenarioArgs;
 use anyhow::Result;
 use clap::Args;
@@ -105,6 +105,11 @@ pub fn run(args: &RunArgs) -> Result<()> {
     crate::scenario_args::print_warnings(&scenario, &case);
     if let Some(out) = &args.out {
         prepare_output_folder("--out", out)?;
+        let figures = study::run_output::FIGURE_STEMS.iter().flat_map(|f| [format!("{f}.png"), format!("{f}.svg")]);
+        let files = ["summary.json", "histories.csv", "snapshots.csv"].map(String::from).into_iter();
+        for name in files.chain(figures) {
+            check_output_file("--out", &out.join(name))?;
+        }
     }
     let requests = if args.out.is_some() { scenario.output.snapshots(scenario.mesh.length) } else { Vec::new() };
     let steps = case.settings.step_count(scenario.mesh.length);

@@ -18,6 +18,10 @@ use nscd::{RunResult, Snapshot, SnapshotAt, SnapshotTaker};
 use std::fmt::Write as _;
 use std::sync::atomic::AtomicBool;
 
+/// The figures of one run, without extension (PNG and SVG each): histories then snapshots, deflection then moment.
+pub const FIGURE_STEMS: [&str; 4] =
+    ["histories-deflection", "histories-moment", "snapshots-deflection", "snapshots-moment"];
+
 /// Columns of `histories.csv`: name and unit.
 pub const HISTORY_COLUMNS: [(&str, &str); 8] = [
     ("section", "m"),
@@ -123,13 +127,13 @@ pub fn run_plots(result: &RunResult, snapshots: &[Snapshot], title: &str) -> Vec
     let (deflection, moment) = ("deflection w (mm, upward > 0)", "bending moment M (kN·m, sagging > 0)");
     let mut plots = Vec::new();
     // Each family as a deflection figure and a moment figure: (stem prefix, x label, the two titles, the curves).
-    let mut pair = |prefix: &str, x: &str, (what_w, what_m): (&str, &str), (w, m): (Curves, Curves)| {
-        plots.push(figure(&format!("{prefix}-deflection"), what_w, x, deflection, w));
-        plots.push(figure(&format!("{prefix}-moment"), what_m, x, moment, m));
+    let mut pair = |[stem_w, stem_m]: [&str; 2], x: &str, (what_w, what_m): (&str, &str), (w, m): (Curves, Curves)| {
+        plots.push(figure(stem_w, what_w, x, deflection, w));
+        plots.push(figure(stem_m, what_m, x, moment, m));
     };
     if !result.histories.is_empty() {
         pair(
-            "histories",
+            [FIGURE_STEMS[0], FIGURE_STEMS[1]],
             "load position x_c (m)",
             ("deflection at the recorded sections", "bending moment at the recorded sections"),
             (by_section(&|s, k| s.deflection[k] * 1e3), by_section(&|s, k| s.moment[k] / 1e3)),
@@ -137,7 +141,7 @@ pub fn run_plots(result: &RunResult, snapshots: &[Snapshot], title: &str) -> Vec
     }
     if !snapshots.is_empty() {
         pair(
-            "snapshots",
+            [FIGURE_STEMS[2], FIGURE_STEMS[3]],
             "position along the beam x (m)",
             ("deflected shape", "bending moment along the beam"),
             (by_instant(&|s, n| s.deflection[n] * 1e3), by_instant(&|s, n| s.moment[n] / 1e3)),

@@ -102,6 +102,12 @@ fn output_targets_that_are_not_regular_files_are_refused_and_kept() {
     check(&["study", "optimal-force", "--out", study_dir.to_str().unwrap(), "--quiet"], 2, "symbolic link");
     assert!(!study_dir.join("optimal-force.csv").exists(), "refused before any run");
     assert_eq!(std::fs::read_to_string(&target).unwrap(), "precious");
+    // The same for run --out: a link where histories.csv goes is refused before the run.
+    let run_dir = dir.join("run");
+    std::fs::create_dir_all(&run_dir).unwrap();
+    std::os::unix::fs::symlink(&target, run_dir.join("histories.csv")).unwrap();
+    check(&["run", "--out", run_dir.to_str().unwrap()], 2, "symbolic link");
+    assert!(!run_dir.join("summary.json").exists());
     let unusable = dir.join("kept.csv/inside");
     let unusable = unusable.to_str().unwrap();
     check(&["sweep", "--speeds", "100:120:10", "--out", &format!("{unusable}/x.csv")], 2, "--out");
