@@ -25,12 +25,35 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
     let start = Instant::now();
     let mut report = String::new();
     let _ = writeln!(report, "# frictrack — the studies of docs/theory.md §7\n");
+    let model = base.model()?;
+    let (beam, foundation, mesh) = (model.beam(), model.foundation(), model.mesh());
+    let v_cr = study::speeds::SpeedScale::of(&base)?.critical_speed;
     let _ = writeln!(
         report,
-        "Reference case unless a scenario was given: UIC60 rail (EI = 6.4155 MN·m², ρA = 59.935 kg/m) on a Winkler soil of \
-         k_f = 250 kN/m², 200 m pinned beam of 200 Hermite elements, load F = 83.4 kN, θ = ½, load advance 0.1 m per step. \
-         Resolution: {}. Every figure has its data beside it (`<study>.csv`, SI units) and its metadata (`<study>.json`).\n",
+        "{}: EI = {:.4} MN·m², ρA = {:.3} kg/m on a Winkler soil of k_f = {:.1} kN/m² (v_cr = {}), {} m beam of {} \
+         Hermite elements ({:?}/{:?} ends), load F = {:.1} kN, θ = {}, load advance {} m per step. Resolution: {}. \
+         Every figure has its data beside it (`<study>.csv`, SI units) and its metadata (`<study>.json`: the scenario, \
+         what the study set itself, the CSV's units).\n",
+        if base.title.is_empty() { "The reference case (UIC60 rail on soft soil)" } else { base.title.as_str() },
+        beam.bending_stiffness() / 1e6,
+        beam.mass_per_length(),
+        foundation.stiffness / 1e3,
+        v_cr.map_or("none without a foundation".to_string(), |v| format!("{v:.2} m/s")),
+        mesh.length,
+        mesh.elements,
+        model.supports().left,
+        model.supports().right,
+        base.load.force / 1e3,
+        base.integration.theta,
+        base.integration.load_advance,
         options.resolution.name()
+    );
+    let _ = writeln!(
+        report,
+        "Deflections are magnitudes in mm, downward solid and upward dashed; \"max\" is over the whole run from rest, \
+         which near v_cr includes the exit transient at x ≈ L — the CSVs also give the extremes while the load is in \
+         the middle third of the beam (`window_*` columns). A critical speed at an end of the speed range is a bound \
+         and is marked so (`critical_speed_location`).\n"
     );
     // Journals stay until the report is written, so that --resume after an interruption re-runs nothing.
     let mut journals = Vec::new();
