@@ -15,9 +15,9 @@
 use crate::error::{NscdError, Result};
 use crate::forcing::Forcing;
 use crate::kernels::dot;
-use crate::solver::{FrictionProblem, FrictionSolver, SolverKind, StepReport};
+use crate::solver::{FrictionProblem, FrictionSolver, SolverKind, SolverSettings, StepReport, build_solver};
 use crate::system::LinearSystem;
-use banded::{BandDiagonals, BandedLdlt, SymmetricBanded};
+use banded::{BandDiagonals, SymmetricBanded};
 use friction::ContactSet;
 
 /// Cumulative energy terms of a run (J).
@@ -88,14 +88,12 @@ impl Integration {
 }
 
 /// The state and scratch of a Moreau–Jean integration; nothing allocates inside [`MoreauJean::step`].
-pub struct MoreauJean<'a> {
-    contacts: &'a ContactSet,
+pub struct MoreauJean {
     theta: f64,
     h: f64,
     damped: bool,
-    factor: &'a BandedLdlt,
-    problem: FrictionProblem<'a>,
-    solver: Box<dyn FrictionSolver + 'a>,
+    problem: FrictionProblem,
+    solver: Box<dyn FrictionSolver>,
     q: Vec<f64>,
     v: Vec<f64>,
     /// Friction impulses of the last step (N·s), also the next warm start.
@@ -131,26 +129,41 @@ pub struct MoreauJean<'a> {
     v_free: Vec<f64>,
 }
 
-impl<'a> MoreauJean<'a> {
-    /// Start from (q₀, v₀) with zero impulses. `m_hat` and `factor` must be M̂ for `integration` (see
-    /// [`iteration_matrix`]); `solver` is built on the same problem.
-    pub fn new(
-        system: &'a LinearSystem,
-        contacts: &'a ContactSet,
+impl MoreauJean {
+    /// The one way to set up a run's stepper: M̂ for `integration`, its factor and the friction problem over
+    /// `contacts` ([`FrictionProblem::new`]), the solver of `settings.kind` on that problem (a resolved kind, not
+    /// `Auto`, which means projection here; `window_margin` for the interior point's moving window), started from
+    /// (q₀, v₀) with zero impulses. The stepper owns all of it and borrows nothing.
+    pub fn build(
+        system: &LinearSystem,
+        contacts: ContactSet,
         integration: Integration,
-        problem: FrictionProblem<'a>,
-        solver: Box<dyn FrictionSolver + 'a>,
+        settings: &SolverSettings,
+        window_margin: Option<f64>,
+        q0: Vec<f64>,
+        v0: Vec<f64>,
+    ) -> Result<Self> {
+        let problem = FrictionProblem::new(system, contacts, integration)?;
+        let solver = build_solver(settings.kind, &problem, settings, window_margin)?;
+        Ok(Self::new(system, problem, solver, q0, v0))
+    }
+
+    /// A stepper on a given problem and solver (built on that problem), for tests that compare solvers; the
+    /// integration is the problem's. Prefer [`MoreauJean::build`].
+    pub fn new(
+        system: &LinearSystem,
+        problem: FrictionProblem,
+        solver: Box<dyn FrictionSolver>,
         q0: Vec<f64>,
         v0: Vec<f64>,
     ) -> Self {
+        let integration = problem.integration;
         let n = system.dofs();
-        let m = contacts.len();
+        let m = problem.contacts.len();
         let mut stepper = Self {
-            contacts,
             theta: integration.theta,
             h: integration.step,
             damped: system.has_damping(),
-            factor: problem.factor,
             problem,
             solver,
             q: q0,
@@ -233,7 +246,7 @@ impl<'a> MoreauJean<'a> {
         }
         forcing.add_to(t1, h * theta, &mut self.work);
         forcing.add_to(t0, h * (1.0 - theta), &mut self.work);
-        self.factor.solve_in_place(&mut self.work);
+        self.problem.factor.solve_in_place(&mut self.work);
         for ((f, v), w) in self.v_free.iter_mut().zip(&self.v).zip(&self.work) {
             *f = v + w;
         }
@@ -249,10 +262,10 @@ impl<'a> MoreauJean<'a> {
         // v_prev ← v_k, v ← v_free; the stale vector left in v_free is overwritten by the next free velocity.
         std::mem::swap(&mut self.v_prev, &mut self.v);
         std::mem::swap(&mut self.v, &mut self.v_free);
-        let report = if self.contacts.is_empty() {
+        let report = if self.problem.contacts.is_empty() {
             StepReport::default()
         } else {
-            self.contacts.velocities(&self.v, &mut self.u_free);
+            self.problem.contacts.velocities(&self.v, &mut self.u_free);
             let report = self.solver.solve(&self.problem, &self.v, &self.u_free, &mut self.p)?;
             if !report.converged() {
                 return Err(NscdError::Unconverged {
@@ -274,8 +287,8 @@ impl<'a> MoreauJean<'a> {
             *q += h * *w;
         }
         self.book_energy(forcing, t0, t1)?;
-        if !self.contacts.is_empty() {
-            self.contacts.velocities(&self.v, &mut self.u);
+        if !self.problem.contacts.is_empty() {
+            self.problem.contacts.velocities(&self.v, &mut self.u);
         }
         self.time = t1;
         self.steps += 1;
@@ -315,7 +328,8 @@ impl<'a> MoreauJean<'a> {
         } else {
             0.0
         };
-        let friction: f64 = self.contacts.rows().iter().zip(&self.p).map(|(row, p)| row.dot(&self.work) * p).sum();
+        let friction: f64 =
+            self.problem.contacts.rows().iter().zip(&self.p).map(|(row, p)| row.dot(&self.work) * p).sum();
         let numerical = if theta > 0.5 {
             // (θ − ½)[ΔvᵀMΔv + ΔqᵀKΔq] with MΔv = Mv_{k+1} − Mv_k, Δq = h v_θ and KΔq = h K v_θ.
             let kinetic: f64 =

@@ -7,8 +7,8 @@
 use fem_beam::reference::uic60_on_soft_soil;
 use friction::{ContactSet, Devices, DistributedFriction};
 use nscd::simulation::coupling_length;
-use nscd::solver::{FrictionProblem, SolverKind, SolverSettings, build_solver};
-use nscd::stepper::{Integration, iteration_matrix};
+use nscd::solver::{SolverKind, SolverSettings};
+use nscd::stepper::Integration;
 use nscd::{LinearSystem, MoreauJean, MovingLoad};
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -47,14 +47,12 @@ fn allocations_in_steps(contacts: &ContactSet, kind: SolverKind) -> usize {
     let h = 0.1 / speed;
     let system = LinearSystem::from_beam(&model);
     let integration = Integration { theta, step: h };
-    let m_hat = iteration_matrix(&system, integration);
-    let factor = m_hat.factor().unwrap();
-    let problem = FrictionProblem::new(contacts, &m_hat, &factor, h);
     let settings = SolverSettings { kind, ..SolverSettings::default() };
-    let solver = build_solver(kind, &problem, &settings, Some(30.0 * coupling_length(&model, h, theta))).unwrap();
     let load = MovingLoad::new(*model.mesh(), model.dofs(), 83.4e3, speed, 0.0);
     let n = system.dofs();
-    let mut stepper = MoreauJean::new(&system, contacts, integration, problem, solver, vec![0.0; n], vec![0.0; n]);
+    let margin = Some(30.0 * coupling_length(&model, h, theta));
+    let (q0, v0) = (vec![0.0; n], vec![0.0; n]);
+    let mut stepper = MoreauJean::build(&system, contacts.clone(), integration, &settings, margin, q0, v0).unwrap();
     // Warm-up: the load reaches the beam's middle, so that windows of every size have been seen.
     for _ in 0..1000 {
         stepper.step(&load).unwrap();

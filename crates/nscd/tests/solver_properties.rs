@@ -62,8 +62,9 @@ fn problem() -> impl Strategy<Value = Problem> {
 
 /// v of every solver, after checking each meets the law: (name, v).
 fn solve_all(problem: &Problem) -> Vec<(&'static str, Vec<f64>)> {
-    let factor = problem.m_hat.factor().expect("SPD");
-    let stepping = FrictionProblem::new(&problem.contacts, &problem.m_hat, &factor, 1.0);
+    let integration = nscd::Integration { theta: 0.5, step: 1.0 };
+    let stepping =
+        FrictionProblem::with_matrix(problem.contacts.clone(), problem.m_hat.clone(), integration).expect("SPD");
     let (n, m) = (problem.v_free.len(), problem.contacts.len());
     let mut u_free = vec![0.0; m];
     problem.contacts.velocities(&problem.v_free, &mut u_free);

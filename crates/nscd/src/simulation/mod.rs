@@ -17,8 +17,8 @@ pub use settings::{InitialState, RunSettings};
 
 use crate::error::Result;
 use crate::forcing::MovingLoad;
-use crate::solver::{FrictionProblem, SolverKind, build_solver};
-use crate::stepper::{Integration, MoreauJean, iteration_matrix};
+use crate::solver::{SolverKind, SolverSettings};
+use crate::stepper::{Integration, MoreauJean};
 use crate::system::LinearSystem;
 use fem_beam::BeamModel;
 use fem_beam::element::hermite;
@@ -100,19 +100,17 @@ impl<'a> Simulation<'a> {
         let h = settings.load_advance / settings.speed;
         let integration = Integration { theta: settings.theta, step: h };
         let system = LinearSystem::from_beam(model);
-        let m_hat = iteration_matrix(&system, integration);
-        let factor = m_hat.factor()?;
         let kind = resolve_solver(settings.solver.kind, model, self.contacts, h, settings.theta);
-        let problem = FrictionProblem::new(self.contacts, &m_hat, &factor, h);
         // Coupling through M̂⁻¹ decays like e^{−x/(√2ℓ)}: 30ℓ leaves ~6e-10, and a window that fails the final
         // check is retried wider. Instruction counts over 1000 steps (1, 5, 10 kN/m): 30ℓ is 4–11 % below 40ℓ,
         // 20ℓ and 15ℓ no better than 30ℓ.
         let margin = 30.0 * coupling_length(model, h, settings.theta);
-        let solver = build_solver(kind, &problem, &settings.solver, Some(margin))?;
         let (q0, v0) = self.initial_state()?;
         let start = settings.start_position();
         let load = MovingLoad::new(mesh, dofs, settings.load, settings.speed, start);
-        let mut stepper = MoreauJean::new(&system, self.contacts, integration, problem, solver, q0, v0);
+        let solver_settings = SolverSettings { kind, ..settings.solver };
+        let contacts = self.contacts.clone();
+        let mut stepper = MoreauJean::build(&system, contacts, integration, &solver_settings, Some(margin), q0, v0)?;
 
         let t_on = settings.crossing_time(mesh.length);
         let crossing_steps = (t_on / h).round() as usize;

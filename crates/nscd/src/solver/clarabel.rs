@@ -30,7 +30,7 @@ impl std::fmt::Debug for ClarabelQp {
 
 impl ClarabelQp {
     /// Set up the QP of `problem` (tight interior-point tolerances: it is a reference).
-    pub fn new(problem: &FrictionProblem<'_>, tolerance: f64) -> crate::Result<Self> {
+    pub fn new(problem: &FrictionProblem, tolerance: f64) -> crate::Result<Self> {
         let n = problem.m_hat.order();
         let m = problem.len();
         let bandwidth = problem.m_hat.bandwidth();
@@ -98,7 +98,7 @@ impl FrictionSolver for ClarabelQp {
 
     fn solve(
         &mut self,
-        problem: &FrictionProblem<'_>,
+        problem: &FrictionProblem,
         v_free: &[f64],
         u_free: &[f64],
         p: &mut [f64],

@@ -22,6 +22,8 @@ pub mod response;
 pub mod clarabel;
 
 use crate::kernels::axpy;
+use crate::stepper::{Integration, iteration_matrix};
+use crate::system::LinearSystem;
 use banded::{BandedLdlt, SymmetricBanded};
 use friction::ContactSet;
 use friction::coulomb::natural_residual;
@@ -167,16 +169,19 @@ impl StepReport {
     }
 }
 
-/// The data of every friction step of a run: M̂ and its factors, the contact rows, the bounds a_j = h·F_j and the
-/// diagonal of the Delassus matrix W_jj = H_j M̂⁻¹ H_jᵀ.
+/// The data of every friction step of a run: M̂ and its LDLᵀ factors (always of that matrix: both are made here),
+/// the contact rows, the bounds a_j = h·F_j and the diagonal of the Delassus matrix W_jj = H_j M̂⁻¹ H_jᵀ. It owns
+/// all of it, so a stepper built on it borrows nothing.
 #[derive(Debug)]
-pub struct FrictionProblem<'a> {
+pub struct FrictionProblem {
     /// Contact rows.
-    pub contacts: &'a ContactSet,
+    pub contacts: ContactSet,
     /// M̂ = M + hθC + h²θ²K.
-    pub m_hat: &'a SymmetricBanded,
+    pub m_hat: SymmetricBanded,
     /// LDLᵀ factors of M̂.
-    pub factor: &'a BandedLdlt,
+    pub factor: BandedLdlt,
+    /// The step h and θ the problem is built for.
+    pub integration: Integration,
     /// a_j = h·F_j (N·s).
     pub bounds: Vec<f64>,
     /// W_jj (m/s per N·s).
@@ -185,12 +190,19 @@ pub struct FrictionProblem<'a> {
     pub responses: Option<ImpulseResponses>,
 }
 
-impl<'a> FrictionProblem<'a> {
-    /// Set up for step size `h` (s).
-    pub fn new(contacts: &'a ContactSet, m_hat: &'a SymmetricBanded, factor: &'a BandedLdlt, h: f64) -> Self {
-        let bounds = contacts.bounds().iter().map(|f| h * f).collect();
-        let (responses, delassus_diagonal) = ImpulseResponses::new(contacts, factor);
-        Self { contacts, m_hat, factor, bounds, delassus_diagonal, responses }
+impl FrictionProblem {
+    /// The friction problem of a step of `integration` on `system`: M̂ = M + hθC + h²θ²K is built and factored here
+    /// (docs/theory.md §5).
+    pub fn new(system: &LinearSystem, contacts: ContactSet, integration: Integration) -> crate::Result<Self> {
+        Self::with_matrix(contacts, iteration_matrix(system, integration), integration)
+    }
+
+    /// The same for a given SPD iteration matrix `m_hat` (e.g. a test problem), factored here.
+    pub fn with_matrix(contacts: ContactSet, m_hat: SymmetricBanded, integration: Integration) -> crate::Result<Self> {
+        let factor = m_hat.factor()?;
+        let bounds = contacts.bounds().iter().map(|f| integration.step * f).collect();
+        let (responses, delassus_diagonal) = ImpulseResponses::new(&contacts, &factor);
+        Ok(Self { contacts, m_hat, factor, integration, bounds, delassus_diagonal, responses })
     }
 
     /// v += M̂⁻¹Hᵀp: from the stored responses when there are any, else by one banded solve (`work`: n scratch).
@@ -260,7 +272,7 @@ pub trait FrictionSolver {
     /// Solve one step.
     fn solve(
         &mut self,
-        problem: &FrictionProblem<'_>,
+        problem: &FrictionProblem,
         v_free: &[f64],
         u_free: &[f64],
         p: &mut [f64],
@@ -271,7 +283,7 @@ pub trait FrictionSolver {
 /// point's moving-window margin, used when `settings.moving_window` is set (30 coupling lengths is safe).
 pub fn build_solver<'a>(
     kind: SolverKind,
-    problem: &FrictionProblem<'_>,
+    problem: &FrictionProblem,
     settings: &SolverSettings,
     window_margin: Option<f64>,
 ) -> crate::Result<Box<dyn FrictionSolver + 'a>> {

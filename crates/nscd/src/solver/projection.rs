@@ -28,7 +28,7 @@ pub struct ProjectedGaussSeidel {
 
 impl ProjectedGaussSeidel {
     /// Build W = H M̂⁻¹ Hᵀ (m banded solves) for `problem`.
-    pub fn new(problem: &FrictionProblem<'_>, tolerance: f64, max_sweeps: usize) -> Self {
+    pub fn new(problem: &FrictionProblem, tolerance: f64, max_sweeps: usize) -> Self {
         let m = problem.len();
         let rows = problem.contacts.rows();
         let mut w = vec![0.0; m * m];
@@ -70,7 +70,7 @@ impl ProjectedGaussSeidel {
     }
 
     /// The law residual (m/s) of p, on velocities formed afresh.
-    fn residual(&mut self, problem: &FrictionProblem<'_>, u_free: &[f64], p: &[f64]) -> f64 {
+    fn residual(&mut self, problem: &FrictionProblem, u_free: &[f64], p: &[f64]) -> f64 {
         self.refresh_velocities(u_free, p);
         problem.law_residual(&self.u, p)
     }
@@ -83,7 +83,7 @@ impl FrictionSolver for ProjectedGaussSeidel {
 
     fn solve(
         &mut self,
-        problem: &FrictionProblem<'_>,
+        problem: &FrictionProblem,
         _: &[f64],
         u_free: &[f64],
         p: &mut [f64],

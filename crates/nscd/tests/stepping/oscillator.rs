@@ -3,8 +3,8 @@
 use banded::SymmetricBanded;
 use friction::{ContactKind, ContactRow, ContactSet};
 use nscd::forcing::{DofForce, Unloaded};
-use nscd::solver::{FrictionProblem, SolverKind, SolverSettings, build_solver};
-use nscd::stepper::{Integration, iteration_matrix};
+use nscd::solver::{SolverKind, SolverSettings};
+use nscd::stepper::Integration;
 use nscd::{Forcing, LinearSystem, MoreauJean};
 
 fn scalar(value: f64) -> SymmetricBanded {
@@ -28,12 +28,8 @@ fn oscillator(
     let mut contacts = ContactSet::new();
     contacts.push(ContactRow::from_entries([(0, 1.0)]), force, 0.0, ContactKind::Device);
     let integration = Integration { theta: 0.5, step: h };
-    let m_hat = iteration_matrix(&system, integration);
-    let factor = m_hat.factor().unwrap();
-    let problem = FrictionProblem::new(&contacts, &m_hat, &factor, h);
     let settings = SolverSettings { kind, tolerance: 1e-12, ..SolverSettings::default() };
-    let solver = build_solver(kind, &problem, &settings, None).unwrap();
-    let mut stepper = MoreauJean::new(&system, &contacts, integration, problem, solver, vec![x0], vec![0.0]);
+    let mut stepper = MoreauJean::build(&system, contacts, integration, &settings, None, vec![x0], vec![0.0]).unwrap();
     let mut out = vec![(0.0, x0)];
     for _ in 0..steps {
         stepper.step(forcing).unwrap();
@@ -113,11 +109,9 @@ fn non_finite_state_stops_the_run_at_its_step() {
         let system = LinearSystem { mass: scalar(2.0), damping: scalar(0.0), stiffness: scalar(50.0) };
         let contacts = ContactSet::new();
         let integration = Integration { theta: 0.5, step: 1e-3 };
-        let m_hat = iteration_matrix(&system, integration);
-        let factor = m_hat.factor().unwrap();
-        let problem = FrictionProblem::new(&contacts, &m_hat, &factor, integration.step);
-        let solver = build_solver(SolverKind::Projection, &problem, &SolverSettings::default(), None).unwrap();
-        let mut stepper = MoreauJean::new(&system, &contacts, integration, problem, solver, vec![0.1], vec![0.0]);
+        let settings = SolverSettings { kind: SolverKind::Projection, ..SolverSettings::default() };
+        let mut stepper =
+            MoreauJean::build(&system, contacts, integration, &settings, None, vec![0.1], vec![0.0]).unwrap();
         // Finite until t = 5 ms, then the bad value (f64::MAX·h² overflows the energy although q stays finite).
         let forcing = DofForce { dof: 0, force: move |t: f64| if t < 5e-3 - 1e-12 { 1.0 } else { bad } };
         let mut failure = None;

@@ -4,7 +4,7 @@ use super::common::{reference, relative_difference};
 use friction::{ContactSet, Devices, DistributedFriction};
 use nscd::simulation::coupling_length;
 use nscd::solver::{FrictionProblem, SolverSettings, build_solver};
-use nscd::stepper::{Integration, iteration_matrix};
+use nscd::stepper::Integration;
 use nscd::{InitialState, LinearSystem, MoreauJean, MovingLoad, RunSettings, Simulation, SolverKind};
 
 /// Settings at `speed` with the solvers held to 1e-10, not the default 1e-6: two exact solvers are compared step by
@@ -31,12 +31,8 @@ fn same_state_difference(
     let h = settings.load_advance / settings.speed;
     let system = LinearSystem::from_beam(&model);
     let integration = Integration { theta: settings.theta, step: h };
-    let m_hat = iteration_matrix(&system, integration);
-    let factor = m_hat.factor().unwrap();
     let margin = Some(30.0 * coupling_length(&model, h, settings.theta));
-    let stepping = FrictionProblem::new(contacts, &m_hat, &factor, h);
-    let solver_a = build_solver(a, &stepping, &settings.solver, margin).unwrap();
-    let checking = FrictionProblem::new(contacts, &m_hat, &factor, h);
+    let checking = FrictionProblem::new(&system, contacts.clone(), integration).unwrap();
     let whole = SolverSettings { moving_window: false, ..settings.solver };
     let mut solver_b = build_solver(b, &checking, &whole, None).unwrap();
     let (q0, v0) = Simulation::new(&model, contacts, settings).unwrap().initial_state().unwrap();
@@ -46,7 +42,8 @@ fn same_state_difference(
     };
     let load = MovingLoad::new(*model.mesh(), model.dofs(), settings.load, settings.speed, start);
     let n = system.dofs();
-    let mut stepper = MoreauJean::new(&system, contacts, integration, stepping, solver_a, q0, v0);
+    let stepping = SolverSettings { kind: a, ..settings.solver };
+    let mut stepper = MoreauJean::build(&system, contacts.clone(), integration, &stepping, margin, q0, v0).unwrap();
     let (mut u_free, mut p) = (vec![0.0; contacts.len()], vec![0.0; contacts.len()]);
     let crossing = ((model.mesh().length - start) / settings.load_advance).round() as usize;
     let mut worst: f64 = 0.0;
@@ -57,7 +54,7 @@ fn same_state_difference(
         let report_b = solver_b.solve(&checking, &v_free, &u_free, &mut p).unwrap();
         let mut v_b = vec![0.0; n];
         contacts.add_transpose(&p, &mut v_b);
-        factor.solve_in_place(&mut v_b);
+        checking.factor.solve_in_place(&mut v_b);
         v_b.iter_mut().zip(&v_free).for_each(|(v, f)| *v += f);
         let report_a = stepper.step(&load).unwrap();
         compared += 1;
@@ -153,10 +150,9 @@ fn truncated_impulse_responses_match_the_solve() {
     let model = reference();
     let h = 0.1 / 200.0;
     let system = LinearSystem::from_beam(&model);
-    let m_hat = iteration_matrix(&system, Integration { theta: 0.5, step: h });
-    let factor = m_hat.factor().unwrap();
+    let integration = Integration { theta: 0.5, step: h };
     let devices = Devices::uniform(31, 100e3).contact_set(&model).unwrap();
-    let problem = FrictionProblem::new(&devices, &m_hat, &factor, h);
+    let problem = FrictionProblem::new(&system, devices.clone(), integration).unwrap();
     let responses = problem.responses.as_ref().expect("31 devices keep their responses");
     let n = system.dofs();
     // Each column keeps about ±16 m around its device (e^{−x/(√2ℓ)} = 1e-17, ℓ = 0.29 m): far fewer than n entries.
@@ -166,11 +162,11 @@ fn truncated_impulse_responses_match_the_solve() {
     responses.add(&p, &mut by_responses);
     let mut by_solve = vec![0.0; n];
     devices.add_transpose(&p, &mut by_solve);
-    factor.solve_in_place(&mut by_solve);
+    problem.factor.solve_in_place(&mut by_solve);
     let scale = by_solve.iter().fold(0.0f64, |m, x| m.max(x.abs()));
     let gap = by_responses.iter().zip(&by_solve).fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
     assert!(gap <= 1e-14 * scale, "gap {gap:e} on a scale of {scale:e}");
 
     let distributed = DistributedFriction::new(5e3).contact_set(&model).unwrap();
-    assert!(FrictionProblem::new(&distributed, &m_hat, &factor, h).responses.is_none());
+    assert!(FrictionProblem::new(&system, distributed, integration).unwrap().responses.is_none());
 }

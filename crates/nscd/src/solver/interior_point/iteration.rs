@@ -12,8 +12,8 @@ const FRACTION_TO_BOUNDARY: f64 = 0.995;
 /// What one interior-point solve works on besides the sections: the step's problem, `base` = the matrix M̂ (or its
 /// window condensation) over the DOFs from `offset` on, the absolute tolerance (m/s) and the iteration cap.
 #[derive(Clone, Copy)]
-pub(super) struct Subproblem<'s, 'a> {
-    pub(super) problem: &'s FrictionProblem<'a>,
+pub(super) struct Subproblem<'s> {
+    pub(super) problem: &'s FrictionProblem,
     pub(super) base: &'s SymmetricBanded,
     pub(super) offset: usize,
     pub(super) tolerance: f64,
@@ -56,7 +56,7 @@ impl Work {
     /// Compiled twice: for AVX2 where the CPU has it (detected at run time; four sections per instruction in the
     /// per-section loops instead of two), and for the baseline. Both execute the same operations in the same order
     /// — no fused multiply–add, sums still in section order — so they give the same bits.
-    pub(super) fn iterate(&mut self, subproblem: &Subproblem<'_, '_>, p: &mut [f64]) -> crate::Result<(usize, f64)> {
+    pub(super) fn iterate(&mut self, subproblem: &Subproblem<'_>, p: &mut [f64]) -> crate::Result<(usize, f64)> {
         #[cfg(target_arch = "x86_64")]
         #[allow(unsafe_code)]
         if std::arch::is_x86_feature_detected!("avx2") {
@@ -72,7 +72,7 @@ impl Work {
     #[allow(unsafe_code)]
     pub(super) unsafe fn iterate_avx2(
         &mut self,
-        subproblem: &Subproblem<'_, '_>,
+        subproblem: &Subproblem<'_>,
         p: &mut [f64],
     ) -> crate::Result<(usize, f64)> {
         self.iterate_body(subproblem, p)
@@ -80,11 +80,7 @@ impl Work {
 
     /// The body of [`Work::iterate`], inlined into the baseline and the AVX2 build.
     #[inline(always)]
-    pub(super) fn iterate_body(
-        &mut self,
-        subproblem: &Subproblem<'_, '_>,
-        p: &mut [f64],
-    ) -> crate::Result<(usize, f64)> {
+    pub(super) fn iterate_body(&mut self, subproblem: &Subproblem<'_>, p: &mut [f64]) -> crate::Result<(usize, f64)> {
         let Subproblem { problem, base, offset, tolerance, max_iterations } = *subproblem;
         let rows = problem.contacts.rows();
         let nw = base.order();

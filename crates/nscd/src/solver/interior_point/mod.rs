@@ -78,7 +78,7 @@ impl BandedInteriorPoint {
     /// Scratch for `problem`. With `window_margin` = Some(m) (metres; 30 coupling lengths is safe) each step
     /// re-solves only a window around the sections that change; None always solves the whole problem.
     pub fn new(
-        problem: &FrictionProblem<'_>,
+        problem: &FrictionProblem,
         tolerance: f64,
         max_iterations: usize,
         window_margin: Option<f64>,
@@ -111,13 +111,13 @@ impl BandedInteriorPoint {
     }
 
     /// v = v_free + M̂⁻¹Hᵀp and the law residual of every section, into `self.check` (u) — one banded solve.
-    fn full_residual(&mut self, problem: &FrictionProblem<'_>, v_free: &[f64], p: &[f64]) -> f64 {
+    fn full_residual(&mut self, problem: &FrictionProblem, v_free: &[f64], p: &[f64]) -> f64 {
         problem.outcome(v_free, p, &mut self.v, &mut self.check)
     }
 
     fn solve_whole(
         &mut self,
-        problem: &FrictionProblem<'_>,
+        problem: &FrictionProblem,
         u_free: &[f64],
         p: &mut [f64],
         tolerance: f64,
@@ -132,7 +132,7 @@ impl BandedInteriorPoint {
         for (u, &j) in q.u_free.iter_mut().zip(&q.index) {
             *u = u_free[j];
         }
-        let subproblem = Subproblem { problem, base: problem.m_hat, offset: 0, tolerance, max_iterations: budget };
+        let subproblem = Subproblem { problem, base: &problem.m_hat, offset: 0, tolerance, max_iterations: budget };
         self.work.iterate(&subproblem, p)
     }
 }
@@ -144,7 +144,7 @@ impl FrictionSolver for BandedInteriorPoint {
 
     fn solve(
         &mut self,
-        problem: &FrictionProblem<'_>,
+        problem: &FrictionProblem,
         v_free: &[f64],
         u_free: &[f64],
         p: &mut [f64],
@@ -193,14 +193,14 @@ mod tests {
             let contacts = DistributedFriction::new(5e3).contact_set(&model).expect("distributed friction");
             let h = 0.1 / 200.0;
             let system = crate::LinearSystem::from_beam(&model);
-            let m_hat = crate::stepper::iteration_matrix(&system, crate::Integration { theta: 0.5, step: h });
-            let factor = m_hat.factor().expect("M̂ is SPD");
-            let problem = FrictionProblem::new(&contacts, &m_hat, &factor, h);
+            let integration = crate::Integration { theta: 0.5, step: h };
+            let problem = FrictionProblem::new(&system, contacts.clone(), integration).expect("M̂ is SPD");
+            let m_hat = &problem.m_hat;
             let v_free: Vec<f64> = (0..m_hat.order()).map(|i| 0.3 * (0.05 * i as f64).sin() - 0.05).collect();
             let mut u_free = vec![0.0; contacts.len()];
             contacts.velocities(&v_free, &mut u_free);
             let tolerance = problem.absolute_tolerance(1e-8, &u_free);
-            let subproblem = Subproblem { problem: &problem, base: &m_hat, offset: 0, tolerance, max_iterations: 200 };
+            let subproblem = Subproblem { problem: &problem, base: m_hat, offset: 0, tolerance, max_iterations: 200 };
             let solve = |avx2: bool| {
                 let mut solver = BandedInteriorPoint::new(&problem, 1e-8, 200, None).expect("solver");
                 let work = &mut solver.work;

@@ -11,7 +11,7 @@ impl BandedInteriorPoint {
     /// `self.v`), on the window's DOFs. Returns None when the window would be the whole problem.
     pub(super) fn solve_window(
         &mut self,
-        problem: &FrictionProblem<'_>,
+        problem: &FrictionProblem,
         p: &mut [f64],
         tolerance: f64,
         margin: f64,
@@ -78,7 +78,7 @@ impl BandedInteriorPoint {
     /// of them together within `max_iterations`.
     pub(super) fn solve_windows(
         &mut self,
-        problem: &FrictionProblem<'_>,
+        problem: &FrictionProblem,
         v_free: &[f64],
         u_free: &[f64],
         p: &mut [f64],
