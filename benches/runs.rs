@@ -40,10 +40,13 @@ fn friction_free_against_bare_solves(c: &mut Criterion) {
     let model = uic60_on_soft_soil().model().unwrap();
     let settings = RunSettings::default();
     let system = nscd::LinearSystem::from_beam(&model);
-    let h = settings.load_advance / settings.speed;
-    let m_hat = nscd::stepper::iteration_matrix(&system, nscd::stepper::Integration { theta: settings.theta, step: h });
+    let h = settings.integration.load_advance / settings.moving.speed;
+    let m_hat = nscd::stepper::iteration_matrix(
+        &system,
+        nscd::stepper::Integration { theta: settings.integration.theta, step: h },
+    );
     let factor = m_hat.factor().unwrap();
-    let steps = (model.mesh().length / settings.load_advance).round() as usize;
+    let steps = (model.mesh().length / settings.integration.load_advance).round() as usize;
     let mut group = c.benchmark_group("friction_free_vs_bare_solves");
     group.sample_size(20).warm_up_time(Duration::from_secs(1)).measurement_time(Duration::from_secs(5));
     group.bench_function(BenchmarkId::new("bare_banded_solves", steps), |b| {
@@ -60,7 +63,7 @@ fn friction_free_against_bare_solves(c: &mut Criterion) {
     group.bench_function(BenchmarkId::new("least_step_loop", steps), |b| {
         let stiffness = banded::BandDiagonals::new(&system.stiffness);
         let damping = banded::BandDiagonals::new(&system.damping);
-        let (h, theta, n) = (h, settings.theta, system.dofs());
+        let (h, theta, n) = (h, settings.integration.theta, system.dofs());
         b.iter(|| {
             let [mut q, mut v, mut kq, mut kv, mut kv_next, mut cv, mut w] = std::array::from_fn(|_| vec![0.0; n]);
             for step in 0..steps {

@@ -185,15 +185,15 @@ fn report(scenario: &Scenario, case: &Case, result: &RunResult, wall_time: f64) 
         deflection: x.magnitude,
         position: x.position,
         time: x.time,
-        load_position: x0 + settings.speed * x.time,
+        load_position: x0 + settings.moving.speed * x.time,
     };
     let critical = study::speeds::SpeedScale::of(scenario)?.critical_speed;
     let foundation = case.model.foundation();
     let c_cr = 2.0 * (foundation.stiffness * case.model.beam().mass_per_length()).sqrt();
     Ok(RunReport {
         title: scenario.title.clone(),
-        speed: settings.speed,
-        load: settings.load,
+        speed: settings.moving.speed,
+        load: settings.moving.force,
         critical_speed: critical,
         damping_ratio: if c_cr > 0.0 { foundation.damping / c_cr } else { 0.0 },
         devices: device_positions.len(),

@@ -17,10 +17,10 @@ fn main() {
     let model = reference.model().expect("reference model");
     let mut settings = RunSettings::default();
     if let Some(t) = std::env::args().nth(3).and_then(|s| s.parse().ok()) {
-        settings.solver.tolerance = t;
+        settings.integration.solver.tolerance = t;
     }
     if let Some(v) = std::env::args().nth(5).and_then(|s| s.parse().ok()) {
-        settings.speed = v;
+        settings.moving.speed = v;
     }
     let contacts = match case.as_str() {
         "none" => ContactSet::new(),
@@ -29,7 +29,7 @@ fn main() {
         "distributed1k" => DistributedFriction::new(1e3).contact_set(&model).expect("friction"),
         "distributed10k" => DistributedFriction::new(10e3).contact_set(&model).expect("friction"),
         "distributed5k-whole" => {
-            settings.solver.moving_window = false;
+            settings.integration.solver.moving_window = false;
             DistributedFriction::new(5e3).contact_set(&model).expect("friction")
         }
         _ => DistributedFriction::new(5e3).contact_set(&model).expect("friction"),

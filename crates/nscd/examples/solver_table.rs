@@ -27,9 +27,9 @@ fn main() {
     for (name, contacts) in &cases {
         for &kind in &solvers {
             let mut settings = RunSettings::default();
-            settings.solver.kind = kind;
+            settings.integration.solver.kind = kind;
             // Projection on dense sections: cap the sweeps so that a stall shows in seconds, not hours.
-            settings.solver.max_iterations = 2_000;
+            settings.integration.solver.max_iterations = 2_000;
             let outcome = Simulation::new(&model, contacts, &settings)
                 .and_then(|s| s.run_observed(&mut |view| view.step < steps));
             let label = match kind {

@@ -63,7 +63,7 @@ impl<'a> SnapshotTaker<'a> {
         requests: &[SnapshotAt],
     ) -> Result<Self> {
         let length = model.mesh().length;
-        let step = settings.load_advance / settings.speed;
+        let step = settings.integration.load_advance / settings.moving.speed;
         let start = settings.start_position();
         let end = settings.step_count(length) * step;
         let mut pending = Vec::with_capacity(requests.len());
@@ -81,13 +81,13 @@ impl<'a> SnapshotTaker<'a> {
                         let allowed = format!("a snapshot load position must lie in [{start}, {length}] m");
                         return Err(NscdError::InvalidField { field: "snapshots", value: x, allowed });
                     }
-                    (x - start) / settings.speed
+                    (x - start) / settings.moving.speed
                 }
             };
             pending.push((trigger, request));
         }
         pending.sort_by(|a, b| a.0.total_cmp(&b.0));
-        let force = settings.load;
+        let force = settings.moving.force;
         Ok(Self { model, contacts, force, step, pending, next: 0, taken: Vec::new(), error: None })
     }
 

@@ -21,7 +21,7 @@ pub struct StaticReference {
 pub fn static_midspan(case: &Case) -> Result<StaticReference> {
     let model = &case.model;
     let mid = model.mesh().length / 2.0;
-    let load = LoadVector::point_force(model.mesh(), mid, -case.settings.load)?;
+    let load = LoadVector::point_force(model.mesh(), mid, -case.settings.moving.force)?;
     let q = model.static_solve(&load)?;
     let moments = model.nodal_moments(&q, &load, Motion::default())?;
     Ok(StaticReference { deflection: model.deflection_at(&q, mid)?, moment: moments.at(mid) })

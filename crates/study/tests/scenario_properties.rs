@@ -78,7 +78,9 @@ fn build_and_run(text: &str) -> usize {
     let Ok(scenario) = Scenario::from_toml(text, "random.toml") else { return 0 };
     let Ok(case) = scenario.build() else { return 1 };
     // Runs are capped to keep the test quick; the cap itself is validated input.
-    if case.settings.load_advance > 0.0 && scenario.mesh.length / case.settings.load_advance > 400.0 {
+    if case.settings.integration.load_advance > 0.0
+        && scenario.mesh.length / case.settings.integration.load_advance > 400.0
+    {
         return 2;
     }
     match nscd::Simulation::new(&case.model, &case.contacts, &case.settings).and_then(|s| s.run()) {

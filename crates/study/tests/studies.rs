@@ -33,7 +33,7 @@ fn a_scenario_lists_only_what_differs() {
     let case = s.build().unwrap();
     assert_eq!(case.contacts.len(), 31 + 799);
     assert!((case.model.foundation().damping_ratio(case.model.beam()) - 0.05).abs() < 1e-12);
-    assert_eq!(case.settings.speed, 150.0);
+    assert_eq!(case.settings.moving.speed, 150.0);
 }
 
 #[test]

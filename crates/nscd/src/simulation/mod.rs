@@ -13,7 +13,7 @@ mod results;
 mod settings;
 
 pub use results::{Extreme, RunResult, SectionHistory, SolverStatistics, StepView, WindowExtremes};
-pub use settings::{InitialState, RunSettings};
+pub use settings::{InitialState, IntegrationSettings, MovingLoadSettings, RecordSettings, RunSettings};
 
 use crate::error::Result;
 use crate::forcing::MovingLoad;
@@ -66,11 +66,11 @@ impl<'a> Simulation<'a> {
     pub fn initial_state(&self) -> Result<(Vec<f64>, Vec<f64>)> {
         let dofs = self.model.dofs();
         let n = dofs.free_len();
-        match self.settings.initial {
+        match self.settings.moving.initial {
             InitialState::Rest => Ok((vec![0.0; n], vec![0.0; n])),
             InitialState::SteadyState { position } => {
                 let infinite = InfiniteBeam::new(self.model.beam(), self.model.foundation())?;
-                let state = infinite.steady_state(self.settings.speed, self.settings.load)?;
+                let state = infinite.steady_state(self.settings.moving.speed, self.settings.moving.force)?;
                 let mesh = self.model.mesh();
                 let mut q = vec![0.0; dofs.full_len()];
                 let mut v = vec![0.0; dofs.full_len()];
@@ -97,30 +97,32 @@ impl<'a> Simulation<'a> {
         let (model, settings) = (self.model, self.settings);
         let mesh = *model.mesh();
         let dofs = model.dofs();
-        let h = settings.load_advance / settings.speed;
-        let integration = Integration { theta: settings.theta, step: h };
+        let h = settings.integration.load_advance / settings.moving.speed;
+        let integration = Integration { theta: settings.integration.theta, step: h };
         let system = LinearSystem::from_beam(model);
-        let kind = resolve_solver(settings.solver.kind, model, self.contacts, h, settings.theta);
+        let kind =
+            resolve_solver(settings.integration.solver.kind, model, self.contacts, h, settings.integration.theta);
         // Coupling through M̂⁻¹ decays like e^{−x/(√2ℓ)}: 30ℓ leaves ~6e-10, and a window that fails the final
         // check is retried wider. Instruction counts over 1000 steps (1, 5, 10 kN/m): 30ℓ is 4–11 % below 40ℓ,
         // 20ℓ and 15ℓ no better than 30ℓ.
-        let margin = 30.0 * coupling_length(model, h, settings.theta);
+        let margin = 30.0 * coupling_length(model, h, settings.integration.theta);
         let (q0, v0) = self.initial_state()?;
         let start = settings.start_position();
-        let load = MovingLoad::new(mesh, dofs, settings.load, settings.speed, start);
-        let solver_settings = SolverSettings { kind, ..settings.solver };
+        let load = MovingLoad::new(mesh, dofs, settings.moving.force, settings.moving.speed, start);
+        let solver_settings = SolverSettings { kind, ..settings.integration.solver };
         let contacts = self.contacts.clone();
         let mut stepper = MoreauJean::build(&system, contacts, integration, &solver_settings, Some(margin), q0, v0)?;
 
         let t_on = settings.crossing_time(mesh.length);
         let crossing_steps = (t_on / h).round() as usize;
-        let total_steps = match settings.end_time {
+        let total_steps = match settings.integration.end_time {
             Some(end) => crossing_steps.max((end / h - 1e-9).ceil() as usize),
             None => crossing_steps,
         };
         let deflections = NodalDeflections::new(&mesh, dofs);
         let mut recorders: Vec<Recorder> = settings
-            .record_sections
+            .record
+            .sections
             .iter()
             .map(|&x| {
                 let node = mesh.nearest_node(x).unwrap_or(0);
@@ -165,8 +167,9 @@ impl<'a> Simulation<'a> {
             }
         }
         let mut extremes = (Extreme::default(), Extreme::default());
-        let mut window = settings.extremes_window.map(|load_range| WindowExtremes { load_range, ..Default::default() });
-        let in_window = |x_load: f64| settings.extremes_window.is_some_and(|(a, b)| (a..=b).contains(&x_load));
+        let mut window =
+            settings.record.extremes_window.map(|load_range| WindowExtremes { load_range, ..Default::default() });
+        let in_window = |x_load: f64| settings.record.extremes_window.is_some_and(|(a, b)| (a..=b).contains(&x_load));
         let scan = deflections.scan(stepper.q());
         scan.update(&mut extremes, 0.0);
         if let Some(w) = window.as_mut().filter(|_| in_window(start)) {

@@ -1,5 +1,6 @@
-//! The settings of one run: speed, load, θ, load advance, start, end, solver, what is recorded — and the limits
-//! checked before anything is allocated.
+//! The settings of one run, in three parts — what moves on the beam (speed, force, start), how it is integrated (θ,
+//! load advance, end, solver) and what is recorded (sections, extremes window) — and the limits checked before
+//! anything is allocated.
 
 use crate::error::{NscdError, Result};
 use crate::solver::SolverSettings;
@@ -20,45 +21,63 @@ pub enum InitialState {
     },
 }
 
-/// Settings of one run. Defaults: the reference case of docs/theory.md §2 at 200 m/s.
+/// What moves on the beam: the load, its speed and where it starts.
 #[derive(Debug, Clone, PartialEq)]
-pub struct RunSettings {
+pub struct MovingLoadSettings {
     /// Load speed v (m/s) > 0. Default 200.
     pub speed: f64,
     /// Load magnitude F (N), acting downward, ≥ 0. Default 83.4 kN.
-    pub load: f64,
+    pub force: f64,
+    /// Initial state (and with it the load's start position). Default rest, the load entering at x = 0.
+    pub initial: InitialState,
+}
+
+impl Default for MovingLoadSettings {
+    fn default() -> Self {
+        Self { speed: 200.0, force: 83.4e3, initial: InitialState::Rest }
+    }
+}
+
+/// How a run is integrated: the θ-method, the step (through the load advance), the end, the friction solver.
+#[derive(Debug, Clone, PartialEq)]
+pub struct IntegrationSettings {
     /// θ ∈ [½, 1]. Default ½.
     pub theta: f64,
     /// Load advance per step Δx (m) > 0, so h = Δx/v. Default 0.1 m; must not exceed one element.
     pub load_advance: f64,
-    /// Initial state. Default rest.
-    pub initial: InitialState,
     /// End time (s); None stops when the load leaves the beam. Must not be before that.
     pub end_time: Option<f64>,
     /// Friction solver settings.
     pub solver: SolverSettings,
-    /// Positions (m) whose histories (w, M, friction impulse) are recorded. Default: none.
-    pub record_sections: Vec<f64>,
+}
+
+impl Default for IntegrationSettings {
+    fn default() -> Self {
+        Self { theta: 0.5, load_advance: 0.1, end_time: None, solver: SolverSettings::default() }
+    }
+}
+
+/// What a run records besides its whole-run extremes, energy and W̄.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct RecordSettings {
+    /// Positions (m) whose histories (w, ẇ, ẅ, M, friction force) are recorded. Default: none.
+    pub sections: Vec<f64>,
     /// Also track the extremes while the load is inside this range of load positions [A, B] (m), reported in
-    /// [`RunResult::window`] beside the whole-run extremes: away from the entry and exit transients they read the
+    /// `RunResult::window` beside the whole-run extremes: away from the entry and exit transients they read the
     /// response of a long track. Default: none.
     pub extremes_window: Option<(f64, f64)>,
 }
 
-impl Default for RunSettings {
-    fn default() -> Self {
-        Self {
-            speed: 200.0,
-            load: 83.4e3,
-            theta: 0.5,
-            load_advance: 0.1,
-            initial: InitialState::Rest,
-            end_time: None,
-            solver: SolverSettings::default(),
-            record_sections: Vec::new(),
-            extremes_window: None,
-        }
-    }
+/// Settings of one run, in three parts: what moves on the beam, how it is integrated, what is recorded. Defaults:
+/// the reference case of docs/theory.md §2 at 200 m/s.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct RunSettings {
+    /// The moving load.
+    pub moving: MovingLoadSettings,
+    /// The time integration.
+    pub integration: IntegrationSettings,
+    /// What is recorded.
+    pub record: RecordSettings,
 }
 
 fn invalid(field: &'static str, value: f64, allowed: impl Into<String>) -> NscdError {
@@ -69,44 +88,51 @@ impl RunSettings {
     /// Check the settings against the model.
     pub fn validate(&self, model: &BeamModel) -> Result<()> {
         let length = model.mesh().length;
-        if !(self.speed.is_finite() && self.speed > 0.0) {
-            return Err(invalid("speed", self.speed, "must be finite and > 0 (m/s)"));
+        if !(self.moving.speed.is_finite() && self.moving.speed > 0.0) {
+            return Err(invalid("speed", self.moving.speed, "must be finite and > 0 (m/s)"));
         }
-        if !(self.load.is_finite() && self.load >= 0.0) {
-            return Err(invalid("load", self.load, "must be finite and ≥ 0 (N, acting downward)"));
+        if !(self.moving.force.is_finite() && self.moving.force >= 0.0) {
+            return Err(invalid("load", self.moving.force, "must be finite and ≥ 0 (N, acting downward)"));
         }
         let l = model.mesh().element_length();
-        if !(self.load_advance.is_finite() && self.load_advance > 0.0 && self.load_advance <= l) {
+        if !(self.integration.load_advance.is_finite()
+            && self.integration.load_advance > 0.0
+            && self.integration.load_advance <= l)
+        {
             return Err(invalid(
                 "load_advance",
-                self.load_advance,
+                self.integration.load_advance,
                 format!("must be > 0 and ≤ the element length {l} m"),
             ));
         }
-        Integration { theta: self.theta, step: self.load_advance / self.speed }.validate()?;
-        if !(self.solver.tolerance.is_finite() && self.solver.tolerance > 0.0 && self.solver.tolerance <= 1e-2) {
-            return Err(invalid("solver.tolerance", self.solver.tolerance, "must lie in (0, 1e-2]"));
+        Integration { theta: self.integration.theta, step: self.integration.load_advance / self.moving.speed }
+            .validate()?;
+        if !(self.integration.solver.tolerance.is_finite()
+            && self.integration.solver.tolerance > 0.0
+            && self.integration.solver.tolerance <= 1e-2)
+        {
+            return Err(invalid("solver.tolerance", self.integration.solver.tolerance, "must lie in (0, 1e-2]"));
         }
-        if self.solver.max_iterations == 0 {
+        if self.integration.solver.max_iterations == 0 {
             return Err(invalid("solver.max_iterations", 0.0, "must be ≥ 1"));
         }
-        if let InitialState::SteadyState { position } = self.initial
+        if let InitialState::SteadyState { position } = self.moving.initial
             && !(position.is_finite() && (0.0..length).contains(&position))
         {
             return Err(invalid("initial.position", position, format!("must lie in [0, {length}) m")));
         }
-        for &x in &self.record_sections {
+        for &x in &self.record.sections {
             if !(x.is_finite() && (0.0..=length).contains(&x)) {
                 return Err(invalid("record_sections", x, format!("must lie on the beam, in [0, {length}] m")));
             }
         }
-        if let Some((a, b)) = self.extremes_window
+        if let Some((a, b)) = self.record.extremes_window
             && !(a.is_finite() && b.is_finite() && a < b)
         {
             let allowed = format!("needs finite load positions A < B (m), got {a}:{b}");
             return Err(invalid("extremes_window", if a.is_finite() { b } else { a }, allowed));
         }
-        if let Some(end) = self.end_time
+        if let Some(end) = self.integration.end_time
             && !(end.is_finite() && end >= self.crossing_time(length) * (1.0 - 1e-12))
         {
             return Err(invalid(
@@ -117,25 +143,25 @@ impl RunSettings {
         }
         let steps = self.step_count(length);
         if steps > Self::MAX_STEPS as f64 {
-            let h = self.load_advance / self.speed;
+            let h = self.integration.load_advance / self.moving.speed;
             let allowed = format!(
                 "gives {steps:.3e} time steps of {h:.3e} s; at most {} are allowed (shorten the run or lengthen the \
                  load advance)",
                 Self::MAX_STEPS
             );
-            return match self.end_time {
+            return match self.integration.end_time {
                 Some(end) => Err(invalid("end_time", end, allowed)),
-                None => Err(invalid("load_advance", self.load_advance, allowed)),
+                None => Err(invalid("load_advance", self.integration.load_advance, allowed)),
             };
         }
-        let samples = (steps + 1.0) * self.record_sections.len() as f64;
+        let samples = (steps + 1.0) * self.record.sections.len() as f64;
         if samples > Self::MAX_RECORDED_SAMPLES as f64 {
             return Err(invalid(
                 "record_sections",
-                self.record_sections.len() as f64,
+                self.record.sections.len() as f64,
                 format!(
                     "{} sections × {steps:.3e} steps exceed {} recorded samples; record fewer sections",
-                    self.record_sections.len(),
+                    self.record.sections.len(),
                     Self::MAX_RECORDED_SAMPLES
                 ),
             ));
@@ -152,9 +178,9 @@ impl RunSettings {
 
     /// Number of time steps of the run (as a float, so that absurd inputs do not overflow).
     pub fn step_count(&self, length: f64) -> f64 {
-        let h = self.load_advance / self.speed;
+        let h = self.integration.load_advance / self.moving.speed;
         let crossing = (self.crossing_time(length) / h).round();
-        match self.end_time {
+        match self.integration.end_time {
             Some(end) => crossing.max((end / h - 1e-9).ceil()),
             None => crossing,
         }
@@ -162,7 +188,7 @@ impl RunSettings {
 
     /// Load position at t = 0 (m).
     pub fn start_position(&self) -> f64 {
-        match self.initial {
+        match self.moving.initial {
             InitialState::Rest => 0.0,
             InitialState::SteadyState { position } => position,
         }
@@ -170,6 +196,6 @@ impl RunSettings {
 
     /// Time for the load to reach x = L (s).
     pub fn crossing_time(&self, length: f64) -> f64 {
-        (length - self.start_position()) / self.speed
+        (length - self.start_position()) / self.moving.speed
     }
 }

@@ -12,7 +12,11 @@ fn largest_deflection_is_near_the_critical_speed() {
     let sweep: Vec<(f64, f64)> = (0..=22)
         .map(|i| {
             let speed = 150.0 + 5.0 * i as f64;
-            let settings = RunSettings { speed, ..RunSettings::default() };
+            let settings = {
+                let mut s = RunSettings::default();
+                s.moving.speed = speed;
+                s
+            };
             (speed, Simulation::new(&model, &contacts, &settings).unwrap().run().unwrap().max_downward.magnitude)
         })
         .collect();

@@ -7,7 +7,12 @@ use nscd::{RunSettings, Simulation};
 #[test]
 fn equal_capacity_discrete_and_distributed_friction_respond_alike() {
     let model = reference();
-    let settings = RunSettings { speed: 150.0, record_sections: vec![100.0], ..RunSettings::default() };
+    let settings = {
+        let mut s = RunSettings::default();
+        s.moving.speed = 150.0;
+        s.record.sections = vec![100.0];
+        s
+    };
     let devices = Devices::uniform(199, 1e3).contact_set(&model).unwrap();
     let distributed = DistributedFriction::new(995.0).contact_set(&model).unwrap();
     assert!((devices.total_capacity() - 199e3).abs() < 1e-6);

@@ -14,7 +14,13 @@ fn energy_balance_closes() {
     ];
     for theta in [0.5, 0.6] {
         for (name, contacts) in &sets {
-            let settings = RunSettings { theta, speed: 180.0, load_advance: 0.2, ..RunSettings::default() };
+            let settings = {
+                let mut s = RunSettings::default();
+                s.integration.theta = theta;
+                s.moving.speed = 180.0;
+                s.integration.load_advance = 0.2;
+                s
+            };
             let r = Simulation::new(&model, contacts, &settings).unwrap().run().unwrap();
             let e = r.energy;
             assert!(e.load_work > 0.0);
@@ -47,10 +53,19 @@ fn energy_balance_closes() {
 fn free_vibration_after_the_load_leaves() {
     let model = beam(60.0, 60);
     let contacts = Devices::uniform(7, 20e3).contact_set(&model).unwrap();
-    let base = RunSettings { speed: 150.0, load_advance: 0.2, ..RunSettings::default() };
+    let base = {
+        let mut s = RunSettings::default();
+        s.moving.speed = 150.0;
+        s.integration.load_advance = 0.2;
+        s
+    };
     let t_on = 60.0 / 150.0;
     let crossing = Simulation::new(&model, &contacts, &base).unwrap().run().unwrap();
-    let longer = RunSettings { end_time: Some(1.5 * t_on), ..base.clone() };
+    let longer = {
+        let mut s = base.clone();
+        s.integration.end_time = Some(1.5 * t_on);
+        s
+    };
     let after = Simulation::new(&model, &contacts, &longer).unwrap().run().unwrap();
     assert_eq!(crossing.statistics.steps, 300);
     assert_eq!(after.statistics.steps, 450);
@@ -59,6 +74,10 @@ fn free_vibration_after_the_load_leaves() {
     assert!(after.energy.residual().abs() <= 1e-9 * after.energy.load_work);
     // W̄ integrates over the crossing only.
     assert_eq!(after.global_norm, crossing.global_norm);
-    let too_early = RunSettings { end_time: Some(0.5 * t_on), ..base };
+    let too_early = {
+        let mut s = base;
+        s.integration.end_time = Some(0.5 * t_on);
+        s
+    };
     assert!(Simulation::new(&model, &contacts, &too_early).is_err());
 }

@@ -5,11 +5,15 @@ use friction::{Devices, DistributedFriction};
 use nscd::{RunSettings, Simulation, SolverKind};
 
 fn check_law_every_step(model: &fem_beam::BeamModel, contacts: &friction::ContactSet, kind: SolverKind) -> usize {
-    let mut settings = RunSettings { speed: 190.0, ..RunSettings::default() };
-    settings.solver.kind = kind;
+    let mut settings = {
+        let mut s = RunSettings::default();
+        s.moving.speed = 190.0;
+        s
+    };
+    settings.integration.solver.kind = kind;
     // Held to 1e-10, not the default 1e-6: the law residual bounds a slipping impulse's distance from its bound only
     // by tolerance/W_jj, and the 1e-6·a asserted below needs the tighter tolerance to hold with margin.
-    settings.solver.tolerance = 1e-10;
+    settings.integration.solver.tolerance = 1e-10;
     let mut slipping_seen = 0;
     Simulation::new(model, contacts, &settings)
         .unwrap()
@@ -58,7 +62,7 @@ fn huge_device_force_keeps_device_sections_at_rest() {
     let model = reference();
     let contacts = Devices::uniform(31, 1e12).contact_set(&model).unwrap();
     let mut settings = RunSettings::default();
-    settings.solver.tolerance = 1e-14;
+    settings.integration.solver.tolerance = 1e-14;
     let mut fastest: f64 = 0.0;
     let r = Simulation::new(&model, &contacts, &settings)
         .unwrap()

@@ -9,11 +9,11 @@ use nscd::{Forcing, MovingLoad, RunSettings, Simulation};
 /// (M + hθC + h²θ²K) v₁ = M v₀ + h F_θ − hC(1−θ)v₀ − hK q₀ − h²θ(1−θ)K v₀, q₁ = q₀ + h(θv₁ + (1−θ)v₀).
 fn dense_theta_method(model: &fem_beam::BeamModel, settings: &RunSettings) -> Vec<Vec<f64>> {
     let (m, c, k) = (model.mass().to_dense(), model.damping().to_dense(), model.stiffness().to_dense());
-    let (h, theta) = (settings.load_advance / settings.speed, settings.theta);
+    let (h, theta) = (settings.integration.load_advance / settings.moving.speed, settings.integration.theta);
     let lhs = (&m + &c * (h * theta) + &k * (h * h * theta * theta)).lu();
-    let load = MovingLoad::new(*model.mesh(), model.dofs(), settings.load, settings.speed, 0.0);
+    let load = MovingLoad::new(*model.mesh(), model.dofs(), settings.moving.force, settings.moving.speed, 0.0);
     let n = m.nrows();
-    let steps = (model.mesh().length / settings.load_advance).round() as usize;
+    let steps = (model.mesh().length / settings.integration.load_advance).round() as usize;
     let (mut q, mut v) = (DVector::zeros(n), DVector::zeros(n));
     let mut history = Vec::new();
     for step in 0..steps {
@@ -40,7 +40,13 @@ fn friction_free_run_is_the_linear_theta_method() {
             let case = fem_beam::reference::uic60_on_soft_soil();
             let foundation = case.foundation.with_damping_ratio(damping, &case.beam).unwrap();
             model = fem_beam::BeamModel::new(case.beam, foundation, *model.mesh(), case.supports).unwrap();
-            let settings = RunSettings { speed: 120.0, theta, load_advance: 0.25, ..RunSettings::default() };
+            let settings = {
+                let mut s = RunSettings::default();
+                s.moving.speed = 120.0;
+                s.integration.theta = theta;
+                s.integration.load_advance = 0.25;
+                s
+            };
             let reference = dense_theta_method(&model, &settings);
             let contacts = ContactSet::new();
             let mut worst: f64 = 0.0;
@@ -61,7 +67,12 @@ fn friction_free_run_is_the_linear_theta_method() {
 #[test]
 fn vanishing_friction_converges_to_the_linear_response() {
     let model = beam(60.0, 60);
-    let settings = RunSettings { speed: 150.0, load_advance: 0.25, ..RunSettings::default() };
+    let settings = {
+        let mut s = RunSettings::default();
+        s.moving.speed = 150.0;
+        s.integration.load_advance = 0.25;
+        s
+    };
     let linear = Simulation::new(&model, &ContactSet::new(), &settings).unwrap().run().unwrap();
     let w_lin = linear.max_downward.magnitude;
     let gap = |contacts: ContactSet| {

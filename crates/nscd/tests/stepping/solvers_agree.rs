@@ -10,8 +10,9 @@ use nscd::{InitialState, LinearSystem, MoreauJean, MovingLoad, RunSettings, Simu
 /// Settings at `speed` with the solvers held to 1e-10, not the default 1e-6: two exact solvers are compared step by
 /// step to 1e-8 here, which needs their own tolerance well below it.
 fn tight(speed: f64) -> RunSettings {
-    let mut settings = RunSettings { speed, ..RunSettings::default() };
-    settings.solver.tolerance = 1e-10;
+    let mut settings = RunSettings::default();
+    settings.moving.speed = speed;
+    settings.integration.solver.tolerance = 1e-10;
     settings
 }
 
@@ -28,24 +29,24 @@ fn same_state_difference(
     steps: usize,
 ) -> f64 {
     let model = reference();
-    let h = settings.load_advance / settings.speed;
+    let h = settings.integration.load_advance / settings.moving.speed;
     let system = LinearSystem::from_beam(&model);
-    let integration = Integration { theta: settings.theta, step: h };
-    let margin = Some(30.0 * coupling_length(&model, h, settings.theta));
+    let integration = Integration { theta: settings.integration.theta, step: h };
+    let margin = Some(30.0 * coupling_length(&model, h, settings.integration.theta));
     let checking = FrictionProblem::new(&system, contacts.clone(), integration).unwrap();
-    let whole = SolverSettings { moving_window: false, ..settings.solver };
+    let whole = SolverSettings { moving_window: false, ..settings.integration.solver };
     let mut solver_b = build_solver(b, &checking, &whole, None).unwrap();
     let (q0, v0) = Simulation::new(&model, contacts, settings).unwrap().initial_state().unwrap();
-    let start = match settings.initial {
+    let start = match settings.moving.initial {
         InitialState::Rest => 0.0,
         InitialState::SteadyState { position } => position,
     };
-    let load = MovingLoad::new(*model.mesh(), model.dofs(), settings.load, settings.speed, start);
+    let load = MovingLoad::new(*model.mesh(), model.dofs(), settings.moving.force, settings.moving.speed, start);
     let n = system.dofs();
-    let stepping = SolverSettings { kind: a, ..settings.solver };
+    let stepping = SolverSettings { kind: a, ..settings.integration.solver };
     let mut stepper = MoreauJean::build(&system, contacts.clone(), integration, &stepping, margin, q0, v0).unwrap();
     let (mut u_free, mut p) = (vec![0.0; contacts.len()], vec![0.0; contacts.len()]);
-    let crossing = ((model.mesh().length - start) / settings.load_advance).round() as usize;
+    let crossing = ((model.mesh().length - start) / settings.integration.load_advance).round() as usize;
     let mut worst: f64 = 0.0;
     let (mut compared, mut skipped) = (0usize, 0usize);
     for step in 1..=steps.min(crossing) {
@@ -80,7 +81,7 @@ fn same_max_deflection(contacts: &ContactSet, a: SolverKind, b: SolverKind, sett
     let model = reference();
     let run = |kind| {
         let mut s = settings.clone();
-        s.solver.kind = kind;
+        s.integration.solver.kind = kind;
         Simulation::new(&model, contacts, &s).unwrap().run().unwrap()
     };
     let (ra, rb) = (run(a), run(b));
@@ -107,7 +108,11 @@ fn clarabel_agrees_with_interior_point_for_distributed_friction() {
     let contacts = DistributedFriction::new(5e3).contact_set(&model).unwrap();
     // From the steady state with the load at mid-span the whole window around it moves at once. (From rest the
     // first steps move the beam by nanometres, where Clarabel's absolute accuracy is the limit: 2e-6 relative.)
-    let settings = RunSettings { initial: InitialState::SteadyState { position: 95.0 }, ..tight(200.0) };
+    let settings = {
+        let mut s = tight(200.0);
+        s.moving.initial = InitialState::SteadyState { position: 95.0 };
+        s
+    };
     same_state_difference(&contacts, SolverKind::InteriorPoint, SolverKind::Clarabel, &settings, 30);
 }
 
@@ -133,7 +138,11 @@ fn whole_runs_agree() {
     same_state_difference(&devices, SolverKind::Projection, SolverKind::Clarabel, &settings, usize::MAX);
     same_max_deflection(&devices, SolverKind::Projection, SolverKind::Clarabel, &settings, 1e-6);
     let distributed = DistributedFriction::new(5e3).contact_set(&model).unwrap();
-    let steady = RunSettings { initial: InitialState::SteadyState { position: 5.0 }, ..settings.clone() };
+    let steady = {
+        let mut s = settings.clone();
+        s.moving.initial = InitialState::SteadyState { position: 5.0 };
+        s
+    };
     same_state_difference(&distributed, SolverKind::InteriorPoint, SolverKind::Clarabel, &steady, usize::MAX);
     // With 799 sections the run's max deflection is itself only defined to ~1e-6: the interior point alone gives
     // 0.17768265, 0.17768305, 0.17768295, 0.17768316 m at tolerances 1e-8, 1e-9, 1e-10, 1e-11 (stick–slip

@@ -19,11 +19,12 @@ fn fe_response_matches_infinite_beam_steady_state() {
     let infinite = InfiniteBeam::new(&case.beam, &foundation).unwrap();
     let contacts = ContactSet::new();
     for speed in [100.0, 150.0, 200.0, 250.0] {
-        let settings = RunSettings {
-            speed,
-            initial: InitialState::SteadyState { position: 150.0 },
-            extremes_window: Some((190.0, 210.0)),
-            ..RunSettings::default()
+        let settings = {
+            let mut s = RunSettings::default();
+            s.moving.speed = speed;
+            s.moving.initial = InitialState::SteadyState { position: 150.0 };
+            s.record.extremes_window = Some((190.0, 210.0));
+            s
         };
         let run = Simulation::new(&model, &contacts, &settings).unwrap().run().unwrap();
         let r = run.window.unwrap();
@@ -53,11 +54,12 @@ fn recorded_histories_match_steady_state_under_the_load() {
     let infinite = InfiniteBeam::new(&case.beam, &foundation).unwrap();
     let contacts = ContactSet::new();
     for speed in [20.0, 100.0, 150.0] {
-        let settings = RunSettings {
-            speed,
-            initial: InitialState::SteadyState { position: 60.0 },
-            record_sections: vec![100.0],
-            ..RunSettings::default()
+        let settings = {
+            let mut s = RunSettings::default();
+            s.moving.speed = speed;
+            s.moving.initial = InitialState::SteadyState { position: 60.0 };
+            s.record.sections = vec![100.0];
+            s
         };
         let r = Simulation::new(&model, &contacts, &settings).unwrap().run().unwrap();
         let history = &r.histories[0];

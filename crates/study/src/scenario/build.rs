@@ -5,7 +5,8 @@ use super::{Case, QuadratureKind, Scenario, SweepSection, fnv1a};
 use crate::error::{Result, StudyError, invalid};
 use fem_beam::{AbsorbingZones, BeamModel, Foundation, Mesh, Supports};
 use friction::{ContactSet, DeviceLayout, Devices, DistributedFriction, Quadrature};
-use nscd::{InitialState, RunSettings};
+use nscd::simulation::{IntegrationSettings, MovingLoadSettings, RecordSettings};
+use nscd::{InitialState, RunSettings, SolverSettings};
 
 fn finite_positive(path: &str, value: f64, unit: &str) -> Result<()> {
     if value.is_finite() && value > 0.0 {
@@ -181,24 +182,29 @@ impl Scenario {
     /// Run settings for a load speed `speed` (m/s), not yet validated (see [`Scenario::build`]).
     pub fn run_settings(&self, speed: f64) -> RunSettings {
         let i = &self.integration;
-        let mut settings = RunSettings {
-            speed,
-            load: self.load.force,
-            theta: i.theta,
-            load_advance: i.load_advance,
-            end_time: i.end_time,
-            record_sections: self.output.sections.clone(),
-            extremes_window: Some(self.output.extremes_window(self.mesh.length)),
-            ..RunSettings::default()
+        let initial = match i.steady_start {
+            Some(position) => InitialState::SteadyState { position },
+            None => InitialState::Rest,
         };
-        settings.solver.kind = i.solver;
-        settings.solver.tolerance = i.tolerance;
-        settings.solver.max_iterations = i.max_iterations;
-        settings.solver.moving_window = i.moving_window;
-        if let Some(position) = i.steady_start {
-            settings.initial = InitialState::SteadyState { position };
+        let solver = SolverSettings {
+            kind: i.solver,
+            tolerance: i.tolerance,
+            max_iterations: i.max_iterations,
+            moving_window: i.moving_window,
+        };
+        RunSettings {
+            moving: MovingLoadSettings { speed, force: self.load.force, initial },
+            integration: IntegrationSettings {
+                theta: i.theta,
+                load_advance: i.load_advance,
+                end_time: i.end_time,
+                solver,
+            },
+            record: RecordSettings {
+                sections: self.output.sections.clone(),
+                extremes_window: Some(self.output.extremes_window(self.mesh.length)),
+            },
         }
-        settings
     }
 }
 

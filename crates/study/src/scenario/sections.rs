@@ -219,12 +219,12 @@ impl Default for IntegrationSection {
     fn default() -> Self {
         let s = RunSettings::default();
         Self {
-            theta: s.theta,
-            load_advance: s.load_advance,
+            theta: s.integration.theta,
+            load_advance: s.integration.load_advance,
             solver: SolverKind::Auto,
-            tolerance: s.solver.tolerance,
-            max_iterations: s.solver.max_iterations,
-            moving_window: s.solver.moving_window,
+            tolerance: s.integration.solver.tolerance,
+            max_iterations: s.integration.solver.max_iterations,
+            moving_window: s.integration.solver.moving_window,
             steady_start: None,
             end_time: None,
         }
