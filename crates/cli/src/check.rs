@@ -41,8 +41,10 @@ fn check(path: &std::path::Path) -> Result<()> {
     let range = scenario.speed_range()?;
     let mesh = case.model.mesh();
     let foundation = case.model.foundation();
-    let c_cr = 2.0 * (foundation.stiffness * case.model.beam().mass_per_length()).sqrt();
-    let damping = if c_cr > 0.0 { format!("ζ = {:.4}", foundation.damping / c_cr) } else { "no foundation".into() };
+    let damping = match foundation.stiffness > 0.0 {
+        true => format!("ζ = {:.4}", foundation.damping_ratio(case.model.beam())),
+        false => "no foundation".into(),
+    };
     let friction = match (&scenario.friction.devices, &scenario.friction.distributed) {
         (None, None) => "no friction".to_string(),
         (devices, distributed) => {

@@ -189,13 +189,12 @@ fn report(scenario: &Scenario, case: &Case, result: &RunResult, wall_time: f64) 
     };
     let critical = study::speeds::SpeedScale::of(scenario)?.critical_speed;
     let foundation = case.model.foundation();
-    let c_cr = 2.0 * (foundation.stiffness * case.model.beam().mass_per_length()).sqrt();
     Ok(RunReport {
         title: scenario.title.clone(),
         speed: settings.moving.speed,
         load: settings.moving.force,
         critical_speed: critical,
-        damping_ratio: if c_cr > 0.0 { foundation.damping / c_cr } else { 0.0 },
+        damping_ratio: foundation.damping_ratio(case.model.beam()),
         devices: device_positions.len(),
         device_force: scenario.friction.devices.as_ref().and_then(|d| d.force).unwrap_or(0.0),
         device_positions,

@@ -93,7 +93,7 @@ impl<'a> SnapshotTaker<'a> {
 
     /// Observe one step; returns false (stop the run) only after an error, kept for [`SnapshotTaker::finish`].
     pub fn observe(&mut self, view: &StepView<'_>) -> bool {
-        // Half a step of slack against round-off in t_{k+1} = (k+1)·h.
+        // A millionth of a step of slack against round-off in the accumulated time t_{k+1}.
         while self.next < self.pending.len() && view.time >= self.pending[self.next].0 - 1e-6 * self.step {
             let requested = self.pending[self.next].1;
             match self.take(view, requested) {

@@ -9,6 +9,7 @@
 
 use crate::error::{Result, invalid};
 use crate::scenario::{Case, Scenario};
+use fem_beam::reference::InfiniteBeam;
 use fem_beam::{BeamModel, Support};
 use friction::ContactKind;
 use std::fmt;
@@ -63,9 +64,9 @@ pub fn refuse_degenerate(model: &BeamModel) -> Result<()> {
 pub fn warnings(scenario: &Scenario, case: &Case) -> Vec<Warning> {
     let mut out = Vec::new();
     let model = &case.model;
-    let (beam, foundation) = (model.beam(), model.foundation());
-    if foundation.stiffness > 0.0 {
-        let bowl = std::f64::consts::PI / (foundation.stiffness / (4.0 * beam.bending_stiffness())).powf(0.25);
+    // β of the infinite beam on this foundation (none without one: k_f = 0 has no deflection bowl).
+    if let Ok(infinite) = InfiniteBeam::new(model.beam(), model.foundation()) {
+        let bowl = std::f64::consts::PI / infinite.beta();
         let l = model.mesh().element_length();
         if l > 0.25 * bowl {
             let needed = (4.0 * model.mesh().length / bowl).ceil();
