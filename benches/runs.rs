@@ -6,19 +6,19 @@
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use fem_beam::BeamModel;
 use fem_beam::reference::uic60_on_soft_soil;
-use friction::{ContactSet, Devices, DistributedFriction};
+use friction::{Devices, DistributedFriction, InteractionSet};
 use nscd::{RunSettings, Simulation};
 use std::hint::black_box;
 use std::time::Duration;
 
-fn cases(model: &BeamModel) -> Vec<(&'static str, ContactSet)> {
+fn cases(model: &BeamModel) -> Vec<(&'static str, InteractionSet)> {
     vec![
-        ("no_friction", ContactSet::new()),
-        ("devices_7_100kN", Devices::uniform(7, 100e3).contact_set(model).unwrap()),
-        ("devices_31_100kN", Devices::uniform(31, 100e3).contact_set(model).unwrap()),
-        ("distributed_1kN_per_m", DistributedFriction::new(1e3).contact_set(model).unwrap()),
-        ("distributed_5kN_per_m", DistributedFriction::new(5e3).contact_set(model).unwrap()),
-        ("distributed_10kN_per_m", DistributedFriction::new(10e3).contact_set(model).unwrap()),
+        ("no_friction", InteractionSet::new()),
+        ("devices_7_100kN", Devices::uniform(7, 100e3).interactions(model).unwrap()),
+        ("devices_31_100kN", Devices::uniform(31, 100e3).interactions(model).unwrap()),
+        ("distributed_1kN_per_m", DistributedFriction::new(1e3).interactions(model).unwrap()),
+        ("distributed_5kN_per_m", DistributedFriction::new(5e3).interactions(model).unwrap()),
+        ("distributed_10kN_per_m", DistributedFriction::new(10e3).interactions(model).unwrap()),
     ]
 }
 
@@ -27,9 +27,9 @@ fn whole_runs(c: &mut Criterion) {
     let settings = RunSettings::default();
     let mut group = c.benchmark_group("whole_run");
     group.sample_size(10).warm_up_time(Duration::from_secs(1)).measurement_time(Duration::from_secs(8));
-    for (name, contacts) in cases(&model) {
+    for (name, interactions) in cases(&model) {
         group.bench_function(BenchmarkId::from_parameter(name), |b| {
-            b.iter(|| Simulation::new(&model, black_box(&contacts), &settings).unwrap().run().unwrap())
+            b.iter(|| Simulation::new(&model, black_box(&interactions), &settings).unwrap().run().unwrap())
         });
     }
     group.finish();
@@ -88,7 +88,7 @@ fn friction_free_against_bare_solves(c: &mut Criterion) {
             black_box(q)
         })
     });
-    let none = ContactSet::new();
+    let none = InteractionSet::new();
     group.bench_function(BenchmarkId::new("whole_run_no_friction", steps), |b| {
         b.iter(|| Simulation::new(&model, black_box(&none), &settings).unwrap().run().unwrap())
     });
@@ -106,16 +106,16 @@ fn scaling(c: &mut Criterion) {
         case.mesh.elements = elements;
         let model = case.model().unwrap();
         let mut cases = vec![
-            ("no_friction", ContactSet::new()),
-            ("devices_31_100kN", Devices::uniform(31, 100e3).contact_set(&model).unwrap()),
+            ("no_friction", InteractionSet::new()),
+            ("devices_31_100kN", Devices::uniform(31, 100e3).interactions(&model).unwrap()),
         ];
         // Distributed friction on 2000 elements takes ~15 s a run: measured by the probe example instead.
         if elements <= 1000 {
-            cases.push(("distributed_5kN_per_m", DistributedFriction::new(5e3).contact_set(&model).unwrap()));
+            cases.push(("distributed_5kN_per_m", DistributedFriction::new(5e3).interactions(&model).unwrap()));
         }
-        for (name, contacts) in cases {
+        for (name, interactions) in cases {
             group.bench_function(BenchmarkId::new(name, elements), |b| {
-                b.iter(|| Simulation::new(&model, black_box(&contacts), &settings).unwrap().run().unwrap())
+                b.iter(|| Simulation::new(&model, black_box(&interactions), &settings).unwrap().run().unwrap())
             });
         }
     }

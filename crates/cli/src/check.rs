@@ -50,7 +50,8 @@ fn check(path: &std::path::Path) -> Result<()> {
         (devices, distributed) => {
             let mut parts = Vec::new();
             if let Some(d) = devices {
-                let placed = case.contacts.kinds().iter().filter(|k| **k == friction::ContactKind::Device).count();
+                let placed =
+                    case.interactions.kinds().iter().filter(|k| **k == friction::InteractionKind::Device).count();
                 parts.push(format!("{placed} devices of {:.1} kN", d.force.unwrap_or(0.0) / 1e3));
             }
             if let Some(d) = distributed {
@@ -68,7 +69,7 @@ fn check(path: &std::path::Path) -> Result<()> {
         mesh.elements,
         case.model.dofs().free_len(),
         foundation.stiffness / 1e3,
-        case.contacts.len(),
+        case.interactions.len(),
         scenario.load.force / 1e3,
         scenario.load.speed,
         range.from,

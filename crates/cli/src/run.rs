@@ -8,7 +8,7 @@ use crate::files::{check_output_file, prepare_output_folder, write_atomically};
 use crate::scenario_args::ScenarioArgs;
 use anyhow::Result;
 use clap::Args;
-use friction::ContactKind;
+use friction::InteractionKind;
 use nscd::{RunResult, SnapshotAt};
 use serde::Serialize;
 use std::path::PathBuf;
@@ -175,9 +175,9 @@ fn report(scenario: &Scenario, case: &Case, result: &RunResult, wall_time: f64) 
     let e = &result.energy;
     let s = &result.statistics;
     let settings = &case.settings;
-    let device_positions: Vec<f64> = (0..case.contacts.len())
-        .filter(|&j| case.contacts.kinds()[j] == ContactKind::Device)
-        .map(|j| case.contacts.positions()[j])
+    let device_positions: Vec<f64> = (0..case.interactions.len())
+        .filter(|&j| case.interactions.kinds()[j] == InteractionKind::Device)
+        .map(|j| case.interactions.positions()[j])
         .collect();
     let window = result.window.unwrap_or_default();
     let x0 = settings.start_position();

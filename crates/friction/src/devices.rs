@@ -4,8 +4,8 @@
 //! x (N = 15 on 1 m elements: 12.5 m → 13 m); or devices at explicit positions, snapped the same way. Each device
 //! has the row selecting its node's w DOF and the bound F_u. Devices snapped to the same node merge (bounds add).
 
-use crate::contact::{ContactKind, ContactRow, ContactSet};
 use crate::error::{FrictionError, Result};
+use crate::interaction::{InteractionKind, InteractionRow, InteractionSet};
 use fem_beam::BeamModel;
 
 /// Where the devices go.
@@ -86,16 +86,16 @@ impl Devices {
     }
 
     /// The contact set: one row per distinct node (devices on the same node merged, bounds added).
-    pub fn contact_set(&self, model: &BeamModel) -> Result<ContactSet> {
+    pub fn interactions(&self, model: &BeamModel) -> Result<InteractionSet> {
         let mut nodes = self.snapped_nodes(model)?;
         nodes.sort_unstable();
-        let mut set = ContactSet::new();
+        let mut set = InteractionSet::new();
         let mut i = 0;
         while i < nodes.len() {
             let node = nodes[i];
             let same = nodes[i..].iter().take_while(|&&n| n == node).count();
-            let row = ContactRow::from_entries(model.dofs().free_index(2 * node).map(|d| (d, 1.0)));
-            set.push(row, self.force * same as f64, model.mesh().node_x(node), ContactKind::Device);
+            let row = InteractionRow::from_entries(model.dofs().free_index(2 * node).map(|d| (d, 1.0)));
+            set.push_friction(row, self.force * same as f64, model.mesh().node_x(node), InteractionKind::Device);
             i += same;
         }
         Ok(set)

@@ -7,8 +7,8 @@
 //! has the row H_s = Ψ(x_s), the Hermite shape functions of w in its element (so Hᵀr carries forces and moments),
 //! and the bound F_s = f_u·weight_s.
 
-use crate::contact::{ContactKind, ContactRow, ContactSet};
 use crate::error::{FrictionError, Result};
+use crate::interaction::{InteractionKind, InteractionRow, InteractionSet};
 use fem_beam::BeamModel;
 use fem_beam::element::hermite;
 
@@ -103,7 +103,7 @@ impl DistributedFriction {
     }
 
     /// The contact set on the mesh of `model`: J·n_e + 1 sections in order of x, minus those on supports.
-    pub fn contact_set(&self, model: &BeamModel) -> Result<ContactSet> {
+    pub fn interactions(&self, model: &BeamModel) -> Result<InteractionSet> {
         self.validate()?;
         let mesh = model.mesh();
         let dofs = model.dofs();
@@ -115,18 +115,18 @@ impl DistributedFriction {
                 weights[e * j + s] += self.weight_fraction(s) * l;
             }
         }
-        let mut set = ContactSet::new();
+        let mut set = InteractionSet::new();
         for (g, weight) in weights.iter().enumerate() {
             let (e, s) = ((g / j).min(ne - 1), g - (g / j).min(ne - 1) * j);
             let row = if s == 0 || s == j {
                 let node = e + s / j;
-                ContactRow::from_entries(dofs.free_index(2 * node).map(|d| (d, 1.0)))
+                InteractionRow::from_entries(dofs.free_index(2 * node).map(|d| (d, 1.0)))
             } else {
                 let n = hermite::shape(s as f64 / j as f64, l);
-                ContactRow::from_entries((0..4).filter_map(|k| dofs.free_index(2 * e + k).map(|d| (d, n[k]))))
+                InteractionRow::from_entries((0..4).filter_map(|k| dofs.free_index(2 * e + k).map(|d| (d, n[k]))))
             };
             let x = (e as f64 + s as f64 / j as f64) * l;
-            set.push(row, self.force_per_length * weight, x, ContactKind::Distributed);
+            set.push_friction(row, self.force_per_length * weight, x, InteractionKind::Ballast);
         }
         Ok(set)
     }

@@ -5,7 +5,7 @@
 //! loop, the solver statistics and the peak resident memory of the process (VmHWM, Linux).
 
 use fem_beam::reference::uic60_on_soft_soil;
-use friction::{ContactSet, Devices, DistributedFriction};
+use friction::{Devices, DistributedFriction, InteractionSet};
 use nscd::{RunSettings, Simulation};
 
 fn main() {
@@ -22,20 +22,20 @@ fn main() {
     if let Some(v) = std::env::args().nth(5).and_then(|s| s.parse().ok()) {
         settings.moving.speed = v;
     }
-    let contacts = match case.as_str() {
-        "none" => ContactSet::new(),
-        "devices7" => Devices::uniform(7, 100e3).contact_set(&model).expect("devices"),
-        "devices31" => Devices::uniform(31, 100e3).contact_set(&model).expect("devices"),
-        "distributed1k" => DistributedFriction::new(1e3).contact_set(&model).expect("friction"),
-        "distributed10k" => DistributedFriction::new(10e3).contact_set(&model).expect("friction"),
+    let interactions = match case.as_str() {
+        "none" => InteractionSet::new(),
+        "devices7" => Devices::uniform(7, 100e3).interactions(&model).expect("devices"),
+        "devices31" => Devices::uniform(31, 100e3).interactions(&model).expect("devices"),
+        "distributed1k" => DistributedFriction::new(1e3).interactions(&model).expect("friction"),
+        "distributed10k" => DistributedFriction::new(10e3).interactions(&model).expect("friction"),
         "distributed5k-whole" => {
             settings.integration.solver.moving_window = false;
-            DistributedFriction::new(5e3).contact_set(&model).expect("friction")
+            DistributedFriction::new(5e3).interactions(&model).expect("friction")
         }
-        _ => DistributedFriction::new(5e3).contact_set(&model).expect("friction"),
+        _ => DistributedFriction::new(5e3).interactions(&model).expect("friction"),
     };
     let steps: usize = std::env::args().nth(2).and_then(|s| s.parse().ok()).unwrap_or(usize::MAX);
-    let result = Simulation::new(&model, &contacts, &settings)
+    let result = Simulation::new(&model, &interactions, &settings)
         .and_then(|s| s.run_observed(&mut |view| view.step < steps))
         .expect("run");
     let s = &result.statistics;

@@ -5,18 +5,18 @@
 //! that fails a step (unconverged within its iteration cap) is reported with the step where it stopped.
 
 use fem_beam::reference::uic60_on_soft_soil;
-use friction::{ContactSet, Devices, DistributedFriction};
+use friction::{Devices, DistributedFriction, InteractionSet};
 use nscd::{RunSettings, Simulation, SolverKind};
 
 fn main() {
     let steps: usize = std::env::args().nth(1).and_then(|s| s.parse().ok()).unwrap_or(usize::MAX);
     let model = uic60_on_soft_soil().model().expect("reference model");
-    let cases: Vec<(&str, ContactSet)> = vec![
-        ("7 devices, F_u = 100 kN", Devices::uniform(7, 100e3).contact_set(&model).expect("devices")),
-        ("31 devices, F_u = 100 kN", Devices::uniform(31, 100e3).contact_set(&model).expect("devices")),
-        ("distributed, f_u = 1 kN/m", DistributedFriction::new(1e3).contact_set(&model).expect("friction")),
-        ("distributed, f_u = 5 kN/m", DistributedFriction::new(5e3).contact_set(&model).expect("friction")),
-        ("distributed, f_u = 10 kN/m", DistributedFriction::new(10e3).contact_set(&model).expect("friction")),
+    let cases: Vec<(&str, InteractionSet)> = vec![
+        ("7 devices, F_u = 100 kN", Devices::uniform(7, 100e3).interactions(&model).expect("devices")),
+        ("31 devices, F_u = 100 kN", Devices::uniform(31, 100e3).interactions(&model).expect("devices")),
+        ("distributed, f_u = 1 kN/m", DistributedFriction::new(1e3).interactions(&model).expect("friction")),
+        ("distributed, f_u = 5 kN/m", DistributedFriction::new(5e3).interactions(&model).expect("friction")),
+        ("distributed, f_u = 10 kN/m", DistributedFriction::new(10e3).interactions(&model).expect("friction")),
     ];
     let mut solvers = vec![SolverKind::Auto, SolverKind::Projection, SolverKind::InteriorPoint];
     if cfg!(feature = "clarabel") {
@@ -24,13 +24,13 @@ fn main() {
     }
     println!("| configuration | solver | iterations per step (mean / max) | sections per step | time per step |");
     println!("|---|---|---|---|---|");
-    for (name, contacts) in &cases {
+    for (name, interactions) in &cases {
         for &kind in &solvers {
             let mut settings = RunSettings::default();
             settings.integration.solver.kind = kind;
             // Projection on dense sections: cap the sweeps so that a stall shows in seconds, not hours.
             settings.integration.solver.max_iterations = 2_000;
-            let outcome = Simulation::new(&model, contacts, &settings)
+            let outcome = Simulation::new(&model, interactions, &settings)
                 .and_then(|s| s.run_observed(&mut |view| view.step < steps));
             let label = match kind {
                 SolverKind::Auto => format!("auto ({})", outcome.as_ref().map_or("—", |r| r.statistics.solver_name())),

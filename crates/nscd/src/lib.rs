@@ -12,6 +12,7 @@
 pub mod error;
 pub mod forcing;
 mod kernels;
+pub mod problem;
 pub mod simulation;
 pub mod snapshots;
 pub mod solver;

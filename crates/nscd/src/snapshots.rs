@@ -11,7 +11,7 @@ use crate::error::{NscdError, Result};
 use crate::simulation::{RunSettings, StepView};
 use fem_beam::section::Motion;
 use fem_beam::{BeamModel, LoadVector};
-use friction::ContactSet;
+use friction::InteractionSet;
 
 /// When a snapshot is taken.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -43,7 +43,7 @@ pub struct Snapshot {
 #[derive(Debug)]
 pub struct SnapshotTaker<'a> {
     model: &'a BeamModel,
-    contacts: &'a ContactSet,
+    interactions: &'a InteractionSet,
     force: f64,
     step: f64,
     /// (trigger time, request), sorted by trigger time.
@@ -54,11 +54,11 @@ pub struct SnapshotTaker<'a> {
 }
 
 impl<'a> SnapshotTaker<'a> {
-    /// The requests for a run of `model` with `contacts` under `settings`; each must fall within the run (times in
+    /// The requests for a run of `model` with `interactions` under `settings`; each must fall within the run (times in
     /// [0, end], load positions between the start position and L).
     pub fn new(
         model: &'a BeamModel,
-        contacts: &'a ContactSet,
+        interactions: &'a InteractionSet,
         settings: &RunSettings,
         requests: &[SnapshotAt],
     ) -> Result<Self> {
@@ -88,7 +88,7 @@ impl<'a> SnapshotTaker<'a> {
         }
         pending.sort_by(|a, b| a.0.total_cmp(&b.0));
         let force = settings.moving.force;
-        Ok(Self { model, contacts, force, step, pending, next: 0, taken: Vec::new(), error: None })
+        Ok(Self { model, interactions, force, step, pending, next: 0, taken: Vec::new(), error: None })
     }
 
     /// Observe one step; returns false (stop the run) only after an error, kept for [`SnapshotTaker::finish`].
@@ -120,7 +120,7 @@ impl<'a> SnapshotTaker<'a> {
         if (0.0..=mesh.length).contains(&view.load_position) {
             loads.add_point_force(&mesh, view.load_position, -self.force)?;
         }
-        for (&x, &p) in self.contacts.positions().iter().zip(view.impulses) {
+        for (&x, &p) in self.interactions.positions().iter().zip(view.impulses) {
             loads.add_point_force(&mesh, x, p / self.step)?;
         }
         let moments = model.nodal_moments(&q, &loads, Motion { velocity: Some(&v), acceleration: Some(&a) })?;

@@ -15,10 +15,11 @@
 use crate::error::{NscdError, Result};
 use crate::forcing::Forcing;
 use crate::kernels::dot;
-use crate::solver::{FrictionProblem, FrictionSolver, SolverKind, SolverSettings, StepReport, build_solver};
+use crate::problem::StepLaw;
+use crate::solver::{InteractionProblem, InteractionSolver, SolverKind, SolverSettings, StepReport, build_solver};
 use crate::system::LinearSystem;
 use banded::{BandDiagonals, SymmetricBanded};
-use friction::ContactSet;
+use friction::{InteractionKind, InteractionSet, Law};
 
 /// Cumulative energy terms of a run (J).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -35,8 +36,17 @@ pub struct EnergyLedger {
     pub load_work: f64,
     /// Σ h v_θᵀC v_θ ≥ 0: dissipated by the foundation dashpots.
     pub viscous_dissipation: f64,
-    /// Σ U_θᵀp: work of the friction impulses (≤ 0 for θ = 1; report as is otherwise).
+    /// Σ U_θᵀp over the friction interactions: work of the friction impulses (≤ 0 for θ = 1; report as is
+    /// otherwise).
     pub friction_work: f64,
+    /// Σ U_θᵀp over the contacts (rigid or compliant): the work of the contact impulses, which a compliant contact
+    /// partly stores in its spring ([`EnergyLedger::spring_energy`]).
+    pub contact_work: f64,
+    /// Σ U_θᵀp over the unilateral supports of the structure.
+    pub support_work: f64,
+    /// ½k_c⟨δ⟩₊² summed over the compliant interactions now (J): not part of `current`, whose balance the impulses'
+    /// work closes; reported so that the stops' own loss, −(contact + support work) − Δspring energy, can be told.
+    pub spring_energy: f64,
     /// Σ (θ − ½)(‖Δv‖²_M + ‖Δq‖²_K) ≥ 0: numerical dissipation of the scheme.
     pub numerical_dissipation: f64,
     /// Largest |per-step residual| seen (J).
@@ -48,7 +58,12 @@ impl EnergyLedger {
     pub fn residual(&self) -> f64 {
         self.current
             - self.initial
-            - (self.load_work - self.viscous_dissipation + self.friction_work - self.numerical_dissipation)
+            - (self.load_work - self.viscous_dissipation + self.interaction_work() - self.numerical_dissipation)
+    }
+
+    /// Work of all interaction impulses (J): friction, contact and supports.
+    pub fn interaction_work(&self) -> f64 {
+        self.friction_work + self.contact_work + self.support_work
     }
 
     /// Energy removed by friction and viscous damping (positive).
@@ -92,8 +107,10 @@ pub struct MoreauJean {
     theta: f64,
     h: f64,
     damped: bool,
-    problem: FrictionProblem,
-    solver: Box<dyn FrictionSolver>,
+    /// Whether some interaction is a compliant stop (whose spring energy is reported).
+    varying_energy: bool,
+    problem: InteractionProblem,
+    solver: Box<dyn InteractionSolver>,
     q: Vec<f64>,
     v: Vec<f64>,
     /// Friction impulses of the last step (N·s), also the next warm start.
@@ -131,19 +148,19 @@ pub struct MoreauJean {
 
 impl MoreauJean {
     /// The one way to set up a run's stepper: M̂ for `integration`, its factor and the friction problem over
-    /// `contacts` ([`FrictionProblem::new`]), the solver of `settings.kind` on that problem (a resolved kind, not
+    /// `interactions` ([`InteractionProblem::new`]), the solver of `settings.kind` on that problem (a resolved kind, not
     /// `Auto`, which means projection here; `window_margin` for the interior point's moving window), started from
     /// (q₀, v₀) with zero impulses. The stepper owns all of it and borrows nothing.
     pub fn build(
         system: &LinearSystem,
-        contacts: ContactSet,
+        interactions: InteractionSet,
         integration: Integration,
         settings: &SolverSettings,
         window_margin: Option<f64>,
         q0: Vec<f64>,
         v0: Vec<f64>,
     ) -> Result<Self> {
-        let problem = FrictionProblem::new(system, contacts, integration)?;
+        let problem = InteractionProblem::new(system, interactions, integration)?;
         let solver = build_solver(settings.kind, &problem, settings, window_margin)?;
         Ok(Self::new(system, problem, solver, q0, v0))
     }
@@ -152,18 +169,19 @@ impl MoreauJean {
     /// integration is the problem's. Prefer [`MoreauJean::build`].
     pub fn new(
         system: &LinearSystem,
-        problem: FrictionProblem,
-        solver: Box<dyn FrictionSolver>,
+        problem: InteractionProblem,
+        solver: Box<dyn InteractionSolver>,
         q0: Vec<f64>,
         v0: Vec<f64>,
     ) -> Self {
         let integration = problem.integration;
         let n = system.dofs();
-        let m = problem.contacts.len();
+        let m = problem.interactions.len();
         let mut stepper = Self {
             theta: integration.theta,
             h: integration.step,
             damped: system.has_damping(),
+            varying_energy: problem.interactions.laws().iter().any(|l| matches!(l, Law::Compliant { .. })),
             problem,
             solver,
             q: q0,
@@ -202,6 +220,8 @@ impl MoreauJean {
         stepper.energy.current = kinetic + strain;
         stepper.energy.kinetic = kinetic;
         stepper.energy.strain = strain;
+        stepper.energy.spring_energy = spring_energy(&stepper.problem.interactions, &stepper.q);
+        stepper.problem.update(&stepper.q, &stepper.v);
         stepper
     }
 
@@ -210,9 +230,9 @@ impl MoreauJean {
         self.solver.kind()
     }
 
-    /// Impulse bounds a_j = h·F_j (N·s).
-    pub fn bounds(&self) -> &[f64] {
-        &self.problem.bounds
+    /// The law of the last step (bounds in N·s: ±h·F_j for friction; compliance and drift).
+    pub fn law(&self) -> &StepLaw {
+        &self.problem.law
     }
 
     /// Step size h (s).
@@ -258,14 +278,19 @@ impl MoreauJean {
     pub fn step(&mut self, forcing: &dyn Forcing) -> Result<StepReport> {
         let (h, theta) = (self.h, self.theta);
         let (t0, t1) = (self.time, self.time + h);
+        if self.problem.is_varying() {
+            // The update phase: the step's law from (q_k, v_k), the warm start brought into its bounds.
+            self.problem.update(&self.q, &self.v);
+            self.problem.clamp_to_bounds(&mut self.p);
+        }
         self.free_velocity(forcing);
         // v_prev ← v_k, v ← v_free; the stale vector left in v_free is overwritten by the next free velocity.
         std::mem::swap(&mut self.v_prev, &mut self.v);
         std::mem::swap(&mut self.v, &mut self.v_free);
-        let report = if self.problem.contacts.is_empty() {
+        let report = if self.problem.interactions.is_empty() {
             StepReport::default()
         } else {
-            self.problem.contacts.velocities(&self.v, &mut self.u_free);
+            self.problem.interactions.velocities(&self.v, &mut self.u_free);
             let report = self.solver.solve(&self.problem, &self.v, &self.u_free, &mut self.p)?;
             if !report.converged() {
                 return Err(NscdError::Unconverged {
@@ -287,8 +312,8 @@ impl MoreauJean {
             *q += h * *w;
         }
         self.book_energy(forcing, t0, t1)?;
-        if !self.problem.contacts.is_empty() {
-            self.problem.contacts.velocities(&self.v, &mut self.u);
+        if !self.problem.interactions.is_empty() {
+            self.problem.interactions.velocities(&self.v, &mut self.u);
         }
         self.time = t1;
         self.steps += 1;
@@ -328,8 +353,7 @@ impl MoreauJean {
         } else {
             0.0
         };
-        let friction: f64 =
-            self.problem.contacts.rows().iter().zip(&self.p).map(|(row, p)| row.dot(&self.work) * p).sum();
+        let work = interaction_work(&self.problem.interactions, &self.p, &self.work);
         let numerical = if theta > 0.5 {
             // (θ − ½)[ΔvᵀMΔv + ΔqᵀKΔq] with MΔv = Mv_{k+1} − Mv_k, Δq = h v_θ and KΔq = h K v_θ.
             let kinetic: f64 =
@@ -348,12 +372,57 @@ impl MoreauJean {
         e.current = kinetic + strain;
         e.load_work += load;
         e.viscous_dissipation += viscous;
-        e.friction_work += friction;
+        e.friction_work += work.friction;
+        e.contact_work += work.contact;
+        e.support_work += work.support;
         e.numerical_dissipation += numerical;
-        let step_residual = e.current - before - (load - viscous + friction - numerical);
+        if self.varying_energy {
+            e.spring_energy = spring_energy(&self.problem.interactions, &self.q);
+        }
+        let step_residual = e.current - before - (load - viscous + work.total() - numerical);
         e.max_step_residual = e.max_step_residual.max(step_residual.abs());
         Ok(())
     }
+}
+
+/// The work U_θᵀp of one step's impulses, by kind of interaction (J).
+struct InteractionWork {
+    friction: f64,
+    contact: f64,
+    support: f64,
+}
+
+impl InteractionWork {
+    fn total(&self) -> f64 {
+        self.friction + self.contact + self.support
+    }
+}
+
+/// Σ_j (H_j v_θ) p_j by kind, each sum in interaction order; and the compliant springs' energy is not here (see
+/// [`EnergyLedger::spring_energy`]).
+fn interaction_work(interactions: &InteractionSet, p: &[f64], v_theta: &[f64]) -> InteractionWork {
+    let mut work = InteractionWork { friction: 0.0, contact: 0.0, support: 0.0 };
+    for ((row, &pj), kind) in interactions.rows().iter().zip(p).zip(interactions.kinds()) {
+        let term = row.dot(v_theta) * pj;
+        match kind {
+            InteractionKind::Device | InteractionKind::Ballast => work.friction += term,
+            InteractionKind::Contact => work.contact += term,
+            InteractionKind::Foundation => work.support += term,
+        }
+    }
+    work
+}
+
+/// ½k_c⟨−g⟩₊² summed over the compliant interactions at displacement q (J).
+fn spring_energy(interactions: &InteractionSet, q: &[f64]) -> f64 {
+    let mut energy = 0.0;
+    for (row, law) in interactions.rows().iter().zip(interactions.laws()) {
+        if let Law::Compliant { gap, stiffness } = *law {
+            let penetration = (-(gap + row.dot(q))).max(0.0);
+            energy += 0.5 * stiffness * penetration * penetration;
+        }
+    }
+    energy
 }
 
 /// Kinetic ½vᵀMv and strain ½qᵀKq energy (J), from the products M v and K q.

@@ -5,7 +5,7 @@
 #![allow(unsafe_code)]
 
 use fem_beam::reference::uic60_on_soft_soil;
-use friction::{ContactSet, Devices, DistributedFriction};
+use friction::{Devices, DistributedFriction, InteractionSet};
 use nscd::simulation::coupling_length;
 use nscd::solver::{SolverKind, SolverSettings};
 use nscd::stepper::Integration;
@@ -41,7 +41,7 @@ unsafe impl GlobalAlloc for Counting {
 #[global_allocator]
 static GLOBAL: Counting = Counting;
 
-fn allocations_in_steps(contacts: &ContactSet, kind: SolverKind) -> usize {
+fn allocations_in_steps(interactions: &InteractionSet, kind: SolverKind) -> usize {
     let model = uic60_on_soft_soil().model().unwrap();
     let (speed, theta) = (200.0, 0.5);
     let h = 0.1 / speed;
@@ -52,7 +52,7 @@ fn allocations_in_steps(contacts: &ContactSet, kind: SolverKind) -> usize {
     let n = system.dofs();
     let margin = Some(30.0 * coupling_length(&model, h, theta));
     let (q0, v0) = (vec![0.0; n], vec![0.0; n]);
-    let mut stepper = MoreauJean::build(&system, contacts.clone(), integration, &settings, margin, q0, v0).unwrap();
+    let mut stepper = MoreauJean::build(&system, interactions.clone(), integration, &settings, margin, q0, v0).unwrap();
     // Warm-up: the load reaches the beam's middle, so that windows of every size have been seen.
     for _ in 0..1000 {
         stepper.step(&load).unwrap();
@@ -67,10 +67,10 @@ fn allocations_in_steps(contacts: &ContactSet, kind: SolverKind) -> usize {
 #[test]
 fn the_time_loop_does_not_allocate() {
     let model = uic60_on_soft_soil().model().unwrap();
-    let none = allocations_in_steps(&ContactSet::new(), SolverKind::Projection);
+    let none = allocations_in_steps(&InteractionSet::new(), SolverKind::Projection);
     let devices =
-        allocations_in_steps(&Devices::uniform(31, 100e3).contact_set(&model).unwrap(), SolverKind::Projection);
+        allocations_in_steps(&Devices::uniform(31, 100e3).interactions(&model).unwrap(), SolverKind::Projection);
     let distributed =
-        allocations_in_steps(&DistributedFriction::new(5e3).contact_set(&model).unwrap(), SolverKind::InteriorPoint);
+        allocations_in_steps(&DistributedFriction::new(5e3).interactions(&model).unwrap(), SolverKind::InteriorPoint);
     assert_eq!((none, devices, distributed), (0, 0, 0), "allocations in 400 steps: none / 31 devices / distributed");
 }

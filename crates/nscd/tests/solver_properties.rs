@@ -1,19 +1,21 @@
-//! Property tests of the per-step friction solvers on random problems: a random banded SPD iteration matrix M̂
-//! (strictly diagonally dominant, so SPD with eigenvalues in [0.1, 16]), random local contact rows (1–4 neighbouring
-//! DOFs, as Hermite rows are; up to twice as many rows as DOFs, so W = H M̂⁻¹Hᵀ is often singular), random bounds
-//! (some zero) and a random free velocity. Every solver must meet the friction law to its tolerance, and all must
-//! agree on v (unique, unlike p).
+//! Property tests of the per-step solvers on random problems: a random banded SPD iteration matrix M̂ (strictly
+//! diagonally dominant, so SPD with eigenvalues in [0.1, 16]), random local interaction rows (1–4 neighbouring DOFs,
+//! as Hermite rows are; up to twice as many rows as DOFs, so W = H M̂⁻¹Hᵀ is often singular), each with a random law
+//! — a Coulomb box (some of zero capacity), a rigid Signorini contact (open or closing, with restitution: bounds
+//! [0, 0] or [0, +∞) and a drift) or a compliant stop ([0, +∞), compliance and drift) — and a random free velocity.
+//! Every solver must meet the law to its tolerance, and all must agree on v (unique, unlike p: W + D is positive
+//! definite on the span of H only).
 
 use banded::SymmetricBanded;
-use friction::{ContactKind, ContactRow, ContactSet};
+use friction::{InteractionKind, InteractionRow, InteractionSet, Law};
 use nscd::SolverKind;
-use nscd::solver::{FrictionProblem, SolverSettings, build_solver};
+use nscd::solver::{InteractionProblem, SolverSettings, build_solver};
 use proptest::prelude::*;
 
 #[derive(Debug, Clone)]
 struct Problem {
     m_hat: SymmetricBanded,
-    contacts: ContactSet,
+    interactions: InteractionSet,
     v_free: Vec<f64>,
 }
 
@@ -28,12 +30,26 @@ fn problem() -> impl Strategy<Value = Problem> {
                 0..n,
                 1usize..=4,
                 proptest::collection::vec((0.1f64..1.0, any::<bool>()), 4),
-                prop_oneof![Just(0.0), 0.0f64..2.0],
+                prop_oneof![
+                    Just(Law::Coulomb { capacity: 0.0 }),
+                    (0.0f64..2.0).prop_map(|capacity| Law::Coulomb { capacity }),
+                    // The restitution is set per problem below.
+                    (-0.5f64..0.5).prop_map(|gap| Law::Signorini { gap, restitution: 0.0 }),
+                    (-0.5f64..0.5, 0.1f64..10.0).prop_map(|(gap, stiffness)| Law::Compliant { gap, stiffness }),
+                ],
             ),
             1..2 * n,
         );
-        let v_free = proptest::collection::vec(-1.0f64..1.0, n);
-        (off_diagonal, diagonal, rows, v_free).prop_map(move |(off, diag, rows, v_free)| {
+        // Magnitudes 0.1–1 with either sign: a free velocity that is all zero (which shrinking would reach) leaves the
+        // relative tolerances no velocity scale to be relative to (Clarabel's absolute ~1e-12 then fails 1e-6·1e-14).
+        let v_free =
+            proptest::collection::vec((0.1f64..1.0, any::<bool>()).prop_map(|(a, s)| if s { a } else { -a }), n);
+        // One restitution for all rigid contacts of a problem: with U_{k+1} + e·U_k ≥ 0 on every closing contact,
+        // v = −e·v_k satisfies them all, so the step has a solution. (Contacts with different e that oppose each
+        // other can ask for U ≥ a and U ≤ b < a at once: no velocity, unbounded impulses; that is an ill-posed model,
+        // not a solver case.)
+        let restitution = 0.0f64..=1.0;
+        (off_diagonal, diagonal, rows, v_free, restitution).prop_map(move |(off, diag, rows, v_free, restitution)| {
             let mut m_hat = SymmetricBanded::zeros(n, 3);
             let mut row_sum = vec![0.0; n];
             for i in 0..n {
@@ -49,13 +65,20 @@ fn problem() -> impl Strategy<Value = Problem> {
             for i in 0..n {
                 m_hat.add(i, i, row_sum[i] + diag[i]);
             }
-            let mut contacts = ContactSet::new();
-            for (start, span, values, bound) in rows {
+            let mut interactions = InteractionSet::new();
+            for (start, span, values, mut law) in rows {
+                if let Law::Signorini { restitution: e, .. } = &mut law {
+                    *e = restitution;
+                }
                 let start = start.min(n - span);
                 let entries = (0..span).map(|k| (start + k, if values[k].1 { values[k].0 } else { -values[k].0 }));
-                contacts.push(ContactRow::from_entries(entries), bound, start as f64, ContactKind::Distributed);
+                let kind = match law {
+                    Law::Coulomb { .. } => InteractionKind::Ballast,
+                    _ => InteractionKind::Contact,
+                };
+                interactions.push(InteractionRow::from_entries(entries), law, start as f64, kind);
             }
-            Problem { m_hat, contacts, v_free }
+            Problem { m_hat, interactions, v_free }
         })
     })
 }
@@ -63,11 +86,13 @@ fn problem() -> impl Strategy<Value = Problem> {
 /// v of every solver, after checking each meets the law: (name, v).
 fn solve_all(problem: &Problem) -> Vec<(&'static str, Vec<f64>)> {
     let integration = nscd::Integration { theta: 0.5, step: 1.0 };
-    let stepping =
-        FrictionProblem::with_matrix(problem.contacts.clone(), problem.m_hat.clone(), integration).expect("SPD");
-    let (n, m) = (problem.v_free.len(), problem.contacts.len());
+    let mut stepping =
+        InteractionProblem::with_matrix(problem.interactions.clone(), problem.m_hat.clone(), integration).expect("SPD");
+    let (n, m) = (problem.v_free.len(), problem.interactions.len());
+    // The state the step starts from: q = 0 (gaps g₀) and v_k = v_free, so contacts with g₀ + h U_k/2 ≤ 0 close.
+    stepping.update(&vec![0.0; n], &problem.v_free);
     let mut u_free = vec![0.0; m];
-    problem.contacts.velocities(&problem.v_free, &mut u_free);
+    problem.interactions.velocities(&problem.v_free, &mut u_free);
     let mut out = Vec::new();
     let mut kinds = vec![SolverKind::Projection, SolverKind::InteriorPoint];
     if cfg!(feature = "clarabel") {
@@ -90,11 +115,26 @@ fn solve_all(problem: &Problem) -> Vec<(&'static str, Vec<f64>)> {
             SolverKind::InteriorPoint => 10.0 * settings.tolerance,
             _ => settings.tolerance,
         };
-        let allowed = relative * u_free.iter().fold(1e-14f64, |a, x| a.max(x.abs()));
+        // Relative to the step's velocity scale max_j(|U_free,j|, |U_free,j + b_j|), as the solvers measure it.
+        let allowed = stepping.absolute_tolerance(relative, &u_free);
+        // Gauss–Seidel converges at a rate set by W's conditioning: rigid contacts that pinch a DOF from both sides
+        // (nearly opposite rows, both closed) make W nearly singular in a direction the impulses must follow, and
+        // 20 000 sweeps are not always enough (seen: residual 1e-4 on 4 such contacts). It must then say so, which
+        // the stepper turns into a refused step; the interior point and Clarabel must solve every problem.
+        let rigid = problem.interactions.laws().iter().any(|l| matches!(l, Law::Signorini { .. }));
+        if kind == SolverKind::Projection && rigid && !report.converged() {
+            assert!(report.residual > report.tolerance, "{kind:?} reports {report:?}");
+            continue;
+        }
         assert!(report.converged(), "{kind:?} did not converge: {report:?}");
         assert!(residual <= allowed * (1.0 + 1e-6), "{kind:?}: law residual {residual:e} > {allowed:e}");
-        for (j, (&pj, &a)) in p.iter().zip(problem.contacts.bounds()).enumerate() {
-            assert!(pj.abs() <= a * (1.0 + 1e-9) + 1e-300, "{kind:?}: |p_{j}| = {} > a = {a}", pj.abs());
+        // Within the bounds up to round-off of the impulses: the interior point carries its slacks apart from p, so p
+        // itself may sit an ulp or so past a bound it approaches.
+        let law = &stepping.law;
+        let slack = 1e-9 * p.iter().fold(1e-300f64, |a, x| a.max(x.abs()));
+        for (j, &pj) in p.iter().enumerate() {
+            let (lo, hi) = (law.lower[j], law.upper[j]);
+            assert!(pj >= lo - slack && pj <= hi + slack, "{kind:?}: p_{j} = {pj} outside [{lo}, {hi}]");
         }
         out.push((kind.name(), v));
     }
@@ -119,8 +159,9 @@ proptest! {
     fn solvers_meet_the_law_and_agree_on_v(problem in problem()) {
         let results = solve_all(&problem);
         let scale = problem.v_free.iter().fold(1e-12f64, |a, x| a.max(x.abs()));
-        let (reference_name, reference) = &results[0];
-        for (name, v) in &results[1..] {
+        // The interior point solves every problem; Gauss–Seidel may bow out of a pinched rigid contact (above).
+        let (reference_name, reference) = results.iter().find(|r| r.0 == "interior-point").expect("interior point");
+        for (name, v) in results.iter().filter(|r| r.0 != "interior-point") {
             let gap = v.iter().zip(reference).fold(0.0f64, |a, (x, y)| a.max((x - y).abs())) / scale;
             let bound = if *name == "clarabel" { 1e-4 } else { 1e-7 };
             prop_assert!(gap <= bound, "{name} vs {reference_name}: {gap:e}");

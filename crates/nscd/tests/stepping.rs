@@ -2,6 +2,7 @@
 
 mod stepping {
     mod common;
+    mod contact;
     mod critical_speed;
     mod discrete_vs_continuous;
     mod energy;

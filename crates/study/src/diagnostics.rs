@@ -11,7 +11,7 @@ use crate::error::{Result, invalid};
 use crate::scenario::{Case, Scenario};
 use fem_beam::reference::InfiniteBeam;
 use fem_beam::{BeamModel, Support};
-use friction::ContactKind;
+use friction::InteractionKind;
 use std::fmt;
 
 /// A suspicious input: the field, its value, and what is wrong with it against which limit.
@@ -87,8 +87,8 @@ pub fn warnings(scenario: &Scenario, case: &Case) -> Vec<Warning> {
             (None, Some(x)) => x.len(),
             (None, None) => 0,
         };
-        let kinds = case.contacts.kinds();
-        let placed = kinds.iter().filter(|k| **k == ContactKind::Device).count();
+        let kinds = case.interactions.kinds();
+        let placed = kinds.iter().filter(|k| **k == InteractionKind::Device).count();
         if placed < requested {
             out.push(Warning {
                 field: "friction.devices".into(),

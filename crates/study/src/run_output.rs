@@ -48,7 +48,7 @@ pub fn run_with_snapshots(
     progress: &dyn Fn(f64),
 ) -> Result<(RunResult, Vec<Snapshot>)> {
     let settings = &case.settings;
-    let mut taker = SnapshotTaker::new(&case.model, &case.contacts, settings, requests).map_err(|e| match e {
+    let mut taker = SnapshotTaker::new(&case.model, &case.interactions, settings, requests).map_err(|e| match e {
         nscd::NscdError::InvalidField { value, allowed, .. } => {
             crate::error::invalid("output.snapshot_times / snapshot_load_positions", value, allowed)
         }

@@ -17,7 +17,7 @@ fn template_is_the_reference_case() {
     assert_eq!(parsed, Scenario::default());
     let case = parsed.build().unwrap();
     assert_eq!(case.model.mesh().elements, 200);
-    assert!(case.contacts.is_empty());
+    assert!(case.interactions.is_empty());
     // Round trip through the serialiser.
     assert_eq!(Scenario::from_toml(&parsed.to_toml(), "x").unwrap(), parsed);
 }
@@ -31,7 +31,7 @@ fn a_scenario_lists_only_what_differs() {
     )
     .unwrap();
     let case = s.build().unwrap();
-    assert_eq!(case.contacts.len(), 31 + 799);
+    assert_eq!(case.interactions.len(), 31 + 799);
     assert!((case.model.foundation().damping_ratio(case.model.beam()) - 0.05).abs() < 1e-12);
     assert_eq!(case.settings.moving.speed, 150.0);
 }

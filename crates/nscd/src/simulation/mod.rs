@@ -25,7 +25,7 @@ use fem_beam::element::hermite;
 use fem_beam::load::ElementLoad;
 use fem_beam::reference::InfiniteBeam;
 use fem_beam::section::Motion;
-use friction::ContactSet;
+use friction::InteractionSet;
 use observers::{Buffers, InsideSection, NodalDeflections, Recorder, record};
 use std::time::Instant;
 
@@ -37,29 +37,35 @@ pub fn coupling_length(model: &BeamModel, step: f64, theta: f64) -> f64 {
 
 /// Resolve [`SolverKind::Auto`]: projection when the sections are spaced wider than twice the coupling length,
 /// the banded interior point otherwise.
-pub fn resolve_solver(kind: SolverKind, model: &BeamModel, contacts: &ContactSet, step: f64, theta: f64) -> SolverKind {
+pub fn resolve_solver(
+    kind: SolverKind,
+    model: &BeamModel,
+    interactions: &InteractionSet,
+    step: f64,
+    theta: f64,
+) -> SolverKind {
     if kind != SolverKind::Auto {
         return kind;
     }
-    let mut x = contacts.positions().to_vec();
+    let mut x = interactions.positions().to_vec();
     x.sort_by(f64::total_cmp);
     let spacing = x.windows(2).map(|w| w[1] - w[0]).fold(f64::INFINITY, f64::min);
     if spacing < 2.0 * coupling_length(model, step, theta) { SolverKind::InteriorPoint } else { SolverKind::Projection }
 }
 
-/// A run of `model` with friction `contacts` under `settings`.
+/// A run of `model` with friction `interactions` under `settings`.
 #[derive(Debug, Clone, Copy)]
 pub struct Simulation<'a> {
     model: &'a BeamModel,
-    contacts: &'a ContactSet,
+    interactions: &'a InteractionSet,
     settings: &'a RunSettings,
 }
 
 impl<'a> Simulation<'a> {
     /// Validate and prepare a run.
-    pub fn new(model: &'a BeamModel, contacts: &'a ContactSet, settings: &'a RunSettings) -> Result<Self> {
+    pub fn new(model: &'a BeamModel, interactions: &'a InteractionSet, settings: &'a RunSettings) -> Result<Self> {
         settings.validate(model)?;
-        Ok(Self { model, contacts, settings })
+        Ok(Self { model, interactions, settings })
     }
 
     /// Initial (q, v) over the free DOFs, per [`RunSettings::initial`].
@@ -101,7 +107,7 @@ impl<'a> Simulation<'a> {
         let integration = Integration { theta: settings.integration.theta, step: h };
         let system = LinearSystem::from_beam(model);
         let kind =
-            resolve_solver(settings.integration.solver.kind, model, self.contacts, h, settings.integration.theta);
+            resolve_solver(settings.integration.solver.kind, model, self.interactions, h, settings.integration.theta);
         // Coupling through M̂⁻¹ decays like e^{−x/(√2ℓ)}: 30ℓ leaves ~6e-10, and a window that fails the final
         // check is retried wider. Instruction counts over 1000 steps (1, 5, 10 kN/m): 30ℓ is 4–11 % below 40ℓ,
         // 20ℓ and 15ℓ no better than 30ℓ.
@@ -110,8 +116,9 @@ impl<'a> Simulation<'a> {
         let start = settings.start_position();
         let load = MovingLoad::new(mesh, dofs, settings.moving.force, settings.moving.speed, start);
         let solver_settings = SolverSettings { kind, ..settings.integration.solver };
-        let contacts = self.contacts.clone();
-        let mut stepper = MoreauJean::build(&system, contacts, integration, &solver_settings, Some(margin), q0, v0)?;
+        let interactions = self.interactions.clone();
+        let mut stepper =
+            MoreauJean::build(&system, interactions, integration, &solver_settings, Some(margin), q0, v0)?;
 
         let t_on = settings.crossing_time(mesh.length);
         let crossing_steps = (t_on / h).round() as usize;
@@ -128,7 +135,7 @@ impl<'a> Simulation<'a> {
                 let node = mesh.nearest_node(x).unwrap_or(0);
                 let l = mesh.element_length();
                 let inside = self
-                    .contacts
+                    .interactions
                     .positions()
                     .iter()
                     .enumerate()
@@ -147,7 +154,7 @@ impl<'a> Simulation<'a> {
                     position: x,
                     node,
                     inside,
-                    contact: self.contacts.section_at(x, 1e-9 * mesh.length),
+                    contact: self.interactions.section_at(x, 1e-9 * mesh.length),
                     history: SectionHistory { position: x, moment_node: mesh.node_x(node), ..Default::default() },
                 }
             })
@@ -198,7 +205,7 @@ impl<'a> Simulation<'a> {
                 previous_velocity: stepper.previous_v(),
                 impulses: &stepper.p,
                 section_velocities: &stepper.u,
-                bounds: stepper.bounds(),
+                law: stepper.law(),
                 report,
             });
             iteration_sum += report.iterations;
@@ -237,8 +244,8 @@ impl<'a> Simulation<'a> {
             global_norm: if t_on > 0.0 { norm_integral / t_on } else { 0.0 },
             histories: recorders.into_iter().map(|r| r.history).collect(),
             statistics: SolverStatistics {
-                solver: (!self.contacts.is_empty()).then(|| stepper.solver_kind()),
-                sections: self.contacts.len(),
+                solver: (!self.interactions.is_empty()).then(|| stepper.solver_kind()),
+                sections: self.interactions.len(),
                 steps,
                 mean_iterations: if steps > 0 { iteration_sum as f64 / steps as f64 } else { 0.0 },
                 max_iterations,
@@ -247,7 +254,7 @@ impl<'a> Simulation<'a> {
                 wall_time,
             },
             step: h,
-            section_positions: self.contacts.positions().to_vec(),
+            section_positions: self.interactions.positions().to_vec(),
             final_displacement: stepper.q().to_vec(),
             final_velocity: stepper.v().to_vec(),
         })

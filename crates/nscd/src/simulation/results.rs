@@ -69,8 +69,8 @@ pub struct StepView<'a> {
     pub impulses: &'a [f64],
     /// Section velocities u_{k+1} = H v_{k+1} (m/s).
     pub section_velocities: &'a [f64],
-    /// Impulse bounds a_j = h·F_j (N·s).
-    pub bounds: &'a [f64],
+    /// The step's law: impulse bounds (N·s; ±h·F_j for friction), compliance and drift.
+    pub law: &'a crate::problem::StepLaw,
     /// The friction solver's report.
     pub report: crate::solver::StepReport,
 }

@@ -1,13 +1,14 @@
 //! Nonsmooth (projected) Gauss–Seidel on the dense Delassus matrix (the NSCD local solver, docs/theory.md §5).
 //!
-//! Sweep j = 1..m: p_j ← proj_[−a_j, a_j](p_j − u_j / W_jj), warm-started from the previous step, until the
-//! largest update in a sweep, |Δp_j|·W_jj (m/s), is below the tolerance; the law residual is then evaluated on the
+//! Sweep j = 1..m: p_j ← proj_[lo_j, hi_j](p_j − r_j / (W_jj + d_j)), r_j = u_j + b_j + d_j p_j the law velocity
+//! (docs/theory.md §9), warm-started from the previous step, until the largest update in a sweep,
+//! |Δp_j|·(W_jj + d_j) (m/s), is below the tolerance; the law residual is then evaluated on the
 //! final p with u = W p + u_free formed afresh. Within the sweeps u is kept up to date by u += Δp_j W_{·j}, only
 //! for the impulses that change, so a sweep costs O(m·changed) with W dense (m × m), built once per run.
 //! Fast for devices spaced wider than the coupling length ℓ = (EI h²θ²/ρA)^¼ (2–6 sweeps); it stalls for
 //! distributed friction, where [`super::interior_point::BandedInteriorPoint`] is the tool.
 
-use super::{FrictionProblem, FrictionSolver, SolverKind, StepReport, StepStatus};
+use super::{InteractionProblem, InteractionSolver, SolverKind, StepReport, StepStatus};
 use crate::kernels::{axpy, dot};
 
 /// Projected Gauss–Seidel with the dense W of the run.
@@ -19,7 +20,7 @@ pub struct ProjectedGaussSeidel {
     /// Per row j, the columns [first, last) outside which |W_ji| ≤ 1e-17·√(W_ii W_jj) (round-off of W itself):
     /// W decays like e^{−|x_i − x_j|/(√2ℓ)}, so for devices a row keeps a handful of neighbours.
     reach: Vec<(usize, usize)>,
-    /// 1/W_jj: the sweep multiplies (the sweep is a chain, each update waiting on the one before).
+    /// 1/(W_jj + d_j): the sweep multiplies (the sweep is a chain, each update waiting on the one before).
     inverse_diagonal: Vec<f64>,
     max_sweeps: usize,
     tolerance: f64,
@@ -28,9 +29,9 @@ pub struct ProjectedGaussSeidel {
 
 impl ProjectedGaussSeidel {
     /// Build W = H M̂⁻¹ Hᵀ (m banded solves) for `problem`.
-    pub fn new(problem: &FrictionProblem, tolerance: f64, max_sweeps: usize) -> Self {
+    pub fn new(problem: &InteractionProblem, tolerance: f64, max_sweeps: usize) -> Self {
         let m = problem.len();
-        let rows = problem.contacts.rows();
+        let rows = problem.interactions.rows();
         let mut w = vec![0.0; m * m];
         let mut column = vec![0.0; problem.m_hat.order()];
         for (j, row) in rows.iter().enumerate() {
@@ -57,7 +58,7 @@ impl ProjectedGaussSeidel {
                 (first.min(j), last.max(j + 1))
             })
             .collect();
-        let inverse_diagonal = (0..m).map(|j| 1.0 / w[j * m + j]).collect();
+        let inverse_diagonal = problem.delassus_diagonal.iter().map(|d| 1.0 / d).collect();
         Self { m, w, reach, inverse_diagonal, max_sweeps, tolerance, u: vec![0.0; m] }
     }
 
@@ -70,20 +71,20 @@ impl ProjectedGaussSeidel {
     }
 
     /// The law residual (m/s) of p, on velocities formed afresh.
-    fn residual(&mut self, problem: &FrictionProblem, u_free: &[f64], p: &[f64]) -> f64 {
+    fn residual(&mut self, problem: &InteractionProblem, u_free: &[f64], p: &[f64]) -> f64 {
         self.refresh_velocities(u_free, p);
         problem.law_residual(&self.u, p)
     }
 }
 
-impl FrictionSolver for ProjectedGaussSeidel {
+impl InteractionSolver for ProjectedGaussSeidel {
     fn kind(&self) -> SolverKind {
         SolverKind::Projection
     }
 
     fn solve(
         &mut self,
-        problem: &FrictionProblem,
+        problem: &InteractionProblem,
         _: &[f64],
         u_free: &[f64],
         p: &mut [f64],
@@ -98,12 +99,13 @@ impl FrictionSolver for ProjectedGaussSeidel {
             let mut largest: f64 = 0.0;
             for j in 0..m {
                 let (first, last) = self.reach[j];
-                let wjj = self.w[j * m + j];
-                let new = (p[j] - self.u[j] * self.inverse_diagonal[j]).clamp(-problem.bounds[j], problem.bounds[j]);
+                let law = &problem.law;
+                let r = law.law_velocity(j, self.u[j], p[j]);
+                let new = (p[j] - r * self.inverse_diagonal[j]).clamp(law.lower[j], law.upper[j]);
                 let change = new - p[j];
                 if change != 0.0 {
                     axpy(change, &self.w[j * m + first..j * m + last], &mut self.u[first..last]);
-                    largest = largest.max(change.abs() * wjj);
+                    largest = largest.max(change.abs() * problem.delassus_diagonal[j]);
                     p[j] = new;
                 }
             }

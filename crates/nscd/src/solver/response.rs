@@ -7,7 +7,7 @@
 
 use crate::kernels::axpy;
 use banded::BandedLdlt;
-use friction::ContactSet;
+use friction::InteractionSet;
 
 /// Entries of G_j below this fraction of max |G_j| are dropped: the banded solve that produced G_j mixes every
 /// entry with its neighbours at relative precision ~1.1e-16, so such entries are below its round-off already.
@@ -30,12 +30,12 @@ pub struct ImpulseResponses {
 impl ImpulseResponses {
     /// Solve for every column G_j (one banded solve each) and return the truncated columns — None once their
     /// entries exceed [`MAX_FILL`]·n — with the Delassus diagonal W_jj = H_j G_j of the full columns.
-    pub fn new(contacts: &ContactSet, factor: &BandedLdlt) -> (Option<Self>, Vec<f64>) {
+    pub fn new(interactions: &InteractionSet, factor: &BandedLdlt) -> (Option<Self>, Vec<f64>) {
         let n = factor.order();
         let mut column = vec![0.0; n];
         let mut kept = Some(Self { start: Vec::new(), offset: vec![0], values: Vec::new() });
-        let mut diagonal = Vec::with_capacity(contacts.len());
-        for row in contacts.rows() {
+        let mut diagonal = Vec::with_capacity(interactions.len());
+        for row in interactions.rows() {
             column.iter_mut().for_each(|c| *c = 0.0);
             row.add_transpose(1.0, &mut column);
             factor.solve_in_place(&mut column);

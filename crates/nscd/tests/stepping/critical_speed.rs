@@ -1,13 +1,13 @@
 //! The linear critical speed of the finite reference beam.
 
 use super::common::reference;
-use friction::ContactSet;
+use friction::InteractionSet;
 use nscd::{RunSettings, Simulation};
 
 #[test]
 fn largest_deflection_is_near_the_critical_speed() {
     let model = reference();
-    let contacts = ContactSet::new();
+    let interactions = InteractionSet::new();
     let v_cr = fem_beam::reference::uic60_on_soft_soil().infinite_beam().unwrap().critical_speed();
     let sweep: Vec<(f64, f64)> = (0..=22)
         .map(|i| {
@@ -17,7 +17,7 @@ fn largest_deflection_is_near_the_critical_speed() {
                 s.moving.speed = speed;
                 s
             };
-            (speed, Simulation::new(&model, &contacts, &settings).unwrap().run().unwrap().max_downward.magnitude)
+            (speed, Simulation::new(&model, &interactions, &settings).unwrap().run().unwrap().max_downward.magnitude)
         })
         .collect();
     let (v_peak, w_peak) = sweep.iter().copied().fold((0.0, 0.0), |best, p| if p.1 > best.1 { p } else { best });

@@ -13,8 +13,8 @@ fn equal_capacity_discrete_and_distributed_friction_respond_alike() {
         s.record.sections = vec![100.0];
         s
     };
-    let devices = Devices::uniform(199, 1e3).contact_set(&model).unwrap();
-    let distributed = DistributedFriction::new(995.0).contact_set(&model).unwrap();
+    let devices = Devices::uniform(199, 1e3).interactions(&model).unwrap();
+    let distributed = DistributedFriction::new(995.0).interactions(&model).unwrap();
     assert!((devices.total_capacity() - 199e3).abs() < 1e-6);
     // The two pinned end sections (capacity f_u·l/8 each) are dropped: 199 kN minus 0.25 kN.
     assert!((distributed.total_capacity() + distributed.dropped_capacity() - 199e3).abs() < 1e-6);

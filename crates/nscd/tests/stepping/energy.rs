@@ -1,19 +1,19 @@
 //! The discrete energy identity (docs/theory.md §6) closes to round-off for any θ and any friction.
 
 use super::common::beam;
-use friction::{ContactSet, Devices, DistributedFriction};
+use friction::{Devices, DistributedFriction, InteractionSet};
 use nscd::{RunSettings, Simulation};
 
 #[test]
 fn energy_balance_closes() {
     let model = beam(60.0, 60);
     let sets = [
-        ("linear", ContactSet::new()),
-        ("31 devices", Devices::uniform(31, 50e3).contact_set(&model).unwrap()),
-        ("distributed", DistributedFriction::new(2e3).contact_set(&model).unwrap()),
+        ("linear", InteractionSet::new()),
+        ("31 devices", Devices::uniform(31, 50e3).interactions(&model).unwrap()),
+        ("distributed", DistributedFriction::new(2e3).interactions(&model).unwrap()),
     ];
     for theta in [0.5, 0.6] {
-        for (name, contacts) in &sets {
+        for (name, interactions) in &sets {
             let settings = {
                 let mut s = RunSettings::default();
                 s.integration.theta = theta;
@@ -21,7 +21,7 @@ fn energy_balance_closes() {
                 s.integration.load_advance = 0.2;
                 s
             };
-            let r = Simulation::new(&model, contacts, &settings).unwrap().run().unwrap();
+            let r = Simulation::new(&model, interactions, &settings).unwrap().run().unwrap();
             let e = r.energy;
             assert!(e.load_work > 0.0);
             // Round-off of ~1e4 steps of O(1e5 J) sums: 1e-9 relative is far above it and far below any modelling term.
@@ -37,7 +37,7 @@ fn energy_balance_closes() {
             } else {
                 assert!(e.numerical_dissipation > 0.0, "{name}");
             }
-            if contacts.is_empty() {
+            if interactions.is_empty() {
                 assert_eq!(e.friction_work, 0.0);
             } else {
                 // Friction removes energy over the run.
@@ -52,7 +52,7 @@ fn energy_balance_closes() {
 #[test]
 fn free_vibration_after_the_load_leaves() {
     let model = beam(60.0, 60);
-    let contacts = Devices::uniform(7, 20e3).contact_set(&model).unwrap();
+    let interactions = Devices::uniform(7, 20e3).interactions(&model).unwrap();
     let base = {
         let mut s = RunSettings::default();
         s.moving.speed = 150.0;
@@ -60,13 +60,13 @@ fn free_vibration_after_the_load_leaves() {
         s
     };
     let t_on = 60.0 / 150.0;
-    let crossing = Simulation::new(&model, &contacts, &base).unwrap().run().unwrap();
+    let crossing = Simulation::new(&model, &interactions, &base).unwrap().run().unwrap();
     let longer = {
         let mut s = base.clone();
         s.integration.end_time = Some(1.5 * t_on);
         s
     };
-    let after = Simulation::new(&model, &contacts, &longer).unwrap().run().unwrap();
+    let after = Simulation::new(&model, &interactions, &longer).unwrap().run().unwrap();
     assert_eq!(crossing.statistics.steps, 300);
     assert_eq!(after.statistics.steps, 450);
     assert!((after.energy.load_work - crossing.energy.load_work).abs() <= 1e-12 * crossing.energy.load_work);
@@ -79,5 +79,5 @@ fn free_vibration_after_the_load_leaves() {
         s.integration.end_time = Some(0.5 * t_on);
         s
     };
-    assert!(Simulation::new(&model, &contacts, &too_early).is_err());
+    assert!(Simulation::new(&model, &interactions, &too_early).is_err());
 }

@@ -4,7 +4,11 @@ use super::common::{beam, reference};
 use friction::{Devices, DistributedFriction};
 use nscd::{RunSettings, Simulation, SolverKind};
 
-fn check_law_every_step(model: &fem_beam::BeamModel, contacts: &friction::ContactSet, kind: SolverKind) -> usize {
+fn check_law_every_step(
+    model: &fem_beam::BeamModel,
+    interactions: &friction::InteractionSet,
+    kind: SolverKind,
+) -> usize {
     let mut settings = {
         let mut s = RunSettings::default();
         s.moving.speed = 190.0;
@@ -15,13 +19,13 @@ fn check_law_every_step(model: &fem_beam::BeamModel, contacts: &friction::Contac
     // by tolerance/W_jj, and the 1e-6·a asserted below needs the tighter tolerance to hold with margin.
     settings.integration.solver.tolerance = 1e-10;
     let mut slipping_seen = 0;
-    Simulation::new(model, contacts, &settings)
+    Simulation::new(model, interactions, &settings)
         .unwrap()
         .run_observed(&mut |s| {
             let mut power = 0.0;
             let mut scale = 0.0;
             for j in 0..s.impulses.len() {
-                let (p, a, u) = (s.impulses[j], s.bounds[j], s.section_velocities[j]);
+                let (p, a, u) = (s.impulses[j], s.law.upper[j], s.section_velocities[j]);
                 assert!(p.abs() <= a * (1.0 + 1e-12), "step {}: |p| = {} > a = {a}", s.step, p.abs());
                 // Slipping (well above the solver's velocity tolerance): the impulse sits on the bound against u.
                 if u.abs() > 100.0 * s.report.tolerance {
@@ -46,25 +50,25 @@ fn check_law_every_step(model: &fem_beam::BeamModel, contacts: &friction::Contac
 #[test]
 fn devices_obey_the_law_every_step() {
     let model = reference();
-    let contacts = Devices::uniform(31, 50e3).contact_set(&model).unwrap();
-    assert!(check_law_every_step(&model, &contacts, SolverKind::Projection) > 100);
+    let interactions = Devices::uniform(31, 50e3).interactions(&model).unwrap();
+    assert!(check_law_every_step(&model, &interactions, SolverKind::Projection) > 100);
 }
 
 #[test]
 fn distributed_friction_obeys_the_law_every_step() {
     let model = beam(50.0, 50);
-    let contacts = DistributedFriction::new(3e3).contact_set(&model).unwrap();
-    assert!(check_law_every_step(&model, &contacts, SolverKind::InteriorPoint) > 100);
+    let interactions = DistributedFriction::new(3e3).interactions(&model).unwrap();
+    assert!(check_law_every_step(&model, &interactions, SolverKind::InteriorPoint) > 100);
 }
 
 #[test]
 fn huge_device_force_keeps_device_sections_at_rest() {
     let model = reference();
-    let contacts = Devices::uniform(31, 1e12).contact_set(&model).unwrap();
+    let interactions = Devices::uniform(31, 1e12).interactions(&model).unwrap();
     let mut settings = RunSettings::default();
     settings.integration.solver.tolerance = 1e-14;
     let mut fastest: f64 = 0.0;
-    let r = Simulation::new(&model, &contacts, &settings)
+    let r = Simulation::new(&model, &interactions, &settings)
         .unwrap()
         .run_observed(&mut |s| {
             fastest = s.section_velocities.iter().fold(fastest, |m, u| m.max(u.abs()));

@@ -1,7 +1,7 @@
 //! Without friction the stepper is the linear θ-method; with vanishing friction it converges to it.
 
 use super::common::{beam, relative_difference};
-use friction::{ContactSet, Devices, DistributedFriction};
+use friction::{Devices, DistributedFriction, InteractionSet};
 use nalgebra::DVector;
 use nscd::{Forcing, MovingLoad, RunSettings, Simulation};
 
@@ -48,9 +48,9 @@ fn friction_free_run_is_the_linear_theta_method() {
                 s
             };
             let reference = dense_theta_method(&model, &settings);
-            let contacts = ContactSet::new();
+            let interactions = InteractionSet::new();
             let mut worst: f64 = 0.0;
-            let result = Simulation::new(&model, &contacts, &settings)
+            let result = Simulation::new(&model, &interactions, &settings)
                 .unwrap()
                 .run_observed(&mut |view| {
                     worst = worst.max(relative_difference(view.displacement, &reference[view.step - 1]));
@@ -73,16 +73,16 @@ fn vanishing_friction_converges_to_the_linear_response() {
         s.integration.load_advance = 0.25;
         s
     };
-    let linear = Simulation::new(&model, &ContactSet::new(), &settings).unwrap().run().unwrap();
+    let linear = Simulation::new(&model, &InteractionSet::new(), &settings).unwrap().run().unwrap();
     let w_lin = linear.max_downward.magnitude;
-    let gap = |contacts: ContactSet| {
-        let r = Simulation::new(&model, &contacts, &settings).unwrap().run().unwrap();
+    let gap = |interactions: InteractionSet| {
+        let r = Simulation::new(&model, &interactions, &settings).unwrap().run().unwrap();
         (w_lin - r.max_downward.magnitude).abs() / w_lin
     };
     let dist: Vec<f64> =
-        [1000.0, 100.0, 10.0].iter().map(|&f| gap(DistributedFriction::new(f).contact_set(&model).unwrap())).collect();
+        [1000.0, 100.0, 10.0].iter().map(|&f| gap(DistributedFriction::new(f).interactions(&model).unwrap())).collect();
     let dev: Vec<f64> =
-        [10e3, 1e3, 100.0].iter().map(|&f| gap(Devices::uniform(7, f).contact_set(&model).unwrap())).collect();
+        [10e3, 1e3, 100.0].iter().map(|&f| gap(Devices::uniform(7, f).interactions(&model).unwrap())).collect();
     for series in [&dist, &dev] {
         // Each tenfold cut of the friction force shrinks the gap at least threefold (tenfold once the friction is
         // small enough to act as a linear perturbation; measured 3.9× then 9.5× for the distributed case), and
@@ -90,5 +90,5 @@ fn vanishing_friction_converges_to_the_linear_response() {
         assert!(series[1] < series[0] / 3.0 && series[2] < series[1] / 3.0, "{series:?}");
         assert!(series[2] < 1e-2, "{series:?}");
     }
-    assert!(gap(Devices::uniform(7, 0.0).contact_set(&model).unwrap()) < 1e-14);
+    assert!(gap(Devices::uniform(7, 0.0).interactions(&model).unwrap()) < 1e-14);
 }

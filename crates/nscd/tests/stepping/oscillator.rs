@@ -1,7 +1,7 @@
 //! A single-DOF Coulomb oscillator driven through the same stepper and solvers.
 
 use banded::SymmetricBanded;
-use friction::{ContactKind, ContactRow, ContactSet};
+use friction::{InteractionKind, InteractionRow, InteractionSet};
 use nscd::forcing::{DofForce, Unloaded};
 use nscd::solver::{SolverKind, SolverSettings};
 use nscd::stepper::Integration;
@@ -25,11 +25,12 @@ fn oscillator(
     forcing: &dyn Forcing,
 ) -> Vec<(f64, f64)> {
     let system = LinearSystem { mass: scalar(mass), damping: scalar(0.0), stiffness: scalar(stiffness) };
-    let mut contacts = ContactSet::new();
-    contacts.push(ContactRow::from_entries([(0, 1.0)]), force, 0.0, ContactKind::Device);
+    let mut interactions = InteractionSet::new();
+    interactions.push_friction(InteractionRow::from_entries([(0, 1.0)]), force, 0.0, InteractionKind::Device);
     let integration = Integration { theta: 0.5, step: h };
     let settings = SolverSettings { kind, tolerance: 1e-12, ..SolverSettings::default() };
-    let mut stepper = MoreauJean::build(&system, contacts, integration, &settings, None, vec![x0], vec![0.0]).unwrap();
+    let mut stepper =
+        MoreauJean::build(&system, interactions, integration, &settings, None, vec![x0], vec![0.0]).unwrap();
     let mut out = vec![(0.0, x0)];
     for _ in 0..steps {
         stepper.step(forcing).unwrap();
@@ -107,11 +108,11 @@ fn ramp_forced_block_breaks_away_on_time() {
 fn non_finite_state_stops_the_run_at_its_step() {
     for (bad, label) in [(f64::NAN, "NaN"), (f64::MAX, "overflow"), (f64::INFINITY, "∞")] {
         let system = LinearSystem { mass: scalar(2.0), damping: scalar(0.0), stiffness: scalar(50.0) };
-        let contacts = ContactSet::new();
+        let interactions = InteractionSet::new();
         let integration = Integration { theta: 0.5, step: 1e-3 };
         let settings = SolverSettings { kind: SolverKind::Projection, ..SolverSettings::default() };
         let mut stepper =
-            MoreauJean::build(&system, contacts, integration, &settings, None, vec![0.1], vec![0.0]).unwrap();
+            MoreauJean::build(&system, interactions, integration, &settings, None, vec![0.1], vec![0.0]).unwrap();
         // Finite until t = 5 ms, then the bad value (f64::MAX·h² overflows the energy although q stays finite).
         let forcing = DofForce { dof: 0, force: move |t: f64| if t < 5e-3 - 1e-12 { 1.0 } else { bad } };
         let mut failure = None;

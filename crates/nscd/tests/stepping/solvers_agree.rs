@@ -1,9 +1,9 @@
 //! Independent solvers agree on v_{k+1} (docs/theory.md §5: p need not be unique, v is).
 
 use super::common::{reference, relative_difference};
-use friction::{ContactSet, Devices, DistributedFriction};
+use friction::{Devices, DistributedFriction, InteractionSet};
 use nscd::simulation::coupling_length;
-use nscd::solver::{FrictionProblem, SolverSettings, build_solver};
+use nscd::solver::{InteractionProblem, SolverSettings, build_solver};
 use nscd::stepper::Integration;
 use nscd::{InitialState, LinearSystem, MoreauJean, MovingLoad, RunSettings, Simulation, SolverKind};
 
@@ -22,7 +22,7 @@ fn tight(speed: f64) -> RunSettings {
 /// `b`'s own law residual exceeds 1e-8 of the velocity scale (Clarabel's stopping rule, on degenerate steps) cannot
 /// be held to 1e-8 and are not compared; they are counted and must stay below 5 % of the steps.
 fn same_state_difference(
-    contacts: &ContactSet,
+    interactions: &InteractionSet,
     a: SolverKind,
     b: SolverKind,
     settings: &RunSettings,
@@ -33,10 +33,10 @@ fn same_state_difference(
     let system = LinearSystem::from_beam(&model);
     let integration = Integration { theta: settings.integration.theta, step: h };
     let margin = Some(30.0 * coupling_length(&model, h, settings.integration.theta));
-    let checking = FrictionProblem::new(&system, contacts.clone(), integration).unwrap();
+    let checking = InteractionProblem::new(&system, interactions.clone(), integration).unwrap();
     let whole = SolverSettings { moving_window: false, ..settings.integration.solver };
     let mut solver_b = build_solver(b, &checking, &whole, None).unwrap();
-    let (q0, v0) = Simulation::new(&model, contacts, settings).unwrap().initial_state().unwrap();
+    let (q0, v0) = Simulation::new(&model, interactions, settings).unwrap().initial_state().unwrap();
     let start = match settings.moving.initial {
         InitialState::Rest => 0.0,
         InitialState::SteadyState { position } => position,
@@ -44,17 +44,17 @@ fn same_state_difference(
     let load = MovingLoad::new(*model.mesh(), model.dofs(), settings.moving.force, settings.moving.speed, start);
     let n = system.dofs();
     let stepping = SolverSettings { kind: a, ..settings.integration.solver };
-    let mut stepper = MoreauJean::build(&system, contacts.clone(), integration, &stepping, margin, q0, v0).unwrap();
-    let (mut u_free, mut p) = (vec![0.0; contacts.len()], vec![0.0; contacts.len()]);
+    let mut stepper = MoreauJean::build(&system, interactions.clone(), integration, &stepping, margin, q0, v0).unwrap();
+    let (mut u_free, mut p) = (vec![0.0; interactions.len()], vec![0.0; interactions.len()]);
     let crossing = ((model.mesh().length - start) / settings.integration.load_advance).round() as usize;
     let mut worst: f64 = 0.0;
     let (mut compared, mut skipped) = (0usize, 0usize);
     for step in 1..=steps.min(crossing) {
         let v_free = stepper.free_velocity(&load).to_vec();
-        contacts.velocities(&v_free, &mut u_free);
+        interactions.velocities(&v_free, &mut u_free);
         let report_b = solver_b.solve(&checking, &v_free, &u_free, &mut p).unwrap();
         let mut v_b = vec![0.0; n];
-        contacts.add_transpose(&p, &mut v_b);
+        interactions.add_transpose(&p, &mut v_b);
         checking.factor.solve_in_place(&mut v_b);
         v_b.iter_mut().zip(&v_free).for_each(|(v, f)| *v += f);
         let report_a = stepper.step(&load).unwrap();
@@ -77,12 +77,18 @@ fn same_state_difference(
 }
 
 /// Max deflection of whole independent runs with solvers `a` and `b` agree within `bound` relative.
-fn same_max_deflection(contacts: &ContactSet, a: SolverKind, b: SolverKind, settings: &RunSettings, bound: f64) {
+fn same_max_deflection(
+    interactions: &InteractionSet,
+    a: SolverKind,
+    b: SolverKind,
+    settings: &RunSettings,
+    bound: f64,
+) {
     let model = reference();
     let run = |kind| {
         let mut s = settings.clone();
         s.integration.solver.kind = kind;
-        Simulation::new(&model, contacts, &s).unwrap().run().unwrap()
+        Simulation::new(&model, interactions, &s).unwrap().run().unwrap()
     };
     let (ra, rb) = (run(a), run(b));
     for (x, y) in
@@ -96,16 +102,16 @@ fn same_max_deflection(contacts: &ContactSet, a: SolverKind, b: SolverKind, sett
 #[test]
 fn clarabel_agrees_with_projection_for_devices() {
     let model = reference();
-    let contacts = Devices::uniform(31, 100e3).contact_set(&model).unwrap();
+    let interactions = Devices::uniform(31, 100e3).interactions(&model).unwrap();
     let settings = tight(200.0);
-    same_state_difference(&contacts, SolverKind::Projection, SolverKind::Clarabel, &settings, 400);
-    same_state_difference(&contacts, SolverKind::Projection, SolverKind::InteriorPoint, &settings, 400);
+    same_state_difference(&interactions, SolverKind::Projection, SolverKind::Clarabel, &settings, 400);
+    same_state_difference(&interactions, SolverKind::Projection, SolverKind::InteriorPoint, &settings, 400);
 }
 
 #[test]
 fn clarabel_agrees_with_interior_point_for_distributed_friction() {
     let model = reference();
-    let contacts = DistributedFriction::new(5e3).contact_set(&model).unwrap();
+    let interactions = DistributedFriction::new(5e3).interactions(&model).unwrap();
     // From the steady state with the load at mid-span the whole window around it moves at once. (From rest the
     // first steps move the beam by nanometres, where Clarabel's absolute accuracy is the limit: 2e-6 relative.)
     let settings = {
@@ -113,7 +119,7 @@ fn clarabel_agrees_with_interior_point_for_distributed_friction() {
         s.moving.initial = InitialState::SteadyState { position: 95.0 };
         s
     };
-    same_state_difference(&contacts, SolverKind::InteriorPoint, SolverKind::Clarabel, &settings, 30);
+    same_state_difference(&interactions, SolverKind::InteriorPoint, SolverKind::Clarabel, &settings, 30);
 }
 
 /// The moving window re-solves only part of the beam but checks every section: from the same state, each step
@@ -121,9 +127,10 @@ fn clarabel_agrees_with_interior_point_for_distributed_friction() {
 #[test]
 fn moving_window_agrees_with_whole_beam_solve_every_step() {
     let model = reference();
-    let contacts = DistributedFriction::new(2e3).contact_set(&model).unwrap();
+    let interactions = DistributedFriction::new(2e3).interactions(&model).unwrap();
     let settings = tight(150.0);
-    let worst = same_state_difference(&contacts, SolverKind::InteriorPoint, SolverKind::InteriorPoint, &settings, 600);
+    let worst =
+        same_state_difference(&interactions, SolverKind::InteriorPoint, SolverKind::InteriorPoint, &settings, 600);
     assert!(worst < 1e-8);
 }
 
@@ -134,10 +141,10 @@ fn moving_window_agrees_with_whole_beam_solve_every_step() {
 fn whole_runs_agree() {
     let model = reference();
     let settings = tight(200.0);
-    let devices = Devices::uniform(31, 100e3).contact_set(&model).unwrap();
+    let devices = Devices::uniform(31, 100e3).interactions(&model).unwrap();
     same_state_difference(&devices, SolverKind::Projection, SolverKind::Clarabel, &settings, usize::MAX);
     same_max_deflection(&devices, SolverKind::Projection, SolverKind::Clarabel, &settings, 1e-6);
-    let distributed = DistributedFriction::new(5e3).contact_set(&model).unwrap();
+    let distributed = DistributedFriction::new(5e3).interactions(&model).unwrap();
     let steady = {
         let mut s = settings.clone();
         s.moving.initial = InitialState::SteadyState { position: 5.0 };
@@ -160,8 +167,8 @@ fn truncated_impulse_responses_match_the_solve() {
     let h = 0.1 / 200.0;
     let system = LinearSystem::from_beam(&model);
     let integration = Integration { theta: 0.5, step: h };
-    let devices = Devices::uniform(31, 100e3).contact_set(&model).unwrap();
-    let problem = FrictionProblem::new(&system, devices.clone(), integration).unwrap();
+    let devices = Devices::uniform(31, 100e3).interactions(&model).unwrap();
+    let problem = InteractionProblem::new(&system, devices.clone(), integration).unwrap();
     let responses = problem.responses.as_ref().expect("31 devices keep their responses");
     let n = system.dofs();
     // Each column keeps about ±16 m around its device (e^{−x/(√2ℓ)} = 1e-17, ℓ = 0.29 m): far fewer than n entries.
@@ -176,6 +183,6 @@ fn truncated_impulse_responses_match_the_solve() {
     let gap = by_responses.iter().zip(&by_solve).fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
     assert!(gap <= 1e-14 * scale, "gap {gap:e} on a scale of {scale:e}");
 
-    let distributed = DistributedFriction::new(5e3).contact_set(&model).unwrap();
-    assert!(FrictionProblem::new(&system, distributed, integration).unwrap().responses.is_none());
+    let distributed = DistributedFriction::new(5e3).interactions(&model).unwrap();
+    assert!(InteractionProblem::new(&system, distributed, integration).unwrap().responses.is_none());
 }

@@ -2,7 +2,7 @@
 
 use fem_beam::reference::{InfiniteBeam, uic60_on_soft_soil};
 use fem_beam::{AbsorbingZones, BeamModel};
-use friction::ContactSet;
+use friction::InteractionSet;
 use nscd::{InitialState, RunSettings, Simulation};
 
 #[test]
@@ -17,7 +17,7 @@ fn fe_response_matches_infinite_beam_steady_state() {
     let damping = zones.element_damping(&case.mesh, foundation.damping).unwrap();
     let model = BeamModel::with_element_damping(case.beam, foundation, case.mesh, case.supports, damping).unwrap();
     let infinite = InfiniteBeam::new(&case.beam, &foundation).unwrap();
-    let contacts = ContactSet::new();
+    let interactions = InteractionSet::new();
     for speed in [100.0, 150.0, 200.0, 250.0] {
         let settings = {
             let mut s = RunSettings::default();
@@ -26,7 +26,7 @@ fn fe_response_matches_infinite_beam_steady_state() {
             s.record.extremes_window = Some((190.0, 210.0));
             s
         };
-        let run = Simulation::new(&model, &contacts, &settings).unwrap().run().unwrap();
+        let run = Simulation::new(&model, &interactions, &settings).unwrap().run().unwrap();
         let r = run.window.unwrap();
         let exact = infinite.steady_state(speed, case.load).unwrap().extremes();
         let down = (r.max_downward.magnitude - exact.max_downward.magnitude) / exact.max_downward.magnitude;
@@ -52,7 +52,7 @@ fn recorded_histories_match_steady_state_under_the_load() {
     let foundation = case.foundation.with_damping_ratio(0.05, &case.beam).unwrap();
     let model = BeamModel::new(case.beam, foundation, case.mesh, case.supports).unwrap();
     let infinite = InfiniteBeam::new(&case.beam, &foundation).unwrap();
-    let contacts = ContactSet::new();
+    let interactions = InteractionSet::new();
     for speed in [20.0, 100.0, 150.0] {
         let settings = {
             let mut s = RunSettings::default();
@@ -61,7 +61,7 @@ fn recorded_histories_match_steady_state_under_the_load() {
             s.record.sections = vec![100.0];
             s
         };
-        let r = Simulation::new(&model, &contacts, &settings).unwrap().run().unwrap();
+        let r = Simulation::new(&model, &interactions, &settings).unwrap().run().unwrap();
         let history = &r.histories[0];
         let k =
             history.load_position.iter().position(|x| (x - 100.0).abs() < 1e-6).expect("a step with the load at 100 m");

@@ -22,8 +22,8 @@ pub(super) fn study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
     // Each run with the capacity F_j (N) of its friction section at mid-span, to compare what each mobilises.
     let runs = runner.map(&[&devices, &distributed], |s| {
         let case = s.build()?;
-        let middle = case.contacts.positions().iter().position(|&x| (x - s.mesh.length / 2.0).abs() < 1e-9);
-        let capacity = middle.map_or(f64::NAN, |j| case.contacts.bounds()[j]);
+        let middle = case.interactions.positions().iter().position(|&x| (x - s.mesh.length / 2.0).abs() < 1e-9);
+        let capacity = middle.map_or(f64::NAN, |j| case.interactions.capacity(j));
         Ok((runner.simulate(&case, &case.settings)?, capacity))
     })?;
     let (capacities, runs): (Vec<f64>, Vec<_>) = runs.into_iter().map(|(r, c)| (c, r)).unzip();

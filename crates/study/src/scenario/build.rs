@@ -4,7 +4,7 @@
 use super::{Case, QuadratureKind, Scenario, SweepSection, fnv1a};
 use crate::error::{Result, StudyError, invalid};
 use fem_beam::{AbsorbingZones, BeamModel, Foundation, Mesh, Supports};
-use friction::{ContactSet, DeviceLayout, Devices, DistributedFriction, Quadrature};
+use friction::{DeviceLayout, Devices, DistributedFriction, InteractionSet, Quadrature};
 use nscd::simulation::{IntegrationSettings, MovingLoadSettings, RecordSettings};
 use nscd::{InitialState, RunSettings, SolverSettings};
 
@@ -78,7 +78,7 @@ impl Scenario {
     /// Build the model, contact set and run settings, checking every value on the way.
     pub fn build(&self) -> Result<Case> {
         let model = self.model()?;
-        let contacts = self.contacts(&model).map_err(|e| under("friction", e))?;
+        let interactions = self.interactions(&model).map_err(|e| under("friction", e))?;
         finite_non_negative("load.force", self.load.force, "N")?;
         finite_positive("load.speed", self.load.speed, "m/s")?;
         if let Some([a, b]) = self.output.extremes_window {
@@ -96,7 +96,7 @@ impl Scenario {
         if let Some(sweep) = &self.sweep {
             sweep.validate("sweep")?;
         }
-        Ok(Case { model, contacts, settings, fingerprint: self.fingerprint() })
+        Ok(Case { model, interactions, settings, fingerprint: self.fingerprint() })
     }
 
     /// See [`Case::fingerprint`].
@@ -136,8 +136,8 @@ impl Scenario {
         }
     }
 
-    fn contacts(&self, model: &BeamModel) -> Result<ContactSet> {
-        let mut contacts = ContactSet::new();
+    fn interactions(&self, model: &BeamModel) -> Result<InteractionSet> {
+        let mut interactions = InteractionSet::new();
         if let Some(d) = &self.friction.devices {
             let layout = match (d.count, &d.positions) {
                 (Some(count), None) => DeviceLayout::Uniform { count },
@@ -165,7 +165,7 @@ impl Scenario {
                 invalid("friction.devices.force", "missing", "give the maximal force of one device F_u (N)")
             })?;
             finite_non_negative("friction.devices.force", devices.force, "N")?;
-            contacts.extend(devices.contact_set(model)?);
+            interactions.extend(devices.interactions(model)?);
         }
         if let Some(d) = &self.friction.distributed {
             let quadrature = match d.quadrature {
@@ -174,9 +174,9 @@ impl Scenario {
             };
             let distributed =
                 DistributedFriction { force_per_length: d.force_per_length, subdivisions: d.subdivisions, quadrature };
-            contacts.extend(distributed.contact_set(model)?);
+            interactions.extend(distributed.interactions(model)?);
         }
-        Ok(contacts)
+        Ok(interactions)
     }
 
     /// Run settings for a load speed `speed` (m/s), not yet validated (see [`Scenario::build`]).

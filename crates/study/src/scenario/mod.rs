@@ -15,7 +15,7 @@ pub use sections::*;
 
 use crate::error::{Result, StudyError, invalid};
 use fem_beam::BeamModel;
-use friction::ContactSet;
+use friction::InteractionSet;
 use nscd::RunSettings;
 use parse::{did_you_mean, key_path, line_column};
 use serde::{Deserialize, Serialize};
@@ -53,7 +53,7 @@ pub struct Case {
     /// The assembled beam.
     pub model: BeamModel,
     /// All friction sections.
-    pub contacts: ContactSet,
+    pub interactions: InteractionSet,
     /// Run settings (speed from `[load]`).
     pub settings: RunSettings,
     /// Identifies what a run of this case at a given speed computes: a hash (64-bit FNV-1a) of the frictrack version

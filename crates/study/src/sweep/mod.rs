@@ -109,7 +109,7 @@ pub(crate) fn simulate_observed(
     stop: Option<&AtomicBool>,
     observer: &mut dyn FnMut(&StepView<'_>) -> bool,
 ) -> Result<RunResult> {
-    let simulation = Simulation::new(&case.model, &case.contacts, settings)?;
+    let simulation = Simulation::new(&case.model, &case.interactions, settings)?;
     let stopped = || stop.is_some_and(|s| s.load(Ordering::Relaxed));
     let result = simulation.run_observed(&mut |view| observer(view) && !stopped())?;
     if stopped() { Err(StudyError::Interrupted) } else { Ok(result) }

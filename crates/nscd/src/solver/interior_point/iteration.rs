@@ -3,7 +3,7 @@
 //! twice: baseline and AVX2, the same operations in the same order).
 
 use super::sections::Sections;
-use crate::solver::FrictionProblem;
+use crate::solver::InteractionProblem;
 use banded::{BandedLdlt, SymmetricBanded};
 
 /// Fraction of the distance to the boundary of the positive orthant taken by a step.
@@ -13,7 +13,7 @@ const FRACTION_TO_BOUNDARY: f64 = 0.995;
 /// window condensation) over the DOFs from `offset` on, the absolute tolerance (m/s) and the iteration cap.
 #[derive(Clone, Copy)]
 pub(super) struct Subproblem<'s> {
-    pub(super) problem: &'s FrictionProblem,
+    pub(super) problem: &'s InteractionProblem,
     pub(super) base: &'s SymmetricBanded,
     pub(super) offset: usize,
     pub(super) tolerance: f64,
@@ -28,6 +28,8 @@ pub(super) struct Work {
     pub(super) dy: Vec<f64>,
     pub(super) b: SymmetricBanded,
     pub(super) b_factor: BandedLdlt,
+    /// Scratch over all n DOFs (the start y = M̂⁻¹Hᵀp₀ when p₀ ≠ 0).
+    pub(super) full: Vec<f64>,
 }
 
 impl Work {
@@ -82,7 +84,7 @@ impl Work {
     #[inline(always)]
     pub(super) fn iterate_body(&mut self, subproblem: &Subproblem<'_>, p: &mut [f64]) -> crate::Result<(usize, f64)> {
         let Subproblem { problem, base, offset, tolerance, max_iterations } = *subproblem;
-        let rows = problem.contacts.rows();
+        let rows = problem.interactions.rows();
         let nw = base.order();
         // Three zeros of padding past the end let every row be read and written four entries wide.
         self.y.resize(nw + 3, 0.0);
@@ -90,31 +92,64 @@ impl Work {
         self.y.iter_mut().for_each(|x| *x = 0.0);
         let q = &mut self.sections;
         let len = q.index.len();
+        let law = &problem.law;
         q.rows.clear();
+        let mut open_count = 0;
         for k in 0..len {
             let j = q.index[k];
             let row = &rows[j];
             debug_assert!(row.dofs().windows(2).all(|d| d[1] == d[0] + 1), "rows touch consecutive free DOFs");
+            debug_assert!(law.lower[j].is_finite(), "lower bounds are finite");
             q.rows.push(row.dofs()[0] - offset, row.values());
-            q.a[k] = problem.bounds[j];
+            q.lower[k] = law.lower[j];
+            q.upper[k] = law.upper[j];
+            q.compliance[k] = law.compliance[j];
+            let open = law.upper[j] == f64::INFINITY;
+            open_count += usize::from(open);
+            q.closed[k] = if open { 0.0 } else { 1.0 };
+            q.open[k] = 1.0 - q.closed[k];
             q.w[k] = problem.delassus_diagonal[j];
             q.inv_w[k] = 1.0 / q.w[k];
+            q.u_free[k] += law.drift[j];
         }
-        // Start at p = 0, the centre of every box: warm starts from the previous step's (p, z) were measured to
-        // cost more iterations, not fewer (18.6 cold vs 19.8–23.9 warm per step, distributed 5 kN/m).
+        // Start inside every interval: a box at its centre (p = 0 for friction, where warm starts from the previous
+        // step's (p, z) were measured to cost more iterations, not fewer: 18.6 cold vs 19.8–23.9 warm per step,
+        // distributed 5 kN/m), a one-sided interval at the impulse scale max(|c|, shift)/w above its bound.
         let scale = q.u_free.iter().fold(crate::solver::VELOCITY_FLOOR, |s, u| s.max(u.abs()));
         let shift = 0.01 * scale;
+        let mut started_off_zero = false;
         for k in 0..len {
-            q.p[k] = 0.0;
-            q.u[k] = q.u_free[k];
-            q.s1[k] = q.a[k];
-            q.s2[k] = q.a[k];
-            // Split u into z₂ − z₁, both kept away from zero.
-            q.z1[k] = (-q.u[k]).max(0.0) + shift;
+            q.p[k] = if q.closed[k] == 1.0 {
+                0.5 * (q.lower[k] + q.upper[k])
+            } else {
+                q.lower[k] + q.u_free[k].abs().max(shift) * q.inv_w[k]
+            };
+            started_off_zero |= q.p[k] != 0.0;
+            q.s1[k] = if q.closed[k] == 1.0 { q.upper[k] - q.p[k] } else { 1.0 };
+            q.s2[k] = q.p[k] - q.lower[k];
+        }
+        if started_off_zero {
+            // y = M̂⁻¹Hᵀp₀ on the window's DOFs (the window's Schur complement inverts to the window block of M̂⁻¹).
+            self.full.iter_mut().for_each(|x| *x = 0.0);
+            for k in 0..len {
+                rows[q.index[k]].add_transpose(q.p[k], &mut self.full);
+            }
+            problem.factor.solve_in_place(&mut self.full);
+            self.y[..nw].copy_from_slice(&self.full[offset..offset + nw]);
+            q.gather(&self.y);
+            for k in 0..len {
+                q.u[k] = q.u_free[k] + q.gathered[k] + q.compliance[k] * q.p[k];
+            }
+        } else {
+            q.u[..len].copy_from_slice(&q.u_free[..len]);
+        }
+        for k in 0..len {
+            // Split r into z₂ − z₁, both kept away from zero (z₁ = 0 without an upper bound).
+            q.z1[k] = if q.closed[k] == 1.0 { (-q.u[k]).max(0.0) + shift } else { 0.0 };
             q.z2[k] = q.u[k].max(0.0) + shift;
         }
         let mut residual = q.law_residual();
-        let inv_count = 1.0 / (2 * len.max(1)) as f64;
+        let inv_count = 1.0 / (2 * len - open_count).max(1) as f64;
         let mut iterations = 0;
         while residual > tolerance && iterations < max_iterations && len > 0 {
             iterations += 1;
@@ -124,6 +159,7 @@ impl Work {
             let q = &mut self.sections;
             predictor_terms(
                 [&q.s1[..len], &q.s2[..len], &q.z1[..len], &q.z2[..len], &q.w[..len], &q.u[..len]],
+                [&q.closed[..len], &q.open[..len], &q.compliance[..len]],
                 [&mut q.inv_s1[..len], &mut q.inv_s2[..len], &mut q.inv_z1[..len], &mut q.inv_z2[..len]],
                 [&mut q.inv_sigma[..len], &mut q.r[..len], &mut q.c1[..len], &mut q.c2[..len]],
             );
@@ -165,7 +201,14 @@ impl Work {
             q.gather(&self.y);
             take_step(
                 (alpha, alpha_d),
-                [&q.dp[..len], &q.dz1[..len], &q.dz2[..len], &q.u_free[..len], &q.gathered[..len]],
+                [
+                    &q.dp[..len],
+                    &q.dz1[..len],
+                    &q.dz2[..len],
+                    &q.u_free[..len],
+                    &q.gathered[..len],
+                    &q.compliance[..len],
+                ],
                 [
                     &mut q.p[..len],
                     &mut q.s1[..len],
@@ -187,23 +230,26 @@ impl Work {
 // The per-section loops of the iteration, as functions of slices so that the compiler knows the arrays do not
 // overlap (and, all of one length, needs no bounds checks): it then vectorises them.
 
-/// Predictor set-up: 1/s₁, 1/s₂, 1/z₁, 1/z₂, Σ⁻¹ = 1/max(z₁/s₁ + z₂/s₂, 1e-15·W), r = −u, c₁ = c₂ = 0.
+/// Predictor set-up: 1/s₁ (0 without an upper bound), 1/s₂, 1/z₁ (1 without an upper bound, where z₁ = 0), 1/z₂,
+/// (Σ + D)⁻¹ = 1/(max(z₁/s₁ + z₂/s₂, 1e-15·w) + d), r = −u, c₁ = c₂ = 0.
 #[inline(always)]
-pub(super) fn predictor_terms(input: [&[f64]; 6], inverses: [&mut [f64]; 4], out: [&mut [f64]; 4]) {
+pub(super) fn predictor_terms(input: [&[f64]; 6], law: [&[f64]; 3], inverses: [&mut [f64]; 4], out: [&mut [f64]; 4]) {
     let [s1, s2, z1, z2, w, u] = input;
+    let [closed, open, compliance] = law;
     let [inv_s1, inv_s2, inv_z1, inv_z2] = inverses;
     let [inv_sigma, r, c1, c2] = out;
     let len = s1.len();
     let (s2, z1, z2, w, u) = (&s2[..len], &z1[..len], &z2[..len], &w[..len], &u[..len]);
+    let (closed, open, compliance) = (&closed[..len], &open[..len], &compliance[..len]);
     let (inv_s1, inv_s2, inv_z1, inv_z2) =
         (&mut inv_s1[..len], &mut inv_s2[..len], &mut inv_z1[..len], &mut inv_z2[..len]);
     let (inv_sigma, r, c1, c2) = (&mut inv_sigma[..len], &mut r[..len], &mut c1[..len], &mut c2[..len]);
     for k in 0..len {
-        inv_s1[k] = 1.0 / s1[k];
+        inv_s1[k] = closed[k] / s1[k];
         inv_s2[k] = 1.0 / s2[k];
-        inv_z1[k] = 1.0 / z1[k];
+        inv_z1[k] = 1.0 / (z1[k] + open[k]);
         inv_z2[k] = 1.0 / z2[k];
-        inv_sigma[k] = 1.0 / (z1[k] * inv_s1[k] + z2[k] * inv_s2[k]).max(1e-15 * w[k]);
+        inv_sigma[k] = 1.0 / ((z1[k] * inv_s1[k] + z2[k] * inv_s2[k]).max(1e-15 * w[k]) + compliance[k]);
         r[k] = -u[k];
         c1[k] = 0.0;
         c2[k] = 0.0;
@@ -271,13 +317,13 @@ pub(super) fn corrector_terms(target: f64, input: [&[f64]; 6], out: [&mut [f64];
 }
 
 /// The step: p += αΔp, s₁ −= αΔp, s₂ += αΔp (slacks are updated, not recomputed from p: near a bound a − p loses
-/// all precision), z += α_dΔz, u = u_free + H y.
+/// all precision), z += α_dΔz, r = c + H y + d p.
 #[inline(always)]
-pub(super) fn take_step((alpha, alpha_d): (f64, f64), input: [&[f64]; 5], state: [&mut [f64]; 6]) {
-    let [dp, dz1, dz2, u_free, hy] = input;
+pub(super) fn take_step((alpha, alpha_d): (f64, f64), input: [&[f64]; 6], state: [&mut [f64]; 6]) {
+    let [dp, dz1, dz2, u_free, hy, compliance] = input;
     let [p, s1, s2, z1, z2, u] = state;
     let len = dp.len();
-    let (dz1, dz2, u_free, hy) = (&dz1[..len], &dz2[..len], &u_free[..len], &hy[..len]);
+    let (dz1, dz2, u_free, hy, compliance) = (&dz1[..len], &dz2[..len], &u_free[..len], &hy[..len], &compliance[..len]);
     let (p, s1, s2, z1, z2, u) =
         (&mut p[..len], &mut s1[..len], &mut s2[..len], &mut z1[..len], &mut z2[..len], &mut u[..len]);
     for k in 0..len {
@@ -287,6 +333,6 @@ pub(super) fn take_step((alpha, alpha_d): (f64, f64), input: [&[f64]; 5], state:
         s2[k] += step;
         z1[k] += alpha_d * dz1[k];
         z2[k] += alpha_d * dz2[k];
-        u[k] = u_free[k] + hy[k];
+        u[k] = u_free[k] + hy[k] + compliance[k] * p[k];
     }
 }

@@ -1,26 +1,29 @@
 //! A primal–dual interior-point method for the friction step whose Newton systems are banded: the solver built for
 //! dense distributed friction (docs/theory.md §5), where Gauss–Seidel stalls because W = H M̂⁻¹ Hᵀ is singular.
 //!
-//! The step is the box QP min ½pᵀWp + u_freeᵀp, −a ≤ p ≤ a. With slacks s₁ = a − p, s₂ = a + p and multipliers
-//! z₁, z₂ ≥ 0 (velocities, m/s) the optimality conditions are
+//! The step is the box QP min ½pᵀ(W + D)p + cᵀp, lo ≤ p ≤ hi (docs/theory.md §9). With slacks s₁ = hi − p,
+//! s₂ = p − lo and multipliers z₁, z₂ ≥ 0 (velocities, m/s) the optimality conditions are
 //!
 //! ```text
-//! W p + u_free + z₁ − z₂ = 0,   s₁∘z₁ = 0,   s₂∘z₂ = 0,   s, z ≥ 0
+//! (W + D) p + c + z₁ − z₂ = 0,   s₁∘z₁ = 0,   s₂∘z₂ = 0,   s, z ≥ 0
 //! ```
 //!
-//! so u = W p + u_free = z₂ − z₁: a section at p_j = a_j moves backwards, one at −a_j forwards, one inside is stuck.
-//! Mehrotra predictor–corrector steps keep p strictly inside the box (the slacks s₁, s₂ are carried as variables: near a bound, a − p would lose all precision). Each Newton system
-//! (W + Σ)Δp = r, Σ = z₁/s₁ + z₂/s₂ > 0, is solved without ever forming W, by the Woodbury identity
+//! so r = (W + D)p + c = z₂ − z₁: a friction section at p_j = hi_j moves backwards, one at lo_j forwards, one inside
+//! is stuck. Where hi = +∞ the upper pair is absent (z₁ = 0 and 1/s₁ = 0 throughout); interactions with lo = hi
+//! this step (a contact out of the index set) are fixed at p = lo and left out.
+//! Mehrotra predictor–corrector steps keep p strictly inside the box (the slacks s₁, s₂ are carried as variables:
+//! near a bound, hi − p would lose all precision). Each Newton system (W + D + Σ)Δp = r, Σ = z₁/s₁ + z₂/s₂ > 0, is
+//! solved without ever forming W, by the Woodbury identity (Σ' = Σ + D)
 //!
 //! ```text
-//! B = M̂ + Hᵀ Σ⁻¹ H  (banded, half-bandwidth 3: each row H_j touches one element),
-//! y = B⁻¹ Hᵀ Σ⁻¹ r,   Δp = Σ⁻¹ (r − H y),   M̂⁻¹ Hᵀ Δp = y,
+//! B = M̂ + Hᵀ Σ'⁻¹ H  (banded, half-bandwidth 3: each row H_j touches one element),
+//! y = B⁻¹ Hᵀ Σ'⁻¹ r,   Δp = Σ'⁻¹ (r − H y),   M̂⁻¹ Hᵀ Δp = y,
 //! ```
 //!
 //! so one banded factorisation and two banded solves per iteration, O(n + m). The velocity correction
 //! M̂⁻¹Hᵀp is carried along, so W p is never needed either. Redundant stuck sections (more sections than DOFs)
 //! only make Σ⁻¹ large on them, which B absorbs. Iterates stop when the law residual meets the tolerance.
-//! Sections with a zero bound are fixed at p = 0 and left out.
+//! Sections with a zero capacity are fixed at p = 0 and left out.
 //!
 //! # The moving window
 //! Far from the load nothing changes from one step to the next: stuck sections keep their impulses, and the
@@ -37,7 +40,7 @@ mod iteration;
 mod sections;
 mod window;
 
-use super::{FrictionProblem, FrictionSolver, SolverKind, StepReport, StepStatus};
+use super::{InteractionProblem, InteractionSolver, SolverKind, StepReport, StepStatus};
 use banded::{BandedLdlt, SymmetricBanded};
 use iteration::{Subproblem, Work};
 use sections::Sections;
@@ -78,7 +81,7 @@ impl BandedInteriorPoint {
     /// Scratch for `problem`. With `window_margin` = Some(m) (metres; 30 coupling lengths is safe) each step
     /// re-solves only a window around the sections that change; None always solves the whole problem.
     pub fn new(
-        problem: &FrictionProblem,
+        problem: &InteractionProblem,
         tolerance: f64,
         max_iterations: usize,
         window_margin: Option<f64>,
@@ -92,7 +95,7 @@ impl BandedInteriorPoint {
             tolerance,
             max_iterations,
             margin: window_margin,
-            all_active: (0..m).filter(|&j| problem.bounds[j] > 0.0).collect(),
+            all_active: (0..m).filter(|&j| problem.law.is_free(j)).collect(),
             backward,
             window_matrix: problem.m_hat.clone(),
             work: Work {
@@ -101,6 +104,7 @@ impl BandedInteriorPoint {
                 dy: vec![0.0; n],
                 b: problem.m_hat.clone(),
                 b_factor: problem.factor.clone(),
+                full: vec![0.0; n],
             },
             v: vec![0.0; n],
             correction: vec![0.0; n],
@@ -111,13 +115,13 @@ impl BandedInteriorPoint {
     }
 
     /// v = v_free + M̂⁻¹Hᵀp and the law residual of every section, into `self.check` (u) — one banded solve.
-    fn full_residual(&mut self, problem: &FrictionProblem, v_free: &[f64], p: &[f64]) -> f64 {
+    fn full_residual(&mut self, problem: &InteractionProblem, v_free: &[f64], p: &[f64]) -> f64 {
         problem.outcome(v_free, p, &mut self.v, &mut self.check)
     }
 
     fn solve_whole(
         &mut self,
-        problem: &FrictionProblem,
+        problem: &InteractionProblem,
         u_free: &[f64],
         p: &mut [f64],
         tolerance: f64,
@@ -137,19 +141,24 @@ impl BandedInteriorPoint {
     }
 }
 
-impl FrictionSolver for BandedInteriorPoint {
+impl InteractionSolver for BandedInteriorPoint {
     fn kind(&self) -> SolverKind {
         SolverKind::InteriorPoint
     }
 
     fn solve(
         &mut self,
-        problem: &FrictionProblem,
+        problem: &InteractionProblem,
         v_free: &[f64],
         u_free: &[f64],
         p: &mut [f64],
     ) -> crate::Result<StepReport> {
         let tolerance = problem.absolute_tolerance(self.tolerance, u_free);
+        if problem.is_varying() {
+            // Interactions with lo = hi this step hold p = lo (the stepper clamped the warm start) and sit out.
+            self.all_active.clear();
+            self.all_active.extend((0..problem.len()).filter(|&j| problem.law.is_free(j)));
+        }
         let solved_before = self.statistics.sections_solved;
         let first = !self.started;
         self.started = true;
@@ -190,24 +199,24 @@ mod tests {
         #[cfg(target_arch = "x86_64")]
         if std::arch::is_x86_feature_detected!("avx2") {
             let model = uic60_on_soft_soil().model().expect("reference model");
-            let contacts = DistributedFriction::new(5e3).contact_set(&model).expect("distributed friction");
+            let interactions = DistributedFriction::new(5e3).interactions(&model).expect("distributed friction");
             let h = 0.1 / 200.0;
             let system = crate::LinearSystem::from_beam(&model);
             let integration = crate::Integration { theta: 0.5, step: h };
-            let problem = FrictionProblem::new(&system, contacts.clone(), integration).expect("M̂ is SPD");
+            let problem = InteractionProblem::new(&system, interactions.clone(), integration).expect("M̂ is SPD");
             let m_hat = &problem.m_hat;
             let v_free: Vec<f64> = (0..m_hat.order()).map(|i| 0.3 * (0.05 * i as f64).sin() - 0.05).collect();
-            let mut u_free = vec![0.0; contacts.len()];
-            contacts.velocities(&v_free, &mut u_free);
+            let mut u_free = vec![0.0; interactions.len()];
+            interactions.velocities(&v_free, &mut u_free);
             let tolerance = problem.absolute_tolerance(1e-8, &u_free);
             let subproblem = Subproblem { problem: &problem, base: m_hat, offset: 0, tolerance, max_iterations: 200 };
             let solve = |avx2: bool| {
                 let mut solver = BandedInteriorPoint::new(&problem, 1e-8, 200, None).expect("solver");
                 let work = &mut solver.work;
-                work.sections.index.extend(0..contacts.len());
+                work.sections.index.extend(0..interactions.len());
                 work.sections.fit();
                 work.sections.u_free.copy_from_slice(&u_free);
-                let mut p = vec![0.0; contacts.len()];
+                let mut p = vec![0.0; interactions.len()];
                 #[allow(unsafe_code)]
                 let (iterations, residual) = if avx2 {
                     // SAFETY: AVX2 detected above.
@@ -221,8 +230,8 @@ mod tests {
             };
             let (baseline, avx2) = (solve(false), solve(true));
             assert!(baseline.0 > 3, "a nontrivial step: {} iterations", baseline.0);
-            let slipping = baseline.1.iter().zip(&problem.bounds).filter(|(p, a)| p.abs() > 0.999 * *a).count();
-            assert!(slipping > 10 && slipping < contacts.len() - 10, "stick and slip: {slipping} slipping");
+            let slipping = baseline.1.iter().zip(&problem.law.upper).filter(|(p, a)| p.abs() > 0.999 * *a).count();
+            assert!(slipping > 10 && slipping < interactions.len() - 10, "stick and slip: {slipping} slipping");
             assert_eq!(baseline.0, avx2.0);
             assert!(baseline.1.iter().zip(&avx2.1).all(|(a, b)| a.to_bits() == b.to_bits()));
         }

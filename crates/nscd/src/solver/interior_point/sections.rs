@@ -12,11 +12,19 @@ pub(super) struct Sections {
     pub(super) index: Vec<usize>,
     /// The rows H_k over the window's DOFs (rows touch consecutive free DOFs).
     pub(super) rows: BlockRows,
-    /// Bound a_j (N·s), W_jj and 1/W_jj.
-    pub(super) a: Vec<f64>,
+    /// Bounds lo_j, hi_j (N·s; hi_j may be +∞), W_jj + d_j and its inverse, the compliance d_j.
+    pub(super) lower: Vec<f64>,
+    pub(super) upper: Vec<f64>,
     pub(super) w: Vec<f64>,
     pub(super) inv_w: Vec<f64>,
+    pub(super) compliance: Vec<f64>,
+    /// 1 where hi_j is finite, 0 where it is +∞ (then the upper slack and its multiplier drop out: s₁ is a dummy,
+    /// z₁ = 0, 1/s₁ = 0); `open` is 1 − `closed`.
+    pub(super) closed: Vec<f64>,
+    pub(super) open: Vec<f64>,
+    /// U_free,j (+ b_j once the iteration starts: the constant c_j of the QP).
     pub(super) u_free: Vec<f64>,
+    /// The law velocity r = (W + D)p + c of the current iterate.
     pub(super) u: Vec<f64>,
     pub(super) p: Vec<f64>,
     pub(super) s1: Vec<f64>,
@@ -54,9 +62,13 @@ impl Sections {
     pub(super) fn fit(&mut self) {
         let len = self.index.len();
         for v in [
-            &mut self.a,
+            &mut self.lower,
+            &mut self.upper,
             &mut self.w,
             &mut self.inv_w,
+            &mut self.compliance,
+            &mut self.closed,
+            &mut self.open,
             &mut self.u_free,
             &mut self.u,
             &mut self.p,
@@ -100,12 +112,15 @@ impl Sections {
         self.rows.transpose_mul(weighted, out);
     }
 
-    /// max_k of the law residual |p − proj(p − u/W)|·W (m/s).
+    /// max_k of the law residual |p − proj_[lo, hi](p − r/w)|·w (m/s), w = W_kk + d_k.
     #[inline(always)]
     pub(super) fn law_residual(&self) -> f64 {
         let mut residual: f64 = 0.0;
-        for ((((&p, &u), &a), &w), &inv_w) in self.p.iter().zip(&self.u).zip(&self.a).zip(&self.w).zip(&self.inv_w) {
-            residual = residual.max((p - (p - u * inv_w).clamp(-a, a)).abs() * w);
+        let len = self.p.len();
+        let (u, lower, upper, w, inv_w) =
+            (&self.u[..len], &self.lower[..len], &self.upper[..len], &self.w[..len], &self.inv_w[..len]);
+        for (k, &p) in self.p.iter().enumerate() {
+            residual = residual.max((p - (p - u[k] * inv_w[k]).clamp(lower[k], upper[k])).abs() * w[k]);
         }
         residual
     }

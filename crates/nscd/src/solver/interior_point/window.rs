@@ -4,21 +4,21 @@
 
 use super::BandedInteriorPoint;
 use super::iteration::Subproblem;
-use crate::solver::FrictionProblem;
+use crate::solver::InteractionProblem;
 
 impl BandedInteriorPoint {
     /// Re-solve the sections within `margin` of the ones violating the law (residuals in `self.check`, v in
     /// `self.v`), on the window's DOFs. Returns None when the window would be the whole problem.
     pub(super) fn solve_window(
         &mut self,
-        problem: &FrictionProblem,
+        problem: &InteractionProblem,
         p: &mut [f64],
         tolerance: f64,
         margin: f64,
         budget: usize,
     ) -> crate::Result<Option<usize>> {
-        let positions = problem.contacts.positions();
-        let rows = problem.contacts.rows();
+        let positions = problem.interactions.positions();
+        let rows = problem.interactions.rows();
         let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
         for &j in &self.all_active {
             if problem.section_residual(j, self.check[j], p[j]) > tolerance {
@@ -78,7 +78,7 @@ impl BandedInteriorPoint {
     /// of them together within `max_iterations`.
     pub(super) fn solve_windows(
         &mut self,
-        problem: &FrictionProblem,
+        problem: &InteractionProblem,
         v_free: &[f64],
         u_free: &[f64],
         p: &mut [f64],

@@ -2,8 +2,8 @@
 
 use fem_beam::reference::uic60_on_soft_soil;
 use fem_beam::{BeamModel, Support, Supports};
-use friction::coulomb::{natural_residual, project};
-use friction::{ContactKind, DeviceLayout, Devices, DistributedFriction, FrictionError, Quadrature};
+use friction::law::{natural_residual, project};
+use friction::{DeviceLayout, Devices, DistributedFriction, FrictionError, InteractionKind, Quadrature};
 
 fn model(supports: Supports) -> BeamModel {
     let case = uic60_on_soft_soil();
@@ -20,13 +20,13 @@ fn devices_snap_to_nearest_node_ties_going_right() {
     assert_eq!(snapped[0], 13.0);
     assert_eq!(snapped[1], 25.0);
     assert_eq!(snapped[2], 38.0);
-    let set = devices.contact_set(&m).unwrap();
+    let set = devices.interactions(&m).unwrap();
     assert_eq!(set.len(), 15);
     assert_eq!(set.total_capacity(), 15.0 * 50e3);
     assert!(set.rows().iter().all(|r| r.len() == 1));
-    assert!(set.kinds().iter().all(|k| *k == ContactKind::Device));
+    assert!(set.kinds().iter().all(|k| *k == InteractionKind::Device));
     // 199 devices on 200 elements sit on every interior node.
-    let all = Devices::uniform(199, 1e3).contact_set(&m).unwrap();
+    let all = Devices::uniform(199, 1e3).interactions(&m).unwrap();
     assert_eq!(all.len(), 199);
     assert_eq!(all.positions()[0], 1.0);
     assert_eq!(all.total_capacity(), 199.0 * 1e3);
@@ -36,15 +36,15 @@ fn devices_snap_to_nearest_node_ties_going_right() {
 fn devices_on_one_node_merge_and_too_many_are_rejected() {
     let m = model(Supports::default());
     let devices = Devices { layout: DeviceLayout::Positions(vec![10.2, 9.9, 50.0]), force: 1e3 };
-    let set = devices.contact_set(&m).unwrap();
+    let set = devices.interactions(&m).unwrap();
     assert_eq!(set.len(), 2);
-    assert_eq!(set.bounds(), &[2e3, 1e3]);
+    assert_eq!([set.capacity(0), set.capacity(1)], [2e3, 1e3]);
     assert_eq!(set.positions(), &[10.0, 50.0]);
-    let err = Devices::uniform(200, 1e3).contact_set(&m).unwrap_err();
+    let err = Devices::uniform(200, 1e3).interactions(&m).unwrap_err();
     assert!(matches!(err, FrictionError::InvalidCount { field: "devices.count", value: 200, .. }), "{err}");
-    let err = Devices::uniform(3, -1.0).contact_set(&m).unwrap_err();
+    let err = Devices::uniform(3, -1.0).interactions(&m).unwrap_err();
     assert!(err.to_string().contains("devices.force"), "{err}");
-    let err = Devices { layout: DeviceLayout::Positions(vec![250.0]), force: 1.0 }.contact_set(&m).unwrap_err();
+    let err = Devices { layout: DeviceLayout::Positions(vec![250.0]), force: 1.0 }.interactions(&m).unwrap_err();
     assert!(err.to_string().contains("position"), "{err}");
 }
 
@@ -55,7 +55,7 @@ fn distributed_capacity_is_exact() {
         for j in [2usize, 4, 6] {
             let fu = 995.0;
             let d = DistributedFriction { force_per_length: fu, subdivisions: j, quadrature };
-            let set = d.contact_set(&free).unwrap();
+            let set = d.interactions(&free).unwrap();
             assert_eq!(set.len(), j * 200 + 1);
             // Sums of l/J-type weights: exact up to the round-off of ~800 additions.
             assert!((set.total_capacity() - fu * 200.0).abs() < 1e-12 * fu * 200.0, "{quadrature:?}, J = {j}");
@@ -64,7 +64,7 @@ fn distributed_capacity_is_exact() {
     }
     // Pinned ends: the two end sections cannot move and are dropped with their bounds.
     let pinned = model(Supports::default());
-    let set = DistributedFriction::new(1000.0).contact_set(&pinned).unwrap();
+    let set = DistributedFriction::new(1000.0).interactions(&pinned).unwrap();
     assert_eq!(set.len(), 4 * 200 - 1);
     assert!((set.dropped_capacity() - 2.0 * 1000.0 * 0.125).abs() < 1e-9);
     assert!((set.total_capacity() + set.dropped_capacity() - 200e3).abs() < 1e-7);
@@ -73,7 +73,7 @@ fn distributed_capacity_is_exact() {
 #[test]
 fn distributed_rows_interpolate_the_deflection() {
     let m = model(Supports::default());
-    let set = DistributedFriction::new(1.0).contact_set(&m).unwrap();
+    let set = DistributedFriction::new(1.0).interactions(&m).unwrap();
     // A velocity field that is a cubic on the element is reproduced exactly at every section.
     let full: Vec<f64> = (0..m.dofs().full_len())
         .map(|d| {
@@ -95,7 +95,7 @@ fn distributed_rows_interpolate_the_deflection() {
 fn simpson_needs_even_subdivisions() {
     let m = model(Supports::default());
     let d = DistributedFriction { force_per_length: 1.0, subdivisions: 3, quadrature: Quadrature::Simpson };
-    let err = d.contact_set(&m).unwrap_err();
+    let err = d.interactions(&m).unwrap_err();
     assert!(err.to_string().contains("distributed.subdivisions"), "{err}");
     assert!(DistributedFriction { force_per_length: f64::NAN, ..Default::default() }.validate().is_err());
 }
@@ -103,15 +103,15 @@ fn simpson_needs_even_subdivisions() {
 #[test]
 fn coulomb_residual_vanishes_exactly_on_the_law() {
     let a = 2.0;
-    assert_eq!(project(3.0, a), 2.0);
-    assert_eq!(project(-3.0, a), -2.0);
-    assert_eq!(project(0.5, a), 0.5);
+    assert_eq!(project(3.0, -a, a), 2.0);
+    assert_eq!(project(-3.0, -a, a), -2.0);
+    assert_eq!(project(0.5, -a, a), 0.5);
     for rho in [1e-3, 1.0, 1e3] {
-        assert_eq!(natural_residual(0.0, 1.3, a, rho), 0.0); // stuck, inside the bound
-        assert_eq!(natural_residual(0.7, -a, a, rho), 0.0); // slipping forward, impulse backward
-        assert_eq!(natural_residual(-0.7, a, a, rho), 0.0);
-        assert!((natural_residual(0.01, 1.0, a, rho) - 0.01).abs() < 1e-12 || rho * 0.01 > 3.0); // stuck but moving
-        assert!(natural_residual(0.7, a, a, rho) > 0.0); // impulse along the motion
-        assert!(natural_residual(0.7, -1.0, a, rho) > 0.0); // slipping below the bound
+        assert_eq!(natural_residual(0.0, 1.3, -a, a, rho), 0.0); // stuck, inside the bound
+        assert_eq!(natural_residual(0.7, -a, -a, a, rho), 0.0); // slipping forward, impulse backward
+        assert_eq!(natural_residual(-0.7, a, -a, a, rho), 0.0);
+        assert!((natural_residual(0.01, 1.0, -a, a, rho) - 0.01).abs() < 1e-12 || rho * 0.01 > 3.0); // stuck but moving
+        assert!(natural_residual(0.7, a, -a, a, rho) > 0.0); // impulse along the motion
+        assert!(natural_residual(0.7, -1.0, -a, a, rho) > 0.0); // slipping below the bound
     }
 }

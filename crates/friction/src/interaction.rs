@@ -1,0 +1,275 @@
+//! Interactions: the rows H_α, laws and kinds that friction, contact and compliant supports all reduce to
+//! (docs/theory.md §4, §9).
+//!
+//! Row α maps the free-DOF velocity q̇ to the interaction's relative velocity U_α = H_α q̇ (m/s): the velocity of a
+//! friction section, or the rate of a contact gap g_α = g₀ + H_α q. Its force r_α (N) acts on the DOFs as H_αᵀ r_α.
+//! A row has at most four entries: the Hermite shape functions of the element containing the section (w and θ
+//! DOFs), or a single entry for a section on a node.
+
+/// What an interaction represents: the energy ledger books the work of each kind apart.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum InteractionKind {
+    /// A discrete friction device (FDD) on a node.
+    Device,
+    /// A section of friction distributed in the ballast.
+    Ballast,
+    /// A unilateral contact (a wheel on the rail, a stop).
+    Contact,
+    /// A unilateral support of the structure (a foundation that cannot pull).
+    Foundation,
+}
+
+impl InteractionKind {
+    /// Whether the kind is friction (its work is friction work).
+    pub fn is_friction(self) -> bool {
+        matches!(self, InteractionKind::Device | InteractionKind::Ballast)
+    }
+}
+
+/// The law of an interaction (docs/theory.md §9). The gap of a unilateral law is g = `gap` + H_α q (m, positive
+/// open), so U_α = ġ.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Law {
+    /// Coulomb friction r ∈ −F·Sign(U) with maximal force `capacity` F ≥ 0 (N): impulses in [−hF, hF].
+    Coulomb {
+        /// F (N).
+        capacity: f64,
+    },
+    /// Rigid unilateral contact g ≥ 0, force ≥ 0, with Newton impact of restitution e ∈ [0, 1]: active in a step
+    /// when the predicted gap g_k + h U_k / 2 ≤ 0, then 0 ≤ p ⊥ U_{k+1} + e U_k ≥ 0.
+    Signorini {
+        /// g₀: the gap at q = 0 (m).
+        gap: f64,
+        /// e ∈ [0, 1].
+        restitution: f64,
+    },
+    /// A linear spring k_c in series with a unilateral stop: force k_c⟨−g⟩₊ ≥ 0, integrated implicitly.
+    Compliant {
+        /// g₀: the gap at q = 0 (m).
+        gap: f64,
+        /// k_c > 0 (N/m).
+        stiffness: f64,
+    },
+}
+
+impl Law {
+    /// The Coulomb capacity F (N), zero for the unilateral laws.
+    pub fn capacity(&self) -> f64 {
+        match *self {
+            Law::Coulomb { capacity } => capacity,
+            _ => 0.0,
+        }
+    }
+
+    /// Whether the impulse bounds change from step to step (they do for the unilateral laws, whose state is the gap).
+    pub fn depends_on_state(&self) -> bool {
+        !matches!(self, Law::Coulomb { .. })
+    }
+}
+
+/// A sparse row over the free DOFs, at most four entries.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct InteractionRow {
+    dofs: [usize; 4],
+    /// The entries, zero past `len`.
+    values: [f64; 4],
+    len: usize,
+    /// Whether the entries sit in consecutive DOFs from the first on (every Hermite element row does): products
+    /// then read four DOFs from the first, the missing entries multiplying exact zeros — the same sums without a
+    /// loop of variable length.
+    contiguous: bool,
+}
+
+impl InteractionRow {
+    /// A row from (free DOF, value) pairs; exact zeros are skipped, entries are sorted by DOF. At most four
+    /// distinct entries.
+    pub fn from_entries(entries: impl IntoIterator<Item = (usize, f64)>) -> Self {
+        let mut pairs: Vec<(usize, f64)> = entries.into_iter().filter(|e| e.1 != 0.0).collect();
+        pairs.sort_by_key(|e| e.0);
+        assert!(pairs.len() <= 4, "an interaction row has at most four entries");
+        assert!(pairs.windows(2).all(|w| w[0].0 < w[1].0), "an interaction row names each DOF once");
+        let contiguous = pairs.iter().enumerate().all(|(k, e)| e.0 == pairs[0].0 + k);
+        let mut row = Self { dofs: [0; 4], values: [0.0; 4], len: pairs.len(), contiguous };
+        for (k, (dof, value)) in pairs.into_iter().enumerate() {
+            row.dofs[k] = dof;
+            row.values[k] = value;
+        }
+        row
+    }
+
+    /// Number of non-zero entries.
+    pub fn len(&self) -> usize {
+        self.len
+    }
+
+    /// Whether the row has no entry (a section on a support).
+    pub fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+
+    /// The (free DOF, value) entries.
+    pub fn entries(&self) -> impl Iterator<Item = (usize, f64)> + '_ {
+        (0..self.len).map(|k| (self.dofs[k], self.values[k]))
+    }
+
+    /// The free DOFs of the entries, ascending.
+    pub fn dofs(&self) -> &[usize] {
+        &self.dofs[..self.len]
+    }
+
+    /// The values of the entries, in the order of [`InteractionRow::dofs`].
+    pub fn values(&self) -> &[f64] {
+        &self.values[..self.len]
+    }
+
+    /// H_j·v.
+    #[inline]
+    pub fn dot(&self, v: &[f64]) -> f64 {
+        let first = self.dofs[0];
+        if self.contiguous && first + 4 <= v.len() {
+            let (h, x) = (&self.values, &v[first..first + 4]);
+            return h[0] * x[0] + h[1] * x[1] + h[2] * x[2] + h[3] * x[3];
+        }
+        let mut s = 0.0;
+        for k in 0..self.len {
+            s += self.values[k] * v[self.dofs[k]];
+        }
+        s
+    }
+
+    /// out += scale·H_jᵀ.
+    #[inline]
+    pub fn add_transpose(&self, scale: f64, out: &mut [f64]) {
+        let first = self.dofs[0];
+        if self.contiguous && first + 4 <= out.len() {
+            let out = &mut out[first..first + 4];
+            for k in 0..4 {
+                out[k] += scale * self.values[k];
+            }
+            return;
+        }
+        for k in 0..self.len {
+            out[self.dofs[k]] += scale * self.values[k];
+        }
+    }
+
+    /// Smallest and largest free DOF touched (for band structure).
+    pub fn dof_span(&self) -> Option<(usize, usize)> {
+        // The DOFs are sorted.
+        let d = &self.dofs[..self.len];
+        Some((*d.first()?, *d.last()?))
+    }
+}
+
+/// Rows H_α with their laws, positions (m) and kinds.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct InteractionSet {
+    rows: Vec<InteractionRow>,
+    laws: Vec<Law>,
+    positions: Vec<f64>,
+    kinds: Vec<InteractionKind>,
+    dropped_capacity: f64,
+}
+
+impl InteractionSet {
+    /// An empty set (no friction, no contact).
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Add an interaction; an empty row (a section on a support, which cannot move) is dropped and its Coulomb
+    /// capacity counted in [`InteractionSet::dropped_capacity`].
+    pub fn push(&mut self, row: InteractionRow, law: Law, position: f64, kind: InteractionKind) {
+        if row.is_empty() {
+            self.dropped_capacity += law.capacity();
+        } else {
+            self.rows.push(row);
+            self.laws.push(law);
+            self.positions.push(position);
+            self.kinds.push(kind);
+        }
+    }
+
+    /// A Coulomb friction section of capacity F (N): [`InteractionSet::push`] with [`Law::Coulomb`].
+    pub fn push_friction(&mut self, row: InteractionRow, capacity: f64, position: f64, kind: InteractionKind) {
+        self.push(row, Law::Coulomb { capacity }, position, kind);
+    }
+
+    /// Append all interactions of another set.
+    pub fn extend(&mut self, other: InteractionSet) {
+        self.rows.extend(other.rows);
+        self.laws.extend(other.laws);
+        self.positions.extend(other.positions);
+        self.kinds.extend(other.kinds);
+        self.dropped_capacity += other.dropped_capacity;
+    }
+
+    /// Number of interactions m.
+    pub fn len(&self) -> usize {
+        self.rows.len()
+    }
+
+    /// Whether there is no interaction at all.
+    pub fn is_empty(&self) -> bool {
+        self.rows.is_empty()
+    }
+
+    /// The rows H_α.
+    pub fn rows(&self) -> &[InteractionRow] {
+        &self.rows
+    }
+
+    /// The laws.
+    pub fn laws(&self) -> &[Law] {
+        &self.laws
+    }
+
+    /// The Coulomb capacity F_α of interaction α (N; zero for a unilateral law).
+    pub fn capacity(&self, j: usize) -> f64 {
+        self.laws[j].capacity()
+    }
+
+    /// Positions x_α (m).
+    pub fn positions(&self) -> &[f64] {
+        &self.positions
+    }
+
+    /// Kinds.
+    pub fn kinds(&self) -> &[InteractionKind] {
+        &self.kinds
+    }
+
+    /// Whether every law is Coulomb friction: then the step's bounds are fixed for the whole run.
+    pub fn is_friction_only(&self) -> bool {
+        !self.laws.iter().any(Law::depends_on_state)
+    }
+
+    /// Σ F_α over the kept friction sections (N).
+    pub fn total_capacity(&self) -> f64 {
+        self.laws.iter().map(Law::capacity).sum()
+    }
+
+    /// Coulomb capacity of the sections dropped because they sit on a support (N).
+    pub fn dropped_capacity(&self) -> f64 {
+        self.dropped_capacity
+    }
+
+    /// U = H v.
+    pub fn velocities(&self, v: &[f64], u: &mut [f64]) {
+        for (uj, row) in u.iter_mut().zip(&self.rows) {
+            *uj = row.dot(v);
+        }
+    }
+
+    /// out += Hᵀ p.
+    pub fn add_transpose(&self, p: &[f64], out: &mut [f64]) {
+        for (row, &pj) in self.rows.iter().zip(p) {
+            row.add_transpose(pj, out);
+        }
+    }
+
+    /// The index of the interaction at `x` within `tolerance` (m), if any (first match).
+    pub fn section_at(&self, x: f64, tolerance: f64) -> Option<usize> {
+        self.positions.iter().position(|&p| (p - x).abs() <= tolerance)
+    }
+}

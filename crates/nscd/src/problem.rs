@@ -1,0 +1,224 @@
+//! The one-step problem of every interaction (docs/theory.md §5, §9): the box-constrained convex QP
+//!
+//! ```text
+//! min ½ pᵀ(W + D)p + cᵀp   s.t.  lo ≤ p ≤ hi,    W = H M̂⁻¹Hᵀ,  D = diag(d),  c = H v_free + b
+//! ```
+//!
+//! with v_{k+1} = v_free + M̂⁻¹Hᵀp. Its optimality conditions are the law of [`friction::law`] with the law velocity
+//! r = (W + D)p + c = U_{k+1} + b + d∘p, U_{k+1} = H v_{k+1}. The run's data (M̂, its factor, W's diagonal, the impulse
+//! responses) are made once; the step's law (lo, hi, d, b) is set from each law by [`InteractionProblem::update`]:
+//!
+//! - Coulomb friction of capacity F: [−hF, hF], d = 0, b = 0 (fixed for the run);
+//! - Signorini contact, gap g = g₀ + H q: in the step's index set when the predicted gap g_k + γhU_k ≤ 0
+//!   (γ = ½): [0, +∞), d = 0, b = e·U_k (Newton impact); otherwise [0, 0];
+//! - compliant stop of stiffness k_c, penetration δ = −g: [0, +∞), d = 1/(h²θk_c), b = −(δ_k − h(1−θ)U_k)/(hθ),
+//!   so that a positive impulse is p = h k_c δ_{k+1}.
+
+use crate::kernels::axpy;
+use crate::solver::VELOCITY_FLOOR;
+use crate::solver::response::ImpulseResponses;
+use crate::stepper::{Integration, iteration_matrix};
+use crate::system::LinearSystem;
+use banded::{BandedLdlt, SymmetricBanded};
+use friction::law::natural_residual;
+use friction::{InteractionSet, Law};
+
+/// γ of Moreau's index-set rule for rigid contact: a contact enters the step when g_k + γ h U_k ≤ 0.
+pub const PREDICTION_WEIGHT: f64 = 0.5;
+
+/// The law of one step, per interaction: impulse bounds (N·s), compliance d (m/s per N·s), drift b (m/s).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct StepLaw {
+    /// lo (N·s), may be −∞.
+    pub lower: Vec<f64>,
+    /// hi (N·s), may be +∞.
+    pub upper: Vec<f64>,
+    /// d ≥ 0 (m/s per N·s); fixed for the run.
+    pub compliance: Vec<f64>,
+    /// b (m/s).
+    pub drift: Vec<f64>,
+}
+
+impl StepLaw {
+    /// r = U + b + d·p: the velocity the law of interaction j holds against its impulse.
+    #[inline]
+    pub fn law_velocity(&self, j: usize, u: f64, p: f64) -> f64 {
+        u + self.drift[j] + self.compliance[j] * p
+    }
+
+    /// Whether interaction j has room to move this step (lo < hi); otherwise its impulse is lo.
+    #[inline]
+    pub fn is_free(&self, j: usize) -> bool {
+        self.lower[j] < self.upper[j]
+    }
+}
+
+/// The data of every step of a run: M̂ and its LDLᵀ factors (always of that matrix: both are made here), the
+/// interactions, the diagonal of W + D and the step's law. It owns all of it, so a stepper built on it borrows
+/// nothing.
+#[derive(Debug)]
+pub struct InteractionProblem {
+    /// The interactions.
+    pub interactions: InteractionSet,
+    /// M̂ = M + hθC + h²θ²K.
+    pub m_hat: SymmetricBanded,
+    /// LDLᵀ factors of M̂.
+    pub factor: BandedLdlt,
+    /// The step h and θ the problem is built for.
+    pub integration: Integration,
+    /// The law of the current step.
+    pub law: StepLaw,
+    /// W_jj + d_j (m/s per N·s), W_jj = H_j M̂⁻¹ H_jᵀ.
+    pub delassus_diagonal: Vec<f64>,
+    /// G_j = M̂⁻¹H_jᵀ, truncated to round-off, when few and short enough to beat a solve (see [`ImpulseResponses`]).
+    pub responses: Option<ImpulseResponses>,
+    /// Whether the law changes from step to step (some unilateral interaction).
+    varying: bool,
+}
+
+impl InteractionProblem {
+    /// The problem of a step of `integration` on `system`: M̂ = M + hθC + h²θ²K is built and factored here
+    /// (docs/theory.md §5).
+    pub fn new(system: &LinearSystem, interactions: InteractionSet, integration: Integration) -> crate::Result<Self> {
+        Self::with_matrix(interactions, iteration_matrix(system, integration), integration)
+    }
+
+    /// The same for a given SPD iteration matrix `m_hat` (e.g. a test problem), factored here. The law is set for
+    /// the state q = 0, v = 0 until the first [`InteractionProblem::update`].
+    pub fn with_matrix(
+        interactions: InteractionSet,
+        m_hat: SymmetricBanded,
+        integration: Integration,
+    ) -> crate::Result<Self> {
+        let factor = m_hat.factor()?;
+        let (h, theta) = (integration.step, integration.theta);
+        let m = interactions.len();
+        let mut law =
+            StepLaw { lower: vec![0.0; m], upper: vec![0.0; m], compliance: vec![0.0; m], drift: vec![0.0; m] };
+        for (j, l) in interactions.laws().iter().enumerate() {
+            match *l {
+                Law::Coulomb { capacity } => {
+                    law.upper[j] = h * capacity;
+                    law.lower[j] = -law.upper[j];
+                }
+                Law::Signorini { .. } => {}
+                Law::Compliant { stiffness, .. } => law.compliance[j] = 1.0 / (h * h * theta * stiffness),
+            }
+        }
+        let (responses, mut delassus_diagonal) = ImpulseResponses::new(&interactions, &factor);
+        for (w, d) in delassus_diagonal.iter_mut().zip(&law.compliance) {
+            *w += d;
+        }
+        let varying = !interactions.is_friction_only();
+        let mut problem = Self { interactions, m_hat, factor, integration, law, delassus_diagonal, responses, varying };
+        let n = problem.m_hat.order();
+        problem.update(&vec![0.0; n], &vec![0.0; n]);
+        Ok(problem)
+    }
+
+    /// Set the law of the step from the state (q_k, v_k) (docs/theory.md §9; nothing to do for friction alone).
+    pub fn update(&mut self, q: &[f64], v: &[f64]) {
+        if !self.varying {
+            return;
+        }
+        let (h, theta) = (self.integration.step, self.integration.theta);
+        let rows = self.interactions.rows();
+        for (j, l) in self.interactions.laws().iter().enumerate() {
+            let (gap, u) = match *l {
+                Law::Coulomb { .. } => continue,
+                Law::Signorini { gap, .. } | Law::Compliant { gap, .. } => (gap + rows[j].dot(q), rows[j].dot(v)),
+            };
+            let law = &mut self.law;
+            match *l {
+                Law::Signorini { restitution, .. } => {
+                    let closing = gap + PREDICTION_WEIGHT * h * u <= 0.0;
+                    law.lower[j] = 0.0;
+                    law.upper[j] = if closing { f64::INFINITY } else { 0.0 };
+                    law.drift[j] = if closing { restitution * u } else { 0.0 };
+                }
+                Law::Compliant { .. } => {
+                    law.lower[j] = 0.0;
+                    law.upper[j] = f64::INFINITY;
+                    law.drift[j] = -(-gap - h * (1.0 - theta) * u) / (h * theta);
+                }
+                Law::Coulomb { .. } => {}
+            }
+        }
+    }
+
+    /// Whether the law changes from step to step.
+    pub fn is_varying(&self) -> bool {
+        self.varying
+    }
+
+    /// Bring impulses into the step's bounds (a warm start from a step with other bounds).
+    pub fn clamp_to_bounds(&self, p: &mut [f64]) {
+        for (j, pj) in p.iter_mut().enumerate() {
+            *pj = pj.clamp(self.law.lower[j], self.law.upper[j]);
+        }
+    }
+
+    /// v += M̂⁻¹Hᵀp: from the stored responses when there are any, else by one banded solve (`work`: n scratch).
+    pub fn add_response(&self, p: &[f64], v: &mut [f64], work: &mut [f64]) {
+        match &self.responses {
+            Some(responses) => responses.add(p, v),
+            None => {
+                self.solve_response(p, work);
+                axpy(1.0, work, v);
+            }
+        }
+    }
+
+    /// out = M̂⁻¹Hᵀp by one banded solve.
+    fn solve_response(&self, p: &[f64], out: &mut [f64]) {
+        out.iter_mut().for_each(|x| *x = 0.0);
+        self.interactions.add_transpose(p, out);
+        self.factor.solve_in_place(out);
+    }
+
+    /// Number of interactions.
+    pub fn len(&self) -> usize {
+        self.delassus_diagonal.len()
+    }
+
+    /// Whether there is no interaction.
+    pub fn is_empty(&self) -> bool {
+        self.delassus_diagonal.is_empty()
+    }
+
+    /// |p_j − proj(p_j − r_j/(W_jj + d_j))|·(W_jj + d_j) (m/s) of interaction j with relative velocity `u` =
+    /// U_{k+1}: zero exactly when (u, p) satisfy the step's law.
+    #[inline]
+    pub fn section_residual(&self, j: usize, u: f64, p: f64) -> f64 {
+        let law = &self.law;
+        let r = law.law_velocity(j, u, p);
+        natural_residual(r, p, law.lower[j], law.upper[j], 1.0 / self.delassus_diagonal[j])
+    }
+
+    /// max_j of [`InteractionProblem::section_residual`] (m/s).
+    pub fn law_residual(&self, u: &[f64], p: &[f64]) -> f64 {
+        (0..self.len()).map(|j| self.section_residual(j, u[j], p[j])).fold(0.0, f64::max)
+    }
+
+    /// The step's outcome for impulses p, as the stepper will form it: v = v_free + M̂⁻¹Hᵀp and U = H v (into the
+    /// given buffers), and the law residual (m/s).
+    pub fn outcome(&self, v_free: &[f64], p: &[f64], v: &mut [f64], u: &mut [f64]) -> f64 {
+        if let Some(responses) = &self.responses {
+            v.copy_from_slice(v_free);
+            responses.add(p, v);
+        } else {
+            self.solve_response(p, v);
+            axpy(1.0, v_free, v);
+        }
+        self.interactions.velocities(v, u);
+        self.law_residual(u, p)
+    }
+
+    /// Absolute tolerance (m/s) for a relative tolerance: relative to the largest of |U_free,j| and |U_free,j + b_j|,
+    /// the velocities the step starts from.
+    pub fn absolute_tolerance(&self, relative: f64, u_free: &[f64]) -> f64 {
+        let scale =
+            u_free.iter().zip(&self.law.drift).fold(VELOCITY_FLOOR, |m, (u, b)| m.max(u.abs()).max((u + b).abs()));
+        relative * scale
+    }
+}
