@@ -7,9 +7,9 @@ use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use fem_beam::BeamModel;
 use fem_beam::reference::uic60_on_soft_soil;
 use friction::{Devices, DistributedFriction, InteractionSet};
-use nscd::{RunSettings, Simulation};
 use std::hint::black_box;
 use std::time::Duration;
+use track::{RunSettings, Simulation};
 
 fn cases(model: &BeamModel) -> Vec<(&'static str, InteractionSet)> {
     vec![
@@ -39,7 +39,7 @@ fn whole_runs(c: &mut Criterion) {
 fn friction_free_against_bare_solves(c: &mut Criterion) {
     let model = uic60_on_soft_soil().model().unwrap();
     let settings = RunSettings::default();
-    let system = nscd::LinearSystem::from_beam(&model);
+    let system = track::system::beam_system(&model);
     let h = settings.integration.load_advance / settings.moving.speed;
     let m_hat = nscd::stepper::iteration_matrix(
         &system,

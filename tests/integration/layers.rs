@@ -2,11 +2,12 @@
 //! crate that started to use a higher one. Read from each crate's Cargo.toml (normal, dev and build dependencies).
 
 /// The layers, bottom first: (package name, folder).
-const LAYERS: [(&str, &str); 6] = [
+const LAYERS: [(&str, &str); 7] = [
     ("banded", "crates/banded"),
     ("fem-beam", "crates/fem-beam"),
     ("friction", "crates/friction"),
     ("nscd", "crates/nscd"),
+    ("track", "crates/track"),
     ("study", "crates/study"),
     ("frictrack", "crates/cli"),
 ];
@@ -41,4 +42,34 @@ fn every_dependency_points_down() {
     // The bottom crate knows nothing of the others; nscd reaches the banded algebra directly, not through fem-beam.
     assert!(workspace_dependencies("crates/banded").is_empty());
     assert!(workspace_dependencies("crates/nscd").contains(&"banded".to_string()));
+}
+
+/// Every `.rs` file under `folder` (relative to the workspace), recursively.
+fn rust_files(folder: &std::path::Path, out: &mut Vec<std::path::PathBuf>) {
+    for entry in std::fs::read_dir(folder).unwrap() {
+        let path = entry.unwrap().path();
+        if path.is_dir() {
+            rust_files(&path, out);
+        } else if path.extension().is_some_and(|e| e == "rs") {
+            out.push(path);
+        }
+    }
+}
+
+/// The engine knows no beam (issue 16, docs/architecture.md): nscd depends on no beam crate in any dependency table,
+/// and none of its sources, tests or examples names the beam crate or a beam type; the beam application lives in
+/// `track`.
+#[test]
+fn the_engine_uses_no_beam_type() {
+    assert!(!workspace_dependencies("crates/nscd").contains(&"fem-beam".to_string()));
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..").join("crates/nscd");
+    let mut files = Vec::new();
+    rust_files(&root, &mut files);
+    assert!(files.len() > 10, "nscd's sources found: {}", files.len());
+    for file in files {
+        let text = std::fs::read_to_string(&file).unwrap();
+        for word in ["fem_beam", "BeamModel", "DofMap", "Mesh", "MovingLoad", "Simulation"] {
+            assert!(!text.contains(word), "{} names `{word}`", file.display());
+        }
+    }
 }

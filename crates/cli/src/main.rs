@@ -86,12 +86,12 @@ fn main() -> ExitCode {
 }
 
 /// What to try after a friction step that did not converge, in terms of this command's flags. Measured
-/// (`cargo run --release -p nscd --example solver_table`): projection stalls on dense distributed sections,
+/// (`cargo run --release -p track --example solver_table`): projection stalls on dense distributed sections,
 /// Clarabel is limited by its own stopping criteria, the interior point by its iteration cap at tight tolerances.
 fn hint(error: &anyhow::Error) -> Option<&'static str> {
     use nscd::NscdError;
-    let stepping = match error.downcast_ref::<study::StudyError>() {
-        Some(study::StudyError::Stepping(e)) => Some(e),
+    let stepping = match (error.downcast_ref::<study::StudyError>(), error.downcast_ref::<track::TrackError>()) {
+        (Some(study::StudyError::Stepping(e)), _) | (_, Some(track::TrackError::Engine(e))) => Some(e),
         _ => error.downcast_ref::<NscdError>(),
     };
     match stepping? {
@@ -123,6 +123,8 @@ fn error_code(error: &anyhow::Error) -> u8 {
     } else if let Some(e) = error.downcast_ref::<fem_beam::FemError>() {
         Some(StudyError::from(e.clone()))
     } else if let Some(e) = error.downcast_ref::<friction::FrictionError>() {
+        Some(StudyError::from(e.clone()))
+    } else if let Some(e) = error.downcast_ref::<track::TrackError>() {
         Some(StudyError::from(e.clone()))
     } else {
         error.downcast_ref::<nscd::NscdError>().map(|e| StudyError::from(e.clone()))

@@ -9,11 +9,11 @@ use crate::scenario_args::ScenarioArgs;
 use anyhow::Result;
 use clap::Args;
 use friction::InteractionKind;
-use nscd::{RunResult, SnapshotAt};
 use serde::Serialize;
 use std::path::PathBuf;
 use std::time::Instant;
 use study::{Case, Scenario};
+use track::{RunResult, SnapshotAt};
 
 /// Options of `frictrack run`.
 #[derive(Debug, Args)]
@@ -138,7 +138,7 @@ fn write_outputs(
     scenario: &Scenario,
     report: &RunReport,
     result: &RunResult,
-    snapshots: &[nscd::Snapshot],
+    snapshots: &[track::Snapshot],
 ) -> Result<()> {
     use study::run_output::{HISTORY_COLUMNS, SNAPSHOT_COLUMNS, histories_csv, run_plots, snapshots_csv};
     let columns = |list: &[(&str, &str)]| {
@@ -181,7 +181,7 @@ fn report(scenario: &Scenario, case: &Case, result: &RunResult, wall_time: f64) 
         .collect();
     let window = result.window.unwrap_or_default();
     let x0 = settings.start_position();
-    let extreme = |x: &nscd::simulation::Extreme| ExtremeReport {
+    let extreme = |x: &track::simulation::Extreme| ExtremeReport {
         deflection: x.magnitude,
         position: x.position,
         time: x.time,

@@ -61,9 +61,6 @@ pub enum NscdError {
     /// A matrix of the step (M̂, or an interior-point Newton matrix) is not positive definite.
     #[error(transparent)]
     Linear(#[from] banded::BandedError),
-    /// An error from the beam layer.
-    #[error(transparent)]
-    Beam(#[from] fem_beam::FemError),
     /// An error from the friction layer.
     #[error(transparent)]
     Friction(#[from] friction::FrictionError),

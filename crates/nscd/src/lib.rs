@@ -1,28 +1,27 @@
-//! # nscd: nonsmooth contact dynamics for frictrack (docs/theory.md §5–§6)
+//! # nscd: nonsmooth contact dynamics for frictrack (docs/theory.md §5, §6, §9)
 //!
-//! The Moreau–Jean θ-method integrates M q̈ + C q̇ + K q ∈ F(t) + R(q̇), the friction R set-valued, with friction
-//! *impulses* per step found by a per-step solver, and an exact discrete energy balance.
+//! The Moreau–Jean θ-method integrates M q̈ + C q̇ + K q ∈ F(t) + Hᵀr, the interaction forces r set-valued (Coulomb
+//! friction, rigid and compliant unilateral contact), with *impulses* per step found by a per-step solver of one box
+//! QP, and an exact discrete energy balance. The engine knows systems, loads as forcings and interactions as rows
+//! with laws; it knows no beam (the `track` crate above it runs a load across the beam).
 //!
-//! - [`system`], [`forcing`]: the banded linear system and the moving load.
-//! - [`stepper`]: [`MoreauJean`], one step at a time, with its [`EnergyLedger`].
+//! - [`system`]: the banded linear system, one block or several stacked, with their [`system::DofLayout`].
+//! - [`forcing`]: the interface of external loads F(t).
+//! - [`problem`]: the one-step [`InteractionProblem`] and its update phase (the step's law from the state).
 //! - [`solver`]: projected Gauss–Seidel, a banded interior point, Clarabel (feature `clarabel`).
-//! - [`simulation`]: a whole run of the beam under a moving load, with its observers (extremes, histories at
-//!   sections, the global norm W̄, solver statistics).
+//! - [`stepper`]: [`MoreauJean`], one step at a time, with its [`EnergyLedger`].
 
 pub mod error;
 pub mod forcing;
 mod kernels;
 pub mod problem;
-pub mod simulation;
-pub mod snapshots;
 pub mod solver;
 pub mod stepper;
 pub mod system;
 
 pub use error::{NscdError, Result};
-pub use forcing::{Forcing, MovingLoad};
-pub use simulation::{InitialState, RunResult, RunSettings, Simulation, WindowExtremes};
-pub use snapshots::{Snapshot, SnapshotAt, SnapshotTaker};
+pub use forcing::Forcing;
+pub use problem::{InteractionProblem, StepLaw};
 pub use solver::{SolverKind, SolverSettings, StepReport, StepStatus};
 pub use stepper::{EnergyLedger, Integration, MoreauJean};
-pub use system::LinearSystem;
+pub use system::{DofLayout, LinearSystem};

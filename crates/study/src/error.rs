@@ -57,6 +57,15 @@ pub enum StudyError {
     Stepping(#[from] nscd::NscdError),
 }
 
+impl From<track::TrackError> for StudyError {
+    fn from(error: track::TrackError) -> Self {
+        match error {
+            track::TrackError::Engine(e) => StudyError::Stepping(e),
+            track::TrackError::Beam(e) => StudyError::Beam(e),
+        }
+    }
+}
+
 impl StudyError {
     /// Whether the error is the user's input (exit code 2) rather than a runtime failure.
     pub fn is_invalid_input(&self) -> bool {
@@ -76,7 +85,6 @@ impl StudyError {
             StudyError::Friction(e) => friction(e),
             StudyError::Stepping(e) => match e {
                 N::InvalidField { .. } | N::Unavailable(_) => true,
-                N::Beam(b) => beam(b),
                 N::Friction(f) => friction(f),
                 _ => false,
             },

@@ -5,8 +5,8 @@ use crate::error::Result;
 use crate::scenario::Case;
 use fem_beam::LoadVector;
 use fem_beam::section::Motion;
-use nscd::simulation::SectionHistory;
 use serde::{Deserialize, Serialize};
+use track::simulation::SectionHistory;
 
 /// Static mid-span response with the load at mid-span and no friction.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]

@@ -14,9 +14,9 @@ use crate::figures::{Curves, quantity_figure};
 use crate::number::row;
 use crate::plot::PlotSpec;
 use crate::scenario::Case;
-use nscd::{RunResult, Snapshot, SnapshotAt, SnapshotTaker};
 use std::fmt::Write as _;
 use std::sync::atomic::AtomicBool;
+use track::{RunResult, Snapshot, SnapshotAt, SnapshotTaker};
 
 /// The figures of one run, without extension (PNG and SVG each): histories then snapshots, deflection then moment.
 pub const FIGURE_STEMS: [&str; 4] =
@@ -49,7 +49,7 @@ pub fn run_with_snapshots(
 ) -> Result<(RunResult, Vec<Snapshot>)> {
     let settings = &case.settings;
     let mut taker = SnapshotTaker::new(&case.model, &case.interactions, settings, requests).map_err(|e| match e {
-        nscd::NscdError::InvalidField { value, allowed, .. } => {
+        track::TrackError::Engine(nscd::NscdError::InvalidField { value, allowed, .. }) => {
             crate::error::invalid("output.snapshot_times / snapshot_load_positions", value, allowed)
         }
         other => other.into(),
@@ -107,8 +107,8 @@ pub fn snapshots_csv(snapshots: &[Snapshot]) -> String {
 /// Figures of the histories (deflection and moment against the load position, one curve per section) and of the
 /// snapshots (deflected shape and moment along the beam, one curve per instant).
 pub fn run_plots(result: &RunResult, snapshots: &[Snapshot], title: &str) -> Vec<PlotSpec> {
-    let by_section = |value: &dyn Fn(&nscd::simulation::SectionHistory, usize) -> f64| -> Curves {
-        let curve = |(i, s): (usize, &nscd::simulation::SectionHistory)| {
+    let by_section = |value: &dyn Fn(&track::simulation::SectionHistory, usize) -> f64| -> Curves {
+        let curve = |(i, s): (usize, &track::simulation::SectionHistory)| {
             let points = (0..s.time.len()).map(|k| (s.load_position[k], value(s, k))).collect();
             (format!("x = {} m", s.position), 1 + i, points)
         };

@@ -83,7 +83,7 @@ fn build_and_run(text: &str) -> usize {
     {
         return 2;
     }
-    match nscd::Simulation::new(&case.model, &case.interactions, &case.settings).and_then(|s| s.run()) {
+    match track::Simulation::new(&case.model, &case.interactions, &case.settings).and_then(|s| s.run()) {
         Ok(_) => 3,
         Err(_) => 2,
     }

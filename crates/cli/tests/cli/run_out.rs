@@ -24,7 +24,7 @@ fn run_out_writes_histories_and_snapshots_that_match_the_library() {
         Some(study::scenario::DevicesSection { count: Some(7), positions: None, force: Some(20e3) });
     scenario.output.sections = vec![100.0, 25.0];
     let case = scenario.build().unwrap();
-    let result = nscd::Simulation::new(&case.model, &case.interactions, &case.settings).unwrap().run().unwrap();
+    let result = track::Simulation::new(&case.model, &case.interactions, &case.settings).unwrap().run().unwrap();
 
     let (header, rows) = read_csv(&dir.join("histories.csv"));
     assert_eq!(

@@ -59,7 +59,7 @@ pub(super) fn study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
         "dissipated_devices": runs[0].energy.dissipated(),
         "dissipated_distributed": runs[1].energy.dissipated(),
     });
-    let history = |i: usize, value: &dyn Fn(&nscd::simulation::SectionHistory, usize) -> f64| -> Vec<(f64, f64)> {
+    let history = |i: usize, value: &dyn Fn(&track::simulation::SectionHistory, usize) -> f64| -> Vec<(f64, f64)> {
         let h = &runs[i].histories[0];
         (0..h.time.len()).map(|k| (h.time[k], value(h, k))).collect()
     };
@@ -68,7 +68,7 @@ pub(super) fn study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
     let h = runs[0].step;
     let deflection = (0..2).map(|i| (labels[i].to_string(), colors[i], history(i, &|s, k| s.deflection[k] * 1e3)));
     let mobilised = (0..2).map(|i| {
-        let fraction = &|s: &nscd::simulation::SectionHistory, k: usize| {
+        let fraction = &|s: &track::simulation::SectionHistory, k: usize| {
             s.impulse.as_ref().map_or(0.0, |p| p[k] / (h * capacities[i]))
         };
         (labels[i].to_string(), colors[i], history(i, fraction))

@@ -5,8 +5,9 @@ use super::{Case, QuadratureKind, Scenario, SweepSection, fnv1a};
 use crate::error::{Result, StudyError, invalid};
 use fem_beam::{AbsorbingZones, BeamModel, Foundation, Mesh, Supports};
 use friction::{DeviceLayout, Devices, DistributedFriction, InteractionSet, Quadrature};
-use nscd::simulation::{IntegrationSettings, MovingLoadSettings, RecordSettings};
-use nscd::{InitialState, RunSettings, SolverSettings};
+use nscd::SolverSettings;
+use track::simulation::{IntegrationSettings, MovingLoadSettings, RecordSettings};
+use track::{InitialState, RunSettings};
 
 fn finite_positive(path: &str, value: f64, unit: &str) -> Result<()> {
     if value.is_finite() && value > 0.0 {
@@ -231,9 +232,9 @@ fn under(section: &str, error: StudyError) -> StudyError {
 }
 
 /// Rename a run-setting error's field to its path in the scenario file.
-fn scenario_path(error: nscd::NscdError) -> StudyError {
+fn scenario_path(error: track::TrackError) -> StudyError {
     match error {
-        nscd::NscdError::InvalidField { field, value, allowed } => {
+        track::TrackError::Engine(nscd::NscdError::InvalidField { field, value, allowed }) => {
             let path = match field {
                 "speed" => "load.speed",
                 "load" => "load.force",

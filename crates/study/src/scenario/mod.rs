@@ -16,9 +16,9 @@ pub use sections::*;
 use crate::error::{Result, StudyError, invalid};
 use fem_beam::BeamModel;
 use friction::InteractionSet;
-use nscd::RunSettings;
 use parse::{did_you_mean, key_path, line_column};
 use serde::{Deserialize, Serialize};
+use track::RunSettings;
 
 /// A whole case: beam, mesh, supports, foundation, load, friction, integration, sweep, output.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]

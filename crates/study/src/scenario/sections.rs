@@ -4,8 +4,9 @@
 use crate::error::{Result, invalid};
 use fem_beam::reference::uic60_on_soft_soil;
 use fem_beam::{Foundation, Mesh, Support};
-use nscd::{RunSettings, SolverKind};
+use nscd::SolverKind;
 use serde::{Deserialize, Serialize};
+use track::RunSettings;
 
 /// `[beam]`: the rail (UIC60 by default).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -293,8 +294,8 @@ pub struct OutputSection {
 impl OutputSection {
     /// The snapshot requests for a beam of length `length` (m): the times and load positions given, or the load at
     /// L/4, L/2 and 3L/4.
-    pub fn snapshots(&self, length: f64) -> Vec<nscd::SnapshotAt> {
-        use nscd::SnapshotAt;
+    pub fn snapshots(&self, length: f64) -> Vec<track::SnapshotAt> {
+        use track::SnapshotAt;
         let mut requests: Vec<SnapshotAt> = self.snapshot_times.iter().map(|&t| SnapshotAt::Time(t)).collect();
         requests.extend(self.snapshot_load_positions.iter().map(|&x| SnapshotAt::LoadPosition(x)));
         if requests.is_empty() {

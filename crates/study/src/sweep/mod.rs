@@ -18,14 +18,14 @@ use crate::error::{Result, StudyError, invalid};
 use crate::journal::Journal;
 use crate::number::row;
 use crate::scenario::Case;
-use nscd::simulation::StepView;
-use nscd::{RunResult, RunSettings, Simulation};
 use rayon::prelude::*;
 use serde::de::DeserializeOwned;
 use serde::{Deserialize, Serialize};
 use std::io::Write;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use track::simulation::StepView;
+use track::{RunResult, RunSettings, Simulation};
 
 /// What one run of a sweep reports.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]

@@ -187,23 +187,55 @@ impl InteractionSolver for BandedInteriorPoint {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use fem_beam::reference::uic60_on_soft_soil;
-    use friction::DistributedFriction;
+    use friction::{InteractionKind, InteractionRow, InteractionSet, Law};
+
+    /// A beam-like step without a beam: M̂ assembled from diagonally dominant 4 × 4 blocks over (w, θ) pairs of
+    /// `elements` elements (so SPD with half-bandwidth 3), and sections at the nodes and at ξ = ¼, ½, ¾ of every
+    /// element with rows (1 − ξ, ξ(1 − ξ)/10, ξ, −ξ(1 − ξ)/10) over the element's four DOFs — about twice as many
+    /// sections as DOFs, so W is singular as with distributed friction. Every seventh section is a compliant stop
+    /// pressed in by 1 mm (one-sided, with compliance and drift), the others Coulomb of `capacity`.
+    fn beam_like_problem(elements: usize, capacity: f64) -> InteractionProblem {
+        let n = 2 * (elements + 1);
+        let mut m_hat = SymmetricBanded::zeros(n, 3);
+        let block = [[4.0, 0.5, 1.0, -0.3], [0.5, 4.0, 0.3, -0.1], [1.0, 0.3, 4.0, -0.5], [-0.3, -0.1, -0.5, 4.0]];
+        for e in 0..elements {
+            for i in 0..4 {
+                for j in 0..=i {
+                    m_hat.add(2 * e + i, 2 * e + j, block[i][j]);
+                }
+            }
+        }
+        let mut interactions = InteractionSet::new();
+        for e in 0..elements {
+            let xis: &[f64] = if e + 1 == elements { &[0.0, 0.25, 0.5, 0.75, 1.0] } else { &[0.0, 0.25, 0.5, 0.75] };
+            for &xi in xis {
+                let bubble = 0.1 * xi * (1.0 - xi);
+                let row = InteractionRow::from_entries(
+                    [1.0 - xi, bubble, xi, -bubble].into_iter().enumerate().map(|(k, v)| (2 * e + k, v)),
+                );
+                let law = if interactions.len() % 7 == 3 {
+                    Law::Compliant { gap: -1e-3, stiffness: 50.0 }
+                } else {
+                    Law::Coulomb { capacity }
+                };
+                let kind = if law.depends_on_state() { InteractionKind::Foundation } else { InteractionKind::Ballast };
+                interactions.push(row, law, e as f64 + xi, kind);
+            }
+        }
+        let integration = crate::Integration { theta: 0.5, step: 1.0 };
+        InteractionProblem::with_matrix(interactions, m_hat, integration).expect("M̂ is SPD")
+    }
 
     /// The AVX2 build of the iteration must give the same bits as the baseline build: same operations, same order,
-    /// no fused multiply–add. A whole-beam step of the reference case with distributed friction and a wavy free
-    /// velocity (stick and slip of both signs), solved by both. (Without AVX2 there is only the baseline build and
-    /// nothing to compare.)
+    /// no fused multiply–add. A whole step of the beam-like problem with a wavy free velocity (stick and slip of both
+    /// signs, and one-sided stops), solved by both. (Without AVX2 there is only the baseline build and nothing to
+    /// compare.)
     #[test]
     fn avx2_and_baseline_iterations_agree_to_the_bit() {
         #[cfg(target_arch = "x86_64")]
         if std::arch::is_x86_feature_detected!("avx2") {
-            let model = uic60_on_soft_soil().model().expect("reference model");
-            let interactions = DistributedFriction::new(5e3).interactions(&model).expect("distributed friction");
-            let h = 0.1 / 200.0;
-            let system = crate::LinearSystem::from_beam(&model);
-            let integration = crate::Integration { theta: 0.5, step: h };
-            let problem = InteractionProblem::new(&system, interactions.clone(), integration).expect("M̂ is SPD");
+            let problem = beam_like_problem(100, 0.05);
+            let interactions = &problem.interactions;
             let m_hat = &problem.m_hat;
             let v_free: Vec<f64> = (0..m_hat.order()).map(|i| 0.3 * (0.05 * i as f64).sin() - 0.05).collect();
             let mut u_free = vec![0.0; interactions.len()];
@@ -230,8 +262,14 @@ mod tests {
             };
             let (baseline, avx2) = (solve(false), solve(true));
             assert!(baseline.0 > 3, "a nontrivial step: {} iterations", baseline.0);
-            let slipping = baseline.1.iter().zip(&problem.law.upper).filter(|(p, a)| p.abs() > 0.999 * *a).count();
+            let law = &problem.law;
+            let slipping = (0..interactions.len())
+                .filter(|&j| law.upper[j].is_finite() && baseline.1[j].abs() > 0.999 * law.upper[j])
+                .count();
+            let pressed =
+                (0..interactions.len()).filter(|&j| law.upper[j].is_infinite() && baseline.1[j] > 0.0).count();
             assert!(slipping > 10 && slipping < interactions.len() - 10, "stick and slip: {slipping} slipping");
+            assert!(pressed > 5, "one-sided stops in contact: {pressed}");
             assert_eq!(baseline.0, avx2.0);
             assert!(baseline.1.iter().zip(&avx2.1).all(|(a, b)| a.to_bits() == b.to_bits()));
         }

@@ -7,11 +7,12 @@
 //! ([`fem_beam::BeamModel::nodal_moments`]), with q̈ the step's mean acceleration (v_{k+1} − v_k)/h and f_e the
 //! moving load where it stands plus the friction forces p_j/h of the step at their sections.
 
-use crate::error::{NscdError, Result};
+use crate::error::Result;
 use crate::simulation::{RunSettings, StepView};
 use fem_beam::section::Motion;
 use fem_beam::{BeamModel, LoadVector};
 use friction::InteractionSet;
+use nscd::NscdError;
 
 /// When a snapshot is taken.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -50,7 +51,7 @@ pub struct SnapshotTaker<'a> {
     pending: Vec<(f64, SnapshotAt)>,
     next: usize,
     taken: Vec<Snapshot>,
-    error: Option<NscdError>,
+    error: Option<crate::TrackError>,
 }
 
 impl<'a> SnapshotTaker<'a> {
@@ -72,14 +73,14 @@ impl<'a> SnapshotTaker<'a> {
                 SnapshotAt::Time(t) => {
                     if !(t.is_finite() && (0.0..=end).contains(&t)) {
                         let allowed = format!("a snapshot time must lie in the run, [0, {end}] s");
-                        return Err(NscdError::InvalidField { field: "snapshots", value: t, allowed });
+                        return Err(NscdError::InvalidField { field: "snapshots", value: t, allowed }.into());
                     }
                     t
                 }
                 SnapshotAt::LoadPosition(x) => {
                     if !(x.is_finite() && (start..=length).contains(&x)) {
                         let allowed = format!("a snapshot load position must lie in [{start}, {length}] m");
-                        return Err(NscdError::InvalidField { field: "snapshots", value: x, allowed });
+                        return Err(NscdError::InvalidField { field: "snapshots", value: x, allowed }.into());
                     }
                     (x - start) / settings.moving.speed
                 }

@@ -3,7 +3,8 @@
 use super::common::{beam, relative_difference};
 use friction::{Devices, DistributedFriction, InteractionSet};
 use nalgebra::DVector;
-use nscd::{Forcing, MovingLoad, RunSettings, Simulation};
+use nscd::Forcing;
+use track::{MovingLoad, RunSettings, Simulation};
 
 /// The linear θ-method written independently, densely, in terms of v_{k+1}:
 /// (M + hθC + h²θ²K) v₁ = M v₀ + h F_θ − hC(1−θ)v₀ − hK q₀ − h²θ(1−θ)K v₀, q₁ = q₀ + h(θv₁ + (1−θ)v₀).

@@ -6,12 +6,14 @@
 
 use fem_beam::reference::uic60_on_soft_soil;
 use friction::{Devices, DistributedFriction, InteractionSet};
-use nscd::simulation::coupling_length;
+use nscd::MoreauJean;
 use nscd::solver::{SolverKind, SolverSettings};
 use nscd::stepper::Integration;
-use nscd::{LinearSystem, MoreauJean, MovingLoad};
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::sync::atomic::{AtomicUsize, Ordering};
+use track::MovingLoad;
+use track::simulation::coupling_length;
+use track::system::beam_system;
 
 /// The system allocator, counting allocations and reallocations.
 struct Counting;
@@ -45,7 +47,7 @@ fn allocations_in_steps(interactions: &InteractionSet, kind: SolverKind) -> usiz
     let model = uic60_on_soft_soil().model().unwrap();
     let (speed, theta) = (200.0, 0.5);
     let h = 0.1 / speed;
-    let system = LinearSystem::from_beam(&model);
+    let system = beam_system(&model);
     let integration = Integration { theta, step: h };
     let settings = SolverSettings { kind, ..SolverSettings::default() };
     let load = MovingLoad::new(*model.mesh(), model.dofs(), 83.4e3, speed, 0.0);

@@ -2,7 +2,8 @@
 
 use super::common::{beam, reference};
 use friction::{Devices, DistributedFriction};
-use nscd::{RunSettings, Simulation, SolverKind};
+use nscd::SolverKind;
+use track::{RunSettings, Simulation};
 
 fn check_law_every_step(
     model: &fem_beam::BeamModel,

@@ -2,7 +2,7 @@
 
 use super::common::reference;
 use friction::{Devices, DistributedFriction};
-use nscd::{RunSettings, Simulation};
+use track::{RunSettings, Simulation};
 
 #[test]
 fn equal_capacity_discrete_and_distributed_friction_respond_alike() {

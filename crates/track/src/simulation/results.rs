@@ -1,7 +1,7 @@
 //! What a run reports (docs/theory.md §6): extremes over the whole run and over a window of load positions,
 //! histories at sections, solver statistics, and the state lent to observers after each step.
 
-use crate::stepper::EnergyLedger;
+use nscd::stepper::EnergyLedger;
 
 /// An extreme deflection over the run.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -70,16 +70,16 @@ pub struct StepView<'a> {
     /// Section velocities u_{k+1} = H v_{k+1} (m/s).
     pub section_velocities: &'a [f64],
     /// The step's law: impulse bounds (N·s; ±h·F_j for friction), compliance and drift.
-    pub law: &'a crate::problem::StepLaw,
+    pub law: &'a nscd::StepLaw,
     /// The friction solver's report.
-    pub report: crate::solver::StepReport,
+    pub report: nscd::solver::StepReport,
 }
 
 /// Solver statistics of a run.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct SolverStatistics {
     /// The friction solver the run used (resolved from `auto`); `None` without friction sections.
-    pub solver: Option<crate::solver::SolverKind>,
+    pub solver: Option<nscd::solver::SolverKind>,
     /// Friction sections.
     pub sections: usize,
     /// Steps taken.
@@ -99,7 +99,7 @@ pub struct SolverStatistics {
 impl SolverStatistics {
     /// The solver's name for reports, `none` without friction sections.
     pub fn solver_name(&self) -> &'static str {
-        self.solver.map_or("none", crate::solver::SolverKind::name)
+        self.solver.map_or("none", nscd::solver::SolverKind::name)
     }
 }
 

@@ -1,4 +1,4 @@
-//! Times one reference run: `cargo run --release -p nscd --example probe -- <case>` with case one of
+//! Times one reference run: `cargo run --release -p track --example probe -- <case>` with case one of
 //! `none`, `devices7`, `devices31`, `distributed1k`, `distributed10k`, `distributed5k` (default), `distributed5k-whole`,
 //! optionally followed by a step count to stop early (for instruction counts under callgrind), a solver tolerance,
 //! an element count (200 m beam; default 200) and a speed (m/s; default 200). Prints the wall time of the time
@@ -6,7 +6,7 @@
 
 use fem_beam::reference::uic60_on_soft_soil;
 use friction::{Devices, DistributedFriction, InteractionSet};
-use nscd::{RunSettings, Simulation};
+use track::{RunSettings, Simulation};
 
 fn main() {
     let case = std::env::args().nth(1).unwrap_or_else(|| "distributed5k".into());

@@ -2,10 +2,11 @@
 //! load advance, end, solver) and what is recorded (sections, extremes window) — and the limits checked before
 //! anything is allocated.
 
-use crate::error::{NscdError, Result};
-use crate::solver::SolverSettings;
-use crate::stepper::Integration;
+use crate::error::Result;
 use fem_beam::BeamModel;
+use nscd::NscdError;
+use nscd::solver::SolverSettings;
+use nscd::stepper::Integration;
 
 /// How the run starts.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -80,8 +81,8 @@ pub struct RunSettings {
     pub record: RecordSettings,
 }
 
-fn invalid(field: &'static str, value: f64, allowed: impl Into<String>) -> NscdError {
-    NscdError::InvalidField { field, value, allowed: allowed.into() }
+fn invalid(field: &'static str, value: f64, allowed: impl Into<String>) -> crate::TrackError {
+    NscdError::InvalidField { field, value, allowed: allowed.into() }.into()
 }
 
 impl RunSettings {

@@ -1,12 +1,13 @@
 //! Per configuration and per friction solver: iterations per step and wall time per step of the reference run
 //! (200 elements, v = 200 m/s, θ = ½, the default tolerance), as a Markdown table for BENCHMARKS.md.
 //!
-//! `cargo run --release -p nscd --example solver_table -- [steps]` (default: the whole 2000-step run). A solver
+//! `cargo run --release -p track --example solver_table -- [steps]` (default: the whole 2000-step run). A solver
 //! that fails a step (unconverged within its iteration cap) is reported with the step where it stopped.
 
 use fem_beam::reference::uic60_on_soft_soil;
 use friction::{Devices, DistributedFriction, InteractionSet};
-use nscd::{RunSettings, Simulation, SolverKind};
+use nscd::SolverKind;
+use track::{RunSettings, Simulation};
 
 fn main() {
     let steps: usize = std::env::args().nth(1).and_then(|s| s.parse().ok()).unwrap_or(usize::MAX);

@@ -2,7 +2,7 @@
 
 use super::common::reference;
 use friction::InteractionSet;
-use nscd::{RunSettings, Simulation};
+use track::{RunSettings, Simulation};
 
 #[test]
 fn largest_deflection_is_near_the_critical_speed() {

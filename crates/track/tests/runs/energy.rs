@@ -2,7 +2,7 @@
 
 use super::common::beam;
 use friction::{Devices, DistributedFriction, InteractionSet};
-use nscd::{RunSettings, Simulation};
+use track::{RunSettings, Simulation};
 
 #[test]
 fn energy_balance_closes() {

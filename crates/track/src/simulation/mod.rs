@@ -16,16 +16,16 @@ pub use results::{Extreme, RunResult, SectionHistory, SolverStatistics, StepView
 pub use settings::{InitialState, IntegrationSettings, MovingLoadSettings, RecordSettings, RunSettings};
 
 use crate::error::Result;
-use crate::forcing::MovingLoad;
-use crate::solver::{SolverKind, SolverSettings};
-use crate::stepper::{Integration, MoreauJean};
-use crate::system::LinearSystem;
+use crate::moving_load::MovingLoad;
+use crate::system::beam_system;
 use fem_beam::BeamModel;
 use fem_beam::element::hermite;
 use fem_beam::load::ElementLoad;
 use fem_beam::reference::InfiniteBeam;
 use fem_beam::section::Motion;
 use friction::InteractionSet;
+use nscd::solver::{SolverKind, SolverSettings};
+use nscd::stepper::{Integration, MoreauJean};
 use observers::{Buffers, InsideSection, NodalDeflections, Recorder, record};
 use std::time::Instant;
 
@@ -105,7 +105,7 @@ impl<'a> Simulation<'a> {
         let dofs = model.dofs();
         let h = settings.integration.load_advance / settings.moving.speed;
         let integration = Integration { theta: settings.integration.theta, step: h };
-        let system = LinearSystem::from_beam(model);
+        let system = beam_system(model);
         let kind =
             resolve_solver(settings.integration.solver.kind, model, self.interactions, h, settings.integration.theta);
         // Coupling through M̂⁻¹ decays like e^{−x/(√2ℓ)}: 30ℓ leaves ~6e-10, and a window that fails the final

@@ -3,7 +3,7 @@
 use fem_beam::reference::{InfiniteBeam, uic60_on_soft_soil};
 use fem_beam::{AbsorbingZones, BeamModel};
 use friction::InteractionSet;
-use nscd::{InitialState, RunSettings, Simulation};
+use track::{InitialState, RunSettings, Simulation};
 
 #[test]
 fn fe_response_matches_infinite_beam_steady_state() {

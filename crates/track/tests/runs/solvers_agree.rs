@@ -2,10 +2,12 @@
 
 use super::common::{reference, relative_difference};
 use friction::{Devices, DistributedFriction, InteractionSet};
-use nscd::simulation::coupling_length;
 use nscd::solver::{InteractionProblem, SolverSettings, build_solver};
 use nscd::stepper::Integration;
-use nscd::{InitialState, LinearSystem, MoreauJean, MovingLoad, RunSettings, Simulation, SolverKind};
+use nscd::{MoreauJean, SolverKind};
+use track::simulation::coupling_length;
+use track::system::beam_system;
+use track::{InitialState, MovingLoad, RunSettings, Simulation};
 
 /// Settings at `speed` with the solvers held to 1e-10, not the default 1e-6: two exact solvers are compared step by
 /// step to 1e-8 here, which needs their own tolerance well below it.
@@ -30,7 +32,7 @@ fn same_state_difference(
 ) -> f64 {
     let model = reference();
     let h = settings.integration.load_advance / settings.moving.speed;
-    let system = LinearSystem::from_beam(&model);
+    let system = beam_system(&model);
     let integration = Integration { theta: settings.integration.theta, step: h };
     let margin = Some(30.0 * coupling_length(&model, h, settings.integration.theta));
     let checking = InteractionProblem::new(&system, interactions.clone(), integration).unwrap();
@@ -134,7 +136,7 @@ fn moving_window_agrees_with_whole_beam_solve_every_step() {
     assert!(worst < 1e-8);
 }
 
-/// Whole runs (release build: `cargo test --release -p nscd -- --ignored`): every step from the same state, and
+/// Whole runs (release build: `cargo test --release -p track -- --ignored`): every step from the same state, and
 /// the max deflections of independent runs.
 #[test]
 #[ignore = "whole runs with Clarabel take minutes"]
@@ -165,7 +167,7 @@ fn whole_runs_agree() {
 fn truncated_impulse_responses_match_the_solve() {
     let model = reference();
     let h = 0.1 / 200.0;
-    let system = LinearSystem::from_beam(&model);
+    let system = beam_system(&model);
     let integration = Integration { theta: 0.5, step: h };
     let devices = Devices::uniform(31, 100e3).interactions(&model).unwrap();
     let problem = InteractionProblem::new(&system, devices.clone(), integration).unwrap();

@@ -1,0 +1,29 @@
+//! The error type of the `track` crate: the engine's errors and the beam layer's, one type.
+
+use thiserror::Error;
+
+/// What can go wrong when setting up or running a load across the track.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum TrackError {
+    /// An error of the engine: a setting out of range, an unconverged or non-finite step, a solver failure.
+    #[error(transparent)]
+    Engine(#[from] nscd::NscdError),
+    /// An error from the beam layer.
+    #[error(transparent)]
+    Beam(#[from] fem_beam::FemError),
+}
+
+impl From<friction::FrictionError> for TrackError {
+    fn from(error: friction::FrictionError) -> Self {
+        TrackError::Engine(error.into())
+    }
+}
+
+impl From<banded::BandedError> for TrackError {
+    fn from(error: banded::BandedError) -> Self {
+        TrackError::Engine(error.into())
+    }
+}
+
+/// Result alias of this crate.
+pub type Result<T, E = TrackError> = std::result::Result<T, E>;

@@ -1,0 +1,18 @@
+//! # track: a load crossing the beam, on the nonsmooth engine (docs/theory.md §3, §6, §8)
+//!
+//! The application layer between the engine (`nscd`, which knows systems, interactions and steps but no beam) and the
+//! studies: the beam on its foundation as a [`nscd::LinearSystem`] ([`system::beam_system`]), the moving point load
+//! ([`MovingLoad`]), a whole run of the load across the beam ([`Simulation`]: the automatic solver choice from EI and
+//! ρA, the steady-state start from the infinite beam's closed form, observers for extremes over the run and over a
+//! window of load positions, histories at sections, W̄, solver statistics), and snapshots of the whole beam.
+
+pub mod error;
+pub mod moving_load;
+pub mod simulation;
+pub mod snapshots;
+pub mod system;
+
+pub use error::{Result, TrackError};
+pub use moving_load::MovingLoad;
+pub use simulation::{InitialState, RunResult, RunSettings, Simulation, WindowExtremes};
+pub use snapshots::{Snapshot, SnapshotAt, SnapshotTaker};

@@ -1,0 +1,13 @@
+//! Verification of whole runs of a load across the beam (docs/theory.md §5–§8): linear limits, the friction law at
+//! every step, the energy identity, the solvers against each other, the steady state against the closed form.
+
+mod runs {
+    mod common;
+    mod critical_speed;
+    mod discrete_vs_continuous;
+    mod energy;
+    mod friction_law;
+    mod linear;
+    mod solvers_agree;
+    mod steady_state;
+}
