@@ -67,8 +67,10 @@ impl Law {
     }
 }
 
-/// A sparse row over the free DOFs, at most four entries.
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// A sparse row over the free DOFs. Rows of at most four entries (a friction section on one element, a node) are
+/// stored inline and, when their DOFs are consecutive, multiplied four at a time; longer rows (a wheel: four rail DOFs
+/// and its own) keep their entries in vectors, which [`InteractionRow::set_entries`] reuses.
+#[derive(Debug, Clone, PartialEq)]
 pub struct InteractionRow {
     dofs: [usize; 4],
     /// The entries, zero past `len`.
@@ -78,61 +80,116 @@ pub struct InteractionRow {
     /// then read four DOFs from the first, the missing entries multiplying exact zeros — the same sums without a
     /// loop of variable length.
     contiguous: bool,
+    /// All entries of a row longer than four (`len` is then 0 and the arrays unused).
+    long_dofs: Vec<usize>,
+    long_values: Vec<f64>,
+}
+
+impl Default for InteractionRow {
+    fn default() -> Self {
+        Self::from_entries([])
+    }
 }
 
 impl InteractionRow {
-    /// A row from (free DOF, value) pairs; exact zeros are skipped, entries are sorted by DOF. At most four
-    /// distinct entries.
+    /// A row from (free DOF, value) pairs; exact zeros are skipped, entries are sorted by DOF, each DOF once.
     pub fn from_entries(entries: impl IntoIterator<Item = (usize, f64)>) -> Self {
-        let mut pairs: Vec<(usize, f64)> = entries.into_iter().filter(|e| e.1 != 0.0).collect();
-        pairs.sort_by_key(|e| e.0);
-        assert!(pairs.len() <= 4, "an interaction row has at most four entries");
-        assert!(pairs.windows(2).all(|w| w[0].0 < w[1].0), "an interaction row names each DOF once");
-        let contiguous = pairs.iter().enumerate().all(|(k, e)| e.0 == pairs[0].0 + k);
-        let mut row = Self { dofs: [0; 4], values: [0.0; 4], len: pairs.len(), contiguous };
-        for (k, (dof, value)) in pairs.into_iter().enumerate() {
-            row.dofs[k] = dof;
-            row.values[k] = value;
-        }
+        let mut row = Self {
+            dofs: [0; 4],
+            values: [0.0; 4],
+            len: 0,
+            contiguous: true,
+            long_dofs: Vec::new(),
+            long_values: Vec::new(),
+        };
+        row.set_entries(entries);
         row
+    }
+
+    /// Replace the entries (as [`InteractionRow::from_entries`]); a long row reuses its vectors, so a moving
+    /// interaction rebuilt every step allocates only when its row first grows.
+    pub fn set_entries(&mut self, entries: impl IntoIterator<Item = (usize, f64)>) {
+        self.long_dofs.clear();
+        self.long_values.clear();
+        for (dof, value) in entries {
+            if value != 0.0 {
+                self.long_dofs.push(dof);
+                self.long_values.push(value);
+            }
+        }
+        let count = self.long_dofs.len();
+        // Sort by DOF (rows are short: insertion sort, no allocation).
+        for i in 1..count {
+            let mut k = i;
+            while k > 0 && self.long_dofs[k - 1] > self.long_dofs[k] {
+                self.long_dofs.swap(k - 1, k);
+                self.long_values.swap(k - 1, k);
+                k -= 1;
+            }
+        }
+        assert!(self.long_dofs.windows(2).all(|w| w[0] < w[1]), "an interaction row names each DOF once");
+        self.dofs = [0; 4];
+        self.values = [0.0; 4];
+        if count <= 4 {
+            self.dofs[..count].copy_from_slice(&self.long_dofs);
+            self.values[..count].copy_from_slice(&self.long_values);
+            self.len = count;
+            self.contiguous = (0..count).all(|k| self.dofs[k] == self.dofs[0] + k);
+            self.long_dofs.clear();
+            self.long_values.clear();
+        } else {
+            self.len = 0;
+            self.contiguous = false;
+        }
+    }
+
+    /// Whether the row is stored inline (at most four entries).
+    fn is_short(&self) -> bool {
+        self.long_dofs.is_empty()
     }
 
     /// Number of non-zero entries.
     pub fn len(&self) -> usize {
-        self.len
+        if self.is_short() { self.len } else { self.long_dofs.len() }
     }
 
     /// Whether the row has no entry (a section on a support).
     pub fn is_empty(&self) -> bool {
-        self.len == 0
+        self.len() == 0
+    }
+
+    /// Whether the row has at most four entries in consecutive DOFs (what the interior point's banded Newton
+    /// matrices take).
+    pub fn is_local(&self) -> bool {
+        self.is_short() && self.contiguous
     }
 
     /// The (free DOF, value) entries.
     pub fn entries(&self) -> impl Iterator<Item = (usize, f64)> + '_ {
-        (0..self.len).map(|k| (self.dofs[k], self.values[k]))
+        self.dofs().iter().copied().zip(self.values().iter().copied())
     }
 
     /// The free DOFs of the entries, ascending.
     pub fn dofs(&self) -> &[usize] {
-        &self.dofs[..self.len]
+        if self.is_short() { &self.dofs[..self.len] } else { &self.long_dofs }
     }
 
     /// The values of the entries, in the order of [`InteractionRow::dofs`].
     pub fn values(&self) -> &[f64] {
-        &self.values[..self.len]
+        if self.is_short() { &self.values[..self.len] } else { &self.long_values }
     }
 
     /// H_j·v.
     #[inline]
     pub fn dot(&self, v: &[f64]) -> f64 {
         let first = self.dofs[0];
-        if self.contiguous && first + 4 <= v.len() {
+        if self.contiguous && self.is_short() && first + 4 <= v.len() {
             let (h, x) = (&self.values, &v[first..first + 4]);
             return h[0] * x[0] + h[1] * x[1] + h[2] * x[2] + h[3] * x[3];
         }
         let mut s = 0.0;
-        for k in 0..self.len {
-            s += self.values[k] * v[self.dofs[k]];
+        for (d, h) in self.dofs().iter().zip(self.values()) {
+            s += h * v[*d];
         }
         s
     }
@@ -141,22 +198,22 @@ impl InteractionRow {
     #[inline]
     pub fn add_transpose(&self, scale: f64, out: &mut [f64]) {
         let first = self.dofs[0];
-        if self.contiguous && first + 4 <= out.len() {
+        if self.contiguous && self.is_short() && first + 4 <= out.len() {
             let out = &mut out[first..first + 4];
             for k in 0..4 {
                 out[k] += scale * self.values[k];
             }
             return;
         }
-        for k in 0..self.len {
-            out[self.dofs[k]] += scale * self.values[k];
+        for (d, h) in self.dofs().iter().zip(self.values()) {
+            out[*d] += scale * h;
         }
     }
 
     /// Smallest and largest free DOF touched (for band structure).
     pub fn dof_span(&self) -> Option<(usize, usize)> {
         // The DOFs are sorted.
-        let d = &self.dofs[..self.len];
+        let d = self.dofs();
         Some((*d.first()?, *d.last()?))
     }
 }
@@ -193,6 +250,25 @@ impl InteractionSet {
     /// A Coulomb friction section of capacity F (N): [`InteractionSet::push`] with [`Law::Coulomb`].
     pub fn push_friction(&mut self, row: InteractionRow, capacity: f64, position: f64, kind: InteractionKind) {
         self.push(row, Law::Coulomb { capacity }, position, kind);
+    }
+
+    /// Add an interaction that is kept even with an empty row (a moving interaction, whose row the engine rewrites
+    /// every step).
+    pub fn push_moving(&mut self, row: InteractionRow, law: Law, position: f64, kind: InteractionKind) {
+        self.rows.push(row);
+        self.laws.push(law);
+        self.positions.push(position);
+        self.kinds.push(kind);
+    }
+
+    /// The row of interaction j, to rewrite in place (a moving interaction's update).
+    pub fn row_mut(&mut self, j: usize) -> &mut InteractionRow {
+        &mut self.rows[j]
+    }
+
+    /// Set the position of interaction j (m).
+    pub fn set_position(&mut self, j: usize, x: f64) {
+        self.positions[j] = x;
     }
 
     /// Append all interactions of another set.

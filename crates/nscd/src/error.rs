@@ -50,6 +50,14 @@ pub enum NscdError {
     /// The requested solver is not available in this build.
     #[error("solver {0} is not available: rebuild with the cargo feature `clarabel`")]
     Unavailable(&'static str),
+    /// The chosen solver cannot take these interactions.
+    #[error("solver {solver} cannot solve this problem: {reason}")]
+    Unsupported {
+        /// The solver.
+        solver: crate::solver::SolverKind,
+        /// Why, and what can.
+        reason: &'static str,
+    },
     /// The Clarabel interior-point solver failed.
     #[error("Clarabel failed at step {step}: {status}")]
     Clarabel {

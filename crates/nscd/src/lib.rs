@@ -8,12 +8,14 @@
 //! - [`system`]: the banded linear system, one block or several stacked, with their [`system::DofLayout`].
 //! - [`forcing`]: the interface of external loads F(t).
 //! - [`problem`]: the one-step [`InteractionProblem`] and its update phase (the step's law from the state).
+//! - [`moving`]: interactions whose rows are rebuilt every step (a wheel).
 //! - [`solver`]: projected Gauss–Seidel, a banded interior point, Clarabel (feature `clarabel`).
 //! - [`stepper`]: [`MoreauJean`], one step at a time, with its [`EnergyLedger`].
 
 pub mod error;
 pub mod forcing;
 mod kernels;
+pub mod moving;
 pub mod problem;
 pub mod solver;
 pub mod stepper;
@@ -21,6 +23,7 @@ pub mod system;
 
 pub use error::{NscdError, Result};
 pub use forcing::Forcing;
+pub use moving::{Interactions, MovingInteraction, MovingState};
 pub use problem::{InteractionProblem, StepLaw};
 pub use solver::{SolverKind, SolverSettings, StepReport, StepStatus};
 pub use stepper::{EnergyLedger, Integration, MoreauJean};

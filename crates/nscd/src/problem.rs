@@ -13,8 +13,13 @@
 //!   (γ = ½): [0, +∞), d = 0, b = e·U_k (Newton impact); otherwise [0, 0];
 //! - compliant stop of stiffness k_c, penetration δ = −g: [0, +∞), d = 1/(h²θk_c), b = −(δ_k − h(1−θ)U_k)/(hθ),
 //!   so that a positive impulse is p = h k_c δ_{k+1}.
+//!
+//! A moving interaction ([`crate::moving`]) has its row (for t_{k+1}), gap g_k, velocity U_k and rheonomic
+//! velocity b_r (U_{k+1} = H v_{k+1} + b_r) set by the update phase each step, its response G = M̂⁻¹Hᵀ and W_jj with
+//! them; b_r joins its drift.
 
 use crate::kernels::axpy;
+use crate::moving::{Interactions, MovingInteraction, MovingState};
 use crate::solver::VELOCITY_FLOOR;
 use crate::solver::response::ImpulseResponses;
 use crate::stepper::{Integration, iteration_matrix};
@@ -22,6 +27,22 @@ use crate::system::LinearSystem;
 use banded::{BandedLdlt, SymmetricBanded};
 use friction::law::natural_residual;
 use friction::{InteractionSet, Law};
+
+/// The step's law of one interaction from its law, gap g_k (m), relative velocity U_k (m/s), rheonomic velocity
+/// b_r (m/s, U = Hq̇ + b_r), step h and θ: (lo, hi, b) — the compliance is fixed per run (docs/theory.md §9).
+fn step_bounds(law: &Law, gap: f64, u: f64, rheonomic: f64, h: f64, theta: f64) -> (f64, f64, f64) {
+    match *law {
+        Law::Coulomb { capacity } => (-h * capacity, h * capacity, rheonomic),
+        Law::Signorini { restitution, .. } => {
+            if gap + PREDICTION_WEIGHT * h * u <= 0.0 {
+                (0.0, f64::INFINITY, rheonomic + restitution * u)
+            } else {
+                (0.0, 0.0, 0.0)
+            }
+        }
+        Law::Compliant { .. } => (0.0, f64::INFINITY, rheonomic - (-gap - h * (1.0 - theta) * u) / (h * theta)),
+    }
+}
 
 /// γ of Moreau's index-set rule for rigid contact: a contact enters the step when g_k + γ h U_k ≤ 0.
 pub const PREDICTION_WEIGHT: f64 = 0.5;
@@ -70,28 +91,47 @@ pub struct InteractionProblem {
     pub law: StepLaw,
     /// W_jj + d_j (m/s per N·s), W_jj = H_j M̂⁻¹ H_jᵀ.
     pub delassus_diagonal: Vec<f64>,
-    /// G_j = M̂⁻¹H_jᵀ, truncated to round-off, when few and short enough to beat a solve (see [`ImpulseResponses`]).
+    /// G_j = M̂⁻¹H_jᵀ of the fixed interactions, truncated to round-off, when few and short enough to beat a solve
+    /// (see [`ImpulseResponses`]).
     pub responses: Option<ImpulseResponses>,
-    /// Whether the law changes from step to step (some unilateral interaction).
+    /// Whether the law changes from step to step (some unilateral or moving interaction).
     varying: bool,
+    /// The fixed interactions come first: indices 0..fixed.
+    fixed: usize,
+    /// The moving interactions, at indices fixed.. of `interactions`.
+    moving: Vec<Box<dyn MovingInteraction>>,
+    /// Their states and dense responses G_j = M̂⁻¹H_jᵀ (n each, refreshed every step).
+    moving_states: Vec<MovingState>,
+    moving_responses: Vec<f64>,
 }
 
 impl InteractionProblem {
     /// The problem of a step of `integration` on `system`: M̂ = M + hθC + h²θ²K is built and factored here
     /// (docs/theory.md §5).
-    pub fn new(system: &LinearSystem, interactions: InteractionSet, integration: Integration) -> crate::Result<Self> {
+    pub fn new(
+        system: &LinearSystem,
+        interactions: impl Into<Interactions>,
+        integration: Integration,
+    ) -> crate::Result<Self> {
         Self::with_matrix(interactions, iteration_matrix(system, integration), integration)
     }
 
     /// The same for a given SPD iteration matrix `m_hat` (e.g. a test problem), factored here. The law is set for
-    /// the state q = 0, v = 0 until the first [`InteractionProblem::update`].
+    /// t = 0, q = 0, v = 0 until the first [`InteractionProblem::update`].
     pub fn with_matrix(
-        interactions: InteractionSet,
+        interactions: impl Into<Interactions>,
         m_hat: SymmetricBanded,
         integration: Integration,
     ) -> crate::Result<Self> {
+        let Interactions { fixed: mut interactions, moving } = interactions.into();
         let factor = m_hat.factor()?;
         let (h, theta) = (integration.step, integration.theta);
+        let fixed = interactions.len();
+        let (responses, mut delassus_diagonal) = ImpulseResponses::new(&interactions, &factor);
+        for interaction in &moving {
+            interactions.push_moving(Default::default(), interaction.law(), 0.0, interaction.kind());
+            delassus_diagonal.push(0.0);
+        }
         let m = interactions.len();
         let mut law =
             StepLaw { lower: vec![0.0; m], upper: vec![0.0; m], compliance: vec![0.0; m], drift: vec![0.0; m] };
@@ -105,45 +145,85 @@ impl InteractionProblem {
                 Law::Compliant { stiffness, .. } => law.compliance[j] = 1.0 / (h * h * theta * stiffness),
             }
         }
-        let (responses, mut delassus_diagonal) = ImpulseResponses::new(&interactions, &factor);
         for (w, d) in delassus_diagonal.iter_mut().zip(&law.compliance) {
             *w += d;
         }
-        let varying = !interactions.is_friction_only();
-        let mut problem = Self { interactions, m_hat, factor, integration, law, delassus_diagonal, responses, varying };
-        let n = problem.m_hat.order();
-        problem.update(&vec![0.0; n], &vec![0.0; n]);
+        let varying = !interactions.is_friction_only() || !moving.is_empty();
+        let n = m_hat.order();
+        let mut problem = Self {
+            interactions,
+            m_hat,
+            factor,
+            integration,
+            law,
+            delassus_diagonal,
+            responses,
+            varying,
+            fixed,
+            moving_states: vec![MovingState::default(); moving.len()],
+            moving_responses: vec![0.0; moving.len() * n],
+            moving,
+        };
+        problem.update(0.0, &vec![0.0; n], &vec![0.0; n]);
         Ok(problem)
     }
 
-    /// Set the law of the step from the state (q_k, v_k) (docs/theory.md §9; nothing to do for friction alone).
-    pub fn update(&mut self, q: &[f64], v: &[f64]) {
+    /// The update phase (docs/theory.md §9): rebuild the moving interactions' rows, responses and W_jj at (t_k, q_k),
+    /// then set the law of the step from the state (q_k, v_k). Nothing to do for fixed friction alone.
+    pub fn update(&mut self, time: f64, q: &[f64], v: &[f64]) {
         if !self.varying {
             return;
         }
+        let n = self.m_hat.order();
+        for (k, interaction) in self.moving.iter_mut().enumerate() {
+            let j = self.fixed + k;
+            let row = self.interactions.row_mut(j);
+            let state = interaction.update(time, self.integration.step, q, v, row);
+            let column = &mut self.moving_responses[k * n..(k + 1) * n];
+            column.iter_mut().for_each(|x| *x = 0.0);
+            row.add_transpose(1.0, column);
+            self.factor.solve_in_place(column);
+            self.delassus_diagonal[j] = row.dot(column) + self.law.compliance[j];
+            self.interactions.set_position(j, state.position);
+            self.moving_states[k] = state;
+        }
         let (h, theta) = (self.integration.step, self.integration.theta);
         let rows = self.interactions.rows();
-        for (j, l) in self.interactions.laws().iter().enumerate() {
-            let (gap, u) = match *l {
-                Law::Coulomb { .. } => continue,
-                Law::Signorini { gap, .. } | Law::Compliant { gap, .. } => (gap + rows[j].dot(q), rows[j].dot(v)),
+        for (j, law) in self.interactions.laws().iter().enumerate() {
+            let (gap, u, rheonomic) = if j >= self.fixed {
+                let state = self.moving_states[j - self.fixed];
+                (state.gap, state.velocity, state.rheonomic)
+            } else {
+                match *law {
+                    Law::Coulomb { .. } => continue,
+                    Law::Signorini { gap, .. } | Law::Compliant { gap, .. } => {
+                        (gap + rows[j].dot(q), rows[j].dot(v), 0.0)
+                    }
+                }
             };
-            let law = &mut self.law;
-            match *l {
-                Law::Signorini { restitution, .. } => {
-                    let closing = gap + PREDICTION_WEIGHT * h * u <= 0.0;
-                    law.lower[j] = 0.0;
-                    law.upper[j] = if closing { f64::INFINITY } else { 0.0 };
-                    law.drift[j] = if closing { restitution * u } else { 0.0 };
-                }
-                Law::Compliant { .. } => {
-                    law.lower[j] = 0.0;
-                    law.upper[j] = f64::INFINITY;
-                    law.drift[j] = -(-gap - h * (1.0 - theta) * u) / (h * theta);
-                }
-                Law::Coulomb { .. } => {}
-            }
+            let (lower, upper, drift) = step_bounds(law, gap, u, rheonomic, h, theta);
+            self.law.lower[j] = lower;
+            self.law.upper[j] = upper;
+            self.law.drift[j] = drift;
         }
+    }
+
+    /// Whether some interactions move (their rows change every step).
+    pub fn has_moving(&self) -> bool {
+        !self.moving.is_empty()
+    }
+
+    /// Number of fixed interactions (they come first).
+    pub fn fixed_len(&self) -> usize {
+        self.fixed
+    }
+
+    /// The response G_j = M̂⁻¹H_jᵀ of moving interaction j (an index ≥ [`InteractionProblem::fixed_len`]), as of the
+    /// last update.
+    pub fn moving_response(&self, j: usize) -> &[f64] {
+        let n = self.m_hat.order();
+        let k = j - self.fixed;
+        &self.moving_responses[k * n..(k + 1) * n]
     }
 
     /// Whether the law changes from step to step.
@@ -161,10 +241,22 @@ impl InteractionProblem {
     /// v += M̂⁻¹Hᵀp: from the stored responses when there are any, else by one banded solve (`work`: n scratch).
     pub fn add_response(&self, p: &[f64], v: &mut [f64], work: &mut [f64]) {
         match &self.responses {
-            Some(responses) => responses.add(p, v),
+            Some(responses) => {
+                responses.add(&p[..self.fixed], v);
+                self.add_moving_responses(p, v);
+            }
             None => {
                 self.solve_response(p, work);
                 axpy(1.0, work, v);
+            }
+        }
+    }
+
+    /// v += Σ_j p_j G_j over the moving interactions.
+    fn add_moving_responses(&self, p: &[f64], v: &mut [f64]) {
+        for j in self.fixed..p.len() {
+            if p[j] != 0.0 {
+                axpy(p[j], self.moving_response(j), v);
             }
         }
     }
@@ -205,7 +297,8 @@ impl InteractionProblem {
     pub fn outcome(&self, v_free: &[f64], p: &[f64], v: &mut [f64], u: &mut [f64]) -> f64 {
         if let Some(responses) = &self.responses {
             v.copy_from_slice(v_free);
-            responses.add(p, v);
+            responses.add(&p[..self.fixed], v);
+            self.add_moving_responses(p, v);
         } else {
             self.solve_response(p, v);
             axpy(1.0, v_free, v);

@@ -153,7 +153,7 @@ impl MoreauJean {
     /// (q₀, v₀) with zero impulses. The stepper owns all of it and borrows nothing.
     pub fn build(
         system: &LinearSystem,
-        interactions: InteractionSet,
+        interactions: impl Into<crate::moving::Interactions>,
         integration: Integration,
         settings: &SolverSettings,
         window_margin: Option<f64>,
@@ -221,7 +221,7 @@ impl MoreauJean {
         stepper.energy.kinetic = kinetic;
         stepper.energy.strain = strain;
         stepper.energy.spring_energy = spring_energy(&stepper.problem.interactions, &stepper.q);
-        stepper.problem.update(&stepper.q, &stepper.v);
+        stepper.problem.update(0.0, &stepper.q, &stepper.v);
         stepper
     }
 
@@ -279,9 +279,13 @@ impl MoreauJean {
         let (h, theta) = (self.h, self.theta);
         let (t0, t1) = (self.time, self.time + h);
         if self.problem.is_varying() {
-            // The update phase: the step's law from (q_k, v_k), the warm start brought into its bounds.
-            self.problem.update(&self.q, &self.v);
+            // The update phase: moving rows and the step's law from (t_k, q_k, v_k), the warm start brought into
+            // the new bounds, the solver told of the new rows.
+            self.problem.update(self.time, &self.q, &self.v);
             self.problem.clamp_to_bounds(&mut self.p);
+            if self.problem.has_moving() {
+                self.solver.refresh(&self.problem)?;
+            }
         }
         self.free_velocity(forcing);
         // v_prev ← v_k, v ← v_free; the stale vector left in v_free is overwritten by the next free velocity.

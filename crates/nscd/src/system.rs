@@ -54,13 +54,17 @@ impl DofLayout {
 }
 
 impl LinearSystem {
-    /// A system of one block. The three matrices must have one order.
+    /// A system of one block. The three matrices must have one order; they are brought to one bandwidth (the
+    /// largest of theirs), which the iteration matrix M + hθC + h²θ²K needs.
     pub fn new(mass: SymmetricBanded, damping: SymmetricBanded, stiffness: SymmetricBanded) -> Self {
         assert!(
             mass.order() == damping.order() && mass.order() == stiffness.order(),
             "M, C and K of a system have one order"
         );
-        Self { mass, damping, stiffness }
+        let block = Self { mass, damping, stiffness };
+        let uniform =
+            [&block.mass, &block.damping, &block.stiffness].iter().all(|m| m.bandwidth() == block.mass.bandwidth());
+        if uniform { block } else { Self::from_blocks(&[&block]).0 }
     }
 
     /// The blocks stacked along the diagonal, in order, and where each sits. The bandwidth is the largest of the

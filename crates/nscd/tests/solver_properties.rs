@@ -90,7 +90,7 @@ fn solve_all(problem: &Problem) -> Vec<(&'static str, Vec<f64>)> {
         InteractionProblem::with_matrix(problem.interactions.clone(), problem.m_hat.clone(), integration).expect("SPD");
     let (n, m) = (problem.v_free.len(), problem.interactions.len());
     // The state the step starts from: q = 0 (gaps g₀) and v_k = v_free, so contacts with g₀ + h U_k/2 ≤ 0 close.
-    stepping.update(&vec![0.0; n], &problem.v_free);
+    stepping.update(0.0, &vec![0.0; n], &problem.v_free);
     let mut u_free = vec![0.0; m];
     problem.interactions.velocities(&problem.v_free, &mut u_free);
     let mut out = Vec::new();

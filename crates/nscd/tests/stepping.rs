@@ -4,5 +4,6 @@
 
 mod stepping {
     mod contact;
+    mod moving;
     mod oscillator;
 }

@@ -5,8 +5,8 @@
 //! min ½ yᵀM̂y + ½pᵀDp + cᵀp (= ½pᵀ(W + D)p + cᵀp) subject to M̂y − Hᵀp = 0 and p_j = lo_j where lo_j = hi_j (zero
 //! cone), p_j ≤ hi_j where hi_j is finite and −p_j ≤ −lo_j where lo_j is finite (non-negative cone). Only the upper
 //! triangle of P = blkdiag(M̂, D) is passed (Clarabel ignores the rest). The set-up is rebuilt when the pattern of
-//! bounds changes (a contact entering or leaving the index set; never for friction alone); otherwise each step
-//! only replaces q and b.
+//! bounds changes (a contact entering or leaving the index set; never for friction alone) and every step when
+//! interactions move (their rows are in A); otherwise each step only replaces q and b.
 
 use super::{InteractionProblem, InteractionSolver, SolverKind, StepReport, StepStatus};
 use crate::error::NscdError;
@@ -41,7 +41,8 @@ impl Bounds {
 /// Clarabel on the lifted interaction QP.
 pub struct ClarabelQp {
     solver: Option<DefaultSolver<f64>>,
-    /// The upper triangle of P and the columns of the equality M̂y − Hᵀp = 0, as triplets.
+    /// The upper triangle of P and the M̂ columns of the equality M̂y − Hᵀp = 0, as triplets (the Hᵀ columns are
+    /// added at each set-up from the rows as they are then).
     p_triplets: (Vec<usize>, Vec<usize>, Vec<f64>),
     a_triplets: (Vec<usize>, Vec<usize>, Vec<f64>),
     pattern: Vec<Bounds>,
@@ -83,12 +84,7 @@ impl ClarabelQp {
                 }
             }
         }
-        for (k, row) in problem.interactions.rows().iter().enumerate() {
-            for (dof, value) in row.entries() {
-                ai.push(dof);
-                aj.push(n + k);
-                av.push(-value);
-            }
+        for k in 0..m {
             let d = problem.law.compliance[k];
             if d != 0.0 {
                 pi.push(n + k);
@@ -133,8 +129,9 @@ impl ClarabelQp {
         let n = self.n;
         let law = &problem.law;
         let m = problem.len();
-        let unchanged =
-            self.solver.is_some() && (0..m).all(|j| self.pattern[j] == Bounds::of(law.lower[j], law.upper[j]));
+        let unchanged = self.solver.is_some()
+            && !problem.has_moving()
+            && (0..m).all(|j| self.pattern[j] == Bounds::of(law.lower[j], law.upper[j]));
         self.pattern.clear();
         self.pattern.extend((0..m).map(|j| Bounds::of(law.lower[j], law.upper[j])));
         // Rows: n equalities, the fixed impulses, then the upper bounds and the lower bounds (in that order).
@@ -153,6 +150,13 @@ impl ClarabelQp {
                 .map_err(|e| NscdError::Clarabel { step: self.step, status: e.to_string() });
         }
         let (mut ai, mut aj, mut av) = self.a_triplets.clone();
+        for (k, row) in problem.interactions.rows().iter().enumerate() {
+            for (dof, value) in row.entries() {
+                ai.push(dof);
+                aj.push(n + k);
+                av.push(-value);
+            }
+        }
         let mut row = n;
         for (&j, sign) in
             fixed.iter().map(|j| (j, 1.0)).chain(boxed.iter().map(|j| (j, 1.0))).chain(lower.iter().map(|j| (j, -1.0)))

@@ -169,6 +169,10 @@ impl StepReport {
 pub trait InteractionSolver {
     /// Which solver this is.
     fn kind(&self) -> SolverKind;
+    /// Take in the rows the update phase rebuilt (moving interactions) before the next solve.
+    fn refresh(&mut self, _problem: &InteractionProblem) -> crate::Result<()> {
+        Ok(())
+    }
     /// Solve one step.
     fn solve(
         &mut self,

@@ -17,9 +17,12 @@ pub struct ProjectedGaussSeidel {
     m: usize,
     /// W row-major, m × m.
     w: Vec<f64>,
-    /// Per row j, the columns [first, last) outside which |W_ji| ≤ 1e-17·√(W_ii W_jj) (round-off of W itself):
-    /// W decays like e^{−|x_i − x_j|/(√2ℓ)}, so for devices a row keeps a handful of neighbours.
+    /// Per row j, the columns [first, last) among the fixed interactions outside which |W_ji| ≤ 1e-17·√(W_ii W_jj)
+    /// (round-off of W itself): W decays like e^{−|x_i − x_j|/(√2ℓ)}, so for devices a row keeps a handful of
+    /// neighbours. The moving interactions' columns (fixed..m) are always taken.
     reach: Vec<(usize, usize)>,
+    /// Number of fixed interactions (the moving ones follow).
+    fixed: usize,
     /// 1/(W_jj + d_j): the sweep multiplies (the sweep is a chain, each update waiting on the one before).
     inverse_diagonal: Vec<f64>,
     max_sweeps: usize,
@@ -50,23 +53,30 @@ impl ProjectedGaussSeidel {
                 w[j * m + i] = s;
             }
         }
+        let fixed = problem.fixed_len();
         let significant = |i: usize, j: usize| w[i * m + j].abs() > 1e-17 * (w[i * m + i] * w[j * m + j]).sqrt();
         let reach = (0..m)
             .map(|j| {
-                let first = (0..m).find(|&i| significant(j, i)).unwrap_or(j);
-                let last = (0..m).rfind(|&i| significant(j, i)).map_or(j + 1, |i| i + 1);
+                if j >= fixed {
+                    return (0, fixed);
+                }
+                let first = (0..fixed).find(|&i| significant(j, i)).unwrap_or(j);
+                let last = (0..fixed).rfind(|&i| significant(j, i)).map_or(j + 1, |i| i + 1);
                 (first.min(j), last.max(j + 1))
             })
             .collect();
         let inverse_diagonal = problem.delassus_diagonal.iter().map(|d| 1.0 / d).collect();
-        Self { m, w, reach, inverse_diagonal, max_sweeps, tolerance, u: vec![0.0; m] }
+        Self { m, w, reach, fixed, inverse_diagonal, max_sweeps, tolerance, u: vec![0.0; m] }
     }
 
     /// u = u_free + W p, each entry a dot product of a row of W (symmetric) with p.
     fn refresh_velocities(&mut self, u_free: &[f64], p: &[f64]) {
+        let (m, fixed) = (self.m, self.fixed);
         for (j, u) in self.u.iter_mut().enumerate() {
             let (first, last) = self.reach[j];
-            *u = u_free[j] + dot(&self.w[j * self.m + first..j * self.m + last], &p[first..last]);
+            *u = u_free[j]
+                + dot(&self.w[j * m + first..j * m + last], &p[first..last])
+                + dot(&self.w[j * m + fixed..(j + 1) * m], &p[fixed..]);
         }
     }
 
@@ -80,6 +90,21 @@ impl ProjectedGaussSeidel {
 impl InteractionSolver for ProjectedGaussSeidel {
     fn kind(&self) -> SolverKind {
         SolverKind::Projection
+    }
+
+    /// The moving interactions' rows and columns of W from their new responses: W_ij = H_i G_j.
+    fn refresh(&mut self, problem: &InteractionProblem) -> crate::Result<()> {
+        let (m, rows) = (self.m, problem.interactions.rows());
+        for j in self.fixed..m {
+            let response = problem.moving_response(j);
+            for (i, row) in rows.iter().enumerate() {
+                let wij = row.dot(response);
+                self.w[i * m + j] = wij;
+                self.w[j * m + i] = wij;
+            }
+            self.inverse_diagonal[j] = 1.0 / problem.delassus_diagonal[j];
+        }
+        Ok(())
     }
 
     fn solve(
@@ -105,6 +130,8 @@ impl InteractionSolver for ProjectedGaussSeidel {
                 let change = new - p[j];
                 if change != 0.0 {
                     axpy(change, &self.w[j * m + first..j * m + last], &mut self.u[first..last]);
+                    let fixed = self.fixed;
+                    axpy(change, &self.w[j * m + fixed..(j + 1) * m], &mut self.u[fixed..]);
                     largest = largest.max(change.abs() * problem.delassus_diagonal[j]);
                     p[j] = new;
                 }

@@ -87,6 +87,13 @@ impl BandedInteriorPoint {
         window_margin: Option<f64>,
     ) -> crate::Result<Self> {
         let (n, m) = (problem.m_hat.order(), problem.len());
+        if problem.has_moving() || !problem.interactions.rows().iter().all(|r| r.is_local()) {
+            return Err(crate::NscdError::Unsupported {
+                solver: SolverKind::InteriorPoint,
+                reason: "its banded Newton matrices take fixed rows of at most four consecutive DOFs; \
+                         moving interactions and longer rows need projection or clarabel",
+            });
+        }
         let backward = match window_margin {
             Some(_) => Some(problem.m_hat.reversed().factor()?),
             None => None,
