@@ -201,7 +201,7 @@ fn quartic_roots(c2: f64, c1: f64, c0: f64) -> [Complex64; 4] {
 
 /// An extreme value of the steady-state deflection and where it occurs in the moving frame.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Extreme {
+pub struct SteadyExtreme {
     /// Magnitude (m, ≥ 0).
     pub magnitude: f64,
     /// Position s = x − vt (m): positive ahead of the load, negative behind.
@@ -212,9 +212,9 @@ pub struct Extreme {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SteadyExtremes {
     /// Largest downward deflection (magnitude) and its position.
-    pub max_downward: Extreme,
+    pub max_downward: SteadyExtreme,
     /// Largest upward deflection (magnitude, 0 if the beam never rises) and its position.
-    pub max_upward: Extreme,
+    pub max_upward: SteadyExtreme,
 }
 
 /// The steady-state deflection of an infinite beam under a moving load, as a function of s = x − vt.
@@ -292,8 +292,8 @@ impl SteadyState {
         let down = refine(best_down.0, 1.0);
         let up = refine(best_up.0, -1.0);
         SteadyExtremes {
-            max_downward: Extreme { magnitude: self.amplitude * down.1.max(0.0), position: down.0 / self.beta },
-            max_upward: Extreme { magnitude: self.amplitude * up.1.max(0.0), position: up.0 / self.beta },
+            max_downward: SteadyExtreme { magnitude: self.amplitude * down.1.max(0.0), position: down.0 / self.beta },
+            max_upward: SteadyExtreme { magnitude: self.amplitude * up.1.max(0.0), position: up.0 / self.beta },
         }
     }
 }

@@ -80,6 +80,8 @@ pub struct InteractionRow {
     /// then read four DOFs from the first, the missing entries multiplying exact zeros — the same sums without a
     /// loop of variable length.
     contiguous: bool,
+    /// `contiguous` and at most four entries: the fast path of the products.
+    fast: bool,
     /// All entries of a row longer than four (`len` is then 0 and the arrays unused).
     long_dofs: Vec<usize>,
     long_values: Vec<f64>,
@@ -99,6 +101,7 @@ impl InteractionRow {
             values: [0.0; 4],
             len: 0,
             contiguous: true,
+            fast: true,
             long_dofs: Vec::new(),
             long_values: Vec::new(),
         };
@@ -141,6 +144,7 @@ impl InteractionRow {
             self.len = 0;
             self.contiguous = false;
         }
+        self.fast = self.contiguous;
     }
 
     /// Whether the row is stored inline (at most four entries).
@@ -183,7 +187,7 @@ impl InteractionRow {
     #[inline]
     pub fn dot(&self, v: &[f64]) -> f64 {
         let first = self.dofs[0];
-        if self.contiguous && self.is_short() && first + 4 <= v.len() {
+        if self.fast && first + 4 <= v.len() {
             let (h, x) = (&self.values, &v[first..first + 4]);
             return h[0] * x[0] + h[1] * x[1] + h[2] * x[2] + h[3] * x[3];
         }
@@ -198,7 +202,7 @@ impl InteractionRow {
     #[inline]
     pub fn add_transpose(&self, scale: f64, out: &mut [f64]) {
         let first = self.dofs[0];
-        if self.contiguous && self.is_short() && first + 4 <= out.len() {
+        if self.fast && first + 4 <= out.len() {
             let out = &mut out[first..first + 4];
             for k in 0..4 {
                 out[k] += scale * self.values[k];

@@ -234,7 +234,7 @@ impl InteractionProblem {
     /// Bring impulses into the step's bounds (a warm start from a step with other bounds).
     pub fn clamp_to_bounds(&self, p: &mut [f64]) {
         for (j, pj) in p.iter_mut().enumerate() {
-            *pj = pj.clamp(self.law.lower[j], self.law.upper[j]);
+            *pj = friction::law::project(*pj, self.law.lower[j], self.law.upper[j]);
         }
     }
 
@@ -287,9 +287,23 @@ impl InteractionProblem {
         natural_residual(r, p, law.lower[j], law.upper[j], 1.0 / self.delassus_diagonal[j])
     }
 
-    /// max_j of [`InteractionProblem::section_residual`] (m/s).
+    /// max_j of [`InteractionProblem::section_residual`] (m/s). For fixed friction alone (b = 0, d = 0) the law
+    /// velocity is U itself and the loop reads nothing else.
     pub fn law_residual(&self, u: &[f64], p: &[f64]) -> f64 {
-        (0..self.len()).map(|j| self.section_residual(j, u[j], p[j])).fold(0.0, f64::max)
+        let law = &self.law;
+        let mut worst: f64 = 0.0;
+        let bounds = law.lower.iter().zip(&law.upper).zip(&self.delassus_diagonal);
+        if self.varying {
+            let terms = law.drift.iter().zip(&law.compliance);
+            for (((&u, &p), ((&lo, &hi), &w)), (&b, &d)) in u.iter().zip(p).zip(bounds).zip(terms) {
+                worst = worst.max(natural_residual(u + b + d * p, p, lo, hi, 1.0 / w));
+            }
+        } else {
+            for ((&u, &p), ((&lo, &hi), &w)) in u.iter().zip(p).zip(bounds) {
+                worst = worst.max(natural_residual(u, p, lo, hi, 1.0 / w));
+            }
+        }
+        worst
     }
 
     /// The step's outcome for impulses p, as the stepper will form it: v = v_free + M̂⁻¹Hᵀp and U = H v (into the

@@ -109,6 +109,8 @@ pub struct MoreauJean {
     damped: bool,
     /// Whether some interaction is a compliant stop (whose spring energy is reported).
     varying_energy: bool,
+    /// Whether every interaction is friction (the ledger's work needs no kinds).
+    friction_only: bool,
     problem: InteractionProblem,
     solver: Box<dyn InteractionSolver>,
     q: Vec<f64>,
@@ -182,6 +184,7 @@ impl MoreauJean {
             h: integration.step,
             damped: system.has_damping(),
             varying_energy: problem.interactions.laws().iter().any(|l| matches!(l, Law::Compliant { .. })),
+            friction_only: problem.interactions.kinds().iter().all(|k| k.is_friction()),
             problem,
             solver,
             q: q0,
@@ -307,7 +310,11 @@ impl MoreauJean {
                     tolerance: report.tolerance,
                 });
             }
-            self.problem.add_response(&self.p, &mut self.v, &mut self.work);
+            // Write back the solver's v when it formed it, else v = v_free + M̂⁻¹Hᵀp here.
+            match self.solver.velocity() {
+                Some(v) => self.v.copy_from_slice(v),
+                None => self.problem.add_response(&self.p, &mut self.v, &mut self.work),
+            }
             report
         };
         // work = v_θ, the velocity of the step: q_{k+1} = q_k + h v_θ.
@@ -357,7 +364,7 @@ impl MoreauJean {
         } else {
             0.0
         };
-        let work = interaction_work(&self.problem.interactions, &self.p, &self.work);
+        let work = interaction_work(&self.problem.interactions, self.friction_only, &self.p, &self.work);
         let numerical = if theta > 0.5 {
             // (θ − ½)[ΔvᵀMΔv + ΔqᵀKΔq] with MΔv = Mv_{k+1} − Mv_k, Δq = h v_θ and KΔq = h K v_θ.
             let kinetic: f64 =
@@ -403,9 +410,15 @@ impl InteractionWork {
 }
 
 /// Σ_j (H_j v_θ) p_j by kind, each sum in interaction order; and the compliant springs' energy is not here (see
-/// [`EnergyLedger::spring_energy`]).
-fn interaction_work(interactions: &InteractionSet, p: &[f64], v_theta: &[f64]) -> InteractionWork {
+/// [`EnergyLedger::spring_energy`]). `friction_only`: every interaction is friction (one sum, no kind to read).
+fn interaction_work(interactions: &InteractionSet, friction_only: bool, p: &[f64], v_theta: &[f64]) -> InteractionWork {
     let mut work = InteractionWork { friction: 0.0, contact: 0.0, support: 0.0 };
+    if friction_only {
+        for (row, &pj) in interactions.rows().iter().zip(p) {
+            work.friction += row.dot(v_theta) * pj;
+        }
+        return work;
+    }
     for ((row, &pj), kind) in interactions.rows().iter().zip(p).zip(interactions.kinds()) {
         let term = row.dot(v_theta) * pj;
         match kind {

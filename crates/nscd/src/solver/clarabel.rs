@@ -183,6 +183,11 @@ impl InteractionSolver for ClarabelQp {
         SolverKind::Clarabel
     }
 
+    /// v of the final (clipped) impulses, formed for the law residual.
+    fn velocity(&self) -> Option<&[f64]> {
+        (self.step > 0).then_some(self.v.as_slice())
+    }
+
     fn solve(
         &mut self,
         problem: &InteractionProblem,

@@ -169,6 +169,12 @@ impl StepReport {
 pub trait InteractionSolver {
     /// Which solver this is.
     fn kind(&self) -> SolverKind;
+    /// The new velocity v = v_free + M̂⁻¹Hᵀp of the last solve's impulses, when the solver formed it to check the law
+    /// (written back: the stepper then need not form it again). The same arithmetic as
+    /// [`InteractionProblem::add_response`], so the same bits.
+    fn velocity(&self) -> Option<&[f64]> {
+        None
+    }
     /// Take in the rows the update phase rebuilt (moving interactions) before the next solve.
     fn refresh(&mut self, _problem: &InteractionProblem) -> crate::Result<()> {
         Ok(())

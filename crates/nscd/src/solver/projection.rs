@@ -10,6 +10,7 @@
 
 use super::{InteractionProblem, InteractionSolver, SolverKind, StepReport, StepStatus};
 use crate::kernels::{axpy, dot};
+use friction::law::project;
 
 /// Projected Gauss–Seidel with the dense W of the run.
 #[derive(Debug, Clone)]
@@ -69,14 +70,16 @@ impl ProjectedGaussSeidel {
         Self { m, w, reach, fixed, inverse_diagonal, max_sweeps, tolerance, u: vec![0.0; m] }
     }
 
-    /// u = u_free + W p, each entry a dot product of a row of W (symmetric) with p.
+    /// u = u_free + W p, each entry a dot product of a row of W (symmetric) with p (the fixed columns in reach, then
+    /// the moving ones).
     fn refresh_velocities(&mut self, u_free: &[f64], p: &[f64]) {
         let (m, fixed) = (self.m, self.fixed);
         for (j, u) in self.u.iter_mut().enumerate() {
             let (first, last) = self.reach[j];
-            *u = u_free[j]
-                + dot(&self.w[j * m + first..j * m + last], &p[first..last])
-                + dot(&self.w[j * m + fixed..(j + 1) * m], &p[fixed..]);
+            *u = u_free[j] + dot(&self.w[j * m + first..j * m + last], &p[first..last]);
+            if fixed < m {
+                *u += dot(&self.w[j * m + fixed..(j + 1) * m], &p[fixed..]);
+            }
         }
     }
 
@@ -119,20 +122,24 @@ impl InteractionSolver for ProjectedGaussSeidel {
         self.refresh_velocities(u_free, p);
         let mut sweeps = 0;
         let mut residual = f64::INFINITY;
+        // Fixed friction alone has no drift nor compliance (r = u) and no moving columns: the sweep skips them.
+        let (varying, fixed) = (problem.is_varying(), self.fixed);
+        let law = &problem.law;
         while sweeps < self.max_sweeps {
             sweeps += 1;
             let mut largest: f64 = 0.0;
             for j in 0..m {
                 let (first, last) = self.reach[j];
-                let law = &problem.law;
-                let r = law.law_velocity(j, self.u[j], p[j]);
-                let new = (p[j] - r * self.inverse_diagonal[j]).clamp(law.lower[j], law.upper[j]);
+                let r = if varying { law.law_velocity(j, self.u[j], p[j]) } else { self.u[j] };
+                let new = project(p[j] - r * self.inverse_diagonal[j], law.lower[j], law.upper[j]);
                 let change = new - p[j];
                 if change != 0.0 {
                     axpy(change, &self.w[j * m + first..j * m + last], &mut self.u[first..last]);
-                    let fixed = self.fixed;
-                    axpy(change, &self.w[j * m + fixed..(j + 1) * m], &mut self.u[fixed..]);
-                    largest = largest.max(change.abs() * problem.delassus_diagonal[j]);
+                    if fixed < m {
+                        axpy(change, &self.w[j * m + fixed..(j + 1) * m], &mut self.u[fixed..]);
+                    }
+                    let diagonal = if varying { problem.delassus_diagonal[j] } else { self.w[j * m + j] };
+                    largest = largest.max(change.abs() * diagonal);
                     p[j] = new;
                 }
             }

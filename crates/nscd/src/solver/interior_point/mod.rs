@@ -73,6 +73,8 @@ pub struct BandedInteriorPoint {
     correction: Vec<f64>,
     check: Vec<f64>,
     started: bool,
+    /// Whether `v` is v_free + M̂⁻¹Hᵀp of the impulses as they now are (formed by the last full residual).
+    v_current: bool,
     /// How the steps were solved.
     pub statistics: WindowStatistics,
 }
@@ -117,12 +119,14 @@ impl BandedInteriorPoint {
             correction: vec![0.0; n],
             check: vec![0.0; m],
             started: false,
+            v_current: false,
             statistics: WindowStatistics::default(),
         })
     }
 
     /// v = v_free + M̂⁻¹Hᵀp and the law residual of every section, into `self.check` (u) — one banded solve.
     fn full_residual(&mut self, problem: &InteractionProblem, v_free: &[f64], p: &[f64]) -> f64 {
+        self.v_current = true;
         problem.outcome(v_free, p, &mut self.v, &mut self.check)
     }
 
@@ -134,6 +138,7 @@ impl BandedInteriorPoint {
         tolerance: f64,
         budget: usize,
     ) -> crate::Result<(usize, f64)> {
+        self.v_current = false;
         self.statistics.full += 1;
         self.statistics.sections_solved += self.all_active.len();
         let q = &mut self.work.sections;
@@ -153,6 +158,11 @@ impl InteractionSolver for BandedInteriorPoint {
         SolverKind::InteriorPoint
     }
 
+    /// v of the final impulses when the last check formed it (every step but those solved on the whole beam).
+    fn velocity(&self) -> Option<&[f64]> {
+        self.v_current.then_some(self.v.as_slice())
+    }
+
     fn solve(
         &mut self,
         problem: &InteractionProblem,
@@ -161,6 +171,7 @@ impl InteractionSolver for BandedInteriorPoint {
         p: &mut [f64],
     ) -> crate::Result<StepReport> {
         let tolerance = problem.absolute_tolerance(self.tolerance, u_free);
+        self.v_current = false;
         if problem.is_varying() {
             // Interactions with lo = hi this step hold p = lo (the stepper clamped the warm start) and sit out.
             self.all_active.clear();

@@ -1,6 +1,7 @@
 //! The interior-point state of the active sections, one array per quantity, and the per-section passes over it.
 
 use banded::BlockRows;
+use friction::law::project;
 
 /// Interior-point state of the active sections, one array per quantity, k = 0..len in the order of `index`. The
 /// per-section arithmetic runs as straight loops over contiguous arrays (which the compiler vectorises); B and the
@@ -116,11 +117,10 @@ impl Sections {
     #[inline(always)]
     pub(super) fn law_residual(&self) -> f64 {
         let mut residual: f64 = 0.0;
-        let len = self.p.len();
-        let (u, lower, upper, w, inv_w) =
-            (&self.u[..len], &self.lower[..len], &self.upper[..len], &self.w[..len], &self.inv_w[..len]);
-        for (k, &p) in self.p.iter().enumerate() {
-            residual = residual.max((p - (p - u[k] * inv_w[k]).clamp(lower[k], upper[k])).abs() * w[k]);
+        let bounds = self.lower.iter().zip(&self.upper);
+        let scales = self.w.iter().zip(&self.inv_w);
+        for (((&p, &u), (&lo, &hi)), (&w, &inv_w)) in self.p.iter().zip(&self.u).zip(bounds).zip(scales) {
+            residual = residual.max((p - project(p - u * inv_w, lo, hi)).abs() * w);
         }
         residual
     }

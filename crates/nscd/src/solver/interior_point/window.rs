@@ -67,6 +67,7 @@ impl BandedInteriorPoint {
             self.backward.as_ref().expect("window factors").subtract_trailing_schur(end, &mut self.window_matrix);
         }
         self.statistics.sections_solved += self.work.sections.index.len();
+        self.v_current = false;
         let (iterations, _) = self.work.iterate(
             &Subproblem { problem, base: &self.window_matrix, offset: start, tolerance, max_iterations: budget },
             p,
