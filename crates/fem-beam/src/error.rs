@@ -17,6 +17,24 @@ pub enum FemError {
         /// What is allowed, in words.
         allowed: &'static str,
     },
+    /// A value of a train (an axle's or a patch's) is out of range; `path` names it, e.g. `axles[3].offset`.
+    #[error("invalid {path} = {value}: {allowed}")]
+    InvalidTrain {
+        /// Which value, e.g. `axles[3].offset`.
+        path: String,
+        /// The offending value.
+        value: f64,
+        /// What is allowed, in words.
+        allowed: &'static str,
+    },
+    /// No train of the catalogue has this name.
+    #[error("unknown train `{name}`, expected one of {known}")]
+    UnknownTrain {
+        /// The name asked for.
+        name: String,
+        /// The catalogue's names.
+        known: String,
+    },
     /// A count (elements, modes, …) is out of its allowed range.
     #[error("invalid {field} = {value}: {allowed}")]
     InvalidCount {

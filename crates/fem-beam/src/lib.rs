@@ -26,6 +26,7 @@ pub mod reference;
 pub mod section;
 pub mod statics;
 pub mod supports;
+pub mod train;
 
 pub use absorbing::AbsorbingZones;
 pub use assembly::BeamModel;
@@ -34,6 +35,7 @@ pub use load::LoadVector;
 pub use mesh::Mesh;
 pub use properties::{Beam, Foundation};
 pub use supports::{DofMap, Support, Supports};
+pub use train::{Axle, Patch, Train};
 
 /// Standard gravity g (m/s²), for self-weight.
 pub const GRAVITY: f64 = 9.81;

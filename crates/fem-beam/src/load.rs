@@ -32,6 +32,24 @@ impl ElementLoad {
     }
 }
 
+impl ElementLoad {
+    /// The consistent nodal loads q·∫Ψᵀdx of a uniform load `per_length` (N/m, positive upward) over the part of
+    /// [a, b] (m) that lies on the beam, one contribution per element it covers (none when it misses the beam):
+    /// the closed-form integrals of the Hermite cubics over partial elements ([`hermite::shape_integral`]).
+    pub fn uniform_patch(mesh: &Mesh, a: f64, b: f64, per_length: f64) -> impl Iterator<Item = ElementLoad> + '_ {
+        let l = mesh.element_length();
+        let (a, b) = (a.max(0.0), b.min(mesh.length));
+        let (first, last) =
+            if b > a { ((a / l).floor() as usize, ((b / l).ceil() as usize).min(mesh.elements)) } else { (0, 0) };
+        (first..last).filter_map(move |element| {
+            let x_a = mesh.node_x(element);
+            let (xi0, xi1) = (((a - x_a) / l).clamp(0.0, 1.0), ((b - x_a) / l).clamp(0.0, 1.0));
+            (xi1 > xi0)
+                .then(|| ElementLoad { element, nodal: hermite::shape_integral(xi0, xi1, l).map(|v| v * per_length) })
+        })
+    }
+}
+
 /// A load case: a list of element contributions.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct LoadVector {
@@ -68,6 +86,15 @@ impl LoadVector {
         let p = mesh.locate(x)?;
         let n = hermite::shape_dx(p.xi, mesh.element_length());
         self.contributions.push(ElementLoad { element: p.element, nodal: n.map(|v| v * moment) });
+        Ok(())
+    }
+
+    /// Add a uniform load `per_length` (N/m, positive upward) over the part of [a, b] (m) on the beam.
+    pub fn add_patch(&mut self, mesh: &Mesh, a: f64, b: f64, per_length: f64) -> Result<()> {
+        finite("patch load", per_length)?;
+        finite("patch start", a)?;
+        finite("patch end", b)?;
+        self.contributions.extend(ElementLoad::uniform_patch(mesh, a, b, per_length));
         Ok(())
     }
 

@@ -57,6 +57,19 @@ pub fn uniform_load(q: f64, l: f64) -> ElementVector {
     [q * l / 2.0, q * l * l / 12.0, q * l / 2.0, -q * l * l / 12.0]
 }
 
+/// ∫ N(x) dx over the part [ξ₀, ξ₁] (0 ≤ ξ₀ ≤ ξ₁ ≤ 1) of an element of length l: the consistent nodal loads of a
+/// unit uniform load over that part (docs/theory.md §10). With the antiderivatives in ξ
+/// A₁ = ξ − ξ³ + ξ⁴/2, A₂ = l(ξ²/2 − 2ξ³/3 + ξ⁴/4), A₃ = ξ³ − ξ⁴/2, A₄ = l(−ξ³/3 + ξ⁴/4), the integral is
+/// l·(A(ξ₁) − A(ξ₀)); over the whole element (l/2, l²/12, l/2, −l²/12), as [`uniform_load`].
+pub fn shape_integral(xi0: f64, xi1: f64, l: f64) -> ElementVector {
+    let antiderivative = |x: f64| {
+        let (x2, x3, x4) = (x * x, x * x * x, x * x * x * x);
+        [x - x3 + 0.5 * x4, l * (0.5 * x2 - 2.0 * x3 / 3.0 + 0.25 * x4), x3 - 0.5 * x4, l * (-x3 / 3.0 + 0.25 * x4)]
+    };
+    let (a, b) = (antiderivative(xi0), antiderivative(xi1));
+    std::array::from_fn(|k| l * (b[k] - a[k]))
+}
+
 /// Element matrix sum a·A + b·B.
 pub fn combine(a: f64, lhs: &ElementMatrix, b: f64, rhs: &ElementMatrix) -> ElementMatrix {
     let mut out = [[0.0; 4]; 4];

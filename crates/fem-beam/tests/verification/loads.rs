@@ -101,3 +101,46 @@ fn assembled_matrices_are_positive_definite_for_every_support() {
             .unwrap();
     assert!(bare.stiffness().factor().is_err());
 }
+
+/// A uniform patch over whole elements gives the standard consistent loads; over partial elements it is the limit
+/// of n equal point loads q·ℓ/n at the midpoints of n equal parts (the composite midpoint rule on the piecewise
+/// cubic Ψ: error O(1/n²), so each doubling of n divides it by about 4); its total is q·ℓ for the part on the beam.
+#[test]
+fn patch_loads_are_the_limit_of_point_loads() {
+    let mesh = Mesh::new(20.0, 20).unwrap();
+    let q = -2.5e4;
+    let mut whole = LoadVector::new();
+    whole.add_patch(&mesh, 4.0, 6.0, q).unwrap();
+    assert_eq!(whole.contributions().len(), 2);
+    for c in whole.contributions() {
+        for (a, b) in c.nodal.iter().zip(hermite::uniform_load(q, 1.0)) {
+            assert!((a - b).abs() <= 1e-12 * q.abs(), "{a} vs {b}");
+        }
+    }
+    let (a, b) = (3.3, 7.85);
+    let mut patch = LoadVector::new();
+    patch.add_patch(&mesh, a, b, q).unwrap();
+    let exact = patch.to_full(&mesh);
+    assert!((patch.total_force() - q * (b - a)).abs() <= 1e-12 * (q * (b - a)).abs());
+    let mut errors = Vec::new();
+    for n in [10, 20, 40, 80] {
+        let mut points = LoadVector::new();
+        let width = (b - a) / n as f64;
+        for i in 0..n {
+            points.add_point_force(&mesh, a + (i as f64 + 0.5) * width, q * width).unwrap();
+        }
+        let approx = points.to_full(&mesh);
+        let scale = exact.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        errors.push(exact.iter().zip(&approx).fold(0.0f64, |m, (x, y)| m.max((x - y).abs())) / scale);
+    }
+    for pair in errors.windows(2) {
+        assert!(pair[1] <= pair[0] / 3.5, "not second order: {errors:?}");
+    }
+    // Off the beam: only the covered part counts.
+    let mut hanging = LoadVector::new();
+    hanging.add_patch(&mesh, 18.5, 25.0, q).unwrap();
+    assert!((hanging.total_force() - q * 1.5).abs() <= 1e-12 * (q * 1.5).abs());
+    let mut missing = LoadVector::new();
+    missing.add_patch(&mesh, 21.0, 25.0, q).unwrap();
+    assert!(missing.contributions().is_empty());
+}
