@@ -89,6 +89,11 @@ impl LoadVector {
         Ok(())
     }
 
+    /// Add one element's consistent loads.
+    pub fn push(&mut self, load: ElementLoad) {
+        self.contributions.push(load);
+    }
+
     /// Add a uniform load `per_length` (N/m, positive upward) over the part of [a, b] (m) on the beam.
     pub fn add_patch(&mut self, mesh: &Mesh, a: f64, b: f64, per_length: f64) -> Result<()> {
         finite("patch load", per_length)?;

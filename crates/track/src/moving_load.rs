@@ -1,63 +1,79 @@
-//! The moving point load of docs/theory.md §3 as a [`Forcing`] of the beam's free DOFs.
+//! The moving loads of docs/theory.md §3 and §10 as a [`Forcing`] of the beam's free DOFs: a train of axles and
+//! uniform patches at speed v (one axle: the reference case's single load).
 
 use fem_beam::load::ElementLoad;
-use fem_beam::{DofMap, Mesh};
+use fem_beam::{DofMap, Mesh, Train};
 use nscd::Forcing;
 
-/// A point force moving at constant speed: −F·Ψᵀ(x_c) at x_c = x₀ + v·t while 0 ≤ x_c ≤ L, zero otherwise
-/// (the load enters at x₀ and leaves at L). Ψ are the Hermite shape functions of the element containing x_c, so the
-/// load gives consistent nodal forces *and* moments.
+/// A train moving at constant speed, its first axle at x_c(t) = x₀ + v·t. Axle i (offset d_i) is at x_c − d_i and
+/// loads the beam with −P_i·Ψᵀ(x) while 0 ≤ x ≤ L (Ψ the Hermite shape functions of the element containing it:
+/// consistent nodal forces *and* moments); a patch loads the part of it on the beam with −q∫Ψᵀdx. Each axle enters
+/// and leaves on its own.
 #[derive(Debug, Clone)]
 pub struct MovingLoad {
     mesh: Mesh,
     /// Free index of each full DOF (None if constrained).
     free: Vec<Option<usize>>,
-    /// Load magnitude F (N), acting downward.
-    pub force: f64,
+    /// The train.
+    pub train: Train,
     /// Speed v (m/s).
     pub speed: f64,
-    /// Position at t = 0 (m).
+    /// Position of the first axle at t = 0 (m).
     pub start: f64,
 }
 
 impl MovingLoad {
-    /// A load of magnitude `force` (N, downward) at `start` (m) at t = 0 moving at `speed` (m/s).
+    /// A single load of magnitude `force` (N, downward) at `start` (m) at t = 0 moving at `speed` (m/s).
     pub fn new(mesh: Mesh, dofs: &DofMap, force: f64, speed: f64, start: f64) -> Self {
-        let free = (0..dofs.full_len()).map(|d| dofs.free_index(d)).collect();
-        Self { mesh, free, force, speed, start }
+        Self::train(mesh, dofs, Train::single(force), speed, start)
     }
 
-    /// Position of the load at time t (m), whether or not it is on the beam.
+    /// `train` with its first axle at `start` (m) at t = 0, moving at `speed` (m/s).
+    pub fn train(mesh: Mesh, dofs: &DofMap, train: Train, speed: f64, start: f64) -> Self {
+        let free = (0..dofs.full_len()).map(|d| dofs.free_index(d)).collect();
+        Self { mesh, free, train, speed, start }
+    }
+
+    /// Position of the first axle at time t (m), whether or not it is on the beam.
     pub fn position(&self, time: f64) -> f64 {
         self.start + self.speed * time
     }
 
-    /// The element, its free DOFs and the nodal values −F·Ψ at time t, or None once the load is off the beam.
-    fn nodal(&self, time: f64) -> Option<([Option<usize>; 4], [f64; 4])> {
-        let x = self.position(time);
-        // Round-off in t = k·h must not push the load off the end at the last step.
+    /// The consistent element loads of everything on the beam at time t ([`Train::element_loads`]).
+    pub fn element_loads(&self, time: f64) -> impl Iterator<Item = ElementLoad> + '_ {
+        self.train.element_loads(&self.mesh, self.position(time))
+    }
+
+    /// Whether any part of the train is on the beam at time t.
+    pub fn is_on_beam(&self, time: f64) -> bool {
+        let head = self.position(time);
         let tol = 1e-9 * self.mesh.length;
-        if x < -tol || x > self.mesh.length + tol {
-            return None;
-        }
-        let load = ElementLoad::point_force(&self.mesh, x.clamp(0.0, self.mesh.length), -self.force).ok()?;
-        let dofs = std::array::from_fn(|k| self.free[2 * load.element + k]);
-        Some((dofs, load.nodal))
+        head >= -tol && head - self.train.length() <= self.mesh.length + tol
+    }
+
+    fn free_dofs(&self, element: usize) -> [Option<usize>; 4] {
+        std::array::from_fn(|k| self.free[2 * element + k])
     }
 }
 
 impl Forcing for MovingLoad {
     fn add_to(&self, time: f64, scale: f64, out: &mut [f64]) {
-        if let Some((dofs, values)) = self.nodal(time) {
+        for load in self.element_loads(time) {
+            let dofs = self.free_dofs(load.element);
             for k in 0..4 {
                 if let Some(d) = dofs[k] {
-                    out[d] += scale * values[k];
+                    out[d] += scale * load.nodal[k];
                 }
             }
         }
     }
 
     fn power(&self, time: f64, v: &[f64]) -> f64 {
-        self.nodal(time).map_or(0.0, |(dofs, values)| (0..4).filter_map(|k| dofs[k].map(|d| values[k] * v[d])).sum())
+        let mut power = 0.0;
+        for load in self.element_loads(time) {
+            let dofs = self.free_dofs(load.element);
+            power += (0..4).filter_map(|k| dofs[k].map(|d| load.nodal[k] * v[d])).sum::<f64>();
+        }
+        power
     }
 }

@@ -8,6 +8,7 @@
 //! moving load where it stands plus the friction forces p_j/h of the step at their sections.
 
 use crate::error::Result;
+use crate::moving_load::MovingLoad;
 use crate::simulation::{RunSettings, StepView};
 use fem_beam::section::Motion;
 use fem_beam::{BeamModel, LoadVector};
@@ -45,7 +46,7 @@ pub struct Snapshot {
 pub struct SnapshotTaker<'a> {
     model: &'a BeamModel,
     interactions: &'a InteractionSet,
-    force: f64,
+    load: MovingLoad,
     step: f64,
     /// (trigger time, request), sorted by trigger time.
     pending: Vec<(f64, SnapshotAt)>,
@@ -88,8 +89,14 @@ impl<'a> SnapshotTaker<'a> {
             pending.push((trigger, request));
         }
         pending.sort_by(|a, b| a.0.total_cmp(&b.0));
-        let force = settings.moving.force;
-        Ok(Self { model, interactions, force, step, pending, next: 0, taken: Vec::new(), error: None })
+        let load = MovingLoad::train(
+            *model.mesh(),
+            model.dofs(),
+            settings.moving.train(),
+            settings.moving.speed,
+            settings.start_position(),
+        );
+        Ok(Self { model, interactions, load, step, pending, next: 0, taken: Vec::new(), error: None })
     }
 
     /// Observe one step; returns false (stop the run) only after an error, kept for [`SnapshotTaker::finish`].
@@ -118,8 +125,8 @@ impl<'a> SnapshotTaker<'a> {
             view.velocity.iter().zip(view.previous_velocity).map(|(a, b)| (a - b) / self.step).collect();
         let a = dofs.expand(&mean);
         let mut loads = LoadVector::new();
-        if (0.0..=mesh.length).contains(&view.load_position) {
-            loads.add_point_force(&mesh, view.load_position, -self.force)?;
+        for load in self.load.element_loads(view.time) {
+            loads.push(load);
         }
         for (&x, &p) in self.interactions.positions().iter().zip(view.impulses) {
             loads.add_point_force(&mesh, x, p / self.step)?;

@@ -10,4 +10,5 @@ mod runs {
     mod linear;
     mod solvers_agree;
     mod steady_state;
+    mod trains;
 }

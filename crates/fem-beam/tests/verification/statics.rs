@@ -96,3 +96,77 @@ fn non_nodal_load_converges_with_refinement() {
     // so inside the loaded element it is only C² and the cubic interpolation error is O(l³). Measured 2.90, 2.95.
     assert!((2.8..3.2).contains(&order1) && (2.8..3.2).contains(&order2), "observed orders {order1}, {order2}");
 }
+
+/// A train standing on the track (v → 0): the static deflection is the sum of each axle's closed-form w₀ shape
+/// (Hetényi: w(s) = −Pβ/(2k_f)·e^{−β|s|}(cos βs + sin β|s|), upward positive), on every node within 40 m of the
+/// train, to the 1e-4 the 1 m elements reach for one load.
+#[test]
+fn a_standing_train_is_the_sum_of_closed_form_shapes() {
+    let case = uic60_on_soft_soil();
+    let model = case.model().unwrap();
+    let beta = case.infinite_beam().unwrap().beta();
+    let k = case.foundation.stiffness;
+    // A power car and the front of its end coach (HSLM axle pattern), 170 kN axles, first axle at x = 110 m.
+    let train = fem_beam::Train {
+        name: "power car".into(),
+        axles: [0.0, 3.0, 14.0, 17.0, 20.525].iter().map(|&offset| fem_beam::Axle { offset, force: 170e3 }).collect(),
+        patches: Vec::new(),
+    };
+    let head = 110.0;
+    let q = model.static_solve(&train.load_vector(model.mesh(), head)).unwrap();
+    let closed = |x: f64| -> f64 {
+        train
+            .axles
+            .iter()
+            .map(|a| {
+                let s = beta * (x - (head - a.offset)).abs();
+                -a.force * beta / (2.0 * k) * (-s).exp() * (s.cos() + s.sin())
+            })
+            .sum()
+    };
+    let scale = (50..=150).map(|i| closed(i as f64).abs()).fold(0.0, f64::max);
+    for i in 50..=150 {
+        let x = i as f64;
+        let w = model.deflection_at(&q, x).unwrap();
+        assert!((w - closed(x)).abs() <= 1e-4 * scale, "x = {x}: {w} vs {}", closed(x));
+    }
+}
+
+/// A train standing on a simply supported span without foundation: each axle's deflection is the beam formula
+/// w(x) = −P b x (L² − b² − x²)/(6EIL) for x ≤ a (a = L − b the axle's position; mirrored beyond), and Hermite
+/// elements reproduce nodal values exactly for loads on nodes.
+#[test]
+fn a_standing_train_on_a_span_matches_the_beam_formula() {
+    let beam = Beam::default();
+    let (length, elements) = (24.0, 48);
+    let mesh = Mesh::new(length, elements).unwrap();
+    let model =
+        BeamModel::new(beam, Foundation { stiffness: 0.0, damping: 0.0 }, mesh, Supports::both(Support::Pinned))
+            .unwrap();
+    let ei = beam.bending_stiffness();
+    let train = fem_beam::Train {
+        name: "bogie pair".into(),
+        axles: [0.0, 2.5, 17.5, 20.0].iter().map(|&offset| fem_beam::Axle { offset, force: 190e3 }).collect(),
+        patches: Vec::new(),
+    };
+    let head = 22.0;
+    let q = model.static_solve(&train.load_vector(&mesh, head)).unwrap();
+    let formula = |x: f64| -> f64 {
+        train
+            .axles
+            .iter()
+            .map(|axle| {
+                let a = head - axle.offset;
+                let (a, x) = if x <= a { (a, x) } else { (length - a, length - x) };
+                let b = length - a;
+                -axle.force * b * x * (length * length - b * b - x * x) / (6.0 * ei * length)
+            })
+            .sum()
+    };
+    let scale = (0..=elements).map(|i| formula(mesh.node_x(i)).abs()).fold(0.0, f64::max);
+    for i in 0..=elements {
+        let x = mesh.node_x(i);
+        let w = model.deflection_at(&q, x).unwrap();
+        assert!((w - formula(x)).abs() <= 1e-10 * scale, "x = {x}: {w} vs {}", formula(x));
+    }
+}

@@ -194,7 +194,7 @@ impl Scenario {
             moving_window: i.moving_window,
         };
         RunSettings {
-            moving: MovingLoadSettings { speed, force: self.load.force, initial },
+            moving: MovingLoadSettings { speed, force: self.load.force, train: None, initial },
             integration: IntegrationSettings {
                 theta: i.theta,
                 load_advance: i.load_advance,

@@ -20,7 +20,6 @@ use crate::moving_load::MovingLoad;
 use crate::system::beam_system;
 use fem_beam::BeamModel;
 use fem_beam::element::hermite;
-use fem_beam::load::ElementLoad;
 use fem_beam::reference::InfiniteBeam;
 use fem_beam::section::Motion;
 use friction::InteractionSet;
@@ -75,17 +74,30 @@ impl<'a> Simulation<'a> {
         match self.settings.moving.initial {
             InitialState::Rest => Ok((vec![0.0; n], vec![0.0; n])),
             InitialState::SteadyState { position } => {
+                // The infinite beam is linear: a train's steady state is the sum of its axles' (docs/theory.md §8,
+                // §10), each shifted by its offset. Patches have no closed form here.
+                let train = self.settings.moving.train();
+                if !train.patches.is_empty() {
+                    return Err(nscd::NscdError::InvalidField {
+                        field: "initial.position",
+                        value: position,
+                        allowed: "the steady-state start takes trains of axles only (no load patches)".into(),
+                    }
+                    .into());
+                }
                 let infinite = InfiniteBeam::new(self.model.beam(), self.model.foundation())?;
-                let state = infinite.steady_state(self.settings.moving.speed, self.settings.moving.force)?;
                 let mesh = self.model.mesh();
                 let mut q = vec![0.0; dofs.full_len()];
                 let mut v = vec![0.0; dofs.full_len()];
-                for i in 0..mesh.nodes() {
-                    let s = mesh.node_x(i) - position;
-                    q[2 * i] = state.deflection(s);
-                    q[2 * i + 1] = state.slope(s);
-                    v[2 * i] = state.velocity(s);
-                    v[2 * i + 1] = state.rotation_rate(s);
+                for axle in &train.axles {
+                    let state = infinite.steady_state(self.settings.moving.speed, axle.force)?;
+                    for i in 0..mesh.nodes() {
+                        let s = mesh.node_x(i) - (position - axle.offset);
+                        q[2 * i] += state.deflection(s);
+                        q[2 * i + 1] += state.slope(s);
+                        v[2 * i] += state.velocity(s);
+                        v[2 * i + 1] += state.rotation_rate(s);
+                    }
                 }
                 Ok((dofs.reduce(&q), dofs.reduce(&v)))
             }
@@ -114,7 +126,7 @@ impl<'a> Simulation<'a> {
         let margin = 30.0 * coupling_length(model, h, settings.integration.theta);
         let (q0, v0) = self.initial_state()?;
         let start = settings.start_position();
-        let load = MovingLoad::new(mesh, dofs, settings.moving.force, settings.moving.speed, start);
+        let load = MovingLoad::train(mesh, dofs, settings.moving.train(), settings.moving.speed, start);
         let solver_settings = SolverSettings { kind, ..settings.integration.solver };
         let interactions = self.interactions.clone();
         let mut stepper =
@@ -275,11 +287,6 @@ impl<'a> Simulation<'a> {
     ) -> f64 {
         let model = self.model;
         let mesh = model.mesh();
-        let x_load = load.position(time);
-        let moving = (0.0..=mesh.length)
-            .contains(&x_load)
-            .then(|| ElementLoad::point_force(mesh, x_load, -load.force).ok())
-            .flatten();
         let motion = Motion { velocity: Some(&full.v), acceleration: Some(&full.a) };
         let mut sum = 0.0;
         let mut count = 0.0;
@@ -288,8 +295,8 @@ impl<'a> Simulation<'a> {
                 continue;
             }
             let mut external = [0.0; 4];
-            if let Some(point) = moving.filter(|p| p.element == e) {
-                external = point.nodal;
+            for point in load.element_loads(time).filter(|p| p.element == e) {
+                (0..4).for_each(|k| external[k] += point.nodal[k]);
             }
             if let Some((p, h, inside)) = friction {
                 for section in inside.iter().filter(|s| s.element == e) {

@@ -3,7 +3,7 @@
 //! anything is allocated.
 
 use crate::error::Result;
-use fem_beam::BeamModel;
+use fem_beam::{BeamModel, Train};
 use nscd::NscdError;
 use nscd::solver::SolverSettings;
 use nscd::stepper::Integration;
@@ -22,20 +22,34 @@ pub enum InitialState {
     },
 }
 
-/// What moves on the beam: the load, its speed and where it starts.
+/// What moves on the beam: the load (one axle, or a train), its speed and where it starts.
 #[derive(Debug, Clone, PartialEq)]
 pub struct MovingLoadSettings {
     /// Load speed v (m/s) > 0. Default 200.
     pub speed: f64,
-    /// Load magnitude F (N), acting downward, ≥ 0. Default 83.4 kN.
+    /// Load magnitude F (N), acting downward, ≥ 0, when no train is given. Default 83.4 kN.
     pub force: f64,
-    /// Initial state (and with it the load's start position). Default rest, the load entering at x = 0.
+    /// A train of axles and patches (docs/theory.md §10) instead of the single load `force`. Default none.
+    pub train: Option<Train>,
+    /// Initial state (and with it the first axle's start position). Default rest, the load entering at x = 0.
     pub initial: InitialState,
 }
 
 impl Default for MovingLoadSettings {
     fn default() -> Self {
-        Self { speed: 200.0, force: 83.4e3, initial: InitialState::Rest }
+        Self { speed: 200.0, force: 83.4e3, train: None, initial: InitialState::Rest }
+    }
+}
+
+impl MovingLoadSettings {
+    /// The train that moves: the given one, or a single axle of `force`.
+    pub fn train(&self) -> Train {
+        self.train.clone().unwrap_or_else(|| Train::single(self.force))
+    }
+
+    /// The train's length behind its first axle (m; 0 for a single load).
+    pub fn train_length(&self) -> f64 {
+        self.train.as_ref().map_or(0.0, Train::length)
     }
 }
 
@@ -94,6 +108,9 @@ impl RunSettings {
         }
         if !(self.moving.force.is_finite() && self.moving.force >= 0.0) {
             return Err(invalid("load", self.moving.force, "must be finite and ≥ 0 (N, acting downward)"));
+        }
+        if let Some(train) = &self.moving.train {
+            train.validate()?;
         }
         let l = model.mesh().element_length();
         if !(self.integration.load_advance.is_finite()
@@ -195,8 +212,8 @@ impl RunSettings {
         }
     }
 
-    /// Time for the load to reach x = L (s).
+    /// Time for the load — the last axle of a train — to reach x = L (s).
     pub fn crossing_time(&self, length: f64) -> f64 {
-        (length - self.start_position()) / self.moving.speed
+        (length + self.moving.train_length() - self.start_position()) / self.moving.speed
     }
 }
