@@ -14,6 +14,7 @@ mod run;
 mod scenario_args;
 mod study_cmd;
 mod sweep;
+mod trains;
 
 use clap::{Parser, Subcommand, ValueEnum};
 use std::process::ExitCode;
@@ -45,6 +46,8 @@ enum Command {
     Init(init::InitArgs),
     /// Static response and natural frequencies of the reference case beside their closed forms.
     Reference(reference::ReferenceArgs),
+    /// List the catalogue of trains, or print one train's axles (offsets behind the first axle, forces).
+    Trains(trains::TrainsArgs),
     /// Closed-form steady state of an infinite beam under a moving load: max downward/upward deflection, and the
     /// dynamic amplification curve over a speed range.
     Analytic(analytic::AnalyticArgs),
@@ -72,6 +75,7 @@ fn main() -> ExitCode {
         Command::Init(args) => init::run(&args),
         Command::Reference(args) => reference::run(&args),
         Command::Analytic(args) => analytic::run(&args),
+        Command::Trains(args) => trains::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

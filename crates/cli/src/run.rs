@@ -54,6 +54,8 @@ pub struct RunReport {
     title: String,
     speed: f64,
     load: f64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    train: Option<crate::trains::TrainSummary>,
     critical_speed: Option<f64>,
     damping_ratio: f64,
     devices: usize,
@@ -193,6 +195,7 @@ fn report(scenario: &Scenario, case: &Case, result: &RunResult, wall_time: f64) 
         title: scenario.title.clone(),
         speed: settings.moving.speed,
         load: settings.moving.force,
+        train: settings.moving.train.as_ref().map(crate::trains::TrainSummary::of),
         critical_speed: critical,
         damping_ratio: foundation.damping_ratio(case.model.beam()),
         devices: device_positions.len(),
@@ -229,7 +232,18 @@ fn report(scenario: &Scenario, case: &Case, result: &RunResult, wall_time: f64) 
 
 fn print_text(r: &RunReport) {
     let title = if r.title.is_empty() { String::new() } else { format!(" — {}", r.title) };
-    println!("frictrack run{title}: load {:.1} kN at {:.2} m/s ({:.0} km/h)", r.load / 1e3, r.speed, r.speed * 3.6);
+    let load = match &r.train {
+        Some(t) => format!(
+            "train {} ({} axles, {} patches, {:.3} m, {:.1} kN)",
+            t.name,
+            t.axles,
+            t.patches,
+            t.length,
+            t.total_force / 1e3
+        ),
+        None => format!("load {:.1} kN", r.load / 1e3),
+    };
+    println!("frictrack run{title}: {load} at {:.2} m/s ({:.0} km/h)", r.speed, r.speed * 3.6);
     if let Some(v_cr) = r.critical_speed {
         println!(
             "  critical speed of the infinite track v_cr = {v_cr:.2} m/s; foundation damping ζ = {}",

@@ -22,6 +22,10 @@ pub struct ScenarioArgs {
     /// Load speed (m/s).
     #[arg(long, allow_negative_numbers = true)]
     pub speed: Option<f64>,
+    /// A train instead of the single load: a catalogue name (see `frictrack trains`) or a CSV file of offset,force
+    /// lines (m behind the first axle, N).
+    #[arg(long, value_name = "NAME|FILE")]
+    pub train: Option<String>,
     /// Number of friction devices, evenly spaced at i·L/(N+1) and snapped to nodes.
     #[arg(long, allow_negative_numbers = true)]
     pub devices: Option<usize>,
@@ -86,6 +90,11 @@ impl ScenarioArgs {
         };
         if let Some(v) = self.speed {
             s.load.speed = v;
+        }
+        if let Some(train) = &self.train {
+            s.load.train = Some(train.clone());
+            s.load.axles.clear();
+            s.load.patches.clear();
         }
         if self.devices.is_some() || self.device_force.is_some() {
             let d = s.friction.devices.get_or_insert_with(DevicesSection::default);

@@ -72,7 +72,16 @@ impl StudyError {
         use fem_beam::FemError as F;
         use friction::FrictionError as R;
         use nscd::NscdError as N;
-        let beam = |e: &F| matches!(e, F::InvalidField { .. } | F::InvalidCount { .. } | F::NoSteadyState { .. });
+        let beam = |e: &F| {
+            matches!(
+                e,
+                F::InvalidField { .. }
+                    | F::InvalidCount { .. }
+                    | F::NoSteadyState { .. }
+                    | F::InvalidTrain { .. }
+                    | F::UnknownTrain { .. }
+            )
+        };
         let friction = |e: &R| match e {
             R::InvalidField { .. } | R::InvalidCount { .. } => true,
             R::Beam(b) => beam(b),

@@ -19,6 +19,7 @@ pub mod scenario;
 pub mod shard;
 pub mod speeds;
 pub mod sweep;
+pub mod trains;
 
 pub use error::{Result, StudyError};
 pub use journal::Journal;

@@ -2,6 +2,7 @@
 
 mod bad_inputs;
 mod run_out;
+mod trains;
 mod trust;
 
 use std::process::{Command, Output};

@@ -92,7 +92,7 @@ impl Scenario {
                 ));
             }
         }
-        let settings = self.run_settings(self.load.speed);
+        let settings = self.run_settings(self.load.speed)?;
         settings.validate(&model).map_err(scenario_path)?;
         if let Some(sweep) = &self.sweep {
             sweep.validate("sweep")?;
@@ -180,8 +180,10 @@ impl Scenario {
         Ok(interactions)
     }
 
-    /// Run settings for a load speed `speed` (m/s), not yet validated (see [`Scenario::build`]).
-    pub fn run_settings(&self, speed: f64) -> RunSettings {
+    /// Run settings for a load speed `speed` (m/s), with the train resolved ([`crate::trains::resolve`]) but not yet
+    /// validated (see [`Scenario::build`]).
+    pub fn run_settings(&self, speed: f64) -> Result<RunSettings> {
+        let train = crate::trains::resolve(&self.load)?;
         let i = &self.integration;
         let initial = match i.steady_start {
             Some(position) => InitialState::SteadyState { position },
@@ -193,8 +195,8 @@ impl Scenario {
             max_iterations: i.max_iterations,
             moving_window: i.moving_window,
         };
-        RunSettings {
-            moving: MovingLoadSettings { speed, force: self.load.force, train: None, initial },
+        Ok(RunSettings {
+            moving: MovingLoadSettings { speed, force: self.load.force, train, initial },
             integration: IntegrationSettings {
                 theta: i.theta,
                 load_advance: i.load_advance,
@@ -205,7 +207,7 @@ impl Scenario {
                 sections: self.output.sections.clone(),
                 extremes_window: Some(self.output.extremes_window(self.mesh.length)),
             },
-        }
+        })
     }
 }
 

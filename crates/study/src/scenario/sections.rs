@@ -131,16 +131,48 @@ impl Default for AbsorbingZonesSection {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct LoadSection {
-    /// Magnitude F (N), acting downward.
+    /// Magnitude F (N), acting downward, of the single load (when no train is given).
     pub force: f64,
     /// Speed v (m/s) of a single run.
     pub speed: f64,
+    /// A train instead of the single load: a catalogue name (`single`, `hslm-a1` … `hslm-a10`) or a CSV file of
+    /// `offset,force` lines.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub train: Option<String>,
+    /// `[[load.axles]]`: a train given axle by axle.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub axles: Vec<AxleSection>,
+    /// `[[load.patches]]`: uniform load patches of the train.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub patches: Vec<PatchSection>,
 }
 
 impl Default for LoadSection {
     fn default() -> Self {
-        Self { force: uic60_on_soft_soil().load, speed: 200.0 }
+        Self { force: uic60_on_soft_soil().load, speed: 200.0, train: None, axles: Vec::new(), patches: Vec::new() }
     }
+}
+
+/// `[[load.axles]]`: one axle.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct AxleSection {
+    /// Offset behind the first axle (m), ≥ 0.
+    pub offset: f64,
+    /// Static force (N, downward), ≥ 0.
+    pub force: f64,
+}
+
+/// `[[load.patches]]`: one uniform load patch.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PatchSection {
+    /// Offset of its front behind the first axle (m), ≥ 0.
+    pub offset: f64,
+    /// Length (m), > 0.
+    pub length: f64,
+    /// Load per length (N/m, downward), ≥ 0.
+    pub intensity: f64,
 }
 
 /// `[friction]`.

@@ -1,0 +1,78 @@
+//! `frictrack trains` and trains in `run` (docs/theory.md §10): the catalogue, one train's axles, `--train` with a
+//! catalogue name, a CSV file and scenario axles, and bad trains refused with the value named.
+
+use super::{frictrack, json};
+
+#[test]
+fn the_catalogue_lists_the_single_load_and_ten_hslm_trains() {
+    let list = json(&frictrack(&["trains", "--format", "json"]));
+    let names: Vec<&str> = list.as_array().unwrap().iter().map(|t| t["name"].as_str().unwrap()).collect();
+    assert_eq!(names.len(), 11);
+    assert_eq!(names[0], "single");
+    assert_eq!(names[10], "hslm-a10");
+    let a1 = json(&frictrack(&["trains", "hslm-a1", "--format", "json"]));
+    assert_eq!(a1["name"], "hslm-a1");
+    assert_eq!(a1["axles"].as_array().unwrap().len(), 50);
+    assert!((a1["length"].as_f64().unwrap() - 397.525).abs() < 1e-9);
+    assert_eq!(a1["axles"][4]["offset"].as_f64().unwrap(), 20.525);
+    assert_eq!(a1["axles"][0]["force"].as_f64().unwrap(), 170e3);
+    let text = frictrack(&["trains"]);
+    assert!(String::from_utf8_lossy(&text.stdout).contains("hslm-a7        40     397.525"));
+}
+
+#[test]
+fn runs_take_a_train_by_name_file_or_scenario_axles() {
+    let folder = std::env::temp_dir().join(format!("frictrack-trains-{}", std::process::id()));
+    std::fs::create_dir_all(&folder).unwrap();
+    let csv = folder.join("pair.csv");
+    std::fs::write(&csv, "offset,force\n0,100e3\n2.5,100e3 # a bogie\n").unwrap();
+    let scenario = folder.join("pair.toml");
+    std::fs::write(&scenario, "[load]\nspeed = 100.0\n[[load.axles]]\noffset = 0.0\nforce = 100e3\n[[load.axles]]\noffset = 2.5\nforce = 100e3\n").unwrap();
+    let by_file = json(&frictrack(&["run", "--train", csv.to_str().unwrap(), "--speed", "100", "--format", "json"]));
+    let by_scenario = json(&frictrack(&["run", scenario.to_str().unwrap(), "--format", "json"]));
+    assert_eq!(by_file["train"]["axles"], 2);
+    assert_eq!(by_scenario["train"]["name"], "scenario");
+    // The same two axles, however given: the same run.
+    assert_eq!(by_file["max_downward_deflection"], by_scenario["max_downward_deflection"]);
+    assert_eq!(by_file["steps"], by_scenario["steps"]);
+    // The run lasts until the last axle leaves: (200 + 2.5) m at 0.1 m per step.
+    assert_eq!(by_file["steps"].as_u64().unwrap(), 2025);
+    let hslm = json(&frictrack(&["run", "--train", "hslm-a1", "--speed", "80", "--format", "json"]));
+    assert_eq!(hslm["train"]["name"], "hslm-a1");
+    assert_eq!(hslm["steps"].as_u64().unwrap(), 5975);
+    assert!(hslm["energy_residual"].as_f64().unwrap().abs() < 1e-9 * hslm["load_work"].as_f64().unwrap());
+    let single = json(&frictrack(&["run", "--speed", "80", "--format", "json"]));
+    assert!(single.get("train").is_none(), "the single load names no train");
+    std::fs::remove_dir_all(&folder).unwrap();
+}
+
+#[test]
+fn bad_trains_exit_2_naming_the_value() {
+    let folder = std::env::temp_dir().join(format!("frictrack-bad-trains-{}", std::process::id()));
+    std::fs::create_dir_all(&folder).unwrap();
+    let both = folder.join("both.toml");
+    std::fs::write(&both, "[load]\ntrain = \"hslm-a1\"\n[[load.axles]]\noffset = 0.0\nforce = 1e5\n").unwrap();
+    let negative = folder.join("negative.toml");
+    std::fs::write(
+        &negative,
+        "[[load.axles]]\noffset = 0.0\nforce = 1e5\n[[load.axles]]\noffset = -3.0\nforce = 1e5\n",
+    )
+    .unwrap();
+    let garbled = folder.join("garbled.csv");
+    std::fs::write(&garbled, "0,1e5\n2.5;1e5\n").unwrap();
+    let cases: [(Vec<&str>, &str); 5] = [
+        (vec!["run", "--train", "hslm-a11"], "hslm-a11"),
+        (vec!["trains", "hslm-a0"], "hslm-a0"),
+        (vec!["run", both.to_str().unwrap()], "load.train"),
+        (vec!["run", negative.to_str().unwrap()], "load.axles[1].offset"),
+        (vec!["run", "--train", garbled.to_str().unwrap()], "line 2"),
+    ];
+    for (args, needle) in cases {
+        let out = frictrack(&args);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
+        assert!(stderr.contains(needle), "{args:?}: {stderr}");
+        assert!(!stderr.contains("panicked"), "{args:?}: {stderr}");
+    }
+    std::fs::remove_dir_all(&folder).unwrap();
+}
