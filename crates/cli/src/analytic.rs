@@ -25,6 +25,10 @@ pub struct AnalyticArgs {
     /// scenario's (0 for the reference case).
     #[arg(long, allow_negative_numbers = true)]
     damping_ratio: Option<f64>,
+    /// A train (catalogue name or CSV file of offset,force): its steady state is the sum of its axles'
+    /// (docs/theory.md §10), extremes placed in the train's frame s = x − x_head.
+    #[arg(long, value_name = "NAME|FILE")]
+    train: Option<String>,
     /// Output format.
     #[arg(long, value_enum, default_value_t = Format::Text)]
     format: Format,
@@ -81,10 +85,24 @@ pub fn run(args: &AnalyticArgs) -> Result<()> {
             return Err(study::error::invalid("--speed", "absent", "give --speed V or --speeds A:B:STEP").into());
         }
     };
-    let w0 = inf.static_deflection(case.load);
+    let train = match &args.train {
+        Some(name) => Some(study::trains::named_or_file(name, case.load, "--train")?),
+        None => None,
+    };
+    let extremes = |v: f64| -> Result<fem_beam::reference::SteadyExtremes> {
+        Ok(match &train {
+            Some(t) => inf.train_steady_state(v, t)?.extremes(),
+            None => inf.steady_state(v, case.load)?.extremes(),
+        })
+    };
+    // The static response of the same load (v = 0): a train's superposed static shapes.
+    let w0 = match &train {
+        Some(_) => extremes(0.0)?.max_downward.magnitude,
+        None => inf.static_deflection(case.load),
+    };
     let mut points = Vec::with_capacity(speeds.len());
     for v in speeds {
-        let e = inf.steady_state(v, case.load)?.extremes();
+        let e = extremes(v)?;
         points.push(Point {
             speed: v,
             max_downward_deflection: e.max_downward.magnitude,
@@ -100,13 +118,16 @@ pub fn run(args: &AnalyticArgs) -> Result<()> {
         (Format::Json, _) => println!("{}", serde_json::to_string_pretty(&points)?),
         (Format::Text, _) => {
             println!(
-                "infinite beam{}, EI = {:.4} MN·m², ρA = {:.3} kg/m, k_f = {:.1} kN/m², F = {:.1} kN, ζ = {:.4}, \
+                "infinite beam{}, EI = {:.4} MN·m², ρA = {:.3} kg/m, k_f = {:.1} kN/m², {}, ζ = {:.4}, \
                  v_cr = {:.2} m/s, static w₀ = {:.2} mm",
                 if scenario.title.is_empty() { String::new() } else { format!(" ({})", scenario.title) },
                 case.beam.bending_stiffness() / 1e6,
                 case.beam.mass_per_length(),
                 foundation.stiffness / 1e3,
-                case.load / 1e3,
+                match &train {
+                    Some(t) => format!("train {} ({} axles, {:.3} m)", t.name, t.axles.len(), t.length()),
+                    None => format!("F = {:.1} kN", case.load / 1e3),
+                },
                 foundation.damping / inf.critical_damping(),
                 inf.critical_speed(),
                 w0 * 1e3
@@ -124,7 +145,10 @@ pub fn run(args: &AnalyticArgs) -> Result<()> {
                     p.amplification_upward
                 );
             }
-            println!("  (s = x − vt: positive ahead of the load)");
+            match &train {
+                Some(_) => println!("  (s = x − x_head: positive ahead of the first axle, axle i at s = −d_i)"),
+                None => println!("  (s = x − vt: positive ahead of the load)"),
+            }
         }
     }
     Ok(())

@@ -277,20 +277,7 @@ impl SteadyState {
         let reach = (40.0 / decay).min(4000.0);
         let step = (2.0 * PI / wave / 64.0).min(0.05);
         let count = (reach / step).ceil() as i64;
-        let (mut best_down, mut best_up) = ((0.0, f64::NEG_INFINITY), (0.0, f64::NEG_INFINITY));
-        for i in -count..=count {
-            let xi = i as f64 * step;
-            let g = self.g(xi, 0);
-            if g > best_down.1 {
-                best_down = (xi, g);
-            }
-            if -g > best_up.1 {
-                best_up = (xi, -g);
-            }
-        }
-        let refine = |centre: f64, sign: f64| golden_max(|xi| sign * self.g(xi, 0), centre - step, centre + step);
-        let down = refine(best_down.0, 1.0);
-        let up = refine(best_up.0, -1.0);
+        let (down, up) = scan_extremes(|xi| self.g(xi, 0), (-count..=count).map(|i| i as f64 * step), step);
         SteadyExtremes {
             max_downward: SteadyExtreme { magnitude: self.amplitude * down.1.max(0.0), position: down.0 / self.beta },
             max_upward: SteadyExtreme { magnitude: self.amplitude * up.1.max(0.0), position: up.0 / self.beta },
@@ -299,6 +286,28 @@ impl SteadyState {
 }
 
 /// Maximise a unimodal f on [a, b] by golden-section search; returns (argmax, max).
+/// The largest values of f (downward) and of −f (upward) over `samples` (spaced `step`), each refined by golden
+/// section within a step of its best sample: ((x, f), (x, −f)) at the maxima. One scan for a single load and for a
+/// train ([`crate::steady_train`]).
+pub(crate) fn scan_extremes(
+    f: impl Fn(f64) -> f64,
+    samples: impl Iterator<Item = f64>,
+    step: f64,
+) -> ((f64, f64), (f64, f64)) {
+    let (mut best_down, mut best_up) = ((0.0, f64::NEG_INFINITY), (0.0, f64::NEG_INFINITY));
+    for x in samples {
+        let value = f(x);
+        if value > best_down.1 {
+            best_down = (x, value);
+        }
+        if -value > best_up.1 {
+            best_up = (x, -value);
+        }
+    }
+    let refine = |centre: f64, sign: f64| golden_max(|x| sign * f(x), centre - step, centre + step);
+    (refine(best_down.0, 1.0), refine(best_up.0, -1.0))
+}
+
 fn golden_max(f: impl Fn(f64) -> f64, mut a: f64, mut b: f64) -> (f64, f64) {
     let ratio = (5f64.sqrt() - 1.0) / 2.0;
     let mut c = b - ratio * (b - a);

@@ -76,3 +76,25 @@ fn bad_trains_exit_2_naming_the_value() {
     }
     std::fs::remove_dir_all(&folder).unwrap();
 }
+
+/// `analytic --train`: the single train equals the plain single load; HSLM-A1 at a crawl is its static response
+/// (DAF → 1) and its largest deflection sits among the axles.
+#[test]
+fn analytic_superposes_a_train() {
+    let args = |extra: &[&'static str]| {
+        let mut a = vec!["analytic", "--speed", "120", "--damping-ratio", "0.05", "--format", "json"];
+        a.extend_from_slice(extra);
+        a
+    };
+    let plain = json(&frictrack(&args(&[])));
+    let single = json(&frictrack(&args(&["--train", "single"])));
+    for key in ["max_downward_deflection", "max_upward_deflection", "amplification_downward"] {
+        let (a, b) = (plain[key].as_f64().unwrap(), single[key].as_f64().unwrap());
+        assert!((a - b).abs() <= 1e-9 * a.abs(), "{key}: {a} vs {b}");
+    }
+    let crawl = json(&frictrack(&["analytic", "--speed", "1", "--train", "hslm-a1", "--format", "json"]));
+    let daf = crawl["amplification_downward"].as_f64().unwrap();
+    assert!((daf - 1.0).abs() < 1e-3, "DAF at 1 m/s: {daf}");
+    let at = crawl["max_downward_position"].as_f64().unwrap();
+    assert!((-397.525..=0.0).contains(&at), "under the train: s = {at}");
+}
