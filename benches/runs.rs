@@ -122,5 +122,27 @@ fn scaling(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, whole_runs, friction_free_against_bare_solves, scaling);
+/// A train against the single load (docs/theory.md §10): the reference case at 200 m/s without friction and with 31
+/// devices. The single load crosses in 2000 steps, HSLM-A1 (397.525 m) in 5975, with up to 26 of its 50 axles on
+/// the 200 m beam at once: compare the time per step (BENCHMARKS.md), whose difference is the load assembly.
+fn trains(c: &mut Criterion) {
+    let model = uic60_on_soft_soil().model().unwrap();
+    let mut group = c.benchmark_group("train");
+    group.sample_size(10).warm_up_time(Duration::from_secs(1)).measurement_time(Duration::from_secs(5));
+    for (name, interactions) in [
+        ("no_friction", InteractionSet::new()),
+        ("devices_31_100kN", Devices::uniform(31, 100e3).interactions(&model).unwrap()),
+    ] {
+        for train in ["single", "hslm-a1"] {
+            let mut settings = RunSettings::default();
+            settings.moving.train = Some(fem_beam::Train::named(train, settings.moving.force).unwrap());
+            group.bench_function(BenchmarkId::new(name, train), |b| {
+                b.iter(|| Simulation::new(&model, black_box(&interactions), &settings).unwrap().run().unwrap())
+            });
+        }
+    }
+    group.finish();
+}
+
+criterion_group!(benches, whole_runs, friction_free_against_bare_solves, scaling, trains);
 criterion_main!(benches);
