@@ -24,6 +24,7 @@ pub mod modal;
 pub mod properties;
 pub mod reference;
 pub mod section;
+pub mod span;
 pub mod statics;
 pub mod steady_train;
 pub mod supports;

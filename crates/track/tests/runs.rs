@@ -9,6 +9,7 @@ mod runs {
     mod friction_law;
     mod linear;
     mod solvers_agree;
+    mod span;
     mod steady_state;
     mod trains;
 }
