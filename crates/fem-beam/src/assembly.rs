@@ -7,7 +7,7 @@
 use crate::element::{ElementMatrix, hermite};
 use crate::error::{FemError, Result};
 use crate::mesh::Mesh;
-use crate::properties::{Beam, Foundation};
+use crate::properties::{Beam, Foundation, Rayleigh};
 use crate::supports::{DofMap, Supports};
 use banded::SymmetricBanded;
 
@@ -26,6 +26,7 @@ pub struct BeamModel {
     mass: SymmetricBanded,
     stiffness: SymmetricBanded,
     damping: SymmetricBanded,
+    rayleigh: Rayleigh,
 }
 
 impl BeamModel {
@@ -85,7 +86,26 @@ impl BeamModel {
                 }
             }
         }
-        Ok(Self { beam, foundation, mesh, supports, dofs, element_damping, mass, stiffness, damping })
+        let rayleigh = Rayleigh::default();
+        Ok(Self { beam, foundation, mesh, supports, dofs, element_damping, mass, stiffness, damping, rayleigh })
+    }
+
+    /// The model with Rayleigh damping α M + β K added to C (docs/theory.md §10); its element damping matrices
+    /// (for section results) include it too.
+    pub fn with_rayleigh(mut self, rayleigh: Rayleigh) -> Result<Self> {
+        rayleigh.validate()?;
+        self.damping = SymmetricBanded::linear_combination(&[
+            (1.0, &self.damping),
+            (rayleigh.mass_coefficient, &self.mass),
+            (rayleigh.stiffness_coefficient, &self.stiffness),
+        ]);
+        self.rayleigh = rayleigh;
+        Ok(self)
+    }
+
+    /// The Rayleigh damping in C (zero unless [`BeamModel::with_rayleigh`]).
+    pub fn rayleigh(&self) -> Rayleigh {
+        self.rayleigh
     }
 
     fn element_stiffness_of(beam: &Beam, foundation: &Foundation, l: f64) -> ElementMatrix {
@@ -149,8 +169,19 @@ impl BeamModel {
         hermite::consistent_mass(self.beam.mass_per_length(), self.mesh.element_length())
     }
 
-    /// Element damping matrix of element `e`.
+    /// Element damping matrix of element `e`: its foundation dashpots and the Rayleigh terms α M_e + β K_e.
     pub fn element_damping_matrix(&self, e: usize) -> ElementMatrix {
-        hermite::consistent_mass(self.element_damping[e], self.mesh.element_length())
+        let foundation = hermite::consistent_mass(self.element_damping[e], self.mesh.element_length());
+        if self.rayleigh.is_zero() {
+            return foundation;
+        }
+        let r = self.rayleigh;
+        let structure = hermite::combine(
+            r.mass_coefficient,
+            &self.element_mass(),
+            r.stiffness_coefficient,
+            &self.element_stiffness(),
+        );
+        hermite::combine(1.0, &foundation, 1.0, &structure)
     }
 }

@@ -3,7 +3,7 @@
 //! Defaults are the reference case of docs/theory.md §2: a UIC60 rail (A = 7684 mm², I = 3055 cm⁴, ρ = 7800 kg/m³,
 //! E = 210 GPa, hence EI = 6.4155 MN·m² and ρA = 59.935 kg/m) on a soil of k_f = 250 kN/m², undamped.
 
-use crate::error::{Result, non_negative, positive};
+use crate::error::{FemError, Result, non_negative, positive};
 
 /// Cross-section and material of the rail (an Euler–Bernoulli beam). SI units.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -83,5 +83,51 @@ impl Foundation {
     pub fn with_damping_ratio(self, ratio: f64, beam: &Beam) -> Result<Self> {
         non_negative("foundation.damping_ratio", ratio)?;
         Ok(Self { damping: ratio * self.critical_damping(beam), ..self })
+    }
+}
+
+/// Rayleigh damping C_R = α M + β K of the structure (docs/theory.md §10), beside the foundation's dashpots: the
+/// damping of a bridge deck. The modal damping ratio at circular frequency ω is ζ(ω) = (α/ω + βω)/2.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Rayleigh {
+    /// α (1/s), ≥ 0. Default 0.
+    pub mass_coefficient: f64,
+    /// β (s), ≥ 0. Default 0.
+    pub stiffness_coefficient: f64,
+}
+
+impl Rayleigh {
+    /// The coefficients giving damping ratio `ratio` at the two frequencies f₁ < f₂ (Hz):
+    /// α = 2ζω₁ω₂/(ω₁ + ω₂), β = 2ζ/(ω₁ + ω₂) (between them the ratio is a little lower, outside higher).
+    pub fn from_ratio(ratio: f64, f1: f64, f2: f64) -> Result<Self> {
+        non_negative("damping.rayleigh.ratio", ratio)?;
+        positive("damping.rayleigh.frequencies[0]", f1)?;
+        positive("damping.rayleigh.frequencies[1]", f2)?;
+        if f2 <= f1 {
+            return Err(FemError::InvalidField {
+                field: "damping.rayleigh.frequencies[1]",
+                value: f2,
+                allowed: "must exceed the first frequency (Hz)",
+            });
+        }
+        let (w1, w2) = (2.0 * std::f64::consts::PI * f1, 2.0 * std::f64::consts::PI * f2);
+        Ok(Self { mass_coefficient: 2.0 * ratio * w1 * w2 / (w1 + w2), stiffness_coefficient: 2.0 * ratio / (w1 + w2) })
+    }
+
+    /// ζ at circular frequency ω (rad/s).
+    pub fn ratio_at(&self, omega: f64) -> f64 {
+        0.5 * (self.mass_coefficient / omega + self.stiffness_coefficient * omega)
+    }
+
+    /// Whether both coefficients are zero.
+    pub fn is_zero(&self) -> bool {
+        self.mass_coefficient == 0.0 && self.stiffness_coefficient == 0.0
+    }
+
+    /// Check α and β: finite and ≥ 0.
+    pub fn validate(&self) -> Result<()> {
+        non_negative("damping.rayleigh.alpha", self.mass_coefficient)?;
+        non_negative("damping.rayleigh.beta", self.stiffness_coefficient)?;
+        Ok(())
     }
 }

@@ -1,6 +1,7 @@
 //! Runs the `frictrack` binary and checks its output and exit codes.
 
 mod bad_inputs;
+mod bridges;
 mod run_out;
 mod trains;
 mod trust;

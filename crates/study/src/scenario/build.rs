@@ -71,7 +71,10 @@ impl Scenario {
             }
             None => vec![foundation.damping; mesh.elements],
         };
-        let model = BeamModel::with_element_damping(beam, foundation, mesh, supports, damping)?;
+        let mut model = BeamModel::with_element_damping(beam, foundation, mesh, supports, damping)?;
+        if let Some(rayleigh) = &self.damping.rayleigh {
+            model = model.with_rayleigh(rayleigh.rayleigh()?)?;
+        }
         crate::diagnostics::refuse_degenerate(&model)?;
         Ok(model)
     }

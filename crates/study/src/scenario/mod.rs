@@ -34,6 +34,9 @@ pub struct Scenario {
     pub supports: SupportsSection,
     /// The soil.
     pub foundation: FoundationSection,
+    /// Damping of the structure itself (Rayleigh), beside the foundation's.
+    #[serde(skip_serializing_if = "DampingSection::is_empty")]
+    pub damping: DampingSection,
     /// The moving load.
     pub load: LoadSection,
     /// Friction devices and/or distributed friction.

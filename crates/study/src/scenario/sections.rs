@@ -153,6 +153,58 @@ impl Default for LoadSection {
     }
 }
 
+/// `[damping]`: damping of the structure (a bridge deck) beside the foundation's dashpots.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
+#[serde(default, deny_unknown_fields)]
+pub struct DampingSection {
+    /// `rayleigh = { ratio = 0.01, frequencies = [f1, f2] }` or `rayleigh = { alpha = …, beta = … }`.
+    pub rayleigh: Option<RayleighSection>,
+}
+
+impl DampingSection {
+    /// Whether nothing is set (the section is then left out of written scenarios).
+    pub fn is_empty(&self) -> bool {
+        self.rayleigh.is_none()
+    }
+}
+
+/// Rayleigh damping C = αM + βK: by a ratio at two frequencies, or by α and β.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, Default)]
+#[serde(default, deny_unknown_fields)]
+pub struct RayleighSection {
+    /// Modal damping ratio ζ at both frequencies.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub ratio: Option<f64>,
+    /// The two frequencies f₁ < f₂ (Hz) where the ratio holds.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub frequencies: Option<[f64; 2]>,
+    /// α (1/s).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub alpha: Option<f64>,
+    /// β (s).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub beta: Option<f64>,
+}
+
+impl RayleighSection {
+    /// The Rayleigh coefficients, from exactly one of the two forms.
+    pub fn rayleigh(&self) -> crate::error::Result<fem_beam::Rayleigh> {
+        match (self.ratio, self.frequencies, self.alpha, self.beta) {
+            (Some(ratio), Some([f1, f2]), None, None) => Ok(fem_beam::Rayleigh::from_ratio(ratio, f1, f2)?),
+            (None, None, Some(alpha), Some(beta)) => {
+                let r = fem_beam::Rayleigh { mass_coefficient: alpha, stiffness_coefficient: beta };
+                r.validate()?;
+                Ok(r)
+            }
+            _ => Err(crate::error::invalid(
+                "damping.rayleigh",
+                format!("{self:?}"),
+                "give either ratio and frequencies = [f1, f2] (Hz), or alpha (1/s) and beta (s)",
+            )),
+        }
+    }
+}
+
 /// `[[load.axles]]`: one axle.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
