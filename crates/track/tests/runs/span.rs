@@ -118,3 +118,63 @@ fn rayleigh_damping_decays_each_mode_at_its_ratio() {
         }
     }
 }
+
+/// Resonance of a span under equal axles at spacing D, at v = f₁·D (each axle arrives one first-mode period after
+/// the one before). One force crossing in T = L/v leaves mode 1 ringing with q(T) ∝ sin ω₁T and q̇(T) ∝ 1 + cos ω₁T
+/// (`fem_beam::span`, Ω₁T = π): both vanish when ω₁T = (2k + 1)π, k ≥ 1, and with ω₁ = 2πv/D that is
+/// L/D = (2k + 1)/2 = 1.5, 2.5, … — there the axles' contributions cancel and nothing builds up, while at L/D = 2
+/// each axle adds its ringing to the last. Checked on the series (the ringing after one axle: 2e-12, 2e-11 and 0.53
+/// of FL³/48EI for L/D = 1.5, 2.5, 2) and on FE runs of 5 and 10 axles (the largest mid-span deflection, the train on
+/// and after it, undamped): L/D = 2 grows 3.47 → 6.10, L/D = 1.5 and 2.5 stay at 1.493 → 1.495 and 2.063 → 2.063.
+#[test]
+fn resonance_builds_up_except_at_cancelling_span_to_spacing_ratios() {
+    use fem_beam::{Axle, Train};
+    let length = 20.0;
+    let beam = Beam::default();
+    let span = SimplySupportedSpan::new(&beam, 0.0, length).unwrap();
+    let (f1, omega) = (span.frequency(1), span.omega(1));
+    let model = BeamModel::new(
+        beam,
+        Foundation { stiffness: 0.0, damping: 0.0 },
+        Mesh::new(length, 40).unwrap(),
+        Supports::both(Support::Pinned),
+    )
+    .unwrap();
+    let force = 100e3;
+    // Mode-1 amplitude left by one axle: √(q² + (q̇/ω)²) at T = L/v from the series (one mode, mid-span value).
+    let ringing = |spacing: f64| {
+        let speed = f1 * spacing;
+        let exit = length / speed;
+        let at = |t: f64| span.moving_force_deflection(length / 2.0, t, force, speed, 1).unwrap();
+        let dt = 1e-6 * exit;
+        let (q, dq) = (at(exit), (at(exit + dt) - at(exit - dt)) / (2.0 * dt));
+        (q * q + (dq / omega).powi(2)).sqrt()
+    };
+    let static_mid = span.static_midspan_deflection(force);
+    for ratio in [1.5, 2.5] {
+        assert!(ringing(length / ratio) <= 1e-6 * static_mid, "L/D = {ratio}: {}", ringing(length / ratio));
+    }
+    assert!(ringing(length / 2.0) > 0.5 * static_mid, "L/D = 2 rings: {}", ringing(length / 2.0));
+    let peak = |ratio: f64, axles: usize| {
+        let spacing = length / ratio;
+        let train = Train {
+            name: "uniform".into(),
+            axles: (0..axles).map(|i| Axle { offset: i as f64 * spacing, force }).collect(),
+            patches: vec![],
+        };
+        let mut settings = RunSettings::default();
+        settings.moving.speed = f1 * spacing;
+        settings.moving.train = Some(train);
+        settings.integration.load_advance = 0.05;
+        settings.integration.end_time = Some(settings.crossing_time(length) + 3.0 / f1);
+        settings.record.sections = vec![length / 2.0];
+        let r = Simulation::new(&model, &InteractionSet::new(), &settings).unwrap().run().unwrap();
+        r.histories[0].deflection.iter().fold(0.0f64, |m, w| m.max(w.abs())) / static_mid
+    };
+    let build_up = peak(2.0, 10) / peak(2.0, 5);
+    assert!(build_up > 1.6, "L/D = 2: 10 axles against 5: {build_up}");
+    for ratio in [1.5, 2.5] {
+        let growth = peak(ratio, 10) / peak(ratio, 5);
+        assert!((growth - 1.0).abs() < 0.02, "L/D = {ratio}: 10 axles against 5: {growth}");
+    }
+}
