@@ -61,16 +61,19 @@ fn check(path: &std::path::Path) -> Result<()> {
         }
     };
     let title = if scenario.title.is_empty() { String::new() } else { format!(" \"{}\"", scenario.title) };
+    let load = match &case.settings.moving.train {
+        Some(t) => format!("train {} ({} axles, {:.3} m)", t.name, t.axles.len(), t.length()),
+        None => format!("load {:.1} kN", scenario.load.force / 1e3),
+    };
     println!(
         "{}{title}: ok — {} m beam, {} elements ({} DOFs), k_f = {:.1} kN/m², {damping}, {friction} ({} sections), \
-         load {:.1} kN at {} m/s, sweep {}–{} m/s by {}",
+         {load} at {} m/s, sweep {}–{} m/s by {}",
         path.display(),
         mesh.length,
         mesh.elements,
         case.model.dofs().free_len(),
         foundation.stiffness / 1e3,
         case.interactions.len(),
-        scenario.load.force / 1e3,
         scenario.load.speed,
         range.from,
         range.to,

@@ -68,6 +68,11 @@ pub struct RunReport {
     max_upward_deflection: f64,
     max_upward_deflection_position: f64,
     max_upward_deflection_time: f64,
+    max_acceleration: f64,
+    max_acceleration_position: f64,
+    max_acceleration_time: f64,
+    static_max_downward_deflection: f64,
+    dynamic_amplification: f64,
     extremes_window: (f64, f64),
     window_max_downward: ExtremeReport,
     window_max_upward: ExtremeReport,
@@ -190,6 +195,8 @@ fn report(scenario: &Scenario, case: &Case, result: &RunResult, wall_time: f64) 
         load_position: x0 + settings.moving.speed * x.time,
     };
     let critical = study::speeds::SpeedScale::of(scenario)?.critical_speed;
+    let statics =
+        track::statics::static_envelope(&case.model, &settings.moving.train(), settings.integration.load_advance)?;
     let foundation = case.model.foundation();
     Ok(RunReport {
         title: scenario.title.clone(),
@@ -208,6 +215,15 @@ fn report(scenario: &Scenario, case: &Case, result: &RunResult, wall_time: f64) 
         max_upward_deflection: result.max_upward.magnitude,
         max_upward_deflection_position: result.max_upward.position,
         max_upward_deflection_time: result.max_upward.time,
+        max_acceleration: result.max_acceleration.magnitude,
+        max_acceleration_position: result.max_acceleration.position,
+        max_acceleration_time: result.max_acceleration.time,
+        static_max_downward_deflection: statics.max_downward,
+        dynamic_amplification: if statics.max_downward > 0.0 {
+            result.max_downward.magnitude / statics.max_downward
+        } else {
+            0.0
+        },
         extremes_window: window.load_range,
         window_max_downward: extreme(&window.max_downward),
         window_max_upward: extreme(&window.max_upward),
@@ -281,6 +297,15 @@ fn print_text(r: &RunReport) {
     for (what, e) in [("downward", &r.window_max_downward), ("upward", &r.window_max_upward)] {
         line(what, e.deflection, e.position, e.time, Some(e.load_position));
     }
+    println!(
+        "  static (the load standing at every position): max downward {:.3} mm; dynamic amplification {:.3}",
+        r.static_max_downward_deflection * 1e3,
+        r.dynamic_amplification
+    );
+    println!(
+        "  max acceleration {:.3} m/s² at x = {:.1} m, t = {:.4} s (the step's mean; a bridge deck's check value)",
+        r.max_acceleration, r.max_acceleration_position, r.max_acceleration_time
+    );
     println!("  global norm W̄          {:>9.4} m²", r.global_norm);
     println!(
         "  energy (J): load work {:.4e}, dissipated {:.4e} (friction {:.4e}, viscous {:.4e}), numerical {:.4e}, balance residual {:.2e}",

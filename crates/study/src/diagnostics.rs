@@ -103,5 +103,57 @@ pub fn warnings(scenario: &Scenario, case: &Case) -> Vec<Warning> {
             });
         }
     }
+    out.extend(deck_resolution(case));
+    out
+}
+
+/// A span (no foundation, pinned ends) must resolve accelerations up to f_max = max(30 Hz, 1.5 f₁, f₃), the
+/// frequencies of EN 1990 A2's deck-acceleration check (docs/theory.md §10): the mesh resolves the pinned mode n
+/// whose f_n first reaches f_max with at least 4 elements per half-wave (L/(4n)), and the time step resolves f_max
+/// with at least 20 steps per period (θ = ½ then has a phase error below 2 % per period).
+pub fn deck_resolution(case: &Case) -> Vec<Warning> {
+    use fem_beam::Support;
+    let model = &case.model;
+    let supports = model.supports();
+    let pinned = supports.left == Support::Pinned && supports.right == Support::Pinned;
+    if !(pinned && model.foundation().stiffness == 0.0) {
+        return Vec::new();
+    }
+    let mesh = model.mesh();
+    let Ok(span) = fem_beam::span::SimplySupportedSpan::new(model.beam(), 0.0, mesh.length) else {
+        return Vec::new();
+    };
+    let f_max = 30f64.max(1.5 * span.frequency(1)).max(span.frequency(3));
+    let mode = (1..=100_000).find(|&n| span.frequency(n) >= f_max).unwrap_or(100_000);
+    let mut out = Vec::new();
+    let longest = mesh.length / (4.0 * mode as f64);
+    if mesh.element_length() > longest {
+        out.push(Warning {
+            field: "mesh.elements".into(),
+            value: mesh.elements.to_string(),
+            message: format!(
+                "deck accelerations need frequencies up to {f_max:.1} Hz (max of 30 Hz, 1.5 f₁ = {:.1} Hz, f₃ = \
+                 {:.1} Hz): mode {mode} reaches it and needs elements of at most {longest:.3} m; use at least {} \
+                 elements",
+                1.5 * span.frequency(1),
+                span.frequency(3),
+                4 * mode
+            ),
+        });
+    }
+    let h = case.settings.integration.load_advance / case.settings.moving.speed;
+    if h > 1.0 / (20.0 * f_max) {
+        out.push(Warning {
+            field: "integration.load_advance".into(),
+            value: case.settings.integration.load_advance.to_string(),
+            message: format!(
+                "the step h = {h:.3e} s resolves {:.1} Hz with 20 steps per period, below the {f_max:.1} Hz deck \
+                 accelerations need: use a load advance of at most {:.4} m at {} m/s",
+                1.0 / (20.0 * h),
+                case.settings.moving.speed / (20.0 * f_max),
+                case.settings.moving.speed
+            ),
+        });
+    }
     out
 }

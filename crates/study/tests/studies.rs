@@ -158,7 +158,7 @@ fn example_scenarios_are_valid() {
             count += 1;
         }
     }
-    assert_eq!(count, 6, "one example per study");
+    assert_eq!(count, 7, "one example per study, and the HSLM bridge");
 }
 
 fn small_case() -> study::Case {

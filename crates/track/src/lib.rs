@@ -10,6 +10,7 @@ pub mod error;
 pub mod moving_load;
 pub mod simulation;
 pub mod snapshots;
+pub mod statics;
 pub mod system;
 
 pub use error::{Result, TrackError};

@@ -38,3 +38,37 @@ fn a_damped_span_runs_and_bad_damping_is_refused() {
     }
     std::fs::remove_dir_all(&folder).unwrap();
 }
+
+/// A concrete deck (f₁ ≈ 10.4 Hz, f₃ ≈ 93.5 Hz): run reports the static envelope, the dynamic amplification and the
+/// deck acceleration; a mesh or step too coarse for max(30 Hz, 1.5 f₁, f₃) is warned with the value to use.
+#[test]
+fn a_deck_reports_amplification_and_acceleration_and_warns_when_unresolved() {
+    let folder = std::env::temp_dir().join(format!("frictrack-deck-{}", std::process::id()));
+    std::fs::create_dir_all(&folder).unwrap();
+    let write = |name: &str, elements: usize, advance: f64| {
+        let path = folder.join(name);
+        let text = format!(
+            "[beam]\nyoungs_modulus = 35e9\nsecond_moment = 3.0\narea = 6.0\ndensity = 2500.0\n[mesh]\nlength = 20.0\n\
+             elements = {elements}\n[foundation]\nstiffness = 0.0\n[damping]\n\
+             rayleigh = {{ ratio = 0.01, frequencies = [10.0, 90.0] }}\n[load]\nspeed = 100.0\ntrain = \"hslm-a1\"\n\
+             [integration]\nload_advance = {advance}\n"
+        );
+        std::fs::write(&path, text).unwrap();
+        path
+    };
+    let fine = write("fine.toml", 40, 0.05);
+    let out = frictrack(&["run", fine.to_str().unwrap(), "--format", "json"]);
+    assert!(!String::from_utf8_lossy(&out.stderr).contains("warning"), "{}", String::from_utf8_lossy(&out.stderr));
+    let v = json(&out);
+    let (dynamic, statics) =
+        (v["max_downward_deflection"].as_f64().unwrap(), v["static_max_downward_deflection"].as_f64().unwrap());
+    assert!((v["dynamic_amplification"].as_f64().unwrap() - dynamic / statics).abs() < 1e-12);
+    assert!(statics > 5e-4 && statics < 2e-3, "static {statics} m");
+    assert!(v["max_acceleration"].as_f64().unwrap() > 0.0);
+    let coarse = write("coarse.toml", 10, 0.1);
+    let stderr = String::from_utf8_lossy(&frictrack(&["run", coarse.to_str().unwrap()]).stderr).into_owned();
+    // f₃ = 93.5 Hz is the highest needed: mode 3, 4 elements per half-wave, 12 elements.
+    assert!(stderr.contains("warning: mesh.elements = 10") && stderr.contains("use at least 12 elements"), "{stderr}");
+    assert!(stderr.contains("warning: integration.load_advance = 0.1"), "{stderr}");
+    std::fs::remove_dir_all(&folder).unwrap();
+}

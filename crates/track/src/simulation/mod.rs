@@ -186,6 +186,7 @@ impl<'a> Simulation<'a> {
             }
         }
         let mut extremes = (Extreme::default(), Extreme::default());
+        let mut acceleration = Extreme::default();
         let mut window =
             settings.record.extremes_window.map(|load_range| WindowExtremes { load_range, ..Default::default() });
         let in_window = |x_load: f64| settings.record.extremes_window.is_some_and(|(a, b)| (a..=b).contains(&x_load));
@@ -227,6 +228,10 @@ impl<'a> Simulation<'a> {
             let time = stepper.time;
             let scan = deflections.scan(stepper.q());
             scan.update(&mut extremes, time);
+            let (a, x) = deflections.largest_acceleration(stepper.v(), stepper.previous_v(), h);
+            if a > acceleration.magnitude {
+                acceleration = Extreme { magnitude: a, position: x, time };
+            }
             if let Some(w) = window.as_mut().filter(|_| in_window(load.position(time))) {
                 scan.update_window(w, time);
             }
@@ -251,6 +256,7 @@ impl<'a> Simulation<'a> {
         Ok(RunResult {
             max_downward: extremes.0,
             max_upward: extremes.1,
+            max_acceleration: acceleration,
             window,
             energy: stepper.energy,
             global_norm: if t_on > 0.0 { norm_integral / t_on } else { 0.0 },

@@ -43,6 +43,18 @@ impl NodalDeflections {
         Self { nodes }
     }
 
+    /// The largest |(v − v_prev)/h| (m/s²) over the nodes and its node x.
+    pub(super) fn largest_acceleration(&self, v: &[f64], v_prev: &[f64], h: f64) -> (f64, f64) {
+        let mut largest = (0.0, 0.0);
+        for &(d, x, _) in &self.nodes {
+            let a = ((v[d] - v_prev[d]) / h).abs();
+            if a > largest.0 {
+                largest = (a, x);
+            }
+        }
+        largest
+    }
+
     pub(super) fn scan(&self, q: &[f64]) -> DeflectionScan {
         let mut scan = DeflectionScan { lowest: (0.0, 0.0), highest: (0.0, 0.0), norm: 0.0 };
         for &(d, x, weight) in &self.nodes {

@@ -110,6 +110,9 @@ pub struct RunResult {
     pub max_downward: Extreme,
     /// Largest upward deflection over nodes and steps.
     pub max_upward: Extreme,
+    /// Largest vertical acceleration magnitude over nodes and steps (m/s², the step's mean (v_{k+1} − v_k)/h, at the
+    /// end of the step): the deck acceleration of a bridge (docs/theory.md §10).
+    pub max_acceleration: Extreme,
     /// The extremes while the load was inside [`RunSettings::extremes_window`], if one was set.
     pub window: Option<WindowExtremes>,
     /// Energy terms.

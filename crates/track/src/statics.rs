@@ -1,0 +1,51 @@
+//! The static response of a train standing at every position along its crossing (docs/theory.md §10): the
+//! reference of a dynamic amplification factor φ = max dynamic deflection / max static deflection.
+
+use crate::error::Result;
+use fem_beam::{BeamModel, Train};
+
+/// The largest static downward deflection of the train over its crossing, where and with the first axle where.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct StaticEnvelope {
+    /// Largest static downward deflection (m, magnitude).
+    pub max_downward: f64,
+    /// Node position where it occurs (m).
+    pub position: f64,
+    /// First axle's position then (m).
+    pub head: f64,
+}
+
+/// Largest number of train positions stepped through (each a banded solve with K factored once).
+pub const MAX_POSITIONS: usize = 1_000_000;
+
+/// The static envelope of `train` with its first axle at 0, `advance`, 2·`advance`, … up to L + its length (m):
+/// K factored once, one banded solve per position.
+pub fn static_envelope(model: &BeamModel, train: &Train, advance: f64) -> Result<StaticEnvelope> {
+    let mesh = model.mesh();
+    let span = mesh.length + train.length();
+    let positions = (span / advance).ceil() as usize + 1;
+    if !(advance.is_finite() && advance > 0.0) || positions > MAX_POSITIONS {
+        return Err(nscd::NscdError::InvalidField {
+            field: "load_advance",
+            value: advance,
+            allowed: format!("must be > 0 and give at most {MAX_POSITIONS} train positions"),
+        }
+        .into());
+    }
+    let factor = model.stiffness().factor()?;
+    let dofs = model.dofs();
+    let mut envelope = StaticEnvelope::default();
+    for i in 0..positions {
+        let head = (i as f64 * advance).min(span);
+        let mut q = train.load_vector(mesh, head).to_free(mesh, dofs);
+        factor.solve_in_place(&mut q);
+        for node in 0..mesh.nodes() {
+            if let Some(d) = dofs.free_index(2 * node)
+                && -q[d] > envelope.max_downward
+            {
+                envelope = StaticEnvelope { max_downward: -q[d], position: mesh.node_x(node), head };
+            }
+        }
+    }
+    Ok(envelope)
+}
