@@ -7,6 +7,13 @@ use fem_beam::{Beam, BeamModel, Foundation, Mesh, Support, Supports};
 use friction::InteractionSet;
 use track::{RunSettings, Simulation};
 
+/// A pinned span of `length` m without foundation on 40 elements.
+fn span_model(beam: Beam, length: f64) -> BeamModel {
+    let pinned = Supports::both(Support::Pinned);
+    let bare = Foundation { stiffness: 0.0, damping: 0.0 };
+    BeamModel::new(beam, bare, Mesh::new(length, 40).unwrap(), pinned).unwrap()
+}
+
 /// Max over the crossing of the mid-span deflection over FL³/48EI, FE run against 60-mode series sampled at the
 /// same instants. The 20 m span on 40 elements resolves its first modes (f₁ = 1.285 Hz to 1e-8), and a load
 /// advance of 0.05 m keeps ω₁h ≤ 8e-3 (θ = ½: phase error O((ω₁h)²)); measured agreement 2.6e-4, asserted 0.5 %
@@ -15,10 +22,8 @@ use track::{RunSettings, Simulation};
 fn midspan_amplification_matches_the_modal_series() {
     let (length, elements) = (20.0, 40);
     let beam = Beam::default();
-    let mesh = Mesh::new(length, elements).unwrap();
-    let model =
-        BeamModel::new(beam, Foundation { stiffness: 0.0, damping: 0.0 }, mesh, Supports::both(Support::Pinned))
-            .unwrap();
+    assert_eq!(elements, 40);
+    let model = span_model(beam, length);
     let span = SimplySupportedSpan::new(&beam, 0.0, length).unwrap();
     let f1 = span.frequency(1);
     let force = 100e3;
@@ -65,15 +70,7 @@ fn rayleigh_damping_decays_each_mode_at_its_ratio() {
     let beam = Beam::default();
     let span = SimplySupportedSpan::new(&beam, 0.0, length).unwrap();
     let rayleigh = Rayleigh::from_ratio(0.02, span.frequency(1), span.frequency(3)).unwrap();
-    let model = BeamModel::new(
-        beam,
-        Foundation { stiffness: 0.0, damping: 0.0 },
-        Mesh::new(length, 40).unwrap(),
-        Supports::both(Support::Pinned),
-    )
-    .unwrap()
-    .with_rayleigh(rayleigh)
-    .unwrap();
+    let model = span_model(beam, length).with_rayleigh(rayleigh).unwrap();
     let system = track::system::beam_system(&model);
     for n in 1..=3usize {
         let omega = span.omega(n);
@@ -133,13 +130,7 @@ fn resonance_builds_up_except_at_cancelling_span_to_spacing_ratios() {
     let beam = Beam::default();
     let span = SimplySupportedSpan::new(&beam, 0.0, length).unwrap();
     let (f1, omega) = (span.frequency(1), span.omega(1));
-    let model = BeamModel::new(
-        beam,
-        Foundation { stiffness: 0.0, damping: 0.0 },
-        Mesh::new(length, 40).unwrap(),
-        Supports::both(Support::Pinned),
-    )
-    .unwrap();
+    let model = span_model(beam, length);
     let force = 100e3;
     // Mode-1 amplitude left by one axle: √(q² + (q̇/ω)²) at T = L/v from the series (one mode, mid-span value).
     let ringing = |spacing: f64| {
@@ -189,13 +180,7 @@ fn static_envelope_gives_the_amplification_factor() {
     let length = 20.0;
     let beam = Beam::default();
     let span = SimplySupportedSpan::new(&beam, 0.0, length).unwrap();
-    let model = BeamModel::new(
-        beam,
-        Foundation { stiffness: 0.0, damping: 0.0 },
-        Mesh::new(length, 40).unwrap(),
-        Supports::both(Support::Pinned),
-    )
-    .unwrap();
+    let model = span_model(beam, length);
     let single = Train::single(100e3);
     let envelope = track::statics::static_envelope(&model, &single, 0.05).unwrap();
     let expected = span.static_midspan_deflection(100e3);
