@@ -118,7 +118,8 @@ pub fn run(args: &RunArgs) -> Result<()> {
             check_output_file("--out", &out.join(name))?;
         }
     }
-    let requests = if args.out.is_some() { scenario.output.snapshots(scenario.mesh.length) } else { Vec::new() };
+    let crossing = scenario.mesh.length + case.settings.moving.train_length();
+    let requests = if args.out.is_some() { scenario.output.snapshots(crossing) } else { Vec::new() };
     let steps = case.settings.step_count(scenario.mesh.length);
     let bar = crate::progress::steps_bar(steps as u64, args.quiet || args.format == Format::Json);
     let progress = |fraction: f64| bar.set_position((fraction * steps) as u64);
@@ -172,7 +173,8 @@ fn write_outputs(
     write_atomically(&out.join("histories.csv"), histories_csv(result).as_bytes())?;
     write_atomically(&out.join("snapshots.csv"), snapshots_csv(snapshots).as_bytes())?;
     let title = if scenario.title.is_empty() { format!("v = {} m/s", report.speed) } else { scenario.title.clone() };
-    for spec in run_plots(result, snapshots, &title) {
+    let load = if report.train.is_some() { "first axle" } else { "load" };
+    for spec in run_plots(result, snapshots, &title, load) {
         study::plot::render(&spec, out)?;
     }
     Ok(())

@@ -105,8 +105,9 @@ pub fn snapshots_csv(snapshots: &[Snapshot]) -> String {
 }
 
 /// Figures of the histories (deflection and moment against the load position, one curve per section) and of the
-/// snapshots (deflected shape and moment along the beam, one curve per instant).
-pub fn run_plots(result: &RunResult, snapshots: &[Snapshot], title: &str) -> Vec<PlotSpec> {
+/// snapshots (deflected shape and moment along the beam, one curve per instant). `load` names what the positions are
+/// of: "load" for a single load, "first axle" for a train.
+pub fn run_plots(result: &RunResult, snapshots: &[Snapshot], title: &str, load: &str) -> Vec<PlotSpec> {
     let by_section = |value: &dyn Fn(&track::simulation::SectionHistory, usize) -> f64| -> Curves {
         let curve = |(i, s): (usize, &track::simulation::SectionHistory)| {
             let points = (0..s.time.len()).map(|k| (s.load_position[k], value(s, k))).collect();
@@ -117,7 +118,7 @@ pub fn run_plots(result: &RunResult, snapshots: &[Snapshot], title: &str) -> Vec
     let by_instant = |value: &dyn Fn(&Snapshot, usize) -> f64| -> Curves {
         let curve = |(i, s): (usize, &Snapshot)| {
             let points = (0..s.x.len()).map(|n| (s.x[n], value(s, n))).collect();
-            (format!("load at {:.1} m (t = {:.3} s)", s.load_position, s.time), 1 + i, points)
+            (format!("{load} at {:.1} m (t = {:.3} s)", s.load_position, s.time), 1 + i, points)
         };
         snapshots.iter().enumerate().map(curve).collect()
     };
@@ -134,7 +135,7 @@ pub fn run_plots(result: &RunResult, snapshots: &[Snapshot], title: &str) -> Vec
     if !result.histories.is_empty() {
         pair(
             [FIGURE_STEMS[0], FIGURE_STEMS[1]],
-            "load position x_c (m)",
+            &format!("{load} position x_c (m)"),
             ("deflection at the recorded sections", "bending moment at the recorded sections"),
             (by_section(&|s, k| s.deflection[k] * 1e3), by_section(&|s, k| s.moment[k] / 1e3)),
         );

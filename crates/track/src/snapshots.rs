@@ -79,8 +79,10 @@ impl<'a> SnapshotTaker<'a> {
                     t
                 }
                 SnapshotAt::LoadPosition(x) => {
-                    if !(x.is_finite() && (start..=length).contains(&x)) {
-                        let allowed = format!("a snapshot load position must lie in [{start}, {length}] m");
+                    // The first axle's position: up to L plus the train's length (the last axle then leaves).
+                    let last = length + settings.moving.train_length();
+                    if !(x.is_finite() && (start..=last).contains(&x)) {
+                        let allowed = format!("a snapshot load (first axle) position must lie in [{start}, {last}] m");
                         return Err(NscdError::InvalidField { field: "snapshots", value: x, allowed }.into());
                     }
                     (x - start) / settings.moving.speed

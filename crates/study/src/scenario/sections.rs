@@ -376,14 +376,15 @@ pub struct OutputSection {
 }
 
 impl OutputSection {
-    /// The snapshot requests for a beam of length `length` (m): the times and load positions given, or the load at
-    /// L/4, L/2 and 3L/4.
-    pub fn snapshots(&self, length: f64) -> Vec<track::SnapshotAt> {
+    /// The snapshot requests for a crossing of `crossing` m (the beam's length plus the train's, the first axle's
+    /// travel): the times and load positions given, or the first axle at ¼, ½ and ¾ of it (L/4, L/2, 3L/4 for a
+    /// single load).
+    pub fn snapshots(&self, crossing: f64) -> Vec<track::SnapshotAt> {
         use track::SnapshotAt;
         let mut requests: Vec<SnapshotAt> = self.snapshot_times.iter().map(|&t| SnapshotAt::Time(t)).collect();
         requests.extend(self.snapshot_load_positions.iter().map(|&x| SnapshotAt::LoadPosition(x)));
         if requests.is_empty() {
-            requests = [0.25, 0.5, 0.75].iter().map(|f| SnapshotAt::LoadPosition(f * length)).collect();
+            requests = [0.25, 0.5, 0.75].iter().map(|f| SnapshotAt::LoadPosition(f * crossing)).collect();
         }
         requests
     }

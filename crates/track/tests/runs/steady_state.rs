@@ -80,3 +80,40 @@ fn recorded_histories_match_steady_state_under_the_load() {
         assert!(dw.abs() < 5e-4 && dm.abs() < 2e-3, "v = {speed}: deflection {dw:+e}, moment {dm:+e}");
     }
 }
+
+/// A train started from its steady state (the sum of its axles', docs/theory.md §10) keeps it: the deflection
+/// history at x = 100 m while the power car (4 axles over 17 m) passes equals the closed form w(x − x_head) of
+/// `InfiniteBeam::train_steady_state`, to the accuracy of the single-load case above.
+#[test]
+fn a_train_started_from_its_steady_state_keeps_it() {
+    use fem_beam::{Axle, Train};
+    let case = uic60_on_soft_soil();
+    let foundation = case.foundation.with_damping_ratio(0.05, &case.beam).unwrap();
+    let model = BeamModel::new(case.beam, foundation, case.mesh, case.supports).unwrap();
+    let infinite = InfiniteBeam::new(&case.beam, &foundation).unwrap();
+    let train = Train {
+        name: "power car".into(),
+        axles: [0.0, 3.0, 14.0, 17.0].iter().map(|&offset| Axle { offset, force: 170e3 }).collect(),
+        patches: vec![],
+    };
+    let speed = 150.0;
+    let mut settings = RunSettings::default();
+    settings.moving.speed = speed;
+    settings.moving.train = Some(train.clone());
+    settings.moving.initial = InitialState::SteadyState { position: 70.0 };
+    settings.record.sections = vec![100.0];
+    let r = Simulation::new(&model, &InteractionSet::new(), &settings).unwrap().run().unwrap();
+    let state = infinite.train_steady_state(speed, &train).unwrap();
+    let history = &r.histories[0];
+    let scale = state.extremes().max_downward.magnitude;
+    let mut compared = 0;
+    for (&head, &w) in history.load_position.iter().zip(&history.deflection) {
+        // The whole train within 50–150 m, away from the ends.
+        if (85.0..=140.0).contains(&head) {
+            let exact = state.deflection(100.0 - head);
+            assert!((w - exact).abs() <= 2e-3 * scale, "head at {head}: {w} vs {exact}");
+            compared += 1;
+        }
+    }
+    assert!(compared > 500, "{compared} steps compared");
+}
