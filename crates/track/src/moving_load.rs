@@ -44,13 +44,6 @@ impl MovingLoad {
         self.train.element_loads(&self.mesh, self.position(time))
     }
 
-    /// Whether any part of the train is on the beam at time t.
-    pub fn is_on_beam(&self, time: f64) -> bool {
-        let head = self.position(time);
-        let tol = 1e-9 * self.mesh.length;
-        head >= -tol && head - self.train.length() <= self.mesh.length + tol
-    }
-
     fn free_dofs(&self, element: usize) -> [Option<usize>; 4] {
         std::array::from_fn(|k| self.free[2 * element + k])
     }
