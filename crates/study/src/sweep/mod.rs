@@ -62,6 +62,8 @@ pub struct SweepPoint {
     pub window_max_upward_position: f64,
     /// When (s).
     pub window_max_upward_time: f64,
+    /// Largest vertical acceleration over nodes and steps (m/s², magnitude): a bridge deck's check value.
+    pub max_acceleration: f64,
 }
 
 /// One run of `case` at `speed` (m/s), without journal (see [`Runner::point`]).
@@ -93,6 +95,7 @@ fn point_until(case: &Case, speed: f64, stop: Option<&AtomicBool>) -> Result<Swe
         window_max_upward_deflection: window.max_upward.magnitude,
         window_max_upward_position: window.max_upward.position,
         window_max_upward_time: window.max_upward.time,
+        max_acceleration: r.max_acceleration.magnitude,
     })
 }
 
@@ -258,7 +261,7 @@ impl<'a> Runner<'a> {
 
 /// The columns of sweep output: name, unit, meaning (in this order; the README and the JSON beside a sweep's CSV
 /// list them).
-pub const CSV_COLUMNS: [(&str, &str, &str); 16] = [
+pub const CSV_COLUMNS: [(&str, &str, &str); 17] = [
     ("speed", "m/s", "load speed"),
     ("max_downward_deflection", "m", "largest downward deflection over all nodes and steps (magnitude)"),
     ("max_upward_deflection", "m", "largest upward deflection over all nodes and steps (magnitude)"),
@@ -275,6 +278,7 @@ pub const CSV_COLUMNS: [(&str, &str, &str); 16] = [
     ("window_max_upward_deflection", "m", "largest upward deflection while the load is in the extremes window"),
     ("window_max_upward_position", "m", "its node"),
     ("window_max_upward_time", "s", "its time"),
+    ("max_acceleration", "m/s²", "largest vertical acceleration over all nodes and steps (magnitude; bridge decks)"),
 ];
 
 /// The CSV header line of sweep output (no newline).
@@ -306,6 +310,7 @@ pub fn write_csv(points: &[SweepPoint], out: &mut dyn Write) -> std::io::Result<
                 p.window_max_upward_deflection,
                 p.window_max_upward_position,
                 p.window_max_upward_time,
+                p.max_acceleration,
             ])
         )?;
     }
