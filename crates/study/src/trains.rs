@@ -1,7 +1,7 @@
 //! The train of a scenario (docs/theory.md §10): a catalogue name, a CSV file of `offset,force`, or axles and
 //! patches given in the scenario file — resolved into a [`fem_beam::Train`] with errors that name the scenario path.
 
-use crate::error::{Result, StudyError, invalid};
+use crate::error::{Result, invalid};
 use crate::scenario::LoadSection;
 use fem_beam::{Axle, FemError, Patch, Train};
 
@@ -56,7 +56,8 @@ const MAX_FILE_BYTES: u64 = 4 << 20;
 
 /// Axles from a CSV file: one `offset,force` pair per line (m, N), an optional header line, `#` comments.
 pub fn read_csv(path: &std::path::Path) -> Result<Train> {
-    let io = |e: std::io::Error| StudyError::Io { path: path.display().to_string(), message: e.to_string() };
+    // A train file that cannot be read is the user's input (exit 2), like a bad value in it.
+    let io = |e: std::io::Error| invalid("load.train", path.display(), format!("cannot read the train file: {e}"));
     let size = std::fs::metadata(path).map_err(io)?.len();
     if size > MAX_FILE_BYTES {
         return Err(invalid("load.train", path.display(), "train files are at most 4 MiB"));

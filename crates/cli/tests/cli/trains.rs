@@ -60,7 +60,8 @@ fn bad_trains_exit_2_naming_the_value() {
     .unwrap();
     let garbled = folder.join("garbled.csv");
     std::fs::write(&garbled, "0,1e5\n2.5;1e5\n").unwrap();
-    let cases: [(Vec<&str>, &str); 5] = [
+    let cases: [(Vec<&str>, &str); 6] = [
+        (vec!["run", "--train", "/nonexistent/train.csv"], "cannot read the train file"),
         (vec!["run", "--train", "hslm-a11"], "hslm-a11"),
         (vec!["trains", "hslm-a0"], "hslm-a0"),
         (vec!["run", both.to_str().unwrap()], "load.train"),
