@@ -4,6 +4,7 @@
 use fem_beam::load::ElementLoad;
 use fem_beam::{DofMap, Mesh, Train};
 use nscd::Forcing;
+use std::cell::RefCell;
 
 /// A train moving at constant speed, its first axle at x_c(t) = x₀ + v·t. Axle i (offset d_i) is at x_c − d_i and
 /// loads the beam with −P_i·Ψᵀ(x) while 0 ≤ x ≤ L (Ψ the Hermite shape functions of the element containing it:
@@ -20,6 +21,10 @@ pub struct MovingLoad {
     pub speed: f64,
     /// Position of the first axle at t = 0 (m).
     pub start: f64,
+    /// The element loads at the last two times asked for: a step asks for t_{k+1} and t_k (the force, then its power
+    /// for the ledger) and the next step's t_k is this step's t_{k+1}, so each time's loads are assembled once (the
+    /// same values in the same order: the same bits). A new time replaces the earlier of the two.
+    cache: RefCell<[(f64, Vec<ElementLoad>); 2]>,
 }
 
 impl MovingLoad {
@@ -31,7 +36,13 @@ impl MovingLoad {
     /// `train` with its first axle at `start` (m) at t = 0, moving at `speed` (m/s).
     pub fn train(mesh: Mesh, dofs: &DofMap, train: Train, speed: f64, start: f64) -> Self {
         let free = (0..dofs.full_len()).map(|d| dofs.free_index(d)).collect();
-        Self { mesh, free, train, speed, start }
+        // Room for every element load the train can make at once, so that no step allocates: one per axle, and per
+        // patch one per element it can cover.
+        let l = mesh.element_length();
+        let room = train.axles.len()
+            + train.patches.iter().map(|p| ((p.length / l).ceil() as usize + 2).min(mesh.elements)).sum::<usize>();
+        let cache = RefCell::new([(f64::NAN, Vec::with_capacity(room)), (f64::NAN, Vec::with_capacity(room))]);
+        Self { mesh, free, train, speed, start, cache }
     }
 
     /// Position of the first axle at time t (m), whether or not it is on the beam.
@@ -44,6 +55,25 @@ impl MovingLoad {
         self.train.element_loads(&self.mesh, self.position(time))
     }
 
+    /// `f` of the element loads at `time`, from the cache when that time was asked for last or the time before.
+    fn with_loads<R>(&self, time: f64, f: impl FnOnce(&[ElementLoad]) -> R) -> R {
+        let mut cache = self.cache.borrow_mut();
+        let slot = match cache.iter().position(|(t, _)| *t == time) {
+            Some(slot) => slot,
+            None => {
+                // An empty slot (NaN) first, else the earlier time.
+                let (a, b) = (cache[0].0, cache[1].0);
+                let slot = if a.is_nan() || (!b.is_nan() && a < b) { 0 } else { 1 };
+                let (t, loads) = &mut cache[slot];
+                *t = time;
+                loads.clear();
+                loads.extend(self.element_loads(time));
+                slot
+            }
+        };
+        f(&cache[slot].1)
+    }
+
     fn free_dofs(&self, element: usize) -> [Option<usize>; 4] {
         std::array::from_fn(|k| self.free[2 * element + k])
     }
@@ -51,22 +81,26 @@ impl MovingLoad {
 
 impl Forcing for MovingLoad {
     fn add_to(&self, time: f64, scale: f64, out: &mut [f64]) {
-        for load in self.element_loads(time) {
-            let dofs = self.free_dofs(load.element);
-            for k in 0..4 {
-                if let Some(d) = dofs[k] {
-                    out[d] += scale * load.nodal[k];
+        self.with_loads(time, |loads| {
+            for load in loads {
+                let dofs = self.free_dofs(load.element);
+                for k in 0..4 {
+                    if let Some(d) = dofs[k] {
+                        out[d] += scale * load.nodal[k];
+                    }
                 }
             }
-        }
+        })
     }
 
     fn power(&self, time: f64, v: &[f64]) -> f64 {
-        let mut power = 0.0;
-        for load in self.element_loads(time) {
-            let dofs = self.free_dofs(load.element);
-            power += (0..4).filter_map(|k| dofs[k].map(|d| load.nodal[k] * v[d])).sum::<f64>();
-        }
-        power
+        self.with_loads(time, |loads| {
+            let mut power = 0.0;
+            for load in loads {
+                let dofs = self.free_dofs(load.element);
+                power += (0..4).filter_map(|k| dofs[k].map(|d| load.nodal[k] * v[d])).sum::<f64>();
+            }
+            power
+        })
     }
 }
