@@ -63,7 +63,30 @@ pub enum Format {
     Json,
 }
 
+/// Exit code when standard output is closed early (`frictrack … | head`): 128 + SIGPIPE, as a Unix tool killed by
+/// the signal reports.
+const BROKEN_PIPE_EXIT: i32 = 141;
+
+/// Rust ignores SIGPIPE, so writing to a closed pipe makes `println!` panic: end quietly instead, with
+/// [`BROKEN_PIPE_EXIT`], and leave every other panic to the default report.
+fn end_quietly_on_a_closed_pipe() {
+    let default = std::panic::take_hook();
+    std::panic::set_hook(Box::new(move |info| {
+        let message = info
+            .payload()
+            .downcast_ref::<String>()
+            .map(String::as_str)
+            .or_else(|| info.payload().downcast_ref::<&str>().copied())
+            .unwrap_or("");
+        if message.contains("failed printing to stdout") && message.contains("Broken pipe") {
+            std::process::exit(BROKEN_PIPE_EXIT);
+        }
+        default(info);
+    }));
+}
+
 fn main() -> ExitCode {
+    end_quietly_on_a_closed_pipe();
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Run(args) => run::run(&args),

@@ -99,3 +99,31 @@ fn analytic_superposes_a_train() {
     let at = crawl["max_downward_position"].as_f64().unwrap();
     assert!((-397.525..=0.0).contains(&at), "under the train: s = {at}");
 }
+
+/// Output piped into a reader that stops early (`frictrack … | head -1`): no panic report, the exit code of a Unix
+/// tool stopped by SIGPIPE (141). 10 000 axles of JSON (~0.5 MB) overflow any pipe buffer.
+#[test]
+fn a_closed_pipe_ends_the_command_quietly() {
+    use std::io::{BufRead, BufReader};
+    use std::process::{Command, Stdio};
+    let folder = std::env::temp_dir().join(format!("frictrack-pipe-{}", std::process::id()));
+    std::fs::create_dir_all(&folder).unwrap();
+    let csv = folder.join("long.csv");
+    let lines: String = (0..10_000).map(|i| format!("{},1e5\n", i as f64 * 0.5)).collect();
+    std::fs::write(&csv, lines).unwrap();
+    let mut child = Command::new(env!("CARGO_BIN_EXE_frictrack"))
+        .args(["trains", csv.to_str().unwrap(), "--format", "json"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut first = String::new();
+    BufReader::new(child.stdout.take().unwrap()).read_line(&mut first).unwrap();
+    assert_eq!(first.trim(), "{");
+    // The reader is dropped here: the pipe closes with most of the output unwritten.
+    let out = child.wait_with_output().unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(141), "{stderr}");
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    std::fs::remove_dir_all(&folder).unwrap();
+}
