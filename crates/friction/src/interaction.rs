@@ -76,12 +76,10 @@ pub struct InteractionRow {
     /// The entries, zero past `len`.
     values: [f64; 4],
     len: usize,
-    /// Whether the entries sit in consecutive DOFs from the first on (every Hermite element row does): products
-    /// then read four DOFs from the first, the missing entries multiplying exact zeros — the same sums without a
-    /// loop of variable length.
+    /// Whether the row is stored inline (at most four entries) in consecutive DOFs from the first on (every Hermite
+    /// element row is): products then read four DOFs from the first, the missing entries multiplying exact zeros —
+    /// the same sums without a loop of variable length. False for every long row.
     contiguous: bool,
-    /// `contiguous` and at most four entries: the fast path of the products.
-    fast: bool,
     /// All entries of a row longer than four (`len` is then 0 and the arrays unused).
     long_dofs: Vec<usize>,
     long_values: Vec<f64>,
@@ -101,7 +99,6 @@ impl InteractionRow {
             values: [0.0; 4],
             len: 0,
             contiguous: true,
-            fast: true,
             long_dofs: Vec::new(),
             long_values: Vec::new(),
         };
@@ -144,7 +141,6 @@ impl InteractionRow {
             self.len = 0;
             self.contiguous = false;
         }
-        self.fast = self.contiguous;
     }
 
     /// Whether the row is stored inline (at most four entries).
@@ -165,7 +161,7 @@ impl InteractionRow {
     /// Whether the row has at most four entries in consecutive DOFs (what the interior point's banded Newton
     /// matrices take).
     pub fn is_local(&self) -> bool {
-        self.is_short() && self.contiguous
+        self.contiguous
     }
 
     /// The (free DOF, value) entries.
@@ -187,7 +183,7 @@ impl InteractionRow {
     #[inline]
     pub fn dot(&self, v: &[f64]) -> f64 {
         let first = self.dofs[0];
-        if self.fast && first + 4 <= v.len() {
+        if self.contiguous && first + 4 <= v.len() {
             let (h, x) = (&self.values, &v[first..first + 4]);
             return h[0] * x[0] + h[1] * x[1] + h[2] * x[2] + h[3] * x[3];
         }
@@ -202,7 +198,7 @@ impl InteractionRow {
     #[inline]
     pub fn add_transpose(&self, scale: f64, out: &mut [f64]) {
         let first = self.dofs[0];
-        if self.fast && first + 4 <= out.len() {
+        if self.contiguous && first + 4 <= out.len() {
             let out = &mut out[first..first + 4];
             for k in 0..4 {
                 out[k] += scale * self.values[k];

@@ -137,9 +137,9 @@ impl InteractionProblem {
             StepLaw { lower: vec![0.0; m], upper: vec![0.0; m], compliance: vec![0.0; m], drift: vec![0.0; m] };
         for (j, l) in interactions.laws().iter().enumerate() {
             match *l {
-                Law::Coulomb { capacity } => {
-                    law.upper[j] = h * capacity;
-                    law.lower[j] = -law.upper[j];
+                // Friction's bounds are fixed for the run: set here, by the one mapping from law to bounds.
+                Law::Coulomb { .. } => {
+                    (law.lower[j], law.upper[j], law.drift[j]) = step_bounds(l, 0.0, 0.0, 0.0, h, theta);
                 }
                 Law::Signorini { .. } => {}
                 Law::Compliant { stiffness, .. } => law.compliance[j] = 1.0 / (h * h * theta * stiffness),

@@ -8,10 +8,9 @@
 //! moving load where it stands plus the friction forces p_j/h of the step at their sections.
 
 use crate::error::Result;
-use crate::moving_load::MovingLoad;
 use crate::simulation::{RunSettings, StepView};
 use fem_beam::section::Motion;
-use fem_beam::{BeamModel, LoadVector};
+use fem_beam::{BeamModel, Train};
 use friction::InteractionSet;
 use nscd::NscdError;
 
@@ -46,7 +45,7 @@ pub struct Snapshot {
 pub struct SnapshotTaker<'a> {
     model: &'a BeamModel,
     interactions: &'a InteractionSet,
-    load: MovingLoad,
+    train: Train,
     step: f64,
     /// (trigger time, request), sorted by trigger time.
     pending: Vec<(f64, SnapshotAt)>,
@@ -91,14 +90,8 @@ impl<'a> SnapshotTaker<'a> {
             pending.push((trigger, request));
         }
         pending.sort_by(|a, b| a.0.total_cmp(&b.0));
-        let load = MovingLoad::train(
-            *model.mesh(),
-            model.dofs(),
-            settings.moving.train(),
-            settings.moving.speed,
-            settings.start_position(),
-        );
-        Ok(Self { model, interactions, load, step, pending, next: 0, taken: Vec::new(), error: None })
+        let train = settings.moving.train();
+        Ok(Self { model, interactions, train, step, pending, next: 0, taken: Vec::new(), error: None })
     }
 
     /// Observe one step; returns false (stop the run) only after an error, kept for [`SnapshotTaker::finish`].
@@ -126,10 +119,8 @@ impl<'a> SnapshotTaker<'a> {
         let mean: Vec<f64> =
             view.velocity.iter().zip(view.previous_velocity).map(|(a, b)| (a - b) / self.step).collect();
         let a = dofs.expand(&mean);
-        let mut loads = LoadVector::new();
-        for load in self.load.element_loads(view.time) {
-            loads.push(load);
-        }
+        // The train where the step left its first axle (the position the view reports).
+        let mut loads = self.train.load_vector(&mesh, view.load_position);
         for (&x, &p) in self.interactions.positions().iter().zip(view.impulses) {
             loads.add_point_force(&mesh, x, p / self.step)?;
         }
