@@ -103,3 +103,8 @@ fn amplification() {
 fn discrete_vs_distributed() {
     snapshot(Preset::DiscreteVsDistributed);
 }
+
+#[test]
+fn hslm() {
+    snapshot(Preset::Hslm);
+}

@@ -1,5 +1,6 @@
-//! `frictrack reproduce [--out DIR] [--resolution coarse|paper]`: all six studies of docs/theory.md §7, their data, figures
-//! and a `report.md` that shows every figure with a two-line summary of what it shows.
+//! `frictrack reproduce [--out DIR] [--resolution coarse|paper]`: the six studies of docs/theory.md §7 and the HSLM
+//! study of §10, their data, figures and a `report.md` that shows every figure with a two-line summary of what it
+//! shows.
 
 use crate::files::write_atomically;
 use crate::study_cmd::{StudyOptions, run_study};
@@ -24,7 +25,7 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
     let workers = options.workers()?;
     let start = Instant::now();
     let mut report = String::new();
-    let _ = writeln!(report, "# frictrack — the studies of docs/theory.md §7\n");
+    let _ = writeln!(report, "# frictrack — the studies of docs/theory.md §7 and §10\n");
     let model = base.model()?;
     let (beam, foundation, mesh) = (model.beam(), model.foundation(), model.mesh());
     let v_cr = study::speeds::SpeedScale::of(&base)?.critical_speed;
@@ -85,7 +86,7 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
         }
         let _ = writeln!(report, "\n</details>\n");
     }
-    let _ = writeln!(report, "All six studies took {:.1} s.", start.elapsed().as_secs_f64());
+    let _ = writeln!(report, "All {} studies took {:.1} s.", Preset::ALL.len(), start.elapsed().as_secs_f64());
     write_atomically(&options.out.join("report.md"), report.as_bytes())?;
     for journal in journals {
         journal.remove()?;

@@ -1,6 +1,6 @@
-//! `frictrack study <preset>`: run one of the six studies of docs/theory.md §7 and write `<preset>.csv` (the data),
-//! `<preset>.json` (scenario, version, git revision, resolution, summary, wall time) and its figures (PNG and SVG)
-//! into the output folder.
+//! `frictrack study <preset>`: run one of the seven studies (docs/theory.md §7 and §10) and write `<preset>.csv` (the
+//! data), `<preset>.json` (scenario, version, git revision, resolution, summary, wall time) and its figures (PNG and
+//! SVG) into the output folder.
 
 use crate::files::{check_output_file, prepare_output_folder, write_atomically};
 use anyhow::Result;
@@ -78,7 +78,7 @@ impl StudyOptions {
 /// Options of `frictrack study`.
 #[derive(Debug, Args)]
 pub struct StudyArgs {
-    /// discrete-speed, equal-cost, optimal-force, distributed-speed, amplification or discrete-vs-distributed.
+    /// discrete-speed, equal-cost, optimal-force, distributed-speed, amplification, discrete-vs-distributed or hslm.
     preset: String,
     #[command(flatten)]
     options: StudyOptions,
@@ -151,7 +151,7 @@ pub fn run_study(
         "lines": data.lines,
         "plots": data.plots.iter().map(|p| p.stem.as_str()).collect::<Vec<_>>(),
         "scenario": base,
-        "speeds": if preset.sweeps_speed() { Some(resolution.speeds(base)?) } else { None },
+        "speeds": preset.speeds(resolution, base)?,
         "study_sets": preset.sets(),
         "scenario_parts_not_used": overrides,
         "csv_columns": data.columns,

@@ -107,23 +107,33 @@ pub fn warnings(scenario: &Scenario, case: &Case) -> Vec<Warning> {
     out
 }
 
-/// A span (no foundation, pinned ends) must resolve accelerations up to f_max = max(30 Hz, 1.5 f₁, f₃), the
-/// frequencies of EN 1990 A2's deck-acceleration check (docs/theory.md §10): the mesh resolves the pinned mode n
-/// whose f_n first reaches f_max with at least 4 elements per half-wave (L/(4n)), and the time step resolves f_max
-/// with at least 20 steps per period (θ = ½ then has a phase error below 2 % per period).
-pub fn deck_resolution(case: &Case) -> Vec<Warning> {
-    use fem_beam::Support;
-    let model = &case.model;
+/// The highest frequency a deck-acceleration check needs, f_max = max(30 Hz, 1.5 f₁, f₃) (EN 1990 A2, docs/theory.md
+/// §10), with the span it was taken from; None unless the model is a span (no foundation, both ends pinned).
+pub fn deck_frequency(model: &BeamModel) -> Option<(f64, fem_beam::span::SimplySupportedSpan)> {
     let supports = model.supports();
     let pinned = supports.left == Support::Pinned && supports.right == Support::Pinned;
     if !(pinned && model.foundation().stiffness == 0.0) {
-        return Vec::new();
+        return None;
     }
-    let mesh = model.mesh();
-    let Ok(span) = fem_beam::span::SimplySupportedSpan::new(model.beam(), 0.0, mesh.length) else {
+    let span = fem_beam::span::SimplySupportedSpan::new(model.beam(), 0.0, model.mesh().length).ok()?;
+    Some((30f64.max(1.5 * span.frequency(1)).max(span.frequency(3)), span))
+}
+
+/// The largest load advance (m) whose step h = Δx/v resolves `frequency` (Hz) with 20 steps per period at `speed`
+/// (m/s): θ = ½ then has a phase error below 2 % per period.
+pub fn resolving_advance(frequency: f64, speed: f64) -> f64 {
+    speed / (20.0 * frequency)
+}
+
+/// A span must resolve accelerations up to f_max of [`deck_frequency`]: the mesh resolves the pinned mode n whose
+/// f_n first reaches f_max with at least 4 elements per half-wave (L/(4n)), and the time step resolves f_max with at
+/// least 20 steps per period ([`resolving_advance`]).
+pub fn deck_resolution(case: &Case) -> Vec<Warning> {
+    let model = &case.model;
+    let Some((f_max, span)) = deck_frequency(model) else {
         return Vec::new();
     };
-    let f_max = 30f64.max(1.5 * span.frequency(1)).max(span.frequency(3));
+    let mesh = model.mesh();
     let mode = (1..=100_000).find(|&n| span.frequency(n) >= f_max).unwrap_or(100_000);
     let mut out = Vec::new();
     let longest = mesh.length / (4.0 * mode as f64);
@@ -150,7 +160,7 @@ pub fn deck_resolution(case: &Case) -> Vec<Warning> {
                 "the step h = {h:.3e} s resolves {:.1} Hz with 20 steps per period, below the {f_max:.1} Hz deck \
                  accelerations need: use a load advance of at most {:.4} m at {} m/s",
                 1.0 / (20.0 * h),
-                case.settings.moving.speed / (20.0 * f_max),
+                resolving_advance(f_max, case.settings.moving.speed),
                 case.settings.moving.speed
             ),
         });

@@ -72,6 +72,34 @@ pub struct PlotSpec {
     pub key: Vec<(Stroke, String)>,
     /// Legend text for the marks, or empty.
     pub mark_label: String,
+    /// How colour indices map to colours.
+    pub palette: Palette,
+}
+
+/// How a figure maps colour indices to colours.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Default)]
+pub enum Palette {
+    /// One distinct colour per configuration ([`color`]): 0 = no friction, black.
+    #[default]
+    Categorical,
+    /// An ordered family of `count` members (e.g. HSLM-A1 … A10, coach length rising): index i < count takes the
+    /// sequential map at i/(count − 1), dark blue to green ([`sequential`]); indices from `count` on take the
+    /// categorical colour of i − count (so `count` is black and `count + 7` grey, for reference lines).
+    Sequential {
+        /// Members of the family.
+        count: usize,
+    },
+}
+
+impl Palette {
+    /// The colour of index `i`.
+    pub fn color(self, i: usize) -> RGBColor {
+        match self {
+            Palette::Categorical => color(i),
+            Palette::Sequential { count } if i < count => sequential(i as f64 / (count.max(2) - 1) as f64),
+            Palette::Sequential { count } => color(i - count),
+        }
+    }
 }
 
 impl PlotSpec {
@@ -88,6 +116,7 @@ impl PlotSpec {
             marks: Vec::new(),
             key: Vec::new(),
             mark_label: String::new(),
+            palette: Palette::Categorical,
         }
     }
 }
@@ -121,6 +150,30 @@ const PALETTE: [(u8, u8, u8); 8] = [
 pub fn color(i: usize) -> RGBColor {
     let (r, g, b) = PALETTE[i % PALETTE.len()];
     RGBColor(r, g, b)
+}
+
+/// Viridis (Smith & van der Walt 2015, perceptually uniform, legible in grey and for colour-blind readers) from
+/// 0 to about 0.8 of its range at nine anchors: its last, yellow, part vanishes on white.
+const VIRIDIS: [(u8, u8, u8); 9] = [
+    (68, 1, 84),
+    (72, 36, 117),
+    (64, 67, 135),
+    (52, 94, 141),
+    (41, 120, 142),
+    (32, 144, 140),
+    (34, 167, 132),
+    (68, 190, 112),
+    (121, 209, 81),
+];
+
+/// The sequential colour at `t` ∈ [0, 1] (clamped): linear interpolation between the anchors of [`VIRIDIS`].
+pub fn sequential(t: f64) -> RGBColor {
+    let x = t.clamp(0.0, 1.0) * (VIRIDIS.len() - 1) as f64;
+    let k = (x.floor() as usize).min(VIRIDIS.len() - 2);
+    let f = x - k as f64;
+    let mix = |a: u8, b: u8| (f64::from(a) + f * (f64::from(b) - f64::from(a))).round() as u8;
+    let (a, b) = (VIRIDIS[k], VIRIDIS[k + 1]);
+    RGBColor(mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
 }
 
 const SIZE: (u32, u32) = (1200, 800);
@@ -227,7 +280,7 @@ fn draw<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, spec: &PlotSpec) -> s
         // segment, and on dense zig-zags (a friction force chattering every step) the widened segments shoot out of
         // the frame.
         let width = if s.points.len() > (SIZE.0 - LEGEND_WIDTH) as usize { 1 } else { 2 };
-        let style = color(s.color).stroke_width(width);
+        let style = spec.palette.color(s.color).stroke_width(width);
         let line: Vec<(f64, f64)> =
             s.points.iter().map(|&(x, y)| (tx(x), y)).filter(|(x, y)| x.is_finite() && y.is_finite()).collect();
         match s.stroke {
@@ -236,11 +289,11 @@ fn draw<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, spec: &PlotSpec) -> s
         }
         .map_err(|e| err(&e))?;
         if s.markers {
-            let marker = |p: (f64, f64)| Circle::new(p, 3, color(s.color).filled());
+            let marker = |p: (f64, f64)| Circle::new(p, 3, spec.palette.color(s.color).filled());
             chart.draw_series(line.into_iter().map(marker)).map_err(|e| err(&e))?;
         }
     }
-    let triangle = |p: (f64, f64), c: usize| TriangleMarker::new(p, 9, color(c).filled());
+    let triangle = |p: (f64, f64), c: usize| TriangleMarker::new(p, 9, spec.palette.color(c).filled());
     chart.draw_series(spec.marks.iter().map(|m| triangle((tx(m.point.0), m.point.1), m.color))).map_err(|e| err(&e))?;
     let (px, py) = chart.plotting_area().get_pixel_range();
     draw_legend(&legend_area, spec).map_err(|e| err(&e))?;
@@ -274,10 +327,10 @@ fn draw_legend<DB: DrawingBackend>(
     let mut y = 30;
     for s in spec.series.iter().filter(|s| s.label.is_some()) {
         for segment in sample(y, s.stroke) {
-            area.draw(&PathElement::new(segment, color(s.color).stroke_width(3)))?;
+            area.draw(&PathElement::new(segment, spec.palette.color(s.color).stroke_width(3)))?;
         }
         if s.markers {
-            area.draw(&Circle::new((30, y), 3, color(s.color).filled()))?;
+            area.draw(&Circle::new((30, y), 3, spec.palette.color(s.color).filled()))?;
         }
         let label = s.label.as_deref().unwrap_or_default();
         area.draw(&Text::new(label, (58, y - 9), fitted(label)?))?;

@@ -14,12 +14,20 @@ use std::fmt::Write as _;
 /// A labelled family of speed sweeps with the critical speed of each curve.
 pub(super) struct Curves {
     labels: Vec<Vec<(String, f64)>>,
-    points: Vec<Vec<SweepPoint>>,
-    critical: Vec<CriticalSpeed>,
-    runs: usize,
+    /// Each curve's sweep, in the order of the speeds.
+    pub(super) points: Vec<Vec<SweepPoint>>,
+    /// Each curve's refined critical speed.
+    pub(super) critical: Vec<CriticalSpeed>,
+    /// Simulations run (sweeps and refinements).
+    pub(super) runs: usize,
 }
 
-fn sweep_curves(scenarios: Vec<(Vec<(String, f64)>, Scenario)>, speeds: &[f64], runner: &Runner) -> Result<Curves> {
+/// Sweep every scenario over `speeds` on one pool, then refine each curve's critical speed to 2 % of the speed step.
+pub(super) fn sweep_curves(
+    scenarios: Vec<(Vec<(String, f64)>, Scenario)>,
+    speeds: &[f64],
+    runner: &Runner,
+) -> Result<Curves> {
     let cases = scenarios.iter().map(|(_, s)| s.build()).collect::<Result<Vec<_>>>()?;
     let points = runner.sweep_many(&cases, speeds)?;
     let step = speeds[1] - speeds[0];

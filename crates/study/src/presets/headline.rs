@@ -7,6 +7,11 @@ fn number(v: &Value, key: &str) -> f64 {
     v.get(key).and_then(Value::as_f64).unwrap_or(f64::NAN)
 }
 
+/// A train name in upper case as the standard writes it (`hslm-a4` → `HSLM-A4`).
+fn name(v: &Value, key: &str) -> String {
+    v.get(key).and_then(Value::as_str).unwrap_or("?").to_uppercase()
+}
+
 /// Two sentences on what a study shows, from its summary.
 pub(super) fn headline(preset: Preset, summary: &Value) -> Vec<String> {
     let empty = Vec::new();
@@ -106,6 +111,39 @@ pub(super) fn headline(preset: Preset, summary: &Value) -> Vec<String> {
                     number(&at(1e3), "max_phi_m"),
                     number(&at(2e3), "max_phi_w"),
                     number(&at(2e3), "max_phi_m")
+                ),
+            ]
+        }
+        Preset::Hslm => {
+            let envelopes = summary.get("envelopes").and_then(Value::as_array).unwrap_or(&empty);
+            let text = |v: &Value| {
+                let (speed, peak) = (number(v, "critical_speed"), number(v, "peak_max_downward_deflection"));
+                let at = match v.get("critical_speed_location").and_then(Value::as_str) {
+                    Some("upper-end") => "at or above",
+                    Some("lower-end") => "at or below",
+                    _ => "at",
+                };
+                format!(
+                    "{} {at} {:.0} km/h ({speed:.1} m/s): max downward deflection {}, dynamic amplification {:.2}; \
+                     the largest acceleration, {:.2} m/s², comes from {} at {:.0} km/h",
+                    name(v, "critical_train"),
+                    3.6 * speed,
+                    super::hslm::millimetres(peak),
+                    number(v, "dynamic_amplification"),
+                    number(v, "peak_max_acceleration"),
+                    name(v, "acceleration_train"),
+                    3.6 * number(v, "acceleration_speed")
+                )
+            };
+            let (none, with) = (envelopes.first().unwrap_or(&Value::Null), envelopes.get(1).unwrap_or(&Value::Null));
+            let cut = 1.0 - number(with, "peak_max_downward_deflection") / number(none, "peak_max_downward_deflection");
+            vec![
+                format!("Without friction the critical train is {}.", text(none)),
+                format!(
+                    "With {}, {} ({:.0} % less deflection).",
+                    summary.get("friction_setup").and_then(Value::as_str).unwrap_or("friction"),
+                    text(with),
+                    100.0 * cut
                 ),
             ]
         }

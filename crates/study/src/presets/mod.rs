@@ -1,5 +1,6 @@
-//! The six studies of docs/theory.md §7 as named presets. Each returns its data as CSV (long format, one row per point,
-//! SI units), a JSON summary (critical speeds, peaks, optimal forces) and a few human-readable summary lines.
+//! The six studies of docs/theory.md §7 and the train study of §10 as named presets. Each returns its data as CSV
+//! (long format, one row per point, SI units), a JSON summary (critical speeds, peaks, optimal forces) and a few
+//! human-readable summary lines.
 //! All runs of a study share one rayon pool; results do not depend on the thread count.
 //!
 //! One file per study; [`curves`] holds the families of speed sweeps that three of them share, [`headline`] the
@@ -12,6 +13,8 @@ mod discrete_vs_distributed;
 mod distributed_speed;
 mod equal_cost;
 mod headline;
+mod hslm;
+mod hslm_figures;
 mod optimal_force;
 
 use crate::error::{Result, invalid};
@@ -37,6 +40,8 @@ pub enum Preset {
     Amplification,
     /// 6. 199 devices of 1 kN against f_u = 0.995 kN/m at 150 m/s: mid-span histories.
     DiscreteVsDistributed,
+    /// 7. Eurocode HSLM-A1 … A10 (docs/theory.md §10): max deflection and deck acceleration vs speed.
+    Hslm,
 }
 
 /// How finely the studies sample speeds and forces.
@@ -65,6 +70,21 @@ impl Resolution {
         Ok((0..count).map(|i| range.from + i as f64 * step).collect())
     }
 
+    /// The speeds of the train study on `base` (m/s): its `[sweep]` as given; otherwise 140–420 km/h (Eurocode sweeps
+    /// run from 40 m/s to 1.2 × the line speed, 420 km/h for a 350 km/h line) every 20 km/h (coarse) or 2 km/h
+    /// (paper).
+    pub fn train_speeds(self, base: &Scenario) -> Vec<f64> {
+        if let Some(sweep) = &base.sweep {
+            return sweep.speeds();
+        }
+        let step = match self {
+            Resolution::Coarse => 20.0,
+            Resolution::Paper => 2.0,
+        };
+        let count = ((420.0 - 140.0) / step + 1e-9_f64).floor() as usize + 1;
+        (0..count).map(|i| (140.0 + i as f64 * step) / hslm::KMH).collect()
+    }
+
     fn forces(self) -> usize {
         match self {
             Resolution::Coarse => 9,
@@ -82,14 +102,15 @@ impl Resolution {
 }
 
 impl Preset {
-    /// All six, in docs/theory.md order.
-    pub const ALL: [Preset; 6] = [
+    /// All seven, in docs/theory.md order.
+    pub const ALL: [Preset; 7] = [
         Preset::DiscreteSpeed,
         Preset::EqualCost,
         Preset::OptimalForce,
         Preset::DistributedSpeed,
         Preset::Amplification,
         Preset::DiscreteVsDistributed,
+        Preset::Hslm,
     ];
 
     /// Name on the command line and of the output files.
@@ -101,6 +122,7 @@ impl Preset {
             Preset::DistributedSpeed => "distributed-speed",
             Preset::Amplification => "amplification",
             Preset::DiscreteVsDistributed => "discrete-vs-distributed",
+            Preset::Hslm => "hslm",
         }
     }
 
@@ -133,12 +155,22 @@ impl Preset {
                 "load.speed: ¾ v_cr rounded (150 m/s for the reference case)",
                 "output.sections: mid-span",
             ],
+            Preset::Hslm => &[
+                "friction: none, and the scenario's [friction] (if it has none: devices of 50 kN, 31 per 200 m)",
+                "load: HSLM-A1 … A10 in turn (EN 1991-2 §6.4.6.1.1)",
+                "speeds: 140–420 km/h every 20 km/h (coarse) or 2 km/h (paper), unless the scenario has a [sweep]",
+                "integration.load_advance: on a span, at most what resolves max(30 Hz, 1.5 f₁, f₃) with 20 steps per \
+                 period at the lowest speed",
+            ],
         }
     }
 
     /// The parts of `base` that this study replaces with its own (see [`Preset::sets`]), one sentence each; empty
     /// when the base scenario leaves them at their defaults.
     pub fn overrides(self, base: &Scenario) -> Vec<String> {
+        if self == Preset::Hslm {
+            return hslm::overrides(base);
+        }
         let mut notes = Vec::new();
         let f = &base.friction;
         if f.devices.is_some() || f.distributed.is_some() {
@@ -155,7 +187,16 @@ impl Preset {
 
     /// Whether the study sweeps the load speed (the others run at fixed speeds).
     pub fn sweeps_speed(self) -> bool {
-        matches!(self, Preset::DiscreteSpeed | Preset::EqualCost | Preset::DistributedSpeed)
+        matches!(self, Preset::DiscreteSpeed | Preset::EqualCost | Preset::DistributedSpeed | Preset::Hslm)
+    }
+
+    /// The speeds (m/s) the study sweeps on `base`, None for the studies at fixed speeds.
+    pub fn speeds(self, resolution: Resolution, base: &Scenario) -> Result<Option<Vec<f64>>> {
+        Ok(match self {
+            Preset::Hslm => Some(resolution.train_speeds(base)),
+            _ if self.sweeps_speed() => Some(resolution.speeds(base)?),
+            _ => None,
+        })
     }
 
     /// A one-line title.
@@ -167,6 +208,7 @@ impl Preset {
             Preset::DistributedSpeed => "Critical speed with distributed friction",
             Preset::Amplification => "Dynamic amplification at mid-span",
             Preset::DiscreteVsDistributed => "199 devices × 1 kN against 0.995 kN/m distributed friction",
+            Preset::Hslm => "Eurocode HSLM-A1 … A10: deflection and deck acceleration vs speed",
         }
     }
 }
@@ -209,8 +251,9 @@ fn unit_of(column: &str) -> &'static str {
         "global_norm" => "m²",
         "time" => "s",
         "impulse" => "N·s",
-        "model" => "text",
-        "devices" | "tau" | "phi_w" | "phi_m" => "1",
+        "model" | "train" | "friction" => "text",
+        "max_acceleration" => "m/s²",
+        "devices" | "tau" | "phi_w" | "phi_m" | "dynamic_amplification" => "1",
         _ => "m",
     }
 }
@@ -224,6 +267,7 @@ pub fn run_preset(preset: Preset, resolution: Resolution, base: &Scenario, runne
         Preset::DistributedSpeed => distributed_speed::study(resolution, base, runner)?,
         Preset::Amplification => amplification::study(base, runner)?,
         Preset::DiscreteVsDistributed => discrete_vs_distributed::study(base, runner)?,
+        Preset::Hslm => hslm::study(resolution, base, runner)?,
     };
     let headline = headline::headline(preset, &data.summary);
     let header = data.csv.lines().next().unwrap_or_default();

@@ -46,7 +46,9 @@ impl CriticalSpeed {
 
     /// One sentence: the critical speed, or the bound and why.
     pub fn describe(&self) -> String {
-        let (from, to) = self.range;
+        // Speeds to 0.1 m/s: a km/h grid gives 38.888888888888886 m/s.
+        let tenth = |v: f64| crate::number::number((v * 10.0).round() / 10.0);
+        let (from, to) = (tenth(self.range.0), tenth(self.range.1));
         let peak = format!("max downward deflection {:.2} mm", self.max_downward_deflection * 1e3);
         match self.location {
             PeakLocation::Interior => format!(

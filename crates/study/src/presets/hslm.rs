@@ -1,0 +1,426 @@
+//! Study 7: the Eurocode high-speed load model HSLM-A1 … A10 (EN 1991-2 §6.4.6.1.1, docs/theory.md §10) over the
+//! base scenario, a track or a bridge: max downward deflection and max deck acceleration vs speed for the ten trains,
+//! without friction and with a friction set-up (the scenario's `[friction]`, else devices of 50 kN at the density of
+//! 31 on 200 m: 31 on the reference track, 3 on a 20 m span); the envelope
+//! over the trains with the critical train and speed; the resonance speeds v = f_j·D/i (a train of coaches of length D
+//! loads the structure periodically at v/D; its i-th harmonic meets the natural frequency f_j there).
+//!
+//! On a span (no foundation, pinned ends) the deck-acceleration check needs frequencies up to f_max = max(30 Hz,
+//! 1.5 f₁, f₃): the study reduces the load advance, where needed, to the one that resolves f_max with 20 steps per
+//! period at the lowest speed, and says so. Acceleration limits of EN 1990 A2.4.4.2.1 (3.5 m/s² for a ballasted deck)
+//! are drawn for spans only: on a track the "deck" is the rail.
+
+use super::curves::sweep_curves;
+use super::{Resolution, StudyData, blank, mean_iterations, with_devices};
+use crate::diagnostics::{deck_frequency, resolving_advance};
+use crate::error::Result;
+use crate::number::row;
+use crate::scenario::Scenario;
+use crate::sweep::{CriticalSpeed, Runner, SweepPoint};
+use fem_beam::train::HSLM_A;
+use fem_beam::{BeamModel, Train};
+use serde_json::{Value, json};
+use std::fmt::Write as _;
+
+/// km/h per m/s.
+pub(super) const KMH: f64 = 3.6;
+/// EN 1990 A2.4.4.2.1(4): the peak deck acceleration allowed on a ballasted deck (m/s²).
+pub const BALLASTED_DECK_LIMIT: f64 = 3.5;
+/// The friction set-up when the scenario has none: devices of F_u = 50 kN (the middle force of study 1) at the
+/// density of its strongest set, 31 on the 200 m reference track ([`fallback_devices`]).
+const FALLBACK_FORCE: f64 = 50e3;
+
+/// The fallback devices on a beam of `length` (m): N = round(31·L/200 m), at least 1 (3 on a 20 m span), of 50 kN.
+fn fallback_devices(length: f64) -> (usize, f64) {
+    (((31.0 * length / 200.0).round() as usize).max(1), FALLBACK_FORCE)
+}
+/// The natural frequencies whose resonance speeds are listed (f₁ … f₃).
+const MODES: usize = 3;
+/// Harmonics listed per frequency, at most.
+const MAX_ORDER: usize = 20;
+/// The trains: HSLM-A1 … A10.
+pub(super) const TRAINS: usize = HSLM_A.len();
+
+/// Coach length D (m) of HSLM-A`k`, k = 1 … 10.
+pub(super) fn coach_length(k: usize) -> f64 {
+    HSLM_A[k - 1].1
+}
+
+/// The study's friction set-up on `base` and its description: the scenario's `[friction]`, else the fallback devices.
+fn with_friction(base: &Scenario) -> (Scenario, String) {
+    let f = &base.friction;
+    if f.devices.is_none() && f.distributed.is_none() {
+        let (count, force) = fallback_devices(base.mesh.length);
+        return (with_devices(base, count, force), format!("{count} devices × {:.0} kN", force / 1e3));
+    }
+    let mut parts = Vec::new();
+    if let Some(d) = &f.devices {
+        let count = d.count.or(d.positions.as_ref().map(Vec::len)).unwrap_or(0);
+        parts.push(format!("{count} devices × {:.0} kN", d.force.unwrap_or(f64::NAN) / 1e3));
+    }
+    if let Some(d) = &f.distributed {
+        parts.push(format!("f_u = {} kN/m", d.force_per_length / 1e3));
+    }
+    (base.clone(), parts.join(" + "))
+}
+
+/// `base` with the load advance the speeds need on a span (see the module documentation), and that advance if it
+/// was reduced.
+fn resolved(base: &Scenario, speeds: &[f64]) -> Result<(Scenario, Option<f64>)> {
+    let mut s = base.clone();
+    let slowest = speeds.iter().copied().fold(f64::INFINITY, f64::min);
+    if let Some((f_max, _)) = deck_frequency(&base.model()?) {
+        let needed = resolving_advance(f_max, slowest);
+        if needed < s.integration.load_advance {
+            s.integration.load_advance = needed;
+            return Ok((s, Some(needed)));
+        }
+    }
+    Ok((s, None))
+}
+
+/// The parts of `base` the study replaces or adds, one sentence each.
+pub(super) fn overrides(base: &Scenario) -> Vec<String> {
+    let mut notes = Vec::new();
+    let load = &base.load;
+    if load.train.is_some() || !load.axles.is_empty() || !load.patches.is_empty() {
+        notes.push("the scenario's train is not used: the study runs HSLM-A1 … A10".to_string());
+    }
+    let f = &base.friction;
+    if f.devices.is_none() && f.distributed.is_none() {
+        let (count, force) = fallback_devices(base.mesh.length);
+        notes.push(format!(
+            "the scenario has no [friction]: the study compares no friction with {count} devices of {:.0} kN, the \
+             density of 31 devices on 200 m (give [friction] to compare another set-up)",
+            force / 1e3
+        ));
+    }
+    // Both resolutions start at 140 km/h, so the coarse grid's lowest speed is the paper grid's too.
+    let speeds = Resolution::Coarse.train_speeds(base);
+    if let (Ok((_, Some(advance))), Ok(model)) = (resolved(base, &speeds), base.model()) {
+        let f_max = deck_frequency(&model).map_or(f64::NAN, |(f, _)| f);
+        let slowest = speeds.iter().copied().fold(f64::INFINITY, f64::min);
+        notes.push(format!(
+            "integration.load_advance = {} m is reduced to {advance:.4} m so that the step resolves the deck \
+             accelerations up to {f_max:.1} Hz with 20 steps per period at the lowest speed, {slowest:.1} m/s",
+            base.integration.load_advance
+        ));
+    }
+    notes
+}
+
+/// A resonance speed v = f_j·D/i.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Resonance {
+    /// j (1 = the lowest natural frequency).
+    pub(super) mode: usize,
+    /// i.
+    pub(super) order: usize,
+    /// f_j (Hz).
+    pub(super) frequency: f64,
+    /// v (m/s).
+    pub(super) speed: f64,
+}
+
+/// The resonance speeds of coach length `d` (m) for `frequencies` (Hz, ascending) inside [from, to] (m/s). A
+/// frequency within 1 % of a lower one gives the same speeds and is left out: on a track the lowest modes crowd
+/// just above the foundation's cut-off frequency √(k_f/ρA)/2π.
+fn resonances(frequencies: &[f64], d: f64, (from, to): (f64, f64)) -> Vec<Resonance> {
+    let mut out = Vec::new();
+    for (j, &frequency) in frequencies.iter().enumerate() {
+        if frequencies[..j].iter().any(|&f| (frequency - f).abs() <= 0.01 * f) {
+            continue;
+        }
+        for order in 1..=MAX_ORDER {
+            let speed = frequency * d / order as f64;
+            if (from..=to).contains(&speed) {
+                out.push(Resonance { mode: j + 1, order, frequency, speed });
+            }
+        }
+    }
+    out
+}
+
+/// One train under one friction set-up.
+pub(super) struct TrainCurve {
+    /// k of HSLM-Ak.
+    pub(super) train: usize,
+    /// 0 = no friction, 1 = the friction set-up.
+    pub(super) friction: usize,
+    /// The sweep.
+    pub(super) points: Vec<SweepPoint>,
+    /// The refined critical speed of the max downward deflection.
+    pub(super) critical: CriticalSpeed,
+    /// Largest static downward deflection of the train over its crossing (m).
+    pub(super) static_max: f64,
+    /// Resonance speeds inside the swept range.
+    pub(super) resonances: Vec<Resonance>,
+}
+
+impl TrainCurve {
+    /// The sampled point of the largest max acceleration.
+    pub(super) fn acceleration_peak(&self) -> &SweepPoint {
+        self.points.iter().max_by(|a, b| a.max_acceleration.total_cmp(&b.max_acceleration)).expect("speeds")
+    }
+}
+
+/// Everything the study found.
+pub(super) struct Results {
+    /// The curves, friction set-up major, train minor.
+    pub(super) curves: Vec<TrainCurve>,
+    /// The friction set-up, in words.
+    pub(super) friction: String,
+    /// f₁ … f₃ (Hz), if the model's eigenproblem was solved.
+    pub(super) frequencies: Option<Vec<f64>>,
+    /// The acceleration limit drawn (spans only).
+    pub(super) acceleration_limit: Option<f64>,
+    /// The load advance used (m).
+    pub(super) load_advance: f64,
+}
+
+impl Results {
+    /// The curves of one friction set-up.
+    pub(super) fn set(&self, friction: usize) -> impl Iterator<Item = &TrainCurve> {
+        self.curves.iter().filter(move |c| c.friction == friction)
+    }
+
+    /// Legend text of a friction set-up.
+    pub(super) fn friction_label(&self, friction: usize) -> String {
+        if friction == 0 { "no friction".into() } else { self.friction.clone() }
+    }
+
+    /// The critical curve of a friction set-up: the largest refined peak of the max downward deflection.
+    pub(super) fn critical(&self, friction: usize) -> &TrainCurve {
+        let by_peak = |a: &&TrainCurve, b: &&TrainCurve| {
+            a.critical.max_downward_deflection.total_cmp(&b.critical.max_downward_deflection)
+        };
+        self.set(friction).max_by(by_peak).expect("ten trains")
+    }
+
+    /// The curve and sampled point of the largest max acceleration of a friction set-up.
+    pub(super) fn acceleration_critical(&self, friction: usize) -> (&TrainCurve, &SweepPoint) {
+        let peak = |c: &TrainCurve| c.acceleration_peak().max_acceleration;
+        let curve = self.set(friction).max_by(|a, b| peak(a).total_cmp(&peak(b))).expect("ten trains");
+        (curve, curve.acceleration_peak())
+    }
+
+    /// At each sampled speed, the largest value over the ten trains and the train giving it.
+    pub(super) fn envelope(&self, friction: usize, value: fn(&SweepPoint) -> f64) -> Vec<(f64, f64, usize)> {
+        let curves: Vec<&TrainCurve> = self.set(friction).collect();
+        (0..curves[0].points.len())
+            .map(|i| {
+                let best = curves.iter().max_by(|a, b| value(&a.points[i]).total_cmp(&value(&b.points[i])));
+                let best = best.expect("ten trains");
+                (best.points[i].speed, value(&best.points[i]), best.train)
+            })
+            .collect()
+    }
+
+    fn csv(&self) -> String {
+        let mut out = String::from(
+            "train,friction,speed,max_downward_deflection,max_upward_deflection,max_acceleration,\
+             dynamic_amplification,static_max_downward_deflection,dissipated_energy,window_max_downward_deflection,\
+             window_max_upward_deflection\n",
+        );
+        for c in &self.curves {
+            for p in &c.points {
+                let values = [
+                    p.speed,
+                    p.max_downward_deflection,
+                    p.max_upward_deflection,
+                    p.max_acceleration,
+                    p.max_downward_deflection / c.static_max,
+                    c.static_max,
+                    p.dissipated_energy,
+                    p.window_max_downward_deflection,
+                    p.window_max_upward_deflection,
+                ];
+                let friction = if c.friction == 0 { "none" } else { "with" };
+                let _ = writeln!(out, "hslm-a{},{friction},{}", c.train, row(&values));
+            }
+        }
+        out
+    }
+
+    fn summary(&self) -> (Value, Vec<String>) {
+        let mut lines = Vec::new();
+        let curves: Vec<Value> = self
+            .curves
+            .iter()
+            .map(|c| {
+                let peak = c.acceleration_peak();
+                let text = if c.critical.is_interior() {
+                    format!(
+                        "critical speed {:.1} m/s ({:.0} km/h), peak {} (DAF {:.3})",
+                        c.critical.speed,
+                        c.critical.speed * KMH,
+                        millimetres(c.critical.max_downward_deflection),
+                        c.critical.max_downward_deflection / c.static_max
+                    )
+                } else {
+                    c.critical.describe()
+                };
+                lines.push(format!(
+                    "HSLM-A{} (D = {} m), {}: {text}; max acceleration {:.3} m/s² at {:.0} km/h",
+                    c.train,
+                    coach_length(c.train),
+                    self.friction_label(c.friction),
+                    peak.max_acceleration,
+                    peak.speed * KMH
+                ));
+                let resonances: Vec<Value> = c
+                    .resonances
+                    .iter()
+                    .map(|r| json!({"mode": r.mode, "order": r.order, "frequency": r.frequency, "speed": r.speed}))
+                    .collect();
+                json!({
+                    "train": format!("hslm-a{}", c.train),
+                    "coach_length": coach_length(c.train),
+                    "friction": if c.friction == 0 { "none" } else { "with" },
+                    "static_max_downward_deflection": c.static_max,
+                    "critical_speed": c.critical.speed,
+                    "critical_speed_location": c.critical.location,
+                    "peak_max_downward_deflection": c.critical.max_downward_deflection,
+                    "peak_dynamic_amplification": c.critical.max_downward_deflection / c.static_max,
+                    "peak_max_acceleration_sampled": peak.max_acceleration,
+                    "peak_acceleration_speed": peak.speed,
+                    "resonance_speeds": resonances,
+                })
+            })
+            .collect();
+        let envelopes: Vec<Value> = (0..2)
+            .map(|friction| {
+                let c = self.critical(friction);
+                let (a, p) = self.acceleration_critical(friction);
+                lines.push(format!(
+                    "{}, envelope of the ten trains: HSLM-A{} at {:.1} m/s ({:.0} km/h), {} (DAF {:.3}){}; max \
+                     acceleration {:.3} m/s² from HSLM-A{} at {:.0} km/h",
+                    self.friction_label(friction),
+                    c.train,
+                    c.critical.speed,
+                    c.critical.speed * KMH,
+                    millimetres(c.critical.max_downward_deflection),
+                    c.critical.max_downward_deflection / c.static_max,
+                    if c.critical.is_interior() { "" } else { ", at an end of the speed range: a bound" },
+                    p.max_acceleration,
+                    a.train,
+                    p.speed * KMH
+                ));
+                json!({
+                    "friction": if friction == 0 { "none" } else { "with" },
+                    "critical_train": format!("hslm-a{}", c.train),
+                    "critical_speed": c.critical.speed,
+                    "critical_speed_location": c.critical.location,
+                    "peak_max_downward_deflection": c.critical.max_downward_deflection,
+                    "dynamic_amplification": c.critical.max_downward_deflection / c.static_max,
+                    "acceleration_train": format!("hslm-a{}", a.train),
+                    "acceleration_speed": p.speed,
+                    "peak_max_acceleration": p.max_acceleration,
+                    "acceleration_over_limit": self.acceleration_limit.map(|l| p.max_acceleration / l),
+                })
+            })
+            .collect();
+        let summary = json!({
+            "friction_setup": self.friction,
+            "natural_frequencies": self.frequencies,
+            "load_advance": self.load_advance,
+            "acceleration_limit": self.acceleration_limit,
+            "curves": curves,
+            "envelopes": envelopes,
+        });
+        (summary, lines)
+    }
+}
+
+/// A deflection (m) in mm with three significant digits: bridges deflect ~1 mm, the soft-soil track ~300 mm.
+pub(super) fn millimetres(w: f64) -> String {
+    let mm = w * 1e3;
+    let decimals = (2 - mm.abs().max(1e-12).log10().floor() as i32).clamp(0, 6) as usize;
+    format!("{mm:.decimals$} mm")
+}
+
+/// f₁ … f₃ (Hz) of `model`, None where its dense eigenproblem is refused (over 2000 free DOFs).
+fn natural_frequencies(model: &BeamModel) -> Option<Vec<f64>> {
+    let count = MODES.min(model.dofs().free_len());
+    let omegas = model.natural_frequencies(count).ok()?;
+    Some(omegas.into_iter().map(|w| w / std::f64::consts::TAU).collect())
+}
+
+pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) -> Result<StudyData> {
+    let speeds = resolution.train_speeds(base);
+    let (base, _) = resolved(base, &speeds)?;
+    let (friction_base, friction) = with_friction(&base);
+    let mut scenarios = Vec::with_capacity(2 * TRAINS);
+    for (f, set_up) in [&base, &friction_base].into_iter().enumerate() {
+        for k in 1..=TRAINS {
+            let mut s = set_up.clone();
+            s.load.train = Some(format!("hslm-a{k}"));
+            s.load.axles.clear();
+            s.load.patches.clear();
+            scenarios.push((vec![("train".to_string(), k as f64), ("friction".to_string(), f as f64)], s));
+        }
+    }
+    let swept = sweep_curves(scenarios, &speeds, runner)?;
+    let case = base.build()?;
+    let advance = base.integration.load_advance;
+    let statics = runner.silent().map(&(1..=TRAINS).collect::<Vec<_>>(), |&k| {
+        Ok(track::statics::static_envelope(&case.model, &Train::hslm_a(k), advance)?.max_downward)
+    })?;
+    let frequencies = natural_frequencies(&case.model);
+    let range = (speeds[0], speeds[speeds.len() - 1]);
+    let runs = swept.runs;
+    let curves = swept
+        .points
+        .into_iter()
+        .zip(swept.critical)
+        .enumerate()
+        .map(|(i, (points, critical))| {
+            let train = i % TRAINS + 1;
+            let resonances =
+                frequencies.as_deref().map_or_else(Vec::new, |f| resonances(f, coach_length(train), range));
+            TrainCurve { train, friction: i / TRAINS, points, critical, static_max: statics[train - 1], resonances }
+        })
+        .collect();
+    let results = Results {
+        curves,
+        friction,
+        frequencies,
+        acceleration_limit: deck_frequency(&case.model).map(|_| BALLASTED_DECK_LIMIT),
+        load_advance: advance,
+    };
+    let (summary, lines) = results.summary();
+    Ok(StudyData {
+        csv: results.csv(),
+        summary,
+        lines,
+        plots: results.figures(),
+        mean_iterations: mean_iterations(results.curves.iter().flat_map(|c| &c.points)),
+        ..blank(runs)
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{millimetres, resonances};
+
+    #[test]
+    fn resonance_speeds_are_the_harmonics_inside_the_range() {
+        let r = resonances(&[10.0, 40.0], 20.0, (40.0, 120.0));
+        let speeds: Vec<(usize, usize, f64)> = r.iter().map(|r| (r.mode, r.order, r.speed)).collect();
+        // f₁D = 200 m/s: i = 2, 3, 4, 5 give 100, 66.7, 50, 40; f₂D = 800 m/s: i = 7 … 20 fall in [40, 120].
+        assert_eq!(&speeds[..4], &[(1, 2, 100.0), (1, 3, 200.0 / 3.0), (1, 4, 50.0), (1, 5, 40.0)]);
+        assert_eq!(speeds.len(), 4 + 14);
+        assert_eq!(speeds[4], (2, 7, 800.0 / 7.0));
+        // A frequency within 1 % of a lower one adds nothing.
+        let crowded = resonances(&[10.0, 10.05, 40.0], 20.0, (40.0, 120.0));
+        assert_eq!(crowded.len(), 18);
+        assert!(crowded.iter().all(|r| r.mode != 2));
+    }
+
+    #[test]
+    fn millimetres_keep_three_significant_digits() {
+        assert_eq!(millimetres(1.2461e-3), "1.25 mm");
+        assert_eq!(millimetres(0.32645), "326 mm");
+        assert_eq!(millimetres(4.2e-5), "0.0420 mm");
+    }
+}

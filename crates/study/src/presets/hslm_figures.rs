@@ -1,0 +1,185 @@
+//! The figures of the HSLM study ([`super::hslm`]), speeds in km/h as the field reads them: per friction set-up the
+//! ten trains' max downward deflection and max acceleration (a sequential palette, HSLM-A1 dark to A10 light, with
+//! each train's resonance speeds f₁·D/i marked on its curve), and the envelopes over the trains with and without
+//! friction, the critical train and speed marked, the static envelope and — on a span — the EN 1990 acceleration
+//! limit drawn for reference.
+
+use super::hslm::{KMH, Results, TRAINS, TrainCurve, coach_length, millimetres};
+use crate::plot::{Mark, Palette, PlotSpec, Series, Stroke};
+use crate::sweep::SweepPoint;
+
+const SPEED_AXIS: &str = "train speed v (km/h)";
+const DEFLECTION_AXIS: &str = "max downward deflection (mm)";
+const ACCELERATION_AXIS: &str = "max vertical acceleration (m/s²)";
+/// Grey in the categorical palette, for reference lines.
+const GREY: usize = 7;
+
+fn deflection_mm(p: &SweepPoint) -> f64 {
+    p.max_downward_deflection * 1e3
+}
+
+fn acceleration(p: &SweepPoint) -> f64 {
+    p.max_acceleration
+}
+
+/// `value` of the sweep linearly interpolated at `speed` (m/s) inside its range.
+fn interpolate(points: &[SweepPoint], speed: f64, value: fn(&SweepPoint) -> f64) -> f64 {
+    let i = points.partition_point(|p| p.speed < speed).clamp(1, points.len() - 1);
+    let (a, b) = (&points[i - 1], &points[i]);
+    let t = if b.speed > a.speed { (speed - a.speed) / (b.speed - a.speed) } else { 0.0 };
+    value(a) + t * (value(b) - value(a))
+}
+
+/// A horizontal reference line at `y` across the figure's speed range.
+fn level(results: &Results, label: String, color: usize, y: f64) -> Series {
+    let points = &results.curves[0].points;
+    let (from, to) = (points[0].speed * KMH, points[points.len() - 1].speed * KMH);
+    Series { label: Some(label), color, stroke: Stroke::Dashed, markers: false, points: vec![(from, y), (to, y)] }
+}
+
+impl Results {
+    /// Every figure of the study.
+    pub(super) fn figures(&self) -> Vec<PlotSpec> {
+        let mut plots = Vec::new();
+        for friction in 0..2 {
+            let suffix = if friction == 0 { "" } else { "-friction" };
+            let label = self.friction_label(friction);
+            plots.push(self.trains_figure(
+                &format!("hslm-deflection{suffix}"),
+                &format!("HSLM-A1 … A10, {label}: max deflection vs speed"),
+                DEFLECTION_AXIS,
+                friction,
+                (deflection_mm, true),
+            ));
+            plots.push(self.trains_figure(
+                &format!("hslm-acceleration{suffix}"),
+                &format!("HSLM-A1 … A10, {label}: max acceleration vs speed"),
+                ACCELERATION_AXIS,
+                friction,
+                (acceleration, false),
+            ));
+        }
+        plots.push(self.deflection_envelope());
+        plots.push(self.acceleration_envelope());
+        plots
+    }
+
+    /// The ten trains of one friction set-up, one quantity, resonance speeds f₁·D/i marked on each curve; with
+    /// `refined`, the quantity is the max downward deflection in mm and the critical-speed refinement's runs are
+    /// drawn too.
+    fn trains_figure(
+        &self,
+        stem: &str,
+        title: &str,
+        y_label: &str,
+        friction: usize,
+        (value, refined): (fn(&SweepPoint) -> f64, bool),
+    ) -> PlotSpec {
+        let mut spec = PlotSpec::new(stem, title, SPEED_AXIS, y_label);
+        spec.palette = Palette::Sequential { count: TRAINS };
+        for c in self.set(friction) {
+            let color = c.train - 1;
+            let mut points: Vec<(f64, f64)> = c.points.iter().map(|p| (p.speed * KMH, value(p))).collect();
+            if refined {
+                // The refinement's runs sit near the peak the coarse grid steps over: drawn with the sweep.
+                points.extend(c.critical.evaluations.iter().map(|&(v, w)| (v * KMH, w * 1e3)));
+                points.sort_by(|a, b| a.0.total_cmp(&b.0));
+            }
+            spec.series.push(Series {
+                label: Some(format!("HSLM-A{} (D = {} m)", c.train, coach_length(c.train))),
+                color,
+                stroke: Stroke::Solid,
+                markers: true,
+                points,
+            });
+            for r in c.resonances.iter().filter(|r| r.mode == 1) {
+                spec.marks.push(Mark { color, point: (r.speed * KMH, interpolate(&c.points, r.speed, value)) });
+            }
+        }
+        if let Some(f) = &self.frequencies {
+            spec.subtitle = format!("f₁ = {:.2} Hz of the structure; triangles on each curve at v = f₁·D/i", f[0]);
+            spec.mark_label = "resonance v = f₁·D/i".into();
+        }
+        spec
+    }
+
+    /// The two envelopes of `value` (no friction, friction), each with its critical point marked and described.
+    fn envelope_figure(
+        &self,
+        (stem, title, y_label): (&str, &str, &str),
+        value: fn(&SweepPoint) -> f64,
+        critical: &dyn Fn(usize) -> ((f64, f64), String),
+        mark_label: &str,
+    ) -> PlotSpec {
+        let mut spec = PlotSpec::new(stem, title, SPEED_AXIS, y_label);
+        let mut described = Vec::new();
+        for friction in 0..2 {
+            spec.series.push(Series {
+                label: Some(self.friction_label(friction)),
+                color: friction,
+                stroke: Stroke::Solid,
+                markers: true,
+                points: self.envelope(friction, value).iter().map(|&(v, y, _)| (v * KMH, y)).collect(),
+            });
+            let (point, text) = critical(friction);
+            spec.marks.push(Mark { color: friction, point });
+            described.push(text);
+        }
+        spec.subtitle = described.join("; ");
+        spec.mark_label = mark_label.into();
+        spec
+    }
+
+    /// Envelopes of the max downward deflection over the ten trains, the critical (refined) train and speed marked,
+    /// and the static envelope of the heaviest train.
+    fn deflection_envelope(&self) -> PlotSpec {
+        let titles = ("hslm-envelope-deflection", "HSLM-A1 … A10: envelope of the max deflection", DEFLECTION_AXIS);
+        let critical = |friction: usize| {
+            let c = self.critical(friction);
+            let point = (c.critical.speed * KMH, c.critical.max_downward_deflection * 1e3);
+            (point, describe(c, self.friction_label(friction)))
+        };
+        let mut spec = self.envelope_figure(titles, deflection_mm, &critical, "critical train and speed");
+        let heaviest = self.curves.iter().map(|c| c.static_max).fold(0.0, f64::max);
+        spec.series.push(level(self, "static, heaviest train".into(), GREY, heaviest * 1e3));
+        spec
+    }
+
+    /// Envelopes of the max acceleration over the ten trains, the largest sampled value marked, and on a span the
+    /// EN 1990 limit for a ballasted deck.
+    fn acceleration_envelope(&self) -> PlotSpec {
+        let titles =
+            ("hslm-envelope-acceleration", "HSLM-A1 … A10: envelope of the max acceleration", ACCELERATION_AXIS);
+        let critical = |friction: usize| {
+            let (c, p) = self.acceleration_critical(friction);
+            let text = format!(
+                "{}: HSLM-A{} at {:.0} km/h, {:.2} m/s²",
+                self.friction_label(friction),
+                c.train,
+                p.speed * KMH,
+                p.max_acceleration
+            );
+            ((p.speed * KMH, p.max_acceleration), text)
+        };
+        let mut spec = self.envelope_figure(titles, acceleration, &critical, "largest sampled value");
+        if let Some(limit) = self.acceleration_limit {
+            spec.series.push(level(self, format!("EN 1990 limit {limit} m/s²"), GREY, limit));
+        }
+        spec
+    }
+}
+
+/// "no friction: HSLM-A4 at 331 km/h, 1.42 mm", with "≥" / "≤" for a bound at an end of the range.
+fn describe(c: &TrainCurve, label: String) -> String {
+    let bound = match c.critical.location {
+        crate::sweep::PeakLocation::Interior => "",
+        crate::sweep::PeakLocation::LowerEnd => "≤ ",
+        crate::sweep::PeakLocation::UpperEnd => "≥ ",
+    };
+    format!(
+        "{label}: HSLM-A{} at {bound}{:.0} km/h, {}",
+        c.train,
+        c.critical.speed * KMH,
+        millimetres(c.critical.max_downward_deflection)
+    )
+}
