@@ -45,15 +45,16 @@ impl Journal {
             Err(e) => return Err(error(e.to_string())),
         };
         let file = match existing {
-            Some(_) if !resume => {
-                return Err(error(
-                    "results of an unfinished earlier run are kept here: pass --resume to continue it, or delete \
-                     the file to start over"
-                        .into(),
-                ));
-            }
             Some(bytes) => {
                 let good = read_entries(&bytes, &mut finished).map_err(error)?;
+                // A journal without a finished run (a command refused before its first run) keeps nothing to lose.
+                if !resume && !finished.is_empty() {
+                    return Err(error(
+                        "results of an unfinished earlier run are kept here: pass --resume to continue it, or \
+                         delete the file to start over"
+                            .into(),
+                    ));
+                }
                 let mut file = OpenOptions::new().append(true).open(path).map_err(|e| error(e.to_string()))?;
                 // Drop a line cut short by a kill so that appends start on a fresh line (appends go to the new end).
                 file.set_len(good as u64).map_err(|e| error(e.to_string()))?;

@@ -2,7 +2,7 @@
 //! of the three speed studies (devices, equal cost, distributed friction).
 
 use super::{StudyData, blank, mean_iterations};
-use crate::error::Result;
+use crate::error::{Result, invalid};
 use crate::figures::{DeflectionCurve, deflection_figure, quantity_figure};
 use crate::number::row;
 use crate::plot::PlotSpec;
@@ -28,6 +28,10 @@ pub(super) fn sweep_curves(
     speeds: &[f64],
     runner: &Runner,
 ) -> Result<Curves> {
+    // A critical speed needs an interior maximum: refused before any run rather than after the sweep.
+    if speeds.len() < 3 {
+        return Err(invalid("speeds", format!("{} speed(s)", speeds.len()), "a speed study needs at least 3 speeds"));
+    }
     let cases = scenarios.iter().map(|(_, s)| s.build()).collect::<Result<Vec<_>>>()?;
     let points = runner.sweep_many(&cases, speeds)?;
     let step = speeds[1] - speeds[0];

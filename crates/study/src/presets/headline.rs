@@ -116,6 +116,8 @@ pub(super) fn headline(preset: Preset, summary: &Value) -> Vec<String> {
         }
         Preset::Hslm => {
             let envelopes = summary.get("envelopes").and_then(Value::as_array).unwrap_or(&empty);
+            // On a span the beam is the deck and EN 1990 limits its acceleration; on a track it is the rail.
+            let limit = summary.get("acceleration_limit").and_then(Value::as_f64);
             let text = |v: &Value| {
                 let (speed, peak) = (number(v, "critical_speed"), number(v, "peak_max_downward_deflection"));
                 let at = match v.get("critical_speed_location").and_then(Value::as_str) {
@@ -123,14 +125,21 @@ pub(super) fn headline(preset: Preset, summary: &Value) -> Vec<String> {
                     Some("lower-end") => "at or below",
                     _ => "at",
                 };
+                let acceleration = number(v, "peak_max_acceleration");
+                let acceleration = match limit {
+                    Some(l) => format!(
+                        "deck acceleration, {acceleration:.2} m/s² ({:.2} × the EN 1990 limit of {l} m/s²)",
+                        acceleration / l
+                    ),
+                    None => format!("rail acceleration, {acceleration:.0} m/s²"),
+                };
                 format!(
                     "{} {at} {:.0} km/h ({speed:.1} m/s): max downward deflection {}, dynamic amplification {:.2}; \
-                     the largest acceleration, {:.2} m/s², comes from {} at {:.0} km/h",
+                     the largest {acceleration}, comes from {} at {:.0} km/h",
                     name(v, "critical_train"),
                     3.6 * speed,
                     super::hslm::millimetres(peak),
                     number(v, "dynamic_amplification"),
-                    number(v, "peak_max_acceleration"),
                     name(v, "acceleration_train"),
                     3.6 * number(v, "acceleration_speed")
                 )
@@ -140,10 +149,10 @@ pub(super) fn headline(preset: Preset, summary: &Value) -> Vec<String> {
             vec![
                 format!("Without friction the critical train is {}.", text(none)),
                 format!(
-                    "With {}, {} ({:.0} % less deflection).",
+                    "With {} the peak deflection is {:.0} % lower: {}.",
                     summary.get("friction_setup").and_then(Value::as_str).unwrap_or("friction"),
-                    text(with),
-                    100.0 * cut
+                    100.0 * cut,
+                    text(with)
                 ),
             ]
         }

@@ -46,22 +46,29 @@ pub(super) fn coach_length(k: usize) -> f64 {
     HSLM_A[k - 1].1
 }
 
-/// The study's friction set-up on `base` and its description: the scenario's `[friction]`, else the fallback devices.
-fn with_friction(base: &Scenario) -> (Scenario, String) {
+/// "1 device × 50 kN", "31 devices × 50 kN".
+fn devices_text(count: usize, force: f64) -> String {
+    format!("{count} device{} × {} kN", if count == 1 { "" } else { "s" }, force / 1e3)
+}
+
+/// The study's two set-ups on `base`: without any friction, and with the scenario's `[friction]` (else the fallback
+/// devices) and its description.
+fn friction_setups(base: &Scenario) -> (Scenario, Scenario, String) {
+    let none = with_devices(base, 0, 0.0);
     let f = &base.friction;
     if f.devices.is_none() && f.distributed.is_none() {
         let (count, force) = fallback_devices(base.mesh.length);
-        return (with_devices(base, count, force), format!("{count} devices × {:.0} kN", force / 1e3));
+        return (none, with_devices(base, count, force), devices_text(count, force));
     }
     let mut parts = Vec::new();
     if let Some(d) = &f.devices {
         let count = d.count.or(d.positions.as_ref().map(Vec::len)).unwrap_or(0);
-        parts.push(format!("{count} devices × {:.0} kN", d.force.unwrap_or(f64::NAN) / 1e3));
+        parts.push(devices_text(count, d.force.unwrap_or(f64::NAN)));
     }
     if let Some(d) = &f.distributed {
         parts.push(format!("f_u = {} kN/m", d.force_per_length / 1e3));
     }
-    (base.clone(), parts.join(" + "))
+    (none, base.clone(), parts.join(" + "))
 }
 
 /// `base` with the load advance the speeds need on a span (see the module documentation), and that advance if it
@@ -349,9 +356,9 @@ fn natural_frequencies(model: &BeamModel) -> Option<Vec<f64>> {
 pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) -> Result<StudyData> {
     let speeds = resolution.train_speeds(base);
     let (base, _) = resolved(base, &speeds)?;
-    let (friction_base, friction) = with_friction(&base);
+    let (none, with, friction) = friction_setups(&base);
     let mut scenarios = Vec::with_capacity(2 * TRAINS);
-    for (f, set_up) in [&base, &friction_base].into_iter().enumerate() {
+    for (f, set_up) in [&none, &with].into_iter().enumerate() {
         for k in 1..=TRAINS {
             let mut s = set_up.clone();
             s.load.train = Some(format!("hslm-a{k}"));
@@ -401,7 +408,29 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
 
 #[cfg(test)]
 mod tests {
-    use super::{millimetres, resonances};
+    use super::{friction_setups, millimetres, resonances};
+    use crate::scenario::{DevicesSection, DistributedSection, Scenario};
+
+    /// The set-up without friction has none, whatever the scenario gives; the other is the scenario's own, or the
+    /// fallback devices at 31 per 200 m.
+    #[test]
+    fn the_two_friction_setups() {
+        let mut base = Scenario::default();
+        let (none, with, text) = friction_setups(&base);
+        assert!(none.friction.devices.is_none() && none.friction.distributed.is_none());
+        assert_eq!(with.friction.devices.as_ref().and_then(|d| d.count), Some(31));
+        assert_eq!(text, "31 devices × 50 kN");
+        base.mesh.length = 20.0;
+        assert_eq!(friction_setups(&base).2, "3 devices × 50 kN");
+        base.mesh.length = 5.0;
+        assert_eq!(friction_setups(&base).2, "1 device × 50 kN");
+        base.friction.devices = Some(DevicesSection { count: Some(1), positions: None, force: Some(20e3) });
+        base.friction.distributed = Some(DistributedSection { force_per_length: 2e3, ..DistributedSection::default() });
+        let (none, with, text) = friction_setups(&base);
+        assert!(none.friction.devices.is_none() && none.friction.distributed.is_none());
+        assert_eq!(with.friction, base.friction);
+        assert_eq!(text, "1 device × 20 kN + f_u = 2 kN/m");
+    }
 
     #[test]
     fn resonance_speeds_are_the_harmonics_inside_the_range() {
