@@ -74,6 +74,7 @@ pub struct RunReport {
     static_max_downward_deflection: f64,
     dynamic_amplification: f64,
     extremes_window: (f64, f64),
+    extremes_nodes: Option<(f64, f64)>,
     window_max_downward: ExtremeReport,
     window_max_upward: ExtremeReport,
     global_norm: f64,
@@ -197,8 +198,12 @@ fn report(scenario: &Scenario, case: &Case, result: &RunResult, wall_time: f64) 
         load_position: x0 + settings.moving.speed * x.time,
     };
     let critical = study::speeds::SpeedScale::of(scenario)?.critical_speed;
-    let statics =
-        track::statics::static_envelope(&case.model, &settings.moving.train(), settings.integration.load_advance)?;
+    let statics = track::statics::static_envelope(
+        &case.model,
+        &settings.moving.train(),
+        settings.integration.load_advance,
+        settings.record.extremes_nodes,
+    )?;
     let foundation = case.model.foundation();
     Ok(RunReport {
         title: scenario.title.clone(),
@@ -227,6 +232,7 @@ fn report(scenario: &Scenario, case: &Case, result: &RunResult, wall_time: f64) 
             0.0
         },
         extremes_window: window.load_range,
+        extremes_nodes: settings.record.extremes_nodes,
         window_max_downward: extreme(&window.max_downward),
         window_max_upward: extreme(&window.max_upward),
         global_norm: result.global_norm,
@@ -285,7 +291,10 @@ fn print_text(r: &RunReport) {
         let load = x_load.map_or(String::new(), |x| format!(", load at {x:.1} m"));
         println!("    max {what:<8} deflection {:>9.3} mm at x = {x:.1} m, t = {t:.4} s{load}", d * 1e3);
     };
-    println!("  whole run (includes the entry transient from rest and the exit near x = L):");
+    match r.extremes_nodes {
+        Some((a, b)) => println!("  extremes over the nodes at {a:.1}–{b:.1} m ([output] extremes_nodes); whole run:"),
+        None => println!("  whole run (includes the entry transient from rest and the exit near x = L):"),
+    }
     line(
         "downward",
         r.max_downward_deflection,

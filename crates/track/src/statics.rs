@@ -19,8 +19,14 @@ pub struct StaticEnvelope {
 pub const MAX_POSITIONS: usize = 1_000_000;
 
 /// The static envelope of `train` with its first axle at 0, `advance`, 2·`advance`, … up to L + its length (m):
-/// K factored once, one banded solve per position.
-pub fn static_envelope(model: &BeamModel, train: &Train, advance: f64) -> Result<StaticEnvelope> {
+/// K factored once, one banded solve per position. The largest deflection is taken over the nodes in `nodes`
+/// (m, as [`crate::RecordSettings::extremes_nodes`]), or over every node.
+pub fn static_envelope(
+    model: &BeamModel,
+    train: &Train,
+    advance: f64,
+    nodes: Option<(f64, f64)>,
+) -> Result<StaticEnvelope> {
     let mesh = model.mesh();
     let span = mesh.length + train.length();
     let positions = (span / advance).ceil() as usize + 1;
@@ -34,16 +40,19 @@ pub fn static_envelope(model: &BeamModel, train: &Train, advance: f64) -> Result
     }
     let factor = model.stiffness().factor()?;
     let dofs = model.dofs();
+    let slack = 1e-9 * mesh.length;
+    let counted: Vec<(usize, f64)> = (0..mesh.nodes())
+        .filter_map(|node| Some((dofs.free_index(2 * node)?, mesh.node_x(node))))
+        .filter(|&(_, x)| nodes.is_none_or(|(a, b)| x >= a - slack && x <= b + slack))
+        .collect();
     let mut envelope = StaticEnvelope::default();
     for i in 0..positions {
         let head = (i as f64 * advance).min(span);
         let mut q = train.load_vector(mesh, head).to_free(mesh, dofs);
         factor.solve_in_place(&mut q);
-        for node in 0..mesh.nodes() {
-            if let Some(d) = dofs.free_index(2 * node)
-                && -q[d] > envelope.max_downward
-            {
-                envelope = StaticEnvelope { max_downward: -q[d], position: mesh.node_x(node), head };
+        for &(d, x) in &counted {
+            if -q[d] > envelope.max_downward {
+                envelope = StaticEnvelope { max_downward: -q[d], position: x, head };
             }
         }
     }

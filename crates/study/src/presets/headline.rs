@@ -149,9 +149,10 @@ pub(super) fn headline(preset: Preset, summary: &Value) -> Vec<String> {
             vec![
                 format!("Without friction the critical train is {}.", text(none)),
                 format!(
-                    "With {} the peak deflection is {:.0} % lower: {}.",
+                    "With {} the peak deflection is {:.0} % {}: {}.",
                     summary.get("friction_setup").and_then(Value::as_str).unwrap_or("friction"),
-                    100.0 * cut,
+                    100.0 * cut.abs(),
+                    if cut >= 0.0 { "lower" } else { "higher" },
                     text(with)
                 ),
             ]

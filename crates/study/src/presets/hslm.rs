@@ -15,7 +15,7 @@ use super::{Resolution, StudyData, blank, mean_iterations, with_devices};
 use crate::diagnostics::{deck_frequency, resolving_advance};
 use crate::error::Result;
 use crate::number::row;
-use crate::scenario::Scenario;
+use crate::scenario::{AbsorbingZonesSection, Scenario};
 use crate::sweep::{CriticalSpeed, Runner, SweepPoint};
 use fem_beam::train::HSLM_A;
 use fem_beam::{BeamModel, Train};
@@ -71,19 +71,53 @@ fn friction_setups(base: &Scenario) -> (Scenario, Scenario, String) {
     (none, base.clone(), parts.join(" + "))
 }
 
-/// `base` with the load advance the speeds need on a span (see the module documentation), and that advance if it
-/// was reduced.
-fn resolved(base: &Scenario, speeds: &[f64]) -> Result<(Scenario, Option<f64>)> {
+/// `base` as the study runs it, with a sentence for each change (docs/theory.md §10). On a span, the load advance
+/// the slowest speed needs to resolve the deck-acceleration band. On a track, what stands for the infinite track a
+/// 400 m train needs: absorbing zones at the ends unless the scenario has its own (undamped, the 200 m reference
+/// track keeps the waves of 50 axles trapped between its pinned ends, and its maxima jump by ±4 % between speeds
+/// 2 km/h apart; with zones they vary smoothly), and the extremes over the nodes of the middle third unless
+/// `[output] extremes_nodes` is given (a train longer than the beam is always entering or leaving over a support).
+fn prepared(base: &Scenario, speeds: &[f64]) -> Result<(Scenario, Vec<String>)> {
     let mut s = base.clone();
+    let mut notes = Vec::new();
     let slowest = speeds.iter().copied().fold(f64::INFINITY, f64::min);
-    if let Some((f_max, _)) = deck_frequency(&base.model()?) {
-        let needed = resolving_advance(f_max, slowest);
-        if needed < s.integration.load_advance {
-            s.integration.load_advance = needed;
-            return Ok((s, Some(needed)));
+    match deck_frequency(&base.model()?) {
+        Some((f_max, _)) => {
+            let needed = resolving_advance(f_max, slowest);
+            if needed < s.integration.load_advance {
+                notes.push(format!(
+                    "integration.load_advance = {} m is reduced to {needed:.4} m so that the step resolves the deck \
+                     accelerations up to {f_max:.1} Hz with 20 steps per period at the lowest speed, {slowest:.1} m/s",
+                    s.integration.load_advance
+                ));
+                s.integration.load_advance = needed;
+            }
+        }
+        None => {
+            let length = s.mesh.length;
+            if s.foundation.absorbing_zones.is_none() {
+                let zones = AbsorbingZonesSection { length: (length / 5.0).min(40.0), ..Default::default() };
+                notes.push(format!(
+                    "on a track the study adds absorbing zones of {:.1} m at the ends (damping up to {} × c_cr) so \
+                     that the trains' waves leave the beam as on an infinite track (give \
+                     [foundation.absorbing_zones], with peak_ratio = 0 for none)",
+                    zones.length, zones.peak_ratio
+                ));
+                s.foundation.absorbing_zones = Some(zones);
+            }
+            if s.output.extremes_nodes.is_none() {
+                s.output.extremes_nodes = Some([length / 3.0, 2.0 * length / 3.0]);
+                notes.push(format!(
+                    "on a track the extremes are taken over the nodes of the middle third, {:.1}–{:.1} m, away from \
+                     the transients where the trains enter and leave over the supports ([output] extremes_nodes sets \
+                     another range)",
+                    length / 3.0,
+                    2.0 * length / 3.0
+                ));
+            }
         }
     }
-    Ok((s, None))
+    Ok((s, notes))
 }
 
 /// The parts of `base` the study replaces or adds, one sentence each.
@@ -97,21 +131,14 @@ pub(super) fn overrides(base: &Scenario) -> Vec<String> {
     if f.devices.is_none() && f.distributed.is_none() {
         let (count, force) = fallback_devices(base.mesh.length);
         notes.push(format!(
-            "the scenario has no [friction]: the study compares no friction with {count} devices of {:.0} kN, the \
-             density of 31 devices on 200 m (give [friction] to compare another set-up)",
-            force / 1e3
+            "the scenario has no [friction]: the study compares no friction with {}, the density of 31 devices on \
+             200 m (give [friction] to compare another set-up)",
+            devices_text(count, force)
         ));
     }
     // Both resolutions start at 140 km/h, so the coarse grid's lowest speed is the paper grid's too.
-    let speeds = Resolution::Coarse.train_speeds(base);
-    if let (Ok((_, Some(advance))), Ok(model)) = (resolved(base, &speeds), base.model()) {
-        let f_max = deck_frequency(&model).map_or(f64::NAN, |(f, _)| f);
-        let slowest = speeds.iter().copied().fold(f64::INFINITY, f64::min);
-        notes.push(format!(
-            "integration.load_advance = {} m is reduced to {advance:.4} m so that the step resolves the deck \
-             accelerations up to {f_max:.1} Hz with 20 steps per period at the lowest speed, {slowest:.1} m/s",
-            base.integration.load_advance
-        ));
+    if let Ok((_, prepared)) = prepared(base, &Resolution::Coarse.train_speeds(base)) {
+        notes.extend(prepared);
     }
     notes
 }
@@ -183,6 +210,8 @@ pub(super) struct Results {
     pub(super) acceleration_limit: Option<f64>,
     /// The load advance used (m).
     pub(super) load_advance: f64,
+    /// The nodes the extremes are taken over (m), if not all.
+    pub(super) extremes_nodes: Option<[f64; 2]>,
 }
 
 impl Results {
@@ -331,6 +360,7 @@ impl Results {
             "friction_setup": self.friction,
             "natural_frequencies": self.frequencies,
             "load_advance": self.load_advance,
+            "extremes_nodes": self.extremes_nodes,
             "acceleration_limit": self.acceleration_limit,
             "curves": curves,
             "envelopes": envelopes,
@@ -346,7 +376,8 @@ pub(super) fn millimetres(w: f64) -> String {
     format!("{mm:.decimals$} mm")
 }
 
-/// f₁ … f₃ (Hz) of `model`, None where its dense eigenproblem is refused (over 2000 free DOFs).
+/// f₁ … f₃ (Hz) of `model`, None where its dense eigenproblem is refused (over 2000 free DOFs: a span of more than
+/// 1000 elements, then without resonance speeds).
 fn natural_frequencies(model: &BeamModel) -> Option<Vec<f64>> {
     let count = MODES.min(model.dofs().free_len());
     let omegas = model.natural_frequencies(count).ok()?;
@@ -355,7 +386,7 @@ fn natural_frequencies(model: &BeamModel) -> Option<Vec<f64>> {
 
 pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) -> Result<StudyData> {
     let speeds = resolution.train_speeds(base);
-    let (base, _) = resolved(base, &speeds)?;
+    let (base, _) = prepared(base, &speeds)?;
     let (none, with, friction) = friction_setups(&base);
     let mut scenarios = Vec::with_capacity(2 * TRAINS);
     for (f, set_up) in [&none, &with].into_iter().enumerate() {
@@ -371,9 +402,14 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
     let case = base.build()?;
     let advance = base.integration.load_advance;
     let statics = runner.silent().map(&(1..=TRAINS).collect::<Vec<_>>(), |&k| {
-        Ok(track::statics::static_envelope(&case.model, &Train::hslm_a(k), advance)?.max_downward)
+        let nodes = case.settings.record.extremes_nodes;
+        Ok(track::statics::static_envelope(&case.model, &Train::hslm_a(k), advance, nodes)?.max_downward)
     })?;
-    let frequencies = natural_frequencies(&case.model);
+    // A span has natural frequencies that trains excite at f_j·D/i; a track on a Winkler foundation has none (its FE
+    // modes crowd at the cut-off frequency, an artefact of its finite length), and loads of constant magnitude
+    // below v_cr radiate no waves: with absorbing zones its curves show no such resonance.
+    let span = deck_frequency(&case.model).is_some();
+    let frequencies = if span { natural_frequencies(&case.model) } else { None };
     let range = (speeds[0], speeds[speeds.len() - 1]);
     let runs = swept.runs;
     let curves = swept
@@ -392,8 +428,9 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
         curves,
         friction,
         frequencies,
-        acceleration_limit: deck_frequency(&case.model).map(|_| BALLASTED_DECK_LIMIT),
+        acceleration_limit: span.then_some(BALLASTED_DECK_LIMIT),
         load_advance: advance,
+        extremes_nodes: base.output.extremes_nodes,
     };
     let (summary, lines) = results.summary();
     Ok(StudyData {
@@ -408,8 +445,36 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
 
 #[cfg(test)]
 mod tests {
-    use super::{friction_setups, millimetres, resonances};
-    use crate::scenario::{DevicesSection, DistributedSection, Scenario};
+    use super::{friction_setups, millimetres, prepared, resonances};
+    use crate::scenario::{AbsorbingZonesSection, DevicesSection, DistributedSection, Scenario};
+
+    /// On a track the study adds absorbing zones and takes the extremes over the middle third, unless the scenario
+    /// sets them; on a span it reduces the load advance to v_min/(20 f_max) and touches nothing else.
+    #[test]
+    fn what_the_study_changes() {
+        let speeds = [40.0, 80.0, 116.0];
+        let track = Scenario::default();
+        let (s, notes) = prepared(&track, &speeds).unwrap();
+        assert_eq!(s.foundation.absorbing_zones, Some(AbsorbingZonesSection { length: 40.0, peak_ratio: 1.0 }));
+        assert_eq!(s.output.extremes_nodes, Some([200.0 / 3.0, 400.0 / 3.0]));
+        assert_eq!((notes.len(), s.integration.load_advance), (2, track.integration.load_advance));
+        let mut own = track.clone();
+        own.foundation.absorbing_zones = Some(AbsorbingZonesSection { length: 10.0, peak_ratio: 0.0 });
+        own.output.extremes_nodes = Some([0.0, 200.0]);
+        let (s, notes) = prepared(&own, &speeds).unwrap();
+        assert_eq!((s, notes.len()), (own, 0));
+
+        let mut span = Scenario::default();
+        span.mesh.length = 20.0;
+        span.mesh.elements = 40;
+        span.foundation.stiffness = 0.0;
+        // A 20 m rail span: f_max = 30 Hz, so 40 m/s needs Δx ≤ 0.0667 m, below the default 0.1 m.
+        let (s, notes) = prepared(&span, &speeds).unwrap();
+        let model = span.model().unwrap();
+        let (f_max, _) = crate::diagnostics::deck_frequency(&model).unwrap();
+        assert_eq!(s.integration.load_advance, 40.0 / (20.0 * f_max));
+        assert_eq!((s.foundation.absorbing_zones, s.output.extremes_nodes, notes.len()), (None, None, 1));
+    }
 
     /// The set-up without friction has none, whatever the scenario gives; the other is the scenario's own, or the
     /// fallback devices at 31 per 200 m.

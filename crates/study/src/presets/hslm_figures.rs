@@ -9,8 +9,8 @@ use crate::plot::{Mark, Palette, PlotSpec, Series, Stroke};
 use crate::sweep::SweepPoint;
 
 const SPEED_AXIS: &str = "train speed v (km/h)";
-const DEFLECTION_AXIS: &str = "max downward deflection (mm)";
-const ACCELERATION_AXIS: &str = "max vertical acceleration (m/s²)";
+const DEFLECTION_AXIS: &str = "max downward deflection";
+const ACCELERATION_AXIS: &str = "max vertical acceleration";
 /// Grey in the categorical palette, for reference lines.
 const GREY: usize = 7;
 
@@ -38,6 +38,14 @@ fn level(results: &Results, label: String, color: usize, y: f64) -> Series {
 }
 
 impl Results {
+    /// The y-axis label of `quantity` with its unit, naming the nodes it is taken over when not all.
+    fn axis(&self, quantity: &str, unit: &str) -> String {
+        match self.extremes_nodes {
+            Some([a, b]) => format!("{quantity} at {a:.0}–{b:.0} m ({unit})"),
+            None => format!("{quantity} ({unit})"),
+        }
+    }
+
     /// Every figure of the study.
     pub(super) fn figures(&self) -> Vec<PlotSpec> {
         let mut plots = Vec::new();
@@ -47,14 +55,14 @@ impl Results {
             plots.push(self.trains_figure(
                 &format!("hslm-deflection{suffix}"),
                 &format!("HSLM-A1 … A10, {label}: max deflection vs speed"),
-                DEFLECTION_AXIS,
+                &self.axis(DEFLECTION_AXIS, "mm"),
                 friction,
                 (deflection_mm, true),
             ));
             plots.push(self.trains_figure(
                 &format!("hslm-acceleration{suffix}"),
                 &format!("HSLM-A1 … A10, {label}: max acceleration vs speed"),
-                ACCELERATION_AXIS,
+                &self.axis(ACCELERATION_AXIS, "m/s²"),
                 friction,
                 (acceleration, false),
             ));
@@ -96,9 +104,15 @@ impl Results {
                 spec.marks.push(Mark { color, point: (r.speed * KMH, interpolate(&c.points, r.speed, value)) });
             }
         }
-        if let Some(f) = &self.frequencies {
-            spec.subtitle = format!("f₁ = {:.2} Hz of the structure; triangles on each curve at v = f₁·D/i", f[0]);
-            spec.mark_label = "resonance v = f₁·D/i".into();
+        match (&self.frequencies, self.acceleration_limit) {
+            (Some(f), _) => {
+                spec.subtitle = format!("f₁ = {:.2} Hz of the span; triangles on each curve at v = f₁·D/i", f[0]);
+                spec.mark_label = "resonance v = f₁·D/i".into();
+            }
+            (None, None) => {
+                spec.subtitle = "a track on a Winkler foundation: no natural frequencies to resonate".into()
+            }
+            (None, Some(_)) => {}
         }
         spec
     }
@@ -133,7 +147,8 @@ impl Results {
     /// Envelopes of the max downward deflection over the ten trains, the critical (refined) train and speed marked,
     /// and the static envelope of the heaviest train.
     fn deflection_envelope(&self) -> PlotSpec {
-        let titles = ("hslm-envelope-deflection", "HSLM-A1 … A10: envelope of the max deflection", DEFLECTION_AXIS);
+        let axis = self.axis(DEFLECTION_AXIS, "mm");
+        let titles = ("hslm-envelope-deflection", "HSLM-A1 … A10: envelope of the max deflection", axis.as_str());
         let critical = |friction: usize| {
             let c = self.critical(friction);
             let point = (c.critical.speed * KMH, c.critical.max_downward_deflection * 1e3);
@@ -148,8 +163,8 @@ impl Results {
     /// Envelopes of the max acceleration over the ten trains, the largest sampled value marked, and on a span the
     /// EN 1990 limit for a ballasted deck.
     fn acceleration_envelope(&self) -> PlotSpec {
-        let titles =
-            ("hslm-envelope-acceleration", "HSLM-A1 … A10: envelope of the max acceleration", ACCELERATION_AXIS);
+        let axis = self.axis(ACCELERATION_AXIS, "m/s²");
+        let titles = ("hslm-envelope-acceleration", "HSLM-A1 … A10: envelope of the max acceleration", axis.as_str());
         let critical = |friction: usize| {
             let (c, p) = self.acceleration_critical(friction);
             let text = format!(

@@ -209,6 +209,7 @@ impl Scenario {
             record: RecordSettings {
                 sections: self.output.sections.clone(),
                 extremes_window: Some(self.output.extremes_window(self.mesh.length)),
+                extremes_nodes: self.output.extremes_nodes.map(|[a, b]| (a, b)),
             },
         })
     }
@@ -250,6 +251,7 @@ fn scenario_path(error: track::TrackError) -> StudyError {
                 "initial.position" => "integration.steady_start",
                 "end_time" => "integration.end_time",
                 "record_sections" => "output.sections",
+                "extremes_nodes" => "output.extremes_nodes",
                 other => other,
             };
             invalid(path, value, allowed)

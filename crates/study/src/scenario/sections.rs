@@ -369,6 +369,11 @@ pub struct OutputSection {
     /// Load positions [A, B] (m) over which the "window" extremes are taken besides the whole-run ones; default the
     /// middle third of the beam, [L/3, 2L/3], away from the entry and exit transients.
     pub extremes_window: Option<[f64; 2]>,
+    /// Positions [a, b] (m) of the nodes over which the extremes (deflections and acceleration) are taken; default
+    /// every node. On a finite track, [L/3, 2L/3] leaves out the transients at the ends, where the loads enter and
+    /// leave over the supports.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub extremes_nodes: Option<[f64; 2]>,
     /// Times (s) of whole-beam snapshots (`run --out`).
     pub snapshot_times: Vec<f64>,
     /// Load positions (m) of whole-beam snapshots (`run --out`); with neither list, L/4, L/2 and 3L/4.

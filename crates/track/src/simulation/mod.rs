@@ -138,7 +138,7 @@ impl<'a> Simulation<'a> {
             Some(end) => crossing_steps.max((end / h - 1e-9).ceil() as usize),
             None => crossing_steps,
         };
-        let deflections = NodalDeflections::new(&mesh, dofs);
+        let deflections = NodalDeflections::new(&mesh, dofs, settings.record.extremes_nodes);
         let mut recorders: Vec<Recorder> = settings
             .record
             .sections

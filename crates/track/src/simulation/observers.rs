@@ -14,10 +14,11 @@ pub(super) struct Recorder {
 }
 
 /// The nodal deflections of the free w DOFs, read in one pass per step for the extremes and for W̄ (constrained
-/// nodes have w = 0: they never set an extreme and add nothing to the norm).
+/// nodes have w = 0: they never set an extreme and add nothing to the norm). The extremes are taken over the nodes
+/// of the region only ([`crate::RecordSettings::extremes_nodes`]); W̄ over every node.
 pub(super) struct NodalDeflections {
-    /// (free DOF index, node x (m), trapezoid weight (m)) of every node whose w is free.
-    pub(super) nodes: Vec<(usize, f64, f64)>,
+    /// (free DOF index, node x (m), trapezoid weight (m), inside the extremes region) of every node whose w is free.
+    pub(super) nodes: Vec<(usize, f64, f64, bool)>,
 }
 
 /// What one pass over the deflections finds.
@@ -31,13 +32,17 @@ pub(super) struct DeflectionScan {
 }
 
 impl NodalDeflections {
-    pub(super) fn new(mesh: &fem_beam::Mesh, dofs: &fem_beam::DofMap) -> Self {
+    /// The free deflection DOFs of `mesh`; extremes over the nodes in `region` (m, inclusive up to 1e-9·L), or all.
+    pub(super) fn new(mesh: &fem_beam::Mesh, dofs: &fem_beam::DofMap, region: Option<(f64, f64)>) -> Self {
         let last = mesh.nodes() - 1;
         let l = mesh.element_length();
+        let slack = 1e-9 * mesh.length;
+        let inside = |x: f64| region.is_none_or(|(a, b)| x >= a - slack && x <= b + slack);
         let nodes = (0..=last)
             .filter_map(|i| {
                 let weight = if i == 0 || i == last { 0.5 * l } else { l };
-                dofs.free_index(2 * i).map(|d| (d, mesh.node_x(i), weight))
+                let x = mesh.node_x(i);
+                dofs.free_index(2 * i).map(|d| (d, x, weight, inside(x)))
             })
             .collect();
         Self { nodes }
@@ -46,7 +51,7 @@ impl NodalDeflections {
     /// The largest |(v − v_prev)/h| (m/s²) over the nodes and its node x.
     pub(super) fn largest_acceleration(&self, v: &[f64], v_prev: &[f64], h: f64) -> (f64, f64) {
         let mut largest = (0.0, 0.0);
-        for &(d, x, _) in &self.nodes {
+        for &(d, x, _, _) in self.nodes.iter().filter(|n| n.3) {
             let a = ((v[d] - v_prev[d]) / h).abs();
             if a > largest.0 {
                 largest = (a, x);
@@ -57,12 +62,12 @@ impl NodalDeflections {
 
     pub(super) fn scan(&self, q: &[f64]) -> DeflectionScan {
         let mut scan = DeflectionScan { lowest: (0.0, 0.0), highest: (0.0, 0.0), norm: 0.0 };
-        for &(d, x, weight) in &self.nodes {
+        for &(d, x, weight, inside) in &self.nodes {
             let w = q[d];
-            if w < scan.lowest.0 {
+            if inside && w < scan.lowest.0 {
                 scan.lowest = (w, x);
             }
-            if w > scan.highest.0 {
+            if inside && w > scan.highest.0 {
                 scan.highest = (w, x);
             }
             scan.norm += weight * w.abs();

@@ -81,6 +81,11 @@ pub struct RecordSettings {
     /// `RunResult::window` beside the whole-run extremes: away from the entry and exit transients they read the
     /// response of a long track. Default: none.
     pub extremes_window: Option<(f64, f64)>,
+    /// Take the extremes (deflections, whole-run and window, and the acceleration) over the nodes in [a, b] (m)
+    /// only: on a finite track, the nodes away from its ends, where loads entering and leaving over the supports
+    /// set off transients (a train longer than the beam is always crossing one). W̄ stays a whole-beam norm.
+    /// Default: every node.
+    pub extremes_nodes: Option<(f64, f64)>,
 }
 
 /// Settings of one run, in three parts: what moves on the beam, how it is integrated, what is recorded. Defaults:
@@ -149,6 +154,17 @@ impl RunSettings {
         {
             let allowed = format!("needs finite load positions A < B (m), got {a}:{b}");
             return Err(invalid("extremes_window", if a.is_finite() { b } else { a }, allowed));
+        }
+        if let Some((a, b)) = self.record.extremes_nodes {
+            let mesh = model.mesh();
+            let has_node = (0..mesh.nodes()).any(|i| {
+                let x = mesh.node_x(i);
+                model.dofs().free_index(2 * i).is_some() && x >= a - 1e-9 * length && x <= b + 1e-9 * length
+            });
+            if !(a.is_finite() && b.is_finite() && a <= b && has_node) {
+                let allowed = format!("needs positions a ≤ b (m) with a free node between them, got {a}:{b}");
+                return Err(invalid("extremes_nodes", if a.is_finite() { b } else { a }, allowed));
+            }
         }
         if let Some(end) = self.integration.end_time
             && !(end.is_finite() && end >= self.crossing_time(length) * (1.0 - 1e-12))
