@@ -2,8 +2,9 @@
 //! crate that started to use a higher one. Read from each crate's Cargo.toml (normal, dev and build dependencies).
 
 /// The layers, bottom first: (package name, folder).
-const LAYERS: [(&str, &str); 7] = [
+const LAYERS: [(&str, &str); 8] = [
     ("banded", "crates/banded"),
+    ("irregularity", "crates/irregularity"),
     ("fem-beam", "crates/fem-beam"),
     ("friction", "crates/friction"),
     ("nscd", "crates/nscd"),
@@ -41,6 +42,7 @@ fn every_dependency_points_down() {
     }
     // The bottom crate knows nothing of the others; nscd reaches the banded algebra directly, not through fem-beam.
     assert!(workspace_dependencies("crates/banded").is_empty());
+    assert!(workspace_dependencies("crates/irregularity").is_empty(), "rail profiles know no beam and no engine");
     assert!(workspace_dependencies("crates/nscd").contains(&"banded".to_string()));
 }
 

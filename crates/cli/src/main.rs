@@ -14,6 +14,7 @@ mod run;
 mod scenario_args;
 mod study_cmd;
 mod sweep;
+mod track_profile;
 mod trains;
 
 use clap::{Parser, Subcommand, ValueEnum};
@@ -21,7 +22,7 @@ use std::process::ExitCode;
 
 /// Railway track dynamics under moving loads: an Euler–Bernoulli rail on a viscoelastic Winkler foundation.
 #[derive(Debug, Parser)]
-#[command(name = "frictrack", version, about, long_about = None, after_help = "Examples:\n  frictrack run\n  frictrack init case.toml && frictrack check case.toml\n  frictrack run case.toml --speed 180\n  frictrack sweep case.toml --speeds 150:260:5 --out sweep.csv --critical\n  frictrack sweep case.toml --out sweep.csv --resume\n  frictrack sweep case.toml --out part1.csv --shard 1/3  (… 2/3, 3/3)\n  frictrack merge --out sweep.csv part1.csv part2.csv part3.csv\n  frictrack study optimal-force --out results\n  frictrack reproduce --out results --resolution coarse\n  frictrack run --speed 180 --devices 31 --device-force 50e3\n  frictrack run --distributed-friction 5000 --format json\n  frictrack reference --elements 400\n  frictrack analytic --speed 200 --damping-ratio 0.05\n  frictrack analytic --damping-ratio 0.05 --speeds 10:300:10 --format json")]
+#[command(name = "frictrack", version, about, long_about = None, after_help = "Examples:\n  frictrack run\n  frictrack init case.toml && frictrack check case.toml\n  frictrack run case.toml --speed 180\n  frictrack sweep case.toml --speeds 150:260:5 --out sweep.csv --critical\n  frictrack sweep case.toml --out sweep.csv --resume\n  frictrack sweep case.toml --out part1.csv --shard 1/3  (… 2/3, 3/3)\n  frictrack merge --out sweep.csv part1.csv part2.csv part3.csv\n  frictrack study optimal-force --out results\n  frictrack reproduce --out results --resolution coarse\n  frictrack run --speed 180 --devices 31 --device-force 50e3\n  frictrack run --distributed-friction 5000 --format json\n  frictrack reference --elements 400\n  frictrack analytic --speed 200 --damping-ratio 0.05\n  frictrack analytic --damping-ratio 0.05 --speeds 10:300:10 --format json\n  frictrack track-profile fra-4 --seed 7 --out profile")]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -48,6 +49,8 @@ enum Command {
     Reference(reference::ReferenceArgs),
     /// List the catalogue of trains, or print one train's axles (offsets behind the first axle, forces).
     Trains(trains::TrainsArgs),
+    /// Sample a random rail profile from a track-quality spectrum: CSV, its periodogram against the target, figures.
+    TrackProfile(track_profile::TrackProfileArgs),
     /// Closed-form steady state of an infinite beam under a moving load: max downward/upward deflection, and the
     /// dynamic amplification curve over a speed range.
     Analytic(analytic::AnalyticArgs),
@@ -99,6 +102,7 @@ fn main() -> ExitCode {
         Command::Reference(args) => reference::run(&args),
         Command::Analytic(args) => analytic::run(&args),
         Command::Trains(args) => trains::run(&args),
+        Command::TrackProfile(args) => track_profile::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -57,6 +57,13 @@ pub enum StudyError {
     Stepping(#[from] nscd::NscdError),
 }
 
+impl From<irregularity::IrregularityError> for StudyError {
+    fn from(error: irregularity::IrregularityError) -> Self {
+        let irregularity::IrregularityError::InvalidField { field, value, allowed } = error;
+        StudyError::InvalidField { path: field, value, allowed }
+    }
+}
+
 impl From<track::TrackError> for StudyError {
     fn from(error: track::TrackError) -> Self {
         match error {

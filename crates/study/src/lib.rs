@@ -5,6 +5,7 @@
 //!   critical speed refined below the sweep step on fresh runs; the optimal device force at a fixed speed.
 //! - [`shard`]: a deterministic 1/N of a sweep's points per machine, and the merge of the shards' outputs.
 //! - [`journal`]: every finished run on disk at once, so that an interrupted sweep resumes where it stopped.
+//! - [`track_profile`]: a sample of a random rail profile with its periodogram against the target spectrum.
 
 pub mod diagnostics;
 pub mod error;
@@ -19,6 +20,7 @@ pub mod scenario;
 pub mod shard;
 pub mod speeds;
 pub mod sweep;
+pub mod track_profile;
 pub mod trains;
 
 pub use error::{Result, StudyError};

@@ -64,6 +64,8 @@ pub struct PlotSpec {
     pub y_label: String,
     /// Logarithmic x axis (x must be > 0).
     pub log_x: bool,
+    /// Logarithmic y axis (y must be > 0), ticks in scientific notation.
+    pub log_y: bool,
     /// The curves, drawn in this order.
     pub series: Vec<Series>,
     /// Marked points.
@@ -112,6 +114,7 @@ impl PlotSpec {
             x_label: x_label.into(),
             y_label: y_label.into(),
             log_x: false,
+            log_y: false,
             series: Vec::new(),
             marks: Vec::new(),
             key: Vec::new(),
@@ -218,14 +221,14 @@ pub fn render(spec: &PlotSpec, folder: &Path) -> Result<(PathBuf, PathBuf, Layou
     Ok((png, svg, layout))
 }
 
-/// The data range of the figure (after the log transform of x), padded by 2 % in x and 5 % in y so that markers
-/// at the ends stay inside the frame.
-fn ranges(spec: &PlotSpec, tx: &dyn Fn(f64) -> f64) -> Option<((f64, f64), (f64, f64))> {
+/// The data range of the figure (after the log transforms), padded by 2 % in x and 5 % in y so that markers at the
+/// ends stay inside the frame.
+fn ranges(spec: &PlotSpec, tx: &dyn Fn(f64) -> f64, ty: &dyn Fn(f64) -> f64) -> Option<((f64, f64), (f64, f64))> {
     let curves = spec.series.iter().flat_map(|s| s.points.iter());
     let marks = spec.marks.iter().map(|m| &m.point);
     let (mut x0, mut x1, mut y0, mut y1) = (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY);
     for &(x, y) in curves.chain(marks) {
-        let x = tx(x);
+        let (x, y) = (tx(x), ty(y));
         if x.is_finite() && y.is_finite() {
             (x0, x1, y0, y1) = (x0.min(x), x1.max(x), y0.min(y), y1.max(y));
         }
@@ -251,9 +254,10 @@ fn draw<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, spec: &PlotSpec) -> s
         titled.draw(&Text::new(spec.subtitle.as_str(), (20, 48), style)).map_err(|e| err(&e))?;
     }
     let (chart_area, legend_area) = body.split_horizontally(SIZE.0 - LEGEND_WIDTH);
-    let log_x = spec.log_x;
+    let (log_x, log_y) = (spec.log_x, spec.log_y);
     let tx = move |x: f64| if log_x { x.log10() } else { x };
-    let ((x0, x1), (y0, y1)) = ranges(spec, &tx).ok_or("nothing to plot")?;
+    let ty = move |y: f64| if log_y { y.log10() } else { y };
+    let ((x0, x1), (y0, y1)) = ranges(spec, &tx, &ty).ok_or("nothing to plot")?;
     let mut chart = ChartBuilder::on(&chart_area)
         .margin(15)
         .x_label_area_size(60)
@@ -262,7 +266,7 @@ fn draw<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, spec: &PlotSpec) -> s
         .map_err(|e| err(&e))?;
     let (x_step, y_step) = ((x1 - x0) / 10.0, (y1 - y0) / 10.0);
     let x_format = move |x: &f64| if log_x { tick(10f64.powf(*x), 10f64.powf(*x) / 10.0) } else { tick(*x, x_step) };
-    let y_format = move |y: &f64| tick(*y, y_step);
+    let y_format = move |y: &f64| if log_y { scientific(10f64.powf(*y)) } else { tick(*y, y_step) };
     chart
         .configure_mesh()
         .x_desc(spec.x_label.as_str())
@@ -282,7 +286,7 @@ fn draw<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, spec: &PlotSpec) -> s
         let width = if s.points.len() > (SIZE.0 - LEGEND_WIDTH) as usize { 1 } else { 2 };
         let style = spec.palette.color(s.color).stroke_width(width);
         let line: Vec<(f64, f64)> =
-            s.points.iter().map(|&(x, y)| (tx(x), y)).filter(|(x, y)| x.is_finite() && y.is_finite()).collect();
+            s.points.iter().map(|&(x, y)| (tx(x), ty(y))).filter(|(x, y)| x.is_finite() && y.is_finite()).collect();
         match s.stroke {
             Stroke::Solid => chart.draw_series(LineSeries::new(line.clone(), style)).map(|_| ()),
             Stroke::Dashed => chart.draw_series(DashedLineSeries::new(line.clone(), 9, 6, style)).map(|_| ()),
@@ -294,7 +298,8 @@ fn draw<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, spec: &PlotSpec) -> s
         }
     }
     let triangle = |p: (f64, f64), c: usize| TriangleMarker::new(p, 9, spec.palette.color(c).filled());
-    chart.draw_series(spec.marks.iter().map(|m| triangle((tx(m.point.0), m.point.1), m.color))).map_err(|e| err(&e))?;
+    let marks = spec.marks.iter().map(|m| triangle((tx(m.point.0), ty(m.point.1)), m.color));
+    chart.draw_series(marks).map_err(|e| err(&e))?;
     let (px, py) = chart.plotting_area().get_pixel_range();
     draw_legend(&legend_area, spec).map_err(|e| err(&e))?;
     let (lx, ly) = legend_area.get_pixel_range();
@@ -364,9 +369,26 @@ fn tick(value: f64, step: f64) -> String {
     if text.trim_start_matches('-').chars().all(|c| c == '0' || c == '.') { "0".into() } else { text }
 }
 
+/// A log-axis tick label: "1e-8" at a power of ten, else two significant digits ("3.2e-8").
+fn scientific(value: f64) -> String {
+    let exponent = value.log10();
+    if (exponent - exponent.round()).abs() < 1e-3 {
+        format!("1e{}", exponent.round() as i32)
+    } else {
+        format!("{value:.1e}")
+    }
+}
+
 #[cfg(test)]
 mod tests {
-    use super::tick;
+    use super::{scientific, tick};
+
+    #[test]
+    fn log_ticks_are_scientific() {
+        assert_eq!(scientific(1e-8), "1e-8");
+        assert_eq!(scientific(3.16e-7), "3.2e-7");
+        assert_eq!(scientific(100.0), "1e2");
+    }
 
     #[test]
     fn ticks_follow_the_axis_resolution() {

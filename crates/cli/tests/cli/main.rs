@@ -3,6 +3,7 @@
 mod bad_inputs;
 mod bridges;
 mod run_out;
+mod track_profile;
 mod trains;
 mod trust;
 
