@@ -37,3 +37,22 @@ impl<F: Fn(f64) -> f64> Forcing for DofForce<F> {
         (self.force)(time) * v[self.dof]
     }
 }
+
+/// A constant force (N) on every DOF, e.g. the weights of a vehicle's masses.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Constant {
+    /// The force on each DOF (N; upward positive).
+    pub force: Vec<f64>,
+}
+
+impl Forcing for Constant {
+    fn add_to(&self, _: f64, scale: f64, out: &mut [f64]) {
+        for (o, f) in out.iter_mut().zip(&self.force) {
+            *o += scale * f;
+        }
+    }
+
+    fn power(&self, _: f64, v: &[f64]) -> f64 {
+        self.force.iter().zip(v).map(|(f, v)| f * v).sum()
+    }
+}

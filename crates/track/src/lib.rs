@@ -4,7 +4,8 @@
 //! studies: the beam on its foundation as a [`nscd::LinearSystem`] ([`system::beam_system`]), the moving point load
 //! ([`MovingLoad`]), a whole run of the load across the beam ([`Simulation`]: the automatic solver choice from EI and
 //! ρA, the steady-state start from the infinite beam's closed form, observers for extremes over the run and over a
-//! window of load positions, histories at sections, W̄, solver statistics), and snapshots of the whole beam.
+//! window of load positions, histories at sections, W̄, solver statistics), snapshots of the whole beam, and vehicles
+//! ([`vehicle`]: small linear systems with wheels, rolled over rigid ground with a rail profile).
 
 pub mod error;
 pub mod moving_load;
@@ -12,6 +13,7 @@ pub mod simulation;
 pub mod snapshots;
 pub mod statics;
 pub mod system;
+pub mod vehicle;
 
 pub use error::{Result, TrackError};
 pub use moving_load::MovingLoad;

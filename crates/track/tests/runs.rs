@@ -12,4 +12,5 @@ mod runs {
     mod span;
     mod steady_state;
     mod trains;
+    mod vehicles_on_ground;
 }
