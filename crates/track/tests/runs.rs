@@ -12,5 +12,6 @@ mod runs {
     mod span;
     mod steady_state;
     mod trains;
+    mod vehicles_on_beam;
     mod vehicles_on_ground;
 }

@@ -4,11 +4,11 @@
 //! (N, upward positive, so −m g); λ_w ≥ 0 the contact force on wheel w, never tensile.
 //!
 //! Built-in forms ([`builtin`]): the moving mass and the quarter car; a user vehicle is given by its matrices.
-//! [`ground`] rolls wheels over rigid ground with a rail profile r(x); the wheel–rail contact along the beam is the
-//! next step (issue 18).
+//! [`ground`] rolls wheels over rigid ground with a rail profile r(x), [`rail`] along the beam (compliant contact).
 
 pub mod builtin;
 pub mod ground;
+pub mod rail;
 
 use crate::error::Result;
 use banded::SymmetricBanded;
