@@ -18,6 +18,6 @@ pub mod spectrum;
 pub mod trig;
 
 pub use error::{IrregularityError, Result};
-pub use profile::{Profile, WheelFlat};
+pub use profile::{Profile, WheelFlat, WheelTrack};
 pub use random::{Harmonic, RandomProfile, RandomSettings};
 pub use spectrum::Spectrum;

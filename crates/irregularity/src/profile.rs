@@ -211,3 +211,32 @@ impl WheelFlat {
         (-0.5 * d * (1.0 - cos), -0.5 * d * k * sin)
     }
 }
+
+/// What a wheel's centre follows: the rail's profile at the wheel's place x and the wheel's own flat, if any, at its
+/// travel s (both m; d/ds = d/dx for a wheel rolling along x).
+#[derive(Debug, Clone, PartialEq)]
+pub struct WheelTrack {
+    /// The rail.
+    pub rail: Profile,
+    /// The wheel's flat.
+    pub flat: Option<WheelFlat>,
+}
+
+impl WheelTrack {
+    /// A smooth wheel over `rail`.
+    pub fn rail(rail: Profile) -> Self {
+        Self { rail, flat: None }
+    }
+
+    /// (height m, slope) under the wheel at `x` after a travel of `travel` (m).
+    pub fn height_slope(&self, x: f64, travel: f64) -> (f64, f64) {
+        let (r, s) = self.rail.height_slope(x);
+        match &self.flat {
+            Some(flat) => {
+                let (f, fs) = flat.height_slope(travel);
+                (r + f, s + fs)
+            }
+            None => (r, s),
+        }
+    }
+}

@@ -10,7 +10,7 @@
 //! down, so the two differ by that offset; see docs/theory.md §12.
 
 use friction::{InteractionKind, InteractionRow, Law};
-use irregularity::Profile;
+use irregularity::WheelTrack;
 use nscd::{MovingInteraction, MovingState};
 
 /// A wheel on rigid ground.
@@ -22,8 +22,8 @@ pub struct WheelOnGround {
     pub start: f64,
     /// Speed (m/s).
     pub speed: f64,
-    /// The ground's profile.
-    pub profile: Profile,
+    /// The ground's profile and the wheel's flat.
+    pub track: WheelTrack,
     /// The contact law: `Law::Signorini` (rigid, Newton impact) or `Law::Compliant`; its gap field is not used.
     pub law: Law,
 }
@@ -46,12 +46,12 @@ impl MovingInteraction for WheelOnGround {
 
     fn update(&mut self, time: f64, step: f64, q: &[f64], v: &[f64], row: &mut InteractionRow) -> MovingState {
         row.set_entries([(self.dof, 1.0)]);
-        let (r, slope) = self.profile.height_slope(self.position(time));
-        let next = self.position(time + step);
+        let (x, next) = (self.position(time), self.position(time + step));
+        let (r, slope) = self.track.height_slope(x, x - self.start);
         MovingState {
             gap: q[self.dof] - r,
             velocity: v[self.dof] - self.speed * slope,
-            rheonomic: -self.speed * self.profile.height_slope(next).1,
+            rheonomic: -self.speed * self.track.height_slope(next, next - self.start).1,
             position: next,
         }
     }

@@ -20,7 +20,7 @@
 use fem_beam::element::hermite::{shape, shape_dx};
 use fem_beam::{BeamModel, Mesh};
 use friction::{InteractionKind, InteractionRow, Law};
-use irregularity::Profile;
+use irregularity::WheelTrack;
 use nscd::{MovingInteraction, MovingState, NscdError};
 
 use crate::error::Result;
@@ -38,8 +38,8 @@ pub struct WheelOnBeam {
     start: f64,
     /// Speed (m/s).
     speed: f64,
-    /// The rail's profile.
-    profile: Profile,
+    /// The rail's profile and the wheel's flat.
+    track: WheelTrack,
     /// The compliant contact law (its gap field is not used).
     law: Law,
     /// θ of the integration: the row is written where the wheel is at t_k + θh.
@@ -51,13 +51,13 @@ type Under = ([Option<usize>; 4], [f64; 4], [f64; 4]);
 
 impl WheelOnBeam {
     /// A wheel on system DOF `wheel`, over the beam of `model` whose DOFs start at system DOF `beam_offset`, starting
-    /// at `start` (m) and rolling at `speed` (m/s) over `profile` with a contact of stiffness `contact_stiffness`
+    /// at `start` (m) and rolling at `speed` (m/s) over `track` with a contact of stiffness `contact_stiffness`
     /// (N/m), integrated with `theta`.
     pub fn new(
         model: &BeamModel,
         (beam_offset, wheel): (usize, usize),
         (start, speed): (f64, f64),
-        profile: Profile,
+        track: WheelTrack,
         contact_stiffness: f64,
         theta: f64,
     ) -> Result<Self> {
@@ -72,7 +72,7 @@ impl WheelOnBeam {
         let dofs = model.dofs();
         let beam_dofs = (0..dofs.full_len()).map(|d| dofs.free_index(d).map(|f| beam_offset + f)).collect();
         let law = Law::Compliant { gap: 0.0, stiffness: contact_stiffness };
-        Ok(Self { wheel, mesh: *model.mesh(), beam_dofs, start, speed, profile, law, theta })
+        Ok(Self { wheel, mesh: *model.mesh(), beam_dofs, start, speed, track, law, theta })
     }
 
     /// Where the wheel is at `time` (m).
@@ -105,13 +105,13 @@ impl MovingInteraction for WheelOnBeam {
 
     fn update(&mut self, time: f64, step: f64, q: &[f64], v: &[f64], row: &mut InteractionRow) -> MovingState {
         let (x, next) = (self.position(time), self.position(time + self.theta * step));
-        let (r, slope) = self.profile.height_slope(x);
+        let (r, slope) = self.track.height_slope(x, x - self.start);
         let (mut gap, mut velocity) = (q[self.wheel] - r, v[self.wheel] - self.speed * slope);
         if let Some((dofs, n, dn)) = self.under(x) {
             gap -= Self::combine(&dofs, &n, q);
             velocity -= Self::combine(&dofs, &n, v) + self.speed * Self::combine(&dofs, &dn, q);
         }
-        let mut rheonomic = -self.speed * self.profile.height_slope(next).1;
+        let mut rheonomic = -self.speed * self.track.height_slope(next, next - self.start).1;
         match self.under(next) {
             Some((dofs, n, dn)) => {
                 rheonomic -= self.speed * Self::combine(&dofs, &dn, q);

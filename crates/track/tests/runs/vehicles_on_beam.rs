@@ -4,7 +4,7 @@
 use super::common::beam;
 use fem_beam::BeamModel;
 use friction::InteractionSet;
-use irregularity::Profile;
+use irregularity::{Profile, WheelTrack};
 use nscd::forcing::Constant;
 use nscd::solver::{SolverKind, SolverSettings};
 use nscd::stepper::Integration;
@@ -45,7 +45,8 @@ fn vehicle_run(model: &BeamModel, vehicle: &Vehicle, speed: f64, node: usize) ->
     let (system, layout) = LinearSystem::from_blocks(&[&beam_system(model), &vehicle.system()]);
     let offset = layout.offset(1);
     let wheel = offset + vehicle.wheels[0].dof;
-    let contact = WheelOnBeam::new(model, (0, wheel), (0.0, speed), Profile::Smooth, CONTACT, 0.5).unwrap();
+    let contact =
+        WheelOnBeam::new(model, (0, wheel), (0.0, speed), WheelTrack::rail(Profile::Smooth), CONTACT, 0.5).unwrap();
     let interactions = Interactions { fixed: InteractionSet::new(), moving: vec![Box::new(contact)] };
     let n = system.dofs();
     let (x0, forces) = vehicle.static_state(&[0.0]).unwrap();
@@ -112,7 +113,8 @@ fn a_vanishing_moving_mass_is_the_moving_force() {
 #[test]
 fn the_contact_on_the_beam_is_compliant() {
     let model = beam(60.0, 60);
-    let error = WheelOnBeam::new(&model, (0, 122), (0.0, 100.0), Profile::Smooth, 0.0, 0.5).unwrap_err();
+    let error =
+        WheelOnBeam::new(&model, (0, 122), (0.0, 100.0), WheelTrack::rail(Profile::Smooth), 0.0, 0.5).unwrap_err();
     assert!(error.to_string().contains("vehicle.contact_stiffness"), "{error}");
 }
 

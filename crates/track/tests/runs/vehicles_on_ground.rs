@@ -2,7 +2,7 @@
 //! nonsmooth engine with the wheel–ground contact as a unilateral moving interaction.
 
 use friction::Law;
-use irregularity::Profile;
+use irregularity::{Profile, WheelTrack};
 use nscd::forcing::Constant;
 use nscd::solver::{SolverKind, SolverSettings};
 use nscd::stepper::Integration;
@@ -16,6 +16,14 @@ use track::vehicle::{GRAVITY, Vehicle};
 fn transmissibility(r: f64, zeta: f64) -> f64 {
     let d = (2.0 * zeta * r).powi(2);
     ((1.0 + d) / ((1.0 - r * r).powi(2) + d)).sqrt()
+}
+
+/// `vehicle` with `wheel` on the ground, θ = ½ and `step` (s), projection to 1e-12, from the state (q₀, v₀).
+fn stepper(vehicle: &Vehicle, wheel: WheelOnGround, step: f64, (q0, v0): (Vec<f64>, Vec<f64>)) -> MoreauJean {
+    let interactions = Interactions { fixed: friction::InteractionSet::new(), moving: vec![Box::new(wheel)] };
+    let settings = SolverSettings { kind: SolverKind::Projection, tolerance: 1e-12, ..SolverSettings::default() };
+    MoreauJean::build(&vehicle.system(), interactions, Integration { theta: 0.5, step }, &settings, None, q0, v0)
+        .unwrap()
 }
 
 /// What a run over the profile shows after its transient: the body's amplitude, the smallest contact impulse per
@@ -44,23 +52,11 @@ fn run(car: &QuarterCar, ratio: f64, amplitude: f64) -> Steady {
         dof: 1,
         start: 0.0,
         speed,
-        profile: profile.clone(),
+        track: WheelTrack::rail(profile.clone()),
         law: Law::Signorini { gap: 0.0, restitution: 0.0 },
     };
-    let interactions = Interactions { fixed: friction::InteractionSet::new(), moving: vec![Box::new(wheel)] };
-    let period = TAU / omega;
-    let step = period / 400.0;
-    let settings = SolverSettings { kind: SolverKind::Projection, tolerance: 1e-12, ..SolverSettings::default() };
-    let mut stepper = MoreauJean::build(
-        &vehicle.system(),
-        interactions,
-        Integration { theta: 0.5, step },
-        &settings,
-        None,
-        q0.clone(),
-        v0,
-    )
-    .unwrap();
+    let step = TAU / omega / 400.0;
+    let mut stepper = stepper(&vehicle, wheel, step, (q0.clone(), v0));
     let weight = Constant { force: vehicle.weight.clone() };
     let settle = 12.0 / (car.damping_ratio() * car.body_frequency());
     let settle_steps = (settle / step).ceil() as usize;
@@ -144,4 +140,49 @@ fn contact_is_lost_exactly_when_the_body_acceleration_exceeds_gravity() {
         above.min_impulse,
         above.max_gap
     );
+}
+
+/// A wheel (a moving mass, pressed by its weight alone) with a flat of ℓ = 0.1 m on a 0.92 m wheel rolls onto the
+/// flat at s = 0 (haversine dip of depth d = 2.72 mm): to follow it the wheel must accelerate downward at
+/// v²·(d/2)(2π/ℓ)², so it leaves the rail exactly above v* = (ℓ/2π)·√(2g/d) = 1.35 m/s. Over two passages (πD
+/// apart): 2 % below v* it stays on (largest gap 1.8e-10 m, the velocity-level drift), 2 % above it flies (gaps to
+/// 3.1e-6 m: a 4 % excess of the needed acceleration over g along the flat's first curvature).
+#[test]
+fn a_wheel_flat_lifts_the_wheel_above_its_speed() {
+    use irregularity::WheelFlat;
+    use track::vehicle::builtin::MovingMass;
+    let flat = WheelFlat { length: 0.1, diameter: 0.92, first_contact: 0.0 };
+    let d = flat.depth();
+    let critical = flat.length / TAU * (2.0 * GRAVITY / d).sqrt();
+    let vehicle = MovingMass { mass: 1_000.0 }.vehicle().unwrap();
+    let passage = |speed: f64| {
+        let track = WheelTrack { rail: Profile::Smooth, flat: Some(flat) };
+        let wheel = WheelOnGround {
+            dof: 0,
+            start: 0.0,
+            speed,
+            track: track.clone(),
+            law: Law::Signorini { gap: 0.0, restitution: 0.0 },
+        };
+        let step = flat.length / speed / 400.0;
+        let mut stepper = stepper(&vehicle, wheel, step, (vec![0.0], vec![0.0]));
+        let weight = Constant { force: vehicle.weight.clone() };
+        let mut max_gap = 0.0f64;
+        // Two flat passages and the rolling between them (πD = 2.89 m).
+        let steps = ((std::f64::consts::PI * flat.diameter + 1.5 * flat.length) / (speed * step)).ceil() as usize;
+        for _ in 0..steps {
+            stepper.step(&weight).unwrap();
+            let x = speed * stepper.time;
+            max_gap = max_gap.max(stepper.q()[0] - track.height_slope(x, x).0);
+        }
+        (max_gap, stepper.energy.residual())
+    };
+    let (below, residual) = passage(0.98 * critical);
+    let (above, _) = passage(1.02 * critical);
+    eprintln!(
+        "v* = {critical:.4} m/s, d = {d:.4e} m: largest gap {below:.2e} m below, {above:.2e} m above; residual {residual:.1e}"
+    );
+    assert!((critical - 1.35).abs() < 0.01);
+    assert!(below < 1e-8, "below v*: gap {below}");
+    assert!(above > 1e-6, "above v*: gap {above}");
 }
