@@ -25,5 +25,10 @@ impl From<banded::BandedError> for TrackError {
     }
 }
 
+/// A setting out of range, as the engine's [`nscd::NscdError::InvalidField`]: the field, its value, what is allowed.
+pub(crate) fn invalid(field: &'static str, value: f64, allowed: impl Into<String>) -> TrackError {
+    nscd::NscdError::InvalidField { field, value, allowed: allowed.into() }.into()
+}
+
 /// Result alias of this crate.
 pub type Result<T, E = TrackError> = std::result::Result<T, E>;

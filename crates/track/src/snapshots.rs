@@ -7,12 +7,11 @@
 //! ([`fem_beam::BeamModel::nodal_moments`]), with q̈ the step's mean acceleration (v_{k+1} − v_k)/h and f_e the
 //! moving load where it stands plus the friction forces p_j/h of the step at their sections.
 
-use crate::error::Result;
+use crate::error::{Result, invalid};
 use crate::simulation::{RunSettings, StepView};
 use fem_beam::section::Motion;
 use fem_beam::{BeamModel, Train};
 use friction::InteractionSet;
-use nscd::NscdError;
 
 /// When a snapshot is taken.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -73,7 +72,7 @@ impl<'a> SnapshotTaker<'a> {
                 SnapshotAt::Time(t) => {
                     if !(t.is_finite() && (0.0..=end).contains(&t)) {
                         let allowed = format!("a snapshot time must lie in the run, [0, {end}] s");
-                        return Err(NscdError::InvalidField { field: "snapshots", value: t, allowed }.into());
+                        return Err(invalid("snapshots", t, allowed));
                     }
                     t
                 }
@@ -82,7 +81,7 @@ impl<'a> SnapshotTaker<'a> {
                     let last = length + settings.moving.train_length();
                     if !(x.is_finite() && (start..=last).contains(&x)) {
                         let allowed = format!("a snapshot load (first axle) position must lie in [{start}, {last}] m");
-                        return Err(NscdError::InvalidField { field: "snapshots", value: x, allowed }.into());
+                        return Err(invalid("snapshots", x, allowed));
                     }
                     (x - start) / settings.moving.speed
                 }

@@ -1,7 +1,8 @@
 //! The static response of a train standing at every position along its crossing (docs/theory.md §10): the
 //! reference of a dynamic amplification factor φ = max dynamic deflection / max static deflection.
 
-use crate::error::Result;
+use crate::error::{Result, invalid};
+use crate::simulation::counts_for_extremes;
 use fem_beam::{BeamModel, Train};
 
 /// The largest static downward deflection of the train over its crossing, where and with the first axle where.
@@ -31,19 +32,17 @@ pub fn static_envelope(
     let span = mesh.length + train.length();
     let positions = (span / advance).ceil() as usize + 1;
     if !(advance.is_finite() && advance > 0.0) || positions > MAX_POSITIONS {
-        return Err(nscd::NscdError::InvalidField {
-            field: "load_advance",
-            value: advance,
-            allowed: format!("must be > 0 and give at most {MAX_POSITIONS} train positions"),
-        }
-        .into());
+        return Err(invalid(
+            "load_advance",
+            advance,
+            format!("must be > 0 and give at most {MAX_POSITIONS} train positions"),
+        ));
     }
     let factor = model.stiffness().factor()?;
     let dofs = model.dofs();
-    let slack = 1e-9 * mesh.length;
     let counted: Vec<(usize, f64)> = (0..mesh.nodes())
         .filter_map(|node| Some((dofs.free_index(2 * node)?, mesh.node_x(node))))
-        .filter(|&(_, x)| nodes.is_none_or(|(a, b)| x >= a - slack && x <= b + slack))
+        .filter(|&(_, x)| counts_for_extremes(nodes, x, mesh.length))
         .collect();
     let mut envelope = StaticEnvelope::default();
     for i in 0..positions {

@@ -13,6 +13,7 @@ mod results;
 mod settings;
 
 pub use results::{Extreme, RunResult, SectionHistory, SolverStatistics, StepView, WindowExtremes};
+pub(crate) use settings::counts_for_extremes;
 pub use settings::{InitialState, IntegrationSettings, MovingLoadSettings, RecordSettings, RunSettings};
 
 use crate::error::Result;
@@ -78,12 +79,11 @@ impl<'a> Simulation<'a> {
                 // §10), each shifted by its offset. Patches have no closed form here.
                 let train = self.settings.moving.train();
                 if !train.patches.is_empty() {
-                    return Err(nscd::NscdError::InvalidField {
-                        field: "initial.position",
-                        value: position,
-                        allowed: "the steady-state start takes trains of axles only (no load patches)".into(),
-                    }
-                    .into());
+                    return Err(crate::error::invalid(
+                        "initial.position",
+                        position,
+                        "the steady-state start takes trains of axles only (no load patches)",
+                    ));
                 }
                 let infinite = InfiniteBeam::new(self.model.beam(), self.model.foundation())?;
                 let mesh = self.model.mesh();

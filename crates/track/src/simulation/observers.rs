@@ -2,6 +2,7 @@
 //! of section histories and their full-DOF scratch vectors.
 
 use super::results::{Extreme, SectionHistory, WindowExtremes};
+use super::settings::counts_for_extremes;
 use crate::error::Result;
 use fem_beam::BeamModel;
 
@@ -36,13 +37,11 @@ impl NodalDeflections {
     pub(super) fn new(mesh: &fem_beam::Mesh, dofs: &fem_beam::DofMap, region: Option<(f64, f64)>) -> Self {
         let last = mesh.nodes() - 1;
         let l = mesh.element_length();
-        let slack = 1e-9 * mesh.length;
-        let inside = |x: f64| region.is_none_or(|(a, b)| x >= a - slack && x <= b + slack);
         let nodes = (0..=last)
             .filter_map(|i| {
                 let weight = if i == 0 || i == last { 0.5 * l } else { l };
                 let x = mesh.node_x(i);
-                dofs.free_index(2 * i).map(|d| (d, x, weight, inside(x)))
+                dofs.free_index(2 * i).map(|d| (d, x, weight, counts_for_extremes(region, x, mesh.length)))
             })
             .collect();
         Self { nodes }

@@ -2,9 +2,8 @@
 //! load advance, end, solver) and what is recorded (sections, extremes window) — and the limits checked before
 //! anything is allocated.
 
-use crate::error::Result;
+use crate::error::{Result, invalid};
 use fem_beam::{BeamModel, Train};
-use nscd::NscdError;
 use nscd::solver::SolverSettings;
 use nscd::stepper::Integration;
 
@@ -88,6 +87,13 @@ pub struct RecordSettings {
     pub extremes_nodes: Option<(f64, f64)>,
 }
 
+/// Whether a node at `x` (m) counts for the extremes of `nodes` ([`RecordSettings::extremes_nodes`]) on a beam of
+/// `length` (m): inside [a, b] up to 1e-9·L, or every node when no range is set.
+pub(crate) fn counts_for_extremes(nodes: Option<(f64, f64)>, x: f64, length: f64) -> bool {
+    let slack = 1e-9 * length;
+    nodes.is_none_or(|(a, b)| x >= a - slack && x <= b + slack)
+}
+
 /// Settings of one run, in three parts: what moves on the beam, how it is integrated, what is recorded. Defaults:
 /// the reference case of docs/theory.md §2 at 200 m/s.
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -98,10 +104,6 @@ pub struct RunSettings {
     pub integration: IntegrationSettings,
     /// What is recorded.
     pub record: RecordSettings,
-}
-
-fn invalid(field: &'static str, value: f64, allowed: impl Into<String>) -> crate::TrackError {
-    NscdError::InvalidField { field, value, allowed: allowed.into() }.into()
 }
 
 impl RunSettings {
@@ -158,8 +160,8 @@ impl RunSettings {
         if let Some((a, b)) = self.record.extremes_nodes {
             let mesh = model.mesh();
             let has_node = (0..mesh.nodes()).any(|i| {
-                let x = mesh.node_x(i);
-                model.dofs().free_index(2 * i).is_some() && x >= a - 1e-9 * length && x <= b + 1e-9 * length
+                model.dofs().free_index(2 * i).is_some()
+                    && counts_for_extremes(self.record.extremes_nodes, mesh.node_x(i), length)
             });
             if !(a.is_finite() && b.is_finite() && a <= b && has_node) {
                 let allowed = format!("needs positions a ≤ b (m) with a free node between them, got {a}:{b}");

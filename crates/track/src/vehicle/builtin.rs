@@ -2,8 +2,8 @@
 //! (a body M_s on a suspension k_s, c_s over an unsprung wheel m_u; DOFs body, wheel). Parameter structs with defaults
 //! and one `validate`; each builds its [`Vehicle`].
 
-use super::{GRAVITY, Vehicle, Wheel, invalid};
-use crate::error::Result;
+use super::{GRAVITY, Vehicle, Wheel};
+use crate::error::{Result, invalid};
 
 /// A moving mass.
 #[derive(Debug, Clone, Copy, PartialEq)]

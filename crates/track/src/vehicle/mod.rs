@@ -10,9 +10,9 @@ pub mod builtin;
 pub mod ground;
 pub mod rail;
 
-use crate::error::Result;
+use crate::error::{Result, invalid};
 use banded::SymmetricBanded;
-use nscd::{LinearSystem, NscdError};
+use nscd::LinearSystem;
 
 /// Gravity (m/s²).
 pub const GRAVITY: f64 = 9.81;
@@ -43,10 +43,6 @@ pub struct Vehicle {
     pub weight: Vec<f64>,
     /// The wheels.
     pub wheels: Vec<Wheel>,
-}
-
-fn invalid(field: &'static str, value: f64, allowed: impl Into<String>) -> crate::TrackError {
-    NscdError::InvalidField { field, value, allowed: allowed.into() }.into()
 }
 
 impl Vehicle {

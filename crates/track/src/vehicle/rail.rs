@@ -21,9 +21,9 @@ use fem_beam::element::hermite::{shape, shape_dx};
 use fem_beam::{BeamModel, Mesh};
 use friction::{InteractionKind, InteractionRow, Law};
 use irregularity::WheelTrack;
-use nscd::{MovingInteraction, MovingState, NscdError};
+use nscd::{MovingInteraction, MovingState};
 
-use crate::error::Result;
+use crate::error::{Result, invalid};
 
 /// A wheel on the beam.
 #[derive(Debug, Clone)]
@@ -62,12 +62,11 @@ impl WheelOnBeam {
         theta: f64,
     ) -> Result<Self> {
         if !(contact_stiffness.is_finite() && contact_stiffness > 0.0) {
-            return Err(NscdError::InvalidField {
-                field: "vehicle.contact_stiffness",
-                value: contact_stiffness,
-                allowed: "must be finite and > 0 (N/m): the wheel–rail contact on the beam is compliant".into(),
-            }
-            .into());
+            return Err(invalid(
+                "vehicle.contact_stiffness",
+                contact_stiffness,
+                "must be finite and > 0 (N/m): the wheel–rail contact on the beam is compliant",
+            ));
         }
         let dofs = model.dofs();
         let beam_dofs = (0..dofs.full_len()).map(|d| dofs.free_index(d).map(|f| beam_offset + f)).collect();
