@@ -84,7 +84,7 @@ pub fn run(args: &TrackProfileArgs) -> Result<()> {
                 "  {} harmonics; σ = {:.4} mm (target √∫S dΩ = {:.4} mm)",
                 sample.profile.harmonics.len(),
                 1e3 * sample.sample_variance.sqrt(),
-                1e3 * summary["target_std"].as_f64().unwrap_or(f64::NAN)
+                1e3 * sample.target_std()
             );
             println!("  wrote {}/{stem}.csv, {stem}-psd.csv, {stem}.json and figures", args.out.display());
         }

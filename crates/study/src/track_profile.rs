@@ -99,11 +99,17 @@ impl ProfileSample {
         out
     }
 
+    /// The target standard deviation √(∫_band S dΩ) (m).
+    pub fn target_std(&self) -> f64 {
+        let s = &self.request.settings;
+        let tau = std::f64::consts::TAU;
+        s.spectrum.variance(tau / s.band.1, tau / s.band.0).sqrt()
+    }
+
     /// The settings, the target and sample standard deviations and the formula of the spectrum.
     pub fn summary(&self) -> Value {
         let s = &self.request.settings;
         let (short, long) = s.band;
-        let tau = std::f64::consts::TAU;
         json!({
             "spectrum": s.spectrum.name(),
             "band_wavelengths": [short, long],
@@ -111,7 +117,7 @@ impl ProfileSample {
             "spacing": self.request.spacing,
             "seed": s.seed,
             "harmonics": self.profile.harmonics.len(),
-            "target_std": s.spectrum.variance(tau / long, tau / short).sqrt(),
+            "target_std": self.target_std(),
             "sample_std": self.sample_variance.sqrt(),
             "units": { "x": "m", "r": "m", "wavenumber": "rad/m", "psd": "m²/(rad/m)" },
             "formula": "docs/theory.md §11",
@@ -129,7 +135,7 @@ impl ProfileSample {
             s.band.1,
             s.seed,
             1e3 * self.sample_variance.sqrt(),
-            1e3 * self.summary()["target_std"].as_f64().unwrap_or(f64::NAN)
+            1e3 * self.target_std()
         );
         profile.series.push(Series {
             label: Some("r(x)".into()),

@@ -1,6 +1,7 @@
 //! The two sentences on what each study shows, for `reproduce`'s report, from its summary.
 
 use super::Preset;
+use super::hslm::{KMH, millimetres};
 use serde_json::Value;
 
 fn number(v: &Value, key: &str) -> f64 {
@@ -137,11 +138,11 @@ pub(super) fn headline(preset: Preset, summary: &Value) -> Vec<String> {
                     "{} {at} {:.0} km/h ({speed:.1} m/s): max downward deflection {}, dynamic amplification {:.2}; \
                      the largest {acceleration}, comes from {} at {:.0} km/h",
                     name(v, "critical_train"),
-                    3.6 * speed,
-                    super::hslm::millimetres(peak),
+                    KMH * speed,
+                    millimetres(peak),
                     number(v, "dynamic_amplification"),
                     name(v, "acceleration_train"),
-                    3.6 * number(v, "acceleration_speed")
+                    KMH * number(v, "acceleration_speed")
                 )
             };
             let (none, with) = (envelopes.first().unwrap_or(&Value::Null), envelopes.get(1).unwrap_or(&Value::Null));

@@ -1,9 +1,9 @@
 //! Study 7: the Eurocode high-speed load model HSLM-A1 … A10 (EN 1991-2 §6.4.6.1.1, docs/theory.md §10) over the
 //! base scenario, a track or a bridge: max downward deflection and max deck acceleration vs speed for the ten trains,
 //! without friction and with a friction set-up (the scenario's `[friction]`, else devices of 50 kN at the density of
-//! 31 on 200 m: 31 on the reference track, 3 on a 20 m span); the envelope
-//! over the trains with the critical train and speed; the resonance speeds v = f_j·D/i (a train of coaches of length D
-//! loads the structure periodically at v/D; its i-th harmonic meets the natural frequency f_j there).
+//! 31 on 200 m: 31 on the reference track, 3 on a 20 m span); the envelope over the trains with the critical train
+//! and speed; the resonance speeds v = f_j·D/i (a train of coaches of length D loads the structure periodically at
+//! v/D; its i-th harmonic meets the natural frequency f_j there).
 //!
 //! On a span (no foundation, pinned ends) the deck-acceleration check needs frequencies up to f_max = max(30 Hz,
 //! 1.5 f₁, f₃): the study reduces the load advance, where needed, to the one that resolves f_max with 20 steps per
@@ -29,11 +29,6 @@ pub const BALLASTED_DECK_LIMIT: f64 = 3.5;
 /// The friction set-up when the scenario has none: devices of F_u = 50 kN (the middle force of study 1) at the
 /// density of its strongest set, 31 on the 200 m reference track ([`fallback_devices`]).
 const FALLBACK_FORCE: f64 = 50e3;
-
-/// The fallback devices on a beam of `length` (m): N = round(31·L/200 m), at least 1 (3 on a 20 m span), of 50 kN.
-fn fallback_devices(length: f64) -> (usize, f64) {
-    (((31.0 * length / 200.0).round() as usize).max(1), FALLBACK_FORCE)
-}
 /// The natural frequencies whose resonance speeds are listed (f₁ … f₃).
 const MODES: usize = 3;
 /// Harmonics listed per frequency, at most.
@@ -46,6 +41,19 @@ pub(super) fn coach_length(k: usize) -> f64 {
     HSLM_A[k - 1].1
 }
 
+/// The devices the study compares when `base` has no `[friction]`: N = round(31·L/200 m), at least 1 (3 on a 20 m
+/// span), of 50 kN; None when the scenario gives its own friction.
+fn fallback_devices(base: &Scenario) -> Option<(usize, f64)> {
+    let f = &base.friction;
+    (f.devices.is_none() && f.distributed.is_none())
+        .then(|| (((31.0 * base.mesh.length / 200.0).round() as usize).max(1), FALLBACK_FORCE))
+}
+
+/// The name of a friction set-up in the files: 0 "none", 1 "with".
+fn friction_name(friction: usize) -> &'static str {
+    if friction == 0 { "none" } else { "with" }
+}
+
 /// "1 device × 50 kN", "31 devices × 50 kN".
 fn devices_text(count: usize, force: f64) -> String {
     format!("{count} device{} × {} kN", if count == 1 { "" } else { "s" }, force / 1e3)
@@ -55,11 +63,10 @@ fn devices_text(count: usize, force: f64) -> String {
 /// devices) and its description.
 fn friction_setups(base: &Scenario) -> (Scenario, Scenario, String) {
     let none = with_devices(base, 0, 0.0);
-    let f = &base.friction;
-    if f.devices.is_none() && f.distributed.is_none() {
-        let (count, force) = fallback_devices(base.mesh.length);
+    if let Some((count, force)) = fallback_devices(base) {
         return (none, with_devices(base, count, force), devices_text(count, force));
     }
+    let f = &base.friction;
     let mut parts = Vec::new();
     if let Some(d) = &f.devices {
         let count = d.count.or(d.positions.as_ref().map(Vec::len)).unwrap_or(0);
@@ -127,9 +134,7 @@ pub(super) fn overrides(base: &Scenario) -> Vec<String> {
     if load.train.is_some() || !load.axles.is_empty() || !load.patches.is_empty() {
         notes.push("the scenario's train is not used: the study runs HSLM-A1 … A10".to_string());
     }
-    let f = &base.friction;
-    if f.devices.is_none() && f.distributed.is_none() {
-        let (count, force) = fallback_devices(base.mesh.length);
+    if let Some((count, force)) = fallback_devices(base) {
         notes.push(format!(
             "the scenario has no [friction]: the study compares no friction with {}, the density of 31 devices on \
              200 m (give [friction] to compare another set-up)",
@@ -157,8 +162,8 @@ pub(super) struct Resonance {
 }
 
 /// The resonance speeds of coach length `d` (m) for `frequencies` (Hz, ascending) inside [from, to] (m/s). A
-/// frequency within 1 % of a lower one gives the same speeds and is left out: on a track the lowest modes crowd
-/// just above the foundation's cut-off frequency √(k_f/ρA)/2π.
+/// frequency within 1 % of a lower one gives the same speeds and is left out (modes that crowd, as the lowest ones
+/// of a beam on a foundation do; the study lists resonances of spans only, whose frequencies grow as n²).
 fn resonances(frequencies: &[f64], d: f64, (from, to): (f64, f64)) -> Vec<Resonance> {
     let mut out = Vec::new();
     for (j, &frequency) in frequencies.iter().enumerate() {
@@ -192,6 +197,11 @@ pub(super) struct TrainCurve {
 }
 
 impl TrainCurve {
+    /// The refined peak of the max downward deflection over the train's static maximum.
+    pub(super) fn peak_amplification(&self) -> f64 {
+        self.critical.max_downward_deflection / self.static_max
+    }
+
     /// The sampled point of the largest max acceleration.
     pub(super) fn acceleration_peak(&self) -> &SweepPoint {
         self.points.iter().max_by(|a, b| a.max_acceleration.total_cmp(&b.max_acceleration)).expect("speeds")
@@ -271,8 +281,7 @@ impl Results {
                     p.window_max_downward_deflection,
                     p.window_max_upward_deflection,
                 ];
-                let friction = if c.friction == 0 { "none" } else { "with" };
-                let _ = writeln!(out, "hslm-a{},{friction},{}", c.train, row(&values));
+                let _ = writeln!(out, "hslm-a{},{},{}", c.train, friction_name(c.friction), row(&values));
             }
         }
         out
@@ -291,7 +300,7 @@ impl Results {
                         c.critical.speed,
                         c.critical.speed * KMH,
                         millimetres(c.critical.max_downward_deflection),
-                        c.critical.max_downward_deflection / c.static_max
+                        c.peak_amplification()
                     )
                 } else {
                     c.critical.describe()
@@ -312,12 +321,12 @@ impl Results {
                 json!({
                     "train": format!("hslm-a{}", c.train),
                     "coach_length": coach_length(c.train),
-                    "friction": if c.friction == 0 { "none" } else { "with" },
+                    "friction": friction_name(c.friction),
                     "static_max_downward_deflection": c.static_max,
                     "critical_speed": c.critical.speed,
                     "critical_speed_location": c.critical.location,
                     "peak_max_downward_deflection": c.critical.max_downward_deflection,
-                    "peak_dynamic_amplification": c.critical.max_downward_deflection / c.static_max,
+                    "peak_dynamic_amplification": c.peak_amplification(),
                     "peak_max_acceleration_sampled": peak.max_acceleration,
                     "peak_acceleration_speed": peak.speed,
                     "resonance_speeds": resonances,
@@ -336,19 +345,19 @@ impl Results {
                     c.critical.speed,
                     c.critical.speed * KMH,
                     millimetres(c.critical.max_downward_deflection),
-                    c.critical.max_downward_deflection / c.static_max,
+                    c.peak_amplification(),
                     if c.critical.is_interior() { "" } else { ", at an end of the speed range: a bound" },
                     p.max_acceleration,
                     a.train,
                     p.speed * KMH
                 ));
                 json!({
-                    "friction": if friction == 0 { "none" } else { "with" },
+                    "friction": friction_name(friction),
                     "critical_train": format!("hslm-a{}", c.train),
                     "critical_speed": c.critical.speed,
                     "critical_speed_location": c.critical.location,
                     "peak_max_downward_deflection": c.critical.max_downward_deflection,
-                    "dynamic_amplification": c.critical.max_downward_deflection / c.static_max,
+                    "dynamic_amplification": c.peak_amplification(),
                     "acceleration_train": format!("hslm-a{}", a.train),
                     "acceleration_speed": p.speed,
                     "peak_max_acceleration": p.max_acceleration,

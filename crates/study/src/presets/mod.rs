@@ -19,7 +19,7 @@ mod optimal_force;
 
 use crate::error::{Result, invalid};
 use crate::plot::PlotSpec;
-use crate::scenario::{DevicesSection, DistributedSection, Scenario};
+use crate::scenario::{DevicesSection, DistributedSection, Scenario, SweepSection};
 use crate::speeds::SpeedScale;
 use crate::sweep::{Runner, SweepPoint};
 use serde::Serialize;
@@ -81,8 +81,8 @@ impl Resolution {
             Resolution::Coarse => 20.0,
             Resolution::Paper => 2.0,
         };
-        let count = ((420.0 - 140.0) / step + 1e-9_f64).floor() as usize + 1;
-        (0..count).map(|i| (140.0 + i as f64 * step) / hslm::KMH).collect()
+        let kmh = SweepSection { from: 140.0, to: 420.0, step };
+        kmh.speeds().into_iter().map(|v| v / hslm::KMH).collect()
     }
 
     fn forces(self) -> usize {
@@ -161,6 +161,8 @@ impl Preset {
                 "speeds: 140–420 km/h every 20 km/h (coarse) or 2 km/h (paper), unless the scenario has a [sweep]",
                 "integration.load_advance: on a span, at most what resolves max(30 Hz, 1.5 f₁, f₃) with 20 steps per \
                  period at the lowest speed",
+                "foundation.absorbing_zones and output.extremes_nodes: on a track, unless the scenario gives them, \
+                 zones of min(40 m, L/5) at the ends and the extremes over the middle third",
             ],
         }
     }
