@@ -50,6 +50,22 @@ pub enum Law {
         /// k_c > 0 (N/m).
         stiffness: f64,
     },
+    /// A linear spring that also pulls: force k·(−g) of either sign, integrated implicitly — a glued (bilateral)
+    /// contact, the reference a unilateral one equals while it presses.
+    Spring {
+        /// g₀: the gap at q = 0 (m).
+        gap: f64,
+        /// k > 0 (N/m).
+        stiffness: f64,
+    },
+    /// Hertz's law λ = C_H⟨δ⟩₊^{3/2} of a wheel on a rail, δ = −g the penetration: unilateral, integrated implicitly by
+    /// Newton iterations on its tangent compliance within the step (docs/theory.md §9). Moving interactions only.
+    Hertz {
+        /// g₀: the gap at q = 0 (m).
+        gap: f64,
+        /// C_H > 0 (N/m^1.5).
+        coefficient: f64,
+    },
 }
 
 impl Law {

@@ -8,12 +8,14 @@
 //! - [`system`]: the banded linear system, one block or several stacked, with their [`system::DofLayout`].
 //! - [`forcing`]: the interface of external loads F(t).
 //! - [`problem`]: the one-step [`InteractionProblem`] and its update phase (the step's law from the state).
+//! - [`hertz`]: Hertz's contact law in a step, by Newton iterations on its tangent.
 //! - [`moving`]: interactions whose rows are rebuilt every step (a wheel).
 //! - [`solver`]: projected Gauss–Seidel, a banded interior point, Clarabel (feature `clarabel`).
 //! - [`stepper`]: [`MoreauJean`], one step at a time, with its [`EnergyLedger`].
 
 pub mod error;
 pub mod forcing;
+pub mod hertz;
 mod kernels;
 pub mod moving;
 pub mod problem;

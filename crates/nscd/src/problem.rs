@@ -18,6 +18,7 @@
 //! velocity b_r (U_{k+1} = H v_{k+1} + b_r) set by the update phase each step, its response G = M̂⁻¹Hᵀ and W_jj with
 //! them; b_r joins its drift.
 
+use crate::hertz::{HertzStep, NEWTON_TOLERANCE, PENETRATION_FLOOR};
 use crate::kernels::axpy;
 use crate::moving::{Interactions, MovingInteraction, MovingState};
 use crate::solver::VELOCITY_FLOOR;
@@ -40,7 +41,12 @@ fn step_bounds(law: &Law, gap: f64, u: f64, rheonomic: f64, h: f64, theta: f64) 
                 (0.0, 0.0, 0.0)
             }
         }
-        Law::Compliant { .. } => (0.0, f64::INFINITY, rheonomic - (-gap - h * (1.0 - theta) * u) / (h * theta)),
+        Law::Compliant { .. } | Law::Hertz { .. } => {
+            (0.0, f64::INFINITY, rheonomic - (-gap - h * (1.0 - theta) * u) / (h * theta))
+        }
+        Law::Spring { .. } => {
+            (f64::NEG_INFINITY, f64::INFINITY, rheonomic - (-gap - h * (1.0 - theta) * u) / (h * theta))
+        }
     }
 }
 
@@ -103,6 +109,8 @@ pub struct InteractionProblem {
     /// Their states and dense responses G_j = M̂⁻¹H_jᵀ (n each, refreshed every step).
     moving_states: Vec<MovingState>,
     moving_responses: Vec<f64>,
+    /// The Hertz contacts' step states, by interaction (None for every other law).
+    hertz: Vec<Option<HertzStep>>,
 }
 
 impl InteractionProblem {
@@ -135,6 +143,7 @@ impl InteractionProblem {
         let m = interactions.len();
         let mut law =
             StepLaw { lower: vec![0.0; m], upper: vec![0.0; m], compliance: vec![0.0; m], drift: vec![0.0; m] };
+        let mut hertz = vec![None; m];
         for (j, l) in interactions.laws().iter().enumerate() {
             match *l {
                 // Friction's bounds are fixed for the run: set here, by the one mapping from law to bounds.
@@ -142,7 +151,19 @@ impl InteractionProblem {
                     (law.lower[j], law.upper[j], law.drift[j]) = step_bounds(l, 0.0, 0.0, 0.0, h, theta);
                 }
                 Law::Signorini { .. } => {}
-                Law::Compliant { stiffness, .. } => law.compliance[j] = 1.0 / (h * h * theta * stiffness),
+                Law::Compliant { stiffness, .. } | Law::Spring { stiffness, .. } => {
+                    law.compliance[j] = 1.0 / (h * h * theta * stiffness)
+                }
+                Law::Hertz { coefficient, .. } => {
+                    if j < fixed {
+                        return Err(crate::NscdError::InvalidField {
+                            field: "law",
+                            value: coefficient,
+                            allowed: "Hertz's law is taken by moving interactions (wheels) only".into(),
+                        });
+                    }
+                    hertz[j] = Some(HertzStep { coefficient, ..HertzStep::default() });
+                }
             }
         }
         for (w, d) in delassus_diagonal.iter_mut().zip(&law.compliance) {
@@ -163,6 +184,7 @@ impl InteractionProblem {
             moving_states: vec![MovingState::default(); moving.len()],
             moving_responses: vec![0.0; moving.len() * n],
             moving,
+            hertz,
         };
         problem.update(0.0, &vec![0.0; n], &vec![0.0; n]);
         Ok(problem)
@@ -196,15 +218,67 @@ impl InteractionProblem {
             } else {
                 match *law {
                     Law::Coulomb { .. } => continue,
-                    Law::Signorini { gap, .. } | Law::Compliant { gap, .. } => {
-                        (gap + rows[j].dot(q), rows[j].dot(v), 0.0)
-                    }
+                    Law::Signorini { gap, .. }
+                    | Law::Compliant { gap, .. }
+                    | Law::Spring { gap, .. }
+                    | Law::Hertz { gap, .. } => (gap + rows[j].dot(q), rows[j].dot(v), 0.0),
                 }
             };
+            if let Some(hertz) = self.hertz[j].as_mut() {
+                hertz.start(-gap, u, rheonomic, h);
+                Self::set_hertz_law(&mut self.law, &mut self.delassus_diagonal, j, hertz, (h, theta));
+                continue;
+            }
             let (lower, upper, drift) = step_bounds(law, gap, u, rheonomic, h, theta);
             self.law.lower[j] = lower;
             self.law.upper[j] = upper;
             self.law.drift[j] = drift;
+        }
+    }
+
+    /// Put Hertz contact j's current linearisation into the step's law and W_jj + d_j.
+    fn set_hertz_law(law: &mut StepLaw, diagonal: &mut [f64], j: usize, hertz: &HertzStep, (h, theta): (f64, f64)) {
+        let (compliance, drift) = hertz.law(h, theta);
+        diagonal[j] += compliance - law.compliance[j];
+        (law.lower[j], law.upper[j], law.compliance[j], law.drift[j]) = (0.0, f64::INFINITY, compliance, drift);
+    }
+
+    /// Whether some interactions follow Hertz's law (the step then iterates, [`InteractionProblem::newton_step`]).
+    pub fn has_hertz(&self) -> bool {
+        self.hertz.iter().any(Option::is_some)
+    }
+
+    /// One Newton update of the Hertz contacts from the step's impulses `p` ([`crate::hertz`]): when some contact's
+    /// δ* would move by more than [`crate::hertz::NEWTON_TOLERANCE`], relinearise them all and return true (solve
+    /// again); else leave the law as the impulses were solved for and return false.
+    pub fn newton_step(&mut self, p: &[f64]) -> bool {
+        let (h, theta) = (self.integration.step, self.integration.theta);
+        let moves = self.hertz.iter().zip(p).any(|(hz, &pj)| {
+            hz.is_some_and(|hz| {
+                (hz.end_penetration(pj, h).max(PENETRATION_FLOOR) - hz.linearised_at).abs() > NEWTON_TOLERANCE
+            })
+        });
+        if moves {
+            for (j, hertz) in self.hertz.iter_mut().enumerate() {
+                if let Some(hertz) = hertz.as_mut() {
+                    hertz.relinearise(p[j], h);
+                    Self::set_hertz_law(&mut self.law, &mut self.delassus_diagonal, j, hertz, (h, theta));
+                }
+            }
+        }
+        moves
+    }
+
+    /// The energy stored in moving interaction j's spring after a step with impulse `p` (J), read from its law: a
+    /// compliant stop or a spring holds p = h·k·δ_{k+1}, so ½kδ² = p²/(2h²k) (a stop only when pressing); Hertz
+    /// (2/5)C_Hδ^{5/2}. None for other laws.
+    pub fn moving_spring_energy(&self, j: usize, p: f64) -> Option<f64> {
+        let h = self.integration.step;
+        match self.interactions.laws()[j] {
+            Law::Compliant { stiffness, .. } => Some(if p > 0.0 { p * p / (2.0 * h * h * stiffness) } else { 0.0 }),
+            Law::Spring { stiffness, .. } => Some(p * p / (2.0 * h * h * stiffness)),
+            Law::Hertz { .. } => self.hertz[j].map(|hz| hz.energy(p, h)),
+            _ => None,
         }
     }
 

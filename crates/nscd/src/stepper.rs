@@ -14,6 +14,7 @@
 
 use crate::error::{NscdError, Result};
 use crate::forcing::Forcing;
+use crate::hertz::NEWTON_ITERATIONS;
 use crate::kernels::dot;
 use crate::problem::StepLaw;
 use crate::solver::{InteractionProblem, InteractionSolver, SolverKind, SolverSettings, StepReport, build_solver};
@@ -183,7 +184,11 @@ impl MoreauJean {
             theta: integration.theta,
             h: integration.step,
             damped: system.has_damping(),
-            varying_energy: problem.interactions.laws().iter().any(|l| matches!(l, Law::Compliant { .. })),
+            varying_energy: problem
+                .interactions
+                .laws()
+                .iter()
+                .any(|l| matches!(l, Law::Compliant { .. } | Law::Spring { .. } | Law::Hertz { .. })),
             friction_only: problem.interactions.kinds().iter().all(|k| k.is_friction()),
             problem,
             solver,
@@ -223,7 +228,7 @@ impl MoreauJean {
         stepper.energy.current = kinetic + strain;
         stepper.energy.kinetic = kinetic;
         stepper.energy.strain = strain;
-        stepper.energy.spring_energy = spring_energy(&stepper.problem.interactions, &stepper.q);
+        stepper.energy.spring_energy = spring_energy(&stepper.problem, &stepper.q, None);
         stepper.problem.update(0.0, &stepper.q, &stepper.v);
         stepper
     }
@@ -298,7 +303,16 @@ impl MoreauJean {
             StepReport::default()
         } else {
             self.problem.interactions.velocities(&self.v, &mut self.u_free);
-            let report = self.solver.solve(&self.problem, &self.v, &self.u_free, &mut self.p)?;
+            let mut report = self.solver.solve(&self.problem, &self.v, &self.u_free, &mut self.p)?;
+            // Hertz contacts: Newton on their tangent, one more solve per update (docs/theory.md §9).
+            let mut newton = 0;
+            while report.converged() && newton < NEWTON_ITERATIONS && self.problem.newton_step(&self.p) {
+                self.solver.refresh(&self.problem)?;
+                let iterations = report.iterations;
+                report = self.solver.solve(&self.problem, &self.v, &self.u_free, &mut self.p)?;
+                report.iterations += iterations;
+                newton += 1;
+            }
             if !report.converged() {
                 return Err(NscdError::Unconverged {
                     solver: self.solver.kind(),
@@ -388,7 +402,7 @@ impl MoreauJean {
         e.support_work += work.support;
         e.numerical_dissipation += numerical;
         if self.varying_energy {
-            e.spring_energy = spring_energy(&self.problem.interactions, &self.q);
+            e.spring_energy = spring_energy(&self.problem, &self.q, Some(&self.p));
         }
         let step_residual = e.current - before - (load - viscous + work.total() - numerical);
         e.max_step_residual = e.max_step_residual.max(step_residual.abs());
@@ -430,13 +444,22 @@ fn interaction_work(interactions: &InteractionSet, friction_only: bool, p: &[f64
     work
 }
 
-/// ½k_c⟨−g⟩₊² summed over the compliant interactions at displacement q (J).
-fn spring_energy(interactions: &InteractionSet, q: &[f64]) -> f64 {
+/// The energy in the springs of the compliant interactions at displacement q (J): ½k⟨δ⟩₊² of a stop, ½kδ² of a
+/// bilateral spring. A fixed interaction's penetration is δ = −(g₀ + Hq); a moving one's gap depends on where it is
+/// and on the rail's profile, so after a step (`impulses` p) its energy is read from its law
+/// ([`InteractionProblem::moving_spring_energy`]). Before the first step moving interactions count 0.
+fn spring_energy(problem: &InteractionProblem, q: &[f64], impulses: Option<&[f64]>) -> f64 {
+    let interactions = &problem.interactions;
     let mut energy = 0.0;
-    for (row, law) in interactions.rows().iter().zip(interactions.laws()) {
-        if let Law::Compliant { gap, stiffness } = *law {
-            let penetration = (-(gap + row.dot(q))).max(0.0);
-            energy += 0.5 * stiffness * penetration * penetration;
+    for (j, (row, law)) in interactions.rows().iter().zip(interactions.laws()).enumerate() {
+        if j >= problem.fixed_len() {
+            energy += impulses.and_then(|p| problem.moving_spring_energy(j, p[j])).unwrap_or(0.0);
+            continue;
+        }
+        match *law {
+            Law::Compliant { gap, stiffness } => energy += 0.5 * stiffness * (-(gap + row.dot(q))).max(0.0).powi(2),
+            Law::Spring { gap, stiffness } => energy += 0.5 * stiffness * (gap + row.dot(q)).powi(2),
+            _ => {}
         }
     }
     energy

@@ -69,6 +69,7 @@ impl From<track::TrackError> for StudyError {
         match error {
             track::TrackError::Engine(e) => StudyError::Stepping(e),
             track::TrackError::Beam(e) => StudyError::Beam(e),
+            track::TrackError::Irregularity(e) => e.into(),
         }
     }
 }

@@ -11,6 +11,9 @@ pub enum TrackError {
     /// An error from the beam layer.
     #[error(transparent)]
     Beam(#[from] fem_beam::FemError),
+    /// A rail profile or wheel flat out of range.
+    #[error(transparent)]
+    Irregularity(#[from] irregularity::IrregularityError),
 }
 
 impl From<friction::FrictionError> for TrackError {

@@ -12,6 +12,7 @@ mod runs {
     mod span;
     mod steady_state;
     mod trains;
+    mod vehicles_in_runs;
     mod vehicles_on_beam;
     mod vehicles_on_ground;
 }

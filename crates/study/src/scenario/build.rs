@@ -199,7 +199,7 @@ impl Scenario {
             moving_window: i.moving_window,
         };
         Ok(RunSettings {
-            moving: MovingLoadSettings { speed, force: self.load.force, train, initial },
+            moving: MovingLoadSettings { speed, force: self.load.force, train, initial, vehicles: None },
             integration: IntegrationSettings {
                 theta: i.theta,
                 load_advance: i.load_advance,

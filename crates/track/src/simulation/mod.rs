@@ -11,23 +11,31 @@
 mod observers;
 mod results;
 mod settings;
+mod vehicles;
 
-pub use results::{Extreme, RunResult, SectionHistory, SolverStatistics, StepView, WindowExtremes};
+pub use results::{
+    BodyResult, Extreme, LossOfContact, RunResult, SectionHistory, SolverStatistics, StepView, VehicleResults,
+    WheelHistory, WheelResult, WindowExtremes,
+};
 pub(crate) use settings::counts_for_extremes;
 pub use settings::{InitialState, IntegrationSettings, MovingLoadSettings, RecordSettings, RunSettings};
+pub use vehicles::{IMPACT_WINDOW, LOSS_OF_CONTACT};
 
 use crate::error::Result;
 use crate::moving_load::MovingLoad;
 use crate::system::beam_system;
 use fem_beam::BeamModel;
+use fem_beam::Train;
 use fem_beam::element::hermite;
 use fem_beam::reference::InfiniteBeam;
 use fem_beam::section::Motion;
 use friction::InteractionSet;
 use nscd::solver::{SolverKind, SolverSettings};
 use nscd::stepper::{Integration, MoreauJean};
+use nscd::{Forcing, Interactions};
 use observers::{Buffers, InsideSection, NodalDeflections, Recorder, record};
 use std::time::Instant;
+use vehicles::Coupling;
 
 /// The coupling length ℓ = (EI·h²θ²/ρA)^¼ (m): sections closer than this are strongly coupled in one step.
 pub fn coupling_length(model: &BeamModel, step: f64, theta: f64) -> f64 {
@@ -35,17 +43,21 @@ pub fn coupling_length(model: &BeamModel, step: f64, theta: f64) -> f64 {
     (beam.bending_stiffness() * step * step * theta * theta / beam.mass_per_length()).powf(0.25)
 }
 
-/// Resolve [`SolverKind::Auto`]: projection when the sections are spaced wider than twice the coupling length,
+/// Resolve [`SolverKind::Auto`]: projection when the sections are spaced wider than twice the coupling length or
+/// vehicles run (`moving`: their wheel contacts change rows every step, which the interior point does not take),
 /// the banded interior point otherwise.
 pub fn resolve_solver(
     kind: SolverKind,
     model: &BeamModel,
     interactions: &InteractionSet,
-    step: f64,
-    theta: f64,
+    (step, theta): (f64, f64),
+    moving: bool,
 ) -> SolverKind {
     if kind != SolverKind::Auto {
         return kind;
+    }
+    if moving {
+        return SolverKind::Projection;
     }
     let mut x = interactions.positions().to_vec();
     x.sort_by(f64::total_cmp);
@@ -117,20 +129,63 @@ impl<'a> Simulation<'a> {
         let dofs = model.dofs();
         let h = settings.integration.load_advance / settings.moving.speed;
         let integration = Integration { theta: settings.integration.theta, step: h };
-        let system = beam_system(model);
-        let kind =
-            resolve_solver(settings.integration.solver.kind, model, self.interactions, h, settings.integration.theta);
+        let theta = settings.integration.theta;
+        let start = settings.start_position();
+        let coupling = match &settings.moving.vehicles {
+            Some(vehicles) => Some(Coupling::new(
+                model,
+                vehicles,
+                (start, settings.moving.speed),
+                theta,
+                settings.record.extremes_nodes,
+            )?),
+            None => None,
+        };
+        let moving = coupling.is_some();
+        let kind = resolve_solver(settings.integration.solver.kind, model, self.interactions, (h, theta), moving);
         // Coupling through M̂⁻¹ decays like e^{−x/(√2ℓ)}: 30ℓ leaves ~6e-10, and a window that fails the final
         // check is retried wider. Instruction counts over 1000 steps (1, 5, 10 kN/m): 30ℓ is 4–11 % below 40ℓ,
         // 20ℓ and 15ℓ no better than 30ℓ.
-        let margin = 30.0 * coupling_length(model, h, settings.integration.theta);
-        let (q0, v0) = self.initial_state()?;
-        let start = settings.start_position();
-        let load = MovingLoad::train(mesh, dofs, settings.moving.train(), settings.moving.speed, start);
+        let margin = 30.0 * coupling_length(model, h, theta);
+        // With vehicles the moving forces are none: the weights load the vehicles, the wheels the rail.
+        let train = if moving {
+            Train { name: String::new(), axles: Vec::new(), patches: Vec::new() }
+        } else {
+            settings.moving.train()
+        };
+        let load = MovingLoad::train(mesh, dofs, train, settings.moving.speed, start);
         let solver_settings = SolverSettings { kind, ..settings.integration.solver };
-        let interactions = self.interactions.clone();
-        let mut stepper =
-            MoreauJean::build(&system, interactions, integration, &solver_settings, Some(margin), q0, v0)?;
+        let (mut stepper, mut vehicle_observer, weights) = match coupling {
+            Some(c) => {
+                let interactions = Interactions { fixed: self.interactions.clone(), moving: c.contacts };
+                let stepper = MoreauJean::build(
+                    &c.system,
+                    interactions,
+                    integration,
+                    &solver_settings,
+                    Some(margin),
+                    c.q0,
+                    c.v0,
+                )?;
+                (stepper, Some(c.observer), Some(c.weights))
+            }
+            None => {
+                let (q0, v0) = self.initial_state()?;
+                let system = beam_system(model);
+                let interactions = self.interactions.clone();
+                (
+                    MoreauJean::build(&system, interactions, integration, &solver_settings, Some(margin), q0, v0)?,
+                    None,
+                    None,
+                )
+            }
+        };
+        let forcing: &dyn Forcing = match &weights {
+            Some(w) => w,
+            None => &load,
+        };
+        let nb = dofs.free_len();
+        let fixed = self.interactions.len();
 
         let t_on = settings.crossing_time(mesh.length);
         let crossing_steps = (t_on / h).round() as usize;
@@ -190,7 +245,7 @@ impl<'a> Simulation<'a> {
         let mut window =
             settings.record.extremes_window.map(|load_range| WindowExtremes { load_range, ..Default::default() });
         let in_window = |x_load: f64| settings.record.extremes_window.is_some_and(|(a, b)| (a..=b).contains(&x_load));
-        let scan = deflections.scan(stepper.q());
+        let scan = deflections.scan(&stepper.q()[..nb]);
         scan.update(&mut extremes, 0.0);
         if let Some(w) = window.as_mut().filter(|_| in_window(start)) {
             scan.update_window(w, 0.0);
@@ -198,9 +253,14 @@ impl<'a> Simulation<'a> {
         let mut norm_integral = 0.0;
         let mut previous_norm = scan.norm;
         let mut full = Buffers::new(dofs.full_len());
+        let mut q_full = vec![0.0; dofs.full_len()];
+        let mut wheel_loads: Vec<(usize, [f64; 4])> = Vec::new();
+        if let Some(observer) = vehicle_observer.as_mut() {
+            observer.reserve(total_steps);
+        }
         for r in &mut recorders {
-            full.expand(dofs, stepper.q(), stepper.v());
-            let m0 = self.moment_at_node(r.node, &full, &load, 0.0, None);
+            full.expand(dofs, &stepper.q()[..nb], &stepper.v()[..nb]);
+            let m0 = self.moment_at_node(r.node, &full, &load, 0.0, None, &[]);
             record(r, 0.0, start, full.motion_at(model, r.position)?, m0, 0.0);
         }
 
@@ -208,14 +268,14 @@ impl<'a> Simulation<'a> {
         let (mut iteration_sum, mut max_iterations, mut max_residual) = (0usize, 0usize, 0.0f64);
         let mut sections_sum = 0usize;
         for k in 1..=total_steps {
-            let report = stepper.step(&load)?;
+            let report = stepper.step(forcing)?;
             let keep_going = observer(&StepView {
                 step: k,
                 time: stepper.time,
                 load_position: load.position(stepper.time),
-                displacement: stepper.q(),
-                velocity: stepper.v(),
-                previous_velocity: stepper.previous_v(),
+                displacement: &stepper.q()[..nb],
+                velocity: &stepper.v()[..nb],
+                previous_velocity: &stepper.previous_v()[..nb],
                 impulses: &stepper.p,
                 section_velocities: &stepper.u,
                 law: stepper.law(),
@@ -226,7 +286,7 @@ impl<'a> Simulation<'a> {
             max_iterations = max_iterations.max(report.iterations);
             max_residual = max_residual.max(report.residual);
             let time = stepper.time;
-            let scan = deflections.scan(stepper.q());
+            let scan = deflections.scan(&stepper.q()[..nb]);
             scan.update(&mut extremes, time);
             let (a, x) = deflections.largest_acceleration(stepper.v(), stepper.previous_v(), h);
             if a > acceleration.magnitude {
@@ -239,12 +299,22 @@ impl<'a> Simulation<'a> {
                 norm_integral += 0.5 * (scan.norm + previous_norm) * h;
                 previous_norm = scan.norm;
             }
+            if let Some(observer) = vehicle_observer.as_mut() {
+                dofs.expand_into(&stepper.q()[..nb], &mut q_full);
+                let velocities = (stepper.v(), stepper.previous_v());
+                observer.observe(model, time, h, &stepper.p[fixed..], &q_full, velocities);
+                if !recorders.is_empty() {
+                    wheel_loads.clear();
+                    wheel_loads.extend(observer.element_loads(model, time, &stepper.p[fixed..], h));
+                }
+            }
             for r in &mut recorders {
                 // State after the step with the mean acceleration over it, the load where it now is, and the
                 // friction forces p/h of the step.
-                full.expand_step(dofs, stepper.q(), stepper.v(), stepper.previous_v(), h);
+                full.expand_step(dofs, &stepper.q()[..nb], &stepper.v()[..nb], &stepper.previous_v()[..nb], h);
                 let impulse = r.contact.map_or(0.0, |j| stepper.p[j]);
-                let moment = self.moment_at_node(r.node, &full, &load, time, Some((&stepper.p, h, &r.inside)));
+                let friction = Some((&stepper.p[..fixed], h, r.inside.as_slice()));
+                let moment = self.moment_at_node(r.node, &full, &load, time, friction, &wheel_loads);
                 record(r, time, load.position(time), full.motion_at(model, r.position)?, moment, impulse);
             }
             if !keep_going {
@@ -273,16 +343,17 @@ impl<'a> Simulation<'a> {
             },
             step: h,
             section_positions: self.interactions.positions().to_vec(),
-            final_displacement: stepper.q().to_vec(),
-            final_velocity: stepper.v().to_vec(),
+            final_displacement: stepper.q()[..nb].to_vec(),
+            final_velocity: stepper.v()[..nb].to_vec(),
+            vehicles: vehicle_observer.map(|o| o.finish(stepper.energy.contact_work, stepper.energy.spring_energy)),
         })
     }
 
     /// Bending moment at `node` (N·m) from the end forces of its adjacent elements
     /// ([`BeamModel::element_end_forces`], docs/theory.md §6), averaged over the (one or two) adjacent elements. The
     /// element loads are the moving load where it stands at `time` and the friction forces p_j/h of the sections
-    /// inside the element (`inside`, precomputed with their shape functions); sections on nodes act on w only and
-    /// leave the moments unchanged.
+    /// inside the element (`inside`, precomputed with their shape functions) and the wheels' contact forces
+    /// (`wheels`: element, nodal forces); sections on nodes act on w only and leave the moments unchanged.
     fn moment_at_node(
         &self,
         node: usize,
@@ -290,6 +361,7 @@ impl<'a> Simulation<'a> {
         load: &MovingLoad,
         time: f64,
         friction: Option<(&[f64], f64, &[InsideSection])>,
+        wheels: &[(usize, [f64; 4])],
     ) -> f64 {
         let model = self.model;
         let mesh = model.mesh();
@@ -303,6 +375,9 @@ impl<'a> Simulation<'a> {
             let mut external = [0.0; 4];
             for point in load.element_loads(time).filter(|p| p.element == e) {
                 (0..4).for_each(|k| external[k] += point.nodal[k]);
+            }
+            for (_, nodal) in wheels.iter().filter(|w| w.0 == e) {
+                (0..4).for_each(|k| external[k] += nodal[k]);
             }
             if let Some((p, h, inside)) = friction {
                 for section in inside.iter().filter(|s| s.element == e) {

@@ -131,4 +131,102 @@ pub struct RunResult {
     pub final_displacement: Vec<f64>,
     /// Final velocity of the free DOFs.
     pub final_velocity: Vec<f64>,
+    /// The vehicles' wheels and bodies, in a run with vehicles.
+    pub vehicles: Option<VehicleResults>,
+}
+
+/// A wheel's loss of contact with the rail: where and when it lifted off, where it landed, and the impact.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct LossOfContact {
+    /// Wheel position at the end of the first step without contact force (m).
+    pub lift_off_position: f64,
+    /// Time at the end of that step (s).
+    pub lift_off_time: f64,
+    /// Wheel position at the end of the first step with contact force again (m); None if still flying at the end.
+    pub landing_position: Option<f64>,
+    /// Time without contact (s), to the landing or to the end of the run.
+    pub duration: f64,
+    /// Largest contact force within [`crate::simulation::IMPACT_WINDOW`] of the landing (N).
+    pub impact_force: f64,
+}
+
+/// One wheel's contact force (docs/theory.md §12): the mean force of each step p/h (N, compressive positive).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct WheelHistory {
+    /// Time t_{k+1} (s).
+    pub time: Vec<f64>,
+    /// Wheel position at t_{k+1} (m).
+    pub position: Vec<f64>,
+    /// Contact force Q of the step (N).
+    pub force: Vec<f64>,
+    /// Rail deflection under the wheel at t_{k+1} (m, upward; 0 off the beam, where the rail is rigid ground).
+    pub rail_deflection: Vec<f64>,
+    /// Bending moment EI·w″ of the rail under the wheel (N·m, sagging positive; the element's cubic, whose w″ jumps
+    /// at nodes: docs/theory.md §12).
+    pub moment: Vec<f64>,
+}
+
+/// What a run reports of one wheel.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct WheelResult {
+    /// Its vehicle (index).
+    pub vehicle: usize,
+    /// Its index within the vehicle.
+    pub wheel: usize,
+    /// Offset behind the first wheel (m).
+    pub offset: f64,
+    /// Static wheel load Q₀ (N).
+    pub static_force: f64,
+    /// Smallest contact force (N; 0 when the wheel lost contact).
+    pub min_force: f64,
+    /// Largest contact force (N).
+    pub max_force: f64,
+    /// Largest downward rail deflection under the wheel (m).
+    pub max_rail_deflection: f64,
+    /// Largest |bending moment| of the rail under the wheel (N·m).
+    pub max_moment: f64,
+    /// The losses of contact, in order.
+    pub losses: Vec<LossOfContact>,
+    /// Step by step.
+    pub history: WheelHistory,
+}
+
+impl WheelResult {
+    /// max |Q − Q₀|/Q₀ over the run: the dynamic wheel-load factor ΔQ/Q₀.
+    pub fn dynamic_increment(&self) -> f64 {
+        (self.max_force - self.static_force).max(self.static_force - self.min_force) / self.static_force
+    }
+
+    /// Total time without contact (s).
+    pub fn time_off_rail(&self) -> f64 {
+        self.losses.iter().map(|l| l.duration).sum()
+    }
+}
+
+/// What a run reports of one vehicle's body (its DOF 0).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct BodyResult {
+    /// The vehicle's name.
+    pub name: String,
+    /// Largest |acceleration| (m/s², the step's mean (v_{k+1} − v_k)/h).
+    pub max_acceleration: f64,
+    /// RMS acceleration over the run (m/s²): comfort.
+    pub rms_acceleration: f64,
+    /// Time over which the RMS is taken (s).
+    pub duration: f64,
+}
+
+/// The vehicles' part of a run.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct VehicleResults {
+    /// Every wheel, vehicle by vehicle.
+    pub wheels: Vec<WheelResult>,
+    /// Every vehicle's body.
+    pub bodies: Vec<BodyResult>,
+    /// Work of the contact forces on beam and vehicles Σ U_θᵀp (J), U without the rheonomic part: a wheel rolling
+    /// onto a deflecting rail does work on it through the traction that keeps its speed (the convective v·w′ of the
+    /// gap), so this is not a loss (docs/theory.md §12).
+    pub contact_work: f64,
+    /// Energy in the contact springs at the end (J).
+    pub spring_energy: f64,
 }

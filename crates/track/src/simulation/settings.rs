@@ -3,8 +3,9 @@
 //! anything is allocated.
 
 use crate::error::{Result, invalid};
+use crate::vehicle::consist::{MAX_CONTACT_STEP, VehicleSettings};
 use fem_beam::{BeamModel, Train};
-use nscd::solver::SolverSettings;
+use nscd::solver::{SolverKind, SolverSettings};
 use nscd::stepper::Integration;
 
 /// How the run starts.
@@ -32,11 +33,14 @@ pub struct MovingLoadSettings {
     pub train: Option<Train>,
     /// Initial state (and with it the first axle's start position). Default rest, the load entering at x = 0.
     pub initial: InitialState,
+    /// Vehicles instead of moving forces (docs/theory.md §12): they carry the load with their weights, `force`
+    /// and `train` are not used. Default none.
+    pub vehicles: Option<VehicleSettings>,
 }
 
 impl Default for MovingLoadSettings {
     fn default() -> Self {
-        Self { speed: 200.0, force: 83.4e3, train: None, initial: InitialState::Rest }
+        Self { speed: 200.0, force: 83.4e3, train: None, initial: InitialState::Rest, vehicles: None }
     }
 }
 
@@ -46,9 +50,13 @@ impl MovingLoadSettings {
         self.train.clone().unwrap_or_else(|| Train::single(self.force))
     }
 
-    /// The train's length behind its first axle (m; 0 for a single load).
+    /// The train's length behind its first axle (m; 0 for a single load), or the vehicles' from the first wheel to
+    /// the last.
     pub fn train_length(&self) -> f64 {
-        self.train.as_ref().map_or(0.0, Train::length)
+        match &self.vehicles {
+            Some(vehicles) => vehicles.length(),
+            None => self.train.as_ref().map_or(0.0, Train::length),
+        }
     }
 }
 
@@ -119,6 +127,24 @@ impl RunSettings {
         if let Some(train) = &self.moving.train {
             train.validate()?;
         }
+        if let Some(vehicles) = &self.moving.vehicles {
+            vehicles.validate()?;
+            if self.integration.solver.kind == SolverKind::InteriorPoint {
+                return Err(invalid(
+                    "solver",
+                    0.0,
+                    "the interior point takes fixed interactions only: runs with vehicles need projection, clarabel \
+                     or auto",
+                ));
+            }
+            if let InitialState::SteadyState { position } = self.moving.initial {
+                return Err(invalid(
+                    "initial.position",
+                    position,
+                    "vehicles start at rest in static equilibrium: no steady-state start",
+                ));
+            }
+        }
         let l = model.mesh().element_length();
         if !(self.integration.load_advance.is_finite()
             && self.integration.load_advance > 0.0
@@ -132,6 +158,22 @@ impl RunSettings {
         }
         Integration { theta: self.integration.theta, step: self.integration.load_advance / self.moving.speed }
             .validate()?;
+        if let Some(vehicles) = &self.moving.vehicles {
+            let omega = vehicles.contact_frequency()?;
+            let largest = MAX_CONTACT_STEP / omega * self.moving.speed;
+            if omega * self.integration.load_advance / self.moving.speed > MAX_CONTACT_STEP {
+                return Err(invalid(
+                    "load_advance",
+                    self.integration.load_advance,
+                    format!(
+                        "must be ≤ {largest:.4} m at {} m/s with these vehicles: the wheel–rail contact mode at {:.0} Hz \
+                         needs at least π steps per period",
+                        self.moving.speed,
+                        omega / std::f64::consts::TAU
+                    ),
+                ));
+            }
+        }
         if !(self.integration.solver.tolerance.is_finite()
             && self.integration.solver.tolerance > 0.0
             && self.integration.solver.tolerance <= 1e-2)
@@ -190,13 +232,15 @@ impl RunSettings {
                 None => Err(invalid("load_advance", self.integration.load_advance, allowed)),
             };
         }
-        let samples = (steps + 1.0) * self.record.sections.len() as f64;
+        let wheels = self.moving.vehicles.as_ref().map_or(0, |v| v.wheels().count());
+        let samples = (steps + 1.0) * (self.record.sections.len() + wheels) as f64;
         if samples > Self::MAX_RECORDED_SAMPLES as f64 {
             return Err(invalid(
                 "record_sections",
                 self.record.sections.len() as f64,
                 format!(
-                    "{} sections × {steps:.3e} steps exceed {} recorded samples; record fewer sections",
+                    "{} sections and {wheels} wheels × {steps:.3e} steps exceed {} recorded samples; record fewer \
+                     sections or run fewer vehicles",
                     self.record.sections.len(),
                     Self::MAX_RECORDED_SAMPLES
                 ),

@@ -7,6 +7,7 @@
 //! [`ground`] rolls wheels over rigid ground with a rail profile r(x), [`rail`] along the beam (compliant contact).
 
 pub mod builtin;
+pub mod consist;
 pub mod ground;
 pub mod rail;
 

@@ -1,0 +1,270 @@
+//! Vehicles in a run (docs/theory.md §12): the beam and the vehicles as one system (the beam's block first, so the
+//! friction sections' rows keep their DOFs), a compliant wheel–rail interaction per wheel after the friction
+//! sections, the weights as a constant force, the vehicles' start in static equilibrium on the undeformed rail, and
+//! what is observed of each wheel and body after every step.
+
+use super::counts_for_extremes;
+use super::results::{BodyResult, LossOfContact, VehicleResults, WheelResult};
+use crate::error::Result;
+use crate::system::beam_system;
+use crate::vehicle::consist::{RunWheel, VehicleSettings};
+use crate::vehicle::rail::WheelOnBeam;
+use fem_beam::BeamModel;
+use nscd::forcing::Constant;
+use nscd::{LinearSystem, MovingInteraction};
+
+/// A wheel counts as off the rail when its mean contact force of a step is below this fraction of its static load:
+/// the projection solver puts a separating contact's impulse at exactly 0; the interior point and Clarabel leave
+/// ~1e-9 of it.
+pub const LOSS_OF_CONTACT: f64 = 1e-6;
+
+/// How long after landing the impact force is looked for (s): the P1 (~0.5 ms) and P2 (~5 ms, the wheel bouncing on
+/// the rail's contact stiffness) forces of a wheel–rail impact both fall inside it.
+pub const IMPACT_WINDOW: f64 = 0.01;
+
+/// The coupled system of the beam and the vehicles, and how it starts.
+pub(super) struct Coupling {
+    /// M, C, K of beam and vehicles.
+    pub(super) system: LinearSystem,
+    /// One wheel–rail interaction per wheel, in [`VehicleSettings::wheels`] order.
+    pub(super) contacts: Vec<Box<dyn MovingInteraction>>,
+    /// The vehicles' weights over the whole system (zero on the beam).
+    pub(super) weights: Constant,
+    /// Initial displacement and velocity of the whole system (the beam's part at rest).
+    pub(super) q0: Vec<f64>,
+    pub(super) v0: Vec<f64>,
+    /// What is observed.
+    pub(super) observer: VehicleObserver,
+}
+
+impl Coupling {
+    /// Couple `vehicles` to the beam of `model`: the first wheel at `start` (m) at t = 0, every wheel rolling at
+    /// `speed` (m/s), integrated with `theta`. The vehicles start in static equilibrium with each
+    /// wheel on the rail's profile under it, pressed into the contact by its static load (two passes: the heights
+    /// less the penetrations of the first pass's loads; exact for vehicles whose wheel loads do not depend on the
+    /// wheels' heights, such as every vehicle with one wheel).
+    pub(super) fn new(
+        model: &BeamModel,
+        vehicles: &VehicleSettings,
+        (start, speed): (f64, f64),
+        theta: f64,
+        region: Option<(f64, f64)>,
+    ) -> Result<Self> {
+        let blocks: Vec<LinearSystem> = vehicles.vehicles.iter().map(|p| p.vehicle.system()).collect();
+        let beam = beam_system(model);
+        let all: Vec<&LinearSystem> = std::iter::once(&beam).chain(&blocks).collect();
+        let (system, layout) = LinearSystem::from_blocks(&all);
+        let n = system.dofs();
+        let lead = vehicles.lead();
+        let wheels: Vec<RunWheel> = vehicles.wheels().collect();
+        let place = |w: &RunWheel| start - (w.offset - lead);
+        let (mut q0, mut weight) = (vec![0.0; n], vec![0.0; n]);
+        let mut static_forces = vec![0.0; wheels.len()];
+        let mut first = 0;
+        for (v, placed) in vehicles.vehicles.iter().enumerate() {
+            let vehicle = &placed.vehicle;
+            let count = vehicle.wheels.len();
+            let run = &wheels[first..first + count];
+            let heights: Vec<f64> =
+                run.iter().enumerate().map(|(i, w)| vehicles.track(first + i).height_slope(place(w), 0.0).0).collect();
+            let (_, forces) = vehicle.static_state(&heights)?;
+            let contact = vehicles.contact;
+            let pressed: Vec<f64> =
+                heights.iter().zip(&forces).map(|(h, f)| h - contact.static_penetration(*f)).collect();
+            let (x, forces) = vehicle.static_state(&pressed)?;
+            let offset = layout.offset(v + 1);
+            q0[offset..offset + vehicle.dofs()].copy_from_slice(&x);
+            weight[offset..offset + vehicle.dofs()].copy_from_slice(&vehicle.weight);
+            static_forces[first..first + count].copy_from_slice(&forces);
+            first += count;
+        }
+        let mut contacts: Vec<Box<dyn MovingInteraction>> = Vec::with_capacity(wheels.len());
+        let mut system_dofs = Vec::with_capacity(wheels.len());
+        for (i, w) in wheels.iter().enumerate() {
+            let dof = layout.dof(w.vehicle + 1, w.dof);
+            let track = vehicles.track(i);
+            let contact = WheelOnBeam::new(model, (0, dof), (place(w), speed), track, vehicles.contact, theta)?;
+            contacts.push(Box::new(contact));
+            system_dofs.push(dof);
+        }
+        let bodies = (0..vehicles.vehicles.len()).map(|v| layout.dof(v + 1, 0)).collect();
+        let observer = VehicleObserver::new(
+            vehicles,
+            &wheels,
+            static_forces,
+            (start, speed, lead),
+            bodies,
+            (region, model.mesh().length),
+        );
+        Ok(Self { system, contacts, weights: Constant { force: weight }, q0, v0: vec![0.0; n], observer })
+    }
+}
+
+/// Per wheel and per body, what every step adds.
+pub(super) struct VehicleObserver {
+    wheels: Vec<WheelResult>,
+    /// Where each wheel is at t = 0 (m).
+    starts: Vec<f64>,
+    speed: f64,
+    /// The body DOF (DOF 0) of each vehicle in the system, its largest |acceleration| and Σ a²·h.
+    bodies: Vec<usize>,
+    body_results: Vec<BodyResult>,
+    body_square_integral: Vec<f64>,
+    /// Index of each wheel's ongoing loss of contact in its `losses`, if flying.
+    flying: Vec<Option<usize>>,
+    /// The wheels' extremes and losses of contact count while they are inside this range (m), with the beam's
+    /// length for the slack ([`crate::RecordSettings::extremes_nodes`]): away from the ends, where a wheel passes
+    /// from the rail onto rigid ground over a pinned support's slope.
+    region: (Option<(f64, f64)>, f64),
+}
+
+impl VehicleObserver {
+    fn new(
+        vehicles: &VehicleSettings,
+        wheels: &[RunWheel],
+        static_forces: Vec<f64>,
+        (start, speed, lead): (f64, f64, f64),
+        bodies: Vec<usize>,
+        region: (Option<(f64, f64)>, f64),
+    ) -> Self {
+        let results = wheels
+            .iter()
+            .zip(&static_forces)
+            .map(|(w, &q0)| WheelResult {
+                vehicle: w.vehicle,
+                wheel: w.index,
+                offset: w.offset - lead,
+                static_force: q0,
+                min_force: f64::INFINITY,
+                max_force: f64::NEG_INFINITY,
+                ..WheelResult::default()
+            })
+            .collect();
+        let body_results = vehicles
+            .vehicles
+            .iter()
+            .map(|p| BodyResult { name: p.vehicle.name.clone(), ..BodyResult::default() })
+            .collect();
+        Self {
+            wheels: results,
+            starts: wheels.iter().map(|w| start - (w.offset - lead)).collect(),
+            speed,
+            body_square_integral: vec![0.0; bodies.len()],
+            bodies,
+            body_results,
+            flying: vec![None; wheels.len()],
+            region,
+        }
+    }
+
+    /// Reserve the histories for `steps` more entries.
+    pub(super) fn reserve(&mut self, steps: usize) {
+        for w in &mut self.wheels {
+            let h = &mut w.history;
+            for series in [&mut h.time, &mut h.position, &mut h.force, &mut h.rail_deflection, &mut h.moment] {
+                series.reserve(steps);
+            }
+        }
+    }
+
+    /// Where wheel `i` is at `time` (m).
+    pub(super) fn position(&self, i: usize, time: f64) -> f64 {
+        self.starts[i] + self.speed * time
+    }
+
+    /// The wheels' element loads at `time` from their impulses `p` of a step `h` (the contact forces −p/h·Ψ on the
+    /// rail), for the moments at recorded nodes: (element, nodal forces) of each wheel on the beam.
+    pub(super) fn element_loads<'a>(
+        &'a self,
+        model: &BeamModel,
+        time: f64,
+        impulses: &'a [f64],
+        h: f64,
+    ) -> impl Iterator<Item = (usize, [f64; 4])> + 'a {
+        let mesh = *model.mesh();
+        let l = mesh.element_length();
+        impulses.iter().enumerate().filter_map(move |(i, &p)| {
+            let point = mesh.locate(self.position(i, time)).ok()?;
+            let n = fem_beam::element::hermite::shape(point.xi, l);
+            Some((point.element, n.map(|n| -p / h * n)))
+        })
+    }
+
+    /// Book step k → k+1 ending at `time`: the wheels' impulses `p` (N·s) of the step `h`, the full beam
+    /// displacement `q_full`, and the system's velocities before and after.
+    pub(super) fn observe(
+        &mut self,
+        model: &BeamModel,
+        time: f64,
+        h: f64,
+        impulses: &[f64],
+        q_full: &[f64],
+        (v, v_prev): (&[f64], &[f64]),
+    ) {
+        for (i, &p) in impulses.iter().enumerate() {
+            let x = self.position(i, time);
+            let force = p / h;
+            let (deflection, moment) = match (model.deflection_at(q_full, x), model.interpolated_moment(q_full, x)) {
+                (Ok(w), Ok(m)) => (w, m),
+                // Off the beam the rail is rigid ground.
+                _ => (0.0, 0.0),
+            };
+            let w = &mut self.wheels[i];
+            let history = &mut w.history;
+            history.time.push(time);
+            history.position.push(x);
+            history.force.push(force);
+            history.rail_deflection.push(deflection);
+            history.moment.push(moment);
+            if !counts_for_extremes(self.region.0, x, self.region.1) {
+                continue;
+            }
+            w.min_force = w.min_force.min(force);
+            w.max_force = w.max_force.max(force);
+            w.max_rail_deflection = w.max_rail_deflection.max(-deflection);
+            w.max_moment = w.max_moment.max(moment.abs());
+            let off = force < LOSS_OF_CONTACT * w.static_force;
+            match (self.flying[i], off) {
+                (None, true) => {
+                    self.flying[i] = Some(w.losses.len());
+                    w.losses.push(LossOfContact { lift_off_position: x, lift_off_time: time, ..Default::default() });
+                }
+                (Some(k), false) => {
+                    let loss = &mut w.losses[k];
+                    loss.landing_position = Some(x);
+                    loss.duration = time - loss.lift_off_time;
+                    loss.impact_force = force;
+                    self.flying[i] = None;
+                }
+                (Some(k), true) => w.losses[k].duration = time - w.losses[k].lift_off_time,
+                (None, false) => {
+                    if let Some(loss) = w.losses.last_mut()
+                        && let Some(landing) = loss.landing_position
+                        && (x - landing) <= IMPACT_WINDOW * self.speed
+                    {
+                        loss.impact_force = loss.impact_force.max(force);
+                    }
+                }
+            }
+        }
+        for (b, &dof) in self.bodies.iter().enumerate() {
+            let a = (v[dof] - v_prev[dof]) / h;
+            let body = &mut self.body_results[b];
+            body.max_acceleration = body.max_acceleration.max(a.abs());
+            self.body_square_integral[b] += a * a * h;
+            body.duration += h;
+        }
+    }
+
+    /// The results (a wheel that never was inside the region has no extremes: 0), with the run's ledger terms of the contacts: `contact_work` (J, Σ U_θᵀp over the wheels) and the
+    /// springs' energy now (J).
+    pub(super) fn finish(mut self, contact_work: f64, spring_energy: f64) -> VehicleResults {
+        for (result, integral) in self.body_results.iter_mut().zip(&self.body_square_integral) {
+            result.rms_acceleration = if result.duration > 0.0 { (integral / result.duration).sqrt() } else { 0.0 };
+        }
+        for w in self.wheels.iter_mut().filter(|w| w.min_force > w.max_force) {
+            (w.min_force, w.max_force) = (0.0, 0.0);
+        }
+        VehicleResults { wheels: self.wheels, bodies: self.body_results, contact_work, spring_energy }
+    }
+}

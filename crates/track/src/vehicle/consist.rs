@@ -1,0 +1,285 @@
+//! Vehicles on the rail together (docs/theory.md §12): a row of vehicles at offsets behind the first, their
+//! wheel–rail contact, the rail's profile and the wheels' flats — what a run needs to couple them to the beam. A
+//! train's axle layout can be populated with copies of one vehicle scaled to each axle's load.
+
+use super::Vehicle;
+use crate::error::{Result, invalid};
+use fem_beam::Train;
+use irregularity::{Profile, WheelFlat, WheelTrack};
+
+/// Largest number of vehicles in one run (each adds a dense block and a moving interaction per wheel).
+pub const MAX_VEHICLES: usize = 1_000;
+
+/// Largest ω_c·h a run with vehicles may take, ω_c = √(k_t/m_w) the stiffest wheel's contact mode (its tangent
+/// contact stiffness at its static load over its own mass): at least π steps per period. The θ-method keeps an
+/// unresolved mode bounded but not still — a wheel re-excited by its moving row every step rings at the step's
+/// rate: measured on the reference track at 10 m/s, two quarter cars 2.5 m apart kept their wheel forces within
+/// ±4 % of static at ω_c·h = 1.2 and 2.4, and swung ±80 % at 6.1 and ±30 % at 12.
+pub const MAX_CONTACT_STEP: f64 = 2.0;
+
+/// A vehicle and where it runs: `offset` (m) behind the first vehicle's reference point.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlacedVehicle {
+    /// The vehicle.
+    pub vehicle: Vehicle,
+    /// Offset of its reference point behind the first vehicle's (m), ≥ 0.
+    pub offset: f64,
+}
+
+/// A wheel flat on one wheel of the run.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FlatWheel {
+    /// Which wheel, counted over the vehicles in order and each vehicle's wheels in order (0-based).
+    pub wheel: usize,
+    /// The flat.
+    pub flat: WheelFlat,
+}
+
+/// The vehicles of a run, their contact with the rail and the rail's irregularity. Default: one quarter car
+/// ([`super::builtin::QuarterCar`]) on a smooth rail, Hertz contact ([`WheelRail::default`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct VehicleSettings {
+    /// The vehicles, the first at offset 0.
+    pub vehicles: Vec<PlacedVehicle>,
+    /// The wheel–rail contact law.
+    pub contact: WheelRail,
+    /// The rail's profile r(x) (m, upward), the same under every wheel.
+    pub profile: Profile,
+    /// Wheel flats.
+    pub flats: Vec<FlatWheel>,
+}
+
+impl Default for VehicleSettings {
+    fn default() -> Self {
+        let car = super::builtin::QuarterCar::default().vehicle().expect("the default quarter car is valid");
+        Self {
+            vehicles: vec![PlacedVehicle { vehicle: car, offset: 0.0 }],
+            contact: WheelRail::default(),
+            profile: Profile::Smooth,
+            flats: Vec::new(),
+        }
+    }
+}
+
+/// A wheel of the run: its vehicle, its index in the vehicle, its DOF there, and its offset behind the first
+/// vehicle's reference point (m).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RunWheel {
+    /// Vehicle index.
+    pub vehicle: usize,
+    /// Wheel index within the vehicle.
+    pub index: usize,
+    /// DOF within the vehicle.
+    pub dof: usize,
+    /// Offset behind the first vehicle's reference point (m).
+    pub offset: f64,
+}
+
+impl VehicleSettings {
+    /// One vehicle at offset 0, the other settings at their defaults.
+    pub fn single(vehicle: Vehicle) -> Self {
+        Self { vehicles: vec![PlacedVehicle { vehicle, offset: 0.0 }], ..Self::default() }
+    }
+
+    /// A copy of `template` on every axle of `train` (at the axle's offset), each scaled so that its weight is the
+    /// axle's force: M, C, K and f_g times P_i/W, which keeps every natural frequency and damping ratio. The
+    /// template's wheels all run at the axle (their offsets are dropped); patches have no vehicle and are refused.
+    pub fn populate(template: &Vehicle, train: &Train) -> Result<Self> {
+        template.validate()?;
+        if !train.patches.is_empty() {
+            return Err(invalid("vehicle.train", train.patches.len() as f64, "load patches cannot carry vehicles"));
+        }
+        let weight = -template.weight.iter().sum::<f64>();
+        if weight.is_nan() || weight <= 0.0 {
+            return Err(invalid("vehicle.weight", weight, "must press the rail (total weight > 0 N) to scale"));
+        }
+        let vehicles = train
+            .axles
+            .iter()
+            .map(|axle| {
+                let s = axle.force / weight;
+                let scale = |m: &[f64]| m.iter().map(|x| x * s).collect::<Vec<_>>();
+                let mut vehicle = Vehicle {
+                    name: template.name.clone(),
+                    mass: scale(&template.mass),
+                    damping: scale(&template.damping),
+                    stiffness: scale(&template.stiffness),
+                    weight: scale(&template.weight),
+                    wheels: template.wheels.clone(),
+                };
+                vehicle.wheels.iter_mut().for_each(|w| w.offset = 0.0);
+                PlacedVehicle { vehicle, offset: axle.offset }
+            })
+            .collect();
+        Ok(Self { vehicles, ..Self::default() })
+    }
+
+    /// Check counts first, then each vehicle, the contact, the profile and the flats.
+    pub fn validate(&self) -> Result<()> {
+        if self.vehicles.is_empty() || self.vehicles.len() > MAX_VEHICLES {
+            return Err(invalid(
+                "vehicle.count",
+                self.vehicles.len() as f64,
+                format!("must lie in 1 … {MAX_VEHICLES}"),
+            ));
+        }
+        for placed in &self.vehicles {
+            placed.vehicle.validate()?;
+            if !(placed.offset.is_finite() && placed.offset >= 0.0) {
+                return Err(invalid("vehicle.offset", placed.offset, "must be finite and ≥ 0 (m)"));
+            }
+        }
+        self.contact.validate()?;
+        self.profile.validate("rail")?;
+        let wheels = self.wheels().count();
+        for f in &self.flats {
+            if f.wheel >= wheels {
+                return Err(invalid("vehicle.flat.wheel", f.wheel as f64, format!("must be a wheel index < {wheels}")));
+            }
+            f.flat.validate("vehicle.flat")?;
+        }
+        Ok(())
+    }
+
+    /// Every wheel of the run, vehicle by vehicle.
+    pub fn wheels(&self) -> impl Iterator<Item = RunWheel> + '_ {
+        self.vehicles.iter().enumerate().flat_map(|(vehicle, placed)| {
+            placed.vehicle.wheels.iter().enumerate().map(move |(index, w)| RunWheel {
+                vehicle,
+                index,
+                dof: w.dof,
+                offset: placed.offset + w.offset,
+            })
+        })
+    }
+
+    /// The distance from the first wheel to the last (m): what must cross the beam after the first wheel.
+    pub fn length(&self) -> f64 {
+        let offsets = self.wheels().map(|w| w.offset);
+        let (lo, hi) = offsets.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| (a.min(x), b.max(x)));
+        if hi >= lo { hi - lo } else { 0.0 }
+    }
+
+    /// The offset of the foremost wheel behind the first vehicle's reference point (m).
+    pub fn lead(&self) -> f64 {
+        self.wheels().map(|w| w.offset).fold(f64::INFINITY, f64::min)
+    }
+
+    /// Total weight (N, downward positive).
+    pub fn weight(&self) -> f64 {
+        -self.vehicles.iter().flat_map(|p| &p.vehicle.weight).sum::<f64>()
+    }
+
+    /// What wheel `wheel` (run index) follows: the rail's profile and its flat, if any.
+    pub fn track(&self, wheel: usize) -> WheelTrack {
+        let flat = self.flats.iter().find(|f| f.wheel == wheel).map(|f| f.flat);
+        WheelTrack { rail: self.profile.clone(), flat }
+    }
+
+    /// ω_c (rad/s) of the stiffest wheel–rail contact mode: max over the wheels with mass of √(k_t/m_w), k_t the
+    /// contact's tangent stiffness at the wheel's static load on a level rail, m_w the wheel DOF's mass (a massless
+    /// wheel's contact mode is the rail's, not checked here). 0 if no wheel has mass.
+    pub fn contact_frequency(&self) -> Result<f64> {
+        let mut largest = 0.0f64;
+        for placed in &self.vehicles {
+            let v = &placed.vehicle;
+            let (_, forces) = v.static_state(&vec![0.0; v.wheels.len()])?;
+            for (w, force) in v.wheels.iter().zip(forces) {
+                let mass = v.mass[w.dof * v.dofs() + w.dof];
+                if mass > 0.0 {
+                    largest = largest.max((self.contact.tangent_stiffness(force) / mass).sqrt());
+                }
+            }
+        }
+        Ok(largest)
+    }
+
+    /// The number of DOFs of all vehicles.
+    pub fn dofs(&self) -> usize {
+        self.vehicles.iter().map(|p| p.vehicle.dofs()).sum()
+    }
+}
+
+/// The wheel–rail contact law (docs/theory.md §9, §12), the same for every wheel of a run. Default: Hertz with
+/// C_H = 8.6e10 N/m^1.5 ([`WheelRail::hertz_for_radius`] of a 0.46 m wheel).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum WheelRail {
+    /// Hertz's law λ = C_H⟨δ⟩₊^{3/2} (unilateral), solved by Newton iterations within each step.
+    Hertz {
+        /// C_H (N/m^1.5) > 0.
+        coefficient: f64,
+    },
+    /// A linear spring k_c in series with a unilateral stop: λ = k_c⟨δ⟩₊.
+    Linear {
+        /// k_c (N/m) > 0.
+        stiffness: f64,
+    },
+    /// The wheel glued to the rail by a linear spring that also pulls (λ = k_c δ of either sign): the bilateral
+    /// reference a unilateral contact equals while it presses.
+    Glued {
+        /// k_c (N/m) > 0.
+        stiffness: f64,
+    },
+}
+
+impl Default for WheelRail {
+    fn default() -> Self {
+        Self::hertz_for_radius(0.46)
+    }
+}
+
+impl WheelRail {
+    /// Hertz's coefficient of a wheel of `radius` (m) on a rail by Zhai's fit G = 4.57·R^−0.149·10⁻⁸ m/N^{2/3}
+    /// (Zhai, Vehicle–Track Coupled Dynamics, 2020, §2.4), C_H = G^{−3/2}: 8.6e10 N/m^1.5 at R = 0.46 m.
+    pub fn hertz_for_radius(radius: f64) -> Self {
+        let g = 4.57 * radius.powf(-0.149) * 1e-8;
+        Self::Hertz { coefficient: g.powf(-1.5) }
+    }
+
+    /// Check the parameter, named by its field.
+    pub fn validate(&self) -> Result<()> {
+        let (field, value) = match *self {
+            Self::Hertz { coefficient } => ("vehicle.hertz_coefficient", coefficient),
+            Self::Linear { stiffness } | Self::Glued { stiffness } => ("vehicle.contact_stiffness", stiffness),
+        };
+        if !(value.is_finite() && value > 0.0) {
+            let unit = if matches!(self, Self::Hertz { .. }) { "N/m^1.5" } else { "N/m" };
+            return Err(invalid(field, value, format!("must be finite and > 0 ({unit})")));
+        }
+        Ok(())
+    }
+
+    /// The engine's law of this contact (gap field 0: a wheel's gap is set every step).
+    pub fn law(&self) -> friction::Law {
+        match *self {
+            Self::Hertz { coefficient } => friction::Law::Hertz { gap: 0.0, coefficient },
+            Self::Linear { stiffness } => friction::Law::Compliant { gap: 0.0, stiffness },
+            Self::Glued { stiffness } => friction::Law::Spring { gap: 0.0, stiffness },
+        }
+    }
+
+    /// The penetration δ (m) that carries a static wheel load `force` (N): (Q/C_H)^{2/3} or Q/k_c.
+    pub fn static_penetration(&self, force: f64) -> f64 {
+        match *self {
+            Self::Hertz { coefficient } => (force.max(0.0) / coefficient).powf(2.0 / 3.0),
+            Self::Linear { stiffness } | Self::Glued { stiffness } => force / stiffness,
+        }
+    }
+
+    /// The tangent stiffness dλ/dδ (N/m) at a wheel load `force` (N): (3/2)C_H^{2/3}Q^{1/3}, or k_c.
+    pub fn tangent_stiffness(&self, force: f64) -> f64 {
+        match *self {
+            Self::Hertz { coefficient } => 1.5 * coefficient.powf(2.0 / 3.0) * force.max(0.0).cbrt(),
+            Self::Linear { stiffness } | Self::Glued { stiffness } => stiffness,
+        }
+    }
+
+    /// The law's name for reports: `hertz`, `linear` or `glued`.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Self::Hertz { .. } => "hertz",
+            Self::Linear { .. } => "linear",
+            Self::Glued { .. } => "glued",
+        }
+    }
+}
