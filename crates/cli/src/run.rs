@@ -1,7 +1,9 @@
 //! `frictrack run`: one Moreau–Jean simulation of a scenario (default: the reference case of docs/theory.md §2) with flags
 //! overriding it; prints the key inputs, the whole-run extremes and the extremes while the load is in the middle
-//! third (or `--extremes-window`), energies, solver statistics and wall time. With `--out DIR` it also writes
-//! `summary.json`, `histories.csv`, `snapshots.csv` and their figures ([`study::run_output`]).
+//! third (or `--extremes-window`), energies, solver statistics and wall time; with vehicles, their wheel forces,
+//! losses of contact and body accelerations. With `--out DIR` it also writes `summary.json`, `histories.csv`,
+//! `snapshots.csv` and their figures ([`study::run_output`]), and with vehicles `wheels.csv` and its figure
+//! ([`study::vehicle_output`]).
 
 use crate::Format;
 use crate::files::{check_output_file, prepare_output_folder, write_atomically};
@@ -93,6 +95,8 @@ pub struct RunReport {
     mean_sections_solved: f64,
     solver: String,
     wall_time: f64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    vehicles: Option<study::vehicle_output::VehicleReport>,
 }
 
 /// Execute `frictrack run`.
@@ -115,7 +119,9 @@ pub fn run(args: &RunArgs) -> Result<()> {
         prepare_output_folder("--out", out)?;
         let figures = study::run_output::FIGURE_STEMS.iter().flat_map(|f| [format!("{f}.png"), format!("{f}.svg")]);
         let files = ["summary.json", "histories.csv", "snapshots.csv"].map(String::from).into_iter();
-        for name in files.chain(figures) {
+        let wheel_files = ["wheels.csv", "wheel-forces.png", "wheel-forces.svg"].map(String::from).into_iter();
+        let wheel_files = wheel_files.filter(|_| case.settings.moving.vehicles.is_some());
+        for name in files.chain(figures).chain(wheel_files) {
             check_output_file("--out", &out.join(name))?;
         }
     }
@@ -136,7 +142,8 @@ pub fn run(args: &RunArgs) -> Result<()> {
     if let Some(out) = &args.out {
         write_outputs(out, &scenario, &report, &result, &snapshots)?;
         if args.format == Format::Text {
-            println!("  wrote {}/summary.json, histories.csv, snapshots.csv and figures", out.display());
+            let wheels = if result.vehicles.is_some() { ", wheels.csv" } else { "" };
+            println!("  wrote {}/summary.json, histories.csv, snapshots.csv{wheels} and figures", out.display());
         }
     }
     Ok(())
@@ -160,12 +167,16 @@ fn write_outputs(
             SnapshotAt::LoadPosition(x) => format!("load at {x} m"),
         })
         .collect();
+    let mut files = serde_json::json!({
+        "histories.csv": { "columns": columns(&HISTORY_COLUMNS), "sections": scenario.output.sections },
+        "snapshots.csv": { "columns": columns(&SNAPSHOT_COLUMNS), "requested": requested },
+    });
+    if result.vehicles.is_some() {
+        files["wheels.csv"] = serde_json::json!({ "columns": columns(&study::vehicle_output::WHEEL_COLUMNS) });
+    }
     let summary = serde_json::json!({
         "report": report,
-        "files": {
-            "histories.csv": { "columns": columns(&HISTORY_COLUMNS), "sections": scenario.output.sections },
-            "snapshots.csv": { "columns": columns(&SNAPSHOT_COLUMNS), "requested": requested },
-        },
+        "files": files,
         "conventions": "deflection positive upward; moment sagging-positive; extremes are magnitudes",
         "frictrack_version": env!("CARGO_PKG_VERSION"),
         "scenario": scenario,
@@ -177,6 +188,10 @@ fn write_outputs(
     let load = if report.train.is_some() { "first axle" } else { "load" };
     for spec in run_plots(result, snapshots, &title, load) {
         study::plot::render(&spec, out)?;
+    }
+    if let Some(vehicles) = &result.vehicles {
+        write_atomically(&out.join("wheels.csv"), study::vehicle_output::wheels_csv(vehicles).as_bytes())?;
+        study::plot::render(&study::vehicle_output::wheel_plot(vehicles, &title), out)?;
     }
     Ok(())
 }
@@ -251,6 +266,10 @@ fn report(scenario: &Scenario, case: &Case, result: &RunResult, wall_time: f64) 
         mean_sections_solved: s.mean_sections_solved,
         solver: s.solver_name().to_string(),
         wall_time,
+        vehicles: result.vehicles.as_ref().map(|v| {
+            let contact = settings.moving.vehicles.as_ref().map_or("", |s| s.contact.name());
+            study::vehicle_output::VehicleReport::of(v, contact)
+        }),
     })
 }
 
@@ -266,6 +285,14 @@ fn print_text(r: &RunReport) {
             t.total_force / 1e3
         ),
         None => format!("load {:.1} kN", r.load / 1e3),
+    };
+    let load = match &r.vehicles {
+        Some(v) => {
+            let total: f64 = v.wheels.iter().map(|w| w.static_force).sum();
+            let plural = if v.bodies.len() == 1 { "" } else { "s" };
+            format!("{} vehicle{plural} ({}) weighing {:.1} kN", v.bodies.len(), v.bodies[0].name, total / 1e3)
+        }
+        None => load,
     };
     println!("frictrack run{title}: {load} at {:.2} m/s ({:.0} km/h)", r.speed, r.speed * 3.6);
     if let Some(v_cr) = r.critical_speed {
@@ -339,5 +366,68 @@ fn print_text(r: &RunReport) {
         r.max_iterations,
         r.max_residual
     );
+    if let Some(v) = &r.vehicles {
+        print_vehicles(v);
+    }
     println!("  wall time {:.3} s", r.wall_time);
+}
+
+/// The vehicles' lines of the text report.
+fn print_vehicles(v: &study::vehicle_output::VehicleReport) {
+    println!(
+        "  vehicles: {} wheels, {} contact; wheel force {:.1} … {:.1} kN, largest ΔQ/Q₀ {:.3}",
+        v.wheels.len(),
+        v.contact,
+        v.min_wheel_force / 1e3,
+        v.max_wheel_force / 1e3,
+        v.max_dynamic_increment
+    );
+    for (i, w) in v.wheels.iter().enumerate().take(8) {
+        println!(
+            "    wheel {:>2} (vehicle {}, {:.2} m behind): Q₀ {:.1} kN, Q {:.1} … {:.1} kN, rail under it {:.3} mm, \
+             {:.1} kN·m; {} losses of contact",
+            i + 1,
+            w.vehicle + 1,
+            w.offset,
+            w.static_force / 1e3,
+            w.min_force / 1e3,
+            w.max_force / 1e3,
+            w.max_rail_deflection * 1e3,
+            w.max_moment / 1e3,
+            w.losses_of_contact
+        );
+    }
+    if v.wheels.len() > 8 {
+        println!("    … {} more wheels in the JSON report and wheels.csv", v.wheels.len() - 8);
+    }
+    for l in v.losses.iter().take(5) {
+        let landing = l.landing_position.map_or("still flying at the end".to_string(), |x| {
+            format!("landed at {x:.3} m after {:.2} ms, impact {:.1} kN", l.duration * 1e3, l.impact_force / 1e3)
+        });
+        println!(
+            "    wheel {} left the rail at {:.3} m (t = {:.4} s), {landing}",
+            l.wheel + 1,
+            l.lift_off_position,
+            l.lift_off_time
+        );
+    }
+    if v.losses.len() > 5 {
+        println!("    … {} more losses of contact in the JSON report", v.losses.len() - 5);
+    }
+    for (i, b) in v.bodies.iter().enumerate().take(4) {
+        println!(
+            "    body {} ({}): acceleration max {:.3} m/s², RMS {:.3} m/s²",
+            i + 1,
+            b.name,
+            b.max_acceleration,
+            b.rms_acceleration
+        );
+    }
+    if v.bodies.len() > 4 {
+        println!("    … {} more bodies (largest RMS {:.3} m/s²)", v.bodies.len() - 4, v.max_rms_body_acceleration);
+    }
+    println!(
+        "  contacts: work on beam and vehicles {:.4e} J, energy in the contacts at the end {:.4e} J",
+        v.contact_work, v.spring_energy
+    );
 }

@@ -22,6 +22,7 @@ pub mod speeds;
 pub mod sweep;
 pub mod track_profile;
 pub mod trains;
+pub mod vehicle_output;
 
 pub use error::{Result, StudyError};
 pub use journal::Journal;

@@ -6,6 +6,7 @@ mod run_out;
 mod track_profile;
 mod trains;
 mod trust;
+mod vehicles;
 
 use std::process::{Command, Output};
 

@@ -3,7 +3,7 @@
 
 use super::{Case, QuadratureKind, Scenario, SweepSection, fnv1a};
 use crate::error::{Result, StudyError, invalid};
-use fem_beam::{AbsorbingZones, BeamModel, Foundation, Mesh, Supports};
+use fem_beam::{AbsorbingZones, BeamModel, Foundation, Mesh, Supports, Train};
 use friction::{DeviceLayout, Devices, DistributedFriction, InteractionSet, Quadrature};
 use nscd::SolverSettings;
 use track::simulation::{IntegrationSettings, MovingLoadSettings, RecordSettings};
@@ -198,8 +198,24 @@ impl Scenario {
             max_iterations: i.max_iterations,
             moving_window: i.moving_window,
         };
+        if self.vehicle.is_none() && !self.rail.is_empty() {
+            return Err(invalid(
+                "rail.irregularities",
+                "given",
+                "the rail's irregularities act under [vehicle] wheels only",
+            ));
+        }
+        let vehicles = match &self.vehicle {
+            Some(v) => {
+                let behind =
+                    train.as_ref().map_or((v.count.max(1) - 1) as f64 * v.spacing.unwrap_or(0.0), Train::length);
+                let profile = self.rail.profile(self.mesh.length + behind)?;
+                Some(v.settings(train.as_ref(), profile)?)
+            }
+            None => None,
+        };
         Ok(RunSettings {
-            moving: MovingLoadSettings { speed, force: self.load.force, train, initial, vehicles: None },
+            moving: MovingLoadSettings { speed, force: self.load.force, train, initial, vehicles },
             integration: IntegrationSettings {
                 theta: i.theta,
                 load_advance: i.load_advance,
@@ -252,6 +268,7 @@ fn scenario_path(error: track::TrackError) -> StudyError {
                 "end_time" => "integration.end_time",
                 "record_sections" => "output.sections",
                 "extremes_nodes" => "output.extremes_nodes",
+                "solver" => "integration.solver",
                 other => other,
             };
             invalid(path, value, allowed)

@@ -10,8 +10,10 @@
 mod build;
 mod parse;
 pub mod sections;
+pub mod vehicle;
 
 pub use sections::*;
+pub use vehicle::{RailSection, VehicleSection};
 
 use crate::error::{Result, StudyError, invalid};
 use fem_beam::BeamModel;
@@ -39,6 +41,13 @@ pub struct Scenario {
     pub damping: DampingSection,
     /// The moving load.
     pub load: LoadSection,
+    /// Vehicles instead of moving forces: `[load]` then gives only the speed and, if any, the train whose axles
+    /// carry them.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub vehicle: Option<VehicleSection>,
+    /// The rail's irregularities, under the vehicles' wheels.
+    #[serde(skip_serializing_if = "RailSection::is_empty")]
+    pub rail: RailSection,
     /// Friction devices and/or distributed friction.
     pub friction: FrictionSection,
     /// Time integration and the friction solver.

@@ -332,7 +332,7 @@ impl<'a> Simulation<'a> {
             global_norm: if t_on > 0.0 { norm_integral / t_on } else { 0.0 },
             histories: recorders.into_iter().map(|r| r.history).collect(),
             statistics: SolverStatistics {
-                solver: (!self.interactions.is_empty()).then(|| stepper.solver_kind()),
+                solver: (!self.interactions.is_empty() || moving).then(|| stepper.solver_kind()),
                 sections: self.interactions.len(),
                 steps,
                 mean_iterations: if steps > 0 { iteration_sum as f64 / steps as f64 } else { 0.0 },

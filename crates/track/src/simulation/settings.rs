@@ -45,9 +45,14 @@ impl Default for MovingLoadSettings {
 }
 
 impl MovingLoadSettings {
-    /// The train that moves: the given one, or a single axle of `force`.
+    /// The train that moves: the vehicles' static wheel loads ([`VehicleSettings::static_train`]), the given train,
+    /// or a single axle of `force`.
     pub fn train(&self) -> Train {
-        self.train.clone().unwrap_or_else(|| Train::single(self.force))
+        match &self.vehicles {
+            // Valid vehicles always have a static train (checked by their `validate`).
+            Some(vehicles) => vehicles.static_train().unwrap_or_else(|_| Train::single(0.0)),
+            None => self.train.clone().unwrap_or_else(|| Train::single(self.force)),
+        }
     }
 
     /// The train's length behind its first axle (m; 0 for a single load), or the vehicles' from the first wheel to

@@ -130,13 +130,18 @@ impl VehicleSettings {
             }
         }
         self.contact.validate()?;
+        self.static_train()?;
         self.profile.validate("rail")?;
         let wheels = self.wheels().count();
         for f in &self.flats {
             if f.wheel >= wheels {
-                return Err(invalid("vehicle.flat.wheel", f.wheel as f64, format!("must be a wheel index < {wheels}")));
+                return Err(invalid(
+                    "vehicle.flats.wheel",
+                    f.wheel as f64,
+                    format!("must be a wheel index < {wheels}"),
+                ));
             }
-            f.flat.validate("vehicle.flat")?;
+            f.flat.validate("vehicle.flats")?;
         }
         Ok(())
     }
@@ -174,6 +179,22 @@ impl VehicleSettings {
     pub fn track(&self, wheel: usize) -> WheelTrack {
         let flat = self.flats.iter().find(|f| f.wheel == wheel).map(|f| f.flat);
         WheelTrack { rail: self.profile.clone(), flat }
+    }
+
+    /// The moving forces of the vehicles standing on a level rail: an axle at each wheel (offset behind the first
+    /// wheel) carrying its static load (N) — the static envelope a dynamic run is measured against. Errors when a
+    /// vehicle has a DOF without a spring to a wheel (no static state).
+    pub fn static_train(&self) -> Result<Train> {
+        let lead = self.lead();
+        let mut axles = Vec::new();
+        for placed in &self.vehicles {
+            let v = &placed.vehicle;
+            let (_, forces) = v.static_state(&vec![0.0; v.wheels.len()])?;
+            for (w, force) in v.wheels.iter().zip(forces) {
+                axles.push(fem_beam::Axle { offset: placed.offset + w.offset - lead, force });
+            }
+        }
+        Ok(Train { name: "vehicles".into(), axles, patches: Vec::new() })
     }
 
     /// ω_c (rad/s) of the stiffest wheel–rail contact mode: max over the wheels with mass of √(k_t/m_w), k_t the

@@ -1,0 +1,100 @@
+//! Vehicles in `run` (docs/theory.md §12): a quarter car over a dipped joint with its wheel outputs, a train of quarter
+//! cars, and bad vehicle inputs refused with exit code 2 naming the scenario path.
+
+use super::{frictrack, json};
+
+fn scenario(folder: &std::path::Path, name: &str, text: &str) -> String {
+    let path = folder.join(name);
+    std::fs::write(&path, text).unwrap();
+    path.to_str().unwrap().to_string()
+}
+
+/// A quarter car at 50 m/s over a 2 mm dipped joint: wheels.csv holds one row per step with the documented columns,
+/// the wheel force dips and peaks around the joint, the JSON reports the wheel and the body, the energy closes.
+#[test]
+fn a_quarter_car_over_a_dipped_joint_writes_its_wheel() {
+    let folder = std::env::temp_dir().join(format!("frictrack-vehicles-{}", std::process::id()));
+    std::fs::create_dir_all(&folder).unwrap();
+    let car = scenario(
+        &folder,
+        "car.toml",
+        "[load]\nspeed = 50.0\n[vehicle]\nkind = \"quarter-car\"\n[[rail.irregularities]]\nkind = \"dipped-joint\"\n\
+         position = 100.0\ndepth = 2e-3\nlength = 0.5\n[integration]\nload_advance = 0.05\n[output]\n\
+         extremes_nodes = [40.0, 160.0]\n",
+    );
+    let out = folder.join("out");
+    let v = json(&frictrack(&["run", &car, "--format", "json", "--out", out.to_str().unwrap(), "--quiet"]));
+    let vehicles = &v["vehicles"];
+    assert_eq!(vehicles["contact"], "hertz");
+    let wheel = &vehicles["wheels"][0];
+    let (q0, min, max) = (
+        wheel["static_force"].as_f64().unwrap(),
+        wheel["min_force"].as_f64().unwrap(),
+        wheel["max_force"].as_f64().unwrap(),
+    );
+    assert!((q0 / (8500.0 * 9.81) - 1.0).abs() < 1e-12 && min < 0.5 * q0 && max > 1.2 * q0, "{q0} {min} {max}");
+    assert!(vehicles["bodies"][0]["rms_acceleration"].as_f64().unwrap() > 0.0);
+    assert!(v["energy_residual"].as_f64().unwrap().abs() < 1e-9 * v["load_work"].as_f64().unwrap().abs());
+    let csv = std::fs::read_to_string(out.join("wheels.csv")).unwrap();
+    let mut lines = csv.lines();
+    assert_eq!(lines.next().unwrap(), "vehicle,wheel,time,position,force,rail_deflection,moment");
+    assert_eq!(lines.count() as u64, v["steps"].as_u64().unwrap());
+    assert!(out.join("wheel-forces.png").exists());
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(summary["files"]["wheels.csv"]["columns"][4]["unit"], "N");
+    std::fs::remove_dir_all(&folder).unwrap();
+}
+
+/// Quarter cars on the axles of a scenario train: one vehicle per axle, each carrying its axle's force.
+#[test]
+fn a_train_of_quarter_cars_carries_its_axles() {
+    let folder = std::env::temp_dir().join(format!("frictrack-vehicle-train-{}", std::process::id()));
+    std::fs::create_dir_all(&folder).unwrap();
+    let train = scenario(
+        &folder,
+        "train.toml",
+        "[load]\nspeed = 100.0\n[[load.axles]]\noffset = 0.0\nforce = 100e3\n[[load.axles]]\noffset = 2.5\n\
+         force = 120e3\n[vehicle]\n",
+    );
+    let v = json(&frictrack(&["run", &train, "--format", "json"]));
+    let wheels = v["vehicles"]["wheels"].as_array().unwrap();
+    assert_eq!(wheels.len(), 2);
+    assert!((wheels[1]["static_force"].as_f64().unwrap() - 120e3).abs() < 1e-6);
+    assert_eq!(wheels[1]["offset"].as_f64().unwrap(), 2.5);
+    std::fs::remove_dir_all(&folder).unwrap();
+}
+
+/// Bad vehicles exit 2 and name the path, the value and what is allowed.
+#[test]
+fn bad_vehicles_exit_2_naming_the_path() {
+    let folder = std::env::temp_dir().join(format!("frictrack-bad-vehicles-{}", std::process::id()));
+    std::fs::create_dir_all(&folder).unwrap();
+    for (name, text, expected) in [
+        ("mass.toml", "[vehicle]\nkind = \"quarter-car\"\nmass = 5.0\n", "vehicle.mass"),
+        ("negative.toml", "[vehicle]\nbody_mass = -1.0\n", "vehicle.body_mass"),
+        (
+            "rail.toml",
+            "[[rail.irregularities]]\nkind = \"ramp\"\nstart = 1.0\nlength = 1.0\nheight = 1e-3\n",
+            "rail.irregularities",
+        ),
+        ("coarse.toml", "[load]\nspeed = 20.0\n[vehicle]\n", "integration.load_advance"),
+        ("spacing.toml", "[vehicle]\ncount = 3\n", "vehicle.spacing"),
+        ("flat.toml", "[vehicle]\n[[vehicle.flats]]\nwheel = 4\nlength = 0.05\n", "vehicle.flats.wheel"),
+        ("solver.toml", "[vehicle]\n[integration]\nsolver = \"interior-point\"\n", "integration.solver"),
+        ("kind.toml", "[vehicle]\nkind = \"bicycle\"\n", "vehicle.kind"),
+        (
+            "random.toml",
+            "[vehicle]\n[[rail.irregularities]]\nkind = \"random\"\nspectrum = \"fra-9\"\n",
+            "rail.irregularities[0]",
+        ),
+        ("matrices.toml", "[vehicle]\nkind = \"matrices\"\n", "vehicle.matrices"),
+    ] {
+        let path = scenario(&folder, name, text);
+        let out = frictrack(&["run", &path]);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{name}: {stderr}");
+        assert!(stderr.contains(expected), "{name}: {stderr}");
+    }
+    std::fs::remove_dir_all(&folder).unwrap();
+}

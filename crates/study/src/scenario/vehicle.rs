@@ -1,0 +1,446 @@
+//! `[vehicle]` and `[rail]`: vehicles instead of moving forces, their wheel–rail contact, and the rail's
+//! irregularities (docs/theory.md §11, §12) — the schema and its translation into [`track::vehicle`] settings, every
+//! error named by its path in the scenario file.
+
+use crate::error::{Result, StudyError, invalid};
+use fem_beam::Train;
+use irregularity::{Profile, RandomProfile, RandomSettings, Spectrum, WheelFlat};
+use serde::{Deserialize, Serialize};
+use track::vehicle::Vehicle;
+use track::vehicle::builtin::{MovingMass, QuarterCar};
+use track::vehicle::consist::{FlatWheel, PlacedVehicle, VehicleSettings, WheelRail};
+
+/// The kind of vehicle of `[vehicle]`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "kebab-case")]
+pub enum VehicleKind {
+    /// A moving mass m (`mass`).
+    MovingMass,
+    /// A quarter car (`body_mass`, `suspension_stiffness`, `suspension_damping`, `wheel_mass`).
+    #[default]
+    QuarterCar,
+    /// A vehicle given by its matrices (`[vehicle.matrices]`).
+    Matrices,
+}
+
+impl VehicleKind {
+    /// The name in the scenario file.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::MovingMass => "moving-mass",
+            Self::QuarterCar => "quarter-car",
+            Self::Matrices => "matrices",
+        }
+    }
+}
+
+/// The wheel–rail contact law of `[vehicle]`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "kebab-case")]
+pub enum ContactKind {
+    /// Hertz (`hertz_coefficient`, or `wheel_radius` for Zhai's fit; default 0.46 m).
+    #[default]
+    Hertz,
+    /// A linear unilateral spring (`contact_stiffness`).
+    Linear,
+    /// A linear spring glued to the rail, pulling as well as pressing (`contact_stiffness`).
+    Glued,
+}
+
+/// `[vehicle]`: vehicles instead of moving forces. Without a train in `[load]`, `count` vehicles `spacing` m apart,
+/// each with its own weight (`[load] force` is not used); with a train, one vehicle per axle, scaled to the axle's
+/// force (frequencies and damping ratios kept).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct VehicleSection {
+    /// What vehicle.
+    pub kind: VehicleKind,
+    /// Moving mass m (kg); default 8 501 kg (83.4 kN).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub mass: Option<f64>,
+    /// Quarter car: body mass M_s (kg), default 7 500.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub body_mass: Option<f64>,
+    /// Quarter car: k_s (N/m), default 1.2e6.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub suspension_stiffness: Option<f64>,
+    /// Quarter car: c_s (N·s/m), default 3e4.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub suspension_damping: Option<f64>,
+    /// Quarter car: m_u (kg), default 1 000.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub wheel_mass: Option<f64>,
+    /// A vehicle by its matrices.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub matrices: Option<MatricesSection>,
+    /// Number of vehicles in a row (without a train). Default 1.
+    pub count: usize,
+    /// Distance between consecutive vehicles (m), needed when count > 1.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub spacing: Option<f64>,
+    /// The wheel–rail contact law.
+    pub contact: ContactKind,
+    /// Hertz coefficient C_H (N/m^1.5); default from `wheel_radius`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub hertz_coefficient: Option<f64>,
+    /// Wheel radius (m) for Zhai's fit of C_H; default 0.46.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub wheel_radius: Option<f64>,
+    /// k_c (N/m) of a linear or glued contact; default 1.5e9 (Hertz's tangent at 83.4 kN).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub contact_stiffness: Option<f64>,
+    /// `[[vehicle.flats]]`: wheel flats.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub flats: Vec<FlatSection>,
+}
+
+impl Default for VehicleSection {
+    fn default() -> Self {
+        Self {
+            kind: VehicleKind::QuarterCar,
+            mass: None,
+            body_mass: None,
+            suspension_stiffness: None,
+            suspension_damping: None,
+            wheel_mass: None,
+            matrices: None,
+            count: 1,
+            spacing: None,
+            contact: ContactKind::Hertz,
+            hertz_coefficient: None,
+            wheel_radius: None,
+            contact_stiffness: None,
+            flats: Vec::new(),
+        }
+    }
+}
+
+/// `[vehicle.matrices]`: M, C, K (rows of n numbers each), the weights and the wheels.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
+#[serde(default, deny_unknown_fields)]
+pub struct MatricesSection {
+    /// A name for reports.
+    pub name: String,
+    /// M (kg, kg·m²), n rows of n.
+    pub mass: Vec<Vec<f64>>,
+    /// C (N·s/m).
+    pub damping: Vec<Vec<f64>>,
+    /// K (N/m).
+    pub stiffness: Vec<Vec<f64>>,
+    /// Gravity loads f_g per DOF (N, upward positive: −m g on a translation).
+    pub weight: Vec<f64>,
+    /// `[[vehicle.matrices.wheels]]`.
+    pub wheels: Vec<WheelSection>,
+}
+
+/// A wheel of a vehicle given by its matrices.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct WheelSection {
+    /// Its DOF (0-based).
+    pub dof: usize,
+    /// Offset behind the vehicle's reference point (m).
+    pub offset: f64,
+}
+
+/// `[[vehicle.flats]]`: a wheel flat.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FlatSection {
+    /// Which wheel of the run, counted over the vehicles in order (0-based). Default 0.
+    #[serde(default)]
+    pub wheel: usize,
+    /// Flat length ℓ (m).
+    pub length: f64,
+    /// Wheel diameter D (m). Default 0.92.
+    #[serde(default = "default_diameter")]
+    pub diameter: f64,
+    /// The wheel's travel when the flat first meets the rail (m). Default 0.
+    #[serde(default)]
+    pub first_contact: f64,
+}
+
+fn default_diameter() -> f64 {
+    0.92
+}
+
+/// `[rail]`: the rail's irregularities, summed.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
+#[serde(default, deny_unknown_fields)]
+pub struct RailSection {
+    /// `[[rail.irregularities]]`, each with a `kind`.
+    pub irregularities: Vec<IrregularitySection>,
+}
+
+impl RailSection {
+    /// Whether the rail is smooth.
+    pub fn is_empty(&self) -> bool {
+        self.irregularities.is_empty()
+    }
+}
+
+/// One irregularity of the rail (m, upward positive).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "kebab-case", deny_unknown_fields)]
+pub enum IrregularitySection {
+    /// a·sin(2π(x − start)/λ).
+    Harmonic {
+        /// a (m).
+        amplitude: f64,
+        /// λ (m).
+        wavelength: f64,
+        /// x₀ (m).
+        #[serde(default)]
+        start: f64,
+    },
+    /// A linear rise of `height` over [start, start + length].
+    Ramp {
+        /// Start (m).
+        start: f64,
+        /// Length (m).
+        length: f64,
+        /// Rise (m).
+        height: f64,
+    },
+    /// A cosine dip of `depth` over `length` centred at `position`.
+    DippedJoint {
+        /// Centre (m).
+        position: f64,
+        /// Depth (m).
+        depth: f64,
+        /// Length (m).
+        length: f64,
+    },
+    /// A measured profile: a CSV file of `x,r` lines (m).
+    Table {
+        /// The file.
+        file: String,
+    },
+    /// A random profile from a spectrum (`german-low`, `german-high`, `fra-1` … `fra-6`).
+    Random {
+        /// The spectrum's name.
+        spectrum: String,
+        /// Wavelength band [shortest, longest] (m); default the spectrum's usual band.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        band: Option<[f64; 2]>,
+        /// Seed of the phases. Default 1.
+        #[serde(default = "default_seed")]
+        seed: u64,
+        /// Period of the profile (m); default the beam's length plus the vehicles' (at least the longest
+        /// wavelength).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        length: Option<f64>,
+    },
+}
+
+fn default_seed() -> u64 {
+    1
+}
+
+/// An irregularity error renamed to its path in the scenario file.
+fn rail_path(index: usize, error: irregularity::IrregularityError) -> StudyError {
+    let irregularity::IrregularityError::InvalidField { field, value, allowed } = error;
+    let field = field.rsplit('.').next().unwrap_or(&field).to_string();
+    invalid(&format!("rail.irregularities[{index}].{field}"), value, allowed)
+}
+
+impl RailSection {
+    /// The rail's profile over a run covering `reach` m of track (the beam and the vehicles behind it).
+    pub fn profile(&self, reach: f64) -> Result<Profile> {
+        let mut parts = Vec::with_capacity(self.irregularities.len());
+        for (i, item) in self.irregularities.iter().enumerate() {
+            let profile = match item {
+                IrregularitySection::Harmonic { amplitude, wavelength, start } => {
+                    Profile::Harmonic { amplitude: *amplitude, wavelength: *wavelength, start: *start }
+                }
+                IrregularitySection::Ramp { start, length, height } => {
+                    Profile::Ramp { start: *start, length: *length, height: *height }
+                }
+                IrregularitySection::DippedJoint { position, depth, length } => {
+                    Profile::DippedJoint { position: *position, depth: *depth, length: *length }
+                }
+                IrregularitySection::Table { file } => Profile::Table { points: read_profile(file, i)? },
+                IrregularitySection::Random { spectrum, band, seed, length } => {
+                    let spectrum = Spectrum::from_name(spectrum).map_err(|e| rail_path(i, e))?;
+                    let band = band.map_or(spectrum.default_band(), |[a, b]| (a, b));
+                    let length = length.unwrap_or(reach.max(band.1));
+                    let settings = RandomSettings { spectrum, band, length, seed: *seed };
+                    Profile::Random(RandomProfile::new(settings).map_err(|e| rail_path(i, e))?)
+                }
+            };
+            profile.validate("rail").map_err(|e| rail_path(i, e))?;
+            parts.push(profile);
+        }
+        Ok(match parts.len() {
+            0 => Profile::Smooth,
+            1 => parts.pop().expect("one part"),
+            _ => Profile::Sum(parts),
+        })
+    }
+}
+
+/// Largest profile file read (bytes): 100 000 points of two numbers fit.
+const MAX_PROFILE_BYTES: u64 = 8 << 20;
+
+/// Points (x, r) (m) from a CSV file of `x,r` lines, an optional header line, `#` comments.
+fn read_profile(file: &str, index: usize) -> Result<Vec<(f64, f64)>> {
+    let path = format!("rail.irregularities[{index}].file");
+    let io = |e: std::io::Error| invalid(&path, file, format!("cannot read the profile file: {e}"));
+    let size = std::fs::metadata(file).map_err(io)?.len();
+    if size > MAX_PROFILE_BYTES {
+        return Err(invalid(&path, file, format!("is {size} bytes; at most {MAX_PROFILE_BYTES} are read")));
+    }
+    let text = std::fs::read_to_string(file).map_err(io)?;
+    let mut points = Vec::new();
+    for (n, line) in text.lines().enumerate() {
+        let line = line.trim();
+        if line.is_empty() || line.starts_with('#') {
+            continue;
+        }
+        let values: Vec<&str> = line.split(',').map(str::trim).collect();
+        match values.as_slice() {
+            [x, r] => match (x.parse::<f64>(), r.parse::<f64>()) {
+                (Ok(x), Ok(r)) => points.push((x, r)),
+                _ if points.is_empty() && n == 0 => {} // a header line
+                _ => return Err(invalid(&path, file, format!("line {}: expected two numbers x,r (m)", n + 1))),
+            },
+            _ => return Err(invalid(&path, file, format!("line {}: expected two values x,r (m)", n + 1))),
+        }
+    }
+    Ok(points)
+}
+
+impl VehicleSection {
+    /// The contact law.
+    fn contact(&self) -> Result<WheelRail> {
+        let stiffness = self.contact_stiffness.unwrap_or(1.5e9);
+        let contact = match self.contact {
+            ContactKind::Hertz => match (self.hertz_coefficient, self.wheel_radius) {
+                (Some(_), Some(r)) => {
+                    return Err(invalid("vehicle.wheel_radius", r, "give hertz_coefficient or wheel_radius, not both"));
+                }
+                (Some(coefficient), None) => WheelRail::Hertz { coefficient },
+                (None, Some(radius)) => {
+                    if !(radius.is_finite() && radius > 0.0) {
+                        return Err(invalid("vehicle.wheel_radius", radius, "must be finite and > 0 (m)"));
+                    }
+                    WheelRail::hertz_for_radius(radius)
+                }
+                (None, None) => WheelRail::default(),
+            },
+            ContactKind::Linear => WheelRail::Linear { stiffness },
+            ContactKind::Glued => WheelRail::Glued { stiffness },
+        };
+        contact.validate()?;
+        Ok(contact)
+    }
+
+    /// One vehicle of this section, its parameters checked.
+    pub fn vehicle(&self) -> Result<Vehicle> {
+        let unused = |field: &str, given: bool| {
+            if given {
+                Err(invalid(
+                    &format!("vehicle.{field}"),
+                    "given",
+                    format!("is not a parameter of kind = \"{}\"", self.kind.name()),
+                ))
+            } else {
+                Ok(())
+            }
+        };
+        let quarter = [self.body_mass, self.suspension_stiffness, self.suspension_damping, self.wheel_mass];
+        match self.kind {
+            VehicleKind::MovingMass => {
+                unused("body_mass … wheel_mass", quarter.iter().any(Option::is_some))?;
+                unused("matrices", self.matrices.is_some())?;
+                let mass = self.mass.unwrap_or(MovingMass::default().mass);
+                Ok(MovingMass { mass }.vehicle()?)
+            }
+            VehicleKind::QuarterCar => {
+                unused("mass", self.mass.is_some())?;
+                unused("matrices", self.matrices.is_some())?;
+                let d = QuarterCar::default();
+                Ok(QuarterCar {
+                    body_mass: self.body_mass.unwrap_or(d.body_mass),
+                    suspension_stiffness: self.suspension_stiffness.unwrap_or(d.suspension_stiffness),
+                    suspension_damping: self.suspension_damping.unwrap_or(d.suspension_damping),
+                    wheel_mass: self.wheel_mass.unwrap_or(d.wheel_mass),
+                }
+                .vehicle()?)
+            }
+            VehicleKind::Matrices => {
+                unused("mass", self.mass.is_some())?;
+                unused("body_mass … wheel_mass", quarter.iter().any(Option::is_some))?;
+                let m = self.matrices.as_ref().ok_or_else(|| {
+                    invalid("vehicle.matrices", "missing", "kind = \"matrices\" needs [vehicle.matrices]")
+                })?;
+                let n = m.weight.len();
+                let flat = |field: &str, rows: &[Vec<f64>]| -> Result<Vec<f64>> {
+                    if rows.len() != n || rows.iter().any(|r| r.len() != n) {
+                        return Err(invalid(
+                            &format!("vehicle.matrices.{field}"),
+                            rows.len(),
+                            format!("needs {n} rows of {n} numbers (one per entry of weight)"),
+                        ));
+                    }
+                    Ok(rows.concat())
+                };
+                let vehicle = Vehicle {
+                    name: if m.name.is_empty() { "vehicle".into() } else { m.name.clone() },
+                    mass: flat("mass", &m.mass)?,
+                    damping: flat("damping", &m.damping)?,
+                    stiffness: flat("stiffness", &m.stiffness)?,
+                    weight: m.weight.clone(),
+                    wheels: m.wheels.iter().map(|w| track::vehicle::Wheel { dof: w.dof, offset: w.offset }).collect(),
+                };
+                vehicle.validate()?;
+                Ok(vehicle)
+            }
+        }
+    }
+
+    /// The vehicles of a run over `train` (one per axle) or, without one, `count` of them `spacing` apart; with the
+    /// rail's `profile`.
+    pub fn settings(&self, train: Option<&Train>, profile: Profile) -> Result<VehicleSettings> {
+        let vehicle = self.vehicle()?;
+        let mut settings = match train {
+            Some(train) => {
+                if self.count != 1 || self.spacing.is_some() {
+                    return Err(invalid(
+                        "vehicle.count",
+                        self.count,
+                        "with a train in [load] there is one vehicle per axle: leave count and spacing out",
+                    ));
+                }
+                VehicleSettings::populate(&vehicle, train)?
+            }
+            None => {
+                let count = self.count;
+                if count == 0 || count > track::vehicle::consist::MAX_VEHICLES {
+                    let allowed = format!("must lie in 1 … {}", track::vehicle::consist::MAX_VEHICLES);
+                    return Err(invalid("vehicle.count", count, allowed));
+                }
+                let spacing = match (count, self.spacing) {
+                    (1, s) => s.unwrap_or(0.0),
+                    (_, Some(s)) if s.is_finite() && s > 0.0 => s,
+                    (_, s) => {
+                        let allowed = "must be finite and > 0 (m) with more than one vehicle";
+                        return Err(invalid("vehicle.spacing", s.map_or("missing".into(), |s| s.to_string()), allowed));
+                    }
+                };
+                let vehicles = (0..count)
+                    .map(|i| PlacedVehicle { vehicle: vehicle.clone(), offset: i as f64 * spacing })
+                    .collect();
+                VehicleSettings { vehicles, ..VehicleSettings::default() }
+            }
+        };
+        settings.contact = self.contact()?;
+        settings.profile = profile;
+        for f in &self.flats {
+            let flat = WheelFlat { length: f.length, diameter: f.diameter, first_contact: f.first_contact };
+            settings.flats.push(FlatWheel { wheel: f.wheel, flat });
+        }
+        settings.validate()?;
+        Ok(settings)
+    }
+}

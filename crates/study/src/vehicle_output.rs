@@ -1,0 +1,232 @@
+//! What a run with vehicles reports of them (docs/theory.md §12): per wheel the contact force's extremes, ΔQ/Q₀,
+//! losses of contact and impacts, the rail's deflection and moment under it; per vehicle the body's acceleration; the
+//! contacts' energy terms — as a serialisable summary, a long-format CSV of the wheel histories and a figure.
+//!
+//! `wheels.csv`: `vehicle,wheel,time,position,force,rail_deflection,moment` — one row per wheel and step (–, –, s, m,
+//! N, m, N·m). The force is the step's mean contact force p/h (compressive > 0), the rail deflection upward > 0 (0 off
+//! the beam, where the rail is rigid ground), the moment EI·w″ of the rail under the wheel, sagging > 0.
+
+use crate::figures::{Curves, quantity_figure};
+use crate::number::row;
+use crate::plot::PlotSpec;
+use serde::Serialize;
+use std::fmt::Write as _;
+use track::simulation::VehicleResults;
+
+/// The figure of a run with vehicles, without extension (PNG and SVG each).
+pub const WHEEL_FIGURE: &str = "wheel-forces";
+
+/// Most wheels drawn in the figure (all are in the CSV): beyond a dozen curves a reader cannot tell them apart.
+pub const MAX_WHEELS_DRAWN: usize = 12;
+
+/// Columns of `wheels.csv`: name and unit.
+pub const WHEEL_COLUMNS: [(&str, &str); 7] = [
+    ("vehicle", "–"),
+    ("wheel", "–"),
+    ("time", "s"),
+    ("position", "m"),
+    ("force", "N"),
+    ("rail_deflection", "m"),
+    ("moment", "N·m"),
+];
+
+/// One wheel.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct WheelReport {
+    /// Its vehicle (0-based).
+    pub vehicle: usize,
+    /// Its index in the vehicle.
+    pub wheel: usize,
+    /// Offset behind the first wheel (m).
+    pub offset: f64,
+    /// Static wheel load Q₀ (N).
+    pub static_force: f64,
+    /// Smallest and largest contact force (N).
+    pub min_force: f64,
+    /// Largest contact force (N).
+    pub max_force: f64,
+    /// max |Q − Q₀|/Q₀.
+    pub dynamic_increment: f64,
+    /// Number of losses of contact.
+    pub losses_of_contact: usize,
+    /// Total time without contact (s).
+    pub time_off_rail: f64,
+    /// Largest landing impact force (N), 0 without a landing.
+    pub max_impact_force: f64,
+    /// Largest downward rail deflection under the wheel (m).
+    pub max_rail_deflection: f64,
+    /// Largest |rail bending moment| under the wheel (N·m).
+    pub max_moment: f64,
+}
+
+/// One loss of contact.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct LossReport {
+    /// Which wheel of the run (0-based, as in `wheels`).
+    pub wheel: usize,
+    /// Where and when it lifted off (m, s).
+    pub lift_off_position: f64,
+    /// Time of lift-off (s).
+    pub lift_off_time: f64,
+    /// Where it landed (m), None if still flying at the end.
+    pub landing_position: Option<f64>,
+    /// Time off the rail (s).
+    pub duration: f64,
+    /// Largest force within 10 ms of landing (N).
+    pub impact_force: f64,
+}
+
+/// One vehicle's body.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct BodyReport {
+    /// The vehicle's name.
+    pub name: String,
+    /// Largest |acceleration| (m/s²).
+    pub max_acceleration: f64,
+    /// RMS acceleration (m/s²).
+    pub rms_acceleration: f64,
+}
+
+/// Everything a run reports of its vehicles.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct VehicleReport {
+    /// The contact law's name.
+    pub contact: String,
+    /// Smallest wheel force of any wheel (N).
+    pub min_wheel_force: f64,
+    /// Largest wheel force (N).
+    pub max_wheel_force: f64,
+    /// Largest ΔQ/Q₀ of any wheel.
+    pub max_dynamic_increment: f64,
+    /// Losses of contact over all wheels.
+    pub losses_of_contact: usize,
+    /// Largest body acceleration of any vehicle (m/s²).
+    pub max_body_acceleration: f64,
+    /// Largest body RMS acceleration (m/s²).
+    pub max_rms_body_acceleration: f64,
+    /// Work of the contact forces on beam and vehicles (J).
+    pub contact_work: f64,
+    /// Energy in the contacts at the end (J).
+    pub spring_energy: f64,
+    /// Every wheel.
+    pub wheels: Vec<WheelReport>,
+    /// Every loss of contact.
+    pub losses: Vec<LossReport>,
+    /// Every body.
+    pub bodies: Vec<BodyReport>,
+}
+
+impl VehicleReport {
+    /// The report of `results` with contact law `contact` (its name).
+    pub fn of(results: &VehicleResults, contact: &str) -> Self {
+        let wheels: Vec<WheelReport> = results
+            .wheels
+            .iter()
+            .map(|w| WheelReport {
+                vehicle: w.vehicle,
+                wheel: w.wheel,
+                offset: w.offset,
+                static_force: w.static_force,
+                min_force: w.min_force,
+                max_force: w.max_force,
+                dynamic_increment: w.dynamic_increment(),
+                losses_of_contact: w.losses.len(),
+                time_off_rail: w.time_off_rail(),
+                max_impact_force: w.losses.iter().map(|l| l.impact_force).fold(0.0, f64::max),
+                max_rail_deflection: w.max_rail_deflection,
+                max_moment: w.max_moment,
+            })
+            .collect();
+        let losses = results
+            .wheels
+            .iter()
+            .enumerate()
+            .flat_map(|(i, w)| {
+                w.losses.iter().map(move |l| LossReport {
+                    wheel: i,
+                    lift_off_position: l.lift_off_position,
+                    lift_off_time: l.lift_off_time,
+                    landing_position: l.landing_position,
+                    duration: l.duration,
+                    impact_force: l.impact_force,
+                })
+            })
+            .collect();
+        let bodies: Vec<BodyReport> = results
+            .bodies
+            .iter()
+            .map(|b| BodyReport {
+                name: b.name.clone(),
+                max_acceleration: b.max_acceleration,
+                rms_acceleration: b.rms_acceleration,
+            })
+            .collect();
+        let largest = |values: &mut dyn Iterator<Item = f64>| values.fold(0.0, f64::max);
+        Self {
+            contact: contact.to_string(),
+            min_wheel_force: wheels.iter().map(|w| w.min_force).fold(f64::INFINITY, f64::min),
+            max_wheel_force: largest(&mut wheels.iter().map(|w| w.max_force)),
+            max_dynamic_increment: largest(&mut wheels.iter().map(|w| w.dynamic_increment)),
+            losses_of_contact: wheels.iter().map(|w| w.losses_of_contact).sum(),
+            max_body_acceleration: largest(&mut bodies.iter().map(|b| b.max_acceleration)),
+            max_rms_body_acceleration: largest(&mut bodies.iter().map(|b| b.rms_acceleration)),
+            contact_work: results.contact_work,
+            spring_energy: results.spring_energy,
+            wheels,
+            losses,
+            bodies,
+        }
+    }
+}
+
+/// `wheels.csv`.
+pub fn wheels_csv(results: &VehicleResults) -> String {
+    let mut out = WHEEL_COLUMNS.iter().map(|(name, _)| *name).collect::<Vec<_>>().join(",") + "\n";
+    for w in &results.wheels {
+        let h = &w.history;
+        for k in 0..h.time.len() {
+            let values = [
+                w.vehicle as f64,
+                w.wheel as f64,
+                h.time[k],
+                h.position[k],
+                h.force[k],
+                h.rail_deflection[k],
+                h.moment[k],
+            ];
+            let _ = writeln!(out, "{}", row(&values));
+        }
+    }
+    out
+}
+
+/// The contact force of each wheel (the first [`MAX_WHEELS_DRAWN`]) against the wheel's position, in kN.
+pub fn wheel_plot(results: &VehicleResults, title: &str) -> PlotSpec {
+    let curves: Curves = results
+        .wheels
+        .iter()
+        .take(MAX_WHEELS_DRAWN)
+        .enumerate()
+        .map(|(i, w)| {
+            let points = w.history.position.iter().zip(&w.history.force).map(|(&x, &f)| (x, f / 1e3)).collect();
+            (
+                format!("vehicle {} wheel {} (Q₀ = {:.1} kN)", w.vehicle + 1, w.wheel + 1, w.static_force / 1e3),
+                1 + i,
+                points,
+            )
+        })
+        .collect();
+    let shown = if results.wheels.len() > MAX_WHEELS_DRAWN {
+        format!(" (first {MAX_WHEELS_DRAWN} of {} wheels)", results.wheels.len())
+    } else {
+        String::new()
+    };
+    quantity_figure(
+        WHEEL_FIGURE,
+        &format!("{title}: wheel–rail contact force{shown}"),
+        "wheel position x (m)",
+        "contact force Q (kN, compressive > 0)",
+        curves,
+        false,
+    )
+}
