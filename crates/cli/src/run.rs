@@ -191,7 +191,8 @@ fn write_outputs(
     }
     if let Some(vehicles) = &result.vehicles {
         write_atomically(&out.join("wheels.csv"), study::vehicle_output::wheels_csv(vehicles).as_bytes())?;
-        study::plot::render(&study::vehicle_output::wheel_plot(vehicles, &title), out)?;
+        let range = report.extremes_nodes.unwrap_or((0.0, scenario.mesh.length));
+        study::plot::render(&study::vehicle_output::wheel_plot(vehicles, &title, range), out)?;
     }
     Ok(())
 }

@@ -200,15 +200,20 @@ pub fn wheels_csv(results: &VehicleResults) -> String {
     out
 }
 
-/// The contact force of each wheel (the first [`MAX_WHEELS_DRAWN`]) against the wheel's position, in kN.
-pub fn wheel_plot(results: &VehicleResults, title: &str) -> PlotSpec {
+/// The contact force of each wheel (the first [`MAX_WHEELS_DRAWN`]) against the wheel's position, in kN, while the
+/// wheel is inside `range` (m): the beam, or the nodes the extremes are taken over. Outside it the wheels stand on
+/// rigid ground or run over a finite track's ends, whose pinned supports they hit at their slope (docs/theory.md
+/// §12); `wheels.csv` has every step.
+pub fn wheel_plot(results: &VehicleResults, title: &str, range: (f64, f64)) -> PlotSpec {
     let curves: Curves = results
         .wheels
         .iter()
         .take(MAX_WHEELS_DRAWN)
         .enumerate()
         .map(|(i, w)| {
-            let points = w.history.position.iter().zip(&w.history.force).map(|(&x, &f)| (x, f / 1e3)).collect();
+            let inside = |x: &f64| (range.0..=range.1).contains(x);
+            let points = w.history.position.iter().zip(&w.history.force);
+            let points = points.filter(|(x, _)| inside(x)).map(|(&x, &f)| (x, f / 1e3)).collect();
             (
                 format!("vehicle {} wheel {} (Q₀ = {:.1} kN)", w.vehicle + 1, w.wheel + 1, w.static_force / 1e3),
                 1 + i,
@@ -223,7 +228,7 @@ pub fn wheel_plot(results: &VehicleResults, title: &str) -> PlotSpec {
     };
     quantity_figure(
         WHEEL_FIGURE,
-        &format!("{title}: wheel–rail contact force{shown}"),
+        &format!("{title}: wheel–rail contact force{shown}, wheels at {:.0}–{:.0} m", range.0, range.1),
         "wheel position x (m)",
         "contact force Q (kN, compressive > 0)",
         curves,

@@ -98,3 +98,27 @@ fn bad_vehicles_exit_2_naming_the_path() {
     }
     std::fs::remove_dir_all(&folder).unwrap();
 }
+
+/// Two rail cars from the scenario: eight wheels, each on a quarter of its car.
+#[test]
+fn rail_cars_run_from_a_scenario() {
+    let folder = std::env::temp_dir().join(format!("frictrack-rail-cars-{}", std::process::id()));
+    std::fs::create_dir_all(&folder).unwrap();
+    let cars = scenario(
+        &folder,
+        "cars.toml",
+        "[load]\nspeed = 60.0\n[vehicle]\nkind = \"rail-car\"\ncount = 2\nspacing = 25.0\n[vehicle.rail_car]\n\
+         wheelset_mass = 1100.0\n[integration]\nload_advance = 0.05\n",
+    );
+    let v = json(&frictrack(&["run", &cars, "--format", "json"]));
+    let wheels = v["vehicles"]["wheels"].as_array().unwrap();
+    assert_eq!(wheels.len(), 8);
+    assert_eq!(wheels[7]["offset"].as_f64().unwrap(), 45.0);
+    assert!((wheels[3]["static_force"].as_f64().unwrap() - 61.68e3).abs() < 10.0);
+    assert_eq!(v["vehicles"]["bodies"].as_array().unwrap().len(), 2);
+    let on_train = scenario(&folder, "train.toml", "[load]\ntrain = \"hslm-a1\"\n[vehicle]\nkind = \"rail-car\"\n");
+    let out = frictrack(&["run", &on_train]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("one-wheel vehicles"));
+    std::fs::remove_dir_all(&folder).unwrap();
+}

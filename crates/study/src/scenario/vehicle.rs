@@ -9,6 +9,7 @@ use serde::{Deserialize, Serialize};
 use track::vehicle::Vehicle;
 use track::vehicle::builtin::{MovingMass, QuarterCar};
 use track::vehicle::consist::{FlatWheel, PlacedVehicle, VehicleSettings, WheelRail};
+use track::vehicle::rail_car::RailCar;
 
 /// The kind of vehicle of `[vehicle]`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
@@ -19,6 +20,8 @@ pub enum VehicleKind {
     /// A quarter car (`body_mass`, `suspension_stiffness`, `suspension_damping`, `wheel_mass`).
     #[default]
     QuarterCar,
+    /// The 2-D rail car (`[vehicle.rail_car]`).
+    RailCar,
     /// A vehicle given by its matrices (`[vehicle.matrices]`).
     Matrices,
 }
@@ -29,6 +32,7 @@ impl VehicleKind {
         match self {
             Self::MovingMass => "moving-mass",
             Self::QuarterCar => "quarter-car",
+            Self::RailCar => "rail-car",
             Self::Matrices => "matrices",
         }
     }
@@ -70,6 +74,9 @@ pub struct VehicleSection {
     /// Quarter car: m_u (kg), default 1 000.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub wheel_mass: Option<f64>,
+    /// The 2-D rail car's parameters (defaults: [`RailCar::default`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rail_car: Option<RailCarSection>,
     /// A vehicle by its matrices.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub matrices: Option<MatricesSection>,
@@ -103,6 +110,7 @@ impl Default for VehicleSection {
             suspension_stiffness: None,
             suspension_damping: None,
             wheel_mass: None,
+            rail_car: None,
             matrices: None,
             count: 1,
             spacing: None,
@@ -111,6 +119,71 @@ impl Default for VehicleSection {
             wheel_radius: None,
             contact_stiffness: None,
             flats: Vec::new(),
+        }
+    }
+}
+
+/// `[vehicle.rail_car]`: the 2-D rail car of one rail (docs/theory.md §12); every key optional.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct RailCarSection {
+    /// Car body mass (kg).
+    pub body_mass: f64,
+    /// Car body pitch inertia (kg·m²).
+    pub body_pitch_inertia: f64,
+    /// Bogie mass (kg).
+    pub bogie_mass: f64,
+    /// Bogie pitch inertia (kg·m²).
+    pub bogie_pitch_inertia: f64,
+    /// Wheelset mass (kg).
+    pub wheelset_mass: f64,
+    /// Primary suspension per wheel (N/m).
+    pub primary_stiffness: f64,
+    /// (N·s/m).
+    pub primary_damping: f64,
+    /// Secondary suspension per bogie (N/m).
+    pub secondary_stiffness: f64,
+    /// (N·s/m).
+    pub secondary_damping: f64,
+    /// Half the distance between bogie centres (m).
+    pub bogie_half_distance: f64,
+    /// Half the bogie wheelbase (m).
+    pub axle_half_distance: f64,
+}
+
+impl Default for RailCarSection {
+    fn default() -> Self {
+        let c = RailCar::default();
+        Self {
+            body_mass: c.body_mass,
+            body_pitch_inertia: c.body_pitch_inertia,
+            bogie_mass: c.bogie_mass,
+            bogie_pitch_inertia: c.bogie_pitch_inertia,
+            wheelset_mass: c.wheelset_mass,
+            primary_stiffness: c.primary_stiffness,
+            primary_damping: c.primary_damping,
+            secondary_stiffness: c.secondary_stiffness,
+            secondary_damping: c.secondary_damping,
+            bogie_half_distance: c.bogie_half_distance,
+            axle_half_distance: c.axle_half_distance,
+        }
+    }
+}
+
+impl RailCarSection {
+    fn car(&self) -> RailCar {
+        RailCar {
+            body_mass: self.body_mass,
+            body_pitch_inertia: self.body_pitch_inertia,
+            bogie_mass: self.bogie_mass,
+            bogie_pitch_inertia: self.bogie_pitch_inertia,
+            wheelset_mass: self.wheelset_mass,
+            primary_stiffness: self.primary_stiffness,
+            primary_damping: self.primary_damping,
+            secondary_stiffness: self.secondary_stiffness,
+            secondary_damping: self.secondary_damping,
+            bogie_half_distance: self.bogie_half_distance,
+            axle_half_distance: self.axle_half_distance,
         }
     }
 }
@@ -131,6 +204,8 @@ pub struct MatricesSection {
     pub weight: Vec<f64>,
     /// `[[vehicle.matrices.wheels]]`.
     pub wheels: Vec<WheelSection>,
+    /// The DOF whose acceleration is reported as the body's (0-based). Default 0.
+    pub body: usize,
 }
 
 /// A wheel of a vehicle given by its matrices.
@@ -352,12 +427,14 @@ impl VehicleSection {
         match self.kind {
             VehicleKind::MovingMass => {
                 unused("body_mass … wheel_mass", quarter.iter().any(Option::is_some))?;
+                unused("rail_car", self.rail_car.is_some())?;
                 unused("matrices", self.matrices.is_some())?;
                 let mass = self.mass.unwrap_or(MovingMass::default().mass);
                 Ok(MovingMass { mass }.vehicle()?)
             }
             VehicleKind::QuarterCar => {
                 unused("mass", self.mass.is_some())?;
+                unused("rail_car", self.rail_car.is_some())?;
                 unused("matrices", self.matrices.is_some())?;
                 let d = QuarterCar::default();
                 Ok(QuarterCar {
@@ -368,9 +445,16 @@ impl VehicleSection {
                 }
                 .vehicle()?)
             }
+            VehicleKind::RailCar => {
+                unused("mass", self.mass.is_some())?;
+                unused("body_mass … wheel_mass", quarter.iter().any(Option::is_some))?;
+                unused("matrices", self.matrices.is_some())?;
+                Ok(self.rail_car.unwrap_or_default().car().vehicle()?)
+            }
             VehicleKind::Matrices => {
                 unused("mass", self.mass.is_some())?;
                 unused("body_mass … wheel_mass", quarter.iter().any(Option::is_some))?;
+                unused("rail_car", self.rail_car.is_some())?;
                 let m = self.matrices.as_ref().ok_or_else(|| {
                     invalid("vehicle.matrices", "missing", "kind = \"matrices\" needs [vehicle.matrices]")
                 })?;
@@ -392,6 +476,7 @@ impl VehicleSection {
                     stiffness: flat("stiffness", &m.stiffness)?,
                     weight: m.weight.clone(),
                     wheels: m.wheels.iter().map(|w| track::vehicle::Wheel { dof: w.dof, offset: w.offset }).collect(),
+                    body: m.body,
                 };
                 vehicle.validate()?;
                 Ok(vehicle)

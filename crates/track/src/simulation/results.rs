@@ -203,7 +203,7 @@ impl WheelResult {
     }
 }
 
-/// What a run reports of one vehicle's body (its DOF 0).
+/// What a run reports of one vehicle's body (its [`crate::vehicle::Vehicle::body`] DOF).
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct BodyResult {
     /// The vehicle's name.

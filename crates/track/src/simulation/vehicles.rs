@@ -87,7 +87,7 @@ impl Coupling {
             contacts.push(Box::new(contact));
             system_dofs.push(dof);
         }
-        let bodies = (0..vehicles.vehicles.len()).map(|v| layout.dof(v + 1, 0)).collect();
+        let bodies = vehicles.vehicles.iter().enumerate().map(|(v, p)| layout.dof(v + 1, p.vehicle.body)).collect();
         let observer = VehicleObserver::new(
             vehicles,
             &wheels,
@@ -106,7 +106,7 @@ pub(super) struct VehicleObserver {
     /// Where each wheel is at t = 0 (m).
     starts: Vec<f64>,
     speed: f64,
-    /// The body DOF (DOF 0) of each vehicle in the system, its largest |acceleration| and Σ a²·h.
+    /// The body DOF ([`crate::vehicle::Vehicle::body`]) of each vehicle in the system, its largest |acceleration| and Σ a²·h.
     bodies: Vec<usize>,
     body_results: Vec<BodyResult>,
     body_square_integral: Vec<f64>,

@@ -37,6 +37,7 @@ impl MovingMass {
             stiffness: vec![0.0],
             weight: vec![-self.mass * GRAVITY],
             wheels: vec![Wheel { dof: 0, offset: 0.0 }],
+            body: 0,
         })
     }
 }
@@ -105,6 +106,7 @@ impl QuarterCar {
             stiffness: vec![k, -k, -k, k],
             weight: vec![-self.body_mass * GRAVITY, -self.wheel_mass * GRAVITY],
             wheels: vec![Wheel { dof: 1, offset: 0.0 }],
+            body: 0,
         })
     }
 }

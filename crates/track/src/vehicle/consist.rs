@@ -83,9 +83,17 @@ impl VehicleSettings {
 
     /// A copy of `template` on every axle of `train` (at the axle's offset), each scaled so that its weight is the
     /// axle's force: M, C, K and f_g times P_i/W, which keeps every natural frequency and damping ratio. The
-    /// template's wheels all run at the axle (their offsets are dropped); patches have no vehicle and are refused.
+    /// template has one wheel, which runs at the axle; patches have no vehicle and are refused.
     pub fn populate(template: &Vehicle, train: &Train) -> Result<Self> {
         template.validate()?;
+        if template.wheels.len() != 1 {
+            return Err(invalid(
+                "vehicle.train",
+                template.wheels.len() as f64,
+                "a train's axles take one-wheel vehicles (moving mass, quarter car): run cars with several wheels in \
+                 a row instead",
+            ));
+        }
         if !train.patches.is_empty() {
             return Err(invalid("vehicle.train", train.patches.len() as f64, "load patches cannot carry vehicles"));
         }
@@ -106,8 +114,9 @@ impl VehicleSettings {
                     stiffness: scale(&template.stiffness),
                     weight: scale(&template.weight),
                     wheels: template.wheels.clone(),
+                    body: template.body,
                 };
-                vehicle.wheels.iter_mut().for_each(|w| w.offset = 0.0);
+                vehicle.wheels[0].offset = 0.0;
                 PlacedVehicle { vehicle, offset: axle.offset }
             })
             .collect();

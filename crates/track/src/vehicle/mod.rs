@@ -3,13 +3,15 @@
 //! pitch) from the configuration where every spring is unstretched and every wheel at height 0; f_g the weights
 //! (N, upward positive, so −m g); λ_w ≥ 0 the contact force on wheel w, never tensile.
 //!
-//! Built-in forms ([`builtin`]): the moving mass and the quarter car; a user vehicle is given by its matrices.
+//! Built-in forms ([`builtin`]): the moving mass and the quarter car; the 2-D rail car ([`rail_car`]); a user
+//! vehicle is given by its matrices. [`consist`] puts vehicles in a row for a run.
 //! [`ground`] rolls wheels over rigid ground with a rail profile r(x), [`rail`] along the beam (compliant contact).
 
 pub mod builtin;
 pub mod consist;
 pub mod ground;
 pub mod rail;
+pub mod rail_car;
 
 use crate::error::{Result, invalid};
 use banded::SymmetricBanded;
@@ -44,6 +46,8 @@ pub struct Vehicle {
     pub weight: Vec<f64>,
     /// The wheels.
     pub wheels: Vec<Wheel>,
+    /// The DOF whose acceleration is reported as the body's (comfort): the car body's bounce.
+    pub body: usize,
 }
 
 impl Vehicle {
@@ -79,6 +83,9 @@ impl Vehicle {
         if let Some(w) = self.weight.iter().find(|w| !w.is_finite()) {
             return Err(invalid("vehicle.weight", *w, "must be finite (N)"));
         }
+        if self.body >= n {
+            return Err(invalid("vehicle.body", self.body as f64, format!("must be a DOF index < {n}")));
+        }
         if self.wheels.is_empty() {
             return Err(invalid("vehicle.wheels", 0.0, "needs at least one wheel"));
         }
@@ -93,13 +100,31 @@ impl Vehicle {
         Ok(())
     }
 
-    /// The vehicle as a system block (dense band: bandwidth n − 1).
+    /// The largest |i − j| of a nonzero entry of M, C or K: order the DOFs so that it is small (the beam's is 3),
+    /// for a system stacked from blocks takes the largest bandwidth of its blocks.
+    pub fn bandwidth(&self) -> usize {
+        let n = self.dofs();
+        let mut width = 0;
+        for matrix in [&self.mass, &self.damping, &self.stiffness] {
+            for i in 0..n {
+                for j in 0..i {
+                    if matrix[i * n + j] != 0.0 {
+                        width = width.max(i - j);
+                    }
+                }
+            }
+        }
+        width
+    }
+
+    /// The vehicle as a system block, banded with [`Vehicle::bandwidth`].
     pub fn system(&self) -> LinearSystem {
         let n = self.dofs();
+        let width = self.bandwidth();
         let banded = |dense: &[f64]| {
-            let mut m = SymmetricBanded::zeros(n, n - 1);
+            let mut m = SymmetricBanded::zeros(n, width);
             for i in 0..n {
-                for j in 0..=i {
+                for j in i.saturating_sub(width)..=i {
                     m.add(i, j, dense[i * n + j]);
                 }
             }
@@ -192,6 +217,7 @@ mod tests {
             stiffness: vec![0.0; 4],
             weight: vec![-1.0, -1.0],
             wheels: vec![Wheel { dof: 1, offset: 0.0 }],
+            body: 0,
         };
         assert!(loose.static_state(&[0.0]).is_err());
     }

@@ -24,6 +24,7 @@ fn pressed_mass(mass: f64) -> Vehicle {
         stiffness: vec![0.0],
         weight: vec![-FORCE],
         wheels: vec![Wheel { dof: 0, offset: 0.0 }],
+        body: 0,
     }
 }
 
