@@ -103,9 +103,15 @@ pub fn run(args: &SweepArgs) -> Result<()> {
     match &args.out {
         Some(path) => {
             write_atomically(path, &csv)?;
+            let vehicle_columns = study::sweep::VEHICLE_CSV_COLUMNS.iter().filter(|_| scenario.vehicle.is_some());
+            let columns: Vec<_> = study::sweep::CSV_COLUMNS
+                .iter()
+                .chain(vehicle_columns)
+                .map(|(name, unit, meaning)| json!({ "name": name, "unit": unit, "meaning": meaning }))
+                .collect();
             let metadata = json!({
                 "csv": path.file_name().map(|n| n.to_string_lossy().into_owned()),
-                "columns": study::sweep::CSV_COLUMNS.iter().map(|(name, unit, meaning)| json!({ "name": name, "unit": unit, "meaning": meaning })).collect::<Vec<_>>(),
+                "columns": columns,
                 "extremes_window": scenario.output.extremes_window(scenario.mesh.length),
                 "critical_speed": critical.as_ref().map(|c| json!({ "description": c.describe(), "result": c })),
                 "frictrack_version": env!("CARGO_PKG_VERSION"),

@@ -64,7 +64,65 @@ pub struct SweepPoint {
     pub window_max_upward_time: f64,
     /// Largest vertical acceleration over nodes and steps (m/s², magnitude): a bridge deck's check value.
     pub max_acceleration: f64,
+    /// The vehicles' columns, in a run with vehicles.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub vehicles: Option<VehicleColumns>,
 }
+
+/// What a sweep point reports of the vehicles (docs/theory.md §12), over the wheels and bodies of the run.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct VehicleColumns {
+    /// Smallest wheel–rail force of any wheel (N).
+    pub min_wheel_force: f64,
+    /// Largest wheel–rail force (N).
+    pub max_wheel_force: f64,
+    /// Largest ΔQ/Q₀ of any wheel.
+    pub max_dynamic_increment: f64,
+    /// Losses of contact over all wheels.
+    pub losses_of_contact: usize,
+    /// Largest body acceleration of any vehicle (m/s²).
+    pub max_body_acceleration: f64,
+    /// Largest body RMS acceleration (m/s²).
+    pub rms_body_acceleration: f64,
+}
+
+impl VehicleColumns {
+    /// The columns of a run's vehicle results.
+    pub fn of(results: &track::simulation::VehicleResults) -> Self {
+        let wheels = &results.wheels;
+        let largest = |values: &mut dyn Iterator<Item = f64>| values.fold(0.0, f64::max);
+        Self {
+            min_wheel_force: wheels.iter().map(|w| w.min_force).fold(f64::INFINITY, f64::min),
+            max_wheel_force: largest(&mut wheels.iter().map(|w| w.max_force)),
+            max_dynamic_increment: largest(&mut wheels.iter().map(|w| w.dynamic_increment())),
+            losses_of_contact: wheels.iter().map(|w| w.losses.len()).sum(),
+            max_body_acceleration: largest(&mut results.bodies.iter().map(|b| b.max_acceleration)),
+            rms_body_acceleration: largest(&mut results.bodies.iter().map(|b| b.rms_acceleration)),
+        }
+    }
+
+    /// The values in the order of [`VEHICLE_CSV_COLUMNS`].
+    pub fn values(&self) -> [f64; 6] {
+        [
+            self.min_wheel_force,
+            self.max_wheel_force,
+            self.max_dynamic_increment,
+            self.losses_of_contact as f64,
+            self.max_body_acceleration,
+            self.rms_body_acceleration,
+        ]
+    }
+}
+
+/// The vehicles' columns of sweep output, after [`CSV_COLUMNS`] when a sweep runs vehicles: name, unit, meaning.
+pub const VEHICLE_CSV_COLUMNS: [(&str, &str, &str); 6] = [
+    ("min_wheel_force", "N", "smallest wheel–rail contact force of any wheel (0: contact lost)"),
+    ("max_wheel_force", "N", "largest wheel–rail contact force"),
+    ("max_dynamic_increment", "1", "largest |Q − Q₀|/Q₀ of any wheel"),
+    ("losses_of_contact", "1", "losses of contact over all wheels"),
+    ("max_body_acceleration", "m/s²", "largest body acceleration of any vehicle"),
+    ("rms_body_acceleration", "m/s²", "largest RMS body acceleration of any vehicle"),
+];
 
 /// One run of `case` at `speed` (m/s), without journal (see [`Runner::point`]).
 pub fn run_point(case: &Case, speed: f64) -> Result<SweepPoint> {
@@ -96,6 +154,7 @@ fn point_until(case: &Case, speed: f64, stop: Option<&AtomicBool>) -> Result<Swe
         window_max_upward_position: window.max_upward.position,
         window_max_upward_time: window.max_upward.time,
         max_acceleration: r.max_acceleration.magnitude,
+        vehicles: r.vehicles.as_ref().map(VehicleColumns::of),
     })
 }
 
@@ -286,11 +345,17 @@ pub fn csv_header() -> String {
     CSV_COLUMNS.map(|(name, _, _)| name).join(",")
 }
 
-/// Write sweep points as CSV (header + one line per point, full precision).
+/// Write sweep points as CSV (header + one line per point, full precision), with the vehicles' columns
+/// ([`VEHICLE_CSV_COLUMNS`]) when the points have them.
 pub fn write_csv(points: &[SweepPoint], out: &mut dyn Write) -> std::io::Result<()> {
-    writeln!(out, "{}", csv_header())?;
+    let vehicles = points.iter().any(|p| p.vehicles.is_some());
+    if vehicles {
+        writeln!(out, "{},{}", csv_header(), VEHICLE_CSV_COLUMNS.map(|(name, _, _)| name).join(","))?;
+    } else {
+        writeln!(out, "{}", csv_header())?;
+    }
     for p in points {
-        writeln!(
+        write!(
             out,
             "{}",
             row(&[
@@ -313,6 +378,11 @@ pub fn write_csv(points: &[SweepPoint], out: &mut dyn Write) -> std::io::Result<
                 p.max_acceleration,
             ])
         )?;
+        match (vehicles, p.vehicles) {
+            (true, Some(v)) => writeln!(out, ",{}", row(&v.values()))?,
+            (true, None) => writeln!(out, ",{}", row(&[f64::NAN; 6]))?,
+            (false, _) => writeln!(out)?,
+        }
     }
     Ok(())
 }
