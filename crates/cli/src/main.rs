@@ -35,9 +35,9 @@ enum Command {
     Run(run::RunArgs),
     /// Run a scenario at many speeds in parallel; CSV of max deflections, dissipated energy and W̄ per speed.
     Sweep(sweep::SweepArgs),
-    /// Run one of the seven studies of docs/theory.md §7 and §10: CSV, JSON and figures in the output folder.
+    /// Run one of the eight studies of docs/theory.md §7, §10 and §12: CSV, JSON and figures in the output folder.
     Study(study_cmd::StudyArgs),
-    /// Run all seven studies and write their data, figures and report.md.
+    /// Run all eight studies and write their data, figures and report.md.
     Reproduce(reproduce::ReproduceArgs),
     /// Validate a scenario file.
     Check(check::CheckArgs),

@@ -57,6 +57,10 @@ pub struct ScenarioArgs {
     /// Start from the analytic steady state with the load at this position (m) instead of at rest.
     #[arg(long, allow_negative_numbers = true)]
     pub steady_start: Option<f64>,
+    /// Start at rest in the static equilibrium of the loads (and vehicles) standing with the first at this position
+    /// (m): no drop of vehicles into a soft track's trough as they enter.
+    #[arg(long, allow_negative_numbers = true)]
+    pub static_start: Option<f64>,
     /// Absorbing end zones of this length (m), foundation damping graded up to c_cr.
     #[arg(long, allow_negative_numbers = true)]
     pub absorbing_zones: Option<f64>,
@@ -130,6 +134,9 @@ impl ScenarioArgs {
         }
         if let Some(x) = self.steady_start {
             s.integration.steady_start = Some(x);
+        }
+        if let Some(x) = self.static_start {
+            s.integration.static_start = Some(x);
         }
         if let Some(text) = &self.extremes_window {
             let bad = || study::error::invalid("--extremes-window", text, "expected A:B, two load positions in m");

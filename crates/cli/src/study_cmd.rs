@@ -1,4 +1,4 @@
-//! `frictrack study <preset>`: run one of the seven studies (docs/theory.md §7 and §10) and write `<preset>.csv` (the
+//! `frictrack study <preset>`: run one of the eight studies (docs/theory.md §7, §10 and §12) and write `<preset>.csv` (the
 //! data), `<preset>.json` (scenario, version, git revision, resolution, summary, wall time) and its figures (PNG and
 //! SVG) into the output folder.
 

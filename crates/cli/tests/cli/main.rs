@@ -389,7 +389,7 @@ fn study_writes_data_metadata_and_figures() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
-/// All seven studies at coarse resolution (about 1.5 minutes): every file exists and parses, every figure is a valid
+/// All eight studies at coarse resolution (about 1.5 minutes): every file exists and parses, every figure is a valid
 /// PNG and SVG, and the report shows every figure.
 #[test]
 fn reproduce_coarse_writes_every_study_and_a_report() {
@@ -406,6 +406,7 @@ fn reproduce_coarse_writes_every_study_and_a_report() {
         "amplification",
         "discrete-vs-distributed",
         "hslm",
+        "vehicle-speed",
     ] {
         let csv = std::fs::read_to_string(dir.join(format!("{name}.csv"))).unwrap();
         let columns = csv.lines().next().unwrap().split(',').count();
@@ -421,7 +422,7 @@ fn reproduce_coarse_writes_every_study_and_a_report() {
         }
         assert!(report.contains(&format!("({name}.csv)")));
     }
-    // 3 + 3 + 1 + 3 + 4 + 2 + 6 figures.
-    assert_eq!(figures, 22);
+    // 3 + 3 + 1 + 3 + 4 + 2 + 6 + 6 figures.
+    assert_eq!(figures, 28);
     let _ = std::fs::remove_dir_all(&dir);
 }

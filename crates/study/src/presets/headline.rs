@@ -158,6 +158,42 @@ pub(super) fn headline(preset: Preset, summary: &Value) -> Vec<String> {
                 ),
             ]
         }
+        Preset::VehicleSpeed => {
+            let pick = |model: &str, friction: &str, rail: &str| {
+                find(&|v: &Value| v["model"] == model && v["friction"] == friction && v["rail"] == rail)
+            };
+            let (force, mass, car) = (
+                pick("moving-force", "none", "smooth"),
+                pick("moving-mass", "none", "smooth"),
+                pick("quarter-car", "none", "smooth"),
+            );
+            let peak = |v: &Value| {
+                format!(
+                    "{:.1} mm at {:.0} m/s",
+                    1e3 * number(v, "peak_max_downward_deflection"),
+                    number(v, "peak_speed")
+                )
+            };
+            let rough = pick("quarter-car", "none", "irregular");
+            let lift = |v: &Value| match v.get("first_loss_of_contact_speed").and_then(Value::as_f64) {
+                Some(speed) => format!("leaves the rail from {speed:.0} m/s on"),
+                None => format!("keeps at least {:.1} kN on the rail", number(v, "min_wheel_force") / 1e3),
+            };
+            vec![
+                format!(
+                    "On the smooth rail without friction the peak rail deflection is {} under the moving force, {} \
+                     under the moving mass and {} under the quarter car.",
+                    peak(&force),
+                    peak(&mass),
+                    peak(&car)
+                ),
+                format!(
+                    "On the irregular rail the quarter car's wheel {}, its body reaching {:.2} m/s².",
+                    lift(&rough),
+                    number(&rough, "max_body_acceleration")
+                ),
+            ]
+        }
         Preset::DiscreteVsDistributed => vec![
             format!(
                 "With equal capacity, 199 devices of 1 kN and f_u = 0.995 kN/m give mid-span histories within {:.2} mm of each other on a {:.1} mm peak.",

@@ -15,7 +15,7 @@ use super::{Resolution, StudyData, blank, mean_iterations, with_devices};
 use crate::diagnostics::{deck_frequency, resolving_advance};
 use crate::error::Result;
 use crate::number::row;
-use crate::scenario::{AbsorbingZonesSection, Scenario};
+use crate::scenario::Scenario;
 use crate::sweep::{CriticalSpeed, Runner, SweepPoint};
 use fem_beam::train::HSLM_A;
 use fem_beam::{BeamModel, Train};
@@ -43,7 +43,7 @@ pub(super) fn coach_length(k: usize) -> f64 {
 
 /// The devices the study compares when `base` has no `[friction]`: N = round(31·L/200 m), at least 1 (3 on a 20 m
 /// span), of 50 kN; None when the scenario gives its own friction.
-fn fallback_devices(base: &Scenario) -> Option<(usize, f64)> {
+pub(super) fn fallback_devices(base: &Scenario) -> Option<(usize, f64)> {
     let f = &base.friction;
     (f.devices.is_none() && f.distributed.is_none())
         .then(|| (((31.0 * base.mesh.length / 200.0).round() as usize).max(1), FALLBACK_FORCE))
@@ -55,13 +55,13 @@ fn friction_name(friction: usize) -> &'static str {
 }
 
 /// "1 device × 50 kN", "31 devices × 50 kN".
-fn devices_text(count: usize, force: f64) -> String {
+pub(super) fn devices_text(count: usize, force: f64) -> String {
     format!("{count} device{} × {} kN", if count == 1 { "" } else { "s" }, force / 1e3)
 }
 
 /// The study's two set-ups on `base`: without any friction, and with the scenario's `[friction]` (else the fallback
 /// devices) and its description.
-fn friction_setups(base: &Scenario) -> (Scenario, Scenario, String) {
+pub(super) fn friction_setups(base: &Scenario) -> (Scenario, Scenario, String) {
     let none = with_devices(base, 0, 0.0);
     if let Some((count, force)) = fallback_devices(base) {
         return (none, with_devices(base, count, force), devices_text(count, force));
@@ -100,29 +100,7 @@ fn prepared(base: &Scenario, speeds: &[f64]) -> Result<(Scenario, Vec<String>)> 
                 s.integration.load_advance = needed;
             }
         }
-        None => {
-            let length = s.mesh.length;
-            if s.foundation.absorbing_zones.is_none() {
-                let zones = AbsorbingZonesSection { length: (length / 5.0).min(40.0), ..Default::default() };
-                notes.push(format!(
-                    "on a track the study adds absorbing zones of {:.1} m at the ends (damping up to {} × c_cr) so \
-                     that the trains' waves leave the beam as on an infinite track (give \
-                     [foundation.absorbing_zones], with peak_ratio = 0 for none)",
-                    zones.length, zones.peak_ratio
-                ));
-                s.foundation.absorbing_zones = Some(zones);
-            }
-            if s.output.extremes_nodes.is_none() {
-                s.output.extremes_nodes = Some([length / 3.0, 2.0 * length / 3.0]);
-                notes.push(format!(
-                    "on a track the extremes are taken over the nodes of the middle third, {:.1}–{:.1} m, away from \
-                     the transients where the trains enter and leave over the supports ([output] extremes_nodes sets \
-                     another range)",
-                    length / 3.0,
-                    2.0 * length / 3.0
-                ));
-            }
-        }
+        None => super::as_long_track(&mut s, &mut notes, "the trains"),
     }
     Ok((s, notes))
 }

@@ -1,4 +1,4 @@
-//! The six studies of docs/theory.md §7 and the train study of §10 as named presets. Each returns its data as CSV
+//! The six studies of docs/theory.md §7, the train study of §10 and the vehicle study of §12 as named presets. Each returns its data as CSV
 //! (long format, one row per point, SI units), a JSON summary (critical speeds, peaks, optimal forces) and a few
 //! human-readable summary lines.
 //! All runs of a study share one rayon pool; results do not depend on the thread count.
@@ -16,10 +16,11 @@ mod headline;
 mod hslm;
 mod hslm_figures;
 mod optimal_force;
+mod vehicle_speed;
 
 use crate::error::{Result, invalid};
 use crate::plot::PlotSpec;
-use crate::scenario::{DevicesSection, DistributedSection, Scenario, SweepSection};
+use crate::scenario::{AbsorbingZonesSection, DevicesSection, DistributedSection, Scenario, SweepSection};
 use crate::speeds::SpeedScale;
 use crate::sweep::{Runner, SweepPoint};
 use serde::Serialize;
@@ -42,6 +43,8 @@ pub enum Preset {
     DiscreteVsDistributed,
     /// 7. Eurocode HSLM-A1 … A10 (docs/theory.md §10): max deflection and deck acceleration vs speed.
     Hslm,
+    /// 8. Vehicles against the moving force (docs/theory.md §12): deflection, wheel force, body acceleration vs speed.
+    VehicleSpeed,
 }
 
 /// How finely the studies sample speeds and forces.
@@ -102,8 +105,8 @@ impl Resolution {
 }
 
 impl Preset {
-    /// All seven, in docs/theory.md order.
-    pub const ALL: [Preset; 7] = [
+    /// All eight, in docs/theory.md order.
+    pub const ALL: [Preset; 8] = [
         Preset::DiscreteSpeed,
         Preset::EqualCost,
         Preset::OptimalForce,
@@ -111,6 +114,7 @@ impl Preset {
         Preset::Amplification,
         Preset::DiscreteVsDistributed,
         Preset::Hslm,
+        Preset::VehicleSpeed,
     ];
 
     /// Name on the command line and of the output files.
@@ -123,6 +127,7 @@ impl Preset {
             Preset::Amplification => "amplification",
             Preset::DiscreteVsDistributed => "discrete-vs-distributed",
             Preset::Hslm => "hslm",
+            Preset::VehicleSpeed => "vehicle-speed",
         }
     }
 
@@ -164,14 +169,26 @@ impl Preset {
                 "foundation.absorbing_zones and output.extremes_nodes: on a track, unless the scenario gives them, \
                  zones of min(40 m, L/5) at the ends and the extremes over the middle third",
             ],
+            Preset::VehicleSpeed => &[
+                "load: a moving force F, a moving mass F/g and the default quarter car scaled to F, in turn",
+                "friction: none, and the scenario's [friction] (if it has none: devices of 50 kN, 31 per 200 m)",
+                "rail: smooth, and the scenario's [rail] (if it has none: German low irregularity, 1–80 m, seed 1)",
+                "integration.load_advance: at most what resolves the wheel–rail contact mode at the lowest speed",
+                "integration.static_start: every load starts at rest in its static equilibrium at min(40 m, L/5), \
+                 unless the scenario gives a start",
+                "foundation.absorbing_zones and output.extremes_nodes: on a track, unless the scenario gives them, \
+                 zones of min(40 m, L/5) at the ends and the extremes over the middle third",
+            ],
         }
     }
 
     /// The parts of `base` that this study replaces with its own (see [`Preset::sets`]), one sentence each; empty
     /// when the base scenario leaves them at their defaults.
     pub fn overrides(self, base: &Scenario) -> Vec<String> {
-        if self == Preset::Hslm {
-            return hslm::overrides(base);
+        match self {
+            Preset::Hslm => return hslm::overrides(base),
+            Preset::VehicleSpeed => return vehicle_speed::overrides(base),
+            _ => {}
         }
         let mut notes = Vec::new();
         let f = &base.friction;
@@ -189,7 +206,10 @@ impl Preset {
 
     /// Whether the study sweeps the load speed (the others run at fixed speeds).
     pub fn sweeps_speed(self) -> bool {
-        matches!(self, Preset::DiscreteSpeed | Preset::EqualCost | Preset::DistributedSpeed | Preset::Hslm)
+        matches!(
+            self,
+            Preset::DiscreteSpeed | Preset::EqualCost | Preset::DistributedSpeed | Preset::Hslm | Preset::VehicleSpeed
+        )
     }
 
     /// The speeds (m/s) the study sweeps on `base`, None for the studies at fixed speeds.
@@ -211,6 +231,7 @@ impl Preset {
             Preset::Amplification => "Dynamic amplification at mid-span",
             Preset::DiscreteVsDistributed => "199 devices × 1 kN against 0.995 kN/m distributed friction",
             Preset::Hslm => "Eurocode HSLM-A1 … A10: deflection and deck acceleration vs speed",
+            Preset::VehicleSpeed => "Vehicles against the moving force: deflection, wheel force, body acceleration",
         }
     }
 }
@@ -253,9 +274,16 @@ fn unit_of(column: &str) -> &'static str {
         "global_norm" => "m²",
         "time" => "s",
         "impulse" => "N·s",
-        "model" | "train" | "friction" => "text",
-        "max_acceleration" => "m/s²",
-        "devices" | "tau" | "phi_w" | "phi_m" | "dynamic_amplification" => "1",
+        "model" | "train" | "friction" | "rail" => "text",
+        "max_acceleration" | "max_body_acceleration" | "rms_body_acceleration" => "m/s²",
+        "min_wheel_force" | "max_wheel_force" => "N",
+        "devices"
+        | "tau"
+        | "phi_w"
+        | "phi_m"
+        | "dynamic_amplification"
+        | "max_dynamic_increment"
+        | "losses_of_contact" => "1",
         _ => "m",
     }
 }
@@ -270,6 +298,7 @@ pub fn run_preset(preset: Preset, resolution: Resolution, base: &Scenario, runne
         Preset::Amplification => amplification::study(base, runner)?,
         Preset::DiscreteVsDistributed => discrete_vs_distributed::study(base, runner)?,
         Preset::Hslm => hslm::study(resolution, base, runner)?,
+        Preset::VehicleSpeed => vehicle_speed::study(resolution, base, runner)?,
     };
     let headline = headline::headline(preset, &data.summary);
     let header = data.csv.lines().next().unwrap_or_default();
@@ -282,6 +311,33 @@ pub fn run_preset(preset: Preset, resolution: Resolution, base: &Scenario, runne
         headline,
         ..data
     })
+}
+
+/// On a track, what stands for an infinite one under long loads (`what`, e.g. "the trains"): absorbing zones of
+/// min(40 m, L/5) at the ends unless the scenario has its own (an undamped track keeps the waves trapped between its
+/// pinned ends), and the extremes over the nodes of the middle third unless `[output] extremes_nodes` is given (loads
+/// entering and leaving over a support set off transients there); a sentence in `notes` for each change.
+pub(super) fn as_long_track(s: &mut Scenario, notes: &mut Vec<String>, what: &str) {
+    let length = s.mesh.length;
+    if s.foundation.absorbing_zones.is_none() {
+        let zones = AbsorbingZonesSection { length: (length / 5.0).min(40.0), ..Default::default() };
+        notes.push(format!(
+            "on a track the study adds absorbing zones of {:.1} m at the ends (damping up to {} × c_cr) so that \
+             {what}' waves leave the beam as on an infinite track (give [foundation.absorbing_zones], with \
+             peak_ratio = 0 for none)",
+            zones.length, zones.peak_ratio
+        ));
+        s.foundation.absorbing_zones = Some(zones);
+    }
+    if s.output.extremes_nodes.is_none() {
+        s.output.extremes_nodes = Some([length / 3.0, 2.0 * length / 3.0]);
+        notes.push(format!(
+            "on a track the extremes are taken over the nodes of the middle third, {:.1}–{:.1} m, away from the \
+             transients where {what} enter and leave over the supports ([output] extremes_nodes sets another range)",
+            length / 3.0,
+            2.0 * length / 3.0
+        ));
+    }
 }
 
 pub(super) fn with_devices(base: &Scenario, count: usize, force: f64) -> Scenario {

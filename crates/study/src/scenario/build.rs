@@ -188,9 +188,13 @@ impl Scenario {
     pub fn run_settings(&self, speed: f64) -> Result<RunSettings> {
         let train = crate::trains::resolve(&self.load)?;
         let i = &self.integration;
-        let initial = match i.steady_start {
-            Some(position) => InitialState::SteadyState { position },
-            None => InitialState::Rest,
+        let initial = match (i.steady_start, i.static_start) {
+            (Some(_), Some(x)) => {
+                return Err(invalid("integration.static_start", x, "give steady_start or static_start, not both"));
+            }
+            (Some(position), None) => InitialState::SteadyState { position },
+            (None, Some(position)) => InitialState::Static { position },
+            (None, None) => InitialState::Rest,
         };
         let solver = SolverSettings {
             kind: i.solver,
@@ -264,6 +268,7 @@ fn scenario_path(error: track::TrackError) -> StudyError {
                 "integration.step" => "integration.load_advance",
                 "solver.tolerance" => "integration.tolerance",
                 "solver.max_iterations" => "integration.max_iterations",
+                "initial.static_position" => "integration.static_start",
                 "initial.position" => "integration.steady_start",
                 "end_time" => "integration.end_time",
                 "record_sections" => "output.sections",

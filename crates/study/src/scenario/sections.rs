@@ -296,6 +296,9 @@ pub struct IntegrationSection {
     pub moving_window: bool,
     /// Start from the analytic steady state with the load here (m) instead of at rest.
     pub steady_start: Option<f64>,
+    /// Start at rest in the static equilibrium of the loads (and vehicles) standing with the first one here (m).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub static_start: Option<f64>,
     /// Run until this time (s) instead of stopping when the load leaves.
     pub end_time: Option<f64>,
 }
@@ -311,6 +314,7 @@ impl Default for IntegrationSection {
             max_iterations: s.integration.solver.max_iterations,
             moving_window: s.integration.solver.moving_window,
             steady_start: None,
+            static_start: None,
             end_time: None,
         }
     }

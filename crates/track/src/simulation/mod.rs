@@ -86,6 +86,13 @@ impl<'a> Simulation<'a> {
         let n = dofs.free_len();
         match self.settings.moving.initial {
             InitialState::Rest => Ok((vec![0.0; n], vec![0.0; n])),
+            InitialState::Static { position } => {
+                // K q = f of the loads standing there (the vehicles' static wheel loads with vehicles).
+                let mesh = self.model.mesh();
+                let mut q = self.settings.moving.train().load_vector(mesh, position).to_free(mesh, dofs);
+                self.model.stiffness().factor()?.solve_in_place(&mut q);
+                Ok((q, vec![0.0; n]))
+            }
             InitialState::SteadyState { position } => {
                 // The infinite beam is linear: a train's steady state is the sum of its axles' (docs/theory.md §8,
                 // §10), each shifted by its offset. Patches have no closed form here.
@@ -132,13 +139,11 @@ impl<'a> Simulation<'a> {
         let theta = settings.integration.theta;
         let start = settings.start_position();
         let coupling = match &settings.moving.vehicles {
-            Some(vehicles) => Some(Coupling::new(
-                model,
-                vehicles,
-                (start, settings.moving.speed),
-                theta,
-                settings.record.extremes_nodes,
-            )?),
+            Some(vehicles) => {
+                let (beam_q0, _) = self.initial_state()?;
+                let motion = (start, settings.moving.speed);
+                Some(Coupling::new(model, vehicles, &beam_q0, motion, theta, settings.record.extremes_nodes)?)
+            }
             None => None,
         };
         let moving = coupling.is_some();

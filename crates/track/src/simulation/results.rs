@@ -203,7 +203,8 @@ impl WheelResult {
     }
 }
 
-/// What a run reports of one vehicle's body (its [`crate::vehicle::Vehicle::body`] DOF).
+/// What a run reports of one vehicle's body (its [`crate::vehicle::Vehicle::body`] DOF), while all its wheels are
+/// inside the extremes region ([`crate::RecordSettings::extremes_nodes`]; the whole run without one).
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct BodyResult {
     /// The vehicle's name.
@@ -212,7 +213,7 @@ pub struct BodyResult {
     pub max_acceleration: f64,
     /// RMS acceleration over the run (m/s²): comfort.
     pub rms_acceleration: f64,
-    /// Time over which the RMS is taken (s).
+    /// Time over which the RMS is taken (s): 0 if the vehicle never was wholly inside the region.
     pub duration: f64,
 }
 

@@ -20,6 +20,13 @@ pub enum InitialState {
         /// Load position at t = 0 (m).
         position: f64,
     },
+    /// At rest in the static equilibrium of the loads standing with the first one at `position` (m): the beam
+    /// deflected under them and, with vehicles, the vehicles on the deflected rail. Removes the drop of vehicles
+    /// entering a soft track from the rigid ground level with its unloaded rail.
+    Static {
+        /// Load position at t = 0 (m).
+        position: f64,
+    },
 }
 
 /// What moves on the beam: the load (one axle, or a train), its speed and where it starts.
@@ -146,7 +153,8 @@ impl RunSettings {
                 return Err(invalid(
                     "initial.position",
                     position,
-                    "vehicles start at rest in static equilibrium: no steady-state start",
+                    "vehicles start at rest in static equilibrium (on the unloaded rail, or on the loaded one with a \
+                     static start): no steady-state start",
                 ));
             }
         }
@@ -188,10 +196,15 @@ impl RunSettings {
         if self.integration.solver.max_iterations == 0 {
             return Err(invalid("solver.max_iterations", 0.0, "must be ≥ 1"));
         }
-        if let InitialState::SteadyState { position } = self.moving.initial
+        if let InitialState::SteadyState { position } | InitialState::Static { position } = self.moving.initial
             && !(position.is_finite() && (0.0..length).contains(&position))
         {
-            return Err(invalid("initial.position", position, format!("must lie in [0, {length}) m")));
+            let field = if matches!(self.moving.initial, InitialState::Static { .. }) {
+                "initial.static_position"
+            } else {
+                "initial.position"
+            };
+            return Err(invalid(field, position, format!("must lie in [0, {length}) m")));
         }
         for &x in &self.record.sections {
             if !(x.is_finite() && (0.0..=length).contains(&x)) {
@@ -275,7 +288,7 @@ impl RunSettings {
     pub fn start_position(&self) -> f64 {
         match self.moving.initial {
             InitialState::Rest => 0.0,
-            InitialState::SteadyState { position } => position,
+            InitialState::SteadyState { position } | InitialState::Static { position } => position,
         }
     }
 

@@ -38,14 +38,16 @@ pub(super) struct Coupling {
 }
 
 impl Coupling {
-    /// Couple `vehicles` to the beam of `model`: the first wheel at `start` (m) at t = 0, every wheel rolling at
-    /// `speed` (m/s), integrated with `theta`. The vehicles start in static equilibrium with each
-    /// wheel on the rail's profile under it, pressed into the contact by its static load (two passes: the heights
-    /// less the penetrations of the first pass's loads; exact for vehicles whose wheel loads do not depend on the
-    /// wheels' heights, such as every vehicle with one wheel).
+    /// Couple `vehicles` to the beam of `model`, whose free DOFs start at `beam_q0`: the first wheel at `start` (m)
+    /// at t = 0, every wheel rolling at `speed` (m/s), integrated with `theta`. The vehicles start in static
+    /// equilibrium with each wheel on the rail under it (its profile plus the beam's deflection there, 0 off the
+    /// beam), pressed into the contact by its static load (two passes: the heights less the penetrations of the first
+    /// pass's loads; exact for vehicles whose wheel loads do not depend on the wheels' heights, such as every vehicle
+    /// with one wheel).
     pub(super) fn new(
         model: &BeamModel,
         vehicles: &VehicleSettings,
+        beam_q0: &[f64],
         (start, speed): (f64, f64),
         theta: f64,
         region: Option<(f64, f64)>,
@@ -60,13 +62,19 @@ impl Coupling {
         let place = |w: &RunWheel| start - (w.offset - lead);
         let (mut q0, mut weight) = (vec![0.0; n], vec![0.0; n]);
         let mut static_forces = vec![0.0; wheels.len()];
+        let beam = model.dofs().expand(beam_q0);
+        let rail = |x: f64| model.deflection_at(&beam, x).unwrap_or(0.0);
+        q0[..beam_q0.len()].copy_from_slice(beam_q0);
         let mut first = 0;
         for (v, placed) in vehicles.vehicles.iter().enumerate() {
             let vehicle = &placed.vehicle;
             let count = vehicle.wheels.len();
             let run = &wheels[first..first + count];
-            let heights: Vec<f64> =
-                run.iter().enumerate().map(|(i, w)| vehicles.track(first + i).height_slope(place(w), 0.0).0).collect();
+            let heights: Vec<f64> = run
+                .iter()
+                .enumerate()
+                .map(|(i, w)| vehicles.track(first + i).height_slope(place(w), 0.0).0 + rail(place(w)))
+                .collect();
             let (_, forces) = vehicle.static_state(&heights)?;
             let contact = vehicles.contact;
             let pressed: Vec<f64> =
@@ -87,7 +95,13 @@ impl Coupling {
             contacts.push(Box::new(contact));
             system_dofs.push(dof);
         }
-        let bodies = vehicles.vehicles.iter().enumerate().map(|(v, p)| layout.dof(v + 1, p.vehicle.body)).collect();
+        let mut first = 0;
+        let mut bodies = Vec::with_capacity(vehicles.vehicles.len());
+        for (v, p) in vehicles.vehicles.iter().enumerate() {
+            let count = p.vehicle.wheels.len();
+            bodies.push((layout.dof(v + 1, p.vehicle.body), first..first + count));
+            first += count;
+        }
         let observer = VehicleObserver::new(
             vehicles,
             &wheels,
@@ -106,8 +120,9 @@ pub(super) struct VehicleObserver {
     /// Where each wheel is at t = 0 (m).
     starts: Vec<f64>,
     speed: f64,
-    /// The body DOF ([`crate::vehicle::Vehicle::body`]) of each vehicle in the system, its largest |acceleration| and Σ a²·h.
-    bodies: Vec<usize>,
+    /// The body DOF ([`crate::vehicle::Vehicle::body`]) of each vehicle in the system and the range of its wheels in
+    /// `wheels`; its largest |acceleration| and Σ a²·h while all its wheels are inside the region.
+    bodies: Vec<(usize, std::ops::Range<usize>)>,
     body_results: Vec<BodyResult>,
     body_square_integral: Vec<f64>,
     /// Index of each wheel's ongoing loss of contact in its `losses`, if flying.
@@ -124,7 +139,7 @@ impl VehicleObserver {
         wheels: &[RunWheel],
         static_forces: Vec<f64>,
         (start, speed, lead): (f64, f64, f64),
-        bodies: Vec<usize>,
+        bodies: Vec<(usize, std::ops::Range<usize>)>,
         region: (Option<(f64, f64)>, f64),
     ) -> Self {
         let results = wheels
@@ -247,8 +262,13 @@ impl VehicleObserver {
                 }
             }
         }
-        for (b, &dof) in self.bodies.iter().enumerate() {
-            let a = (v[dof] - v_prev[dof]) / h;
+        for (b, (dof, wheels)) in self.bodies.iter().enumerate() {
+            let inside =
+                wheels.clone().all(|i| counts_for_extremes(self.region.0, self.position(i, time), self.region.1));
+            if !inside {
+                continue;
+            }
+            let a = (v[*dof] - v_prev[*dof]) / h;
             let body = &mut self.body_results[b];
             body.max_acceleration = body.max_acceleration.max(a.abs());
             self.body_square_integral[b] += a * a * h;

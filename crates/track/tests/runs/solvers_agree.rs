@@ -39,10 +39,7 @@ fn same_state_difference(
     let whole = SolverSettings { moving_window: false, ..settings.integration.solver };
     let mut solver_b = build_solver(b, &checking, &whole, None).unwrap();
     let (q0, v0) = Simulation::new(&model, interactions, settings).unwrap().initial_state().unwrap();
-    let start = match settings.moving.initial {
-        InitialState::Rest => 0.0,
-        InitialState::SteadyState { position } => position,
-    };
+    let start = settings.start_position();
     let load = MovingLoad::new(*model.mesh(), model.dofs(), settings.moving.force, settings.moving.speed, start);
     let n = system.dofs();
     let stepping = SolverSettings { kind: a, ..settings.integration.solver };
