@@ -25,6 +25,7 @@ pub mod properties;
 pub mod reference;
 pub mod section;
 pub mod span;
+pub mod span_oscillator;
 pub mod statics;
 pub mod steady_train;
 pub mod supports;

@@ -40,6 +40,16 @@ impl SimplySupportedSpan {
         })
     }
 
+    /// L (m).
+    pub fn length(&self) -> f64 {
+        self.length
+    }
+
+    /// ρA (kg/m).
+    pub fn mass_per_length(&self) -> f64 {
+        self.mass_per_length
+    }
+
     /// ω_n (rad/s).
     pub fn omega(&self, n: usize) -> f64 {
         let k = n as f64 * PI / self.length;

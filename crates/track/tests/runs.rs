@@ -15,4 +15,5 @@ mod runs {
     mod vehicles_in_runs;
     mod vehicles_on_beam;
     mod vehicles_on_ground;
+    mod vehicles_on_span;
 }

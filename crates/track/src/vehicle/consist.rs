@@ -260,7 +260,7 @@ impl Default for WheelRail {
 
 impl WheelRail {
     /// Hertz's coefficient of a wheel of `radius` (m) on a rail by Zhai's fit G = 4.57·R^−0.149·10⁻⁸ m/N^{2/3}
-    /// (Zhai, Vehicle–Track Coupled Dynamics, 2020, §2.4), C_H = G^{−3/2}: 8.6e10 N/m^1.5 at R = 0.46 m.
+    /// (Zhai, Vehicle–Track Coupled Dynamics, 2020), C_H = G^{−3/2}: 8.6e10 N/m^1.5 at R = 0.46 m.
     pub fn hertz_for_radius(radius: f64) -> Self {
         let g = 4.57 * radius.powf(-0.149) * 1e-8;
         Self::Hertz { coefficient: g.powf(-1.5) }

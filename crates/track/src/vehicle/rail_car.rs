@@ -9,7 +9,7 @@
 //! 3, wheel 4 — so that every spring couples DOFs at most 3 apart: the car's band is the Hermite beam's, and stacking
 //! it beside the beam costs the beam nothing.
 //!
-//! Defaults: one rail's half of the passenger car of Xu & Zhai's linearised vehicle–track model (Shock and
+//! Defaults: one rail's half of the passenger car of Huo & Dai's linearised vehicle–track model (Shock and
 //! Vibration 2019, 2015465, Table 1): car body 34 500 kg and 1.5604e6 kg·m² in pitch, bogies 3 500 kg and
 //! 1 722 kg·m², wheelsets 2 200 kg; per side a primary suspension of 1.173 MN/m and 19.6 kN·s/m at each axle box, a
 //! secondary of 0.61 MN/m and 9.8 kN·s/m at each bogie; l_c = 8.75 m, l_b = 1.25 m. Half of every mass and inertia,
