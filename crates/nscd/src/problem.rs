@@ -312,13 +312,15 @@ impl InteractionProblem {
         }
     }
 
-    /// v += M̂⁻¹Hᵀp: from the stored responses when there are any, else by one banded solve (`work`: n scratch).
+    /// v += M̂⁻¹Hᵀp: from the stored responses when there are any (or only moving interactions, whose responses
+    /// the update phase solved), else by one banded solve (`work`: n scratch).
     pub fn add_response(&self, p: &[f64], v: &mut [f64], work: &mut [f64]) {
         match &self.responses {
             Some(responses) => {
                 responses.add(&p[..self.fixed], v);
                 self.add_moving_responses(p, v);
             }
+            None if self.fixed == 0 => self.add_moving_responses(p, v),
             None => {
                 self.solve_response(p, work);
                 axpy(1.0, work, v);
@@ -386,6 +388,9 @@ impl InteractionProblem {
         if let Some(responses) = &self.responses {
             v.copy_from_slice(v_free);
             responses.add(&p[..self.fixed], v);
+            self.add_moving_responses(p, v);
+        } else if self.fixed == 0 {
+            v.copy_from_slice(v_free);
             self.add_moving_responses(p, v);
         } else {
             self.solve_response(p, v);

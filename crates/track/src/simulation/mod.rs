@@ -258,7 +258,6 @@ impl<'a> Simulation<'a> {
         let mut norm_integral = 0.0;
         let mut previous_norm = scan.norm;
         let mut full = Buffers::new(dofs.full_len());
-        let mut q_full = vec![0.0; dofs.full_len()];
         let mut wheel_loads: Vec<(usize, [f64; 4])> = Vec::new();
         if let Some(observer) = vehicle_observer.as_mut() {
             observer.reserve(total_steps);
@@ -305,9 +304,8 @@ impl<'a> Simulation<'a> {
                 previous_norm = scan.norm;
             }
             if let Some(observer) = vehicle_observer.as_mut() {
-                dofs.expand_into(&stepper.q()[..nb], &mut q_full);
                 let velocities = (stepper.v(), stepper.previous_v());
-                observer.observe(model, time, h, &stepper.p[fixed..], &q_full, velocities);
+                observer.observe(time, h, &stepper.p[fixed..], stepper.q(), velocities);
                 if !recorders.is_empty() {
                     wheel_loads.clear();
                     wheel_loads.extend(observer.element_loads(model, time, &stepper.p[fixed..], h));

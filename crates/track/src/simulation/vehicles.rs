@@ -8,7 +8,7 @@ use super::results::{BodyResult, LossOfContact, VehicleResults, WheelResult};
 use crate::error::Result;
 use crate::system::beam_system;
 use crate::vehicle::consist::{RunWheel, VehicleSettings};
-use crate::vehicle::rail::WheelOnBeam;
+use crate::vehicle::rail::{RailPoints, WheelOnBeam};
 use fem_beam::BeamModel;
 use nscd::forcing::Constant;
 use nscd::{LinearSystem, MovingInteraction};
@@ -103,6 +103,7 @@ impl Coupling {
             first += count;
         }
         let observer = VehicleObserver::new(
+            model,
             vehicles,
             &wheels,
             static_forces,
@@ -127,6 +128,9 @@ pub(super) struct VehicleObserver {
     body_square_integral: Vec<f64>,
     /// Index of each wheel's ongoing loss of contact in its `losses`, if flying.
     flying: Vec<Option<usize>>,
+    /// The rail under the wheels, read from the system's state, and its EI (N·m²) for the moment.
+    rail: RailPoints,
+    bending_stiffness: f64,
     /// The wheels' extremes and losses of contact count while they are inside this range (m), with the beam's
     /// length for the slack ([`crate::RecordSettings::extremes_nodes`]): away from the ends, where a wheel passes
     /// from the rail onto rigid ground over a pinned support's slope.
@@ -135,6 +139,7 @@ pub(super) struct VehicleObserver {
 
 impl VehicleObserver {
     fn new(
+        model: &BeamModel,
         vehicles: &VehicleSettings,
         wheels: &[RunWheel],
         static_forces: Vec<f64>,
@@ -169,6 +174,8 @@ impl VehicleObserver {
             body_results,
             flying: vec![None; wheels.len()],
             region,
+            rail: RailPoints::new(model, 0),
+            bending_stiffness: model.beam().bending_stiffness(),
         }
     }
 
@@ -205,25 +212,15 @@ impl VehicleObserver {
         })
     }
 
-    /// Book step k → k+1 ending at `time`: the wheels' impulses `p` (N·s) of the step `h`, the full beam
-    /// displacement `q_full`, and the system's velocities before and after.
-    pub(super) fn observe(
-        &mut self,
-        model: &BeamModel,
-        time: f64,
-        h: f64,
-        impulses: &[f64],
-        q_full: &[f64],
-        (v, v_prev): (&[f64], &[f64]),
-    ) {
+    /// Book step k → k+1 ending at `time`: the wheels' impulses `p` (N·s) of the step `h`, the system's
+    /// displacement `q` and its velocities after and before the step.
+    pub(super) fn observe(&mut self, time: f64, h: f64, impulses: &[f64], q: &[f64], (v, v_prev): (&[f64], &[f64])) {
         for (i, &p) in impulses.iter().enumerate() {
             let x = self.position(i, time);
             let force = p / h;
-            let (deflection, moment) = match (model.deflection_at(q_full, x), model.interpolated_moment(q_full, x)) {
-                (Ok(w), Ok(m)) => (w, m),
-                // Off the beam the rail is rigid ground.
-                _ => (0.0, 0.0),
-            };
+            // Off the beam the rail is rigid ground.
+            let (deflection, curvature) = self.rail.deflection_curvature(q, x).unwrap_or((0.0, 0.0));
+            let moment = self.bending_stiffness * curvature;
             let w = &mut self.wheels[i];
             let history = &mut w.history;
             history.time.push(time);
