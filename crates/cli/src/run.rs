@@ -428,7 +428,8 @@ fn print_vehicles(v: &study::vehicle_output::VehicleReport) {
         println!("    … {} more bodies (largest RMS {:.3} m/s²)", v.bodies.len() - 4, v.max_rms_body_acceleration);
     }
     println!(
-        "  contacts: work on beam and vehicles {:.4e} J, energy in the contacts at the end {:.4e} J",
-        v.contact_work, v.spring_energy
+        "  contacts: work on beam and vehicles {:.4e} J, dissipated (landings, implicit law) {:.4e} J, held at the end \
+         {:.4e} J",
+        v.contact_work, v.contact_loss, v.spring_energy
     );
 }

@@ -282,6 +282,27 @@ impl InteractionProblem {
         }
     }
 
+    /// What moving contact j lost in the step just solved with impulse `p` (J): −p·Ū − ΔΦ, with Ū = (δ_k − δ_{k+1})/h
+    /// its mean relative velocity over the step and Φ its spring energy (½k⟨δ⟩₊², ½kδ², (2/5)C_H⟨δ⟩₊^{5/2}). The
+    /// implicit law takes the force at the step's end, so this is ≥ 0 — ½k(Δδ)² for a linear spring — and largest
+    /// at landings; a step without force loses what the spring held (δ_{k+1} ≤ 0). δ_k is the penetration the step
+    /// started from (−g_k of the update phase). None for other laws and fixed interactions.
+    pub fn moving_contact_loss(&self, j: usize, p: f64) -> Option<f64> {
+        let h = self.integration.step;
+        let start = -self.moving_states.get(j.checked_sub(self.fixed)?)?.gap;
+        let (start_energy, end) = match self.interactions.laws()[j] {
+            Law::Compliant { stiffness, .. } => (0.5 * stiffness * start.max(0.0).powi(2), p / (h * stiffness)),
+            Law::Spring { stiffness, .. } => (0.5 * stiffness * start * start, p / (h * stiffness)),
+            Law::Hertz { coefficient, .. } => {
+                let hertz = self.hertz[j]?;
+                (0.4 * coefficient * start.max(0.0).powf(2.5), hertz.end_penetration(p, h))
+            }
+            _ => return None,
+        };
+        let relative_work = if p != 0.0 { p * (start - end) / h } else { 0.0 };
+        Some(-relative_work - (self.moving_spring_energy(j, p)? - start_energy))
+    }
+
     /// Whether some interactions move (their rows change every step).
     pub fn has_moving(&self) -> bool {
         !self.moving.is_empty()

@@ -48,6 +48,10 @@ pub struct EnergyLedger {
     /// ½k_c⟨δ⟩₊² summed over the compliant interactions now (J): not part of `current`, whose balance the impulses'
     /// work closes; reported so that the stops' own loss, −(contact + support work) − Δspring energy, can be told.
     pub spring_energy: f64,
+    /// Σ over the moving compliant contacts (wheels) of what each lost in a step,
+    /// [`crate::InteractionProblem::moving_contact_loss`] (J, ≥ 0): landing impacts and the implicit spring. Apart from
+    /// `contact_work`, which also carries the work a wheel's rolling along a moving rail does (its rheonomic part).
+    pub contact_loss: f64,
     /// Σ (θ − ½)(‖Δv‖²_M + ‖Δq‖²_K) ≥ 0: numerical dissipation of the scheme.
     pub numerical_dissipation: f64,
     /// Largest |per-step residual| seen (J).
@@ -403,6 +407,9 @@ impl MoreauJean {
         e.numerical_dissipation += numerical;
         if self.varying_energy {
             e.spring_energy = spring_energy(&self.problem, &self.q, Some(&self.p));
+            for j in self.problem.fixed_len()..self.p.len() {
+                e.contact_loss += self.problem.moving_contact_loss(j, self.p[j]).unwrap_or(0.0);
+            }
         }
         let step_residual = e.current - before - (load - viscous + work.total() - numerical);
         e.max_step_residual = e.max_step_residual.max(step_residual.abs());

@@ -108,6 +108,8 @@ pub struct VehicleReport {
     pub contact_work: f64,
     /// Energy in the contacts at the end (J).
     pub spring_energy: f64,
+    /// Energy the contacts dissipated: landings and the implicit contact law (J).
+    pub contact_loss: f64,
     /// Every wheel.
     pub wheels: Vec<WheelReport>,
     /// Every loss of contact.
@@ -172,6 +174,7 @@ impl VehicleReport {
             max_rms_body_acceleration: largest(&mut bodies.iter().map(|b| b.rms_acceleration)),
             contact_work: results.contact_work,
             spring_energy: results.spring_energy,
+            contact_loss: results.contact_loss,
             wheels,
             losses,
             bodies,

@@ -348,7 +348,7 @@ impl<'a> Simulation<'a> {
             section_positions: self.interactions.positions().to_vec(),
             final_displacement: stepper.q()[..nb].to_vec(),
             final_velocity: stepper.v()[..nb].to_vec(),
-            vehicles: vehicle_observer.map(|o| o.finish(stepper.energy.contact_work, stepper.energy.spring_energy)),
+            vehicles: vehicle_observer.map(|o| o.finish(&stepper.energy)),
         })
     }
 

@@ -230,4 +230,7 @@ pub struct VehicleResults {
     pub contact_work: f64,
     /// Energy in the contact springs at the end (J).
     pub spring_energy: f64,
+    /// Energy the contacts dissipated (J, ≥ 0): landing impacts and the implicit contact law
+    /// ([`nscd::EnergyLedger::contact_loss`]).
+    pub contact_loss: f64,
 }

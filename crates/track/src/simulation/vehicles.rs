@@ -273,15 +273,21 @@ impl VehicleObserver {
         }
     }
 
-    /// The results (a wheel that never was inside the region has no extremes: 0), with the run's ledger terms of the contacts: `contact_work` (J, Σ U_θᵀp over the wheels) and the
-    /// springs' energy now (J).
-    pub(super) fn finish(mut self, contact_work: f64, spring_energy: f64) -> VehicleResults {
+    /// The results (a wheel that never was inside the region has no extremes: 0), with the contacts' terms of the
+    /// run's ledger `energy`.
+    pub(super) fn finish(mut self, energy: &nscd::EnergyLedger) -> VehicleResults {
         for (result, integral) in self.body_results.iter_mut().zip(&self.body_square_integral) {
             result.rms_acceleration = if result.duration > 0.0 { (integral / result.duration).sqrt() } else { 0.0 };
         }
         for w in self.wheels.iter_mut().filter(|w| w.min_force > w.max_force) {
             (w.min_force, w.max_force) = (0.0, 0.0);
         }
-        VehicleResults { wheels: self.wheels, bodies: self.body_results, contact_work, spring_energy }
+        VehicleResults {
+            wheels: self.wheels,
+            bodies: self.body_results,
+            contact_work: energy.contact_work,
+            spring_energy: energy.spring_energy,
+            contact_loss: energy.contact_loss,
+        }
     }
 }
