@@ -158,7 +158,7 @@ fn example_scenarios_are_valid() {
             count += 1;
         }
     }
-    assert_eq!(count, 7, "one example per study, and the HSLM bridge");
+    assert_eq!(count, 8, "one example per study, the HSLM bridge and the rail cars");
 }
 
 fn small_case() -> study::Case {
