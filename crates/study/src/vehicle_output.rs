@@ -163,15 +163,16 @@ impl VehicleReport {
                 rms_acceleration: b.rms_acceleration,
             })
             .collect();
-        let largest = |values: &mut dyn Iterator<Item = f64>| values.fold(0.0, f64::max);
+        // The aggregates once, as the sweeps' columns.
+        let columns = crate::sweep::VehicleColumns::of(results);
         Self {
             contact: contact.to_string(),
-            min_wheel_force: wheels.iter().map(|w| w.min_force).fold(f64::INFINITY, f64::min),
-            max_wheel_force: largest(&mut wheels.iter().map(|w| w.max_force)),
-            max_dynamic_increment: largest(&mut wheels.iter().map(|w| w.dynamic_increment)),
-            losses_of_contact: wheels.iter().map(|w| w.losses_of_contact).sum(),
-            max_body_acceleration: largest(&mut bodies.iter().map(|b| b.max_acceleration)),
-            max_rms_body_acceleration: largest(&mut bodies.iter().map(|b| b.rms_acceleration)),
+            min_wheel_force: columns.min_wheel_force,
+            max_wheel_force: columns.max_wheel_force,
+            max_dynamic_increment: columns.max_dynamic_increment,
+            losses_of_contact: columns.losses_of_contact,
+            max_body_acceleration: columns.max_body_acceleration,
+            max_rms_body_acceleration: columns.rms_body_acceleration,
             contact_work: results.contact_work,
             spring_energy: results.spring_energy,
             contact_loss: results.contact_loss,
