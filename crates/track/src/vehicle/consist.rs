@@ -179,11 +179,6 @@ impl VehicleSettings {
         self.wheels().map(|w| w.offset).fold(f64::INFINITY, f64::min)
     }
 
-    /// Total weight (N, downward positive).
-    pub fn weight(&self) -> f64 {
-        -self.vehicles.iter().flat_map(|p| &p.vehicle.weight).sum::<f64>()
-    }
-
     /// What wheel `wheel` (run index) follows: the rail's profile and its flat, if any.
     pub fn track(&self, wheel: usize) -> WheelTrack {
         let flat = self.flats.iter().find(|f| f.wheel == wheel).map(|f| f.flat);
@@ -222,11 +217,6 @@ impl VehicleSettings {
             }
         }
         Ok(largest)
-    }
-
-    /// The number of DOFs of all vehicles.
-    pub fn dofs(&self) -> usize {
-        self.vehicles.iter().map(|p| p.vehicle.dofs()).sum()
     }
 }
 
