@@ -9,11 +9,13 @@
 
 mod build;
 mod parse;
+pub mod rail;
 pub mod sections;
 pub mod vehicle;
 
+pub use rail::RailSection;
 pub use sections::*;
-pub use vehicle::{RailSection, VehicleSection};
+pub use vehicle::VehicleSection;
 
 use crate::error::{Result, StudyError, invalid};
 use fem_beam::BeamModel;

@@ -1,7 +1,8 @@
 //! Vehicles in a run (docs/theory.md §12): the beam and the vehicles as one system (the beam's block first, so the
 //! friction sections' rows keep their DOFs), a compliant wheel–rail interaction per wheel after the friction
-//! sections, the weights as a constant force, the vehicles' start in static equilibrium on the undeformed rail, and
-//! what is observed of each wheel and body after every step.
+//! sections, the weights as a constant force, the vehicles' start in static equilibrium on the rail as the run's
+//! initial state leaves it (unloaded, or deflected by a static start), and what is observed of each wheel and body
+//! after every step.
 
 use super::counts_for_extremes;
 use super::results::{BodyResult, LossOfContact, VehicleResults, WheelResult};
@@ -30,7 +31,7 @@ pub(super) struct Coupling {
     pub(super) contacts: Vec<Box<dyn MovingInteraction>>,
     /// The vehicles' weights over the whole system (zero on the beam).
     pub(super) weights: Constant,
-    /// Initial displacement and velocity of the whole system (the beam's part at rest).
+    /// Initial displacement and velocity of the whole system (the beam's part from the run's initial state).
     pub(super) q0: Vec<f64>,
     pub(super) v0: Vec<f64>,
     /// What is observed.
