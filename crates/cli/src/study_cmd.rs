@@ -78,7 +78,8 @@ impl StudyOptions {
 /// Options of `frictrack study`.
 #[derive(Debug, Args)]
 pub struct StudyArgs {
-    /// discrete-speed, equal-cost, optimal-force, distributed-speed, amplification, discrete-vs-distributed or hslm.
+    /// discrete-speed, equal-cost, optimal-force, distributed-speed, amplification, discrete-vs-distributed, hslm or
+    /// vehicle-speed.
     preset: String,
     #[command(flatten)]
     options: StudyOptions,
