@@ -1,6 +1,6 @@
-//! `frictrack study <preset>`: run one of the eight studies (docs/theory.md §7, §10 and §12) and write `<preset>.csv` (the
-//! data), `<preset>.json` (scenario, version, git revision, resolution, summary, wall time) and its figures (PNG and
-//! SVG) into the output folder.
+//! `frictrack study <preset>`: run one of the eight studies (docs/theory.md §7, §10 and §12) and write
+//! `<preset>.csv` (the data), `<preset>.json` (scenario, version, git revision, resolution, summary, wall time) and
+//! its figures (PNG and SVG) into the output folder.
 
 use crate::files::{check_output_file, prepare_output_folder, write_atomically};
 use anyhow::Result;
