@@ -15,6 +15,7 @@ use serde::Serialize;
 use std::path::PathBuf;
 use std::time::Instant;
 use study::{Case, Scenario};
+use track::vehicle::consist::VehicleSettings;
 use track::{RunResult, SnapshotAt};
 
 /// Options of `frictrack run`.
@@ -268,7 +269,7 @@ fn report(scenario: &Scenario, case: &Case, result: &RunResult, wall_time: f64) 
         solver: s.solver_name().to_string(),
         wall_time,
         vehicles: result.vehicles.as_ref().map(|v| {
-            let contact = settings.moving.vehicles.as_ref().map_or("", |s| s.contact.name());
+            let contact = settings.moving.vehicles.as_ref().map_or("", VehicleSettings::contact_name);
             study::vehicle_output::VehicleReport::of(v, contact)
         }),
     })

@@ -367,9 +367,7 @@ impl VehicleSection {
                         return Err(invalid("vehicle.spacing", s.map_or("missing".into(), |s| s.to_string()), allowed));
                     }
                 };
-                let vehicles = (0..count)
-                    .map(|i| PlacedVehicle { vehicle: vehicle.clone(), offset: i as f64 * spacing })
-                    .collect();
+                let vehicles = (0..count).map(|i| PlacedVehicle::new(vehicle.clone(), i as f64 * spacing)).collect();
                 VehicleSettings { vehicles, ..VehicleSettings::default() }
             }
         };

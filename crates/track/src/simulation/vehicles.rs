@@ -77,7 +77,7 @@ impl Coupling {
                 .map(|(i, w)| vehicles.track(first + i).height_slope(place(w), 0.0).0 + rail(place(w)))
                 .collect();
             let (_, forces) = vehicle.static_state(&heights)?;
-            let contact = vehicles.contact;
+            let contact = vehicles.contact_of(placed);
             let pressed: Vec<f64> =
                 heights.iter().zip(&forces).map(|(h, f)| h - contact.static_penetration(*f)).collect();
             let (x, forces) = vehicle.static_state(&pressed)?;
@@ -92,7 +92,8 @@ impl Coupling {
         for (i, w) in wheels.iter().enumerate() {
             let dof = layout.dof(w.vehicle + 1, w.dof);
             let track = vehicles.track(i);
-            let contact = WheelOnBeam::new(model, (0, dof), (place(w), speed), track, vehicles.contact, theta)?;
+            let law = vehicles.contact_of(&vehicles.vehicles[w.vehicle]);
+            let contact = WheelOnBeam::new(model, (0, dof), (place(w), speed), track, law, theta)?;
             contacts.push(Box::new(contact));
             system_dofs.push(dof);
         }

@@ -24,6 +24,15 @@ pub struct PlacedVehicle {
     pub vehicle: Vehicle,
     /// Offset of its reference point behind the first vehicle's (m), ≥ 0.
     pub offset: f64,
+    /// Its wheels' contact law, when not the run's ([`VehicleSettings::contact`]).
+    pub contact: Option<WheelRail>,
+}
+
+impl PlacedVehicle {
+    /// `vehicle` at `offset` (m) with the run's contact law.
+    pub fn new(vehicle: Vehicle, offset: f64) -> Self {
+        Self { vehicle, offset, contact: None }
+    }
 }
 
 /// A wheel flat on one wheel of the run.
@@ -41,7 +50,7 @@ pub struct FlatWheel {
 pub struct VehicleSettings {
     /// The vehicles, the first at offset 0.
     pub vehicles: Vec<PlacedVehicle>,
-    /// The wheel–rail contact law.
+    /// The wheel–rail contact law of every vehicle that does not give its own ([`PlacedVehicle::contact`]).
     pub contact: WheelRail,
     /// The rail's profile r(x) (m, upward), the same under every wheel.
     pub profile: Profile,
@@ -53,7 +62,7 @@ impl Default for VehicleSettings {
     fn default() -> Self {
         let car = super::builtin::QuarterCar::default().vehicle().expect("the default quarter car is valid");
         Self {
-            vehicles: vec![PlacedVehicle { vehicle: car, offset: 0.0 }],
+            vehicles: vec![PlacedVehicle::new(car, 0.0)],
             contact: WheelRail::default(),
             profile: Profile::Smooth,
             flats: Vec::new(),
@@ -78,7 +87,7 @@ pub struct RunWheel {
 impl VehicleSettings {
     /// One vehicle at offset 0, the other settings at their defaults.
     pub fn single(vehicle: Vehicle) -> Self {
-        Self { vehicles: vec![PlacedVehicle { vehicle, offset: 0.0 }], ..Self::default() }
+        Self { vehicles: vec![PlacedVehicle::new(vehicle, 0.0)], ..Self::default() }
     }
 
     /// A copy of `template` on every axle of `train` (at the axle's offset), each scaled so that its weight is the
@@ -117,7 +126,7 @@ impl VehicleSettings {
                     body: template.body,
                 };
                 vehicle.wheels[0].offset = 0.0;
-                PlacedVehicle { vehicle, offset: axle.offset }
+                PlacedVehicle::new(vehicle, axle.offset)
             })
             .collect();
         Ok(Self { vehicles, ..Self::default() })
@@ -139,6 +148,11 @@ impl VehicleSettings {
             }
         }
         self.contact.validate()?;
+        for placed in &self.vehicles {
+            if let Some(contact) = placed.contact {
+                contact.validate()?;
+            }
+        }
         self.static_train()?;
         self.profile.validate("rail")?;
         let wheels = self.wheels().count();
@@ -179,6 +193,17 @@ impl VehicleSettings {
         self.wheels().map(|w| w.offset).fold(f64::INFINITY, f64::min)
     }
 
+    /// The contact law of `placed`'s wheels: its own, else the run's.
+    pub fn contact_of(&self, placed: &PlacedVehicle) -> WheelRail {
+        placed.contact.unwrap_or(self.contact)
+    }
+
+    /// The name of the run's contact laws for reports: the one law's, or `mixed`.
+    pub fn contact_name(&self) -> &'static str {
+        let first = self.contact_of(&self.vehicles[0]).name();
+        if self.vehicles.iter().all(|p| self.contact_of(p).name() == first) { first } else { "mixed" }
+    }
+
     /// What wheel `wheel` (run index) follows: the rail's profile and its flat, if any.
     pub fn track(&self, wheel: usize) -> WheelTrack {
         let flat = self.flats.iter().find(|f| f.wheel == wheel).map(|f| f.flat);
@@ -212,7 +237,7 @@ impl VehicleSettings {
             for (w, force) in v.wheels.iter().zip(forces) {
                 let mass = v.mass[w.dof * v.dofs() + w.dof];
                 if mass > 0.0 {
-                    largest = largest.max((self.contact.tangent_stiffness(force) / mass).sqrt());
+                    largest = largest.max((self.contact_of(placed).tangent_stiffness(force) / mass).sqrt());
                 }
             }
         }
@@ -220,7 +245,7 @@ impl VehicleSettings {
     }
 }
 
-/// The wheel–rail contact law (docs/theory.md §9, §12), the same for every wheel of a run. Default: Hertz with
+/// The wheel–rail contact law (docs/theory.md §9, §12), of a run or of one vehicle. Default: Hertz with
 /// C_H = 8.6e10 N/m^1.5 ([`WheelRail::hertz_for_radius`] of a 0.46 m wheel).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum WheelRail {
