@@ -60,21 +60,23 @@ impl Coupling {
         let n = system.dofs();
         let lead = vehicles.lead();
         let wheels: Vec<RunWheel> = vehicles.wheels().collect();
-        let place = |w: &RunWheel| start - (w.offset - lead);
+        // Where each wheel is at t = 0 (m).
+        let starts: Vec<f64> = wheels.iter().map(|w| start - (w.offset - lead)).collect();
         let (mut q0, mut weight) = (vec![0.0; n], vec![0.0; n]);
         let mut static_forces = vec![0.0; wheels.len()];
-        let beam = model.dofs().expand(beam_q0);
-        let rail = |x: f64| model.deflection_at(&beam, x).unwrap_or(0.0);
         q0[..beam_q0.len()].copy_from_slice(beam_q0);
+        // The beam's block comes first: its DOFs are the system's from 0.
+        let rail = RailPoints::new(model, 0);
+        let mut bodies = Vec::with_capacity(vehicles.vehicles.len());
         let mut first = 0;
         for (v, placed) in vehicles.vehicles.iter().enumerate() {
             let vehicle = &placed.vehicle;
             let count = vehicle.wheels.len();
-            let run = &wheels[first..first + count];
-            let heights: Vec<f64> = run
-                .iter()
-                .enumerate()
-                .map(|(i, w)| vehicles.track(first + i).height_slope(place(w), 0.0).0 + rail(place(w)))
+            let heights: Vec<f64> = (first..first + count)
+                .map(|i| {
+                    let deflection = rail.deflection_curvature(&q0, starts[i]).map_or(0.0, |(w, _)| w);
+                    vehicles.track(i).height_slope(starts[i], 0.0).0 + deflection
+                })
                 .collect();
             let (_, forces) = vehicle.static_state(&heights)?;
             let contact = vehicles.contact_of(placed);
@@ -85,32 +87,24 @@ impl Coupling {
             q0[offset..offset + vehicle.dofs()].copy_from_slice(&x);
             weight[offset..offset + vehicle.dofs()].copy_from_slice(&vehicle.weight);
             static_forces[first..first + count].copy_from_slice(&forces);
+            bodies.push((layout.dof(v + 1, vehicle.body), first..first + count));
             first += count;
         }
         let mut contacts: Vec<Box<dyn MovingInteraction>> = Vec::with_capacity(wheels.len());
-        let mut system_dofs = Vec::with_capacity(wheels.len());
         for (i, w) in wheels.iter().enumerate() {
             let dof = layout.dof(w.vehicle + 1, w.dof);
             let track = vehicles.track(i);
             let law = vehicles.contact_of(&vehicles.vehicles[w.vehicle]);
-            let contact = WheelOnBeam::new(model, (0, dof), (place(w), speed), track, law, theta)?;
+            let contact = WheelOnBeam::new(model, (0, dof), (starts[i], speed), track, law, theta)?;
             contacts.push(Box::new(contact));
-            system_dofs.push(dof);
-        }
-        let mut first = 0;
-        let mut bodies = Vec::with_capacity(vehicles.vehicles.len());
-        for (v, p) in vehicles.vehicles.iter().enumerate() {
-            let count = p.vehicle.wheels.len();
-            bodies.push((layout.dof(v + 1, p.vehicle.body), first..first + count));
-            first += count;
         }
         let observer = VehicleObserver::new(
-            model,
             vehicles,
             &wheels,
             static_forces,
-            (start, speed, lead),
+            (starts, speed, lead),
             bodies,
+            (rail, model.beam().bending_stiffness()),
             (region, model.mesh().length),
         );
         Ok(Self { system, contacts, weights: Constant { force: weight }, q0, v0: vec![0.0; n], observer })
@@ -141,12 +135,12 @@ pub(super) struct VehicleObserver {
 
 impl VehicleObserver {
     fn new(
-        model: &BeamModel,
         vehicles: &VehicleSettings,
         wheels: &[RunWheel],
         static_forces: Vec<f64>,
-        (start, speed, lead): (f64, f64, f64),
+        (starts, speed, lead): (Vec<f64>, f64, f64),
         bodies: Vec<(usize, std::ops::Range<usize>)>,
+        (rail, bending_stiffness): (RailPoints, f64),
         region: (Option<(f64, f64)>, f64),
     ) -> Self {
         let results = wheels
@@ -169,15 +163,15 @@ impl VehicleObserver {
             .collect();
         Self {
             wheels: results,
-            starts: wheels.iter().map(|w| start - (w.offset - lead)).collect(),
+            starts,
             speed,
             body_square_integral: vec![0.0; bodies.len()],
             bodies,
             body_results,
             flying: vec![None; wheels.len()],
             region,
-            rail: RailPoints::new(model, 0),
-            bending_stiffness: model.beam().bending_stiffness(),
+            rail,
+            bending_stiffness,
         }
     }
 

@@ -231,14 +231,13 @@ impl VehicleSettings {
     /// wheel's contact mode is the rail's, not checked here). 0 if no wheel has mass.
     pub fn contact_frequency(&self) -> Result<f64> {
         let mut largest = 0.0f64;
-        for placed in &self.vehicles {
+        // The static train's axles are the wheels, in order, with their static loads.
+        for (wheel, axle) in self.wheels().zip(self.static_train()?.axles) {
+            let placed = &self.vehicles[wheel.vehicle];
             let v = &placed.vehicle;
-            let (_, forces) = v.static_state(&vec![0.0; v.wheels.len()])?;
-            for (w, force) in v.wheels.iter().zip(forces) {
-                let mass = v.mass[w.dof * v.dofs() + w.dof];
-                if mass > 0.0 {
-                    largest = largest.max((self.contact_of(placed).tangent_stiffness(force) / mass).sqrt());
-                }
+            let mass = v.mass[wheel.dof * v.dofs() + wheel.dof];
+            if mass > 0.0 {
+                largest = largest.max((self.contact_of(placed).tangent_stiffness(axle.force) / mass).sqrt());
             }
         }
         Ok(largest)
