@@ -22,8 +22,6 @@ use crate::scenario::{RailSection, Scenario, VehicleSection};
 use crate::sweep::{Runner, SweepPoint};
 use serde_json::{Value, json};
 use std::fmt::Write as _;
-use track::vehicle::GRAVITY;
-use track::vehicle::builtin::QuarterCar;
 use track::vehicle::consist::MAX_CONTACT_STEP;
 
 /// The loads compared, in the files' order.
@@ -41,24 +39,16 @@ fn irregular_rail(base: &Scenario) -> RailSection {
     RailSection { irregularities: vec![random] }
 }
 
-/// The vehicle of load `model` (1 moving mass, 2 quarter car) weighing `force` (N).
-fn vehicle(model: usize, force: f64) -> VehicleSection {
-    let mut v = VehicleSection::default();
-    if model == 1 {
-        v.kind = VehicleKind::MovingMass;
-        v.mass = Some(force / GRAVITY);
-    } else {
-        // The default car (83.4 kN) scaled to F: masses, stiffness and damping alike, so its frequencies and
-        // damping ratio stay.
-        let car = QuarterCar::default();
-        let s = force / ((car.body_mass + car.wheel_mass) * GRAVITY);
-        v.body_mass = Some(car.body_mass * s);
-        v.suspension_stiffness = Some(car.suspension_stiffness * s);
-        v.suspension_damping = Some(car.suspension_damping * s);
-        v.wheel_mass = Some(car.wheel_mass * s);
-    }
-    v
+/// The default vehicle of load `model` (1 moving mass, 2 quarter car). The study runs it on the one-axle train
+/// `single` of F, which scales it to F ([`track::vehicle::consist::VehicleSettings::populate`]: masses, stiffness
+/// and damping alike, so its frequencies and damping ratio stay).
+fn vehicle(model: usize) -> VehicleSection {
+    let kind = if model == 1 { VehicleKind::MovingMass } else { VehicleKind::QuarterCar };
+    VehicleSection { kind, ..VehicleSection::default() }
 }
+
+/// The one-axle train the vehicles are scaled onto.
+const SINGLE: &str = "single";
 
 /// `base` as the study runs it, and a sentence for each change: a long track, and a load advance that resolves
 /// the stiffest contact mode of the study's vehicles at the lowest of `speeds`, with 5 % to spare.
@@ -84,8 +74,9 @@ fn prepared(base: &Scenario, speeds: &[f64]) -> Result<(Scenario, Vec<String>)> 
     }
     let slowest = speeds.iter().copied().fold(f64::INFINITY, f64::min);
     let mut omega = 0.0f64;
+    let axle = fem_beam::Train::single(s.load.force);
     for model in 1..MODELS.len() {
-        let settings = vehicle(model, s.load.force).settings(None, irregularity::Profile::Smooth)?;
+        let settings = vehicle(model).settings(Some(&axle), irregularity::Profile::Smooth)?;
         omega = omega.max(settings.contact_frequency()?);
     }
     let needed = 0.95 * MAX_CONTACT_STEP * slowest / omega;
@@ -169,7 +160,8 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
                 }
                 let mut s = set_up.clone();
                 if model > 0 {
-                    s.vehicle = Some(vehicle(model, force));
+                    s.vehicle = Some(vehicle(model));
+                    s.load.train = Some(SINGLE.into());
                     s.rail = rail;
                 }
                 keys.push((model, f, r));
