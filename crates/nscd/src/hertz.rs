@@ -44,7 +44,7 @@ impl HertzStep {
     /// The compliance d (m/s per N·s) and drift b (m/s) of the step's law at the current linearisation.
     pub fn law(&self, h: f64, theta: f64) -> (f64, f64) {
         let (k, offset) = self.tangent();
-        let drift = self.rheonomic - ((self.penetration - offset) - h * (1.0 - theta) * self.velocity) / (h * theta);
+        let drift = crate::problem::compliant_drift(self.penetration - offset, self.velocity, self.rheonomic, h, theta);
         (1.0 / (h * h * theta * k), drift)
     }
 
@@ -74,8 +74,13 @@ impl HertzStep {
     /// The energy stored at the step's end for impulse `p` (J): ∫λ dδ = (2/5)C_H δ^{5/2}, with δ_{k+1} of a positive
     /// impulse, else 0.
     pub fn energy(&self, p: f64, h: f64) -> f64 {
-        if p > 0.0 { 0.4 * self.coefficient * self.end_penetration(p, h).powf(2.5) } else { 0.0 }
+        if p > 0.0 { potential(self.coefficient, self.end_penetration(p, h)) } else { 0.0 }
     }
+}
+
+/// Hertz's potential (2/5)C_H⟨δ⟩₊^{5/2} (J) at penetration δ (m), coefficient C_H (N/m^1.5): ∫λ dδ.
+pub fn potential(coefficient: f64, penetration: f64) -> f64 {
+    0.4 * coefficient * penetration.max(0.0).powf(2.5)
 }
 
 #[cfg(test)]

@@ -32,6 +32,7 @@ use friction::{InteractionSet, Law};
 /// The step's law of one interaction from its law, gap g_k (m), relative velocity U_k (m/s), rheonomic velocity
 /// b_r (m/s, U = Hq̇ + b_r), step h and θ: (lo, hi, b) — the compliance is fixed per run (docs/theory.md §9).
 fn step_bounds(law: &Law, gap: f64, u: f64, rheonomic: f64, h: f64, theta: f64) -> (f64, f64, f64) {
+    let spring = || compliant_drift(-gap, u, rheonomic, h, theta);
     match *law {
         Law::Coulomb { capacity } => (-h * capacity, h * capacity, rheonomic),
         Law::Signorini { restitution, .. } => {
@@ -41,12 +42,25 @@ fn step_bounds(law: &Law, gap: f64, u: f64, rheonomic: f64, h: f64, theta: f64) 
                 (0.0, 0.0, 0.0)
             }
         }
-        Law::Compliant { .. } | Law::Hertz { .. } => {
-            (0.0, f64::INFINITY, rheonomic - (-gap - h * (1.0 - theta) * u) / (h * theta))
-        }
-        Law::Spring { .. } => {
-            (f64::NEG_INFINITY, f64::INFINITY, rheonomic - (-gap - h * (1.0 - theta) * u) / (h * theta))
-        }
+        Law::Compliant { .. } | Law::Hertz { .. } => (0.0, f64::INFINITY, spring()),
+        Law::Spring { .. } => (f64::NEG_INFINITY, f64::INFINITY, spring()),
+    }
+}
+
+/// The drift of a spring law whose force is implicit in the penetration at the step's end (docs/theory.md §9):
+/// b = b_r − (δ_k − h(1−θ)U_k)/(hθ) for the penetration δ_k (m) its spring starts from, U_k (m/s) and b_r (m/s).
+pub(crate) fn compliant_drift(penetration: f64, u: f64, rheonomic: f64, h: f64, theta: f64) -> f64 {
+    rheonomic - (penetration - h * (1.0 - theta) * u) / (h * theta)
+}
+
+/// The energy Φ(δ) (J) a spring law holds at penetration δ (m): ½k⟨δ⟩₊² for a stop, ½kδ² for a bilateral spring,
+/// (2/5)C_H⟨δ⟩₊^{5/2} for Hertz; None for laws without a spring.
+pub(crate) fn stored_energy(law: &Law, penetration: f64) -> Option<f64> {
+    match *law {
+        Law::Compliant { stiffness, .. } => Some(0.5 * stiffness * penetration.max(0.0).powi(2)),
+        Law::Spring { stiffness, .. } => Some(0.5 * stiffness * penetration * penetration),
+        Law::Hertz { coefficient, .. } => Some(crate::hertz::potential(coefficient, penetration)),
+        Law::Coulomb { .. } | Law::Signorini { .. } => None,
     }
 }
 
@@ -273,12 +287,19 @@ impl InteractionProblem {
     /// compliant stop or a spring holds p = h·k·δ_{k+1}, so ½kδ² = p²/(2h²k) (a stop only when pressing); Hertz
     /// (2/5)C_Hδ^{5/2}. None for other laws.
     pub fn moving_spring_energy(&self, j: usize, p: f64) -> Option<f64> {
+        stored_energy(&self.interactions.laws()[j], self.end_penetration(j, p)?)
+    }
+
+    /// The penetration δ_{k+1} (m) moving interaction j's law holds for impulse `p`: p/(hk) of a linear spring,
+    /// δ₀ + p/(hk_t) of Hertz's linearisation; a stop without force ends open (0 stands for any δ ≤ 0). None for
+    /// laws without a spring.
+    fn end_penetration(&self, j: usize, p: f64) -> Option<f64> {
         let h = self.integration.step;
         match self.interactions.laws()[j] {
-            Law::Compliant { stiffness, .. } => Some(if p > 0.0 { p * p / (2.0 * h * h * stiffness) } else { 0.0 }),
-            Law::Spring { stiffness, .. } => Some(p * p / (2.0 * h * h * stiffness)),
-            Law::Hertz { .. } => self.hertz[j].map(|hz| hz.energy(p, h)),
-            _ => None,
+            Law::Compliant { stiffness, .. } => Some(if p > 0.0 { p / (h * stiffness) } else { 0.0 }),
+            Law::Spring { stiffness, .. } => Some(p / (h * stiffness)),
+            Law::Hertz { .. } => self.hertz[j].map(|hz| if p > 0.0 { hz.end_penetration(p, h) } else { 0.0 }),
+            Law::Coulomb { .. } | Law::Signorini { .. } => None,
         }
     }
 
@@ -290,17 +311,10 @@ impl InteractionProblem {
     pub fn moving_contact_loss(&self, j: usize, p: f64) -> Option<f64> {
         let h = self.integration.step;
         let start = -self.moving_states.get(j.checked_sub(self.fixed)?)?.gap;
-        let (start_energy, end) = match self.interactions.laws()[j] {
-            Law::Compliant { stiffness, .. } => (0.5 * stiffness * start.max(0.0).powi(2), p / (h * stiffness)),
-            Law::Spring { stiffness, .. } => (0.5 * stiffness * start * start, p / (h * stiffness)),
-            Law::Hertz { coefficient, .. } => {
-                let hertz = self.hertz[j]?;
-                (0.4 * coefficient * start.max(0.0).powf(2.5), hertz.end_penetration(p, h))
-            }
-            _ => return None,
-        };
-        let relative_work = if p != 0.0 { p * (start - end) / h } else { 0.0 };
-        Some(-relative_work - (self.moving_spring_energy(j, p)? - start_energy))
+        let law = &self.interactions.laws()[j];
+        let end = self.end_penetration(j, p)?;
+        let relative_work = p * (start - end) / h;
+        Some(-relative_work - (stored_energy(law, end)? - stored_energy(law, start)?))
     }
 
     /// Whether some interactions move (their rows change every step).

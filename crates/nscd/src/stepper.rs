@@ -16,7 +16,7 @@ use crate::error::{NscdError, Result};
 use crate::forcing::Forcing;
 use crate::hertz::NEWTON_ITERATIONS;
 use crate::kernels::dot;
-use crate::problem::StepLaw;
+use crate::problem::{StepLaw, stored_energy};
 use crate::solver::{InteractionProblem, InteractionSolver, SolverKind, SolverSettings, StepReport, build_solver};
 use crate::system::LinearSystem;
 use banded::{BandDiagonals, SymmetricBanded};
@@ -463,10 +463,8 @@ fn spring_energy(problem: &InteractionProblem, q: &[f64], impulses: Option<&[f64
             energy += impulses.and_then(|p| problem.moving_spring_energy(j, p[j])).unwrap_or(0.0);
             continue;
         }
-        match *law {
-            Law::Compliant { gap, stiffness } => energy += 0.5 * stiffness * (-(gap + row.dot(q))).max(0.0).powi(2),
-            Law::Spring { gap, stiffness } => energy += 0.5 * stiffness * (gap + row.dot(q)).powi(2),
-            _ => {}
+        if let Law::Compliant { gap, .. } | Law::Spring { gap, .. } = *law {
+            energy += stored_energy(law, -(gap + row.dot(q))).unwrap_or(0.0);
         }
     }
     energy
