@@ -355,10 +355,7 @@ impl VehicleSection {
             }
             None => {
                 let count = self.count;
-                if count == 0 || count > track::vehicle::consist::MAX_VEHICLES {
-                    let allowed = format!("must lie in 1 … {}", track::vehicle::consist::MAX_VEHICLES);
-                    return Err(invalid("vehicle.count", count, allowed));
-                }
+                track::vehicle::consist::check_count(count)?;
                 let spacing = match (count, self.spacing) {
                     (1, s) => s.unwrap_or(0.0),
                     (_, Some(s)) if s.is_finite() && s > 0.0 => s,

@@ -10,6 +10,14 @@ use irregularity::{Profile, WheelFlat, WheelTrack};
 /// Largest number of vehicles in one run (each adds a dense block and a moving interaction per wheel).
 pub const MAX_VEHICLES: usize = 1_000;
 
+/// Check a number of vehicles against 1 … [`MAX_VEHICLES`] (before any is built from it).
+pub fn check_count(count: usize) -> Result<()> {
+    if count == 0 || count > MAX_VEHICLES {
+        return Err(invalid("vehicle.count", count as f64, format!("must lie in 1 … {MAX_VEHICLES}")));
+    }
+    Ok(())
+}
+
 /// Largest ω_c·h a run with vehicles may take, ω_c = √(k_t/m_w) the stiffest wheel's contact mode (its tangent
 /// contact stiffness at its static load over its own mass): at least π steps per period. The θ-method keeps an
 /// unresolved mode bounded but not still — a wheel re-excited by its moving row every step rings at the step's
@@ -134,13 +142,7 @@ impl VehicleSettings {
 
     /// Check counts first, then each vehicle, the contact, the profile and the flats.
     pub fn validate(&self) -> Result<()> {
-        if self.vehicles.is_empty() || self.vehicles.len() > MAX_VEHICLES {
-            return Err(invalid(
-                "vehicle.count",
-                self.vehicles.len() as f64,
-                format!("must lie in 1 … {MAX_VEHICLES}"),
-            ));
-        }
+        check_count(self.vehicles.len())?;
         for placed in &self.vehicles {
             placed.vehicle.validate()?;
             if !(placed.offset.is_finite() && placed.offset >= 0.0) {
