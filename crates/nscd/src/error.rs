@@ -35,6 +35,21 @@ pub enum NscdError {
         /// The tolerance asked for (m/s).
         tolerance: f64,
     },
+    /// The position projection of the rigid moving contacts stopped short of its tolerance.
+    #[error(
+        "position projection of the rigid contacts did not converge at step {step} (t = {time:.6} s): gap violation {violation:.3e} m after {sweeps} sweeps (tolerance {tolerance:.0e} m); try compliant contact",
+        tolerance = crate::position::PROJECTION_TOLERANCE
+    )]
+    ProjectionUnconverged {
+        /// Step index (1-based).
+        step: usize,
+        /// Time at the end of the step (s).
+        time: f64,
+        /// The largest gap violation left (m).
+        violation: f64,
+        /// Gauss–Seidel sweeps spent.
+        sweeps: usize,
+    },
     /// A state value became NaN or infinite.
     #[error("non-finite state at step {step} (t = {time:.6} s): {what}; {hint}")]
     NonFinite {

@@ -10,6 +10,7 @@
 //! - [`problem`]: the one-step [`InteractionProblem`] and its update phase (the step's law from the state).
 //! - [`hertz`]: Hertz's contact law in a step, by Newton iterations on its tangent.
 //! - [`moving`]: interactions whose rows are rebuilt every step (a wheel).
+//! - [`position`]: the position projection of rigid moving contacts after each step.
 //! - [`solver`]: projected Gauss–Seidel, a banded interior point, Clarabel (feature `clarabel`).
 //! - [`stepper`]: [`MoreauJean`], one step at a time, with its [`EnergyLedger`].
 
@@ -18,6 +19,7 @@ pub mod forcing;
 pub mod hertz;
 mod kernels;
 pub mod moving;
+pub mod position;
 pub mod problem;
 pub mod solver;
 pub mod stepper;

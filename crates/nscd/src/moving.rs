@@ -27,6 +27,10 @@ pub trait MovingInteraction: std::fmt::Debug + Send {
     /// For the step from t_k = `time` (s) of length `step` (s), from q_k and v_k: write the row H(t_{k+1}) into `row`
     /// and return the state.
     fn update(&mut self, time: f64, step: f64, q: &[f64], v: &[f64], row: &mut InteractionRow) -> MovingState;
+    /// The gap g (m) at `time` (s) from the displacement q, with the row H(`time`) written into `row`: g is affine in
+    /// q at a fixed time (g = g₀(t) + H(t) q), so the position projection of a rigid contact ([`crate::position`])
+    /// solves for it exactly.
+    fn gap(&self, time: f64, q: &[f64], row: &mut InteractionRow) -> f64;
 }
 
 /// The interactions of a run: fixed ones with their once-per-run data, and moving ones rebuilt every step.

@@ -21,6 +21,7 @@
 use crate::hertz::{HertzStep, NEWTON_TOLERANCE, PENETRATION_FLOOR};
 use crate::kernels::axpy;
 use crate::moving::{Interactions, MovingInteraction, MovingState};
+use crate::position::{CLOSED_GAP, PositionProjection, ProjectionReport};
 use crate::solver::VELOCITY_FLOOR;
 use crate::solver::response::ImpulseResponses;
 use crate::stepper::{Integration, iteration_matrix};
@@ -31,12 +32,21 @@ use friction::{InteractionSet, Law};
 
 /// The step's law of one interaction from its law, gap g_k (m), relative velocity U_k (m/s), rheonomic velocity
 /// b_r (m/s, U = Hq̇ + b_r), step h and θ: (lo, hi, b) — the compliance is fixed per run (docs/theory.md §9).
-fn step_bounds(law: &Law, gap: f64, u: f64, rheonomic: f64, h: f64, theta: f64) -> (f64, f64, f64) {
+/// `projected`: a rigid contact whose positions are projected ([`crate::position`]) is also in the index set when
+/// closed, g_k ≤ [`CLOSED_GAP`].
+fn step_bounds(
+    law: &Law,
+    gap: f64,
+    u: f64,
+    rheonomic: f64,
+    (h, theta): (f64, f64),
+    projected: bool,
+) -> (f64, f64, f64) {
     let spring = || compliant_drift(-gap, u, rheonomic, h, theta);
     match *law {
         Law::Coulomb { capacity } => (-h * capacity, h * capacity, rheonomic),
         Law::Signorini { restitution, .. } => {
-            if gap + PREDICTION_WEIGHT * h * u <= 0.0 {
+            if gap + PREDICTION_WEIGHT * h * u <= 0.0 || (projected && gap <= CLOSED_GAP) {
                 (0.0, f64::INFINITY, rheonomic + restitution * u)
             } else {
                 (0.0, 0.0, 0.0)
@@ -125,6 +135,8 @@ pub struct InteractionProblem {
     moving_responses: Vec<f64>,
     /// The Hertz contacts' step states, by interaction (None for every other law).
     hertz: Vec<Option<HertzStep>>,
+    /// The position projection of the rigid moving contacts.
+    projection: PositionProjection,
 }
 
 impl InteractionProblem {
@@ -162,7 +174,7 @@ impl InteractionProblem {
             match *l {
                 // Friction's bounds are fixed for the run: set here, by the one mapping from law to bounds.
                 Law::Coulomb { .. } => {
-                    (law.lower[j], law.upper[j], law.drift[j]) = step_bounds(l, 0.0, 0.0, 0.0, h, theta);
+                    (law.lower[j], law.upper[j], law.drift[j]) = step_bounds(l, 0.0, 0.0, 0.0, (h, theta), false);
                 }
                 Law::Signorini { .. } => {}
                 Law::Compliant { stiffness, .. } | Law::Spring { stiffness, .. } => {
@@ -184,6 +196,7 @@ impl InteractionProblem {
             *w += d;
         }
         let varying = !interactions.is_friction_only() || !moving.is_empty();
+        let projection = PositionProjection::new(moving.len(), |k| matches!(moving[k].law(), Law::Signorini { .. }));
         let n = m_hat.order();
         let mut problem = Self {
             interactions,
@@ -199,6 +212,7 @@ impl InteractionProblem {
             moving_responses: vec![0.0; moving.len() * n],
             moving,
             hertz,
+            projection,
         };
         problem.update(0.0, &vec![0.0; n], &vec![0.0; n]);
         Ok(problem)
@@ -243,7 +257,7 @@ impl InteractionProblem {
                 Self::set_hertz_law(&mut self.law, &mut self.delassus_diagonal, j, hertz, (h, theta));
                 continue;
             }
-            let (lower, upper, drift) = step_bounds(law, gap, u, rheonomic, h, theta);
+            let (lower, upper, drift) = step_bounds(law, gap, u, rheonomic, (h, theta), j >= self.fixed);
             self.law.lower[j] = lower;
             self.law.upper[j] = upper;
             self.law.drift[j] = drift;
@@ -307,14 +321,36 @@ impl InteractionProblem {
     /// its mean relative velocity over the step and Φ its spring energy (½k⟨δ⟩₊², ½kδ², (2/5)C_H⟨δ⟩₊^{5/2}). The
     /// implicit law takes the force at the step's end, so this is ≥ 0 — ½k(Δδ)² for a linear spring — and largest
     /// at landings; a step without force loses what the spring held (δ_{k+1} ≤ 0). δ_k is the penetration the step
-    /// started from (−g_k of the update phase). None for other laws and fixed interactions.
-    pub fn moving_contact_loss(&self, j: usize, p: f64) -> Option<f64> {
+    /// started from (−g_k of the update phase). A rigid contact stores nothing: −p·Ū with Ū = θU_{k+1} + (1−θ)U_k =
+    /// H v_θ + b_r, both velocities taken with the step's row (`v_theta` = v_θ) — for an impact from U⁻ to U⁺ = −eU⁻,
+    /// ½m_eff(1 − e²)U⁻² at θ = ½; while it presses, O(h) relative accelerations a step, which sum to no more than
+    /// O(h) over a run. None for friction and fixed interactions.
+    pub fn moving_contact_loss(&self, j: usize, p: f64, v_theta: &[f64]) -> Option<f64> {
         let h = self.integration.step;
-        let start = -self.moving_states.get(j.checked_sub(self.fixed)?)?.gap;
+        let state = self.moving_states.get(j.checked_sub(self.fixed)?)?;
         let law = &self.interactions.laws()[j];
+        if let Law::Signorini { .. } = law {
+            // Newton's impact: what the impulse takes from the relative motion, −p·(H v_θ + b_r).
+            return Some(-p * (self.interactions.rows()[j].dot(v_theta) + state.rheonomic));
+        }
+        let start = -state.gap;
         let end = self.end_penetration(j, p)?;
         let relative_work = p * (start - end) / h;
         Some(-relative_work - (stored_energy(law, end)? - stored_energy(law, start)?))
+    }
+
+    /// Whether some moving contact is rigid, so that positions are projected after each step
+    /// ([`InteractionProblem::project_positions`]).
+    pub fn has_projection(&self) -> bool {
+        self.projection.is_needed()
+    }
+
+    /// The position projection of the rigid moving contacts ([`crate::position`]) after a step with impulses `p`:
+    /// from q̃_{k+1} = `q` at t_{k+1} = `time`, write the correction Δq into `dq` (n) and report.
+    pub fn project_positions(&mut self, time: f64, q: &[f64], p: &[f64], dq: &mut [f64]) -> ProjectionReport {
+        let (n, responses) = (self.m_hat.order(), &self.moving_responses);
+        let response = |k: usize| &responses[k * n..(k + 1) * n];
+        self.projection.project(&self.moving, (time, q), &p[self.fixed..], response, dq)
     }
 
     /// Whether some interactions move (their rows change every step).

@@ -16,6 +16,7 @@ use crate::error::{NscdError, Result};
 use crate::forcing::Forcing;
 use crate::hertz::NEWTON_ITERATIONS;
 use crate::kernels::dot;
+use crate::position::ProjectionReport;
 use crate::problem::{StepLaw, stored_energy};
 use crate::solver::{InteractionProblem, InteractionSolver, SolverKind, SolverSettings, StepReport, build_solver};
 use crate::system::LinearSystem;
@@ -48,10 +49,14 @@ pub struct EnergyLedger {
     /// ½k_c⟨δ⟩₊² summed over the compliant interactions now (J): not part of `current`, whose balance the impulses'
     /// work closes; reported so that the stops' own loss, −(contact + support work) − Δspring energy, can be told.
     pub spring_energy: f64,
-    /// Σ over the moving compliant contacts (wheels) of what each lost in a step,
-    /// [`crate::InteractionProblem::moving_contact_loss`] (J, ≥ 0): landing impacts and the implicit spring. Apart from
+    /// Σ over the moving contacts (wheels) of what each lost in a step (J):
+    /// [`crate::InteractionProblem::moving_contact_loss`] — landing impacts and the implicit spring — less the
+    /// rigid contacts' [`EnergyLedger::projection_work`]. Apart from
     /// `contact_work`, which also carries the work a wheel's rolling along a moving rail does (its rheonomic part).
     pub contact_loss: f64,
+    /// Σ over the steps of the strain energy the position projection of rigid moving contacts changed
+    /// (J, either sign; [`crate::position`]): ½(q + Δq)ᵀK(q + Δq) − ½qᵀKq.
+    pub projection_work: f64,
     /// Σ (θ − ½)(‖Δv‖²_M + ‖Δq‖²_K) ≥ 0: numerical dissipation of the scheme.
     pub numerical_dissipation: f64,
     /// Largest |per-step residual| seen (J).
@@ -59,11 +64,12 @@ pub struct EnergyLedger {
 }
 
 impl EnergyLedger {
-    /// E_now − E₀ − (load work − viscous + friction − numerical): zero up to round-off.
+    /// E_now − E₀ − (load work − viscous + interactions − numerical + projection): zero up to round-off.
     pub fn residual(&self) -> f64 {
         self.current
             - self.initial
-            - (self.load_work - self.viscous_dissipation + self.interaction_work() - self.numerical_dissipation)
+            - (self.load_work - self.viscous_dissipation + self.interaction_work() - self.numerical_dissipation
+                + self.projection_work)
     }
 
     /// Work of all interaction impulses (J): friction, contact and supports.
@@ -151,6 +157,8 @@ pub struct MoreauJean {
     work2: Vec<f64>,
     u_free: Vec<f64>,
     v_free: Vec<f64>,
+    /// The position projection's Δq (n when some moving contact is rigid, else empty).
+    dq: Vec<f64>,
 }
 
 impl MoreauJean {
@@ -219,7 +227,11 @@ impl MoreauJean {
             work2: vec![0.0; n],
             u_free: vec![0.0; m],
             v_free: vec![0.0; n],
+            dq: Vec::new(),
         };
+        if stepper.problem.has_projection() {
+            stepper.dq = vec![0.0; n];
+        }
         stepper.stiffness.mul_vec(&stepper.q, &mut stepper.kq);
         stepper.stiffness.mul_vec(&stepper.v, &mut stepper.kv);
         stepper.mass.mul_vec(&stepper.v, &mut stepper.mv);
@@ -340,7 +352,25 @@ impl MoreauJean {
             *w = theta * v + (1.0 - theta) * v_prev;
             *q += h * *w;
         }
+        let projection = if self.problem.has_projection() {
+            let projection = self.problem.project_positions(t1, &self.q, &self.p, &mut self.dq);
+            if !projection.converged() {
+                return Err(NscdError::ProjectionUnconverged {
+                    step: self.steps + 1,
+                    time: t1,
+                    violation: projection.violation,
+                    sweeps: projection.sweeps,
+                });
+            }
+            projection
+        } else {
+            ProjectionReport::default()
+        };
+        // The step's energy before the projection, then the projection's own.
         self.book_energy(forcing, t0, t1)?;
+        if projection.sweeps > 0 {
+            self.apply_projection();
+        }
         if !self.problem.interactions.is_empty() {
             self.problem.interactions.velocities(&self.v, &mut self.u);
         }
@@ -348,6 +378,24 @@ impl MoreauJean {
         self.steps += 1;
         self.last_report = report;
         Ok(report)
+    }
+
+    /// q ← q + Δq of the position projection; K q and the strain energy follow, the change booked as
+    /// [`EnergyLedger::projection_work`]: ½(q + Δq)ᵀK(q + Δq) − ½qᵀKq = Δqᵀ(Kq + ½KΔq).
+    fn apply_projection(&mut self) {
+        self.stiffness.mul_vec(&self.dq, &mut self.work2);
+        let change: f64 = (0..self.dq.len()).map(|i| self.dq[i] * (self.kq[i] + 0.5 * self.work2[i])).sum();
+        for ((q, dq), (kq, kdq)) in self.q.iter_mut().zip(&self.dq).zip(self.kq.iter_mut().zip(&self.work2)) {
+            *q += dq;
+            *kq += kdq;
+        }
+        let e = &mut self.energy;
+        e.strain += change;
+        e.current += change;
+        e.projection_work += change;
+        // Part of the rigid contacts' loss: while a wheel presses on a moving rail, the step's −p·Ū and the
+        // projection's change are each the O(h) drift and cancel (docs/theory.md §9).
+        e.contact_loss -= change;
     }
 
     /// Book the energy terms of the step just taken (`work` holds v_θ) and carry the products forward. A
@@ -407,8 +455,10 @@ impl MoreauJean {
         e.numerical_dissipation += numerical;
         if self.varying_energy {
             e.spring_energy = spring_energy(&self.problem, &self.q, Some(&self.p));
+        }
+        if self.varying_energy || self.problem.has_projection() {
             for j in self.problem.fixed_len()..self.p.len() {
-                e.contact_loss += self.problem.moving_contact_loss(j, self.p[j]).unwrap_or(0.0);
+                e.contact_loss += self.problem.moving_contact_loss(j, self.p[j], &self.work).unwrap_or(0.0);
             }
         }
         let step_residual = e.current - before - (load - viscous + work.total() - numerical);

@@ -110,6 +110,8 @@ pub struct VehicleReport {
     pub spring_energy: f64,
     /// Energy the contacts dissipated: landings and the implicit contact law (J).
     pub contact_loss: f64,
+    /// Strain energy changed by the position projection of rigid contacts (J; 0 without them).
+    pub projection_work: f64,
     /// Every wheel.
     pub wheels: Vec<WheelReport>,
     /// Every loss of contact.
@@ -176,6 +178,7 @@ impl VehicleReport {
             contact_work: results.contact_work,
             spring_energy: results.spring_energy,
             contact_loss: results.contact_loss,
+            projection_work: results.projection_work,
             wheels,
             losses,
             bodies,

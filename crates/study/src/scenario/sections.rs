@@ -385,15 +385,15 @@ pub struct OutputSection {
 }
 
 impl OutputSection {
-    /// The snapshot requests for a crossing of `crossing` m (the beam's length plus the train's, the first axle's
-    /// travel): the times and load positions given, or the first axle at ¼, ½ and ¾ of it (L/4, L/2, 3L/4 for a
-    /// single load).
-    pub fn snapshots(&self, crossing: f64) -> Vec<track::SnapshotAt> {
+    /// The snapshot requests for a run whose first axle travels from `start` to `end` (m; from the run's start
+    /// position — 0 from rest — to the beam's length plus the train's): the times and load positions given, or the
+    /// first axle at ¼, ½ and ¾ of its travel (L/4, L/2, 3L/4 for a single load from rest).
+    pub fn snapshots(&self, (start, end): (f64, f64)) -> Vec<track::SnapshotAt> {
         use track::SnapshotAt;
         let mut requests: Vec<SnapshotAt> = self.snapshot_times.iter().map(|&t| SnapshotAt::Time(t)).collect();
         requests.extend(self.snapshot_load_positions.iter().map(|&x| SnapshotAt::LoadPosition(x)));
         if requests.is_empty() {
-            requests = [0.25, 0.5, 0.75].iter().map(|f| SnapshotAt::LoadPosition(f * crossing)).collect();
+            requests = [0.25, 0.5, 0.75].iter().map(|f| SnapshotAt::LoadPosition(start + f * (end - start))).collect();
         }
         requests
     }

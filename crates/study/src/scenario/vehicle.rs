@@ -49,6 +49,20 @@ pub enum ContactKind {
     Linear,
     /// A linear spring glued to the rail, pulling as well as pressing (`contact_stiffness`).
     Glued,
+    /// Rigid unilateral contact with Newton's impact law (`restitution`, default 0).
+    Rigid,
+}
+
+impl ContactKind {
+    /// The name in scenario files.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Hertz => "hertz",
+            Self::Linear => "linear",
+            Self::Glued => "glued",
+            Self::Rigid => "rigid",
+        }
+    }
 }
 
 /// `[vehicle]`: vehicles instead of moving forces. Without a train in `[load]`, `count` vehicles `spacing` m apart,
@@ -96,6 +110,9 @@ pub struct VehicleSection {
     /// k_c (N/m) of a linear or glued contact; default 1.5e9 (Hertz's tangent at 83.4 kN).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub contact_stiffness: Option<f64>,
+    /// Newton's coefficient of restitution e ∈ [0, 1] of a rigid contact; default 0.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub restitution: Option<f64>,
     /// `[[vehicle.flats]]`: wheel flats.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub flats: Vec<FlatSection>,
@@ -118,6 +135,7 @@ impl Default for VehicleSection {
             hertz_coefficient: None,
             wheel_radius: None,
             contact_stiffness: None,
+            restitution: None,
             flats: Vec::new(),
         }
     }
@@ -243,6 +261,23 @@ impl VehicleSection {
     /// The contact law.
     fn contact(&self) -> Result<WheelRail> {
         let stiffness = self.contact_stiffness.unwrap_or(1.5e9);
+        let given = [
+            ("hertz_coefficient", self.hertz_coefficient.is_some(), self.contact == ContactKind::Hertz),
+            ("wheel_radius", self.wheel_radius.is_some(), self.contact == ContactKind::Hertz),
+            (
+                "contact_stiffness",
+                self.contact_stiffness.is_some(),
+                matches!(self.contact, ContactKind::Linear | ContactKind::Glued),
+            ),
+            ("restitution", self.restitution.is_some(), self.contact == ContactKind::Rigid),
+        ];
+        if let Some((field, _, _)) = given.iter().find(|(_, given, taken)| *given && !taken) {
+            return Err(invalid(
+                &format!("vehicle.{field}"),
+                "given",
+                format!("is not a parameter of contact = \"{}\"", self.contact.name()),
+            ));
+        }
         let contact = match self.contact {
             ContactKind::Hertz => match (self.hertz_coefficient, self.wheel_radius) {
                 (Some(_), Some(r)) => {
@@ -259,6 +294,7 @@ impl VehicleSection {
             },
             ContactKind::Linear => WheelRail::Linear { stiffness },
             ContactKind::Glued => WheelRail::Glued { stiffness },
+            ContactKind::Rigid => WheelRail::Rigid { restitution: self.restitution.unwrap_or(0.0) },
         };
         contact.validate()?;
         Ok(contact)

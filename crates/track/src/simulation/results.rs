@@ -233,4 +233,8 @@ pub struct VehicleResults {
     /// Energy the contacts dissipated (J, ≥ 0): landing impacts and the implicit contact law
     /// ([`nscd::EnergyLedger::contact_loss`]).
     pub contact_loss: f64,
+    /// Strain energy changed by the position projection of rigid contacts (J, either sign; 0 without rigid
+    /// contacts): the O(h) drift of the velocity-level constraint along the moving rail, removed
+    /// ([`nscd::EnergyLedger::projection_work`]).
+    pub projection_work: f64,
 }

@@ -284,6 +284,7 @@ impl VehicleObserver {
             contact_work: energy.contact_work,
             spring_energy: energy.spring_energy,
             contact_loss: energy.contact_loss,
+            projection_work: energy.projection_work,
         }
     }
 }

@@ -230,7 +230,7 @@ impl VehicleSettings {
 
     /// ω_c (rad/s) of the stiffest wheel–rail contact mode: max over the wheels with mass of √(k_t/m_w), k_t the
     /// contact's tangent stiffness at the wheel's static load on a level rail, m_w the wheel DOF's mass (a massless
-    /// wheel's contact mode is the rail's, not checked here). 0 if no wheel has mass.
+    /// wheel's contact mode is the rail's, and a rigid contact has none: not checked here). 0 if no wheel has one.
     pub fn contact_frequency(&self) -> Result<f64> {
         let mut largest = 0.0f64;
         // The static train's axles are the wheels, in order, with their static loads.
@@ -238,8 +238,8 @@ impl VehicleSettings {
             let placed = &self.vehicles[wheel.vehicle];
             let v = &placed.vehicle;
             let mass = v.mass[wheel.dof * v.dofs() + wheel.dof];
-            if mass > 0.0 {
-                largest = largest.max((self.contact_of(placed).tangent_stiffness(axle.force) / mass).sqrt());
+            if let (true, Some(stiffness)) = (mass > 0.0, self.contact_of(placed).tangent_stiffness(axle.force)) {
+                largest = largest.max((stiffness / mass).sqrt());
             }
         }
         Ok(largest)
@@ -266,6 +266,13 @@ pub enum WheelRail {
         /// k_c (N/m) > 0.
         stiffness: f64,
     },
+    /// Rigid contact: Signorini's condition with Newton's impact law U⁺ = −eU⁻, held at velocity level in the step
+    /// and at position level by the projection after it ([`nscd::position`]): the limit of the compliant laws as
+    /// their stiffness grows.
+    Rigid {
+        /// Newton's coefficient of restitution e ∈ [0, 1] (0: plastic landings).
+        restitution: f64,
+    },
 }
 
 impl Default for WheelRail {
@@ -287,6 +294,12 @@ impl WheelRail {
         let (field, value) = match *self {
             Self::Hertz { coefficient } => ("vehicle.hertz_coefficient", coefficient),
             Self::Linear { stiffness } | Self::Glued { stiffness } => ("vehicle.contact_stiffness", stiffness),
+            Self::Rigid { restitution } => {
+                if !(restitution.is_finite() && (0.0..=1.0).contains(&restitution)) {
+                    return Err(invalid("vehicle.restitution", restitution, "must lie in [0, 1]"));
+                }
+                return Ok(());
+            }
         };
         if !(value.is_finite() && value > 0.0) {
             let unit = if matches!(self, Self::Hertz { .. }) { "N/m^1.5" } else { "N/m" };
@@ -301,31 +314,36 @@ impl WheelRail {
             Self::Hertz { coefficient } => friction::Law::Hertz { gap: 0.0, coefficient },
             Self::Linear { stiffness } => friction::Law::Compliant { gap: 0.0, stiffness },
             Self::Glued { stiffness } => friction::Law::Spring { gap: 0.0, stiffness },
+            Self::Rigid { restitution } => friction::Law::Signorini { gap: 0.0, restitution },
         }
     }
 
-    /// The penetration δ (m) that carries a static wheel load `force` (N): (Q/C_H)^{2/3} or Q/k_c.
+    /// The penetration δ (m) that carries a static wheel load `force` (N): (Q/C_H)^{2/3}, Q/k_c, or 0 when rigid.
     pub fn static_penetration(&self, force: f64) -> f64 {
         match *self {
             Self::Hertz { coefficient } => (force.max(0.0) / coefficient).powf(2.0 / 3.0),
             Self::Linear { stiffness } | Self::Glued { stiffness } => force / stiffness,
+            Self::Rigid { .. } => 0.0,
         }
     }
 
-    /// The tangent stiffness dλ/dδ (N/m) at a wheel load `force` (N): (3/2)C_H^{2/3}Q^{1/3}, or k_c.
-    pub fn tangent_stiffness(&self, force: f64) -> f64 {
+    /// The tangent stiffness dλ/dδ (N/m) at a wheel load `force` (N): (3/2)C_H^{2/3}Q^{1/3}, or k_c; None when
+    /// rigid (no contact mode: the wheel moves with the rail).
+    pub fn tangent_stiffness(&self, force: f64) -> Option<f64> {
         match *self {
-            Self::Hertz { coefficient } => 1.5 * coefficient.powf(2.0 / 3.0) * force.max(0.0).cbrt(),
-            Self::Linear { stiffness } | Self::Glued { stiffness } => stiffness,
+            Self::Hertz { coefficient } => Some(1.5 * coefficient.powf(2.0 / 3.0) * force.max(0.0).cbrt()),
+            Self::Linear { stiffness } | Self::Glued { stiffness } => Some(stiffness),
+            Self::Rigid { .. } => None,
         }
     }
 
-    /// The law's name for reports: `hertz`, `linear` or `glued`.
+    /// The law's name for reports: `hertz`, `linear`, `glued` or `rigid`.
     pub fn name(&self) -> &'static str {
         match self {
             Self::Hertz { .. } => "hertz",
             Self::Linear { .. } => "linear",
             Self::Glued { .. } => "glued",
+            Self::Rigid { .. } => "rigid",
         }
     }
 }

@@ -3,11 +3,10 @@
 //! rheonomic velocity at t_{k+1} is −v·r′(x_c(t_{k+1})). Off the beam the rail is this rigid ground; on rigid ground
 //! alone it is the textbook base excitation of a vehicle.
 //!
-//! Known limit of the rigid law here: the velocity-level constraint follows r with the trapezoid's O(h³) error a step
-//! (bounded drift ~(ωh)²a/12); a drift of nanometres above the ground makes Moreau's rule drop the contact for a step,
-//! and a massless wheel then sinks into the ground at once and rides on there (the sprung mass at r = 1 ends 3.5 mm
-//! low after its transient; amplitudes and contact forces are unaffected). A bilateral (glued) wheel does not drift
-//! down, so the two differ by that offset; see docs/theory.md §12.
+//! With the rigid law the wheel's positions are projected onto the ground after each step ([`nscd::position`]): a
+//! velocity-level constraint alone follows r with the trapezoid's O(h³) error a step, and a drift of nanometres
+//! above the ground made Moreau's rule drop the contact for a step (a massless wheel then sank into the ground and
+//! rode on 3.5 mm low). A closed contact now stays in the index set and ends every step on the ground.
 
 use friction::{InteractionKind, InteractionRow, Law};
 use irregularity::WheelTrack;
@@ -54,5 +53,11 @@ impl MovingInteraction for WheelOnGround {
             rheonomic: -self.speed * self.track.height_slope(next, next - self.start).1,
             position: next,
         }
+    }
+
+    fn gap(&self, time: f64, q: &[f64], row: &mut InteractionRow) -> f64 {
+        row.set_entries([(self.dof, 1.0)]);
+        let x = self.position(time);
+        q[self.dof] - self.track.height_slope(x, x - self.start).0
     }
 }
