@@ -146,8 +146,8 @@ fn trains(c: &mut Criterion) {
 
 /// A quarter car against the moving force on the reference track at 200 m/s (issue: ≤ 2× the moving-force run),
 /// both whole runs through `Simulation` with their observers (the car's: every wheel's force, rail deflection and
-/// moment, the body's acceleration): the car with Hertz contact (Newton iterations in every step) and with a
-/// linear contact spring.
+/// moment, the body's acceleration): the car with Hertz contact (Newton iterations in every step), with a
+/// linear contact spring, and rigid (position projection every step, θ = 0.51).
 fn vehicles(c: &mut Criterion) {
     use track::vehicle::builtin::QuarterCar;
     use track::vehicle::consist::{VehicleSettings, WheelRail};
@@ -163,10 +163,19 @@ fn vehicles(c: &mut Criterion) {
     };
     let hertz = with_contact(WheelRail::default());
     let linear = with_contact(WheelRail::Linear { stiffness: 1.5e9 });
+    // Rigid contact as the README says to run it (θ = 0.51): one solve a step and the position projection.
+    let mut rigid = with_contact(WheelRail::Rigid { restitution: 0.0 });
+    rigid.integration.theta = 0.51;
 
     let mut group = c.benchmark_group("vehicle");
     group.sample_size(10).warm_up_time(Duration::from_secs(1)).measurement_time(Duration::from_secs(5));
-    for (name, s) in [("moving_force", &settings), ("quarter_car_hertz", &hertz), ("quarter_car_linear", &linear)] {
+    let cases = [
+        ("moving_force", &settings),
+        ("quarter_car_hertz", &hertz),
+        ("quarter_car_linear", &linear),
+        ("quarter_car_rigid", &rigid),
+    ];
+    for (name, s) in cases {
         group.bench_function(BenchmarkId::new(name, steps), |b| {
             b.iter(|| Simulation::new(&model, black_box(&InteractionSet::new()), s).unwrap().run().unwrap())
         });

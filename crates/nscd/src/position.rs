@@ -89,7 +89,8 @@ impl PositionProjection {
     }
 
     /// Project: from q̃_{k+1} = `q` at `time` = t_{k+1}, the step's impulses of the moving interactions `p` and their
-    /// responses `response(k)` = G_k, write Δq = Σ μ_j G_j into `dq` (zero when nothing is to move) and report.
+    /// responses `response(k)` = G_k, write Δq = Σ μ_j G_j into `dq` and report; when nothing is to move (0 sweeps)
+    /// `dq` is left as it was.
     pub(crate) fn project<'a>(
         &mut self,
         moving: &[Box<dyn MovingInteraction>],
@@ -98,7 +99,6 @@ impl PositionProjection {
         response: impl Fn(usize) -> &'a [f64],
         dq: &mut [f64],
     ) -> ProjectionReport {
-        dq.iter_mut().for_each(|x| *x = 0.0);
         let m = self.rigid.len();
         let mut needed = false;
         for (i, &k) in self.rigid.iter().enumerate() {
@@ -133,8 +133,11 @@ impl PositionProjection {
                 report.violation = report.violation.max(violation);
             }
         }
-        for (&mu, &k) in self.multipliers.iter().zip(&self.rigid) {
-            if mu != 0.0 {
+        // Δq = Σ μ_j G_j: the first term written, the others added (no pass to clear Δq).
+        for (i, (&mu, &k)) in self.multipliers.iter().zip(&self.rigid).enumerate() {
+            if i == 0 {
+                dq.iter_mut().zip(response(k)).for_each(|(d, g)| *d = mu * g);
+            } else if mu != 0.0 {
                 axpy(mu, response(k), dq);
             }
         }

@@ -346,7 +346,8 @@ impl InteractionProblem {
     }
 
     /// The position projection of the rigid moving contacts ([`crate::position`]) after a step with impulses `p`:
-    /// from q̃_{k+1} = `q` at t_{k+1} = `time`, write the correction Δq into `dq` (n) and report.
+    /// from q̃_{k+1} = `q` at t_{k+1} = `time`, write the correction Δq into `dq` (n) and report (`dq` is
+    /// untouched when the report has 0 sweeps: nothing to move).
     pub fn project_positions(&mut self, time: f64, q: &[f64], p: &[f64], dq: &mut [f64]) -> ProjectionReport {
         let (n, responses) = (self.m_hat.order(), &self.moving_responses);
         let response = |k: usize| &responses[k * n..(k + 1) * n];
