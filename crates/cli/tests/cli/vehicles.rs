@@ -167,3 +167,59 @@ fn the_rail_car_example_runs_with_hertz_and_rigid_contact() {
     assert!(rigid["energy_residual"].as_f64().unwrap().abs() < 1e-9 * rigid["load_work"].as_f64().unwrap().abs());
     std::fs::remove_dir_all(&folder).unwrap();
 }
+
+/// Groups of vehicles, each with its own contact law: a rail car with Hertz contact and, 30 m behind it, two quarter
+/// cars 10 m apart on rigid wheels, one of them with a flat (counted within its group). The report names the laws
+/// `mixed` and lists the six wheels at their offsets, each on its static load; groups' inputs are refused by
+/// their own paths.
+#[test]
+fn groups_of_vehicles_each_with_its_contact() {
+    let folder = std::env::temp_dir().join(format!("frictrack-groups-{}", std::process::id()));
+    std::fs::create_dir_all(&folder).unwrap();
+    let base =
+        "[load]\nspeed = 40.0\n[integration]\nload_advance = 0.04\ntheta = 0.51\n[vehicle]\nkind = \"rail-car\"\n";
+    let groups = "[[vehicle.behind]]\noffset = 30.0\nkind = \"quarter-car\"\ncount = 2\nspacing = 10.0\n\
+                  contact = \"rigid\"\n[[vehicle.behind.flats]]\nwheel = 1\nlength = 0.05\n";
+    let mixed = scenario(&folder, "mixed.toml", &format!("{base}{groups}"));
+    let v = json(&frictrack(&["run", &mixed, "--format", "json"]));
+    let vehicles = &v["vehicles"];
+    assert_eq!(vehicles["contact"], "mixed");
+    let wheels = vehicles["wheels"].as_array().unwrap();
+    let offsets: Vec<f64> = wheels.iter().map(|w| w["offset"].as_f64().unwrap()).collect();
+    assert_eq!(offsets, [0.0, 2.5, 17.5, 20.0, 30.0, 40.0]);
+    assert!((wheels[0]["static_force"].as_f64().unwrap() - 61.68e3).abs() < 10.0);
+    assert!((wheels[5]["static_force"].as_f64().unwrap() - 8500.0 * 9.81).abs() < 1e-6 * 8500.0 * 9.81);
+    assert_eq!(vehicles["bodies"].as_array().unwrap().len(), 3);
+    assert!(v["energy_residual"].as_f64().unwrap().abs() < 1e-9 * v["load_work"].as_f64().unwrap().abs());
+    for (name, text, path) in [
+        ("nooffset.toml", format!("{base}[[vehicle.behind]]\nkind = \"moving-mass\"\n"), "vehicle.behind[0].offset"),
+        ("first.toml", format!("{base}offset = 3.0\n"), "vehicle.offset"),
+        (
+            "mass.toml",
+            format!("{base}[[vehicle.behind]]\noffset = 5.0\nkind = \"moving-mass\"\nmass = -2.0\n"),
+            "vehicle.behind[0].mass",
+        ),
+        (
+            "restitution.toml",
+            format!("{base}[[vehicle.behind]]\noffset = 5.0\ncontact = \"rigid\"\nrestitution = 2.0\n"),
+            "vehicle.behind[0].restitution",
+        ),
+        (
+            "nested.toml",
+            format!("{base}[[vehicle.behind]]\noffset = 5.0\n[[vehicle.behind.behind]]\noffset = 9.0\n"),
+            "vehicle.behind[0].behind",
+        ),
+        (
+            "train.toml",
+            "[load]\ntrain = \"hslm-a1\"\n[vehicle]\nkind = \"moving-mass\"\n[[vehicle.behind]]\noffset = 5.0\n".into(),
+            "vehicle.behind",
+        ),
+    ] {
+        let path_to = scenario(&folder, name, &text);
+        let out = frictrack(&["run", &path_to]);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{name}: {stderr}");
+        assert!(stderr.contains(path), "{name}: {stderr}");
+    }
+    std::fs::remove_dir_all(&folder).unwrap();
+}

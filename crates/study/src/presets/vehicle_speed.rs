@@ -76,7 +76,7 @@ fn prepared(base: &Scenario, speeds: &[f64]) -> Result<(Scenario, Vec<String>)> 
     let mut omega = 0.0f64;
     let axle = fem_beam::Train::single(s.load.force);
     for model in 1..MODELS.len() {
-        let settings = vehicle(model).settings(Some(&axle), irregularity::Profile::Smooth)?;
+        let settings = vehicle(model).settings(Some(&axle), |_| Ok(irregularity::Profile::Smooth))?;
         omega = omega.max(settings.contact_frequency()?);
     }
     let needed = 0.95 * MAX_CONTACT_STEP * slowest / omega;

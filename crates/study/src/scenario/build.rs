@@ -3,7 +3,7 @@
 
 use super::{Case, QuadratureKind, Scenario, SweepSection, fnv1a};
 use crate::error::{Result, StudyError, invalid};
-use fem_beam::{AbsorbingZones, BeamModel, Foundation, Mesh, Supports, Train};
+use fem_beam::{AbsorbingZones, BeamModel, Foundation, Mesh, Supports};
 use friction::{DeviceLayout, Devices, DistributedFriction, InteractionSet, Quadrature};
 use nscd::SolverSettings;
 use track::simulation::{IntegrationSettings, MovingLoadSettings, RecordSettings};
@@ -210,12 +210,7 @@ impl Scenario {
             ));
         }
         let vehicles = match &self.vehicle {
-            Some(v) => {
-                let behind =
-                    train.as_ref().map_or((v.count.max(1) - 1) as f64 * v.spacing.unwrap_or(0.0), Train::length);
-                let profile = self.rail.profile(self.mesh.length + behind)?;
-                Some(v.settings(train.as_ref(), profile)?)
-            }
+            Some(v) => Some(v.settings(train.as_ref(), |behind| self.rail.profile(self.mesh.length + behind))?),
             None => None,
         };
         Ok(RunSettings {

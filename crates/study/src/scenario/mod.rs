@@ -8,11 +8,13 @@
 //! - `parse`: TOML errors with file, line, column, the key's path and a "did you mean".
 
 mod build;
+pub mod contact;
 mod parse;
 pub mod rail;
 pub mod sections;
 pub mod vehicle;
 
+pub use contact::ContactKind;
 pub use rail::RailSection;
 pub use sections::*;
 pub use vehicle::VehicleSection;

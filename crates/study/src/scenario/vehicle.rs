@@ -2,13 +2,15 @@
 //! and its translation into [`track::vehicle`] settings, every error named by its path in the scenario file. The
 //! rail under them: [`super::rail`].
 
+use super::contact::ContactKind;
+use crate::error::StudyError;
 use crate::error::{Result, invalid};
 use fem_beam::Train;
 use irregularity::{Profile, WheelFlat};
 use serde::{Deserialize, Serialize};
 use track::vehicle::Vehicle;
 use track::vehicle::builtin::{MovingMass, QuarterCar};
-use track::vehicle::consist::{FlatWheel, PlacedVehicle, VehicleSettings, WheelRail};
+use track::vehicle::consist::{FlatWheel, PlacedVehicle, VehicleSettings};
 use track::vehicle::rail_car::RailCar;
 
 /// The kind of vehicle of `[vehicle]`.
@@ -34,33 +36,6 @@ impl VehicleKind {
             Self::QuarterCar => "quarter-car",
             Self::RailCar => "rail-car",
             Self::Matrices => "matrices",
-        }
-    }
-}
-
-/// The wheel–rail contact law of `[vehicle]`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
-#[serde(rename_all = "kebab-case")]
-pub enum ContactKind {
-    /// Hertz (`hertz_coefficient`, or `wheel_radius` for Zhai's fit; default 0.46 m).
-    #[default]
-    Hertz,
-    /// A linear unilateral spring (`contact_stiffness`).
-    Linear,
-    /// A linear spring glued to the rail, pulling as well as pressing (`contact_stiffness`).
-    Glued,
-    /// Rigid unilateral contact with Newton's impact law (`restitution`, default 0).
-    Rigid,
-}
-
-impl ContactKind {
-    /// The name in scenario files.
-    pub fn name(self) -> &'static str {
-        match self {
-            Self::Hertz => "hertz",
-            Self::Linear => "linear",
-            Self::Glued => "glued",
-            Self::Rigid => "rigid",
         }
     }
 }
@@ -116,6 +91,13 @@ pub struct VehicleSection {
     /// `[[vehicle.flats]]`: wheel flats.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub flats: Vec<FlatSection>,
+    /// Of a `[[vehicle.behind]]` group: how far its first vehicle runs behind the first vehicle of `[vehicle]` (m).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub offset: Option<f64>,
+    /// `[[vehicle.behind]]`: further groups of vehicles behind the first, each a `[vehicle]` table of its own (kind,
+    /// parameters, count, spacing, contact, flats) with its `offset`.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub behind: Vec<VehicleSection>,
 }
 
 impl Default for VehicleSection {
@@ -137,6 +119,8 @@ impl Default for VehicleSection {
             contact_stiffness: None,
             restitution: None,
             flats: Vec::new(),
+            offset: None,
+            behind: Vec::new(),
         }
     }
 }
@@ -258,54 +242,17 @@ fn default_diameter() -> f64 {
 }
 
 impl VehicleSection {
-    /// The contact law.
-    fn contact(&self) -> Result<WheelRail> {
-        let stiffness = self.contact_stiffness.unwrap_or(1.5e9);
-        let given = [
-            ("hertz_coefficient", self.hertz_coefficient.is_some(), self.contact == ContactKind::Hertz),
-            ("wheel_radius", self.wheel_radius.is_some(), self.contact == ContactKind::Hertz),
-            (
-                "contact_stiffness",
-                self.contact_stiffness.is_some(),
-                matches!(self.contact, ContactKind::Linear | ContactKind::Glued),
-            ),
-            ("restitution", self.restitution.is_some(), self.contact == ContactKind::Rigid),
-        ];
-        if let Some((field, _, _)) = given.iter().find(|(_, given, taken)| *given && !taken) {
-            return Err(invalid(
-                &format!("vehicle.{field}"),
-                "given",
-                format!("is not a parameter of contact = \"{}\"", self.contact.name()),
-            ));
-        }
-        let contact = match self.contact {
-            ContactKind::Hertz => match (self.hertz_coefficient, self.wheel_radius) {
-                (Some(_), Some(r)) => {
-                    return Err(invalid("vehicle.wheel_radius", r, "give hertz_coefficient or wheel_radius, not both"));
-                }
-                (Some(coefficient), None) => WheelRail::Hertz { coefficient },
-                (None, Some(radius)) => {
-                    if !(radius.is_finite() && radius > 0.0) {
-                        return Err(invalid("vehicle.wheel_radius", radius, "must be finite and > 0 (m)"));
-                    }
-                    WheelRail::hertz_for_radius(radius)
-                }
-                (None, None) => WheelRail::default(),
-            },
-            ContactKind::Linear => WheelRail::Linear { stiffness },
-            ContactKind::Glued => WheelRail::Glued { stiffness },
-            ContactKind::Rigid => WheelRail::Rigid { restitution: self.restitution.unwrap_or(0.0) },
-        };
-        contact.validate()?;
-        Ok(contact)
+    /// One vehicle of this group, its parameters checked and named under `path` (`vehicle`,
+    /// `vehicle.behind[0]`).
+    pub fn vehicle(&self, path: &str) -> Result<Vehicle> {
+        self.build_vehicle(path).map_err(|e| in_group(path, e))
     }
 
-    /// One vehicle of this section, its parameters checked.
-    pub fn vehicle(&self) -> Result<Vehicle> {
+    fn build_vehicle(&self, path: &str) -> Result<Vehicle> {
         let unused = |field: &str, given: bool| {
             if given {
                 Err(invalid(
-                    &format!("vehicle.{field}"),
+                    &format!("{path}.{field}"),
                     "given",
                     format!("is not a parameter of kind = \"{}\"", self.kind.name()),
                 ))
@@ -346,13 +293,13 @@ impl VehicleSection {
                 unused("body_mass … wheel_mass", quarter.iter().any(Option::is_some))?;
                 unused("rail_car", self.rail_car.is_some())?;
                 let m = self.matrices.as_ref().ok_or_else(|| {
-                    invalid("vehicle.matrices", "missing", "kind = \"matrices\" needs [vehicle.matrices]")
+                    invalid(&format!("{path}.matrices"), "missing", "kind = \"matrices\" needs a matrices table")
                 })?;
                 let n = m.weight.len();
                 let flat = |field: &str, rows: &[Vec<f64>]| -> Result<Vec<f64>> {
                     if rows.len() != n || rows.iter().any(|r| r.len() != n) {
                         return Err(invalid(
-                            &format!("vehicle.matrices.{field}"),
+                            &format!("{path}.matrices.{field}"),
                             rows.len(),
                             format!("needs {n} rows of {n} numbers (one per entry of weight)"),
                         ));
@@ -374,43 +321,106 @@ impl VehicleSection {
         }
     }
 
-    /// The vehicles of a run over `train` (one per axle) or, without one, `count` of them `spacing` apart; with the
-    /// rail's `profile`.
-    pub fn settings(&self, train: Option<&Train>, profile: Profile) -> Result<VehicleSettings> {
-        let vehicle = self.vehicle()?;
+    /// The vehicles of a run: this group — over `train`, one vehicle per axle; without one, `count` of them `spacing`
+    /// apart — then every `[[vehicle.behind]]` group at its offset, each vehicle with its group's contact law and
+    /// flats (wheels counted within the group); over the rail's profile made by `profile` for the distance from the
+    /// first vehicle's reference point to the last wheel (m).
+    pub fn settings(
+        &self,
+        train: Option<&Train>,
+        profile: impl FnOnce(f64) -> Result<Profile>,
+    ) -> Result<VehicleSettings> {
+        if let Some(offset) = self.offset {
+            return Err(invalid(
+                "vehicle.offset",
+                offset,
+                "the first group runs at 0: offset is for [[vehicle.behind]]",
+            ));
+        }
+        let mut settings = self.group("vehicle", train)?;
+        if train.is_some() && !self.behind.is_empty() {
+            let allowed = "with a train in [load] there is one vehicle per axle: no groups behind";
+            return Err(invalid("vehicle.behind", self.behind.len(), allowed));
+        }
+        for (i, group) in self.behind.iter().enumerate() {
+            let path = format!("vehicle.behind[{i}]");
+            if !group.behind.is_empty() {
+                return Err(invalid(&format!("{path}.behind"), group.behind.len(), "groups do not nest"));
+            }
+            let offset = match group.offset {
+                Some(x) if x.is_finite() && x >= 0.0 => x,
+                x => {
+                    let value = x.map_or("missing".into(), |x| x.to_string());
+                    return Err(invalid(&format!("{path}.offset"), value, "must be finite and ≥ 0 (m)"));
+                }
+            };
+            let more = group.group(&path, None)?;
+            let wheels = settings.wheels().count();
+            settings.flats.extend(more.flats.into_iter().map(|f| FlatWheel { wheel: wheels + f.wheel, ..f }));
+            settings
+                .vehicles
+                .extend(more.vehicles.into_iter().map(|p| PlacedVehicle { offset: offset + p.offset, ..p }));
+        }
+        settings.profile = profile(settings.lead() + settings.length())?;
+        settings.validate()?;
+        Ok(settings)
+    }
+
+    /// This group alone, named under `path`: its vehicles from offset 0, each with the group's contact law, and its
+    /// flats by wheel within the group.
+    fn group(&self, path: &str, train: Option<&Train>) -> Result<VehicleSettings> {
+        let vehicle = self.vehicle(path)?;
         let mut settings = match train {
             Some(train) => {
                 if self.count != 1 || self.spacing.is_some() {
                     return Err(invalid(
-                        "vehicle.count",
+                        &format!("{path}.count"),
                         self.count,
                         "with a train in [load] there is one vehicle per axle: leave count and spacing out",
                     ));
                 }
-                VehicleSettings::populate(&vehicle, train)?
+                VehicleSettings::populate(&vehicle, train).map_err(|e| in_group(path, e.into()))?
             }
             None => {
                 let count = self.count;
-                track::vehicle::consist::check_count(count)?;
+                track::vehicle::consist::check_count(count).map_err(|e| in_group(path, e.into()))?;
                 let spacing = match (count, self.spacing) {
                     (1, s) => s.unwrap_or(0.0),
                     (_, Some(s)) if s.is_finite() && s > 0.0 => s,
                     (_, s) => {
                         let allowed = "must be finite and > 0 (m) with more than one vehicle";
-                        return Err(invalid("vehicle.spacing", s.map_or("missing".into(), |s| s.to_string()), allowed));
+                        let value = s.map_or("missing".into(), |s| s.to_string());
+                        return Err(invalid(&format!("{path}.spacing"), value, allowed));
                     }
                 };
                 let vehicles = (0..count).map(|i| PlacedVehicle::new(vehicle.clone(), i as f64 * spacing)).collect();
                 VehicleSettings { vehicles, ..VehicleSettings::default() }
             }
         };
-        settings.contact = self.contact()?;
-        settings.profile = profile;
+        let contact = self.contact(path)?;
+        settings.contact = contact;
+        settings.vehicles.iter_mut().for_each(|p| p.contact = Some(contact));
         for f in &self.flats {
             let flat = WheelFlat { length: f.length, diameter: f.diameter, first_contact: f.first_contact };
             settings.flats.push(FlatWheel { wheel: f.wheel, flat });
         }
-        settings.validate()?;
         Ok(settings)
+    }
+}
+
+/// An error of the library's vehicle checks, which name their fields `vehicle.…`, named under the group's `path`.
+pub(crate) fn in_group(path: &str, error: StudyError) -> StudyError {
+    let rename = |field: &str| match field.strip_prefix("vehicle.") {
+        Some(rest) if path != "vehicle" => format!("{path}.{rest}"),
+        _ => field.to_string(),
+    };
+    match error {
+        StudyError::Stepping(nscd::NscdError::InvalidField { field, value, allowed }) => {
+            StudyError::InvalidField { path: rename(field), value: value.to_string(), allowed }
+        }
+        StudyError::InvalidField { path: field, value, allowed } => {
+            StudyError::InvalidField { path: rename(&field), value, allowed }
+        }
+        other => other,
     }
 }
