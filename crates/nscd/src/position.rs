@@ -32,7 +32,7 @@ pub const PROJECTION_TOLERANCE: f64 = 1e-12;
 /// whatever its velocity. A nanometre, physically nothing and a thousand times the projection's tolerance.
 pub const CLOSED_GAP: f64 = 1e-9;
 
-/// Most Gauss–Seidel sweeps of one projection; a single contact needs one.
+/// Most Gauss–Seidel sweeps of one projection; a single contact is solved by the first and confirmed by the second.
 pub const PROJECTION_SWEEPS: usize = 1_000;
 
 /// How a step's projection ended.

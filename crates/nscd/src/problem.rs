@@ -323,8 +323,9 @@ impl InteractionProblem {
     /// at landings; a step without force loses what the spring held (δ_{k+1} ≤ 0). δ_k is the penetration the step
     /// started from (−g_k of the update phase). A rigid contact stores nothing: −p·Ū with Ū = θU_{k+1} + (1−θ)U_k =
     /// H v_θ + b_r, both velocities taken with the step's row (`v_theta` = v_θ) — for an impact from U⁻ to U⁺ = −eU⁻,
-    /// ½m_eff(1 − e²)U⁻² at θ = ½; while it presses, O(h) relative accelerations a step, which sum to no more than
-    /// O(h) over a run. None for friction and fixed interactions.
+    /// ½m_eff(1 − e²)U⁻² at θ = ½; while it presses on a moving rail, the drift's O(h) share, which the projection's
+    /// energy change, booked with it in [`crate::EnergyLedger::contact_loss`], cancels. None for friction and fixed
+    /// interactions.
     pub fn moving_contact_loss(&self, j: usize, p: f64, v_theta: &[f64]) -> Option<f64> {
         let h = self.integration.step;
         let state = self.moving_states.get(j.checked_sub(self.fixed)?)?;

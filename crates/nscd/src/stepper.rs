@@ -138,6 +138,8 @@ pub struct MoreauJean {
     pub energy: EnergyLedger,
     /// The last step's solver report.
     pub last_report: StepReport,
+    /// The last step's position projection (0 sweeps: none was needed or no contact is rigid).
+    pub last_projection: ProjectionReport,
     v_prev: Vec<f64>,
     /// K, M, C stored by diagonals for the per-step products (see [`BandDiagonals`]).
     stiffness: BandDiagonals,
@@ -212,6 +214,7 @@ impl MoreauJean {
             steps: 0,
             energy: EnergyLedger::default(),
             last_report: StepReport::default(),
+            last_projection: ProjectionReport::default(),
             v_prev: vec![0.0; n],
             stiffness: BandDiagonals::new(&system.stiffness),
             mass: BandDiagonals::new(&system.mass),
@@ -377,6 +380,7 @@ impl MoreauJean {
         self.time = t1;
         self.steps += 1;
         self.last_report = report;
+        self.last_projection = projection;
         Ok(report)
     }
 
