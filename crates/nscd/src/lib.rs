@@ -14,6 +14,7 @@
 //! - [`solver`]: projected Gauss–Seidel, a banded interior point, Clarabel (feature `clarabel`).
 //! - [`stepper`]: [`MoreauJean`], one step at a time, with its [`EnergyLedger`].
 
+mod dof_responses;
 pub mod error;
 pub mod forcing;
 pub mod hertz;

@@ -18,6 +18,7 @@
 //! velocity b_r (U_{k+1} = H v_{k+1} + b_r) set by the update phase each step, its response G = M̂⁻¹Hᵀ and W_jj with
 //! them; b_r joins its drift.
 
+use crate::dof_responses::DofResponses;
 use crate::hertz::{HertzStep, NEWTON_TOLERANCE, PENETRATION_FLOOR};
 use crate::kernels::axpy;
 use crate::moving::{Interactions, MovingInteraction, MovingState};
@@ -130,9 +131,14 @@ pub struct InteractionProblem {
     fixed: usize,
     /// The moving interactions, at indices fixed.. of `interactions`.
     moving: Vec<Box<dyn MovingInteraction>>,
-    /// Their states and dense responses G_j = M̂⁻¹H_jᵀ (n each, refreshed every step).
+    /// Their states and dense responses G_j = M̂⁻¹H_jᵀ (n each, refreshed every step; zero outside
+    /// `moving_support`).
     moving_states: Vec<MovingState>,
     moving_responses: Vec<f64>,
+    /// The DOF range [lo, hi) each moving response was last written over.
+    moving_support: Vec<(usize, usize)>,
+    /// The single-DOF responses the moving responses are assembled from.
+    dof_responses: DofResponses,
     /// The Hertz contacts' step states, by interaction (None for every other law).
     hertz: Vec<Option<HertzStep>>,
     /// The position projection of the rigid moving contacts.
@@ -210,6 +216,8 @@ impl InteractionProblem {
             fixed,
             moving_states: vec![MovingState::default(); moving.len()],
             moving_responses: vec![0.0; moving.len() * n],
+            moving_support: vec![(0, 0); moving.len()],
+            dof_responses: DofResponses::new(n),
             moving,
             hertz,
             projection,
@@ -225,14 +233,23 @@ impl InteractionProblem {
             return;
         }
         let n = self.m_hat.order();
+        if !self.moving.is_empty() {
+            self.dof_responses.begin_update();
+        }
         for (k, interaction) in self.moving.iter_mut().enumerate() {
             let j = self.fixed + k;
             let row = self.interactions.row_mut(j);
             let state = interaction.update(time, self.integration.step, q, v, row);
+            // G = Σ_i H_i r_i from the kept single-DOF responses, over the range the last G left non-zero.
             let column = &mut self.moving_responses[k * n..(k + 1) * n];
-            column.iter_mut().for_each(|x| *x = 0.0);
-            row.add_transpose(1.0, column);
-            self.factor.solve_in_place(column);
+            let (lo, hi) = self.moving_support[k];
+            column[lo..hi].iter_mut().for_each(|x| *x = 0.0);
+            let mut support = (n, 0);
+            for (dof, value) in row.entries() {
+                let (a, b) = self.dof_responses.add(dof, value, &self.factor, column);
+                support = (support.0.min(a), support.1.max(b));
+            }
+            self.moving_support[k] = if support.0 < support.1 { support } else { (0, 0) };
             self.delassus_diagonal[j] = row.dot(column) + self.law.compliance[j];
             self.interactions.set_position(j, state.position);
             self.moving_states[k] = state;
@@ -401,11 +418,12 @@ impl InteractionProblem {
         }
     }
 
-    /// v += Σ_j p_j G_j over the moving interactions.
+    /// v += Σ_j p_j G_j over the moving interactions, each over its support.
     fn add_moving_responses(&self, p: &[f64], v: &mut [f64]) {
         for j in self.fixed..p.len() {
             if p[j] != 0.0 {
-                axpy(p[j], self.moving_response(j), v);
+                let (lo, hi) = self.moving_support[j - self.fixed];
+                axpy(p[j], &self.moving_response(j)[lo..hi], &mut v[lo..hi]);
             }
         }
     }
