@@ -107,7 +107,27 @@ pub fn warnings(scenario: &Scenario, case: &Case) -> Vec<Warning> {
     }
     out.extend(deck_resolution(case));
     out.extend(rigid_contact_damping(case));
+    out.extend(articulated_cars(scenario, case));
     out
+}
+
+/// Rail cars on an HSLM train's axles: the HSLM coaches are articulated (neighbours share a bogie), which cars of
+/// two bogies of their own, four axles each, are not.
+fn articulated_cars(scenario: &Scenario, case: &Case) -> Vec<Warning> {
+    let cars = scenario.vehicle.as_ref().is_some_and(|v| v.kind == crate::scenario::vehicle::VehicleKind::RailCar);
+    match &case.settings.moving.train {
+        Some(train) if cars && train.name.starts_with("hslm") => vec![Warning {
+            field: "vehicle.kind".into(),
+            value: "rail-car".into(),
+            message: format!(
+                "{} is articulated (its coaches share bogies): rail cars on its axles read every four consecutive \
+                 axles as an independent car with two bogies of its own — a different train; quarter cars or \
+                 moving masses keep its axle layout",
+                train.name
+            ),
+        }],
+        _ => Vec::new(),
+    }
 }
 
 /// θ from which a rigid wheel–rail contact's force keeps still: at θ = ½ the trapezoidal rule leaves the

@@ -119,10 +119,31 @@ fn rail_cars_run_from_a_scenario() {
     assert_eq!(wheels[7]["offset"].as_f64().unwrap(), 45.0);
     assert!((wheels[3]["static_force"].as_f64().unwrap() - 61.68e3).abs() < 10.0);
     assert_eq!(v["vehicles"]["bodies"].as_array().unwrap().len(), 2);
+    // HSLM-A1's 50 axles are no whole number of four-axle cars; HSLM-A2's 48 are, with a warning (articulated).
     let on_train = scenario(&folder, "train.toml", "[load]\ntrain = \"hslm-a1\"\n[vehicle]\nkind = \"rail-car\"\n");
     let out = frictrack(&["run", &on_train]);
     assert_eq!(out.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("one-wheel vehicles"));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("four axles each"));
+    let a2 = scenario(&folder, "a2.toml", "[load]\ntrain = \"hslm-a2\"\n[vehicle]\nkind = \"rail-car\"\n");
+    let out = frictrack(&["check", &a2]);
+    assert!(String::from_utf8_lossy(&out.stderr).contains("articulated"), "{}", String::from_utf8_lossy(&out.stderr));
+    // A train file of two cars: each car built from its four axles.
+    std::fs::write(
+        folder.join("cars.csv"),
+        "offset,force\n0,1e5\n2.5,1e5\n15,1e5\n17.5,1e5\n22,1.5e5\n25,1.5e5\n40,1.5e5\n43,1.5e5\n",
+    )
+    .unwrap();
+    let csv = folder.join("cars.csv");
+    let text = format!(
+        "[load]\nspeed = 40.0\ntrain = {:?}\n[vehicle]\nkind = \"rail-car\"\n[integration]\nload_advance = 0.04\n",
+        csv.to_str().unwrap()
+    );
+    let from_file = scenario(&folder, "from-file.toml", &text);
+    let v = json(&frictrack(&["run", &from_file, "--format", "json"]));
+    let wheels = v["vehicles"]["wheels"].as_array().unwrap();
+    let offsets: Vec<f64> = wheels.iter().map(|w| w["offset"].as_f64().unwrap()).collect();
+    assert_eq!(offsets, [0.0, 2.5, 15.0, 17.5, 22.0, 25.0, 40.0, 43.0]);
+    assert!((wheels[7]["static_force"].as_f64().unwrap() / 1.5e5 - 1.0).abs() < 1e-12);
     std::fs::remove_dir_all(&folder).unwrap();
 }
 

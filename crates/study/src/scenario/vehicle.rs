@@ -379,7 +379,13 @@ impl VehicleSection {
                         "with a train in [load] there is one vehicle per axle: leave count and spacing out",
                     ));
                 }
-                VehicleSettings::populate(&vehicle, train).map_err(|e| in_group(path, e.into()))?
+                let populated = match self.kind {
+                    VehicleKind::RailCar => {
+                        VehicleSettings::populate_cars(&self.rail_car.unwrap_or_default().car(), train)
+                    }
+                    _ => VehicleSettings::populate(&vehicle, train),
+                };
+                populated.map_err(|e| in_group(path, e.into()))?
             }
             None => {
                 let count = self.count;

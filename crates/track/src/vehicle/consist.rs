@@ -3,6 +3,7 @@
 //! train's axle layout can be populated with copies of one vehicle scaled to each axle's load.
 
 use super::Vehicle;
+use super::rail_car::RailCar;
 use crate::error::{Result, invalid};
 use fem_beam::Train;
 use irregularity::{Profile, WheelFlat, WheelTrack};
@@ -107,8 +108,8 @@ impl VehicleSettings {
             return Err(invalid(
                 "vehicle.train",
                 template.wheels.len() as f64,
-                "a train's axles take one-wheel vehicles (moving mass, quarter car): run cars with several wheels in \
-                 a row instead",
+                "a train's axles take one-wheel vehicles (moving mass, quarter car), or rail cars four axles each \
+                 (populate_cars); run other vehicles with several wheels in a row instead",
             ));
         }
         if !train.patches.is_empty() {
@@ -137,6 +138,29 @@ impl VehicleSettings {
                 PlacedVehicle::new(vehicle, axle.offset)
             })
             .collect();
+        Ok(Self { vehicles, ..Self::default() })
+    }
+
+    /// A rail car on every four consecutive axles of `train` ([`RailCar::on_axles`]: its geometry from the axles,
+    /// `template`'s masses and suspension scaled to their loads), each at its first axle's offset. Every four
+    /// consecutive axles are read as one car of two two-axle bogies, which an articulated train (HSLM: coaches
+    /// share bogies) is not. Patches have no vehicle and are refused.
+    pub fn populate_cars(template: &RailCar, train: &Train) -> Result<Self> {
+        template.validate()?;
+        if !train.patches.is_empty() {
+            return Err(invalid("vehicle.train", train.patches.len() as f64, "load patches cannot carry vehicles"));
+        }
+        let n = train.axles.len();
+        if n == 0 || !n.is_multiple_of(4) {
+            let allowed = "rail cars take four axles each: the train's axles must be a whole number of cars";
+            return Err(invalid("vehicle.train", n as f64, allowed));
+        }
+        let first = train.axles[0].offset;
+        let mut vehicles = Vec::with_capacity(n / 4);
+        for (car, axles) in train.axles.chunks_exact(4).enumerate() {
+            let vehicle = template.on_axles(axles, car)?.vehicle()?;
+            vehicles.push(PlacedVehicle::new(vehicle, axles[0].offset - first));
+        }
         Ok(Self { vehicles, ..Self::default() })
     }
 

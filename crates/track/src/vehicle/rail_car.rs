@@ -18,6 +18,7 @@
 
 use super::{GRAVITY, Vehicle, Wheel};
 use crate::error::{Result, invalid};
+use fem_beam::Axle;
 
 /// A 2-D rail car's parameters, for one rail.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -107,6 +108,52 @@ impl RailCar {
     /// The total weight (N).
     pub fn weight(&self) -> f64 {
         (self.body_mass + 2.0 * self.bogie_mass + 4.0 * self.wheelset_mass) * GRAVITY
+    }
+
+    /// This car fitted to four consecutive axles of a train (offsets a₀ < a₁ < a₂ < a₃ in m, forces in N): l_b =
+    /// (a₁ − a₀)/2, l_c = (a₂ − a₀)/2, and every mass, inertia, stiffness and damping scaled by ΣP/W, which keeps the
+    /// suspension's frequencies and damping ratios and puts ΣP/4 on each wheel. The two bogies' wheelbases must agree
+    /// (a₃ − a₂ = a₁ − a₀ within 1 mm) and the four forces within 0.1 % of their mean: a symmetric car carries equal
+    /// wheel loads. `car` names the car in errors (0-based).
+    pub fn on_axles(&self, axles: &[Axle], car: usize) -> Result<Self> {
+        let [a0, a1, a2, a3] = [0, 1, 2, 3].map(|i| axles[i].offset);
+        let (front, rear) = (a1 - a0, a3 - a2);
+        if (front - rear).abs() > 1e-3 {
+            let allowed = format!(
+                "car {car} (axles {}…{}): its bogies' wheelbases differ ({front} m, {rear} m); a rail car has two \
+                 equal two-axle bogies — populate articulated or irregular layouts with one-wheel vehicles",
+                4 * car,
+                4 * car + 3
+            );
+            return Err(invalid("vehicle.train", rear, allowed));
+        }
+        let total: f64 = axles[..4].iter().map(|a| a.force).sum();
+        let mean = total / 4.0;
+        if let Some(a) = axles[..4].iter().find(|a| (a.force - mean).abs() > 1e-3 * mean.abs()) {
+            let allowed = format!(
+                "car {car} (axles {}…{}): axle forces must agree within 0.1 % of their mean {mean} N (a symmetric car \
+                 carries equal wheel loads)",
+                4 * car,
+                4 * car + 3
+            );
+            return Err(invalid("vehicle.train", a.force, allowed));
+        }
+        let s = total / self.weight();
+        let fitted = Self {
+            body_mass: self.body_mass * s,
+            body_pitch_inertia: self.body_pitch_inertia * s,
+            bogie_mass: self.bogie_mass * s,
+            bogie_pitch_inertia: self.bogie_pitch_inertia * s,
+            wheelset_mass: self.wheelset_mass * s,
+            primary_stiffness: self.primary_stiffness * s,
+            primary_damping: self.primary_damping * s,
+            secondary_stiffness: self.secondary_stiffness * s,
+            secondary_damping: self.secondary_damping * s,
+            bogie_half_distance: (a2 - a0) / 2.0,
+            axle_half_distance: front / 2.0,
+        };
+        fitted.validate()?;
+        Ok(fitted)
     }
 
     /// The vehicle: DOFs in the banded order of the module note, the body's bounce reported; wheels at offsets 0,
