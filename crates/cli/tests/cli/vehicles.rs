@@ -80,7 +80,7 @@ fn bad_vehicles_exit_2_naming_the_path() {
         ),
         ("coarse.toml", "[load]\nspeed = 20.0\n[vehicle]\n", "integration.load_advance"),
         ("spacing.toml", "[vehicle]\ncount = 3\n", "vehicle.spacing"),
-        ("flat.toml", "[vehicle]\n[[vehicle.flats]]\nwheel = 4\nlength = 0.05\n", "vehicle.flats.wheel"),
+        ("flat.toml", "[vehicle]\n[[vehicle.flats]]\nwheel = 4\nlength = 0.05\n", "vehicle.flats[0].wheel"),
         ("solver.toml", "[vehicle]\n[integration]\nsolver = \"interior-point\"\n", "integration.solver"),
         ("kind.toml", "[vehicle]\nkind = \"bicycle\"\n", "vehicle.kind"),
         (
@@ -224,6 +224,11 @@ fn groups_of_vehicles_each_with_its_contact() {
             "restitution.toml",
             format!("{base}[[vehicle.behind]]\noffset = 5.0\ncontact = \"rigid\"\nrestitution = 2.0\n"),
             "vehicle.behind[0].restitution",
+        ),
+        (
+            "flat.toml",
+            format!("{base}[[vehicle.behind]]\noffset = 30.0\n[[vehicle.behind.flats]]\nwheel = 1\nlength = 0.05\n"),
+            "vehicle.behind[0].flats[0].wheel",
         ),
         (
             "nested.toml",

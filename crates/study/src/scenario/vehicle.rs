@@ -224,7 +224,8 @@ pub struct WheelSection {
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct FlatSection {
-    /// Which wheel of the run, counted over the vehicles in order (0-based). Default 0.
+    /// Which wheel of its group (`[vehicle]` or a `[[vehicle.behind]]`), counted over the group's vehicles in order
+    /// (0-based). Default 0.
     #[serde(default)]
     pub wheel: usize,
     /// Flat length ℓ (m).
@@ -406,7 +407,12 @@ impl VehicleSection {
         let contact = self.contact(path)?;
         settings.contact = contact;
         settings.vehicles.iter_mut().for_each(|p| p.contact = Some(contact));
-        for f in &self.flats {
+        let wheels = settings.wheels().count();
+        for (i, f) in self.flats.iter().enumerate() {
+            if f.wheel >= wheels {
+                let allowed = format!("must be a wheel index of this group, < {wheels}");
+                return Err(invalid(&format!("{path}.flats[{i}].wheel"), f.wheel, allowed));
+            }
             let flat = WheelFlat { length: f.length, diameter: f.diameter, first_contact: f.first_contact };
             settings.flats.push(FlatWheel { wheel: f.wheel, flat });
         }
