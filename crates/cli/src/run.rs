@@ -378,9 +378,10 @@ fn print_text(r: &RunReport) {
 
 /// The vehicles' lines of the text report.
 fn print_vehicles(v: &study::vehicle_output::VehicleReport) {
+    let count = v.wheels.len();
     println!(
-        "  vehicles: {} wheels, {} contact; wheel force {:.1} … {:.1} kN, largest ΔQ/Q₀ {:.3}",
-        v.wheels.len(),
+        "  vehicles: {count} wheel{}, {} contact; wheel force {:.1} … {:.1} kN, largest ΔQ/Q₀ {:.3}",
+        if count == 1 { "" } else { "s" },
         v.contact,
         v.min_wheel_force / 1e3,
         v.max_wheel_force / 1e3,
@@ -389,7 +390,7 @@ fn print_vehicles(v: &study::vehicle_output::VehicleReport) {
     for (i, w) in v.wheels.iter().enumerate().take(8) {
         println!(
             "    wheel {:>2} (vehicle {}, {:.2} m behind): Q₀ {:.1} kN, Q {:.1} … {:.1} kN, rail under it {:.3} mm, \
-             {:.1} kN·m; {} losses of contact",
+             {:.1} kN·m; {} {} of contact",
             i + 1,
             w.vehicle + 1,
             w.offset,
@@ -398,7 +399,8 @@ fn print_vehicles(v: &study::vehicle_output::VehicleReport) {
             w.max_force / 1e3,
             w.max_rail_deflection * 1e3,
             w.max_moment / 1e3,
-            w.losses_of_contact
+            w.losses_of_contact,
+            if w.losses_of_contact == 1 { "loss" } else { "losses" }
         );
     }
     if v.wheels.len() > 8 {

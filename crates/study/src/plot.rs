@@ -279,11 +279,13 @@ fn draw<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, spec: &PlotSpec) -> s
         .bold_line_style(RGBColor(205, 205, 205))
         .draw()
         .map_err(|e| err(&e))?;
+    // The plot's own width in pixels (inside the axes' labels and margins).
+    let columns = chart.plotting_area().dim_in_pixel().0 as usize;
     for s in &spec.series {
-        // More points than pixel columns: a 1 px stroke. plotters' bitmap backend widens a thicker stroke segment by
-        // segment, and on dense zig-zags (a friction force chattering every step) the widened segments shoot out of
-        // the frame.
-        let width = if s.points.len() > (SIZE.0 - LEGEND_WIDTH) as usize { 1 } else { 2 };
+        // Segments of 2 px or less: a 1 px stroke. plotters' bitmap backend widens a thicker stroke segment by
+        // segment, and on dense zig-zags (a friction force chattering every step, a wheel force ringing after a
+        // dipped joint: 900 points over 750 px) the widened segments shoot out of the frame.
+        let width = if 2 * s.points.len() > columns { 1 } else { 2 };
         let style = spec.palette.color(s.color).stroke_width(width);
         let line: Vec<(f64, f64)> =
             s.points.iter().map(|&(x, y)| (tx(x), ty(y))).filter(|(x, y)| x.is_finite() && y.is_finite()).collect();
