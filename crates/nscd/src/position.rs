@@ -88,14 +88,14 @@ impl PositionProjection {
         !self.rigid.is_empty()
     }
 
-    /// Project: from q̃_{k+1} = `q` at `time` = t_{k+1}, the step's impulses of the moving interactions `p` and their
-    /// responses `response(k)` = G_k, write Δq = Σ μ_j G_j into `dq` and report; when nothing is to move (0 sweeps)
-    /// `dq` is left as it was.
+    /// Project: from q̃_{k+1} = `q` at `time` = t_{k+1}, which moving interactions pressed in the step (`pressed(k)`)
+    /// and their responses `response(k)` = G_k, write Δq = Σ μ_j G_j into `dq` and report; when nothing is to move
+    /// (0 sweeps) `dq` is left as it was.
     pub(crate) fn project<'a>(
         &mut self,
         moving: &[Box<dyn MovingInteraction>],
         (time, q): (f64, &[f64]),
-        p: &[f64],
+        pressed: impl Fn(usize) -> bool,
         response: impl Fn(usize) -> &'a [f64],
         dq: &mut [f64],
     ) -> ProjectionReport {
@@ -104,7 +104,7 @@ impl PositionProjection {
         for (i, &k) in self.rigid.iter().enumerate() {
             let gap = moving[k].gap(time, q, &mut self.rows[i]);
             self.end_gaps[i] = gap;
-            self.closed[i] = p[k] > 0.0;
+            self.closed[i] = pressed(k);
             needed |= gap < 0.0 || (self.closed[i] && gap != 0.0);
         }
         if !needed {

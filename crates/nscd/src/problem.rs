@@ -363,13 +363,26 @@ impl InteractionProblem {
         self.projection.is_needed()
     }
 
-    /// The position projection of the rigid moving contacts ([`crate::position`]) after a step with impulses `p`:
-    /// from q̃_{k+1} = `q` at t_{k+1} = `time`, write the correction Δq into `dq` (n) and report (`dq` is
-    /// untouched when the report has 0 sweeps: nothing to move).
-    pub fn project_positions(&mut self, time: f64, q: &[f64], p: &[f64], dq: &mut [f64]) -> ProjectionReport {
+    /// The position projection of the rigid moving contacts ([`crate::position`]) after a step with impulses `p` and
+    /// velocities `v` = v_{k+1}: from q̃_{k+1} = `q` at t_{k+1} = `time`, write the correction Δq into `dq` (n) and
+    /// report (`dq` is untouched when the report has 0 sweeps: nothing to move). A contact pressed in the step when
+    /// its impulse outweighs its law velocity, p·(W_jj + d_j) > r_j: exactly p > 0 for an exact solution, while an
+    /// interior point's small positive p beside a separating velocity does not count.
+    pub fn project_positions(
+        &mut self,
+        time: f64,
+        (q, v): (&[f64], &[f64]),
+        p: &[f64],
+        dq: &mut [f64],
+    ) -> ProjectionReport {
         let (n, responses) = (self.m_hat.order(), &self.moving_responses);
         let response = |k: usize| &responses[k * n..(k + 1) * n];
-        self.projection.project(&self.moving, (time, q), &p[self.fixed..], response, dq)
+        let (rows, law, diagonal, fixed) = (self.interactions.rows(), &self.law, &self.delassus_diagonal, self.fixed);
+        let pressed = |k: usize| {
+            let j = fixed + k;
+            p[j] > 0.0 && p[j] * diagonal[j] > law.law_velocity(j, rows[j].dot(v), p[j])
+        };
+        self.projection.project(&self.moving, (time, q), pressed, response, dq)
     }
 
     /// Whether some interactions move (their rows change every step).

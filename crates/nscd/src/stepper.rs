@@ -356,7 +356,7 @@ impl MoreauJean {
             *q += h * *w;
         }
         let projection = if self.problem.has_projection() {
-            let projection = self.problem.project_positions(t1, &self.q, &self.p, &mut self.dq);
+            let projection = self.problem.project_positions(t1, (&self.q, &self.v), &self.p, &mut self.dq);
             if !projection.converged() {
                 return Err(NscdError::ProjectionUnconverged {
                     step: self.steps + 1,
