@@ -3,8 +3,9 @@
 //!
 //! Sparse lifted form, so that W is never formed: unknowns x = (y, p) with y = M̂⁻¹Hᵀp the velocity correction,
 //! min ½ yᵀM̂y + ½pᵀDp + cᵀp (= ½pᵀ(W + D)p + cᵀp) subject to M̂y − Hᵀp = 0 and p_j = lo_j where lo_j = hi_j (zero
-//! cone), p_j ≤ hi_j where hi_j is finite and −p_j ≤ −lo_j where lo_j is finite (non-negative cone). Only the upper
-//! triangle of P = blkdiag(M̂, D) is passed (Clarabel ignores the rest). The set-up is rebuilt when the pattern of
+//! cone), p_j ≤ hi_j where hi_j is finite and −p_j ≤ −lo_j where lo_j is finite (non-negative cone; a bilateral
+//! spring has neither). Only the upper triangle of P = blkdiag(M̂, D) is passed (Clarabel ignores the rest), D with
+//! the step's compliances at each set-up (a Hertz contact's changes with its linearisation). The set-up is rebuilt when the pattern of
 //! bounds changes (a contact entering or leaving the index set; never for friction alone) and every step when
 //! interactions move (their rows are in A); otherwise each step only replaces q and b.
 
@@ -22,8 +23,10 @@ enum Bounds {
     Fixed,
     /// lo and hi finite (a Coulomb box).
     Box,
-    /// Only lo finite.
+    /// Only lo finite (a unilateral contact).
     Lower,
+    /// Neither finite (a bilateral spring): no inequality.
+    Free,
 }
 
 impl Bounds {
@@ -32,8 +35,10 @@ impl Bounds {
             Bounds::Fixed
         } else if upper.is_finite() {
             Bounds::Box
-        } else {
+        } else if lower.is_finite() {
             Bounds::Lower
+        } else {
+            Bounds::Free
         }
     }
 }
@@ -82,14 +87,6 @@ impl ClarabelQp {
                     aj.push(j);
                     av.push(value);
                 }
-            }
-        }
-        for k in 0..m {
-            let d = problem.law.compliance[k];
-            if d != 0.0 {
-                pi.push(n + k);
-                pj.push(n + k);
-                pv.push(d);
             }
         }
         Ok(Self {
@@ -141,7 +138,7 @@ impl ClarabelQp {
         self.b.extend(fixed.iter().map(|&j| law.lower[j]));
         let boxed: Vec<usize> = (0..m).filter(|&j| self.pattern[j] == Bounds::Box).collect();
         self.b.extend(boxed.iter().map(|&j| law.upper[j]));
-        let lower: Vec<usize> = (0..m).filter(|&j| self.pattern[j] != Bounds::Fixed).collect();
+        let lower: Vec<usize> = (0..m).filter(|&j| matches!(self.pattern[j], Bounds::Box | Bounds::Lower)).collect();
         self.b.extend(lower.iter().map(|&j| -law.lower[j]));
         if unchanged {
             let solver = self.solver.as_mut().expect("checked");
@@ -166,7 +163,13 @@ impl ClarabelQp {
             av.push(sign);
             row += 1;
         }
-        let (pi, pj, pv) = self.p_triplets.clone();
+        // P = blkdiag(M̂, D) with the step's compliances: a Hertz contact's changes with its linearisation.
+        let (mut pi, mut pj, mut pv) = self.p_triplets.clone();
+        for (k, &d) in law.compliance.iter().enumerate().filter(|(_, d)| **d != 0.0) {
+            pi.push(n + k);
+            pj.push(n + k);
+            pv.push(d);
+        }
         let p_matrix = CscMatrix::new_from_triplets(n + m, n + m, pi, pj, pv);
         let a_matrix = CscMatrix::new_from_triplets(row, n + m, ai, aj, av);
         let cones =
