@@ -12,13 +12,14 @@
 //! - [`moving`]: interactions whose rows are rebuilt every step (a wheel).
 //! - [`position`]: the position projection of rigid moving contacts after each step.
 //! - [`solver`]: projected Gauss–Seidel, a banded interior point, Clarabel (feature `clarabel`).
-//! - [`stepper`]: [`MoreauJean`], one step at a time, with its [`EnergyLedger`].
+//! - [`stepper`]: [`MoreauJean`], one step at a time, with its [`EnergyLedger`] ([`ledger`]).
 
 mod dof_responses;
 pub mod error;
 pub mod forcing;
 pub mod hertz;
 mod kernels;
+pub mod ledger;
 pub mod moving;
 pub mod position;
 pub mod problem;

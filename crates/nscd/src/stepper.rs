@@ -12,6 +12,8 @@
 //! the exact identity E_{k+1} − E_k = h v_θᵀF_θ − h v_θᵀC v_θ + U_θᵀp − (θ − ½)(‖Δv‖²_M + ‖Δq‖²_K), accumulated
 //! term by term in [`EnergyLedger`]; its residual is at round-off level whatever the solver's tolerance.
 
+pub use crate::ledger::EnergyLedger;
+
 use crate::error::{NscdError, Result};
 use crate::forcing::Forcing;
 use crate::hertz::NEWTON_ITERATIONS;
@@ -22,66 +24,6 @@ use crate::solver::{InteractionProblem, InteractionSolver, SolverKind, SolverSet
 use crate::system::LinearSystem;
 use banded::{BandDiagonals, SymmetricBanded};
 use friction::{InteractionKind, InteractionSet, Law};
-
-/// Cumulative energy terms of a run (J).
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct EnergyLedger {
-    /// Energy E₀ at the start.
-    pub initial: f64,
-    /// Energy E = ½vᵀMv + ½qᵀKq now.
-    pub current: f64,
-    /// Kinetic part of `current`.
-    pub kinetic: f64,
-    /// Strain part of `current` (bending + foundation).
-    pub strain: f64,
-    /// Σ h v_θᵀF_θ: work of the external load.
-    pub load_work: f64,
-    /// Σ h v_θᵀC v_θ ≥ 0: dissipated by the foundation dashpots.
-    pub viscous_dissipation: f64,
-    /// Σ U_θᵀp over the friction interactions: work of the friction impulses (≤ 0 for θ = 1; report as is
-    /// otherwise).
-    pub friction_work: f64,
-    /// Σ U_θᵀp over the contacts (rigid or compliant): the work of the contact impulses, which a compliant contact
-    /// partly stores in its spring ([`EnergyLedger::spring_energy`]).
-    pub contact_work: f64,
-    /// Σ U_θᵀp over the unilateral supports of the structure.
-    pub support_work: f64,
-    /// ½k_c⟨δ⟩₊² summed over the compliant interactions now (J): not part of `current`, whose balance the impulses'
-    /// work closes; reported so that the stops' own loss, −(contact + support work) − Δspring energy, can be told.
-    pub spring_energy: f64,
-    /// Σ over the moving contacts (wheels) of what each lost in a step (J):
-    /// [`crate::InteractionProblem::moving_contact_loss`] — landing impacts and the implicit spring — less the
-    /// rigid contacts' [`EnergyLedger::projection_work`]. Apart from
-    /// `contact_work`, which also carries the work a wheel's rolling along a moving rail does (its rheonomic part).
-    pub contact_loss: f64,
-    /// Σ over the steps of the strain energy the position projection of rigid moving contacts changed
-    /// (J, either sign; [`crate::position`]): ½(q + Δq)ᵀK(q + Δq) − ½qᵀKq.
-    pub projection_work: f64,
-    /// Σ (θ − ½)(‖Δv‖²_M + ‖Δq‖²_K) ≥ 0: numerical dissipation of the scheme.
-    pub numerical_dissipation: f64,
-    /// Largest |per-step residual| seen (J).
-    pub max_step_residual: f64,
-}
-
-impl EnergyLedger {
-    /// E_now − E₀ − (load work − viscous + interactions − numerical + projection): zero up to round-off.
-    pub fn residual(&self) -> f64 {
-        self.current
-            - self.initial
-            - (self.load_work - self.viscous_dissipation + self.interaction_work() - self.numerical_dissipation
-                + self.projection_work)
-    }
-
-    /// Work of all interaction impulses (J): friction, contact and supports.
-    pub fn interaction_work(&self) -> f64 {
-        self.friction_work + self.contact_work + self.support_work
-    }
-
-    /// Energy removed by friction and viscous damping (positive).
-    pub fn dissipated(&self) -> f64 {
-        self.viscous_dissipation - self.friction_work
-    }
-}
 
 /// Integration settings.
 #[derive(Debug, Clone, Copy, PartialEq)]
