@@ -1,7 +1,7 @@
 //! A symmetric banded matrix stored by diagonals, for products repeated thousands of times.
 //!
 //! [`SymmetricBanded`] keeps its lower band row by row, the layout the LDLᵀ factorisation wants; a product in that
-//! layout gathers 13 scattered entries per row and does not vectorise. Stored by diagonals — e_k[i] = A_{i,i−k}
+//! layout gathers 13 scattered entries per row and does not vectorise. Stored by diagonals — `e_k[i]` = A_{i,i−k}
 //! (zero for i < k), k = 0…b — the product
 //!
 //! ```text

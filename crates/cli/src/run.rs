@@ -29,12 +29,12 @@ pub struct RunArgs {
     /// Write summary.json, histories.csv, snapshots.csv and figures (PNG + SVG) into this folder.
     #[arg(long, value_name = "DIR")]
     out: Option<PathBuf>,
-    /// Sections (m) whose histories are recorded, e.g. 50,100 (default: the scenario's [output] sections, or
+    /// Sections (m) whose histories are recorded, e.g. 50,100 (default: the scenario's `[output]` sections, or
     /// mid-span with --out).
     #[arg(long, value_delimiter = ',', value_name = "X,…", allow_negative_numbers = true)]
     record: Vec<f64>,
     /// Load positions (m) at which whole-beam snapshots are taken, e.g. 50,100,150 (default: the scenario's
-    /// [output] snapshots, or the load at L/4, L/2, 3L/4).
+    /// `[output]` snapshots, or the first axle at ¼, ½ and ¾ of its travel: L/4, L/2, 3L/4 from rest).
     #[arg(long, value_delimiter = ',', value_name = "X,…", allow_negative_numbers = true)]
     snapshot_at_load: Vec<f64>,
     /// No progress bar.

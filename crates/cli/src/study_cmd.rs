@@ -55,7 +55,7 @@ pub struct StudyOptions {
     /// No progress on standard error.
     #[arg(long)]
     pub quiet: bool,
-    /// Continue after an interruption: take the runs already in OUT/.<study>.journal, run the others.
+    /// Continue after an interruption: take the runs already in OUT/.STUDY.journal, run the others.
     #[arg(long)]
     resume: bool,
 }

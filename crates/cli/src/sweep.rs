@@ -25,7 +25,7 @@ use study::sweep::{critical_speed, write_csv};
 pub struct SweepArgs {
     #[command(flatten)]
     scenario: ScenarioArgs,
-    /// Speeds A:B:STEP (m/s); default: the scenario's [sweep] section (10:300:10 for the reference case).
+    /// Speeds A:B:STEP (m/s); default: the scenario's `[sweep]` section (10:300:10 for the reference case).
     #[arg(long)]
     speeds: Option<String>,
     /// Write the CSV here (atomically) instead of standard output; finished points are kept in OUT.journal.

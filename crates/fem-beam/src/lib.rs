@@ -12,7 +12,7 @@
 //!   below this one.
 //! - [`load`]: consistent point forces/moments and uniform loads; [`section`]: w, θ, M from a DOF vector.
 //! - [`statics`], [`modal`]: K q = f and K φ = ω² M φ.
-//! - [`reference`]: the reference case and closed-form results (β, w₀, M₀, v_cr, ω_n, moving-load steady state).
+//! - [`reference`](mod@reference): the reference case and closed-form results (β, w₀, M₀, v_cr, ω_n, moving-load steady state).
 
 pub mod absorbing;
 pub mod assembly;

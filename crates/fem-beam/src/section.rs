@@ -4,8 +4,8 @@
 //! - [`BeamModel::interpolated_moment`]: EI·w″ of the cubic interpolation. It is linear on each element and
 //!   reads ~1.6 % low under a point load on 1 m elements.
 //! - [`BeamModel::nodal_moments`]: from the element end forces f = K_e q_e + C_e q̇_e + M_e q̈_e − f_e (foundation
-//!   included). With the sagging-positive convention M = EI·w″, the left end moment of an element is −f[1] and the
-//!   right end moment is +f[3]; at an interior node the two adjacent estimates (equal in equilibrium) are averaged.
+//!   included). With the sagging-positive convention M = EI·w″, the left end moment of an element is −`f[1]` and the
+//!   right end moment is +`f[3]`; at an interior node the two adjacent estimates (equal in equilibrium) are averaged.
 //!   Accurate to ~1e-5 against the closed form; [`NodalMoments::at`] interpolates them linearly between nodes.
 
 use crate::assembly::BeamModel;
@@ -85,7 +85,7 @@ impl BeamModel {
 
     /// End forces of element `e`, f = K_e q_e + C_e q̇_e + M_e q̈_e − f_e (N on w, N·m on θ, element DOF order), from
     /// full-DOF vectors already checked by the caller (`motion` optional, `load` the element's applied nodal loads).
-    /// The moment at its left end is −f[1], at its right end +f[3] (sagging-positive, M = EI·w″).
+    /// The moment at its left end is −`f[1]`, at its right end +`f[3]` (sagging-positive, M = EI·w″).
     pub fn element_end_forces(&self, e: usize, q: &[f64], motion: Motion<'_>, load: &ElementVector) -> ElementVector {
         let mut f = hermite::apply(&self.element_stiffness(), &Self::element_dofs(q, e));
         if let Some(v) = motion.velocity {

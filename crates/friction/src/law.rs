@@ -5,7 +5,7 @@
 //! p = lo where r > 0,   p = hi where r < 0,   r = 0 for lo < p < hi,
 //! ```
 //!
-//! i.e. −r ∈ N_[lo, hi](p), the normal cone of the interval. For any ρ > 0 this is the fixed point
+//! i.e. −r ∈ `N_[lo, hi](p)`, the normal cone of the interval. For any ρ > 0 this is the fixed point
 //! p = proj_[lo, hi](p − ρ r), which every solver iterates or measures. Coulomb friction is the box [−a, a] with
 //! r the section velocity (docs/theory.md §4); Signorini contact and the compliant stop are [0, +∞) with a drift and,
 //! for the stop, a compliance (docs/theory.md §9).

@@ -169,7 +169,7 @@ const VIRIDIS: [(u8, u8, u8); 9] = [
     (121, 209, 81),
 ];
 
-/// The sequential colour at `t` ∈ [0, 1] (clamped): linear interpolation between the anchors of [`VIRIDIS`].
+/// The sequential colour at `t` ∈ [0, 1] (clamped): linear interpolation between the anchors of `VIRIDIS`.
 pub fn sequential(t: f64) -> RGBColor {
     let x = t.clamp(0.0, 1.0) * (VIRIDIS.len() - 1) as f64;
     let k = (x.floor() as usize).min(VIRIDIS.len() - 2);

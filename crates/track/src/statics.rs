@@ -21,7 +21,7 @@ pub const MAX_POSITIONS: usize = 1_000_000;
 
 /// The static envelope of `train` with its first axle at 0, `advance`, 2·`advance`, … up to L + its length (m):
 /// K factored once, one banded solve per position. The largest deflection is taken over the nodes in `nodes`
-/// (m, as [`crate::RecordSettings::extremes_nodes`]), or over every node.
+/// (m, as [`crate::simulation::RecordSettings::extremes_nodes`]), or over every node.
 pub fn static_envelope(
     model: &BeamModel,
     train: &Train,

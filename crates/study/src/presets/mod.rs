@@ -3,7 +3,7 @@
 //! human-readable summary lines.
 //! All runs of a study share one rayon pool; results do not depend on the thread count.
 //!
-//! One file per study; [`curves`] holds the families of speed sweeps that three of them share, [`headline`] the
+//! One file per study; `curves` holds the families of speed sweeps that three of them share, `headline` the
 //! two sentences of each study's report section.
 
 mod amplification;

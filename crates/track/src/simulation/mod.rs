@@ -80,7 +80,7 @@ impl<'a> Simulation<'a> {
         Ok(Self { model, interactions, settings })
     }
 
-    /// Initial (q, v) over the free DOFs, per [`RunSettings::initial`].
+    /// Initial (q, v) over the free DOFs, per [`MovingLoadSettings::initial`].
     pub fn initial_state(&self) -> Result<(Vec<f64>, Vec<f64>)> {
         let dofs = self.model.dofs();
         let n = dofs.free_len();

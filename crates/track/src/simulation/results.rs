@@ -113,7 +113,7 @@ pub struct RunResult {
     /// Largest vertical acceleration magnitude over nodes and steps (m/s², the step's mean (v_{k+1} − v_k)/h, at the
     /// end of the step): the deck acceleration of a bridge (docs/theory.md §10).
     pub max_acceleration: Extreme,
-    /// The extremes while the load was inside [`RunSettings::extremes_window`], if one was set.
+    /// The extremes while the load was inside [`crate::simulation::RecordSettings::extremes_window`], if one was set.
     pub window: Option<WindowExtremes>,
     /// Energy terms.
     pub energy: EnergyLedger,
@@ -204,7 +204,7 @@ impl WheelResult {
 }
 
 /// What a run reports of one vehicle's body (its [`crate::vehicle::Vehicle::body`] DOF), while all its wheels are
-/// inside the extremes region ([`crate::RecordSettings::extremes_nodes`]; the whole run without one).
+/// inside the extremes region ([`crate::simulation::RecordSettings::extremes_nodes`]; the whole run without one).
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct BodyResult {
     /// The vehicle's name.
