@@ -123,17 +123,7 @@ impl VehicleSettings {
             .axles
             .iter()
             .map(|axle| {
-                let s = axle.force / weight;
-                let scale = |m: &[f64]| m.iter().map(|x| x * s).collect::<Vec<_>>();
-                let mut vehicle = Vehicle {
-                    name: template.name.clone(),
-                    mass: scale(&template.mass),
-                    damping: scale(&template.damping),
-                    stiffness: scale(&template.stiffness),
-                    weight: scale(&template.weight),
-                    wheels: template.wheels.clone(),
-                    body: template.body,
-                };
+                let mut vehicle = template.scaled(axle.force / weight);
                 vehicle.wheels[0].offset = 0.0;
                 PlacedVehicle::new(vehicle, axle.offset)
             })
@@ -141,8 +131,9 @@ impl VehicleSettings {
         Ok(Self { vehicles, ..Self::default() })
     }
 
-    /// A rail car on every four consecutive axles of `train` ([`RailCar::on_axles`]: its geometry from the axles,
-    /// `template`'s masses and suspension scaled to their loads), each at its first axle's offset. Every four
+    /// A rail car on every four consecutive axles of `train` ([`RailCar::on_axles`]: its geometry from the axles),
+    /// scaled to their loads as [`VehicleSettings::populate`] scales ([`Vehicle::scaled`] by ΣP/W), each at its first
+    /// axle's offset. Every four
     /// consecutive axles are read as one car of two two-axle bogies, which an articulated train (HSLM: coaches
     /// share bogies) is not. Patches have no vehicle and are refused.
     pub fn populate_cars(template: &RailCar, train: &Train) -> Result<Self> {
@@ -158,7 +149,9 @@ impl VehicleSettings {
         let first = train.axles[0].offset;
         let mut vehicles = Vec::with_capacity(n / 4);
         for (car, axles) in train.axles.chunks_exact(4).enumerate() {
-            let vehicle = template.on_axles(axles, car)?.vehicle()?;
+            let fitted = template.on_axles(axles, car)?;
+            let load: f64 = axles.iter().map(|a| a.force).sum();
+            let vehicle = fitted.vehicle()?.scaled(load / fitted.weight());
             vehicles.push(PlacedVehicle::new(vehicle, axles[0].offset - first));
         }
         Ok(Self { vehicles, ..Self::default() })

@@ -51,6 +51,21 @@ pub struct Vehicle {
 }
 
 impl Vehicle {
+    /// This vehicle `factor` times heavier: M, C, K and f_g scaled alike, which keeps every natural frequency and
+    /// damping ratio (the way a template is fitted to an axle's load).
+    pub fn scaled(&self, factor: f64) -> Self {
+        let scale = |m: &[f64]| m.iter().map(|x| x * factor).collect::<Vec<_>>();
+        Self {
+            name: self.name.clone(),
+            mass: scale(&self.mass),
+            damping: scale(&self.damping),
+            stiffness: scale(&self.stiffness),
+            weight: scale(&self.weight),
+            wheels: self.wheels.clone(),
+            body: self.body,
+        }
+    }
+
     /// Number of DOFs.
     pub fn dofs(&self) -> usize {
         self.weight.len()

@@ -110,11 +110,11 @@ impl RailCar {
         (self.body_mass + 2.0 * self.bogie_mass + 4.0 * self.wheelset_mass) * GRAVITY
     }
 
-    /// This car fitted to four consecutive axles of a train (offsets a₀ < a₁ < a₂ < a₃ in m, forces in N): l_b =
-    /// (a₁ − a₀)/2, l_c = (a₂ − a₀)/2, and every mass, inertia, stiffness and damping scaled by ΣP/W, which keeps the
-    /// suspension's frequencies and damping ratios and puts ΣP/4 on each wheel. The two bogies' wheelbases must agree
-    /// (a₃ − a₂ = a₁ − a₀ within 1 mm) and the four forces within 0.1 % of their mean: a symmetric car carries equal
-    /// wheel loads. `car` names the car in errors (0-based).
+    /// This car's geometry fitted to four consecutive axles of a train (offsets a₀ < a₁ < a₂ < a₃ in m, forces in
+    /// N): l_b = (a₁ − a₀)/2, l_c = (a₂ − a₀)/2, masses and suspension as they are (the caller scales the vehicle to
+    /// the axles' load, [`crate::vehicle::Vehicle::scaled`]). The two bogies' wheelbases must agree (a₃ − a₂ = a₁ − a₀
+    /// within 1 mm) and the four forces within 0.1 % of their mean: a symmetric car carries equal wheel loads. `car`
+    /// names the car in errors (0-based).
     pub fn on_axles(&self, axles: &[Axle], car: usize) -> Result<Self> {
         let [a0, a1, a2, a3] = [0, 1, 2, 3].map(|i| axles[i].offset);
         let (front, rear) = (a1 - a0, a3 - a2);
@@ -138,20 +138,7 @@ impl RailCar {
             );
             return Err(invalid("vehicle.train", a.force, allowed));
         }
-        let s = total / self.weight();
-        let fitted = Self {
-            body_mass: self.body_mass * s,
-            body_pitch_inertia: self.body_pitch_inertia * s,
-            bogie_mass: self.bogie_mass * s,
-            bogie_pitch_inertia: self.bogie_pitch_inertia * s,
-            wheelset_mass: self.wheelset_mass * s,
-            primary_stiffness: self.primary_stiffness * s,
-            primary_damping: self.primary_damping * s,
-            secondary_stiffness: self.secondary_stiffness * s,
-            secondary_damping: self.secondary_damping * s,
-            bogie_half_distance: (a2 - a0) / 2.0,
-            axle_half_distance: front / 2.0,
-        };
+        let fitted = Self { bogie_half_distance: (a2 - a0) / 2.0, axle_half_distance: front / 2.0, ..*self };
         fitted.validate()?;
         Ok(fitted)
     }
