@@ -330,7 +330,7 @@ impl MoreauJean {
     /// [`EnergyLedger::projection_work`]: ½(q + Δq)ᵀK(q + Δq) − ½qᵀKq = Δqᵀ(Kq + ½KΔq).
     fn apply_projection(&mut self) {
         self.stiffness.mul_vec(&self.dq, &mut self.work2);
-        let change: f64 = (0..self.dq.len()).map(|i| self.dq[i] * (self.kq[i] + 0.5 * self.work2[i])).sum();
+        let change = dot(&self.dq, &self.kq) + 0.5 * dot(&self.dq, &self.work2);
         for ((q, dq), (kq, kdq)) in self.q.iter_mut().zip(&self.dq).zip(self.kq.iter_mut().zip(&self.work2)) {
             *q += dq;
             *kq += kdq;

@@ -10,7 +10,8 @@
 //!
 //! - Coulomb friction of capacity F: [−hF, hF], d = 0, b = 0 (fixed for the run);
 //! - Signorini contact, gap g = g₀ + H q: in the step's index set when the predicted gap g_k + γhU_k ≤ 0
-//!   (γ = ½): [0, +∞), d = 0, b = e·U_k (Newton impact); otherwise [0, 0];
+//!   (γ = ½), or, moving and projected ([`crate::position`]), when closed: [0, +∞), d = 0, b = e·U_k (Newton
+//!   impact); otherwise [0, 0];
 //! - compliant stop of stiffness k_c, penetration δ = −g: [0, +∞), d = 1/(h²θk_c), b = −(δ_k − h(1−θ)U_k)/(hθ),
 //!   so that a positive impulse is p = h k_c δ_{k+1}.
 //!
@@ -36,7 +37,8 @@ use friction::law::natural_residual;
 use friction::{InteractionSet, Law};
 
 /// The step's law of one interaction from its law, gap g_k (m), relative velocity U_k (m/s), rheonomic velocity
-/// b_r (m/s, U = Hq̇ + b_r), step h and θ: (lo, hi, b) — the compliance is fixed per run (docs/theory.md §9).
+/// b_r (m/s, U = Hq̇ + b_r), step h and θ: (lo, hi, b) — the compliance is set elsewhere: once per run, or by a
+/// Hertz contact's linearisation (docs/theory.md §9).
 /// `projected`: a rigid contact whose positions are projected ([`crate::position`]) is also in the index set when
 /// closed, g_k ≤ [`CLOSED_GAP`].
 fn step_bounds(
@@ -78,7 +80,7 @@ pub struct StepLaw {
     pub lower: Vec<f64>,
     /// hi (N·s), may be +∞.
     pub upper: Vec<f64>,
-    /// d ≥ 0 (m/s per N·s); fixed for the run.
+    /// d ≥ 0 (m/s per N·s): fixed for the run, except a Hertz contact's, which follows its linearisation.
     pub compliance: Vec<f64>,
     /// b (m/s).
     pub drift: Vec<f64>,

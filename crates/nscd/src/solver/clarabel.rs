@@ -5,9 +5,9 @@
 //! min ½ yᵀM̂y + ½pᵀDp + cᵀp (= ½pᵀ(W + D)p + cᵀp) subject to M̂y − Hᵀp = 0 and p_j = lo_j where lo_j = hi_j (zero
 //! cone), p_j ≤ hi_j where hi_j is finite and −p_j ≤ −lo_j where lo_j is finite (non-negative cone; a bilateral
 //! spring has neither). Only the upper triangle of P = blkdiag(M̂, D) is passed (Clarabel ignores the rest), D with
-//! the step's compliances at each set-up (a Hertz contact's changes with its linearisation). The set-up is rebuilt when the pattern of
-//! bounds changes (a contact entering or leaving the index set; never for friction alone) and every step when
-//! interactions move (their rows are in A); otherwise each step only replaces q and b.
+//! the step's compliances at each set-up (a Hertz contact's changes with its linearisation). The set-up is rebuilt
+//! when the pattern of bounds changes (a contact entering or leaving the index set; never for friction alone) and
+//! every step when interactions move (their rows are in A); otherwise each step only replaces q and b.
 
 use super::{InteractionProblem, InteractionSolver, SolverKind, StepReport, StepStatus};
 use crate::error::NscdError;
