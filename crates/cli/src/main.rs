@@ -126,6 +126,10 @@ fn hint(error: &anyhow::Error) -> Option<&'static str> {
         _ => error.downcast_ref::<NscdError>(),
     };
     match stepping? {
+        NscdError::Unconverged { status: nscd::StepStatus::Stalled, fallbacks: Some(_), .. } => Some(
+            "every solver stalled short of the tolerance, which lies below what the step's arithmetic resolves: \
+             raise --tolerance (the default 1e-6 is met in every case measured)",
+        ),
         NscdError::Unconverged { solver: nscd::SolverKind::Projection, .. } => Some(
             "raise [integration] max_iterations or --tolerance, or choose another solver (--solver interior-point or \
              clarabel)",

@@ -17,7 +17,8 @@ pub enum NscdError {
     },
     /// The friction solver stopped short of its tolerance.
     #[error(
-        "friction solver {solver} did not converge at step {step} (t = {time:.6} s), {status}: residual {residual:.3e} m/s after {iterations} iterations (tolerance {tolerance:.3e} m/s)"
+        "friction solver {solver} did not converge at step {step} (t = {time:.6} s), {status}: residual {residual:.3e} m/s after {iterations} iterations (tolerance {tolerance:.3e} m/s){}",
+        fallbacks_tried(fallbacks)
     )]
     Unconverged {
         /// The solver.
@@ -34,6 +35,8 @@ pub enum NscdError {
         iterations: usize,
         /// The tolerance asked for (m/s).
         tolerance: f64,
+        /// The fallback solvers that were tried after it and failed too (None: the run had no fallback).
+        fallbacks: Option<[crate::solver::SolverKind; 2]>,
     },
     /// The position projection of the rigid moving contacts stopped short of its tolerance.
     #[error(
@@ -87,6 +90,14 @@ pub enum NscdError {
     /// An error from the friction layer.
     #[error(transparent)]
     Friction(#[from] friction::FrictionError),
+}
+
+/// The tail of an [`NscdError::Unconverged`] message naming the fallbacks tried.
+fn fallbacks_tried(fallbacks: &Option<[crate::solver::SolverKind; 2]>) -> String {
+    match fallbacks {
+        Some([a, b]) => format!("; the fallbacks {a} and {b} failed too (or could not take the problem)"),
+        None => String::new(),
+    }
 }
 
 /// Result alias of this crate.

@@ -12,10 +12,12 @@
 //! - [`moving`]: interactions whose rows are rebuilt every step (a wheel).
 //! - [`position`]: the position projection of rigid moving contacts after each step.
 //! - [`solver`]: projected Gauss–Seidel, a banded interior point, Clarabel (feature `clarabel`).
+//! - [`fallback`]: the other solvers, tried in turn on a step the run's solver cannot solve.
 //! - [`stepper`]: [`MoreauJean`], one step at a time, with its [`EnergyLedger`] ([`ledger`]).
 
 mod dof_responses;
 pub mod error;
+pub mod fallback;
 pub mod forcing;
 pub mod hertz;
 mod kernels;

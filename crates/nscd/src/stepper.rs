@@ -15,6 +15,7 @@
 pub use crate::ledger::EnergyLedger;
 
 use crate::error::{NscdError, Result};
+use crate::fallback::Fallbacks;
 use crate::forcing::Forcing;
 use crate::hertz::NEWTON_ITERATIONS;
 use crate::kernels::dot;
@@ -66,6 +67,9 @@ pub struct MoreauJean {
     friction_only: bool,
     problem: InteractionProblem,
     solver: Box<dyn InteractionSolver>,
+    /// The solvers that take over a step the run's solver cannot solve (none for steppers made by
+    /// [`MoreauJean::new`], which compare solvers).
+    fallbacks: Option<Fallbacks>,
     q: Vec<f64>,
     v: Vec<f64>,
     /// Friction impulses of the last step (N·s), also the next warm start.
@@ -121,11 +125,14 @@ impl MoreauJean {
     ) -> Result<Self> {
         let problem = InteractionProblem::new(system, interactions, integration)?;
         let solver = build_solver(settings.kind, &problem, settings, window_margin)?;
-        Ok(Self::new(system, problem, solver, q0, v0))
+        let mut stepper = Self::new(system, problem, solver, q0, v0);
+        stepper.fallbacks = Some(Fallbacks::new(stepper.solver.kind(), settings, window_margin));
+        Ok(stepper)
     }
 
     /// A stepper on a given problem and solver (built on that problem), for tests that compare solvers; the
-    /// integration is the problem's. Prefer [`MoreauJean::build`].
+    /// integration is the problem's, and there is no fallback: a step the solver cannot solve is an error.
+    /// Prefer [`MoreauJean::build`].
     pub fn new(
         system: &LinearSystem,
         problem: InteractionProblem,
@@ -148,6 +155,7 @@ impl MoreauJean {
             friction_only: problem.interactions.kinds().iter().all(|k| k.is_friction()),
             problem,
             solver,
+            fallbacks: None,
             q: q0,
             v: v0,
             p: vec![0.0; m],
@@ -264,29 +272,23 @@ impl MoreauJean {
             StepReport::default()
         } else {
             self.problem.interactions.velocities(&self.v, &mut self.u_free);
-            let mut report = self.solver.solve(&self.problem, &self.v, &self.u_free, &mut self.p)?;
+            let mut report = self.solve_interactions(t1)?;
             // Hertz contacts: Newton on their tangent, one more solve per update (docs/theory.md §9).
             let mut newton = 0;
-            while report.converged() && newton < NEWTON_ITERATIONS && self.problem.newton_step(&self.p) {
+            while newton < NEWTON_ITERATIONS && self.problem.newton_step(&self.p) {
                 self.solver.refresh(&self.problem)?;
-                let iterations = report.iterations;
-                report = self.solver.solve(&self.problem, &self.v, &self.u_free, &mut self.p)?;
+                let (iterations, fallback) = (report.iterations, report.fallback);
+                report = self.solve_interactions(t1)?;
                 report.iterations += iterations;
+                report.fallback = report.fallback.or(fallback);
                 newton += 1;
             }
-            if !report.converged() {
-                return Err(NscdError::Unconverged {
-                    solver: self.solver.kind(),
-                    status: report.status,
-                    step: self.steps + 1,
-                    time: t1,
-                    residual: report.residual,
-                    iterations: report.iterations,
-                    tolerance: report.tolerance,
-                });
-            }
             // Write back the solver's v when it formed it, else v = v_free + M̂⁻¹Hᵀp here.
-            match self.solver.velocity() {
+            let formed = match (&self.fallbacks, report.fallback) {
+                (Some(fallbacks), Some(_)) => fallbacks.velocity(&report),
+                _ => self.solver.velocity(),
+            };
+            match formed {
                 Some(v) => self.v.copy_from_slice(v),
                 None => self.problem.add_response(&self.p, &mut self.v, &mut self.work),
             }
@@ -324,6 +326,35 @@ impl MoreauJean {
         self.last_report = report;
         self.last_projection = projection;
         Ok(report)
+    }
+
+    /// One solve of the step's interaction problem by the run's solver, and by the fallbacks when it fails
+    /// (unconverged, or an error of its own); an error naming the run's solver when none converges. `t1` is the
+    /// step's end time (s), for the error.
+    fn solve_interactions(&mut self, t1: f64) -> Result<StepReport> {
+        let attempt = self.solver.solve(&self.problem, &self.v, &self.u_free, &mut self.p);
+        if let Ok(report) = &attempt
+            && report.converged()
+        {
+            return attempt;
+        }
+        if let Some(fallbacks) = self.fallbacks.as_mut()
+            && let Some(report) =
+                fallbacks.solve(&self.problem, &self.v, &self.u_free, &mut self.p, attempt.as_ref().ok())
+        {
+            return Ok(report);
+        }
+        let report = attempt?;
+        Err(NscdError::Unconverged {
+            solver: self.solver.kind(),
+            status: report.status,
+            step: self.steps + 1,
+            time: t1,
+            residual: report.residual,
+            iterations: report.iterations,
+            tolerance: report.tolerance,
+            fallbacks: self.fallbacks.as_ref().map(|_| Fallbacks::order(self.solver.kind())),
+        })
     }
 
     /// q ← q + Δq of the position projection; K q and the strain energy follow, the change booked as

@@ -8,6 +8,7 @@ mod runs {
     mod energy;
     mod friction_law;
     mod linear;
+    mod solver_fallback;
     mod solvers_agree;
     mod span;
     mod steady_state;

@@ -227,6 +227,6 @@ impl InteractionSolver for ClarabelQp {
         let accepted = tolerance.max(problem.absolute_tolerance(1e-6, u_free));
         // Clarabel ran to its own stopping criteria (Solved or AlmostSolved): short of the law, it stalled.
         let status = StepStatus::of(residual, accepted, iterations, usize::MAX);
-        Ok(StepReport { status, iterations, residual, tolerance: accepted, sections: p.len() })
+        Ok(StepReport { status, iterations, residual, tolerance: accepted, sections: p.len(), fallback: None })
     }
 }

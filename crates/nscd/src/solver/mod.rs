@@ -155,6 +155,9 @@ pub struct StepReport {
     pub tolerance: f64,
     /// Sections actually re-solved this step (all of them, except with the interior point's moving window).
     pub sections: usize,
+    /// The fallback solver that solved this step after the run's solver failed on it (None: the run's solver did;
+    /// see [`crate::fallback`]).
+    pub fallback: Option<SolverKind>,
 }
 
 impl StepReport {

@@ -155,6 +155,6 @@ impl InteractionSolver for ProjectedGaussSeidel {
             residual = self.residual(problem, u_free, p);
         }
         let status = StepStatus::of(residual, tolerance, sweeps, self.max_sweeps);
-        Ok(StepReport { status, iterations: sweeps, residual, tolerance, sections: self.m })
+        Ok(StepReport { status, iterations: sweeps, residual, tolerance, sections: self.m, fallback: None })
     }
 }

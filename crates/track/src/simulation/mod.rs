@@ -14,8 +14,8 @@ mod settings;
 mod vehicles;
 
 pub use results::{
-    BodyResult, Extreme, LossOfContact, RunResult, SectionHistory, SolverStatistics, StepView, VehicleResults,
-    WheelHistory, WheelResult, WindowExtremes,
+    BodyResult, Extreme, FallbackCount, LossOfContact, RunResult, SectionHistory, SolverStatistics, StepView,
+    VehicleResults, WheelHistory, WheelResult, WindowExtremes,
 };
 pub(crate) use settings::counts_for_extremes;
 pub use settings::{InitialState, IntegrationSettings, MovingLoadSettings, RecordSettings, RunSettings};
@@ -271,8 +271,10 @@ impl<'a> Simulation<'a> {
         let clock = Instant::now();
         let (mut iteration_sum, mut max_iterations, mut max_residual) = (0usize, 0usize, 0.0f64);
         let mut sections_sum = 0usize;
+        let mut statistics = SolverStatistics::default();
         for k in 1..=total_steps {
             let report = stepper.step(forcing)?;
+            statistics.count_fallback(&report);
             let keep_going = observer(&StepView {
                 step: k,
                 time: stepper.time,
@@ -343,6 +345,7 @@ impl<'a> Simulation<'a> {
                 max_residual,
                 mean_sections_solved: if steps > 0 { sections_sum as f64 / steps as f64 } else { 0.0 },
                 wall_time,
+                ..statistics
             },
             step: h,
             section_positions: self.interactions.positions().to_vec(),

@@ -92,14 +92,40 @@ pub struct SolverStatistics {
     pub max_residual: f64,
     /// Mean number of sections re-solved per step (below `sections` with the interior point's moving window).
     pub mean_sections_solved: f64,
+    /// Steps the run's solver could not solve, each solved by a fallback solver instead ([`nscd::fallback`]): the
+    /// count per fallback, in the order they first took a step (empty when the run's solver solved every step).
+    pub fallbacks: Vec<FallbackCount>,
     /// Wall time of the time loop (s).
     pub wall_time: f64,
+}
+
+/// Steps of a run solved by one fallback solver.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct FallbackCount {
+    /// The fallback solver.
+    pub solver: nscd::solver::SolverKind,
+    /// Steps it solved.
+    pub steps: usize,
 }
 
 impl SolverStatistics {
     /// The solver's name for reports, `none` without friction sections.
     pub fn solver_name(&self) -> &'static str {
         self.solver.map_or("none", nscd::solver::SolverKind::name)
+    }
+
+    /// Steps solved by a fallback solver, over all fallbacks.
+    pub fn fallback_steps(&self) -> usize {
+        self.fallbacks.iter().map(|f| f.steps).sum()
+    }
+
+    /// Count a step's fallback, if it had one.
+    pub fn count_fallback(&mut self, report: &nscd::solver::StepReport) {
+        let Some(solver) = report.fallback else { return };
+        match self.fallbacks.iter_mut().find(|f| f.solver == solver) {
+            Some(count) => count.steps += 1,
+            None => self.fallbacks.push(FallbackCount { solver, steps: 1 }),
+        }
     }
 }
 

@@ -57,6 +57,7 @@ fn same_state_difference(
         checking.factor.solve_in_place(&mut v_b);
         v_b.iter_mut().zip(&v_free).for_each(|(v, f)| *v += f);
         let report_a = stepper.step(&load).unwrap();
+        assert_eq!(report_a.fallback, None, "{a:?} solved step {step} itself");
         compared += 1;
         if report_b.residual > 100.0 * report_a.tolerance {
             skipped += 1;

@@ -198,6 +198,7 @@ impl InteractionSolver for BandedInteriorPoint {
             residual,
             tolerance,
             sections: self.statistics.sections_solved - solved_before,
+            fallback: None,
         })
     }
 }

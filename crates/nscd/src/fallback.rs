@@ -1,0 +1,95 @@
+//! The fallback of a step that the run's solver cannot solve: the same interaction problem handed to the other
+//! solvers in turn, each built on first need, so that one hard step does not end a run (docs/theory.md §5).
+//!
+//! Every solver solves the one box QP of [`InteractionProblem`] to the same law residual, so a step solved by a
+//! fallback is as exact as any other; only its cost differs. The step's [`StepReport::fallback`] names the solver
+//! that solved it, and runs count such steps in their statistics: a fallback is never silent.
+//!
+//! The order, from the run's solver:
+//! - interior point → Clarabel → projection (an interior point that stalls — a degenerate step — is best taken over
+//!   by the other interior-point method, which has its own centring and stopping rules);
+//! - projection → interior point → Clarabel (Gauss–Seidel stalls on dense sections, where the interior point is
+//!   made for them);
+//! - Clarabel → interior point → projection.
+//!
+//! A fallback that cannot take the problem (the interior point with moving rows, Clarabel in a build without it)
+//! is skipped; one that fails (unconverged, or an error of its own) hands on to the next.
+
+use crate::error::Result;
+use crate::solver::{InteractionProblem, InteractionSolver, SolverKind, SolverSettings, StepReport, build_solver};
+
+/// The fallbacks of one run: their order, the settings and window margin to build them with, and those built.
+pub struct Fallbacks {
+    settings: SolverSettings,
+    window_margin: Option<f64>,
+    order: [SolverKind; 2],
+    /// Built on first need; `Some(None)` remembers one that cannot take this problem.
+    built: [Option<Option<Box<dyn InteractionSolver>>>; 2],
+}
+
+impl std::fmt::Debug for Fallbacks {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Fallbacks").field("order", &self.order).finish()
+    }
+}
+
+impl Fallbacks {
+    /// The fallbacks of a run whose solver is `primary` (a resolved kind), built with `settings` (their kind
+    /// aside) and the interior point's `window_margin` (m).
+    pub fn new(primary: SolverKind, settings: &SolverSettings, window_margin: Option<f64>) -> Self {
+        Self { settings: *settings, window_margin, order: Self::order(primary), built: [None, None] }
+    }
+
+    /// The solvers tried after `primary`, in order.
+    pub fn order(primary: SolverKind) -> [SolverKind; 2] {
+        use SolverKind::{Clarabel, InteriorPoint, Projection};
+        match primary {
+            InteriorPoint => [Clarabel, Projection],
+            Clarabel => [InteriorPoint, Projection],
+            Projection | SolverKind::Auto => [InteriorPoint, Clarabel],
+        }
+    }
+
+    /// Solve the step with the fallbacks in turn, from the impulses `p` the failed solver left (a warm start for
+    /// projection; the interior-point methods start from the centre). `failed` is the failed solver's report, if it
+    /// returned one: a fallback must then meet the tolerance that solver was held to (Clarabel on its own accepts
+    /// up to 1e-6 of the velocity scale, which would loosen a run asked for less), and its iterations are counted
+    /// in. Returns the first report that meets it, with [`StepReport::fallback`] set; None when every fallback
+    /// failed or none could take the problem (the caller reports the run's solver's failure).
+    pub fn solve(
+        &mut self,
+        problem: &InteractionProblem,
+        v_free: &[f64],
+        u_free: &[f64],
+        p: &mut [f64],
+        failed: Option<&StepReport>,
+    ) -> Option<StepReport> {
+        for slot in 0..self.order.len() {
+            let kind = self.order[slot];
+            if self.built[slot].is_none() {
+                let mut settings = self.settings;
+                settings.kind = kind;
+                self.built[slot] = Some(build_solver(kind, problem, &settings, self.window_margin).ok());
+            }
+            let Some(Some(solver)) = self.built[slot].as_mut() else { continue };
+            let attempt: Result<StepReport> =
+                solver.refresh(problem).and_then(|()| solver.solve(problem, v_free, u_free, p));
+            if let Ok(mut report) = attempt
+                && report.converged()
+                && failed.is_none_or(|f| report.residual <= f.tolerance)
+            {
+                report.iterations += failed.map_or(0, |f| f.iterations);
+                report.fallback = Some(kind);
+                return Some(report);
+            }
+        }
+        None
+    }
+
+    /// v = v_free + M̂⁻¹Hᵀp as the fallback of `report` formed it, if it did (see [`InteractionSolver::velocity`]).
+    pub fn velocity(&self, report: &StepReport) -> Option<&[f64]> {
+        let kind = report.fallback?;
+        let slot = self.order.iter().position(|&k| k == kind)?;
+        self.built[slot].as_ref()?.as_ref()?.velocity()
+    }
+}
