@@ -95,9 +95,18 @@ pub struct RunReport {
     max_residual: f64,
     mean_sections_solved: f64,
     solver: String,
+    fallback_steps: usize,
+    fallbacks: Vec<FallbackReport>,
     wall_time: f64,
     #[serde(skip_serializing_if = "Option::is_none")]
     vehicles: Option<study::vehicle_output::VehicleReport>,
+}
+
+/// Steps of the run solved by one fallback solver (the run's solver failed on them).
+#[derive(Debug, Serialize)]
+struct FallbackReport {
+    solver: &'static str,
+    steps: usize,
 }
 
 /// Execute `frictrack run`.
@@ -269,6 +278,8 @@ fn report(scenario: &Scenario, case: &Case, result: &RunResult, wall_time: f64) 
         max_residual: s.max_residual,
         mean_sections_solved: s.mean_sections_solved,
         solver: s.solver_name().to_string(),
+        fallback_steps: s.fallback_steps(),
+        fallbacks: s.fallbacks.iter().map(|f| FallbackReport { solver: f.solver.name(), steps: f.steps }).collect(),
         wall_time,
         vehicles: result.vehicles.as_ref().map(|v| {
             let contact = settings.moving.vehicles.as_ref().map_or("", VehicleSettings::contact_name);
@@ -370,6 +381,16 @@ fn print_text(r: &RunReport) {
         r.max_iterations,
         r.max_residual
     );
+    if r.fallback_steps > 0 {
+        let by: Vec<String> = r.fallbacks.iter().map(|f| format!("{} ({})", f.solver, f.steps)).collect();
+        println!(
+            "  fallback: {} failed on {} of {} steps, solved instead by {} (docs/theory.md §5)",
+            r.solver,
+            r.fallback_steps,
+            r.steps,
+            by.join(", ")
+        );
+    }
     if let Some(v) = &r.vehicles {
         print_vehicles(v);
     }
@@ -388,9 +409,18 @@ fn print_vehicles(v: &study::vehicle_output::VehicleReport) {
         v.max_dynamic_increment
     );
     for (i, w) in v.wheels.iter().enumerate().take(8) {
+        // A glued contact pulls instead of letting go: its negative force is tension, never a loss of contact.
+        let tension = if w.min_force < 0.0 {
+            format!(
+                " (in tension down to {:.1} kN: the glued contact pulls the wheel onto the rail)",
+                w.min_force / 1e3
+            )
+        } else {
+            String::new()
+        };
         println!(
-            "    wheel {:>2} (vehicle {}, {:.2} m behind): Q₀ {:.1} kN, Q {:.1} … {:.1} kN, rail under it {:.3} mm, \
-             {:.1} kN·m; {} {} of contact",
+            "    wheel {:>2} (vehicle {}, {:.2} m behind): Q₀ {:.1} kN, Q {:.1} … {:.1} kN{tension}, rail under it \
+             {:.3} mm, {:.1} kN·m; {} {} of contact",
             i + 1,
             w.vehicle + 1,
             w.offset,

@@ -18,7 +18,7 @@ use serde_json::json;
 use std::path::PathBuf;
 use study::error::invalid;
 use study::shard::Shard;
-use study::sweep::{critical_speed, write_csv};
+use study::sweep::{FailedRun, critical_speed, failures, finished, write_csv_rows};
 
 /// Options of `frictrack sweep`.
 #[derive(Debug, Args)]
@@ -81,15 +81,16 @@ pub fn run(args: &SweepArgs) -> Result<()> {
     let progress = |done: usize| bar.set_position(done as u64);
     let runner =
         runner.with_progress(&progress).with_journal(journal.as_ref()).with_stop(crate::interrupt::stop_flag());
-    let points = crate::interrupt::explain(runner.speed_sweep(&case, &speeds), journal.as_ref())?;
+    let rows = crate::interrupt::explain(runner.speed_sweep_keeping(&case, &speeds), journal.as_ref())?;
     bar.finish_and_clear();
+    let (points, failed) = (finished(&rows), failures(&rows));
     let mut csv = Vec::new();
     if let Some(s) = shard {
         csv.extend_from_slice(s.header(&all_speeds, case.fingerprint).as_bytes());
         csv.push(b'\n');
     }
-    write_csv(&points, &mut csv)?;
-    let critical = if args.critical {
+    write_csv_rows(&rows, &mut csv)?;
+    let critical = if args.critical && failed.is_empty() {
         let step = speeds.windows(2).map(|w| w[1] - w[0]).fold(f64::INFINITY, f64::min);
         let tolerance = if step.is_finite() { (0.01 * step).max(1e-3) } else { 0.1 };
         let c = crate::interrupt::explain(critical_speed(&case, &points, tolerance, &runner), journal.as_ref())?;
@@ -114,6 +115,7 @@ pub fn run(args: &SweepArgs) -> Result<()> {
                 "columns": columns,
                 "extremes_window": scenario.output.extremes_window(scenario.mesh.length),
                 "critical_speed": critical.as_ref().map(|c| json!({ "description": c.describe(), "result": c })),
+                "failures": failed,
                 "frictrack_version": env!("CARGO_PKG_VERSION"),
                 "scenario": scenario,
             });
@@ -125,10 +127,32 @@ pub fn run(args: &SweepArgs) -> Result<()> {
             if let Some(c) = &critical {
                 println!("# critical_speed {}", serde_json::to_string(c)?);
             }
+            for f in &failed {
+                println!("# failed_run {}", serde_json::to_string(f)?);
+            }
         }
+    }
+    if !failed.is_empty() {
+        return Err(failed_runs(&failed, rows.len(), args.critical, journal.as_ref()));
     }
     if let Some(j) = journal {
         j.remove()?;
     }
     Ok(())
+}
+
+/// The error that ends a sweep in which some runs failed (after every other run finished and was written): the
+/// failed speeds with their errors, and what was kept.
+fn failed_runs(failed: &[FailedRun], total: usize, critical: bool, journal: Option<&study::Journal>) -> anyhow::Error {
+    let list: Vec<String> = failed.iter().map(|f| format!("  {} m/s: {}", f.speed, f.error)).collect();
+    let kept = match journal {
+        Some(j) => format!(
+            "the CSV has every other run (the failed rows are empty; their errors are in the JSON beside it), and {} \
+             keeps the finished runs for --resume",
+            j.path().display()
+        ),
+        None => "the CSV above has every other run (the failed rows are empty, `# failed_run` lines say why)".into(),
+    };
+    let critical = if critical { "; no critical speed was refined over a sweep with failed runs" } else { "" };
+    anyhow::anyhow!("{} of {total} runs failed:\n{}\n{kept}{critical}", failed.len(), list.join("\n"))
 }

@@ -2,6 +2,7 @@
 
 mod bad_inputs;
 mod bridges;
+mod failures;
 mod run_out;
 mod track_profile;
 mod trains;

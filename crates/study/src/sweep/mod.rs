@@ -124,6 +124,29 @@ pub const VEHICLE_CSV_COLUMNS: [(&str, &str, &str); 6] = [
     ("rms_body_acceleration", "m/s²", "largest RMS body acceleration of any vehicle"),
 ];
 
+/// A run of a sweep that failed: its speed and why. The sweep keeps every other run (see
+/// [`Runner::speed_sweep_keeping`]); its CSV row has the speed and empty values.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct FailedRun {
+    /// Load speed (m/s).
+    pub speed: f64,
+    /// The run's error, as text.
+    pub error: String,
+}
+
+/// One speed of a sweep: its finished point, or why it failed.
+pub type SweepRow = std::result::Result<SweepPoint, FailedRun>;
+
+/// The finished points of sweep rows, in order (the failed runs left out).
+pub fn finished(rows: &[SweepRow]) -> Vec<SweepPoint> {
+    rows.iter().filter_map(|r| r.as_ref().ok().cloned()).collect()
+}
+
+/// The failed runs of sweep rows, in order.
+pub fn failures(rows: &[SweepRow]) -> Vec<FailedRun> {
+    rows.iter().filter_map(|r| r.as_ref().err().cloned()).collect()
+}
+
 /// One run of `case` at `speed` (m/s), without journal (see [`Runner::point`]).
 pub fn run_point(case: &Case, speed: f64) -> Result<SweepPoint> {
     point_until(case, speed, None)
@@ -277,8 +300,37 @@ impl<'a> Runner<'a> {
     /// `f` over `items` on the pool, results in the order of `items` whatever the thread count; the first error
     /// is returned (after the runs in flight end, so that their results reach the journal).
     pub fn map<T: Sync, R: Send>(&self, items: &[T], f: impl Fn(&T) -> Result<R> + Sync) -> Result<Vec<R>> {
+        // An interruption is reported only if nothing worse happened.
+        let mut interrupted = false;
+        let mut out = Vec::with_capacity(items.len());
+        for result in self.run_all(items, f) {
+            match result {
+                Ok(r) => out.push(r),
+                Err(StudyError::Interrupted) => interrupted = true,
+                Err(e) => return Err(e),
+            }
+        }
+        if interrupted { Err(StudyError::Interrupted) } else { Ok(out) }
+    }
+
+    /// `f` over `items` on the pool like [`Runner::map`], but a failed item does not end the loop: every item's
+    /// result, in the order of `items`. Only an interruption is an error (the finished runs are in the journal).
+    pub fn map_each<T: Sync, R: Send>(
+        &self,
+        items: &[T],
+        f: impl Fn(&T) -> Result<R> + Sync,
+    ) -> Result<Vec<Result<R>>> {
+        let results = self.run_all(items, f);
+        if results.iter().any(|r| matches!(r, Err(StudyError::Interrupted))) {
+            return Err(StudyError::Interrupted);
+        }
+        Ok(results)
+    }
+
+    /// Every item's result of `f` on the pool, in the order of `items`, progress reported after each.
+    fn run_all<T: Sync, R: Send>(&self, items: &[T], f: impl Fn(&T) -> Result<R> + Sync) -> Vec<Result<R>> {
         let done = AtomicUsize::new(0);
-        let results: Vec<Result<R>> = self.pool.install(|| {
+        self.pool.install(|| {
             items
                 .par_iter()
                 .map(|item| {
@@ -287,18 +339,19 @@ impl<'a> Runner<'a> {
                     result
                 })
                 .collect()
-        });
-        // An interruption is reported only if nothing worse happened.
-        let mut interrupted = false;
-        let mut out = Vec::with_capacity(results.len());
-        for result in results {
-            match result {
-                Ok(r) => out.push(r),
-                Err(StudyError::Interrupted) => interrupted = true,
-                Err(e) => return Err(e),
-            }
-        }
-        if interrupted { Err(StudyError::Interrupted) } else { Ok(out) }
+        })
+    }
+
+    /// Run `case` at every speed, keeping going past a failed run: one row per speed, in the order of `speeds`
+    /// (an interruption is still an error).
+    pub fn speed_sweep_keeping(&self, case: &Case, speeds: &[f64]) -> Result<Vec<SweepRow>> {
+        check_speeds(speeds)?;
+        let rows = self.map_each(speeds, |&speed| self.point(case, speed))?;
+        Ok(rows
+            .into_iter()
+            .zip(speeds)
+            .map(|(row, &speed)| row.map_err(|e| FailedRun { speed, error: e.to_string() }))
+            .collect())
     }
 
     /// Run `case` at every speed; results in the order of `speeds`.
@@ -309,12 +362,18 @@ impl<'a> Runner<'a> {
     /// Run every case at every speed, all (case, speed) pairs on one pool; results per case in the order of
     /// `speeds`, identical for any thread count.
     pub fn sweep_many(&self, cases: &[Case], speeds: &[f64]) -> Result<Vec<Vec<SweepPoint>>> {
-        if let Some(&v) = speeds.iter().find(|v| !(v.is_finite() && **v > 0.0)) {
-            return Err(invalid("speeds", v, "every speed must be finite and > 0 (m/s)"));
-        }
+        check_speeds(speeds)?;
         let pairs: Vec<(usize, f64)> = (0..cases.len()).flat_map(|c| speeds.iter().map(move |&v| (c, v))).collect();
         let mut points = self.map(&pairs, |&(c, speed)| self.point(&cases[c], speed))?.into_iter();
         Ok((0..cases.len()).map(|_| points.by_ref().take(speeds.len()).collect()).collect())
+    }
+}
+
+/// Every speed of a sweep must be finite and positive.
+fn check_speeds(speeds: &[f64]) -> Result<()> {
+    match speeds.iter().find(|v| !(v.is_finite() && **v > 0.0)) {
+        Some(&v) => Err(invalid("speeds", v, "every speed must be finite and > 0 (m/s)")),
+        None => Ok(()),
     }
 }
 
@@ -348,13 +407,28 @@ pub fn csv_header() -> String {
 /// Write sweep points as CSV (header + one line per point, full precision), with the vehicles' columns
 /// ([`VEHICLE_CSV_COLUMNS`]) when the points have them.
 pub fn write_csv(points: &[SweepPoint], out: &mut dyn Write) -> std::io::Result<()> {
-    let vehicles = points.iter().any(|p| p.vehicles.is_some());
+    let rows: Vec<SweepRow> = points.iter().cloned().map(Ok).collect();
+    write_csv_rows(&rows, out)
+}
+
+/// Write sweep rows as CSV like [`write_csv`]; a failed run's line has its speed and every other field empty (read
+/// as missing by CSV readers; why it failed is beside it, in the sweep's JSON).
+pub fn write_csv_rows(rows: &[SweepRow], out: &mut dyn Write) -> std::io::Result<()> {
+    let vehicles = rows.iter().any(|r| r.as_ref().is_ok_and(|p| p.vehicles.is_some()));
+    let columns = CSV_COLUMNS.len() + if vehicles { VEHICLE_CSV_COLUMNS.len() } else { 0 };
     if vehicles {
         writeln!(out, "{},{}", csv_header(), VEHICLE_CSV_COLUMNS.map(|(name, _, _)| name).join(","))?;
     } else {
         writeln!(out, "{}", csv_header())?;
     }
-    for p in points {
+    for line in rows {
+        let p = match line {
+            Ok(p) => p,
+            Err(failed) => {
+                writeln!(out, "{}{}", crate::number::number(failed.speed), ",".repeat(columns - 1))?;
+                continue;
+            }
+        };
         write!(
             out,
             "{}",

@@ -1,0 +1,70 @@
+//! What a run or a sweep does when something fails on the way: a step its solver cannot solve is solved by a
+//! fallback and reported; a sweep keeps every finished run past a failed one, records the failure, exits non-zero.
+
+use super::{frictrack, json, temporary_folder};
+
+/// An interior point held to 3 iterations a step (it needs ~20) cannot solve a step of distributed friction: every
+/// step is solved by Clarabel instead, and the run says so in text and JSON.
+#[test]
+fn a_run_reports_the_steps_its_solver_could_not_solve() {
+    let dir = temporary_folder("fallback");
+    let scenario = dir.join("held.toml");
+    std::fs::write(
+        &scenario,
+        "[mesh]\nlength = 30.0\nelements = 30\n[friction.distributed]\nforce_per_length = 5000.0\n\
+         [integration]\nsolver = \"interior-point\"\nmax_iterations = 3\n",
+    )
+    .unwrap();
+    let path = scenario.to_str().unwrap();
+    let v = json(&frictrack(&["run", path, "--speed", "100", "--format", "json"]));
+    let steps = v["steps"].as_u64().unwrap();
+    assert_eq!(v["solver"], "interior-point");
+    assert_eq!(v["fallback_steps"].as_u64(), Some(steps), "{v}");
+    assert_eq!(v["fallbacks"][0]["solver"], "clarabel");
+    assert!(v["max_residual"].as_f64().unwrap() <= 1e-6, "{v}");
+    let text = frictrack(&["run", path, "--speed", "100"]);
+    assert!(text.status.success());
+    let stdout = String::from_utf8_lossy(&text.stdout);
+    assert!(
+        stdout.contains(&format!(
+            "fallback: interior-point failed on {steps} of {steps} steps, solved instead by clarabel"
+        )),
+        "{stdout}"
+    );
+    // The default solver meets the tolerance alone: no fallback line.
+    let alone = frictrack(&["run", "--speed", "20", "--distributed-friction", "1000"]);
+    assert!(alone.status.success(), "{}", String::from_utf8_lossy(&alone.stderr));
+    assert!(!String::from_utf8_lossy(&alone.stdout).contains("fallback"));
+}
+
+/// Undamped, a steady start has no steady state at or above v_cr = 205.57 m/s: those runs fail, the others are
+/// kept — on stdout with `# failed_run` lines, with `--out` as empty rows beside a JSON that lists the failures —
+/// and the sweep exits with 1, naming each failed speed, after writing everything else.
+#[test]
+fn a_sweep_keeps_every_finished_run_past_a_failed_one() {
+    let args = ["sweep", "--speeds", "195:215:5", "--steady-start", "50", "--jobs", "2", "--quiet"];
+    let out = frictrack(&args);
+    assert_eq!(out.status.code(), Some(1));
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    let lines: Vec<&str> = stdout.lines().collect();
+    assert_eq!(lines.len(), 1 + 5 + 2, "{stdout}");
+    for (line, speed) in lines[1..4].iter().zip(["195,", "200,", "205,"]) {
+        assert!(line.starts_with(speed) && !line.contains(",,"), "{line}");
+    }
+    assert_eq!(lines[4], format!("210{}", ",".repeat(16)));
+    assert!(lines[6].starts_with("# failed_run {\"speed\":210.0,\"error\":\"no bounded steady state"), "{stdout}");
+    assert!(stderr.contains("2 of 5 runs failed") && stderr.contains("215 m/s: no bounded steady state"), "{stderr}");
+
+    let dir = temporary_folder("sweep-failures");
+    let csv = dir.join("sweep.csv");
+    let out = frictrack(&[&args[..5], &["--out", csv.to_str().unwrap(), "--quiet"]].concat());
+    assert_eq!(out.status.code(), Some(1));
+    let written = std::fs::read_to_string(&csv).unwrap();
+    assert_eq!(written.lines().collect::<Vec<_>>(), lines[..6].to_vec(), "the same rows as on stdout");
+    let meta: serde_json::Value = serde_json::from_slice(&std::fs::read(dir.join("sweep.json")).unwrap()).unwrap();
+    let failures = meta["failures"].as_array().unwrap();
+    assert_eq!(failures.len(), 2);
+    assert_eq!(failures[1]["speed"], 215.0);
+    assert!(dir.join("sweep.csv.journal").exists(), "the journal is kept for --resume");
+}
