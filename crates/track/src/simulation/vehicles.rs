@@ -124,6 +124,9 @@ pub(super) struct VehicleObserver {
     body_square_integral: Vec<f64>,
     /// Index of each wheel's ongoing loss of contact in its `losses`, if flying.
     flying: Vec<Option<usize>>,
+    /// Whether each wheel's contact law lets it leave the rail ([`crate::vehicle::WheelRail::separates`]): a glued
+    /// wheel's tensile force is tension, never a loss of contact.
+    separates: Vec<bool>,
     /// The rail under the wheels, read from the system's state, and its EI (N·m²) for the moment.
     rail: RailPoints,
     bending_stiffness: f64,
@@ -169,6 +172,7 @@ impl VehicleObserver {
             bodies,
             body_results,
             flying: vec![None; wheels.len()],
+            separates: wheels.iter().map(|w| vehicles.contact_of(&vehicles.vehicles[w.vehicle]).separates()).collect(),
             region,
             rail,
             bending_stiffness,
@@ -231,7 +235,7 @@ impl VehicleObserver {
             w.max_force = w.max_force.max(force);
             w.max_rail_deflection = w.max_rail_deflection.max(-deflection);
             w.max_moment = w.max_moment.max(moment.abs());
-            let off = force < LOSS_OF_CONTACT * w.static_force;
+            let off = self.separates[i] && force < LOSS_OF_CONTACT * w.static_force;
             match (self.flying[i], off) {
                 (None, true) => {
                     self.flying[i] = Some(w.losses.len());

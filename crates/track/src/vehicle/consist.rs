@@ -354,6 +354,12 @@ impl WheelRail {
         }
     }
 
+    /// Whether the wheel can leave the rail under this law: every law but the glued spring, which pulls instead
+    /// (a tensile force is then tension, not a loss of contact).
+    pub fn separates(&self) -> bool {
+        !matches!(self, Self::Glued { .. })
+    }
+
     /// The law's name for reports: `hertz`, `linear`, `glued` or `rigid`.
     pub fn name(&self) -> &'static str {
         match self {

@@ -59,6 +59,10 @@ fn a_unilateral_wheel_is_glued_until_it_would_pull() {
     let unilateral = car_run(&model, (60.0, 0.02), DIP, WheelRail::Linear { stiffness: k }, true);
     let (g, u) = (forces(&glued), forces(&unilateral));
     let tensile = g.iter().position(|&f| f < 0.0).expect("the glued wheel pulls in the dip");
+    // A glued wheel never leaves the rail: its pull is tension (a negative least force), not a loss of contact.
+    let glued_wheel = &glued.vehicles.as_ref().unwrap().wheels[0];
+    assert!(glued_wheel.losses.is_empty(), "a glued wheel reported {:?}", glued_wheel.losses);
+    assert!(glued_wheel.min_force < -0.5 * glued_wheel.static_force, "tension {} N", glued_wheel.min_force);
     let first_difference = g.iter().zip(u).position(|(a, b)| a != b).unwrap();
     assert_eq!(first_difference, tensile);
     let wheel = &unilateral.vehicles.as_ref().unwrap().wheels[0];
