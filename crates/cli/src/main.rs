@@ -147,7 +147,7 @@ fn hint(error: &anyhow::Error) -> Option<&'static str> {
 
 /// 2 for invalid input (a parameter the model rejects), 130 after Ctrl-C, 1 for anything else (e.g. a solver
 /// failure).
-fn error_code(error: &anyhow::Error) -> u8 {
+pub(crate) fn error_code(error: &anyhow::Error) -> u8 {
     use study::StudyError;
     if matches!(error.downcast_ref::<StudyError>(), Some(StudyError::Interrupted)) {
         return interrupt::EXIT_CODE;

@@ -58,9 +58,30 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
     );
     // Journals stay until the report is written, so that --resume after an interruption re-runs nothing.
     let mut journals = Vec::new();
+    // A study that fails (not the user's input, not an interruption: those end the command) is recorded in the
+    // report and the others still run; the command then exits non-zero naming it, its journal kept for --resume.
+    let mut failed = Vec::new();
     for (i, preset) in Preset::ALL.into_iter().enumerate() {
         let timer = Instant::now();
-        let (data, journal) = run_study(preset, options, &base, &workers)?;
+        let (data, journal) = match run_study(preset, options, &base, &workers) {
+            Ok(done) => done,
+            Err(e) if crate::error_code(&e) == 1 => {
+                let message = format!("{e:#}");
+                eprintln!("{}: failed after {:.1} s: {message}", preset.name(), timer.elapsed().as_secs_f64());
+                let _ = writeln!(
+                    report,
+                    "## {}. {} — failed
+
+{message}
+",
+                    i + 1,
+                    preset.name()
+                );
+                failed.push(format!("{}: {message}", preset.name()));
+                continue;
+            }
+            Err(e) => return Err(e),
+        };
         if !options.quiet {
             eprintln!("{}: {} runs in {:.1} s", preset.name(), data.runs, timer.elapsed().as_secs_f64());
         }
@@ -93,6 +114,14 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
     }
     if !options.quiet {
         eprintln!("wrote {}", options.out.join("report.md").display());
+    }
+    if !failed.is_empty() {
+        anyhow::bail!(
+            "{} of {} studies failed (the report has the others; their finished runs are kept for --resume):\n  {}",
+            failed.len(),
+            Preset::ALL.len(),
+            failed.join("\n  ")
+        );
     }
     Ok(())
 }

@@ -51,6 +51,39 @@ struct ExtremeReport {
     load_position: f64,
 }
 
+/// What the text report says of the extremes window, true for the run: whose position it is (the load, or a
+/// train's first axle), why it is there (the default middle third, or given), and what lies around it.
+#[derive(Debug, Default)]
+struct WindowWording {
+    /// "load" or "first axle".
+    load: &'static str,
+    /// Why the window is where it is.
+    why: &'static str,
+}
+
+impl WindowWording {
+    fn of(scenario: &Scenario, case: &Case) -> Self {
+        let load = if case.settings.moving.train.is_some() && case.settings.moving.vehicles.is_none() {
+            "first axle"
+        } else {
+            "load"
+        };
+        let span = scenario.foundation.stiffness == 0.0;
+        let why = match (scenario.output.extremes_window.is_some(), span) {
+            (true, _) => "the window given by [output] extremes_window or --extremes-window",
+            (false, true) => "the middle third of the span",
+            (false, false) => "the middle third, away from the ends: the response of a long track",
+        };
+        Self { load, why }
+    }
+}
+
+/// An extreme that happened: a magnitude of 0 is no extreme at all (no step deflected that way), whose place and
+/// time would be placeholders.
+fn happened(x: &track::simulation::Extreme) -> Option<&track::simulation::Extreme> {
+    (x.magnitude > 0.0).then_some(x)
+}
+
 /// The JSON report of `frictrack run`. Deflections are positive magnitudes (m), relative to the self-weight state.
 #[derive(Debug, Serialize)]
 pub struct RunReport {
@@ -66,20 +99,23 @@ pub struct RunReport {
     device_positions: Vec<f64>,
     distributed_friction: f64,
     max_downward_deflection: f64,
-    max_downward_deflection_position: f64,
-    max_downward_deflection_time: f64,
+    max_downward_deflection_position: Option<f64>,
+    max_downward_deflection_time: Option<f64>,
     max_upward_deflection: f64,
-    max_upward_deflection_position: f64,
-    max_upward_deflection_time: f64,
+    max_upward_deflection_position: Option<f64>,
+    max_upward_deflection_time: Option<f64>,
     max_acceleration: f64,
-    max_acceleration_position: f64,
-    max_acceleration_time: f64,
+    max_acceleration_position: Option<f64>,
+    max_acceleration_time: Option<f64>,
     static_max_downward_deflection: f64,
     dynamic_amplification: f64,
     extremes_window: (f64, f64),
     extremes_nodes: Option<(f64, f64)>,
-    window_max_downward: ExtremeReport,
-    window_max_upward: ExtremeReport,
+    window_max_downward: Option<ExtremeReport>,
+    window_max_upward: Option<ExtremeReport>,
+    /// How the text names the extremes window (not in JSON: the numbers are).
+    #[serde(skip)]
+    window_wording: WindowWording,
     global_norm: f64,
     load_work: f64,
     friction_work: f64,
@@ -219,11 +255,13 @@ fn report(scenario: &Scenario, case: &Case, result: &RunResult, wall_time: f64) 
         .collect();
     let window = result.window.unwrap_or_default();
     let x0 = settings.start_position();
-    let extreme = |x: &track::simulation::Extreme| ExtremeReport {
-        deflection: x.magnitude,
-        position: x.position,
-        time: x.time,
-        load_position: x0 + settings.moving.speed * x.time,
+    let extreme = |x: &track::simulation::Extreme| {
+        happened(x).map(|x| ExtremeReport {
+            deflection: x.magnitude,
+            position: x.position,
+            time: x.time,
+            load_position: x0 + settings.moving.speed * x.time,
+        })
     };
     let critical = study::speeds::SpeedScale::of(scenario)?.critical_speed;
     let statics = track::statics::static_envelope(
@@ -245,14 +283,14 @@ fn report(scenario: &Scenario, case: &Case, result: &RunResult, wall_time: f64) 
         device_positions,
         distributed_friction: scenario.friction.distributed.as_ref().map_or(0.0, |d| d.force_per_length),
         max_downward_deflection: result.max_downward.magnitude,
-        max_downward_deflection_position: result.max_downward.position,
-        max_downward_deflection_time: result.max_downward.time,
+        max_downward_deflection_position: happened(&result.max_downward).map(|x| x.position),
+        max_downward_deflection_time: happened(&result.max_downward).map(|x| x.time),
         max_upward_deflection: result.max_upward.magnitude,
-        max_upward_deflection_position: result.max_upward.position,
-        max_upward_deflection_time: result.max_upward.time,
+        max_upward_deflection_position: happened(&result.max_upward).map(|x| x.position),
+        max_upward_deflection_time: happened(&result.max_upward).map(|x| x.time),
         max_acceleration: result.max_acceleration.magnitude,
-        max_acceleration_position: result.max_acceleration.position,
-        max_acceleration_time: result.max_acceleration.time,
+        max_acceleration_position: happened(&result.max_acceleration).map(|x| x.position),
+        max_acceleration_time: happened(&result.max_acceleration).map(|x| x.time),
         static_max_downward_deflection: statics.max_downward,
         dynamic_amplification: if statics.max_downward > 0.0 {
             result.max_downward.magnitude / statics.max_downward
@@ -263,6 +301,7 @@ fn report(scenario: &Scenario, case: &Case, result: &RunResult, wall_time: f64) 
         extremes_nodes: settings.record.extremes_nodes,
         window_max_downward: extreme(&window.max_downward),
         window_max_upward: extreme(&window.max_upward),
+        window_wording: WindowWording::of(scenario, case),
         global_norm: result.global_norm,
         load_work: e.load_work,
         friction_work: e.friction_work,
@@ -329,36 +368,58 @@ fn print_text(r: &RunReport) {
             }
         }
     }
-    let line = |what: &str, d: f64, x: f64, t: f64, x_load: Option<f64>| {
-        let load = x_load.map_or(String::new(), |x| format!(", load at {x:.1} m"));
-        println!("    max {what:<8} deflection {:>9.3} mm at x = {x:.1} m, t = {t:.4} s{load}", d * 1e3);
+    // An extreme that never happened (no step deflected that way) is "none", not 0 at x = 0, t = 0.
+    let load = r.window_wording.load;
+    let line = |what: &str, d: f64, place: Option<(f64, f64)>, x_load: Option<f64>| match place {
+        Some((x, t)) => {
+            let load = x_load.map_or(String::new(), |x| format!(", {load} at {x:.1} m"));
+            println!("    max {what:<8} deflection {:>9.3} mm at x = {x:.1} m, t = {t:.4} s{load}", d * 1e3);
+        }
+        None => println!("    max {what:<8} deflection      none"),
     };
     match r.extremes_nodes {
         Some((a, b)) => println!("  extremes over the nodes at {a:.1}–{b:.1} m ([output] extremes_nodes); whole run:"),
         None => println!("  whole run (includes the entry transient from rest and the exit near x = L):"),
     }
+    let place = |x: Option<f64>, t: Option<f64>| x.zip(t);
     line(
         "downward",
         r.max_downward_deflection,
-        r.max_downward_deflection_position,
-        r.max_downward_deflection_time,
+        place(r.max_downward_deflection_position, r.max_downward_deflection_time),
         None,
     );
-    line("upward", r.max_upward_deflection, r.max_upward_deflection_position, r.max_upward_deflection_time, None);
+    line(
+        "upward",
+        r.max_upward_deflection,
+        place(r.max_upward_deflection_position, r.max_upward_deflection_time),
+        None,
+    );
     let (a, b) = r.extremes_window;
-    println!("  while the load is at {a:.1}–{b:.1} m (away from the ends: the response of a long track):");
-    for (what, e) in [("downward", &r.window_max_downward), ("upward", &r.window_max_upward)] {
-        line(what, e.deflection, e.position, e.time, Some(e.load_position));
+    let why = r.window_wording.why;
+    let nodes = if r.extremes_nodes.is_some() { "the nodes above" } else { "every node" };
+    println!("  while the {load} is at {a:.1}–{b:.1} m ({why}), over {nodes}:");
+    match (&r.window_max_downward, &r.window_max_upward) {
+        (None, None) => println!("    none: the {load} never was in that range during the run"),
+        (down, up) => {
+            for (what, e) in [("downward", down), ("upward", up)] {
+                let d = e.as_ref().map_or(0.0, |e| e.deflection);
+                line(what, d, e.as_ref().map(|e| (e.position, e.time)), e.as_ref().map(|e| e.load_position));
+            }
+        }
     }
     println!(
-        "  static (the load standing at every position): max downward {:.3} mm; dynamic amplification {:.3}",
+        "  static (the {} standing at every position): max downward {:.3} mm; dynamic amplification {:.3}",
+        if r.train.is_some() { "train" } else { "load" },
         r.static_max_downward_deflection * 1e3,
         r.dynamic_amplification
     );
-    println!(
-        "  max acceleration {:.3} m/s² at x = {:.1} m, t = {:.4} s (the step's mean; a bridge deck's check value)",
-        r.max_acceleration, r.max_acceleration_position, r.max_acceleration_time
-    );
+    match place(r.max_acceleration_position, r.max_acceleration_time) {
+        Some((x, t)) => println!(
+            "  max acceleration {:.3} m/s² at x = {x:.1} m, t = {t:.4} s (the step's mean; a bridge deck's check value)",
+            r.max_acceleration
+        ),
+        None => println!("  max acceleration none (the beam never moved)"),
+    }
     println!("  global norm W̄          {:>9.4} m²", r.global_norm);
     println!(
         "  energy (J): load work {:.4e}, dissipated {:.4e} (friction {:.4e}, viscous {:.4e}), numerical {:.4e}, balance residual {:.2e}",

@@ -72,3 +72,23 @@ fn a_deck_reports_amplification_and_acceleration_and_warns_when_unresolved() {
     assert!(stderr.contains("warning: integration.load_advance = 0.1"), "{stderr}");
     std::fs::remove_dir_all(&folder).unwrap();
 }
+
+/// The example deck under HSLM-A1: while the first axle is in the middle third of the span the deck never deflects
+/// upward, so that extreme is absent — null in JSON, "none" in the text — not "0.000 mm at x = 0.0 m, t = 0"; the
+/// window is named for what it is (the first axle, the middle third of the span, over every node).
+#[test]
+fn absent_extremes_are_absent_and_the_window_is_named_for_the_run() {
+    let example = concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/hslm-bridge.toml");
+    let v = json(&frictrack(&["run", example, "--format", "json"]));
+    assert!(v["window_max_upward"].is_null(), "{}", v["window_max_upward"]);
+    assert!(v["window_max_downward"]["deflection"].as_f64().unwrap() > 0.0);
+    assert!(v["max_upward_deflection_position"].as_f64().is_some(), "the whole run does deflect upward");
+    let text = frictrack(&["run", example]);
+    let stdout = String::from_utf8_lossy(&text.stdout);
+    assert!(
+        stdout.contains("while the first axle is at 6.7–13.3 m (the middle third of the span), over every node:"),
+        "{stdout}"
+    );
+    assert!(stdout.contains("max upward   deflection      none"), "{stdout}");
+    assert!(!stdout.contains("at x = 0.0 m, t = 0.0000 s"), "{stdout}");
+}
