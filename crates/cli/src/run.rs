@@ -234,13 +234,19 @@ fn write_outputs(
     write_atomically(&out.join("snapshots.csv"), snapshots_csv(snapshots).as_bytes())?;
     let title = if scenario.title.is_empty() { format!("v = {} m/s", report.speed) } else { scenario.title.clone() };
     let load = if report.train.is_some() { "first axle" } else { "load" };
-    for spec in run_plots(result, snapshots, &title, load) {
+    let subtitle = figure_subtitle(report);
+    for mut spec in run_plots(result, snapshots, &title, load) {
+        spec.subtitle.clone_from(&subtitle);
         study::plot::render(&spec, out)?;
     }
     if let Some(vehicles) = &result.vehicles {
         write_atomically(&out.join("wheels.csv"), study::vehicle_output::wheels_csv(vehicles).as_bytes())?;
         let range = report.extremes_nodes.unwrap_or((0.0, scenario.mesh.length));
-        study::plot::render(&study::vehicle_output::wheel_plot(vehicles, &title, range), out)?;
+        let mut spec = study::vehicle_output::wheel_plot(vehicles, &title, range);
+        if spec.subtitle.is_empty() {
+            spec.subtitle = subtitle;
+        }
+        study::plot::render(&spec, out)?;
     }
     Ok(())
 }
@@ -327,10 +333,15 @@ fn report(scenario: &Scenario, case: &Case, result: &RunResult, wall_time: f64) 
     })
 }
 
-fn print_text(r: &RunReport) {
-    let title = if r.title.is_empty() { String::new() } else { format!(" — {}", r.title) };
-    let load = match &r.train {
-        Some(t) => format!(
+/// What ran, in words: the load, train or vehicles.
+fn load_description(r: &RunReport) -> String {
+    match (&r.vehicles, &r.train) {
+        (Some(v), _) => {
+            let total: f64 = v.wheels.iter().map(|w| w.static_force).sum();
+            let plural = if v.bodies.len() == 1 { "" } else { "s" };
+            format!("{} vehicle{plural} ({}) weighing {:.1} kN", v.bodies.len(), v.bodies[0].name, total / 1e3)
+        }
+        (None, Some(t)) => format!(
             "train {} ({} axles, {} patches, {:.3} m, {:.1} kN)",
             t.name,
             t.axles,
@@ -338,16 +349,34 @@ fn print_text(r: &RunReport) {
             t.length,
             t.total_force / 1e3
         ),
-        None => format!("load {:.1} kN", r.load / 1e3),
-    };
-    let load = match &r.vehicles {
-        Some(v) => {
-            let total: f64 = v.wheels.iter().map(|w| w.static_force).sum();
-            let plural = if v.bodies.len() == 1 { "" } else { "s" };
-            format!("{} vehicle{plural} ({}) weighing {:.1} kN", v.bodies.len(), v.bodies[0].name, total / 1e3)
-        }
-        None => load,
-    };
+        (None, None) => format!("load {:.1} kN", r.load / 1e3),
+    }
+}
+
+/// The friction that ran, in words.
+fn friction_description(r: &RunReport) -> String {
+    let devices = (r.devices > 0).then(|| format!("{} devices × {:.1} kN", r.devices, r.device_force / 1e3));
+    let distributed = (r.distributed_friction > 0.0).then(|| format!("{:.1} N/m distributed", r.distributed_friction));
+    match (devices, distributed) {
+        (None, None) => "none".into(),
+        (a, b) => [a, b].into_iter().flatten().collect::<Vec<_>>().join(" and "),
+    }
+}
+
+/// The subtitle of the run's figures: what ran, at which speed, with which friction.
+fn figure_subtitle(r: &RunReport) -> String {
+    format!(
+        "{} at {:.2} m/s ({:.0} km/h); friction: {}",
+        load_description(r),
+        r.speed,
+        r.speed * 3.6,
+        friction_description(r)
+    )
+}
+
+fn print_text(r: &RunReport) {
+    let title = if r.title.is_empty() { String::new() } else { format!(" — {}", r.title) };
+    let load = load_description(r);
     println!("frictrack run{title}: {load} at {:.2} m/s ({:.0} km/h)", r.speed, r.speed * 3.6);
     if let Some(v_cr) = r.critical_speed {
         println!(
@@ -368,7 +397,6 @@ fn print_text(r: &RunReport) {
             }
         }
     }
-    // An extreme that never happened (no step deflected that way) is "none", not 0 at x = 0, t = 0.
     let load = r.window_wording.load;
     let line = |what: &str, d: f64, place: Option<(f64, f64)>, x_load: Option<f64>| match place {
         Some((x, t)) => {

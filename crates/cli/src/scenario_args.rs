@@ -147,6 +147,28 @@ impl ScenarioArgs {
         if let Some(length) = self.absorbing_zones {
             s.foundation.absorbing_zones = Some(AbsorbingZonesSection { length, peak_ratio: 1.0 });
         }
+        // A scenario's title describes the file ("…, HSLM-A1"); flags that change what runs are added to it, so that
+        // no header, figure title or JSON names a train, speed or friction that did not run.
+        let changed = self.changes_of_the_case();
+        if !s.title.is_empty() && !changed.is_empty() {
+            s.title = format!("{} (run with {})", s.title, changed.join(" "));
+        }
         Ok(s)
+    }
+
+    /// The flags given that change the loads, the speed, the friction or the damping, as `--flag value`.
+    fn changes_of_the_case(&self) -> Vec<String> {
+        let number = |flag: &str, v: Option<f64>| v.map(|v| format!("{flag} {v}"));
+        [
+            number("--speed", self.speed),
+            self.train.as_ref().map(|t| format!("--train {t}")),
+            self.devices.map(|n| format!("--devices {n}")),
+            number("--device-force", self.device_force),
+            number("--distributed-friction", self.distributed_friction),
+            number("--damping-ratio", self.damping_ratio),
+        ]
+        .into_iter()
+        .flatten()
+        .collect()
     }
 }

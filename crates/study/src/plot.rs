@@ -244,13 +244,28 @@ fn ranges(spec: &PlotSpec, tx: &dyn Fn(f64) -> f64, ty: &dyn Fn(f64) -> f64) -> 
     Some(((x0 - x_pad, x1 + x_pad), (y0 - pad, y1 + pad)))
 }
 
+/// The font size ≤ `size` (px) at which `text` fits in `width` px: `size` scaled down by the measured overflow (text
+/// width is proportional to the size), never below 60 % of it (beyond that a title must be shortened at its source).
+fn fitting_size<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, text: &str, size: f64, width: f64) -> f64 {
+    match area.estimate_text_size(text, &("sans-serif", size).into_font().into()) {
+        Ok((measured, _)) if f64::from(measured) > width => (size * width / f64::from(measured)).max(0.6 * size),
+        _ => size,
+    }
+}
+
 fn draw<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, spec: &PlotSpec) -> std::result::Result<Layout, String> {
     let err = |e: &dyn std::fmt::Display| e.to_string();
     root.fill(&WHITE).map_err(|e| err(&e))?;
     let (titled, body) = root.split_vertically(if spec.subtitle.is_empty() { 50 } else { 80 });
-    titled.draw(&Text::new(spec.title.as_str(), (20, 12), ("sans-serif", 28).into_font())).map_err(|e| err(&e))?;
+    // Titles and subtitles shrink to fit the width (20 px margins) rather than run off the image.
+    let width = f64::from(SIZE.0 - 40);
+    let title_size = fitting_size(&titled, &spec.title, 28.0, width);
+    titled
+        .draw(&Text::new(spec.title.as_str(), (20, 12), ("sans-serif", title_size).into_font()))
+        .map_err(|e| err(&e))?;
     if !spec.subtitle.is_empty() {
-        let style = ("sans-serif", 19).into_font().color(&RGBColor(60, 60, 60));
+        let size = fitting_size(&titled, &spec.subtitle, 19.0, width);
+        let style = ("sans-serif", size).into_font().color(&RGBColor(60, 60, 60));
         titled.draw(&Text::new(spec.subtitle.as_str(), (20, 48), style)).map_err(|e| err(&e))?;
     }
     let (chart_area, legend_area) = body.split_horizontally(SIZE.0 - LEGEND_WIDTH);

@@ -92,3 +92,22 @@ fn absent_extremes_are_absent_and_the_window_is_named_for_the_run() {
     assert!(stdout.contains("max upward   deflection      none"), "{stdout}");
     assert!(!stdout.contains("at x = 0.0 m, t = 0.0000 s"), "{stdout}");
 }
+
+/// `--train hslm-a3 --speed 80` on a scenario titled "…, HSLM-A1": the header and every figure say what ran — the
+/// title carries the flags, the figures' subtitle the train, speed and friction — never the file's HSLM-A1 alone.
+#[test]
+fn titles_name_the_train_and_speed_that_ran() {
+    let example = concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/hslm-bridge.toml");
+    let dir = super::temporary_folder("titles");
+    let args = ["run", example, "--train", "hslm-a3", "--speed", "80", "--out", dir.to_str().unwrap()];
+    let out = frictrack(&args);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let header = String::from_utf8_lossy(&out.stdout).lines().next().unwrap_or_default().to_string();
+    assert!(header.contains("HSLM-A1 (run with --speed 80 --train hslm-a3): train hslm-a3"), "{header}");
+    for figure in ["histories-deflection", "histories-moment", "snapshots-deflection", "snapshots-moment"] {
+        let svg = std::fs::read_to_string(dir.join(format!("{figure}.svg"))).unwrap();
+        assert!(svg.contains("(run with --speed 80 --train hslm-a3)"), "{figure}: title");
+        assert!(svg.contains("train hslm-a3 (46 axles"), "{figure}: subtitle");
+        assert!(svg.contains("at 80.00 m/s (288 km/h); friction: none"), "{figure}: subtitle");
+    }
+}
