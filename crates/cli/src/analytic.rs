@@ -13,7 +13,8 @@ use study::{Scenario, StudyError};
 /// Options of `frictrack analytic`.
 #[derive(Debug, Args)]
 pub struct AnalyticArgs {
-    /// Scenario file (its beam, foundation and load force); without it, the reference case.
+    /// Scenario file (its beam, foundation and loads: the single load or its train, as the beam carries it); without
+    /// it, the reference case.
     scenario: Option<PathBuf>,
     /// Load speed (m/s).
     #[arg(long, conflicts_with = "speeds", required_unless_present = "speeds", allow_negative_numbers = true)]
@@ -25,8 +26,9 @@ pub struct AnalyticArgs {
     /// scenario's (0 for the reference case).
     #[arg(long, allow_negative_numbers = true)]
     damping_ratio: Option<f64>,
-    /// A train (catalogue name or CSV file of offset,force): its steady state is the sum of its axles'
-    /// (docs/theory.md §10), extremes placed in the train's frame s = x − x_head.
+    /// A train (catalogue name or CSV file of offset,force) instead of the scenario's loads: its steady state is the
+    /// sum of its axles' (docs/theory.md §10), extremes placed in the train's frame s = x − x_head; the axle loads
+    /// as the beam carries them (`[load] carries`: one rail's half on a foundation).
     #[arg(long, value_name = "NAME|FILE")]
     train: Option<String>,
     /// Output format.
@@ -85,10 +87,29 @@ pub fn run(args: &AnalyticArgs) -> Result<()> {
             return Err(study::error::invalid("--speed", "absent", "give --speed V or --speeds A:B:STEP").into());
         }
     };
+    if scenario.vehicle.is_some() {
+        return Err(study::error::invalid(
+            "vehicle",
+            "given",
+            "the closed-form steady state takes moving forces, not vehicles: drop [vehicle] (the train's axles, or the \
+             single load, are used) or use `frictrack run`",
+        )
+        .into());
+    }
+    // The scenario's train (or --train), as the beam carries it; None for the single load.
     let train = match &args.train {
         Some(name) => Some(study::trains::named_or_file(name, case.load, "--train")?),
-        None => None,
-    };
+        None => study::trains::resolve(&scenario.load)?,
+    }
+    .map(|t| scenario.on_the_beam(t));
+    if let Some(t) = train.as_ref().filter(|t| !t.patches.is_empty()) {
+        return Err(study::error::invalid(
+            "load.patches",
+            t.patches.len(),
+            "the closed-form steady state takes axles only: give the train as axles, or use `frictrack run`",
+        )
+        .into());
+    }
     let extremes = |v: f64| -> Result<fem_beam::reference::SteadyExtremes> {
         Ok(match &train {
             Some(t) => inf.train_steady_state(v, t)?.extremes(),
@@ -125,7 +146,14 @@ pub fn run(args: &AnalyticArgs) -> Result<()> {
                 case.beam.mass_per_length(),
                 foundation.stiffness / 1e3,
                 match &train {
-                    Some(t) => format!("train {} ({} axles, {:.3} m)", t.name, t.axles.len(), t.length()),
+                    Some(t) => format!(
+                        "train {} ({} axles, {:.3} m, {:.1} kN on the beam: {})",
+                        t.name,
+                        t.axles.len(),
+                        t.length(),
+                        t.total_force() / 1e3,
+                        scenario.axle_share().describe()
+                    ),
                     None => format!("F = {:.1} kN", case.load / 1e3),
                 },
                 foundation.damping / inf.critical_damping(),

@@ -14,7 +14,8 @@ use study::Scenario;
 /// Options of `frictrack reference`.
 #[derive(Debug, Args)]
 pub struct ReferenceArgs {
-    /// Scenario file (its beam, foundation, mesh, supports and load force); without it, the reference case.
+    /// Scenario file (its beam, foundation, mesh, supports and load force); without it, the reference case. A
+    /// scenario whose loads are a train or vehicles is refused: this checks one load at mid-span.
     scenario: Option<PathBuf>,
     /// Number of beam elements (default: the scenario's; the reference case has 200 on 200 m).
     #[arg(long, allow_negative_numbers = true)]
@@ -60,6 +61,25 @@ pub fn run(args: &ReferenceArgs) -> Result<()> {
     };
     if let Some(elements) = args.elements {
         scenario.mesh.elements = elements;
+    }
+    // One load at mid-span against its closed form: a train or vehicles cannot be expressed, and using the single
+    // load's force instead would silently answer another question.
+    let load = &scenario.load;
+    let (field, value) = match (&scenario.vehicle, &load.train, load.axles.len(), load.patches.len()) {
+        (Some(_), _, _, _) => ("vehicle", "given".to_string()),
+        (None, Some(train), _, _) => ("load.train", train.clone()),
+        (None, None, axles, _) if axles > 0 => ("load.axles", format!("{axles} axles")),
+        (None, None, _, patches) if patches > 0 => ("load.patches", format!("{patches} patches")),
+        _ => ("", String::new()),
+    };
+    if !field.is_empty() {
+        return Err(study::error::invalid(
+            field,
+            value,
+            "`frictrack reference` checks one load of [load] force at mid-span against its closed form; for this \
+             scenario's loads use `frictrack analytic SCENARIO --speed V` (a train's steady state) or `frictrack run`",
+        )
+        .into());
     }
     let case = scenario.reference_case()?;
     let model = case.model()?;

@@ -92,6 +92,9 @@ pub struct RunReport {
     load: f64,
     #[serde(skip_serializing_if = "Option::is_none")]
     train: Option<crate::trains::TrainSummary>,
+    /// With a train: what the beam carries of its axles (`[load] carries`), by which the train's forces were scaled.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    axle_share: Option<AxleShareReport>,
     critical_speed: Option<f64>,
     damping_ratio: f64,
     devices: usize,
@@ -136,6 +139,18 @@ pub struct RunReport {
     wall_time: f64,
     #[serde(skip_serializing_if = "Option::is_none")]
     vehicles: Option<study::vehicle_output::VehicleReport>,
+}
+
+/// What the beam carries of a train's axles.
+#[derive(Debug, Serialize)]
+struct AxleShareReport {
+    /// `one-rail` or `whole-axle`.
+    carries: &'static str,
+    /// The factor on the axle loads (½ or 1).
+    factor: f64,
+    /// In words.
+    #[serde(skip)]
+    meaning: &'static str,
 }
 
 /// Steps of the run solved by one fallback solver (the run's solver failed on them).
@@ -282,6 +297,10 @@ fn report(scenario: &Scenario, case: &Case, result: &RunResult, wall_time: f64) 
         speed: settings.moving.speed,
         load: settings.moving.force,
         train: settings.moving.train.as_ref().map(crate::trains::TrainSummary::of),
+        axle_share: settings.moving.train.as_ref().filter(|t| t.name != "single").map(|_| {
+            let share = scenario.axle_share();
+            AxleShareReport { carries: share.name(), factor: share.factor(), meaning: share.describe() }
+        }),
         critical_speed: critical,
         damping_ratio: foundation.damping_ratio(case.model.beam()),
         devices: device_positions.len(),
@@ -342,12 +361,13 @@ fn load_description(r: &RunReport) -> String {
             format!("{} vehicle{plural} ({}) weighing {:.1} kN", v.bodies.len(), v.bodies[0].name, total / 1e3)
         }
         (None, Some(t)) => format!(
-            "train {} ({} axles, {} patches, {:.3} m, {:.1} kN)",
+            "train {} ({} axles, {} patches, {:.3} m, {:.1} kN on the beam{})",
             t.name,
             t.axles,
             t.patches,
             t.length,
-            t.total_force / 1e3
+            t.total_force / 1e3,
+            r.axle_share.as_ref().map_or(String::new(), |s| format!(": {}", s.meaning))
         ),
         (None, None) => format!("load {:.1} kN", r.load / 1e3),
     }

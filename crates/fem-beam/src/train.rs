@@ -111,6 +111,16 @@ impl Train {
         axles.chain(patches).fold(0.0, f64::max)
     }
 
+    /// The same train with every axle force and patch intensity times `factor` (one rail's share of a train given
+    /// per axle: ½).
+    pub fn scaled(&self, factor: f64) -> Self {
+        Self {
+            name: self.name.clone(),
+            axles: self.axles.iter().map(|a| Axle { offset: a.offset, force: a.force * factor }).collect(),
+            patches: self.patches.iter().map(|p| Patch { intensity: p.intensity * factor, ..*p }).collect(),
+        }
+    }
+
     /// Σ P_i + Σ q_j ℓ_j (N): the train's whole weight.
     pub fn total_force(&self) -> f64 {
         self.axles.iter().map(|a| a.force).sum::<f64>()

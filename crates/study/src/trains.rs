@@ -35,10 +35,11 @@ pub fn resolve(load: &LoadSection) -> Result<Option<Train>> {
     Ok(Some(train))
 }
 
-/// A catalogue train (`single` takes `single_force`), else a CSV file of axles; errors name `field`.
+/// A catalogue train (`single` takes `single_force`; names in any case, `HSLM-A1` is `hslm-a1`), else a CSV file of
+/// axles; errors name `field`.
 pub fn named_or_file(name: &str, single_force: f64, field: &str) -> Result<Train> {
-    if Train::catalogue().iter().any(|n| n == name) {
-        return Ok(Train::named(name, single_force)?);
+    if let Some(known) = Train::catalogue().into_iter().find(|n| n.eq_ignore_ascii_case(name)) {
+        return Ok(Train::named(&known, single_force)?);
     }
     let path = std::path::Path::new(name);
     if path.extension().is_some_and(|e| e.eq_ignore_ascii_case("csv")) || path.exists() {

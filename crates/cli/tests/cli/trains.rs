@@ -127,3 +127,40 @@ fn a_closed_pipe_ends_the_command_quietly() {
     assert!(!stderr.contains("panicked"), "{stderr}");
     std::fs::remove_dir_all(&folder).unwrap();
 }
+
+/// `analytic SCENARIO` takes the scenario's train as the beam carries it (one rail's half of each HSLM-A1 axle on
+/// the reference track): the same as `--train hslm-a1`, and half the deflection of whole axles (the steady state is
+/// linear in the loads); `reference` refuses a train (it checks one load at mid-span), naming the key; catalogue
+/// names are taken in any case.
+#[test]
+fn analytic_takes_the_scenarios_train_and_reference_refuses_it() {
+    let folder = std::env::temp_dir().join(format!("frictrack-scenario-train-{}", std::process::id()));
+    std::fs::create_dir_all(&folder).unwrap();
+    let write = |name: &str, text: &str| {
+        let path = folder.join(name);
+        std::fs::write(&path, text).unwrap();
+        path.to_str().unwrap().to_string()
+    };
+    let rail = write("rail.toml", "[load]\ntrain = \"HSLM-A1\"\n[foundation]\ndamping_ratio = 0.05\n");
+    let whole = write(
+        "whole.toml",
+        "[load]\ntrain = \"hslm-a1\"\ncarries = \"whole-axle\"\n[foundation]\ndamping_ratio = 0.05\n",
+    );
+    let deflection = |args: &[&str]| {
+        let v = json(&frictrack(&[&["analytic"], args, &["--speed", "100", "--format", "json"]].concat()));
+        v["max_downward_deflection"].as_f64().unwrap()
+    };
+    let from_file = deflection(&[&rail]);
+    let by_flag = deflection(&["--train", "HSLM-A1", "--damping-ratio", "0.05"]);
+    let whole_axles = deflection(&[&whole]);
+    assert_eq!(from_file, by_flag);
+    assert!((whole_axles / from_file - 2.0).abs() < 1e-12, "{whole_axles} vs {from_file}");
+    // Not the single 83.4 kN load the scenario's train replaces.
+    let single = deflection(&["--damping-ratio", "0.05"]);
+    assert!(from_file > 1.5 * single, "{from_file} vs {single}");
+    let out = frictrack(&["reference", &rail]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("load.train = HSLM-A1") && stderr.contains("frictrack analytic"), "{stderr}");
+    std::fs::remove_dir_all(&folder).unwrap();
+}

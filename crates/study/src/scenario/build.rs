@@ -183,10 +183,21 @@ impl Scenario {
         Ok(interactions)
     }
 
+    /// What the beam carries of a train's axles ([`LoadSection::share_on`] for this scenario's foundation).
+    pub fn axle_share(&self) -> crate::scenario::AxleShare {
+        self.load.share_on(self.foundation.stiffness)
+    }
+
+    /// `train` as the beam carries it: its axle loads times the [`Scenario::axle_share`] factor (the catalogue's
+    /// `single` is the beam's own load, never scaled).
+    pub fn on_the_beam(&self, train: fem_beam::Train) -> fem_beam::Train {
+        if train.name == "single" { train } else { train.scaled(self.axle_share().factor()) }
+    }
+
     /// Run settings for a load speed `speed` (m/s), with the train resolved ([`crate::trains::resolve`]) but not yet
     /// validated (see [`Scenario::build`]).
     pub fn run_settings(&self, speed: f64) -> Result<RunSettings> {
-        let train = crate::trains::resolve(&self.load)?;
+        let train = crate::trains::resolve(&self.load)?.map(|t| self.on_the_beam(t));
         let i = &self.integration;
         let initial = match (i.steady_start, i.static_start) {
             (Some(_), Some(x)) => {

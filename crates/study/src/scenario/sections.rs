@@ -145,11 +145,68 @@ pub struct LoadSection {
     /// `[[load.patches]]`: uniform load patches of the train.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub patches: Vec<PatchSection>,
+    /// What the beam carries of a train's axle loads (and patches): one rail half of each, a deck all of it.
+    /// Default by the model ([`LoadSection::share_on`]): a beam on a foundation is a rail, one without a deck.
+    /// The single load `force` is the beam's own and never scaled.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub carries: Option<AxleShare>,
 }
 
 impl Default for LoadSection {
     fn default() -> Self {
-        Self { force: uic60_on_soft_soil().load, speed: 200.0, train: None, axles: Vec::new(), patches: Vec::new() }
+        Self {
+            force: uic60_on_soft_soil().load,
+            speed: 200.0,
+            train: None,
+            axles: Vec::new(),
+            patches: Vec::new(),
+            carries: None,
+        }
+    }
+}
+
+/// What the modelled beam carries of a train's axle loads (docs/theory.md §10).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum AxleShare {
+    /// The beam is one rail of the track: half of each axle (the reference case's 83.4 kN is half of a 166.8 kN
+    /// axle).
+    OneRail,
+    /// The beam carries whole axles: a bridge deck, or a track modelled as one beam for both rails.
+    WholeAxle,
+}
+
+impl AxleShare {
+    /// The factor on the axle loads: ½ or 1.
+    pub fn factor(self) -> f64 {
+        match self {
+            AxleShare::OneRail => 0.5,
+            AxleShare::WholeAxle => 1.0,
+        }
+    }
+
+    /// The name in scenario files and reports: `one-rail` or `whole-axle`.
+    pub fn name(self) -> &'static str {
+        match self {
+            AxleShare::OneRail => "one-rail",
+            AxleShare::WholeAxle => "whole-axle",
+        }
+    }
+
+    /// What it means, for reports.
+    pub fn describe(self) -> &'static str {
+        match self {
+            AxleShare::OneRail => "one rail carries half of each axle",
+            AxleShare::WholeAxle => "the beam carries whole axles",
+        }
+    }
+}
+
+impl LoadSection {
+    /// What the beam carries of the axles: `carries` if given, else by the model — a rail (one rail's half) on a
+    /// foundation of stiffness `foundation_stiffness` > 0, a deck (whole axles) without one.
+    pub fn share_on(&self, foundation_stiffness: f64) -> AxleShare {
+        self.carries.unwrap_or(if foundation_stiffness > 0.0 { AxleShare::OneRail } else { AxleShare::WholeAxle })
     }
 }
 
