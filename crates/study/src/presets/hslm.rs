@@ -10,13 +10,13 @@
 //! period at the lowest speed, and says so. Acceleration limits of EN 1990 A2.4.4.2.1 (3.5 m/s² for a ballasted deck)
 //! are drawn for spans only: on a track the "deck" is the rail.
 
-use super::curves::sweep_curves;
+use super::hslm_figures::interpolate;
 use super::{Resolution, StudyData, blank, mean_iterations, with_devices};
 use crate::diagnostics::{deck_frequency, resolving_advance};
 use crate::error::Result;
 use crate::number::row;
 use crate::scenario::Scenario;
-use crate::sweep::{CriticalSpeed, Runner, SweepPoint};
+use crate::sweep::{CriticalSpeed, Metric, RefinedPeak, Runner, SweepPoint, refine_maximum};
 use fem_beam::train::HSLM_A;
 use fem_beam::{BeamModel, Train};
 use serde_json::{Value, json};
@@ -35,6 +35,10 @@ const MODES: usize = 3;
 const MAX_ORDER: usize = 20;
 /// The trains: HSLM-A1 … A10.
 pub(super) const TRAINS: usize = HSLM_A.len();
+/// Samples of the bracket around each sampled maximum before golden section ([`refine_maximum`]): the largest
+/// acceleration over the nodes has two peaks 0.7 m/s apart at HSLM-A3's resonance on the example deck, which
+/// golden section alone may tell apart wrongly (7.76 instead of 7.91 m/s²).
+const PEAK_SCAN: usize = 7;
 
 /// Coach length D (m) of HSLM-A`k`, k = 1 … 10.
 pub(super) fn coach_length(k: usize) -> f64 {
@@ -164,10 +168,15 @@ pub(super) struct TrainCurve {
     pub(super) train: usize,
     /// 0 = no friction, 1 = the friction set-up.
     pub(super) friction: usize,
-    /// The sweep.
+    /// The sweep: the study's speeds and this train's resonance speeds f₁·D/i inside the range, in increasing speed.
     pub(super) points: Vec<SweepPoint>,
     /// The refined critical speed of the max downward deflection.
     pub(super) critical: CriticalSpeed,
+    /// The refined peak of the max acceleration.
+    pub(super) acceleration: RefinedPeak,
+    /// The sweep and both refinements' runs, in increasing speed: what the figures draw, so that every refined
+    /// peak sits on its curve.
+    pub(super) drawn: Vec<SweepPoint>,
     /// Largest static downward deflection of the train over its crossing (m).
     pub(super) static_max: f64,
     /// Resonance speeds inside the swept range.
@@ -178,11 +187,6 @@ impl TrainCurve {
     /// The refined peak of the max downward deflection over the train's static maximum.
     pub(super) fn peak_amplification(&self) -> f64 {
         self.critical.max_downward_deflection / self.static_max
-    }
-
-    /// The sampled point of the largest max acceleration.
-    pub(super) fn acceleration_peak(&self) -> &SweepPoint {
-        self.points.iter().max_by(|a, b| a.max_acceleration.total_cmp(&b.max_acceleration)).expect("speeds")
     }
 }
 
@@ -198,6 +202,8 @@ pub(super) struct Results {
     pub(super) acceleration_limit: Option<f64>,
     /// The load advance used (m).
     pub(super) load_advance: f64,
+    /// Refinement tolerance (m/s): golden section stops on a bracket this wide.
+    pub(super) tolerance: f64,
     /// The nodes the extremes are taken over (m), if not all.
     pub(super) extremes_nodes: Option<[f64; 2]>,
 }
@@ -221,22 +227,23 @@ impl Results {
         self.set(friction).max_by(by_peak).expect("ten trains")
     }
 
-    /// The curve and sampled point of the largest max acceleration of a friction set-up.
-    pub(super) fn acceleration_critical(&self, friction: usize) -> (&TrainCurve, &SweepPoint) {
-        let peak = |c: &TrainCurve| c.acceleration_peak().max_acceleration;
-        let curve = self.set(friction).max_by(|a, b| peak(a).total_cmp(&peak(b))).expect("ten trains");
-        (curve, curve.acceleration_peak())
+    /// The curve with the largest refined peak of the max acceleration of a friction set-up.
+    pub(super) fn acceleration_critical(&self, friction: usize) -> &TrainCurve {
+        let peak = |c: &&TrainCurve| c.acceleration.value;
+        self.set(friction).max_by(|a, b| peak(a).total_cmp(&peak(b))).expect("ten trains")
     }
 
-    /// At each sampled speed, the largest value over the ten trains and the train giving it.
-    pub(super) fn envelope(&self, friction: usize, value: fn(&SweepPoint) -> f64) -> Vec<(f64, f64, usize)> {
+    /// The envelope of `value` over the ten trains of a friction set-up: at every speed any curve drew (the sweep
+    /// and the refinements' runs), the largest of the trains' curves there (each linearly interpolated between its
+    /// own speeds), so that it passes through every refined peak.
+    pub(super) fn envelope(&self, friction: usize, value: fn(&SweepPoint) -> f64) -> Vec<(f64, f64)> {
         let curves: Vec<&TrainCurve> = self.set(friction).collect();
-        (0..curves[0].points.len())
-            .map(|i| {
-                let best = curves.iter().max_by(|a, b| value(&a.points[i]).total_cmp(&value(&b.points[i])));
-                let best = best.expect("ten trains");
-                (best.points[i].speed, value(&best.points[i]), best.train)
-            })
+        let mut speeds: Vec<f64> = curves.iter().flat_map(|c| c.drawn.iter().map(|p| p.speed)).collect();
+        speeds.sort_by(f64::total_cmp);
+        speeds.dedup();
+        speeds
+            .into_iter()
+            .map(|v| (v, curves.iter().map(|c| interpolate(&c.drawn, v, value)).fold(f64::NEG_INFINITY, f64::max)))
             .collect()
     }
 
@@ -271,7 +278,7 @@ impl Results {
             .curves
             .iter()
             .map(|c| {
-                let peak = c.acceleration_peak();
+                let a = &c.acceleration;
                 let text = if c.critical.is_interior() {
                     format!(
                         "critical speed {:.1} m/s ({:.0} km/h), peak {} (DAF {:.3})",
@@ -283,13 +290,14 @@ impl Results {
                 } else {
                     c.critical.describe()
                 };
+                let bound = if a.is_interior() { "" } else { " (at an end of the speed range: a bound)" };
                 lines.push(format!(
-                    "HSLM-A{} (D = {} m), {}: {text}; max acceleration {:.3} m/s² at {:.0} km/h",
+                    "HSLM-A{} (D = {} m), {}: {text}; max acceleration {:.3} m/s² at {:.1} km/h{bound}",
                     c.train,
                     coach_length(c.train),
                     self.friction_label(c.friction),
-                    peak.max_acceleration,
-                    peak.speed * KMH
+                    a.value,
+                    a.speed * KMH
                 ));
                 let resonances: Vec<Value> = c
                     .resonances
@@ -305,8 +313,11 @@ impl Results {
                     "critical_speed_location": c.critical.location,
                     "peak_max_downward_deflection": c.critical.max_downward_deflection,
                     "peak_dynamic_amplification": c.peak_amplification(),
-                    "peak_max_acceleration_sampled": peak.max_acceleration,
-                    "peak_acceleration_speed": peak.speed,
+                    "peak_max_acceleration": a.value,
+                    "peak_acceleration_speed": a.speed,
+                    "peak_acceleration_location": a.location,
+                    "peak_max_acceleration_sampled": a.sweep_maximum.1,
+                    "refinement_runs": c.drawn.len() - c.points.len(),
                     "resonance_speeds": resonances,
                 })
             })
@@ -314,10 +325,11 @@ impl Results {
         let envelopes: Vec<Value> = (0..2)
             .map(|friction| {
                 let c = self.critical(friction);
-                let (a, p) = self.acceleration_critical(friction);
+                let a = self.acceleration_critical(friction);
+                let p = &a.acceleration;
                 lines.push(format!(
                     "{}, envelope of the ten trains: HSLM-A{} at {:.1} m/s ({:.0} km/h), {} (DAF {:.3}){}; max \
-                     acceleration {:.3} m/s² from HSLM-A{} at {:.0} km/h",
+                     acceleration {:.3} m/s² from HSLM-A{} at {:.1} km/h{}",
                     self.friction_label(friction),
                     c.train,
                     c.critical.speed,
@@ -325,9 +337,10 @@ impl Results {
                     millimetres(c.critical.max_downward_deflection),
                     c.peak_amplification(),
                     if c.critical.is_interior() { "" } else { ", at an end of the speed range: a bound" },
-                    p.max_acceleration,
+                    p.value,
                     a.train,
-                    p.speed * KMH
+                    p.speed * KMH,
+                    if p.is_interior() { "" } else { " (at an end of the speed range: a bound)" },
                 ));
                 json!({
                     "friction": friction_name(friction),
@@ -338,12 +351,23 @@ impl Results {
                     "dynamic_amplification": c.peak_amplification(),
                     "acceleration_train": format!("hslm-a{}", a.train),
                     "acceleration_speed": p.speed,
-                    "peak_max_acceleration": p.max_acceleration,
-                    "acceleration_over_limit": self.acceleration_limit.map(|l| p.max_acceleration / l),
+                    "acceleration_location": p.location,
+                    "peak_max_acceleration": p.value,
+                    "acceleration_over_limit": self.acceleration_limit.map(|l| p.value / l),
                 })
             })
             .collect();
+        let refinement = format!(
+            "every maximum (deflection and acceleration, per train and the envelopes) is refined on fresh runs around \
+             its sampled maximum: {PEAK_SCAN} samples of the bracket between the neighbouring speeds, then golden \
+             section to {:.3} m/s ({:.2} km/h); the speeds include each train's resonance speeds f₁·D/i",
+            self.tolerance,
+            self.tolerance * KMH
+        );
+        lines.push(refinement.clone());
         let summary = json!({
+            "refinement": refinement,
+            "refinement_tolerance": self.tolerance,
             "friction_setup": self.friction,
             "natural_frequencies": self.frequencies,
             "load_advance": self.load_advance,
@@ -385,30 +409,62 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
             scenarios.push((vec![("train".to_string(), k as f64), ("friction".to_string(), f as f64)], s));
         }
     }
-    let swept = sweep_curves(scenarios, &speeds, runner)?;
     let case = base.build()?;
-    let advance = base.integration.load_advance;
-    let statics = runner.silent().map(&(1..=TRAINS).collect::<Vec<_>>(), |&k| {
-        let nodes = case.settings.record.extremes_nodes;
-        Ok(track::statics::static_envelope(&case.model, &Train::hslm_a(k), advance, nodes)?.max_downward)
-    })?;
     // A span has natural frequencies that trains excite at f_j·D/i; a track on a Winkler foundation has none (its FE
     // modes crowd at the cut-off frequency, an artefact of its finite length), and loads of constant magnitude
     // below v_cr radiate no waves: with absorbing zones its curves show no such resonance.
     let span = deck_frequency(&case.model).is_some();
     let frequencies = if span { natural_frequencies(&case.model) } else { None };
     let range = (speeds[0], speeds[speeds.len() - 1]);
-    let runs = swept.runs;
-    let curves = swept
-        .points
+    let train_of = |curve: usize| curve % TRAINS + 1;
+    let resonances_of =
+        |train: usize| frequencies.as_deref().map_or_else(Vec::new, |f| resonances(f, coach_length(train), range));
+    let cases = scenarios.iter().map(|(_, s)| s.build()).collect::<Result<Vec<_>>>()?;
+    // Each curve runs the common speeds and its train's resonance speeds f₁·D/i, where its peaks are.
+    let grids: Vec<Vec<f64>> = (0..cases.len())
+        .map(|c| {
+            let mut grid = speeds.clone();
+            grid.extend(resonances_of(train_of(c)).iter().filter(|r| r.mode == 1).map(|r| r.speed));
+            grid.sort_by(f64::total_cmp);
+            grid.dedup();
+            grid
+        })
+        .collect();
+    let pairs: Vec<(usize, f64)> = grids.iter().enumerate().flat_map(|(c, g)| g.iter().map(move |&v| (c, v))).collect();
+    let mut flat = runner.map(&pairs, |&(c, v)| runner.point(&cases[c], v))?.into_iter();
+    let points: Vec<Vec<SweepPoint>> = grids.iter().map(|g| flat.by_ref().take(g.len()).collect()).collect();
+    let tolerance = 0.02 * (speeds[1] - speeds[0]);
+    let ids: Vec<usize> = (0..cases.len()).collect();
+    let refined = runner.silent().map(&ids, |&c| {
+        let refine = |metric| refine_maximum(&cases[c], &points[c], metric, (tolerance, PEAK_SCAN), runner);
+        Ok((refine(Metric::MaxDownwardDeflection)?, refine(Metric::MaxAcceleration)?))
+    })?;
+    let advance = base.integration.load_advance;
+    let statics = runner.silent().map(&(1..=TRAINS).collect::<Vec<_>>(), |&k| {
+        let nodes = case.settings.record.extremes_nodes;
+        let train = base.on_the_beam(Train::hslm_a(k));
+        Ok(track::statics::static_envelope(&case.model, &train, advance, nodes)?.max_downward)
+    })?;
+    let runs = pairs.len() + refined.iter().map(|(d, a)| d.evaluations.len() + a.evaluations.len()).sum::<usize>();
+    let curves = points
         .into_iter()
-        .zip(swept.critical)
+        .zip(refined)
         .enumerate()
-        .map(|(i, (points, critical))| {
-            let train = i % TRAINS + 1;
-            let resonances =
-                frequencies.as_deref().map_or_else(Vec::new, |f| resonances(f, coach_length(train), range));
-            TrainCurve { train, friction: i / TRAINS, points, critical, static_max: statics[train - 1], resonances }
+        .map(|(i, (points, (deflection, acceleration)))| {
+            let train = train_of(i);
+            let mut drawn = points.clone();
+            drawn.extend(deflection.evaluations.iter().chain(&acceleration.evaluations).cloned());
+            drawn.sort_by(|a, b| a.speed.total_cmp(&b.speed));
+            TrainCurve {
+                train,
+                friction: i / TRAINS,
+                points,
+                critical: deflection.into(),
+                acceleration,
+                drawn,
+                static_max: statics[train - 1],
+                resonances: resonances_of(train),
+            }
         })
         .collect();
     let results = Results {
@@ -417,6 +473,7 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
         frequencies,
         acceleration_limit: span.then_some(BALLASTED_DECK_LIMIT),
         load_advance: advance,
+        tolerance,
         extremes_nodes: base.output.extremes_nodes,
     };
     let (summary, lines) = results.summary();

@@ -1,11 +1,11 @@
 //! The figures of the HSLM study ([`super::hslm`]), speeds in km/h as the field reads them: per friction set-up the
-//! ten trains' max downward deflection and max acceleration (a sequential palette, HSLM-A1 dark to A10 light, with
-//! each train's resonance speeds f₁·D/i marked on its curve), and the envelopes over the trains with and without
+//! ten trains' max downward deflection and max acceleration (seven colours, solid then dashed, with each train's
+//! resonance speeds f₁·D/i marked on its curve), and the envelopes over the trains with and without
 //! friction, the critical train and speed marked, the static envelope and — on a span — the EN 1990 acceleration
 //! limit drawn for reference.
 
-use super::hslm::{KMH, Results, TRAINS, TrainCurve, coach_length, millimetres};
-use crate::plot::{Mark, Palette, PlotSpec, Series, Stroke};
+use super::hslm::{KMH, Results, TrainCurve, coach_length, millimetres};
+use crate::plot::{Mark, PlotSpec, Series, Stroke};
 use crate::sweep::SweepPoint;
 
 const SPEED_AXIS: &str = "train speed v (km/h)";
@@ -23,11 +23,19 @@ fn acceleration(p: &SweepPoint) -> f64 {
 }
 
 /// `value` of the sweep linearly interpolated at `speed` (m/s) inside its range.
-fn interpolate(points: &[SweepPoint], speed: f64, value: fn(&SweepPoint) -> f64) -> f64 {
+pub(super) fn interpolate(points: &[SweepPoint], speed: f64, value: fn(&SweepPoint) -> f64) -> f64 {
     let i = points.partition_point(|p| p.speed < speed).clamp(1, points.len() - 1);
     let (a, b) = (&points[i - 1], &points[i]);
     let t = if b.speed > a.speed { (speed - a.speed) / (b.speed - a.speed) } else { 0.0 };
     value(a) + t * (value(b) - value(a))
+}
+
+/// The colour and stroke of HSLM-A`k`: ten trains in seven categorical colours (grey is kept for reference lines),
+/// solid for A1 … A7 and dashed for A8 … A10, so that no two trains look alike (a sequential palette made A5 … A8
+/// and A9/A10 indistinguishable).
+fn train_style(k: usize) -> (usize, Stroke) {
+    let colours = GREY;
+    ((k - 1) % colours, if k <= colours { Stroke::Solid } else { Stroke::Dashed })
 }
 
 /// A horizontal reference line at `y` across the figure's speed range.
@@ -57,14 +65,14 @@ impl Results {
                 &format!("HSLM-A1 … A10, {label}: max deflection vs speed"),
                 &self.axis(DEFLECTION_AXIS, "mm"),
                 friction,
-                (deflection_mm, true),
+                deflection_mm,
             ));
             plots.push(self.trains_figure(
                 &format!("hslm-acceleration{suffix}"),
                 &format!("HSLM-A1 … A10, {label}: max acceleration vs speed"),
                 &self.axis(ACCELERATION_AXIS, "m/s²"),
                 friction,
-                (acceleration, false),
+                acceleration,
             ));
         }
         plots.push(self.deflection_envelope());
@@ -72,36 +80,29 @@ impl Results {
         plots
     }
 
-    /// The ten trains of one friction set-up, one quantity, resonance speeds f₁·D/i marked on each curve; with
-    /// `refined`, the quantity is the max downward deflection in mm and the critical-speed refinement's runs are
-    /// drawn too.
+    /// The ten trains of one friction set-up, one quantity, resonance speeds f₁·D/i marked on each curve; each
+    /// curve draws the sweep and the refinements' runs, so that the refined peaks lie on it.
     fn trains_figure(
         &self,
         stem: &str,
         title: &str,
         y_label: &str,
         friction: usize,
-        (value, refined): (fn(&SweepPoint) -> f64, bool),
+        value: fn(&SweepPoint) -> f64,
     ) -> PlotSpec {
         let mut spec = PlotSpec::new(stem, title, SPEED_AXIS, y_label);
-        spec.palette = Palette::Sequential { count: TRAINS };
         for c in self.set(friction) {
-            let color = c.train - 1;
-            let mut points: Vec<(f64, f64)> = c.points.iter().map(|p| (p.speed * KMH, value(p))).collect();
-            if refined {
-                // The refinement's runs sit near the peak the coarse grid steps over: drawn with the sweep.
-                points.extend(c.critical.evaluations.iter().map(|&(v, w)| (v * KMH, w * 1e3)));
-                points.sort_by(|a, b| a.0.total_cmp(&b.0));
-            }
+            let (color, stroke) = train_style(c.train);
+            let points: Vec<(f64, f64)> = c.drawn.iter().map(|p| (p.speed * KMH, value(p))).collect();
             spec.series.push(Series {
                 label: Some(format!("HSLM-A{} (D = {} m)", c.train, coach_length(c.train))),
                 color,
-                stroke: Stroke::Solid,
+                stroke,
                 markers: true,
                 points,
             });
             for r in c.resonances.iter().filter(|r| r.mode == 1) {
-                spec.marks.push(Mark { color, point: (r.speed * KMH, interpolate(&c.points, r.speed, value)) });
+                spec.marks.push(Mark { color, point: (r.speed * KMH, interpolate(&c.drawn, r.speed, value)) });
             }
         }
         match (&self.frequencies, self.acceleration_limit) {
@@ -132,8 +133,9 @@ impl Results {
                 label: Some(self.friction_label(friction)),
                 color: friction,
                 stroke: Stroke::Solid,
-                markers: true,
-                points: self.envelope(friction, value).iter().map(|&(v, y, _)| (v * KMH, y)).collect(),
+                // The envelope passes through every run of every train: too many for markers.
+                markers: false,
+                points: self.envelope(friction, value).iter().map(|&(v, y)| (v * KMH, y)).collect(),
             });
             let (point, text) = critical(friction);
             spec.marks.push(Mark { color: friction, point });
@@ -160,23 +162,24 @@ impl Results {
         spec
     }
 
-    /// Envelopes of the max acceleration over the ten trains, the largest sampled value marked, and on a span the
+    /// Envelopes of the max acceleration over the ten trains, the largest refined peak marked, and on a span the
     /// EN 1990 limit for a ballasted deck.
     fn acceleration_envelope(&self) -> PlotSpec {
         let axis = self.axis(ACCELERATION_AXIS, "m/s²");
         let titles = ("hslm-envelope-acceleration", "HSLM-A1 … A10: envelope of the max acceleration", axis.as_str());
         let critical = |friction: usize| {
-            let (c, p) = self.acceleration_critical(friction);
+            let c = self.acceleration_critical(friction);
+            let p = &c.acceleration;
             let text = format!(
                 "{}: HSLM-A{} at {:.0} km/h, {:.2} m/s²",
                 self.friction_label(friction),
                 c.train,
                 p.speed * KMH,
-                p.max_acceleration
+                p.value
             );
-            ((p.speed * KMH, p.max_acceleration), text)
+            ((p.speed * KMH, p.value), text)
         };
-        let mut spec = self.envelope_figure(titles, acceleration, &critical, "largest sampled value");
+        let mut spec = self.envelope_figure(titles, acceleration, &critical, "refined peak");
         if let Some(limit) = self.acceleration_limit {
             spec.series.push(level(self, format!("EN 1990 limit {limit} m/s²"), GREY, limit));
         }

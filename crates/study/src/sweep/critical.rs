@@ -2,23 +2,11 @@
 //! below the sweep step by golden section on fresh runs — or, when that largest value lies at an end of the range,
 //! the bound the sweep gives (docs/theory.md §7).
 
-use super::golden::golden_section;
+use super::peak::{Metric, PeakLocation, RefinedPeak, refine_maximum};
 use super::{Runner, SweepPoint};
-use crate::error::{Result, invalid};
+use crate::error::Result;
 use crate::scenario::Case;
 use serde::Serialize;
-
-/// Where the largest max downward deflection of a sweep lies in its speed range.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum PeakLocation {
-    /// Inside the range: a critical speed, refined between the sweep's neighbours of the maximum.
-    Interior,
-    /// At the lowest speed: only a bound — the peak is at or below it.
-    LowerEnd,
-    /// At the highest speed: only a bound — the peak is at or above it.
-    UpperEnd,
-}
 
 /// The refined critical speed of a configuration, or the bound the sweep gives when its maximum lies at an end of
 /// the range.
@@ -72,55 +60,23 @@ impl CriticalSpeed {
 }
 
 /// Refine the sweep's maximum of the max downward deflection to `tolerance` (m/s) by golden section on fresh runs
-/// inside [v_{i−1}, v_{i+1}] around the sweep's best speed v_i. A maximum at the first or last speed is no critical
-/// speed: it is returned unrefined as a bound ([`PeakLocation::LowerEnd`] / [`PeakLocation::UpperEnd`]).
+/// inside [v_{i−1}, v_{i+1}] around the sweep's best speed v_i ([`refine_maximum`] without a scan). A maximum at the
+/// first or last speed is no critical speed: it is returned unrefined as a bound ([`PeakLocation::LowerEnd`] /
+/// [`PeakLocation::UpperEnd`]).
 pub fn critical_speed(case: &Case, sweep: &[SweepPoint], tolerance: f64, runner: &Runner) -> Result<CriticalSpeed> {
-    if sweep.len() < 3 {
-        return Err(invalid(
-            "speeds",
-            format!("{} speed(s)", sweep.len()),
-            "a critical speed needs a sweep of at least 3 speeds (an interior maximum)",
-        ));
+    Ok(refine_maximum(case, sweep, Metric::MaxDownwardDeflection, (tolerance, 0), runner)?.into())
+}
+
+impl From<RefinedPeak> for CriticalSpeed {
+    /// The critical speed of a refined peak of the max downward deflection.
+    fn from(peak: RefinedPeak) -> Self {
+        CriticalSpeed {
+            location: peak.location,
+            range: peak.range,
+            speed: peak.speed,
+            max_downward_deflection: peak.value,
+            sweep_maximum: peak.sweep_maximum,
+            evaluations: peak.evaluations.iter().map(|p| (p.speed, p.max_downward_deflection)).collect(),
+        }
     }
-    if !(tolerance.is_finite() && tolerance > 0.0) {
-        return Err(invalid("tolerance", tolerance, "must be finite and > 0 (m/s)"));
-    }
-    let best = (0..sweep.len())
-        .max_by(|&a, &b| sweep[a].max_downward_deflection.total_cmp(&sweep[b].max_downward_deflection))
-        .expect("non-empty");
-    let sweep_maximum = (sweep[best].speed, sweep[best].max_downward_deflection);
-    let range = (sweep[0].speed, sweep[sweep.len() - 1].speed);
-    let bound = |location| CriticalSpeed {
-        location,
-        range,
-        speed: sweep_maximum.0,
-        max_downward_deflection: sweep_maximum.1,
-        sweep_maximum,
-        evaluations: Vec::new(),
-    };
-    if best == 0 {
-        return Ok(bound(PeakLocation::LowerEnd));
-    }
-    if best == sweep.len() - 1 {
-        return Ok(bound(PeakLocation::UpperEnd));
-    }
-    let lo = sweep[best.saturating_sub(1)].speed;
-    let hi = sweep[(best + 1).min(sweep.len() - 1)].speed;
-    let mut evaluations = Vec::new();
-    let mut f = |v: f64| -> Result<f64> {
-        let w = runner.point(case, v)?.max_downward_deflection;
-        evaluations.push((v, w));
-        Ok(w)
-    };
-    let (speed, value) = golden_section(&mut f, lo, hi, tolerance, true)?;
-    // The refinement never reports less than the sweep found.
-    let (speed, max_downward_deflection) = if value >= sweep_maximum.1 { (speed, value) } else { sweep_maximum };
-    Ok(CriticalSpeed {
-        location: PeakLocation::Interior,
-        range,
-        speed,
-        max_downward_deflection,
-        sweep_maximum,
-        evaluations,
-    })
 }

@@ -10,9 +10,11 @@
 mod critical;
 mod golden;
 mod optimal_force;
+mod peak;
 
-pub use critical::{CriticalSpeed, PeakLocation, critical_speed};
+pub use critical::{CriticalSpeed, critical_speed};
 pub use optimal_force::{OptimalForce, log_spaced, optimal_device_force, refine_device_force, refine_from_scan};
+pub use peak::{Metric, PeakLocation, RefinedPeak, refine_maximum};
 
 use crate::error::{Result, StudyError, invalid};
 use crate::journal::Journal;
