@@ -16,8 +16,14 @@ pub struct AnalyticArgs {
     /// Scenario file (its beam, foundation and loads: the single load or its train, as the beam carries it); without
     /// it, the reference case.
     scenario: Option<PathBuf>,
-    /// Load speed (m/s).
-    #[arg(long, conflicts_with = "speeds", required_unless_present = "speeds", allow_negative_numbers = true)]
+    /// Load speed: m/s (`100`), or with a unit (`100m/s`, `360km/h`).
+    #[arg(
+        long,
+        conflicts_with = "speeds",
+        required_unless_present = "speeds",
+        allow_negative_numbers = true,
+        value_parser = crate::units::parse_speed
+    )]
     speed: Option<f64>,
     /// Speed range A:B:STEP (m/s) for a dynamic-amplification curve.
     #[arg(long, allow_negative_numbers = true)]
@@ -47,10 +53,12 @@ struct Point {
     amplification_upward: f64,
 }
 
-/// Parse `A:B:STEP` into the list of speeds A, A+STEP, … ≤ B (inclusive up to round-off).
+/// Parse `A:B:STEP` (m/s, or all three in km/h with `A:B:STEPkm/h`) into the list of speeds A, A+STEP, … ≤ B
+/// (inclusive up to round-off), in m/s.
 pub fn parse_range(text: &str) -> Result<Vec<f64>> {
     let bad = |allowed: &str| study::error::invalid("--speeds", text, allowed);
-    let parts: Vec<&str> = text.split(':').collect();
+    let (numbers, factor) = crate::units::split_speed_unit(text);
+    let parts: Vec<&str> = numbers.split(':').collect();
     if parts.len() != 3 {
         return Err(bad("expected A:B:STEP (m/s), e.g. 10:300:5").into());
     }
@@ -61,7 +69,7 @@ pub fn parse_range(text: &str) -> Result<Vec<f64>> {
         StudyError::InvalidField { path, allowed, .. } => bad(&format!("{}: {allowed}", &path["--speeds.".len()..])),
         other => other,
     })?;
-    let speeds = range.speeds();
+    let speeds: Vec<f64> = range.speeds().into_iter().map(|v| v * factor).collect();
     if speeds.len() > 1_000_000 {
         return Err(bad(&format!("gives {} speeds, at most 1 000 000 allowed", speeds.len())).into());
     }

@@ -16,6 +16,7 @@ mod study_cmd;
 mod sweep;
 mod track_profile;
 mod trains;
+mod units;
 
 use clap::{Parser, Subcommand, ValueEnum};
 use std::process::ExitCode;
@@ -107,7 +108,12 @@ fn main() -> ExitCode {
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(error) => {
-            eprintln!("error: {error:#}");
+            // An interruption's message says it all; its cause ("interrupted") would only repeat it.
+            if error_code(&error) == interrupt::EXIT_CODE {
+                eprintln!("error: {error}");
+            } else {
+                eprintln!("error: {error:#}");
+            }
             if let Some(hint) = hint(&error) {
                 eprintln!("hint: {hint}");
             }

@@ -2,6 +2,40 @@
 
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use std::io::IsTerminal;
+use std::time::Duration;
+
+/// Runs estimated to take longer than this (s) are announced with their size and estimate before they start.
+const ANNOUNCE_ABOVE: f64 = 10.0;
+
+/// Say on standard error what `runs` runs of this cost will take on `threads` threads, when that is long: the steps,
+/// the DOFs, the sections and wheels, and the estimate — so that nobody waits blind for a run of hours.
+pub fn announce_cost(cost: &study::cost::RunCost, runs: usize, threads: usize) {
+    let seconds = cost.seconds * runs as f64 / threads.max(1).min(runs.max(1)) as f64;
+    if seconds < ANNOUNCE_ABOVE {
+        return;
+    }
+    let size = format!(
+        "{:.0} steps over {} DOFs, {} friction sections, {} wheels",
+        cost.steps, cost.dofs, cost.sections, cost.wheels
+    );
+    let what =
+        if runs == 1 { format!("this run: {size}") } else { format!("{runs} runs of {size} on {threads} threads") };
+    eprintln!(
+        "{what}: estimated {} (within a factor of 2–3; Ctrl-C stops it, a progress bar follows on a terminal)",
+        duration(seconds)
+    );
+}
+
+/// A duration in the unit a reader wants: s, min or h.
+fn duration(seconds: f64) -> String {
+    if seconds < 120.0 {
+        format!("{seconds:.0} s")
+    } else if seconds < 7200.0 {
+        format!("{:.0} min", seconds / 60.0)
+    } else {
+        format!("{:.1} h", seconds / 3600.0)
+    }
+}
 
 /// A bar of `total` steps (or a spinner-like counter when the total is unknown, `None`), hidden unless standard
 /// error is a terminal and `quiet` is off.
@@ -35,5 +69,7 @@ pub fn steps_bar(total: u64, quiet: bool) -> ProgressBar {
     {
         bar.set_style(style.progress_chars("=> "));
     }
+    // Drawn from the start, the elapsed time ticking, also while the set-up and the first steps run.
+    bar.enable_steady_tick(Duration::from_millis(500));
     bar
 }

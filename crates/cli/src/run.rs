@@ -191,6 +191,9 @@ pub fn run(args: &RunArgs) -> Result<()> {
     let travel = (case.settings.start_position(), scenario.mesh.length + case.settings.moving.train_length());
     let requests = if args.out.is_some() { scenario.output.snapshots(travel) } else { Vec::new() };
     let steps = case.settings.step_count(scenario.mesh.length);
+    if !args.quiet {
+        crate::progress::announce_cost(&study::cost::RunCost::of(&case), 1, 1);
+    }
     let bar = crate::progress::steps_bar(steps as u64, args.quiet || args.format == Format::Json);
     let progress = |fraction: f64| bar.set_position((fraction * steps) as u64);
     let stop = Some(crate::interrupt::stop_flag());
@@ -198,6 +201,9 @@ pub fn run(args: &RunArgs) -> Result<()> {
     bar.finish_and_clear();
     let (result, snapshots) = crate::interrupt::explain(ran, None)?;
     let report = report(&scenario, &case, &result, start.elapsed().as_secs_f64())?;
+    for warning in study::plausibility::result_warnings(&case, &result) {
+        eprintln!("warning: {warning}");
+    }
     match args.format {
         Format::Json => println!("{}", serde_json::to_string_pretty(&report)?),
         Format::Text => print_text(&report),
@@ -401,7 +407,7 @@ fn print_text(r: &RunReport) {
     if let Some(v_cr) = r.critical_speed {
         println!(
             "  critical speed of the infinite track v_cr = {v_cr:.2} m/s; foundation damping ζ = {}",
-            r.damping_ratio
+            study::number::significant(r.damping_ratio, 12)
         );
     }
     match (r.devices, r.distributed_friction > 0.0) {

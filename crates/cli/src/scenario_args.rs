@@ -19,8 +19,8 @@ fn solver_parser() -> impl TypedValueParser<Value = SolverKind> {
 pub struct ScenarioArgs {
     /// Scenario file (TOML); without it, the reference case. Flags override the file.
     pub scenario: Option<PathBuf>,
-    /// Load speed (m/s).
-    #[arg(long, allow_negative_numbers = true)]
+    /// Load speed: m/s (`100`), or with a unit (`100m/s`, `360km/h`).
+    #[arg(long, allow_negative_numbers = true, value_parser = crate::units::parse_speed)]
     pub speed: Option<f64>,
     /// A train instead of the single load: a catalogue name (see `frictrack trains`) or a CSV file of offset,force
     /// lines (m behind the first axle, N).

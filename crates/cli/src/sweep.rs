@@ -77,6 +77,9 @@ pub fn run(args: &SweepArgs) -> Result<()> {
         eprintln!("resuming: {} finished runs in {}", j.resumed(), j.path().display());
     }
     let runner = crate::jobs::runner(args.jobs, args.quiet)?;
+    if !args.quiet {
+        crate::progress::announce_cost(&study::cost::RunCost::of(&case), speeds.len(), runner.threads());
+    }
     let bar = crate::progress::bar("sweep", Some(speeds.len() as u64), args.quiet);
     let progress = |done: usize| bar.set_position(done as u64);
     let runner =

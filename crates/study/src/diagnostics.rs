@@ -108,6 +108,7 @@ pub fn warnings(scenario: &Scenario, case: &Case) -> Vec<Warning> {
     out.extend(deck_resolution(case));
     out.extend(rigid_contact_damping(case));
     out.extend(articulated_cars(scenario, case));
+    out.extend(crate::plausibility::input_warnings(scenario, case));
     out
 }
 

@@ -7,12 +7,14 @@
 //! - [`journal`]: every finished run on disk at once, so that an interrupted sweep resumes where it stopped.
 //! - [`track_profile`]: a sample of a random rail profile with its periodogram against the target spectrum.
 
+pub mod cost;
 pub mod diagnostics;
 pub mod error;
 pub mod figures;
 pub mod journal;
 pub mod metrics;
 pub mod number;
+pub mod plausibility;
 pub mod plot;
 pub mod presets;
 pub mod run_output;

@@ -13,6 +13,16 @@ pub fn number(x: f64) -> String {
     }
 }
 
+/// `x` rounded to `digits` significant digits, as [`number`]: a value computed back from an input (a damping ratio
+/// from c_f = 2ζ√(k_f ρA)) reads as the input did, `0.1` rather than `0.09999999999999999`.
+pub fn significant(x: f64, digits: i32) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return number(x);
+    }
+    let scale = 10f64.powi(digits - 1 - x.abs().log10().floor() as i32);
+    number((x * scale).round() / scale)
+}
+
 /// A CSV row of numbers, each as [`number`], comma-separated (no newline).
 pub fn row(values: &[f64]) -> String {
     values.iter().map(|&x| number(x)).collect::<Vec<_>>().join(",")
@@ -30,6 +40,8 @@ mod tests {
             assert!(text.len() <= 24, "{text}");
         }
         assert_eq!(number(-0.0), "0");
+        assert_eq!(super::significant(0.09999999999999999, 12), "0.1");
+        assert_eq!(super::significant(205.5731234, 4), "205.6");
         assert_eq!(number(3.0), "3");
         assert_eq!(number(1e-20), "1e-20");
         assert_eq!(number(-2.5), "-2.5");

@@ -55,7 +55,8 @@ pub fn run_with_snapshots(
         other => other.into(),
     })?;
     let total = settings.step_count(case.model.mesh().length).max(1.0);
-    let every = ((total / 100.0).ceil() as usize).max(1);
+    // Every 0.1 % of the run: often enough for a run of hours, one call in a thousand steps.
+    let every = ((total / 1000.0).ceil() as usize).max(1);
     let result = crate::sweep::simulate_observed(case, settings, stop, &mut |view| {
         if view.step % every == 0 {
             progress(view.step as f64 / total);

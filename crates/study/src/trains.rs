@@ -64,6 +64,8 @@ pub fn read_csv(path: &std::path::Path) -> Result<Train> {
         return Err(invalid("load.train", path.display(), "train files are at most 4 MiB"));
     }
     let text = std::fs::read_to_string(path).map_err(io)?;
+    // Spreadsheets write a UTF-8 byte-order mark first: it is no part of the header.
+    let text = text.strip_prefix('\u{feff}').unwrap_or(&text);
     let mut axles = Vec::new();
     for (number, line) in text.lines().enumerate() {
         let line = line.split('#').next().unwrap_or("").trim();

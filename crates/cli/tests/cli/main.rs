@@ -1,5 +1,6 @@
 //! Runs the `frictrack` binary and checks its output and exit codes.
 
+mod absurd_inputs;
 mod bad_inputs;
 mod bridges;
 mod failures;

@@ -3,6 +3,7 @@
 
 use super::{Case, QuadratureKind, Scenario, SweepSection, fnv1a};
 use crate::error::{Result, StudyError, invalid};
+use crate::number::number;
 use fem_beam::{AbsorbingZones, BeamModel, Foundation, Mesh, Supports};
 use friction::{DeviceLayout, Devices, DistributedFriction, InteractionSet, Quadrature};
 use nscd::SolverSettings;
@@ -248,13 +249,13 @@ fn under(section: &str, error: StudyError) -> StudyError {
     use friction::FrictionError as R;
     match error {
         StudyError::Friction(R::InvalidField { field, value, allowed }) => {
-            invalid(&format!("{section}.{field}"), value, allowed)
+            invalid(&format!("{section}.{field}"), number(value), allowed)
         }
         StudyError::Friction(R::InvalidCount { field, value, allowed }) => {
             invalid(&format!("{section}.{field}"), value, allowed)
         }
         StudyError::Beam(F::InvalidField { field, value, allowed }) => {
-            invalid(&format!("{section}.{field}"), value, allowed)
+            invalid(&format!("{section}.{field}"), number(value), allowed)
         }
         StudyError::Beam(F::InvalidCount { field, value, allowed }) => {
             invalid(&format!("{section}.{field}"), value, allowed)
@@ -282,7 +283,7 @@ fn scenario_path(error: track::TrackError) -> StudyError {
                 "solver" => "integration.solver",
                 other => other,
             };
-            invalid(path, value, allowed)
+            invalid(path, number(value), allowed)
         }
         other => other.into(),
     }

@@ -104,9 +104,26 @@ impl RailSection {
                 IrregularitySection::Random { spectrum, band, seed, length } => {
                     let spectrum = Spectrum::from_name(spectrum).map_err(|e| rail_path(i, e))?;
                     let band = band.map_or(spectrum.default_band(), |[a, b]| (a, b));
-                    let length = length.unwrap_or(reach.max(band.1));
+                    let given = *length;
+                    let length = given.unwrap_or(reach.max(band.1));
                     let settings = RandomSettings { spectrum, band, length, seed: *seed };
-                    Profile::Random(RandomProfile::new(settings).map_err(|e| rail_path(i, e))?)
+                    Profile::Random(RandomProfile::new(settings).map_err(|e| match (given, e) {
+                        // The period was not given: it follows the band's longest wavelength (or the run's reach),
+                        // and the error belongs to what set it.
+                        (None, irregularity::IrregularityError::InvalidField { field, allowed, .. })
+                            if field == "length" =>
+                        {
+                            invalid(
+                                &format!("rail.irregularities[{i}].band"),
+                                format!("[{}, {}]", band.0, band.1),
+                                format!(
+                                    "sets the profile's period (length, not given) to {length} m, which {allowed}; \
+                                     narrow the band or give a shorter length"
+                                ),
+                            )
+                        }
+                        (_, e) => rail_path(i, e),
+                    })?)
                 }
             };
             profile.validate("rail").map_err(|e| rail_path(i, e))?;
@@ -132,6 +149,8 @@ fn read_profile(file: &str, index: usize) -> Result<Vec<(f64, f64)>> {
         return Err(invalid(&path, file, format!("is {size} bytes; at most {MAX_PROFILE_BYTES} are read")));
     }
     let text = std::fs::read_to_string(file).map_err(io)?;
+    // Spreadsheets write a UTF-8 byte-order mark first: it is no part of the header.
+    let text = text.strip_prefix('\u{feff}').unwrap_or(&text);
     let mut points = Vec::new();
     for (n, line) in text.lines().enumerate() {
         let line = line.trim();

@@ -287,7 +287,9 @@ impl VehicleSection {
                 unused("mass", self.mass.is_some())?;
                 unused("body_mass … wheel_mass", quarter.iter().any(Option::is_some))?;
                 unused("matrices", self.matrices.is_some())?;
-                Ok(self.rail_car.unwrap_or_default().car().vehicle()?)
+                // The car's fields live under [vehicle.rail_car]: errors name them there.
+                let car = self.rail_car.unwrap_or_default().car().vehicle();
+                car.map_err(|e| in_group(&format!("{path}.rail_car"), e.into()))
             }
             VehicleKind::Matrices => {
                 unused("mass", self.mass.is_some())?;
@@ -316,7 +318,7 @@ impl VehicleSection {
                     wheels: m.wheels.iter().map(|w| track::vehicle::Wheel { dof: w.dof, offset: w.offset }).collect(),
                     body: m.body,
                 };
-                vehicle.validate()?;
+                vehicle.validate().map_err(|e| in_group(&format!("{path}.matrices"), e.into()))?;
                 Ok(vehicle)
             }
         }
@@ -428,7 +430,7 @@ pub(crate) fn in_group(path: &str, error: StudyError) -> StudyError {
     };
     match error {
         StudyError::Stepping(nscd::NscdError::InvalidField { field, value, allowed }) => {
-            StudyError::InvalidField { path: rename(field), value: value.to_string(), allowed }
+            StudyError::InvalidField { path: rename(field), value: crate::number::number(value), allowed }
         }
         StudyError::InvalidField { path: field, value, allowed } => {
             StudyError::InvalidField { path: rename(&field), value, allowed }

@@ -133,6 +133,20 @@ impl RunSettings {
         if !(self.moving.speed.is_finite() && self.moving.speed > 0.0) {
             return Err(invalid("speed", self.moving.speed, "must be finite and > 0 (m/s)"));
         }
+        // Faster than the beam's bar wave speed √(E/ρ) (5.2 km/s in steel, 3.7 km/s in concrete) no beam theory holds,
+        // and the step h = Δx/v would shrink towards round-off: refused, not answered.
+        let beam = model.beam();
+        let bar_wave = (beam.youngs_modulus / beam.density).sqrt();
+        if self.moving.speed >= bar_wave {
+            return Err(invalid(
+                "speed",
+                self.moving.speed,
+                format!(
+                    "must be below the beam's bar wave speed √(E/ρ) = {bar_wave:.0} m/s: beyond it no beam theory \
+                     holds (railway speeds are below 200 m/s)"
+                ),
+            ));
+        }
         if !(self.moving.force.is_finite() && self.moving.force >= 0.0) {
             return Err(invalid("load", self.moving.force, "must be finite and ≥ 0 (N, acting downward)"));
         }
@@ -179,8 +193,9 @@ impl RunSettings {
                     "load_advance",
                     self.integration.load_advance,
                     format!(
-                        "must be ≤ {largest:.4} m at {} m/s with these vehicles: the wheel–rail contact mode at {:.0} Hz \
-                         needs at least π steps per period",
+                        "must be ≤ {largest:.4e} m at {} m/s with these vehicles: the wheel–rail contact mode at \
+                         {:.4e} Hz needs at least π steps per period (a stiffer contact needs a shorter step; check \
+                         vehicle.contact_stiffness or hertz_coefficient)",
                         self.moving.speed,
                         omega / std::f64::consts::TAU
                     ),
@@ -240,9 +255,11 @@ impl RunSettings {
         let steps = self.step_count(length);
         if steps > Self::MAX_STEPS as f64 {
             let h = self.integration.load_advance / self.moving.speed;
+            let travel = self.crossing_time(length) * self.moving.speed;
             let allowed = format!(
-                "gives {steps:.3e} time steps of {h:.3e} s; at most {} are allowed (shorten the run or lengthen the \
-                 load advance)",
+                "gives {steps:.3e} time steps of {h:.3e} s over the {travel:.4e} m the load travels (beam length \
+                 {length:.4e} m plus the train); at most {} are allowed: shorten the beam (mesh.length) or the run, \
+                 or lengthen the load advance",
                 Self::MAX_STEPS
             );
             return match self.integration.end_time {

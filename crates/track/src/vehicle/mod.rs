@@ -112,6 +112,20 @@ impl Vehicle {
                 return Err(invalid("vehicle.wheels.offset", w.offset, "must be finite and ≥ 0 (m)"));
             }
         }
+        // On a level rail every wheel must press with a share of the weight: a wheel the weight lifts would start
+        // in tension, which a unilateral contact cannot hold (an upward weight, or a wheel on the wrong side).
+        let (_, forces) = self.static_state(&vec![0.0; self.wheels.len()])?;
+        if let Some((i, &q)) = forces.iter().enumerate().find(|(_, q)| q.is_nan() || **q <= 0.0) {
+            return Err(invalid(
+                "vehicle.weight",
+                q,
+                format!(
+                    "gives wheel {} a static load of {q:.6e} N on a level rail: every wheel must press on the rail \
+                     (weights are gravity loads, upward positive: −m·g on a translation, N)",
+                    i + 1
+                ),
+            ));
+        }
         Ok(())
     }
 

@@ -1,0 +1,38 @@
+//! Speeds on the command line in the unit the user thinks in: m/s (the default, and the unit of every output) or
+//! km/h, written after the number (`--speed 360km/h`, `--speeds 140:420:20km/h`).
+
+/// The units a speed may carry, with their factor to m/s.
+const SPEED_UNITS: [(&str, f64); 2] = [("km/h", 1.0 / 3.6), ("m/s", 1.0)];
+
+/// `text` without a trailing speed unit, and the unit's factor to m/s (1 without a unit).
+pub fn split_speed_unit(text: &str) -> (&str, f64) {
+    let text = text.trim();
+    SPEED_UNITS
+        .iter()
+        .find_map(|&(unit, factor)| text.strip_suffix(unit).map(|number| (number.trim_end(), factor)))
+        .unwrap_or((text, 1.0))
+}
+
+/// A speed in m/s from `100`, `100m/s` or `360km/h` (clap's value parser of `--speed`).
+pub fn parse_speed(text: &str) -> Result<f64, String> {
+    let (number, factor) = split_speed_unit(text);
+    number
+        .parse::<f64>()
+        .map(|v| v * factor)
+        .map_err(|_| format!("`{text}` is not a speed: give m/s (`100`, `100m/s`) or km/h (`360km/h`)"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{parse_speed, split_speed_unit};
+
+    #[test]
+    fn speeds_in_m_per_s_and_km_per_h() {
+        assert_eq!(parse_speed("100"), Ok(100.0));
+        assert_eq!(parse_speed("100m/s"), Ok(100.0));
+        assert_eq!(parse_speed("360km/h"), Ok(100.0));
+        assert_eq!(parse_speed("360 km/h"), Ok(100.0));
+        assert!(parse_speed("fast").unwrap_err().contains("km/h"));
+        assert_eq!(split_speed_unit("140:420:20km/h"), ("140:420:20", 1.0 / 3.6));
+    }
+}
