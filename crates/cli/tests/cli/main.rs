@@ -3,6 +3,7 @@
 mod absurd_inputs;
 mod bad_inputs;
 mod bridges;
+mod examples;
 mod failures;
 mod run_out;
 mod track_profile;

@@ -97,7 +97,30 @@ impl Scenario {
         // A scenario that cannot be read is the user's input error (exit code 2), not a failure of the run.
         let text = std::fs::read_to_string(path)
             .map_err(|e| invalid("scenario file", path.display(), format!("cannot be read: {e}")))?;
-        Self::from_toml(&text, &path.display().to_string())
+        let mut scenario = Self::from_toml(&text, &path.display().to_string())?;
+        scenario.resolve_files(path.parent().unwrap_or(std::path::Path::new("")));
+        Ok(scenario)
+    }
+
+    /// Make the files a scenario names (a train CSV, profile tables) relative to `folder`, the scenario file's own,
+    /// where they are relative: a scenario reads the same from any working directory. Catalogue train names stay.
+    fn resolve_files(&mut self, folder: &std::path::Path) {
+        let beside = |file: &mut String| {
+            let path = std::path::Path::new(file.as_str());
+            if path.is_relative() && !folder.as_os_str().is_empty() {
+                *file = folder.join(path).to_string_lossy().into_owned();
+            }
+        };
+        if let Some(train) = self.load.train.as_mut()
+            && !fem_beam::Train::catalogue().iter().any(|n| n.eq_ignore_ascii_case(train))
+        {
+            beside(train);
+        }
+        for irregularity in &mut self.rail.irregularities {
+            if let rail::IrregularitySection::Table { file } = irregularity {
+                beside(file);
+            }
+        }
     }
 
     /// The scenario as TOML (all keys, defaults included).

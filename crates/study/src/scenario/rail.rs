@@ -152,6 +152,7 @@ fn read_profile(file: &str, index: usize) -> Result<Vec<(f64, f64)>> {
     // Spreadsheets write a UTF-8 byte-order mark first: it is no part of the header.
     let text = text.strip_prefix('\u{feff}').unwrap_or(&text);
     let mut points = Vec::new();
+    let mut header = false;
     for (n, line) in text.lines().enumerate() {
         let line = line.trim();
         if line.is_empty() || line.starts_with('#') {
@@ -161,7 +162,8 @@ fn read_profile(file: &str, index: usize) -> Result<Vec<(f64, f64)>> {
         match values.as_slice() {
             [x, r] => match (x.parse::<f64>(), r.parse::<f64>()) {
                 (Ok(x), Ok(r)) => points.push((x, r)),
-                _ if points.is_empty() && n == 0 => {} // a header line
+                // One header line before the first point (after comments, if any).
+                _ if points.is_empty() && !header => header = true,
                 _ => return Err(invalid(&path, file, format!("line {}: expected two numbers x,r (m)", n + 1))),
             },
             _ => return Err(invalid(&path, file, format!("line {}: expected two values x,r (m)", n + 1))),

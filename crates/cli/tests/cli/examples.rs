@@ -1,0 +1,64 @@
+//! Every feature has an example scenario in `examples/`, and each runs as its header says — from any working
+//! directory: the files a scenario names (a train CSV, a measured rail) are read beside it.
+
+use super::{json, temporary_folder};
+
+fn example(name: &str) -> String {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples").join(name);
+    path.canonicalize().unwrap().to_string_lossy().into_owned()
+}
+
+/// `frictrack run EXAMPLE --format json` with the working directory elsewhere than the repository.
+fn run_elsewhere(name: &str, extra: &[&str]) -> serde_json::Value {
+    let cwd = temporary_folder(&format!("example-{name}"));
+    let path = example(name);
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_frictrack"))
+        .current_dir(&cwd)
+        .args([&["run", path.as_str(), "--format", "json"], extra].concat())
+        .output()
+        .unwrap();
+    json(&out)
+}
+
+#[test]
+fn the_feature_examples_run_from_anywhere() {
+    // CSV train (read beside the scenario), axles and patches on a deck.
+    let csv = run_elsewhere("csv-train.toml", &[]);
+    assert_eq!(csv["train"]["axles"], 8);
+    assert_eq!(csv["axle_share"]["carries"], "one-rail");
+    assert!((csv["train"]["total_force"].as_f64().unwrap() - 620e3).abs() < 1e-6);
+    let patches = run_elsewhere("axles-and-patches.toml", &[]);
+    assert_eq!((patches["train"]["axles"].as_u64(), patches["train"]["patches"].as_u64()), (Some(4), Some(1)));
+    assert_eq!(patches["axle_share"]["carries"], "whole-axle");
+    // A measured rail read beside the scenario, a random rail, a wheel flat: wheels that feel them.
+    let table = run_elsewhere("table-irregularity.toml", &[]);
+    assert!(table["vehicles"]["max_dynamic_increment"].as_f64().unwrap() > 0.1, "{}", table["vehicles"]);
+    let random = run_elsewhere("quarter-cars-random-rail.toml", &[]);
+    assert_eq!(random["vehicles"]["wheels"].as_array().unwrap().len(), 3);
+    let flat = run_elsewhere("quarter-car-wheel-flat.toml", &[]);
+    assert!(flat["vehicles"]["losses"].as_array().unwrap().len() > 10, "a flat's impacts every wheel turn");
+    // Groups of vehicles with their own contact law and flat.
+    let groups = run_elsewhere("vehicle-groups.toml", &[]);
+    assert_eq!(groups["vehicles"]["wheels"].as_array().unwrap().len(), 6);
+    assert_eq!(groups["vehicles"]["contact"], "mixed");
+}
+
+/// The matrices example is the default quarter car written out: the same wheel force, to round-off.
+#[test]
+fn the_matrices_example_is_the_quarter_car() {
+    let matrices = run_elsewhere("matrices-vehicle.toml", &[]);
+    let dir = temporary_folder("example-quarter");
+    let path = dir.join("quarter.toml");
+    let text = std::fs::read_to_string(example("matrices-vehicle.toml")).unwrap();
+    let quarter = text.split("\n[vehicle]\n").next().unwrap().to_string()
+        + "\n[vehicle]\nkind = \"quarter-car\"\n[integration]\nload_advance = 0.05\nstatic_start = 50.0\n\
+           [output]\nextremes_nodes = [60.0, 140.0]\n";
+    std::fs::write(&path, quarter).unwrap();
+    let out = super::frictrack(&["run", path.to_str().unwrap(), "--format", "json"]);
+    let quarter = json(&out);
+    for key in ["min_wheel_force", "max_wheel_force"] {
+        let (a, b) = (matrices["vehicles"][key].as_f64().unwrap(), quarter["vehicles"][key].as_f64().unwrap());
+        // The same model; the matrices' weights are rounded to 0.1 N of 83 385 N.
+        assert!((a - b).abs() <= 1e-6 * b, "{key}: {a} vs {b}");
+    }
+}
