@@ -3,7 +3,7 @@
 //! contacts' energy terms — as a serialisable summary, a long-format CSV of the wheel histories and a figure.
 //!
 //! `wheels.csv`: `vehicle,wheel,time,position,force,rail_deflection,moment` — one row per wheel and step (–, –, s, m,
-//! N, m, N·m). The force is the step's mean contact force p/h (compressive > 0), the rail deflection upward > 0 (0 off
+//! N, m, N·m); vehicles and wheels numbered from 1, the wheel by its number in the run as in the text report. The force is the step's mean contact force p/h (compressive > 0), the rail deflection upward > 0 (0 off
 //! the beam, where the rail is rigid ground), the moment EI·w″ of the rail under the wheel, sagging > 0.
 
 use crate::figures::{Curves, quantity_figure};
@@ -30,13 +30,16 @@ pub const WHEEL_COLUMNS: [(&str, &str); 7] = [
     ("moment", "N·m"),
 ];
 
-/// One wheel.
+/// One wheel. Wheels and vehicles are numbered from 1 in every output (text, JSON, CSV, figures): `wheel` is the
+/// wheel's number in the run, front to back, as in the text report and `wheels.csv`.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct WheelReport {
-    /// Its vehicle (0-based).
-    pub vehicle: usize,
-    /// Its index in the vehicle.
+    /// Its number in the run (from 1).
     pub wheel: usize,
+    /// Its vehicle (from 1).
+    pub vehicle: usize,
+    /// Its number within its vehicle (from 1).
+    pub vehicle_wheel: usize,
     /// Offset behind the first wheel (m).
     pub offset: f64,
     /// Static wheel load Q₀ (N).
@@ -62,7 +65,7 @@ pub struct WheelReport {
 /// One loss of contact.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct LossReport {
-    /// Which wheel of the run (0-based, as in `wheels`).
+    /// Which wheel of the run (from 1, as [`WheelReport::wheel`]).
     pub wheel: usize,
     /// Where and when it lifted off (m, s).
     pub lift_off_position: f64,
@@ -126,9 +129,11 @@ impl VehicleReport {
         let wheels: Vec<WheelReport> = results
             .wheels
             .iter()
-            .map(|w| WheelReport {
-                vehicle: w.vehicle,
-                wheel: w.wheel,
+            .enumerate()
+            .map(|(i, w)| WheelReport {
+                wheel: i + 1,
+                vehicle: w.vehicle + 1,
+                vehicle_wheel: w.wheel + 1,
                 offset: w.offset,
                 static_force: w.static_force,
                 min_force: w.min_force,
@@ -147,7 +152,7 @@ impl VehicleReport {
             .enumerate()
             .flat_map(|(i, w)| {
                 w.losses.iter().map(move |l| LossReport {
-                    wheel: i,
+                    wheel: i + 1,
                     lift_off_position: l.lift_off_position,
                     lift_off_time: l.lift_off_time,
                     landing_position: l.landing_position,
@@ -189,12 +194,12 @@ impl VehicleReport {
 /// `wheels.csv`.
 pub fn wheels_csv(results: &VehicleResults) -> String {
     let mut out = WHEEL_COLUMNS.iter().map(|(name, _)| *name).collect::<Vec<_>>().join(",") + "\n";
-    for w in &results.wheels {
+    for (i, w) in results.wheels.iter().enumerate() {
         let h = &w.history;
         for k in 0..h.time.len() {
             let values = [
-                w.vehicle as f64,
-                w.wheel as f64,
+                (w.vehicle + 1) as f64,
+                (i + 1) as f64,
                 h.time[k],
                 h.position[k],
                 h.force[k],
@@ -221,11 +226,7 @@ pub fn wheel_plot(results: &VehicleResults, title: &str, range: (f64, f64)) -> P
             let inside = |x: &f64| (range.0..=range.1).contains(x);
             let points = w.history.position.iter().zip(&w.history.force);
             let points = points.filter(|(x, _)| inside(x)).map(|(&x, &f)| (x, f / 1e3)).collect();
-            (
-                format!("vehicle {} wheel {} (Q₀ = {:.1} kN)", w.vehicle + 1, w.wheel + 1, w.static_force / 1e3),
-                1 + i,
-                points,
-            )
+            (format!("wheel {} (vehicle {}, Q₀ = {:.1} kN)", i + 1, w.vehicle + 1, w.static_force / 1e3), 1 + i, points)
         })
         .collect();
     let shown = if results.wheels.len() > MAX_WHEELS_DRAWN {

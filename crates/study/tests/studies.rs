@@ -158,7 +158,9 @@ fn example_scenarios_are_valid() {
             count += 1;
         }
     }
-    assert_eq!(count, 8, "one example per study, the HSLM bridge and the rail cars");
+    // One per study, the HSLM bridge, the rail cars, and one per further feature (flat, random rail, measured rail,
+    // matrices vehicle, vehicle groups, CSV train, axles and patches).
+    assert_eq!(count, 15, "one example per study and per feature");
 }
 
 fn small_case() -> study::Case {

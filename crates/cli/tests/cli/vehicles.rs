@@ -203,7 +203,7 @@ fn groups_of_vehicles_each_with_its_contact() {
     let base =
         "[load]\nspeed = 40.0\n[integration]\nload_advance = 0.04\ntheta = 0.51\n[vehicle]\nkind = \"rail-car\"\n";
     let groups = "[[vehicle.behind]]\noffset = 30.0\nkind = \"quarter-car\"\ncount = 2\nspacing = 10.0\n\
-                  contact = \"rigid\"\n[[vehicle.behind.flats]]\nwheel = 1\nlength = 0.05\n";
+                  contact = \"rigid\"\n[[vehicle.behind.flats]]\nwheel = 2\nlength = 0.05\n";
     let mixed = scenario(&folder, "mixed.toml", &format!("{base}{groups}"));
     let v = json(&frictrack(&["run", &mixed, "--format", "json"]));
     let vehicles = &v["vehicles"];
@@ -230,7 +230,7 @@ fn groups_of_vehicles_each_with_its_contact() {
         ),
         (
             "flat.toml",
-            format!("{base}[[vehicle.behind]]\noffset = 30.0\n[[vehicle.behind.flats]]\nwheel = 1\nlength = 0.05\n"),
+            format!("{base}[[vehicle.behind]]\noffset = 30.0\n[[vehicle.behind.flats]]\nwheel = 2\nlength = 0.05\n"),
             "vehicle.behind[0].flats[0].wheel",
         ),
         (

@@ -220,13 +220,18 @@ pub struct WheelSection {
     pub offset: f64,
 }
 
+/// The default wheel of a flat: the first, numbered from 1.
+fn first_wheel() -> usize {
+    1
+}
+
 /// `[[vehicle.flats]]`: a wheel flat.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct FlatSection {
-    /// Which wheel of its group (`[vehicle]` or a `[[vehicle.behind]]`), counted over the group's vehicles in order
-    /// (0-based). Default 0.
-    #[serde(default)]
+    /// Which wheel of its group (`[vehicle]` or a `[[vehicle.behind]]`), counted from 1 over the group's vehicles in
+    /// order — for `[vehicle]` the wheel's number in the run, as every report numbers it. Default 1.
+    #[serde(default = "first_wheel")]
     pub wheel: usize,
     /// Flat length ℓ (m).
     pub length: f64,
@@ -411,12 +416,12 @@ impl VehicleSection {
         settings.vehicles.iter_mut().for_each(|p| p.contact = Some(contact));
         let wheels = settings.wheels().count();
         for (i, f) in self.flats.iter().enumerate() {
-            if f.wheel >= wheels {
-                let allowed = format!("must be a wheel index of this group, < {wheels}");
+            if !(1..=wheels).contains(&f.wheel) {
+                let allowed = format!("must be a wheel of this group, numbered from 1: 1 … {wheels}");
                 return Err(invalid(&format!("{path}.flats[{i}].wheel"), f.wheel, allowed));
             }
             let flat = WheelFlat { length: f.length, diameter: f.diameter, first_contact: f.first_contact };
-            settings.flats.push(FlatWheel { wheel: f.wheel, flat });
+            settings.flats.push(FlatWheel { wheel: f.wheel - 1, flat });
         }
         Ok(settings)
     }
