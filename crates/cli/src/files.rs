@@ -86,3 +86,19 @@ pub fn journal_beside(out: &Path) -> PathBuf {
 pub fn metadata_beside(out: &Path) -> PathBuf {
     out.with_extension("json")
 }
+
+/// Draw `plots` into `folder` (PNG and SVG each, [`study::plot::render`]), every target checked first like any
+/// output; the names of the figures drawn.
+pub fn write_figures(plots: &[study::plot::PlotSpec], folder: &Path) -> Result<Vec<String>> {
+    for spec in plots {
+        for extension in ["png", "svg"] {
+            check_output_file("--out", &folder.join(format!("{}.{extension}", spec.stem)))?;
+        }
+    }
+    let mut drawn = Vec::with_capacity(plots.len());
+    for spec in plots {
+        study::plot::render(spec, folder)?;
+        drawn.push(format!("{}.png/.svg", spec.stem));
+    }
+    Ok(drawn)
+}

@@ -7,6 +7,7 @@ mod init;
 mod interrupt;
 mod jobs;
 mod merge;
+mod plot;
 mod progress;
 mod reference;
 mod reproduce;
@@ -46,6 +47,8 @@ enum Command {
     Merge(merge::MergeArgs),
     /// Write the documented scenario template (the reference case).
     Init(init::InitArgs),
+    /// Draw the figures of outputs on disk: a sweep's CSV, or a run's folder (`run --out`).
+    Plot(plot::PlotArgs),
     /// Static response and natural frequencies of the reference case beside their closed forms.
     Reference(reference::ReferenceArgs),
     /// List the catalogue of trains, or print one train's axles (offsets behind the first axle, forces).
@@ -100,6 +103,7 @@ fn main() -> ExitCode {
         Command::Check(args) => check::run(&args),
         Command::Merge(args) => merge::run(&args),
         Command::Init(args) => init::run(&args),
+        Command::Plot(args) => plot::run(&args),
         Command::Reference(args) => reference::run(&args),
         Command::Analytic(args) => analytic::run(&args),
         Command::Trains(args) => trains::run(&args),

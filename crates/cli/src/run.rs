@@ -225,7 +225,7 @@ fn write_outputs(
     result: &RunResult,
     snapshots: &[track::Snapshot],
 ) -> Result<()> {
-    use study::run_output::{HISTORY_COLUMNS, SNAPSHOT_COLUMNS, histories_csv, run_plots, snapshots_csv};
+    use study::run_output::{HISTORY_COLUMNS, RunCurves, SNAPSHOT_COLUMNS, histories_csv, run_plots, snapshots_csv};
     let columns = |list: &[(&str, &str)]| {
         list.iter().map(|(name, unit)| serde_json::json!({ "name": name, "unit": unit })).collect::<Vec<_>>()
     };
@@ -243,9 +243,14 @@ fn write_outputs(
     if result.vehicles.is_some() {
         files["wheels.csv"] = serde_json::json!({ "columns": columns(&study::vehicle_output::WHEEL_COLUMNS) });
     }
+    let title = if scenario.title.is_empty() { format!("v = {} m/s", report.speed) } else { scenario.title.clone() };
+    let load = if report.train.is_some() { "first axle" } else { "load" };
+    let subtitle = figure_subtitle(report);
     let summary = serde_json::json!({
         "report": report,
         "files": files,
+        // What the figures are titled, so that `frictrack plot DIR` draws them again as they were.
+        "figures": { "title": title, "subtitle": subtitle, "positions_of": load },
         "conventions": "deflection positive upward; moment sagging-positive; extremes are magnitudes",
         "frictrack_version": env!("CARGO_PKG_VERSION"),
         "scenario": scenario,
@@ -253,10 +258,7 @@ fn write_outputs(
     write_atomically(&out.join("summary.json"), serde_json::to_string_pretty(&summary)?.as_bytes())?;
     write_atomically(&out.join("histories.csv"), histories_csv(result).as_bytes())?;
     write_atomically(&out.join("snapshots.csv"), snapshots_csv(snapshots).as_bytes())?;
-    let title = if scenario.title.is_empty() { format!("v = {} m/s", report.speed) } else { scenario.title.clone() };
-    let load = if report.train.is_some() { "first axle" } else { "load" };
-    let subtitle = figure_subtitle(report);
-    for mut spec in run_plots(result, snapshots, &title, load) {
+    for mut spec in run_plots(&RunCurves::of(result, snapshots), &title, load) {
         spec.subtitle.clone_from(&subtitle);
         study::plot::render(&spec, out)?;
     }

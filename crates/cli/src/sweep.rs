@@ -71,6 +71,13 @@ pub fn run(args: &SweepArgs) -> Result<()> {
     if let Some(out) = &args.out {
         check_output_file("--out", out)?;
         check_output_file("--out", &metadata_beside(out))?;
+        let stem = out.file_stem().map_or("sweep".into(), |s| s.to_string_lossy().into_owned());
+        let folder = out.parent().unwrap_or(std::path::Path::new("."));
+        for suffix in study::sweep_figures::FIGURE_SUFFIXES {
+            for extension in ["png", "svg"] {
+                check_output_file("--out", &folder.join(format!("{stem}-{suffix}.{extension}")))?;
+            }
+        }
     }
     let journal = args.out.as_deref().map(|out| study::Journal::open(&journal_beside(out), args.resume)).transpose()?;
     if let Some(j) = journal.as_ref().filter(|j| j.resumed() > 0 && !args.quiet) {
@@ -107,6 +114,13 @@ pub fn run(args: &SweepArgs) -> Result<()> {
     match &args.out {
         Some(path) => {
             write_atomically(path, &csv)?;
+            // The swept metrics against speed, beside the CSV (a shard's few speeds are drawn by `plot` after merge).
+            if shard.is_none() && points.len() >= 2 {
+                let stem = path.file_stem().map_or("sweep".into(), |s| s.to_string_lossy().into_owned());
+                let title = if scenario.title.is_empty() { stem.clone() } else { scenario.title.clone() };
+                let plots = study::sweep_figures::sweep_plots(&points, &stem, &title, critical.as_ref());
+                crate::files::write_figures(&plots, path.parent().unwrap_or(std::path::Path::new(".")))?;
+            }
             let vehicle_columns = study::sweep::VEHICLE_CSV_COLUMNS.iter().filter(|_| scenario.vehicle.is_some());
             let columns: Vec<_> = study::sweep::CSV_COLUMNS
                 .iter()

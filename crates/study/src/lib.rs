@@ -22,6 +22,8 @@ pub mod scenario;
 pub mod shard;
 pub mod speeds;
 pub mod sweep;
+pub mod sweep_figures;
+pub mod tables;
 pub mod track_profile;
 pub mod trains;
 pub mod vehicle_output;

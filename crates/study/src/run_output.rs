@@ -105,23 +105,83 @@ pub fn snapshots_csv(snapshots: &[Snapshot]) -> String {
     out
 }
 
+/// What a run's figures draw: per recorded section its position (m) and (load position m, w m, M N·m) per step;
+/// per snapshot its time (s), load position (m) and (x m, w m, M N·m) per node. Made from a run, or read back from
+/// the `histories.csv` and `snapshots.csv` it wrote ([`RunCurves::from_csv`], for `frictrack plot`).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct RunCurves {
+    /// (section position, points).
+    pub sections: Vec<(f64, Vec<[f64; 3]>)>,
+    /// (time, load position, points).
+    pub instants: Vec<(f64, f64, Vec<[f64; 3]>)>,
+}
+
+impl RunCurves {
+    /// The curves of a run's histories and snapshots.
+    pub fn of(result: &RunResult, snapshots: &[Snapshot]) -> Self {
+        let sections = result
+            .histories
+            .iter()
+            .map(|s| {
+                let points = (0..s.time.len()).map(|k| [s.load_position[k], s.deflection[k], s.moment[k]]).collect();
+                (s.position, points)
+            })
+            .collect();
+        let instants = snapshots
+            .iter()
+            .map(|s| {
+                let points = (0..s.x.len()).map(|n| [s.x[n], s.deflection[n], s.moment[n]]).collect();
+                (s.time, s.load_position, points)
+            })
+            .collect();
+        Self { sections, instants }
+    }
+
+    /// The curves of the files a run wrote: `histories` and `snapshots` are the texts of `histories.csv` and
+    /// `snapshots.csv` (columns [`HISTORY_COLUMNS`], [`SNAPSHOT_COLUMNS`]); rows grouped by section and by instant
+    /// in file order.
+    pub fn from_csv(histories: &str, snapshots: &str) -> Result<Self> {
+        let h = crate::tables::Table::parse(histories, "histories.csv")?;
+        let cols = |t: &crate::tables::Table, names: &[&str], source: &str| -> Result<Vec<usize>> {
+            names.iter().map(|n| t.column(n, source)).collect()
+        };
+        let c = cols(&h, &["section", "load_position", "deflection", "moment"], "histories.csv")?;
+        let mut sections: Vec<(f64, Vec<[f64; 3]>)> = Vec::new();
+        for r in &h.rows {
+            match sections.last_mut() {
+                Some((x, points)) if *x == r[c[0]] => points.push([r[c[1]], r[c[2]], r[c[3]]]),
+                _ => sections.push((r[c[0]], vec![[r[c[1]], r[c[2]], r[c[3]]]])),
+            }
+        }
+        let t = crate::tables::Table::parse(snapshots, "snapshots.csv")?;
+        let c = cols(&t, &["time", "load_position", "x", "deflection", "moment"], "snapshots.csv")?;
+        let mut instants: Vec<(f64, f64, Vec<[f64; 3]>)> = Vec::new();
+        for r in &t.rows {
+            match instants.last_mut() {
+                Some((time, _, points)) if *time == r[c[0]] => points.push([r[c[2]], r[c[3]], r[c[4]]]),
+                _ => instants.push((r[c[0]], r[c[1]], vec![[r[c[2]], r[c[3]], r[c[4]]]])),
+            }
+        }
+        Ok(Self { sections, instants })
+    }
+}
+
 /// Figures of the histories (deflection and moment against the load position, one curve per section) and of the
 /// snapshots (deflected shape and moment along the beam, one curve per instant). `load` names what the positions are
 /// of: "load" for a single load, "first axle" for a train.
-pub fn run_plots(result: &RunResult, snapshots: &[Snapshot], title: &str, load: &str) -> Vec<PlotSpec> {
-    let by_section = |value: &dyn Fn(&track::simulation::SectionHistory, usize) -> f64| -> Curves {
-        let curve = |(i, s): (usize, &track::simulation::SectionHistory)| {
-            let points = (0..s.time.len()).map(|k| (s.load_position[k], value(s, k))).collect();
-            (format!("x = {} m", s.position), 1 + i, points)
+pub fn run_plots(curves: &RunCurves, title: &str, load: &str) -> Vec<PlotSpec> {
+    let by_section = |value: usize, scale: f64| -> Curves {
+        let curve = |(i, (x, points)): (usize, &(f64, Vec<[f64; 3]>))| {
+            (format!("x = {x} m"), 1 + i, points.iter().map(|p| (p[0], p[value] * scale)).collect())
         };
-        result.histories.iter().enumerate().map(curve).collect()
+        curves.sections.iter().enumerate().map(curve).collect()
     };
-    let by_instant = |value: &dyn Fn(&Snapshot, usize) -> f64| -> Curves {
-        let curve = |(i, s): (usize, &Snapshot)| {
-            let points = (0..s.x.len()).map(|n| (s.x[n], value(s, n))).collect();
-            (format!("{load} at {:.1} m (t = {:.3} s)", s.load_position, s.time), 1 + i, points)
+    let by_instant = |value: usize, scale: f64| -> Curves {
+        let curve = |(i, (time, at, points)): (usize, &(f64, f64, Vec<[f64; 3]>))| {
+            let label = format!("{load} at {at:.1} m (t = {time:.3} s)");
+            (label, 1 + i, points.iter().map(|p| (p[0], p[value] * scale)).collect())
         };
-        snapshots.iter().enumerate().map(curve).collect()
+        curves.instants.iter().enumerate().map(curve).collect()
     };
     let figure = |stem: &str, what: &str, x_label: &str, y_label: &str, curves: Curves| {
         quantity_figure(stem, &format!("{title}: {what}"), x_label, y_label, curves, false)
@@ -133,20 +193,20 @@ pub fn run_plots(result: &RunResult, snapshots: &[Snapshot], title: &str, load: 
         plots.push(figure(stem_w, what_w, x, deflection, w));
         plots.push(figure(stem_m, what_m, x, moment, m));
     };
-    if !result.histories.is_empty() {
+    if !curves.sections.is_empty() {
         pair(
             [FIGURE_STEMS[0], FIGURE_STEMS[1]],
             &format!("{load} position x_c (m)"),
             ("deflection at the recorded sections", "bending moment at the recorded sections"),
-            (by_section(&|s, k| s.deflection[k] * 1e3), by_section(&|s, k| s.moment[k] / 1e3)),
+            (by_section(1, 1e3), by_section(2, 1e-3)),
         );
     }
-    if !snapshots.is_empty() {
+    if !curves.instants.is_empty() {
         pair(
             [FIGURE_STEMS[2], FIGURE_STEMS[3]],
             "position along the beam x (m)",
             ("deflected shape", "bending moment along the beam"),
-            (by_instant(&|s, n| s.deflection[n] * 1e3), by_instant(&|s, n| s.moment[n] / 1e3)),
+            (by_instant(1, 1e3), by_instant(2, 1e-3)),
         );
     }
     plots

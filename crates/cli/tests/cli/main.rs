@@ -5,6 +5,7 @@ mod bad_inputs;
 mod bridges;
 mod examples;
 mod failures;
+mod figures;
 mod run_out;
 mod track_profile;
 mod trains;

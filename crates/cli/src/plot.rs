@@ -1,0 +1,68 @@
+//! `frictrack plot PATH…`: draw the figures of outputs already on disk, without running anything — a sweep's CSV
+//! (its figures beside it, as `sweep --out` draws them) or a run's folder (`run --out DIR`: the histories and
+//! snapshots figures again, from `histories.csv` and `snapshots.csv`).
+
+use crate::files::write_figures;
+use anyhow::{Context, Result};
+use clap::Args;
+use std::path::{Path, PathBuf};
+
+/// Options of `frictrack plot`.
+#[derive(Debug, Args)]
+pub struct PlotArgs {
+    /// Sweep CSV files (`frictrack sweep --out FILE.csv`) or run folders (`frictrack run --out DIR`).
+    #[arg(required = true)]
+    paths: Vec<PathBuf>,
+}
+
+/// Execute `frictrack plot`.
+pub fn run(args: &PlotArgs) -> Result<()> {
+    for path in &args.paths {
+        let drawn = if path.is_dir() { run_folder(path)? } else { sweep_file(path)? };
+        println!("{}: drew {}", path.display(), drawn.join(", "));
+    }
+    Ok(())
+}
+
+/// The title a sweep or run gave itself in the JSON beside it, if any: `scenario.title`, else `report.title`.
+fn title_in(json: &Path) -> Option<String> {
+    let value: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(json).ok()?).ok()?;
+    [&value["scenario"]["title"], &value["report"]["title"]]
+        .into_iter()
+        .find_map(|t| t.as_str().filter(|t| !t.is_empty()).map(str::to_string))
+}
+
+fn read(path: &Path) -> Result<String> {
+    std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))
+}
+
+/// A sweep's figures beside its CSV, `{stem}-deflection.png` …
+fn sweep_file(path: &Path) -> Result<Vec<String>> {
+    let points = study::sweep_figures::read_sweep_csv(&read(path)?, &path.display().to_string())?;
+    if points.is_empty() {
+        return Err(study::error::invalid(&path.display().to_string(), "no finished run", "nothing to draw").into());
+    }
+    let stem = path.file_stem().map_or("sweep".into(), |s| s.to_string_lossy().into_owned());
+    let title = title_in(&crate::files::metadata_beside(path)).unwrap_or_else(|| stem.clone());
+    let plots = study::sweep_figures::sweep_plots(&points, &stem, &title, None);
+    write_figures(&plots, path.parent().unwrap_or(Path::new(".")))
+}
+
+/// A run folder's history and snapshot figures again, titled as `run --out` titled them (`figures` in its
+/// `summary.json`).
+fn run_folder(folder: &Path) -> Result<Vec<String>> {
+    let histories = read(&folder.join("histories.csv"))?;
+    let snapshots = read(&folder.join("snapshots.csv"))?;
+    let curves = study::run_output::RunCurves::from_csv(&histories, &snapshots)?;
+    let summary: serde_json::Value = serde_json::from_str(&read(&folder.join("summary.json"))?)
+        .with_context(|| format!("reading {}", folder.join("summary.json").display()))?;
+    let figures = &summary["figures"];
+    let text = |key: &str| figures[key].as_str().map(str::to_string);
+    let title = text("title").or_else(|| title_in(&folder.join("summary.json"))).unwrap_or_default();
+    let load = text("positions_of").unwrap_or_else(|| "load".into());
+    let mut plots = study::run_output::run_plots(&curves, &title, &load);
+    for spec in &mut plots {
+        spec.subtitle = text("subtitle").unwrap_or_default();
+    }
+    write_figures(&plots, folder)
+}

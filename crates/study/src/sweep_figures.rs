@@ -1,0 +1,172 @@
+//! The figures of a speed sweep (`frictrack sweep --out FILE.csv`, and `frictrack plot FILE.csv` from the file
+//! afterwards): the max deflections against speed (whole run, and while the load is in the window), the max
+//! acceleration, the dissipated energy when there is friction or damping, and with vehicles the wheel forces and
+//! the bodies' accelerations. Markers only where the points are few enough to tell apart (≤ 40).
+
+use crate::error::Result;
+use crate::figures::{DeflectionCurve, deflection_figure, quantity_figure};
+use crate::plot::PlotSpec;
+use crate::sweep::{CSV_COLUMNS, CriticalSpeed, SweepPoint, VEHICLE_CSV_COLUMNS, VehicleColumns};
+use crate::tables::Table;
+
+/// The figures' names after the sweep's stem: `{stem}-{suffix}` (each only when it has something to draw).
+pub const FIGURE_SUFFIXES: [&str; 5] = ["deflection", "acceleration", "energy", "wheel-forces", "body-acceleration"];
+
+/// Most points of a curve drawn with markers.
+const MARKED_POINTS: usize = 40;
+/// The x-axis of every sweep figure.
+const SPEED_AXIS: &str = "load speed v (m/s)";
+
+/// The figures of `points` (in speed order), named `{stem}-deflection`, `{stem}-acceleration`, `{stem}-energy`,
+/// `{stem}-wheel-forces`, `{stem}-body-acceleration`; `title` heads each; an interior `critical` speed is marked.
+pub fn sweep_plots(points: &[SweepPoint], stem: &str, title: &str, critical: Option<&CriticalSpeed>) -> Vec<PlotSpec> {
+    let markers = points.len() <= MARKED_POINTS;
+    let series = |value: &dyn Fn(&SweepPoint) -> f64| points.iter().map(|p| (p.speed, value(p))).collect::<Vec<_>>();
+    // The refinement's runs drawn with the sweep, so that the refined critical speed lies on its curve.
+    let mut downward = series(&|p| p.max_downward_deflection);
+    downward.extend(critical.iter().flat_map(|c| c.evaluations.iter().copied()));
+    downward.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let mut deflection = deflection_figure(
+        &format!("{stem}-deflection"),
+        &format!("{title}: max deflection vs speed"),
+        SPEED_AXIS,
+        vec![
+            DeflectionCurve {
+                label: "whole run".into(),
+                color: 0,
+                downward,
+                upward: series(&|p| p.max_upward_deflection),
+                optimum: critical.filter(|c| c.is_interior()).map(|c| (c.speed, c.max_downward_deflection)),
+            },
+            DeflectionCurve {
+                label: "load in the window".into(),
+                color: 1,
+                downward: series(&|p| p.window_max_downward_deflection),
+                upward: series(&|p| p.window_max_upward_deflection),
+                optimum: None,
+            },
+        ],
+        "refined critical speed",
+    );
+    deflection.subtitle = "downward solid, upward dashed".into();
+    let mut plots = vec![deflection];
+    let quantity = |name: &str, what: &str, y: &str, curves| {
+        quantity_figure(&format!("{stem}-{name}"), &format!("{title}: {what} vs speed"), SPEED_AXIS, y, curves, markers)
+    };
+    plots.push(quantity(
+        "acceleration",
+        "max acceleration",
+        "max vertical acceleration (m/s²)",
+        vec![("over all nodes".into(), 0, series(&|p| p.max_acceleration))],
+    ));
+    if points.iter().any(|p| p.dissipated_energy > 0.0) {
+        plots.push(quantity(
+            "energy",
+            "dissipated energy",
+            "energy dissipated by friction and damping (kJ)",
+            vec![("dissipated".into(), 0, series(&|p| p.dissipated_energy / 1e3))],
+        ));
+    }
+    if points.iter().all(|p| p.vehicles.is_some()) && !points.is_empty() {
+        let wheel = |f: fn(&VehicleColumns) -> f64| series(&|p: &SweepPoint| p.vehicles.map_or(f64::NAN, |v| f(&v)));
+        plots.push(quantity(
+            "wheel-forces",
+            "wheel–rail contact forces",
+            "contact force Q (kN, compressive > 0)",
+            vec![
+                ("largest of any wheel".into(), 0, wheel(|v| v.max_wheel_force / 1e3)),
+                ("smallest of any wheel (0: contact lost)".into(), 1, wheel(|v| v.min_wheel_force / 1e3)),
+            ],
+        ));
+        plots.push(quantity(
+            "body-acceleration",
+            "body accelerations",
+            "body acceleration (m/s²)",
+            vec![
+                ("largest of any body".into(), 0, wheel(|v| v.max_body_acceleration)),
+                ("largest RMS".into(), 1, wheel(|v| v.rms_body_acceleration)),
+            ],
+        ));
+    }
+    plots
+}
+
+/// The points of a sweep CSV as `frictrack sweep` writes it (columns [`CSV_COLUMNS`], and [`VEHICLE_CSV_COLUMNS`]
+/// with vehicles); the rows of failed runs (empty fields) are left out.
+pub fn read_sweep_csv(text: &str, source: &str) -> Result<Vec<SweepPoint>> {
+    let table = Table::parse(text, source)?;
+    let index = |name: &str| table.column(name, source);
+    let base: Vec<usize> = CSV_COLUMNS.iter().map(|(n, _, _)| index(n)).collect::<Result<_>>()?;
+    let vehicles: Option<Vec<usize>> = VEHICLE_CSV_COLUMNS.iter().map(|(n, _, _)| index(n).ok()).collect();
+    Ok(table
+        .rows
+        .iter()
+        .filter(|r| !r[base[1]].is_nan())
+        .map(|r| {
+            let v: Vec<f64> = base.iter().map(|&i| r[i]).collect();
+            SweepPoint {
+                speed: v[0],
+                max_downward_deflection: v[1],
+                max_upward_deflection: v[2],
+                dissipated_energy: v[3],
+                global_norm: v[4],
+                max_downward_position: v[5],
+                max_downward_time: v[6],
+                load_work: v[7],
+                energy_residual: v[8],
+                mean_iterations: v[9],
+                window_max_downward_deflection: v[10],
+                window_max_downward_position: v[11],
+                window_max_downward_time: v[12],
+                window_max_upward_deflection: v[13],
+                window_max_upward_position: v[14],
+                window_max_upward_time: v[15],
+                max_acceleration: v[16],
+                vehicles: vehicles.as_ref().map(|c| VehicleColumns {
+                    min_wheel_force: r[c[0]],
+                    max_wheel_force: r[c[1]],
+                    max_dynamic_increment: r[c[2]],
+                    losses_of_contact: r[c[3]] as usize,
+                    max_body_acceleration: r[c[4]],
+                    rms_body_acceleration: r[c[5]],
+                }),
+            }
+        })
+        .collect())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::read_sweep_csv;
+    use crate::sweep::{SweepPoint, write_csv};
+
+    /// What `write_csv` writes, `read_sweep_csv` reads back to the bit.
+    #[test]
+    fn a_sweep_csv_reads_back() {
+        let point = |speed: f64| SweepPoint {
+            speed,
+            max_downward_deflection: 0.1 + speed * 1e-3,
+            max_upward_deflection: 0.05,
+            dissipated_energy: 12.5,
+            global_norm: 0.3,
+            max_downward_position: 100.0,
+            max_downward_time: 0.5,
+            load_work: 1e3,
+            energy_residual: 1e-12,
+            mean_iterations: 3.0,
+            window_max_downward_deflection: 0.09,
+            window_max_downward_position: 99.0,
+            window_max_downward_time: 0.45,
+            window_max_upward_deflection: 0.04,
+            window_max_upward_position: 98.0,
+            window_max_upward_time: 0.44,
+            max_acceleration: 12.0,
+            vehicles: None,
+        };
+        let points = vec![point(10.0), point(20.0), point(30.0)];
+        let mut csv = Vec::new();
+        write_csv(&points, &mut csv).unwrap();
+        let text = String::from_utf8(csv).unwrap() + "# failed_run {}\n";
+        assert_eq!(read_sweep_csv(&text, "sweep.csv").unwrap(), points);
+    }
+}
