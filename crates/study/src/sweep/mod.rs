@@ -379,7 +379,7 @@ fn check_speeds(speeds: &[f64]) -> Result<()> {
     }
 }
 
-/// The columns of sweep output: name, unit, meaning (in this order; the README and the JSON beside a sweep's CSV
+/// The columns of sweep output: name, unit, meaning (in this order; the user guide and the JSON beside a sweep's CSV
 /// list them).
 pub const CSV_COLUMNS: [(&str, &str, &str); 17] = [
     ("speed", "m/s", "load speed"),
