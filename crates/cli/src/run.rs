@@ -122,6 +122,7 @@ pub struct RunReport {
     global_norm: f64,
     load_work: f64,
     friction_work: f64,
+    friction_dissipation: f64,
     viscous_dissipation: f64,
     dissipated_energy: f64,
     numerical_dissipation: f64,
@@ -338,6 +339,8 @@ fn report(scenario: &Scenario, case: &Case, result: &RunResult, wall_time: f64) 
         global_norm: result.global_norm,
         load_work: e.load_work,
         friction_work: e.friction_work,
+        // Positive, as `viscous_dissipation` and `dissipated_energy`: the energy friction removed.
+        friction_dissipation: -e.friction_work,
         viscous_dissipation: e.viscous_dissipation,
         dissipated_energy: e.dissipated(),
         numerical_dissipation: e.numerical_dissipation,
@@ -481,7 +484,7 @@ fn print_text(r: &RunReport) {
         "  energy (J): load work {:.4e}, dissipated {:.4e} (friction {:.4e}, viscous {:.4e}), numerical {:.4e}, balance residual {:.2e}",
         r.load_work,
         r.dissipated_energy,
-        0.0 - r.friction_work,
+        r.friction_dissipation,
         r.viscous_dissipation,
         r.numerical_dissipation,
         r.energy_residual

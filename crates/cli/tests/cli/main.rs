@@ -69,6 +69,7 @@ fn run_prints_the_documented_json() {
         "max_upward_deflection_time",
         "load_work",
         "friction_work",
+        "friction_dissipation",
         "dissipated_energy",
         "numerical_dissipation",
         "energy_residual",
@@ -85,6 +86,9 @@ fn run_prints_the_documented_json() {
     assert_eq!(v["steps"], 2000);
     assert!(f("max_downward_deflection") > 0.0 && f("max_upward_deflection") > 0.0);
     assert!(f("dissipated_energy") > 0.0 && f("friction_work") < 0.0);
+    // Dissipations are positive: friction's is the opposite of its work, and all of the dissipated energy here.
+    assert_eq!(f("friction_dissipation"), -f("friction_work"));
+    assert_eq!(f("friction_dissipation") + f("viscous_dissipation"), f("dissipated_energy"));
     assert!(f("energy_residual").abs() < 1e-9 * f("load_work"));
     assert_eq!(v["device_positions"].as_array().unwrap().len(), 31);
     // Friction cuts the peak of the friction-free run.
