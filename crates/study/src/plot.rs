@@ -180,6 +180,8 @@ pub fn sequential(t: f64) -> RGBColor {
 }
 
 const SIZE: (u32, u32) = (1200, 800);
+/// A curve of more points than this is drawn without markers, whatever its series asks.
+pub const MAX_MARKED_POINTS: usize = 60;
 const LEGEND_WIDTH: u32 = 300;
 
 static FONTS: Once = Once::new();
@@ -309,7 +311,8 @@ fn draw<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, spec: &PlotSpec) -> s
             Stroke::Dashed => chart.draw_series(DashedLineSeries::new(line.clone(), 9, 6, style)).map(|_| ()),
         }
         .map_err(|e| err(&e))?;
-        if s.markers {
+        // Markers show where a curve was sampled; past MAX_MARKED_POINTS (a 2 km/h sweep) they only blot it.
+        if s.markers && line.len() <= MAX_MARKED_POINTS {
             let marker = |p: (f64, f64)| Circle::new(p, 3, spec.palette.color(s.color).filled());
             chart.draw_series(line.into_iter().map(marker)).map_err(|e| err(&e))?;
         }

@@ -1,7 +1,7 @@
 //! The figures of a speed sweep (`frictrack sweep --out FILE.csv`, and `frictrack plot FILE.csv` from the file
 //! afterwards): the max deflections against speed (whole run, and while the load is in the window), the max
 //! acceleration, the dissipated energy when there is friction or damping, and with vehicles the wheel forces and
-//! the bodies' accelerations. Markers only where the points are few enough to tell apart (≤ 40).
+//! the bodies' accelerations.
 
 use crate::error::Result;
 use crate::figures::{DeflectionCurve, deflection_figure, quantity_figure};
@@ -12,15 +12,14 @@ use crate::tables::Table;
 /// The figures' names after the sweep's stem: `{stem}-{suffix}` (each only when it has something to draw).
 pub const FIGURE_SUFFIXES: [&str; 5] = ["deflection", "acceleration", "energy", "wheel-forces", "body-acceleration"];
 
-/// Most points of a curve drawn with markers.
-const MARKED_POINTS: usize = 40;
 /// The x-axis of every sweep figure.
 const SPEED_AXIS: &str = "load speed v (m/s)";
 
 /// The figures of `points` (in speed order), named `{stem}-deflection`, `{stem}-acceleration`, `{stem}-energy`,
 /// `{stem}-wheel-forces`, `{stem}-body-acceleration`; `title` heads each; an interior `critical` speed is marked.
 pub fn sweep_plots(points: &[SweepPoint], stem: &str, title: &str, critical: Option<&CriticalSpeed>) -> Vec<PlotSpec> {
-    let markers = points.len() <= MARKED_POINTS;
+    // Markers where the points are few enough to tell apart (the renderer drops them past its own limit).
+    let markers = points.len() <= crate::plot::MAX_MARKED_POINTS;
     let series = |value: &dyn Fn(&SweepPoint) -> f64| points.iter().map(|p| (p.speed, value(p))).collect::<Vec<_>>();
     // The refinement's runs drawn with the sweep, so that the refined critical speed lies on its curve.
     let mut downward = series(&|p| p.max_downward_deflection);

@@ -259,15 +259,27 @@ type Quantity<'a> = dyn Fn(&Curve, &SweepPoint) -> Option<f64> + 'a;
 fn figures(curves: &[Curve], force: f64, friction: &str) -> Vec<PlotSpec> {
     let mut plots = Vec::new();
     for (r, rail) in RAILS.iter().enumerate() {
-        let quantities: [(&str, &str, &Quantity<'_>); 3] = [
-            ("deflection", "max downward rail deflection (mm)", &|_, p| Some(p.max_downward_deflection * 1e3)),
-            ("wheel-force", "smallest wheel–rail force (kN; 0: contact lost)", &|c, p| {
-                Some(c.min_force(p, force) / 1e3)
+        // Each title names what the figure compares: only the quarter car has a body, so its figure compares the
+        // car without and with friction, not the loads.
+        let quantities: [(&str, &str, &str, &Quantity<'_>); 3] = [
+            ("deflection", "Vehicles vs moving force", "max downward rail deflection (mm)", &|_, p| {
+                Some(p.max_downward_deflection * 1e3)
             }),
-            ("body-acceleration", "largest body acceleration (m/s²)", &|c, p| c.body_acceleration(p)),
+            (
+                "wheel-force",
+                "Vehicles vs moving force",
+                "smallest wheel–rail force (kN; 0: contact lost)",
+                &|c, p| Some(c.min_force(p, force) / 1e3),
+            ),
+            (
+                "body-acceleration",
+                "Quarter car without and with friction",
+                "largest body acceleration (m/s²)",
+                &|c, p| c.body_acceleration(p),
+            ),
         ];
-        for (stem, y_label, value) in quantities {
-            let title = format!("Vehicles vs moving force, {rail} rail: {}", y_label.split(" (").next().unwrap_or(""));
+        for (stem, compared, y_label, value) in quantities {
+            let title = format!("{compared}, {rail} rail: {}", y_label.split(" (").next().unwrap_or(""));
             let mut spec = PlotSpec::new(format!("vehicle-speed-{stem}-{rail}"), &title, "speed v (m/s)", y_label);
             for c in curves.iter().filter(|c| c.rail == r) {
                 let points: Vec<(f64, f64)> =
