@@ -339,8 +339,9 @@ fn report(scenario: &Scenario, case: &Case, result: &RunResult, wall_time: f64) 
         global_norm: result.global_norm,
         load_work: e.load_work,
         friction_work: e.friction_work,
-        // Positive, as `viscous_dissipation` and `dissipated_energy`: the energy friction removed.
-        friction_dissipation: -e.friction_work,
+        // Positive, as `viscous_dissipation` and `dissipated_energy`: the energy friction removed (0 − W, not −W:
+        // no "-0" without friction).
+        friction_dissipation: 0.0 - e.friction_work,
         viscous_dissipation: e.viscous_dissipation,
         dissipated_energy: e.dissipated(),
         numerical_dissipation: e.numerical_dissipation,

@@ -167,5 +167,13 @@ mod tests {
         write_csv(&points, &mut csv).unwrap();
         let text = String::from_utf8(csv).unwrap() + "# failed_run {}\n";
         assert_eq!(read_sweep_csv(&text, "sweep.csv").unwrap(), points);
+        // An extreme that never happened (no upward deflection in the window) has no place nor time: empty fields.
+        let still = SweepPoint { window_max_upward_deflection: 0.0, ..point(40.0) };
+        let mut csv = Vec::new();
+        write_csv(std::slice::from_ref(&still), &mut csv).unwrap();
+        let text = String::from_utf8(csv).unwrap();
+        assert!(text.lines().nth(1).unwrap().contains(",0,,,"), "{text}");
+        let back = &read_sweep_csv(&text, "sweep.csv").unwrap()[0];
+        assert!(back.window_max_upward_position.is_nan() && back.window_max_upward_time.is_nan());
     }
 }

@@ -18,7 +18,6 @@ pub use peak::{Metric, PeakLocation, RefinedPeak, refine_maximum};
 
 use crate::error::{Result, StudyError, invalid};
 use crate::journal::Journal;
-use crate::number::row;
 use crate::scenario::Case;
 use rayon::prelude::*;
 use serde::de::DeserializeOwned;
@@ -413,6 +412,21 @@ pub fn write_csv(points: &[SweepPoint], out: &mut dyn Write) -> std::io::Result<
     write_csv_rows(&rows, out)
 }
 
+/// Where and when an extreme of `magnitude` happened: `value`, or missing (NaN, an empty field) when it never
+/// happened (magnitude 0: no step deflected that way while the load was in the window), not a placeholder 0.
+fn where_if(magnitude: f64, value: f64) -> f64 {
+    if magnitude > 0.0 { value } else { f64::NAN }
+}
+
+/// A CSV row as [`crate::number::row`], a missing value (NaN) as an empty field.
+fn row_with_gaps(values: &[f64]) -> String {
+    values
+        .iter()
+        .map(|&x| if x.is_nan() { String::new() } else { crate::number::number(x) })
+        .collect::<Vec<_>>()
+        .join(",")
+}
+
 /// Write sweep rows as CSV like [`write_csv`]; a failed run's line has its speed and every other field empty (read
 /// as missing by CSV readers; why it failed is beside it, in the sweep's JSON).
 pub fn write_csv_rows(rows: &[SweepRow], out: &mut dyn Write) -> std::io::Result<()> {
@@ -434,7 +448,7 @@ pub fn write_csv_rows(rows: &[SweepRow], out: &mut dyn Write) -> std::io::Result
         write!(
             out,
             "{}",
-            row(&[
+            row_with_gaps(&[
                 p.speed,
                 p.max_downward_deflection,
                 p.max_upward_deflection,
@@ -446,17 +460,17 @@ pub fn write_csv_rows(rows: &[SweepRow], out: &mut dyn Write) -> std::io::Result
                 p.energy_residual,
                 p.mean_iterations,
                 p.window_max_downward_deflection,
-                p.window_max_downward_position,
-                p.window_max_downward_time,
+                where_if(p.window_max_downward_deflection, p.window_max_downward_position),
+                where_if(p.window_max_downward_deflection, p.window_max_downward_time),
                 p.window_max_upward_deflection,
-                p.window_max_upward_position,
-                p.window_max_upward_time,
+                where_if(p.window_max_upward_deflection, p.window_max_upward_position),
+                where_if(p.window_max_upward_deflection, p.window_max_upward_time),
                 p.max_acceleration,
             ])
         )?;
         match (vehicles, p.vehicles) {
-            (true, Some(v)) => writeln!(out, ",{}", row(&v.values()))?,
-            (true, None) => writeln!(out, ",{}", row(&[f64::NAN; 6]))?,
+            (true, Some(v)) => writeln!(out, ",{}", row_with_gaps(&v.values()))?,
+            (true, None) => writeln!(out, ",{}", row_with_gaps(&[f64::NAN; 6]))?,
             (false, _) => writeln!(out)?,
         }
     }
