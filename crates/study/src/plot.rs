@@ -282,8 +282,11 @@ fn draw<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, spec: &PlotSpec) -> s
         .build_cartesian_2d(x0..x1, y0..y1)
         .map_err(|e| err(&e))?;
     let (x_step, y_step) = ((x1 - x0) / 10.0, (y1 - y0) / 10.0);
-    let x_format = move |x: &f64| if log_x { tick(10f64.powf(*x), 10f64.powf(*x) / 10.0) } else { tick(*x, x_step) };
-    let y_format = move |y: &f64| if log_y { scientific(10f64.powf(*y)) } else { tick(*y, y_step) };
+    let x_format = move |x: &f64| {
+        if log_x { one_two_five(*x).map_or(String::new(), |v| tick(v, v / 10.0)) } else { tick(*x, x_step) }
+    };
+    let y_format =
+        move |y: &f64| if log_y { one_two_five(*y).map_or(String::new(), scientific) } else { tick(*y, y_step) };
     chart
         .configure_mesh()
         .x_desc(spec.x_label.as_str())
@@ -389,6 +392,15 @@ fn tick(value: f64, step: f64) -> String {
     if text.trim_start_matches('-').chars().all(|c| c == '0' || c == '.') { "0".into() } else { text }
 }
 
+/// The value 10^`exponent` of a log axis's grid line when it is 1, 2 or 5 times a power of ten — the ticks a reader
+/// can use — else None: the other grid lines (10^0.5 = 3.16, 10^−0.8 = 0.158) stay unlabelled.
+fn one_two_five(exponent: f64) -> Option<f64> {
+    let value = 10f64.powf(exponent);
+    let decade = 10f64.powf(exponent.floor());
+    let mantissa = value / decade;
+    [1.0, 2.0, 5.0, 10.0].into_iter().find(|m| (mantissa - m).abs() < 1e-6 * m).map(|m| m * decade)
+}
+
 /// A log-axis tick label: "1e-8" at a power of ten, else two significant digits ("3.2e-8").
 fn scientific(value: f64) -> String {
     let exponent = value.log10();
@@ -401,7 +413,16 @@ fn scientific(value: f64) -> String {
 
 #[cfg(test)]
 mod tests {
-    use super::{scientific, tick};
+    use super::{one_two_five, scientific, tick};
+
+    #[test]
+    fn log_axes_label_only_one_two_five() {
+        assert_eq!(one_two_five(0.0), Some(1.0));
+        assert!((one_two_five(2f64.log10()).unwrap() - 2.0).abs() < 1e-12);
+        assert!((one_two_five(-(2f64.log10())).unwrap() - 0.5).abs() < 1e-12);
+        assert_eq!(one_two_five(0.5), None, "3.16");
+        assert_eq!(one_two_five(-0.8), None, "0.158");
+    }
 
     #[test]
     fn log_ticks_are_scientific() {
