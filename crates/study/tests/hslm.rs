@@ -92,6 +92,8 @@ fn on_a_span_the_critical_speeds_are_the_resonance_speeds() {
     assert!(number(&none["acceleration_over_limit"]) > 1.0 && number(&with["acceleration_over_limit"]) < 1.0);
     assert!(number(&with["dynamic_amplification"]) < 1.1);
     assert_eq!(data.plots.len(), 6);
+    // A deck carries whole axles, and the study says so.
+    assert_eq!(summary["axle_share"]["carries"], "whole-axle");
 }
 
 /// Every reported maximum is refined to its true peak at the default (coarse) resolution: the study's critical

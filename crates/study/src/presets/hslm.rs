@@ -194,6 +194,8 @@ impl TrainCurve {
 pub(super) struct Results {
     /// The curves, friction set-up major, train minor.
     pub(super) curves: Vec<TrainCurve>,
+    /// What the beam carries of the HSLM axles (a rail: half; a deck: all).
+    pub(super) axle_share: crate::scenario::AxleShare,
     /// The friction set-up, in words.
     pub(super) friction: String,
     /// f₁ … f₃ (Hz), if the model's eigenproblem was solved.
@@ -365,9 +367,16 @@ impl Results {
             self.tolerance * KMH
         );
         lines.push(refinement.clone());
+        lines.push(format!(
+            "axle loads as the beam carries them: {} ([load] carries = \"{}\", × {})",
+            self.axle_share.describe(),
+            self.axle_share.name(),
+            self.axle_share.factor()
+        ));
         let summary = json!({
             "refinement": refinement,
             "refinement_tolerance": self.tolerance,
+            "axle_share": { "carries": self.axle_share.name(), "factor": self.axle_share.factor() },
             "friction_setup": self.friction,
             "natural_frequencies": self.frequencies,
             "load_advance": self.load_advance,
@@ -469,6 +478,7 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
         .collect();
     let results = Results {
         curves,
+        axle_share: base.axle_share(),
         friction,
         frequencies,
         acceleration_limit: span.then_some(BALLASTED_DECK_LIMIT),
