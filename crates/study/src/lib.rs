@@ -26,6 +26,7 @@ pub mod sweep_figures;
 pub mod tables;
 pub mod track_profile;
 pub mod trains;
+pub mod typeset;
 pub mod vehicle_output;
 
 pub use error::{Result, StudyError};

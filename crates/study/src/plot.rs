@@ -201,6 +201,7 @@ fn plot_error(path: &Path, e: impl std::fmt::Display) -> StudyError {
 /// Draw `spec` into `folder` as `<stem>.png` (1200×800) and `<stem>.svg`; returns both paths and the layout.
 pub fn render(spec: &PlotSpec, folder: &Path) -> Result<(PathBuf, PathBuf, Layout)> {
     register_fonts();
+    let spec = &crate::typeset::spec(spec);
     let png = folder.join(format!("{}.png", spec.stem));
     let svg = folder.join(format!("{}.svg", spec.stem));
     // Only regular files are replaced: a link, device or FIFO in the output folder is refused, never written through.

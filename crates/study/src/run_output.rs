@@ -196,7 +196,7 @@ pub fn run_plots(curves: &RunCurves, title: &str, load: &str) -> Vec<PlotSpec> {
     if !curves.sections.is_empty() {
         pair(
             [FIGURE_STEMS[0], FIGURE_STEMS[1]],
-            &format!("{load} position x_c (m)"),
+            &format!("{load} position x (m)"),
             ("deflection at the recorded sections", "bending moment at the recorded sections"),
             (by_section(1, 1e3), by_section(2, 1e-3)),
         );

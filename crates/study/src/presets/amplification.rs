@@ -50,10 +50,10 @@ pub(super) fn study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
         for (which, symbol, value) in [
             (
                 "deflection",
-                "φ_w = w/w_sta",
+                "φ(w) = w/w_sta",
                 (|a: &crate::metrics::Amplification| a.deflection) as fn(&crate::metrics::Amplification) -> f64,
             ),
-            ("moment", "φ_M = M/M_sta", |a| a.moment),
+            ("moment", "φ(M) = M/M_sta", |a| a.moment),
         ] {
             // Fastest first, so that the slower, smaller curves are drawn on top and stay visible.
             let curves = results
@@ -69,12 +69,18 @@ pub(super) fn study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
             let mut plot = quantity_figure(
                 &format!("amplification-{which}-{kn}kN"),
                 &format!("Mid-span {which} amplification, f_u = {kn} kN/m"),
-                "load position τ = x_c/L (-)",
+                "load position over length τ = x/L (-)",
                 &format!("{symbol} (-)"),
                 curves,
                 false,
             );
             plot.subtitle = subtitle.clone();
+            // The slow runs' curves nearly coincide (50 and 100 m/s): every second one dashed, so both show.
+            for (k, series) in plot.series.iter_mut().enumerate() {
+                if k % 2 == 1 {
+                    series.stroke = crate::plot::Stroke::Dashed;
+                }
+            }
             plots.push(plot);
         }
     }
