@@ -529,7 +529,7 @@ fn print_vehicles(v: &study::vehicle_output::VehicleReport) {
         v.max_wheel_force / 1e3,
         v.max_dynamic_increment
     );
-    for (i, w) in v.wheels.iter().enumerate().take(8) {
+    for w in v.wheels.iter().take(8) {
         // A glued contact pulls instead of letting go: its negative force is tension, never a loss of contact.
         let tension = if w.min_force < 0.0 {
             format!(
@@ -542,8 +542,8 @@ fn print_vehicles(v: &study::vehicle_output::VehicleReport) {
         println!(
             "    wheel {:>2} (vehicle {}, {:.2} m behind): Q₀ {:.1} kN, Q {:.1} … {:.1} kN{tension}, rail under it \
              {:.3} mm, {:.1} kN·m; {} {} of contact",
-            i + 1,
-            w.vehicle + 1,
+            w.wheel,
+            w.vehicle,
             w.offset,
             w.static_force / 1e3,
             w.min_force / 1e3,
@@ -563,9 +563,7 @@ fn print_vehicles(v: &study::vehicle_output::VehicleReport) {
         });
         println!(
             "    wheel {} left the rail at {:.3} m (t = {:.4} s), {landing}",
-            l.wheel + 1,
-            l.lift_off_position,
-            l.lift_off_time
+            l.wheel, l.lift_off_position, l.lift_off_time
         );
     }
     if v.losses.len() > 5 {

@@ -57,7 +57,7 @@ pub struct ScenarioArgs {
     /// Start from the analytic steady state with the load at this position (m) instead of at rest.
     #[arg(long, allow_negative_numbers = true)]
     pub steady_start: Option<f64>,
-    /// Start at rest in the static equilibrium of the loads (and vehicles) standing with the first at this position
+    /// Start in the static equilibrium of the loads (and vehicles) standing with the first at this position
     /// (m): no drop of vehicles into a soft track's trough as they enter.
     #[arg(long, allow_negative_numbers = true)]
     pub static_start: Option<f64>,

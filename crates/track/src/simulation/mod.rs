@@ -80,7 +80,8 @@ impl<'a> Simulation<'a> {
         Ok(Self { model, interactions, settings })
     }
 
-    /// Initial (q, v) over the free DOFs, per [`MovingLoadSettings::initial`].
+    /// Initial (q, v) over the free DOFs, per [`MovingLoadSettings::initial`]: a static start's deflection moves
+    /// with the loads ([`convected_velocity`]).
     pub fn initial_state(&self) -> Result<(Vec<f64>, Vec<f64>)> {
         let dofs = self.model.dofs();
         let n = dofs.free_len();
@@ -91,7 +92,8 @@ impl<'a> Simulation<'a> {
                 let mesh = self.model.mesh();
                 let mut q = self.settings.moving.train().load_vector(mesh, position).to_free(mesh, dofs);
                 self.model.stiffness().factor()?.solve_in_place(&mut q);
-                Ok((q, vec![0.0; n]))
+                let v = convected_velocity(self.model, &q, self.settings.moving.speed);
+                Ok((q, v))
             }
             InitialState::SteadyState { position } => {
                 // The infinite beam is linear: a train's steady state is the sum of its axles' (docs/theory.md §8,
@@ -140,9 +142,10 @@ impl<'a> Simulation<'a> {
         let start = settings.start_position();
         let coupling = match &settings.moving.vehicles {
             Some(vehicles) => {
-                let (beam_q0, _) = self.initial_state()?;
+                let (beam_q0, beam_v0) = self.initial_state()?;
                 let motion = (start, settings.moving.speed);
-                Some(Coupling::new(model, vehicles, &beam_q0, motion, theta, settings.record.extremes_nodes)?)
+                let beam = (beam_q0.as_slice(), beam_v0.as_slice());
+                Some(Coupling::new(model, vehicles, beam, motion, theta, settings.record.extremes_nodes)?)
             }
             None => None,
         };
@@ -400,4 +403,29 @@ impl<'a> Simulation<'a> {
         }
         sum / count
     }
+}
+
+/// The velocity of a deflection `q` (free DOFs) carried along the beam at `speed` without changing shape, as the
+/// static bowl under loads moving at that speed is (quasi-statically): ẇ = −V ∂w/∂x, θ̇ = −V ∂θ/∂x, with ∂w/∂x the
+/// node's rotation θ and ∂θ/∂x by central differences of the rotations (one-sided at the ends). Started at rest
+/// instead, the bowl would stand still while the loads leave it, and every wheel on its slopes would be thrown.
+fn convected_velocity(model: &BeamModel, q: &[f64], speed: f64) -> Vec<f64> {
+    let dofs = model.dofs();
+    let mesh = model.mesh();
+    let nodes = mesh.nodes();
+    let value = |full: usize| dofs.free_index(full).map_or(0.0, |i| q[i]);
+    let rotation: Vec<f64> = (0..nodes).map(|i| value(2 * i + 1)).collect();
+    let l = mesh.element_length();
+    let mut v = vec![0.0; q.len()];
+    for i in 0..nodes {
+        let (a, b) = (i.saturating_sub(1), (i + 1).min(nodes - 1));
+        let curvature = (rotation[b] - rotation[a]) / ((b - a) as f64 * l);
+        if let Some(k) = dofs.free_index(2 * i) {
+            v[k] = -speed * rotation[i];
+        }
+        if let Some(k) = dofs.free_index(2 * i + 1) {
+            v[k] = -speed * curvature;
+        }
+    }
+    v
 }

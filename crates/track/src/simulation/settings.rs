@@ -20,9 +20,10 @@ pub enum InitialState {
         /// Load position at t = 0 (m).
         position: f64,
     },
-    /// At rest in the static equilibrium of the loads standing with the first one at `position` (m): the beam
-    /// deflected under them and, with vehicles, the vehicles on the deflected rail. Removes the drop of vehicles
-    /// entering a soft track from the rigid ground level with its unloaded rail.
+    /// The static equilibrium of the loads standing with the first one at `position` (m): the beam deflected under
+    /// them, the deflection moving with the loads (ẇ = −V ∂w/∂x: the bowl of loads moving at V), and with vehicles
+    /// the vehicles at rest on the deflected rail. Removes the drop of vehicles entering a soft track from the rigid
+    /// ground level with its unloaded rail, and the throw of wheels left on a standing bowl.
     Static {
         /// Load position at t = 0 (m).
         position: f64,

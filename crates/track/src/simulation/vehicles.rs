@@ -48,7 +48,7 @@ impl Coupling {
     pub(super) fn new(
         model: &BeamModel,
         vehicles: &VehicleSettings,
-        beam_q0: &[f64],
+        (beam_q0, beam_v0): (&[f64], &[f64]),
         (start, speed): (f64, f64),
         theta: f64,
         region: Option<(f64, f64)>,
@@ -107,7 +107,11 @@ impl Coupling {
             (rail, model.beam().bending_stiffness()),
             (region, model.mesh().length),
         );
-        Ok(Self { system, contacts, weights: Constant { force: weight }, q0, v0: vec![0.0; n], observer })
+        // The beam's initial velocity (a static start's bowl moving with the loads); the vehicles start at rest, as
+        // wheels riding a bowl that moves with them do.
+        let mut v0 = vec![0.0; n];
+        v0[..beam_v0.len()].copy_from_slice(beam_v0);
+        Ok(Self { system, contacts, weights: Constant { force: weight }, q0, v0, observer })
     }
 }
 
