@@ -12,6 +12,8 @@ mod progress;
 mod reference;
 mod reproduce;
 mod run;
+mod run_report;
+mod run_text;
 mod scenario_args;
 mod study_cmd;
 mod sweep;

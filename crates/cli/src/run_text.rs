@@ -1,0 +1,236 @@
+//! The text report of one `frictrack run`: the inputs echoed, the extremes with where and when, the energy terms,
+//! the solver's statistics and fallbacks, and with vehicles their wheels, losses of contact and bodies; and the
+//! words the run's figures are subtitled with.
+
+use crate::run_report::RunReport;
+
+/// What ran, in words: the load, train or vehicles.
+fn load_description(r: &RunReport) -> String {
+    match (&r.vehicles, &r.train) {
+        (Some(v), _) => {
+            let total: f64 = v.wheels.iter().map(|w| w.static_force).sum();
+            let plural = if v.bodies.len() == 1 { "" } else { "s" };
+            format!("{} vehicle{plural} ({}) weighing {:.1} kN", v.bodies.len(), v.bodies[0].name, total / 1e3)
+        }
+        (None, Some(t)) => format!(
+            "train {} ({} axles, {} patches, {:.3} m, {:.1} kN on the beam{})",
+            t.name,
+            t.axles,
+            t.patches,
+            t.length,
+            t.total_force / 1e3,
+            r.axle_share.as_ref().map_or(String::new(), |s| format!(": {}", s.meaning))
+        ),
+        (None, None) => format!("load {:.1} kN", r.load / 1e3),
+    }
+}
+
+/// The friction that ran, in words.
+fn friction_description(r: &RunReport) -> String {
+    let devices = (r.devices > 0).then(|| format!("{} devices × {:.1} kN", r.devices, r.device_force / 1e3));
+    let distributed = (r.distributed_friction > 0.0).then(|| format!("{:.1} N/m distributed", r.distributed_friction));
+    match (devices, distributed) {
+        (None, None) => "none".into(),
+        (a, b) => [a, b].into_iter().flatten().collect::<Vec<_>>().join(" and "),
+    }
+}
+
+/// The subtitle of the run's figures: what ran, at which speed, with which friction.
+pub(crate) fn figure_subtitle(r: &RunReport) -> String {
+    format!(
+        "{} at {:.2} m/s ({:.0} km/h); friction: {}",
+        load_description(r),
+        r.speed,
+        r.speed * 3.6,
+        friction_description(r)
+    )
+}
+
+pub(crate) fn print_text(r: &RunReport) {
+    let title = if r.title.is_empty() { String::new() } else { format!(" — {}", r.title) };
+    let load = load_description(r);
+    println!("frictrack run{title}: {load} at {:.2} m/s ({:.0} km/h)", r.speed, r.speed * 3.6);
+    if let Some(v_cr) = r.critical_speed {
+        println!(
+            "  critical speed of the infinite track v_cr = {v_cr:.2} m/s; foundation damping ζ = {}",
+            study::number::significant(r.damping_ratio, 12)
+        );
+    }
+    match (r.devices, r.distributed_friction > 0.0) {
+        (0, false) => println!("  friction: none"),
+        (n, distributed) => {
+            if n > 0 {
+                let shown: Vec<String> = r.device_positions.iter().take(5).map(|x| format!("{x}")).collect();
+                let more = if n > 5 { ", …" } else { "" };
+                println!("  friction devices: {n} × {:.1} kN at {}{more} m", r.device_force / 1e3, shown.join(", "));
+            }
+            if distributed {
+                println!("  distributed friction: {:.1} N/m", r.distributed_friction);
+            }
+        }
+    }
+    let load = r.window_wording.load;
+    let line = |what: &str, d: f64, place: Option<(f64, f64)>, x_load: Option<f64>| match place {
+        Some((x, t)) => {
+            let load = x_load.map_or(String::new(), |x| format!(", {load} at {x:.1} m"));
+            println!("    max {what:<8} deflection {:>9.3} mm at x = {x:.1} m, t = {t:.4} s{load}", d * 1e3);
+        }
+        None => println!("    max {what:<8} deflection      none"),
+    };
+    match r.extremes_nodes {
+        Some((a, b)) => println!("  extremes over the nodes at {a:.1}–{b:.1} m ([output] extremes_nodes); whole run:"),
+        None => println!("  whole run (includes the entry transient from rest and the exit near x = L):"),
+    }
+    let place = |x: Option<f64>, t: Option<f64>| x.zip(t);
+    line(
+        "downward",
+        r.max_downward_deflection,
+        place(r.max_downward_deflection_position, r.max_downward_deflection_time),
+        None,
+    );
+    line(
+        "upward",
+        r.max_upward_deflection,
+        place(r.max_upward_deflection_position, r.max_upward_deflection_time),
+        None,
+    );
+    let (a, b) = r.extremes_window;
+    let why = r.window_wording.why;
+    let nodes = if r.extremes_nodes.is_some() { "the nodes above" } else { "every node" };
+    println!("  while the {load} is at {a:.1}–{b:.1} m ({why}), over {nodes}:");
+    match (&r.window_max_downward, &r.window_max_upward) {
+        (None, None) => println!("    none: the {load} never was in that range during the run"),
+        (down, up) => {
+            for (what, e) in [("downward", down), ("upward", up)] {
+                let d = e.as_ref().map_or(0.0, |e| e.deflection);
+                line(what, d, e.as_ref().map(|e| (e.position, e.time)), e.as_ref().map(|e| e.load_position));
+            }
+        }
+    }
+    println!(
+        "  static (the {} standing at every position): max downward {:.3} mm; dynamic amplification {:.3}",
+        if r.train.is_some() { "train" } else { "load" },
+        r.static_max_downward_deflection * 1e3,
+        r.dynamic_amplification
+    );
+    match place(r.max_acceleration_position, r.max_acceleration_time) {
+        Some((x, t)) => println!(
+            "  max acceleration {:.3} m/s² at x = {x:.1} m, t = {t:.4} s (the step's mean; a bridge deck's check value)",
+            r.max_acceleration
+        ),
+        None => println!("  max acceleration none (the beam never moved)"),
+    }
+    println!("  global norm W̄          {:>9.4} m²", r.global_norm);
+    println!(
+        "  energy (J): load work {:.4e}, dissipated {:.4e} (friction {:.4e}, viscous {:.4e}), numerical {:.4e}, balance residual {:.2e}",
+        r.load_work,
+        r.dissipated_energy,
+        r.friction_dissipation,
+        r.viscous_dissipation,
+        r.numerical_dissipation,
+        r.energy_residual
+    );
+    println!(
+        "  {} steps of {:.3e} s, {} friction sections ({:.0} re-solved per step), solver {}: {:.2} iterations/step \
+         (max {}), max residual {:.2e} m/s",
+        r.steps,
+        r.time_step,
+        r.sections,
+        r.mean_sections_solved,
+        r.solver,
+        r.mean_iterations,
+        r.max_iterations,
+        r.max_residual
+    );
+    if r.fallback_steps > 0 {
+        let by: Vec<String> = r.fallbacks.iter().map(|f| format!("{} ({})", f.solver, f.steps)).collect();
+        println!(
+            "  fallback: {} failed on {} of {} steps, solved instead by {} (docs/theory.md §5)",
+            r.solver,
+            r.fallback_steps,
+            r.steps,
+            by.join(", ")
+        );
+    }
+    if let Some(v) = &r.vehicles {
+        print_vehicles(v);
+    }
+    println!("  wall time {:.3} s", r.wall_time);
+}
+
+/// The vehicles' lines of the text report.
+fn print_vehicles(v: &study::vehicle_output::VehicleReport) {
+    let count = v.wheels.len();
+    println!(
+        "  vehicles: {count} wheel{}, {} contact; wheel force {:.1} … {:.1} kN, largest ΔQ/Q₀ {:.3}",
+        if count == 1 { "" } else { "s" },
+        v.contact,
+        v.min_wheel_force / 1e3,
+        v.max_wheel_force / 1e3,
+        v.max_dynamic_increment
+    );
+    for w in v.wheels.iter().take(8) {
+        // A glued contact pulls instead of letting go: its negative force is tension, never a loss of contact.
+        let tension = if w.min_force < 0.0 {
+            format!(
+                " (in tension down to {:.1} kN: the glued contact pulls the wheel onto the rail)",
+                w.min_force / 1e3
+            )
+        } else {
+            String::new()
+        };
+        println!(
+            "    wheel {:>2} (vehicle {}, {:.2} m behind): Q₀ {:.1} kN, Q {:.1} … {:.1} kN{tension}, rail under it \
+             {:.3} mm, {:.1} kN·m; {} {} of contact",
+            w.wheel,
+            w.vehicle,
+            w.offset,
+            w.static_force / 1e3,
+            w.min_force / 1e3,
+            w.max_force / 1e3,
+            w.max_rail_deflection * 1e3,
+            w.max_moment / 1e3,
+            w.losses_of_contact,
+            if w.losses_of_contact == 1 { "loss" } else { "losses" }
+        );
+    }
+    if v.wheels.len() > 8 {
+        println!("    … {} more wheels in the JSON report and wheels.csv", v.wheels.len() - 8);
+    }
+    for l in v.losses.iter().take(5) {
+        let landing = l.landing_position.map_or("still flying at the end".to_string(), |x| {
+            format!("landed at {x:.3} m after {:.2} ms, impact {:.1} kN", l.duration * 1e3, l.impact_force / 1e3)
+        });
+        println!(
+            "    wheel {} left the rail at {:.3} m (t = {:.4} s), {landing}",
+            l.wheel, l.lift_off_position, l.lift_off_time
+        );
+    }
+    if v.losses.len() > 5 {
+        println!("    … {} more losses of contact in the JSON report", v.losses.len() - 5);
+    }
+    for (i, b) in v.bodies.iter().enumerate().take(4) {
+        println!(
+            "    body {} ({}): acceleration max {:.3} m/s², RMS {:.3} m/s²",
+            i + 1,
+            b.name,
+            b.max_acceleration,
+            b.rms_acceleration
+        );
+    }
+    if v.bodies.len() > 4 {
+        println!("    … {} more bodies (largest RMS {:.3} m/s²)", v.bodies.len() - 4, v.max_rms_body_acceleration);
+    }
+    println!(
+        "  contacts: work on beam and vehicles {:.4e} J, dissipated (landings, implicit law) {:.4e} J, held at the end \
+         {:.4e} J",
+        v.contact_work, v.contact_loss, v.spring_energy
+    );
+    if v.projection_work != 0.0 {
+        println!(
+            "  rigid contacts: position projection changed the strain energy by {:.4e} J (the velocity-level drift, \
+             O(h))",
+            v.projection_work
+        );
+    }
+}
