@@ -1,11 +1,10 @@
 //! A simply supported span (a railway bridge) from a scenario: no foundation, pinned ends, Rayleigh damping.
 
-use super::{frictrack, json};
+use super::{frictrack, json, temporary_folder};
 
 #[test]
 fn a_damped_span_runs_and_bad_damping_is_refused() {
-    let folder = std::env::temp_dir().join(format!("frictrack-bridges-{}", std::process::id()));
-    std::fs::create_dir_all(&folder).unwrap();
+    let folder = temporary_folder("bridges");
     let write = |name: &str, damping: &str| {
         let path = folder.join(name);
         let text = format!(
@@ -43,8 +42,7 @@ fn a_damped_span_runs_and_bad_damping_is_refused() {
 /// deck acceleration; a mesh or step too coarse for max(30 Hz, 1.5 f₁, f₃) is warned with the value to use.
 #[test]
 fn a_deck_reports_amplification_and_acceleration_and_warns_when_unresolved() {
-    let folder = std::env::temp_dir().join(format!("frictrack-deck-{}", std::process::id()));
-    std::fs::create_dir_all(&folder).unwrap();
+    let folder = temporary_folder("deck");
     let write = |name: &str, elements: usize, advance: f64| {
         let path = folder.join(name);
         let text = format!(

@@ -119,11 +119,18 @@ fn invalid_input_exits_2_with_a_named_field() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("--speeds = 10:5:1"));
 }
 
-fn temporary_folder(name: &str) -> std::path::PathBuf {
+pub(crate) fn temporary_folder(name: &str) -> std::path::PathBuf {
     let dir = std::env::temp_dir().join(format!("frictrack-cli-{name}-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
     dir
+}
+
+/// Write `text` to `folder/name`; its path as a string, for a command line.
+pub(crate) fn write_file(folder: &std::path::Path, name: &str, text: &str) -> String {
+    let path = folder.join(name);
+    std::fs::write(&path, text).unwrap();
+    path.to_str().unwrap().to_string()
 }
 
 #[test]
@@ -237,10 +244,7 @@ fn sweep_args<'a>(scenario: &'a str, speeds: &'a str, out: &'a str, jobs: &'a st
 }
 
 fn small_case(dir: &std::path::Path) -> String {
-    let path = dir.join("case.toml");
-    std::fs::write(&path, "[mesh]\nlength = 60.0\nelements = 60\n[friction.devices]\ncount = 7\nforce = 20e3\n")
-        .unwrap();
-    path.to_str().unwrap().to_string()
+    write_file(dir, "case.toml", "[mesh]\nlength = 60.0\nelements = 60\n[friction.devices]\ncount = 7\nforce = 20e3\n")
 }
 
 /// Results do not depend on the thread count, and three shards merged are the unsharded file byte for byte.

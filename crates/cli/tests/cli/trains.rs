@@ -1,7 +1,7 @@
 //! `frictrack trains` and trains in `run` (docs/theory.md §10): the catalogue, one train's axles, `--train` with a
 //! catalogue name, a CSV file and scenario axles, and bad trains refused with the value named.
 
-use super::{frictrack, json};
+use super::{frictrack, json, temporary_folder, write_file};
 
 #[test]
 fn the_catalogue_lists_the_single_load_and_ten_hslm_trains() {
@@ -22,8 +22,7 @@ fn the_catalogue_lists_the_single_load_and_ten_hslm_trains() {
 
 #[test]
 fn runs_take_a_train_by_name_file_or_scenario_axles() {
-    let folder = std::env::temp_dir().join(format!("frictrack-trains-{}", std::process::id()));
-    std::fs::create_dir_all(&folder).unwrap();
+    let folder = temporary_folder("trains");
     let csv = folder.join("pair.csv");
     std::fs::write(&csv, "offset,force\n0,100e3\n2.5,100e3 # a bogie\n").unwrap();
     let scenario = folder.join("pair.toml");
@@ -48,8 +47,7 @@ fn runs_take_a_train_by_name_file_or_scenario_axles() {
 
 #[test]
 fn bad_trains_exit_2_naming_the_value() {
-    let folder = std::env::temp_dir().join(format!("frictrack-bad-trains-{}", std::process::id()));
-    std::fs::create_dir_all(&folder).unwrap();
+    let folder = temporary_folder("bad-trains");
     let both = folder.join("both.toml");
     std::fs::write(&both, "[load]\ntrain = \"hslm-a1\"\n[[load.axles]]\noffset = 0.0\nforce = 1e5\n").unwrap();
     let negative = folder.join("negative.toml");
@@ -106,8 +104,7 @@ fn analytic_superposes_a_train() {
 fn a_closed_pipe_ends_the_command_quietly() {
     use std::io::{BufRead, BufReader};
     use std::process::{Command, Stdio};
-    let folder = std::env::temp_dir().join(format!("frictrack-pipe-{}", std::process::id()));
-    std::fs::create_dir_all(&folder).unwrap();
+    let folder = temporary_folder("pipe");
     let csv = folder.join("long.csv");
     let lines: String = (0..10_000).map(|i| format!("{},1e5\n", i as f64 * 0.5)).collect();
     std::fs::write(&csv, lines).unwrap();
@@ -134,13 +131,8 @@ fn a_closed_pipe_ends_the_command_quietly() {
 /// names are taken in any case.
 #[test]
 fn analytic_takes_the_scenarios_train_and_reference_refuses_it() {
-    let folder = std::env::temp_dir().join(format!("frictrack-scenario-train-{}", std::process::id()));
-    std::fs::create_dir_all(&folder).unwrap();
-    let write = |name: &str, text: &str| {
-        let path = folder.join(name);
-        std::fs::write(&path, text).unwrap();
-        path.to_str().unwrap().to_string()
-    };
+    let folder = temporary_folder("scenario-train");
+    let write = |name: &str, text: &str| write_file(&folder, name, text);
     let rail = write("rail.toml", "[load]\ntrain = \"HSLM-A1\"\n[foundation]\ndamping_ratio = 0.05\n");
     let whole = write(
         "whole.toml",

@@ -1,20 +1,14 @@
 //! Vehicles in `run` (docs/theory.md §12): a quarter car over a dipped joint with its wheel outputs, a train of quarter
 //! cars, and bad vehicle inputs refused with exit code 2 naming the scenario path.
 
-use super::{frictrack, json};
-
-fn scenario(folder: &std::path::Path, name: &str, text: &str) -> String {
-    let path = folder.join(name);
-    std::fs::write(&path, text).unwrap();
-    path.to_str().unwrap().to_string()
-}
+use super::write_file as scenario;
+use super::{frictrack, json, temporary_folder};
 
 /// A quarter car at 50 m/s over a 2 mm dipped joint: wheels.csv holds one row per step with the documented columns,
 /// the wheel force dips and peaks around the joint, the JSON reports the wheel and the body, the energy closes.
 #[test]
 fn a_quarter_car_over_a_dipped_joint_writes_its_wheel() {
-    let folder = std::env::temp_dir().join(format!("frictrack-vehicles-{}", std::process::id()));
-    std::fs::create_dir_all(&folder).unwrap();
+    let folder = temporary_folder("vehicles");
     let car = scenario(
         &folder,
         "car.toml",
@@ -50,8 +44,7 @@ fn a_quarter_car_over_a_dipped_joint_writes_its_wheel() {
 /// carries it (one rail: half of each axle, the default on a foundation).
 #[test]
 fn a_train_of_quarter_cars_carries_its_axles() {
-    let folder = std::env::temp_dir().join(format!("frictrack-vehicle-train-{}", std::process::id()));
-    std::fs::create_dir_all(&folder).unwrap();
+    let folder = temporary_folder("vehicle-train");
     let train = scenario(
         &folder,
         "train.toml",
@@ -70,8 +63,7 @@ fn a_train_of_quarter_cars_carries_its_axles() {
 /// Bad vehicles exit 2 and name the path, the value and what is allowed.
 #[test]
 fn bad_vehicles_exit_2_naming_the_path() {
-    let folder = std::env::temp_dir().join(format!("frictrack-bad-vehicles-{}", std::process::id()));
-    std::fs::create_dir_all(&folder).unwrap();
+    let folder = temporary_folder("bad-vehicles");
     for (name, text, expected) in [
         ("mass.toml", "[vehicle]\nkind = \"quarter-car\"\nmass = 5.0\n", "vehicle.mass"),
         ("negative.toml", "[vehicle]\nbody_mass = -1.0\n", "vehicle.body_mass"),
@@ -107,8 +99,7 @@ fn bad_vehicles_exit_2_naming_the_path() {
 /// Two rail cars from the scenario: eight wheels, each on a quarter of its car.
 #[test]
 fn rail_cars_run_from_a_scenario() {
-    let folder = std::env::temp_dir().join(format!("frictrack-rail-cars-{}", std::process::id()));
-    std::fs::create_dir_all(&folder).unwrap();
+    let folder = temporary_folder("rail-cars");
     let cars = scenario(
         &folder,
         "cars.toml",
@@ -157,8 +148,7 @@ fn rail_cars_run_from_a_scenario() {
 /// and the energy closes with the projection booked.
 #[test]
 fn the_rail_car_example_runs_with_hertz_and_rigid_contact() {
-    let folder = std::env::temp_dir().join(format!("frictrack-rigid-cars-{}", std::process::id()));
-    std::fs::create_dir_all(&folder).unwrap();
+    let folder = temporary_folder("rigid-cars");
     let example = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/rail-cars-dipped-joint.toml");
     let text = std::fs::read_to_string(&example).unwrap();
     let out = folder.join("cars");
@@ -198,8 +188,7 @@ fn the_rail_car_example_runs_with_hertz_and_rigid_contact() {
 /// their own paths.
 #[test]
 fn groups_of_vehicles_each_with_its_contact() {
-    let folder = std::env::temp_dir().join(format!("frictrack-groups-{}", std::process::id()));
-    std::fs::create_dir_all(&folder).unwrap();
+    let folder = temporary_folder("groups");
     let base =
         "[load]\nspeed = 40.0\n[integration]\nload_advance = 0.04\ntheta = 0.51\n[vehicle]\nkind = \"rail-car\"\n";
     let groups = "[[vehicle.behind]]\noffset = 30.0\nkind = \"quarter-car\"\ncount = 2\nspacing = 10.0\n\
