@@ -45,12 +45,6 @@ impl WindowWording {
     }
 }
 
-/// An extreme that happened: a magnitude of 0 is no extreme at all (no step deflected that way), whose place and
-/// time would be placeholders.
-fn happened(x: &track::simulation::Extreme) -> Option<&track::simulation::Extreme> {
-    (x.magnitude > 0.0).then_some(x)
-}
-
 /// The JSON report of `frictrack run`. Deflections are positive magnitudes (m), relative to the self-weight state.
 #[derive(Debug, Serialize)]
 pub(crate) struct RunReport {
@@ -139,7 +133,7 @@ pub(crate) fn report(scenario: &Scenario, case: &Case, result: &RunResult, wall_
     let window = result.window.unwrap_or_default();
     let x0 = settings.start_position();
     let extreme = |x: &track::simulation::Extreme| {
-        happened(x).map(|x| ExtremeReport {
+        x.happened().map(|x| ExtremeReport {
             deflection: x.magnitude,
             position: x.position,
             time: x.time,
@@ -170,14 +164,14 @@ pub(crate) fn report(scenario: &Scenario, case: &Case, result: &RunResult, wall_
         device_positions,
         distributed_friction: scenario.friction.distributed.as_ref().map_or(0.0, |d| d.force_per_length),
         max_downward_deflection: result.max_downward.magnitude,
-        max_downward_deflection_position: happened(&result.max_downward).map(|x| x.position),
-        max_downward_deflection_time: happened(&result.max_downward).map(|x| x.time),
+        max_downward_deflection_position: result.max_downward.happened().map(|x| x.position),
+        max_downward_deflection_time: result.max_downward.happened().map(|x| x.time),
         max_upward_deflection: result.max_upward.magnitude,
-        max_upward_deflection_position: happened(&result.max_upward).map(|x| x.position),
-        max_upward_deflection_time: happened(&result.max_upward).map(|x| x.time),
+        max_upward_deflection_position: result.max_upward.happened().map(|x| x.position),
+        max_upward_deflection_time: result.max_upward.happened().map(|x| x.time),
         max_acceleration: result.max_acceleration.magnitude,
-        max_acceleration_position: happened(&result.max_acceleration).map(|x| x.position),
-        max_acceleration_time: happened(&result.max_acceleration).map(|x| x.time),
+        max_acceleration_position: result.max_acceleration.happened().map(|x| x.position),
+        max_acceleration_time: result.max_acceleration.happened().map(|x| x.time),
         static_max_downward_deflection: statics.max_downward,
         dynamic_amplification: if statics.max_downward > 0.0 {
             result.max_downward.magnitude / statics.max_downward

@@ -413,7 +413,8 @@ pub fn write_csv(points: &[SweepPoint], out: &mut dyn Write) -> std::io::Result<
 }
 
 /// Where and when an extreme of `magnitude` happened: `value`, or missing (NaN, an empty field) when it never
-/// happened (magnitude 0: no step deflected that way while the load was in the window), not a placeholder 0.
+/// happened (magnitude 0: no step deflected that way while the load was in the window), not a placeholder 0 — the
+/// rule of [`track::simulation::Extreme::happened`] on the point's flattened fields.
 fn where_if(magnitude: f64, value: f64) -> f64 {
     if magnitude > 0.0 { value } else { f64::NAN }
 }

@@ -14,6 +14,14 @@ pub struct Extreme {
     pub time: f64,
 }
 
+impl Extreme {
+    /// This extreme if it happened: a magnitude of 0 is no extreme at all (no step deflected that way), whose place
+    /// and time would be placeholders.
+    pub fn happened(&self) -> Option<&Extreme> {
+        (self.magnitude > 0.0).then_some(self)
+    }
+}
+
 /// The extremes while the load was inside a range of positions (docs/theory.md §8: away from the entry and exit
 /// transients of a finite beam started from rest).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
