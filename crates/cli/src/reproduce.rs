@@ -85,8 +85,20 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
         if !options.quiet {
             eprintln!("{}: {} runs in {:.1} s", preset.name(), data.runs, timer.elapsed().as_secs_f64());
         }
-        journals.push(journal);
         let _ = writeln!(report, "## {}. {}\n", i + 1, data.title);
+        if data.failures.is_empty() {
+            journals.push(journal);
+        } else {
+            // The study's other runs are in its data; the failed ones are listed first, the journal kept.
+            let lines = crate::study_cmd::failure_lines(&data);
+            eprintln!("{}: {} run(s) failed:\n{}", preset.name(), data.failures.len(), lines.join("\n"));
+            let _ = writeln!(report, "**{} run(s) failed** (left out of the curves below):\n", data.failures.len());
+            for line in &lines {
+                let _ = writeln!(report, "- {}", line.trim_start());
+            }
+            let _ = writeln!(report);
+            failed.push(format!("{}: {} run(s) failed", preset.name(), data.failures.len()));
+        }
         for line in &data.headline {
             let _ = writeln!(report, "{line}  ");
         }
@@ -117,7 +129,8 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
     }
     if !failed.is_empty() {
         anyhow::bail!(
-            "{} of {} studies failed (the report has the others; their finished runs are kept for --resume):\n  {}",
+            "{} of {} studies failed or had failed runs (the report has everything else; their finished runs are kept \
+             for --resume):\n  {}",
             failed.len(),
             Preset::ALL.len(),
             failed.join("\n  ")

@@ -90,11 +90,38 @@ pub fn run(args: &StudyArgs) -> Result<()> {
     let preset = Preset::from_name(&args.preset)?;
     let workers = args.options.workers()?;
     let (data, journal) = run_study(preset, &args.options, &args.options.base()?, &workers)?;
-    journal.remove()?;
     for line in &data.lines {
         println!("{line}");
     }
+    if !data.failures.is_empty() {
+        return Err(failed_runs(&data, &journal));
+    }
+    journal.remove()?;
     Ok(())
+}
+
+/// The failed runs of a study, one line each ("  devices = 31, … at 210 m/s: …").
+pub fn failure_lines(data: &StudyData) -> Vec<String> {
+    data.failures
+        .iter()
+        .map(|f| match f.speed {
+            Some(v) => format!("  {} at {v} m/s: {}", f.case, f.error),
+            None => format!("  {}: {}", f.case, f.error),
+        })
+        .collect()
+}
+
+/// The error that ends a study in which some runs failed (after every other run finished and its data, figures and
+/// JSON were written): the failed runs with their errors, and what was kept.
+fn failed_runs(data: &StudyData, journal: &study::Journal) -> anyhow::Error {
+    anyhow::anyhow!(
+        "{} run(s) of {} failed:\n{}\nthe study's CSV, JSON and figures have every other run (the JSON lists the \
+         failures), and {} keeps the finished runs for --resume",
+        data.failures.len(),
+        data.name,
+        failure_lines(data).join("\n"),
+        journal.path().display()
+    )
 }
 
 /// Run a preset on `base` and write its CSV, JSON and figures into the output folder; finished runs are kept in
@@ -156,6 +183,7 @@ pub fn run_study(
         "study_sets": preset.sets(),
         "scenario_parts_not_used": overrides,
         "csv_columns": data.columns,
+        "failures": data.failures,
     });
     write_atomically(
         &out.join(format!("{}.json", preset.name())),

@@ -28,6 +28,11 @@ pub fn row(values: &[f64]) -> String {
     values.iter().map(|&x| number(x)).collect::<Vec<_>>().join(",")
 }
 
+/// A CSV row as [`row`], a missing value (NaN) as an empty field (read as missing by CSV readers).
+pub fn row_with_gaps(values: &[f64]) -> String {
+    values.iter().map(|&x| if x.is_nan() { String::new() } else { number(x) }).collect::<Vec<_>>().join(",")
+}
+
 #[cfg(test)]
 mod tests {
     use super::number;

@@ -68,3 +68,40 @@ fn a_sweep_keeps_every_finished_run_past_a_failed_one() {
     assert_eq!(failures[1]["speed"], 215.0);
     assert!(dir.join("sweep.csv.journal").exists(), "the journal is kept for --resume");
 }
+
+/// A study keeps every finished run past failed ones: undamped with a steady start, the runs above v_cr = 205.57
+/// m/s fail on every curve of the distributed-friction study; its CSV keeps their rows (labels and speed, values
+/// empty) beside the finished ones, its JSON lists each failure with its curve, its figures are drawn, the failures
+/// are printed and it exits with 1, the journal kept for --resume.
+#[test]
+fn a_study_keeps_every_finished_run_past_failed_ones() {
+    let dir = temporary_folder("study-failures");
+    let scenario = dir.join("undamped.toml");
+    std::fs::write(
+        &scenario,
+        "[mesh]\nlength = 100.0\nelements = 100\n[integration]\nsteady_start = 50.0\n\
+         [sweep]\nfrom = 195.0\nto = 215.0\nstep = 5.0\n",
+    )
+    .unwrap();
+    let out_dir = dir.join("out");
+    let args = ["study", "distributed-speed", "--scenario", scenario.to_str().unwrap()];
+    let out = frictrack(&[&args[..], &["--out", out_dir.to_str().unwrap(), "--quiet"]].concat());
+    assert_eq!(out.status.code(), Some(1));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("10 run(s) of distributed-speed failed"), "{stderr}");
+    assert!(stderr.contains("force_per_length = 1000 at 215 m/s: no bounded steady state"), "{stderr}");
+    let csv = std::fs::read_to_string(out_dir.join("distributed-speed.csv")).unwrap();
+    let rows: Vec<&str> = csv.lines().skip(1).collect();
+    assert_eq!(rows.len(), 5 * 5, "every curve keeps a row per speed");
+    let empty: Vec<&&str> = rows.iter().filter(|r| r.ends_with(",,,,,,")).collect();
+    assert_eq!(empty.len(), 10, "{csv}");
+    assert!(empty.iter().all(|r| r.contains(",210,") || r.contains(",215,")), "{csv}");
+    let meta: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(out_dir.join("distributed-speed.json")).unwrap()).unwrap();
+    let failures = meta["failures"].as_array().unwrap();
+    assert_eq!(failures.len(), 10);
+    assert_eq!(failures[0]["case"], "force_per_length = 0");
+    assert_eq!(failures[0]["speed"], 210.0);
+    assert!(out_dir.join("distributed-speed-deflection.svg").exists());
+    assert!(out_dir.join(".distributed-speed.journal").exists(), "the journal is kept for --resume");
+}

@@ -1,28 +1,35 @@
 //! A labelled family of speed sweeps with the refined critical speed of each curve: the data, figures and summary
 //! of the three speed studies (devices, equal cost, distributed friction).
 
-use super::{StudyData, blank, mean_iterations};
+use super::{StudyData, StudyFailure, blank, mean_iterations};
 use crate::error::{Result, invalid};
 use crate::figures::{DeflectionCurve, deflection_figure, quantity_figure};
-use crate::number::row;
+use crate::number::{row, row_with_gaps};
 use crate::plot::PlotSpec;
 use crate::scenario::Scenario;
-use crate::sweep::{CriticalSpeed, Runner, SweepPoint, critical_speed};
+use crate::sweep::{CriticalSpeed, Runner, SweepPoint, SweepRow, critical_speed, failures as failures_of, finished};
 use serde_json::{Value, json};
 use std::fmt::Write as _;
 
 /// A labelled family of speed sweeps with the critical speed of each curve.
 pub(super) struct Curves {
     labels: Vec<Vec<(String, f64)>>,
-    /// Each curve's sweep, in the order of the speeds.
+    /// Each curve's sweep, one row per speed in the order of the speeds: a finished point or why the run failed.
+    rows: Vec<Vec<SweepRow>>,
+    /// Each curve's finished points, in the order of the speeds.
     pub(super) points: Vec<Vec<SweepPoint>>,
-    /// Each curve's refined critical speed.
-    pub(super) critical: Vec<CriticalSpeed>,
+    /// Each curve's refined critical speed; None when the curve's runs failed too often to refine it (see
+    /// `failures`).
+    pub(super) critical: Vec<Option<CriticalSpeed>>,
+    /// The runs that failed, each with its curve; every other run is kept.
+    pub(super) failures: Vec<StudyFailure>,
     /// Simulations run (sweeps and refinements).
     pub(super) runs: usize,
 }
 
 /// Sweep every scenario over `speeds` on one pool, then refine each curve's critical speed to 2 % of the speed step.
+/// A failed run leaves a gap in its curve and is recorded; a curve whose refinement fails (or with fewer than three
+/// finished runs) has no critical speed, and that is recorded too.
 pub(super) fn sweep_curves(
     scenarios: Vec<(Vec<(String, f64)>, Scenario)>,
     speeds: &[f64],
@@ -33,12 +40,42 @@ pub(super) fn sweep_curves(
         return Err(invalid("speeds", format!("{} speed(s)", speeds.len()), "a speed study needs at least 3 speeds"));
     }
     let cases = scenarios.iter().map(|(_, s)| s.build()).collect::<Result<Vec<_>>>()?;
-    let points = runner.sweep_many(&cases, speeds)?;
+    let labels: Vec<Vec<(String, f64)>> = scenarios.into_iter().map(|(l, _)| l).collect();
+    let rows = runner.sweep_many_keeping(&cases, speeds)?;
+    let points: Vec<Vec<SweepPoint>> = rows.iter().map(|r| finished(r)).collect();
     let step = speeds[1] - speeds[0];
     let curves: Vec<usize> = (0..cases.len()).collect();
-    let refined = runner.silent().map(&curves, |&c| critical_speed(&cases[c], &points[c], 0.02 * step, runner))?;
-    let runs = cases.len() * speeds.len() + refined.iter().map(|c| c.evaluations.len()).sum::<usize>();
-    Ok(Curves { labels: scenarios.into_iter().map(|(l, _)| l).collect(), points, critical: refined, runs })
+    let refined = runner.silent().map_each(&curves, |&c| critical_speed(&cases[c], &points[c], 0.02 * step, runner))?;
+    let mut failures = Vec::new();
+    for (c, curve) in rows.iter().enumerate() {
+        failures.extend(failures_of(curve).into_iter().map(|f| StudyFailure {
+            case: describe(&labels[c]),
+            speed: Some(f.speed),
+            error: f.error,
+        }));
+    }
+    let mut critical = Vec::with_capacity(cases.len());
+    for (c, result) in refined.into_iter().enumerate() {
+        match result {
+            Ok(k) => critical.push(Some(k)),
+            Err(e) => {
+                failures.push(StudyFailure {
+                    case: describe(&labels[c]),
+                    speed: None,
+                    error: format!("no critical speed: {e}"),
+                });
+                critical.push(None);
+            }
+        }
+    }
+    let runs = points.iter().map(Vec::len).sum::<usize>()
+        + critical.iter().flatten().map(|c| c.evaluations.len()).sum::<usize>();
+    Ok(Curves { labels, rows, points, critical, failures, runs })
+}
+
+/// A curve's labels as text: "devices = 31, device_force = 50000".
+fn describe(labels: &[(String, f64)]) -> String {
+    labels.iter().map(|(n, v)| format!("{n} = {v}")).collect::<Vec<_>>().join(", ")
 }
 
 impl Curves {
@@ -59,7 +96,8 @@ impl Curves {
                 color: color(c),
                 downward: self.points[c].iter().map(|q| (q.speed, q.max_downward_deflection)).collect(),
                 upward: self.points[c].iter().map(|q| (q.speed, q.max_upward_deflection)).collect(),
-                optimum: Some(&self.critical[c])
+                optimum: self.critical[c]
+                    .as_ref()
                     .filter(|k| k.is_interior())
                     .map(|k| (k.speed, k.max_downward_deflection)),
             })
@@ -92,19 +130,23 @@ impl Curves {
              window_max_downward_deflection,window_max_upward_deflection",
             label_names.join(",")
         );
-        for (labels, points) in self.labels.iter().zip(&self.points) {
+        for (labels, rows) in self.labels.iter().zip(&self.rows) {
             let prefix: Vec<f64> = labels.iter().map(|(_, v)| *v).collect();
-            for p in points {
-                let values = [
-                    p.speed,
-                    p.max_downward_deflection,
-                    p.max_upward_deflection,
-                    p.dissipated_energy,
-                    p.global_norm,
-                    p.window_max_downward_deflection,
-                    p.window_max_upward_deflection,
-                ];
-                let _ = writeln!(out, "{},{}", row(&prefix), row(&values));
+            for r in rows {
+                // A failed run's row keeps its labels and speed, every value empty (why: the JSON's failures).
+                let values = match r {
+                    Ok(p) => [
+                        p.speed,
+                        p.max_downward_deflection,
+                        p.max_upward_deflection,
+                        p.dissipated_energy,
+                        p.global_norm,
+                        p.window_max_downward_deflection,
+                        p.window_max_upward_deflection,
+                    ],
+                    Err(f) => [f.speed, f64::NAN, f64::NAN, f64::NAN, f64::NAN, f64::NAN, f64::NAN],
+                };
+                let _ = writeln!(out, "{},{}", row(&prefix), row_with_gaps(&values));
             }
         }
         out
@@ -120,24 +162,26 @@ impl Curves {
             for (name, value) in labels {
                 item.insert(name.clone(), json!(value));
             }
-            item.insert("critical_speed".into(), json!(critical.speed));
-            item.insert("critical_speed_location".into(), json!(critical.location));
-            item.insert("peak_max_downward_deflection".into(), json!(critical.max_downward_deflection));
+            item.insert("critical_speed".into(), json!(critical.as_ref().map(|k| k.speed)));
+            item.insert("critical_speed_location".into(), json!(critical.as_ref().map(|k| k.location)));
+            item.insert(
+                "peak_max_downward_deflection".into(),
+                json!(critical.as_ref().map(|k| k.max_downward_deflection)),
+            );
             item.insert("peak_max_upward_deflection_sampled".into(), json!(upward));
             item.insert("peak_window_max_downward_deflection_sampled".into(), json!(window));
             items.push(Value::Object(item));
-            let label: Vec<String> = labels.iter().map(|(n, v)| format!("{n} = {v}")).collect();
-            let text = if critical.is_interior() {
-                format!(
+            let text = match critical {
+                Some(k) if k.is_interior() => format!(
                     "critical speed {:.1} m/s ({:.0} km/h), peak max downward deflection {:.1} mm",
-                    critical.speed,
-                    critical.speed * 3.6,
-                    critical.max_downward_deflection * 1e3
-                )
-            } else {
-                critical.describe()
+                    k.speed,
+                    k.speed * 3.6,
+                    k.max_downward_deflection * 1e3
+                ),
+                Some(k) => k.describe(),
+                None => format!("no critical speed ({} of the sweep's runs finished; see the failures)", points.len()),
             };
-            lines.push(format!("{}: {text}", label.join(", ")));
+            lines.push(format!("{}: {text}", describe(labels)));
         }
         (json!({ "curves": items }), lines)
     }
@@ -157,6 +201,7 @@ pub(super) fn curves_study(
         lines,
         plots: plots(&curves),
         mean_iterations: mean_iterations(curves.points.iter().flatten()),
+        failures: curves.failures,
         ..blank(curves.runs)
     })
 }

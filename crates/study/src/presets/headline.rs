@@ -20,6 +20,9 @@ pub(super) fn headline(preset: Preset, summary: &Value) -> Vec<String> {
     let find = |pred: &dyn Fn(&Value) -> bool| items.iter().find(|v| pred(v)).cloned().unwrap_or(Value::Null);
     let curve_text = |v: &Value| {
         let (speed, peak) = (number(v, "critical_speed"), 1e3 * number(v, "peak_max_downward_deflection"));
+        if speed.is_nan() {
+            return "unknown (runs of that curve failed: see the study's failures)".to_string();
+        }
         match v.get("critical_speed_location").and_then(Value::as_str) {
             Some("upper-end") => format!("at or above {speed:.1} m/s, the top of the range (peak there {peak:.0} mm)"),
             Some("lower-end") => {

@@ -262,6 +262,20 @@ pub struct StudyData {
     pub mean_iterations: f64,
     /// The CSV's columns with their units, in order.
     pub columns: Vec<(String, &'static str)>,
+    /// The runs that failed; every other run is in the data (a failed run's CSV row, where the study writes one,
+    /// has its case and speed with the values empty).
+    pub failures: Vec<StudyFailure>,
+}
+
+/// A run of a study that failed: which case, at which speed, and why.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct StudyFailure {
+    /// The case, by the values that set it apart ("devices = 31, device_force = 50000").
+    pub case: String,
+    /// Load speed (m/s) of the failed run; None for a failed refinement of a critical speed.
+    pub speed: Option<f64>,
+    /// The error, as text.
+    pub error: String,
 }
 
 /// The unit of a column of a study's CSV (SI; "1" for counts and ratios).
@@ -369,6 +383,7 @@ pub(super) fn blank(runs: usize) -> StudyData {
         runs,
         mean_iterations: 0.0,
         columns: Vec::new(),
+        failures: Vec::new(),
     }
 }
 

@@ -18,6 +18,7 @@ pub use peak::{Metric, PeakLocation, RefinedPeak, refine_maximum};
 
 use crate::error::{Result, StudyError, invalid};
 use crate::journal::Journal;
+use crate::number::row_with_gaps;
 use crate::scenario::Case;
 use rayon::prelude::*;
 use serde::de::DeserializeOwned;
@@ -346,13 +347,20 @@ impl<'a> Runner<'a> {
     /// Run `case` at every speed, keeping going past a failed run: one row per speed, in the order of `speeds`
     /// (an interruption is still an error).
     pub fn speed_sweep_keeping(&self, case: &Case, speeds: &[f64]) -> Result<Vec<SweepRow>> {
+        Ok(self.sweep_many_keeping(std::slice::from_ref(case), speeds)?.pop().expect("one case"))
+    }
+
+    /// Run every case at every speed like [`Runner::sweep_many`], keeping going past a failed run: per case, one
+    /// row per speed in the order of `speeds` (an interruption is still an error).
+    pub fn sweep_many_keeping(&self, cases: &[Case], speeds: &[f64]) -> Result<Vec<Vec<SweepRow>>> {
         check_speeds(speeds)?;
-        let rows = self.map_each(speeds, |&speed| self.point(case, speed))?;
-        Ok(rows
+        let pairs = case_speed_pairs(cases.len(), speeds);
+        let rows = self.map_each(&pairs, |&(c, speed)| self.point(&cases[c], speed))?;
+        let mut rows = rows
             .into_iter()
-            .zip(speeds)
-            .map(|(row, &speed)| row.map_err(|e| FailedRun { speed, error: e.to_string() }))
-            .collect())
+            .zip(&pairs)
+            .map(|(row, &(_, speed))| row.map_err(|e| FailedRun { speed, error: e.to_string() }));
+        Ok((0..cases.len()).map(|_| rows.by_ref().take(speeds.len()).collect()).collect())
     }
 
     /// Run `case` at every speed; results in the order of `speeds`.
@@ -364,10 +372,15 @@ impl<'a> Runner<'a> {
     /// `speeds`, identical for any thread count.
     pub fn sweep_many(&self, cases: &[Case], speeds: &[f64]) -> Result<Vec<Vec<SweepPoint>>> {
         check_speeds(speeds)?;
-        let pairs: Vec<(usize, f64)> = (0..cases.len()).flat_map(|c| speeds.iter().map(move |&v| (c, v))).collect();
+        let pairs = case_speed_pairs(cases.len(), speeds);
         let mut points = self.map(&pairs, |&(c, speed)| self.point(&cases[c], speed))?.into_iter();
         Ok((0..cases.len()).map(|_| points.by_ref().take(speeds.len()).collect()).collect())
     }
+}
+
+/// Every (case index, speed) of `cases` cases swept over `speeds`, case by case: one pool runs them all.
+fn case_speed_pairs(cases: usize, speeds: &[f64]) -> Vec<(usize, f64)> {
+    (0..cases).flat_map(|c| speeds.iter().map(move |&v| (c, v))).collect()
 }
 
 /// Every speed of a sweep must be finite and positive.
@@ -417,15 +430,6 @@ pub fn write_csv(points: &[SweepPoint], out: &mut dyn Write) -> std::io::Result<
 /// rule of [`track::simulation::Extreme::happened`] on the point's flattened fields.
 fn where_if(magnitude: f64, value: f64) -> f64 {
     if magnitude > 0.0 { value } else { f64::NAN }
-}
-
-/// A CSV row as [`crate::number::row`], a missing value (NaN) as an empty field.
-fn row_with_gaps(values: &[f64]) -> String {
-    values
-        .iter()
-        .map(|&x| if x.is_nan() { String::new() } else { crate::number::number(x) })
-        .collect::<Vec<_>>()
-        .join(",")
 }
 
 /// Write sweep rows as CSV like [`write_csv`]; a failed run's line has its speed and every other field empty (read
