@@ -7,6 +7,7 @@
 //! - [`journal`]: every finished run on disk at once, so that an interrupted sweep resumes where it stopped.
 //! - [`track_profile`]: a sample of a random rail profile with its periodogram against the target spectrum.
 
+pub mod axis_grid;
 pub mod cost;
 pub mod diagnostics;
 pub mod error;

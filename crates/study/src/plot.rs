@@ -8,6 +8,7 @@
 //! configuration once in the legend; refined optima marked with a triangle; the legend outside the data, in a column
 //! to the right; tick labels rounded to the axis' own resolution (no `-0.000000000000000111022`).
 
+use crate::axis_grid::{self, GridAxis};
 use crate::error::{Result, StudyError};
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -64,7 +65,7 @@ pub struct PlotSpec {
     pub y_label: String,
     /// Logarithmic x axis (x must be > 0).
     pub log_x: bool,
-    /// Logarithmic y axis (y must be > 0), ticks in scientific notation.
+    /// Logarithmic y axis (y must be > 0); labels at 1-2-5 values (see [`crate::axis_grid`]).
     pub log_y: bool,
     /// The curves, drawn in this order.
     pub series: Vec<Series>,
@@ -276,18 +277,20 @@ fn draw<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, spec: &PlotSpec) -> s
     let tx = move |x: f64| if log_x { x.log10() } else { x };
     let ty = move |y: f64| if log_y { y.log10() } else { y };
     let ((x0, x1), (y0, y1)) = ranges(spec, &tx, &ty).ok_or("nothing to plot")?;
+    let grid =
+        |log: bool, lo: f64, hi: f64| if log { axis_grid::logarithmic(lo, hi) } else { axis_grid::linear(lo, hi) };
+    let (x_grid, y_grid) = (grid(log_x, x0, x1), grid(log_y, y0, y1));
+    let (x_step, y_step, x_plain, y_plain) = (x_grid.step, y_grid.step, x_grid.plain, y_grid.plain);
     let mut chart = ChartBuilder::on(&chart_area)
         .margin(15)
         .x_label_area_size(60)
         .y_label_area_size(95)
-        .build_cartesian_2d(x0..x1, y0..y1)
+        .build_cartesian_2d(GridAxis::new(x0..x1, x_grid), GridAxis::new(y0..y1, y_grid))
         .map_err(|e| err(&e))?;
-    let (x_step, y_step) = ((x1 - x0) / 10.0, (y1 - y0) / 10.0);
-    let x_format = move |x: &f64| {
-        if log_x { one_two_five(*x).map_or(String::new(), |v| tick(v, v / 10.0)) } else { tick(*x, x_step) }
+    let label = |log: bool, step: f64, plain: bool| {
+        move |v: &f64| if log { axis_grid::log_tick(*v, plain) } else { axis_grid::tick(*v, step) }
     };
-    let y_format =
-        move |y: &f64| if log_y { one_two_five(*y).map_or(String::new(), scientific) } else { tick(*y, y_step) };
+    let (x_format, y_format) = (label(log_x, x_step, x_plain), label(log_y, y_step, y_plain));
     chart
         .configure_mesh()
         .x_desc(spec.x_label.as_str())
@@ -378,66 +381,4 @@ fn draw_legend<DB: DrawingBackend>(
         area.draw(&Text::new(spec.mark_label.as_str(), (58, y - 9), fitted(&spec.mark_label)?))?;
     }
     Ok(())
-}
-
-/// A tick label rounded to the resolution of its axis (`step`, the span of a tenth of the axis): as many decimals
-/// as that step needs and no more, so float noise (0.30000000000000004, −1.1e-16) never shows.
-fn tick(value: f64, step: f64) -> String {
-    if !value.is_finite() {
-        return format!("{value}");
-    }
-    let decimals = if step > 0.0 && step.is_finite() { (1.0 - step.log10().floor()).clamp(0.0, 12.0) } else { 0.0 };
-    let text = format!("{value:.*}", decimals as usize);
-    // Trailing zeros after the point add nothing; "-0" is 0.
-    let text = if text.contains('.') { text.trim_end_matches('0').trim_end_matches('.').to_string() } else { text };
-    if text.trim_start_matches('-').chars().all(|c| c == '0' || c == '.') { "0".into() } else { text }
-}
-
-/// The value 10^`exponent` of a log axis's grid line when it is 1, 2 or 5 times a power of ten — the ticks a reader
-/// can use — else None: the other grid lines (10^0.5 = 3.16, 10^−0.8 = 0.158) stay unlabelled.
-fn one_two_five(exponent: f64) -> Option<f64> {
-    let value = 10f64.powf(exponent);
-    let decade = 10f64.powf(exponent.floor());
-    let mantissa = value / decade;
-    [1.0, 2.0, 5.0, 10.0].into_iter().find(|m| (mantissa - m).abs() < 1e-6 * m).map(|m| m * decade)
-}
-
-/// A log-axis tick label: "1e-8" at a power of ten, else two significant digits ("3.2e-8").
-fn scientific(value: f64) -> String {
-    let exponent = value.log10();
-    if (exponent - exponent.round()).abs() < 1e-3 {
-        format!("1e{}", exponent.round() as i32)
-    } else {
-        format!("{value:.1e}")
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::{one_two_five, scientific, tick};
-
-    #[test]
-    fn log_axes_label_only_one_two_five() {
-        assert_eq!(one_two_five(0.0), Some(1.0));
-        assert!((one_two_five(2f64.log10()).unwrap() - 2.0).abs() < 1e-12);
-        assert!((one_two_five(-(2f64.log10())).unwrap() - 0.5).abs() < 1e-12);
-        assert_eq!(one_two_five(0.5), None, "3.16");
-        assert_eq!(one_two_five(-0.8), None, "0.158");
-    }
-
-    #[test]
-    fn log_ticks_are_scientific() {
-        assert_eq!(scientific(1e-8), "1e-8");
-        assert_eq!(scientific(3.16e-7), "3.2e-7");
-        assert_eq!(scientific(100.0), "1e2");
-    }
-
-    #[test]
-    fn ticks_follow_the_axis_resolution() {
-        assert_eq!(tick(-1.1102230246251565e-16, 0.02), "0");
-        assert_eq!(tick(0.30000000000000004, 0.1), "0.3");
-        assert_eq!(tick(150.0, 30.0), "150");
-        assert_eq!(tick(0.0125, 0.001), "0.0125");
-        assert_eq!(tick(1e4, 1e3), "10000");
-    }
 }
