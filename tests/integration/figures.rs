@@ -24,12 +24,17 @@ fn inside((left, top, right, bottom): (i32, i32, i32, i32), (x, y): (f64, f64), 
 
 /// Check one rendered SVG against its layout; returns the offending elements.
 fn outside_elements(svg: &str, layout: &Layout) -> Vec<String> {
-    let (left, top, right, bottom) = layout.plot;
-    let tick_zone_left = (left - 12, top, left, bottom);
-    let tick_zone_below = (left, bottom, right, bottom + 12);
-    let allowed = |p: (f64, f64)| {
-        [layout.plot, layout.legend, tick_zone_left, tick_zone_below].into_iter().any(|area| inside(area, p, 1.5))
-    };
+    let areas: Vec<(i32, i32, i32, i32)> = layout
+        .panels
+        .iter()
+        .flat_map(|panel| {
+            let (left, top, right, bottom) = panel.plot;
+            let tick_zone_left = (left - 12, top, left, bottom);
+            let tick_zone_below = (left, bottom, right, bottom + 12);
+            [panel.plot, panel.legend, tick_zone_left, tick_zone_below]
+        })
+        .collect();
+    let allowed = |p: (f64, f64)| areas.iter().any(|&area| inside(area, p, 1.5));
     let mut bad = Vec::new();
     for element in svg.split('<').skip(1) {
         let tag = element.split([' ', '>', '/']).next().unwrap_or_default();
@@ -77,10 +82,15 @@ fn outside_elements(svg: &str, layout: &Layout) -> Vec<String> {
 /// bitmap-only fault) paints them. Returns the number of painted pixels.
 fn painted_margin_pixels(png: &std::path::Path, layout: &Layout) -> usize {
     let image = image::open(png).unwrap().to_rgb8();
-    let (left, top, right, bottom) = layout.plot;
-    let above = (left..right).flat_map(|x| (top - 12..top - 2).map(move |y| (x, y)));
-    let beside = (right + 2..layout.legend.0 - 1).flat_map(|x| (top..bottom).map(move |y| (x, y)));
-    above.chain(beside).filter(|&(x, y)| image.get_pixel(x as u32, y as u32).0 != [255, 255, 255]).count()
+    let mut painted = 0;
+    for panel in &layout.panels {
+        let (left, top, right, bottom) = panel.plot;
+        let above = (left..right).flat_map(|x| (top - 12..top - 2).map(move |y| (x, y)));
+        let beside = (right + 2..panel.legend.0 - 1).flat_map(|x| (top..bottom).map(move |y| (x, y)));
+        painted +=
+            above.chain(beside).filter(|&(x, y)| image.get_pixel(x as u32, y as u32).0 != [255, 255, 255]).count();
+    }
+    painted
 }
 
 /// Render every figure of `plots` into a fresh folder and check each SVG and PNG.
@@ -121,7 +131,31 @@ fn a_curve_out_of_its_frame_is_caught() {
     let (_, svg, mut layout) = render(&spec, &folder).unwrap();
     let svg = std::fs::read_to_string(svg).unwrap();
     assert!(outside_elements(&svg, &layout).is_empty());
-    layout.plot.1 += 200;
+    layout.panels[0].plot.1 += 200;
     assert!(!outside_elements(&svg, &layout).is_empty());
+    let _ = std::fs::remove_dir_all(&folder);
+}
+
+/// A train of three quarter cars draws its wheel forces a panel per vehicle: three panels, each inside its frame,
+/// each headed by its vehicle, on one image taller than a single chart.
+#[test]
+fn wheel_forces_are_drawn_a_panel_per_vehicle() {
+    let text = "[mesh]\nlength = 60.0\nelements = 120\n[load]\nspeed = 30.0\n[integration]\nload_advance = 0.05\n[vehicle]\nkind = \"quarter-car\"\n\
+                [[vehicle.behind]]\noffset = 10.0\nkind = \"quarter-car\"\ncount = 2\nspacing = 10.0\n";
+    let scenario = study::Scenario::from_toml(text, "three-cars.toml").unwrap();
+    let case = scenario.build().unwrap();
+    let result = study::sweep::Runner::new(1).unwrap().simulate(&case, &case.settings).unwrap();
+    let spec = study::vehicle_output::wheel_plot(result.vehicles.as_ref().unwrap(), "three cars", (0.0, 60.0));
+    assert_eq!(spec.panels.len(), 3);
+    assert!(spec.panels.iter().all(|p| p.series.len() == 1), "one wheel in each quarter car");
+    assert_drawn_inside(std::slice::from_ref(&spec), "wheel-panels");
+    let folder = std::env::temp_dir().join(format!("frictrack-figures-wheel-panels-{}", std::process::id()));
+    std::fs::create_dir_all(&folder).unwrap();
+    let (_, svg, layout) = render(&spec, &folder).unwrap();
+    assert_eq!(layout.panels.len(), 3);
+    assert!(layout.image.3 > 800, "taller than one chart: {:?}", layout.image);
+    assert!(layout.panels.windows(2).all(|w| w[0].plot.3 < w[1].plot.1), "stacked top to bottom");
+    let svg = std::fs::read_to_string(svg).unwrap();
+    assert!(svg.contains("vehicle 3: quarter car"), "each panel is headed by its vehicle");
     let _ = std::fs::remove_dir_all(&folder);
 }

@@ -77,6 +77,10 @@ pub struct PlotSpec {
     pub mark_label: String,
     /// How colour indices map to colours.
     pub palette: Palette,
+    /// Panels stacked top to bottom under this figure's title and subtitle, each drawn as a figure of its own (its
+    /// title a heading, its legend beside it) on common x and y ranges; when there are any, this figure's own
+    /// series and marks are not drawn.
+    pub panels: Vec<PlotSpec>,
 }
 
 /// How a figure maps colour indices to colours.
@@ -121,17 +125,25 @@ impl PlotSpec {
             key: Vec::new(),
             mark_label: String::new(),
             palette: Palette::Categorical,
+            panels: Vec::new(),
         }
     }
 }
 
-/// Where a figure was drawn: pixel rectangles (left, top, right, bottom) of the whole image, the plotting area
-/// (inside the axes) and the legend column. Every curve, marker and mark lies in the plotting area; legend samples
-/// in the legend column.
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// Where a figure was drawn: pixel rectangles (left, top, right, bottom) of the whole image and of each panel's
+/// plotting area (inside the axes) and legend column. Every curve, marker and mark lies in a plotting area; legend
+/// samples in a legend column.
+#[derive(Debug, Clone, PartialEq)]
 pub struct Layout {
     /// The image.
     pub image: (i32, i32, i32, i32),
+    /// Each panel, top to bottom (one for a figure without panels).
+    pub panels: Vec<PanelLayout>,
+}
+
+/// Where one panel was drawn.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PanelLayout {
     /// Inside the axes.
     pub plot: (i32, i32, i32, i32),
     /// The legend column.
@@ -181,6 +193,8 @@ pub fn sequential(t: f64) -> RGBColor {
 }
 
 const SIZE: (u32, u32) = (1200, 800);
+/// Height of each panel of a figure with panels (px).
+const PANEL_HEIGHT: u32 = 340;
 /// A curve of more points than this is drawn without markers, whatever its series asks.
 pub const MAX_MARKED_POINTS: usize = 60;
 const LEGEND_WIDTH: u32 = 300;
@@ -199,7 +213,14 @@ fn plot_error(path: &Path, e: impl std::fmt::Display) -> StudyError {
     StudyError::Io { path: path.display().to_string(), message: format!("plotting failed: {e}") }
 }
 
-/// Draw `spec` into `folder` as `<stem>.png` (1200×800) and `<stem>.svg`; returns both paths and the layout.
+/// The image size of `spec`: 1200×800, or taller by [`PANEL_HEIGHT`] a panel beyond two.
+fn size(spec: &PlotSpec) -> (u32, u32) {
+    let extra = spec.panels.len().saturating_sub(2) as u32;
+    (SIZE.0, SIZE.1 + extra * PANEL_HEIGHT)
+}
+
+/// Draw `spec` into `folder` as `<stem>.png` (1200×800, taller with more than two panels) and `<stem>.svg`;
+/// returns both paths and the layout.
 pub fn render(spec: &PlotSpec, folder: &Path) -> Result<(PathBuf, PathBuf, Layout)> {
     register_fonts();
     let spec = &crate::typeset::spec(spec);
@@ -212,22 +233,28 @@ pub fn render(spec: &PlotSpec, folder: &Path) -> Result<(PathBuf, PathBuf, Layou
         }
     }
     let layout = {
-        let root = BitMapBackend::new(&png, SIZE).into_drawing_area();
+        let root = BitMapBackend::new(&png, size(spec)).into_drawing_area();
         let layout = draw(&root, spec).map_err(|e| plot_error(&png, e))?;
         root.present().map_err(|e| plot_error(&png, e))?;
         layout
     };
     {
-        let root = SVGBackend::new(&svg, SIZE).into_drawing_area();
+        let root = SVGBackend::new(&svg, size(spec)).into_drawing_area();
         draw(&root, spec).map_err(|e| plot_error(&svg, e))?;
         root.present().map_err(|e| plot_error(&svg, e))?;
     }
     Ok((png, svg, layout))
 }
 
+/// The drawn coordinate of a value on a log axis (`log`: its log₁₀) or a linear one.
+fn transform(log: bool) -> impl Fn(f64) -> f64 + Copy {
+    move |v: f64| if log { v.log10() } else { v }
+}
+
 /// The data range of the figure (after the log transforms), padded by 2 % in x and 5 % in y so that markers at the
 /// ends stay inside the frame.
-fn ranges(spec: &PlotSpec, tx: &dyn Fn(f64) -> f64, ty: &dyn Fn(f64) -> f64) -> Option<((f64, f64), (f64, f64))> {
+fn ranges(spec: &PlotSpec) -> Option<((f64, f64), (f64, f64))> {
+    let (tx, ty) = (transform(spec.log_x), transform(spec.log_y));
     let curves = spec.series.iter().flat_map(|s| s.points.iter());
     let marks = spec.marks.iter().map(|m| &m.point);
     let (mut x0, mut x1, mut y0, mut y1) = (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY);
@@ -272,11 +299,38 @@ fn draw<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, spec: &PlotSpec) -> s
         let style = ("sans-serif", size).into_font().color(&RGBColor(60, 60, 60));
         titled.draw(&Text::new(spec.subtitle.as_str(), (20, 48), style)).map_err(|e| err(&e))?;
     }
-    let (chart_area, legend_area) = body.split_horizontally(SIZE.0 - LEGEND_WIDTH);
+    if spec.panels.is_empty() {
+        let range = ranges(spec).ok_or("nothing to plot")?;
+        let panel = draw_panel(&body, spec, range)?;
+        return Ok(Layout { image: (0, 0, SIZE.0 as i32, SIZE.1 as i32), panels: vec![panel] });
+    }
+    // Common ranges, so that the panels compare at a glance.
+    let found: Vec<_> = spec.panels.iter().filter_map(ranges).collect();
+    let first = *found.first().ok_or("nothing to plot")?;
+    let ((x0, x1), (y0, y1)) =
+        found.iter().fold(first, |((a, b), (c, d)), &((e, f), (g, h))| ((a.min(e), b.max(f)), (c.min(g), d.max(h))));
+    let mut panels = Vec::with_capacity(spec.panels.len());
+    for (area, panel) in body.split_evenly((spec.panels.len(), 1)).iter().zip(&spec.panels) {
+        let (heading, rest) = area.split_vertically(30);
+        let style = ("sans-serif", fitting_size(&heading, &panel.title, 20.0, width)).into_font();
+        heading.draw(&Text::new(panel.title.as_str(), (20, 8), style)).map_err(|e| err(&e))?;
+        panels.push(draw_panel(&rest, panel, ((x0, x1), (y0, y1)))?);
+    }
+    let (w, h) = root.dim_in_pixel();
+    Ok(Layout { image: (0, 0, w as i32, h as i32), panels })
+}
+
+/// One chart with its legend column in `area`, over `range` (after the log transforms): the plotting area's and
+/// legend's pixel rectangles.
+fn draw_panel<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    spec: &PlotSpec,
+    ((x0, x1), (y0, y1)): ((f64, f64), (f64, f64)),
+) -> std::result::Result<PanelLayout, String> {
+    let err = |e: &dyn std::fmt::Display| e.to_string();
+    let (chart_area, legend_area) = area.split_horizontally(SIZE.0 - LEGEND_WIDTH);
+    let (tx, ty) = (transform(spec.log_x), transform(spec.log_y));
     let (log_x, log_y) = (spec.log_x, spec.log_y);
-    let tx = move |x: f64| if log_x { x.log10() } else { x };
-    let ty = move |y: f64| if log_y { y.log10() } else { y };
-    let ((x0, x1), (y0, y1)) = ranges(spec, &tx, &ty).ok_or("nothing to plot")?;
     let grid =
         |log: bool, lo: f64, hi: f64| if log { axis_grid::logarithmic(lo, hi) } else { axis_grid::linear(lo, hi) };
     let (x_grid, y_grid) = (grid(log_x, x0, x1), grid(log_y, y0, y1));
@@ -330,11 +384,7 @@ fn draw<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, spec: &PlotSpec) -> s
     let (px, py) = chart.plotting_area().get_pixel_range();
     draw_legend(&legend_area, spec).map_err(|e| err(&e))?;
     let (lx, ly) = legend_area.get_pixel_range();
-    Ok(Layout {
-        image: (0, 0, SIZE.0 as i32, SIZE.1 as i32),
-        plot: (px.start, py.start, px.end, py.end),
-        legend: (lx.start, ly.start, lx.end, ly.end),
-    })
+    Ok(PanelLayout { plot: (px.start, py.start, px.end, py.end), legend: (lx.start, ly.start, lx.end, ly.end) })
 }
 
 /// The legend column: one entry per labelled curve (its stroke and marker), then the key of strokes and marks.

@@ -76,6 +76,7 @@ pub fn spec(spec: &PlotSpec) -> PlotSpec {
     for (_, key) in &mut out.key {
         *key = text(key);
     }
+    out.panels = spec.panels.iter().map(self::spec).collect();
     out
 }
 

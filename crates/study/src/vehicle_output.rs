@@ -16,8 +16,8 @@ use track::simulation::VehicleResults;
 /// The figure of a run with vehicles, without extension (PNG and SVG each).
 pub const WHEEL_FIGURE: &str = "wheel-forces";
 
-/// Most wheels drawn in the figure (all are in the CSV): beyond a dozen curves a reader cannot tell them apart.
-pub const MAX_WHEELS_DRAWN: usize = 12;
+/// Most vehicles drawn in the figure, a panel each (all are in the CSV): beyond four the panels grow too small.
+pub const MAX_VEHICLES_DRAWN: usize = 4;
 
 /// Columns of `wheels.csv`: name and unit.
 pub const WHEEL_COLUMNS: [(&str, &str); 7] = [
@@ -212,34 +212,53 @@ pub fn wheels_csv(results: &VehicleResults) -> String {
     out
 }
 
-/// The contact force of each wheel (the first [`MAX_WHEELS_DRAWN`]) against the wheel's position, in kN, while the
-/// wheel is inside `range` (m): the beam, or the nodes the extremes are taken over. Outside it the wheels stand on
-/// rigid ground or run over a finite track's ends, whose pinned supports they hit at their slope (docs/theory.md
-/// §12); `wheels.csv` has every step.
+/// The contact force of each wheel against the wheel's position, in kN, while the wheel is inside `range` (m): the
+/// beam, or the nodes the extremes are taken over. Outside it the wheels stand on rigid ground or run over a finite
+/// track's ends, whose pinned supports they hit at their slope (docs/theory.md §12); `wheels.csv` has every step.
+/// One vehicle: one chart; several: a panel per vehicle (the first [`MAX_VEHICLES_DRAWN`]) on common axes, each
+/// wheel in its vehicle's colours in order.
 pub fn wheel_plot(results: &VehicleResults, title: &str, range: (f64, f64)) -> PlotSpec {
-    let curves: Curves = results
-        .wheels
-        .iter()
-        .take(MAX_WHEELS_DRAWN)
-        .enumerate()
-        .map(|(i, w)| {
-            let inside = |x: &f64| (range.0..=range.1).contains(x);
-            let points = w.history.position.iter().zip(&w.history.force);
-            let points = points.filter(|(x, _)| inside(x)).map(|(&x, &f)| (x, f / 1e3)).collect();
-            (format!("wheel {} (vehicle {}, Q₀ = {:.1} kN)", i + 1, w.vehicle + 1, w.static_force / 1e3), 1 + i, points)
-        })
-        .collect();
-    let shown = if results.wheels.len() > MAX_WHEELS_DRAWN {
-        format!(" (first {MAX_WHEELS_DRAWN} of {} wheels)", results.wheels.len())
+    let vehicles = results.wheels.iter().map(|w| w.vehicle + 1).max().unwrap_or(0);
+    let panel = |vehicle: usize| -> PlotSpec {
+        let curves: Curves = results
+            .wheels
+            .iter()
+            .enumerate()
+            .filter(|(_, w)| w.vehicle == vehicle)
+            .enumerate()
+            .map(|(k, (i, w))| {
+                let inside = |x: &f64| (range.0..=range.1).contains(x);
+                let points = w.history.position.iter().zip(&w.history.force);
+                let points = points.filter(|(x, _)| inside(x)).map(|(&x, &f)| (x, f / 1e3)).collect();
+                (format!("wheel {} (Q₀ = {:.1} kN)", i + 1, w.static_force / 1e3), 1 + k, points)
+            })
+            .collect();
+        let name = results.bodies.get(vehicle).map_or(String::new(), |b| format!(": {}", b.name));
+        // A panel's y axis is short: its label too (the figure's title says what Q is).
+        let y_label = if vehicles <= 1 { "contact force Q (kN, compressive > 0)" } else { "Q (kN)" };
+        quantity_figure(
+            WHEEL_FIGURE,
+            &format!("vehicle {}{name}", vehicle + 1),
+            "wheel position x (m)",
+            y_label,
+            curves,
+            false,
+        )
+    };
+    let heading = format!("{title}: wheel–rail contact force, wheels at {:.0}–{:.0} m", range.0, range.1);
+    let heading =
+        if vehicles <= 1 { heading } else { heading.replace("contact force", "contact force Q (compressive > 0)") };
+    if vehicles <= 1 {
+        let mut spec = panel(0);
+        spec.title = heading;
+        return spec;
+    }
+    let shown = if vehicles > MAX_VEHICLES_DRAWN {
+        format!(" (first {MAX_VEHICLES_DRAWN} of {vehicles} vehicles)")
     } else {
         String::new()
     };
-    quantity_figure(
-        WHEEL_FIGURE,
-        &format!("{title}: wheel–rail contact force{shown}, wheels at {:.0}–{:.0} m", range.0, range.1),
-        "wheel position x (m)",
-        "contact force Q (kN, compressive > 0)",
-        curves,
-        false,
-    )
+    let mut spec = PlotSpec::new(WHEEL_FIGURE, format!("{heading}{shown}"), "", "");
+    spec.panels = (0..vehicles.min(MAX_VEHICLES_DRAWN)).map(panel).collect();
+    spec
 }
