@@ -159,3 +159,33 @@ fn wheel_forces_are_drawn_a_panel_per_vehicle() {
     assert!(svg.contains("vehicle 3: quarter car"), "each panel is headed by its vehicle");
     let _ = std::fs::remove_dir_all(&folder);
 }
+
+/// A legend label too long for its column even at 13 px goes on two lines: nothing is painted in the image's
+/// rightmost 4 px (a label running off the image paints there — the 11 px single line this replaced did).
+#[test]
+fn long_legend_labels_wrap_instead_of_running_off_the_image() {
+    let mut spec = PlotSpec::new("long-legend", "long legend", "x", "y");
+    for (i, label) in ["wheel 1 (vehicle 1, Q₀ = 61.7 kN) over the dipped joint at 100 m", "short"].iter().enumerate()
+    {
+        spec.series.push(study::plot::Series {
+            label: Some(label.to_string()),
+            color: 1 + i,
+            stroke: study::plot::Stroke::Solid,
+            markers: false,
+            points: vec![(0.0, i as f64), (1.0, 1.0 + i as f64)],
+        });
+    }
+    let folder = std::env::temp_dir().join(format!("frictrack-figures-long-legend-{}", std::process::id()));
+    std::fs::create_dir_all(&folder).unwrap();
+    let (png, svg, _) = render(&spec, &folder).unwrap();
+    let image = image::open(&png).unwrap().to_rgb8();
+    let (width, height) = image.dimensions();
+    let painted = (width - 4..width)
+        .flat_map(|x| (0..height).map(move |y| (x, y)))
+        .filter(|&(x, y)| image.get_pixel(x, y).0 != [255, 255, 255])
+        .count();
+    assert_eq!(painted, 0, "the legend reaches the image's edge");
+    let svg = std::fs::read_to_string(svg).unwrap();
+    assert!(svg.lines().any(|l| l.trim() == "over the dipped joint at 100 m"), "the label's second line");
+    let _ = std::fs::remove_dir_all(&folder);
+}

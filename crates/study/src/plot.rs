@@ -392,13 +392,31 @@ fn draw_legend<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     spec: &PlotSpec,
 ) -> std::result::Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
-    let (width, _) = area.dim_in_pixel();
-    // Each text at 17 px, or smaller (down to 11 px) where that is needed to fit the column.
-    let fitted = |text: &str| -> std::result::Result<FontDesc<'static>, DrawingAreaErrorKind<DB::ErrorType>> {
-        let room = f64::from(width) - 64.0;
-        let (w, _) = area.estimate_text_size(text, &("sans-serif", 17).into_text_style(area))?;
-        let size = if f64::from(w) > room { (17.0 * room / f64::from(w)).floor().max(11.0) } else { 17.0 };
-        Ok(("sans-serif", size).into_font())
+    let room = f64::from(area.dim_in_pixel().0) - 64.0;
+    // Each text at 17 px, or smaller down to 13 px where that fits the column, else on two lines (split at the space
+    // that balances them), each as large as fits; the rows below move down by the second line.
+    let write = |text: &str, y: i32| -> std::result::Result<i32, DrawingAreaErrorKind<DB::ErrorType>> {
+        let width = |t: &str| -> std::result::Result<f64, DrawingAreaErrorKind<DB::ErrorType>> {
+            Ok(f64::from(area.estimate_text_size(t, &("sans-serif", 17).into_text_style(area))?.0))
+        };
+        let size = |w: f64| if w > room { (17.0 * room / w).floor() } else { 17.0 };
+        let one = size(width(text)?);
+        let split = text
+            .match_indices(' ')
+            .map(|(i, _)| (&text[..i], &text[i + 1..]))
+            .min_by_key(|(a, b)| a.chars().count().abs_diff(b.chars().count()));
+        match split {
+            Some((first, second)) if one < 13.0 => {
+                let two = size(width(first)?.max(width(second)?)).max(11.0);
+                area.draw(&Text::new(first, (58, y - 9), ("sans-serif", two).into_font()))?;
+                area.draw(&Text::new(second, (58, y - 9 + 18), ("sans-serif", two).into_font()))?;
+                Ok(18)
+            }
+            _ => {
+                area.draw(&Text::new(text, (58, y - 9), ("sans-serif", one.max(11.0)).into_font()))?;
+                Ok(0)
+            }
+        }
     };
     let sample = |y: i32, stroke: Stroke| -> Vec<Vec<(i32, i32)>> {
         match stroke {
@@ -414,21 +432,18 @@ fn draw_legend<DB: DrawingBackend>(
         if s.markers {
             area.draw(&Circle::new((30, y), 3, spec.palette.color(s.color).filled()))?;
         }
-        let label = s.label.as_deref().unwrap_or_default();
-        area.draw(&Text::new(label, (58, y - 9), fitted(label)?))?;
-        y += 26;
+        y += 26 + write(s.label.as_deref().unwrap_or_default(), y)?;
     }
     y += 10;
     for (stroke, text) in &spec.key {
         for segment in sample(y, *stroke) {
             area.draw(&PathElement::new(segment, BLACK.stroke_width(2)))?;
         }
-        area.draw(&Text::new(text.as_str(), (58, y - 9), fitted(text)?))?;
-        y += 26;
+        y += 26 + write(text, y)?;
     }
     if !spec.marks.is_empty() && !spec.mark_label.is_empty() {
         area.draw(&TriangleMarker::new((30, y), 9, BLACK.filled()))?;
-        area.draw(&Text::new(spec.mark_label.as_str(), (58, y - 9), fitted(&spec.mark_label)?))?;
+        write(&spec.mark_label, y)?;
     }
     Ok(())
 }
