@@ -105,3 +105,34 @@ fn a_study_keeps_every_finished_run_past_failed_ones() {
     assert!(out_dir.join("distributed-speed-deflection.svg").exists());
     assert!(out_dir.join(".distributed-speed.journal").exists(), "the journal is kept for --resume");
 }
+
+/// The HSLM study keeps going past failed runs too: on the example deck (bar wave speed 3742 m/s) a sweep 50, 2050,
+/// 4050 m/s has its 4050 m/s runs refused, each curve keeps the others, the failures are listed in the JSON with
+/// their train, the figures are drawn and the study exits with 1.
+#[test]
+fn the_train_study_keeps_every_finished_run_past_failed_ones() {
+    let dir = temporary_folder("hslm-failures");
+    let deck =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/hslm-bridge.toml")).unwrap();
+    let scenario = dir.join("fast.toml");
+    std::fs::write(&scenario, format!("{deck}\n[sweep]\nfrom = 50.0\nto = 4050.0\nstep = 2000.0\n")).unwrap();
+    let out_dir = dir.join("out");
+    let out = frictrack(&[
+        "study",
+        "hslm",
+        "--scenario",
+        scenario.to_str().unwrap(),
+        "--out",
+        out_dir.to_str().unwrap(),
+        "--quiet",
+    ]);
+    assert_eq!(out.status.code(), Some(1), "{}", String::from_utf8_lossy(&out.stderr));
+    let meta: serde_json::Value = serde_json::from_slice(&std::fs::read(out_dir.join("hslm.json")).unwrap()).unwrap();
+    let failures = meta["failures"].as_array().unwrap();
+    let at_4050 = failures.iter().filter(|f| f["speed"] == 4050.0).count();
+    assert_eq!(at_4050, 20, "ten trains, with and without friction: {failures:?}");
+    assert!(failures.iter().any(|f| f["case"] == "HSLM-A7, friction"), "{failures:?}");
+    let csv = std::fs::read_to_string(out_dir.join("hslm.csv")).unwrap();
+    assert!(csv.lines().count() > 40, "the finished runs are kept: {csv}");
+    assert!(out_dir.join("hslm-deflection.svg").exists() && out_dir.join("hslm-envelope-acceleration.svg").exists());
+}

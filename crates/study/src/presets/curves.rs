@@ -1,13 +1,13 @@
 //! A labelled family of speed sweeps with the refined critical speed of each curve: the data, figures and summary
 //! of the three speed studies (devices, equal cost, distributed friction).
 
-use super::{StudyData, StudyFailure, blank, mean_iterations};
+use super::{StudyData, StudyFailure, blank, failed_runs, mean_iterations};
 use crate::error::{Result, invalid};
 use crate::figures::{DeflectionCurve, deflection_figure, quantity_figure};
 use crate::number::{row, row_with_gaps};
 use crate::plot::PlotSpec;
 use crate::scenario::Scenario;
-use crate::sweep::{CriticalSpeed, Runner, SweepPoint, SweepRow, critical_speed, failures as failures_of, finished};
+use crate::sweep::{CriticalSpeed, Runner, SweepPoint, SweepRow, critical_speed, finished};
 use serde_json::{Value, json};
 use std::fmt::Write as _;
 
@@ -46,14 +46,7 @@ pub(super) fn sweep_curves(
     let step = speeds[1] - speeds[0];
     let curves: Vec<usize> = (0..cases.len()).collect();
     let refined = runner.silent().map_each(&curves, |&c| critical_speed(&cases[c], &points[c], 0.02 * step, runner))?;
-    let mut failures = Vec::new();
-    for (c, curve) in rows.iter().enumerate() {
-        failures.extend(failures_of(curve).into_iter().map(|f| StudyFailure {
-            case: describe(&labels[c]),
-            speed: Some(f.speed),
-            error: f.error,
-        }));
-    }
+    let mut failures = failed_runs(&rows, |c| describe(&labels[c]));
     let mut critical = Vec::with_capacity(cases.len());
     for (c, result) in refined.into_iter().enumerate() {
         match result {

@@ -11,14 +11,15 @@
 //! are drawn for spans only: on a track the "deck" is the rail.
 
 use super::hslm_figures::interpolate;
-use super::{Resolution, StudyData, blank, mean_iterations, with_devices};
+use super::hslm_resonances::{Resonance, natural_frequencies, resonances};
+use super::{Resolution, StudyData, StudyFailure, blank, failed_runs, mean_iterations, with_devices};
 use crate::diagnostics::{deck_frequency, resolving_advance};
-use crate::error::Result;
+use crate::error::{Result, invalid};
 use crate::number::row;
 use crate::scenario::Scenario;
-use crate::sweep::{CriticalSpeed, Metric, RefinedPeak, Runner, SweepPoint, refine_maximum};
+use crate::sweep::{CriticalSpeed, Metric, RefinedPeak, Runner, SweepPoint, finished, refine_maximum, unrefined};
+use fem_beam::Train;
 use fem_beam::train::HSLM_A;
-use fem_beam::{BeamModel, Train};
 use serde_json::{Value, json};
 use std::fmt::Write as _;
 
@@ -29,10 +30,6 @@ pub const BALLASTED_DECK_LIMIT: f64 = 3.5;
 /// The friction set-up when the scenario has none: devices of F_u = 50 kN (the middle force of study 1) at the
 /// density of its strongest set, 31 on the 200 m reference track ([`fallback_devices`]).
 const FALLBACK_FORCE: f64 = 50e3;
-/// The natural frequencies whose resonance speeds are listed (f₁ … f₃).
-const MODES: usize = 3;
-/// Harmonics listed per frequency, at most.
-const MAX_ORDER: usize = 20;
 /// The trains: HSLM-A1 … A10.
 pub(super) const TRAINS: usize = HSLM_A.len();
 /// Samples of the bracket around each sampled maximum before golden section ([`refine_maximum`]): the largest
@@ -128,38 +125,6 @@ pub(super) fn overrides(base: &Scenario) -> Vec<String> {
         notes.extend(prepared);
     }
     notes
-}
-
-/// A resonance speed v = f_j·D/i.
-#[derive(Debug, Clone, Copy)]
-pub(super) struct Resonance {
-    /// j (1 = the lowest natural frequency).
-    pub(super) mode: usize,
-    /// i.
-    pub(super) order: usize,
-    /// f_j (Hz).
-    pub(super) frequency: f64,
-    /// v (m/s).
-    pub(super) speed: f64,
-}
-
-/// The resonance speeds of coach length `d` (m) for `frequencies` (Hz, ascending) inside [from, to] (m/s). A
-/// frequency within 1 % of a lower one gives the same speeds and is left out (modes that crowd, as the lowest ones
-/// of a beam on a foundation do; the study lists resonances of spans only, whose frequencies grow as n²).
-fn resonances(frequencies: &[f64], d: f64, (from, to): (f64, f64)) -> Vec<Resonance> {
-    let mut out = Vec::new();
-    for (j, &frequency) in frequencies.iter().enumerate() {
-        if frequencies[..j].iter().any(|&f| (frequency - f).abs() <= 0.01 * f) {
-            continue;
-        }
-        for order in 1..=MAX_ORDER {
-            let speed = frequency * d / order as f64;
-            if (from..=to).contains(&speed) {
-                out.push(Resonance { mode: j + 1, order, frequency, speed });
-            }
-        }
-    }
-    out
 }
 
 /// One train under one friction set-up.
@@ -396,14 +361,6 @@ pub(super) fn millimetres(w: f64) -> String {
     format!("{mm:.decimals$} mm")
 }
 
-/// f₁ … f₃ (Hz) of `model`, None where its dense eigenproblem is refused (over 2000 free DOFs: a span of more than
-/// 1000 elements, then without resonance speeds).
-fn natural_frequencies(model: &BeamModel) -> Option<Vec<f64>> {
-    let count = MODES.min(model.dofs().free_len());
-    let omegas = model.natural_frequencies(count).ok()?;
-    Some(omegas.into_iter().map(|w| w / std::f64::consts::TAU).collect())
-}
-
 pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) -> Result<StudyData> {
     let speeds = resolution.train_speeds(base);
     let (base, _) = prepared(base, &speeds)?;
@@ -439,22 +396,45 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
             grid
         })
         .collect();
-    let pairs: Vec<(usize, f64)> = grids.iter().enumerate().flat_map(|(c, g)| g.iter().map(move |&v| (c, v))).collect();
-    let mut flat = runner.map(&pairs, |&(c, v)| runner.point(&cases[c], v))?.into_iter();
-    let points: Vec<Vec<SweepPoint>> = grids.iter().map(|g| flat.by_ref().take(g.len()).collect()).collect();
+    // A failed run leaves a gap in its curve; a failed refinement leaves the curve's peaks unrefined (their
+    // resolution the sweep's bracket); each is recorded, and the study goes on.
+    let curve_name =
+        |c: usize| format!("HSLM-A{}, {}", train_of(c), if c < TRAINS { "no friction" } else { "friction" });
+    let rows = runner.sweep_grids_keeping(&cases, &grids)?;
+    let mut failures = failed_runs(&rows, curve_name);
+    let points: Vec<Vec<SweepPoint>> = rows.iter().map(|r| finished(r)).collect();
+    if let Some(c) = points.iter().position(Vec::is_empty) {
+        return Err(invalid("runs", curve_name(c), "every run of this curve failed: no peak to report"));
+    }
     let tolerance = 0.02 * (speeds[1] - speeds[0]);
     let ids: Vec<usize> = (0..cases.len()).collect();
-    let refined = runner.silent().map(&ids, |&c| {
+    let refined = runner.silent().map_each(&ids, |&c| {
         let refine = |metric| refine_maximum(&cases[c], &points[c], metric, (tolerance, PEAK_SCAN), runner);
         Ok((refine(Metric::MaxDownwardDeflection)?, refine(Metric::MaxAcceleration)?))
     })?;
+    let refined: Vec<(RefinedPeak, RefinedPeak)> = refined
+        .into_iter()
+        .enumerate()
+        .map(|(c, result)| {
+            result.unwrap_or_else(|e| {
+                failures.push(StudyFailure {
+                    case: curve_name(c),
+                    speed: None,
+                    error: format!("peaks not refined: {e}"),
+                });
+                let sweep = |metric| unrefined(&points[c], metric).expect("a finished run");
+                (sweep(Metric::MaxDownwardDeflection), sweep(Metric::MaxAcceleration))
+            })
+        })
+        .collect();
     let advance = base.integration.load_advance;
     let statics = runner.silent().map(&(1..=TRAINS).collect::<Vec<_>>(), |&k| {
         let nodes = case.settings.record.extremes_nodes;
         let train = base.on_the_beam(Train::hslm_a(k));
         Ok(track::statics::static_envelope(&case.model, &train, advance, nodes)?.max_downward)
     })?;
-    let runs = pairs.len() + refined.iter().map(|(d, a)| d.evaluations.len() + a.evaluations.len()).sum::<usize>();
+    let runs = points.iter().map(Vec::len).sum::<usize>()
+        + refined.iter().map(|(d, a)| d.evaluations.len() + a.evaluations.len()).sum::<usize>();
     let curves = points
         .into_iter()
         .zip(refined)
@@ -493,6 +473,7 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
         lines,
         plots: results.figures(),
         mean_iterations: mean_iterations(results.curves.iter().flat_map(|c| &c.points)),
+        failures,
         ..blank(runs)
     })
 }

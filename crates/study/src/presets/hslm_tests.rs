@@ -1,5 +1,6 @@
 //! Tests of the HSLM study's set-up: what it changes in the scenario, its friction set-ups, resonance speeds.
-use super::{friction_setups, millimetres, prepared, resonances};
+use super::super::hslm_resonances::resonances;
+use super::{friction_setups, millimetres, prepared};
 use crate::scenario::{AbsorbingZonesSection, DevicesSection, DistributedSection, Scenario};
 
 /// On a track the study adds absorbing zones and takes the extremes over the middle third, unless the scenario

@@ -15,6 +15,7 @@ mod equal_cost;
 mod headline;
 mod hslm;
 mod hslm_figures;
+mod hslm_resonances;
 mod optimal_force;
 mod vehicle_speed;
 
@@ -22,7 +23,7 @@ use crate::error::{Result, invalid};
 use crate::plot::PlotSpec;
 use crate::scenario::{AbsorbingZonesSection, DevicesSection, DistributedSection, Scenario, SweepSection};
 use crate::speeds::SpeedScale;
-use crate::sweep::{Runner, SweepPoint};
+use crate::sweep::{Runner, SweepPoint, SweepRow};
 use serde::Serialize;
 use serde_json::Value;
 
@@ -265,6 +266,19 @@ pub struct StudyData {
     /// The runs that failed; every other run is in the data (a failed run's CSV row, where the study writes one,
     /// has its case and speed with the values empty).
     pub failures: Vec<StudyFailure>,
+}
+
+/// The failed runs of a family of sweeps (`rows[c]` the sweep of the case called `name(c)`), in order.
+pub(super) fn failed_runs(rows: &[Vec<SweepRow>], name: impl Fn(usize) -> String) -> Vec<StudyFailure> {
+    let failed = |(c, curve): (usize, &Vec<SweepRow>)| {
+        let name = name(c);
+        crate::sweep::failures(curve).into_iter().map(move |f| StudyFailure {
+            case: name.clone(),
+            speed: Some(f.speed),
+            error: f.error,
+        })
+    };
+    rows.iter().enumerate().flat_map(failed).collect()
 }
 
 /// A run of a study that failed: which case, at which speed, and why.

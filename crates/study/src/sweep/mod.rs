@@ -14,7 +14,7 @@ mod peak;
 
 pub use critical::{CriticalSpeed, critical_speed};
 pub use optimal_force::{OptimalForce, log_spaced, optimal_device_force, refine_device_force, refine_from_scan};
-pub use peak::{Metric, PeakLocation, RefinedPeak, refine_maximum};
+pub use peak::{Metric, PeakLocation, RefinedPeak, refine_maximum, unrefined};
 
 use crate::error::{Result, StudyError, invalid};
 use crate::journal::Journal;
@@ -353,14 +353,21 @@ impl<'a> Runner<'a> {
     /// Run every case at every speed like [`Runner::sweep_many`], keeping going past a failed run: per case, one
     /// row per speed in the order of `speeds` (an interruption is still an error).
     pub fn sweep_many_keeping(&self, cases: &[Case], speeds: &[f64]) -> Result<Vec<Vec<SweepRow>>> {
-        check_speeds(speeds)?;
-        let pairs = case_speed_pairs(cases.len(), speeds);
+        self.sweep_grids_keeping(cases, &vec![speeds.to_vec(); cases.len()])
+    }
+
+    /// Run each case over its own grid of speeds (`grids[c]` for `cases[c]`), all on one pool, keeping going past
+    /// a failed run: per case, one row per speed of its grid, in its order (an interruption is still an error).
+    pub fn sweep_grids_keeping(&self, cases: &[Case], grids: &[Vec<f64>]) -> Result<Vec<Vec<SweepRow>>> {
+        grids.iter().try_for_each(|g| check_speeds(g))?;
+        let pairs: Vec<(usize, f64)> =
+            grids.iter().enumerate().flat_map(|(c, g)| g.iter().map(move |&v| (c, v))).collect();
         let rows = self.map_each(&pairs, |&(c, speed)| self.point(&cases[c], speed))?;
         let mut rows = rows
             .into_iter()
             .zip(&pairs)
             .map(|(row, &(_, speed))| row.map_err(|e| FailedRun { speed, error: e.to_string() }));
-        Ok((0..cases.len()).map(|_| rows.by_ref().take(speeds.len()).collect()).collect())
+        Ok(grids.iter().map(|g| rows.by_ref().take(g.len()).collect()).collect())
     }
 
     /// Run `case` at every speed; results in the order of `speeds`.

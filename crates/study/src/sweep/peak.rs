@@ -72,6 +72,35 @@ impl RefinedPeak {
     }
 }
 
+/// The index of the sweep's largest `metric`, None for an empty sweep.
+fn best_index(sweep: &[SweepPoint], metric: Metric) -> Option<usize> {
+    (0..sweep.len()).max_by(|&a, &b| metric.of(&sweep[a]).total_cmp(&metric.of(&sweep[b])))
+}
+
+/// The sweep's own maximum of `metric`, without refinement runs (None for an empty sweep): at an end of the range a
+/// bound (resolution 0, as [`refine_maximum`] returns it), inside it a peak known to the width of the bracket
+/// [v_{i−1}, v_{i+1}] — what is reported when a refinement could not run.
+pub fn unrefined(sweep: &[SweepPoint], metric: Metric) -> Option<RefinedPeak> {
+    let best = best_index(sweep, metric)?;
+    let sweep_maximum = (sweep[best].speed, metric.of(&sweep[best]));
+    let (location, resolution) = if best == 0 {
+        (PeakLocation::LowerEnd, 0.0)
+    } else if best == sweep.len() - 1 {
+        (PeakLocation::UpperEnd, 0.0)
+    } else {
+        (PeakLocation::Interior, sweep[best + 1].speed - sweep[best - 1].speed)
+    };
+    Some(RefinedPeak {
+        location,
+        range: (sweep[0].speed, sweep[sweep.len() - 1].speed),
+        speed: sweep_maximum.0,
+        value: sweep_maximum.1,
+        sweep_maximum,
+        evaluations: Vec::new(),
+        resolution,
+    })
+}
+
 /// Refine the sweep's maximum of `metric` to `tolerance` (m/s) on fresh runs of `case` (see the module
 /// documentation); `scan` interior samples of the bracket first (0: golden section alone). The sweep must be in
 /// increasing speed; its spacing need not be even.
@@ -92,24 +121,12 @@ pub fn refine_maximum(
     if !(tolerance.is_finite() && tolerance > 0.0) {
         return Err(invalid("tolerance", tolerance, "must be finite and > 0 (m/s)"));
     }
-    let best = (0..sweep.len()).max_by(|&a, &b| metric.of(&sweep[a]).total_cmp(&metric.of(&sweep[b]))).expect("3+");
-    let sweep_maximum = (sweep[best].speed, metric.of(&sweep[best]));
-    let range = (sweep[0].speed, sweep[sweep.len() - 1].speed);
-    let bound = |location| RefinedPeak {
-        location,
-        range,
-        speed: sweep_maximum.0,
-        value: sweep_maximum.1,
-        sweep_maximum,
-        evaluations: Vec::new(),
-        resolution: 0.0,
-    };
-    if best == 0 {
-        return Ok(bound(PeakLocation::LowerEnd));
+    let start = unrefined(sweep, metric).expect("3+ points");
+    if !start.is_interior() {
+        return Ok(start);
     }
-    if best == sweep.len() - 1 {
-        return Ok(bound(PeakLocation::UpperEnd));
-    }
+    let (range, sweep_maximum) = (start.range, start.sweep_maximum);
+    let best = best_index(sweep, metric).expect("3+ points");
     let (mut lo, mut hi) = (sweep[best - 1].speed, sweep[best + 1].speed);
     let mut evaluations = Vec::new();
     let mut run = |v: f64| -> Result<f64> {
