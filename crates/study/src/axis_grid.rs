@@ -24,6 +24,11 @@ pub struct Grid {
     pub plain: bool,
 }
 
+impl Grid {
+    /// No grid: the axis of an empty or degenerate range.
+    const EMPTY: Grid = Grid { bold: Vec::new(), light: Vec::new(), step: 0.0, plain: true };
+}
+
 /// A plotters axis over a range of the drawn coordinate with its [`Grid`]: bold (labelled) lines where the grid has
 /// them, light lines at its light positions, the linear mapping of plotters' own `f64` axis.
 pub struct GridAxis {
@@ -77,7 +82,7 @@ fn multiples(lo: f64, hi: f64, step: f64) -> Vec<f64> {
 /// The grid of a linear axis over [lo, hi].
 pub fn linear(lo: f64, hi: f64) -> Grid {
     if !(lo.is_finite() && hi.is_finite() && hi > lo) {
-        return Grid { bold: Vec::new(), light: Vec::new(), step: 0.0, plain: true };
+        return Grid::EMPTY;
     }
     let step = nice_step(hi - lo);
     Grid { bold: multiples(lo, hi, step), light: multiples(lo, hi, 0.5 * step), step, plain: true }
@@ -86,7 +91,7 @@ pub fn linear(lo: f64, hi: f64) -> Grid {
 /// The grid of a log axis whose exponents (log₁₀ of the values) run over [lo, hi].
 pub fn logarithmic(lo: f64, hi: f64) -> Grid {
     if !(lo.is_finite() && hi.is_finite() && hi > lo) {
-        return Grid { bold: Vec::new(), light: Vec::new(), step: 0.0, plain: true };
+        return Grid::EMPTY;
     }
     let decades = hi - lo;
     let at = |mantissas: &[f64], every: i64| -> Vec<f64> {
@@ -130,15 +135,10 @@ pub fn log_tick(exponent: f64, plain: bool) -> String {
         // Three significant digits, the float noise of 10^log10(0.05) rounded away.
         return crate::number::significant(value, 3);
     }
-    let (power, mantissa) = (exponent.floor(), value / 10f64.powf(exponent.floor()));
-    let mantissa = (mantissa * 10.0).round() / 10.0;
-    if (mantissa - 10.0).abs() < 1e-9 {
-        format!("1e{}", power as i32 + 1)
-    } else if (mantissa - mantissa.round()).abs() < 1e-9 {
-        if mantissa.round() == 1.0 { format!("1e{}", power as i32) } else { format!("{}e{}", mantissa, power as i32) }
-    } else {
-        format!("{mantissa:.1}e{}", power as i32)
-    }
+    // The mantissa to one decimal, written shortest ("2", "3.2"); one that rounds up to 10 moves to the next power.
+    let power = exponent.floor() as i32;
+    let mantissa = (value / 10f64.powi(power) * 10.0).round() / 10.0;
+    if mantissa >= 10.0 { format!("1e{}", power + 1) } else { format!("{mantissa}e{power}") }
 }
 
 #[cfg(test)]

@@ -43,6 +43,14 @@ pub enum StudyError {
         /// What is wrong.
         message: String,
     },
+    /// Every run of one curve of a study failed: the study has nothing of that curve to report.
+    #[error("every run of {case} failed; the first: {first}")]
+    CurveFailed {
+        /// The curve.
+        case: String,
+        /// The first run's error, as text.
+        first: String,
+    },
     /// The run was asked to stop (Ctrl-C) before it finished; finished runs are in the journal.
     #[error("interrupted")]
     Interrupted,
@@ -97,7 +105,7 @@ impl StudyError {
         match self {
             StudyError::InvalidField { .. } | StudyError::Syntax { .. } => true,
             StudyError::Journal { .. } => true,
-            StudyError::Io { .. } | StudyError::Interrupted => false,
+            StudyError::Io { .. } | StudyError::CurveFailed { .. } | StudyError::Interrupted => false,
             StudyError::Beam(e) => beam(e),
             StudyError::Friction(e) => friction(e),
             StudyError::Stepping(e) => match e {

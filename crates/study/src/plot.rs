@@ -299,10 +299,11 @@ fn draw<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, spec: &PlotSpec) -> s
         let style = ("sans-serif", size).into_font().color(&RGBColor(60, 60, 60));
         titled.draw(&Text::new(spec.subtitle.as_str(), (20, 48), style)).map_err(|e| err(&e))?;
     }
+    let (w, h) = root.dim_in_pixel();
+    let image = (0, 0, w as i32, h as i32);
     if spec.panels.is_empty() {
         let range = ranges(spec).ok_or("nothing to plot")?;
-        let panel = draw_panel(&body, spec, range)?;
-        return Ok(Layout { image: (0, 0, SIZE.0 as i32, SIZE.1 as i32), panels: vec![panel] });
+        return Ok(Layout { image, panels: vec![draw_panel(&body, spec, range)?] });
     }
     // Common ranges, so that the panels compare at a glance.
     let found: Vec<_> = spec.panels.iter().filter_map(ranges).collect();
@@ -316,8 +317,7 @@ fn draw<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, spec: &PlotSpec) -> s
         heading.draw(&Text::new(panel.title.as_str(), (20, 8), style)).map_err(|e| err(&e))?;
         panels.push(draw_panel(&rest, panel, ((x0, x1), (y0, y1)))?);
     }
-    let (w, h) = root.dim_in_pixel();
-    Ok(Layout { image: (0, 0, w as i32, h as i32), panels })
+    Ok(Layout { image, panels })
 }
 
 /// One chart with its legend column in `area`, over `range` (after the log transforms): the plotting area's and
@@ -401,12 +401,13 @@ fn draw_legend<DB: DrawingBackend>(
         };
         let size = |w: f64| if w > room { (17.0 * room / w).floor() } else { 17.0 };
         let one = size(width(text)?);
-        let split = text
-            .match_indices(' ')
-            .map(|(i, _)| (&text[..i], &text[i + 1..]))
-            .min_by_key(|(a, b)| a.chars().count().abs_diff(b.chars().count()));
-        match split {
-            Some((first, second)) if one < 13.0 => {
+        let split = || {
+            text.match_indices(' ')
+                .map(|(i, _)| (&text[..i], &text[i + 1..]))
+                .min_by_key(|(a, b)| a.chars().count().abs_diff(b.chars().count()))
+        };
+        match if one < 13.0 { split() } else { None } {
+            Some((first, second)) => {
                 let two = size(width(first)?.max(width(second)?)).max(11.0);
                 area.draw(&Text::new(first, (58, y - 9), ("sans-serif", two).into_font()))?;
                 area.draw(&Text::new(second, (58, y - 9 + 18), ("sans-serif", two).into_font()))?;

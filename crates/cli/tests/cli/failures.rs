@@ -1,21 +1,20 @@
 //! What a run or a sweep does when something fails on the way: a step its solver cannot solve is solved by a
 //! fallback and reported; a sweep keeps every finished run past a failed one, records the failure, exits non-zero.
 
-use super::{frictrack, json, temporary_folder};
+use super::{frictrack, json, temporary_folder, write_file};
 
 /// An interior point held to 3 iterations a step (it needs ~20) cannot solve a step of distributed friction: every
 /// step is solved by Clarabel instead, and the run says so in text and JSON.
 #[test]
 fn a_run_reports_the_steps_its_solver_could_not_solve() {
     let dir = temporary_folder("fallback");
-    let scenario = dir.join("held.toml");
-    std::fs::write(
-        &scenario,
+    let scenario = write_file(
+        &dir,
+        "held.toml",
         "[mesh]\nlength = 30.0\nelements = 30\n[friction.distributed]\nforce_per_length = 5000.0\n\
          [integration]\nsolver = \"interior-point\"\nmax_iterations = 3\n",
-    )
-    .unwrap();
-    let path = scenario.to_str().unwrap();
+    );
+    let path = scenario.as_str();
     let v = json(&frictrack(&["run", path, "--speed", "100", "--format", "json"]));
     let steps = v["steps"].as_u64().unwrap();
     assert_eq!(v["solver"], "interior-point");
@@ -76,15 +75,14 @@ fn a_sweep_keeps_every_finished_run_past_a_failed_one() {
 #[test]
 fn a_study_keeps_every_finished_run_past_failed_ones() {
     let dir = temporary_folder("study-failures");
-    let scenario = dir.join("undamped.toml");
-    std::fs::write(
-        &scenario,
+    let scenario = write_file(
+        &dir,
+        "undamped.toml",
         "[mesh]\nlength = 100.0\nelements = 100\n[integration]\nsteady_start = 50.0\n\
          [sweep]\nfrom = 195.0\nto = 215.0\nstep = 5.0\n",
-    )
-    .unwrap();
+    );
     let out_dir = dir.join("out");
-    let args = ["study", "distributed-speed", "--scenario", scenario.to_str().unwrap()];
+    let args = ["study", "distributed-speed", "--scenario", &scenario];
     let out = frictrack(&[&args[..], &["--out", out_dir.to_str().unwrap(), "--quiet"]].concat());
     assert_eq!(out.status.code(), Some(1));
     let stderr = String::from_utf8_lossy(&out.stderr);
@@ -114,18 +112,10 @@ fn the_train_study_keeps_every_finished_run_past_failed_ones() {
     let dir = temporary_folder("hslm-failures");
     let deck =
         std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/hslm-bridge.toml")).unwrap();
-    let scenario = dir.join("fast.toml");
-    std::fs::write(&scenario, format!("{deck}\n[sweep]\nfrom = 50.0\nto = 4050.0\nstep = 2000.0\n")).unwrap();
+    let scenario =
+        write_file(&dir, "fast.toml", &format!("{deck}\n[sweep]\nfrom = 50.0\nto = 4050.0\nstep = 2000.0\n"));
     let out_dir = dir.join("out");
-    let out = frictrack(&[
-        "study",
-        "hslm",
-        "--scenario",
-        scenario.to_str().unwrap(),
-        "--out",
-        out_dir.to_str().unwrap(),
-        "--quiet",
-    ]);
+    let out = frictrack(&["study", "hslm", "--scenario", &scenario, "--out", out_dir.to_str().unwrap(), "--quiet"]);
     assert_eq!(out.status.code(), Some(1), "{}", String::from_utf8_lossy(&out.stderr));
     let meta: serde_json::Value = serde_json::from_slice(&std::fs::read(out_dir.join("hslm.json")).unwrap()).unwrap();
     let failures = meta["failures"].as_array().unwrap();

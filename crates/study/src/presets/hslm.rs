@@ -14,7 +14,7 @@ use super::hslm_figures::interpolate;
 use super::hslm_resonances::{Resonance, natural_frequencies, resonances};
 use super::{Resolution, StudyData, StudyFailure, blank, failed_runs, mean_iterations, with_devices};
 use crate::diagnostics::{deck_frequency, resolving_advance};
-use crate::error::{Result, invalid};
+use crate::error::{Result, StudyError};
 use crate::number::row;
 use crate::scenario::Scenario;
 use crate::sweep::{CriticalSpeed, Metric, RefinedPeak, Runner, SweepPoint, finished, refine_maximum, unrefined};
@@ -404,7 +404,8 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
     let mut failures = failed_runs(&rows, curve_name);
     let points: Vec<Vec<SweepPoint>> = rows.iter().map(|r| finished(r)).collect();
     if let Some(c) = points.iter().position(Vec::is_empty) {
-        return Err(invalid("runs", curve_name(c), "every run of this curve failed: no peak to report"));
+        let first = failures.iter().find(|f| f.case == curve_name(c)).map_or(String::new(), |f| f.error.clone());
+        return Err(StudyError::CurveFailed { case: curve_name(c), first });
     }
     let tolerance = 0.02 * (speeds[1] - speeds[0]);
     let ids: Vec<usize> = (0..cases.len()).collect();
