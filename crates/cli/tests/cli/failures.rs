@@ -126,3 +126,77 @@ fn the_train_study_keeps_every_finished_run_past_failed_ones() {
     assert!(csv.lines().count() > 40, "the finished runs are kept: {csv}");
     assert!(out_dir.join("hslm-deflection.svg").exists() && out_dir.join("hslm-envelope-acceleration.svg").exists());
 }
+
+/// The vehicle study keeps going past failed runs: on a 30 m track at 50, 5050 and 10 050 m/s the last speed is
+/// refused per run (the rail's bar wave speed is 5189 m/s), each of the twelve curves keeps its other two speeds,
+/// the CSV keeps a row with empty values for each failed one, the JSON lists ten failures (the moving force's run
+/// serves both rails), the figures are drawn and the study exits with 1.
+#[test]
+fn the_vehicle_study_keeps_every_finished_run_past_failed_ones() {
+    let dir = temporary_folder("vehicle-failures");
+    let scenario = write_file(
+        &dir,
+        "fast.toml",
+        "[mesh]\nlength = 30.0\nelements = 30\n[sweep]\nfrom = 50.0\nto = 10050.0\nstep = 5000.0\n",
+    );
+    let out_dir = dir.join("out");
+    let args = ["study", "vehicle-speed", "--scenario", &scenario, "--out", out_dir.to_str().unwrap(), "--quiet"];
+    let out = frictrack(&args);
+    assert_eq!(out.status.code(), Some(1), "{}", String::from_utf8_lossy(&out.stderr));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("10 run(s) of vehicle-speed failed"), "{stderr}");
+    assert!(stderr.contains("model = quarter-car, friction = with, rail = irregular at 10050 m/s"), "{stderr}");
+    let csv = std::fs::read_to_string(out_dir.join("vehicle-speed.csv")).unwrap();
+    let rows: Vec<&str> = csv.lines().skip(1).collect();
+    assert_eq!(rows.len(), 12 * 3, "every curve keeps a row per speed: {csv}");
+    let empty: Vec<&&str> = rows.iter().filter(|r| r.ends_with(",10050,,,,,,,")).collect();
+    assert_eq!(empty.len(), 12, "{csv}");
+    assert!(rows.iter().filter(|r| !r.contains(",10050,")).all(|r| !r.contains(",,,,")), "{csv}");
+    let meta: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(out_dir.join("vehicle-speed.json")).unwrap()).unwrap();
+    let failures = meta["failures"].as_array().unwrap();
+    assert_eq!(failures.len(), 10, "{failures:?}");
+    assert_eq!(failures[0]["case"], "model = moving-force, friction = none");
+    assert_eq!(meta["runs"], 20, "the finished runs");
+    assert!(out_dir.join("vehicle-speed-deflection-irregular.svg").exists());
+}
+
+/// The fixed-speed studies keep going past failed runs too. Undamped with a steady start on a foundation of
+/// 389 kN/m² (v_cr = 229.6 m/s): the amplification study's runs at 250 m/s (v_cr rounded up to five steps) have no
+/// steady state and fail, its six others are kept, with their figures, and the study exits with 1; the optimal
+/// force study runs at 230 m/s (v_cr to a tenth of a step), where every run fails: it exits with 1 naming the first
+/// error, not with a figure of nothing.
+#[test]
+fn fixed_speed_studies_keep_every_finished_run_past_failed_ones() {
+    let dir = temporary_folder("fixed-speed-failures");
+    let scenario = write_file(
+        &dir,
+        "undamped.toml",
+        "[mesh]\nlength = 100.0\nelements = 100\n[foundation]\nstiffness = 389e3\n[integration]\nsteady_start = 50.0\n",
+    );
+    let out_dir = dir.join("out");
+    let study = |preset: &str| {
+        frictrack(&["study", preset, "--scenario", &scenario, "--out", out_dir.to_str().unwrap(), "--quiet"])
+    };
+    let out = study("amplification");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(stderr.contains("force_per_length = 2000 at 250 m/s: no bounded steady state"), "{stderr}");
+    let meta: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(out_dir.join("amplification.json")).unwrap()).unwrap();
+    assert_eq!(meta["failures"].as_array().unwrap().len(), 2, "{meta}");
+    assert_eq!(meta["summary"]["curves"].as_array().unwrap().len(), 6, "{meta}");
+    let csv = std::fs::read_to_string(out_dir.join("amplification.csv")).unwrap();
+    let speeds: std::collections::BTreeSet<&str> = csv.lines().skip(1).filter_map(|r| r.split(',').nth(1)).collect();
+    assert_eq!(speeds.into_iter().collect::<Vec<_>>(), ["100", "150", "50"], "{csv}");
+    assert!(out_dir.join("amplification-moment-2kN.svg").exists());
+
+    let out = study("optimal-force");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr.contains("every run of the optimal-force scan at 230 m/s failed; the first: no bounded"),
+        "{stderr}"
+    );
+    assert!(!out_dir.join("optimal-force.svg").exists(), "no figure of nothing");
+}

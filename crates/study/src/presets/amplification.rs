@@ -1,7 +1,7 @@
 //! Study 5: dynamic amplification at mid-span, φ_w(τ) = w/w_sta and φ_M(τ) = M/M_sta, at ¼, ½, ¾ and 1 × v_cr for
 //! f_u ∈ {1, 2} kN/m (docs/theory.md §6–§7).
 
-use super::{StudyData, blank, with_distributed};
+use super::{StudyData, StudyFailure, blank, nothing_finished, with_distributed};
 use crate::error::Result;
 use crate::figures::quantity_figure;
 use crate::metrics::{amplification, static_midspan};
@@ -17,17 +17,43 @@ pub(super) fn study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
     let scale = SpeedScale::of(base)?;
     let speeds = [(0.25, 50.0), (0.5, 100.0), (0.75, 150.0), (1.0, 200.0)].map(|(f, v)| scale.fraction(f, v));
     let combos: Vec<(f64, f64)> = [1e3, 2e3].into_iter().flat_map(|f| speeds.map(|v| (f, v))).collect();
-    let results = runner.map(&combos, |&(f, v)| {
-        let mut s = with_distributed(base, f);
-        s.load.speed = v;
-        s.output.sections = vec![s.mesh.length / 2.0];
-        let case = s.build()?;
+    // A failed run is recorded and leaves its curve out; every other run is kept.
+    // Built before any run: bad input is refused (exit 2), not recorded as a failed run.
+    let cases = combos
+        .iter()
+        .map(|&(f, v)| {
+            let mut s = with_distributed(base, f);
+            s.load.speed = v;
+            s.output.sections = vec![s.mesh.length / 2.0];
+            s.build()
+        })
+        .collect::<Result<Vec<_>>>()?;
+    let items: Vec<usize> = (0..combos.len()).collect();
+    // A failed run is recorded and leaves its curve out; every other run is kept.
+    let results = runner.map_each(&items, |&i| {
+        let ((f, v), case) = (combos[i], &cases[i]);
         let samples = runner.cached(&format!("{:016x}@{v}/midspan-amplification", case.fingerprint), || {
-            let r = runner.simulate(&case, &case.settings)?;
+            let r = runner.simulate(case, &case.settings)?;
             Ok(amplification(&r.histories[0], reference, case.model.mesh().length))
         })?;
         Ok((f, v, samples))
     })?;
+    let mut failures = Vec::new();
+    let results: Vec<_> = results
+        .into_iter()
+        .zip(&combos)
+        .filter_map(|(result, &(f, v))| {
+            result
+                .map_err(|e| {
+                    let case = format!("force_per_length = {f}");
+                    failures.push(StudyFailure { case, speed: Some(v), error: e.to_string() })
+                })
+                .ok()
+        })
+        .collect();
+    if results.is_empty() {
+        return Err(nothing_finished("the amplification study".into(), &failures));
+    }
     let mut csv = String::from("force_per_length,speed,tau,phi_w,phi_m\n");
     let mut items = Vec::new();
     let mut lines = Vec::new();
@@ -61,9 +87,11 @@ pub(super) fn study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
                 .enumerate()
                 .filter(|(_, (ff, _, _))| *ff == f)
                 .rev()
-                .map(|(i, (_, v, samples))| {
+                .map(|(_, (_, v, samples))| {
                     let points = samples.iter().map(|a| (a.tau, value(a))).collect();
-                    (format!("v = {v} m/s"), 1 + i % speeds.len(), points)
+                    // The colour of the speed, whichever runs failed.
+                    let color = 1 + speeds.iter().position(|s| s == v).unwrap_or(0);
+                    (format!("v = {v} m/s"), color, points)
                 })
                 .collect();
             let mut plot = quantity_figure(
@@ -84,5 +112,5 @@ pub(super) fn study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
             plots.push(plot);
         }
     }
-    Ok(StudyData { csv, summary: json!({ "curves": items }), lines, plots, ..blank(results.len()) })
+    Ok(StudyData { csv, summary: json!({ "curves": items }), lines, plots, failures, ..blank(results.len()) })
 }

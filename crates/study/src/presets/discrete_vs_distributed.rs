@@ -1,7 +1,7 @@
 //! Study 6: 199 devices of 1 kN against f_u = 0.995 kN/m, equal capacity, at ¾ v_cr: mid-span deflection and
 //! the friction mobilised (force over capacity) side by side (docs/theory.md §7).
 
-use super::{StudyData, blank, with_devices, with_distributed};
+use super::{StudyData, StudyFailure, blank, nothing_finished, with_devices, with_distributed};
 use crate::error::Result;
 use crate::figures::quantity_figure;
 use crate::number::row;
@@ -10,6 +10,10 @@ use crate::speeds::SpeedScale;
 use crate::sweep::Runner;
 use serde_json::json;
 use std::fmt::Write as _;
+use track::simulation::SectionHistory;
+
+/// The two models, in the files' order.
+const MODELS: [&str; 2] = ["devices", "distributed"];
 
 pub(super) fn study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
     let speed = SpeedScale::of(base)?.fraction(0.75, 150.0);
@@ -19,60 +23,84 @@ pub(super) fn study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
         s.load.speed = speed;
         s.output.sections = vec![s.mesh.length / 2.0];
     }
-    // Each run with the capacity F_j (N) of its friction section at mid-span, to compare what each mobilises.
-    let runs = runner.map(&[&devices, &distributed], |s| {
-        let case = s.build()?;
-        let middle = case.interactions.positions().iter().position(|&x| (x - s.mesh.length / 2.0).abs() < 1e-9);
+    // Each run with the capacity F_j (N) of its friction section at mid-span, to compare what each mobilises. A
+    // failed run is recorded and the other one kept: the comparison needs both.
+    let cases = [devices, distributed].map(|s| s.build());
+    let [devices, distributed] = cases;
+    // Built before any run: bad input is refused (exit 2), not recorded as a failed run.
+    let cases = [devices?, distributed?];
+    let results = runner.map_each(&cases, |case| {
+        let middle =
+            case.interactions.positions().iter().position(|&x| (x - case.model.mesh().length / 2.0).abs() < 1e-9);
         let capacity = middle.map_or(f64::NAN, |j| case.interactions.capacity(j));
-        Ok((runner.simulate(&case, &case.settings)?, capacity))
+        Ok((runner.simulate(case, &case.settings)?, capacity))
     })?;
-    let (capacities, runs): (Vec<f64>, Vec<_>) = runs.into_iter().map(|(r, c)| (c, r)).unzip();
+    let mut failures = Vec::new();
+    let mut runs = Vec::new();
+    for (i, result) in results.into_iter().enumerate() {
+        match result {
+            Ok((run, capacity)) => runs.push((i, run, capacity)),
+            Err(e) => {
+                let case = format!("model = {}", MODELS[i]);
+                failures.push(StudyFailure { case, speed: Some(speed), error: e.to_string() })
+            }
+        }
+    }
+    if runs.is_empty() {
+        return Err(nothing_finished("both models".into(), &failures));
+    }
     let mut csv = String::from("model,time,load_position,deflection,impulse\n");
-    for (name, r) in ["devices", "distributed"].iter().zip(&runs) {
-        let h = &r.histories[0];
+    for (i, r, _) in &runs {
+        let (name, h) = (MODELS[*i], &r.histories[0]);
         let impulse = h.impulse.as_deref().unwrap_or(&[]);
         for k in 0..h.time.len() {
             let values = [h.time[k], h.load_position[k], h.deflection[k], impulse.get(k).copied().unwrap_or(0.0)];
             let _ = writeln!(csv, "{name},{}", row(&values));
         }
     }
-    let (a, b) = (&runs[0].histories[0], &runs[1].histories[0]);
-    let peak = a.deflection.iter().fold(0.0f64, |m, w| m.max(w.abs()));
-    let gap = a.deflection.iter().zip(&b.deflection).fold(0.0f64, |m, (x, y)| m.max((x - y).abs()));
-    let lines = vec![
-        format!(
-            "mid-span deflection histories differ by at most {:.2} mm on a {:.1} mm peak ({:.2} %)",
-            gap * 1e3,
-            peak * 1e3,
-            100.0 * gap / peak
-        ),
-        format!(
-            "dissipated energy {:.0} J (199 devices) vs {:.0} J (distributed)",
-            runs[0].energy.dissipated(),
-            runs[1].energy.dissipated()
-        ),
-    ];
+    let dissipated = |i: usize| runs.iter().find(|r| r.0 == i).map(|r| r.1.energy.dissipated());
+    let (lines, summary) = match runs.as_slice() {
+        [(_, a, _), (_, b, _)] => {
+            let (a, b) = (&a.histories[0], &b.histories[0]);
+            let peak = a.deflection.iter().fold(0.0f64, |m, w| m.max(w.abs()));
+            let gap = a.deflection.iter().zip(&b.deflection).fold(0.0f64, |m, (x, y)| m.max((x - y).abs()));
+            let lines = vec![
+                format!(
+                    "mid-span deflection histories differ by at most {:.2} mm on a {:.1} mm peak ({:.2} %)",
+                    gap * 1e3,
+                    peak * 1e3,
+                    100.0 * gap / peak
+                ),
+                format!(
+                    "dissipated energy {:.0} J (199 devices) vs {:.0} J (distributed)",
+                    dissipated(0).unwrap_or(f64::NAN),
+                    dissipated(1).unwrap_or(f64::NAN)
+                ),
+            ];
+            (lines, Some((gap, peak)))
+        }
+        _ => (vec![format!("no comparison: the {} run failed (see the failures)", failures[0].case)], None),
+    };
     let summary = json!({
         "speed": speed,
-        "max_history_gap": gap,
-        "peak_midspan_deflection": peak,
-        "dissipated_devices": runs[0].energy.dissipated(),
-        "dissipated_distributed": runs[1].energy.dissipated(),
+        "max_history_gap": summary.map(|s| s.0),
+        "peak_midspan_deflection": summary.map(|s| s.1),
+        "dissipated_devices": dissipated(0),
+        "dissipated_distributed": dissipated(1),
     });
-    let history = |i: usize, value: &dyn Fn(&track::simulation::SectionHistory, usize) -> f64| -> Vec<(f64, f64)> {
-        let h = &runs[i].histories[0];
+    let history = |h: &SectionHistory, value: &dyn Fn(&SectionHistory, usize) -> f64| -> Vec<(f64, f64)> {
         (0..h.time.len()).map(|k| (h.time[k], value(h, k))).collect()
     };
     let labels = ["199 devices × 1 kN", "f_u = 0.995 kN/m"];
     let colors = [4, 5];
-    let h = runs[0].step;
-    let deflection = (0..2).map(|i| (labels[i].to_string(), colors[i], history(i, &|s, k| s.deflection[k] * 1e3)));
-    let mobilised = (0..2).map(|i| {
-        let fraction = &|s: &track::simulation::SectionHistory, k: usize| {
-            s.impulse.as_ref().map_or(0.0, |p| p[k] / (h * capacities[i]))
-        };
-        (labels[i].to_string(), colors[i], history(i, fraction))
+    let deflection = runs
+        .iter()
+        .map(|(i, r, _)| (labels[*i].into(), colors[*i], history(&r.histories[0], &|s, k| s.deflection[k] * 1e3)));
+    let mobilised = runs.iter().map(|(i, r, capacity)| {
+        let fraction = &|s: &SectionHistory, k: usize| s.impulse.as_ref().map_or(0.0, |p| p[k] / (r.step * capacity));
+        (labels[*i].into(), colors[*i], history(&r.histories[0], fraction))
     });
+    let capacity = |i: usize| runs.iter().find(|r| r.0 == i).map_or("–".into(), |r| format!("{:.0}", r.2));
     let plots = vec![
         {
             let mut plot = quantity_figure(
@@ -86,8 +114,8 @@ pub(super) fn study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
             // The two histories lie on each other (0.44 % apart): the second dashed, so that both show.
             if let Some(second) = plot.series.get_mut(1) {
                 second.stroke = crate::plot::Stroke::Dashed;
+                plot.subtitle = "the distributed friction dashed over the devices: the two curves coincide".into();
             }
-            plot.subtitle = "the distributed friction dashed over the devices: the two curves coincide".into();
             plot
         },
         {
@@ -100,11 +128,12 @@ pub(super) fn study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
                 false,
             );
             plot.subtitle = format!(
-                "capacity at mid-span: a device of {:.0} N against a section of {:.0} N (0.995 kN/m × 0.25 m)",
-                capacities[0], capacities[1]
+                "capacity at mid-span: a device of {} N against a section of {} N (0.995 kN/m × 0.25 m)",
+                capacity(0),
+                capacity(1)
             );
             plot
         },
     ];
-    Ok(StudyData { csv, summary, lines, plots, ..blank(2) })
+    Ok(StudyData { csv, summary, lines, plots, failures, ..blank(runs.len()) })
 }

@@ -12,9 +12,9 @@
 
 use super::hslm_figures::interpolate;
 use super::hslm_resonances::{Resonance, natural_frequencies, resonances};
-use super::{Resolution, StudyData, StudyFailure, blank, failed_runs, mean_iterations, with_devices};
+use super::{Resolution, StudyData, StudyFailure, blank, failed_runs, mean_iterations, nothing_finished, with_devices};
 use crate::diagnostics::{deck_frequency, resolving_advance};
-use crate::error::{Result, StudyError};
+use crate::error::Result;
 use crate::number::row;
 use crate::scenario::Scenario;
 use crate::sweep::{CriticalSpeed, Metric, RefinedPeak, Runner, SweepPoint, finished, refine_maximum, unrefined};
@@ -404,8 +404,7 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
     let mut failures = failed_runs(&rows, curve_name);
     let points: Vec<Vec<SweepPoint>> = rows.iter().map(|r| finished(r)).collect();
     if let Some(c) = points.iter().position(Vec::is_empty) {
-        let first = failures.iter().find(|f| f.case == curve_name(c)).map_or(String::new(), |f| f.error.clone());
-        return Err(StudyError::CurveFailed { case: curve_name(c), first });
+        return Err(nothing_finished(curve_name(c), &failures));
     }
     let tolerance = 0.02 * (speeds[1] - speeds[0]);
     let ids: Vec<usize> = (0..cases.len()).collect();

@@ -19,7 +19,7 @@ mod hslm_resonances;
 mod optimal_force;
 mod vehicle_speed;
 
-use crate::error::{Result, invalid};
+use crate::error::{Result, StudyError, invalid};
 use crate::plot::PlotSpec;
 use crate::scenario::{AbsorbingZonesSection, DevicesSection, DistributedSection, Scenario, SweepSection};
 use crate::speeds::SpeedScale;
@@ -279,6 +279,12 @@ pub(super) fn failed_runs(rows: &[Vec<SweepRow>], name: impl Fn(usize) -> String
         })
     };
     rows.iter().enumerate().flat_map(failed).collect()
+}
+
+/// The error of a study (or a curve) `case` of which every run failed, naming the first failure of that case.
+pub(super) fn nothing_finished(case: String, failures: &[StudyFailure]) -> StudyError {
+    let first = failures.iter().find(|f| f.case == case).or(failures.first());
+    StudyError::CurveFailed { case, first: first.map_or(String::new(), |f| f.error.clone()) }
 }
 
 /// A run of a study that failed: which case, at which speed, and why.

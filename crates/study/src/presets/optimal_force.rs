@@ -1,13 +1,13 @@
 //! Study 3: the optimal device force at the critical speed for N ∈ {3, 7, 15, 31}: a log scan of F_u over
 //! 1 kN–10 MN, then golden section around the best (docs/theory.md §7).
 
-use super::{Resolution, StudyData, blank, mean_iterations, with_devices};
-use crate::error::Result;
+use super::{Resolution, StudyData, StudyFailure, blank, mean_iterations, nothing_finished, with_devices};
+use crate::error::{Result, invalid};
 use crate::figures::{DeflectionCurve, deflection_figure, device_color};
-use crate::number::row;
+use crate::number::row_with_gaps;
 use crate::scenario::Scenario;
 use crate::speeds::SpeedScale;
-use crate::sweep::{Runner, log_spaced, refine_from_scan};
+use crate::sweep::{OptimalForce, Runner, SweepPoint, log_spaced, refine_from_scan};
 use serde_json::json;
 use std::fmt::Write as _;
 
@@ -20,36 +20,69 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
         .flat_map(|&n| forces.iter().map(move |&f| (n, f)))
         .map(|(n, f)| with_devices(base, n, f))
         .collect();
-    let points = runner.map(&scenarios, |s| runner.point(&s.build()?, speed))?;
+    // A failed run leaves a gap in its curve and is recorded; each curve's optimum comes from its finished runs.
+    // Built before any run: bad input is refused (exit 2), not recorded as a failed run.
+    let cases = scenarios.iter().map(Scenario::build).collect::<Result<Vec<_>>>()?;
+    let points = runner.map_each(&cases, |case| runner.point(case, speed))?;
     let mut csv =
         String::from("devices,device_force,speed,max_downward_deflection,max_upward_deflection,dissipated_energy\n");
     let mut items = Vec::new();
     let mut lines = Vec::new();
-    let mut runs = points.len();
+    let mut failures = Vec::new();
+    let mut finished_points = Vec::new();
     let mut figure_curves = Vec::new();
+    let mut refinement_runs = 0;
     for (i, &n) in counts.iter().enumerate() {
-        let curve = &points[i * forces.len()..(i + 1) * forces.len()];
-        let kn = |f: &f64| f / 1e3;
-        for (f, p) in forces.iter().zip(curve) {
-            let values = [n as f64, *f, speed, p.max_downward_deflection, p.max_upward_deflection, p.dissipated_energy];
-            let _ = writeln!(csv, "{}", row(&values));
+        let case = |f: f64| format!("devices = {n}, device_force = {f}");
+        let mut curve = Vec::new();
+        for (&f, p) in forces.iter().zip(&points[i * forces.len()..(i + 1) * forces.len()]) {
+            let values = match p {
+                Ok(p) => {
+                    curve.push((f, p.clone()));
+                    [n as f64, f, speed, p.max_downward_deflection, p.max_upward_deflection, p.dissipated_energy]
+                }
+                Err(e) => {
+                    failures.push(StudyFailure { case: case(f), speed: Some(speed), error: e.to_string() });
+                    [n as f64, f, speed, f64::NAN, f64::NAN, f64::NAN]
+                }
+            };
+            let _ = writeln!(csv, "{}", row_with_gaps(&values));
         }
-        let values: Vec<f64> = curve.iter().map(|p| p.max_downward_deflection).collect();
-        let refined = refine_from_scan(&with_devices(base, n, 1.0), speed, &forces, &values, 0.02, runner)?;
-        runs += refined.explored.len();
+        let optimum = optimum(&with_devices(base, n, 1.0), speed, &curve, runner);
+        let optimum = match optimum {
+            Ok(refined) => {
+                lines.push(format!(
+                    "N = {n}: optimal F_u {:.1} kN gives max downward deflection {:.1} mm at {speed} m/s",
+                    refined.force / 1e3,
+                    refined.max_downward_deflection * 1e3
+                ));
+                Some(refined)
+            }
+            Err(e) => {
+                let case = format!("devices = {n}");
+                failures.push(StudyFailure { case, speed: None, error: format!("no optimal force: {e}") });
+                lines.push(format!("N = {n}: no optimal force ({} of {} runs finished)", curve.len(), forces.len()));
+                None
+            }
+        };
+        items.push(json!({
+            "devices": n,
+            "optimal_device_force": optimum.as_ref().map(|o| o.force),
+            "max_downward_deflection": optimum.as_ref().map(|o| o.max_downward_deflection),
+        }));
+        let kn = |f: f64| f / 1e3;
         figure_curves.push(DeflectionCurve {
             label: format!("N = {n}"),
             color: device_color(n),
-            downward: forces.iter().zip(curve).map(|(f, p)| (kn(f), p.max_downward_deflection)).collect(),
-            upward: forces.iter().zip(curve).map(|(f, p)| (kn(f), p.max_upward_deflection)).collect(),
-            optimum: Some((kn(&refined.force), refined.max_downward_deflection)),
+            downward: curve.iter().map(|(f, p)| (kn(*f), p.max_downward_deflection)).collect(),
+            upward: curve.iter().map(|(f, p)| (kn(*f), p.max_upward_deflection)).collect(),
+            optimum: optimum.as_ref().map(|o| (kn(o.force), o.max_downward_deflection)),
         });
-        items.push(json!({ "devices": n, "optimal_device_force": refined.force, "max_downward_deflection": refined.max_downward_deflection }));
-        lines.push(format!(
-            "N = {n}: optimal F_u {:.1} kN gives max downward deflection {:.1} mm at {speed} m/s",
-            refined.force / 1e3,
-            refined.max_downward_deflection * 1e3
-        ));
+        refinement_runs += optimum.map_or(0, |o| o.explored.len());
+        finished_points.extend(curve.into_iter().map(|(_, p)| p));
+    }
+    if finished_points.is_empty() {
+        return Err(nothing_finished(format!("the optimal-force scan at {speed} m/s"), &failures));
     }
     let mut plot = deflection_figure(
         "optimal-force",
@@ -64,7 +97,19 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
         summary: json!({ "speed": speed, "optima": items }),
         lines,
         plots: vec![plot],
-        mean_iterations: mean_iterations(points.iter()),
-        ..blank(runs)
+        mean_iterations: mean_iterations(finished_points.iter()),
+        failures,
+        ..blank(refinement_runs + finished_points.len())
     })
+}
+
+/// The refined optimal device force of a curve from its finished scan `(F_u, point)`: refused with fewer than
+/// three finished forces (no bracket around the best one).
+fn optimum(scenario: &Scenario, speed: f64, curve: &[(f64, SweepPoint)], runner: &Runner) -> Result<OptimalForce> {
+    if curve.len() < 3 {
+        return Err(invalid("device forces", format!("{} finished", curve.len()), "at least 3 to bracket an optimum"));
+    }
+    let forces: Vec<f64> = curve.iter().map(|(f, _)| *f).collect();
+    let values: Vec<f64> = curve.iter().map(|(_, p)| p.max_downward_deflection).collect();
+    refine_from_scan(scenario, speed, &forces, &values, 0.02, runner)
 }

@@ -12,14 +12,14 @@
 //! into the soft reference track's 52 mm trough and still bounced ±37 % in the middle third at 30 m/s.
 
 use super::hslm::friction_setups;
-use super::{Resolution, StudyData, as_long_track, blank, mean_iterations};
+use super::{Resolution, StudyData, as_long_track, blank, failed_runs, mean_iterations};
 use crate::error::Result;
-use crate::number::row;
+use crate::number::row_with_gaps;
 use crate::plot::{PlotSpec, Series, Stroke};
 use crate::scenario::rail::IrregularitySection;
 use crate::scenario::vehicle::VehicleKind;
 use crate::scenario::{RailSection, Scenario, VehicleSection};
-use crate::sweep::{Runner, SweepPoint};
+use crate::sweep::{Runner, SweepPoint, SweepRow, finished};
 use serde_json::{Value, json};
 use std::fmt::Write as _;
 use track::vehicle::consist::MAX_CONTACT_STEP;
@@ -122,8 +122,19 @@ struct Curve {
     model: usize,
     friction: usize,
     rail: usize,
+    /// One row per speed, in the order of the speeds: a finished point or why the run failed.
+    rows: Vec<SweepRow>,
+    /// The finished points, in the order of the speeds.
     points: Vec<SweepPoint>,
 }
+
+/// A curve's case as text, for the failures: "model = quarter-car, friction = with, rail = irregular".
+fn describe(model: usize, friction: usize, rail: usize) -> String {
+    format!("model = {}, friction = {}, rail = {}", MODELS[model], FRICTION[friction], RAILS[rail])
+}
+
+/// The friction set-ups, in the files' order.
+const FRICTION: [&str; 2] = ["none", "with"];
 
 impl Curve {
     /// The smallest wheel force at a point (N): the force itself for the moving force.
@@ -169,14 +180,21 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
             }
         }
     }
-    let swept = runner.sweep_many(&cases, &speeds)?;
-    let runs = cases.len() * speeds.len();
+    // A failed run leaves a gap in its curve and is recorded; every other run is kept.
+    let swept = runner.sweep_many_keeping(&cases, &speeds)?;
+    let failures = failed_runs(&swept, |c| {
+        let (model, f, r) = keys[c];
+        // The moving force's one run stands for both rails.
+        if model == 0 { format!("model = {}, friction = {}", MODELS[0], FRICTION[f]) } else { describe(model, f, r) }
+    });
+    let runs = swept.iter().flatten().filter(|r| r.is_ok()).count();
     let mut curves = Vec::new();
-    for ((model, f, r), points) in keys.into_iter().zip(swept) {
+    for ((model, f, r), rows) in keys.into_iter().zip(swept) {
+        let points = finished(&rows);
         if model == 0 {
-            curves.push(Curve { model, friction: f, rail: 1, points: points.clone() });
+            curves.push(Curve { model, friction: f, rail: 1, rows: rows.clone(), points: points.clone() });
         }
-        curves.push(Curve { model, friction: f, rail: r, points });
+        curves.push(Curve { model, friction: f, rail: r, rows, points });
     }
     curves.sort_by_key(|c| (c.rail, c.friction, c.model));
     let (summary, lines) = summary(&curves, force, &friction, base.integration.load_advance);
@@ -186,25 +204,33 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
         lines,
         plots: figures(&curves, force, &friction),
         mean_iterations: mean_iterations(curves.iter().flat_map(|c| &c.points)),
+        failures,
         ..blank(runs)
     })
 }
 
 /// One row per curve and speed: `model,friction,rail,speed,max_downward_deflection,min_wheel_force,max_wheel_force,
 /// max_dynamic_increment,losses_of_contact,max_body_acceleration,rms_body_acceleration` (text, text, text, m/s, m, N,
-/// N, 1, 1, m/s², m/s²); the moving force's wheel force is F and its body columns NaN.
+/// N, 1, 1, m/s², m/s²); the moving force's wheel force is F and its body columns empty, as is every value of a
+/// failed run (why: the JSON's failures).
 fn csv(curves: &[Curve], force: f64) -> String {
     let mut out = String::from(
         "model,friction,rail,speed,max_downward_deflection,min_wheel_force,max_wheel_force,max_dynamic_increment,\
          losses_of_contact,max_body_acceleration,rms_body_acceleration\n",
     );
     for c in curves {
-        for p in &c.points {
-            let vehicle = p.vehicles.map_or([force, force, 0.0, 0.0, f64::NAN, f64::NAN], |v| v.values());
-            let mut values = vec![p.speed, p.max_downward_deflection];
-            values.extend(vehicle);
-            let friction = if c.friction == 0 { "none" } else { "with" };
-            let _ = writeln!(out, "{},{friction},{},{}", MODELS[c.model], RAILS[c.rail], row(&values));
+        for r in &c.rows {
+            let values = match r {
+                Ok(p) => {
+                    let vehicle = p.vehicles.map_or([force, force, 0.0, 0.0, f64::NAN, f64::NAN], |v| v.values());
+                    let mut values = vec![p.speed, p.max_downward_deflection];
+                    values.extend(vehicle);
+                    values
+                }
+                Err(f) => [f.speed].into_iter().chain([f64::NAN; 7]).collect(),
+            };
+            let (model, friction, rail) = (MODELS[c.model], FRICTION[c.friction], RAILS[c.rail]);
+            let _ = writeln!(out, "{model},{friction},{rail},{}", row_with_gaps(&values));
         }
     }
     out
@@ -224,7 +250,7 @@ fn summary(curves: &[Curve], force: f64, friction: &str, advance: f64) -> (Value
         let (Some(peak), Some(weakest)) = (peak, weakest) else { continue };
         items.push(json!({
             "model": MODELS[c.model],
-            "friction": if c.friction == 0 { "none" } else { "with" },
+            "friction": FRICTION[c.friction],
             "rail": RAILS[c.rail],
             "peak_max_downward_deflection": peak.max_downward_deflection,
             "peak_speed": peak.speed,
