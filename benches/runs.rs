@@ -6,9 +6,10 @@
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use fem_beam::BeamModel;
 use fem_beam::reference::uic60_on_soft_soil;
-use friction::{Devices, DistributedFriction, InteractionSet};
+use friction::InteractionSet;
 use std::hint::black_box;
 use std::time::Duration;
+use track::{Devices, DistributedFriction};
 use track::{RunSettings, Simulation};
 
 fn cases(model: &BeamModel) -> Vec<(&'static str, InteractionSet)> {

@@ -30,6 +30,28 @@ fn workspace_dependencies(folder: &str) -> Vec<String> {
         .collect()
 }
 
+/// The workspace crates `folder` reaches through its normal dependencies, directly or through another, once each.
+fn transitive_dependencies(folder: &str) -> Vec<String> {
+    let mut reached: Vec<String> = Vec::new();
+    let mut queue = normal_dependencies(folder);
+    while let Some(name) = queue.pop() {
+        if !reached.contains(&name) {
+            let (_, below) = LAYERS.iter().find(|(n, _)| *n == name).unwrap();
+            queue.extend(normal_dependencies(below));
+            reached.push(name);
+        }
+    }
+    reached
+}
+
+/// The workspace crates `folder` depends on in its `[dependencies]` (what its library links).
+fn normal_dependencies(folder: &str) -> Vec<String> {
+    let manifest = manifest(folder);
+    let names: Vec<&str> = LAYERS.iter().map(|(name, _)| *name).collect();
+    let table = manifest.get("dependencies").and_then(toml::Value::as_table);
+    table.into_iter().flat_map(|t| t.keys().cloned()).filter(|d| names.contains(&d.as_str())).collect()
+}
+
 #[test]
 fn every_dependency_points_down() {
     for (layer, (name, folder)) in LAYERS.iter().enumerate() {
@@ -44,6 +66,23 @@ fn every_dependency_points_down() {
     assert!(workspace_dependencies("crates/banded").is_empty());
     assert!(workspace_dependencies("crates/irregularity").is_empty(), "rail profiles know no beam and no engine");
     assert!(workspace_dependencies("crates/nscd").contains(&"banded".to_string()));
+    // Through another crate too: a lower crate reaches no higher one by any path.
+    for (layer, (name, folder)) in LAYERS.iter().enumerate() {
+        for reached in transitive_dependencies(folder) {
+            let below = LAYERS.iter().position(|(n, _)| *n == reached).unwrap();
+            assert!(below < layer, "{name} reaches {reached}, which is not below it");
+        }
+    }
+}
+
+/// The laws and interaction rows know no beam and the engine reaches no beam crate, directly or through another
+/// (the friction placed on a beam, devices and ballast sections, lives in `track`).
+#[test]
+fn the_laws_and_the_engine_reach_no_beam() {
+    assert!(transitive_dependencies("crates/friction").is_empty(), "{:?}", transitive_dependencies("crates/friction"));
+    let engine = transitive_dependencies("crates/nscd");
+    assert!(!engine.contains(&"fem-beam".to_string()) && !engine.contains(&"irregularity".to_string()), "{engine:?}");
+    assert!(transitive_dependencies("crates/track").contains(&"fem-beam".to_string()));
 }
 
 /// Every `.rs` file under `folder` (relative to the workspace), recursively.
@@ -63,7 +102,7 @@ fn rust_files(folder: &std::path::Path, out: &mut Vec<std::path::PathBuf>) {
 /// `track`.
 #[test]
 fn the_engine_uses_no_beam_type() {
-    assert!(!workspace_dependencies("crates/nscd").contains(&"fem-beam".to_string()));
+    assert!(!transitive_dependencies("crates/nscd").contains(&"fem-beam".to_string()));
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..").join("crates/nscd");
     let mut files = Vec::new();
     rust_files(&root, &mut files);

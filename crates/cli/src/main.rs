@@ -169,8 +169,6 @@ pub(crate) fn error_code(error: &anyhow::Error) -> u8 {
         Some(e.clone())
     } else if let Some(e) = error.downcast_ref::<fem_beam::FemError>() {
         Some(StudyError::from(e.clone()))
-    } else if let Some(e) = error.downcast_ref::<friction::FrictionError>() {
-        Some(StudyError::from(e.clone()))
     } else if let Some(e) = error.downcast_ref::<track::TrackError>() {
         Some(StudyError::from(e.clone()))
     } else {

@@ -19,12 +19,10 @@
 //! (φ = 0: the beam at rest, the body at its static sag M_s g/k_s below the wheel) and the solution runs until it
 //! leaves at x = L.
 
+use crate::GRAVITY;
 use crate::error::{FemError, Result, non_negative, positive};
 use crate::span::SimplySupportedSpan;
 use std::f64::consts::PI;
-
-/// Gravity (m/s²), as the vehicles of the `track` crate.
-pub const GRAVITY: f64 = 9.81;
 
 /// The oscillator: a wheel m_u glued to the beam, and optionally a body M_s on k_s, c_s above it.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -127,8 +125,10 @@ impl SimplySupportedSpan {
             } else {
                 m[modes * n + modes] = 1.0;
             }
-            solve(&mut m, &mut rhs, n);
-            rhs
+            // M(t) is symmetric positive definite (a modal mass plus m_u φφᵀ, and M_s or 1).
+            let m = nalgebra::DMatrix::from_row_slice(n, n, &m);
+            let rhs = nalgebra::DVector::from_vec(rhs);
+            m.cholesky().expect("M(t) is positive definite").solve(&rhs).data.into()
         };
         let contact = |t: f64, y: &[f64], v: &[f64], a: &[f64]| -> f64 {
             let (phi, dphi, ddphi) = shapes(t);
@@ -176,25 +176,6 @@ impl SimplySupportedSpan {
     }
 }
 
-/// Solve A x = b in place (A n × n row-major, SPD here: M(t)), b ← x; Gaussian elimination without pivoting.
-fn solve(a: &mut [f64], b: &mut [f64], n: usize) {
-    for col in 0..n {
-        for row in col + 1..n {
-            let f = a[row * n + col] / a[col * n + col];
-            if f != 0.0 {
-                for j in col..n {
-                    a[row * n + j] -= f * a[col * n + j];
-                }
-                b[row] -= f * b[col];
-            }
-        }
-    }
-    for i in (0..n).rev() {
-        let s: f64 = (i + 1..n).map(|j| a[i * n + j] * b[j]).sum();
-        b[i] = (b[i] - s) / a[i * n + i];
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::{Oscillator, SimplySupportedSpan};
@@ -210,11 +191,11 @@ mod tests {
         let difference = |mass: f64| {
             let oscillator = Oscillator { wheel_mass: mass, body_mass: 0.0, stiffness: 0.0, damping: 0.0 };
             let crossing = span.oscillator_crossing(&oscillator, 5.0, 10, 1e-3).unwrap();
-            assert!((crossing.contact_force[0] / (mass * super::GRAVITY) - 1.0).abs() < 1e-12);
+            assert!((crossing.contact_force[0] / (mass * crate::GRAVITY) - 1.0).abs() < 1e-12);
             let peak = crossing.midspan.iter().fold(0.0f64, |m, w| m.max(w.abs()));
             let mut worst = 0.0f64;
             for (t, w) in crossing.time.iter().zip(&crossing.midspan) {
-                let force = span.moving_force_deflection(5.0, *t, mass * super::GRAVITY, 5.0, 10).unwrap();
+                let force = span.moving_force_deflection(5.0, *t, mass * crate::GRAVITY, 5.0, 10).unwrap();
                 worst = worst.max((w - force).abs());
             }
             worst / peak

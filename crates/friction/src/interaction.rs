@@ -6,6 +6,8 @@
 //! A row has at most four entries: the Hermite shape functions of the element containing the section (w and θ
 //! DOFs), or a single entry for a section on a node.
 
+use crate::law::Law;
+
 /// What an interaction represents: the energy ledger books the work of each kind apart.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum InteractionKind {
@@ -23,63 +25,6 @@ impl InteractionKind {
     /// Whether the kind is friction (its work is friction work).
     pub fn is_friction(self) -> bool {
         matches!(self, InteractionKind::Device | InteractionKind::Ballast)
-    }
-}
-
-/// The law of an interaction (docs/theory.md §9). The gap of a unilateral law is g = `gap` + H_α q (m, positive
-/// open), so U_α = ġ.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Law {
-    /// Coulomb friction r ∈ −F·Sign(U) with maximal force `capacity` F ≥ 0 (N): impulses in [−hF, hF].
-    Coulomb {
-        /// F (N).
-        capacity: f64,
-    },
-    /// Rigid unilateral contact g ≥ 0, force ≥ 0, with Newton impact of restitution e ∈ [0, 1]: active in a step
-    /// when the predicted gap g_k + h U_k / 2 ≤ 0, then 0 ≤ p ⊥ U_{k+1} + e U_k ≥ 0.
-    Signorini {
-        /// g₀: the gap at q = 0 (m).
-        gap: f64,
-        /// e ∈ [0, 1].
-        restitution: f64,
-    },
-    /// A linear spring k_c in series with a unilateral stop: force k_c⟨−g⟩₊ ≥ 0, integrated implicitly.
-    Compliant {
-        /// g₀: the gap at q = 0 (m).
-        gap: f64,
-        /// k_c > 0 (N/m).
-        stiffness: f64,
-    },
-    /// A linear spring that also pulls: force k·(−g) of either sign, integrated implicitly — a glued (bilateral)
-    /// contact, the reference a unilateral one equals while it presses.
-    Spring {
-        /// g₀: the gap at q = 0 (m).
-        gap: f64,
-        /// k > 0 (N/m).
-        stiffness: f64,
-    },
-    /// Hertz's law λ = C_H⟨δ⟩₊^{3/2} of a wheel on a rail, δ = −g the penetration: unilateral, integrated implicitly by
-    /// Newton iterations on its tangent compliance within the step (docs/theory.md §9). Moving interactions only.
-    Hertz {
-        /// g₀: the gap at q = 0 (m).
-        gap: f64,
-        /// C_H > 0 (N/m^1.5).
-        coefficient: f64,
-    },
-}
-
-impl Law {
-    /// The Coulomb capacity F (N), zero for the unilateral laws.
-    pub fn capacity(&self) -> f64 {
-        match *self {
-            Law::Coulomb { capacity } => capacity,
-            _ => 0.0,
-        }
-    }
-
-    /// Whether the impulse bounds change from step to step (they do for the unilateral laws, whose state is the gap).
-    pub fn depends_on_state(&self) -> bool {
-        !matches!(self, Law::Coulomb { .. })
     }
 }
 

@@ -9,6 +9,162 @@
 //! p = proj_[lo, hi](p − ρ r), which every solver iterates or measures. Coulomb friction is the box [−a, a] with
 //! r the section velocity (docs/theory.md §4); Signorini contact and the compliant stop are [0, +∞) with a drift and,
 //! for the stop, a compliance (docs/theory.md §9).
+//!
+//! Each [`Law`] states its own behaviour in the step — bounds and drift, compliance, gap, stored energy, end
+//! penetration — so that a new law is written here and in no other file of the engine.
+
+/// The law of an interaction (docs/theory.md §9). The gap of a unilateral law is g = `gap` + H_α q (m, positive
+/// open), so U_α = ġ.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Law {
+    /// Coulomb friction r ∈ −F·Sign(U) with maximal force `capacity` F ≥ 0 (N): impulses in [−hF, hF].
+    Coulomb {
+        /// F (N).
+        capacity: f64,
+    },
+    /// Rigid unilateral contact g ≥ 0, force ≥ 0, with Newton impact of restitution e ∈ [0, 1]: active in a step
+    /// when the predicted gap g_k + h U_k / 2 ≤ 0, then 0 ≤ p ⊥ U_{k+1} + e U_k ≥ 0.
+    Signorini {
+        /// g₀: the gap at q = 0 (m).
+        gap: f64,
+        /// e ∈ [0, 1].
+        restitution: f64,
+    },
+    /// A linear spring k_c in series with a unilateral stop: force k_c⟨−g⟩₊ ≥ 0, integrated implicitly.
+    Compliant {
+        /// g₀: the gap at q = 0 (m).
+        gap: f64,
+        /// k_c > 0 (N/m).
+        stiffness: f64,
+    },
+    /// A linear spring that also pulls: force k·(−g) of either sign, integrated implicitly — a glued (bilateral)
+    /// contact, the reference a unilateral one equals while it presses.
+    Spring {
+        /// g₀: the gap at q = 0 (m).
+        gap: f64,
+        /// k > 0 (N/m).
+        stiffness: f64,
+    },
+    /// Hertz's law λ = C_H⟨δ⟩₊^{3/2} of a wheel on a rail, δ = −g the penetration: unilateral, integrated implicitly by
+    /// Newton iterations on its tangent compliance within the step (docs/theory.md §9). Moving interactions only.
+    Hertz {
+        /// g₀: the gap at q = 0 (m).
+        gap: f64,
+        /// C_H > 0 (N/m^1.5).
+        coefficient: f64,
+    },
+}
+
+impl Law {
+    /// The Coulomb capacity F (N), zero for the unilateral laws.
+    pub fn capacity(&self) -> f64 {
+        match *self {
+            Law::Coulomb { capacity } => capacity,
+            _ => 0.0,
+        }
+    }
+
+    /// Whether the impulse bounds change from step to step (they do for the unilateral laws, whose state is the gap).
+    pub fn depends_on_state(&self) -> bool {
+        !matches!(self, Law::Coulomb { .. })
+    }
+
+    /// g₀, the gap at q = 0 (m), of a law whose state is a gap; None for friction.
+    pub fn gap(&self) -> Option<f64> {
+        match *self {
+            Law::Coulomb { .. } => None,
+            Law::Signorini { gap, .. }
+            | Law::Compliant { gap, .. }
+            | Law::Spring { gap, .. }
+            | Law::Hertz { gap, .. } => Some(gap),
+        }
+    }
+
+    /// Whether the law holds energy in a spring (compliant stop, bilateral spring, Hertz): the energy ledger then
+    /// books what it stores and loses.
+    pub fn has_spring(&self) -> bool {
+        matches!(self, Law::Compliant { .. } | Law::Spring { .. } | Law::Hertz { .. })
+    }
+
+    /// Whether the contact is rigid (Signorini with Newton impact): its positions are projected after a step and its
+    /// loss is the impact's.
+    pub fn is_rigid(&self) -> bool {
+        matches!(self, Law::Signorini { .. })
+    }
+
+    /// The step's impulse bounds and drift (lo, hi, b) from the gap g_k (m), the relative velocity U_k (m/s), the
+    /// rheonomic velocity b_r (m/s, U = Hq̇ + b_r), the step h (s) and θ (docs/theory.md §9):
+    ///
+    /// - Coulomb of capacity F: [−hF, hF], b = b_r;
+    /// - Signorini: [0, +∞), b = b_r + e·U_k when the predicted gap g_k + γhU_k ≤ 0 ([`PREDICTION_WEIGHT`]) or
+    ///   `closed` (a projected contact found closed), else [0, 0];
+    /// - compliant stop and Hertz: [0, +∞), a bilateral spring (−∞, +∞), each with the drift of
+    ///   [`compliant_drift`] from the penetration δ_k = −g_k. Their compliance is [`Law::run_compliance`]
+    ///   (Hertz: its linearisation's, [`crate::hertz::HertzStep::law`]).
+    pub fn step_bounds(
+        &self,
+        gap: f64,
+        u: f64,
+        rheonomic: f64,
+        (h, theta): (f64, f64),
+        closed: bool,
+    ) -> (f64, f64, f64) {
+        let spring = || compliant_drift(-gap, u, rheonomic, h, theta);
+        match *self {
+            Law::Coulomb { capacity } => (-h * capacity, h * capacity, rheonomic),
+            Law::Signorini { restitution, .. } => {
+                if gap + PREDICTION_WEIGHT * h * u <= 0.0 || closed {
+                    (0.0, f64::INFINITY, rheonomic + restitution * u)
+                } else {
+                    (0.0, 0.0, 0.0)
+                }
+            }
+            Law::Compliant { .. } | Law::Hertz { .. } => (0.0, f64::INFINITY, spring()),
+            Law::Spring { .. } => (f64::NEG_INFINITY, f64::INFINITY, spring()),
+        }
+    }
+
+    /// The compliance d (m/s per N·s) the law keeps for a whole run of step h (s) and θ: 1/(h²θk) for a linear
+    /// spring of stiffness k (so that a positive impulse is p = h·k·δ_{k+1}), 0 for friction and rigid contact, and
+    /// 0 for Hertz, whose compliance follows its linearisation step by step.
+    pub fn run_compliance(&self, h: f64, theta: f64) -> f64 {
+        match *self {
+            Law::Compliant { stiffness, .. } | Law::Spring { stiffness, .. } => 1.0 / (h * h * theta * stiffness),
+            Law::Coulomb { .. } | Law::Signorini { .. } | Law::Hertz { .. } => 0.0,
+        }
+    }
+
+    /// The energy Φ(δ) (J) the law's spring holds at penetration δ (m): ½k⟨δ⟩₊² for a stop, ½kδ² for a bilateral
+    /// spring, (2/5)C_H⟨δ⟩₊^{5/2} for Hertz ([`crate::hertz::potential`]); None for laws without a spring.
+    pub fn stored_energy(&self, penetration: f64) -> Option<f64> {
+        match *self {
+            Law::Compliant { stiffness, .. } => Some(0.5 * stiffness * penetration.max(0.0).powi(2)),
+            Law::Spring { stiffness, .. } => Some(0.5 * stiffness * penetration * penetration),
+            Law::Hertz { coefficient, .. } => Some(crate::hertz::potential(coefficient, penetration)),
+            Law::Coulomb { .. } | Law::Signorini { .. } => None,
+        }
+    }
+
+    /// The penetration δ_{k+1} (m) a linear spring law holds for the step's impulse `p` (N·s) with step h (s):
+    /// p/(hk); a stop without force ends open (0 stands for any δ ≤ 0). None for other laws (Hertz's follows from
+    /// its linearisation, [`crate::hertz::HertzStep::end_penetration`]).
+    pub fn linear_end_penetration(&self, p: f64, h: f64) -> Option<f64> {
+        match *self {
+            Law::Compliant { stiffness, .. } => Some(if p > 0.0 { p / (h * stiffness) } else { 0.0 }),
+            Law::Spring { stiffness, .. } => Some(p / (h * stiffness)),
+            Law::Coulomb { .. } | Law::Signorini { .. } | Law::Hertz { .. } => None,
+        }
+    }
+}
+
+/// γ of Moreau's index-set rule for rigid contact: a contact enters the step when g_k + γ h U_k ≤ 0.
+pub const PREDICTION_WEIGHT: f64 = 0.5;
+
+/// The drift of a spring law whose force is implicit in the penetration at the step's end (docs/theory.md §9):
+/// b = b_r − (δ_k − h(1−θ)U_k)/(hθ) for the penetration δ_k (m) its spring starts from, U_k (m/s) and b_r (m/s).
+pub fn compliant_drift(penetration: f64, u: f64, rheonomic: f64, h: f64, theta: f64) -> f64 {
+    rheonomic - (penetration - h * (1.0 - theta) * u) / (h * theta)
+}
 
 /// Projection of `p` onto [lo, hi] (lo ≤ hi, hi may be +∞).
 #[inline]

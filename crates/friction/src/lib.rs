@@ -6,18 +6,16 @@
 //! [`Law`] each — Coulomb friction, rigid (Signorini) contact with Newton impact, or a compliant unilateral stop;
 //! the generalised force is Hᵀr.
 //!
-//! - [`law`]: the one law of every interaction (an impulse in [lo, hi] against its velocity) as a projection, and
-//!   its natural residual.
+//! - [`law`]: the laws, each with its behaviour in the step, and the one form they all take (an impulse in
+//!   [lo, hi] against its velocity) as a projection, and its natural residual.
+//! - [`hertz`]: Hertz's law linearised within the step (its Newton iterations' state).
 //! - [`interaction`]: interaction sets, their sparse rows, laws and kinds.
-//! - [`devices`], [`distributed`]: builders for discrete devices and for distributed friction on a beam mesh.
+//!
+//! The crate knows no beam: what places devices and ballast sections on a beam mesh lives in `track`.
 
-pub mod devices;
-pub mod distributed;
-pub mod error;
+pub mod hertz;
 pub mod interaction;
 pub mod law;
 
-pub use devices::{DeviceLayout, Devices};
-pub use distributed::{DistributedFriction, Quadrature};
-pub use error::{FrictionError, Result};
-pub use interaction::{InteractionKind, InteractionRow, InteractionSet, Law};
+pub use interaction::{InteractionKind, InteractionRow, InteractionSet};
+pub use law::Law;

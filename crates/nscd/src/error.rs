@@ -87,9 +87,6 @@ pub enum NscdError {
     /// A matrix of the step (M̂, or an interior-point Newton matrix) is not positive definite.
     #[error(transparent)]
     Linear(#[from] banded::BandedError),
-    /// An error from the friction layer.
-    #[error(transparent)]
-    Friction(#[from] friction::FrictionError),
 }
 
 /// The tail of an [`NscdError::Unconverged`] message naming the fallbacks tried.

@@ -8,7 +8,6 @@
 //! - [`system`]: the banded linear system, one block or several stacked, with their [`system::DofLayout`].
 //! - [`forcing`]: the interface of external loads F(t).
 //! - [`problem`]: the one-step [`InteractionProblem`] and its update phase (the step's law from the state).
-//! - [`hertz`]: Hertz's contact law in a step, by Newton iterations on its tangent.
 //! - [`moving`]: interactions whose rows are rebuilt every step (a wheel).
 //! - [`position`]: the position projection of rigid moving contacts after each step.
 //! - [`solver`]: projected Gauss–Seidel, a banded interior point, Clarabel (feature `clarabel`).
@@ -19,7 +18,6 @@ mod dof_responses;
 pub mod error;
 pub mod fallback;
 pub mod forcing;
-pub mod hertz;
 mod kernels;
 pub mod ledger;
 pub mod moving;

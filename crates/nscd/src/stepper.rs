@@ -17,13 +17,13 @@ pub use crate::ledger::EnergyLedger;
 use crate::error::{NscdError, Result};
 use crate::fallback::Fallbacks;
 use crate::forcing::Forcing;
-use crate::hertz::NEWTON_ITERATIONS;
 use crate::kernels::dot;
 use crate::position::ProjectionReport;
-use crate::problem::{StepLaw, stored_energy};
+use crate::problem::StepLaw;
 use crate::solver::{InteractionProblem, InteractionSolver, SolverKind, SolverSettings, StepReport, build_solver};
 use crate::system::LinearSystem;
 use banded::{BandDiagonals, SymmetricBanded};
+use friction::hertz::NEWTON_ITERATIONS;
 use friction::{InteractionKind, InteractionSet, Law};
 
 /// Integration settings.
@@ -147,11 +147,7 @@ impl MoreauJean {
             theta: integration.theta,
             h: integration.step,
             damped: system.has_damping(),
-            varying_energy: problem
-                .interactions
-                .laws()
-                .iter()
-                .any(|l| matches!(l, Law::Compliant { .. } | Law::Spring { .. } | Law::Hertz { .. })),
+            varying_energy: problem.interactions.laws().iter().any(Law::has_spring),
             friction_only: problem.interactions.kinds().iter().all(|k| k.is_friction()),
             problem,
             solver,
@@ -490,8 +486,9 @@ fn spring_energy(problem: &InteractionProblem, q: &[f64], impulses: Option<&[f64
             energy += impulses.and_then(|p| problem.moving_spring_energy(j, p[j])).unwrap_or(0.0);
             continue;
         }
-        if let Law::Compliant { gap, .. } | Law::Spring { gap, .. } = *law {
-            energy += stored_energy(law, -(gap + row.dot(q))).unwrap_or(0.0);
+        // A fixed interaction with a spring is a linear one (Hertz is refused there).
+        if let (Some(gap), true) = (law.gap(), law.has_spring()) {
+            energy += law.stored_energy(-(gap + row.dot(q))).unwrap_or(0.0);
         }
     }
     energy

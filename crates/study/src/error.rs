@@ -57,9 +57,6 @@ pub enum StudyError {
     /// An error from the beam layer.
     #[error(transparent)]
     Beam(#[from] fem_beam::FemError),
-    /// An error from the friction layer.
-    #[error(transparent)]
-    Friction(#[from] friction::FrictionError),
     /// An error from the stepper (invalid setting or a failed run).
     #[error(transparent)]
     Stepping(#[from] nscd::NscdError),
@@ -78,6 +75,12 @@ impl From<track::TrackError> for StudyError {
             track::TrackError::Engine(e) => StudyError::Stepping(e),
             track::TrackError::Beam(e) => StudyError::Beam(e),
             track::TrackError::Irregularity(e) => e.into(),
+            track::TrackError::InvalidField { field, value, allowed } => {
+                StudyError::InvalidField { path: field.into(), value: crate::number::number(value), allowed }
+            }
+            track::TrackError::InvalidCount { field, value, allowed } => {
+                StudyError::InvalidField { path: field.into(), value: value.to_string(), allowed }
+            }
         }
     }
 }
@@ -86,7 +89,6 @@ impl StudyError {
     /// Whether the error is the user's input (exit code 2) rather than a runtime failure.
     pub fn is_invalid_input(&self) -> bool {
         use fem_beam::FemError as F;
-        use friction::FrictionError as R;
         use nscd::NscdError as N;
         let beam = |e: &F| {
             matches!(
@@ -98,21 +100,12 @@ impl StudyError {
                     | F::UnknownTrain { .. }
             )
         };
-        let friction = |e: &R| match e {
-            R::InvalidField { .. } | R::InvalidCount { .. } => true,
-            R::Beam(b) => beam(b),
-        };
         match self {
             StudyError::InvalidField { .. } | StudyError::Syntax { .. } => true,
             StudyError::Journal { .. } => true,
             StudyError::Io { .. } | StudyError::CurveFailed { .. } | StudyError::Interrupted => false,
             StudyError::Beam(e) => beam(e),
-            StudyError::Friction(e) => friction(e),
-            StudyError::Stepping(e) => match e {
-                N::InvalidField { .. } | N::Unavailable(_) => true,
-                N::Friction(f) => friction(f),
-                _ => false,
-            },
+            StudyError::Stepping(e) => matches!(e, N::InvalidField { .. } | N::Unavailable(_)),
         }
     }
 }

@@ -49,7 +49,7 @@ pub fn run_with_snapshots(
 ) -> Result<(RunResult, Vec<Snapshot>)> {
     let settings = &case.settings;
     let mut taker = SnapshotTaker::new(&case.model, &case.interactions, settings, requests).map_err(|e| match e {
-        track::TrackError::Engine(nscd::NscdError::InvalidField { value, allowed, .. }) => {
+        track::TrackError::InvalidField { value, allowed, .. } => {
             crate::error::invalid("output.snapshot_times / snapshot_load_positions", value, allowed)
         }
         other => other.into(),

@@ -5,7 +5,8 @@
 //! loop, the solver statistics and the peak resident memory of the process (VmHWM, Linux).
 
 use fem_beam::reference::uic60_on_soft_soil;
-use friction::{Devices, DistributedFriction, InteractionSet};
+use friction::InteractionSet;
+use track::{Devices, DistributedFriction};
 use track::{RunSettings, Simulation};
 
 fn main() {

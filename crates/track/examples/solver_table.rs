@@ -5,8 +5,9 @@
 //! that fails a step (unconverged within its iteration cap) is reported with the step where it stopped.
 
 use fem_beam::reference::uic60_on_soft_soil;
-use friction::{Devices, DistributedFriction, InteractionSet};
+use friction::InteractionSet;
 use nscd::SolverKind;
+use track::{Devices, DistributedFriction};
 use track::{RunSettings, Simulation};
 
 fn main() {

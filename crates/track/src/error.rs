@@ -14,12 +14,27 @@ pub enum TrackError {
     /// A rail profile or wheel flat out of range.
     #[error(transparent)]
     Irregularity(#[from] irregularity::IrregularityError),
-}
-
-impl From<friction::FrictionError> for TrackError {
-    fn from(error: friction::FrictionError) -> Self {
-        TrackError::Engine(error.into())
-    }
+    /// A setting of this crate out of range (the friction on the beam, the load, the run); names the field, the value
+    /// and what is allowed.
+    #[error("invalid {field} = {value}: {allowed}")]
+    InvalidField {
+        /// Setting name, e.g. `devices.force`.
+        field: &'static str,
+        /// The offending value.
+        value: f64,
+        /// What is allowed.
+        allowed: String,
+    },
+    /// A count out of range.
+    #[error("invalid {field} = {value}: {allowed}")]
+    InvalidCount {
+        /// Setting name, e.g. `devices.count`.
+        field: &'static str,
+        /// The offending value.
+        value: usize,
+        /// What is allowed.
+        allowed: String,
+    },
 }
 
 impl From<banded::BandedError> for TrackError {
@@ -28,9 +43,9 @@ impl From<banded::BandedError> for TrackError {
     }
 }
 
-/// A setting out of range, as the engine's [`nscd::NscdError::InvalidField`]: the field, its value, what is allowed.
+/// A setting of this crate out of range ([`TrackError::InvalidField`]): the field, its value, what is allowed.
 pub(crate) fn invalid(field: &'static str, value: f64, allowed: impl Into<String>) -> TrackError {
-    nscd::NscdError::InvalidField { field, value, allowed: allowed.into() }.into()
+    TrackError::InvalidField { field, value, allowed: allowed.into() }
 }
 
 /// Result alias of this crate.

@@ -8,6 +8,7 @@
 //! ([`vehicle`]: small linear systems with wheels, rolled over rigid ground with a rail profile).
 
 pub mod error;
+pub mod friction_layout;
 pub mod moving_load;
 pub mod simulation;
 pub mod snapshots;
@@ -16,6 +17,7 @@ pub mod system;
 pub mod vehicle;
 
 pub use error::{Result, TrackError};
+pub use friction_layout::{DeviceLayout, Devices, DistributedFriction, Quadrature};
 pub use moving_load::MovingLoad;
 pub use simulation::{InitialState, RunResult, RunSettings, Simulation, WindowExtremes};
 pub use snapshots::{Snapshot, SnapshotAt, SnapshotTaker};

@@ -5,7 +5,7 @@
 #![allow(unsafe_code)]
 
 use fem_beam::reference::uic60_on_soft_soil;
-use friction::{Devices, DistributedFriction, InteractionSet};
+use friction::InteractionSet;
 use nscd::MoreauJean;
 use nscd::solver::{SolverKind, SolverSettings};
 use nscd::stepper::Integration;
@@ -14,6 +14,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use track::MovingLoad;
 use track::simulation::coupling_length;
 use track::system::beam_system;
+use track::{Devices, DistributedFriction};
 
 /// The system allocator, counting allocations and reallocations.
 struct Counting;

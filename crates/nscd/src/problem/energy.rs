@@ -2,25 +2,13 @@
 //! the step, for the energy ledger.
 
 use super::InteractionProblem;
-use friction::Law;
-
-/// The energy Φ(δ) (J) a spring law holds at penetration δ (m): ½k⟨δ⟩₊² for a stop, ½kδ² for a bilateral spring,
-/// (2/5)C_H⟨δ⟩₊^{5/2} for Hertz; None for laws without a spring.
-pub(crate) fn stored_energy(law: &Law, penetration: f64) -> Option<f64> {
-    match *law {
-        Law::Compliant { stiffness, .. } => Some(0.5 * stiffness * penetration.max(0.0).powi(2)),
-        Law::Spring { stiffness, .. } => Some(0.5 * stiffness * penetration * penetration),
-        Law::Hertz { coefficient, .. } => Some(crate::hertz::potential(coefficient, penetration)),
-        Law::Coulomb { .. } | Law::Signorini { .. } => None,
-    }
-}
 
 impl InteractionProblem {
     /// The energy stored in moving interaction j's spring after a step with impulse `p` (J), read from its law: a
     /// compliant stop or a spring holds p = h·k·δ_{k+1}, so ½kδ² = p²/(2h²k) (a stop only when pressing); Hertz
     /// (2/5)C_Hδ^{5/2}. None for other laws.
     pub fn moving_spring_energy(&self, j: usize, p: f64) -> Option<f64> {
-        stored_energy(&self.interactions.laws()[j], self.end_penetration(j, p)?)
+        self.interactions.laws()[j].stored_energy(self.end_penetration(j, p)?)
     }
 
     /// The penetration δ_{k+1} (m) moving interaction j's law holds for impulse `p`: p/(hk) of a linear spring,
@@ -28,11 +16,9 @@ impl InteractionProblem {
     /// laws without a spring.
     fn end_penetration(&self, j: usize, p: f64) -> Option<f64> {
         let h = self.integration.step;
-        match self.interactions.laws()[j] {
-            Law::Compliant { stiffness, .. } => Some(if p > 0.0 { p / (h * stiffness) } else { 0.0 }),
-            Law::Spring { stiffness, .. } => Some(p / (h * stiffness)),
-            Law::Hertz { .. } => self.hertz[j].map(|hz| if p > 0.0 { hz.end_penetration(p, h) } else { 0.0 }),
-            Law::Coulomb { .. } | Law::Signorini { .. } => None,
+        match self.hertz[j] {
+            Some(hz) => Some(if p > 0.0 { hz.end_penetration(p, h) } else { 0.0 }),
+            None => self.interactions.laws()[j].linear_end_penetration(p, h),
         }
     }
 
@@ -49,13 +35,13 @@ impl InteractionProblem {
         let h = self.integration.step;
         let state = self.moving_states.get(j.checked_sub(self.fixed)?)?;
         let law = &self.interactions.laws()[j];
-        if let Law::Signorini { .. } = law {
+        if law.is_rigid() {
             // Newton's impact: what the impulse takes from the relative motion, −p·(H v_θ + b_r).
             return Some(-p * (self.interactions.rows()[j].dot(v_theta) + state.rheonomic));
         }
         let start = -state.gap;
         let end = self.end_penetration(j, p)?;
         let relative_work = p * (start - end) / h;
-        Some(-relative_work - (stored_energy(law, end)? - stored_energy(law, start)?))
+        Some(-relative_work - (law.stored_energy(end)? - law.stored_energy(start)?))
     }
 }

@@ -21,10 +21,7 @@
 
 mod energy;
 
-pub(crate) use energy::stored_energy;
-
 use crate::dof_responses::DofResponses;
-use crate::hertz::{HertzStep, NEWTON_TOLERANCE, PENETRATION_FLOOR};
 use crate::kernels::axpy;
 use crate::moving::{Interactions, MovingInteraction, MovingState};
 use crate::position::{CLOSED_GAP, PositionProjection, ProjectionReport};
@@ -33,45 +30,9 @@ use crate::solver::response::ImpulseResponses;
 use crate::stepper::{Integration, iteration_matrix};
 use crate::system::LinearSystem;
 use banded::{BandedLdlt, SymmetricBanded};
+use friction::hertz::{HertzStep, NEWTON_TOLERANCE, PENETRATION_FLOOR};
 use friction::law::natural_residual;
 use friction::{InteractionSet, Law};
-
-/// The step's law of one interaction from its law, gap g_k (m), relative velocity U_k (m/s), rheonomic velocity
-/// b_r (m/s, U = Hq̇ + b_r), step h and θ: (lo, hi, b) — the compliance is set elsewhere: once per run, or by a
-/// Hertz contact's linearisation (docs/theory.md §9).
-/// `projected`: a rigid contact whose positions are projected ([`crate::position`]) is also in the index set when
-/// closed, g_k ≤ [`CLOSED_GAP`].
-fn step_bounds(
-    law: &Law,
-    gap: f64,
-    u: f64,
-    rheonomic: f64,
-    (h, theta): (f64, f64),
-    projected: bool,
-) -> (f64, f64, f64) {
-    let spring = || compliant_drift(-gap, u, rheonomic, h, theta);
-    match *law {
-        Law::Coulomb { capacity } => (-h * capacity, h * capacity, rheonomic),
-        Law::Signorini { restitution, .. } => {
-            if gap + PREDICTION_WEIGHT * h * u <= 0.0 || (projected && gap <= CLOSED_GAP) {
-                (0.0, f64::INFINITY, rheonomic + restitution * u)
-            } else {
-                (0.0, 0.0, 0.0)
-            }
-        }
-        Law::Compliant { .. } | Law::Hertz { .. } => (0.0, f64::INFINITY, spring()),
-        Law::Spring { .. } => (f64::NEG_INFINITY, f64::INFINITY, spring()),
-    }
-}
-
-/// The drift of a spring law whose force is implicit in the penetration at the step's end (docs/theory.md §9):
-/// b = b_r − (δ_k − h(1−θ)U_k)/(hθ) for the penetration δ_k (m) its spring starts from, U_k (m/s) and b_r (m/s).
-pub(crate) fn compliant_drift(penetration: f64, u: f64, rheonomic: f64, h: f64, theta: f64) -> f64 {
-    rheonomic - (penetration - h * (1.0 - theta) * u) / (h * theta)
-}
-
-/// γ of Moreau's index-set rule for rigid contact: a contact enters the step when g_k + γ h U_k ≤ 0.
-pub const PREDICTION_WEIGHT: f64 = 0.5;
 
 /// The law of one step, per interaction: impulse bounds (N·s), compliance d (m/s per N·s), drift b (m/s).
 #[derive(Debug, Clone, Default, PartialEq)]
@@ -172,32 +133,29 @@ impl InteractionProblem {
             StepLaw { lower: vec![0.0; m], upper: vec![0.0; m], compliance: vec![0.0; m], drift: vec![0.0; m] };
         let mut hertz = vec![None; m];
         for (j, l) in interactions.laws().iter().enumerate() {
-            match *l {
-                // Friction's bounds are fixed for the run: set here, by the one mapping from law to bounds.
-                Law::Coulomb { .. } => {
-                    (law.lower[j], law.upper[j], law.drift[j]) = step_bounds(l, 0.0, 0.0, 0.0, (h, theta), false);
+            if let Law::Hertz { coefficient, .. } = *l {
+                // Hertz's law is linearised step by step (its Newton state); only a moving contact takes it.
+                if j < fixed {
+                    return Err(crate::NscdError::InvalidField {
+                        field: "law",
+                        value: coefficient,
+                        allowed: "Hertz's law is taken by moving interactions (wheels) only".into(),
+                    });
                 }
-                Law::Signorini { .. } => {}
-                Law::Compliant { stiffness, .. } | Law::Spring { stiffness, .. } => {
-                    law.compliance[j] = 1.0 / (h * h * theta * stiffness)
-                }
-                Law::Hertz { coefficient, .. } => {
-                    if j < fixed {
-                        return Err(crate::NscdError::InvalidField {
-                            field: "law",
-                            value: coefficient,
-                            allowed: "Hertz's law is taken by moving interactions (wheels) only".into(),
-                        });
-                    }
-                    hertz[j] = Some(HertzStep { coefficient, ..HertzStep::default() });
-                }
+                hertz[j] = Some(HertzStep { coefficient, ..HertzStep::default() });
+                continue;
+            }
+            law.compliance[j] = l.run_compliance(h, theta);
+            // Friction's bounds are fixed for the run: set here, by the one mapping from law to bounds.
+            if !l.depends_on_state() {
+                (law.lower[j], law.upper[j], law.drift[j]) = l.step_bounds(0.0, 0.0, 0.0, (h, theta), false);
             }
         }
         for (w, d) in delassus_diagonal.iter_mut().zip(&law.compliance) {
             *w += d;
         }
         let varying = !interactions.is_friction_only() || !moving.is_empty();
-        let projection = PositionProjection::new(moving.len(), |k| matches!(moving[k].law(), Law::Signorini { .. }));
+        let projection = PositionProjection::new(moving.len(), |k| moving[k].law().is_rigid());
         let n = m_hat.order();
         let mut problem = Self {
             interactions,
@@ -256,20 +214,17 @@ impl InteractionProblem {
                 let state = self.moving_states[j - self.fixed];
                 (state.gap, state.velocity, state.rheonomic)
             } else {
-                match *law {
-                    Law::Coulomb { .. } => continue,
-                    Law::Signorini { gap, .. }
-                    | Law::Compliant { gap, .. }
-                    | Law::Spring { gap, .. }
-                    | Law::Hertz { gap, .. } => (gap + rows[j].dot(q), rows[j].dot(v), 0.0),
-                }
+                let Some(gap) = law.gap() else { continue };
+                (gap + rows[j].dot(q), rows[j].dot(v), 0.0)
             };
             if let Some(hertz) = self.hertz[j].as_mut() {
                 hertz.start(-gap, u, rheonomic, h);
                 Self::set_hertz_law(&mut self.law, &mut self.delassus_diagonal, j, hertz, (h, theta));
                 continue;
             }
-            let (lower, upper, drift) = step_bounds(law, gap, u, rheonomic, (h, theta), j >= self.fixed);
+            // A moving rigid contact's positions are projected: closed, it stays in the step's index set.
+            let closed = j >= self.fixed && gap <= CLOSED_GAP;
+            let (lower, upper, drift) = law.step_bounds(gap, u, rheonomic, (h, theta), closed);
             self.law.lower[j] = lower;
             self.law.upper[j] = upper;
             self.law.drift[j] = drift;
@@ -288,8 +243,8 @@ impl InteractionProblem {
         self.hertz.iter().any(Option::is_some)
     }
 
-    /// One Newton update of the Hertz contacts from the step's impulses `p` ([`crate::hertz`]): when some contact's
-    /// δ* would move by more than [`crate::hertz::NEWTON_TOLERANCE`], relinearise them all and return true (solve
+    /// One Newton update of the Hertz contacts from the step's impulses `p` ([`friction::hertz`]): when some contact's
+    /// δ* would move by more than [`friction::hertz::NEWTON_TOLERANCE`], relinearise them all and return true (solve
     /// again); else leave the law as the impulses were solved for and return false.
     pub fn newton_step(&mut self, p: &[f64]) -> bool {
         let (h, theta) = (self.integration.step, self.integration.theta);

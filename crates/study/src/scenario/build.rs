@@ -5,9 +5,10 @@ use super::{Case, QuadratureKind, Scenario, SweepSection, fnv1a};
 use crate::error::{Result, StudyError, invalid};
 use crate::number::number;
 use fem_beam::{AbsorbingZones, BeamModel, Foundation, Mesh, Supports};
-use friction::{DeviceLayout, Devices, DistributedFriction, InteractionSet, Quadrature};
+use friction::InteractionSet;
 use nscd::SolverSettings;
 use track::simulation::{IntegrationSettings, MovingLoadSettings, RecordSettings};
+use track::{DeviceLayout, Devices, DistributedFriction, Quadrature};
 use track::{InitialState, RunSettings};
 
 fn finite_positive(path: &str, value: f64, unit: &str) -> Result<()> {
@@ -83,7 +84,7 @@ impl Scenario {
     /// Build the model, contact set and run settings, checking every value on the way.
     pub fn build(&self) -> Result<Case> {
         let model = self.model()?;
-        let interactions = self.interactions(&model).map_err(|e| under("friction", e))?;
+        let interactions = self.interactions(&model)?;
         finite_non_negative("load.force", self.load.force, "N")?;
         finite_positive("load.speed", self.load.speed, "m/s")?;
         if let Some([a, b]) = self.output.extremes_window {
@@ -165,12 +166,12 @@ impl Scenario {
             };
             // The layout's own checks (e.g. the count against the mesh) come first, then the force.
             let mut devices = Devices { layout, force: 0.0 };
-            devices.validate(model)?;
+            devices.validate(model).map_err(in_friction)?;
             devices.force = d.force.ok_or_else(|| {
                 invalid("friction.devices.force", "missing", "give the maximal force of one device F_u (N)")
             })?;
             finite_non_negative("friction.devices.force", devices.force, "N")?;
-            interactions.extend(devices.interactions(model)?);
+            interactions.extend(devices.interactions(model).map_err(in_friction)?);
         }
         if let Some(d) = &self.friction.distributed {
             let quadrature = match d.quadrature {
@@ -179,7 +180,7 @@ impl Scenario {
             };
             let distributed =
                 DistributedFriction { force_per_length: d.force_per_length, subdivisions: d.subdivisions, quadrature };
-            interactions.extend(distributed.interactions(model)?);
+            interactions.extend(distributed.interactions(model).map_err(in_friction)?);
         }
         Ok(interactions)
     }
@@ -246,14 +247,7 @@ impl Scenario {
 /// `[friction]`), renamed to its full path; other errors unchanged.
 fn under(section: &str, error: StudyError) -> StudyError {
     use fem_beam::FemError as F;
-    use friction::FrictionError as R;
     match error {
-        StudyError::Friction(R::InvalidField { field, value, allowed }) => {
-            invalid(&format!("{section}.{field}"), number(value), allowed)
-        }
-        StudyError::Friction(R::InvalidCount { field, value, allowed }) => {
-            invalid(&format!("{section}.{field}"), value, allowed)
-        }
         StudyError::Beam(F::InvalidField { field, value, allowed }) => {
             invalid(&format!("{section}.{field}"), number(value), allowed)
         }
@@ -264,10 +258,21 @@ fn under(section: &str, error: StudyError) -> StudyError {
     }
 }
 
+/// A field error of the friction placed on the beam (e.g. `devices.count`), renamed to its path in `[friction]`.
+fn in_friction(error: track::TrackError) -> StudyError {
+    use track::TrackError as T;
+    match error {
+        T::InvalidField { field, value, allowed } => invalid(&format!("friction.{field}"), number(value), allowed),
+        T::InvalidCount { field, value, allowed } => invalid(&format!("friction.{field}"), value, allowed),
+        other => other.into(),
+    }
+}
+
 /// Rename a run-setting error's field to its path in the scenario file.
 fn scenario_path(error: track::TrackError) -> StudyError {
     match error {
-        track::TrackError::Engine(nscd::NscdError::InvalidField { field, value, allowed }) => {
+        track::TrackError::Engine(nscd::NscdError::InvalidField { field, value, allowed })
+        | track::TrackError::InvalidField { field, value, allowed } => {
             let path = match field {
                 "speed" => "load.speed",
                 "load" => "load.force",

@@ -65,20 +65,24 @@ impl RailPoints {
         Self { mesh: *model.mesh(), beam_dofs }
     }
 
+    /// The system DOFs of the element under `x`, its local coordinate ξ ∈ [0, 1] and its length l (m); None off
+    /// the beam.
+    fn element_at(&self, x: f64) -> Option<([Option<usize>; 4], f64, f64)> {
+        let point = self.mesh.locate(x).ok()?;
+        let dofs = [0, 1, 2, 3].map(|i| self.beam_dofs[2 * point.element + i]);
+        Some((dofs, point.xi, self.mesh.element_length()))
+    }
+
     /// The element's DOFs and Ψ, Ψ′ at `x`, None off the beam.
     fn under(&self, x: f64) -> Option<Under> {
-        let point = self.mesh.locate(x).ok()?;
-        let l = self.mesh.element_length();
-        let dofs = [0, 1, 2, 3].map(|i| self.beam_dofs[2 * point.element + i]);
-        Some((dofs, shape(point.xi, l), shape_dx(point.xi, l)))
+        let (dofs, xi, l) = self.element_at(x)?;
+        Some((dofs, shape(xi, l), shape_dx(xi, l)))
     }
 
     /// (w, w″) of the rail at `x` from the system's displacement `q` (m, 1/m), None off the beam.
     pub(crate) fn deflection_curvature(&self, q: &[f64], x: f64) -> Option<(f64, f64)> {
-        let point = self.mesh.locate(x).ok()?;
-        let l = self.mesh.element_length();
-        let dofs = [0, 1, 2, 3].map(|i| self.beam_dofs[2 * point.element + i]);
-        let (n, ddn) = (shape(point.xi, l), shape_dxx(point.xi, l));
+        let (dofs, xi, l) = self.element_at(x)?;
+        let (n, ddn) = (shape(xi, l), shape_dxx(xi, l));
         Some((combine(&dofs, &n, q), combine(&dofs, &ddn, q)))
     }
 }

@@ -1,7 +1,8 @@
 //! The discrete energy identity (docs/theory.md §6) closes to round-off for any θ and any friction.
 
 use super::common::beam;
-use friction::{Devices, DistributedFriction, InteractionSet};
+use friction::InteractionSet;
+use track::{Devices, DistributedFriction};
 use track::{RunSettings, Simulation};
 
 #[test]

@@ -1,8 +1,8 @@
 //! Every step satisfies the Coulomb law; huge device forces hold the rail still.
 
 use super::common::{beam, reference};
-use friction::{Devices, DistributedFriction};
 use nscd::SolverKind;
+use track::{Devices, DistributedFriction};
 use track::{RunSettings, Simulation};
 
 fn check_law_every_step(

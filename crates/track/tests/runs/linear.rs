@@ -1,9 +1,10 @@
 //! Without friction the stepper is the linear θ-method; with vanishing friction it converges to it.
 
 use super::common::{beam, relative_difference};
-use friction::{Devices, DistributedFriction, InteractionSet};
+use friction::InteractionSet;
 use nalgebra::DVector;
 use nscd::Forcing;
+use track::{Devices, DistributedFriction};
 use track::{MovingLoad, RunSettings, Simulation};
 
 /// The linear θ-method written independently, densely, in terms of v_{k+1}:

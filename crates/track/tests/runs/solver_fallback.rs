@@ -2,8 +2,8 @@
 //! to the other solvers (docs/theory.md §5), counted in the run's statistics.
 
 use super::common::{beam, reference};
-use friction::DistributedFriction;
 use nscd::SolverKind;
+use track::DistributedFriction;
 use track::{RunSettings, Simulation};
 
 /// The case that stopped `frictrack reproduce --resolution paper`: the reference track with distributed friction

@@ -1,12 +1,13 @@
 //! Independent solvers agree on v_{k+1} (docs/theory.md §5: p need not be unique, v is).
 
 use super::common::{reference, relative_difference};
-use friction::{Devices, DistributedFriction, InteractionSet};
+use friction::InteractionSet;
 use nscd::solver::{InteractionProblem, SolverSettings, build_solver};
 use nscd::stepper::Integration;
 use nscd::{MoreauJean, SolverKind};
 use track::simulation::coupling_length;
 use track::system::beam_system;
+use track::{Devices, DistributedFriction};
 use track::{InitialState, MovingLoad, RunSettings, Simulation};
 
 /// Settings at `speed` with the solvers held to 1e-10, not the default 1e-6: two exact solvers are compared step by

@@ -4,7 +4,8 @@
 
 use super::common::beam;
 use fem_beam::{Axle, Train};
-use friction::{Devices, InteractionSet};
+use friction::InteractionSet;
+use track::Devices;
 use track::{RunSettings, Simulation};
 
 fn train(offsets: &[f64], forces: &[f64]) -> Train {

@@ -4,11 +4,12 @@
 
 use super::common::{beam, relative_difference};
 use fem_beam::{Axle, BeamModel, Train};
-use friction::{DeviceLayout, Devices, InteractionSet};
+use friction::InteractionSet;
 use irregularity::Profile;
 use nscd::solver::{SolverKind, SolverSettings};
 use track::vehicle::builtin::QuarterCar;
 use track::vehicle::consist::{VehicleSettings, WheelRail};
+use track::{DeviceLayout, Devices};
 use track::{RunResult, RunSettings, Simulation};
 
 /// A short dipped joint (1 mm deep over 0.2 m at x = 30 m): a wheel rolling over it at v needs a downward

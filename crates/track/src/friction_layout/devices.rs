@@ -4,9 +4,9 @@
 //! x (N = 15 on 1 m elements: 12.5 m → 13 m); or devices at explicit positions, snapped the same way. Each device
 //! has the row selecting its node's w DOF and the bound F_u. Devices snapped to the same node merge (bounds add).
 
-use crate::error::{FrictionError, Result};
-use crate::interaction::{InteractionKind, InteractionRow, InteractionSet};
+use crate::error::{Result, TrackError};
 use fem_beam::BeamModel;
+use friction::{InteractionKind, InteractionRow, InteractionSet};
 
 /// Where the devices go.
 #[derive(Debug, Clone, PartialEq)]
@@ -38,7 +38,7 @@ impl Devices {
     /// Check the parameters against the mesh of `model`.
     pub fn validate(&self, model: &BeamModel) -> Result<()> {
         if !(self.force.is_finite() && self.force >= 0.0) {
-            return Err(FrictionError::InvalidField {
+            return Err(TrackError::InvalidField {
                 field: "devices.force",
                 value: self.force,
                 allowed: "must be finite and ≥ 0 (N)".into(),
@@ -48,7 +48,7 @@ impl Devices {
         if let DeviceLayout::Uniform { count } = self.layout
             && count > interior
         {
-            return Err(FrictionError::InvalidCount {
+            return Err(TrackError::InvalidCount {
                 field: "devices.count",
                 value: count,
                 allowed: format!("at most {interior}, the number of interior nodes of the mesh"),
@@ -73,7 +73,7 @@ impl Devices {
         let mesh = model.mesh();
         self.requested_positions(mesh.length)
             .into_iter()
-            .map(|x| mesh.nearest_node(x).map_err(FrictionError::from))
+            .map(|x| mesh.nearest_node(x).map_err(TrackError::from))
             .collect()
     }
 

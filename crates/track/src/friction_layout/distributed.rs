@@ -7,10 +7,10 @@
 //! has the row H_s = Ψ(x_s), the Hermite shape functions of w in its element (so Hᵀr carries forces and moments),
 //! and the bound F_s = f_u·weight_s.
 
-use crate::error::{FrictionError, Result};
-use crate::interaction::{InteractionKind, InteractionRow, InteractionSet};
+use crate::error::{Result, TrackError};
 use fem_beam::BeamModel;
 use fem_beam::element::hermite;
+use friction::{InteractionKind, InteractionRow, InteractionSet};
 
 /// Quadrature of the distributed friction along each element.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -48,14 +48,14 @@ impl DistributedFriction {
     /// Check the parameters.
     pub fn validate(&self) -> Result<()> {
         if !(self.force_per_length.is_finite() && self.force_per_length >= 0.0) {
-            return Err(FrictionError::InvalidField {
+            return Err(TrackError::InvalidField {
                 field: "distributed.force_per_length",
                 value: self.force_per_length,
                 allowed: "must be finite and ≥ 0 (N/m)".into(),
             });
         }
         if self.subdivisions == 0 || self.subdivisions > Self::MAX_SUBDIVISIONS {
-            return Err(FrictionError::InvalidCount {
+            return Err(TrackError::InvalidCount {
                 field: "distributed.subdivisions",
                 value: self.subdivisions,
                 allowed: format!(
@@ -65,7 +65,7 @@ impl DistributedFriction {
             });
         }
         if self.quadrature == Quadrature::Simpson && self.subdivisions % 2 == 1 {
-            return Err(FrictionError::InvalidCount {
+            return Err(TrackError::InvalidCount {
                 field: "distributed.subdivisions",
                 value: self.subdivisions,
                 allowed: "must be even with Simpson weights".into(),

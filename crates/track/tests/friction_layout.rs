@@ -1,11 +1,10 @@
-//! Contact sets: snapping, merging, capacities (exact), the law's residual.
+//! Friction placed on a beam mesh: devices snapping and merging, distributed capacities (exact), rows that
+//! interpolate the deflection.
 
 use fem_beam::reference::uic60_on_soft_soil;
 use fem_beam::{BeamModel, Support, Supports};
-use friction::law::{natural_residual, project};
-use friction::{
-    DeviceLayout, Devices, DistributedFriction, FrictionError, InteractionKind, InteractionRow, Quadrature,
-};
+use friction::InteractionKind;
+use track::{DeviceLayout, Devices, DistributedFriction, Quadrature, TrackError};
 
 fn model(supports: Supports) -> BeamModel {
     let case = uic60_on_soft_soil();
@@ -43,7 +42,7 @@ fn devices_on_one_node_merge_and_too_many_are_rejected() {
     assert_eq!([set.capacity(0), set.capacity(1)], [2e3, 1e3]);
     assert_eq!(set.positions(), &[10.0, 50.0]);
     let err = Devices::uniform(200, 1e3).interactions(&m).unwrap_err();
-    assert!(matches!(err, FrictionError::InvalidCount { field: "devices.count", value: 200, .. }), "{err}");
+    assert!(matches!(err, TrackError::InvalidCount { field: "devices.count", value: 200, .. }), "{err}");
     let err = Devices::uniform(3, -1.0).interactions(&m).unwrap_err();
     assert!(err.to_string().contains("devices.force"), "{err}");
     let err = Devices { layout: DeviceLayout::Positions(vec![250.0]), force: 1.0 }.interactions(&m).unwrap_err();
@@ -100,42 +99,4 @@ fn simpson_needs_even_subdivisions() {
     let err = d.interactions(&m).unwrap_err();
     assert!(err.to_string().contains("distributed.subdivisions"), "{err}");
     assert!(DistributedFriction { force_per_length: f64::NAN, ..Default::default() }.validate().is_err());
-}
-
-#[test]
-fn coulomb_residual_vanishes_exactly_on_the_law() {
-    let a = 2.0;
-    assert_eq!(project(3.0, -a, a), 2.0);
-    assert_eq!(project(-3.0, -a, a), -2.0);
-    assert_eq!(project(0.5, -a, a), 0.5);
-    for rho in [1e-3, 1.0, 1e3] {
-        assert_eq!(natural_residual(0.0, 1.3, -a, a, rho), 0.0); // stuck, inside the bound
-        assert_eq!(natural_residual(0.7, -a, -a, a, rho), 0.0); // slipping forward, impulse backward
-        assert_eq!(natural_residual(-0.7, a, -a, a, rho), 0.0);
-        assert!((natural_residual(0.01, 1.0, -a, a, rho) - 0.01).abs() < 1e-12 || rho * 0.01 > 3.0); // stuck but moving
-        assert!(natural_residual(0.7, a, -a, a, rho) > 0.0); // impulse along the motion
-        assert!(natural_residual(0.7, -1.0, -a, a, rho) > 0.0); // slipping below the bound
-    }
-}
-
-/// A row longer than four entries over scattered DOFs (a wheel: four rail DOFs and its own) multiplies like the
-/// dense row; rewriting it in place keeps the short fast path when it shrinks back.
-#[test]
-fn long_rows_multiply_like_dense_rows() {
-    let v: Vec<f64> = (0..12).map(|i| 0.5 + i as f64 * 0.25).collect();
-    let entries = [(11, 1.0), (2, -0.25), (3, 0.5), (4, -0.75), (5, 0.125)];
-    let mut row = InteractionRow::from_entries(entries);
-    assert_eq!(row.len(), 5);
-    assert_eq!(row.dofs(), &[2, 3, 4, 5, 11]);
-    assert!(!row.is_local());
-    let dense: f64 = entries.iter().map(|(d, h)| h * v[*d]).sum();
-    assert!((row.dot(&v) - dense).abs() <= 1e-15 * dense.abs());
-    let mut out = vec![0.0; 12];
-    row.add_transpose(2.0, &mut out);
-    for (d, h) in entries {
-        assert_eq!(out[d], 2.0 * h);
-    }
-    row.set_entries([(4, 1.0), (5, 2.0), (6, 3.0), (7, 4.0)]);
-    assert!(row.is_local());
-    assert_eq!(row.dot(&v), v[4] + 2.0 * v[5] + 3.0 * v[6] + 4.0 * v[7]);
 }
