@@ -9,6 +9,7 @@ use fem_beam::reference::uic60_on_soft_soil;
 use friction::InteractionSet;
 use std::hint::black_box;
 use std::time::Duration;
+use track::Load;
 use track::{Devices, DistributedFriction};
 use track::{RunSettings, Simulation};
 
@@ -136,7 +137,8 @@ fn trains(c: &mut Criterion) {
     ] {
         for train in ["single", "hslm-a1"] {
             let mut settings = RunSettings::default();
-            settings.moving.train = Some(fem_beam::Train::named(train, settings.moving.force).unwrap());
+            let force = settings.moving.load.train().axles[0].force;
+            settings.moving.load = Load::Train(fem_beam::Train::named(train, force).unwrap());
             group.bench_function(BenchmarkId::new(name, train), |b| {
                 b.iter(|| Simulation::new(&model, black_box(&interactions), &settings).unwrap().run().unwrap())
             });
@@ -159,7 +161,10 @@ fn vehicles(c: &mut Criterion) {
     let car = QuarterCar::default().vehicle().unwrap();
     let with_contact = |contact: WheelRail| {
         let mut s = settings.clone();
-        s.moving.vehicles = Some(VehicleSettings { contact, ..VehicleSettings::single(car.clone()) });
+        s.moving.load = Load::Vehicles {
+            vehicles: VehicleSettings { contact, ..VehicleSettings::single(car.clone()) },
+            train: None,
+        };
         s
     };
     let hertz = with_contact(WheelRail::default());

@@ -2,5 +2,6 @@
 
 mod figures;
 mod layers;
+mod references;
 mod static_shape;
 mod study_curves;

@@ -61,13 +61,13 @@ fn check(path: &std::path::Path) -> Result<()> {
         }
     };
     let title = if scenario.title.is_empty() { String::new() } else { format!(" \"{}\"", scenario.title) };
-    let load = match (&case.settings.moving.vehicles, &case.settings.moving.train) {
-        (Some(v), _) => {
+    let load = match &case.settings.moving.load {
+        track::Load::Vehicles { vehicles: v, .. } => {
             let count = v.vehicles.len();
             format!("{count} vehicle{} ({} wheels)", if count == 1 { "" } else { "s" }, v.wheels().count())
         }
-        (None, Some(t)) => format!("train {} ({} axles, {:.3} m)", t.name, t.axles.len(), t.length()),
-        (None, None) => format!("load {:.1} kN", scenario.load.force / 1e3),
+        track::Load::Train(t) => format!("train {} ({} axles, {:.3} m)", t.name, t.axles.len(), t.length()),
+        track::Load::Force(force) => format!("load {:.1} kN", force / 1e3),
     };
     println!(
         "{}{title}: ok — {} m beam, {} elements ({} DOFs), k_f = {:.1} kN/m², {damping}, {friction} ({} sections), \

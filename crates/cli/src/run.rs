@@ -62,14 +62,14 @@ pub fn run(args: &RunArgs) -> Result<()> {
         let figures = study::run_output::FIGURE_STEMS.iter().flat_map(|f| [format!("{f}.png"), format!("{f}.svg")]);
         let files = ["summary.json", "histories.csv", "snapshots.csv"].map(String::from).into_iter();
         let wheel_files = ["wheels.csv", "wheel-forces.png", "wheel-forces.svg"].map(String::from).into_iter();
-        let wheel_files = wheel_files.filter(|_| case.settings.moving.vehicles.is_some());
+        let wheel_files = wheel_files.filter(|_| case.settings.moving.load.vehicles().is_some());
         for name in files.chain(figures).chain(wheel_files) {
             check_output_file("--out", &out.join(name))?;
         }
     }
     // The first axle's travel: from the start position (static or steady starts begin on the beam) to L + the
     // train's length.
-    let travel = (case.settings.start_position(), scenario.mesh.length + case.settings.moving.train_length());
+    let travel = (case.settings.start_position(), scenario.mesh.length + case.settings.moving.load.length());
     let requests = if args.out.is_some() { scenario.output.snapshots(travel) } else { Vec::new() };
     let steps = case.settings.step_count(scenario.mesh.length);
     if !args.quiet {

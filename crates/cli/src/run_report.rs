@@ -30,11 +30,7 @@ pub(crate) struct WindowWording {
 
 impl WindowWording {
     fn of(scenario: &Scenario, case: &Case) -> Self {
-        let load = if case.settings.moving.train.is_some() && case.settings.moving.vehicles.is_none() {
-            "first axle"
-        } else {
-            "load"
-        };
+        let load = if matches!(case.settings.moving.load, track::Load::Train(_)) { "first axle" } else { "load" };
         let span = scenario.foundation.stiffness == 0.0;
         let why = match (scenario.output.extremes_window.is_some(), span) {
             (true, _) => "the window given by [output] extremes_window or --extremes-window",
@@ -143,7 +139,7 @@ pub(crate) fn report(scenario: &Scenario, case: &Case, result: &RunResult, wall_
     let critical = study::speeds::SpeedScale::of(scenario)?.critical_speed;
     let statics = track::statics::static_envelope(
         &case.model,
-        &settings.moving.train(),
+        &settings.moving.load.train(),
         settings.integration.load_advance,
         settings.record.extremes_nodes,
     )?;
@@ -151,9 +147,9 @@ pub(crate) fn report(scenario: &Scenario, case: &Case, result: &RunResult, wall_
     Ok(RunReport {
         title: scenario.title.clone(),
         speed: settings.moving.speed,
-        load: settings.moving.force,
-        train: settings.moving.train.as_ref().map(crate::trains::TrainSummary::of),
-        axle_share: settings.moving.train.as_ref().filter(|t| t.name != "single").map(|_| {
+        load: scenario.load.force,
+        train: settings.moving.load.axles().map(crate::trains::TrainSummary::of),
+        axle_share: settings.moving.load.axles().filter(|t| t.name != "single").map(|_| {
             let share = scenario.axle_share();
             AxleShareReport { carries: share.name(), factor: share.factor(), meaning: share.describe() }
         }),
@@ -205,7 +201,7 @@ pub(crate) fn report(scenario: &Scenario, case: &Case, result: &RunResult, wall_
         fallbacks: s.fallbacks.iter().map(|f| FallbackReport { solver: f.solver.name(), steps: f.steps }).collect(),
         wall_time,
         vehicles: result.vehicles.as_ref().map(|v| {
-            let contact = settings.moving.vehicles.as_ref().map_or("", VehicleSettings::contact_name);
+            let contact = settings.moving.load.vehicles().map_or("", VehicleSettings::contact_name);
             study::vehicle_output::VehicleReport::of(v, contact)
         }),
     })

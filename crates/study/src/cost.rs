@@ -36,7 +36,7 @@ impl RunCost {
         let steps = case.settings.step_count(case.model.mesh().length);
         let dofs = case.model.dofs().free_len();
         let sections = case.interactions.len();
-        let wheels = case.settings.moving.vehicles.as_ref().map_or(0, |v| v.wheels().count());
+        let wheels = case.settings.moving.load.vehicles().map_or(0, |v| v.wheels().count());
         let per_step = PER_DOF_STEP * dofs as f64 + PER_SECTION_STEP * sections as f64 + PER_WHEEL_STEP * wheels as f64;
         Self { steps, dofs, sections, wheels, seconds: steps * per_step }
     }

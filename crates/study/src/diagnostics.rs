@@ -116,7 +116,7 @@ pub fn warnings(scenario: &Scenario, case: &Case) -> Vec<Warning> {
 /// two bogies of their own, four axles each, are not.
 fn articulated_cars(scenario: &Scenario, case: &Case) -> Vec<Warning> {
     let cars = scenario.vehicle.as_ref().is_some_and(|v| v.kind == crate::scenario::vehicle::VehicleKind::RailCar);
-    match &case.settings.moving.train {
+    match case.settings.moving.load.axles() {
         Some(train) if cars && train.name.starts_with("hslm") => vec![Warning {
             field: "vehicle.kind".into(),
             value: "rail-car".into(),
@@ -141,7 +141,7 @@ pub const RIGID_CONTACT_THETA: f64 = 0.51;
 /// A rigid wheel–rail contact integrated with θ below [`RIGID_CONTACT_THETA`].
 fn rigid_contact_damping(case: &Case) -> Vec<Warning> {
     let settings = &case.settings;
-    let Some(vehicles) = &settings.moving.vehicles else {
+    let Some(vehicles) = settings.moving.load.vehicles() else {
         return Vec::new();
     };
     let rigid = vehicles.vehicles.iter().any(|p| matches!(vehicles.contact_of(p), WheelRail::Rigid { .. }));

@@ -17,11 +17,12 @@ pub struct StaticReference {
     pub moment: f64,
 }
 
-/// w_sta and M_sta of `case` (load magnitude from its settings).
+/// w_sta and M_sta of `case` under its heaviest axle (the force of a single load) standing at mid-span.
 pub fn static_midspan(case: &Case) -> Result<StaticReference> {
     let model = &case.model;
     let mid = model.mesh().length / 2.0;
-    let load = LoadVector::point_force(model.mesh(), mid, -case.settings.moving.force)?;
+    let heaviest = case.settings.moving.load.train().axles.iter().fold(0.0f64, |m, a| m.max(a.force));
+    let load = LoadVector::point_force(model.mesh(), mid, -heaviest)?;
     let q = model.static_solve(&load)?;
     let moments = model.nodal_moments(&q, &load, Motion::default())?;
     Ok(StaticReference { deflection: model.deflection_at(&q, mid)?, moment: moments.at(mid) })

@@ -16,7 +16,7 @@ use crate::diagnostics::Warning;
 use crate::number::number;
 use crate::scenario::{Case, Scenario};
 use crate::speeds::SpeedScale;
-use track::RunResult;
+use track::{Load, RunResult};
 
 /// A point load (N) above which the load is no railway load: 1 MN, about three of the heaviest axles (35 t).
 pub const LOAD_LIMIT: f64 = 1e6;
@@ -54,13 +54,11 @@ pub fn input_warnings(scenario: &Scenario, case: &Case) -> Vec<Warning> {
 /// loads.
 fn heavy_loads(case: &Case) -> Option<Warning> {
     let moving = &case.settings.moving;
-    let (field, what, largest) = match (&moving.vehicles, &moving.train) {
-        (Some(v), _) => {
-            let train = v.static_train().ok()?;
-            ("vehicle", "static wheel load", train.axles.iter().map(|a| a.force).fold(0.0, f64::max))
-        }
-        (None, Some(train)) => ("load.train", "axle load", train.axles.iter().map(|a| a.force).fold(0.0, f64::max)),
-        (None, None) => ("load.force", "load", moving.force),
+    let heaviest = |train: &fem_beam::Train| train.axles.iter().map(|a| a.force).fold(0.0, f64::max);
+    let (field, what, largest) = match &moving.load {
+        Load::Vehicles { vehicles, .. } => ("vehicle", "static wheel load", heaviest(&vehicles.static_train().ok()?)),
+        Load::Train(train) => ("load.train", "axle load", heaviest(train)),
+        Load::Force(force) => ("load.force", "load", *force),
     };
     (largest > LOAD_LIMIT).then(|| Warning {
         field: field.into(),
@@ -76,7 +74,7 @@ fn heavy_loads(case: &Case) -> Option<Warning> {
 /// The rail's largest slope over the beam, sampled every centimetre (or every 1e-5 of the length), above
 /// [`SLOPE_LIMIT`].
 fn steep_rail(case: &Case) -> Option<Warning> {
-    let vehicles = case.settings.moving.vehicles.as_ref()?;
+    let vehicles = case.settings.moving.load.vehicles()?;
     let length = case.model.mesh().length;
     let dx = (0.01f64).min(length * 1e-5);
     let samples = (length / dx).ceil() as usize;

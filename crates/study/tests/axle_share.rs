@@ -11,7 +11,7 @@ fn scenario(toml: &str) -> Scenario {
 /// The forces of the run's train (N), first axle and total.
 fn train_forces(s: &Scenario) -> (f64, f64) {
     let settings = s.run_settings(100.0).unwrap();
-    let train = settings.moving.train.expect("a train");
+    let train = settings.moving.load.axles().cloned().expect("a train");
     (train.axles[0].force, train.total_force())
 }
 
@@ -44,5 +44,5 @@ fn a_rail_carries_half_of_each_axle_and_a_deck_all_of_it() {
 fn catalogue_names_are_taken_in_any_case() {
     let upper = scenario("[load]\ntrain = \"HSLM-A3\"\n[foundation]\nstiffness = 0.0\n");
     let settings = upper.run_settings(100.0).unwrap();
-    assert_eq!(settings.moving.train.unwrap().name, "hslm-a3");
+    assert_eq!(settings.moving.load.axles().unwrap().name, "hslm-a3");
 }

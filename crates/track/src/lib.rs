@@ -19,5 +19,5 @@ pub mod vehicle;
 pub use error::{Result, TrackError};
 pub use friction_layout::{DeviceLayout, Devices, DistributedFriction, Quadrature};
 pub use moving_load::MovingLoad;
-pub use simulation::{InitialState, RunResult, RunSettings, Simulation, WindowExtremes};
+pub use simulation::{InitialState, Load, RunResult, RunSettings, Simulation, WindowExtremes};
 pub use snapshots::{Snapshot, SnapshotAt, SnapshotTaker};

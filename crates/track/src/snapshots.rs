@@ -78,7 +78,7 @@ impl<'a> SnapshotTaker<'a> {
                 }
                 SnapshotAt::LoadPosition(x) => {
                     // The first axle's position: up to L plus the train's length (the last axle then leaves).
-                    let last = length + settings.moving.train_length();
+                    let last = length + settings.moving.load.length();
                     if !(x.is_finite() && (start..=last).contains(&x)) {
                         let allowed = format!("a snapshot load (first axle) position must lie in [{start}, {last}] m");
                         return Err(invalid("snapshots", x, allowed));
@@ -89,7 +89,7 @@ impl<'a> SnapshotTaker<'a> {
             pending.push((trigger, request));
         }
         pending.sort_by(|a, b| a.0.total_cmp(&b.0));
-        let train = settings.moving.train();
+        let train = settings.moving.load.train();
         Ok(Self { model, interactions, train, step, pending, next: 0, taken: Vec::new(), error: None })
     }
 

@@ -1,4 +1,4 @@
-//! Nothing allocates inside the time loop (STYLE.md): a counting global allocator watches 400 steps of the stepper
+//! Nothing allocates inside the time loop (docs/architecture.md, one step): a counting global allocator watches 400 steps of the stepper
 //! after a short warm-up, for each friction solver that runs in production (projection for devices, the windowed
 //! interior point for distributed friction) and without friction. Its own test binary, so that the counting
 //! allocator sees nothing else.

@@ -1,5 +1,5 @@
 //! The interaction step as a QP solved by the interior-point solver Clarabel (feature `clarabel`): an independent
-//! cross-check of the other solvers (docs/theory.md §5, §9, `DEPENDENCIES.md`).
+//! cross-check of the other solvers (docs/theory.md §5, §9; docs/architecture.md, Dependencies).
 //!
 //! Sparse lifted form, so that W is never formed: unknowns x = (y, p) with y = M̂⁻¹Hᵀp the velocity correction,
 //! min ½ yᵀM̂y + ½pᵀDp + cᵀp (= ½pᵀ(W + D)p + cᵀp) subject to M̂y − Hᵀp = 0 and p_j = lo_j where lo_j = hi_j (zero

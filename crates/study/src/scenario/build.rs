@@ -9,7 +9,7 @@ use friction::InteractionSet;
 use nscd::SolverSettings;
 use track::simulation::{IntegrationSettings, MovingLoadSettings, RecordSettings};
 use track::{DeviceLayout, Devices, DistributedFriction, Quadrature};
-use track::{InitialState, RunSettings};
+use track::{InitialState, Load, RunSettings};
 
 fn finite_positive(path: &str, value: f64, unit: &str) -> Result<()> {
     if value.is_finite() && value > 0.0 {
@@ -222,12 +222,19 @@ impl Scenario {
                 "the rail's irregularities act under [vehicle] wheels only",
             ));
         }
-        let vehicles = match &self.vehicle {
-            Some(v) => Some(v.settings(train.as_ref(), |behind| self.rail.profile(self.mesh.length + behind))?),
-            None => None,
+        // `load.force` is checked even where a train or vehicles carry the load instead: a bad value is refused,
+        // never silently unused.
+        Load::Force(self.load.force).validate().map_err(scenario_path)?;
+        let load = match (&self.vehicle, train) {
+            (Some(v), train) => {
+                let vehicles = v.settings(train.as_ref(), |behind| self.rail.profile(self.mesh.length + behind))?;
+                Load::Vehicles { vehicles, train }
+            }
+            (None, Some(train)) => Load::Train(train),
+            (None, None) => Load::Force(self.load.force),
         };
         Ok(RunSettings {
-            moving: MovingLoadSettings { speed, force: self.load.force, train, initial, vehicles },
+            moving: MovingLoadSettings { speed, load, initial },
             integration: IntegrationSettings {
                 theta: i.theta,
                 load_advance: i.load_advance,

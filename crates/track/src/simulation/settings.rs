@@ -30,46 +30,96 @@ pub enum InitialState {
     },
 }
 
-/// What moves on the beam: the load (one axle, or a train), its speed and where it starts.
+/// What crosses the beam: one force, a train of moving forces, or vehicles.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Load {
+    /// One point force F (N), acting downward, ≥ 0.
+    Force(f64),
+    /// A train of axles and patches (docs/theory.md §10).
+    Train(Train),
+    /// Vehicles, which load the rail with their weights through their wheels (docs/theory.md §12).
+    Vehicles {
+        /// The vehicles, their wheel–rail contact and the rail's profile.
+        vehicles: VehicleSettings,
+        /// The train whose axles the vehicles stand on, when they were placed on one (for reports); None for
+        /// vehicles given on their own.
+        train: Option<Train>,
+    },
+}
+
+impl Load {
+    /// The train that moves as forces: the vehicles' static wheel loads ([`VehicleSettings::static_train`]), the
+    /// train, or a single axle of the force.
+    pub fn train(&self) -> Train {
+        match self {
+            Load::Force(force) => Train::single(*force),
+            Load::Train(train) => train.clone(),
+            // Valid vehicles always have a static train (checked by their `validate`).
+            Load::Vehicles { vehicles, .. } => vehicles.static_train().unwrap_or_else(|_| Train::single(0.0)),
+        }
+    }
+
+    /// The length behind the first axle (m; 0 for a single force), or the vehicles' from the first wheel to the
+    /// last.
+    pub fn length(&self) -> f64 {
+        match self {
+            Load::Force(_) => 0.0,
+            Load::Train(train) => train.length(),
+            Load::Vehicles { vehicles, .. } => vehicles.length(),
+        }
+    }
+
+    /// The vehicles, if vehicles cross.
+    pub fn vehicles(&self) -> Option<&VehicleSettings> {
+        match self {
+            Load::Vehicles { vehicles, .. } => Some(vehicles),
+            Load::Force(_) | Load::Train(_) => None,
+        }
+    }
+
+    /// The train of axles that crosses, as forces or carrying the vehicles; None for a single force.
+    pub fn axles(&self) -> Option<&Train> {
+        match self {
+            Load::Train(train) => Some(train),
+            Load::Vehicles { train, .. } => train.as_ref(),
+            Load::Force(_) => None,
+        }
+    }
+
+    /// Check what crosses: a force finite and ≥ 0, a valid train, valid vehicles.
+    pub fn validate(&self) -> Result<()> {
+        match self {
+            Load::Force(force) if !(force.is_finite() && *force >= 0.0) => {
+                Err(invalid("load", *force, "must be finite and ≥ 0 (N, acting downward)"))
+            }
+            Load::Force(_) => Ok(()),
+            Load::Train(train) => Ok(train.validate()?),
+            Load::Vehicles { vehicles, .. } => vehicles.validate(),
+        }
+    }
+}
+
+impl Default for Load {
+    /// The reference case's load: 83.4 kN, half a Thalys power-car axle.
+    fn default() -> Self {
+        Load::Force(83.4e3)
+    }
+}
+
+/// What moves on the beam: the load, its speed and where it starts.
 #[derive(Debug, Clone, PartialEq)]
 pub struct MovingLoadSettings {
     /// Load speed v (m/s) > 0. Default 200.
     pub speed: f64,
-    /// Load magnitude F (N), acting downward, ≥ 0, when no train is given. Default 83.4 kN.
-    pub force: f64,
-    /// A train of axles and patches (docs/theory.md §10) instead of the single load `force`. Default none.
-    pub train: Option<Train>,
+    /// What crosses. Default one force of 83.4 kN.
+    pub load: Load,
     /// Initial state (and with it the first axle's start position). Default rest, the load entering at x = 0.
     pub initial: InitialState,
-    /// Vehicles instead of moving forces (docs/theory.md §12): they carry the load with their weights, `force`
-    /// and `train` are not used. Default none.
-    pub vehicles: Option<VehicleSettings>,
 }
 
 impl Default for MovingLoadSettings {
     fn default() -> Self {
-        Self { speed: 200.0, force: 83.4e3, train: None, initial: InitialState::Rest, vehicles: None }
-    }
-}
-
-impl MovingLoadSettings {
-    /// The train that moves: the vehicles' static wheel loads ([`VehicleSettings::static_train`]), the given train,
-    /// or a single axle of `force`.
-    pub fn train(&self) -> Train {
-        match &self.vehicles {
-            // Valid vehicles always have a static train (checked by their `validate`).
-            Some(vehicles) => vehicles.static_train().unwrap_or_else(|_| Train::single(0.0)),
-            None => self.train.clone().unwrap_or_else(|| Train::single(self.force)),
-        }
-    }
-
-    /// The train's length behind its first axle (m; 0 for a single load), or the vehicles' from the first wheel to
-    /// the last.
-    pub fn train_length(&self) -> f64 {
-        match &self.vehicles {
-            Some(vehicles) => vehicles.length(),
-            None => self.train.as_ref().map_or(0.0, Train::length),
-        }
+        Self { speed: 200.0, load: Load::default(), initial: InitialState::Rest }
     }
 }
 
@@ -148,14 +198,8 @@ impl RunSettings {
                 ),
             ));
         }
-        if !(self.moving.force.is_finite() && self.moving.force >= 0.0) {
-            return Err(invalid("load", self.moving.force, "must be finite and ≥ 0 (N, acting downward)"));
-        }
-        if let Some(train) = &self.moving.train {
-            train.validate()?;
-        }
-        if let Some(vehicles) = &self.moving.vehicles {
-            vehicles.validate()?;
+        self.moving.load.validate()?;
+        if self.moving.load.vehicles().is_some() {
             if self.integration.solver.kind == SolverKind::InteriorPoint {
                 return Err(invalid(
                     "solver",
@@ -186,7 +230,7 @@ impl RunSettings {
         }
         Integration { theta: self.integration.theta, step: self.integration.load_advance / self.moving.speed }
             .validate()?;
-        if let Some(vehicles) = &self.moving.vehicles {
+        if let Some(vehicles) = self.moving.load.vehicles() {
             let omega = vehicles.contact_frequency()?;
             let largest = MAX_CONTACT_STEP / omega * self.moving.speed;
             if omega * self.integration.load_advance / self.moving.speed > MAX_CONTACT_STEP {
@@ -268,7 +312,7 @@ impl RunSettings {
                 None => Err(invalid("load_advance", self.integration.load_advance, allowed)),
             };
         }
-        let wheels = self.moving.vehicles.as_ref().map_or(0, |v| v.wheels().count());
+        let wheels = self.moving.load.vehicles().map_or(0, |v| v.wheels().count());
         let samples = (steps + 1.0) * (self.record.sections.len() + wheels) as f64;
         if samples > Self::MAX_RECORDED_SAMPLES as f64 {
             return Err(invalid(
@@ -312,6 +356,6 @@ impl RunSettings {
 
     /// Time for the load — the last axle of a train — to reach x = L (s).
     pub fn crossing_time(&self, length: f64) -> f64 {
-        (length + self.moving.train_length() - self.start_position()) / self.moving.speed
+        (length + self.moving.load.length() - self.start_position()) / self.moving.speed
     }
 }

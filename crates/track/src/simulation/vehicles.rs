@@ -296,3 +296,10 @@ impl VehicleObserver {
         }
     }
 }
+
+impl super::records::Record for VehicleObserver {
+    fn record(&mut self, s: &super::records::StepState<'_>) -> Result<()> {
+        self.observe(s.time, s.h, &s.impulses[s.fixed..], s.q, (s.v, s.previous_v));
+        Ok(())
+    }
+}

@@ -41,7 +41,13 @@ fn same_state_difference(
     let mut solver_b = build_solver(b, &checking, &whole, None).unwrap();
     let (q0, v0) = Simulation::new(&model, interactions, settings).unwrap().initial_state().unwrap();
     let start = settings.start_position();
-    let load = MovingLoad::new(*model.mesh(), model.dofs(), settings.moving.force, settings.moving.speed, start);
+    let load = MovingLoad::new(
+        *model.mesh(),
+        model.dofs(),
+        settings.moving.load.train().axles[0].force,
+        settings.moving.speed,
+        start,
+    );
     let n = system.dofs();
     let stepping = SolverSettings { kind: a, ..settings.integration.solver };
     let mut stepper = MoreauJean::build(&system, interactions.clone(), integration, &stepping, margin, q0, v0).unwrap();

@@ -5,6 +5,7 @@
 use fem_beam::span::SimplySupportedSpan;
 use fem_beam::{Beam, BeamModel, Foundation, Mesh, Support, Supports};
 use friction::InteractionSet;
+use track::Load;
 use track::{RunSettings, Simulation};
 
 /// A pinned span of `length` m without foundation on 40 elements.
@@ -34,7 +35,7 @@ fn midspan_amplification_matches_the_modal_series() {
         let speed = alpha * 2.0 * f1 * length;
         let mut settings = RunSettings::default();
         settings.moving.speed = speed;
-        settings.moving.force = force;
+        settings.moving.load = Load::Force(force);
         settings.integration.load_advance = 0.05;
         settings.record.sections = vec![length / 2.0];
         let r = Simulation::new(&model, &InteractionSet::new(), &settings).unwrap().run().unwrap();
@@ -155,7 +156,7 @@ fn resonance_builds_up_except_at_cancelling_span_to_spacing_ratios() {
         };
         let mut settings = RunSettings::default();
         settings.moving.speed = f1 * spacing;
-        settings.moving.train = Some(train);
+        settings.moving.load = Load::Train(train);
         settings.integration.load_advance = 0.05;
         settings.integration.end_time = Some(settings.crossing_time(length) + 3.0 / f1);
         settings.record.sections = vec![length / 2.0];
@@ -195,7 +196,7 @@ fn static_envelope_gives_the_amplification_factor() {
     let run = |speed: f64| {
         let mut settings = RunSettings::default();
         settings.moving.speed = speed;
-        settings.moving.train = Some(bogie.clone());
+        settings.moving.load = Load::Train(bogie.clone());
         settings.integration.load_advance = 0.05;
         Simulation::new(&model, &InteractionSet::new(), &settings).unwrap().run().unwrap()
     };

@@ -3,6 +3,7 @@
 use fem_beam::reference::{InfiniteBeam, uic60_on_soft_soil};
 use fem_beam::{AbsorbingZones, BeamModel};
 use friction::InteractionSet;
+use track::Load;
 use track::{InitialState, RunSettings, Simulation};
 
 #[test]
@@ -99,7 +100,7 @@ fn a_train_started_from_its_steady_state_keeps_it() {
     let speed = 150.0;
     let mut settings = RunSettings::default();
     settings.moving.speed = speed;
-    settings.moving.train = Some(train.clone());
+    settings.moving.load = Load::Train(train.clone());
     settings.moving.initial = InitialState::SteadyState { position: 70.0 };
     settings.record.sections = vec![100.0];
     let r = Simulation::new(&model, &InteractionSet::new(), &settings).unwrap().run().unwrap();

@@ -6,6 +6,7 @@ use super::common::beam;
 use fem_beam::{Axle, Train};
 use friction::InteractionSet;
 use track::Devices;
+use track::Load;
 use track::{RunSettings, Simulation};
 
 fn train(offsets: &[f64], forces: &[f64]) -> Train {
@@ -30,10 +31,10 @@ fn a_train_is_the_sum_of_time_shifted_single_axle_runs() {
         settings.moving.speed = 120.0;
         settings.record.sections = vec![15.0, 30.0, 44.0];
         let mut single = settings.clone();
-        settings.moving.train = Some(train.clone());
+        settings.moving.load = Load::Train(train.clone());
         let whole = Simulation::new(&model, &none, &settings).unwrap().run().unwrap();
         // The unit axle, run as long as the train's crossing.
-        single.moving.force = 1.0;
+        single.moving.load = Load::Force(1.0);
         single.integration.end_time = Some(settings.crossing_time(60.0));
         let unit = Simulation::new(&model, &none, &single).unwrap().run().unwrap();
         let shifts: Vec<usize> =
@@ -79,7 +80,7 @@ fn energy_closes_with_many_axles() {
         let mut settings = RunSettings::default();
         settings.moving.speed = 150.0;
         settings.integration.load_advance = 0.2;
-        settings.moving.train = Some(train.clone());
+        settings.moving.load = Load::Train(train.clone());
         let r = Simulation::new(&model, &interactions, &settings).unwrap().run().unwrap();
         let e = r.energy;
         // The whole train crosses: (60 + 397.525) m at 0.2 m per step.
@@ -103,7 +104,7 @@ fn extremes_over_a_range_of_nodes() {
     let train = train(&[0.0, 3.0, 14.0, 17.0, 40.0, 43.0, 54.0, 57.0, 80.0, 83.0], &[170e3; 10]);
     let mut settings = RunSettings::default();
     settings.moving.speed = 100.0;
-    settings.moving.train = Some(train.clone());
+    settings.moving.load = Load::Train(train.clone());
     let whole = Simulation::new(&model, &none, &settings).unwrap().run().unwrap();
     settings.record.extremes_nodes = Some((0.0, 60.0));
     let all = Simulation::new(&model, &none, &settings).unwrap().run().unwrap();

@@ -7,6 +7,7 @@ use fem_beam::{Axle, BeamModel, Train};
 use friction::InteractionSet;
 use irregularity::Profile;
 use nscd::solver::{SolverKind, SolverSettings};
+use track::Load;
 use track::vehicle::builtin::QuarterCar;
 use track::vehicle::consist::{VehicleSettings, WheelRail};
 use track::{DeviceLayout, Devices};
@@ -28,7 +29,8 @@ fn car_run(
     let mut settings = RunSettings::default();
     settings.moving.speed = speed;
     let car = QuarterCar::default().vehicle().unwrap();
-    settings.moving.vehicles = Some(VehicleSettings { profile, contact, ..VehicleSettings::single(car) });
+    settings.moving.load =
+        Load::Vehicles { vehicles: VehicleSettings { profile, contact, ..VehicleSettings::single(car) }, train: None };
     settings.integration.load_advance = advance;
     settings.integration.solver =
         SolverSettings { kind: SolverKind::Projection, tolerance: 1e-12, ..SolverSettings::default() };
@@ -138,7 +140,10 @@ fn every_wheel_contact_is_the_same_with_clarabel() {
         let mut settings = RunSettings::default();
         settings.moving.speed = 60.0;
         let car = QuarterCar::default().vehicle().unwrap();
-        settings.moving.vehicles = Some(VehicleSettings { profile: DIP, contact, ..VehicleSettings::single(car) });
+        settings.moving.load = Load::Vehicles {
+            vehicles: VehicleSettings { profile: DIP, contact, ..VehicleSettings::single(car) },
+            train: None,
+        };
         settings.integration.load_advance = 0.04;
         settings.integration.theta = 0.51;
         let tolerance = if kind == SolverKind::Clarabel { 1e-6 } else { 1e-12 };
@@ -232,8 +237,13 @@ fn vehicle_runs_converge_as_the_step_shrinks() {
             let mut settings = RunSettings::default();
             settings.moving.speed = 30.0;
             settings.integration.theta = theta;
-            settings.moving.vehicles =
-                Some(VehicleSettings { contact, ..VehicleSettings::single(QuarterCar::default().vehicle().unwrap()) });
+            settings.moving.load = Load::Vehicles {
+                vehicles: VehicleSettings {
+                    contact,
+                    ..VehicleSettings::single(QuarterCar::default().vehicle().unwrap())
+                },
+                train: None,
+            };
             settings.integration.load_advance = advance;
             settings.integration.solver =
                 SolverSettings { kind: SolverKind::Projection, tolerance: 1e-12, ..SolverSettings::default() };
@@ -289,10 +299,10 @@ fn a_train_populated_with_quarter_cars_carries_its_axle_loads() {
     settings.moving.speed = 10.0;
     // h = 1 ms: the wheels' contact mode (195 Hz) needs ω_c·h ≤ 2 (track::vehicle::consist::MAX_CONTACT_STEP).
     settings.integration.load_advance = 0.01;
-    settings.moving.train = Some(train);
+    settings.moving.load = Load::Train(train);
     settings.record.extremes_nodes = Some((70.0, 110.0));
     let forces = Simulation::new(&model, &InteractionSet::new(), &settings).unwrap().run().unwrap();
-    settings.moving.vehicles = Some(vehicles);
+    settings.moving.load = Load::Vehicles { vehicles, train: None };
     let cars = Simulation::new(&model, &InteractionSet::new(), &settings).unwrap().run().unwrap();
     let wheels = &cars.vehicles.as_ref().unwrap().wheels;
     for (wheel, (offset, force)) in wheels.iter().zip(axles) {
@@ -325,9 +335,9 @@ fn rail_cars_carry_their_weight_on_four_wheels() {
     settings.moving.speed = 20.0;
     settings.integration.load_advance = 0.02;
     settings.record.extremes_nodes = Some((70.0, 110.0));
-    settings.moving.train = Some(vehicles.static_train().unwrap());
+    settings.moving.load = Load::Train(vehicles.static_train().unwrap());
     let forces = Simulation::new(&model, &InteractionSet::new(), &settings).unwrap().run().unwrap();
-    settings.moving.vehicles = Some(vehicles);
+    settings.moving.load = Load::Vehicles { vehicles, train: None };
     let cars = Simulation::new(&model, &InteractionSet::new(), &settings).unwrap().run().unwrap();
     let quarter = RailCar::default().weight() / 4.0;
     let wheels = &cars.vehicles.as_ref().unwrap().wheels;
@@ -375,9 +385,9 @@ fn a_train_populated_with_rail_cars_takes_its_geometry_from_the_axles() {
     settings.moving.speed = 20.0;
     settings.integration.load_advance = 0.02;
     settings.record.extremes_nodes = Some((70.0, 110.0));
-    settings.moving.train = Some(train(&axles));
+    settings.moving.load = Load::Train(train(&axles));
     let forces = Simulation::new(&model, &InteractionSet::new(), &settings).unwrap().run().unwrap();
-    settings.moving.vehicles = Some(vehicles);
+    settings.moving.load = Load::Vehicles { vehicles, train: None };
     let cars = Simulation::new(&model, &InteractionSet::new(), &settings).unwrap().run().unwrap();
     let wheels = &cars.vehicles.as_ref().unwrap().wheels;
     assert_eq!(wheels.len(), 8);
@@ -413,7 +423,8 @@ fn a_static_start_stands_the_vehicle_on_the_loaded_track() {
         let mut settings = RunSettings::default();
         settings.moving.speed = 30.0;
         settings.moving.initial = initial;
-        settings.moving.vehicles = Some(VehicleSettings::single(MovingMass::default().vehicle().unwrap()));
+        settings.moving.load =
+            Load::Vehicles { vehicles: VehicleSettings::single(MovingMass::default().vehicle().unwrap()), train: None };
         settings.integration.load_advance = 0.05;
         settings.record.extremes_nodes = Some((66.7, 133.3));
         Simulation::new(&model, &InteractionSet::new(), &settings).unwrap().run().unwrap()
@@ -448,7 +459,7 @@ fn each_vehicle_may_have_its_own_contact_law() {
     settings.moving.speed = 10.0;
     settings.integration.load_advance = 0.01;
     settings.moving.initial = track::InitialState::Static { position: 40.0 };
-    settings.moving.vehicles = Some(vehicles);
+    settings.moving.load = Load::Vehicles { vehicles, train: None };
     let run = Simulation::new(&model, &InteractionSet::new(), &settings).unwrap().run().unwrap();
     for wheel in &run.vehicles.as_ref().unwrap().wheels {
         let first = wheel.history.force[0] / wheel.static_force - 1.0;

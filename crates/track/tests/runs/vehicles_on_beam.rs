@@ -6,6 +6,7 @@ use fem_beam::BeamModel;
 use friction::InteractionSet;
 use irregularity::{Profile, WheelTrack};
 use nscd::solver::{SolverKind, SolverSettings};
+use track::Load;
 use track::vehicle::consist::{VehicleSettings, WheelRail};
 use track::vehicle::rail::WheelOnBeam;
 use track::vehicle::{Vehicle, Wheel};
@@ -47,7 +48,10 @@ fn vehicle_run(
     let mut settings = RunSettings::default();
     settings.moving.speed = speed;
     settings.integration.load_advance = advance;
-    settings.moving.vehicles = Some(VehicleSettings { contact, ..VehicleSettings::single(vehicle.clone()) });
+    settings.moving.load = Load::Vehicles {
+        vehicles: VehicleSettings { contact, ..VehicleSettings::single(vehicle.clone()) },
+        train: None,
+    };
     settings.integration.solver =
         SolverSettings { kind: SolverKind::Projection, tolerance: 1e-12, ..Default::default() };
     settings.record.sections = vec![section];
@@ -78,7 +82,7 @@ fn a_vanishing_moving_mass_is_the_moving_force() {
     let speed = 100.0;
     let mut settings = RunSettings::default();
     settings.moving.speed = speed;
-    settings.moving.force = FORCE;
+    settings.moving.load = Load::Force(FORCE);
     settings.integration.load_advance = ADVANCE;
     settings.record.sections = vec![30.0];
     let force_run = Simulation::new(&model, &InteractionSet::new(), &settings).unwrap().run().unwrap();

@@ -6,6 +6,7 @@ use fem_beam::span::SimplySupportedSpan;
 use fem_beam::span_oscillator::Oscillator;
 use fem_beam::{Beam, BeamModel, Foundation, Mesh, Supports};
 use friction::InteractionSet;
+use track::Load;
 use track::vehicle::Vehicle;
 use track::vehicle::builtin::{MovingMass, QuarterCar};
 use track::vehicle::consist::{VehicleSettings, WheelRail};
@@ -24,8 +25,10 @@ fn fe_run(vehicle: Vehicle) -> (Vec<f64>, Vec<f64>, Vec<(f64, f64)>) {
         .unwrap();
     let mut settings = RunSettings::default();
     settings.moving.speed = SPEED;
-    settings.moving.vehicles =
-        Some(VehicleSettings { contact: WheelRail::default(), ..VehicleSettings::single(vehicle) });
+    settings.moving.load = Load::Vehicles {
+        vehicles: VehicleSettings { contact: WheelRail::default(), ..VehicleSettings::single(vehicle) },
+        train: None,
+    };
     settings.integration.load_advance = 0.005;
     settings.record.sections = vec![LENGTH / 2.0];
     let run = Simulation::new(&model, &InteractionSet::new(), &settings).unwrap().run().unwrap();
