@@ -114,3 +114,45 @@ fn the_engine_uses_no_beam_type() {
         }
     }
 }
+
+/// The engine's top-level modules `use` each other without a circle (issue 26: the stepper, the problem and Hertz's
+/// law; the error, the solvers and Clarabel used to import each other): each module's `crate::…` paths outside
+/// comments and tests, followed until they come back.
+#[test]
+fn the_engine_modules_import_without_circles() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../crates/nscd/src");
+    let mut files = Vec::new();
+    rust_files(&root, &mut files);
+    let mut uses: std::collections::BTreeMap<String, std::collections::BTreeSet<String>> = Default::default();
+    for file in &files {
+        let relative = file.strip_prefix(&root).unwrap();
+        let module = relative.iter().next().unwrap().to_str().unwrap().trim_end_matches(".rs").to_string();
+        let text = std::fs::read_to_string(file).unwrap();
+        let code = text.split("#[cfg(test)]").next().unwrap();
+        for line in code.lines().filter(|l| !l.trim_start().starts_with("//")) {
+            for (i, _) in line.match_indices("crate::") {
+                let name: String = line[i + 7..].chars().take_while(|c| c.is_alphanumeric() || *c == '_').collect();
+                if name != module && name.starts_with(|c: char| c.is_lowercase()) {
+                    uses.entry(module.clone()).or_default().insert(name);
+                }
+            }
+        }
+    }
+    assert!(uses.len() >= 8, "the engine's modules found: {uses:?}");
+    // Depth-first from every module: a module reached again along its own path closes a circle.
+    fn visit(
+        module: &str,
+        path: &mut Vec<String>,
+        uses: &std::collections::BTreeMap<String, std::collections::BTreeSet<String>>,
+    ) {
+        for next in uses.get(module).into_iter().flatten() {
+            assert!(!path.contains(next), "import circle: {} -> {next}", path.join(" -> "));
+            path.push(next.clone());
+            visit(next, path, uses);
+            path.pop();
+        }
+    }
+    for module in uses.keys() {
+        visit(module, &mut vec![module.clone()], &uses);
+    }
+}

@@ -164,15 +164,12 @@ pub(crate) fn error_code(error: &anyhow::Error) -> u8 {
     if matches!(error.downcast_ref::<StudyError>(), Some(StudyError::Interrupted)) {
         return interrupt::EXIT_CODE;
     }
-    // Every library error converts into the study layer's, which knows which of them are the user's input.
-    let as_study = if let Some(e) = error.downcast_ref::<StudyError>() {
-        Some(e.clone())
-    } else if let Some(e) = error.downcast_ref::<fem_beam::FemError>() {
-        Some(StudyError::from(e.clone()))
-    } else if let Some(e) = error.downcast_ref::<track::TrackError>() {
-        Some(StudyError::from(e.clone()))
-    } else {
-        error.downcast_ref::<nscd::NscdError>().map(|e| StudyError::from(e.clone()))
-    };
-    if as_study.is_some_and(|e| e.is_invalid_input()) { 2 } else { 1 }
+    // Each layer's error says whether it is the user's input.
+    let invalid = error
+        .downcast_ref::<StudyError>()
+        .map(StudyError::is_invalid_input)
+        .or_else(|| error.downcast_ref::<track::TrackError>().map(track::TrackError::is_invalid_input))
+        .or_else(|| error.downcast_ref::<nscd::NscdError>().map(nscd::NscdError::is_invalid_input))
+        .or_else(|| error.downcast_ref::<fem_beam::FemError>().map(fem_beam::FemError::is_invalid_input));
+    if invalid == Some(true) { 2 } else { 1 }
 }

@@ -81,6 +81,21 @@ pub enum FemError {
     },
 }
 
+impl FemError {
+    /// Whether the error is the user's input (a parameter, a train, a speed without steady state) rather than a
+    /// failure of the computation.
+    pub fn is_invalid_input(&self) -> bool {
+        matches!(
+            self,
+            FemError::InvalidField { .. }
+                | FemError::InvalidCount { .. }
+                | FemError::NoSteadyState { .. }
+                | FemError::InvalidTrain { .. }
+                | FemError::UnknownTrain { .. }
+        )
+    }
+}
+
 impl From<banded::BandedError> for FemError {
     fn from(error: banded::BandedError) -> Self {
         match error {

@@ -22,9 +22,9 @@ pub enum NscdError {
     )]
     Unconverged {
         /// The solver.
-        solver: crate::solver::SolverKind,
+        solver: crate::solver_choice::SolverKind,
         /// How the solver's step ended.
-        status: crate::solver::StepStatus,
+        status: crate::step_report::StepStatus,
         /// Step index (1-based: the step being computed).
         step: usize,
         /// Time at the end of the step (s).
@@ -36,7 +36,7 @@ pub enum NscdError {
         /// The tolerance asked for (m/s).
         tolerance: f64,
         /// The fallback solvers that were tried after it and failed too (None: the run had no fallback).
-        fallbacks: Option<[crate::solver::SolverKind; 2]>,
+        fallbacks: Option<[crate::solver_choice::SolverKind; 2]>,
     },
     /// The position projection of the rigid moving contacts stopped short of its tolerance.
     #[error(
@@ -72,7 +72,7 @@ pub enum NscdError {
     #[error("solver {solver} cannot solve this problem: {reason}")]
     Unsupported {
         /// The solver.
-        solver: crate::solver::SolverKind,
+        solver: crate::solver_choice::SolverKind,
         /// Why, and what can.
         reason: &'static str,
     },
@@ -90,10 +90,18 @@ pub enum NscdError {
 }
 
 /// The tail of an [`NscdError::Unconverged`] message naming the fallbacks tried.
-fn fallbacks_tried(fallbacks: &Option<[crate::solver::SolverKind; 2]>) -> String {
+fn fallbacks_tried(fallbacks: &Option<[crate::solver_choice::SolverKind; 2]>) -> String {
     match fallbacks {
         Some([a, b]) => format!("; the fallbacks {a} and {b} failed too (or could not take the problem)"),
         None => String::new(),
+    }
+}
+
+impl NscdError {
+    /// Whether the error is the user's input (a setting out of range, a solver not built in) rather than a failure
+    /// of a step.
+    pub fn is_invalid_input(&self) -> bool {
+        matches!(self, NscdError::InvalidField { .. } | NscdError::Unavailable(_))
     }
 }
 

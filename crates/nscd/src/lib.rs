@@ -7,23 +7,27 @@
 //!
 //! - [`system`]: the banded linear system, one block or several stacked, with their [`system::DofLayout`].
 //! - [`forcing`]: the interface of external loads F(t).
+//! - [`integrator`]: the θ-method's step and its iteration matrix M̂.
 //! - [`problem`]: the one-step [`InteractionProblem`] and its update phase (the step's law from the state).
 //! - [`moving`]: interactions whose rows are rebuilt every step (a wheel).
 //! - [`position`]: the position projection of rigid moving contacts after each step.
-//! - [`solver`]: projected Gauss–Seidel, a banded interior point, Clarabel (feature `clarabel`).
+//! - [`solver`]: projected Gauss–Seidel, a banded interior point, Clarabel (feature `clarabel`), chosen by
+//!   [`solver_choice`], each ending a step with a [`step_report`].
 //! - [`fallback`]: the other solvers, tried in turn on a step the run's solver cannot solve.
 //! - [`stepper`]: [`MoreauJean`], one step at a time, with its [`EnergyLedger`] ([`ledger`]).
 
-mod dof_responses;
 pub mod error;
 pub mod fallback;
 pub mod forcing;
+pub mod integrator;
 mod kernels;
 pub mod ledger;
 pub mod moving;
 pub mod position;
 pub mod problem;
 pub mod solver;
+pub mod solver_choice;
+pub mod step_report;
 pub mod stepper;
 pub mod system;
 

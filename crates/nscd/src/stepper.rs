@@ -12,7 +12,11 @@
 //! the exact identity E_{k+1} − E_k = h v_θᵀF_θ − h v_θᵀC v_θ + U_θᵀp − (θ − ½)(‖Δv‖²_M + ‖Δq‖²_K), accumulated
 //! term by term in [`EnergyLedger`]; its residual is at round-off level whatever the solver's tolerance.
 
+pub use crate::integrator::{Integration, iteration_matrix};
+
+use crate::integrator::IterationMatrix;
 pub use crate::ledger::EnergyLedger;
+use std::sync::Arc;
 
 use crate::error::{NscdError, Result};
 use crate::fallback::Fallbacks;
@@ -22,39 +26,9 @@ use crate::position::ProjectionReport;
 use crate::problem::StepLaw;
 use crate::solver::{InteractionProblem, InteractionSolver, SolverKind, SolverSettings, StepReport, build_solver};
 use crate::system::LinearSystem;
-use banded::{BandDiagonals, SymmetricBanded};
+use banded::BandDiagonals;
 use friction::hertz::NEWTON_ITERATIONS;
 use friction::{InteractionKind, InteractionSet, Law};
-
-/// Integration settings.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Integration {
-    /// θ ∈ [½, 1]. Default ½ (no numerical dissipation of the linear part).
-    pub theta: f64,
-    /// Time step h (s) > 0.
-    pub step: f64,
-}
-
-impl Integration {
-    /// Check θ and h.
-    pub fn validate(&self) -> Result<()> {
-        if !(self.theta.is_finite() && (0.5..=1.0).contains(&self.theta)) {
-            return Err(NscdError::InvalidField {
-                field: "integration.theta",
-                value: self.theta,
-                allowed: "must lie in [0.5, 1]".into(),
-            });
-        }
-        if !(self.step.is_finite() && self.step > 0.0) {
-            return Err(NscdError::InvalidField {
-                field: "integration.step",
-                value: self.step,
-                allowed: "must be finite and > 0 (s)".into(),
-            });
-        }
-        Ok(())
-    }
-}
 
 /// The state and scratch of a Moreau–Jean integration; nothing allocates inside [`MoreauJean::step`].
 pub struct MoreauJean {
@@ -65,6 +39,8 @@ pub struct MoreauJean {
     varying_energy: bool,
     /// Whether every interaction is friction (the ledger's work needs no kinds).
     friction_only: bool,
+    /// The integrator's M̂ and its factors (shared with the problem), for the free velocity.
+    matrix: Arc<IterationMatrix>,
     problem: InteractionProblem,
     solver: Box<dyn InteractionSolver>,
     /// The solvers that take over a step the run's solver cannot solve (none for steppers made by
@@ -140,7 +116,7 @@ impl MoreauJean {
         q0: Vec<f64>,
         v0: Vec<f64>,
     ) -> Self {
-        let integration = problem.integration;
+        let integration = problem.matrix.integration;
         let n = system.dofs();
         let m = problem.interactions.len();
         let mut stepper = Self {
@@ -149,6 +125,7 @@ impl MoreauJean {
             damped: system.has_damping(),
             varying_energy: problem.interactions.laws().iter().any(Law::has_spring),
             friction_only: problem.interactions.kinds().iter().all(|k| k.is_friction()),
+            matrix: Arc::clone(&problem.matrix),
             problem,
             solver,
             fallbacks: None,
@@ -239,7 +216,7 @@ impl MoreauJean {
         }
         forcing.add_to(t1, h * theta, &mut self.work);
         forcing.add_to(t0, h * (1.0 - theta), &mut self.work);
-        self.problem.factor.solve_in_place(&mut self.work);
+        self.matrix.factor.solve_in_place(&mut self.work);
         for ((f, v), w) in self.v_free.iter_mut().zip(&self.v).zip(&self.work) {
             *f = v + w;
         }
@@ -497,14 +474,4 @@ fn spring_energy(problem: &InteractionProblem, q: &[f64], impulses: Option<&[f64
 /// Kinetic ½vᵀMv and strain ½qᵀKq energy (J), from the products M v and K q.
 fn energies(v: &[f64], mv: &[f64], q: &[f64], kq: &[f64]) -> (f64, f64) {
     (0.5 * dot(v, mv), 0.5 * dot(q, kq))
-}
-
-/// M̂ = M + hθC + h²θ²K.
-pub fn iteration_matrix(system: &LinearSystem, integration: Integration) -> SymmetricBanded {
-    let (h, theta) = (integration.step, integration.theta);
-    SymmetricBanded::linear_combination(&[
-        (1.0, &system.mass),
-        (h * theta, &system.damping),
-        (h * h * theta * theta, &system.stiffness),
-    ])
 }

@@ -9,6 +9,7 @@
 use banded::SymmetricBanded;
 use friction::{InteractionKind, InteractionRow, InteractionSet, Law};
 use nscd::SolverKind;
+use nscd::integrator::IterationMatrix;
 use nscd::solver::{InteractionProblem, SolverSettings, build_solver};
 use proptest::prelude::*;
 
@@ -86,8 +87,11 @@ fn problem() -> impl Strategy<Value = Problem> {
 /// v of every solver, after checking each meets the law: (name, v).
 fn solve_all(problem: &Problem) -> Vec<(&'static str, Vec<f64>)> {
     let integration = nscd::Integration { theta: 0.5, step: 1.0 };
-    let mut stepping =
-        InteractionProblem::with_matrix(problem.interactions.clone(), problem.m_hat.clone(), integration).expect("SPD");
+    let mut stepping = InteractionProblem::with_matrix(
+        problem.interactions.clone(),
+        IterationMatrix::of(problem.m_hat.clone(), integration).expect("SPD"),
+    )
+    .expect("SPD");
     let (n, m) = (problem.v_free.len(), problem.interactions.len());
     // The state the step starts from: q = 0 (gaps g₀) and v_k = v_free, so contacts with g₀ + h U_k/2 ≤ 0 close.
     stepping.update(0.0, &vec![0.0; n], &problem.v_free);

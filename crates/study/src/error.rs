@@ -86,26 +86,14 @@ impl From<track::TrackError> for StudyError {
 }
 
 impl StudyError {
-    /// Whether the error is the user's input (exit code 2) rather than a runtime failure.
+    /// Whether the error is the user's input (exit code 2) rather than a runtime failure; a lower layer's error
+    /// answers for itself.
     pub fn is_invalid_input(&self) -> bool {
-        use fem_beam::FemError as F;
-        use nscd::NscdError as N;
-        let beam = |e: &F| {
-            matches!(
-                e,
-                F::InvalidField { .. }
-                    | F::InvalidCount { .. }
-                    | F::NoSteadyState { .. }
-                    | F::InvalidTrain { .. }
-                    | F::UnknownTrain { .. }
-            )
-        };
         match self {
-            StudyError::InvalidField { .. } | StudyError::Syntax { .. } => true,
-            StudyError::Journal { .. } => true,
+            StudyError::InvalidField { .. } | StudyError::Syntax { .. } | StudyError::Journal { .. } => true,
             StudyError::Io { .. } | StudyError::CurveFailed { .. } | StudyError::Interrupted => false,
-            StudyError::Beam(e) => beam(e),
-            StudyError::Stepping(e) => matches!(e, N::InvalidField { .. } | N::Unavailable(_)),
+            StudyError::Beam(e) => e.is_invalid_input(),
+            StudyError::Stepping(e) => e.is_invalid_input(),
         }
     }
 }

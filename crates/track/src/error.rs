@@ -43,6 +43,17 @@ impl From<banded::BandedError> for TrackError {
     }
 }
 
+impl TrackError {
+    /// Whether the error is the user's input rather than a failure of the run; each layer answers for its own.
+    pub fn is_invalid_input(&self) -> bool {
+        match self {
+            TrackError::Engine(e) => e.is_invalid_input(),
+            TrackError::Beam(e) => e.is_invalid_input(),
+            TrackError::Irregularity(_) | TrackError::InvalidField { .. } | TrackError::InvalidCount { .. } => true,
+        }
+    }
+}
+
 /// A setting of this crate out of range ([`TrackError::InvalidField`]): the field, its value, what is allowed.
 pub(crate) fn invalid(field: &'static str, value: f64, allowed: impl Into<String>) -> TrackError {
     TrackError::InvalidField { field, value, allowed: allowed.into() }

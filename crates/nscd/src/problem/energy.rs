@@ -15,7 +15,7 @@ impl InteractionProblem {
     /// δ₀ + p/(hk_t) of Hertz's linearisation; a stop without force ends open (0 stands for any δ ≤ 0). None for
     /// laws without a spring.
     fn end_penetration(&self, j: usize, p: f64) -> Option<f64> {
-        let h = self.integration.step;
+        let h = self.matrix.integration.step;
         match self.hertz[j] {
             Some(hz) => Some(if p > 0.0 { hz.end_penetration(p, h) } else { 0.0 }),
             None => self.interactions.laws()[j].linear_end_penetration(p, h),
@@ -32,7 +32,7 @@ impl InteractionProblem {
     /// energy change, booked with it in [`crate::EnergyLedger::contact_loss`], cancels. None for friction and fixed
     /// interactions.
     pub fn moving_contact_loss(&self, j: usize, p: f64, v_theta: &[f64]) -> Option<f64> {
-        let h = self.integration.step;
+        let h = self.matrix.integration.step;
         let state = self.moving_states.get(j.checked_sub(self.fixed)?)?;
         let law = &self.interactions.laws()[j];
         if law.is_rigid() {

@@ -19,20 +19,24 @@
 //! velocity b_r (U_{k+1} = H v_{k+1} + b_r) set by the update phase each step, its response G = M̂⁻¹Hᵀ and W_jj with
 //! them; b_r joins its drift.
 
+mod dof_responses;
 mod energy;
+pub mod responses;
 
-use crate::dof_responses::DofResponses;
+use crate::integrator::{Integration, IterationMatrix};
 use crate::kernels::axpy;
 use crate::moving::{Interactions, MovingInteraction, MovingState};
 use crate::position::{CLOSED_GAP, PositionProjection, ProjectionReport};
-use crate::solver::VELOCITY_FLOOR;
-use crate::solver::response::ImpulseResponses;
-use crate::stepper::{Integration, iteration_matrix};
 use crate::system::LinearSystem;
-use banded::{BandedLdlt, SymmetricBanded};
+use dof_responses::DofResponses;
 use friction::hertz::{HertzStep, NEWTON_TOLERANCE, PENETRATION_FLOOR};
 use friction::law::natural_residual;
 use friction::{InteractionSet, Law};
+use responses::ImpulseResponses;
+use std::sync::Arc;
+
+/// Below this velocity (m/s) a section is considered at rest when scaling tolerances.
+pub const VELOCITY_FLOOR: f64 = 1e-14;
 
 /// The law of one step, per interaction: impulse bounds (N·s), compliance d (m/s per N·s), drift b (m/s).
 #[derive(Debug, Clone, Default, PartialEq)]
@@ -68,12 +72,8 @@ impl StepLaw {
 pub struct InteractionProblem {
     /// The interactions.
     pub interactions: InteractionSet,
-    /// M̂ = M + hθC + h²θ²K.
-    pub m_hat: SymmetricBanded,
-    /// LDLᵀ factors of M̂.
-    pub factor: BandedLdlt,
-    /// The step h and θ the problem is built for.
-    pub integration: Integration,
+    /// The integrator's M̂ (for the step h and θ the problem is built for) and its factors, shared with the stepper.
+    pub matrix: Arc<IterationMatrix>,
     /// The law of the current step.
     pub law: StepLaw,
     /// W_jj + d_j (m/s per N·s), W_jj = H_j M̂⁻¹ H_jᵀ.
@@ -102,28 +102,24 @@ pub struct InteractionProblem {
 }
 
 impl InteractionProblem {
-    /// The problem of a step of `integration` on `system`: M̂ = M + hθC + h²θ²K is built and factored here
-    /// (docs/theory.md §5).
+    /// The problem of a step of `integration` on `system`: M̂ = M + hθC + h²θ²K is built and factored
+    /// ([`IterationMatrix::new`], docs/theory.md §5).
     pub fn new(
         system: &LinearSystem,
         interactions: impl Into<Interactions>,
         integration: Integration,
     ) -> crate::Result<Self> {
-        Self::with_matrix(interactions, iteration_matrix(system, integration), integration)
+        Self::with_matrix(interactions, IterationMatrix::new(system, integration)?)
     }
 
-    /// The same for a given SPD iteration matrix `m_hat` (e.g. a test problem), factored here. The law is set for
+    /// The same on a given iteration matrix (e.g. a test problem's, [`IterationMatrix::of`]). The law is set for
     /// t = 0, q = 0, v = 0 until the first [`InteractionProblem::update`].
-    pub fn with_matrix(
-        interactions: impl Into<Interactions>,
-        m_hat: SymmetricBanded,
-        integration: Integration,
-    ) -> crate::Result<Self> {
+    pub fn with_matrix(interactions: impl Into<Interactions>, matrix: Arc<IterationMatrix>) -> crate::Result<Self> {
         let Interactions { fixed: mut interactions, moving } = interactions.into();
-        let factor = m_hat.factor()?;
+        let (factor, integration) = (&matrix.factor, matrix.integration);
         let (h, theta) = (integration.step, integration.theta);
         let fixed = interactions.len();
-        let (responses, mut delassus_diagonal) = ImpulseResponses::new(&interactions, &factor);
+        let (responses, mut delassus_diagonal) = ImpulseResponses::new(&interactions, factor);
         for interaction in &moving {
             interactions.push_moving(Default::default(), interaction.law(), 0.0, interaction.kind());
             delassus_diagonal.push(0.0);
@@ -156,12 +152,10 @@ impl InteractionProblem {
         }
         let varying = !interactions.is_friction_only() || !moving.is_empty();
         let projection = PositionProjection::new(moving.len(), |k| moving[k].law().is_rigid());
-        let n = m_hat.order();
+        let n = matrix.order();
         let mut problem = Self {
             interactions,
-            m_hat,
-            factor,
-            integration,
+            matrix,
             law,
             delassus_diagonal,
             responses,
@@ -185,21 +179,21 @@ impl InteractionProblem {
         if !self.varying {
             return;
         }
-        let n = self.m_hat.order();
+        let n = self.matrix.order();
         if !self.moving.is_empty() {
             self.dof_responses.begin_update();
         }
         for (k, interaction) in self.moving.iter_mut().enumerate() {
             let j = self.fixed + k;
             let row = self.interactions.row_mut(j);
-            let state = interaction.update(time, self.integration.step, q, v, row);
+            let state = interaction.update(time, self.matrix.integration.step, q, v, row);
             // G = Σ_i H_i r_i from the kept single-DOF responses, over the range the last G left non-zero.
             let column = &mut self.moving_responses[k * n..(k + 1) * n];
             let (lo, hi) = self.moving_support[k];
             column[lo..hi].iter_mut().for_each(|x| *x = 0.0);
             let mut support = (n, 0);
             for (dof, value) in row.entries() {
-                let (a, b) = self.dof_responses.add(dof, value, &self.factor, column);
+                let (a, b) = self.dof_responses.add(dof, value, &self.matrix.factor, column);
                 support = (support.0.min(a), support.1.max(b));
             }
             self.moving_support[k] = if support.0 < support.1 { support } else { (0, 0) };
@@ -207,7 +201,7 @@ impl InteractionProblem {
             self.interactions.set_position(j, state.position);
             self.moving_states[k] = state;
         }
-        let (h, theta) = (self.integration.step, self.integration.theta);
+        let (h, theta) = (self.matrix.integration.step, self.matrix.integration.theta);
         let rows = self.interactions.rows();
         for (j, law) in self.interactions.laws().iter().enumerate() {
             let (gap, u, rheonomic) = if j >= self.fixed {
@@ -247,7 +241,7 @@ impl InteractionProblem {
     /// δ* would move by more than [`friction::hertz::NEWTON_TOLERANCE`], relinearise them all and return true (solve
     /// again); else leave the law as the impulses were solved for and return false.
     pub fn newton_step(&mut self, p: &[f64]) -> bool {
-        let (h, theta) = (self.integration.step, self.integration.theta);
+        let (h, theta) = (self.matrix.integration.step, self.matrix.integration.theta);
         let moves = self.hertz.iter().zip(p).any(|(hz, &pj)| {
             hz.is_some_and(|hz| {
                 (hz.end_penetration(pj, h).max(PENETRATION_FLOOR) - hz.linearised_at).abs() > NEWTON_TOLERANCE
@@ -282,7 +276,7 @@ impl InteractionProblem {
         p: &[f64],
         dq: &mut [f64],
     ) -> ProjectionReport {
-        let (n, responses) = (self.m_hat.order(), &self.moving_responses);
+        let (n, responses) = (self.matrix.order(), &self.moving_responses);
         let response = |k: usize| &responses[k * n..(k + 1) * n];
         let (rows, law, diagonal, fixed) = (self.interactions.rows(), &self.law, &self.delassus_diagonal, self.fixed);
         let pressed = |k: usize| {
@@ -305,7 +299,7 @@ impl InteractionProblem {
     /// The response G_j = M̂⁻¹H_jᵀ of moving interaction j (an index ≥ [`InteractionProblem::fixed_len`]), as of the
     /// last update.
     pub fn moving_response(&self, j: usize) -> &[f64] {
-        let n = self.m_hat.order();
+        let n = self.matrix.order();
         let k = j - self.fixed;
         &self.moving_responses[k * n..(k + 1) * n]
     }
@@ -352,7 +346,7 @@ impl InteractionProblem {
     fn solve_response(&self, p: &[f64], out: &mut [f64]) {
         out.iter_mut().for_each(|x| *x = 0.0);
         self.interactions.add_transpose(p, out);
-        self.factor.solve_in_place(out);
+        self.matrix.factor.solve_in_place(out);
     }
 
     /// Number of interactions.

@@ -69,14 +69,14 @@ impl std::fmt::Debug for ClarabelQp {
 impl ClarabelQp {
     /// Set up the QP of `problem` (tight interior-point tolerances: it is a reference).
     pub fn new(problem: &InteractionProblem, tolerance: f64) -> crate::Result<Self> {
-        let n = problem.m_hat.order();
+        let n = problem.matrix.m_hat.order();
         let m = problem.len();
-        let bandwidth = problem.m_hat.bandwidth();
+        let bandwidth = problem.matrix.m_hat.bandwidth();
         let (mut pi, mut pj, mut pv) = (Vec::new(), Vec::new(), Vec::new());
         let (mut ai, mut aj, mut av) = (Vec::new(), Vec::new(), Vec::new());
         for j in 0..n {
             for i in j.saturating_sub(bandwidth)..(j + bandwidth + 1).min(n) {
-                let value = problem.m_hat.get(i, j);
+                let value = problem.matrix.m_hat.get(i, j);
                 if value != 0.0 {
                     if i <= j {
                         pi.push(i);

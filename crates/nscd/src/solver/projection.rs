@@ -37,11 +37,11 @@ impl ProjectedGaussSeidel {
         let m = problem.len();
         let rows = problem.interactions.rows();
         let mut w = vec![0.0; m * m];
-        let mut column = vec![0.0; problem.m_hat.order()];
+        let mut column = vec![0.0; problem.matrix.m_hat.order()];
         for (j, row) in rows.iter().enumerate() {
             column.iter_mut().for_each(|c| *c = 0.0);
             row.add_transpose(1.0, &mut column);
-            problem.factor.solve_in_place(&mut column);
+            problem.matrix.factor.solve_in_place(&mut column);
             for (i, other) in rows.iter().enumerate() {
                 w[i * m + j] = other.dot(&column);
             }

@@ -61,7 +61,7 @@ fn same_state_difference(
         let report_b = solver_b.solve(&checking, &v_free, &u_free, &mut p).unwrap();
         let mut v_b = vec![0.0; n];
         interactions.add_transpose(&p, &mut v_b);
-        checking.factor.solve_in_place(&mut v_b);
+        checking.matrix.factor.solve_in_place(&mut v_b);
         v_b.iter_mut().zip(&v_free).for_each(|(v, f)| *v += f);
         let report_a = stepper.step(&load).unwrap();
         assert_eq!(report_a.fallback, None, "{a:?} solved step {step} itself");
@@ -185,7 +185,7 @@ fn truncated_impulse_responses_match_the_solve() {
     responses.add(&p, &mut by_responses);
     let mut by_solve = vec![0.0; n];
     devices.add_transpose(&p, &mut by_solve);
-    problem.factor.solve_in_place(&mut by_solve);
+    problem.matrix.factor.solve_in_place(&mut by_solve);
     let scale = by_solve.iter().fold(0.0f64, |m, x| m.max(x.abs()));
     let gap = by_responses.iter().zip(&by_solve).fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
     assert!(gap <= 1e-14 * scale, "gap {gap:e} on a scale of {scale:e}");

@@ -169,7 +169,7 @@ impl Work {
         // Start inside every interval: a box at its centre (p = 0 for friction, where warm starts from the previous
         // step's (p, z) were measured to cost more iterations, not fewer: 18.6 cold vs 19.8–23.9 warm per step,
         // distributed 5 kN/m), a one-sided interval at the impulse scale max(|c|, shift)/w above its bound.
-        let scale = q.u_free.iter().fold(crate::solver::VELOCITY_FLOOR, |s, u| s.max(u.abs()));
+        let scale = q.u_free.iter().fold(crate::problem::VELOCITY_FLOOR, |s, u| s.max(u.abs()));
         let shift = 0.01 * scale;
         let mut started_off_zero = false;
         for k in 0..len {
@@ -188,7 +188,7 @@ impl Work {
             for k in 0..len {
                 rows[q.index[k]].add_transpose(q.p[k], &mut self.full);
             }
-            problem.factor.solve_in_place(&mut self.full);
+            problem.matrix.factor.solve_in_place(&mut self.full);
             self.y[..nw].copy_from_slice(&self.full[offset..offset + nw]);
             q.gather(&self.y);
             for k in 0..len {

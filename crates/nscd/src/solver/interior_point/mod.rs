@@ -88,7 +88,7 @@ impl BandedInteriorPoint {
         max_iterations: usize,
         window_margin: Option<f64>,
     ) -> crate::Result<Self> {
-        let (n, m) = (problem.m_hat.order(), problem.len());
+        let (n, m) = (problem.matrix.m_hat.order(), problem.len());
         if problem.has_moving() || !problem.interactions.rows().iter().all(|r| r.is_local()) {
             return Err(crate::NscdError::Unsupported {
                 solver: SolverKind::InteriorPoint,
@@ -97,7 +97,7 @@ impl BandedInteriorPoint {
             });
         }
         let backward = match window_margin {
-            Some(_) => Some(problem.m_hat.reversed().factor()?),
+            Some(_) => Some(problem.matrix.m_hat.reversed().factor()?),
             None => None,
         };
         Ok(Self {
@@ -106,13 +106,13 @@ impl BandedInteriorPoint {
             margin: window_margin,
             all_active: (0..m).filter(|&j| problem.law.is_free(j)).collect(),
             backward,
-            window_matrix: problem.m_hat.clone(),
+            window_matrix: problem.matrix.m_hat.clone(),
             work: Work {
                 sections: Sections::with_capacity(m),
                 y: vec![0.0; n],
                 dy: vec![0.0; n],
-                b: problem.m_hat.clone(),
-                b_factor: problem.factor.clone(),
+                b: problem.matrix.m_hat.clone(),
+                b_factor: problem.matrix.factor.clone(),
                 full: vec![0.0; n],
             },
             v: vec![0.0; n],
@@ -148,7 +148,8 @@ impl BandedInteriorPoint {
         for (u, &j) in q.u_free.iter_mut().zip(&q.index) {
             *u = u_free[j];
         }
-        let subproblem = Subproblem { problem, base: &problem.m_hat, offset: 0, tolerance, max_iterations: budget };
+        let subproblem =
+            Subproblem { problem, base: &problem.matrix.m_hat, offset: 0, tolerance, max_iterations: budget };
         self.work.iterate(&subproblem, p)
     }
 }
@@ -206,6 +207,7 @@ impl InteractionSolver for BandedInteriorPoint {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::integrator::IterationMatrix;
     use friction::{InteractionKind, InteractionRow, InteractionSet, Law};
 
     /// A beam-like step without a beam: M̂ assembled from diagonally dominant 4 × 4 blocks over (w, θ) pairs of
@@ -242,7 +244,8 @@ mod tests {
             }
         }
         let integration = crate::Integration { theta: 0.5, step: 1.0 };
-        InteractionProblem::with_matrix(interactions, m_hat, integration).expect("M̂ is SPD")
+        InteractionProblem::with_matrix(interactions, IterationMatrix::of(m_hat, integration).expect("M̂ is SPD"))
+            .expect("M̂ is SPD")
     }
 
     /// The AVX2 build of the iteration must give the same bits as the baseline build: same operations, same order,
@@ -255,7 +258,7 @@ mod tests {
         if std::arch::is_x86_feature_detected!("avx2") {
             let problem = beam_like_problem(100, 0.05);
             let interactions = &problem.interactions;
-            let m_hat = &problem.m_hat;
+            let m_hat = &problem.matrix.m_hat;
             let v_free: Vec<f64> = (0..m_hat.order()).map(|i| 0.3 * (0.05 * i as f64).sin() - 0.05).collect();
             let mut u_free = vec![0.0; interactions.len()];
             interactions.velocities(&v_free, &mut u_free);

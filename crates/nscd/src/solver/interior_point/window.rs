@@ -38,8 +38,8 @@ impl BandedInteriorPoint {
                 }
             }
         }
-        let n = problem.m_hat.order();
-        let bandwidth = problem.m_hat.bandwidth();
+        let n = problem.matrix.m_hat.order();
+        let bandwidth = problem.matrix.m_hat.bandwidth();
         if self.work.sections.index.len() == self.all_active.len() || end <= start {
             return Ok(None);
         }
@@ -53,15 +53,15 @@ impl BandedInteriorPoint {
         for &j in &self.work.sections.index {
             rows[j].add_transpose(p[j], &mut self.correction);
         }
-        problem.factor.solve_in_place(&mut self.correction);
+        problem.matrix.factor.solve_in_place(&mut self.correction);
         let q = &mut self.work.sections;
         q.fit();
         for (u, &j) in q.u_free.iter_mut().zip(&q.index) {
             *u = rows[j].dot(&self.v) - rows[j].dot(&self.correction);
         }
-        problem.m_hat.principal_submatrix_into(start, end, &mut self.window_matrix);
+        problem.matrix.m_hat.principal_submatrix_into(start, end, &mut self.window_matrix);
         if start > 0 {
-            problem.factor.subtract_leading_schur(start, &mut self.window_matrix);
+            problem.matrix.factor.subtract_leading_schur(start, &mut self.window_matrix);
         }
         if end < n {
             self.backward.as_ref().expect("window factors").subtract_trailing_schur(end, &mut self.window_matrix);

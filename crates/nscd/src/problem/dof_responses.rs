@@ -2,12 +2,12 @@
 //!
 //! A moving row H touches a handful of DOFs (a wheel: the four Hermite DOFs of the element under it and the wheel's
 //! own), so its response is G = M̂⁻¹Hᵀ = Σ_i H_i r_i. Each r_i decays away from DOF i like the fixed interactions'
-//! responses ([`crate::solver::response`]) and is truncated the same way; it is solved once, on the first step whose
+//! responses ([`crate::problem::responses`]) and is truncated the same way; it is solved once, on the first step whose
 //! row touches DOF i, and kept while rows keep touching it — a wheel crosses an element in several steps, so most
 //! steps solve nothing and assemble G from the kept columns instead of one banded solve per wheel.
 
+use super::responses::significant_range;
 use crate::kernels::axpy;
-use crate::solver::response::significant_range;
 use banded::BandedLdlt;
 
 /// A kept column: its first DOF, its entries, and the last update that used it.
@@ -68,7 +68,7 @@ impl DofResponses {
     }
 
     /// r_dof = M̂⁻¹e_dof by one banded solve, without the entries below
-    /// [`crate::solver::response::DROP_BELOW`] of its largest.
+    /// [`crate::problem::responses::DROP_BELOW`] of its largest.
     fn solve(dof: usize, factor: &BandedLdlt, scratch: &mut Vec<f64>) -> Column {
         scratch.clear();
         scratch.resize(factor.order(), 0.0);

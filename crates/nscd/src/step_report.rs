@@ -1,0 +1,69 @@
+//! How a step of the interaction problem ended: its status and its numbers.
+
+use crate::solver_choice::SolverKind;
+
+/// How a friction solver's step ended.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum StepStatus {
+    /// The law residual met the tolerance.
+    #[default]
+    Converged,
+    /// The solver used its whole iteration budget without meeting the tolerance.
+    IterationLimit,
+    /// The solver stopped on its own criteria, within its budget, short of the tolerance.
+    Stalled,
+    /// The residual is not a finite number.
+    NumericalError,
+}
+
+impl StepStatus {
+    /// The status of a step that ended with `residual` against `tolerance` (m/s) after `iterations` of a budget
+    /// of `limit`.
+    pub fn of(residual: f64, tolerance: f64, iterations: usize, limit: usize) -> Self {
+        if !residual.is_finite() {
+            StepStatus::NumericalError
+        } else if residual <= tolerance {
+            StepStatus::Converged
+        } else if iterations >= limit {
+            StepStatus::IterationLimit
+        } else {
+            StepStatus::Stalled
+        }
+    }
+}
+
+impl std::fmt::Display for StepStatus {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            StepStatus::Converged => "converged",
+            StepStatus::IterationLimit => "iteration limit reached",
+            StepStatus::Stalled => "stalled before the iteration limit",
+            StepStatus::NumericalError => "numerical error (non-finite residual)",
+        })
+    }
+}
+
+/// How one friction step ended.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct StepReport {
+    /// How it ended.
+    pub status: StepStatus,
+    /// Iterations: sweeps (projection), interior-point iterations (interior point, Clarabel).
+    pub iterations: usize,
+    /// Final law residual (m/s).
+    pub residual: f64,
+    /// The tolerance it had to meet (m/s).
+    pub tolerance: f64,
+    /// Sections actually re-solved this step (all of them, except with the interior point's moving window).
+    pub sections: usize,
+    /// The fallback solver that solved this step after the run's solver failed on it (None: the run's solver did;
+    /// see [`crate::fallback`]).
+    pub fallback: Option<SolverKind>,
+}
+
+impl StepReport {
+    /// Whether the residual met the tolerance.
+    pub fn converged(&self) -> bool {
+        self.status == StepStatus::Converged
+    }
+}
