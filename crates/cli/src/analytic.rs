@@ -4,10 +4,9 @@
 use crate::Format;
 use anyhow::Result;
 use clap::Args;
-use fem_beam::reference::InfiniteBeam;
-use serde::Serialize;
 use std::path::PathBuf;
 use study::scenario::SweepSection;
+use study::steady_response::SteadyResponse;
 use study::{Scenario, StudyError};
 
 /// Options of `frictrack analytic`.
@@ -42,17 +41,6 @@ pub struct AnalyticArgs {
     format: Format,
 }
 
-#[derive(Debug, Serialize)]
-struct Point {
-    speed: f64,
-    max_downward_deflection: f64,
-    max_downward_position: f64,
-    max_upward_deflection: f64,
-    max_upward_position: f64,
-    amplification_downward: f64,
-    amplification_upward: f64,
-}
-
 /// Parse `A:B:STEP` (m/s, or all three in km/h with `A:B:STEPkm/h`) into the list of speeds A, A+STEP, … ≤ B
 /// (inclusive up to round-off), in m/s.
 pub fn parse_range(text: &str) -> Result<Vec<f64>> {
@@ -82,12 +70,6 @@ pub fn run(args: &AnalyticArgs) -> Result<()> {
         Some(path) => Scenario::from_path(path)?,
         None => Scenario::default(),
     };
-    let case = scenario.reference_case()?;
-    let foundation = match args.damping_ratio {
-        Some(ratio) => case.foundation.with_damping_ratio(ratio, &case.beam)?,
-        None => case.foundation,
-    };
-    let inf = InfiniteBeam::new(&case.beam, &foundation)?;
     let speeds = match (&args.speeds, args.speed) {
         (Some(range), _) => parse_range(range)?,
         (None, Some(v)) => vec![v],
@@ -95,53 +77,13 @@ pub fn run(args: &AnalyticArgs) -> Result<()> {
             return Err(study::error::invalid("--speed", "absent", "give --speed V or --speeds A:B:STEP").into());
         }
     };
-    if scenario.vehicle.is_some() {
-        return Err(study::error::invalid(
-            "vehicle",
-            "given",
-            "the closed-form steady state takes moving forces, not vehicles: drop [vehicle] (the train's axles, or the \
-             single load, are used) or use `frictrack run`",
-        )
-        .into());
-    }
-    // The scenario's train (or --train), as the beam carries it; None for the single load.
     let train = match &args.train {
-        Some(name) => Some(study::trains::named_or_file(name, case.load, "--train")?),
-        None => study::trains::resolve(&scenario.load)?,
-    }
-    .map(|t| scenario.on_the_beam(t));
-    if let Some(t) = train.as_ref().filter(|t| !t.patches.is_empty()) {
-        return Err(study::error::invalid(
-            "load.patches",
-            t.patches.len(),
-            "the closed-form steady state takes axles only: give the train as axles, or use `frictrack run`",
-        )
-        .into());
-    }
-    let extremes = |v: f64| -> Result<fem_beam::reference::SteadyExtremes> {
-        Ok(match &train {
-            Some(t) => inf.train_steady_state(v, t)?.extremes(),
-            None => inf.steady_state(v, case.load)?.extremes(),
-        })
+        Some(name) => Some(study::trains::named_or_file(name, scenario.load.force, "--train")?),
+        None => None,
     };
-    // The static response of the same load (v = 0): a train's superposed static shapes.
-    let w0 = match &train {
-        Some(_) => extremes(0.0)?.max_downward.magnitude,
-        None => inf.static_deflection(case.load),
-    };
-    let mut points = Vec::with_capacity(speeds.len());
-    for v in speeds {
-        let e = extremes(v)?;
-        points.push(Point {
-            speed: v,
-            max_downward_deflection: e.max_downward.magnitude,
-            max_downward_position: e.max_downward.position,
-            max_upward_deflection: e.max_upward.magnitude,
-            max_upward_position: e.max_upward.position,
-            amplification_downward: e.max_downward.magnitude / w0,
-            amplification_upward: e.max_upward.magnitude / w0,
-        });
-    }
+    let response = SteadyResponse::of(&scenario, args.damping_ratio, train, &speeds)?;
+    let (points, train, inf, foundation) = (&response.points, &response.train, &response.beam, &response.foundation);
+    let w0 = response.static_deflection;
     match (args.format, points.len()) {
         (Format::Json, 1) => println!("{}", serde_json::to_string_pretty(&points[0])?),
         (Format::Json, _) => println!("{}", serde_json::to_string_pretty(&points)?),
@@ -150,8 +92,8 @@ pub fn run(args: &AnalyticArgs) -> Result<()> {
                 "infinite beam{}, EI = {:.4} MN·m², ρA = {:.3} kg/m, k_f = {:.1} kN/m², {}, ζ = {:.4}, \
                  v_cr = {:.2} m/s, static w₀ = {:.2} mm",
                 if scenario.title.is_empty() { String::new() } else { format!(" ({})", scenario.title) },
-                case.beam.bending_stiffness() / 1e6,
-                case.beam.mass_per_length(),
+                scenario.beam.beam().bending_stiffness() / 1e6,
+                scenario.beam.beam().mass_per_length(),
                 foundation.stiffness / 1e3,
                 match &train {
                     Some(t) => format!(
@@ -162,14 +104,14 @@ pub fn run(args: &AnalyticArgs) -> Result<()> {
                         t.total_force() / 1e3,
                         scenario.axle_share().describe()
                     ),
-                    None => format!("F = {:.1} kN", case.load / 1e3),
+                    None => format!("F = {:.1} kN", response.load / 1e3),
                 },
                 foundation.damping / inf.critical_damping(),
                 inf.critical_speed(),
                 w0 * 1e3
             );
             println!("  speed (m/s)  max down (mm)  at s (m)  max up (mm)  at s (m)   DAF down  DAF up");
-            for p in &points {
+            for p in points {
                 println!(
                     "  {:>10.2}  {:>13.3}  {:>8.2}  {:>11.3}  {:>8.2}  {:>8.3}  {:>6.3}",
                     p.speed,

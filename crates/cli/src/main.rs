@@ -12,7 +12,6 @@ mod progress;
 mod reference;
 mod reproduce;
 mod run;
-mod run_report;
 mod run_text;
 mod scenario_args;
 mod study_cmd;
@@ -20,6 +19,7 @@ mod sweep;
 mod track_profile;
 mod trains;
 mod units;
+mod window_wording;
 
 use clap::{Parser, Subcommand, ValueEnum};
 use std::process::ExitCode;

@@ -4,12 +4,11 @@
 use crate::Format;
 use anyhow::Result;
 use clap::Args;
-use fem_beam::LoadVector;
-use fem_beam::section::Motion;
 use serde::Serialize;
 use std::path::PathBuf;
 use std::time::Instant;
-use study::Scenario;
+use study::reference_check::ReferenceCheck;
+use study::{Scenario, StudyError};
 
 /// Options of `frictrack reference`.
 #[derive(Debug, Args)]
@@ -28,27 +27,11 @@ pub struct ReferenceArgs {
     format: Format,
 }
 
-#[derive(Debug, Serialize)]
-struct Mode {
-    n: usize,
-    omega: f64,
-    omega_closed_form: f64,
-}
-
+/// The JSON of `frictrack reference`: the check and the wall time (s).
 #[derive(Debug, Serialize)]
 struct ReferenceReport {
-    title: String,
-    length: f64,
-    supports: String,
-    elements: usize,
-    dofs: usize,
-    load: f64,
-    midspan_deflection: f64,
-    midspan_deflection_closed_form: f64,
-    midspan_moment: f64,
-    midspan_moment_closed_form: f64,
-    critical_speed: f64,
-    modes: Vec<Mode>,
+    #[serde(flatten)]
+    check: ReferenceCheck,
     wall_time: f64,
 }
 
@@ -62,65 +45,14 @@ pub fn run(args: &ReferenceArgs) -> Result<()> {
     if let Some(elements) = args.elements {
         scenario.mesh.elements = elements;
     }
-    // One load at mid-span against its closed form: a train or vehicles cannot be expressed, and using the single
-    // load's force instead would silently answer another question.
-    let load = &scenario.load;
-    let (field, value) = match (&scenario.vehicle, &load.train, load.axles.len(), load.patches.len()) {
-        (Some(_), _, _, _) => ("vehicle", "given".to_string()),
-        (None, Some(train), _, _) => ("load.train", train.clone()),
-        (None, None, axles, _) if axles > 0 => ("load.axles", format!("{axles} axles")),
-        (None, None, _, patches) if patches > 0 => ("load.patches", format!("{patches} patches")),
-        _ => ("", String::new()),
-    };
-    if !field.is_empty() {
-        return Err(study::error::invalid(
-            field,
-            value,
-            "`frictrack reference` checks one load of [load] force at mid-span against its closed form; for this \
-             scenario's loads use `frictrack analytic SCENARIO --speed V` (a train's steady state) or `frictrack run`",
-        )
-        .into());
-    }
-    let case = scenario.reference_case()?;
-    let model = case.model()?;
-    let inf = case.infinite_beam()?;
-    let mid = case.mesh.length / 2.0;
-    let load = LoadVector::point_force(&case.mesh, mid, -case.load)?;
-    let q = model.static_solve(&load)?;
-    let moments = model.nodal_moments(&q, &load, Motion::default())?;
-    let free = model.dofs().free_len();
-    if args.modes == 0 || args.modes > free {
-        return Err(study::error::invalid(
-            "--modes",
-            args.modes,
-            format!("must lie in [1, {free}], the number of free DOFs of this mesh"),
-        )
-        .into());
-    }
-    let omega = model.natural_frequencies(args.modes)?;
-    let report = ReferenceReport {
-        title: if scenario.title.is_empty() {
-            "reference case: UIC60 rail on soft soil".into()
-        } else {
-            scenario.title.clone()
-        },
-        length: case.mesh.length,
-        supports: format!("{:?}/{:?}", case.supports.left, case.supports.right).to_lowercase(),
-        elements: case.mesh.elements,
-        dofs: model.dofs().free_len(),
-        load: case.load,
-        midspan_deflection: model.deflection_at(&q, mid)?,
-        midspan_deflection_closed_form: -inf.static_deflection(case.load),
-        midspan_moment: moments.at(mid),
-        midspan_moment_closed_form: inf.static_moment(case.load),
-        critical_speed: inf.critical_speed(),
-        modes: omega
-            .iter()
-            .enumerate()
-            .map(|(i, &w)| Mode { n: i + 1, omega: w, omega_closed_form: case.pinned_natural_frequency(i + 1) })
-            .collect(),
-        wall_time: start.elapsed().as_secs_f64(),
-    };
+    // The option is `--modes` here; the library names its parameter `modes`.
+    let check = ReferenceCheck::of(&scenario, args.modes).map_err(|e| match e {
+        StudyError::InvalidField { path, value, allowed } if path == "modes" => {
+            StudyError::InvalidField { path: "--modes".into(), value, allowed }
+        }
+        other => other,
+    })?;
+    let report = ReferenceReport { check, wall_time: start.elapsed().as_secs_f64() };
     match args.format {
         Format::Json => println!("{}", serde_json::to_string_pretty(&report)?),
         Format::Text => print_text(&report),
@@ -128,7 +60,8 @@ pub fn run(args: &ReferenceArgs) -> Result<()> {
     Ok(())
 }
 
-fn print_text(r: &ReferenceReport) {
+fn print_text(report: &ReferenceReport) {
+    let r = &report.check;
     println!(
         "frictrack — {}: {} m beam ({} ends), {} elements ({} DOFs)",
         r.title, r.length, r.supports, r.elements, r.dofs
@@ -155,5 +88,5 @@ fn print_text(r: &ReferenceReport) {
             m.n, m.omega, m.omega_closed_form
         );
     }
-    println!("wall time {:.3} s", r.wall_time);
+    println!("wall time {:.3} s", report.wall_time);
 }

@@ -7,14 +7,15 @@
 
 use crate::Format;
 use crate::files::{check_output_file, prepare_output_folder, write_atomically};
-use crate::run_report::{RunReport, report};
 use crate::run_text::{figure_subtitle, print_text};
 use crate::scenario_args::ScenarioArgs;
+use crate::window_wording::WindowWording;
 use anyhow::Result;
 use clap::Args;
 use std::path::PathBuf;
 use std::time::Instant;
 use study::Scenario;
+use study::run_summary::RunSummary;
 use track::{RunResult, SnapshotAt};
 
 /// Options of `frictrack run`.
@@ -81,13 +82,13 @@ pub fn run(args: &RunArgs) -> Result<()> {
     let ran = study::run_output::run_with_snapshots(&case, &requests, stop, &progress);
     bar.finish_and_clear();
     let (result, snapshots) = crate::interrupt::explain(ran, None)?;
-    let report = report(&scenario, &case, &result, start.elapsed().as_secs_f64())?;
+    let report = RunSummary::of(&scenario, &case, &result, start.elapsed().as_secs_f64())?;
     for warning in study::plausibility::result_warnings(&case, &result) {
         eprintln!("warning: {warning}");
     }
     match args.format {
         Format::Json => println!("{}", serde_json::to_string_pretty(&report)?),
-        Format::Text => print_text(&report),
+        Format::Text => print_text(&report, &WindowWording::of(&scenario, &case)),
     }
     if let Some(out) = &args.out {
         write_outputs(out, &scenario, &report, &result, &snapshots)?;
@@ -102,7 +103,7 @@ pub fn run(args: &RunArgs) -> Result<()> {
 fn write_outputs(
     out: &std::path::Path,
     scenario: &Scenario,
-    report: &RunReport,
+    report: &RunSummary,
     result: &RunResult,
     snapshots: &[track::Snapshot],
 ) -> Result<()> {

@@ -2,10 +2,11 @@
 //! the solver's statistics and fallbacks, and with vehicles their wheels, losses of contact and bodies; and the
 //! words the run's figures are subtitled with.
 
-use crate::run_report::RunReport;
+use crate::window_wording::WindowWording;
+use study::run_summary::RunSummary;
 
 /// What ran, in words: the load, train or vehicles.
-fn load_description(r: &RunReport) -> String {
+fn load_description(r: &RunSummary) -> String {
     match (&r.vehicles, &r.train) {
         (Some(v), _) => {
             let total: f64 = v.wheels.iter().map(|w| w.static_force).sum();
@@ -26,7 +27,7 @@ fn load_description(r: &RunReport) -> String {
 }
 
 /// The friction that ran, in words.
-fn friction_description(r: &RunReport) -> String {
+fn friction_description(r: &RunSummary) -> String {
     let devices = (r.devices > 0).then(|| format!("{} devices × {:.1} kN", r.devices, r.device_force / 1e3));
     let distributed = (r.distributed_friction > 0.0).then(|| format!("{:.1} N/m distributed", r.distributed_friction));
     match (devices, distributed) {
@@ -36,7 +37,7 @@ fn friction_description(r: &RunReport) -> String {
 }
 
 /// The subtitle of the run's figures: what ran, at which speed, with which friction.
-pub(crate) fn figure_subtitle(r: &RunReport) -> String {
+pub(crate) fn figure_subtitle(r: &RunSummary) -> String {
     format!(
         "{} at {:.2} m/s ({:.0} km/h); friction: {}",
         load_description(r),
@@ -46,7 +47,7 @@ pub(crate) fn figure_subtitle(r: &RunReport) -> String {
     )
 }
 
-pub(crate) fn print_text(r: &RunReport) {
+pub(crate) fn print_text(r: &RunSummary, wording: &WindowWording) {
     let title = if r.title.is_empty() { String::new() } else { format!(" — {}", r.title) };
     let load = load_description(r);
     println!("frictrack run{title}: {load} at {:.2} m/s ({:.0} km/h)", r.speed, r.speed * 3.6);
@@ -69,7 +70,7 @@ pub(crate) fn print_text(r: &RunReport) {
             }
         }
     }
-    let load = r.window_wording.load;
+    let load = wording.load;
     let line = |what: &str, d: f64, place: Option<(f64, f64)>, x_load: Option<f64>| match place {
         Some((x, t)) => {
             let load = x_load.map_or(String::new(), |x| format!(", {load} at {x:.1} m"));
@@ -95,7 +96,7 @@ pub(crate) fn print_text(r: &RunReport) {
         None,
     );
     let (a, b) = r.extremes_window;
-    let why = r.window_wording.why;
+    let why = wording.why;
     let nodes = if r.extremes_nodes.is_some() { "the nodes above" } else { "every node" };
     println!("  while the {load} is at {a:.1}–{b:.1} m ({why}), over {nodes}:");
     match (&r.window_max_downward, &r.window_max_upward) {

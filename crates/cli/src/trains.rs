@@ -16,34 +16,6 @@ pub struct TrainsArgs {
     pub format: Format,
 }
 
-/// What a report says of a train: name, counts, length (m) and whole weight (N).
-#[derive(Debug, Clone, Serialize)]
-pub struct TrainSummary {
-    /// Name.
-    pub name: String,
-    /// Number of axles.
-    pub axles: usize,
-    /// Number of load patches.
-    pub patches: usize,
-    /// First to last axle or patch end (m).
-    pub length: f64,
-    /// Σ P + Σ q ℓ (N).
-    pub total_force: f64,
-}
-
-impl TrainSummary {
-    /// The summary of `train`.
-    pub fn of(train: &Train) -> Self {
-        Self {
-            name: train.name.clone(),
-            axles: train.axles.len(),
-            patches: train.patches.len(),
-            length: train.length(),
-            total_force: train.total_force(),
-        }
-    }
-}
-
 /// One train in full, as `frictrack trains NAME --format json` prints it.
 #[derive(Debug, Serialize)]
 struct TrainListing {
@@ -62,9 +34,9 @@ struct AxleListing {
 pub fn run(args: &TrainsArgs) -> Result<()> {
     let single_force = fem_beam::reference::uic60_on_soft_soil().load;
     let Some(name) = &args.name else {
-        let trains: Vec<TrainSummary> = Train::catalogue()
+        let trains: Vec<study::trains::TrainSummary> = Train::catalogue()
             .iter()
-            .map(|n| Train::named(n, single_force).map(|t| TrainSummary::of(&t)))
+            .map(|n| Train::named(n, single_force).map(|t| study::trains::TrainSummary::of(&t)))
             .collect::<Result<_, _>>()?;
         match args.format {
             Format::Json => println!("{}", serde_json::to_string_pretty(&trains)?),

@@ -4,6 +4,7 @@
 use crate::error::{Result, invalid};
 use crate::scenario::LoadSection;
 use fem_beam::{Axle, FemError, Patch, Train};
+use serde::Serialize;
 
 /// The train of `[load]`, or None for the single load `load.force`.
 pub fn resolve(load: &LoadSection) -> Result<Option<Train>> {
@@ -86,4 +87,32 @@ pub fn read_csv(path: &std::path::Path) -> Result<Train> {
     }
     let name = path.file_stem().map_or_else(|| "file".into(), |s| s.to_string_lossy().into_owned());
     Ok(Train { name, axles, patches: Vec::new() })
+}
+
+/// What a report says of a train: name, counts, length (m) and whole weight (N).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct TrainSummary {
+    /// Name.
+    pub name: String,
+    /// Number of axles.
+    pub axles: usize,
+    /// Number of load patches.
+    pub patches: usize,
+    /// First to last axle or patch end (m).
+    pub length: f64,
+    /// Σ P + Σ q ℓ (N).
+    pub total_force: f64,
+}
+
+impl TrainSummary {
+    /// The summary of `train`.
+    pub fn of(train: &Train) -> Self {
+        Self {
+            name: train.name.clone(),
+            axles: train.axles.len(),
+            patches: train.patches.len(),
+            length: train.length(),
+            total_force: train.total_force(),
+        }
+    }
 }

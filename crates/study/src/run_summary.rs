@@ -1,0 +1,242 @@
+//! The summary of one run: what ran and what it gave, typed, with the names every output uses (`frictrack run
+//! --format json`, `summary.json`, the text report). Absent values are absent: an extreme that never happened is
+//! None (null), not a placeholder 0 at x = 0, t = 0. Deflections (m) are magnitudes, positions (m), times (s),
+//! energies (J), forces (N), accelerations (m/s²).
+
+use crate::error::Result;
+use crate::scenario::{Case, Scenario};
+use friction::InteractionKind;
+use serde::Serialize;
+use track::RunResult;
+use track::vehicle::consist::VehicleSettings;
+
+/// An extreme of the run while the load was in the extremes window.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ExtremeSummary {
+    /// Deflection magnitude (m).
+    pub deflection: f64,
+    /// Node where it happened (m).
+    pub position: f64,
+    /// When (s).
+    pub time: f64,
+    /// Where the load (the first axle) was then (m).
+    pub load_position: f64,
+}
+
+/// One run, summarised. Deflections are positive magnitudes (m), relative to the self-weight state.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RunSummary {
+    /// The scenario's title.
+    pub title: String,
+    /// Load speed v (m/s).
+    pub speed: f64,
+    /// The scenario's single load F (N).
+    pub load: f64,
+    /// The train of axles that crossed (as forces, or carrying the vehicles).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub train: Option<crate::trains::TrainSummary>,
+    /// With a train: what the beam carries of its axles (`[load] carries`), by which the train's forces were scaled.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub axle_share: Option<AxleShareSummary>,
+    /// The infinite beam's critical speed v_cr (m/s); None without a foundation.
+    pub critical_speed: Option<f64>,
+    /// The foundation's damping ratio ζ = c_f / c_cr.
+    pub damping_ratio: f64,
+    /// Friction devices placed (after merging on shared nodes).
+    pub devices: usize,
+    /// Force of one device F_u (N).
+    pub device_force: f64,
+    /// Where the devices sit (m).
+    pub device_positions: Vec<f64>,
+    /// Distributed friction f_u (N/m).
+    pub distributed_friction: f64,
+    /// Largest downward deflection (m, magnitude), its node (m) and time (s).
+    pub max_downward_deflection: f64,
+    /// Node of the largest downward deflection (m).
+    pub max_downward_deflection_position: Option<f64>,
+    /// Time of the largest downward deflection (s).
+    pub max_downward_deflection_time: Option<f64>,
+    /// Largest upward deflection (m).
+    pub max_upward_deflection: f64,
+    /// Node of the largest upward deflection (m).
+    pub max_upward_deflection_position: Option<f64>,
+    /// Time of the largest upward deflection (s).
+    pub max_upward_deflection_time: Option<f64>,
+    /// Largest nodal acceleration, the step's mean (m/s²).
+    pub max_acceleration: f64,
+    /// Node of the largest acceleration (m).
+    pub max_acceleration_position: Option<f64>,
+    /// Time of the largest acceleration (s).
+    pub max_acceleration_time: Option<f64>,
+    /// Largest downward deflection of the same loads standing at every position (m).
+    pub static_max_downward_deflection: f64,
+    /// max downward deflection over its static value.
+    pub dynamic_amplification: f64,
+    /// The window of load positions [A, B] (m) of the window extremes.
+    pub extremes_window: (f64, f64),
+    /// The nodes [a, b] (m) the extremes are taken over; None: every node.
+    pub extremes_nodes: Option<(f64, f64)>,
+    /// Largest downward deflection while the load was in the window.
+    pub window_max_downward: Option<ExtremeSummary>,
+    /// Largest upward deflection while the load was in the window.
+    pub window_max_upward: Option<ExtremeSummary>,
+    /// W̄, the time mean of ∫|w| dx over the crossing (m²).
+    pub global_norm: f64,
+    /// Work of the loads (J).
+    pub load_work: f64,
+    /// Work of the friction forces (J, ≤ 0).
+    pub friction_work: f64,
+    /// Energy friction removed (J, ≥ 0).
+    pub friction_dissipation: f64,
+    /// Energy viscous damping removed (J).
+    pub viscous_dissipation: f64,
+    /// Friction plus viscous dissipation (J).
+    pub dissipated_energy: f64,
+    /// The θ-method's numerical dissipation (J; 0 at θ = ½).
+    pub numerical_dissipation: f64,
+    /// What the energy balance leaves over (J; round-off).
+    pub energy_residual: f64,
+    /// Time steps.
+    pub steps: usize,
+    /// The step h (s).
+    pub time_step: f64,
+    /// Friction sections.
+    pub sections: usize,
+    /// Mean solver iterations per step.
+    pub mean_iterations: f64,
+    /// Most solver iterations in a step.
+    pub max_iterations: usize,
+    /// Largest final law residual of a step (m/s).
+    pub max_residual: f64,
+    /// Mean sections re-solved per step.
+    pub mean_sections_solved: f64,
+    /// The solver the run used (`none` without interactions).
+    pub solver: String,
+    /// Steps solved by a fallback solver.
+    pub fallback_steps: usize,
+    /// The fallbacks, each with the steps it solved.
+    pub fallbacks: Vec<FallbackSummary>,
+    /// Wall time of the run (s).
+    pub wall_time: f64,
+    /// The vehicles' wheels and bodies, with vehicles.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub vehicles: Option<crate::vehicle_output::VehicleReport>,
+}
+
+/// What the beam carries of a train's axles.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct AxleShareSummary {
+    /// `one-rail` or `whole-axle`.
+    pub carries: &'static str,
+    /// The factor on the axle loads (½ or 1).
+    pub factor: f64,
+    /// In words.
+    #[serde(skip)]
+    pub meaning: &'static str,
+}
+
+/// Steps of the run solved by one fallback solver (the run's solver failed on them).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FallbackSummary {
+    /// The fallback solver.
+    pub solver: &'static str,
+    /// Steps it solved.
+    pub steps: usize,
+}
+
+impl RunSummary {
+    /// The summary of `result`, a run of `case` built from `scenario`, whose loop took `wall_time` (s): what ran,
+    /// the extremes, the static envelope of the same loads and the dynamic amplification over it, the energy
+    /// ledger, the solver's statistics and, with vehicles, theirs.
+    pub fn of(scenario: &Scenario, case: &Case, result: &RunResult, wall_time: f64) -> Result<Self> {
+        let e = &result.energy;
+        let s = &result.statistics;
+        let settings = &case.settings;
+        let device_positions: Vec<f64> = (0..case.interactions.len())
+            .filter(|&j| case.interactions.kinds()[j] == InteractionKind::Device)
+            .map(|j| case.interactions.positions()[j])
+            .collect();
+        let window = result.window.unwrap_or_default();
+        let x0 = settings.start_position();
+        let extreme = |x: &track::simulation::Extreme| {
+            x.happened().map(|x| ExtremeSummary {
+                deflection: x.magnitude,
+                position: x.position,
+                time: x.time,
+                load_position: x0 + settings.moving.speed * x.time,
+            })
+        };
+        let critical = crate::speeds::SpeedScale::of(scenario)?.critical_speed;
+        let statics = track::statics::static_envelope(
+            &case.model,
+            &settings.moving.load.train(),
+            settings.integration.load_advance,
+            settings.record.extremes_nodes,
+        )?;
+        let foundation = case.model.foundation();
+        Ok(Self {
+            title: scenario.title.clone(),
+            speed: settings.moving.speed,
+            load: scenario.load.force,
+            train: settings.moving.load.axles().map(crate::trains::TrainSummary::of),
+            axle_share: settings.moving.load.axles().filter(|t| t.name != "single").map(|_| {
+                let share = scenario.axle_share();
+                AxleShareSummary { carries: share.name(), factor: share.factor(), meaning: share.describe() }
+            }),
+            critical_speed: critical,
+            damping_ratio: foundation.damping_ratio(case.model.beam()),
+            devices: device_positions.len(),
+            device_force: scenario.friction.devices.as_ref().and_then(|d| d.force).unwrap_or(0.0),
+            device_positions,
+            distributed_friction: scenario.friction.distributed.as_ref().map_or(0.0, |d| d.force_per_length),
+            max_downward_deflection: result.max_downward.magnitude,
+            max_downward_deflection_position: result.max_downward.happened().map(|x| x.position),
+            max_downward_deflection_time: result.max_downward.happened().map(|x| x.time),
+            max_upward_deflection: result.max_upward.magnitude,
+            max_upward_deflection_position: result.max_upward.happened().map(|x| x.position),
+            max_upward_deflection_time: result.max_upward.happened().map(|x| x.time),
+            max_acceleration: result.max_acceleration.magnitude,
+            max_acceleration_position: result.max_acceleration.happened().map(|x| x.position),
+            max_acceleration_time: result.max_acceleration.happened().map(|x| x.time),
+            static_max_downward_deflection: statics.max_downward,
+            dynamic_amplification: if statics.max_downward > 0.0 {
+                result.max_downward.magnitude / statics.max_downward
+            } else {
+                0.0
+            },
+            extremes_window: window.load_range,
+            extremes_nodes: settings.record.extremes_nodes,
+            window_max_downward: extreme(&window.max_downward),
+            window_max_upward: extreme(&window.max_upward),
+            global_norm: result.global_norm,
+            load_work: e.load_work,
+            friction_work: e.friction_work,
+            // Positive, as `viscous_dissipation` and `dissipated_energy`: the energy friction removed (0 − W, not −W:
+            // no "-0" without friction).
+            friction_dissipation: 0.0 - e.friction_work,
+            viscous_dissipation: e.viscous_dissipation,
+            dissipated_energy: e.dissipated(),
+            numerical_dissipation: e.numerical_dissipation,
+            energy_residual: e.residual(),
+            steps: s.steps,
+            time_step: result.step,
+            sections: s.sections,
+            mean_iterations: s.mean_iterations,
+            max_iterations: s.max_iterations,
+            max_residual: s.max_residual,
+            mean_sections_solved: s.mean_sections_solved,
+            solver: s.solver_name().to_string(),
+            fallback_steps: s.fallback_steps(),
+            fallbacks: s
+                .fallbacks
+                .iter()
+                .map(|f| FallbackSummary { solver: f.solver.name(), steps: f.steps })
+                .collect(),
+            wall_time,
+            vehicles: result.vehicles.as_ref().map(|v| {
+                let contact = settings.moving.load.vehicles().map_or("", VehicleSettings::contact_name);
+                crate::vehicle_output::VehicleReport::of(v, contact)
+            }),
+        })
+    }
+}

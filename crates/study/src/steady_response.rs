@@ -1,0 +1,106 @@
+//! The closed-form steady state of the infinite beam on its viscoelastic foundation under a scenario's moving
+//! loads (docs/theory.md §8, §10): at each speed the largest downward and upward deflections and where they sit in
+//! the moving frame, and their amplification over the static response of the same loads.
+
+use crate::error::{Result, invalid};
+use crate::scenario::Scenario;
+use fem_beam::reference::{InfiniteBeam, SteadyExtremes};
+use fem_beam::{Foundation, Train};
+use serde::Serialize;
+
+/// The steady state at one speed.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SteadyPoint {
+    /// Load speed v (m/s).
+    pub speed: f64,
+    /// Largest downward deflection (m, magnitude).
+    pub max_downward_deflection: f64,
+    /// Where, in the moving frame s (m; s = x − vt for one load, x − x_head for a train).
+    pub max_downward_position: f64,
+    /// Largest upward deflection (m).
+    pub max_upward_deflection: f64,
+    /// Where, in the moving frame (m).
+    pub max_upward_position: f64,
+    /// Downward deflection over the static one w₀.
+    pub amplification_downward: f64,
+    /// Upward deflection over w₀.
+    pub amplification_upward: f64,
+}
+
+/// The steady response over speeds, with what it was computed for.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SteadyResponse {
+    /// The foundation used (its damping from the given ratio, if one was given).
+    pub foundation: Foundation,
+    /// The infinite beam of the scenario's beam on that foundation.
+    pub beam: InfiniteBeam,
+    /// The train, as the beam carries it; None for the single load.
+    pub train: Option<Train>,
+    /// The single load F (N), used without a train.
+    pub load: f64,
+    /// The static response w₀ of the same loads (m): the largest downward deflection at v = 0.
+    pub static_deflection: f64,
+    /// One point per speed, in the order given.
+    pub points: Vec<SteadyPoint>,
+}
+
+impl SteadyResponse {
+    /// The steady state of `scenario`'s loads at `speeds` (m/s): its single load, or `train` (as given, or the
+    /// scenario's, scaled to what the beam carries), on its foundation with damping ratio `damping_ratio` if given.
+    /// Vehicles and load patches are refused: the closed form takes moving forces on axles.
+    pub fn of(scenario: &Scenario, damping_ratio: Option<f64>, train: Option<Train>, speeds: &[f64]) -> Result<Self> {
+        let case = scenario.reference_case()?;
+        let foundation = match damping_ratio {
+            Some(ratio) => case.foundation.with_damping_ratio(ratio, &case.beam)?,
+            None => case.foundation,
+        };
+        let beam = InfiniteBeam::new(&case.beam, &foundation)?;
+        if scenario.vehicle.is_some() {
+            return Err(invalid(
+                "vehicle",
+                "given",
+                "the closed-form steady state takes moving forces, not vehicles: drop [vehicle] (the train's axles, \
+                 or the single load, are used) or use `frictrack run`",
+            ));
+        }
+        let train = match train {
+            Some(t) => Some(t),
+            None => crate::trains::resolve(&scenario.load)?,
+        }
+        .map(|t| scenario.on_the_beam(t));
+        if let Some(t) = train.as_ref().filter(|t| !t.patches.is_empty()) {
+            return Err(invalid(
+                "load.patches",
+                t.patches.len(),
+                "the closed-form steady state takes axles only: give the train as axles, or use `frictrack run`",
+            ));
+        }
+        let extremes = |v: f64| -> Result<SteadyExtremes> {
+            Ok(match &train {
+                Some(t) => beam.train_steady_state(v, t)?.extremes(),
+                None => beam.steady_state(v, case.load)?.extremes(),
+            })
+        };
+        // The static response of the same load (v = 0): a train's superposed static shapes.
+        let w0 = match &train {
+            Some(_) => extremes(0.0)?.max_downward.magnitude,
+            None => beam.static_deflection(case.load),
+        };
+        let points = speeds
+            .iter()
+            .map(|&v| {
+                let e = extremes(v)?;
+                Ok(SteadyPoint {
+                    speed: v,
+                    max_downward_deflection: e.max_downward.magnitude,
+                    max_downward_position: e.max_downward.position,
+                    max_upward_deflection: e.max_upward.magnitude,
+                    max_upward_position: e.max_upward.position,
+                    amplification_downward: e.max_downward.magnitude / w0,
+                    amplification_upward: e.max_upward.magnitude / w0,
+                })
+            })
+            .collect::<Result<Vec<_>>>()?;
+        Ok(Self { foundation, beam, train, load: case.load, static_deflection: w0, points })
+    }
+}
