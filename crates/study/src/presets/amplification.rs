@@ -57,12 +57,15 @@ pub(super) fn study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
     let mut csv = String::from("force_per_length,speed,tau,phi_w,phi_m\n");
     let mut items = Vec::new();
     let mut lines = Vec::new();
+    // (f_u, v, max φ_w, max φ_M) of each finished run.
+    let mut maxima = Vec::new();
     for (f, v, samples) in &results {
         for a in samples {
             let _ = writeln!(csv, "{}", row(&[*f, *v, a.tau, a.deflection, a.moment]));
         }
         let max_w = samples.iter().fold(f64::NEG_INFINITY, |m, a| m.max(a.deflection));
         let max_m = samples.iter().fold(f64::NEG_INFINITY, |m, a| m.max(a.moment));
+        maxima.push((*f, *v, max_w, max_m));
         items.push(json!({ "force_per_length": f, "speed": v, "max_phi_w": max_w, "max_phi_m": max_m }));
         lines.push(format!("f_u = {:.0} kN/m, v = {v} m/s: max φ_w {max_w:.3}, max φ_M {max_m:.3}", f / 1e3));
     }
@@ -112,5 +115,17 @@ pub(super) fn study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
             plots.push(plot);
         }
     }
-    Ok(StudyData { csv, summary: json!({ "curves": items }), lines, plots, failures, ..blank(results.len()) })
+    let headline = headline(&maxima);
+    Ok(StudyData { csv, summary: json!({ "curves": items }), lines, headline, plots, failures, ..blank(results.len()) })
+}
+
+/// The amplification at the fastest speed run, for both friction levels, from `maxima` (f_u, v, max φ_w, max φ_M).
+fn headline(maxima: &[(f64, f64, f64, f64)]) -> Vec<String> {
+    let top = maxima.iter().map(|m| m.1).fold(0.0, f64::max);
+    let at = |f: f64| maxima.iter().find(|m| m.0 == f && m.1 == top).map_or((f64::NAN, f64::NAN), |m| (m.2, m.3));
+    let ((w1, m1), (w2, m2)) = (at(1e3), at(2e3));
+    vec![
+        "Mid-span amplification grows with speed towards the critical speed.".into(),
+        format!("At {top} m/s: max φ_w {w1:.2} and φ_M {m1:.2} with f_u = 1 kN/m, {w2:.2} and {m2:.2} with 2 kN/m."),
+    ]
 }

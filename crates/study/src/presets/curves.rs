@@ -7,7 +7,7 @@ use crate::figures::{DeflectionCurve, deflection_figure, quantity_figure};
 use crate::number::{row, row_with_gaps};
 use crate::plot::PlotSpec;
 use crate::scenario::Scenario;
-use crate::sweep::{CriticalSpeed, Runner, SweepPoint, SweepRow, critical_speed, finished};
+use crate::sweep::{CriticalSpeed, PeakLocation, Runner, SweepPoint, SweepRow, critical_speed, finished};
 use serde_json::{Value, json};
 use std::fmt::Write as _;
 
@@ -72,6 +72,49 @@ fn describe(labels: &[(String, f64)]) -> String {
 }
 
 impl Curves {
+    /// Number of curves.
+    pub(super) fn len(&self) -> usize {
+        self.labels.len()
+    }
+
+    /// The first curve whose label `name` is `value`.
+    pub(super) fn find(&self, name: &str, value: f64) -> Option<usize> {
+        (0..self.labels.len()).find(|&c| self.label(Some(c), name) == value)
+    }
+
+    /// The value of label `name` of curve `c` (NaN for no curve, or a curve without that label).
+    pub(super) fn label(&self, c: Option<usize>, name: &str) -> f64 {
+        let labels = c.and_then(|c| self.labels.get(c));
+        labels.and_then(|l| l.iter().find(|(n, _)| n == name)).map_or(f64::NAN, |(_, v)| *v)
+    }
+
+    /// The refined peak max downward deflection of curve `c` (m); NaN for no curve or no critical speed.
+    pub(super) fn peak(&self, c: Option<usize>) -> f64 {
+        c.and_then(|c| self.critical[c].as_ref()).map_or(f64::NAN, |k| k.max_downward_deflection)
+    }
+
+    /// The curve of the lowest refined peak among `members`, the first of equals.
+    pub(super) fn lowest_peak(&self, members: impl Iterator<Item = usize>) -> Option<usize> {
+        members.min_by(|&a, &b| self.peak(Some(a)).total_cmp(&self.peak(Some(b))))
+    }
+
+    /// Curve `c`'s critical speed in words, for the report's headline: a bound at an end of the range says so.
+    pub(super) fn critical_text(&self, c: Option<usize>) -> String {
+        let Some(k) = c.and_then(|c| self.critical[c].as_ref()) else {
+            return "unknown (runs of that curve failed: see the study's failures)".to_string();
+        };
+        let (speed, peak) = (k.speed, 1e3 * k.max_downward_deflection);
+        match k.location {
+            PeakLocation::UpperEnd => {
+                format!("at or above {speed:.1} m/s, the top of the range (peak there {peak:.0} mm)")
+            }
+            PeakLocation::LowerEnd => {
+                format!("at or below {speed:.1} m/s, the bottom of the range (peak there {peak:.0} mm)")
+            }
+            PeakLocation::Interior => format!("{speed:.1} m/s with a peak of {peak:.0} mm"),
+        }
+    }
+
     /// Max downward and upward deflection magnitudes vs speed for the curves `members`, coloured by `color`, with
     /// each interior critical speed marked.
     pub(super) fn deflection_plot(
@@ -180,11 +223,14 @@ impl Curves {
     }
 }
 
+/// A study of curves: sweep `scenarios` over `speeds`, draw them with `plots`, and say what they show with
+/// `headline`.
 pub(super) fn curves_study(
     scenarios: Vec<(Vec<(String, f64)>, Scenario)>,
     speeds: &[f64],
     runner: &Runner,
     plots: &dyn Fn(&Curves) -> Vec<PlotSpec>,
+    headline: fn(&Curves) -> Vec<String>,
 ) -> Result<StudyData> {
     let curves = sweep_curves(scenarios, speeds, runner)?;
     let (summary, lines) = curves.summary();
@@ -192,6 +238,7 @@ pub(super) fn curves_study(
         csv: curves.csv(),
         summary,
         lines,
+        headline: headline(&curves),
         plots: plots(&curves),
         mean_iterations: mean_iterations(curves.points.iter().flatten()),
         failures: curves.failures,

@@ -81,6 +81,16 @@ pub(super) fn study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
         }
         _ => (vec![format!("no comparison: the {} run failed (see the failures)", failures[0].case)], None),
     };
+    let nan = f64::NAN;
+    let (gap, peak) = summary.unwrap_or((nan, nan));
+    let headline = vec![
+        format!(
+            "With equal capacity, 199 devices of 1 kN and f_u = 0.995 kN/m give mid-span histories within {:.2} mm of each other on a {:.1} mm peak.",
+            1e3 * gap,
+            1e3 * peak
+        ),
+        format!("They dissipate {:.0} J and {:.0} J.", dissipated(0).unwrap_or(nan), dissipated(1).unwrap_or(nan)),
+    ];
     let summary = json!({
         "speed": speed,
         "max_history_gap": summary.map(|s| s.0),
@@ -135,5 +145,5 @@ pub(super) fn study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
             plot
         },
     ];
-    Ok(StudyData { csv, summary, lines, plots, failures, ..blank(runs.len()) })
+    Ok(StudyData { csv, summary, lines, headline, plots, failures, ..blank(runs.len()) })
 }

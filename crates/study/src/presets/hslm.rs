@@ -471,6 +471,7 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
         csv: results.csv(),
         summary,
         lines,
+        headline: results.headline(),
         plots: results.figures(),
         mean_iterations: mean_iterations(results.curves.iter().flat_map(|c| &c.points)),
         failures,

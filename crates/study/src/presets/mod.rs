@@ -3,8 +3,8 @@
 //! human-readable summary lines.
 //! All runs of a study share one rayon pool; results do not depend on the thread count.
 //!
-//! One file per study; `curves` holds the families of speed sweeps that three of them share, `headline` the
-//! two sentences of each study's report section.
+//! One file per study, each with the two sentences of its report section (its headline) written from its own typed
+//! results; `curves` holds the families of speed sweeps that three of them share.
 
 mod amplification;
 mod curves;
@@ -12,11 +12,12 @@ mod discrete_speed;
 mod discrete_vs_distributed;
 mod distributed_speed;
 mod equal_cost;
-mod headline;
 mod hslm;
 mod hslm_figures;
+mod hslm_headline;
 mod hslm_resonances;
 mod optimal_force;
+mod table;
 mod vehicle_speed;
 
 use crate::error::{Result, StudyError, invalid};
@@ -26,6 +27,7 @@ use crate::speeds::SpeedScale;
 use crate::sweep::{Runner, SweepPoint, SweepRow};
 use serde::Serialize;
 use serde_json::Value;
+use table::Sampling;
 
 /// The studies of docs/theory.md §7.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -120,16 +122,7 @@ impl Preset {
 
     /// Name on the command line and of the output files.
     pub fn name(self) -> &'static str {
-        match self {
-            Preset::DiscreteSpeed => "discrete-speed",
-            Preset::EqualCost => "equal-cost",
-            Preset::OptimalForce => "optimal-force",
-            Preset::DistributedSpeed => "distributed-speed",
-            Preset::Amplification => "amplification",
-            Preset::DiscreteVsDistributed => "discrete-vs-distributed",
-            Preset::Hslm => "hslm",
-            Preset::VehicleSpeed => "vehicle-speed",
-        }
+        self.entry().name
     }
 
     /// The preset called `name`.
@@ -143,53 +136,14 @@ impl Preset {
     /// What the study sets itself on top of the base scenario (the friction set-ups it compares, the speeds of
     /// fixed-speed studies, the recorded section).
     pub fn sets(self) -> &'static [&'static str] {
-        match self {
-            Preset::DiscreteSpeed => &["friction: none, and N ∈ {3, 7, 15, 31} devices of F_u ∈ {10, 50, 100} kN"],
-            Preset::EqualCost => &["friction: N·F_u ∈ {3100, 1550, 310} kN shared by N ∈ {31, 15, 7, 3} devices"],
-            Preset::OptimalForce => &[
-                "friction: N ∈ {3, 7, 15, 31} devices, F_u scanned over 1 kN–10 MN",
-                "load.speed: the critical speed v_cr rounded (206 m/s for the reference case)",
-            ],
-            Preset::DistributedSpeed => &["friction: distributed f_u ∈ {0, 1, 2, 5, 10} kN/m, no devices"],
-            Preset::Amplification => &[
-                "friction: distributed f_u ∈ {1, 2} kN/m, no devices",
-                "load.speed: ¼, ½, ¾ and 1 × v_cr rounded (50, 100, 150, 200 m/s for the reference case)",
-                "output.sections: mid-span",
-            ],
-            Preset::DiscreteVsDistributed => &[
-                "friction: 199 devices of 1 kN, and distributed 0.995 kN/m",
-                "load.speed: ¾ v_cr rounded (150 m/s for the reference case)",
-                "output.sections: mid-span",
-            ],
-            Preset::Hslm => &[
-                "friction: none, and the scenario's [friction] (if it has none: devices of 50 kN, 31 per 200 m)",
-                "load: HSLM-A1 … A10 in turn (EN 1991-2 §6.4.6.1.1)",
-                "speeds: 140–420 km/h every 20 km/h (coarse) or 2 km/h (paper), unless the scenario has a [sweep]",
-                "integration.load_advance: on a span, at most what resolves max(30 Hz, 1.5 f₁, f₃) with 20 steps per \
-                 period at the lowest speed",
-                "foundation.absorbing_zones and output.extremes_nodes: on a track, unless the scenario gives them, \
-                 zones of min(40 m, L/5) at the ends and the extremes over the middle third",
-            ],
-            Preset::VehicleSpeed => &[
-                "load: a moving force F, a moving mass F/g and the default quarter car scaled to F, in turn",
-                "friction: none, and the scenario's [friction] (if it has none: devices of 50 kN, 31 per 200 m)",
-                "rail: smooth, and the scenario's [rail] (if it has none: German low irregularity, 1–80 m, seed 1)",
-                "integration.load_advance: at most what resolves the wheel–rail contact mode at the lowest speed",
-                "integration.static_start: every load starts at rest in its static equilibrium at min(40 m, L/5), \
-                 unless the scenario gives a start",
-                "foundation.absorbing_zones and output.extremes_nodes: on a track, unless the scenario gives them, \
-                 zones of min(40 m, L/5) at the ends and the extremes over the middle third",
-            ],
-        }
+        self.entry().sets
     }
 
     /// The parts of `base` that this study replaces with its own (see [`Preset::sets`]), one sentence each; empty
     /// when the base scenario leaves them at their defaults.
     pub fn overrides(self, base: &Scenario) -> Vec<String> {
-        match self {
-            Preset::Hslm => return hslm::overrides(base),
-            Preset::VehicleSpeed => return vehicle_speed::overrides(base),
-            _ => {}
+        if let Some(overrides) = self.entry().overrides {
+            return overrides(base);
         }
         let mut notes = Vec::new();
         let f = &base.friction;
@@ -207,33 +161,21 @@ impl Preset {
 
     /// Whether the study sweeps the load speed (the others run at fixed speeds).
     pub fn sweeps_speed(self) -> bool {
-        matches!(
-            self,
-            Preset::DiscreteSpeed | Preset::EqualCost | Preset::DistributedSpeed | Preset::Hslm | Preset::VehicleSpeed
-        )
+        self.entry().sampling != Sampling::Fixed
     }
 
     /// The speeds (m/s) the study sweeps on `base`, None for the studies at fixed speeds.
     pub fn speeds(self, resolution: Resolution, base: &Scenario) -> Result<Option<Vec<f64>>> {
-        Ok(match self {
-            Preset::Hslm => Some(resolution.train_speeds(base)),
-            _ if self.sweeps_speed() => Some(resolution.speeds(base)?),
-            _ => None,
+        Ok(match self.entry().sampling {
+            Sampling::TrainSpeeds => Some(resolution.train_speeds(base)),
+            Sampling::Speeds => Some(resolution.speeds(base)?),
+            Sampling::Fixed => None,
         })
     }
 
     /// A one-line title.
     pub fn title(self) -> &'static str {
-        match self {
-            Preset::DiscreteSpeed => "Critical speed with discrete friction devices",
-            Preset::EqualCost => "Equal-cost device solutions (N·F_u constant)",
-            Preset::OptimalForce => "Optimal device force at 206 m/s",
-            Preset::DistributedSpeed => "Critical speed with distributed friction",
-            Preset::Amplification => "Dynamic amplification at mid-span",
-            Preset::DiscreteVsDistributed => "199 devices × 1 kN against 0.995 kN/m distributed friction",
-            Preset::Hslm => "Eurocode HSLM-A1 … A10: deflection and deck acceleration vs speed",
-            Preset::VehicleSpeed => "Vehicles against the moving force: deflection, wheel force, body acceleration",
-        }
+        self.entry().title
     }
 }
 
@@ -324,27 +266,10 @@ fn unit_of(column: &str) -> &'static str {
 
 /// Run `preset` on top of `base` (normally the reference case).
 pub fn run_preset(preset: Preset, resolution: Resolution, base: &Scenario, runner: &Runner) -> Result<StudyData> {
-    let data = match preset {
-        Preset::DiscreteSpeed => discrete_speed::study(resolution, base, runner)?,
-        Preset::EqualCost => equal_cost::study(resolution, base, runner)?,
-        Preset::OptimalForce => optimal_force::study(resolution, base, runner)?,
-        Preset::DistributedSpeed => distributed_speed::study(resolution, base, runner)?,
-        Preset::Amplification => amplification::study(base, runner)?,
-        Preset::DiscreteVsDistributed => discrete_vs_distributed::study(base, runner)?,
-        Preset::Hslm => hslm::study(resolution, base, runner)?,
-        Preset::VehicleSpeed => vehicle_speed::study(resolution, base, runner)?,
-    };
-    let headline = headline::headline(preset, &data.summary);
+    let data = (preset.entry().run)(resolution, base, runner)?;
     let header = data.csv.lines().next().unwrap_or_default();
     let columns = header.split(',').map(|c| (c.to_string(), unit_of(c))).collect();
-    Ok(StudyData {
-        columns,
-        name: preset.name(),
-        title: preset.title(),
-        resolution: resolution.name(),
-        headline,
-        ..data
-    })
+    Ok(StudyData { columns, name: preset.name(), title: preset.title(), resolution: resolution.name(), ..data })
 }
 
 /// On a track, what stands for an infinite one under long loads (`what`, e.g. "the trains"): absorbing zones of

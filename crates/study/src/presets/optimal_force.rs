@@ -27,6 +27,8 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
     let mut csv =
         String::from("devices,device_force,speed,max_downward_deflection,max_upward_deflection,dissipated_energy\n");
     let mut items = Vec::new();
+    // (N, the refined optimum (F_u, max downward deflection) if any) per curve, for the headline.
+    let mut optima = Vec::new();
     let mut lines = Vec::new();
     let mut failures = Vec::new();
     let mut finished_points = Vec::new();
@@ -65,6 +67,7 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
                 None
             }
         };
+        optima.push((n, optimum.as_ref().map(|o| (o.force, o.max_downward_deflection))));
         items.push(json!({
             "devices": n,
             "optimal_device_force": optimum.as_ref().map(|o| o.force),
@@ -95,6 +98,7 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
     Ok(StudyData {
         csv,
         summary: json!({ "speed": speed, "optima": items }),
+        headline: headline(speed, &optima),
         lines,
         plots: vec![plot],
         mean_iterations: mean_iterations(finished_points.iter()),
@@ -112,4 +116,19 @@ fn optimum(scenario: &Scenario, speed: f64, curve: &[(f64, SweepPoint)], runner:
     let forces: Vec<f64> = curve.iter().map(|(f, _)| *f).collect();
     let values: Vec<f64> = curve.iter().map(|(_, p)| p.max_downward_deflection).collect();
     refine_from_scan(scenario, speed, &forces, &values, 0.02, runner)
+}
+
+/// The optimal device force of each device count at the study's speed.
+fn headline(speed: f64, optima: &[(usize, Option<(f64, f64)>)]) -> Vec<String> {
+    let text: Vec<String> = optima
+        .iter()
+        .map(|(n, optimum)| {
+            let (force, deflection) = optimum.unwrap_or((f64::NAN, f64::NAN));
+            format!("N = {n}: {:.0} kN ({:.0} mm)", force / 1e3, 1e3 * deflection)
+        })
+        .collect();
+    vec![
+        format!("At {speed} m/s the max downward deflection is smallest for an intermediate device force:"),
+        format!("{}.", text.join("; ")),
+    ]
 }

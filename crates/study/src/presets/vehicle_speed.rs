@@ -202,6 +202,7 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
         csv: csv(&curves, force),
         summary,
         lines,
+        headline: headline(&curves, force),
         plots: figures(&curves, force, &friction),
         mean_iterations: mean_iterations(curves.iter().flat_map(|c| &c.points)),
         failures,
@@ -236,45 +237,101 @@ fn csv(curves: &[Curve], force: f64) -> String {
     out
 }
 
+/// What a curve shows: its peak deflection, its smallest wheel force, where a wheel first left the rail and its
+/// largest body acceleration, each with its speed (m/s).
+struct Findings {
+    /// (speed, max downward deflection (m)) of the largest deflection.
+    peak: (f64, f64),
+    /// (speed, wheel force (N)) of the smallest wheel force.
+    weakest: (f64, f64),
+    /// The first speed at which a wheel lost contact.
+    lifts: Option<f64>,
+    /// (speed, body acceleration (m/s²)) of the largest, for the quarter car.
+    body: Option<(f64, f64)>,
+}
+
+impl Curve {
+    /// The findings of the curve; None when none of its runs finished.
+    fn findings(&self, force: f64) -> Option<Findings> {
+        let peak = self.points.iter().max_by(|a, b| a.max_downward_deflection.total_cmp(&b.max_downward_deflection))?;
+        let weakest =
+            self.points.iter().min_by(|a, b| self.min_force(a, force).total_cmp(&self.min_force(b, force)))?;
+        let lifts = self.points.iter().find(|p| p.vehicles.is_some_and(|v| v.losses_of_contact > 0)).map(|p| p.speed);
+        let body = self.points.iter().filter_map(|p| self.body_acceleration(p).map(|a| (p.speed, a)));
+        Some(Findings {
+            peak: (peak.speed, peak.max_downward_deflection),
+            weakest: (weakest.speed, self.min_force(weakest, force)),
+            lifts,
+            body: body.max_by(|a, b| a.1.total_cmp(&b.1)),
+        })
+    }
+}
+
 /// Per curve: the peak deflection and its speed, the smallest wheel force and its speed, the first speed where a
 /// wheel lost contact, the largest body acceleration and its speed.
 fn summary(curves: &[Curve], force: f64, friction: &str, advance: f64) -> (Value, Vec<String>) {
     let mut items = Vec::new();
     let mut lines = Vec::new();
     for c in curves {
-        let peak = c.points.iter().max_by(|a, b| a.max_downward_deflection.total_cmp(&b.max_downward_deflection));
-        let weakest = c.points.iter().min_by(|a, b| c.min_force(a, force).total_cmp(&c.min_force(b, force)));
-        let lifts = c.points.iter().find(|p| p.vehicles.is_some_and(|v| v.losses_of_contact > 0)).map(|p| p.speed);
-        let body = c.points.iter().filter_map(|p| c.body_acceleration(p).map(|a| (p.speed, a)));
-        let body = body.max_by(|a, b| a.1.total_cmp(&b.1));
-        let (Some(peak), Some(weakest)) = (peak, weakest) else { continue };
+        let Some(f) = c.findings(force) else { continue };
         items.push(json!({
             "model": MODELS[c.model],
             "friction": FRICTION[c.friction],
             "rail": RAILS[c.rail],
-            "peak_max_downward_deflection": peak.max_downward_deflection,
-            "peak_speed": peak.speed,
-            "min_wheel_force": c.min_force(weakest, force),
-            "min_wheel_force_speed": weakest.speed,
-            "first_loss_of_contact_speed": lifts,
-            "max_body_acceleration": body.map(|b| b.1),
-            "max_body_acceleration_speed": body.map(|b| b.0),
+            "peak_max_downward_deflection": f.peak.1,
+            "peak_speed": f.peak.0,
+            "min_wheel_force": f.weakest.1,
+            "min_wheel_force_speed": f.weakest.0,
+            "first_loss_of_contact_speed": f.lifts,
+            "max_body_acceleration": f.body.map(|b| b.1),
+            "max_body_acceleration_speed": f.body.map(|b| b.0),
         }));
         let lift =
-            lifts.map_or("never leaves the rail".to_string(), |v| format!("first leaves the rail at {v:.0} m/s"));
-        let body = body.map_or(String::new(), |(v, a)| format!(", body up to {a:.2} m/s² (at {v:.0} m/s)"));
+            f.lifts.map_or("never leaves the rail".to_string(), |v| format!("first leaves the rail at {v:.0} m/s"));
+        let body = f.body.map_or(String::new(), |(v, a)| format!(", body up to {a:.2} m/s² (at {v:.0} m/s)"));
         lines.push(format!(
             "{} rail, {}: peak deflection {:.1} mm at {:.0} m/s; wheel force down to {:.1} kN (at {:.0} m/s), {lift}{body}",
             RAILS[c.rail],
             c.label(friction),
-            peak.max_downward_deflection * 1e3,
-            peak.speed,
-            c.min_force(weakest, force) / 1e3,
-            weakest.speed
+            f.peak.1 * 1e3,
+            f.peak.0,
+            f.weakest.1 / 1e3,
+            f.weakest.0
         ));
     }
     let summary = json!({ "force": force, "friction_setup": friction, "load_advance": advance, "curves": items });
     (summary, lines)
+}
+
+/// The peaks of the three loads on the smooth rail without friction, and the quarter car's wheel and body on the
+/// irregular rail.
+fn headline(curves: &[Curve], force: f64) -> Vec<String> {
+    let pick = |model: usize, rail: usize| {
+        curves.iter().find(|c| c.model == model && c.friction == 0 && c.rail == rail).and_then(|c| c.findings(force))
+    };
+    let peak = |f: &Option<Findings>| {
+        let (speed, w) = f.as_ref().map_or((f64::NAN, f64::NAN), |f| f.peak);
+        format!("{:.1} mm at {:.0} m/s", 1e3 * w, speed)
+    };
+    let rough = pick(2, 1);
+    let lift = match rough.as_ref().and_then(|f| f.lifts) {
+        Some(speed) => format!("leaves the rail from {speed:.0} m/s on"),
+        None => {
+            let weakest = rough.as_ref().map_or(f64::NAN, |f| f.weakest.1);
+            format!("keeps at least {:.1} kN on the rail", weakest / 1e3)
+        }
+    };
+    let body = rough.as_ref().and_then(|f| f.body).map_or(f64::NAN, |b| b.1);
+    vec![
+        format!(
+            "On the smooth rail without friction the peak rail deflection is {} under the moving force, {} under the \
+             moving mass and {} under the quarter car.",
+            peak(&pick(0, 0)),
+            peak(&pick(1, 0)),
+            peak(&pick(2, 0))
+        ),
+        format!("On the irregular rail the quarter car's wheel {lift}, its body reaching {body:.2} m/s²."),
+    ]
 }
 
 /// A quantity of a curve at a point, None where the curve has none.

@@ -1,0 +1,163 @@
+//! The table of study presets: for each, its name, title, what it sets, how it samples speeds, how it runs and
+//! what of the base scenario it replaces — every fact of a preset in one row, in the order of [`Preset::ALL`].
+
+use super::{
+    Preset, Resolution, StudyData, amplification, discrete_speed, discrete_vs_distributed, distributed_speed,
+    equal_cost, hslm, optimal_force, vehicle_speed,
+};
+use crate::error::Result;
+use crate::scenario::Scenario;
+use crate::sweep::Runner;
+
+/// How a study samples the load speed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Sampling {
+    /// Over the case's speed range ([`Resolution::speeds`]).
+    Speeds,
+    /// Over the train speeds of EN 1991-2 ([`Resolution::train_speeds`]).
+    TrainSpeeds,
+    /// At speeds of its own, fixed fractions of v_cr.
+    Fixed,
+}
+
+/// One row of the table.
+pub(super) struct PresetEntry {
+    /// Name on the command line and of the output files.
+    pub(super) name: &'static str,
+    /// A one-line title.
+    pub(super) title: &'static str,
+    /// What the study sets itself on top of the base scenario.
+    pub(super) sets: &'static [&'static str],
+    /// How it samples speeds.
+    pub(super) sampling: Sampling,
+    /// The study.
+    pub(super) run: fn(Resolution, &Scenario, &Runner) -> Result<StudyData>,
+    /// The parts of the base scenario it replaces, when it says so itself (else the common rule of
+    /// [`Preset::overrides`]).
+    pub(super) overrides: Option<fn(&Scenario) -> Vec<String>>,
+}
+
+/// The presets, in the order of [`Preset::ALL`] (a test checks it).
+pub(super) const TABLE: [PresetEntry; 8] = [
+    // 1. Preset::DiscreteSpeed
+    PresetEntry {
+        name: "discrete-speed",
+        title: "Critical speed with discrete friction devices",
+        sets: &["friction: none, and N ∈ {3, 7, 15, 31} devices of F_u ∈ {10, 50, 100} kN"],
+        sampling: Sampling::Speeds,
+        run: discrete_speed::study,
+        overrides: None,
+    },
+    // 2. Preset::EqualCost
+    PresetEntry {
+        name: "equal-cost",
+        title: "Equal-cost device solutions (N·F_u constant)",
+        sets: &["friction: N·F_u ∈ {3100, 1550, 310} kN shared by N ∈ {31, 15, 7, 3} devices"],
+        sampling: Sampling::Speeds,
+        run: equal_cost::study,
+        overrides: None,
+    },
+    // 3. Preset::OptimalForce
+    PresetEntry {
+        name: "optimal-force",
+        title: "Optimal device force at 206 m/s",
+        sets: &[
+            "friction: N ∈ {3, 7, 15, 31} devices, F_u scanned over 1 kN–10 MN",
+            "load.speed: the critical speed v_cr rounded (206 m/s for the reference case)",
+        ],
+        sampling: Sampling::Fixed,
+        run: optimal_force::study,
+        overrides: None,
+    },
+    // 4. Preset::DistributedSpeed
+    PresetEntry {
+        name: "distributed-speed",
+        title: "Critical speed with distributed friction",
+        sets: &["friction: distributed f_u ∈ {0, 1, 2, 5, 10} kN/m, no devices"],
+        sampling: Sampling::Speeds,
+        run: distributed_speed::study,
+        overrides: None,
+    },
+    // 5. Preset::Amplification
+    PresetEntry {
+        name: "amplification",
+        title: "Dynamic amplification at mid-span",
+        sets: &[
+            "friction: distributed f_u ∈ {1, 2} kN/m, no devices",
+            "load.speed: ¼, ½, ¾ and 1 × v_cr rounded (50, 100, 150, 200 m/s for the reference case)",
+            "output.sections: mid-span",
+        ],
+        sampling: Sampling::Fixed,
+        run: |_, base, runner| amplification::study(base, runner),
+        overrides: None,
+    },
+    // 6. Preset::DiscreteVsDistributed
+    PresetEntry {
+        name: "discrete-vs-distributed",
+        title: "199 devices × 1 kN against 0.995 kN/m distributed friction",
+        sets: &[
+            "friction: 199 devices of 1 kN, and distributed 0.995 kN/m",
+            "load.speed: ¾ v_cr rounded (150 m/s for the reference case)",
+            "output.sections: mid-span",
+        ],
+        sampling: Sampling::Fixed,
+        run: |_, base, runner| discrete_vs_distributed::study(base, runner),
+        overrides: None,
+    },
+    // 7. Preset::Hslm
+    PresetEntry {
+        name: "hslm",
+        title: "Eurocode HSLM-A1 … A10: deflection and deck acceleration vs speed",
+        sets: &[
+            "friction: none, and the scenario's [friction] (if it has none: devices of 50 kN, 31 per 200 m)",
+            "load: HSLM-A1 … A10 in turn (EN 1991-2 §6.4.6.1.1)",
+            "speeds: 140–420 km/h every 20 km/h (coarse) or 2 km/h (paper), unless the scenario has a [sweep]",
+            "integration.load_advance: on a span, at most what resolves max(30 Hz, 1.5 f₁, f₃) with 20 steps per \
+                     period at the lowest speed",
+            "foundation.absorbing_zones and output.extremes_nodes: on a track, unless the scenario gives them, \
+                     zones of min(40 m, L/5) at the ends and the extremes over the middle third",
+        ],
+        sampling: Sampling::TrainSpeeds,
+        run: hslm::study,
+        overrides: Some(hslm::overrides),
+    },
+    // 8. Preset::VehicleSpeed
+    PresetEntry {
+        name: "vehicle-speed",
+        title: "Vehicles against the moving force: deflection, wheel force, body acceleration",
+        sets: &[
+            "load: a moving force F, a moving mass F/g and the default quarter car scaled to F, in turn",
+            "friction: none, and the scenario's [friction] (if it has none: devices of 50 kN, 31 per 200 m)",
+            "rail: smooth, and the scenario's [rail] (if it has none: German low irregularity, 1–80 m, seed 1)",
+            "integration.load_advance: at most what resolves the wheel–rail contact mode at the lowest speed",
+            "integration.static_start: every load starts at rest in its static equilibrium at min(40 m, L/5), \
+                     unless the scenario gives a start",
+            "foundation.absorbing_zones and output.extremes_nodes: on a track, unless the scenario gives them, \
+                     zones of min(40 m, L/5) at the ends and the extremes over the middle third",
+        ],
+        sampling: Sampling::Speeds,
+        run: vehicle_speed::study,
+        overrides: Some(vehicle_speed::overrides),
+    },
+];
+
+impl Preset {
+    /// This preset's row of the table.
+    pub(super) fn entry(self) -> &'static PresetEntry {
+        &TABLE[self as usize]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Preset, TABLE};
+
+    /// Row i of the table is the i-th preset: its name is the one the command line parses back to it.
+    #[test]
+    fn the_table_is_in_the_order_of_the_presets() {
+        for (i, preset) in Preset::ALL.into_iter().enumerate() {
+            assert_eq!(preset as usize, i);
+            assert_eq!(Preset::from_name(TABLE[i].name).unwrap(), preset);
+        }
+    }
+}
