@@ -69,6 +69,29 @@ pub(super) fn study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
         items.push(json!({ "force_per_length": f, "speed": v, "max_phi_w": max_w, "max_phi_m": max_m }));
         lines.push(format!("f_u = {:.0} kN/m, v = {v} m/s: max φ_w {max_w:.3}, max φ_M {max_m:.3}", f / 1e3));
     }
+    let plots = figures(&results, &speeds, reference);
+    let headline = headline(&maxima);
+    Ok(StudyData { csv, summary: json!({ "curves": items }), lines, headline, plots, failures, ..blank(results.len()) })
+}
+
+/// The amplification at the fastest speed run, for both friction levels, from `maxima` (f_u, v, max φ_w, max φ_M).
+fn headline(maxima: &[(f64, f64, f64, f64)]) -> Vec<String> {
+    let top = maxima.iter().map(|m| m.1).fold(0.0, f64::max);
+    let at = |f: f64| maxima.iter().find(|m| m.0 == f && m.1 == top).map_or((f64::NAN, f64::NAN), |m| (m.2, m.3));
+    let ((w1, m1), (w2, m2)) = (at(1e3), at(2e3));
+    vec![
+        "Mid-span amplification grows with speed towards the critical speed.".into(),
+        format!("At {top} m/s: max φ_w {w1:.2} and φ_M {m1:.2} with f_u = 1 kN/m, {w2:.2} and {m2:.2} with 2 kN/m."),
+    ]
+}
+
+/// Per friction level, φ_w and φ_M along the crossing for each speed run (`results`: f_u, v, samples), against
+/// the static reference.
+fn figures(
+    results: &[(f64, f64, Vec<crate::metrics::Amplification>)],
+    speeds: &[f64],
+    reference: crate::metrics::StaticReference,
+) -> Vec<crate::plot::PlotSpec> {
     let subtitle = format!(
         "w_sta = {:.2} mm, M_sta = {:.2} kN·m: mid-span static deflection and moment, load at mid-span, no friction",
         reference.deflection.abs() * 1e3,
@@ -115,17 +138,5 @@ pub(super) fn study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
             plots.push(plot);
         }
     }
-    let headline = headline(&maxima);
-    Ok(StudyData { csv, summary: json!({ "curves": items }), lines, headline, plots, failures, ..blank(results.len()) })
-}
-
-/// The amplification at the fastest speed run, for both friction levels, from `maxima` (f_u, v, max φ_w, max φ_M).
-fn headline(maxima: &[(f64, f64, f64, f64)]) -> Vec<String> {
-    let top = maxima.iter().map(|m| m.1).fold(0.0, f64::max);
-    let at = |f: f64| maxima.iter().find(|m| m.0 == f && m.1 == top).map_or((f64::NAN, f64::NAN), |m| (m.2, m.3));
-    let ((w1, m1), (w2, m2)) = (at(1e3), at(2e3));
-    vec![
-        "Mid-span amplification grows with speed towards the critical speed.".into(),
-        format!("At {top} m/s: max φ_w {w1:.2} and φ_M {m1:.2} with f_u = 1 kN/m, {w2:.2} and {m2:.2} with 2 kN/m."),
-    ]
+    plots
 }

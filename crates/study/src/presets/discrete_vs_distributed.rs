@@ -5,6 +5,7 @@ use super::{StudyData, StudyFailure, blank, nothing_finished, with_devices, with
 use crate::error::Result;
 use crate::figures::quantity_figure;
 use crate::number::row;
+use crate::plot::PlotSpec;
 use crate::scenario::Scenario;
 use crate::speeds::SpeedScale;
 use crate::sweep::Runner;
@@ -23,41 +24,11 @@ pub(super) fn study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
         s.load.speed = speed;
         s.output.sections = vec![s.mesh.length / 2.0];
     }
-    // Each run with the capacity F_j (N) of its friction section at mid-span, to compare what each mobilises. A
-    // failed run is recorded and the other one kept: the comparison needs both.
-    let cases = [devices, distributed].map(|s| s.build());
-    let [devices, distributed] = cases;
-    // Built before any run: bad input is refused (exit 2), not recorded as a failed run.
-    let cases = [devices?, distributed?];
-    let results = runner.map_each(&cases, |case| {
-        let middle =
-            case.interactions.positions().iter().position(|&x| (x - case.model.mesh().length / 2.0).abs() < 1e-9);
-        let capacity = middle.map_or(f64::NAN, |j| case.interactions.capacity(j));
-        Ok((runner.simulate(case, &case.settings)?, capacity))
-    })?;
-    let mut failures = Vec::new();
-    let mut runs = Vec::new();
-    for (i, result) in results.into_iter().enumerate() {
-        match result {
-            Ok((run, capacity)) => runs.push((i, run, capacity)),
-            Err(e) => {
-                let case = format!("model = {}", MODELS[i]);
-                failures.push(StudyFailure { case, speed: Some(speed), error: e.to_string() })
-            }
-        }
-    }
+    let (runs, failures) = run_both(devices, distributed, speed, runner)?;
     if runs.is_empty() {
         return Err(nothing_finished("both models".into(), &failures));
     }
-    let mut csv = String::from("model,time,load_position,deflection,impulse\n");
-    for (i, r, _) in &runs {
-        let (name, h) = (MODELS[*i], &r.histories[0]);
-        let impulse = h.impulse.as_deref().unwrap_or(&[]);
-        for k in 0..h.time.len() {
-            let values = [h.time[k], h.load_position[k], h.deflection[k], impulse.get(k).copied().unwrap_or(0.0)];
-            let _ = writeln!(csv, "{name},{}", row(&values));
-        }
-    }
+    let csv = csv(&runs);
     let dissipated = |i: usize| runs.iter().find(|r| r.0 == i).map(|r| r.1.energy.dissipated());
     let (lines, summary) = match runs.as_slice() {
         [(_, a, _), (_, b, _)] => {
@@ -98,6 +69,59 @@ pub(super) fn study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
         "dissipated_devices": dissipated(0),
         "dissipated_distributed": dissipated(1),
     });
+    let plots = figures(&runs, speed);
+    Ok(StudyData { csv, summary, lines, headline, plots, failures, ..blank(runs.len()) })
+}
+
+/// A finished run of one model: its index in [`MODELS`], its result and the capacity F_j (N) of its friction
+/// section at mid-span.
+type ModelRun = (usize, track::RunResult, f64);
+
+/// Both models' runs at `speed`, built before any run (bad input is refused, exit 2, not recorded as a failed run);
+/// a failed run is recorded and the other kept: the comparison needs both.
+fn run_both(
+    devices: Scenario,
+    distributed: Scenario,
+    speed: f64,
+    runner: &Runner,
+) -> Result<(Vec<ModelRun>, Vec<StudyFailure>)> {
+    let cases = [devices.build()?, distributed.build()?];
+    let results = runner.map_each(&cases, |case| {
+        let middle =
+            case.interactions.positions().iter().position(|&x| (x - case.model.mesh().length / 2.0).abs() < 1e-9);
+        let capacity = middle.map_or(f64::NAN, |j| case.interactions.capacity(j));
+        Ok((runner.simulate(case, &case.settings)?, capacity))
+    })?;
+    let mut failures = Vec::new();
+    let mut runs = Vec::new();
+    for (i, result) in results.into_iter().enumerate() {
+        match result {
+            Ok((run, capacity)) => runs.push((i, run, capacity)),
+            Err(e) => {
+                let case = format!("model = {}", MODELS[i]);
+                failures.push(StudyFailure { case, speed: Some(speed), error: e.to_string() })
+            }
+        }
+    }
+    Ok((runs, failures))
+}
+
+/// `model,time,load_position,deflection,impulse` (text, s, m, m, N·s): the mid-span history of each finished run.
+fn csv(runs: &[ModelRun]) -> String {
+    let mut csv = String::from("model,time,load_position,deflection,impulse\n");
+    for (i, r, _) in runs {
+        let (name, h) = (MODELS[*i], &r.histories[0]);
+        let impulse = h.impulse.as_deref().unwrap_or(&[]);
+        for k in 0..h.time.len() {
+            let values = [h.time[k], h.load_position[k], h.deflection[k], impulse.get(k).copied().unwrap_or(0.0)];
+            let _ = writeln!(csv, "{name},{}", row(&values));
+        }
+    }
+    csv
+}
+
+/// The mid-span deflection and the friction mobilised there, both models on common axes.
+fn figures(runs: &[ModelRun], speed: f64) -> Vec<PlotSpec> {
     let history = |h: &SectionHistory, value: &dyn Fn(&SectionHistory, usize) -> f64| -> Vec<(f64, f64)> {
         (0..h.time.len()).map(|k| (h.time[k], value(h, k))).collect()
     };
@@ -111,7 +135,7 @@ pub(super) fn study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
         (labels[*i].into(), colors[*i], history(&r.histories[0], fraction))
     });
     let capacity = |i: usize| runs.iter().find(|r| r.0 == i).map_or("–".into(), |r| format!("{:.0}", r.2));
-    let plots = vec![
+    vec![
         {
             let mut plot = quantity_figure(
                 "discrete-vs-distributed-deflection",
@@ -144,6 +168,5 @@ pub(super) fn study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
             );
             plot
         },
-    ];
-    Ok(StudyData { csv, summary, lines, headline, plots, failures, ..blank(runs.len()) })
+    ]
 }

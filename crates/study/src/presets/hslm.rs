@@ -239,91 +239,91 @@ impl Results {
         out
     }
 
+    /// One train's curve: its summary line (into `lines`) and its JSON.
+    fn curve_summary(&self, c: &TrainCurve, lines: &mut Vec<String>) -> Value {
+        let a = &c.acceleration;
+        let text = if c.critical.is_interior() {
+            format!(
+                "critical speed {:.1} m/s ({:.0} km/h), peak {} (DAF {:.3})",
+                c.critical.speed,
+                c.critical.speed * KMH,
+                millimetres(c.critical.max_downward_deflection),
+                c.peak_amplification()
+            )
+        } else {
+            c.critical.describe()
+        };
+        let bound = if a.is_interior() { "" } else { " (at an end of the speed range: a bound)" };
+        lines.push(format!(
+            "HSLM-A{} (D = {} m), {}: {text}; max acceleration {:.3} m/s² at {:.1} km/h{bound}",
+            c.train,
+            coach_length(c.train),
+            self.friction_label(c.friction),
+            a.value,
+            a.speed * KMH
+        ));
+        let resonances: Vec<Value> = c
+            .resonances
+            .iter()
+            .map(|r| json!({"mode": r.mode, "order": r.order, "frequency": r.frequency, "speed": r.speed}))
+            .collect();
+        json!({
+            "train": format!("hslm-a{}", c.train),
+            "coach_length": coach_length(c.train),
+            "friction": friction_name(c.friction),
+            "static_max_downward_deflection": c.static_max,
+            "critical_speed": c.critical.speed,
+            "critical_speed_location": c.critical.location,
+            "peak_max_downward_deflection": c.critical.max_downward_deflection,
+            "peak_dynamic_amplification": c.peak_amplification(),
+            "peak_max_acceleration": a.value,
+            "peak_acceleration_speed": a.speed,
+            "peak_acceleration_location": a.location,
+            "peak_max_acceleration_sampled": a.sweep_maximum.1,
+            "refinement_runs": c.drawn.len() - c.points.len(),
+            "resonance_speeds": resonances,
+        })
+    }
+
+    /// The envelope of the ten trains under friction set-up `friction`: its line (into `lines`) and its JSON.
+    fn envelope_summary(&self, friction: usize, lines: &mut Vec<String>) -> Value {
+        let c = self.critical(friction);
+        let a = self.acceleration_critical(friction);
+        let p = &a.acceleration;
+        lines.push(format!(
+            "{}, envelope of the ten trains: HSLM-A{} at {:.1} m/s ({:.0} km/h), {} (DAF {:.3}){}; max \
+             acceleration {:.3} m/s² from HSLM-A{} at {:.1} km/h{}",
+            self.friction_label(friction),
+            c.train,
+            c.critical.speed,
+            c.critical.speed * KMH,
+            millimetres(c.critical.max_downward_deflection),
+            c.peak_amplification(),
+            if c.critical.is_interior() { "" } else { ", at an end of the speed range: a bound" },
+            p.value,
+            a.train,
+            p.speed * KMH,
+            if p.is_interior() { "" } else { " (at an end of the speed range: a bound)" },
+        ));
+        json!({
+            "friction": friction_name(friction),
+            "critical_train": format!("hslm-a{}", c.train),
+            "critical_speed": c.critical.speed,
+            "critical_speed_location": c.critical.location,
+            "peak_max_downward_deflection": c.critical.max_downward_deflection,
+            "dynamic_amplification": c.peak_amplification(),
+            "acceleration_train": format!("hslm-a{}", a.train),
+            "acceleration_speed": p.speed,
+            "acceleration_location": p.location,
+            "peak_max_acceleration": p.value,
+            "acceleration_over_limit": self.acceleration_limit.map(|l| p.value / l),
+        })
+    }
+
     fn summary(&self) -> (Value, Vec<String>) {
         let mut lines = Vec::new();
-        let curves: Vec<Value> = self
-            .curves
-            .iter()
-            .map(|c| {
-                let a = &c.acceleration;
-                let text = if c.critical.is_interior() {
-                    format!(
-                        "critical speed {:.1} m/s ({:.0} km/h), peak {} (DAF {:.3})",
-                        c.critical.speed,
-                        c.critical.speed * KMH,
-                        millimetres(c.critical.max_downward_deflection),
-                        c.peak_amplification()
-                    )
-                } else {
-                    c.critical.describe()
-                };
-                let bound = if a.is_interior() { "" } else { " (at an end of the speed range: a bound)" };
-                lines.push(format!(
-                    "HSLM-A{} (D = {} m), {}: {text}; max acceleration {:.3} m/s² at {:.1} km/h{bound}",
-                    c.train,
-                    coach_length(c.train),
-                    self.friction_label(c.friction),
-                    a.value,
-                    a.speed * KMH
-                ));
-                let resonances: Vec<Value> = c
-                    .resonances
-                    .iter()
-                    .map(|r| json!({"mode": r.mode, "order": r.order, "frequency": r.frequency, "speed": r.speed}))
-                    .collect();
-                json!({
-                    "train": format!("hslm-a{}", c.train),
-                    "coach_length": coach_length(c.train),
-                    "friction": friction_name(c.friction),
-                    "static_max_downward_deflection": c.static_max,
-                    "critical_speed": c.critical.speed,
-                    "critical_speed_location": c.critical.location,
-                    "peak_max_downward_deflection": c.critical.max_downward_deflection,
-                    "peak_dynamic_amplification": c.peak_amplification(),
-                    "peak_max_acceleration": a.value,
-                    "peak_acceleration_speed": a.speed,
-                    "peak_acceleration_location": a.location,
-                    "peak_max_acceleration_sampled": a.sweep_maximum.1,
-                    "refinement_runs": c.drawn.len() - c.points.len(),
-                    "resonance_speeds": resonances,
-                })
-            })
-            .collect();
-        let envelopes: Vec<Value> = (0..2)
-            .map(|friction| {
-                let c = self.critical(friction);
-                let a = self.acceleration_critical(friction);
-                let p = &a.acceleration;
-                lines.push(format!(
-                    "{}, envelope of the ten trains: HSLM-A{} at {:.1} m/s ({:.0} km/h), {} (DAF {:.3}){}; max \
-                     acceleration {:.3} m/s² from HSLM-A{} at {:.1} km/h{}",
-                    self.friction_label(friction),
-                    c.train,
-                    c.critical.speed,
-                    c.critical.speed * KMH,
-                    millimetres(c.critical.max_downward_deflection),
-                    c.peak_amplification(),
-                    if c.critical.is_interior() { "" } else { ", at an end of the speed range: a bound" },
-                    p.value,
-                    a.train,
-                    p.speed * KMH,
-                    if p.is_interior() { "" } else { " (at an end of the speed range: a bound)" },
-                ));
-                json!({
-                    "friction": friction_name(friction),
-                    "critical_train": format!("hslm-a{}", c.train),
-                    "critical_speed": c.critical.speed,
-                    "critical_speed_location": c.critical.location,
-                    "peak_max_downward_deflection": c.critical.max_downward_deflection,
-                    "dynamic_amplification": c.peak_amplification(),
-                    "acceleration_train": format!("hslm-a{}", a.train),
-                    "acceleration_speed": p.speed,
-                    "acceleration_location": p.location,
-                    "peak_max_acceleration": p.value,
-                    "acceleration_over_limit": self.acceleration_limit.map(|l| p.value / l),
-                })
-            })
-            .collect();
+        let curves: Vec<Value> = self.curves.iter().map(|c| self.curve_summary(c, &mut lines)).collect();
+        let envelopes: Vec<Value> = (0..2).map(|friction| self.envelope_summary(friction, &mut lines)).collect();
         let refinement = format!(
             "every maximum (deflection and acceleration, per train and the envelopes) is refined on fresh runs around \
              its sampled maximum: {PEAK_SCAN} samples of the bracket between the neighbouring speeds, then golden \

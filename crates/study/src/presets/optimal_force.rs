@@ -35,38 +35,18 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
     let mut figure_curves = Vec::new();
     let mut refinement_runs = 0;
     for (i, &n) in counts.iter().enumerate() {
-        let case = |f: f64| format!("devices = {n}, device_force = {f}");
-        let mut curve = Vec::new();
-        for (&f, p) in forces.iter().zip(&points[i * forces.len()..(i + 1) * forces.len()]) {
-            let values = match p {
-                Ok(p) => {
-                    curve.push((f, p.clone()));
-                    [n as f64, f, speed, p.max_downward_deflection, p.max_upward_deflection, p.dissipated_energy]
-                }
-                Err(e) => {
-                    failures.push(StudyFailure { case: case(f), speed: Some(speed), error: e.to_string() });
-                    [n as f64, f, speed, f64::NAN, f64::NAN, f64::NAN]
-                }
-            };
-            let _ = writeln!(csv, "{}", row_with_gaps(&values));
-        }
+        let scanned = &points[i * forces.len()..(i + 1) * forces.len()];
+        let curve = scan(n, (&forces, scanned), speed, &mut csv, &mut failures);
         let optimum = optimum(&with_devices(base, n, 1.0), speed, &curve, runner);
         let optimum = match optimum {
-            Ok(refined) => {
-                lines.push(format!(
-                    "N = {n}: optimal F_u {:.1} kN gives max downward deflection {:.1} mm at {speed} m/s",
-                    refined.force / 1e3,
-                    refined.max_downward_deflection * 1e3
-                ));
-                Some(refined)
-            }
+            Ok(refined) => Some(refined),
             Err(e) => {
                 let case = format!("devices = {n}");
                 failures.push(StudyFailure { case, speed: None, error: format!("no optimal force: {e}") });
-                lines.push(format!("N = {n}: no optimal force ({} of {} runs finished)", curve.len(), forces.len()));
                 None
             }
         };
+        lines.push(describe(n, optimum.as_ref(), speed, (curve.len(), forces.len())));
         optima.push((n, optimum.as_ref().map(|o| (o.force, o.max_downward_deflection))));
         items.push(json!({
             "devices": n,
@@ -131,4 +111,44 @@ fn headline(speed: f64, optima: &[(usize, Option<(f64, f64)>)]) -> Vec<String> {
         format!("At {speed} m/s the max downward deflection is smallest for an intermediate device force:"),
         format!("{}.", text.join("; ")),
     ]
+}
+
+/// The scan of `n` devices: a CSV row per force (`forces`, the runs `points` in their order; a failed run's row has
+/// its values empty and its failure recorded) and the finished (F_u, point) pairs.
+fn scan(
+    n: usize,
+    (forces, points): (&[f64], &[Result<SweepPoint>]),
+    speed: f64,
+    csv: &mut String,
+    failures: &mut Vec<StudyFailure>,
+) -> Vec<(f64, SweepPoint)> {
+    let mut curve = Vec::new();
+    for (&f, p) in forces.iter().zip(points) {
+        let values = match p {
+            Ok(p) => {
+                curve.push((f, p.clone()));
+                [n as f64, f, speed, p.max_downward_deflection, p.max_upward_deflection, p.dissipated_energy]
+            }
+            Err(e) => {
+                let case = format!("devices = {n}, device_force = {f}");
+                failures.push(StudyFailure { case, speed: Some(speed), error: e.to_string() });
+                [n as f64, f, speed, f64::NAN, f64::NAN, f64::NAN]
+            }
+        };
+        let _ = writeln!(csv, "{}", row_with_gaps(&values));
+    }
+    curve
+}
+
+/// The summary line of `n` devices: their optimum, or that there is none and how many of the scan's runs finished
+/// (`finished`, `scanned`).
+fn describe(n: usize, optimum: Option<&OptimalForce>, speed: f64, (finished, scanned): (usize, usize)) -> String {
+    match optimum {
+        Some(o) => format!(
+            "N = {n}: optimal F_u {:.1} kN gives max downward deflection {:.1} mm at {speed} m/s",
+            o.force / 1e3,
+            o.max_downward_deflection * 1e3
+        ),
+        None => format!("N = {n}: no optimal force ({finished} of {scanned} runs finished)"),
+    }
 }

@@ -178,9 +178,18 @@ pub struct RunSettings {
 }
 
 impl RunSettings {
-    /// Check the settings against the model.
+    /// Check the settings against the model, in order: what moves, how it is integrated, where it starts, what is
+    /// recorded, and the run's size (before anything is allocated).
     pub fn validate(&self, model: &BeamModel) -> Result<()> {
-        let length = model.mesh().length;
+        self.validate_moving(model)?;
+        self.validate_integration(model)?;
+        self.validate_start(model.mesh().length)?;
+        self.validate_record(model)?;
+        self.validate_size(model.mesh().length)
+    }
+
+    /// The speed (positive, below the bar wave speed) and what crosses; vehicles' own limits.
+    fn validate_moving(&self, model: &BeamModel) -> Result<()> {
         if !(self.moving.speed.is_finite() && self.moving.speed > 0.0) {
             return Err(invalid("speed", self.moving.speed, "must be finite and > 0 (m/s)"));
         }
@@ -217,6 +226,11 @@ impl RunSettings {
                 ));
             }
         }
+        Ok(())
+    }
+
+    /// The load advance (at most an element, and short enough for the wheel–rail contact mode), θ and h, the solver.
+    fn validate_integration(&self, model: &BeamModel) -> Result<()> {
         let l = model.mesh().element_length();
         if !(self.integration.load_advance.is_finite()
             && self.integration.load_advance > 0.0
@@ -256,6 +270,11 @@ impl RunSettings {
         if self.integration.solver.max_iterations == 0 {
             return Err(invalid("solver.max_iterations", 0.0, "must be ≥ 1"));
         }
+        Ok(())
+    }
+
+    /// A steady or static start's position on the beam of `length` (m).
+    fn validate_start(&self, length: f64) -> Result<()> {
         if let InitialState::SteadyState { position } | InitialState::Static { position } = self.moving.initial
             && !(position.is_finite() && (0.0..length).contains(&position))
         {
@@ -266,6 +285,12 @@ impl RunSettings {
             };
             return Err(invalid(field, position, format!("must lie in [0, {length}) m")));
         }
+        Ok(())
+    }
+
+    /// The recorded sections, the extremes window and the extremes' nodes.
+    fn validate_record(&self, model: &BeamModel) -> Result<()> {
+        let length = model.mesh().length;
         for &x in &self.record.sections {
             if !(x.is_finite() && (0.0..=length).contains(&x)) {
                 return Err(invalid("record_sections", x, format!("must lie on the beam, in [0, {length}] m")));
@@ -288,6 +313,11 @@ impl RunSettings {
                 return Err(invalid("extremes_nodes", if a.is_finite() { b } else { a }, allowed));
             }
         }
+        Ok(())
+    }
+
+    /// The end time, and the steps and recorded samples the run would take on a beam of `length` (m).
+    fn validate_size(&self, length: f64) -> Result<()> {
         if let Some(end) = self.integration.end_time
             && !(end.is_finite() && end >= self.crossing_time(length) * (1.0 - 1e-12))
         {
