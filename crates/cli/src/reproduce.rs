@@ -24,38 +24,7 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
     crate::files::check_output_file("--out", &options.out.join("report.md"))?;
     let workers = options.workers()?;
     let start = Instant::now();
-    let mut report = String::new();
-    let _ = writeln!(report, "# frictrack — the studies of docs/theory.md §7 and §10\n");
-    let model = base.model()?;
-    let (beam, foundation, mesh) = (model.beam(), model.foundation(), model.mesh());
-    let v_cr = study::speeds::SpeedScale::of(&base)?.critical_speed;
-    let _ = writeln!(
-        report,
-        "{}: EI = {:.4} MN·m², ρA = {:.3} kg/m on a Winkler soil of k_f = {:.1} kN/m² (v_cr = {}), {} m beam of {} \
-         Hermite elements ({:?}/{:?} ends), load F = {:.1} kN, θ = {}, load advance {} m per step. Resolution: {}. \
-         Every figure has its data beside it (`<study>.csv`, SI units) and its metadata (`<study>.json`: the scenario, \
-         what the study set itself, the CSV's units).\n",
-        if base.title.is_empty() { "The reference case (UIC60 rail on soft soil)" } else { base.title.as_str() },
-        beam.bending_stiffness() / 1e6,
-        beam.mass_per_length(),
-        foundation.stiffness / 1e3,
-        v_cr.map_or("none without a foundation".to_string(), |v| format!("{v:.2} m/s")),
-        mesh.length,
-        mesh.elements,
-        model.supports().left,
-        model.supports().right,
-        base.load.force / 1e3,
-        base.integration.theta,
-        base.integration.load_advance,
-        options.resolution.name()
-    );
-    let _ = writeln!(
-        report,
-        "Deflections are magnitudes in mm, downward solid and upward dashed; \"max\" is over the whole run from rest, \
-         which near v_cr includes the exit transient at x ≈ L — the CSVs also give the extremes while the load is in \
-         the middle third of the beam (`window_*` columns). A critical speed at an end of the speed range is a bound \
-         and is marked so (`critical_speed_location`).\n"
-    );
+    let mut report = report_header(&base, options)?;
     // Journals stay until the report is written, so that --resume after an interruption re-runs nothing.
     let mut journals = Vec::new();
     // A study that fails (not the user's input, not an interruption: those end the command) is recorded in the
@@ -99,25 +68,7 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
             let _ = writeln!(report);
             failed.push(format!("{}: {} run(s) failed", preset.name(), data.failures.len()));
         }
-        for line in &data.headline {
-            let _ = writeln!(report, "{line}  ");
-        }
-        let _ = writeln!(report);
-        for plot in &data.plots {
-            let _ = writeln!(report, "![{}]({}.png)\n", plot.title, plot.stem);
-            let _ = writeln!(report, "*{}* — [SVG]({}.svg)\n", plot.title, plot.stem);
-        }
-        let _ = writeln!(
-            report,
-            "Data: [{name}.csv]({name}.csv), metadata: [{name}.json]({name}.json); {} simulations.\n",
-            data.runs,
-            name = data.name
-        );
-        let _ = writeln!(report, "<details><summary>Per curve</summary>\n");
-        for line in &data.lines {
-            let _ = writeln!(report, "- {line}");
-        }
-        let _ = writeln!(report, "\n</details>\n");
+        study_section(&mut report, &data);
     }
     let _ = writeln!(report, "All {} studies took {:.1} s.", Preset::ALL.len(), start.elapsed().as_secs_f64());
     write_atomically(&options.out.join("report.md"), report.as_bytes())?;
@@ -137,4 +88,65 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
         );
     }
     Ok(())
+}
+
+/// The report's opening: the base case in numbers and how to read the figures.
+fn report_header(base: &study::Scenario, options: &crate::study_cmd::StudyOptions) -> Result<String> {
+    let mut report = String::new();
+    let _ = writeln!(report, "# frictrack — the studies of docs/theory.md §7 and §10\n");
+    let model = base.model()?;
+    let (beam, foundation, mesh) = (model.beam(), model.foundation(), model.mesh());
+    let v_cr = study::speeds::SpeedScale::of(base)?.critical_speed;
+    let _ = writeln!(
+        report,
+        "{}: EI = {:.4} MN·m², ρA = {:.3} kg/m on a Winkler soil of k_f = {:.1} kN/m² (v_cr = {}), {} m beam of {} \
+         Hermite elements ({:?}/{:?} ends), load F = {:.1} kN, θ = {}, load advance {} m per step. Resolution: {}. \
+         Every figure has its data beside it (`<study>.csv`, SI units) and its metadata (`<study>.json`: the scenario, \
+         what the study set itself, the CSV's units).\n",
+        if base.title.is_empty() { "The reference case (UIC60 rail on soft soil)" } else { base.title.as_str() },
+        beam.bending_stiffness() / 1e6,
+        beam.mass_per_length(),
+        foundation.stiffness / 1e3,
+        v_cr.map_or("none without a foundation".to_string(), |v| format!("{v:.2} m/s")),
+        mesh.length,
+        mesh.elements,
+        model.supports().left,
+        model.supports().right,
+        base.load.force / 1e3,
+        base.integration.theta,
+        base.integration.load_advance,
+        options.resolution.name()
+    );
+    let _ = writeln!(
+        report,
+        "Deflections are magnitudes in mm, downward solid and upward dashed; \"max\" is over the whole run from rest, \
+         which near v_cr includes the exit transient at x ≈ L — the CSVs also give the extremes while the load is in \
+         the middle third of the beam (`window_*` columns). A critical speed at an end of the speed range is a bound \
+         and is marked so (`critical_speed_location`).\n"
+    );
+    Ok(report)
+}
+
+/// A study's section after its title (and its failures): the headline, the figures, the data and the per-curve
+/// lines.
+fn study_section(report: &mut String, data: &study::presets::StudyData) {
+    for line in &data.headline {
+        let _ = writeln!(report, "{line}  ");
+    }
+    let _ = writeln!(report);
+    for plot in &data.plots {
+        let _ = writeln!(report, "![{}]({}.png)\n", plot.title, plot.stem);
+        let _ = writeln!(report, "*{}* — [SVG]({}.svg)\n", plot.title, plot.stem);
+    }
+    let _ = writeln!(
+        report,
+        "Data: [{name}.csv]({name}.csv), metadata: [{name}.json]({name}.json); {} simulations.\n",
+        data.runs,
+        name = data.name
+    );
+    let _ = writeln!(report, "<details><summary>Per curve</summary>\n");
+    for line in &data.lines {
+        let _ = writeln!(report, "- {line}");
+    }
+    let _ = writeln!(report, "\n</details>\n");
 }

@@ -57,102 +57,9 @@ pub(crate) fn print_text(r: &RunSummary, wording: &WindowWording) {
             study::number::significant(r.damping_ratio, 12)
         );
     }
-    match (r.devices, r.distributed_friction > 0.0) {
-        (0, false) => println!("  friction: none"),
-        (n, distributed) => {
-            if n > 0 {
-                let shown: Vec<String> = r.device_positions.iter().take(5).map(|x| format!("{x}")).collect();
-                let more = if n > 5 { ", …" } else { "" };
-                println!("  friction devices: {n} × {:.1} kN at {}{more} m", r.device_force / 1e3, shown.join(", "));
-            }
-            if distributed {
-                println!("  distributed friction: {:.1} N/m", r.distributed_friction);
-            }
-        }
-    }
-    let load = wording.load;
-    let line = |what: &str, d: f64, place: Option<(f64, f64)>, x_load: Option<f64>| match place {
-        Some((x, t)) => {
-            let load = x_load.map_or(String::new(), |x| format!(", {load} at {x:.1} m"));
-            println!("    max {what:<8} deflection {:>9.3} mm at x = {x:.1} m, t = {t:.4} s{load}", d * 1e3);
-        }
-        None => println!("    max {what:<8} deflection      none"),
-    };
-    match r.extremes_nodes {
-        Some((a, b)) => println!("  extremes over the nodes at {a:.1}–{b:.1} m ([output] extremes_nodes); whole run:"),
-        None => println!("  whole run (includes the entry transient from rest and the exit near x = L):"),
-    }
-    let place = |x: Option<f64>, t: Option<f64>| x.zip(t);
-    line(
-        "downward",
-        r.max_downward_deflection,
-        place(r.max_downward_deflection_position, r.max_downward_deflection_time),
-        None,
-    );
-    line(
-        "upward",
-        r.max_upward_deflection,
-        place(r.max_upward_deflection_position, r.max_upward_deflection_time),
-        None,
-    );
-    let (a, b) = r.extremes_window;
-    let why = wording.why;
-    let nodes = if r.extremes_nodes.is_some() { "the nodes above" } else { "every node" };
-    println!("  while the {load} is at {a:.1}–{b:.1} m ({why}), over {nodes}:");
-    match (&r.window_max_downward, &r.window_max_upward) {
-        (None, None) => println!("    none: the {load} never was in that range during the run"),
-        (down, up) => {
-            for (what, e) in [("downward", down), ("upward", up)] {
-                let d = e.as_ref().map_or(0.0, |e| e.deflection);
-                line(what, d, e.as_ref().map(|e| (e.position, e.time)), e.as_ref().map(|e| e.load_position));
-            }
-        }
-    }
-    println!(
-        "  static (the {} standing at every position): max downward {:.3} mm; dynamic amplification {:.3}",
-        if r.train.is_some() { "train" } else { "load" },
-        r.static_max_downward_deflection * 1e3,
-        r.dynamic_amplification
-    );
-    match place(r.max_acceleration_position, r.max_acceleration_time) {
-        Some((x, t)) => println!(
-            "  max acceleration {:.3} m/s² at x = {x:.1} m, t = {t:.4} s (the step's mean; a bridge deck's check value)",
-            r.max_acceleration
-        ),
-        None => println!("  max acceleration none (the beam never moved)"),
-    }
-    println!("  global norm W̄          {:>9.4} m²", r.global_norm);
-    println!(
-        "  energy (J): load work {:.4e}, dissipated {:.4e} (friction {:.4e}, viscous {:.4e}), numerical {:.4e}, balance residual {:.2e}",
-        r.load_work,
-        r.dissipated_energy,
-        r.friction_dissipation,
-        r.viscous_dissipation,
-        r.numerical_dissipation,
-        r.energy_residual
-    );
-    println!(
-        "  {} steps of {:.3e} s, {} friction sections ({:.0} re-solved per step), solver {}: {:.2} iterations/step \
-         (max {}), max residual {:.2e} m/s",
-        r.steps,
-        r.time_step,
-        r.sections,
-        r.mean_sections_solved,
-        r.solver,
-        r.mean_iterations,
-        r.max_iterations,
-        r.max_residual
-    );
-    if r.fallback_steps > 0 {
-        let by: Vec<String> = r.fallbacks.iter().map(|f| format!("{} ({})", f.solver, f.steps)).collect();
-        println!(
-            "  fallback: {} failed on {} of {} steps, solved instead by {} (docs/theory.md §5)",
-            r.solver,
-            r.fallback_steps,
-            r.steps,
-            by.join(", ")
-        );
-    }
+    print_friction(r);
+    print_extremes(r, wording);
+    print_numbers(r);
     if let Some(v) = &r.vehicles {
         print_vehicles(v);
     }
@@ -232,6 +139,115 @@ fn print_vehicles(v: &study::vehicle_output::VehicleReport) {
             "  rigid contacts: position projection changed the strain energy by {:.4e} J (the velocity-level drift, \
              O(h))",
             v.projection_work
+        );
+    }
+}
+
+/// The friction lines: none, the devices (the first five positions), the distributed friction.
+fn print_friction(r: &RunSummary) {
+    match (r.devices, r.distributed_friction > 0.0) {
+        (0, false) => println!("  friction: none"),
+        (n, distributed) => {
+            if n > 0 {
+                let shown: Vec<String> = r.device_positions.iter().take(5).map(|x| format!("{x}")).collect();
+                let more = if n > 5 { ", …" } else { "" };
+                println!("  friction devices: {n} × {:.1} kN at {}{more} m", r.device_force / 1e3, shown.join(", "));
+            }
+            if distributed {
+                println!("  distributed friction: {:.1} N/m", r.distributed_friction);
+            }
+        }
+    }
+}
+
+/// The deflection extremes: over the whole run, and while the load was in the extremes window.
+fn print_extremes(r: &RunSummary, wording: &WindowWording) {
+    let load = wording.load;
+    let line = |what: &str, d: f64, place: Option<(f64, f64)>, x_load: Option<f64>| match place {
+        Some((x, t)) => {
+            let load = x_load.map_or(String::new(), |x| format!(", {load} at {x:.1} m"));
+            println!("    max {what:<8} deflection {:>9.3} mm at x = {x:.1} m, t = {t:.4} s{load}", d * 1e3);
+        }
+        None => println!("    max {what:<8} deflection      none"),
+    };
+    match r.extremes_nodes {
+        Some((a, b)) => println!("  extremes over the nodes at {a:.1}–{b:.1} m ([output] extremes_nodes); whole run:"),
+        None => println!("  whole run (includes the entry transient from rest and the exit near x = L):"),
+    }
+    let place = |x: Option<f64>, t: Option<f64>| x.zip(t);
+    line(
+        "downward",
+        r.max_downward_deflection,
+        place(r.max_downward_deflection_position, r.max_downward_deflection_time),
+        None,
+    );
+    line(
+        "upward",
+        r.max_upward_deflection,
+        place(r.max_upward_deflection_position, r.max_upward_deflection_time),
+        None,
+    );
+    let (a, b) = r.extremes_window;
+    let why = wording.why;
+    let nodes = if r.extremes_nodes.is_some() { "the nodes above" } else { "every node" };
+    println!("  while the {load} is at {a:.1}–{b:.1} m ({why}), over {nodes}:");
+    match (&r.window_max_downward, &r.window_max_upward) {
+        (None, None) => println!("    none: the {load} never was in that range during the run"),
+        (down, up) => {
+            for (what, e) in [("downward", down), ("upward", up)] {
+                let d = e.as_ref().map_or(0.0, |e| e.deflection);
+                line(what, d, e.as_ref().map(|e| (e.position, e.time)), e.as_ref().map(|e| e.load_position));
+            }
+        }
+    }
+}
+
+/// The static envelope and amplification, the acceleration, W̄, the energy ledger and the solver's statistics.
+fn print_numbers(r: &RunSummary) {
+    let place = |x: Option<f64>, t: Option<f64>| x.zip(t);
+    println!(
+        "  static (the {} standing at every position): max downward {:.3} mm; dynamic amplification {:.3}",
+        if r.train.is_some() { "train" } else { "load" },
+        r.static_max_downward_deflection * 1e3,
+        r.dynamic_amplification
+    );
+    match place(r.max_acceleration_position, r.max_acceleration_time) {
+        Some((x, t)) => println!(
+            "  max acceleration {:.3} m/s² at x = {x:.1} m, t = {t:.4} s (the step's mean; a bridge deck's check value)",
+            r.max_acceleration
+        ),
+        None => println!("  max acceleration none (the beam never moved)"),
+    }
+    println!("  global norm W̄          {:>9.4} m²", r.global_norm);
+    println!(
+        "  energy (J): load work {:.4e}, dissipated {:.4e} (friction {:.4e}, viscous {:.4e}), numerical {:.4e}, balance residual {:.2e}",
+        r.load_work,
+        r.dissipated_energy,
+        r.friction_dissipation,
+        r.viscous_dissipation,
+        r.numerical_dissipation,
+        r.energy_residual
+    );
+    println!(
+        "  {} steps of {:.3e} s, {} friction sections ({:.0} re-solved per step), solver {}: {:.2} iterations/step \
+         (max {}), max residual {:.2e} m/s",
+        r.steps,
+        r.time_step,
+        r.sections,
+        r.mean_sections_solved,
+        r.solver,
+        r.mean_iterations,
+        r.max_iterations,
+        r.max_residual
+    );
+    if r.fallback_steps > 0 {
+        let by: Vec<String> = r.fallbacks.iter().map(|f| format!("{} ({})", f.solver, f.steps)).collect();
+        println!(
+            "  fallback: {} failed on {} of {} steps, solved instead by {} (docs/theory.md §5)",
+            r.solver,
+            r.fallback_steps,
+            r.steps,
+            by.join(", ")
         );
     }
 }

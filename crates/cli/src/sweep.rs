@@ -69,15 +69,7 @@ pub fn run(args: &SweepArgs) -> Result<()> {
         return Err(invalid("--speeds", speeds.len(), "--critical needs at least 3 speeds").into());
     }
     if let Some(out) = &args.out {
-        check_output_file("--out", out)?;
-        check_output_file("--out", &metadata_beside(out))?;
-        let stem = out.file_stem().map_or("sweep".into(), |s| s.to_string_lossy().into_owned());
-        let folder = out.parent().unwrap_or(std::path::Path::new("."));
-        for suffix in study::sweep_figures::FIGURE_SUFFIXES {
-            for extension in ["png", "svg"] {
-                check_output_file("--out", &folder.join(format!("{stem}-{suffix}.{extension}")))?;
-            }
-        }
+        check_outputs(out)?;
     }
     let journal = args.out.as_deref().map(|out| study::Journal::open(&journal_beside(out), args.resume)).transpose()?;
     if let Some(j) = journal.as_ref().filter(|j| j.resumed() > 0 && !args.quiet) {
@@ -112,32 +104,7 @@ pub fn run(args: &SweepArgs) -> Result<()> {
         None
     };
     match &args.out {
-        Some(path) => {
-            write_atomically(path, &csv)?;
-            // The swept metrics against speed, beside the CSV (a shard's few speeds are drawn by `plot` after merge).
-            if shard.is_none() && points.len() >= 2 {
-                let stem = path.file_stem().map_or("sweep".into(), |s| s.to_string_lossy().into_owned());
-                let title = if scenario.title.is_empty() { stem.clone() } else { scenario.title.clone() };
-                let plots = study::sweep_figures::sweep_plots(&points, &stem, &title, critical.as_ref());
-                crate::files::write_figures(&plots, path.parent().unwrap_or(std::path::Path::new(".")))?;
-            }
-            let vehicle_columns = study::sweep::VEHICLE_CSV_COLUMNS.iter().filter(|_| scenario.vehicle.is_some());
-            let columns: Vec<_> = study::sweep::CSV_COLUMNS
-                .iter()
-                .chain(vehicle_columns)
-                .map(|(name, unit, meaning)| json!({ "name": name, "unit": unit, "meaning": meaning }))
-                .collect();
-            let metadata = json!({
-                "csv": path.file_name().map(|n| n.to_string_lossy().into_owned()),
-                "columns": columns,
-                "extremes_window": scenario.output.extremes_window(scenario.mesh.length),
-                "critical_speed": critical.as_ref().map(|c| json!({ "description": c.describe(), "result": c })),
-                "failures": failed,
-                "frictrack_version": env!("CARGO_PKG_VERSION"),
-                "scenario": scenario,
-            });
-            write_atomically(&metadata_beside(path), serde_json::to_string_pretty(&metadata)?.as_bytes())?;
-        }
+        Some(path) => write_files(path, &csv, &scenario, (&points, &failed), critical.as_ref(), shard.is_none())?,
         None => {
             print!("{}", String::from_utf8(csv)?);
             // A comment line after the data (pandas: comment="#"), so that --quiet never loses the answer.
@@ -172,4 +139,56 @@ fn failed_runs(failed: &[FailedRun], total: usize, critical: bool, journal: Opti
     };
     let critical = if critical { "; no critical speed was refined over a sweep with failed runs" } else { "" };
     anyhow::anyhow!("{} of {total} runs failed:\n{}\n{kept}{critical}", failed.len(), list.join("\n"))
+}
+
+/// Refuse before any run an output that cannot be written: the CSV, its metadata and its figures beside it.
+fn check_outputs(out: &std::path::Path) -> Result<()> {
+    check_output_file("--out", out)?;
+    check_output_file("--out", &metadata_beside(out))?;
+    let stem = out.file_stem().map_or("sweep".into(), |s| s.to_string_lossy().into_owned());
+    let folder = out.parent().unwrap_or(std::path::Path::new("."));
+    for suffix in study::sweep_figures::FIGURE_SUFFIXES {
+        for extension in ["png", "svg"] {
+            check_output_file("--out", &folder.join(format!("{stem}-{suffix}.{extension}")))?;
+        }
+    }
+    Ok(())
+}
+
+/// Write the sweep's files at `path`: the CSV (`csv`), its figures (a whole sweep of ≥ 2 finished runs; a shard's
+/// few speeds are drawn by `plot` after merge) and its metadata (columns with units, the critical speed, the
+/// `failed` runs, the scenario).
+fn write_files(
+    path: &std::path::Path,
+    csv: &[u8],
+    scenario: &study::Scenario,
+    (points, failed): (&[study::SweepPoint], &[study::sweep::FailedRun]),
+    critical: Option<&study::CriticalSpeed>,
+    whole: bool,
+) -> Result<()> {
+    write_atomically(path, csv)?;
+    // The swept metrics against speed, beside the CSV (a shard's few speeds are drawn by `plot` after merge).
+    if whole && points.len() >= 2 {
+        let stem = path.file_stem().map_or("sweep".into(), |s| s.to_string_lossy().into_owned());
+        let title = if scenario.title.is_empty() { stem.clone() } else { scenario.title.clone() };
+        let plots = study::sweep_figures::sweep_plots(points, &stem, &title, critical);
+        crate::files::write_figures(&plots, path.parent().unwrap_or(std::path::Path::new(".")))?;
+    }
+    let vehicle_columns = study::sweep::VEHICLE_CSV_COLUMNS.iter().filter(|_| scenario.vehicle.is_some());
+    let columns: Vec<_> = study::sweep::CSV_COLUMNS
+        .iter()
+        .chain(vehicle_columns)
+        .map(|(name, unit, meaning)| json!({ "name": name, "unit": unit, "meaning": meaning }))
+        .collect();
+    let metadata = json!({
+        "csv": path.file_name().map(|n| n.to_string_lossy().into_owned()),
+        "columns": columns,
+        "extremes_window": scenario.output.extremes_window(scenario.mesh.length),
+        "critical_speed": critical.map(|c| json!({ "description": c.describe(), "result": c })),
+        "failures": failed,
+        "frictrack_version": env!("CARGO_PKG_VERSION"),
+        "scenario": scenario,
+    });
+    write_atomically(&metadata_beside(path), serde_json::to_string_pretty(&metadata)?.as_bytes())?;
+    Ok(())
 }

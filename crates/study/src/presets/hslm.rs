@@ -14,9 +14,9 @@ use super::hslm_figures::interpolate;
 use super::hslm_resonances::{Resonance, natural_frequencies, resonances};
 use super::{Resolution, StudyData, StudyFailure, blank, failed_runs, mean_iterations, nothing_finished, with_devices};
 use crate::diagnostics::{deck_frequency, resolving_advance};
-use crate::error::Result;
+use crate::error::{Result, StudyError};
 use crate::number::row;
-use crate::scenario::Scenario;
+use crate::scenario::{Case, Scenario};
 use crate::sweep::{CriticalSpeed, Metric, RefinedPeak, Runner, SweepPoint, finished, refine_maximum, unrefined};
 use fem_beam::Train;
 use fem_beam::train::HSLM_A;
@@ -365,16 +365,7 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
     let speeds = resolution.train_speeds(base);
     let (base, _) = prepared(base, &speeds)?;
     let (none, with, friction) = friction_setups(&base);
-    let mut scenarios = Vec::with_capacity(2 * TRAINS);
-    for (f, set_up) in [&none, &with].into_iter().enumerate() {
-        for k in 1..=TRAINS {
-            let mut s = set_up.clone();
-            s.load.train = Some(format!("hslm-a{k}"));
-            s.load.axles.clear();
-            s.load.patches.clear();
-            scenarios.push((vec![("train".to_string(), k as f64), ("friction".to_string(), f as f64)], s));
-        }
-    }
+    let scenarios = train_scenarios([&none, &with]);
     let case = base.build()?;
     // A span has natural frequencies that trains excite at f_j·D/i; a track on a Winkler foundation has none (its FE
     // modes crowd at the cut-off frequency, an artefact of its finite length), and loads of constant magnitude
@@ -407,26 +398,9 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
         return Err(nothing_finished(curve_name(c), &failures));
     }
     let tolerance = 0.02 * (speeds[1] - speeds[0]);
-    let ids: Vec<usize> = (0..cases.len()).collect();
-    let refined = runner.silent().map_each(&ids, |&c| {
-        let refine = |metric| refine_maximum(&cases[c], &points[c], metric, (tolerance, PEAK_SCAN), runner);
-        Ok((refine(Metric::MaxDownwardDeflection)?, refine(Metric::MaxAcceleration)?))
+    let refined = refine_peaks(&cases, &points, tolerance, runner, &mut |c, e| {
+        failures.push(StudyFailure { case: curve_name(c), speed: None, error: format!("peaks not refined: {e}") })
     })?;
-    let refined: Vec<(RefinedPeak, RefinedPeak)> = refined
-        .into_iter()
-        .enumerate()
-        .map(|(c, result)| {
-            result.unwrap_or_else(|e| {
-                failures.push(StudyFailure {
-                    case: curve_name(c),
-                    speed: None,
-                    error: format!("peaks not refined: {e}"),
-                });
-                let sweep = |metric| unrefined(&points[c], metric).expect("a finished run");
-                (sweep(Metric::MaxDownwardDeflection), sweep(Metric::MaxAcceleration))
-            })
-        })
-        .collect();
     let advance = base.integration.load_advance;
     let statics = runner.silent().map(&(1..=TRAINS).collect::<Vec<_>>(), |&k| {
         let nodes = case.settings.record.extremes_nodes;
@@ -477,6 +451,46 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
         failures,
         ..blank(runs)
     })
+}
+
+/// The ten HSLM trains on each friction set-up, labelled by train and set-up, the set-up major.
+fn train_scenarios(set_ups: [&Scenario; 2]) -> Vec<(Vec<(String, f64)>, Scenario)> {
+    let mut scenarios = Vec::with_capacity(2 * TRAINS);
+    for (f, set_up) in set_ups.into_iter().enumerate() {
+        for k in 1..=TRAINS {
+            let mut s = set_up.clone();
+            s.load.train = Some(format!("hslm-a{k}"));
+            s.load.axles.clear();
+            s.load.patches.clear();
+            scenarios.push((vec![("train".to_string(), k as f64), ("friction".to_string(), f as f64)], s));
+        }
+    }
+    scenarios
+}
+
+/// Each curve's peaks of the max downward deflection and of the max acceleration, refined to `tolerance` (m/s) on
+/// fresh runs; where a refinement fails, `failed` is told and the sweep's own maxima stand (their resolution the
+/// bracket).
+fn refine_peaks(
+    cases: &[Case],
+    points: &[Vec<SweepPoint>],
+    tolerance: f64,
+    runner: &Runner,
+    failed: &mut dyn FnMut(usize, StudyError),
+) -> Result<Vec<(RefinedPeak, RefinedPeak)>> {
+    let ids: Vec<usize> = (0..cases.len()).collect();
+    let refined = runner.silent().map_each(&ids, |&c| {
+        let refine = |metric| refine_maximum(&cases[c], &points[c], metric, (tolerance, PEAK_SCAN), runner);
+        Ok((refine(Metric::MaxDownwardDeflection)?, refine(Metric::MaxAcceleration)?))
+    })?;
+    let peaks = refined.into_iter().enumerate().map(|(c, result)| {
+        result.unwrap_or_else(|e| {
+            failed(c, e);
+            let sweep = |metric| unrefined(&points[c], metric).expect("a finished run");
+            (sweep(Metric::MaxDownwardDeflection), sweep(Metric::MaxAcceleration))
+        })
+    });
+    Ok(peaks.collect())
 }
 
 #[cfg(test)]
