@@ -116,9 +116,9 @@ pub fn run(args: &AnalyticArgs) -> Result<()> {
                     "  {:>10.2}  {:>13.3}  {:>8.2}  {:>11.3}  {:>8.2}  {:>8.3}  {:>6.3}",
                     p.speed,
                     p.max_downward_deflection * 1e3,
-                    p.max_downward_position,
+                    p.max_downward_deflection_position,
                     p.max_upward_deflection * 1e3,
-                    p.max_upward_position,
+                    p.max_upward_deflection_position,
                     p.amplification_downward,
                     p.amplification_upward
                 );

@@ -16,11 +16,11 @@ pub struct SteadyPoint {
     /// Largest downward deflection (m, magnitude).
     pub max_downward_deflection: f64,
     /// Where, in the moving frame s (m; s = x − vt for one load, x − x_head for a train).
-    pub max_downward_position: f64,
+    pub max_downward_deflection_position: f64,
     /// Largest upward deflection (m).
     pub max_upward_deflection: f64,
     /// Where, in the moving frame (m).
-    pub max_upward_position: f64,
+    pub max_upward_deflection_position: f64,
     /// Downward deflection over the static one w₀.
     pub amplification_downward: f64,
     /// Upward deflection over w₀.
@@ -93,9 +93,9 @@ impl SteadyResponse {
                 Ok(SteadyPoint {
                     speed: v,
                     max_downward_deflection: e.max_downward.magnitude,
-                    max_downward_position: e.max_downward.position,
+                    max_downward_deflection_position: e.max_downward.position,
                     max_upward_deflection: e.max_upward.magnitude,
-                    max_upward_position: e.max_upward.position,
+                    max_upward_deflection_position: e.max_upward.position,
                     amplification_downward: e.max_downward.magnitude / w0,
                     amplification_upward: e.max_upward.magnitude / w0,
                 })

@@ -91,10 +91,18 @@ pub fn sweep_plots(points: &[SweepPoint], stem: &str, title: &str, critical: Opt
 }
 
 /// The points of a sweep CSV as `frictrack sweep` writes it (columns [`CSV_COLUMNS`], and [`VEHICLE_CSV_COLUMNS`]
-/// with vehicles); the rows of failed runs (empty fields) are left out.
+/// with vehicles; an older file's names of the extremes' node and time too); the rows of failed runs (empty fields)
+/// are left out.
 pub fn read_sweep_csv(text: &str, source: &str) -> Result<Vec<SweepPoint>> {
     let table = Table::parse(text, source)?;
-    let index = |name: &str| table.column(name, source);
+    // Files of frictrack before result format 5 name the extremes' node and time `max_downward_position`, …: read
+    // under either name.
+    let index = |name: &str| {
+        table.column(name, source).or_else(|e| {
+            let old = name.replace("_deflection_position", "_position").replace("_deflection_time", "_time");
+            if old == name { Err(e) } else { table.column(&old, source).map_err(|_| e) }
+        })
+    };
     let base: Vec<usize> = CSV_COLUMNS.iter().map(|(n, _, _)| index(n)).collect::<Result<_>>()?;
     let vehicles: Option<Vec<usize>> = VEHICLE_CSV_COLUMNS.iter().map(|(n, _, _)| index(n).ok()).collect();
     Ok(table
@@ -109,17 +117,17 @@ pub fn read_sweep_csv(text: &str, source: &str) -> Result<Vec<SweepPoint>> {
                 max_upward_deflection: v[2],
                 dissipated_energy: v[3],
                 global_norm: v[4],
-                max_downward_position: v[5],
-                max_downward_time: v[6],
+                max_downward_deflection_position: v[5],
+                max_downward_deflection_time: v[6],
                 load_work: v[7],
                 energy_residual: v[8],
                 mean_iterations: v[9],
                 window_max_downward_deflection: v[10],
-                window_max_downward_position: v[11],
-                window_max_downward_time: v[12],
+                window_max_downward_deflection_position: v[11],
+                window_max_downward_deflection_time: v[12],
                 window_max_upward_deflection: v[13],
-                window_max_upward_position: v[14],
-                window_max_upward_time: v[15],
+                window_max_upward_deflection_position: v[14],
+                window_max_upward_deflection_time: v[15],
                 max_acceleration: v[16],
                 vehicles: vehicles.as_ref().map(|c| VehicleColumns {
                     min_wheel_force: r[c[0]],
@@ -148,17 +156,17 @@ mod tests {
             max_upward_deflection: 0.05,
             dissipated_energy: 12.5,
             global_norm: 0.3,
-            max_downward_position: 100.0,
-            max_downward_time: 0.5,
+            max_downward_deflection_position: 100.0,
+            max_downward_deflection_time: 0.5,
             load_work: 1e3,
             energy_residual: 1e-12,
             mean_iterations: 3.0,
             window_max_downward_deflection: 0.09,
-            window_max_downward_position: 99.0,
-            window_max_downward_time: 0.45,
+            window_max_downward_deflection_position: 99.0,
+            window_max_downward_deflection_time: 0.45,
             window_max_upward_deflection: 0.04,
-            window_max_upward_position: 98.0,
-            window_max_upward_time: 0.44,
+            window_max_upward_deflection_position: 98.0,
+            window_max_upward_deflection_time: 0.44,
             max_acceleration: 12.0,
             vehicles: None,
         };
@@ -174,6 +182,16 @@ mod tests {
         let text = String::from_utf8(csv).unwrap();
         assert!(text.lines().nth(1).unwrap().contains(",0,,,"), "{text}");
         let back = &read_sweep_csv(&text, "sweep.csv").unwrap()[0];
-        assert!(back.window_max_upward_position.is_nan() && back.window_max_upward_time.is_nan());
+        assert!(back.window_max_upward_deflection_position.is_nan() && back.window_max_upward_deflection_time.is_nan());
+        // A file of the earlier format (`max_downward_position`, …) reads back the same.
+        let mut csv = Vec::new();
+        write_csv(&points, &mut csv).unwrap();
+        let old = String::from_utf8(csv).unwrap().replacen("_deflection_position", "_position", 3).replacen(
+            "_deflection_time",
+            "_time",
+            3,
+        );
+        assert!(old.starts_with("speed,") && old.lines().next().unwrap().contains(",max_downward_position,"));
+        assert_eq!(read_sweep_csv(&old, "old.csv").unwrap(), points);
     }
 }

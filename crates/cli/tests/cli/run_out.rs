@@ -1,6 +1,6 @@
 //! `run --out DIR`: the files hold what the library computes, with their units documented beside them.
 
-use super::{frictrack, temporary_folder};
+use super::{frictrack, json, temporary_folder};
 
 fn read_csv(path: &std::path::Path) -> (Vec<String>, Vec<Vec<f64>>) {
     let text = std::fs::read_to_string(path).unwrap();
@@ -75,5 +75,38 @@ fn run_out_writes_histories_and_snapshots_that_match_the_library() {
     for figure in ["histories-deflection", "histories-moment", "snapshots-deflection", "snapshots-moment"] {
         assert!(super::is_png(&dir.join(format!("{figure}.png"))), "{figure}");
         assert!(super::is_svg(&dir.join(format!("{figure}.svg"))), "{figure}");
+    }
+}
+
+/// A sweep's CSV and a run's JSON use the same names for the same numbers: every metric a sweep row shares with
+/// `run --format json` (the extremes with their node and time, the energy terms, W̄, the iterations, the
+/// acceleration) has the run's key, and at the same speed the same value to the bit.
+#[test]
+fn a_sweep_row_and_a_run_name_the_same_numbers_alike() {
+    let run =
+        json(&frictrack(&["run", "--speed", "150", "--devices", "7", "--device-force", "50000", "--format", "json"]));
+    let sweep = frictrack(&["sweep", "--speeds", "150:150:10", "--devices", "7", "--device-force", "50000", "--quiet"]);
+    assert!(sweep.status.success(), "{}", String::from_utf8_lossy(&sweep.stderr));
+    let text = String::from_utf8_lossy(&sweep.stdout);
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let row: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let shared = [
+        "max_downward_deflection",
+        "max_downward_deflection_position",
+        "max_downward_deflection_time",
+        "max_upward_deflection",
+        "dissipated_energy",
+        "global_norm",
+        "load_work",
+        "energy_residual",
+        "mean_iterations",
+        "max_acceleration",
+    ];
+    for name in shared {
+        let column = header.iter().position(|h| *h == name).unwrap_or_else(|| panic!("no sweep column {name}"));
+        let in_sweep: f64 = row[column].parse().unwrap();
+        let in_run = run[name].as_f64().unwrap_or_else(|| panic!("no run key {name}: {run}"));
+        assert_eq!(in_sweep.to_bits(), in_run.to_bits(), "{name}: sweep {in_sweep}, run {in_run}");
     }
 }

@@ -94,7 +94,7 @@ fn analytic_superposes_a_train() {
     let crawl = json(&frictrack(&["analytic", "--speed", "1", "--train", "hslm-a1", "--format", "json"]));
     let daf = crawl["amplification_downward"].as_f64().unwrap();
     assert!((daf - 1.0).abs() < 1e-3, "DAF at 1 m/s: {daf}");
-    let at = crawl["max_downward_position"].as_f64().unwrap();
+    let at = crawl["max_downward_deflection_position"].as_f64().unwrap();
     assert!((-397.525..=0.0).contains(&at), "under the train: s = {at}");
 }
 

@@ -303,4 +303,4 @@ fn scenario_path(error: track::TrackError) -> StudyError {
 
 /// Version of what a run reports ([`crate::SweepPoint`]'s fields), part of every fingerprint so that journals of
 /// an older format are never read back as results of this one.
-const RESULT_FORMAT: u32 = 4;
+const RESULT_FORMAT: u32 = 5;

@@ -43,9 +43,9 @@ pub struct SweepPoint {
     /// W̄ (m²).
     pub global_norm: f64,
     /// Where the max downward deflection occurred (m).
-    pub max_downward_position: f64,
+    pub max_downward_deflection_position: f64,
     /// When (s).
-    pub max_downward_time: f64,
+    pub max_downward_deflection_time: f64,
     /// Work of the load (J).
     pub load_work: f64,
     /// Residual of the discrete energy balance (J).
@@ -55,15 +55,15 @@ pub struct SweepPoint {
     /// Max downward deflection while the load was inside the extremes window (m, magnitude).
     pub window_max_downward_deflection: f64,
     /// Where (m).
-    pub window_max_downward_position: f64,
+    pub window_max_downward_deflection_position: f64,
     /// When (s).
-    pub window_max_downward_time: f64,
+    pub window_max_downward_deflection_time: f64,
     /// Max upward deflection while the load was inside the extremes window (m, magnitude).
     pub window_max_upward_deflection: f64,
     /// Where (m).
-    pub window_max_upward_position: f64,
+    pub window_max_upward_deflection_position: f64,
     /// When (s).
-    pub window_max_upward_time: f64,
+    pub window_max_upward_deflection_time: f64,
     /// Largest vertical acceleration over nodes and steps (m/s², magnitude): a bridge deck's check value.
     pub max_acceleration: f64,
     /// The vehicles' columns, in a run with vehicles.
@@ -167,17 +167,17 @@ fn point_until(case: &Case, speed: f64, stop: Option<&AtomicBool>) -> Result<Swe
         max_upward_deflection: r.max_upward.magnitude,
         dissipated_energy: r.energy.dissipated(),
         global_norm: r.global_norm,
-        max_downward_position: r.max_downward.position,
-        max_downward_time: r.max_downward.time,
+        max_downward_deflection_position: r.max_downward.position,
+        max_downward_deflection_time: r.max_downward.time,
         load_work: r.energy.load_work,
         energy_residual: r.energy.residual(),
         mean_iterations: r.statistics.mean_iterations,
         window_max_downward_deflection: window.max_downward.magnitude,
-        window_max_downward_position: window.max_downward.position,
-        window_max_downward_time: window.max_downward.time,
+        window_max_downward_deflection_position: window.max_downward.position,
+        window_max_downward_deflection_time: window.max_downward.time,
         window_max_upward_deflection: window.max_upward.magnitude,
-        window_max_upward_position: window.max_upward.position,
-        window_max_upward_time: window.max_upward.time,
+        window_max_upward_deflection_position: window.max_upward.position,
+        window_max_upward_deflection_time: window.max_upward.time,
         max_acceleration: r.max_acceleration.magnitude,
         vehicles: r.vehicles.as_ref().map(VehicleColumns::of),
     })
@@ -406,17 +406,17 @@ pub const CSV_COLUMNS: [(&str, &str, &str); 17] = [
     ("max_upward_deflection", "m", "largest upward deflection over all nodes and steps (magnitude)"),
     ("dissipated_energy", "J", "energy removed by friction and viscous damping"),
     ("global_norm", "m²", "W̄ = (1/t_on)∫∫|w| dx dt over the crossing"),
-    ("max_downward_position", "m", "node of the largest downward deflection"),
-    ("max_downward_time", "s", "time of the largest downward deflection"),
+    ("max_downward_deflection_position", "m", "node of the largest downward deflection"),
+    ("max_downward_deflection_time", "s", "time of the largest downward deflection"),
     ("load_work", "J", "work of the moving load"),
     ("energy_residual", "J", "residual of the discrete energy balance"),
     ("mean_iterations", "1", "mean friction-solver iterations per step"),
     ("window_max_downward_deflection", "m", "largest downward deflection while the load is in the extremes window"),
-    ("window_max_downward_position", "m", "its node"),
-    ("window_max_downward_time", "s", "its time"),
+    ("window_max_downward_deflection_position", "m", "its node"),
+    ("window_max_downward_deflection_time", "s", "its time"),
     ("window_max_upward_deflection", "m", "largest upward deflection while the load is in the extremes window"),
-    ("window_max_upward_position", "m", "its node"),
-    ("window_max_upward_time", "s", "its time"),
+    ("window_max_upward_deflection_position", "m", "its node"),
+    ("window_max_upward_deflection_time", "s", "its time"),
     ("max_acceleration", "m/s²", "largest vertical acceleration over all nodes and steps (magnitude; bridge decks)"),
 ];
 
@@ -466,17 +466,17 @@ pub fn write_csv_rows(rows: &[SweepRow], out: &mut dyn Write) -> std::io::Result
                 p.max_upward_deflection,
                 p.dissipated_energy,
                 p.global_norm,
-                p.max_downward_position,
-                p.max_downward_time,
+                p.max_downward_deflection_position,
+                p.max_downward_deflection_time,
                 p.load_work,
                 p.energy_residual,
                 p.mean_iterations,
                 p.window_max_downward_deflection,
-                where_if(p.window_max_downward_deflection, p.window_max_downward_position),
-                where_if(p.window_max_downward_deflection, p.window_max_downward_time),
+                where_if(p.window_max_downward_deflection, p.window_max_downward_deflection_position),
+                where_if(p.window_max_downward_deflection, p.window_max_downward_deflection_time),
                 p.window_max_upward_deflection,
-                where_if(p.window_max_upward_deflection, p.window_max_upward_position),
-                where_if(p.window_max_upward_deflection, p.window_max_upward_time),
+                where_if(p.window_max_upward_deflection, p.window_max_upward_deflection_position),
+                where_if(p.window_max_upward_deflection, p.window_max_upward_deflection_time),
                 p.max_acceleration,
             ])
         )?;
