@@ -200,3 +200,22 @@ fn fixed_speed_studies_keep_every_finished_run_past_failed_ones() {
     );
     assert!(!out_dir.join("optimal-force.svg").exists(), "no figure of nothing");
 }
+
+/// `reproduce` on a scenario one study's own set-up does not fit (199 devices on a 40 m track of 39 interior nodes):
+/// that study is recorded in the report as not run, with the reason, and the seven others are run and written; the
+/// command exits with 1 naming it. Before, it stopped at the sixth study with exit 2 and no report.
+#[test]
+fn reproduce_records_a_study_that_cannot_run_on_the_scenario() {
+    let dir = temporary_folder("reproduce-not-run");
+    let scenario = write_file(&dir, "short.toml", "[mesh]\nlength = 40.0\nelements = 40\n");
+    let out_dir = dir.join("out");
+    let out = frictrack(&["reproduce", "--scenario", &scenario, "--out", out_dir.to_str().unwrap(), "--quiet"]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(stderr.contains("discrete-vs-distributed: not run on this scenario: invalid friction.devices.count = 199"));
+    let report = std::fs::read_to_string(out_dir.join("report.md")).unwrap();
+    assert!(report.contains("## 6. discrete-vs-distributed — not run on this scenario"), "{report}");
+    let sections = report.lines().filter(|l| l.starts_with("## ")).count();
+    assert_eq!(sections, 8, "{report}");
+    assert!(out_dir.join("vehicle-speed.csv").exists() && !out_dir.join("discrete-vs-distributed.csv").exists());
+}

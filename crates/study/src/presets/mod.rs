@@ -36,7 +36,7 @@ pub enum Preset {
     DiscreteSpeed,
     /// 2. Equal-cost solutions: N·F_u ∈ {3100, 1550, 310} kN for N ∈ {31, 15, 7, 3}.
     EqualCost,
-    /// 3. Optimal device force at 206 m/s for N ∈ {3, 7, 15, 31}.
+    /// 3. Optimal device force near v_cr (206 m/s for the reference case) for N ∈ {3, 7, 15, 31}.
     OptimalForce,
     /// 4. Critical speed with distributed friction f_u ∈ {0, 1, 2, 5, 10} kN/m.
     DistributedSpeed,

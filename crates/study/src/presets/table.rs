@@ -60,7 +60,7 @@ pub(super) const TABLE: [PresetEntry; 8] = [
     // 3. Preset::OptimalForce
     PresetEntry {
         name: "optimal-force",
-        title: "Optimal device force at 206 m/s",
+        title: "Optimal device force near the critical speed",
         sets: &[
             "friction: N ∈ {3, 7, 15, 31} devices, F_u scanned over 1 kN–10 MN",
             "load.speed: the critical speed v_cr rounded (206 m/s for the reference case)",
