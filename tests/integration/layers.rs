@@ -18,16 +18,21 @@ fn manifest(folder: &str) -> toml::Table {
     std::fs::read_to_string(&path).unwrap().parse().unwrap()
 }
 
-/// The workspace crates `folder` depends on, in any dependency table.
-fn workspace_dependencies(folder: &str) -> Vec<String> {
+/// The workspace crates `folder` depends on in the dependency tables `tables` of its manifest.
+fn dependencies_in(folder: &str, tables: &[&str]) -> Vec<String> {
     let manifest = manifest(folder);
     let names: Vec<&str> = LAYERS.iter().map(|(name, _)| *name).collect();
-    ["dependencies", "dev-dependencies", "build-dependencies"]
+    tables
         .iter()
         .filter_map(|table| manifest.get(*table).and_then(toml::Value::as_table))
         .flat_map(|table| table.keys().cloned())
         .filter(|dependency| names.contains(&dependency.as_str()))
         .collect()
+}
+
+/// The workspace crates `folder` depends on, in any dependency table.
+fn workspace_dependencies(folder: &str) -> Vec<String> {
+    dependencies_in(folder, &["dependencies", "dev-dependencies", "build-dependencies"])
 }
 
 /// The workspace crates `folder` reaches through its normal dependencies, directly or through another, once each.
@@ -46,10 +51,7 @@ fn transitive_dependencies(folder: &str) -> Vec<String> {
 
 /// The workspace crates `folder` depends on in its `[dependencies]` (what its library links).
 fn normal_dependencies(folder: &str) -> Vec<String> {
-    let manifest = manifest(folder);
-    let names: Vec<&str> = LAYERS.iter().map(|(name, _)| *name).collect();
-    let table = manifest.get("dependencies").and_then(toml::Value::as_table);
-    table.into_iter().flat_map(|t| t.keys().cloned()).filter(|d| names.contains(&d.as_str())).collect()
+    dependencies_in(folder, &["dependencies"])
 }
 
 #[test]
@@ -85,16 +87,9 @@ fn the_laws_and_the_engine_reach_no_beam() {
     assert!(transitive_dependencies("crates/track").contains(&"fem-beam".to_string()));
 }
 
-/// Every `.rs` file under `folder` (relative to the workspace), recursively.
+/// Every `.rs` file under `folder`, recursively.
 fn rust_files(folder: &std::path::Path, out: &mut Vec<std::path::PathBuf>) {
-    for entry in std::fs::read_dir(folder).unwrap() {
-        let path = entry.unwrap().path();
-        if path.is_dir() {
-            rust_files(&path, out);
-        } else if path.extension().is_some_and(|e| e == "rs") {
-            out.push(path);
-        }
-    }
+    super::files_under(folder, &|name| name.ends_with(".rs"), out);
 }
 
 /// The engine knows no beam (issue 16, docs/architecture.md): nscd depends on no beam crate in any dependency table,

@@ -5,19 +5,11 @@ use std::path::{Path, PathBuf};
 
 /// Every text file of the repository that a reader or the build reads, outside build output and version control.
 fn text_files(folder: &Path, out: &mut Vec<PathBuf>) {
-    for entry in std::fs::read_dir(folder).unwrap() {
-        let path = entry.unwrap().path();
-        let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("");
-        if path.is_dir() {
-            if !matches!(name, "target" | ".git" | "snapshots") {
-                text_files(&path, out);
-            }
-        } else if ["rs", "md", "toml", "yml", "yaml", "sh", "py"].iter().any(|e| name.ends_with(&format!(".{e}")))
-            || name == "run"
-        {
-            out.push(path);
-        }
-    }
+    let text = |name: &str| {
+        name == "run"
+            || ["rs", "md", "toml", "yml", "yaml", "sh", "py"].iter().any(|e| name.ends_with(&format!(".{e}")))
+    };
+    super::files_under(folder, &text, out);
 }
 
 #[test]

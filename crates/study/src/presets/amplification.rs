@@ -1,7 +1,7 @@
 //! Study 5: dynamic amplification at mid-span, φ_w(τ) = w/w_sta and φ_M(τ) = M/M_sta, at ¼, ½, ¾ and 1 × v_cr for
 //! f_u ∈ {1, 2} kN/m (docs/theory.md §6–§7).
 
-use super::{StudyData, StudyFailure, blank, nothing_finished, with_distributed};
+use super::{StudyData, blank, keep_finished, nothing_finished, with_distributed};
 use crate::error::Result;
 use crate::figures::quantity_figure;
 use crate::metrics::{amplification, static_midspan};
@@ -17,7 +17,6 @@ pub(super) fn study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
     let scale = SpeedScale::of(base)?;
     let speeds = [(0.25, 50.0), (0.5, 100.0), (0.75, 150.0), (1.0, 200.0)].map(|(f, v)| scale.fraction(f, v));
     let combos: Vec<(f64, f64)> = [1e3, 2e3].into_iter().flat_map(|f| speeds.map(|v| (f, v))).collect();
-    // A failed run is recorded and leaves its curve out; every other run is kept.
     // Built before any run: bad input is refused (exit 2), not recorded as a failed run.
     let cases = combos
         .iter()
@@ -28,9 +27,9 @@ pub(super) fn study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
             s.build()
         })
         .collect::<Result<Vec<_>>>()?;
-    let items: Vec<usize> = (0..combos.len()).collect();
+    let indices: Vec<usize> = (0..combos.len()).collect();
     // A failed run is recorded and leaves its curve out; every other run is kept.
-    let results = runner.map_each(&items, |&i| {
+    let results = runner.map_each(&indices, |&i| {
         let ((f, v), case) = (combos[i], &cases[i]);
         let samples = runner.cached(&format!("{:016x}@{v}/midspan-amplification", case.fingerprint), || {
             let r = runner.simulate(case, &case.settings)?;
@@ -39,18 +38,8 @@ pub(super) fn study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
         Ok((f, v, samples))
     })?;
     let mut failures = Vec::new();
-    let results: Vec<_> = results
-        .into_iter()
-        .zip(&combos)
-        .filter_map(|(result, &(f, v))| {
-            result
-                .map_err(|e| {
-                    let case = format!("force_per_length = {f}");
-                    failures.push(StudyFailure { case, speed: Some(v), error: e.to_string() })
-                })
-                .ok()
-        })
-        .collect();
+    let name = |i: usize| (format!("force_per_length = {}", combos[i].0), Some(combos[i].1));
+    let results: Vec<_> = keep_finished(results, name, &mut failures).into_iter().map(|(_, r)| r).collect();
     if results.is_empty() {
         return Err(nothing_finished("the amplification study".into(), &failures));
     }

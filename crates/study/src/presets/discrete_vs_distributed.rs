@@ -1,7 +1,7 @@
 //! Study 6: 199 devices of 1 kN against f_u = 0.995 kN/m, equal capacity, at ¾ v_cr: mid-span deflection and
 //! the friction mobilised (force over capacity) side by side (docs/theory.md §7).
 
-use super::{StudyData, StudyFailure, blank, nothing_finished, with_devices, with_distributed};
+use super::{StudyData, StudyFailure, blank, keep_finished, nothing_finished, with_devices, with_distributed};
 use crate::error::Result;
 use crate::figures::quantity_figure;
 use crate::number::row;
@@ -30,7 +30,8 @@ pub(super) fn study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
     }
     let csv = csv(&runs);
     let dissipated = |i: usize| runs.iter().find(|r| r.0 == i).map(|r| r.1.energy.dissipated());
-    let (lines, summary) = match runs.as_slice() {
+    // (largest gap between the two histories, peak of the first) (m), when both ran.
+    let (lines, comparison) = match runs.as_slice() {
         [(_, a, _), (_, b, _)] => {
             let (a, b) = (&a.histories[0], &b.histories[0]);
             let peak = a.deflection.iter().fold(0.0f64, |m, w| m.max(w.abs()));
@@ -53,7 +54,7 @@ pub(super) fn study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
         _ => (vec![format!("no comparison: the {} run failed (see the failures)", failures[0].case)], None),
     };
     let nan = f64::NAN;
-    let (gap, peak) = summary.unwrap_or((nan, nan));
+    let (gap, peak) = comparison.unwrap_or((nan, nan));
     let headline = vec![
         format!(
             "With equal capacity, 199 devices of 1 kN and f_u = 0.995 kN/m give mid-span histories within {:.2} mm of each other on a {:.1} mm peak.",
@@ -64,8 +65,8 @@ pub(super) fn study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
     ];
     let summary = json!({
         "speed": speed,
-        "max_history_gap": summary.map(|s| s.0),
-        "peak_midspan_deflection": summary.map(|s| s.1),
+        "max_history_gap": comparison.map(|c| c.0),
+        "peak_midspan_deflection": comparison.map(|c| c.1),
         "dissipated_devices": dissipated(0),
         "dissipated_distributed": dissipated(1),
     });
@@ -93,16 +94,9 @@ fn run_both(
         Ok((runner.simulate(case, &case.settings)?, capacity))
     })?;
     let mut failures = Vec::new();
-    let mut runs = Vec::new();
-    for (i, result) in results.into_iter().enumerate() {
-        match result {
-            Ok((run, capacity)) => runs.push((i, run, capacity)),
-            Err(e) => {
-                let case = format!("model = {}", MODELS[i]);
-                failures.push(StudyFailure { case, speed: Some(speed), error: e.to_string() })
-            }
-        }
-    }
+    let name = |i: usize| (format!("model = {}", MODELS[i]), Some(speed));
+    let kept = keep_finished(results, name, &mut failures);
+    let runs = kept.into_iter().map(|(i, (run, capacity))| (i, run, capacity)).collect();
     Ok((runs, failures))
 }
 

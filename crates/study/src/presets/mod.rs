@@ -223,6 +223,26 @@ pub(super) fn failed_runs(rows: &[Vec<SweepRow>], name: impl Fn(usize) -> String
     rows.iter().enumerate().flat_map(failed).collect()
 }
 
+/// The finished results of a study's runs, each with its index, in order; each failed run is recorded in
+/// `failures` under the case and speed `name(i)` gives it.
+pub(super) fn keep_finished<R>(
+    results: Vec<Result<R>>,
+    name: impl Fn(usize) -> (String, Option<f64>),
+    failures: &mut Vec<StudyFailure>,
+) -> Vec<(usize, R)> {
+    let mut kept = Vec::with_capacity(results.len());
+    for (i, result) in results.into_iter().enumerate() {
+        match result {
+            Ok(r) => kept.push((i, r)),
+            Err(e) => {
+                let (case, speed) = name(i);
+                failures.push(StudyFailure { case, speed, error: e.to_string() });
+            }
+        }
+    }
+    kept
+}
+
 /// The error of a study (or a curve) `case` of which every run failed, naming the first failure of that case.
 pub(super) fn nothing_finished(case: String, failures: &[StudyFailure]) -> StudyError {
     let first = failures.iter().find(|f| f.case == case).or(failures.first());

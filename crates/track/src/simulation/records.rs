@@ -49,9 +49,8 @@ pub(super) struct DeflectionRecord {
     deflections: NodalDeflections,
     pub(super) extremes: (Extreme, Extreme),
     pub(super) acceleration: Extreme,
+    /// The extremes while the load is in the window of load positions, if one is set (its range with them).
     pub(super) window: Option<WindowExtremes>,
-    /// The window of load positions [A, B] (m), if any.
-    load_range: Option<(f64, f64)>,
     /// ∫‖w‖ dt over the crossing (m²·s) and the last norm of it.
     pub(super) norm_integral: f64,
     previous_norm: f64,
@@ -68,12 +67,10 @@ impl DeflectionRecord {
         crossing_steps: usize,
     ) -> Self {
         let deflections = NodalDeflections::new(model.mesh(), model.dofs(), record.extremes_nodes);
-        let load_range = record.extremes_window;
         let mut this = Self {
             extremes: (Extreme::default(), Extreme::default()),
             acceleration: Extreme::default(),
-            window: load_range.map(|load_range| WindowExtremes { load_range, ..Default::default() }),
-            load_range,
+            window: record.extremes_window.map(|load_range| WindowExtremes { load_range, ..Default::default() }),
             norm_integral: 0.0,
             previous_norm: 0.0,
             crossing_steps,
@@ -88,8 +85,7 @@ impl DeflectionRecord {
     /// Keep the whole-run extremes, and the window's when the load at `load_position` (m) is inside it.
     fn update(&mut self, scan: &DeflectionScan, load_position: f64, time: f64) {
         scan.update(&mut self.extremes, time);
-        let inside = self.load_range.is_some_and(|(a, b)| (a..=b).contains(&load_position));
-        if let Some(w) = self.window.as_mut().filter(|_| inside) {
+        if let Some(w) = self.window.as_mut().filter(|w| (w.load_range.0..=w.load_range.1).contains(&load_position)) {
             scan.update_window(w, time);
         }
     }
@@ -98,14 +94,10 @@ impl DeflectionRecord {
 impl Record for DeflectionRecord {
     fn record(&mut self, s: &StepState<'_>) -> Result<()> {
         let scan = self.deflections.scan(&s.q[..s.beam]);
-        scan.update(&mut self.extremes, s.time);
+        self.update(&scan, s.load.position(s.time), s.time);
         let (a, x) = self.deflections.largest_acceleration(s.v, s.previous_v, s.h);
         if a > self.acceleration.magnitude {
             self.acceleration = Extreme { magnitude: a, position: x, time: s.time };
-        }
-        let inside = self.load_range.is_some_and(|(a, b)| (a..=b).contains(&s.load.position(s.time)));
-        if let Some(w) = self.window.as_mut().filter(|_| inside) {
-            scan.update_window(w, s.time);
         }
         if s.step <= self.crossing_steps {
             self.norm_integral += 0.5 * (scan.norm + self.previous_norm) * s.h;
