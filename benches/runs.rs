@@ -6,16 +6,16 @@
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use fem_beam::BeamModel;
 use fem_beam::reference::uic60_on_soft_soil;
-use friction::InteractionSet;
 use std::hint::black_box;
 use std::time::Duration;
 use track::Load;
+use track::PlacedInteractions;
 use track::{Devices, DistributedFriction};
 use track::{RunSettings, Simulation};
 
-fn cases(model: &BeamModel) -> Vec<(&'static str, InteractionSet)> {
+fn cases(model: &BeamModel) -> Vec<(&'static str, PlacedInteractions)> {
     vec![
-        ("no_friction", InteractionSet::new()),
+        ("no_friction", PlacedInteractions::new()),
         ("devices_7_100kN", Devices::uniform(7, 100e3).interactions(model).unwrap()),
         ("devices_31_100kN", Devices::uniform(31, 100e3).interactions(model).unwrap()),
         ("distributed_1kN_per_m", DistributedFriction::new(1e3).interactions(model).unwrap()),
@@ -90,7 +90,7 @@ fn friction_free_against_bare_solves(c: &mut Criterion) {
             black_box(q)
         })
     });
-    let none = InteractionSet::new();
+    let none = PlacedInteractions::new();
     group.bench_function(BenchmarkId::new("whole_run_no_friction", steps), |b| {
         b.iter(|| Simulation::new(&model, black_box(&none), &settings).unwrap().run().unwrap())
     });
@@ -108,7 +108,7 @@ fn scaling(c: &mut Criterion) {
         case.mesh.elements = elements;
         let model = case.model().unwrap();
         let mut cases = vec![
-            ("no_friction", InteractionSet::new()),
+            ("no_friction", PlacedInteractions::new()),
             ("devices_31_100kN", Devices::uniform(31, 100e3).interactions(&model).unwrap()),
         ];
         // Distributed friction on 2000 elements takes ~15 s a run: measured by the probe example instead.
@@ -132,7 +132,7 @@ fn trains(c: &mut Criterion) {
     let mut group = c.benchmark_group("train");
     group.sample_size(10).warm_up_time(Duration::from_secs(1)).measurement_time(Duration::from_secs(5));
     for (name, interactions) in [
-        ("no_friction", InteractionSet::new()),
+        ("no_friction", PlacedInteractions::new()),
         ("devices_31_100kN", Devices::uniform(31, 100e3).interactions(&model).unwrap()),
     ] {
         for train in ["single", "hslm-a1"] {
@@ -153,7 +153,7 @@ fn trains(c: &mut Criterion) {
 /// linear contact spring, and rigid (position projection every step, θ = 0.51).
 fn vehicles(c: &mut Criterion) {
     use track::vehicle::builtin::QuarterCar;
-    use track::vehicle::consist::{VehicleSettings, WheelRail};
+    use track::vehicle::{consist::VehicleSettings, wheel_rail::WheelRail};
 
     let model = uic60_on_soft_soil().model().unwrap();
     let settings = RunSettings::default();
@@ -183,7 +183,7 @@ fn vehicles(c: &mut Criterion) {
     ];
     for (name, s) in cases {
         group.bench_function(BenchmarkId::new(name, steps), |b| {
-            b.iter(|| Simulation::new(&model, black_box(&InteractionSet::new()), s).unwrap().run().unwrap())
+            b.iter(|| Simulation::new(&model, black_box(&PlacedInteractions::new()), s).unwrap().run().unwrap())
         });
     }
     group.finish();

@@ -92,8 +92,8 @@ pub fn run(args: &AnalyticArgs) -> Result<()> {
                 "infinite beam{}, EI = {:.4} MN·m², ρA = {:.3} kg/m, k_f = {:.1} kN/m², {}, ζ = {:.4}, \
                  v_cr = {:.2} m/s, static w₀ = {:.2} mm",
                 if scenario.title.is_empty() { String::new() } else { format!(" ({})", scenario.title) },
-                scenario.beam.beam().bending_stiffness() / 1e6,
-                scenario.beam.beam().mass_per_length(),
+                scenario.beam.bending_stiffness() / 1e6,
+                scenario.beam.mass_per_length(),
                 foundation.stiffness / 1e3,
                 match &train {
                     Some(t) => format!(

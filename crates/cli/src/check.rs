@@ -50,8 +50,7 @@ fn check(path: &std::path::Path) -> Result<()> {
         (devices, distributed) => {
             let mut parts = Vec::new();
             if let Some(d) = devices {
-                let placed =
-                    case.interactions.kinds().iter().filter(|k| **k == friction::InteractionKind::Device).count();
+                let placed = case.interactions.count(track::SectionKind::Device);
                 parts.push(format!("{placed} devices of {:.1} kN", d.force.unwrap_or(0.0) / 1e3));
             }
             if let Some(d) = distributed {

@@ -133,11 +133,8 @@ fn main() -> ExitCode {
 /// Clarabel is limited by its own stopping criteria, the interior point by its iteration cap at tight tolerances.
 fn hint(error: &anyhow::Error) -> Option<&'static str> {
     use nscd::NscdError;
-    let stepping = match (error.downcast_ref::<study::StudyError>(), error.downcast_ref::<track::TrackError>()) {
-        (Some(study::StudyError::Stepping(e)), _) | (_, Some(track::TrackError::Engine(e))) => Some(e),
-        _ => error.downcast_ref::<NscdError>(),
-    };
-    match stepping? {
+    let Some(study::StudyError::Stepping(stepping)) = error.downcast_ref::<study::StudyError>() else { return None };
+    match stepping {
         NscdError::Unconverged { status: nscd::StepStatus::Stalled, fallbacks: Some(_), .. } => Some(
             "every solver stalled short of the tolerance, which lies below what the step's arithmetic resolves: \
              raise --tolerance (the default 1e-6 is met in every case measured)",
@@ -159,17 +156,13 @@ fn hint(error: &anyhow::Error) -> Option<&'static str> {
 
 /// 2 for invalid input (a parameter the model rejects), 130 after Ctrl-C, 1 for anything else (e.g. a solver
 /// failure).
+/// The library reaches the commands through `study` only: every error of a lower layer arrives as a
+/// [`study::StudyError`], which says whether it is the user's input.
 pub(crate) fn error_code(error: &anyhow::Error) -> u8 {
     use study::StudyError;
-    if matches!(error.downcast_ref::<StudyError>(), Some(StudyError::Interrupted)) {
-        return interrupt::EXIT_CODE;
+    match error.downcast_ref::<StudyError>() {
+        Some(StudyError::Interrupted) => interrupt::EXIT_CODE,
+        Some(e) if e.is_invalid_input() => 2,
+        _ => 1,
     }
-    // Each layer's error says whether it is the user's input.
-    let invalid = error
-        .downcast_ref::<StudyError>()
-        .map(StudyError::is_invalid_input)
-        .or_else(|| error.downcast_ref::<track::TrackError>().map(track::TrackError::is_invalid_input))
-        .or_else(|| error.downcast_ref::<nscd::NscdError>().map(nscd::NscdError::is_invalid_input))
-        .or_else(|| error.downcast_ref::<fem_beam::FemError>().map(fem_beam::FemError::is_invalid_input));
-    if invalid == Some(true) { 2 } else { 1 }
 }

@@ -146,7 +146,7 @@ fn write_outputs(
     }
     if let Some(vehicles) = &result.vehicles {
         write_atomically(&out.join("wheels.csv"), study::vehicle_output::wheels_csv(vehicles).as_bytes())?;
-        let range = report.extremes_nodes.unwrap_or((0.0, scenario.mesh.length));
+        let range = report.extremes.extremes_nodes.unwrap_or((0.0, scenario.mesh.length));
         let mut spec = study::vehicle_output::wheel_plot(vehicles, &title, range);
         if spec.subtitle.is_empty() {
             spec.subtitle = subtitle;

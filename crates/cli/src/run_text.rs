@@ -170,28 +170,28 @@ fn print_extremes(r: &RunSummary, wording: &WindowWording) {
         }
         None => println!("    max {what:<8} deflection      none"),
     };
-    match r.extremes_nodes {
+    match r.extremes.extremes_nodes {
         Some((a, b)) => println!("  extremes over the nodes at {a:.1}–{b:.1} m ([output] extremes_nodes); whole run:"),
         None => println!("  whole run (includes the entry transient from rest and the exit near x = L):"),
     }
     let place = |x: Option<f64>, t: Option<f64>| x.zip(t);
     line(
         "downward",
-        r.max_downward_deflection,
-        place(r.max_downward_deflection_position, r.max_downward_deflection_time),
+        r.extremes.max_downward_deflection,
+        place(r.extremes.max_downward_deflection_position, r.extremes.max_downward_deflection_time),
         None,
     );
     line(
         "upward",
-        r.max_upward_deflection,
-        place(r.max_upward_deflection_position, r.max_upward_deflection_time),
+        r.extremes.max_upward_deflection,
+        place(r.extremes.max_upward_deflection_position, r.extremes.max_upward_deflection_time),
         None,
     );
-    let (a, b) = r.extremes_window;
+    let (a, b) = r.extremes.extremes_window;
     let why = wording.why;
-    let nodes = if r.extremes_nodes.is_some() { "the nodes above" } else { "every node" };
+    let nodes = if r.extremes.extremes_nodes.is_some() { "the nodes above" } else { "every node" };
     println!("  while the {load} is at {a:.1}–{b:.1} m ({why}), over {nodes}:");
-    match (&r.window_max_downward, &r.window_max_upward) {
+    match (&r.extremes.window_max_downward, &r.extremes.window_max_upward) {
         (None, None) => println!("    none: the {load} never was in that range during the run"),
         (down, up) => {
             for (what, e) in [("downward", down), ("upward", up)] {
@@ -208,45 +208,45 @@ fn print_numbers(r: &RunSummary) {
     println!(
         "  static (the {} standing at every position): max downward {:.3} mm; dynamic amplification {:.3}",
         if r.train.is_some() { "train" } else { "load" },
-        r.static_max_downward_deflection * 1e3,
-        r.dynamic_amplification
+        r.extremes.static_max_downward_deflection * 1e3,
+        r.extremes.dynamic_amplification
     );
-    match place(r.max_acceleration_position, r.max_acceleration_time) {
+    match place(r.extremes.max_acceleration_position, r.extremes.max_acceleration_time) {
         Some((x, t)) => println!(
             "  max acceleration {:.3} m/s² at x = {x:.1} m, t = {t:.4} s (the step's mean; a bridge deck's check value)",
-            r.max_acceleration
+            r.extremes.max_acceleration
         ),
         None => println!("  max acceleration none (the beam never moved)"),
     }
-    println!("  global norm W̄          {:>9.4} m²", r.global_norm);
+    println!("  global norm W̄          {:>9.4} m²", r.extremes.global_norm);
     println!(
         "  energy (J): load work {:.4e}, dissipated {:.4e} (friction {:.4e}, viscous {:.4e}), numerical {:.4e}, balance residual {:.2e}",
-        r.load_work,
-        r.dissipated_energy,
-        r.friction_dissipation,
-        r.viscous_dissipation,
-        r.numerical_dissipation,
-        r.energy_residual
+        r.energy.load_work,
+        r.energy.dissipated_energy,
+        r.energy.friction_dissipation,
+        r.energy.viscous_dissipation,
+        r.energy.numerical_dissipation,
+        r.energy.energy_residual
     );
     println!(
         "  {} steps of {:.3e} s, {} friction sections ({:.0} re-solved per step), solver {}: {:.2} iterations/step \
          (max {}), max residual {:.2e} m/s",
-        r.steps,
-        r.time_step,
-        r.sections,
-        r.mean_sections_solved,
-        r.solver,
-        r.mean_iterations,
-        r.max_iterations,
-        r.max_residual
+        r.stepping.steps,
+        r.stepping.time_step,
+        r.stepping.sections,
+        r.stepping.mean_sections_solved,
+        r.stepping.solver,
+        r.stepping.mean_iterations,
+        r.stepping.max_iterations,
+        r.stepping.max_residual
     );
-    if r.fallback_steps > 0 {
-        let by: Vec<String> = r.fallbacks.iter().map(|f| format!("{} ({})", f.solver, f.steps)).collect();
+    if r.stepping.fallback_steps > 0 {
+        let by: Vec<String> = r.stepping.fallbacks.iter().map(|f| format!("{} ({})", f.solver, f.steps)).collect();
         println!(
             "  fallback: {} failed on {} of {} steps, solved instead by {} (docs/theory.md §5)",
-            r.solver,
-            r.fallback_steps,
-            r.steps,
+            r.stepping.solver,
+            r.stepping.fallback_steps,
+            r.stepping.steps,
             by.join(", ")
         );
     }

@@ -37,7 +37,8 @@ pub fn run(args: &TrainsArgs) -> Result<()> {
         let trains: Vec<study::trains::TrainSummary> = Train::catalogue()
             .iter()
             .map(|n| Train::named(n, single_force).map(|t| study::trains::TrainSummary::of(&t)))
-            .collect::<Result<_, _>>()?;
+            .collect::<Result<_, _>>()
+            .map_err(study::StudyError::from)?;
         match args.format {
             Format::Json => println!("{}", serde_json::to_string_pretty(&trains)?),
             Format::Text => {
@@ -51,7 +52,7 @@ pub fn run(args: &TrainsArgs) -> Result<()> {
         return Ok(());
     };
     let train = study::trains::named_or_file(name, single_force, "train")?;
-    train.validate()?;
+    train.validate().map_err(study::StudyError::from)?;
     let listing = TrainListing {
         name: train.name.clone(),
         axles: train.axles.iter().map(|a| AxleListing { offset: a.offset, force: a.force }).collect(),

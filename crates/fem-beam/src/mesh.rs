@@ -4,6 +4,7 @@ use crate::error::{FemError, Result, positive};
 
 /// Uniform 1-D mesh of equal Hermite elements.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize), serde(default, deny_unknown_fields))]
 pub struct Mesh {
     /// Beam length L (m). Default 200 m; must be > 0.
     pub length: f64,

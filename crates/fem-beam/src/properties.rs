@@ -7,6 +7,7 @@ use crate::error::{FemError, Result, non_negative, positive};
 
 /// Cross-section and material of the rail (an Euler–Bernoulli beam). SI units.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize), serde(default, deny_unknown_fields))]
 pub struct Beam {
     /// Young's modulus E (Pa). Default 210 GPa; must be > 0.
     pub youngs_modulus: f64,

@@ -52,6 +52,24 @@ pub struct Crossing {
 /// Largest number of modes × steps (each step four dense solves of (modes + 1)²·(modes + 1)/3).
 const MAX_WORK: f64 = 1e11;
 
+impl Oscillator {
+    /// Check every field; the error names the first bad one.
+    pub fn validate(&self) -> Result<()> {
+        positive("wheel_mass", self.wheel_mass)?;
+        non_negative("body_mass", self.body_mass)?;
+        non_negative("damping", self.damping)?;
+        if self.body_mass > 0.0 {
+            positive("stiffness", self.stiffness)?;
+        }
+        Ok(())
+    }
+
+    /// Whether there is a body above the wheel (else a moving mass).
+    fn has_body(&self) -> bool {
+        self.body_mass > 0.0
+    }
+}
+
 impl SimplySupportedSpan {
     /// `oscillator` crossing the span at `speed` (m/s), `modes` modes, RK4 steps of at most `step` (s) and at most
     /// 1/ω_modes (RK4 is stable to ω h < 2.8; at ω h = 1 its error on the highest mode is 1e-3 a period); the
@@ -63,15 +81,10 @@ impl SimplySupportedSpan {
         modes: usize,
         step: f64,
     ) -> Result<Crossing> {
-        positive("wheel_mass", oscillator.wheel_mass)?;
-        non_negative("body_mass", oscillator.body_mass)?;
-        non_negative("damping", oscillator.damping)?;
-        if oscillator.body_mass > 0.0 {
-            positive("stiffness", oscillator.stiffness)?;
-        }
+        oscillator.validate()?;
         positive("speed", speed)?;
         positive("step", step)?;
-        let (l, rho_a) = (self.length(), self.mass_per_length());
+        let l = self.length();
         let steps = (l / speed / step.min(1.0 / self.omega(modes.max(1)))).ceil();
         if !(1..=2_000).contains(&modes) || (modes as f64).powi(3) * steps > MAX_WORK {
             return Err(FemError::InvalidCount {
@@ -82,97 +95,134 @@ impl SimplySupportedSpan {
         }
         let steps = steps as usize;
         let h = l / speed / steps as f64;
+        let modal_mass = 0.5 * self.mass_per_length() * l;
+        let motion = ModalMotion {
+            oscillator: *oscillator,
+            speed,
+            length: l,
+            modes,
+            modal_mass,
+            modal_stiffness: (1..=modes).map(|k| modal_mass * self.omega(k).powi(2)).collect(),
+        };
         let n = modes + 1;
-        let modal_mass = 0.5 * rho_a * l;
-        let modal_stiffness: Vec<f64> = (1..=modes).map(|k| modal_mass * self.omega(k).powi(2)).collect();
-        let o = *oscillator;
-        let body = o.body_mass > 0.0;
-        // φ, φ′, φ″ at the wheel at time t.
-        let shapes = |t: f64| {
-            let x = speed * t;
-            let mut s = (vec![0.0; modes], vec![0.0; modes], vec![0.0; modes]);
-            for k in 0..modes {
-                let a = (k + 1) as f64 * PI / l;
-                let (sin, cos) = (a * x).sin_cos();
-                (s.0[k], s.1[k], s.2[k]) = (sin, a * cos, -a * a * sin);
-            }
-            s
-        };
-        // ÿ = M⁻¹(F − C ẏ − K y) at time t for y = (q, z_b), ẏ; returns ÿ.
-        let acceleration = |t: f64, y: &[f64], v: &[f64]| -> Vec<f64> {
-            let (phi, dphi, ddphi) = shapes(t);
-            let mut m = vec![0.0; n * n];
-            let mut rhs = vec![0.0; n];
-            let dot = |a: &[f64], b: &[f64]| a.iter().zip(b).map(|(x, y)| x * y).sum::<f64>();
-            let (wc, dwc_q, dwc_x, curv) =
-                (dot(&phi, &y[..modes]), dot(&phi, &v[..modes]), dot(&dphi, &y[..modes]), dot(&ddphi, &y[..modes]));
-            let slope_rate = dot(&dphi, &v[..modes]);
-            let (zb, dzb) = if body { (y[modes], v[modes]) } else { (0.0, 0.0) };
-            // λ without its m_u φᵀq̈ part: m_u(g + 2vφ′ᵀq̇ + v²φ″ᵀq) + k_s(w_c − z_b) + c_s(ẇ_c − ż_b).
-            let spring = if body { o.stiffness * (wc - zb) + o.damping * (dwc_q + speed * dwc_x - dzb) } else { 0.0 };
-            let known = o.wheel_mass * (GRAVITY + 2.0 * speed * slope_rate + speed * speed * curv) + spring;
-            for i in 0..modes {
-                m[i * n + i] = modal_mass;
-                for j in 0..modes {
-                    m[i * n + j] += o.wheel_mass * phi[i] * phi[j];
-                }
-                rhs[i] = -modal_stiffness[i] * y[i] - known * phi[i];
-            }
-            if body {
-                m[modes * n + modes] = o.body_mass;
-                rhs[modes] =
-                    -o.body_mass * GRAVITY - o.stiffness * (zb - wc) - o.damping * (dzb - dwc_q - speed * dwc_x);
-            } else {
-                m[modes * n + modes] = 1.0;
-            }
-            // M(t) is symmetric positive definite (a modal mass plus m_u φφᵀ, and M_s or 1).
-            let m = nalgebra::DMatrix::from_row_slice(n, n, &m);
-            let rhs = nalgebra::DVector::from_vec(rhs);
-            m.cholesky().expect("M(t) is positive definite").solve(&rhs).data.into()
-        };
-        let contact = |t: f64, y: &[f64], v: &[f64], a: &[f64]| -> f64 {
-            let (phi, dphi, ddphi) = shapes(t);
-            let dot = |p: &[f64], q: &[f64]| p.iter().zip(q).map(|(x, y)| x * y).sum::<f64>();
-            let ddwc = dot(&phi, &a[..modes])
-                + 2.0 * speed * dot(&dphi, &v[..modes])
-                + speed * speed * dot(&ddphi, &y[..modes]);
-            let wc = dot(&phi, &y[..modes]);
-            let dwc = dot(&phi, &v[..modes]) + speed * dot(&dphi, &y[..modes]);
-            let spring = if body { o.stiffness * (wc - y[modes]) + o.damping * (dwc - v[modes]) } else { 0.0 };
-            o.wheel_mass * (GRAVITY + ddwc) + spring
-        };
         let mut y = vec![0.0; n];
         let mut v = vec![0.0; n];
-        if body {
-            y[modes] = -o.body_mass * GRAVITY / o.stiffness;
+        if oscillator.has_body() {
+            y[modes] = -oscillator.body_mass * GRAVITY / oscillator.stiffness;
         }
-        let midspan = |y: &[f64]| (0..modes).map(|k| y[k] * ((k + 1) as f64 * PI / 2.0).sin()).sum::<f64>();
         let mut out = Crossing::default();
         let mut record = |t: f64, y: &[f64], v: &[f64]| {
-            let a = acceleration(t, y, v);
+            let a = motion.acceleration(t, y, v);
             out.time.push(t);
-            out.midspan.push(midspan(y));
-            out.contact_force.push(contact(t, y, v, &a));
+            out.midspan.push(motion.midspan(y));
+            out.contact_force.push(motion.contact(t, y, v, &a));
         };
         record(0.0, &y, &v);
         for k in 0..steps {
             let t = k as f64 * h;
-            // RK4 on (y, v)' = (v, a(t, y, v)).
-            let axpy = |a: &[f64], s: f64, b: &[f64]| a.iter().zip(b).map(|(x, d)| x + s * d).collect::<Vec<f64>>();
-            let (k1y, k1v) = (v.clone(), acceleration(t, &y, &v));
-            let (y2, v2) = (axpy(&y, 0.5 * h, &k1y), axpy(&v, 0.5 * h, &k1v));
-            let (k2y, k2v) = (v2.clone(), acceleration(t + 0.5 * h, &y2, &v2));
-            let (y3, v3) = (axpy(&y, 0.5 * h, &k2y), axpy(&v, 0.5 * h, &k2v));
-            let (k3y, k3v) = (v3.clone(), acceleration(t + 0.5 * h, &y3, &v3));
-            let (y4, v4) = (axpy(&y, h, &k3y), axpy(&v, h, &k3v));
-            let (k4y, k4v) = (v4.clone(), acceleration(t + h, &y4, &v4));
-            for i in 0..n {
-                y[i] += h / 6.0 * (k1y[i] + 2.0 * k2y[i] + 2.0 * k3y[i] + k4y[i]);
-                v[i] += h / 6.0 * (k1v[i] + 2.0 * k2v[i] + 2.0 * k3v[i] + k4v[i]);
-            }
+            motion.runge_kutta_step(t, h, &mut y, &mut v);
             record(t + h, &y, &v);
         }
         Ok(out)
+    }
+}
+
+/// The modal equations of the oscillator on the span, in y = (q, z_b) (z_b absent without a body: its row is a
+/// unit mass at rest).
+struct ModalMotion {
+    oscillator: Oscillator,
+    speed: f64,
+    length: f64,
+    modes: usize,
+    /// ρAL/2 (kg).
+    modal_mass: f64,
+    /// ρAL/2·ω_n² (N/m).
+    modal_stiffness: Vec<f64>,
+}
+
+/// aᵀb.
+fn dot(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum::<f64>()
+}
+
+impl ModalMotion {
+    /// φ, φ′, φ″ of every mode at the wheel at time t.
+    fn shapes(&self, t: f64) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
+        let x = self.speed * t;
+        let modes = self.modes;
+        let mut s = (vec![0.0; modes], vec![0.0; modes], vec![0.0; modes]);
+        for k in 0..modes {
+            let a = (k + 1) as f64 * PI / self.length;
+            let (sin, cos) = (a * x).sin_cos();
+            (s.0[k], s.1[k], s.2[k]) = (sin, a * cos, -a * a * sin);
+        }
+        s
+    }
+
+    /// ÿ = M(t)⁻¹(F − C ẏ − K y) at time t for y, ẏ = v.
+    fn acceleration(&self, t: f64, y: &[f64], v: &[f64]) -> Vec<f64> {
+        let (o, speed, modes, n) = (self.oscillator, self.speed, self.modes, self.modes + 1);
+        let body = o.has_body();
+        let (phi, dphi, ddphi) = self.shapes(t);
+        let mut m = vec![0.0; n * n];
+        let mut rhs = vec![0.0; n];
+        let (wc, dwc_q, dwc_x, curv) =
+            (dot(&phi, &y[..modes]), dot(&phi, &v[..modes]), dot(&dphi, &y[..modes]), dot(&ddphi, &y[..modes]));
+        let slope_rate = dot(&dphi, &v[..modes]);
+        let (zb, dzb) = if body { (y[modes], v[modes]) } else { (0.0, 0.0) };
+        // λ without its m_u φᵀq̈ part: m_u(g + 2vφ′ᵀq̇ + v²φ″ᵀq) + k_s(w_c − z_b) + c_s(ẇ_c − ż_b).
+        let spring = if body { o.stiffness * (wc - zb) + o.damping * (dwc_q + speed * dwc_x - dzb) } else { 0.0 };
+        let known = o.wheel_mass * (GRAVITY + 2.0 * speed * slope_rate + speed * speed * curv) + spring;
+        for i in 0..modes {
+            m[i * n + i] = self.modal_mass;
+            for j in 0..modes {
+                m[i * n + j] += o.wheel_mass * phi[i] * phi[j];
+            }
+            rhs[i] = -self.modal_stiffness[i] * y[i] - known * phi[i];
+        }
+        if body {
+            m[modes * n + modes] = o.body_mass;
+            rhs[modes] = -o.body_mass * GRAVITY - o.stiffness * (zb - wc) - o.damping * (dzb - dwc_q - speed * dwc_x);
+        } else {
+            m[modes * n + modes] = 1.0;
+        }
+        // M(t) is symmetric positive definite (a modal mass plus m_u φφᵀ, and M_s or 1).
+        let m = nalgebra::DMatrix::from_row_slice(n, n, &m);
+        let rhs = nalgebra::DVector::from_vec(rhs);
+        m.cholesky().expect("M(t) is positive definite").solve(&rhs).data.into()
+    }
+
+    /// The contact force λ (N, upward on the wheel) at time t from y, ẏ = v and ÿ = a.
+    fn contact(&self, t: f64, y: &[f64], v: &[f64], a: &[f64]) -> f64 {
+        let (o, speed, modes) = (self.oscillator, self.speed, self.modes);
+        let (phi, dphi, ddphi) = self.shapes(t);
+        let ddwc =
+            dot(&phi, &a[..modes]) + 2.0 * speed * dot(&dphi, &v[..modes]) + speed * speed * dot(&ddphi, &y[..modes]);
+        let wc = dot(&phi, &y[..modes]);
+        let dwc = dot(&phi, &v[..modes]) + speed * dot(&dphi, &y[..modes]);
+        let spring = if o.has_body() { o.stiffness * (wc - y[modes]) + o.damping * (dwc - v[modes]) } else { 0.0 };
+        o.wheel_mass * (GRAVITY + ddwc) + spring
+    }
+
+    /// w(L/2) (m) of the modal coordinates in y.
+    fn midspan(&self, y: &[f64]) -> f64 {
+        (0..self.modes).map(|k| y[k] * ((k + 1) as f64 * PI / 2.0).sin()).sum::<f64>()
+    }
+
+    /// One classical Runge–Kutta step of length h from t on (y, v)′ = (v, ÿ(t, y, v)).
+    fn runge_kutta_step(&self, t: f64, h: f64, y: &mut [f64], v: &mut [f64]) {
+        let axpy = |a: &[f64], s: f64, b: &[f64]| a.iter().zip(b).map(|(x, d)| x + s * d).collect::<Vec<f64>>();
+        let (k1y, k1v) = (v.to_vec(), self.acceleration(t, y, v));
+        let (y2, v2) = (axpy(y, 0.5 * h, &k1y), axpy(v, 0.5 * h, &k1v));
+        let (k2y, k2v) = (v2.clone(), self.acceleration(t + 0.5 * h, &y2, &v2));
+        let (y3, v3) = (axpy(y, 0.5 * h, &k2y), axpy(v, 0.5 * h, &k2v));
+        let (k3y, k3v) = (v3.clone(), self.acceleration(t + 0.5 * h, &y3, &v3));
+        let (y4, v4) = (axpy(y, h, &k3y), axpy(v, h, &k3v));
+        let (k4y, k4v) = (v4.clone(), self.acceleration(t + h, &y4, &v4));
+        for i in 0..y.len() {
+            y[i] += h / 6.0 * (k1y[i] + 2.0 * k2y[i] + 2.0 * k3y[i] + k4y[i]);
+            v[i] += h / 6.0 * (k1v[i] + 2.0 * k2v[i] + 2.0 * k3v[i] + k4v[i]);
+        }
     }
 }
 

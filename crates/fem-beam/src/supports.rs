@@ -6,6 +6,7 @@
 
 /// Boundary condition at one end of the beam.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize), serde(rename_all = "kebab-case"))]
 pub enum Support {
     /// w = 0, rotation free (the default, docs/theory.md §2).
     #[default]
@@ -29,6 +30,7 @@ impl Support {
 
 /// Supports at both ends.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize), serde(default, deny_unknown_fields))]
 pub struct Supports {
     /// Support at x = 0. Default pinned.
     pub left: Support,

@@ -8,23 +8,21 @@
 
 use crate::law::Law;
 
-/// What an interaction represents: the energy ledger books the work of each kind apart.
+/// Which account of the energy ledger an interaction's work is booked to (docs/theory.md §5).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum InteractionKind {
-    /// A discrete friction device (FDD) on a node.
-    Device,
-    /// A section of friction distributed in the ballast.
-    Ballast,
-    /// A unilateral contact (a wheel on the rail, a stop).
+    /// Coulomb friction: its work is dissipated.
+    Friction,
+    /// A unilateral contact between two bodies (a wheel on the rail, a stop).
     Contact,
     /// A unilateral support of the structure (a foundation that cannot pull).
-    Foundation,
+    Support,
 }
 
 impl InteractionKind {
     /// Whether the kind is friction (its work is friction work).
     pub fn is_friction(self) -> bool {
-        matches!(self, InteractionKind::Device | InteractionKind::Ballast)
+        self == InteractionKind::Friction
     }
 }
 
@@ -179,12 +177,11 @@ impl InteractionRow {
     }
 }
 
-/// Rows H_α with their laws, positions (m) and kinds.
+/// Rows H_α with their laws and ledger kinds.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct InteractionSet {
     rows: Vec<InteractionRow>,
     laws: Vec<Law>,
-    positions: Vec<f64>,
     kinds: Vec<InteractionKind>,
     dropped_capacity: f64,
 }
@@ -195,31 +192,23 @@ impl InteractionSet {
         Self::default()
     }
 
-    /// Add an interaction; an empty row (a section on a support, which cannot move) is dropped and its Coulomb
-    /// capacity counted in [`InteractionSet::dropped_capacity`].
-    pub fn push(&mut self, row: InteractionRow, law: Law, position: f64, kind: InteractionKind) {
+    /// Add an interaction and return its index; an empty row (a section on a support, which cannot move) is
+    /// dropped — None — and its Coulomb capacity counted in [`InteractionSet::dropped_capacity`].
+    pub fn push(&mut self, row: InteractionRow, law: Law, kind: InteractionKind) -> Option<usize> {
         if row.is_empty() {
             self.dropped_capacity += law.capacity();
-        } else {
-            self.rows.push(row);
-            self.laws.push(law);
-            self.positions.push(position);
-            self.kinds.push(kind);
+            return None;
         }
-    }
-
-    /// A Coulomb friction section of capacity F (N): [`InteractionSet::push`] with [`Law::Coulomb`].
-    pub fn push_friction(&mut self, row: InteractionRow, capacity: f64, position: f64, kind: InteractionKind) {
-        self.push(row, Law::Coulomb { capacity }, position, kind);
+        Some(self.push_moving(row, law, kind))
     }
 
     /// Add an interaction that is kept even with an empty row (a moving interaction, whose row the engine rewrites
-    /// every step).
-    pub fn push_moving(&mut self, row: InteractionRow, law: Law, position: f64, kind: InteractionKind) {
+    /// every step); returns its index.
+    pub fn push_moving(&mut self, row: InteractionRow, law: Law, kind: InteractionKind) -> usize {
         self.rows.push(row);
         self.laws.push(law);
-        self.positions.push(position);
         self.kinds.push(kind);
+        self.rows.len() - 1
     }
 
     /// The row of interaction j, to rewrite in place (a moving interaction's update).
@@ -227,16 +216,10 @@ impl InteractionSet {
         &mut self.rows[j]
     }
 
-    /// Set the position of interaction j (m).
-    pub fn set_position(&mut self, j: usize, x: f64) {
-        self.positions[j] = x;
-    }
-
     /// Append all interactions of another set.
     pub fn extend(&mut self, other: InteractionSet) {
         self.rows.extend(other.rows);
         self.laws.extend(other.laws);
-        self.positions.extend(other.positions);
         self.kinds.extend(other.kinds);
         self.dropped_capacity += other.dropped_capacity;
     }
@@ -264,11 +247,6 @@ impl InteractionSet {
     /// The Coulomb capacity F_α of interaction α (N; zero for a unilateral law).
     pub fn capacity(&self, j: usize) -> f64 {
         self.laws[j].capacity()
-    }
-
-    /// Positions x_α (m).
-    pub fn positions(&self) -> &[f64] {
-        &self.positions
     }
 
     /// Kinds.
@@ -303,10 +281,5 @@ impl InteractionSet {
         for (row, &pj) in self.rows.iter().zip(p) {
             row.add_transpose(pj, out);
         }
-    }
-
-    /// The index of the interaction at `x` within `tolerance` (m), if any (first match).
-    pub fn section_at(&self, x: f64, tolerance: f64) -> Option<usize> {
-        self.positions.iter().position(|&p| (p - x).abs() <= tolerance)
     }
 }

@@ -18,10 +18,9 @@
 use crate::error::Result;
 use crate::solver::{InteractionProblem, InteractionSolver, SolverKind, SolverSettings, StepReport, build_solver};
 
-/// The fallbacks of one run: their order, the settings and window margin to build them with, and those built.
+/// The fallbacks of one run: their order, the settings to build them with, and those built.
 pub struct Fallbacks {
     settings: SolverSettings,
-    window_margin: Option<f64>,
     order: [SolverKind; 2],
     /// Built on first need; `Some(None)` remembers one that cannot take this problem.
     built: [Option<Option<Box<dyn InteractionSolver>>>; 2],
@@ -35,9 +34,9 @@ impl std::fmt::Debug for Fallbacks {
 
 impl Fallbacks {
     /// The fallbacks of a run whose solver is `primary` (a resolved kind), built with `settings` (their kind
-    /// aside) and the interior point's `window_margin` (m).
-    pub fn new(primary: SolverKind, settings: &SolverSettings, window_margin: Option<f64>) -> Self {
-        Self { settings: *settings, window_margin, order: Self::order(primary), built: [None, None] }
+    /// aside).
+    pub fn new(primary: SolverKind, settings: &SolverSettings) -> Self {
+        Self { settings: *settings, order: Self::order(primary), built: [None, None] }
     }
 
     /// The solvers tried after `primary`, in order.
@@ -69,7 +68,7 @@ impl Fallbacks {
             if self.built[slot].is_none() {
                 let mut settings = self.settings;
                 settings.kind = kind;
-                self.built[slot] = Some(build_solver(kind, problem, &settings, self.window_margin).ok());
+                self.built[slot] = Some(build_solver(kind, problem, &settings).ok());
             }
             let Some(Some(solver)) = self.built[slot].as_mut() else { continue };
             let attempt: Result<StepReport> =

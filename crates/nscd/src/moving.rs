@@ -14,8 +14,6 @@ pub struct MovingState {
     /// The rheonomic velocity b_r (m/s) at t_{k+1}, where the law holds: U_{k+1} = H v_{k+1} + b_r with the row
     /// written for t_{k+1} (for a wheel at speed v over a rail of height r: −v·Ψ′(x_c)ᵀq − v·r′(x_c)).
     pub rheonomic: f64,
-    /// Where the interaction is at t_{k+1} (m), for reports.
-    pub position: f64,
 }
 
 /// An interaction whose row, gap and rheonomic velocity are set every step.

@@ -88,21 +88,20 @@ pub struct MoreauJean {
 impl MoreauJean {
     /// The one way to set up a run's stepper: M̂ for `integration`, its factor and the friction problem over
     /// `interactions` ([`InteractionProblem::new`]), the solver of `settings.kind` on that problem (a resolved kind, not
-    /// `Auto`, which means projection here; `window_margin` for the interior point's moving window), started from
+    /// `Auto`, which means projection here), started from
     /// (q₀, v₀) with zero impulses. The stepper owns all of it and borrows nothing.
     pub fn build(
         system: &LinearSystem,
         interactions: impl Into<crate::moving::Interactions>,
         integration: Integration,
         settings: &SolverSettings,
-        window_margin: Option<f64>,
         q0: Vec<f64>,
         v0: Vec<f64>,
     ) -> Result<Self> {
         let problem = InteractionProblem::new(system, interactions, integration)?;
-        let solver = build_solver(settings.kind, &problem, settings, window_margin)?;
+        let solver = build_solver(settings.kind, &problem, settings)?;
         let mut stepper = Self::new(system, problem, solver, q0, v0);
-        stepper.fallbacks = Some(Fallbacks::new(stepper.solver.kind(), settings, window_margin));
+        stepper.fallbacks = Some(Fallbacks::new(stepper.solver.kind(), settings));
         Ok(stepper)
     }
 
@@ -443,9 +442,9 @@ fn interaction_work(interactions: &InteractionSet, friction_only: bool, p: &[f64
     for ((row, &pj), kind) in interactions.rows().iter().zip(p).zip(interactions.kinds()) {
         let term = row.dot(v_theta) * pj;
         match kind {
-            InteractionKind::Device | InteractionKind::Ballast => work.friction += term,
+            InteractionKind::Friction => work.friction += term,
             InteractionKind::Contact => work.contact += term,
-            InteractionKind::Foundation => work.support += term,
+            InteractionKind::Support => work.support += term,
         }
     }
     work

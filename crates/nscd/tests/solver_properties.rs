@@ -74,10 +74,10 @@ fn problem() -> impl Strategy<Value = Problem> {
                 let start = start.min(n - span);
                 let entries = (0..span).map(|k| (start + k, if values[k].1 { values[k].0 } else { -values[k].0 }));
                 let kind = match law {
-                    Law::Coulomb { .. } => InteractionKind::Ballast,
+                    Law::Coulomb { .. } => InteractionKind::Friction,
                     _ => InteractionKind::Contact,
                 };
-                interactions.push(InteractionRow::from_entries(entries), law, start as f64, kind);
+                interactions.push(InteractionRow::from_entries(entries), law, kind);
             }
             Problem { m_hat, interactions, v_free }
         })
@@ -105,7 +105,7 @@ fn solve_all(problem: &Problem) -> Vec<(&'static str, Vec<f64>)> {
     for kind in kinds {
         // 1e-10, not the default 1e-6: the agreement bound below is set by the exact solvers' tolerance.
         let settings = SolverSettings { kind, moving_window: false, tolerance: 1e-10, ..SolverSettings::default() };
-        let mut solver = build_solver(kind, &stepping, &settings, None).unwrap();
+        let mut solver = build_solver(kind, &stepping, &settings).unwrap();
         let mut p = vec![0.0; m];
         let report = solver.solve(&stepping, &problem.v_free, &u_free, &mut p).unwrap();
         let (mut v, mut u) = (vec![0.0; n], vec![0.0; m]);

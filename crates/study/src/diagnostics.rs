@@ -12,9 +12,9 @@ use crate::error::{Result, invalid};
 use crate::scenario::{Case, Scenario};
 use fem_beam::reference::InfiniteBeam;
 use fem_beam::{BeamModel, Support};
-use friction::InteractionKind;
 use std::fmt;
-use track::vehicle::consist::WheelRail;
+use track::SectionKind;
+use track::vehicle::wheel_rail::WheelRail;
 
 /// A suspicious input: the field, its value, and what is wrong with it against which limit.
 #[derive(Debug, Clone, PartialEq)]
@@ -89,8 +89,7 @@ pub fn warnings(scenario: &Scenario, case: &Case) -> Vec<Warning> {
             (None, Some(x)) => x.len(),
             (None, None) => 0,
         };
-        let kinds = case.interactions.kinds();
-        let placed = kinds.iter().filter(|k| **k == InteractionKind::Device).count();
+        let placed = case.interactions.count(SectionKind::Device);
         if placed < requested {
             out.push(Warning {
                 field: "friction.devices".into(),

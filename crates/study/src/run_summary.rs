@@ -5,9 +5,9 @@
 
 use crate::error::Result;
 use crate::scenario::{Case, Scenario};
-use friction::InteractionKind;
 use serde::Serialize;
 use track::RunResult;
+use track::SectionKind;
 use track::vehicle::consist::VehicleSettings;
 
 /// An extreme of the run while the load was in the extremes window.
@@ -50,7 +50,27 @@ pub struct RunSummary {
     pub device_positions: Vec<f64>,
     /// Distributed friction f_u (N/m).
     pub distributed_friction: f64,
-    /// Largest downward deflection (m, magnitude), its node (m) and time (s).
+    /// The extremes of the run, the static envelope and the amplification over it.
+    #[serde(flatten)]
+    pub extremes: ExtremesSummary,
+    /// The energy ledger.
+    #[serde(flatten)]
+    pub energy: EnergySummary,
+    /// How the steps were solved.
+    #[serde(flatten)]
+    pub stepping: SteppingSummary,
+    /// Wall time of the run (s).
+    pub wall_time: f64,
+    /// The vehicles' wheels and bodies, with vehicles.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub vehicles: Option<crate::vehicle_output::VehicleReport>,
+}
+
+/// The extremes of one run: over the whole run and every recorded node, over the window of load positions, the
+/// static envelope of the same loads and the dynamic amplification over it, and W̄.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ExtremesSummary {
+    /// Largest downward deflection (m, magnitude).
     pub max_downward_deflection: f64,
     /// Node of the largest downward deflection (m).
     pub max_downward_deflection_position: Option<f64>,
@@ -82,6 +102,11 @@ pub struct RunSummary {
     pub window_max_upward: Option<ExtremeSummary>,
     /// W̄, the time mean of ∫|w| dx over the crossing (m²).
     pub global_norm: f64,
+}
+
+/// The energy ledger of one run (J).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct EnergySummary {
     /// Work of the loads (J).
     pub load_work: f64,
     /// Work of the friction forces (J, ≤ 0).
@@ -96,6 +121,11 @@ pub struct RunSummary {
     pub numerical_dissipation: f64,
     /// What the energy balance leaves over (J; round-off).
     pub energy_residual: f64,
+}
+
+/// How the steps of one run were solved.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SteppingSummary {
     /// Time steps.
     pub steps: usize,
     /// The step h (s).
@@ -116,11 +146,6 @@ pub struct RunSummary {
     pub fallback_steps: usize,
     /// The fallbacks, each with the steps it solved.
     pub fallbacks: Vec<FallbackSummary>,
-    /// Wall time of the run (s).
-    pub wall_time: f64,
-    /// The vehicles' wheels and bodies, with vehicles.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub vehicles: Option<crate::vehicle_output::VehicleReport>,
 }
 
 /// What the beam carries of a train's axles.
@@ -149,13 +174,43 @@ impl RunSummary {
     /// the extremes, the static envelope of the same loads and the dynamic amplification over it, the energy
     /// ledger, the solver's statistics and, with vehicles, theirs.
     pub fn of(scenario: &Scenario, case: &Case, result: &RunResult, wall_time: f64) -> Result<Self> {
-        let e = &result.energy;
-        let s = &result.statistics;
         let settings = &case.settings;
-        let device_positions: Vec<f64> = (0..case.interactions.len())
-            .filter(|&j| case.interactions.kinds()[j] == InteractionKind::Device)
-            .map(|j| case.interactions.positions()[j])
+        let placed = &case.interactions;
+        let device_positions: Vec<f64> = (placed.positions().iter().zip(placed.kinds()))
+            .filter_map(|(&x, &kind)| (kind == SectionKind::Device).then_some(x))
             .collect();
+        Ok(Self {
+            title: scenario.title.clone(),
+            speed: settings.moving.speed,
+            load: scenario.load.force,
+            train: settings.moving.load.axles().map(crate::trains::TrainSummary::of),
+            axle_share: settings.moving.load.axles().filter(|t| t.name != "single").map(|_| {
+                let share = scenario.axle_share();
+                AxleShareSummary { carries: share.name(), factor: share.factor(), meaning: share.describe() }
+            }),
+            critical_speed: crate::speeds::SpeedScale::of(scenario)?.critical_speed,
+            damping_ratio: case.model.foundation().damping_ratio(case.model.beam()),
+            devices: device_positions.len(),
+            device_force: scenario.friction.devices.as_ref().and_then(|d| d.force).unwrap_or(0.0),
+            device_positions,
+            distributed_friction: scenario.friction.distributed.as_ref().map_or(0.0, |d| d.force_per_length),
+            extremes: ExtremesSummary::of(case, result)?,
+            energy: EnergySummary::of(&result.energy),
+            stepping: SteppingSummary::of(result),
+            wall_time,
+            vehicles: result.vehicles.as_ref().map(|v| {
+                let contact = settings.moving.load.vehicles().map_or("", VehicleSettings::contact_name);
+                crate::vehicle_output::VehicleReport::of(v, contact)
+            }),
+        })
+    }
+}
+
+impl ExtremesSummary {
+    /// The extremes of `result`, a run of `case`, with the static envelope of the same loads (a static solve per
+    /// load position) and the amplification over it.
+    pub fn of(case: &Case, result: &RunResult) -> Result<Self> {
+        let settings = &case.settings;
         let window = result.window.unwrap_or_default();
         let x0 = settings.start_position();
         let extreme = |x: &track::simulation::Extreme| {
@@ -166,29 +221,13 @@ impl RunSummary {
                 load_position: x0 + settings.moving.speed * x.time,
             })
         };
-        let critical = crate::speeds::SpeedScale::of(scenario)?.critical_speed;
         let statics = track::statics::static_envelope(
             &case.model,
             &settings.moving.load.train(),
             settings.integration.load_advance,
             settings.record.extremes_nodes,
         )?;
-        let foundation = case.model.foundation();
         Ok(Self {
-            title: scenario.title.clone(),
-            speed: settings.moving.speed,
-            load: scenario.load.force,
-            train: settings.moving.load.axles().map(crate::trains::TrainSummary::of),
-            axle_share: settings.moving.load.axles().filter(|t| t.name != "single").map(|_| {
-                let share = scenario.axle_share();
-                AxleShareSummary { carries: share.name(), factor: share.factor(), meaning: share.describe() }
-            }),
-            critical_speed: critical,
-            damping_ratio: foundation.damping_ratio(case.model.beam()),
-            devices: device_positions.len(),
-            device_force: scenario.friction.devices.as_ref().and_then(|d| d.force).unwrap_or(0.0),
-            device_positions,
-            distributed_friction: scenario.friction.distributed.as_ref().map_or(0.0, |d| d.force_per_length),
             max_downward_deflection: result.max_downward.magnitude,
             max_downward_deflection_position: result.max_downward.happened().map(|x| x.position),
             max_downward_deflection_time: result.max_downward.happened().map(|x| x.time),
@@ -209,6 +248,14 @@ impl RunSummary {
             window_max_downward: extreme(&window.max_downward),
             window_max_upward: extreme(&window.max_upward),
             global_norm: result.global_norm,
+        })
+    }
+}
+
+impl EnergySummary {
+    /// The ledger `e` of a run.
+    pub fn of(e: &nscd::EnergyLedger) -> Self {
+        Self {
             load_work: e.load_work,
             friction_work: e.friction_work,
             // Positive, as `viscous_dissipation` and `dissipated_energy`: the energy friction removed (0 − W, not −W:
@@ -218,6 +265,15 @@ impl RunSummary {
             dissipated_energy: e.dissipated(),
             numerical_dissipation: e.numerical_dissipation,
             energy_residual: e.residual(),
+        }
+    }
+}
+
+impl SteppingSummary {
+    /// The solver statistics of `result`.
+    pub fn of(result: &RunResult) -> Self {
+        let s = &result.statistics;
+        Self {
             steps: s.steps,
             time_step: result.step,
             sections: s.sections,
@@ -232,11 +288,6 @@ impl RunSummary {
                 .iter()
                 .map(|f| FallbackSummary { solver: f.solver.name(), steps: f.steps })
                 .collect(),
-            wall_time,
-            vehicles: result.vehicles.as_ref().map(|v| {
-                let contact = settings.moving.load.vehicles().map_or("", VehicleSettings::contact_name);
-                crate::vehicle_output::VehicleReport::of(v, contact)
-            }),
-        })
+        }
     }
 }

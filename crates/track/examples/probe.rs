@@ -5,7 +5,7 @@
 //! loop, the solver statistics and the peak resident memory of the process (VmHWM, Linux).
 
 use fem_beam::reference::uic60_on_soft_soil;
-use friction::InteractionSet;
+use track::PlacedInteractions;
 use track::{Devices, DistributedFriction};
 use track::{RunSettings, Simulation};
 
@@ -24,7 +24,7 @@ fn main() {
         settings.moving.speed = v;
     }
     let interactions = match case.as_str() {
-        "none" => InteractionSet::new(),
+        "none" => PlacedInteractions::new(),
         "devices7" => Devices::uniform(7, 100e3).interactions(&model).expect("devices"),
         "devices31" => Devices::uniform(31, 100e3).interactions(&model).expect("devices"),
         "distributed1k" => DistributedFriction::new(1e3).interactions(&model).expect("friction"),

@@ -5,15 +5,15 @@
 //! that fails a step (unconverged within its iteration cap) is reported with the step where it stopped.
 
 use fem_beam::reference::uic60_on_soft_soil;
-use friction::InteractionSet;
 use nscd::SolverKind;
+use track::PlacedInteractions;
 use track::{Devices, DistributedFriction};
 use track::{RunSettings, Simulation};
 
 fn main() {
     let steps: usize = std::env::args().nth(1).and_then(|s| s.parse().ok()).unwrap_or(usize::MAX);
     let model = uic60_on_soft_soil().model().expect("reference model");
-    let cases: Vec<(&str, InteractionSet)> = vec![
+    let cases: Vec<(&str, PlacedInteractions)> = vec![
         ("7 devices, F_u = 100 kN", Devices::uniform(7, 100e3).interactions(&model).expect("devices")),
         ("31 devices, F_u = 100 kN", Devices::uniform(31, 100e3).interactions(&model).expect("devices")),
         ("distributed, f_u = 1 kN/m", DistributedFriction::new(1e3).interactions(&model).expect("friction")),

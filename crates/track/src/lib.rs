@@ -10,6 +10,7 @@
 pub mod error;
 pub mod friction_layout;
 pub mod moving_load;
+pub mod placed;
 pub mod simulation;
 pub mod snapshots;
 pub mod statics;
@@ -19,5 +20,6 @@ pub mod vehicle;
 pub use error::{Result, TrackError};
 pub use friction_layout::{DeviceLayout, Devices, DistributedFriction, Quadrature};
 pub use moving_load::MovingLoad;
+pub use placed::{PlacedInteractions, SectionKind};
 pub use simulation::{InitialState, Load, RunResult, RunSettings, Simulation, WindowExtremes};
 pub use snapshots::{Snapshot, SnapshotAt, SnapshotTaker};

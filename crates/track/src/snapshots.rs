@@ -8,10 +8,10 @@
 //! moving load where it stands plus the friction forces p_j/h of the step at their sections.
 
 use crate::error::{Result, invalid};
+use crate::placed::PlacedInteractions;
 use crate::simulation::{RunSettings, StepView};
 use fem_beam::section::Motion;
 use fem_beam::{BeamModel, Train};
-use friction::InteractionSet;
 
 /// When a snapshot is taken.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -43,7 +43,7 @@ pub struct Snapshot {
 #[derive(Debug)]
 pub struct SnapshotTaker<'a> {
     model: &'a BeamModel,
-    interactions: &'a InteractionSet,
+    interactions: &'a PlacedInteractions,
     train: Train,
     step: f64,
     /// (trigger time, request), sorted by trigger time.
@@ -58,7 +58,7 @@ impl<'a> SnapshotTaker<'a> {
     /// [0, end], load positions between the start position and L).
     pub fn new(
         model: &'a BeamModel,
-        interactions: &'a InteractionSet,
+        interactions: &'a PlacedInteractions,
         settings: &RunSettings,
         requests: &[SnapshotAt],
     ) -> Result<Self> {

@@ -5,14 +5,13 @@
 #![allow(unsafe_code)]
 
 use fem_beam::reference::uic60_on_soft_soil;
-use friction::InteractionSet;
 use nscd::MoreauJean;
 use nscd::solver::{SolverKind, SolverSettings};
 use nscd::stepper::Integration;
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use track::MovingLoad;
-use track::simulation::coupling_length;
+use track::PlacedInteractions;
 use track::system::beam_system;
 use track::{Devices, DistributedFriction};
 
@@ -44,7 +43,7 @@ unsafe impl GlobalAlloc for Counting {
 #[global_allocator]
 static GLOBAL: Counting = Counting;
 
-fn allocations_in_steps(interactions: &InteractionSet, kind: SolverKind) -> usize {
+fn allocations_in_steps(interactions: &PlacedInteractions, kind: SolverKind) -> usize {
     let model = uic60_on_soft_soil().model().unwrap();
     let (speed, theta) = (200.0, 0.5);
     let h = 0.1 / speed;
@@ -53,9 +52,9 @@ fn allocations_in_steps(interactions: &InteractionSet, kind: SolverKind) -> usiz
     let settings = SolverSettings { kind, ..SolverSettings::default() };
     let load = MovingLoad::new(*model.mesh(), model.dofs(), 83.4e3, speed, 0.0);
     let n = system.dofs();
-    let margin = Some(30.0 * coupling_length(&model, h, theta));
     let (q0, v0) = (vec![0.0; n], vec![0.0; n]);
-    let mut stepper = MoreauJean::build(&system, interactions.clone(), integration, &settings, margin, q0, v0).unwrap();
+    let mut stepper =
+        MoreauJean::build(&system, interactions.interactions().clone(), integration, &settings, q0, v0).unwrap();
     // Warm-up: the load reaches the beam's middle, so that windows of every size have been seen.
     for _ in 0..1000 {
         stepper.step(&load).unwrap();
@@ -70,7 +69,7 @@ fn allocations_in_steps(interactions: &InteractionSet, kind: SolverKind) -> usiz
 #[test]
 fn the_time_loop_does_not_allocate() {
     let model = uic60_on_soft_soil().model().unwrap();
-    let none = allocations_in_steps(&InteractionSet::new(), SolverKind::Projection);
+    let none = allocations_in_steps(&PlacedInteractions::new(), SolverKind::Projection);
     let devices =
         allocations_in_steps(&Devices::uniform(31, 100e3).interactions(&model).unwrap(), SolverKind::Projection);
     let distributed =

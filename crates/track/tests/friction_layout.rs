@@ -4,7 +4,7 @@
 use fem_beam::reference::uic60_on_soft_soil;
 use fem_beam::{BeamModel, Support, Supports};
 use friction::InteractionKind;
-use track::{DeviceLayout, Devices, DistributedFriction, Quadrature, TrackError};
+use track::{DeviceLayout, Devices, DistributedFriction, Quadrature, SectionKind, TrackError};
 
 fn model(supports: Supports) -> BeamModel {
     let case = uic60_on_soft_soil();
@@ -23,14 +23,15 @@ fn devices_snap_to_nearest_node_ties_going_right() {
     assert_eq!(snapped[2], 38.0);
     let set = devices.interactions(&m).unwrap();
     assert_eq!(set.len(), 15);
-    assert_eq!(set.total_capacity(), 15.0 * 50e3);
-    assert!(set.rows().iter().all(|r| r.len() == 1));
-    assert!(set.kinds().iter().all(|k| *k == InteractionKind::Device));
+    assert_eq!(set.interactions().total_capacity(), 15.0 * 50e3);
+    assert!(set.interactions().rows().iter().all(|r| r.len() == 1));
+    assert!(set.kinds().iter().all(|k| *k == SectionKind::Device));
+    assert!(set.interactions().kinds().iter().all(|k| *k == InteractionKind::Friction));
     // 199 devices on 200 elements sit on every interior node.
     let all = Devices::uniform(199, 1e3).interactions(&m).unwrap();
     assert_eq!(all.len(), 199);
     assert_eq!(all.positions()[0], 1.0);
-    assert_eq!(all.total_capacity(), 199.0 * 1e3);
+    assert_eq!(all.interactions().total_capacity(), 199.0 * 1e3);
 }
 
 #[test]
@@ -39,7 +40,7 @@ fn devices_on_one_node_merge_and_too_many_are_rejected() {
     let devices = Devices { layout: DeviceLayout::Positions(vec![10.2, 9.9, 50.0]), force: 1e3 };
     let set = devices.interactions(&m).unwrap();
     assert_eq!(set.len(), 2);
-    assert_eq!([set.capacity(0), set.capacity(1)], [2e3, 1e3]);
+    assert_eq!([set.interactions().capacity(0), set.interactions().capacity(1)], [2e3, 1e3]);
     assert_eq!(set.positions(), &[10.0, 50.0]);
     let err = Devices::uniform(200, 1e3).interactions(&m).unwrap_err();
     assert!(matches!(err, TrackError::InvalidCount { field: "devices.count", value: 200, .. }), "{err}");
@@ -59,7 +60,10 @@ fn distributed_capacity_is_exact() {
             let set = d.interactions(&free).unwrap();
             assert_eq!(set.len(), j * 200 + 1);
             // Sums of l/J-type weights: exact up to the round-off of ~800 additions.
-            assert!((set.total_capacity() - fu * 200.0).abs() < 1e-12 * fu * 200.0, "{quadrature:?}, J = {j}");
+            assert!(
+                (set.interactions().total_capacity() - fu * 200.0).abs() < 1e-12 * fu * 200.0,
+                "{quadrature:?}, J = {j}"
+            );
             assert!(set.positions().windows(2).all(|w| w[1] > w[0]));
         }
     }
@@ -67,8 +71,8 @@ fn distributed_capacity_is_exact() {
     let pinned = model(Supports::default());
     let set = DistributedFriction::new(1000.0).interactions(&pinned).unwrap();
     assert_eq!(set.len(), 4 * 200 - 1);
-    assert!((set.dropped_capacity() - 2.0 * 1000.0 * 0.125).abs() < 1e-9);
-    assert!((set.total_capacity() + set.dropped_capacity() - 200e3).abs() < 1e-7);
+    assert!((set.interactions().dropped_capacity() - 2.0 * 1000.0 * 0.125).abs() < 1e-9);
+    assert!((set.interactions().total_capacity() + set.interactions().dropped_capacity() - 200e3).abs() < 1e-7);
 }
 
 #[test]
@@ -85,7 +89,7 @@ fn distributed_rows_interpolate_the_deflection() {
     let free = m.dofs().reduce(&full);
     let full = m.dofs().expand(&free); // constrained DOFs (pinned w at the ends) are zero
     let mut u = vec![0.0; set.len()];
-    set.velocities(&free, &mut u);
+    set.interactions().velocities(&free, &mut u);
     for (j, &x) in set.positions().iter().enumerate() {
         let w = m.deflection_at(&full, x).unwrap();
         assert!((u[j] - w).abs() < 1e-14, "section {j} at {x}");

@@ -6,7 +6,7 @@
 //! row touches DOF i, and kept while rows keep touching it — a wheel crosses an element in several steps, so most
 //! steps solve nothing and assemble G from the kept columns instead of one banded solve per wheel.
 
-use super::responses::significant_range;
+use super::responses::{DROP_BELOW, significant_range};
 use crate::kernels::axpy;
 use banded::BandedLdlt;
 
@@ -74,7 +74,7 @@ impl DofResponses {
         scratch.resize(factor.order(), 0.0);
         scratch[dof] = 1.0;
         factor.solve_in_place(scratch);
-        let (first, last) = significant_range(scratch, dof);
+        let (first, last) = significant_range(scratch, DROP_BELOW, dof);
         Column { start: first, values: scratch[first..last].to_vec(), used: 0 }
     }
 }

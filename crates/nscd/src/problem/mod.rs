@@ -121,7 +121,7 @@ impl InteractionProblem {
         let fixed = interactions.len();
         let (responses, mut delassus_diagonal) = ImpulseResponses::new(&interactions, factor);
         for interaction in &moving {
-            interactions.push_moving(Default::default(), interaction.law(), 0.0, interaction.kind());
+            interactions.push_moving(Default::default(), interaction.law(), interaction.kind());
             delassus_diagonal.push(0.0);
         }
         let m = interactions.len();
@@ -198,7 +198,6 @@ impl InteractionProblem {
             }
             self.moving_support[k] = if support.0 < support.1 { support } else { (0, 0) };
             self.delassus_diagonal[j] = row.dot(column) + self.law.compliance[j];
-            self.interactions.set_position(j, state.position);
             self.moving_states[k] = state;
         }
         let (h, theta) = (self.matrix.integration.step, self.matrix.integration.theta);

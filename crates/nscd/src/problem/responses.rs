@@ -13,11 +13,11 @@ use friction::InteractionSet;
 /// entry with its neighbours at relative precision ~1.1e-16, so such entries are below its round-off already.
 pub const DROP_BELOW: f64 = 1e-17;
 
-/// The range [first, last) of `column` outside which every entry is below [`DROP_BELOW`] of its largest (an empty
+/// The range [first, last) of `column` outside which every entry is at most `floor` times its largest (an empty
 /// range at `fallback` when all are zero).
-pub(crate) fn significant_range(column: &[f64], fallback: usize) -> (usize, usize) {
+pub(crate) fn significant_range(column: &[f64], floor: f64, fallback: usize) -> (usize, usize) {
     let largest = column.iter().fold(0.0f64, |m, c| m.max(c.abs()));
-    let significant = |c: &f64| c.abs() > DROP_BELOW * largest;
+    let significant = |c: &f64| c.abs() > floor * largest;
     let first = column.iter().position(significant).unwrap_or(fallback);
     let last = column.iter().rposition(significant).map_or(first, |i| i + 1);
     (first, last)
@@ -51,7 +51,7 @@ impl ImpulseResponses {
             factor.solve_in_place(&mut column);
             diagonal.push(row.dot(&column));
             if let Some(responses) = kept.as_mut() {
-                let (first, last) = significant_range(&column, 0);
+                let (first, last) = significant_range(&column, DROP_BELOW, 0);
                 responses.start.push(first);
                 responses.values.extend_from_slice(&column[first..last]);
                 responses.offset.push(responses.values.len());

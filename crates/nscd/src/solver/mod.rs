@@ -50,13 +50,12 @@ pub trait InteractionSolver {
     ) -> crate::Result<StepReport>;
 }
 
-/// Build the solver `kind` (not `Auto`: resolve it first) for `problem`. `window_margin` (m) is the interior
-/// point's moving-window margin, used when `settings.moving_window` is set (30 coupling lengths is safe).
+/// Build the solver `kind` (not `Auto`: resolve it first) for `problem`; the interior point solves on a moving
+/// window when `settings.moving_window` is set.
 pub fn build_solver<'a>(
     kind: SolverKind,
     problem: &InteractionProblem,
     settings: &SolverSettings,
-    window_margin: Option<f64>,
 ) -> crate::Result<Box<dyn InteractionSolver + 'a>> {
     Ok(match kind {
         SolverKind::Projection | SolverKind::Auto => {
@@ -66,7 +65,7 @@ pub fn build_solver<'a>(
             problem,
             settings.tolerance,
             settings.max_iterations,
-            window_margin.filter(|_| settings.moving_window),
+            settings.moving_window,
         )?),
         #[cfg(feature = "clarabel")]
         SolverKind::Clarabel => Box::new(clarabel::ClarabelQp::new(problem, settings.tolerance)?),

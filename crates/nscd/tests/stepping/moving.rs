@@ -30,7 +30,7 @@ impl MovingInteraction for StillStop {
     }
     fn update(&mut self, _: f64, _: f64, q: &[f64], v: &[f64], row: &mut InteractionRow) -> MovingState {
         row.set_entries([(self.dof, 1.0)]);
-        MovingState { gap: self.gap + q[self.dof], velocity: v[self.dof], rheonomic: 0.0, position: 0.0 }
+        MovingState { gap: self.gap + q[self.dof], velocity: v[self.dof], rheonomic: 0.0 }
     }
     fn gap(&self, _: f64, q: &[f64], row: &mut InteractionRow) -> f64 {
         row.set_entries([(self.dof, 1.0)]);
@@ -56,7 +56,7 @@ fn chain(law: Law, moving: bool, kind: SolverKind) -> (Vec<f64>, usize, f64, f64
     }
     let system = LinearSystem::new(mass, SymmetricBanded::zeros(3, 0), stiffness);
     let mut fixed = InteractionSet::new();
-    fixed.push_friction(InteractionRow::from_entries([(1, 1.0)]), 5.0, 0.0, InteractionKind::Device);
+    fixed.push(InteractionRow::from_entries([(1, 1.0)]), Law::Coulomb { capacity: 5.0 }, InteractionKind::Friction);
     let gap = 2e-3;
     let interactions = if moving {
         Interactions { fixed, moving: vec![Box::new(StillStop { dof: 2, law, gap })] }
@@ -66,7 +66,7 @@ fn chain(law: Law, moving: bool, kind: SolverKind) -> (Vec<f64>, usize, f64, f64
             Law::Compliant { stiffness, .. } => Law::Compliant { gap, stiffness },
             other => other,
         };
-        fixed.push(InteractionRow::from_entries([(2, 1.0)]), fixed_law, 0.0, InteractionKind::Contact);
+        fixed.push(InteractionRow::from_entries([(2, 1.0)]), fixed_law, InteractionKind::Contact);
         Interactions::from(fixed)
     };
     let integration = Integration { theta: 0.5, step: 1e-3 };
@@ -75,7 +75,7 @@ fn chain(law: Law, moving: bool, kind: SolverKind) -> (Vec<f64>, usize, f64, f64
     let tolerance = if kind == SolverKind::Clarabel { 1e-5 } else { 1e-10 };
     let settings = SolverSettings { kind, tolerance, ..SolverSettings::default() };
     let mut stepper =
-        MoreauJean::build(&system, interactions, integration, &settings, None, vec![0.0; 3], vec![0.0; 3]).unwrap();
+        MoreauJean::build(&system, interactions, integration, &settings, vec![0.0; 3], vec![0.0; 3]).unwrap();
     let drive = DofForce { dof: 0, force: |t: f64| 8.0 * (9.0 * t).sin() };
     let (mut pressed, mut lowest) = (0, f64::INFINITY);
     for _ in 0..4000 {
@@ -172,7 +172,6 @@ impl MovingInteraction for WavyGround {
             gap: q[self.dof] - self.height(x),
             velocity: v[self.dof] - self.speed * self.slope(x),
             rheonomic: -self.speed * self.slope(x_next),
-            position: x_next,
         }
     }
     fn gap(&self, time: f64, q: &[f64], row: &mut InteractionRow) -> f64 {
@@ -195,8 +194,7 @@ fn ride(ratio: f64, h: f64, end: f64) -> Vec<(f64, f64, f64, f64)> {
     let integration = Integration { theta: 0.5, step: h };
     let settings = SolverSettings { kind: SolverKind::Projection, tolerance: 1e-12, ..SolverSettings::default() };
     let v0 = speed * profile.slope(0.0);
-    let mut stepper =
-        MoreauJean::build(&system, interactions, integration, &settings, None, vec![0.0], vec![v0]).unwrap();
+    let mut stepper = MoreauJean::build(&system, interactions, integration, &settings, vec![0.0], vec![v0]).unwrap();
     let gravity = DofForce { dof: 0, force: |_| -GRAVITY };
     let mut out = Vec::new();
     while stepper.time < end {
@@ -287,7 +285,7 @@ fn coupled_rigid_contacts_are_projected_together() {
     let settings = SolverSettings { kind: SolverKind::Projection, tolerance: 1e-12, ..SolverSettings::default() };
     let integration = Integration { theta: 0.5, step: 1e-3 };
     let mut stepper =
-        MoreauJean::build(&system, interactions, integration, &settings, None, vec![0.0; 2], vec![v0, -v0]).unwrap();
+        MoreauJean::build(&system, interactions, integration, &settings, vec![0.0; 2], vec![v0, -v0]).unwrap();
     let gravity = PressingBoth;
     let (mut worst, mut resting, mut peak, mut sweeps) = (0.0f64, 0, 0.0f64, 0);
     let check = WavyGround { dof: 0, amplitude, wavelength, speed };
@@ -332,7 +330,7 @@ fn the_interior_point_refuses_moving_interactions() {
     let interactions = Interactions { fixed: InteractionSet::new(), moving: vec![Box::new(stop)] };
     let integration = Integration { theta: 0.5, step: 1e-3 };
     let settings = SolverSettings { kind: SolverKind::InteriorPoint, ..SolverSettings::default() };
-    match MoreauJean::build(&system, interactions, integration, &settings, None, vec![0.0], vec![0.0]) {
+    match MoreauJean::build(&system, interactions, integration, &settings, vec![0.0], vec![0.0]) {
         Err(nscd::NscdError::Unsupported { solver: SolverKind::InteriorPoint, reason }) => {
             assert!(reason.contains("projection or clarabel"), "{reason}");
         }

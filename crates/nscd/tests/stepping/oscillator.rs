@@ -1,7 +1,7 @@
 //! A single-DOF Coulomb oscillator driven through the same stepper and solvers.
 
 use banded::SymmetricBanded;
-use friction::{InteractionKind, InteractionRow, InteractionSet};
+use friction::{InteractionKind, InteractionRow, InteractionSet, Law};
 use nscd::forcing::{DofForce, Unloaded};
 use nscd::solver::{SolverKind, SolverSettings};
 use nscd::stepper::Integration;
@@ -26,11 +26,14 @@ fn oscillator(
 ) -> Vec<(f64, f64)> {
     let system = LinearSystem { mass: scalar(mass), damping: scalar(0.0), stiffness: scalar(stiffness) };
     let mut interactions = InteractionSet::new();
-    interactions.push_friction(InteractionRow::from_entries([(0, 1.0)]), force, 0.0, InteractionKind::Device);
+    interactions.push(
+        InteractionRow::from_entries([(0, 1.0)]),
+        Law::Coulomb { capacity: force },
+        InteractionKind::Friction,
+    );
     let integration = Integration { theta: 0.5, step: h };
     let settings = SolverSettings { kind, tolerance: 1e-12, ..SolverSettings::default() };
-    let mut stepper =
-        MoreauJean::build(&system, interactions, integration, &settings, None, vec![x0], vec![0.0]).unwrap();
+    let mut stepper = MoreauJean::build(&system, interactions, integration, &settings, vec![x0], vec![0.0]).unwrap();
     let mut out = vec![(0.0, x0)];
     for _ in 0..steps {
         stepper.step(forcing).unwrap();
@@ -112,7 +115,7 @@ fn non_finite_state_stops_the_run_at_its_step() {
         let integration = Integration { theta: 0.5, step: 1e-3 };
         let settings = SolverSettings { kind: SolverKind::Projection, ..SolverSettings::default() };
         let mut stepper =
-            MoreauJean::build(&system, interactions, integration, &settings, None, vec![0.1], vec![0.0]).unwrap();
+            MoreauJean::build(&system, interactions, integration, &settings, vec![0.1], vec![0.0]).unwrap();
         // Finite until t = 5 ms, then the bad value (f64::MAX·h² overflows the energy although q stays finite).
         let forcing = DofForce { dof: 0, force: move |t: f64| if t < 5e-3 - 1e-12 { 1.0 } else { bad } };
         let mut failure = None;

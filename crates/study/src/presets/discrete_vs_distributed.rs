@@ -90,7 +90,7 @@ fn run_both(
     let results = runner.map_each(&cases, |case| {
         let middle =
             case.interactions.positions().iter().position(|&x| (x - case.model.mesh().length / 2.0).abs() < 1e-9);
-        let capacity = middle.map_or(f64::NAN, |j| case.interactions.capacity(j));
+        let capacity = middle.map_or(f64::NAN, |j| case.interactions.interactions().capacity(j));
         Ok((runner.simulate(case, &case.settings)?, capacity))
     })?;
     let mut failures = Vec::new();

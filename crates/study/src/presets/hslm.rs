@@ -373,7 +373,6 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
     let span = deck_frequency(&case.model).is_some();
     let frequencies = if span { natural_frequencies(&case.model) } else { None };
     let range = (speeds[0], speeds[speeds.len() - 1]);
-    let train_of = |curve: usize| curve % TRAINS + 1;
     let resonances_of =
         |train: usize| frequencies.as_deref().map_or_else(Vec::new, |f| resonances(f, coach_length(train), range));
     let cases = scenarios.iter().map(|(_, s)| s.build()).collect::<Result<Vec<_>>>()?;
@@ -409,29 +408,8 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
     })?;
     let runs = points.iter().map(Vec::len).sum::<usize>()
         + refined.iter().map(|(d, a)| d.evaluations.len() + a.evaluations.len()).sum::<usize>();
-    let curves = points
-        .into_iter()
-        .zip(refined)
-        .enumerate()
-        .map(|(i, (points, (deflection, acceleration)))| {
-            let train = train_of(i);
-            let mut drawn = points.clone();
-            drawn.extend(deflection.evaluations.iter().chain(&acceleration.evaluations).cloned());
-            drawn.sort_by(|a, b| a.speed.total_cmp(&b.speed));
-            TrainCurve {
-                train,
-                friction: i / TRAINS,
-                points,
-                critical: deflection.into(),
-                acceleration,
-                drawn,
-                static_max: statics[train - 1],
-                resonances: resonances_of(train),
-            }
-        })
-        .collect();
     let results = Results {
-        curves,
+        curves: train_curves(points, refined, &statics, resonances_of),
         axle_share: base.axle_share(),
         friction,
         frequencies,
@@ -451,6 +429,41 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
         failures,
         ..blank(runs)
     })
+}
+
+/// The HSLM train (1–10) of curve `curve` of the study (the set-up major).
+fn train_of(curve: usize) -> usize {
+    curve % TRAINS + 1
+}
+
+/// Curve i of the study (train i mod 10 + 1, set-up i / 10): its swept points, its refined deflection and
+/// acceleration peaks, all of them to draw in order of speed, the train's static maximum (`statics`, by train) and
+/// its resonance speeds.
+fn train_curves(
+    points: Vec<Vec<SweepPoint>>,
+    refined: Vec<(RefinedPeak, RefinedPeak)>,
+    statics: &[f64],
+    resonances_of: impl Fn(usize) -> Vec<Resonance>,
+) -> Vec<TrainCurve> {
+    let curves = points.into_iter().zip(refined).enumerate();
+    curves
+        .map(|(i, (points, (deflection, acceleration)))| {
+            let train = train_of(i);
+            let mut drawn = points.clone();
+            drawn.extend(deflection.evaluations.iter().chain(&acceleration.evaluations).cloned());
+            drawn.sort_by(|a, b| a.speed.total_cmp(&b.speed));
+            TrainCurve {
+                train,
+                friction: i / TRAINS,
+                points,
+                critical: deflection.into(),
+                acceleration,
+                drawn,
+                static_max: statics[train - 1],
+                resonances: resonances_of(train),
+            }
+        })
+        .collect()
 }
 
 /// The ten HSLM trains on each friction set-up, labelled by train and set-up, the set-up major.

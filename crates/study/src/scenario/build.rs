@@ -4,9 +4,9 @@
 use super::{Case, QuadratureKind, Scenario, SweepSection, fnv1a};
 use crate::error::{Result, StudyError, invalid};
 use crate::number::number;
-use fem_beam::{AbsorbingZones, BeamModel, Foundation, Mesh, Supports};
-use friction::InteractionSet;
+use fem_beam::{AbsorbingZones, BeamModel, Foundation, Mesh};
 use nscd::SolverSettings;
+use track::PlacedInteractions;
 use track::simulation::{IntegrationSettings, MovingLoadSettings, RecordSettings};
 use track::{DeviceLayout, Devices, DistributedFriction, Quadrature};
 use track::{InitialState, Load, RunSettings};
@@ -36,7 +36,7 @@ impl Scenario {
     /// The assembled beam model (beam, mesh, foundation with its damping and absorbing zones, supports), checked;
     /// refuses degenerate meshes and mechanisms ([`crate::diagnostics::refuse_degenerate`]).
     pub fn model(&self) -> Result<BeamModel> {
-        let beam = self.beam.beam();
+        let beam = self.beam;
         beam.validate()?;
         let mesh = Mesh::new(self.mesh.length, self.mesh.elements)?;
         let f = &self.foundation;
@@ -60,7 +60,7 @@ impl Scenario {
             }
             (None, None) => {}
         }
-        let supports = Supports { left: self.supports.left.into(), right: self.supports.right.into() };
+        let supports = self.supports;
         let damping = match &f.absorbing_zones {
             Some(z) => {
                 finite_positive("foundation.absorbing_zones.length", z.length, "m")?;
@@ -142,8 +142,8 @@ impl Scenario {
         }
     }
 
-    fn interactions(&self, model: &BeamModel) -> Result<InteractionSet> {
-        let mut interactions = InteractionSet::new();
+    fn interactions(&self, model: &BeamModel) -> Result<PlacedInteractions> {
+        let mut interactions = PlacedInteractions::new();
         if let Some(d) = &self.friction.devices {
             let layout = match (d.count, &d.positions) {
                 (Some(count), None) => DeviceLayout::Uniform { count },

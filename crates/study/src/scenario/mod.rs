@@ -14,16 +14,15 @@ pub mod rail;
 pub mod sections;
 pub mod vehicle;
 
-pub use contact::ContactKind;
 pub use rail::RailSection;
 pub use sections::*;
 pub use vehicle::VehicleSection;
 
 use crate::error::{Result, StudyError, invalid};
-use fem_beam::BeamModel;
-use friction::InteractionSet;
+use fem_beam::{Beam, BeamModel, Mesh, Supports};
 use parse::{did_you_mean, key_path, line_column};
 use serde::{Deserialize, Serialize};
+use track::PlacedInteractions;
 use track::RunSettings;
 
 /// A whole case: beam, mesh, supports, foundation, load, friction, integration, sweep, output.
@@ -33,11 +32,11 @@ pub struct Scenario {
     /// A title for reports.
     pub title: String,
     /// The rail section.
-    pub beam: BeamSection,
+    pub beam: Beam,
     /// Length and elements.
-    pub mesh: MeshSection,
+    pub mesh: Mesh,
     /// End supports.
-    pub supports: SupportsSection,
+    pub supports: Supports,
     /// The soil.
     pub foundation: FoundationSection,
     /// Damping of the structure itself (Rayleigh), beside the foundation's.
@@ -69,7 +68,7 @@ pub struct Case {
     /// The assembled beam.
     pub model: BeamModel,
     /// All friction sections.
-    pub interactions: InteractionSet,
+    pub interactions: PlacedInteractions,
     /// Run settings (speed from `[load]`).
     pub settings: RunSettings,
     /// Identifies what a run of this case at a given speed computes: a hash (64-bit FNV-1a) of the frictrack version

@@ -2,94 +2,11 @@
 //! (docs/theory.md §2), unknown keys refused.
 
 use crate::error::{Result, invalid};
+use fem_beam::Foundation;
 use fem_beam::reference::uic60_on_soft_soil;
-use fem_beam::{Foundation, Mesh, Support};
 use nscd::SolverKind;
 use serde::{Deserialize, Serialize};
 use track::RunSettings;
-
-/// `[beam]`: the rail (UIC60 by default).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(default, deny_unknown_fields)]
-pub struct BeamSection {
-    /// E (Pa).
-    pub youngs_modulus: f64,
-    /// I (m⁴).
-    pub second_moment: f64,
-    /// A (m²).
-    pub area: f64,
-    /// ρ (kg/m³).
-    pub density: f64,
-}
-
-impl Default for BeamSection {
-    fn default() -> Self {
-        let b = fem_beam::Beam::default();
-        Self { youngs_modulus: b.youngs_modulus, second_moment: b.second_moment, area: b.area, density: b.density }
-    }
-}
-
-impl BeamSection {
-    /// The rail section these values describe (not yet validated).
-    pub fn beam(&self) -> fem_beam::Beam {
-        fem_beam::Beam {
-            youngs_modulus: self.youngs_modulus,
-            second_moment: self.second_moment,
-            area: self.area,
-            density: self.density,
-        }
-    }
-}
-
-/// `[mesh]`.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(default, deny_unknown_fields)]
-pub struct MeshSection {
-    /// Beam length L (m).
-    pub length: f64,
-    /// Number of equal elements.
-    pub elements: usize,
-}
-
-impl Default for MeshSection {
-    fn default() -> Self {
-        let m = Mesh::default();
-        Self { length: m.length, elements: m.elements }
-    }
-}
-
-/// An end support.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
-#[serde(rename_all = "kebab-case")]
-pub enum SupportKind {
-    /// w = 0.
-    #[default]
-    Pinned,
-    /// w = 0, θ = 0.
-    Clamped,
-    /// No constraint.
-    Free,
-}
-
-impl From<SupportKind> for Support {
-    fn from(kind: SupportKind) -> Self {
-        match kind {
-            SupportKind::Pinned => Support::Pinned,
-            SupportKind::Clamped => Support::Clamped,
-            SupportKind::Free => Support::Free,
-        }
-    }
-}
-
-/// `[supports]`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
-#[serde(default, deny_unknown_fields)]
-pub struct SupportsSection {
-    /// Support at x = 0.
-    pub left: SupportKind,
-    /// Support at x = L.
-    pub right: SupportKind,
-}
 
 /// `[foundation]`: Winkler stiffness and viscous damping (as a value or as a ratio of c_cr, not both).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]

@@ -2,7 +2,6 @@
 //! and its translation into [`track::vehicle`] settings, every error named by its path in the scenario file. The
 //! rail under them: [`super::rail`].
 
-use super::contact::ContactKind;
 use crate::error::StudyError;
 use crate::error::{Result, invalid};
 use fem_beam::Train;
@@ -12,6 +11,7 @@ use track::vehicle::Vehicle;
 use track::vehicle::builtin::{MovingMass, QuarterCar};
 use track::vehicle::consist::{FlatWheel, PlacedVehicle, VehicleSettings};
 use track::vehicle::rail_car::RailCar;
+use track::vehicle::wheel_rail::WheelRailKind;
 
 /// The kind of vehicle of `[vehicle]`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
@@ -65,7 +65,7 @@ pub struct VehicleSection {
     pub wheel_mass: Option<f64>,
     /// The 2-D rail car's parameters (defaults: [`RailCar::default`]).
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub rail_car: Option<RailCarSection>,
+    pub rail_car: Option<RailCar>,
     /// A vehicle by its matrices.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub matrices: Option<MatricesSection>,
@@ -75,7 +75,7 @@ pub struct VehicleSection {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub spacing: Option<f64>,
     /// The wheel–rail contact law.
-    pub contact: ContactKind,
+    pub contact: WheelRailKind,
     /// Hertz coefficient C_H (N/m^1.5); default from `wheel_radius`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub hertz_coefficient: Option<f64>,
@@ -113,7 +113,7 @@ impl Default for VehicleSection {
             matrices: None,
             count: 1,
             spacing: None,
-            contact: ContactKind::Hertz,
+            contact: WheelRailKind::Hertz,
             hertz_coefficient: None,
             wheel_radius: None,
             contact_stiffness: None,
@@ -121,71 +121,6 @@ impl Default for VehicleSection {
             flats: Vec::new(),
             offset: None,
             behind: Vec::new(),
-        }
-    }
-}
-
-/// `[vehicle.rail_car]`: the 2-D rail car of one rail (docs/theory.md §12); every key optional.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(default, deny_unknown_fields)]
-pub struct RailCarSection {
-    /// Car body mass (kg).
-    pub body_mass: f64,
-    /// Car body pitch inertia (kg·m²).
-    pub body_pitch_inertia: f64,
-    /// Bogie mass (kg).
-    pub bogie_mass: f64,
-    /// Bogie pitch inertia (kg·m²).
-    pub bogie_pitch_inertia: f64,
-    /// Wheelset mass (kg).
-    pub wheelset_mass: f64,
-    /// Primary suspension per wheel (N/m).
-    pub primary_stiffness: f64,
-    /// (N·s/m).
-    pub primary_damping: f64,
-    /// Secondary suspension per bogie (N/m).
-    pub secondary_stiffness: f64,
-    /// (N·s/m).
-    pub secondary_damping: f64,
-    /// Half the distance between bogie centres (m).
-    pub bogie_half_distance: f64,
-    /// Half the bogie wheelbase (m).
-    pub axle_half_distance: f64,
-}
-
-impl Default for RailCarSection {
-    fn default() -> Self {
-        let c = RailCar::default();
-        Self {
-            body_mass: c.body_mass,
-            body_pitch_inertia: c.body_pitch_inertia,
-            bogie_mass: c.bogie_mass,
-            bogie_pitch_inertia: c.bogie_pitch_inertia,
-            wheelset_mass: c.wheelset_mass,
-            primary_stiffness: c.primary_stiffness,
-            primary_damping: c.primary_damping,
-            secondary_stiffness: c.secondary_stiffness,
-            secondary_damping: c.secondary_damping,
-            bogie_half_distance: c.bogie_half_distance,
-            axle_half_distance: c.axle_half_distance,
-        }
-    }
-}
-
-impl RailCarSection {
-    fn car(&self) -> RailCar {
-        RailCar {
-            body_mass: self.body_mass,
-            body_pitch_inertia: self.body_pitch_inertia,
-            bogie_mass: self.bogie_mass,
-            bogie_pitch_inertia: self.bogie_pitch_inertia,
-            wheelset_mass: self.wheelset_mass,
-            primary_stiffness: self.primary_stiffness,
-            primary_damping: self.primary_damping,
-            secondary_stiffness: self.secondary_stiffness,
-            secondary_damping: self.secondary_damping,
-            bogie_half_distance: self.bogie_half_distance,
-            axle_half_distance: self.axle_half_distance,
         }
     }
 }
@@ -293,7 +228,7 @@ impl VehicleSection {
                 unused("body_mass … wheel_mass", quarter.iter().any(Option::is_some))?;
                 unused("matrices", self.matrices.is_some())?;
                 // The car's fields live under [vehicle.rail_car]: errors name them there.
-                let car = self.rail_car.unwrap_or_default().car().vehicle();
+                let car = self.rail_car.unwrap_or_default().vehicle();
                 car.map_err(|e| in_group(&format!("{path}.rail_car"), e.into()))
             }
             VehicleKind::Matrices => {
@@ -388,9 +323,7 @@ impl VehicleSection {
                     ));
                 }
                 let populated = match self.kind {
-                    VehicleKind::RailCar => {
-                        VehicleSettings::populate_cars(&self.rail_car.unwrap_or_default().car(), train)
-                    }
+                    VehicleKind::RailCar => VehicleSettings::populate_cars(&self.rail_car.unwrap_or_default(), train),
                     _ => VehicleSettings::populate(&vehicle, train),
                 };
                 populated.map_err(|e| in_group(path, e.into()))?

@@ -5,8 +5,9 @@
 //! has the row selecting its node's w DOF and the bound F_u. Devices snapped to the same node merge (bounds add).
 
 use crate::error::{Result, TrackError};
+use crate::placed::{PlacedInteractions, SectionKind};
 use fem_beam::BeamModel;
-use friction::{InteractionKind, InteractionRow, InteractionSet};
+use friction::{InteractionRow, Law};
 
 /// Where the devices go.
 #[derive(Debug, Clone, PartialEq)]
@@ -86,16 +87,17 @@ impl Devices {
     }
 
     /// The contact set: one row per distinct node (devices on the same node merged, bounds added).
-    pub fn interactions(&self, model: &BeamModel) -> Result<InteractionSet> {
+    pub fn interactions(&self, model: &BeamModel) -> Result<PlacedInteractions> {
         let mut nodes = self.snapped_nodes(model)?;
         nodes.sort_unstable();
-        let mut set = InteractionSet::new();
+        let mut set = PlacedInteractions::new();
         let mut i = 0;
         while i < nodes.len() {
             let node = nodes[i];
             let same = nodes[i..].iter().take_while(|&&n| n == node).count();
             let row = InteractionRow::from_entries(model.dofs().free_index(2 * node).map(|d| (d, 1.0)));
-            set.push_friction(row, self.force * same as f64, model.mesh().node_x(node), InteractionKind::Device);
+            let law = Law::Coulomb { capacity: self.force * same as f64 };
+            set.push(row, law, model.mesh().node_x(node), SectionKind::Device);
             i += same;
         }
         Ok(set)

@@ -8,9 +8,10 @@
 //! and the bound F_s = f_u·weight_s.
 
 use crate::error::{Result, TrackError};
+use crate::placed::{PlacedInteractions, SectionKind};
 use fem_beam::BeamModel;
 use fem_beam::element::hermite;
-use friction::{InteractionKind, InteractionRow, InteractionSet};
+use friction::{InteractionRow, Law};
 
 /// Quadrature of the distributed friction along each element.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -103,7 +104,7 @@ impl DistributedFriction {
     }
 
     /// The contact set on the mesh of `model`: J·n_e + 1 sections in order of x, minus those on supports.
-    pub fn interactions(&self, model: &BeamModel) -> Result<InteractionSet> {
+    pub fn interactions(&self, model: &BeamModel) -> Result<PlacedInteractions> {
         self.validate()?;
         let mesh = model.mesh();
         let dofs = model.dofs();
@@ -115,7 +116,7 @@ impl DistributedFriction {
                 weights[e * j + s] += self.weight_fraction(s) * l;
             }
         }
-        let mut set = InteractionSet::new();
+        let mut set = PlacedInteractions::new();
         for (g, weight) in weights.iter().enumerate() {
             let (e, s) = ((g / j).min(ne - 1), g - (g / j).min(ne - 1) * j);
             let row = if s == 0 || s == j {
@@ -126,7 +127,7 @@ impl DistributedFriction {
                 InteractionRow::from_entries((0..4).filter_map(|k| dofs.free_index(2 * e + k).map(|d| (d, n[k]))))
             };
             let x = (e as f64 + s as f64 / j as f64) * l;
-            set.push_friction(row, self.force_per_length * weight, x, InteractionKind::Ballast);
+            set.push(row, Law::Coulomb { capacity: self.force_per_length * weight }, x, SectionKind::Ballast);
         }
         Ok(set)
     }

@@ -24,9 +24,9 @@ pub use settings::{InitialState, IntegrationSettings, Load, MovingLoadSettings, 
 pub use vehicles::{IMPACT_WINDOW, LOSS_OF_CONTACT};
 
 use crate::error::Result;
+use crate::placed::PlacedInteractions;
 use fem_beam::BeamModel;
 use fem_beam::reference::InfiniteBeam;
-use friction::InteractionSet;
 use nscd::Forcing;
 use nscd::solver::SolverKind;
 use records::{DeflectionRecord, Record, SectionRecords, SolverTally, StepState};
@@ -45,7 +45,7 @@ pub fn coupling_length(model: &BeamModel, step: f64, theta: f64) -> f64 {
 pub fn resolve_solver(
     kind: SolverKind,
     model: &BeamModel,
-    interactions: &InteractionSet,
+    interactions: &PlacedInteractions,
     (step, theta): (f64, f64),
     moving: bool,
 ) -> SolverKind {
@@ -65,13 +65,13 @@ pub fn resolve_solver(
 #[derive(Debug, Clone, Copy)]
 pub struct Simulation<'a> {
     model: &'a BeamModel,
-    interactions: &'a InteractionSet,
+    interactions: &'a PlacedInteractions,
     settings: &'a RunSettings,
 }
 
 impl<'a> Simulation<'a> {
     /// Validate and prepare a run.
-    pub fn new(model: &'a BeamModel, interactions: &'a InteractionSet, settings: &'a RunSettings) -> Result<Self> {
+    pub fn new(model: &'a BeamModel, interactions: &'a PlacedInteractions, settings: &'a RunSettings) -> Result<Self> {
         settings.validate(model)?;
         Ok(Self { model, interactions, settings })
     }

@@ -7,10 +7,10 @@ use super::results::{Extreme, SectionHistory, SolverStatistics, WindowExtremes};
 use super::settings::RecordSettings;
 use crate::error::Result;
 use crate::moving_load::MovingLoad;
+use crate::placed::PlacedInteractions;
 use fem_beam::BeamModel;
 use fem_beam::element::hermite;
 use fem_beam::section::Motion;
-use friction::InteractionSet;
 use nscd::solver::StepReport;
 
 /// The state after step k, as every record reads it.
@@ -117,7 +117,7 @@ pub(super) struct SectionRecords<'a> {
 
 impl<'a> SectionRecords<'a> {
     /// Recorders at `sections` (m) of `model` with friction `interactions`, their series reserved for `steps` steps.
-    pub(super) fn new(model: &'a BeamModel, interactions: &InteractionSet, sections: &[f64], steps: usize) -> Self {
+    pub(super) fn new(model: &'a BeamModel, interactions: &PlacedInteractions, sections: &[f64], steps: usize) -> Self {
         let mesh = model.mesh();
         let recorders = sections
             .iter()
@@ -182,7 +182,7 @@ impl Record for SectionRecords<'_> {
 }
 
 /// The friction sections strictly inside the elements next to `node`, with their shape functions there.
-fn inside_sections(mesh: &fem_beam::Mesh, interactions: &InteractionSet, node: usize) -> Vec<InsideSection> {
+fn inside_sections(mesh: &fem_beam::Mesh, interactions: &PlacedInteractions, node: usize) -> Vec<InsideSection> {
     let l = mesh.element_length();
     let elements = [node.wrapping_sub(1), node].into_iter().filter(|&e| e < mesh.elements);
     let inside = |(contact, &xs): (usize, &f64)| {

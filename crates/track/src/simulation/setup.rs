@@ -3,7 +3,7 @@
 //! weights) and how many steps the run takes.
 
 use super::vehicles::{Coupling, VehicleObserver};
-use super::{Simulation, coupling_length, resolve_solver};
+use super::{Simulation, resolve_solver};
 use crate::error::Result;
 use crate::moving_load::MovingLoad;
 use crate::system::beam_system;
@@ -33,7 +33,7 @@ pub(super) struct Setup {
 
 impl Simulation<'_> {
     /// Set the run up: with vehicles the coupled system starting from the beam's initial state, else the beam; the
-    /// solver resolved from `auto`; the interior point's window margin; the step counts.
+    /// solver resolved from `auto`; the step counts.
     pub(super) fn set_up(&self) -> Result<Setup> {
         let (model, settings) = (self.model, self.settings);
         let mesh = *model.mesh();
@@ -52,10 +52,6 @@ impl Simulation<'_> {
         };
         let moving = coupling.is_some();
         let kind = resolve_solver(settings.integration.solver.kind, model, self.interactions, (h, theta), moving);
-        // Coupling through M̂⁻¹ decays like e^{−x/(√2ℓ)}: 30ℓ leaves ~6e-10, and a window that fails the final
-        // check is retried wider. Instruction counts over 1000 steps (1, 5, 10 kN/m): 30ℓ is 4–11 % below 40ℓ,
-        // 20ℓ and 15ℓ no better than 30ℓ.
-        let margin = Some(30.0 * coupling_length(model, h, theta));
         // With vehicles the moving forces are none: the weights load the vehicles, the wheels the rail.
         let train = if moving {
             Train { name: String::new(), axles: Vec::new(), patches: Vec::new() }
@@ -64,14 +60,14 @@ impl Simulation<'_> {
         };
         let load = MovingLoad::train(mesh, model.dofs(), train, settings.moving.speed, start);
         let solver = SolverSettings { kind, ..settings.integration.solver };
-        let fixed = self.interactions.clone();
+        let fixed = self.interactions.interactions().clone();
         let (stepper, weights, vehicles) = match coupling {
             Some(c) => {
                 let interactions = Interactions { fixed, moving: c.contacts };
-                let stepper = MoreauJean::build(&c.system, interactions, integration, &solver, margin, c.q0, c.v0)?;
+                let stepper = MoreauJean::build(&c.system, interactions, integration, &solver, c.q0, c.v0)?;
                 (stepper, Some(c.weights), Some(c.observer))
             }
-            None => (MoreauJean::build(&beam_system(model), fixed, integration, &solver, margin, q0, v0)?, None, None),
+            None => (MoreauJean::build(&beam_system(model), fixed, integration, &solver, q0, v0)?, None, None),
         };
         let crossing_steps = (settings.crossing_time(mesh.length) / h).round() as usize;
         let total_steps = match settings.integration.end_time {

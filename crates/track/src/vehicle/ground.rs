@@ -51,7 +51,6 @@ impl MovingInteraction for WheelOnGround {
             gap: q[self.dof] - r,
             velocity: v[self.dof] - self.speed * slope,
             rheonomic: -self.speed * self.track.height_slope(next, next - self.start).1,
-            position: next,
         }
     }
 

@@ -4,7 +4,7 @@
 //! (N, upward positive, so −m g); λ_w ≥ 0 the contact force on wheel w, never tensile.
 //!
 //! Built-in forms ([`builtin`]): the moving mass and the quarter car; the 2-D rail car ([`rail_car`]); a user
-//! vehicle is given by its matrices. [`consist`] puts vehicles in a row for a run.
+//! vehicle is given by its matrices. [`consist`] puts vehicles in a row for a run, [`wheel_rail`] names their contact with the rail.
 //! [`ground`] rolls wheels over rigid ground with a rail profile r(x), [`rail`] along the beam (compliant contact).
 
 pub mod builtin;
@@ -12,6 +12,7 @@ pub mod consist;
 pub mod ground;
 pub mod rail;
 pub mod rail_car;
+pub mod wheel_rail;
 
 use crate::error::{Result, invalid};
 use banded::SymmetricBanded;

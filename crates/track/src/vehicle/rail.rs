@@ -24,7 +24,7 @@ use friction::{InteractionKind, InteractionRow, Law};
 use irregularity::WheelTrack;
 use nscd::{MovingInteraction, MovingState};
 
-use super::consist::WheelRail;
+use super::wheel_rail::WheelRail;
 use crate::error::Result;
 
 /// A wheel on the beam.
@@ -152,7 +152,7 @@ impl MovingInteraction for WheelOnBeam {
             let slope = combine(&dofs, &dn, q) + self.theta * step * combine(&dofs, &dn, v);
             rheonomic -= self.speed * slope;
         }
-        MovingState { gap, velocity, rheonomic, position: next }
+        MovingState { gap, velocity, rheonomic }
     }
 
     fn gap(&self, time: f64, q: &[f64], row: &mut InteractionRow) -> f64 {

@@ -22,6 +22,7 @@ use fem_beam::Axle;
 
 /// A 2-D rail car's parameters, for one rail.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize), serde(default, deny_unknown_fields))]
 pub struct RailCar {
     /// Car body mass M_c (kg) > 0.
     pub body_mass: f64,

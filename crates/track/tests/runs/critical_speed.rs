@@ -1,13 +1,13 @@
 //! The linear critical speed of the finite reference beam.
 
 use super::common::reference;
-use friction::InteractionSet;
+use track::PlacedInteractions;
 use track::{RunSettings, Simulation};
 
 #[test]
 fn largest_deflection_is_near_the_critical_speed() {
     let model = reference();
-    let interactions = InteractionSet::new();
+    let interactions = PlacedInteractions::new();
     let v_cr = fem_beam::reference::uic60_on_soft_soil().infinite_beam().unwrap().critical_speed();
     let sweep: Vec<(f64, f64)> = (0..=22)
         .map(|i| {

@@ -15,9 +15,12 @@ fn equal_capacity_discrete_and_distributed_friction_respond_alike() {
     };
     let devices = Devices::uniform(199, 1e3).interactions(&model).unwrap();
     let distributed = DistributedFriction::new(995.0).interactions(&model).unwrap();
-    assert!((devices.total_capacity() - 199e3).abs() < 1e-6);
+    assert!((devices.interactions().total_capacity() - 199e3).abs() < 1e-6);
     // The two pinned end sections (capacity f_u·l/8 each) are dropped: 199 kN minus 0.25 kN.
-    assert!((distributed.total_capacity() + distributed.dropped_capacity() - 199e3).abs() < 1e-6);
+    assert!(
+        (distributed.interactions().total_capacity() + distributed.interactions().dropped_capacity() - 199e3).abs()
+            < 1e-6
+    );
     let a = Simulation::new(&model, &devices, &settings).unwrap().run().unwrap();
     let b = Simulation::new(&model, &distributed, &settings).unwrap().run().unwrap();
     let (ha, hb) = (&a.histories[0], &b.histories[0]);

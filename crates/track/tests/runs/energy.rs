@@ -1,7 +1,7 @@
 //! The discrete energy identity (docs/theory.md §6) closes to round-off for any θ and any friction.
 
 use super::common::beam;
-use friction::InteractionSet;
+use track::PlacedInteractions;
 use track::{Devices, DistributedFriction};
 use track::{RunSettings, Simulation};
 
@@ -9,7 +9,7 @@ use track::{RunSettings, Simulation};
 fn energy_balance_closes() {
     let model = beam(60.0, 60);
     let sets = [
-        ("linear", InteractionSet::new()),
+        ("linear", PlacedInteractions::new()),
         ("31 devices", Devices::uniform(31, 50e3).interactions(&model).unwrap()),
         ("distributed", DistributedFriction::new(2e3).interactions(&model).unwrap()),
     ];

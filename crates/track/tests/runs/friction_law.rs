@@ -7,7 +7,7 @@ use track::{RunSettings, Simulation};
 
 fn check_law_every_step(
     model: &fem_beam::BeamModel,
-    interactions: &friction::InteractionSet,
+    interactions: &track::PlacedInteractions,
     kind: SolverKind,
 ) -> usize {
     let mut settings = {

@@ -1,9 +1,9 @@
 //! Without friction the stepper is the linear θ-method; with vanishing friction it converges to it.
 
 use super::common::{beam, relative_difference};
-use friction::InteractionSet;
 use nalgebra::DVector;
 use nscd::Forcing;
+use track::PlacedInteractions;
 use track::{Devices, DistributedFriction};
 use track::{MovingLoad, RunSettings, Simulation};
 
@@ -56,7 +56,7 @@ fn friction_free_run_is_the_linear_theta_method() {
                 s
             };
             let reference = dense_theta_method(&model, &settings);
-            let interactions = InteractionSet::new();
+            let interactions = PlacedInteractions::new();
             let mut worst: f64 = 0.0;
             let result = Simulation::new(&model, &interactions, &settings)
                 .unwrap()
@@ -81,9 +81,9 @@ fn vanishing_friction_converges_to_the_linear_response() {
         s.integration.load_advance = 0.25;
         s
     };
-    let linear = Simulation::new(&model, &InteractionSet::new(), &settings).unwrap().run().unwrap();
+    let linear = Simulation::new(&model, &PlacedInteractions::new(), &settings).unwrap().run().unwrap();
     let w_lin = linear.max_downward.magnitude;
-    let gap = |interactions: InteractionSet| {
+    let gap = |interactions: PlacedInteractions| {
         let r = Simulation::new(&model, &interactions, &settings).unwrap().run().unwrap();
         (w_lin - r.max_downward.magnitude).abs() / w_lin
     };

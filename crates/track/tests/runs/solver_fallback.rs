@@ -18,14 +18,24 @@ fn interior_point_breaks_the_predictor_corrector_cycle() {
     let mut settings = RunSettings::default();
     settings.moving.speed = 20.0;
     settings.integration.solver.kind = SolverKind::InteriorPoint;
-    let result = Simulation::new(&model, &interactions, &settings).unwrap().run().unwrap();
+    // Each step's law residual against its own tolerance, 1e-6 of that step's velocity scale (measured: 0.14–0.64
+    // m/s, so tolerances of 1.4e-7 to 6.4e-7 m/s).
+    let mut worst: f64 = 0.0;
+    let result = Simulation::new(&model, &interactions, &settings)
+        .unwrap()
+        .run_observed(&mut |view| {
+            worst = worst.max(view.report.residual / view.report.tolerance);
+            true
+        })
+        .unwrap();
     let s = &result.statistics;
     assert_eq!(s.steps, 2000);
     assert_eq!(s.fallback_steps(), 0, "{:?}", s.fallbacks);
     // 26 measured; the safeguard adds ~6 iterations where it engages, and the give-up rule would stop at ~80.
     assert!(s.max_iterations <= 60, "max {} iterations in a step", s.max_iterations);
-    // Relative tolerance 1e-6 of a velocity scale below 0.5 m/s.
-    assert!(s.max_residual <= 5e-7, "max residual {:e} m/s", s.max_residual);
+    assert!(worst <= 1.0, "a step's law residual reached {worst} of its tolerance");
+    // No step's velocity scale reaches 1 m/s at 20 m/s.
+    assert!(s.max_residual <= 1e-6, "max residual {:e} m/s", s.max_residual);
     let e = &result.energy;
     assert!(e.residual().abs() <= 1e-9 * e.load_work, "energy residual {:e} J", e.residual());
 }

@@ -1,11 +1,10 @@
 //! Independent solvers agree on v_{k+1} (docs/theory.md §5: p need not be unique, v is).
 
 use super::common::{reference, relative_difference};
-use friction::InteractionSet;
 use nscd::solver::{InteractionProblem, SolverSettings, build_solver};
 use nscd::stepper::Integration;
 use nscd::{MoreauJean, SolverKind};
-use track::simulation::coupling_length;
+use track::PlacedInteractions;
 use track::system::beam_system;
 use track::{Devices, DistributedFriction};
 use track::{InitialState, MovingLoad, RunSettings, Simulation};
@@ -25,7 +24,7 @@ fn tight(speed: f64) -> RunSettings {
 /// `b`'s own law residual exceeds 1e-8 of the velocity scale (Clarabel's stopping rule, on degenerate steps) cannot
 /// be held to 1e-8 and are not compared; they are counted and must stay below 5 % of the steps.
 fn same_state_difference(
-    interactions: &InteractionSet,
+    interactions: &PlacedInteractions,
     a: SolverKind,
     b: SolverKind,
     settings: &RunSettings,
@@ -35,10 +34,10 @@ fn same_state_difference(
     let h = settings.integration.load_advance / settings.moving.speed;
     let system = beam_system(&model);
     let integration = Integration { theta: settings.integration.theta, step: h };
-    let margin = Some(30.0 * coupling_length(&model, h, settings.integration.theta));
-    let checking = InteractionProblem::new(&system, interactions.clone(), integration).unwrap();
+    let set = interactions.interactions();
+    let checking = InteractionProblem::new(&system, set.clone(), integration).unwrap();
     let whole = SolverSettings { moving_window: false, ..settings.integration.solver };
-    let mut solver_b = build_solver(b, &checking, &whole, None).unwrap();
+    let mut solver_b = build_solver(b, &checking, &whole).unwrap();
     let (q0, v0) = Simulation::new(&model, interactions, settings).unwrap().initial_state().unwrap();
     let start = settings.start_position();
     let load = MovingLoad::new(
@@ -50,17 +49,17 @@ fn same_state_difference(
     );
     let n = system.dofs();
     let stepping = SolverSettings { kind: a, ..settings.integration.solver };
-    let mut stepper = MoreauJean::build(&system, interactions.clone(), integration, &stepping, margin, q0, v0).unwrap();
+    let mut stepper = MoreauJean::build(&system, set.clone(), integration, &stepping, q0, v0).unwrap();
     let (mut u_free, mut p) = (vec![0.0; interactions.len()], vec![0.0; interactions.len()]);
     let crossing = ((model.mesh().length - start) / settings.integration.load_advance).round() as usize;
     let mut worst: f64 = 0.0;
     let (mut compared, mut skipped) = (0usize, 0usize);
     for step in 1..=steps.min(crossing) {
         let v_free = stepper.free_velocity(&load).to_vec();
-        interactions.velocities(&v_free, &mut u_free);
+        set.velocities(&v_free, &mut u_free);
         let report_b = solver_b.solve(&checking, &v_free, &u_free, &mut p).unwrap();
         let mut v_b = vec![0.0; n];
-        interactions.add_transpose(&p, &mut v_b);
+        set.add_transpose(&p, &mut v_b);
         checking.matrix.factor.solve_in_place(&mut v_b);
         v_b.iter_mut().zip(&v_free).for_each(|(v, f)| *v += f);
         let report_a = stepper.step(&load).unwrap();
@@ -85,7 +84,7 @@ fn same_state_difference(
 
 /// Max deflection of whole independent runs with solvers `a` and `b` agree within `bound` relative.
 fn same_max_deflection(
-    interactions: &InteractionSet,
+    interactions: &PlacedInteractions,
     a: SolverKind,
     b: SolverKind,
     settings: &RunSettings,
@@ -174,7 +173,8 @@ fn truncated_impulse_responses_match_the_solve() {
     let h = 0.1 / 200.0;
     let system = beam_system(&model);
     let integration = Integration { theta: 0.5, step: h };
-    let devices = Devices::uniform(31, 100e3).interactions(&model).unwrap();
+    let placed = Devices::uniform(31, 100e3).interactions(&model).unwrap();
+    let devices = placed.interactions();
     let problem = InteractionProblem::new(&system, devices.clone(), integration).unwrap();
     let responses = problem.responses.as_ref().expect("31 devices keep their responses");
     let n = system.dofs();
@@ -191,5 +191,7 @@ fn truncated_impulse_responses_match_the_solve() {
     assert!(gap <= 1e-14 * scale, "gap {gap:e} on a scale of {scale:e}");
 
     let distributed = DistributedFriction::new(5e3).interactions(&model).unwrap();
-    assert!(InteractionProblem::new(&system, distributed, integration).unwrap().responses.is_none());
+    assert!(
+        InteractionProblem::new(&system, distributed.interactions().clone(), integration).unwrap().responses.is_none()
+    );
 }

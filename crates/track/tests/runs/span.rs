@@ -4,8 +4,8 @@
 
 use fem_beam::span::SimplySupportedSpan;
 use fem_beam::{Beam, BeamModel, Foundation, Mesh, Support, Supports};
-use friction::InteractionSet;
 use track::Load;
+use track::PlacedInteractions;
 use track::{RunSettings, Simulation};
 
 /// A pinned span of `length` m without foundation on 40 elements.
@@ -38,7 +38,7 @@ fn midspan_amplification_matches_the_modal_series() {
         settings.moving.load = Load::Force(force);
         settings.integration.load_advance = 0.05;
         settings.record.sections = vec![length / 2.0];
-        let r = Simulation::new(&model, &InteractionSet::new(), &settings).unwrap().run().unwrap();
+        let r = Simulation::new(&model, &PlacedInteractions::new(), &settings).unwrap().run().unwrap();
         let history = &r.histories[0];
         let fe = history.deflection.iter().fold(0.0f64, |m, w| m.max(-w)) / w_static;
         let series = history
@@ -88,10 +88,9 @@ fn rayleigh_damping_decays_each_mode_at_its_ratio() {
         let integration = nscd::Integration { theta: 0.5, step: period / 400.0 };
         let mut stepper = MoreauJean::build(
             &system,
-            InteractionSet::new(),
+            friction::InteractionSet::new(),
             integration,
             &SolverSettings::default(),
-            None,
             q0,
             vec![0.0; model.dofs().free_len()],
         )
@@ -160,7 +159,7 @@ fn resonance_builds_up_except_at_cancelling_span_to_spacing_ratios() {
         settings.integration.load_advance = 0.05;
         settings.integration.end_time = Some(settings.crossing_time(length) + 3.0 / f1);
         settings.record.sections = vec![length / 2.0];
-        let r = Simulation::new(&model, &InteractionSet::new(), &settings).unwrap().run().unwrap();
+        let r = Simulation::new(&model, &PlacedInteractions::new(), &settings).unwrap().run().unwrap();
         r.histories[0].deflection.iter().fold(0.0f64, |m, w| m.max(w.abs())) / static_mid
     };
     let build_up = peak(2.0, 10) / peak(2.0, 5);
@@ -198,7 +197,7 @@ fn static_envelope_gives_the_amplification_factor() {
         settings.moving.speed = speed;
         settings.moving.load = Load::Train(bogie.clone());
         settings.integration.load_advance = 0.05;
-        Simulation::new(&model, &InteractionSet::new(), &settings).unwrap().run().unwrap()
+        Simulation::new(&model, &PlacedInteractions::new(), &settings).unwrap().run().unwrap()
     };
     let crawl = run(0.02 * span.frequency(1) * 2.0 * length);
     let daf = crawl.max_downward.magnitude / statics.max_downward;

@@ -2,8 +2,8 @@
 
 use fem_beam::reference::{InfiniteBeam, uic60_on_soft_soil};
 use fem_beam::{AbsorbingZones, BeamModel};
-use friction::InteractionSet;
 use track::Load;
+use track::PlacedInteractions;
 use track::{InitialState, RunSettings, Simulation};
 
 #[test]
@@ -18,7 +18,7 @@ fn fe_response_matches_infinite_beam_steady_state() {
     let damping = zones.element_damping(&case.mesh, foundation.damping).unwrap();
     let model = BeamModel::with_element_damping(case.beam, foundation, case.mesh, case.supports, damping).unwrap();
     let infinite = InfiniteBeam::new(&case.beam, &foundation).unwrap();
-    let interactions = InteractionSet::new();
+    let interactions = PlacedInteractions::new();
     for speed in [100.0, 150.0, 200.0, 250.0] {
         let settings = {
             let mut s = RunSettings::default();
@@ -53,7 +53,7 @@ fn recorded_histories_match_steady_state_under_the_load() {
     let foundation = case.foundation.with_damping_ratio(0.05, &case.beam).unwrap();
     let model = BeamModel::new(case.beam, foundation, case.mesh, case.supports).unwrap();
     let infinite = InfiniteBeam::new(&case.beam, &foundation).unwrap();
-    let interactions = InteractionSet::new();
+    let interactions = PlacedInteractions::new();
     for speed in [20.0, 100.0, 150.0] {
         let settings = {
             let mut s = RunSettings::default();
@@ -103,7 +103,7 @@ fn a_train_started_from_its_steady_state_keeps_it() {
     settings.moving.load = Load::Train(train.clone());
     settings.moving.initial = InitialState::SteadyState { position: 70.0 };
     settings.record.sections = vec![100.0];
-    let r = Simulation::new(&model, &InteractionSet::new(), &settings).unwrap().run().unwrap();
+    let r = Simulation::new(&model, &PlacedInteractions::new(), &settings).unwrap().run().unwrap();
     let state = infinite.train_steady_state(speed, &train).unwrap();
     let history = &r.histories[0];
     let scale = state.extremes().max_downward.magnitude;

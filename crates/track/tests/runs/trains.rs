@@ -4,9 +4,9 @@
 
 use super::common::beam;
 use fem_beam::{Axle, Train};
-use friction::InteractionSet;
 use track::Devices;
 use track::Load;
+use track::PlacedInteractions;
 use track::{RunSettings, Simulation};
 
 fn train(offsets: &[f64], forces: &[f64]) -> Train {
@@ -21,7 +21,7 @@ fn train(offsets: &[f64], forces: &[f64]) -> Train {
 #[test]
 fn a_train_is_the_sum_of_time_shifted_single_axle_runs() {
     let model = beam(60.0, 60);
-    let none = InteractionSet::new();
+    let none = PlacedInteractions::new();
     for (offsets, forces) in [
         (vec![0.0, 2.5], vec![170e3, 120e3]),
         (vec![0.0, 3.0, 14.0, 17.0, 20.5], vec![170e3, 170e3, 200e3, 200e3, 90e3]),
@@ -76,7 +76,7 @@ fn a_train_is_the_sum_of_time_shifted_single_axle_runs() {
 fn energy_closes_with_many_axles() {
     let model = beam(60.0, 60);
     let train = Train::hslm_a(1);
-    for interactions in [InteractionSet::new(), Devices::uniform(31, 50e3).interactions(&model).unwrap()] {
+    for interactions in [PlacedInteractions::new(), Devices::uniform(31, 50e3).interactions(&model).unwrap()] {
         let mut settings = RunSettings::default();
         settings.moving.speed = 150.0;
         settings.integration.load_advance = 0.2;
@@ -100,7 +100,7 @@ fn energy_closes_with_many_axles() {
 #[test]
 fn extremes_over_a_range_of_nodes() {
     let model = beam(60.0, 60);
-    let none = InteractionSet::new();
+    let none = PlacedInteractions::new();
     let train = train(&[0.0, 3.0, 14.0, 17.0, 40.0, 43.0, 54.0, 57.0, 80.0, 83.0], &[170e3; 10]);
     let mut settings = RunSettings::default();
     settings.moving.speed = 100.0;

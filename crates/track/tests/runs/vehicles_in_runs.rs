@@ -4,12 +4,12 @@
 
 use super::common::{beam, relative_difference};
 use fem_beam::{Axle, BeamModel, Train};
-use friction::InteractionSet;
 use irregularity::Profile;
 use nscd::solver::{SolverKind, SolverSettings};
 use track::Load;
+use track::PlacedInteractions;
 use track::vehicle::builtin::QuarterCar;
-use track::vehicle::consist::{VehicleSettings, WheelRail};
+use track::vehicle::{consist::VehicleSettings, wheel_rail::WheelRail};
 use track::{DeviceLayout, Devices};
 use track::{RunResult, RunSettings, Simulation};
 
@@ -38,7 +38,7 @@ fn car_run(
     let interactions = if friction {
         Devices { layout: DeviceLayout::Uniform { count: 5 }, force: 20e3 }.interactions(model).unwrap()
     } else {
-        InteractionSet::new()
+        PlacedInteractions::new()
     };
     Simulation::new(model, &interactions, &settings).unwrap().run().unwrap()
 }
@@ -148,7 +148,7 @@ fn every_wheel_contact_is_the_same_with_clarabel() {
         settings.integration.theta = 0.51;
         let tolerance = if kind == SolverKind::Clarabel { 1e-6 } else { 1e-12 };
         settings.integration.solver = SolverSettings { kind, tolerance, ..SolverSettings::default() };
-        Simulation::new(&model, &InteractionSet::new(), &settings).unwrap().run().unwrap()
+        Simulation::new(&model, &PlacedInteractions::new(), &settings).unwrap().run().unwrap()
     };
     for contact in [WheelRail::Rigid { restitution: 0.0 }, WheelRail::default(), WheelRail::Glued { stiffness: 1.5e9 }]
     {
@@ -248,7 +248,7 @@ fn vehicle_runs_converge_as_the_step_shrinks() {
             settings.integration.solver =
                 SolverSettings { kind: SolverKind::Projection, tolerance: 1e-12, ..SolverSettings::default() };
             settings.record.sections = vec![30.0];
-            Simulation::new(&model, &InteractionSet::new(), &settings).unwrap().run().unwrap().histories[0]
+            Simulation::new(&model, &PlacedInteractions::new(), &settings).unwrap().run().unwrap().histories[0]
                 .deflection
                 .clone()
         };
@@ -301,9 +301,9 @@ fn a_train_populated_with_quarter_cars_carries_its_axle_loads() {
     settings.integration.load_advance = 0.01;
     settings.moving.load = Load::Train(train);
     settings.record.extremes_nodes = Some((70.0, 110.0));
-    let forces = Simulation::new(&model, &InteractionSet::new(), &settings).unwrap().run().unwrap();
+    let forces = Simulation::new(&model, &PlacedInteractions::new(), &settings).unwrap().run().unwrap();
     settings.moving.load = Load::Vehicles { vehicles, train: None };
-    let cars = Simulation::new(&model, &InteractionSet::new(), &settings).unwrap().run().unwrap();
+    let cars = Simulation::new(&model, &PlacedInteractions::new(), &settings).unwrap().run().unwrap();
     let wheels = &cars.vehicles.as_ref().unwrap().wheels;
     for (wheel, (offset, force)) in wheels.iter().zip(axles) {
         assert!((wheel.static_force / force - 1.0).abs() < 1e-12 && wheel.offset == offset);
@@ -336,9 +336,9 @@ fn rail_cars_carry_their_weight_on_four_wheels() {
     settings.integration.load_advance = 0.02;
     settings.record.extremes_nodes = Some((70.0, 110.0));
     settings.moving.load = Load::Train(vehicles.static_train().unwrap());
-    let forces = Simulation::new(&model, &InteractionSet::new(), &settings).unwrap().run().unwrap();
+    let forces = Simulation::new(&model, &PlacedInteractions::new(), &settings).unwrap().run().unwrap();
     settings.moving.load = Load::Vehicles { vehicles, train: None };
-    let cars = Simulation::new(&model, &InteractionSet::new(), &settings).unwrap().run().unwrap();
+    let cars = Simulation::new(&model, &PlacedInteractions::new(), &settings).unwrap().run().unwrap();
     let quarter = RailCar::default().weight() / 4.0;
     let wheels = &cars.vehicles.as_ref().unwrap().wheels;
     assert_eq!(wheels.len(), 8);
@@ -386,9 +386,9 @@ fn a_train_populated_with_rail_cars_takes_its_geometry_from_the_axles() {
     settings.integration.load_advance = 0.02;
     settings.record.extremes_nodes = Some((70.0, 110.0));
     settings.moving.load = Load::Train(train(&axles));
-    let forces = Simulation::new(&model, &InteractionSet::new(), &settings).unwrap().run().unwrap();
+    let forces = Simulation::new(&model, &PlacedInteractions::new(), &settings).unwrap().run().unwrap();
     settings.moving.load = Load::Vehicles { vehicles, train: None };
-    let cars = Simulation::new(&model, &InteractionSet::new(), &settings).unwrap().run().unwrap();
+    let cars = Simulation::new(&model, &PlacedInteractions::new(), &settings).unwrap().run().unwrap();
     let wheels = &cars.vehicles.as_ref().unwrap().wheels;
     assert_eq!(wheels.len(), 8);
     for (wheel, (offset, force)) in wheels.iter().zip(axles) {
@@ -427,7 +427,7 @@ fn a_static_start_stands_the_vehicle_on_the_loaded_track() {
             Load::Vehicles { vehicles: VehicleSettings::single(MovingMass::default().vehicle().unwrap()), train: None };
         settings.integration.load_advance = 0.05;
         settings.record.extremes_nodes = Some((66.7, 133.3));
-        Simulation::new(&model, &InteractionSet::new(), &settings).unwrap().run().unwrap()
+        Simulation::new(&model, &PlacedInteractions::new(), &settings).unwrap().run().unwrap()
     };
     let swing = |r: &RunResult| r.vehicles.as_ref().unwrap().wheels[0].dynamic_increment();
     let (rest, standing) = (run(InitialState::Rest), run(InitialState::Static { position: 40.0 }));
@@ -460,7 +460,7 @@ fn each_vehicle_may_have_its_own_contact_law() {
     settings.integration.load_advance = 0.01;
     settings.moving.initial = track::InitialState::Static { position: 40.0 };
     settings.moving.load = Load::Vehicles { vehicles, train: None };
-    let run = Simulation::new(&model, &InteractionSet::new(), &settings).unwrap().run().unwrap();
+    let run = Simulation::new(&model, &PlacedInteractions::new(), &settings).unwrap().run().unwrap();
     for wheel in &run.vehicles.as_ref().unwrap().wheels {
         let first = wheel.history.force[0] / wheel.static_force - 1.0;
         eprintln!("wheel {}: first step {first:.2e} of Q₀", wheel.vehicle);

@@ -3,13 +3,13 @@
 
 use super::common::beam;
 use fem_beam::BeamModel;
-use friction::InteractionSet;
 use irregularity::{Profile, WheelTrack};
 use nscd::solver::{SolverKind, SolverSettings};
 use track::Load;
-use track::vehicle::consist::{VehicleSettings, WheelRail};
+use track::PlacedInteractions;
 use track::vehicle::rail::WheelOnBeam;
 use track::vehicle::{Vehicle, Wheel};
+use track::vehicle::{consist::VehicleSettings, wheel_rail::WheelRail};
 use track::{RunSettings, Simulation};
 
 const FORCE: f64 = 83.4e3;
@@ -55,7 +55,7 @@ fn vehicle_run(
     settings.integration.solver =
         SolverSettings { kind: SolverKind::Projection, tolerance: 1e-12, ..Default::default() };
     settings.record.sections = vec![section];
-    let run = Simulation::new(model, &InteractionSet::new(), &settings).unwrap().run().unwrap();
+    let run = Simulation::new(model, &PlacedInteractions::new(), &settings).unwrap().run().unwrap();
     let wheel = &run.vehicles.as_ref().unwrap().wheels[0];
     let e = &run.energy;
     VehicleRun {
@@ -85,7 +85,7 @@ fn a_vanishing_moving_mass_is_the_moving_force() {
     settings.moving.load = Load::Force(FORCE);
     settings.integration.load_advance = ADVANCE;
     settings.record.sections = vec![30.0];
-    let force_run = Simulation::new(&model, &InteractionSet::new(), &settings).unwrap().run().unwrap();
+    let force_run = Simulation::new(&model, &PlacedInteractions::new(), &settings).unwrap().run().unwrap();
     let reference = &force_run.histories[0].deflection[1..];
     let scale = reference.iter().fold(0.0f64, |m, w| m.max(w.abs()));
     let nominal = FORCE * ADVANCE / speed;

@@ -5,11 +5,11 @@
 use fem_beam::span::SimplySupportedSpan;
 use fem_beam::span_oscillator::Oscillator;
 use fem_beam::{Beam, BeamModel, Foundation, Mesh, Supports};
-use friction::InteractionSet;
 use track::Load;
+use track::PlacedInteractions;
 use track::vehicle::Vehicle;
 use track::vehicle::builtin::{MovingMass, QuarterCar};
-use track::vehicle::consist::{VehicleSettings, WheelRail};
+use track::vehicle::{consist::VehicleSettings, wheel_rail::WheelRail};
 use track::{RunSettings, Simulation};
 
 const LENGTH: f64 = 10.0;
@@ -31,7 +31,7 @@ fn fe_run(vehicle: Vehicle) -> (Vec<f64>, Vec<f64>, Vec<(f64, f64)>) {
     };
     settings.integration.load_advance = 0.005;
     settings.record.sections = vec![LENGTH / 2.0];
-    let run = Simulation::new(&model, &InteractionSet::new(), &settings).unwrap().run().unwrap();
+    let run = Simulation::new(&model, &PlacedInteractions::new(), &settings).unwrap().run().unwrap();
     let h = &run.histories[0];
     let wheel = &run.vehicles.as_ref().unwrap().wheels[0].history;
     let forces = wheel.time.iter().zip(&wheel.force).map(|(t, f)| (t - 0.5 * run.step, *f)).collect();

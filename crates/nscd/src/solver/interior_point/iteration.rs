@@ -134,22 +134,59 @@ impl Work {
         self.iterate_body(subproblem, p)
     }
 
-    /// The body of [`Work::iterate`], inlined into the baseline and the AVX2 build.
+    /// The body of [`Work::iterate`], inlined into the baseline and the AVX2 build: load the sections, start inside
+    /// every interval, then predictor–corrector (or safeguarded) iterations until the law residual meets the
+    /// tolerance, the cap is reached or the safeguard gives up.
     #[inline(always)]
     pub(super) fn iterate_body(&mut self, subproblem: &Subproblem<'_>, p: &mut [f64]) -> crate::Result<(usize, f64)> {
-        let Subproblem { problem, base, offset, tolerance, max_iterations } = *subproblem;
+        let Subproblem { base, tolerance, max_iterations, .. } = *subproblem;
+        let len = self.sections.index.len();
+        let open_count = self.load_sections(subproblem);
+        self.start(subproblem);
+        let mut residual = self.sections.law_residual();
+        let inv_count = 1.0 / (2 * len - open_count).max(1) as f64;
+        let mut iterations = 0;
+        let mut steps = Steps::Mehrotra;
+        let mut progress = Progress { best: residual, since_best: 0 };
+        while residual > tolerance && iterations < max_iterations && len > 0 {
+            iterations += 1;
+            let mu = self.factor_newton_matrix(base, inv_count)?;
+            let (alpha, alpha_d) = match steps {
+                Steps::Mehrotra => self.mehrotra_steps(mu, inv_count),
+                Steps::Safeguarded => self.safeguarded_steps(mu),
+            };
+            residual = self.take_steps(alpha, alpha_d);
+            match steps {
+                Steps::Mehrotra if progress.stalled(residual, STALL_ITERATIONS) => {
+                    steps = Steps::Safeguarded;
+                    progress.since_best = 0;
+                }
+                Steps::Safeguarded if progress.stalled(residual, GIVE_UP_ITERATIONS) => break,
+                _ => {}
+            }
+        }
+        for (&j, &pk) in self.sections.index.iter().zip(&self.sections.p) {
+            p[j] = pk;
+        }
+        Ok((iterations, residual))
+    }
+
+    /// Copy the active sections' rows (shifted to the subproblem's DOFs), bounds, compliances, W_jj and drifts into
+    /// the section arrays; zero y (with three entries of padding past the end, so that every row can be read and
+    /// written four entries wide). Returns the number of sections without an upper bound.
+    #[inline(always)]
+    fn load_sections(&mut self, subproblem: &Subproblem<'_>) -> usize {
+        let Subproblem { problem, base, offset, .. } = *subproblem;
         let rows = problem.interactions.rows();
         let nw = base.order();
-        // Three zeros of padding past the end let every row be read and written four entries wide.
         self.y.resize(nw + 3, 0.0);
         self.dy.resize(nw + 3, 0.0);
         self.y.iter_mut().for_each(|x| *x = 0.0);
         let q = &mut self.sections;
-        let len = q.index.len();
         let law = &problem.law;
         q.rows.clear();
         let mut open_count = 0;
-        for k in 0..len {
+        for k in 0..q.index.len() {
             let j = q.index[k];
             let row = &rows[j];
             debug_assert!(row.dofs().windows(2).all(|d| d[1] == d[0] + 1), "rows touch consecutive free DOFs");
@@ -166,9 +203,20 @@ impl Work {
             q.inv_w[k] = 1.0 / q.w[k];
             q.u_free[k] += law.drift[j];
         }
-        // Start inside every interval: a box at its centre (p = 0 for friction, where warm starts from the previous
-        // step's (p, z) were measured to cost more iterations, not fewer: 18.6 cold vs 19.8–23.9 warm per step,
-        // distributed 5 kN/m), a one-sided interval at the impulse scale max(|c|, shift)/w above its bound.
+        open_count
+    }
+
+    /// The starting point, inside every interval: a box at its centre (p = 0 for friction, where warm starts from
+    /// the previous step's (p, z) were measured to cost more iterations, not fewer: 18.6 cold vs 19.8–23.9 warm per
+    /// step, distributed 5 kN/m), a one-sided interval at the impulse scale max(|c|, shift)/w above its bound; u
+    /// and y for that p, and z₂ − z₁ = u split with both kept away from zero (z₁ = 0 without an upper bound).
+    #[inline(always)]
+    fn start(&mut self, subproblem: &Subproblem<'_>) {
+        let Subproblem { problem, base, offset, .. } = *subproblem;
+        let rows = problem.interactions.rows();
+        let nw = base.order();
+        let q = &mut self.sections;
+        let len = q.index.len();
         let scale = q.u_free.iter().fold(crate::problem::VELOCITY_FLOOR, |s, u| s.max(u.abs()));
         let shift = 0.01 * scale;
         let mut started_off_zero = false;
@@ -198,112 +246,96 @@ impl Work {
             q.u[..len].copy_from_slice(&q.u_free[..len]);
         }
         for k in 0..len {
-            // Split r into z₂ − z₁, both kept away from zero (z₁ = 0 without an upper bound).
             q.z1[k] = if q.closed[k] == 1.0 { (-q.u[k]).max(0.0) + shift } else { 0.0 };
             q.z2[k] = q.u[k].max(0.0) + shift;
         }
-        let mut residual = q.law_residual();
-        let inv_count = 1.0 / (2 * len - open_count).max(1) as f64;
-        let mut iterations = 0;
-        let mut steps = Steps::Mehrotra;
-        let mut progress = Progress { best: residual, since_best: 0 };
-        while residual > tolerance && iterations < max_iterations && len > 0 {
-            iterations += 1;
-            // B = base + HᵀΣ⁻¹H, Σ = z₁/s₁ + z₂/s₂, floored so that Σ⁻¹ stays finite for sections stuck to
-            // round-off (z → 0): beyond ~1e15·W_jj the extra stiffness changes nothing. Predictor (affine
-            // scaling, targets c = 0): r = −u, right-hand side Σ H_jᵀ r_j/Σ_j.
-            let q = &mut self.sections;
-            predictor_terms(
-                [&q.s1[..len], &q.s2[..len], &q.z1[..len], &q.z2[..len], &q.w[..len], &q.u[..len]],
-                [&q.closed[..len], &q.open[..len], &q.compliance[..len]],
-                [&mut q.inv_s1[..len], &mut q.inv_s2[..len], &mut q.inv_z1[..len], &mut q.inv_z2[..len]],
-                [&mut q.inv_sigma[..len], &mut q.r[..len], &mut q.c1[..len], &mut q.c2[..len]],
-            );
-            let mut mu = 0.0;
-            for (((s1, z1), s2), z2) in q.s1.iter().zip(&q.z1).zip(&q.s2).zip(&q.z2) {
-                mu += s1 * z1 + s2 * z2;
-            }
-            mu *= inv_count;
-            q.rows.weighted_gram_into(base, &q.inv_sigma, &mut self.b);
-            self.b.factor_into(&mut self.b_factor)?;
-            let (alpha, alpha_d) = match steps {
-                Steps::Mehrotra => {
-                    self.sections.right_hand_side(&mut self.dy);
-                    let (alpha_p_aff, alpha_d_aff) = self.newton_direction();
-                    // Corrector: targets σμ − Δs_aff∘Δz_aff (Δs₁ = −Δp, Δs₂ = Δp), σ = (μ_aff/μ)³,
-                    // r = −u − c₁/s₁ + c₂/s₂.
-                    let q = &mut self.sections;
-                    affine_terms(
-                        (alpha_p_aff, alpha_d_aff),
-                        [&q.s1[..len], &q.s2[..len], &q.z1[..len], &q.z2[..len]],
-                        [&q.dp[..len], &q.dz1[..len], &q.dz2[..len]],
-                        &mut q.gathered[..len],
-                    );
-                    let mut mu_affine = 0.0;
-                    for term in &q.gathered {
-                        mu_affine += term;
-                    }
-                    let target = (mu_affine * inv_count / mu).powi(3).min(1.0) * mu;
-                    corrector_terms(
-                        target,
-                        [&q.dp[..len], &q.dz1[..len], &q.dz2[..len], &q.u[..len], &q.inv_s1[..len], &q.inv_s2[..len]],
-                        [&mut q.c1[..len], &mut q.c2[..len], &mut q.r[..len]],
-                    );
-                    q.right_hand_side(&mut self.dy);
-                    let (alpha_p, alpha_d) = self.newton_direction();
-                    ((FRACTION_TO_BOUNDARY * alpha_p).min(1.0), (FRACTION_TO_BOUNDARY * alpha_d).min(1.0))
-                }
-                Steps::Safeguarded => {
-                    let q = &mut self.sections;
-                    centring_terms(
-                        SAFEGUARD_CENTRING * mu,
-                        [&q.u[..len], &q.inv_s1[..len], &q.inv_s2[..len]],
-                        [&mut q.c1[..len], &mut q.c2[..len], &mut q.r[..len]],
-                    );
-                    q.right_hand_side(&mut self.dy);
-                    let (alpha_p, alpha_d) = self.newton_direction();
-                    let alpha = (FRACTION_TO_BOUNDARY * alpha_p.min(alpha_d)).min(1.0);
-                    (alpha, alpha)
-                }
-            };
-            for (y, dy) in self.y.iter_mut().zip(&self.dy) {
-                *y += alpha * dy;
-            }
-            let q = &mut self.sections;
-            q.gather(&self.y);
-            take_step(
-                (alpha, alpha_d),
-                [
-                    &q.dp[..len],
-                    &q.dz1[..len],
-                    &q.dz2[..len],
-                    &q.u_free[..len],
-                    &q.gathered[..len],
-                    &q.compliance[..len],
-                ],
-                [
-                    &mut q.p[..len],
-                    &mut q.s1[..len],
-                    &mut q.s2[..len],
-                    &mut q.z1[..len],
-                    &mut q.z2[..len],
-                    &mut q.u[..len],
-                ],
-            );
-            residual = q.law_residual();
-            match steps {
-                Steps::Mehrotra if progress.stalled(residual, STALL_ITERATIONS) => {
-                    steps = Steps::Safeguarded;
-                    progress.since_best = 0;
-                }
-                Steps::Safeguarded if progress.stalled(residual, GIVE_UP_ITERATIONS) => break,
-                _ => {}
-            }
+    }
+
+    /// B = base + HᵀΣ⁻¹H, Σ = z₁/s₁ + z₂/s₂, factored, with the predictor's terms (affine scaling, targets c = 0:
+    /// r = −u, right-hand side Σ H_jᵀ r_j/Σ_j); Σ is floored so that Σ⁻¹ stays finite for sections stuck to
+    /// round-off (z → 0): beyond ~1e15·W_jj the extra stiffness changes nothing. Returns μ = sᵀz/(number of
+    /// complementarity pairs), `inv_count` being 1/that number.
+    #[inline(always)]
+    fn factor_newton_matrix(&mut self, base: &SymmetricBanded, inv_count: f64) -> crate::Result<f64> {
+        let q = &mut self.sections;
+        let len = q.index.len();
+        predictor_terms(
+            [&q.s1[..len], &q.s2[..len], &q.z1[..len], &q.z2[..len], &q.w[..len], &q.u[..len]],
+            [&q.closed[..len], &q.open[..len], &q.compliance[..len]],
+            [&mut q.inv_s1[..len], &mut q.inv_s2[..len], &mut q.inv_z1[..len], &mut q.inv_z2[..len]],
+            [&mut q.inv_sigma[..len], &mut q.r[..len], &mut q.c1[..len], &mut q.c2[..len]],
+        );
+        let mut mu = 0.0;
+        for (((s1, z1), s2), z2) in q.s1.iter().zip(&q.z1).zip(&q.s2).zip(&q.z2) {
+            mu += s1 * z1 + s2 * z2;
         }
-        for (&j, &pk) in self.sections.index.iter().zip(&self.sections.p) {
-            p[j] = pk;
+        mu *= inv_count;
+        q.rows.weighted_gram_into(base, &q.inv_sigma, &mut self.b);
+        self.b.factor_into(&mut self.b_factor)?;
+        Ok(mu)
+    }
+
+    /// Mehrotra's predictor, then the corrector targeting σμ − Δs_aff∘Δz_aff (Δs₁ = −Δp, Δs₂ = Δp),
+    /// σ = (μ_aff/μ)³, r = −u − c₁/s₁ + c₂/s₂; returns the primal and dual step lengths.
+    #[inline(always)]
+    fn mehrotra_steps(&mut self, mu: f64, inv_count: f64) -> (f64, f64) {
+        let len = self.sections.index.len();
+        self.sections.right_hand_side(&mut self.dy);
+        let (alpha_p_aff, alpha_d_aff) = self.newton_direction();
+        let q = &mut self.sections;
+        affine_terms(
+            (alpha_p_aff, alpha_d_aff),
+            [&q.s1[..len], &q.s2[..len], &q.z1[..len], &q.z2[..len]],
+            [&q.dp[..len], &q.dz1[..len], &q.dz2[..len]],
+            &mut q.gathered[..len],
+        );
+        let mut mu_affine = 0.0;
+        for term in &q.gathered {
+            mu_affine += term;
         }
-        Ok((iterations, residual))
+        let target = (mu_affine * inv_count / mu).powi(3).min(1.0) * mu;
+        corrector_terms(
+            target,
+            [&q.dp[..len], &q.dz1[..len], &q.dz2[..len], &q.u[..len], &q.inv_s1[..len], &q.inv_s2[..len]],
+            [&mut q.c1[..len], &mut q.c2[..len], &mut q.r[..len]],
+        );
+        q.right_hand_side(&mut self.dy);
+        let (alpha_p, alpha_d) = self.newton_direction();
+        ((FRACTION_TO_BOUNDARY * alpha_p).min(1.0), (FRACTION_TO_BOUNDARY * alpha_d).min(1.0))
+    }
+
+    /// A safeguarded path-following direction (target [`SAFEGUARD_CENTRING`]·μ, no second-order term); returns
+    /// one common step length, twice.
+    #[inline(always)]
+    fn safeguarded_steps(&mut self, mu: f64) -> (f64, f64) {
+        let q = &mut self.sections;
+        let len = q.index.len();
+        centring_terms(
+            SAFEGUARD_CENTRING * mu,
+            [&q.u[..len], &q.inv_s1[..len], &q.inv_s2[..len]],
+            [&mut q.c1[..len], &mut q.c2[..len], &mut q.r[..len]],
+        );
+        q.right_hand_side(&mut self.dy);
+        let (alpha_p, alpha_d) = self.newton_direction();
+        let alpha = (FRACTION_TO_BOUNDARY * alpha_p.min(alpha_d)).min(1.0);
+        (alpha, alpha)
+    }
+
+    /// Move y, (p, s) by `alpha` and z by `alpha_d` along the direction, u with them; returns the law residual.
+    #[inline(always)]
+    fn take_steps(&mut self, alpha: f64, alpha_d: f64) -> f64 {
+        for (y, dy) in self.y.iter_mut().zip(&self.dy) {
+            *y += alpha * dy;
+        }
+        let q = &mut self.sections;
+        let len = q.index.len();
+        q.gather(&self.y);
+        take_step(
+            (alpha, alpha_d),
+            [&q.dp[..len], &q.dz1[..len], &q.dz2[..len], &q.u_free[..len], &q.gathered[..len], &q.compliance[..len]],
+            [&mut q.p[..len], &mut q.s1[..len], &mut q.s2[..len], &mut q.z1[..len], &mut q.z2[..len], &mut q.u[..len]],
+        );
+        q.law_residual()
     }
 }
 

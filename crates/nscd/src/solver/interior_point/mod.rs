@@ -28,8 +28,9 @@
 //! # The moving window
 //! Far from the load nothing changes from one step to the next: stuck sections keep their impulses, and the
 //! coupling through M̂⁻¹ decays like e^{−x/(√2ℓ)} with the coupling length ℓ = (EI h²θ²/ρA)^¼. So each step first
-//! tries the previous impulses; the sections where they violate the law, widened by a margin of 30ℓ (coupling
-//! below 1e-9), form the window. Only the window's impulses are re-solved, on the window's DOFs, with the rest of
+//! tries the previous impulses; the sections where they violate the law, widened by a reach of free DOFs beyond
+//! which M̂⁻¹ couples less than 1e-9 (measured once per run on columns of M̂⁻¹: `window::coupling_reach`; about
+//! 30ℓ on a beam), form the window. Only the window's impulses are re-solved, on the window's DOFs, with the rest of
 //! the beam condensed exactly into the window matrix by Schur complements taken from the LDLᵀ factors of M̂ and of
 //! M̂ reversed (S_W = M̂_WW − M̂_WO M̂_OO⁻¹ M̂_OW, whose inverse is the W block of M̂⁻¹). The law residual is then
 //! checked on *every* section; should a section outside the window fail, the window is widened (2×, 4×) and at
@@ -63,8 +64,8 @@ pub struct WindowStatistics {
 pub struct BandedInteriorPoint {
     tolerance: f64,
     max_iterations: usize,
-    /// Window margin (m); None solves the whole beam every step.
-    margin: Option<f64>,
+    /// The window's reach beyond the violating sections (free DOFs); None solves the whole problem every step.
+    reach: Option<usize>,
     all_active: Vec<usize>,
     backward: Option<BandedLdlt>,
     window_matrix: SymmetricBanded,
@@ -80,13 +81,13 @@ pub struct BandedInteriorPoint {
 }
 
 impl BandedInteriorPoint {
-    /// Scratch for `problem`. With `window_margin` = Some(m) (metres; 30 coupling lengths is safe) each step
-    /// re-solves only a window around the sections that change; None always solves the whole problem.
+    /// Scratch for `problem`. With `moving_window` each step re-solves only a window around the sections that
+    /// change; without, always the whole problem.
     pub fn new(
         problem: &InteractionProblem,
         tolerance: f64,
         max_iterations: usize,
-        window_margin: Option<f64>,
+        moving_window: bool,
     ) -> crate::Result<Self> {
         let (n, m) = (problem.matrix.m_hat.order(), problem.len());
         if problem.has_moving() || !problem.interactions.rows().iter().all(|r| r.is_local()) {
@@ -96,14 +97,14 @@ impl BandedInteriorPoint {
                          moving interactions and longer rows need projection or clarabel",
             });
         }
-        let backward = match window_margin {
-            Some(_) => Some(problem.matrix.m_hat.reversed().factor()?),
-            None => None,
+        let backward = match moving_window {
+            true => Some(problem.matrix.m_hat.reversed().factor()?),
+            false => None,
         };
         Ok(Self {
             tolerance,
             max_iterations,
-            margin: window_margin,
+            reach: moving_window.then(|| window::coupling_reach(&problem.matrix.factor)),
             all_active: (0..m).filter(|&j| problem.law.is_free(j)).collect(),
             backward,
             window_matrix: problem.matrix.m_hat.clone(),
@@ -181,14 +182,14 @@ impl InteractionSolver for BandedInteriorPoint {
         let solved_before = self.statistics.sections_solved;
         let first = !self.started;
         self.started = true;
-        let (iterations, residual) = match self.margin {
-            Some(margin) if !first => {
+        let (iterations, residual) = match self.reach {
+            Some(reach) if !first => {
                 let predicted = self.full_residual(problem, v_free, p);
                 if predicted <= tolerance {
                     self.statistics.unchanged += 1;
                     (0, predicted)
                 } else {
-                    self.solve_windows(problem, v_free, u_free, p, tolerance, margin)?
+                    self.solve_windows(problem, v_free, u_free, p, tolerance, reach)?
                 }
             }
             _ => self.solve_whole(problem, u_free, p, tolerance, self.max_iterations)?,
@@ -239,13 +240,41 @@ mod tests {
                 } else {
                     Law::Coulomb { capacity }
                 };
-                let kind = if law.depends_on_state() { InteractionKind::Foundation } else { InteractionKind::Ballast };
-                interactions.push(row, law, e as f64 + xi, kind);
+                let kind = if law.depends_on_state() { InteractionKind::Support } else { InteractionKind::Friction };
+                interactions.push(row, law, kind);
             }
         }
         let integration = crate::Integration { theta: 0.5, step: 1.0 };
         InteractionProblem::with_matrix(interactions, IterationMatrix::of(m_hat, integration).expect("M̂ is SPD"))
             .expect("M̂ is SPD")
+    }
+
+    /// The window's reach is where M̂⁻¹ stops coupling: every column of M̂⁻¹ (not only the three it is measured on)
+    /// is below 1e-9 of its largest entry beyond the reach, and the reach is short of the whole beam (the window
+    /// saves work) yet longer than the band (it couples at all).
+    #[test]
+    fn the_window_reach_bounds_the_coupling_of_every_column() {
+        let problem = beam_like_problem(100, 0.05);
+        let factor = &problem.matrix.factor;
+        let n = factor.order();
+        let reach = window::coupling_reach(factor);
+        assert!(reach > problem.matrix.m_hat.bandwidth() && reach < n / 2, "reach {reach} of {n} DOFs");
+        let mut column = vec![0.0; n];
+        let mut longest = 0;
+        for j in 0..n {
+            column.iter_mut().for_each(|c| *c = 0.0);
+            column[j] = 1.0;
+            factor.solve_in_place(&mut column);
+            let largest = column.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+            let beyond = column.iter().enumerate().filter(|&(i, _)| i.abs_diff(j) > reach);
+            let (i, worst) = beyond.fold((j, 0.0f64), |w, (i, c)| if c.abs() > w.1 { (i, c.abs()) } else { w });
+            assert!(worst <= window::COUPLING_FLOOR * largest, "column {j}: {worst:e} at DOF {i}");
+            let inside = column.iter().enumerate().filter(|&(_, c)| c.abs() > window::COUPLING_FLOOR * largest);
+            longest = longest.max(inside.map(|(i, _)| i.abs_diff(j)).max().unwrap_or(0));
+        }
+        // Measured on three columns, the reach is the longest of all to within a few DOFs (the end columns decay
+        // on one side only).
+        assert!(longest <= reach && reach <= longest + 4, "reach {reach}, longest coupling {longest}");
     }
 
     /// The AVX2 build of the iteration must give the same bits as the baseline build: same operations, same order,
@@ -265,7 +294,7 @@ mod tests {
             let tolerance = problem.absolute_tolerance(1e-8, &u_free);
             let subproblem = Subproblem { problem: &problem, base: m_hat, offset: 0, tolerance, max_iterations: 200 };
             let solve = |avx2: bool| {
-                let mut solver = BandedInteriorPoint::new(&problem, 1e-8, 200, None).expect("solver");
+                let mut solver = BandedInteriorPoint::new(&problem, 1e-8, 200, false).expect("solver");
                 let work = &mut solver.work;
                 work.sections.index.extend(0..interactions.len());
                 work.sections.fit();

@@ -1,0 +1,92 @@
+//! Interactions placed on the beam: the engine's [`InteractionSet`] — rows, laws, ledger kinds, all the engine
+//! needs — with, for each interaction, where it acts on the beam (m) and what it is on the track. The records,
+//! snapshots and reports of a run read the places; the engine never does.
+
+use friction::{InteractionKind, InteractionRow, InteractionSet, Law};
+
+/// What a placed interaction is on the track.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SectionKind {
+    /// A discrete friction device (FDD) on a node.
+    Device,
+    /// A section of friction distributed in the ballast.
+    Ballast,
+    /// A section of a foundation that cannot pull (a unilateral support).
+    Foundation,
+}
+
+impl SectionKind {
+    /// The energy ledger's account for this kind's work.
+    pub fn ledger_kind(self) -> InteractionKind {
+        match self {
+            Self::Device | Self::Ballast => InteractionKind::Friction,
+            Self::Foundation => InteractionKind::Support,
+        }
+    }
+}
+
+/// Interactions at fixed places on the beam, in the order of the engine's set.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct PlacedInteractions {
+    interactions: InteractionSet,
+    positions: Vec<f64>,
+    kinds: Vec<SectionKind>,
+}
+
+impl PlacedInteractions {
+    /// None placed (no friction, no unilateral support).
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Place an interaction of row H (over the beam's free DOFs) and `law` at `x` (m); a row on a support (empty)
+    /// is dropped as [`InteractionSet::push`] drops it, with its place.
+    pub fn push(&mut self, row: InteractionRow, law: Law, x: f64, kind: SectionKind) {
+        if self.interactions.push(row, law, kind.ledger_kind()).is_some() {
+            self.positions.push(x);
+            self.kinds.push(kind);
+        }
+    }
+
+    /// Append all interactions placed in `other`.
+    pub fn extend(&mut self, other: PlacedInteractions) {
+        self.interactions.extend(other.interactions);
+        self.positions.extend(other.positions);
+        self.kinds.extend(other.kinds);
+    }
+
+    /// The engine's interactions.
+    pub fn interactions(&self) -> &InteractionSet {
+        &self.interactions
+    }
+
+    /// Number of interactions placed (kept).
+    pub fn len(&self) -> usize {
+        self.positions.len()
+    }
+
+    /// Whether none is placed.
+    pub fn is_empty(&self) -> bool {
+        self.positions.is_empty()
+    }
+
+    /// Where each interaction acts (m).
+    pub fn positions(&self) -> &[f64] {
+        &self.positions
+    }
+
+    /// What each interaction is.
+    pub fn kinds(&self) -> &[SectionKind] {
+        &self.kinds
+    }
+
+    /// How many interactions of `kind` are placed.
+    pub fn count(&self, kind: SectionKind) -> usize {
+        self.kinds.iter().filter(|&&k| k == kind).count()
+    }
+
+    /// The index of the interaction at `x` within `tolerance` (m), if any (first match).
+    pub fn section_at(&self, x: f64, tolerance: f64) -> Option<usize> {
+        self.positions.iter().position(|&p| (p - x).abs() <= tolerance)
+    }
+}
