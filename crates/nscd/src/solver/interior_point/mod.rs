@@ -67,6 +67,8 @@ pub struct BandedInteriorPoint {
     /// The window's reach beyond the violating sections (free DOFs); None solves the whole problem every step.
     reach: Option<usize>,
     all_active: Vec<usize>,
+    /// The first free DOF of each section's row (rows are fixed here): where the window places the section.
+    places: Vec<usize>,
     backward: Option<BandedLdlt>,
     window_matrix: SymmetricBanded,
     work: Work,
@@ -106,6 +108,7 @@ impl BandedInteriorPoint {
             max_iterations,
             reach: moving_window.then(|| window::coupling_reach(&problem.matrix.factor)),
             all_active: (0..m).filter(|&j| problem.law.is_free(j)).collect(),
+            places: problem.interactions.rows().iter().map(|r| r.dof_span().map_or(0, |(first, _)| first)).collect(),
             backward,
             window_matrix: problem.matrix.m_hat.clone(),
             work: Work {

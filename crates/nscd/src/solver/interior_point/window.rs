@@ -44,21 +44,19 @@ impl BandedInteriorPoint {
         budget: usize,
     ) -> crate::Result<Option<usize>> {
         let rows = problem.interactions.rows();
-        // Every active row has entries (empty ones are dropped from the set; a section of zero capacity is not
-        // active): its first DOF places it.
-        let place = |j: usize| rows[j].dof_span().map_or(0, |(first, _)| first);
+        let places = &self.places;
         let (mut lo, mut hi) = (usize::MAX, 0);
         for &j in &self.all_active {
             if problem.section_residual(j, self.check[j], p[j]) > tolerance {
-                lo = lo.min(place(j));
-                hi = hi.max(place(j));
+                lo = lo.min(places[j]);
+                hi = hi.max(places[j]);
             }
         }
         let (lo, hi) = (lo.saturating_sub(reach), hi.saturating_add(reach));
         self.work.sections.index.clear();
         let (mut start, mut end) = (usize::MAX, 0);
         for &j in &self.all_active {
-            if (lo..=hi).contains(&place(j)) {
+            if (lo..=hi).contains(&places[j]) {
                 self.work.sections.index.push(j);
                 if let Some((first, last)) = rows[j].dof_span() {
                     start = start.min(first);
