@@ -240,6 +240,19 @@ fn print_numbers(r: &RunSummary) {
         r.stepping.max_iterations,
         r.stepping.max_residual
     );
+    if r.stepping.work.mean_factorisations > 0.0 {
+        let events = match r.stepping.work.max_events {
+            0 => String::new(),
+            max => format!(
+                ", {:.1} events/step (max {max}), {} repairs",
+                r.stepping.work.mean_events, r.stepping.work.repairs
+            ),
+        };
+        println!(
+            "  {:.2} banded factorisations/step (max {}), {:.2} banded solves/step{events}",
+            r.stepping.work.mean_factorisations, r.stepping.work.max_factorisations, r.stepping.work.mean_solves
+        );
+    }
     if r.stepping.fallback_steps > 0 {
         let by: Vec<String> = r.stepping.fallbacks.iter().map(|f| format!("{} ({})", f.solver, f.steps)).collect();
         println!(

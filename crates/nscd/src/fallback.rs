@@ -45,7 +45,7 @@ impl Fallbacks {
         match primary {
             InteriorPoint => [Clarabel, Projection],
             Clarabel => [InteriorPoint, Projection],
-            Projection | SolverKind::Auto => [InteriorPoint, Clarabel],
+            Projection | SolverKind::Homotopy | SolverKind::Auto => [InteriorPoint, Clarabel],
         }
     }
 
@@ -78,6 +78,9 @@ impl Fallbacks {
                 && failed.is_none_or(|f| report.residual <= f.tolerance)
             {
                 report.iterations += failed.map_or(0, |f| f.iterations);
+                if let Some(failed) = failed {
+                    report.work += failed.work;
+                }
                 report.fallback = Some(kind);
                 return Some(report);
             }

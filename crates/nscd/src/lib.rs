@@ -35,6 +35,6 @@ pub use error::{NscdError, Result};
 pub use forcing::Forcing;
 pub use moving::{Interactions, MovingInteraction, MovingState};
 pub use problem::{InteractionProblem, StepLaw};
-pub use solver::{SolverKind, SolverSettings, StepReport, StepStatus};
+pub use solver::{SolverKind, SolverSettings, StepReport, StepStatus, StepWork};
 pub use stepper::{EnergyLedger, Integration, MoreauJean};
 pub use system::{DofLayout, LinearSystem};

@@ -14,12 +14,19 @@ pub enum SolverKind {
     InteriorPoint,
     /// Clarabel interior-point QP (feature `clarabel`).
     Clarabel,
+    /// Parametric active set (homotopy) on the shifted Huber law, for fixed Coulomb friction sections.
+    Homotopy,
 }
 
 impl SolverKind {
     /// Every choice, in the order they are documented.
-    pub const ALL: [SolverKind; 4] =
-        [SolverKind::Auto, SolverKind::Projection, SolverKind::InteriorPoint, SolverKind::Clarabel];
+    pub const ALL: [SolverKind; 5] = [
+        SolverKind::Auto,
+        SolverKind::Projection,
+        SolverKind::InteriorPoint,
+        SolverKind::Clarabel,
+        SolverKind::Homotopy,
+    ];
 
     /// Lower-case name, as used in scenario files and on the command line.
     pub fn name(self) -> &'static str {
@@ -28,6 +35,7 @@ impl SolverKind {
             SolverKind::Projection => "projection",
             SolverKind::InteriorPoint => "interior-point",
             SolverKind::Clarabel => "clarabel",
+            SolverKind::Homotopy => "homotopy",
         }
     }
 }

@@ -59,6 +59,33 @@ pub struct StepReport {
     /// The fallback solver that solved this step after the run's solver failed on it (None: the run's solver did;
     /// see [`crate::fallback`]).
     pub fallback: Option<SolverKind>,
+    /// The banded linear algebra and events the step took (a fallback's step includes the failed attempt's).
+    pub work: StepWork,
+}
+
+/// The linear algebra of one step, what the solvers are compared on besides time: banded factorisations and solves
+/// (of M̂ plus terms — the interior point's Newton matrices, the homotopy's B — over the whole problem or its
+/// window; zero for projection, which works on the dense W, and for Clarabel, which factors its own sparse KKT
+/// system), and the homotopy's events and repair rounds.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct StepWork {
+    /// Banded factorisations.
+    pub factorisations: usize,
+    /// Banded solves.
+    pub solves: usize,
+    /// Sections changing between stick and slip along the homotopy's path.
+    pub events: usize,
+    /// The homotopy's polish rounds beyond the first.
+    pub repairs: usize,
+}
+
+impl std::ops::AddAssign for StepWork {
+    fn add_assign(&mut self, other: Self) {
+        self.factorisations += other.factorisations;
+        self.solves += other.solves;
+        self.events += other.events;
+        self.repairs += other.repairs;
+    }
 }
 
 impl StepReport {

@@ -140,6 +140,9 @@ pub struct SteppingSummary {
     pub max_residual: f64,
     /// Mean sections re-solved per step.
     pub mean_sections_solved: f64,
+    /// The banded factorisations and solves and the homotopy's events per step.
+    #[serde(flatten)]
+    pub work: track::simulation::WorkStatistics,
     /// The solver the run used (`none` without interactions).
     pub solver: String,
     /// Steps solved by a fallback solver.
@@ -281,6 +284,7 @@ impl SteppingSummary {
             max_iterations: s.max_iterations,
             max_residual: s.max_residual,
             mean_sections_solved: s.mean_sections_solved,
+            work: s.work,
             solver: s.solver_name().to_string(),
             fallback_steps: s.fallback_steps(),
             fallbacks: s

@@ -7,6 +7,7 @@ mod runs {
     mod discrete_vs_continuous;
     mod energy;
     mod friction_law;
+    mod homotopy;
     mod linear;
     mod solver_fallback;
     mod solvers_agree;

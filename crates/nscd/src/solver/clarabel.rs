@@ -9,7 +9,7 @@
 //! when the pattern of bounds changes (a contact entering or leaving the index set; never for friction alone) and
 //! every step when interactions move (their rows are in A); otherwise each step only replaces q and b.
 
-use super::{InteractionProblem, InteractionSolver, SolverKind, StepReport, StepStatus};
+use super::{InteractionProblem, InteractionSolver, SolverKind, StepReport, StepStatus, StepWork};
 use crate::error::NscdError;
 use clarabel::algebra::CscMatrix;
 use clarabel::solver::{
@@ -227,6 +227,14 @@ impl InteractionSolver for ClarabelQp {
         let accepted = tolerance.max(problem.absolute_tolerance(1e-6, u_free));
         // Clarabel ran to its own stopping criteria (Solved or AlmostSolved): short of the law, it stalled.
         let status = StepStatus::of(residual, accepted, iterations, usize::MAX);
-        Ok(StepReport { status, iterations, residual, tolerance: accepted, sections: p.len(), fallback: None })
+        Ok(StepReport {
+            status,
+            iterations,
+            residual,
+            tolerance: accepted,
+            sections: p.len(),
+            fallback: None,
+            work: StepWork::default(),
+        })
     }
 }

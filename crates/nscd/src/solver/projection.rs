@@ -8,7 +8,7 @@
 //! Fast for devices spaced wider than the coupling length ℓ = (EI h²θ²/ρA)^¼ (2–6 sweeps); it stalls for
 //! distributed friction, where [`super::interior_point::BandedInteriorPoint`] is the tool.
 
-use super::{InteractionProblem, InteractionSolver, SolverKind, StepReport, StepStatus};
+use super::{InteractionProblem, InteractionSolver, SolverKind, StepReport, StepStatus, StepWork};
 use crate::kernels::{axpy, dot};
 use friction::law::project;
 
@@ -155,6 +155,14 @@ impl InteractionSolver for ProjectedGaussSeidel {
             residual = self.residual(problem, u_free, p);
         }
         let status = StepStatus::of(residual, tolerance, sweeps, self.max_sweeps);
-        Ok(StepReport { status, iterations: sweeps, residual, tolerance, sections: self.m, fallback: None })
+        Ok(StepReport {
+            status,
+            iterations: sweeps,
+            residual,
+            tolerance,
+            sections: self.m,
+            fallback: None,
+            work: StepWork::default(),
+        })
     }
 }

@@ -17,7 +17,7 @@ mod vehicles;
 
 pub use results::{
     BodyResult, Extreme, FallbackCount, LossOfContact, RunResult, SectionHistory, SolverStatistics, StepView,
-    VehicleResults, WheelHistory, WheelResult, WindowExtremes,
+    VehicleResults, WheelHistory, WheelResult, WindowExtremes, WorkStatistics,
 };
 pub(crate) use settings::counts_for_extremes;
 pub use settings::{InitialState, IntegrationSettings, Load, MovingLoadSettings, RecordSettings, RunSettings};

@@ -3,7 +3,7 @@
 //! ([`SolverTally`]) and the vehicles' wheels and bodies ([`super::vehicles::VehicleObserver`]).
 
 use super::observers::{Buffers, DeflectionScan, InsideSection, NodalDeflections, Recorder, record};
-use super::results::{Extreme, SectionHistory, SolverStatistics, WindowExtremes};
+use super::results::{Extreme, SectionHistory, SolverStatistics, WindowExtremes, WorkStatistics};
 use super::settings::RecordSettings;
 use crate::error::Result;
 use crate::moving_load::MovingLoad;
@@ -248,6 +248,10 @@ fn moment_at_node(
 pub(super) struct SolverTally {
     iterations: usize,
     max_iterations: usize,
+    /// The work summed over the steps, and the largest factorisations and events of one step.
+    work: nscd::StepWork,
+    max_factorisations: usize,
+    max_events: usize,
     sections: usize,
     max_residual: f64,
     statistics: SolverStatistics,
@@ -260,6 +264,9 @@ impl Record for SolverTally {
         self.iterations += report.iterations;
         self.sections += report.sections;
         self.max_iterations = self.max_iterations.max(report.iterations);
+        self.work += report.work;
+        self.max_factorisations = self.max_factorisations.max(report.work.factorisations);
+        self.max_events = self.max_events.max(report.work.events);
         self.max_residual = self.max_residual.max(report.residual);
         Ok(())
     }
@@ -284,6 +291,14 @@ impl SolverTally {
             max_iterations: self.max_iterations,
             max_residual: self.max_residual,
             mean_sections_solved: mean(self.sections),
+            work: WorkStatistics {
+                mean_factorisations: mean(self.work.factorisations),
+                max_factorisations: self.max_factorisations,
+                mean_solves: mean(self.work.solves),
+                mean_events: mean(self.work.events),
+                max_events: self.max_events,
+                repairs: self.work.repairs,
+            },
             wall_time,
             ..self.statistics
         }

@@ -100,11 +100,32 @@ pub struct SolverStatistics {
     pub max_residual: f64,
     /// Mean number of sections re-solved per step (below `sections` with the interior point's moving window).
     pub mean_sections_solved: f64,
+    /// The banded linear algebra and events per step ([`nscd::StepWork`]).
+    pub work: WorkStatistics,
     /// Steps the run's solver could not solve, each solved by a fallback solver instead ([`nscd::fallback`]): the
     /// count per fallback, in the order they first took a step (empty when the run's solver solved every step).
     pub fallbacks: Vec<FallbackCount>,
     /// Wall time of the time loop (s).
     pub wall_time: f64,
+}
+
+/// The banded linear algebra and the homotopy's events of a run's steps ([`nscd::StepWork`]): means over the
+/// steps and the largest in one step.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct WorkStatistics {
+    /// Banded factorisations per step, mean (0 for projection and Clarabel, which factor no banded matrix).
+    pub mean_factorisations: f64,
+    /// Most banded factorisations in one step.
+    pub max_factorisations: usize,
+    /// Banded solves per step, mean.
+    pub mean_solves: f64,
+    /// Events per step (sections changing between stick and slip along the homotopy's path), mean.
+    pub mean_events: f64,
+    /// Most events in one step.
+    pub max_events: usize,
+    /// The homotopy's repair rounds, over the run.
+    pub repairs: usize,
 }
 
 /// Steps of a run solved by one fallback solver.

@@ -209,12 +209,12 @@ impl RunSettings {
         }
         self.moving.load.validate()?;
         if self.moving.load.vehicles().is_some() {
-            if self.integration.solver.kind == SolverKind::InteriorPoint {
+            if matches!(self.integration.solver.kind, SolverKind::InteriorPoint | SolverKind::Homotopy) {
                 return Err(invalid(
                     "solver",
                     0.0,
-                    "the interior point takes fixed interactions only: runs with vehicles need projection, clarabel \
-                     or auto",
+                    "the interior point and the homotopy take fixed interactions only: runs with vehicles need \
+                     projection, clarabel or auto",
                 ));
             }
             if let InitialState::SteadyState { position } = self.moving.initial {
@@ -266,6 +266,17 @@ impl RunSettings {
             && self.integration.solver.tolerance <= 1e-2)
         {
             return Err(invalid("solver.tolerance", self.integration.solver.tolerance, "must lie in (0, 1e-2]"));
+        }
+        let minimum = nscd::solver::homotopy::MIN_TOLERANCE;
+        if self.integration.solver.kind == SolverKind::Homotopy && self.integration.solver.tolerance < minimum {
+            return Err(invalid(
+                "solver.tolerance",
+                self.integration.solver.tolerance,
+                format!(
+                    "must be at least {minimum:e} with the homotopy solver (its band of width ε = 0.4·tol·U \
+                     amplifies round-off by 1/ε); take the interior point for tighter tolerances"
+                ),
+            ));
         }
         if self.integration.solver.max_iterations == 0 {
             return Err(invalid("solver.max_iterations", 0.0, "must be ≥ 1"));

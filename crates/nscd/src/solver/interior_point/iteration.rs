@@ -3,7 +3,7 @@
 //! twice: baseline and AVX2, the same operations in the same order).
 
 use super::sections::Sections;
-use crate::solver::InteractionProblem;
+use crate::solver::{InteractionProblem, StepWork};
 use banded::{BandedLdlt, SymmetricBanded};
 
 /// Fraction of the distance to the boundary of the positive orthant taken by a step.
@@ -82,6 +82,8 @@ pub(super) struct Work {
     pub(super) b_factor: BandedLdlt,
     /// Scratch over all n DOFs (the start y = M̂⁻¹Hᵀp₀ when p₀ ≠ 0).
     pub(super) full: Vec<f64>,
+    /// The banded factorisations and solves of the step so far.
+    pub(super) counts: StepWork,
 }
 
 impl Work {
@@ -93,6 +95,7 @@ impl Work {
     pub(super) fn newton_direction(&mut self) -> (f64, f64) {
         let n = self.b_factor.order();
         self.b_factor.solve_in_place(&mut self.dy[..n]);
+        self.counts.solves += 1;
         let q = &mut self.sections;
         q.gather(&self.dy);
         let len = q.index.len();
@@ -237,6 +240,7 @@ impl Work {
                 rows[q.index[k]].add_transpose(q.p[k], &mut self.full);
             }
             problem.matrix.factor.solve_in_place(&mut self.full);
+            self.counts.solves += 1;
             self.y[..nw].copy_from_slice(&self.full[offset..offset + nw]);
             q.gather(&self.y);
             for k in 0..len {
@@ -272,6 +276,7 @@ impl Work {
         mu *= inv_count;
         q.rows.weighted_gram_into(base, &q.inv_sigma, &mut self.b);
         self.b.factor_into(&mut self.b_factor)?;
+        self.counts.factorisations += 1;
         Ok(mu)
     }
 

@@ -41,7 +41,7 @@ mod iteration;
 mod sections;
 mod window;
 
-use super::{InteractionProblem, InteractionSolver, SolverKind, StepReport, StepStatus};
+use super::{InteractionProblem, InteractionSolver, SolverKind, StepReport, StepStatus, StepWork};
 use banded::{BandedLdlt, SymmetricBanded};
 use iteration::{Subproblem, Work};
 use sections::Sections;
@@ -118,6 +118,7 @@ impl BandedInteriorPoint {
                 b: problem.matrix.m_hat.clone(),
                 b_factor: problem.matrix.factor.clone(),
                 full: vec![0.0; n],
+                counts: StepWork::default(),
             },
             v: vec![0.0; n],
             correction: vec![0.0; n],
@@ -131,6 +132,9 @@ impl BandedInteriorPoint {
     /// v = v_free + M̂⁻¹Hᵀp and the law residual of every section, into `self.check` (u) — one banded solve.
     fn full_residual(&mut self, problem: &InteractionProblem, v_free: &[f64], p: &[f64]) -> f64 {
         self.v_current = true;
+        if problem.responses.is_none() {
+            self.work.counts.solves += 1;
+        }
         problem.outcome(v_free, p, &mut self.v, &mut self.check)
     }
 
@@ -177,6 +181,7 @@ impl InteractionSolver for BandedInteriorPoint {
     ) -> crate::Result<StepReport> {
         let tolerance = problem.absolute_tolerance(self.tolerance, u_free);
         self.v_current = false;
+        self.work.counts = StepWork::default();
         if problem.is_varying() {
             // Interactions with lo = hi this step hold p = lo (the stepper clamped the warm start) and sit out.
             self.all_active.clear();
@@ -204,6 +209,7 @@ impl InteractionSolver for BandedInteriorPoint {
             tolerance,
             sections: self.statistics.sections_solved - solved_before,
             fallback: None,
+            work: self.work.counts,
         })
     }
 }

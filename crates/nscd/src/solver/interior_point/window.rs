@@ -80,6 +80,7 @@ impl BandedInteriorPoint {
             rows[j].add_transpose(p[j], &mut self.correction);
         }
         problem.matrix.factor.solve_in_place(&mut self.correction);
+        self.work.counts.solves += 1;
         let q = &mut self.work.sections;
         q.fit();
         for (u, &j) in q.u_free.iter_mut().zip(&q.index) {

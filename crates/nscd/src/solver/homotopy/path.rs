@@ -1,0 +1,213 @@
+//! One step of the homotopy: the start at τ = 0 from the anchor, the path to τ = 1 through its events, and the
+//! polish of the final partition (see the module documentation above).
+
+use super::{Anchor, MAX_REPAIRS, ParametricActiveSet, Side};
+use crate::solver::InteractionProblem;
+
+/// Two events closer than this in τ are one (ties of sections that reach their bounds together).
+const TIE: f64 = 1e-12;
+
+/// A section found at τ = 1 past the side its status says by more than this fraction of its interval's width is
+/// moved and the partition solved again; less is round-off, which the final clip absorbs.
+const WRONG_SIDE: f64 = 1e-12;
+
+impl ParametricActiveSet {
+    /// The path's start: the previous step's solution if the impulses passed in are its own, else p_in with
+    /// v⁰ = v_free + M̂⁻¹Hᵀp_in formed here (the first step, or one after a fallback solved the last).
+    pub(super) fn take_anchor(&mut self, problem: &InteractionProblem, v_free: &[f64], p_in: &[f64]) -> Anchor {
+        match self.anchor.take() {
+            Some(anchor) if anchor.p.as_slice() == p_in => anchor,
+            _ => {
+                let mut anchor = Anchor { v_free: v_free.to_vec(), v: vec![0.0; v_free.len()], p: p_in.to_vec() };
+                problem.clamp_to_bounds(&mut anchor.p);
+                problem.outcome(v_free, &anchor.p, &mut anchor.v, &mut self.u);
+                self.work.solves += 1;
+                anchor
+            }
+        }
+    }
+
+    /// Set the path's start from `anchor`: u⁰ = Hv⁰, each section's side and shifts p̄⁰, p̄¹ − p̄⁰ with p̄¹ = p⁰, and
+    /// M̂(v_free − v_free⁰).
+    pub(super) fn start(&mut self, problem: &InteractionProblem, v_free: &[f64], anchor: &Anchor) {
+        problem.interactions.velocities(&anchor.v, &mut self.u);
+        let law = &problem.law;
+        for j in 0..problem.len() {
+            let (lo, hi, p, u) = (law.lower[j], law.upper[j], anchor.p[j], self.u[j]);
+            let side = if lo == hi {
+                Side::Fixed
+            } else if p <= lo && u >= 0.0 {
+                Side::Lower
+            } else if p >= hi && u <= 0.0 {
+                Side::Upper
+            } else {
+                Side::Band
+            };
+            if side != self.side[j] {
+                self.side[j] = side;
+                self.stale = true;
+            }
+            // In the band q⁰ = p̄⁰ − γu⁰ = p⁰; at a bound the shift stays p⁰ and q⁰ lies past the bound.
+            let band = side == Side::Band;
+            self.shift[j] = if band { p + self.gamma[j] * u } else { p };
+            self.dshift[j] = if band { -self.gamma[j] * u } else { 0.0 };
+            self.q[j] = self.shift[j] - self.gamma[j] * u;
+            self.changed_at[j] = f64::NAN;
+        }
+        let delta: Vec<f64> = v_free.iter().zip(&anchor.v_free).map(|(a, b)| a - b).collect();
+        problem.matrix.m_hat.mul_vec(&delta, &mut self.base_rate);
+    }
+
+    /// Rebuild B = M̂ + Σ_band γ_j h_j h_jᵀ and factor it, if the partition or γ changed since the last time.
+    fn refresh_b(&mut self, problem: &InteractionProblem) -> crate::Result<()> {
+        if !self.stale {
+            return Ok(());
+        }
+        self.b.copy_from(&problem.matrix.m_hat);
+        for (j, row) in problem.interactions.rows().iter().enumerate() {
+            if self.side[j] == Side::Band {
+                self.b.add_outer(row.dofs(), row.values(), self.gamma[j]);
+            }
+        }
+        self.b.factor_into(&mut self.b_factor)?;
+        self.work.factorisations += 1;
+        self.stale = false;
+        Ok(())
+    }
+
+    /// Follow the path from τ = 0 to 1; returns the number of events (sections changing side), stopping early at
+    /// the event budget.
+    pub(super) fn follow_path(&mut self, problem: &InteractionProblem) -> crate::Result<usize> {
+        let rows = problem.interactions.rows();
+        let law = &problem.law;
+        let (mut tau, mut events) = (0.0, 0);
+        loop {
+            self.refresh_b(problem)?;
+            // B dv = M̂Δ + Σ_band h_j (p̄¹ − p̄⁰)_j: the rate of v along τ on this partition.
+            self.dv.copy_from_slice(&self.base_rate);
+            for (j, row) in rows.iter().enumerate() {
+                if self.side[j] == Side::Band {
+                    row.add_transpose(self.dshift[j], &mut self.dv);
+                }
+            }
+            self.b_factor.solve_in_place(&mut self.dv);
+            self.work.solves += 1;
+            problem.interactions.velocities(&self.dv, &mut self.du);
+            let mut next = 1.0;
+            for j in 0..problem.len() {
+                self.dq[j] = self.dshift[j] - self.gamma[j] * self.du[j];
+                if let Some(t) = self.event_time(j, tau, law.lower[j], law.upper[j]) {
+                    next = f64::min(next, t);
+                }
+            }
+            let step = next - tau;
+            for j in 0..problem.len() {
+                self.u[j] += step * self.du[j];
+                self.q[j] += step * self.dq[j];
+            }
+            tau = next;
+            if tau >= 1.0 || events >= self.max_events {
+                return Ok(events);
+            }
+            for j in 0..problem.len() {
+                let (lo, hi) = (law.lower[j], law.upper[j]);
+                if self.event_time(j, tau, lo, hi).is_some_and(|t| t <= tau + TIE) {
+                    let (side, edge) = match self.side[j] {
+                        Side::Band if self.dq[j] < 0.0 => (Side::Lower, lo),
+                        Side::Band => (Side::Upper, hi),
+                        Side::Lower => (Side::Band, lo),
+                        Side::Upper | Side::Fixed => (Side::Band, hi),
+                    };
+                    self.q[j] = edge;
+                    self.side[j] = side;
+                    self.changed_at[j] = tau;
+                    self.stale = true;
+                    events += 1;
+                }
+            }
+        }
+    }
+
+    /// When (in τ, from `tau` on) section j reaches the bound it moves towards on its side, if it does: in the band
+    /// q_j reaching lo or hi, at a bound q_j coming back to it. A section that changed side at this very τ does not
+    /// change back at it (a tie of round-off, not an event).
+    fn event_time(&self, j: usize, tau: f64, lo: f64, hi: f64) -> Option<f64> {
+        let (q, dq) = (self.q[j], self.dq[j]);
+        let target = match self.side[j] {
+            Side::Band if dq < 0.0 => lo,
+            Side::Band if dq > 0.0 => hi,
+            Side::Lower if dq > 0.0 => lo,
+            Side::Upper if dq < 0.0 => hi,
+            _ => return None,
+        };
+        let t = tau + ((target - q) / dq).max(0.0);
+        (t > tau || self.changed_at[j] != tau).then_some(t)
+    }
+
+    /// Solve the final partition at τ = 1 exactly, B v = M̂ v_free + Σ_band h_j p̄¹_j + Σ_bound h_j p_j, move the
+    /// sections found on the wrong side and solve again (at most [`MAX_REPAIRS`] rounds), and write p = clip(q)
+    /// into `p`. Returns the repair rounds taken.
+    pub(super) fn polish(
+        &mut self,
+        problem: &InteractionProblem,
+        v_free: &[f64],
+        anchor: &Anchor,
+        p: &mut [f64],
+    ) -> crate::Result<usize> {
+        let rows = problem.interactions.rows();
+        let law = &problem.law;
+        let target = &anchor.p;
+        let mut repairs = 0;
+        loop {
+            self.refresh_b(problem)?;
+            problem.matrix.m_hat.mul_vec(v_free, &mut self.v);
+            for (j, row) in rows.iter().enumerate() {
+                let term = match self.side[j] {
+                    Side::Band => target[j],
+                    Side::Lower | Side::Fixed => law.lower[j],
+                    Side::Upper => law.upper[j],
+                };
+                row.add_transpose(term, &mut self.v);
+            }
+            self.b_factor.solve_in_place(&mut self.v);
+            self.work.solves += 1;
+            problem.interactions.velocities(&self.v, &mut self.u);
+            let mut wrong = false;
+            for j in 0..problem.len() {
+                let (lo, hi) = (law.lower[j], law.upper[j]);
+                let q = target[j] - self.gamma[j] * self.u[j];
+                self.q[j] = q;
+                let slack = WRONG_SIDE * (hi - lo);
+                let side = if q < lo - slack {
+                    Side::Lower
+                } else if q > hi + slack {
+                    Side::Upper
+                } else {
+                    Side::Band
+                };
+                let moved = match self.side[j] {
+                    Side::Fixed => false,
+                    Side::Band => side != Side::Band,
+                    Side::Lower => q > lo + slack,
+                    Side::Upper => q < hi - slack,
+                };
+                if moved && repairs < MAX_REPAIRS {
+                    self.side[j] = side;
+                    self.stale = true;
+                    wrong = true;
+                }
+            }
+            if !wrong {
+                break;
+            }
+            repairs += 1;
+        }
+        for j in 0..problem.len() {
+            p[j] = match self.side[j] {
+                Side::Fixed => law.lower[j],
+                _ => self.q[j].clamp(law.lower[j], law.upper[j]),
+            };
+        }
+        Ok(repairs)
+    }
+}
