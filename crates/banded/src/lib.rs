@@ -6,6 +6,8 @@
 //!
 //! - [`symmetric`]: [`SymmetricBanded`] storage and its [`BandedLdlt`] factorisation (factor once, solve many
 //!   times, O(n·b²) and O(n·b)), principal submatrices and the Schur condensation of leading or trailing blocks.
+//! - [`local_solve`]: A⁻¹h for a right-hand side of a few neighbouring non-zeros, computed only where it is
+//!   significant ([`BandedLdlt::solve_local`]).
 //! - [`diagonals`]: [`BandDiagonals`], the band as diagonals for fast products.
 //! - [`block_rows`]: [`BlockRows`], rows of at most four consecutive nonzeros and the products H x, Hᵀs and
 //!   A + Hᵀ diag(d) H, four entries at a time.
@@ -13,9 +15,11 @@
 pub mod block_rows;
 pub mod diagonals;
 pub mod error;
+pub mod local_solve;
 pub mod symmetric;
 
 pub use block_rows::BlockRows;
 pub use diagonals::BandDiagonals;
 pub use error::{BandedError, Result};
+pub use local_solve::LocalVector;
 pub use symmetric::{BandedLdlt, SymmetricBanded};

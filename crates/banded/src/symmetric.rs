@@ -251,10 +251,11 @@ impl SymmetricBanded {
 /// 1/D apart so that solves multiply instead of divide.
 #[derive(Debug, Clone, PartialEq)]
 pub struct BandedLdlt {
-    n: usize,
-    bandwidth: usize,
-    factors: Vec<f64>,
-    inverse_pivots: Vec<f64>,
+    pub(crate) n: usize,
+    pub(crate) bandwidth: usize,
+    /// Row i holds L_{i,i−b} … L_{i,i−1} and D_i, `bandwidth + 1` entries a row.
+    pub(crate) factors: Vec<f64>,
+    pub(crate) inverse_pivots: Vec<f64>,
 }
 
 impl BandedLdlt {

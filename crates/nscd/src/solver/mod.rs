@@ -10,7 +10,8 @@
 //!   (Woodbury on M̂ + Hᵀ(Σ + D)⁻¹H); built for dense distributed friction, where Gauss–Seidel stalls.
 //! - [`homotopy::ParametricActiveSet`]: a parametric active-set method on the shifted Huber law, the path from the
 //!   previous step's solution to this one through the events where sections change between stick and slip; about
-//!   one banded factorisation per event, exact to the tolerance by construction.
+//!   events are rank-one corrections of one factorisation (Sherman–Morrison–Woodbury, local solves); exact to the
+//!   tolerance by construction.
 //! - `clarabel::ClarabelQp` (feature `clarabel`): the interior-point QP solver Clarabel on the sparse lifted form,
 //!   an independent cross-check.
 //!

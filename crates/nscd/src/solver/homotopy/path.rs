@@ -1,11 +1,8 @@
 //! One step of the homotopy: the start at τ = 0 from the anchor, the path to τ = 1 through its events, and the
 //! polish of the final partition (see the module documentation above).
 
-use super::{Anchor, MAX_REPAIRS, ParametricActiveSet, Side};
+use super::{Anchor, MAX_CORRECTIONS, MAX_REPAIRS, ParametricActiveSet, Pending, Side};
 use crate::solver::InteractionProblem;
-
-/// Two events closer than this in τ are one (ties of sections that reach their bounds together).
-const TIE: f64 = 1e-12;
 
 /// A section found at τ = 1 past the side its status says by more than this fraction of its interval's width is
 /// moved and the partition solved again; less is round-off, which the final clip absorbs.
@@ -52,10 +49,15 @@ impl ParametricActiveSet {
             self.shift[j] = if band { p + self.gamma[j] * u } else { p };
             self.dshift[j] = if band { -self.gamma[j] * u } else { 0.0 };
             self.q[j] = self.shift[j] - self.gamma[j] * u;
+            self.tau_ref[j] = 0.0;
+            self.dq[j] = 0.0;
             self.changed_at[j] = f64::NAN;
         }
-        let delta: Vec<f64> = v_free.iter().zip(&anchor.v_free).map(|(a, b)| a - b).collect();
-        problem.matrix.m_hat.mul_vec(&delta, &mut self.base_rate);
+        // Δ = v_free − v_free⁰ into the scratch `dv` (the segment overwrites it).
+        for ((d, a), b) in self.dv.iter_mut().zip(v_free).zip(&anchor.v_free) {
+            *d = a - b;
+        }
+        problem.matrix.m_hat.mul_vec(&self.dv, &mut self.base_rate);
     }
 
     /// Rebuild B = M̂ + Σ_band γ_j h_j h_jᵀ and factor it, if the partition or γ changed since the last time.
@@ -76,56 +78,147 @@ impl ParametricActiveSet {
     }
 
     /// Follow the path from τ = 0 to 1; returns the number of events (sections changing side), stopping early at
-    /// the event budget.
+    /// the event budget. B₀ is factored at the start's partition (kept from the last step when it has not changed);
+    /// each event adds its rank-one change to the Sherman–Morrison–Woodbury correction (`Corrections`) and
+    /// updates the rates and event times of the sections its column touches; after [`MAX_CORRECTIONS`] events B₀
+    /// is factored afresh at the current partition.
     pub(super) fn follow_path(&mut self, problem: &InteractionProblem) -> crate::Result<usize> {
         let rows = problem.interactions.rows();
         let law = &problem.law;
         let (mut tau, mut events) = (0.0, 0);
-        loop {
-            self.refresh_b(problem)?;
-            // B dv = M̂Δ + Σ_band h_j (p̄¹ − p̄⁰)_j: the rate of v along τ on this partition.
-            self.dv.copy_from_slice(&self.base_rate);
-            for (j, row) in rows.iter().enumerate() {
-                if self.side[j] == Side::Band {
-                    row.add_transpose(self.dshift[j], &mut self.dv);
+        self.begin_segment(problem, tau)?;
+        while events < self.max_events {
+            let Some((t, j, queued)) = self.next_event() else { break };
+            if t > 1.0 {
+                break;
+            }
+            if queued {
+                self.pending.pop();
+            }
+            tau = f64::max(tau, t);
+            let (lo, hi) = (law.lower[j], law.upper[j]);
+            let (side, edge, sign) = match self.side[j] {
+                Side::Band if self.dq[j] < 0.0 => (Side::Lower, lo, -1.0),
+                Side::Band => (Side::Upper, hi, -1.0),
+                Side::Lower => (Side::Band, lo, 1.0),
+                Side::Upper | Side::Fixed => (Side::Band, hi, 1.0),
+            };
+            self.side[j] = side;
+            self.q[j] = edge;
+            self.tau_ref[j] = tau;
+            self.changed_at[j] = tau;
+            self.stale = true;
+            events += 1;
+            if self.corrections.len() >= MAX_CORRECTIONS {
+                self.begin_segment(problem, tau)?;
+                continue;
+            }
+            let (order, first_dofs) = (&self.order, &self.first_dofs);
+            let touching = |start: usize, end: usize| {
+                first_dofs.partition_point(|&d| d + 3 < start)..first_dofs.partition_point(|&d| d < end)
+            };
+            let gamma = self.gamma[j];
+            self.corrections.push(j, &rows[j], (sign, gamma), &self.b_factor, rows, touching, order);
+            self.update_rates(j, tau, law);
+        }
+        Ok(events)
+    }
+
+    /// The earliest event, if any: (τ, section, whether it is the queue's top). The sections the events' columns
+    /// touch are recomputed at every event and kept out of the queue (their earliest is `union_next`); the queue
+    /// holds the others, whose rates have not changed since the segment began (an entry is stale once its
+    /// section's version moved on).
+    fn next_event(&mut self) -> Option<(f64, usize, bool)> {
+        let queued = loop {
+            match self.pending.peek() {
+                Some(top) if top.version != self.version[top.section] => {
+                    self.pending.pop();
                 }
+                top => break top.map(|p| (p.time, p.section)),
             }
-            self.b_factor.solve_in_place(&mut self.dv);
-            self.work.solves += 1;
-            problem.interactions.velocities(&self.dv, &mut self.du);
-            let mut next = 1.0;
-            for j in 0..problem.len() {
-                self.dq[j] = self.dshift[j] - self.gamma[j] * self.du[j];
-                if let Some(t) = self.event_time(j, tau, law.lower[j], law.upper[j]) {
-                    next = f64::min(next, t);
-                }
-            }
-            let step = next - tau;
-            for j in 0..problem.len() {
-                self.u[j] += step * self.du[j];
-                self.q[j] += step * self.dq[j];
-            }
-            tau = next;
-            if tau >= 1.0 || events >= self.max_events {
-                return Ok(events);
-            }
-            for j in 0..problem.len() {
-                let (lo, hi) = (law.lower[j], law.upper[j]);
-                if self.event_time(j, tau, lo, hi).is_some_and(|t| t <= tau + TIE) {
-                    let (side, edge) = match self.side[j] {
-                        Side::Band if self.dq[j] < 0.0 => (Side::Lower, lo),
-                        Side::Band => (Side::Upper, hi),
-                        Side::Lower => (Side::Band, lo),
-                        Side::Upper | Side::Fixed => (Side::Band, hi),
-                    };
-                    self.q[j] = edge;
-                    self.side[j] = side;
-                    self.changed_at[j] = tau;
-                    self.stale = true;
-                    events += 1;
-                }
+        };
+        match (queued, self.union_next) {
+            (Some((t, j)), Some((u, _))) if t < u => Some((t, j, true)),
+            (_, Some((u, s))) => Some((u, s, false)),
+            (Some((t, j)), None) => Some((t, j, true)),
+            (None, None) => None,
+        }
+    }
+
+    /// Start a segment at `tau`: B₀ factored at the current partition (if it changed), no correction, every q
+    /// brought to `tau`, dv₀ = B₀⁻¹(M̂Δ + Σ_band h_j dp̄_j), du₀ = H dv₀, every rate and event time afresh.
+    fn begin_segment(&mut self, problem: &InteractionProblem, tau: f64) -> crate::Result<()> {
+        self.refresh_b(problem)?;
+        self.corrections.clear();
+        let rows = problem.interactions.rows();
+        self.dv.copy_from_slice(&self.base_rate);
+        for (j, row) in rows.iter().enumerate() {
+            if self.side[j] == Side::Band {
+                row.add_transpose(self.dshift[j], &mut self.dv);
             }
         }
+        self.b_factor.solve_in_place(&mut self.dv);
+        self.work.solves += 1;
+        problem.interactions.velocities(&self.dv, &mut self.du);
+        for &s in &self.union {
+            self.in_union[s] = false;
+        }
+        self.union.clear();
+        self.union_next = None;
+        // The queue afresh, built in one O(m) heapify rather than m pushes.
+        let mut pending = std::mem::take(&mut self.pending).into_vec();
+        pending.clear();
+        let law = &problem.law;
+        for j in 0..problem.len() {
+            self.q[j] += (tau - self.tau_ref[j]) * self.dq[j];
+            self.tau_ref[j] = tau;
+            self.du_extra[j] = 0.0;
+            self.dq[j] = self.dshift[j] - self.gamma[j] * self.du[j];
+            self.version[j] = self.version[j].wrapping_add(1);
+            if let Some(time) = self.event_time(j, tau, law.lower[j], law.upper[j]) {
+                pending.push(Pending { time, section: j, version: self.version[j] });
+            }
+        }
+        self.pending = std::collections::BinaryHeap::from(pending);
+        Ok(())
+    }
+
+    /// After the event of section `flipped` at `tau`: the new weights w, the rates of every section the events'
+    /// columns touch (their q brought to `tau` first, with the rates they had), and their event times.
+    fn update_rates(&mut self, flipped: usize, tau: f64, law: &crate::problem::StepLaw) {
+        let Self { corrections, union, in_union, du_extra, q, tau_ref, dq, dshift, du, .. } = self;
+        for &s in union.iter() {
+            q[s] += (tau - tau_ref[s]) * dq[s];
+            tau_ref[s] = tau;
+            du_extra[s] = 0.0;
+        }
+        // A section outside the union has no correction yet (du_extra = 0).
+        let mut enter = |s: usize| {
+            if !in_union[s] {
+                in_union[s] = true;
+                union.push(s);
+                q[s] += (tau - tau_ref[s]) * dq[s];
+                tau_ref[s] = tau;
+            }
+        };
+        enter(flipped);
+        corrections.rates(dshift, du, |s, value| {
+            enter(s);
+            du_extra[s] += value;
+        });
+        let mut next: Option<(f64, usize)> = None;
+        for k in 0..self.union.len() {
+            let s = self.union[k];
+            self.dq[s] = self.dshift[s] - self.gamma[s] * (self.du[s] + self.du_extra[s]);
+            // Its queued time (if any) is stale from now on.
+            self.version[s] = self.version[s].wrapping_add(1);
+            if let Some(time) = self.event_time(s, tau, law.lower[s], law.upper[s])
+                && next.is_none_or(|(t, _)| time < t)
+            {
+                next = Some((time, s));
+            }
+        }
+        self.union_next = next;
     }
 
     /// When (in τ, from `tau` on) section j reaches the bound it moves towards on its side, if it does: in the band

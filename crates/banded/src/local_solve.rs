@@ -1,0 +1,105 @@
+//! Local solves: A⁻¹h for a right-hand side h with a few neighbouring non-zeros, computed only where it matters.
+//!
+//! For a banded SPD A whose inverse decays away from the diagonal (a beam's iteration matrix M̂, or M̂ plus stiff
+//! terms), x = A⁻¹h is significant only near h's support. The forward substitution L z = h starts at h's first
+//! non-zero (z is zero before it) and stops once b consecutive entries of D⁻¹z past h's last non-zero have fallen
+//! below `drop` times the largest; the back substitution Lᵀx = D⁻¹z starts there and stops the same way above h's first
+//! non-zero. The entries left out are below `drop` of the largest (up to the decay rate's constant): the cost is
+//! the support's length, not the order of A.
+
+use crate::symmetric::BandedLdlt;
+
+/// A vector kept on an index range [start, start + values.len()) of a longer one, zero elsewhere.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct LocalVector {
+    /// The first index kept.
+    pub start: usize,
+    /// The entries from `start` on.
+    pub values: Vec<f64>,
+}
+
+impl LocalVector {
+    /// One past the last index kept.
+    pub fn end(&self) -> usize {
+        self.start + self.values.len()
+    }
+
+    /// Σ_k a_k x_k over the (index, value) pairs of `a` (entries outside the kept range count as zero).
+    pub fn dot(&self, a: impl IntoIterator<Item = (usize, f64)>) -> f64 {
+        let mut s = 0.0;
+        for (i, v) in a {
+            if i >= self.start && i < self.end() {
+                s += v * self.values[i - self.start];
+            }
+        }
+        s
+    }
+}
+
+impl BandedLdlt {
+    /// x ≈ A⁻¹h for the sparse h of (index, value) `entries` (ascending indices), into `out`: exact on the range
+    /// kept, every entry left out below `drop` × max|x| (to the decay's constant). No allocation once `out` and
+    /// `scratch` have grown to the range's length.
+    pub fn solve_local(&self, entries: &[(usize, f64)], drop: f64, out: &mut LocalVector, scratch: &mut Vec<f64>) {
+        let (n, b, w) = (self.n, self.bandwidth, self.bandwidth + 1);
+        let f = &self.factors;
+        out.values.clear();
+        let Some(&(first, _)) = entries.first() else {
+            out.start = 0;
+            return;
+        };
+        let last = entries.last().map_or(first, |e| e.0);
+        // Forward: z_i = h_i − Σ_{j<i} L_ij z_j from `first` on, into `scratch` (index i at i − first).
+        scratch.clear();
+        let mut largest: f64 = 0.0;
+        let mut quiet = 0;
+        let mut next_entry = 0;
+        let mut i = first;
+        while i < n {
+            let mut s = 0.0;
+            if next_entry < entries.len() && entries[next_entry].0 == i {
+                s = entries[next_entry].1;
+                next_entry += 1;
+            }
+            for j in i.saturating_sub(b).max(first)..i {
+                s -= f[i * w + b - (i - j)] * scratch[j - first];
+            }
+            scratch.push(s);
+            // Judged on D⁻¹z, what the back substitution takes: with stiff terms on some DOFs D varies by orders
+            // of magnitude, and z alone would stop too early where D is small.
+            let scaled = (s * self.inverse_pivots[i]).abs();
+            largest = largest.max(scaled);
+            quiet = if scaled <= drop * largest { quiet + 1 } else { 0 };
+            i += 1;
+            if i > last && quiet >= b {
+                break;
+            }
+        }
+        let forward_end = i;
+        for (k, z) in scratch.iter_mut().enumerate() {
+            *z *= self.inverse_pivots[first + k];
+        }
+        // Backward: x_i = z_i − Σ_{k>i} L_ki x_k from `forward_end − 1` down, below `first` with z = 0, kept in
+        // reverse order in `out.values` and turned round at the end.
+        let mut largest: f64 = 0.0;
+        let mut quiet = 0;
+        let mut i = forward_end;
+        while i > 0 {
+            i -= 1;
+            let mut s = if i >= first { scratch[i - first] } else { 0.0 };
+            let count = out.values.len();
+            for k in (i + 1)..(i + 1 + b).min(forward_end) {
+                // x_k sits at position forward_end − 1 − k of the reversed values.
+                s -= f[k * w + b - (k - i)] * out.values[count - (k - i)];
+            }
+            out.values.push(s);
+            largest = largest.max(s.abs());
+            quiet = if s.abs() <= drop * largest { quiet + 1 } else { 0 };
+            if i < first && quiet >= b {
+                break;
+            }
+        }
+        out.values.reverse();
+        out.start = i;
+    }
+}
