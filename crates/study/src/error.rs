@@ -78,6 +78,9 @@ impl From<track::TrackError> for StudyError {
             track::TrackError::InvalidField { field, value, allowed } => {
                 StudyError::InvalidField { path: field.into(), value: crate::number::number(value), allowed }
             }
+            track::TrackError::InvalidChoice { field, value, allowed } => {
+                StudyError::InvalidField { path: field.into(), value: value.into(), allowed }
+            }
             track::TrackError::InvalidCount { field, value, allowed } => {
                 StudyError::InvalidField { path: field.into(), value: value.to_string(), allowed }
             }

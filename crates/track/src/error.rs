@@ -25,6 +25,16 @@ pub enum TrackError {
         /// What is allowed.
         allowed: String,
     },
+    /// A choice that does not fit the rest of the run (a solver that cannot take its interactions).
+    #[error("invalid {field} = {value}: {allowed}")]
+    InvalidChoice {
+        /// Setting name, e.g. `solver`.
+        field: &'static str,
+        /// The choice, by its name.
+        value: &'static str,
+        /// What is allowed.
+        allowed: String,
+    },
     /// A count out of range.
     #[error("invalid {field} = {value}: {allowed}")]
     InvalidCount {
@@ -49,7 +59,10 @@ impl TrackError {
         match self {
             TrackError::Engine(e) => e.is_invalid_input(),
             TrackError::Beam(e) => e.is_invalid_input(),
-            TrackError::Irregularity(_) | TrackError::InvalidField { .. } | TrackError::InvalidCount { .. } => true,
+            TrackError::Irregularity(_)
+            | TrackError::InvalidField { .. }
+            | TrackError::InvalidChoice { .. }
+            | TrackError::InvalidCount { .. } => true,
         }
     }
 }

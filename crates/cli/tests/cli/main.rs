@@ -117,6 +117,15 @@ fn invalid_input_exits_2_with_a_named_field() {
     let out = frictrack(&["analytic", "--speeds", "10:5:1"]);
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("--speeds = 10:5:1"));
+    // The homotopy: its tolerance floor, and vehicles it cannot take — named by the solver's name, not a number.
+    let out = frictrack(&["run", "--solver", "homotopy", "--tolerance", "1e-10", "--distributed-friction", "1000"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("integration.tolerance = 1e-10"));
+    let cars = concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/quarter-cars-random-rail.toml");
+    let out = frictrack(&["run", cars, "--solver", "homotopy"]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("integration.solver = homotopy: "), "{err}");
 }
 
 pub(crate) fn temporary_folder(name: &str) -> std::path::PathBuf {

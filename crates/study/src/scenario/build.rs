@@ -297,6 +297,9 @@ fn scenario_path(error: track::TrackError) -> StudyError {
             };
             invalid(path, number(value), allowed)
         }
+        track::TrackError::InvalidChoice { field: "solver", value, allowed } => {
+            invalid("integration.solver", value, allowed)
+        }
         other => other.into(),
     }
 }

@@ -209,13 +209,15 @@ impl RunSettings {
         }
         self.moving.load.validate()?;
         if self.moving.load.vehicles().is_some() {
-            if matches!(self.integration.solver.kind, SolverKind::InteriorPoint | SolverKind::Homotopy) {
-                return Err(invalid(
-                    "solver",
-                    0.0,
-                    "the interior point and the homotopy take fixed interactions only: runs with vehicles need \
-                     projection, clarabel or auto",
-                ));
+            let kind = self.integration.solver.kind;
+            if matches!(kind, SolverKind::InteriorPoint | SolverKind::Homotopy) {
+                return Err(crate::TrackError::InvalidChoice {
+                    field: "solver",
+                    value: kind.name(),
+                    allowed: "the interior point and the homotopy take fixed interactions only: runs with vehicles \
+                              need projection, clarabel or auto"
+                        .into(),
+                });
             }
             if let InitialState::SteadyState { position } = self.moving.initial {
                 return Err(invalid(
