@@ -24,12 +24,13 @@ impl LocalVector {
         self.start + self.values.len()
     }
 
-    /// Σ_k a_k x_k over the (index, value) pairs of `a` (entries outside the kept range count as zero).
-    pub fn dot(&self, a: impl IntoIterator<Item = (usize, f64)>) -> f64 {
+    /// Σ_k a_k x_{first+k}: the product with a row of consecutive entries `a` from index `first` (entries outside
+    /// the kept range count as zero).
+    pub fn dot_consecutive(&self, first: usize, a: &[f64]) -> f64 {
         let mut s = 0.0;
-        for (i, v) in a {
-            if i >= self.start && i < self.end() {
-                s += v * self.values[i - self.start];
+        for (k, &h) in a.iter().enumerate() {
+            if let Some(&x) = (first + k).checked_sub(self.start).and_then(|i| self.values.get(i)) {
+                s += h * x;
             }
         }
         s

@@ -407,8 +407,11 @@ impl InteractionProblem {
     /// Absolute tolerance (m/s) for a relative tolerance: relative to the largest of |U_free,j| and |U_free,j + b_j|,
     /// the velocities the step starts from.
     pub fn absolute_tolerance(&self, relative: f64, u_free: &[f64]) -> f64 {
-        let scale =
-            u_free.iter().zip(&self.law.drift).fold(VELOCITY_FLOOR, |m, (u, b)| m.max(u.abs()).max((u + b).abs()));
-        relative * scale
+        relative * self.velocity_scale(u_free)
+    }
+
+    /// The step's velocity scale (m/s): the largest of |U_free,j| and |U_free,j + b_j|, at least [`VELOCITY_FLOOR`].
+    pub fn velocity_scale(&self, u_free: &[f64]) -> f64 {
+        u_free.iter().zip(&self.law.drift).fold(VELOCITY_FLOOR, |m, (u, b)| m.max(u.abs()).max((u + b).abs()))
     }
 }

@@ -204,12 +204,5 @@ impl Corrections {
 
 /// h·y for a row of consecutive DOFs (as every row the homotopy takes) and a local y.
 fn row_dot(row: &InteractionRow, y: &LocalVector) -> f64 {
-    let (first, values) = (row.dofs()[0], row.values());
-    let mut s = 0.0;
-    for (k, &h) in values.iter().enumerate() {
-        if let Some(&yk) = (first + k).checked_sub(y.start).and_then(|i| y.values.get(i)) {
-            s += h * yk;
-        }
-    }
-    s
+    y.dot_consecutive(row.dofs()[0], row.values())
 }

@@ -95,8 +95,9 @@ pub(crate) enum Side {
 struct Anchor {
     /// v_free⁰ (the previous step's free velocity).
     v_free: Vec<f64>,
-    /// v⁰ = v_free⁰ + M̂⁻¹Hᵀp⁰, as the stepper formed it.
+    /// v⁰ = v_free⁰ + M̂⁻¹Hᵀp⁰, as the stepper formed it, and u⁰ = Hv⁰.
     v: Vec<f64>,
+    u: Vec<f64>,
     /// p⁰ (N·s).
     p: Vec<f64>,
 }
@@ -121,8 +122,8 @@ pub struct ParametricActiveSet {
     stale: bool,
     /// The previous step's solution, if this solver produced the impulses the stepper passes in.
     anchor: Option<Anchor>,
-    /// Scratch: v and the direction (n), M̂(v_free − v_free⁰) (n), u, q and their rates along τ, p̄⁰ and
-    /// p̄¹ − p̄⁰ (m), the τ of each section's last change of side.
+    /// Scratch: v and the direction (n), M̂(v_free − v_free⁰) (n), u, q and their rates along τ, p̄¹ − p̄⁰ (m), the
+    /// τ of each section's last change of side.
     v: Vec<f64>,
     dv: Vec<f64>,
     base_rate: Vec<f64>,
@@ -130,7 +131,6 @@ pub struct ParametricActiveSet {
     du: Vec<f64>,
     q: Vec<f64>,
     dq: Vec<f64>,
-    shift: Vec<f64>,
     dshift: Vec<f64>,
     changed_at: Vec<f64>,
     /// q_j is q at τ = `tau_ref[j]`, moving at `dq[j]` since.
@@ -205,7 +205,6 @@ impl ParametricActiveSet {
             du: vec![0.0; m],
             q: vec![0.0; m],
             dq: vec![0.0; m],
-            shift: vec![0.0; m],
             dshift: vec![0.0; m],
             changed_at: vec![f64::NAN; m],
             tau_ref: vec![0.0; m],
@@ -224,10 +223,10 @@ impl ParametricActiveSet {
         })
     }
 
-    /// Keep U while max|u_free| stays within its range, else take U = max|u_free| and γ_j = a_j/ε for it.
-    /// Returns whether γ changed (B must then be rebuilt).
+    /// Keep U while the step's velocity scale (max|u_free|: friction has no drift) stays within its range, else take
+    /// U = that scale and γ_j = a_j/ε for it. Returns whether γ changed (B must then be rebuilt).
     fn update_scale(&mut self, problem: &InteractionProblem, u_free: &[f64]) -> bool {
-        let largest = u_free.iter().fold(crate::problem::VELOCITY_FLOOR, |m, u| m.max(u.abs()));
+        let largest = problem.velocity_scale(u_free);
         if let Some(scale) = self.scale
             && largest >= KEEP_SCALE.0 * scale
             && largest <= KEEP_SCALE.1 * scale
@@ -282,6 +281,7 @@ impl InteractionSolver for ParametricActiveSet {
         // impulses passed in next time tell).
         anchor.v_free.copy_from_slice(v_free);
         anchor.v.copy_from_slice(&self.v_out);
+        anchor.u.copy_from_slice(&self.u_out);
         anchor.p.copy_from_slice(p);
         self.anchor = Some(anchor);
         let sections = problem.len();

@@ -15,22 +15,22 @@ impl ParametricActiveSet {
         match self.anchor.take() {
             Some(anchor) if anchor.p.as_slice() == p_in => anchor,
             _ => {
-                let mut anchor = Anchor { v_free: v_free.to_vec(), v: vec![0.0; v_free.len()], p: p_in.to_vec() };
+                let (n, m) = (v_free.len(), p_in.len());
+                let mut anchor = Anchor { v_free: v_free.to_vec(), v: vec![0.0; n], u: vec![0.0; m], p: p_in.to_vec() };
                 problem.clamp_to_bounds(&mut anchor.p);
-                problem.outcome(v_free, &anchor.p, &mut anchor.v, &mut self.u);
+                problem.outcome(v_free, &anchor.p, &mut anchor.v, &mut anchor.u);
                 self.work.solves += 1;
                 anchor
             }
         }
     }
 
-    /// Set the path's start from `anchor`: u⁰ = Hv⁰, each section's side and shifts p̄⁰, p̄¹ − p̄⁰ with p̄¹ = p⁰, and
+    /// Set the path's start from `anchor`: each section's side, q⁰ = p̄⁰ − γu⁰ and p̄¹ − p̄⁰ with p̄¹ = p⁰, and
     /// M̂(v_free − v_free⁰).
     pub(super) fn start(&mut self, problem: &InteractionProblem, v_free: &[f64], anchor: &Anchor) {
-        problem.interactions.velocities(&anchor.v, &mut self.u);
         let law = &problem.law;
         for j in 0..problem.len() {
-            let (lo, hi, p, u) = (law.lower[j], law.upper[j], anchor.p[j], self.u[j]);
+            let (lo, hi, p, u) = (law.lower[j], law.upper[j], anchor.p[j], anchor.u[j]);
             let side = if lo == hi {
                 Side::Fixed
             } else if p <= lo && u >= 0.0 {
@@ -46,9 +46,9 @@ impl ParametricActiveSet {
             }
             // In the band q⁰ = p̄⁰ − γu⁰ = p⁰; at a bound the shift stays p⁰ and q⁰ lies past the bound.
             let band = side == Side::Band;
-            self.shift[j] = if band { p + self.gamma[j] * u } else { p };
+            let shift = if band { p + self.gamma[j] * u } else { p };
             self.dshift[j] = if band { -self.gamma[j] * u } else { 0.0 };
-            self.q[j] = self.shift[j] - self.gamma[j] * u;
+            self.q[j] = shift - self.gamma[j] * u;
             self.tau_ref[j] = 0.0;
             self.dq[j] = 0.0;
             self.changed_at[j] = f64::NAN;
