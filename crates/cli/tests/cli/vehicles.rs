@@ -75,7 +75,7 @@ fn bad_vehicles_exit_2_naming_the_path() {
         ("coarse.toml", "[load]\nspeed = 20.0\n[vehicle]\n", "integration.load_advance"),
         ("spacing.toml", "[vehicle]\ncount = 3\n", "vehicle.spacing"),
         ("flat.toml", "[vehicle]\n[[vehicle.flats]]\nwheel = 4\nlength = 0.05\n", "vehicle.flats[0].wheel"),
-        ("solver.toml", "[vehicle]\n[integration]\nsolver = \"interior-point\"\n", "integration.solver"),
+        ("solver.toml", "[vehicle]\n[integration]\nsolver = \"homotopy\"\n", "integration.solver"),
         ("kind.toml", "[vehicle]\nkind = \"bicycle\"\n", "vehicle.kind"),
         (
             "random.toml",

@@ -210,12 +210,12 @@ impl RunSettings {
         self.moving.load.validate()?;
         if self.moving.load.vehicles().is_some() {
             let kind = self.integration.solver.kind;
-            if matches!(kind, SolverKind::InteriorPoint | SolverKind::Homotopy) {
+            if kind == SolverKind::Homotopy {
                 return Err(crate::TrackError::InvalidChoice {
                     field: "solver",
                     value: kind.name(),
-                    allowed: "the interior point and the homotopy take fixed interactions only: runs with vehicles \
-                              need projection, clarabel or auto"
+                    allowed: "the homotopy takes fixed friction sections only: runs with vehicles need auto, \
+                              interior-point, projection or clarabel"
                         .into(),
                 });
             }

@@ -37,6 +37,7 @@
 //! last the whole problem is solved instead.
 //! The answer is therefore exact to the same tolerance; only the cost depends on the window.
 
+mod extra_rows;
 mod iteration;
 mod sections;
 mod window;
@@ -92,13 +93,15 @@ impl BandedInteriorPoint {
         moving_window: bool,
     ) -> crate::Result<Self> {
         let (n, m) = (problem.matrix.m_hat.order(), problem.len());
-        if problem.has_moving() || !problem.interactions.rows().iter().all(|r| r.is_local()) {
+        if !problem.interactions.rows()[..problem.fixed_len()].iter().all(|r| r.is_local()) {
             return Err(crate::NscdError::Unsupported {
                 solver: SolverKind::InteriorPoint,
                 reason: "its banded Newton matrices take fixed rows of at most four consecutive DOFs; \
-                         moving interactions and longer rows need projection or clarabel",
+                         longer fixed rows need projection or clarabel",
             });
         }
+        // Moving rows reach outside the band (a wheel's DOF) and change every step: the whole problem each step.
+        let moving_window = moving_window && !problem.has_moving();
         let backward = match moving_window {
             true => Some(problem.matrix.m_hat.reversed().factor()?),
             false => None,

@@ -1,5 +1,6 @@
 //! The interior-point state of the active sections, one array per quantity, and the per-section passes over it.
 
+use super::extra_rows::ExtraRows;
 use banded::BlockRows;
 use friction::law::project;
 
@@ -11,8 +12,10 @@ use friction::law::project;
 pub(super) struct Sections {
     /// Section index j of each active section.
     pub(super) index: Vec<usize>,
-    /// The rows H_k over the window's DOFs (rows touch consecutive free DOFs).
+    /// The local rows H_k over the subproblem's DOFs (at most four consecutive DOFs; a non-local row is empty here).
     pub(super) rows: BlockRows,
+    /// The non-local rows (a wheel's contact), by the low-rank correction of the Newton systems.
+    pub(super) extra: ExtraRows,
     /// Bounds lo_j, hi_j (N·s; hi_j may be +∞), W_jj + d_j and its inverse, the compliance d_j.
     pub(super) lower: Vec<f64>,
     pub(super) upper: Vec<f64>,
@@ -99,10 +102,13 @@ impl Sections {
     #[inline(always)]
     pub(super) fn gather(&mut self, x: &[f64]) {
         self.rows.mul(x, &mut self.gathered);
+        if !self.extra.is_empty() {
+            self.extra.gather(x, &mut self.gathered);
+        }
     }
 
-    /// The Newton right-hand side out = Σ_k H_kᵀ r_k Σ_k⁻¹, summed in section order (out padded with three zeros
-    /// past its end).
+    /// The Newton right-hand side out = Σ_k H_kᵀ r_k Σ_k⁻¹ over the local rows, summed in section order (out padded
+    /// with three zeros past its end); the non-local rows enter through their own impulses ([`ExtraRows::solve`]).
     #[inline(always)]
     pub(super) fn right_hand_side(&mut self, out: &mut [f64]) {
         let len = self.index.len();
