@@ -160,6 +160,21 @@ impl SymmetricBanded {
         }
     }
 
+    /// Append rows and columns [start, n) of `source` as a block of their own: the order grows by n − start and the
+    /// new block is not coupled to the DOFs already here (their slots reaching before `start` are left out). For a
+    /// window over one beam range that takes a vehicle's DOFs, decoupled from the beam in M̂, beside it.
+    pub fn append_decoupled_block(&mut self, source: &SymmetricBanded, start: usize) {
+        assert!(start <= source.n && self.bandwidth == source.bandwidth, "append_decoupled_block");
+        let (w, first) = (self.bandwidth + 1, self.n);
+        self.n += source.n - start;
+        self.data.extend_from_slice(&source.data[start * w..source.n * w]);
+        for i in 0..(source.n - start).min(self.bandwidth) {
+            for slot in 0..self.bandwidth - i {
+                self.data[(first + i) * w + slot] = 0.0;
+            }
+        }
+    }
+
     /// The factorisation for half-bandwidth 3 (every Hermite beam matrix), unrolled: row i holds
     /// (A_{i,i−3}, A_{i,i−2}, A_{i,i−1}, A_ii) and becomes (L_{i,i−3}, L_{i,i−2}, L_{i,i−1}, D_i).
     fn factor_in_place_3(n: usize, f: &mut [f64], inverse_pivots: &mut [f64]) -> Result<()> {

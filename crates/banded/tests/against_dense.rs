@@ -93,6 +93,45 @@ fn window_schur_complement_matches_block_of_the_inverse() {
     }
 }
 
+/// A window over a beam range with a decoupled trailing block appended (a vehicle's DOFs, coupled to the beam only
+/// through contact rows): its inverse is the block of A⁻¹ over [start, end) ∪ [tail, n), to round-off.
+#[test]
+fn a_window_with_a_decoupled_tail_is_the_block_of_the_inverse() {
+    let mut rng = Lcg(13);
+    let (n, b, tail) = (60usize, 3usize, 55usize);
+    let mut a = SymmetricBanded::zeros(n, b);
+    for i in 0..n {
+        for j in i.saturating_sub(b)..i {
+            if (i >= tail) == (j >= tail) {
+                a.add(i, j, rng.next() - 0.5);
+            }
+        }
+        a.add(i, i, 4.0 + rng.next());
+    }
+    let forward = a.factor().unwrap();
+    let backward = a.reversed().factor().unwrap();
+    for (start, end) in [(0usize, 25usize), (20, 35), (30, 55)] {
+        let mut s = SymmetricBanded::zeros(1, b);
+        a.principal_submatrix_into(start, end, &mut s);
+        if start > 0 {
+            forward.subtract_leading_schur(start, &mut s);
+        }
+        backward.subtract_trailing_schur(end, &mut s);
+        s.append_decoupled_block(&a, tail);
+        assert_eq!(s.order(), end - start + n - tail);
+        let rhs: Vec<f64> = (0..s.order()).map(|_| rng.next() - 0.5).collect();
+        let local = s.factor().unwrap().solve(&rhs);
+        let mut full = vec![0.0; n];
+        full[start..end].copy_from_slice(&rhs[..end - start]);
+        full[tail..].copy_from_slice(&rhs[end - start..]);
+        let reference = forward.solve(&full);
+        let dofs = (start..end).chain(tail..n);
+        for (k, dof) in dofs.enumerate() {
+            assert!((local[k] - reference[dof]).abs() < 1e-13, "window [{start}, {end}) ∪ [{tail}, {n}): DOF {dof}");
+        }
+    }
+}
+
 /// A contact row's packed Hᵀ diag(d) H update equals the generic rank-one update to the bit, rows at the start, in
 /// the middle and at the end of the matrix, one to four entries.
 #[test]

@@ -138,6 +138,24 @@ impl Profile {
         }
     }
 
+    /// An upper bound of |r′(x)| over every x (m/m), from the shapes' own slopes: a|2π/λ| for a harmonic, rise over
+    /// length for a ramp, dπ/ℓ for a dipped joint, the steepest segment of a table, Σ|A_k|Ω_k for a random profile
+    /// (the triangle inequality over its harmonics), the sum of the parts' for a sum. Exact for a single shape but a
+    /// random profile, whose harmonics never all peak at once.
+    pub fn slope_bound(&self) -> f64 {
+        match self {
+            Profile::Smooth => 0.0,
+            Profile::Harmonic { amplitude, wavelength, .. } => amplitude.abs() * TAU / wavelength,
+            Profile::Ramp { length, height, .. } => height.abs() / length,
+            Profile::DippedJoint { depth, length, .. } => depth * std::f64::consts::PI / length,
+            Profile::Table { points } => {
+                points.windows(2).map(|w| ((w[1].1 - w[0].1) / (w[1].0 - w[0].0)).abs()).fold(0.0, f64::max)
+            }
+            Profile::Random(random) => random.harmonics.iter().map(|h| h.amplitude.abs() * h.wavenumber).sum(),
+            Profile::Sum(parts) => parts.iter().map(Profile::slope_bound).sum(),
+        }
+    }
+
     /// r at `count` points x₀ + i·`spacing` (m).
     pub fn sample(&self, start: f64, spacing: f64, count: usize) -> Vec<(f64, f64)> {
         (0..count)

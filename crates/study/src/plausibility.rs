@@ -71,12 +71,16 @@ fn heavy_loads(case: &Case) -> Option<Warning> {
     })
 }
 
-/// The rail's largest slope over the beam, sampled every centimetre (or every 1e-5 of the length), above
-/// [`SLOPE_LIMIT`].
+/// The rail's largest slope over the beam above [`SLOPE_LIMIT`], sampled every centimetre (every 1e-5 of the length
+/// on beams over a kilometre) — unless the profile's slope bound already keeps below it (a random rail's 100 000
+/// samples of ~300 harmonics took 65 % of a 200 m vehicle run).
 fn steep_rail(case: &Case) -> Option<Warning> {
     let vehicles = case.settings.moving.load.vehicles()?;
+    if vehicles.profile.slope_bound() <= SLOPE_LIMIT {
+        return None;
+    }
     let length = case.model.mesh().length;
-    let dx = (0.01f64).min(length * 1e-5);
+    let dx = (0.01f64).max(length * 1e-5);
     let samples = (length / dx).ceil() as usize;
     let (slope, at) = (0..=samples)
         .map(|i| {

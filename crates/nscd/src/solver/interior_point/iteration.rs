@@ -62,14 +62,27 @@ impl Progress {
 }
 
 /// What one interior-point solve works on besides the sections: the step's problem, `base` = the matrix M̂ (or its
-/// window condensation) over the DOFs from `offset` on, the absolute tolerance (m/s) and the iteration cap.
+/// window condensation) over the DOFs from `offset` on — and, with a `tail` (t, a), over the DOFs from t on placed
+/// from a on (a vehicle's, decoupled from the beam in M̂) — the absolute tolerance (m/s) and the iteration cap.
 #[derive(Clone, Copy)]
 pub(super) struct Subproblem<'s> {
     pub(super) problem: &'s InteractionProblem,
     pub(super) base: &'s SymmetricBanded,
     pub(super) offset: usize,
+    pub(super) tail: Option<(usize, usize)>,
     pub(super) tolerance: f64,
     pub(super) max_iterations: usize,
+}
+
+impl Subproblem<'_> {
+    /// The subproblem's DOF of system DOF `dof`.
+    #[inline(always)]
+    fn local(&self, dof: usize) -> usize {
+        match self.tail {
+            Some((first, at)) if dof >= first => at + dof - first,
+            _ => dof - self.offset,
+        }
+    }
 }
 
 /// Per-section and per-DOF scratch of the interior-point iteration.
@@ -199,7 +212,7 @@ impl Work {
     /// written four entries wide). Returns the number of sections without an upper bound.
     #[inline(always)]
     fn load_sections(&mut self, subproblem: &Subproblem<'_>) -> usize {
-        let Subproblem { problem, base, offset, .. } = *subproblem;
+        let Subproblem { problem, base, .. } = *subproblem;
         let rows = problem.interactions.rows();
         let nw = base.order();
         self.y.resize(nw + 3, 0.0);
@@ -215,11 +228,11 @@ impl Work {
             let row = &rows[j];
             debug_assert!(law.lower[j].is_finite(), "lower bounds are finite");
             if row.is_local() {
-                q.rows.push(row.dofs()[0] - offset, row.values());
+                q.rows.push(subproblem.local(row.dofs()[0]), row.values());
             } else {
-                // Empty in the band; the correction of the Newton systems takes it.
+                // Empty in the band; the bordered solve takes it.
                 q.rows.push(0, &[]);
-                q.extra.push(k, row.entries().map(|(d, h)| (d - offset, h)));
+                q.extra.push(k, row.entries().map(|(d, h)| (subproblem.local(d), h)));
             }
             q.lower[k] = law.lower[j];
             q.upper[k] = law.upper[j];
@@ -267,7 +280,13 @@ impl Work {
             }
             problem.matrix.factor.solve_in_place(&mut self.full);
             self.counts.solves += 1;
-            self.y[..nw].copy_from_slice(&self.full[offset..offset + nw]);
+            match subproblem.tail {
+                Some((first, at)) => {
+                    self.y[..at].copy_from_slice(&self.full[offset..offset + at]);
+                    self.y[at..nw].copy_from_slice(&self.full[first..]);
+                }
+                None => self.y[..nw].copy_from_slice(&self.full[offset..offset + nw]),
+            }
             q.gather(&self.y);
             for k in 0..len {
                 q.u[k] = q.u_free[k] + q.gathered[k] + q.compliance[k] * q.p[k];

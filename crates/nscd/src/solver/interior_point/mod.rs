@@ -68,8 +68,12 @@ pub struct BandedInteriorPoint {
     /// The window's reach beyond the violating sections (free DOFs); None solves the whole problem every step.
     reach: Option<usize>,
     all_active: Vec<usize>,
-    /// The first free DOF of each section's row (rows are fixed here): where the window places the section.
-    places: Vec<usize>,
+    /// The first free DOF of each section's row before the tail (moving rows' refreshed every step): where the
+    /// window places the section; None for a row wholly in the tail (a wheel off the beam).
+    places: Vec<Option<usize>>,
+    /// The first DOF of the block the moving rows' far DOFs sit in (the vehicles'), not coupled to the DOFs before it
+    /// in M̂: a window takes it whole beside its beam range.
+    tail: Option<usize>,
     backward: Option<BandedLdlt>,
     window_matrix: SymmetricBanded,
     work: Work,
@@ -100,8 +104,11 @@ impl BandedInteriorPoint {
                          longer fixed rows need projection or clarabel",
             });
         }
-        // Moving rows reach outside the band (a wheel's DOF) and change every step: the whole problem each step.
-        let moving_window = moving_window && !problem.has_moving();
+        // Moving rows that reach outside the band (a wheel's DOF) need that DOF's block decoupled from the beam for a
+        // window to hold it; otherwise the whole problem every step.
+        let tail = window::decoupled_tail(problem);
+        let long_moving = problem.interactions.rows()[problem.fixed_len()..].iter().any(|r| !r.is_local());
+        let moving_window = moving_window && (tail.is_some() || !long_moving);
         let backward = match moving_window {
             true => Some(problem.matrix.m_hat.reversed().factor()?),
             false => None,
@@ -111,7 +118,8 @@ impl BandedInteriorPoint {
             max_iterations,
             reach: moving_window.then(|| window::coupling_reach(&problem.matrix.factor)),
             all_active: (0..m).filter(|&j| problem.law.is_free(j)).collect(),
-            places: problem.interactions.rows().iter().map(|r| r.dof_span().map_or(0, |(first, _)| first)).collect(),
+            places: problem.interactions.rows().iter().map(|r| window::place(r, tail)).collect(),
+            tail,
             backward,
             window_matrix: problem.matrix.m_hat.clone(),
             work: Work {
@@ -159,8 +167,14 @@ impl BandedInteriorPoint {
         for (u, &j) in q.u_free.iter_mut().zip(&q.index) {
             *u = u_free[j];
         }
-        let subproblem =
-            Subproblem { problem, base: &problem.matrix.m_hat, offset: 0, tolerance, max_iterations: budget };
+        let subproblem = Subproblem {
+            problem,
+            base: &problem.matrix.m_hat,
+            offset: 0,
+            tail: None,
+            tolerance,
+            max_iterations: budget,
+        };
         self.work.iterate(&subproblem, p)
     }
 }
@@ -173,6 +187,15 @@ impl InteractionSolver for BandedInteriorPoint {
     /// v of the final impulses when the last check formed it (every step but those solved on the whole beam).
     fn velocity(&self) -> Option<&[f64]> {
         self.v_current.then_some(self.v.as_slice())
+    }
+
+    /// The moving rows' places for the window.
+    fn refresh(&mut self, problem: &InteractionProblem) -> crate::Result<()> {
+        let rows = problem.interactions.rows();
+        for j in problem.fixed_len()..rows.len() {
+            self.places[j] = window::place(&rows[j], self.tail);
+        }
+        Ok(())
     }
 
     fn solve(
@@ -304,7 +327,8 @@ mod tests {
             let mut u_free = vec![0.0; interactions.len()];
             interactions.velocities(&v_free, &mut u_free);
             let tolerance = problem.absolute_tolerance(1e-8, &u_free);
-            let subproblem = Subproblem { problem: &problem, base: m_hat, offset: 0, tolerance, max_iterations: 200 };
+            let subproblem =
+                Subproblem { problem: &problem, base: m_hat, offset: 0, tail: None, tolerance, max_iterations: 200 };
             let solve = |avx2: bool| {
                 let mut solver = BandedInteriorPoint::new(&problem, 1e-8, 200, false).expect("solver");
                 let work = &mut solver.work;

@@ -32,6 +32,23 @@ pub(super) fn coupling_reach(factor: &BandedLdlt) -> usize {
     reach
 }
 
+/// The first DOF t of a trailing block that holds the far DOFs of the moving rows that are not local (the wheels'
+/// DOFs of the vehicles, stacked after the beam) and that M̂ does not couple to the DOFs before it: the largest t at
+/// most the smallest such far DOF with M̂_ij = 0 for every j < t ≤ i. None without such rows or such a block.
+pub(super) fn decoupled_tail(problem: &InteractionProblem) -> Option<usize> {
+    let moving = &problem.interactions.rows()[problem.fixed_len()..];
+    let far = moving.iter().filter(|r| !r.is_local()).filter_map(|r| r.dof_span()).map(|(_, last)| last).min()?;
+    let m_hat = &problem.matrix.m_hat;
+    let (n, b) = (m_hat.order(), m_hat.bandwidth());
+    let decoupled = |t: usize| (t..(t + b).min(n)).all(|i| (i.saturating_sub(b)..t).all(|j| m_hat.get(i, j) == 0.0));
+    (1..=far).rev().find(|&t| decoupled(t))
+}
+
+/// Where the window places `row`: its first DOF before the tail (None when it has none there).
+pub(super) fn place(row: &friction::InteractionRow, tail: Option<usize>) -> Option<usize> {
+    row.dofs().first().copied().filter(|&d| tail.is_none_or(|t| d < t))
+}
+
 impl BandedInteriorPoint {
     /// Re-solve the sections within `reach` free DOFs of the ones violating the law (residuals in `self.check`, v
     /// in `self.v`), on the window's DOFs. Returns None when the window would be the whole problem.
@@ -44,23 +61,27 @@ impl BandedInteriorPoint {
         budget: usize,
     ) -> crate::Result<Option<usize>> {
         let rows = problem.interactions.rows();
-        let places = &self.places;
+        let (places, fixed) = (&self.places, problem.fixed_len());
+        let beam_end = self.tail.unwrap_or(usize::MAX);
+        // The moving rows are re-solved every step: always in the window, with their reach.
         let (mut lo, mut hi) = (usize::MAX, 0);
         for &j in &self.all_active {
-            if problem.section_residual(j, self.check[j], p[j]) > tolerance {
-                lo = lo.min(places[j]);
-                hi = hi.max(places[j]);
+            if let Some(place) = places[j]
+                && (j >= fixed || problem.section_residual(j, self.check[j], p[j]) > tolerance)
+            {
+                lo = lo.min(place);
+                hi = hi.max(place);
             }
         }
         let (lo, hi) = (lo.saturating_sub(reach), hi.saturating_add(reach));
         self.work.sections.index.clear();
         let (mut start, mut end) = (usize::MAX, 0);
         for &j in &self.all_active {
-            if (lo..=hi).contains(&places[j]) {
+            if j >= fixed || places[j].is_some_and(|place| (lo..=hi).contains(&place)) {
                 self.work.sections.index.push(j);
-                if let Some((first, last)) = rows[j].dof_span() {
-                    start = start.min(first);
-                    end = end.max(last + 1);
+                for &d in rows[j].dofs().iter().filter(|&&d| d < beam_end) {
+                    start = start.min(d);
+                    end = end.max(d + 1);
                 }
             }
         }
@@ -69,9 +90,10 @@ impl BandedInteriorPoint {
         if self.work.sections.index.len() == self.all_active.len() || end <= start {
             return Ok(None);
         }
-        // The condensation needs the window wider than the band.
+        // The condensation needs the window wider than the band (and, with a tail, within the beam before it).
+        let beam_end = beam_end.min(n);
         if end - start <= bandwidth {
-            end = (start + bandwidth + 1).min(n);
+            end = (start + bandwidth + 1).min(beam_end);
             start = end.saturating_sub(bandwidth + 1);
         }
         // v' = v − M̂⁻¹H_Wᵀp_W: the motion with the window's impulses removed; u_free of the window from it.
@@ -93,12 +115,16 @@ impl BandedInteriorPoint {
         if end < n {
             self.backward.as_ref().expect("window factors").subtract_trailing_schur(end, &mut self.window_matrix);
         }
+        // The tail is not coupled to the beam in M̂: its block joins the window as it is.
+        let tail = self.tail.map(|first| (first, end - start));
+        if let Some(first) = self.tail {
+            self.window_matrix.append_decoupled_block(&problem.matrix.m_hat, first);
+        }
         self.statistics.sections_solved += self.work.sections.index.len();
         self.v_current = false;
-        let (iterations, _) = self.work.iterate(
-            &Subproblem { problem, base: &self.window_matrix, offset: start, tolerance, max_iterations: budget },
-            p,
-        )?;
+        let subproblem =
+            Subproblem { problem, base: &self.window_matrix, offset: start, tail, tolerance, max_iterations: budget };
+        let (iterations, _) = self.work.iterate(&subproblem, p)?;
         Ok(Some(iterations))
     }
 
