@@ -189,5 +189,34 @@ fn vehicles(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, whole_runs, friction_free_against_bare_solves, scaling, trains, vehicles);
+/// A quarter car on ballast friction against the moving force on the same track (issue 27: ≤ 3×): the example
+/// `examples/quarter-car-on-ballast-friction.toml` (2 kN/m, 100 m/s, rigid contact on a German high-irregularity
+/// rail, ζ = 5 %, θ = 0.51, static start at 40 m), and the same case with the car's weight (83.4 kN, the default
+/// load) as a moving force from the same start — both on the interior point, whose window takes the car's DOFs
+/// beside the beam's.
+fn vehicle_on_ballast_friction(c: &mut Criterion) {
+    let path =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/quarter-car-on-ballast-friction.toml");
+    let car = study::scenario::Scenario::from_path(&path).unwrap().build().unwrap();
+    let mut force = car.settings.clone();
+    force.moving.load = RunSettings::default().moving.load;
+    let mut group = c.benchmark_group("vehicle_on_ballast_friction");
+    group.sample_size(10).warm_up_time(Duration::from_secs(1)).measurement_time(Duration::from_secs(8));
+    for (name, settings) in [("moving_force", &force), ("quarter_car_rigid", &car.settings)] {
+        group.bench_function(BenchmarkId::from_parameter(name), |b| {
+            b.iter(|| Simulation::new(&car.model, black_box(&car.interactions), settings).unwrap().run().unwrap())
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(
+    benches,
+    whole_runs,
+    friction_free_against_bare_solves,
+    scaling,
+    trains,
+    vehicles,
+    vehicle_on_ballast_friction
+);
 criterion_main!(benches);

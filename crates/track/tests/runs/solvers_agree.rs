@@ -19,7 +19,7 @@ fn tight(speed: f64) -> RunSettings {
 }
 
 /// Step a run with solver `a` and, at every step, solve the same step (same v_free) with solver `b`: the largest
-/// relative difference of v_{k+1} over `steps` steps. Independent trajectories would also drift apart through the
+/// relative difference of v_{k+1} over `steps` steps, each held to `bound`. Independent trajectories would also drift apart through the
 /// stick–slip history (1e-8 after ~1500 steps for two exact solvers), which says nothing about a step. Steps where
 /// `b`'s own law residual exceeds 1e-8 of the velocity scale (Clarabel's stopping rule, on degenerate steps) cannot
 /// be held to 1e-8 and are not compared; they are counted and must stay below 5 % of the steps.
@@ -28,7 +28,7 @@ fn same_state_difference(
     a: SolverKind,
     b: SolverKind,
     settings: &RunSettings,
-    steps: usize,
+    (steps, bound): (usize, f64),
 ) -> f64 {
     let model = reference();
     let h = settings.integration.load_advance / settings.moving.speed;
@@ -70,8 +70,7 @@ fn same_state_difference(
             continue;
         }
         let d = relative_difference(stepper.v(), &v_b);
-        // The per-step bound for two exact solvers.
-        assert!(d <= 1e-8, "{a:?} vs {b:?}, step {step}: {d:e}; law residuals {report_a:?} vs {report_b:?}");
+        assert!(d <= bound, "{a:?} vs {b:?}, step {step}: {d:e}; law residuals {report_a:?} vs {report_b:?}");
         worst = worst.max(d);
     }
     eprintln!(
@@ -110,8 +109,8 @@ fn clarabel_agrees_with_projection_for_devices() {
     let model = reference();
     let interactions = Devices::uniform(31, 100e3).interactions(&model).unwrap();
     let settings = tight(200.0);
-    same_state_difference(&interactions, SolverKind::Projection, SolverKind::Clarabel, &settings, 400);
-    same_state_difference(&interactions, SolverKind::Projection, SolverKind::InteriorPoint, &settings, 400);
+    same_state_difference(&interactions, SolverKind::Projection, SolverKind::Clarabel, &settings, (400, 1e-8));
+    same_state_difference(&interactions, SolverKind::Projection, SolverKind::InteriorPoint, &settings, (400, 1e-8));
 }
 
 #[test]
@@ -125,7 +124,26 @@ fn clarabel_agrees_with_interior_point_for_distributed_friction() {
         s.moving.initial = InitialState::SteadyState { position: 95.0 };
         s
     };
-    same_state_difference(&interactions, SolverKind::InteriorPoint, SolverKind::Clarabel, &settings, 30);
+    same_state_difference(&interactions, SolverKind::InteriorPoint, SolverKind::Clarabel, &settings, (30, 1e-8));
+}
+
+/// The homotopy, step by step against Clarabel from the same states (the per-step cross-check of a fourth solver),
+/// both at 1e-8, the homotopy's floor. Each step meets the law to 1e-8 of the velocity scale, yet v differs from
+/// Clarabel's by up to 2.7e-6 relative (measured over 60 steps; the interior point at the same 1e-8 differs by 9e-9,
+/// its last Newton step overshooting the tolerance): the homotopy solves the law with every section inside its band
+/// |u| ≤ ε = 0.4·tol·U counted as stuck, and with more sections than DOFs those per-section slips of ≤ ε add up in v.
+/// Bounded at 1e-5, the spread of whole runs at 1e-6 that BENCHMARKS.md reports.
+#[test]
+fn clarabel_agrees_with_the_homotopy_for_distributed_friction() {
+    let model = reference();
+    let interactions = DistributedFriction::new(5e3).interactions(&model).unwrap();
+    let settings = {
+        let mut s = tight(200.0);
+        s.integration.solver.tolerance = 1e-8;
+        s.moving.initial = InitialState::SteadyState { position: 95.0 };
+        s
+    };
+    same_state_difference(&interactions, SolverKind::Homotopy, SolverKind::Clarabel, &settings, (60, 1e-5));
 }
 
 /// The moving window re-solves only part of the beam but checks every section: from the same state, each step
@@ -135,8 +153,13 @@ fn moving_window_agrees_with_whole_beam_solve_every_step() {
     let model = reference();
     let interactions = DistributedFriction::new(2e3).interactions(&model).unwrap();
     let settings = tight(150.0);
-    let worst =
-        same_state_difference(&interactions, SolverKind::InteriorPoint, SolverKind::InteriorPoint, &settings, 600);
+    let worst = same_state_difference(
+        &interactions,
+        SolverKind::InteriorPoint,
+        SolverKind::InteriorPoint,
+        &settings,
+        (600, 1e-8),
+    );
     assert!(worst < 1e-8);
 }
 
@@ -148,7 +171,7 @@ fn whole_runs_agree() {
     let model = reference();
     let settings = tight(200.0);
     let devices = Devices::uniform(31, 100e3).interactions(&model).unwrap();
-    same_state_difference(&devices, SolverKind::Projection, SolverKind::Clarabel, &settings, usize::MAX);
+    same_state_difference(&devices, SolverKind::Projection, SolverKind::Clarabel, &settings, (usize::MAX, 1e-8));
     same_max_deflection(&devices, SolverKind::Projection, SolverKind::Clarabel, &settings, 1e-6);
     let distributed = DistributedFriction::new(5e3).interactions(&model).unwrap();
     let steady = {
@@ -156,7 +179,7 @@ fn whole_runs_agree() {
         s.moving.initial = InitialState::SteadyState { position: 5.0 };
         s
     };
-    same_state_difference(&distributed, SolverKind::InteriorPoint, SolverKind::Clarabel, &steady, usize::MAX);
+    same_state_difference(&distributed, SolverKind::InteriorPoint, SolverKind::Clarabel, &steady, (usize::MAX, 1e-8));
     // With 799 sections the run's max deflection is itself only defined to ~1e-6: the interior point alone gives
     // 0.17768265, 0.17768305, 0.17768295, 0.17768316 m at tolerances 1e-8, 1e-9, 1e-10, 1e-11 (stick–slip
     // transitions shift by a step under 1e-10 perturbations). Clarabel lands 1.5e-6 from the 1e-10 run, inside
