@@ -30,31 +30,40 @@ struct Event {
     touched: Vec<(usize, f64)>,
 }
 
-/// The events since the last factorisation of B₀ and the dense capacitance system of their correction.
+/// A pivot of the capacitance's LDLᵀ below this fraction of its row's largest entry marks C as ill-conditioned
+/// (cond ≳ 1e12): the event is not added and B₀ is factored afresh instead.
+const PIVOT_FLOOR: f64 = 1e-12;
+
+/// The events since the last factorisation of B₀ and the capacitance system of their correction, factored
+/// incrementally: C is symmetric (indefinite: S⁻¹ has the sign of each event), and an event borders it by one row,
+/// so its LDLᵀ grows by one row in O(k²) — l = (LD)⁻¹c, d = C_kk − lᵀDl — instead of being refactored in O(k³).
 #[derive(Debug)]
 pub(super) struct Corrections {
-    /// At most this many events; C is stored with this row stride.
+    /// At most this many events; C and L are stored with this row stride.
     stride: usize,
     events: Vec<Event>,
     /// Events kept for reuse of their vectors (`events` shrinks to empty at a refactorisation).
     spare: Vec<Event>,
-    /// C (k × k, row-major), and its LU factors with the row permutation (rebuilt at every event).
+    /// C (k × k, row-major, both triangles), and L (unit lower, below the diagonal) with D on the diagonal.
     capacitance: Vec<f64>,
-    lu: Vec<f64>,
-    permutation: Vec<usize>,
-    /// c and w (k), scratch of the local solves and of the capacitance solve.
+    ldl: Vec<f64>,
+    /// c and w (k), scratch of the local solves.
     c: Vec<f64>,
     w: Vec<f64>,
     scratch: Vec<f64>,
     entries: Vec<(usize, f64)>,
 }
 
-impl Corrections {
-    /// Number of events k.
-    pub(super) fn len(&self) -> usize {
-        self.events.len()
-    }
+/// Whether an event was added to the correction.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Added {
+    /// Added: its row borders C's factor.
+    Bordered,
+    /// Not added: the list is full or its pivot fell below [`PIVOT_FLOOR`]; B₀ must be factored afresh.
+    Refactor,
+}
 
+impl Corrections {
     /// Room for `capacity` events.
     pub(super) fn new(capacity: usize) -> Self {
         Self {
@@ -62,8 +71,7 @@ impl Corrections {
             events: Vec::with_capacity(capacity),
             spare: Vec::new(),
             capacitance: vec![0.0; capacity * capacity],
-            lu: Vec::with_capacity(capacity * capacity),
-            permutation: Vec::with_capacity(capacity),
+            ldl: vec![0.0; capacity * capacity],
             c: Vec::with_capacity(capacity),
             w: Vec::with_capacity(capacity),
             scratch: Vec::new(),
@@ -78,7 +86,8 @@ impl Corrections {
 
     /// Add the event of `section` with row `row`, σ = `sign` and γ = `gamma`: its column y = B₀⁻¹h (a local solve),
     /// the sections it touches (`touching(start, end)`: the range of `order` whose rows meet DOFs [start, end)),
-    /// and its row and column of C.
+    /// its row and column of C, and the row of C's factor — unless the list is full or the new pivot shows C
+    /// ill-conditioned ([`Added::Refactor`]: nothing is added).
     pub(super) fn push(
         &mut self,
         section: usize,
@@ -88,7 +97,11 @@ impl Corrections {
         rows: &[InteractionRow],
         touching: impl Fn(usize, usize) -> std::ops::Range<usize>,
         order: &[usize],
-    ) {
+    ) -> Added {
+        let (k, stride) = (self.events.len(), self.stride);
+        if k >= stride {
+            return Added::Refactor;
+        }
         let mut event = self.spare.pop().unwrap_or_default();
         event.section = section;
         event.sign = sign;
@@ -96,6 +109,31 @@ impl Corrections {
         self.entries.clear();
         self.entries.extend(row.entries());
         factor.solve_local(&self.entries, DROP, &mut event.column, &mut self.scratch);
+        // C grows by a row and a column: C_ki = C_ik = h_{j_i}·y_k, C_kk = 1/(σγ) + h_j·y.
+        for (i, other) in self.events.iter().enumerate() {
+            let value = row_dot(&rows[other.section], &event.column);
+            self.capacitance[i * stride + k] = value;
+            self.capacitance[k * stride + i] = value;
+        }
+        let diagonal = event.inverse_s + row_dot(row, &event.column);
+        self.capacitance[k * stride + k] = diagonal;
+        // The factor's new row: u_i = C_ki − Σ_{l<i} L_il u_l, L_ki = u_i/d_i, d_k = C_kk − Σ_i L_ki u_i.
+        let (mut largest, mut pivot) = (diagonal.abs(), diagonal);
+        for i in 0..k {
+            let mut u = self.capacitance[k * stride + i];
+            largest = largest.max(u.abs());
+            for l in 0..i {
+                u -= self.ldl[i * stride + l] * self.ldl[k * stride + l] * self.ldl[l * stride + l];
+            }
+            let value = u / self.ldl[i * stride + i];
+            self.ldl[k * stride + i] = value;
+            pivot -= value * u;
+        }
+        if !(pivot.abs() > PIVOT_FLOOR * largest) {
+            self.spare.push(event);
+            return Added::Refactor;
+        }
+        self.ldl[k * stride + k] = pivot;
         event.touched.clear();
         for &s in &order[touching(event.column.start, event.column.end())] {
             let value = row_dot(&rows[s], &event.column);
@@ -103,52 +141,8 @@ impl Corrections {
                 event.touched.push((s, value));
             }
         }
-        // C grows by a row and a column: C_ki = C_ik = h_{j_i}·y_k, C_kk = 1/(σγ) + h_j·y.
-        let (k, stride) = (self.events.len(), self.stride);
-        assert!(k < stride, "at most {stride} corrections");
-        if self.capacitance.len() < stride * stride {
-            self.capacitance.resize(stride * stride, 0.0);
-        }
-        for (i, other) in self.events.iter().enumerate() {
-            let value = row_dot(&rows[other.section], &event.column);
-            self.capacitance[i * stride + k] = value;
-            self.capacitance[k * stride + i] = value;
-        }
-        self.capacitance[k * stride + k] = event.inverse_s + row_dot(row, &event.column);
         self.events.push(event);
-        self.factor_capacitance();
-    }
-
-    /// LU with partial pivoting of C (k × k, at most `stride`).
-    fn factor_capacitance(&mut self) {
-        let (k, stride) = (self.events.len(), self.stride);
-        self.lu.clear();
-        self.lu.extend_from_slice(&self.capacitance[..stride * stride]);
-        self.permutation.clear();
-        self.permutation.extend(0..k);
-        let lu = &mut self.lu;
-        for col in 0..k {
-            let mut pivot = col;
-            for r in col + 1..k {
-                if lu[r * stride + col].abs() > lu[pivot * stride + col].abs() {
-                    pivot = r;
-                }
-            }
-            if pivot != col {
-                for x in 0..k {
-                    lu.swap(pivot * stride + x, col * stride + x);
-                }
-                self.permutation.swap(pivot, col);
-            }
-            let d = lu[col * stride + col];
-            for r in col + 1..k {
-                let factor = lu[r * stride + col] / d;
-                lu[r * stride + col] = factor;
-                for x in col + 1..k {
-                    lu[r * stride + x] -= factor * lu[col * stride + x];
-                }
-            }
-        }
+        Added::Bordered
     }
 
     /// The weights w = c − C⁻¹(g + G c) for the events' right-hand-side coefficients c_i = σ_i·dp̄_{j_i}
@@ -178,31 +172,96 @@ impl Corrections {
         }
     }
 
-    /// w ← C⁻¹w with the LU factors.
+    /// w ← C⁻¹w with the LDLᵀ factors.
     fn solve_capacitance(&mut self) {
-        let k = self.events.len();
-        self.scratch.clear();
-        self.scratch.extend(self.permutation.iter().map(|&p| self.w[p]));
-        let stride = self.stride;
+        let (k, stride) = (self.events.len(), self.stride);
+        let (ldl, w) = (&self.ldl, &mut self.w);
         for r in 0..k {
-            let mut s = self.scratch[r];
+            let mut s = w[r];
             for x in 0..r {
-                s -= self.lu[r * stride + x] * self.scratch[x];
+                s -= ldl[r * stride + x] * w[x];
             }
-            self.scratch[r] = s;
+            w[r] = s;
+        }
+        for r in 0..k {
+            w[r] /= ldl[r * stride + r];
         }
         for r in (0..k).rev() {
-            let mut s = self.scratch[r];
+            let mut s = w[r];
             for x in r + 1..k {
-                s -= self.lu[r * stride + x] * self.scratch[x];
+                s -= ldl[x * stride + r] * w[x];
             }
-            self.scratch[r] = s / self.lu[r * stride + r];
+            w[r] = s;
         }
-        self.w.copy_from_slice(&self.scratch);
     }
 }
 
 /// h·y for a row of consecutive DOFs (as every row the homotopy takes) and a local y.
 fn row_dot(row: &InteractionRow, y: &LocalVector) -> f64 {
     y.dot_consecutive(row.dofs()[0], row.values())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use banded::SymmetricBanded;
+
+    /// A diagonally dominant B₀ (half-bandwidth 3) and rows of four consecutive entries.
+    fn setting(n: usize) -> (BandedLdlt, Vec<InteractionRow>) {
+        let mut b = SymmetricBanded::zeros(n, 3);
+        for i in 0..n {
+            b.add(i, i, 5.0 + (i % 4) as f64);
+            if i > 0 {
+                b.add(i, i - 1, -1.2);
+            }
+            if i > 2 {
+                b.add(i, i - 3, 0.4);
+            }
+        }
+        let rows = (0..n - 3)
+            .map(|f| InteractionRow::from_entries((0..4).map(|a| (f + a, [0.6, -0.2, 0.4, 0.1][a] + 0.01 * f as f64))))
+            .collect();
+        (b.factor().unwrap(), rows)
+    }
+
+    /// The bordered LDLᵀ of C, grown one event at a time with either sign, solves C w = x as a dense LU of C does.
+    #[test]
+    fn the_bordered_factor_solves_the_capacitance() {
+        let (factor, rows) = setting(60);
+        let order: Vec<usize> = (0..rows.len()).collect();
+        let touching = |start: usize, end: usize| start.saturating_sub(3).min(rows.len())..end.min(rows.len());
+        let mut corrections = Corrections::new(8);
+        for (k, &(section, sign)) in
+            [(20, 1.0), (22, -1.0), (21, 1.0), (40, 1.0), (23, -1.0), (19, 1.0)].iter().enumerate()
+        {
+            let added = corrections.push(section, &rows[section], (sign, 3.0), &factor, &rows, touching, &order);
+            assert_eq!(added, Added::Bordered, "event {k}");
+        }
+        let k = corrections.events.len();
+        let dense = nalgebra::DMatrix::from_fn(k, k, |i, j| corrections.capacitance[i * 8 + j]);
+        let x: Vec<f64> = (0..k).map(|i| (1.3 * i as f64).cos()).collect();
+        corrections.w = x.clone();
+        corrections.solve_capacitance();
+        let expected = dense.lu().solve(&nalgebra::DVector::from_vec(x)).expect("C is regular");
+        let worst = corrections.w.iter().zip(expected.iter()).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
+        assert!(worst < 1e-12, "largest difference {worst:e}");
+    }
+
+    /// The same section entering the band twice with γ → ∞ (S⁻¹ → 0) makes C singular: the second event is refused
+    /// (B₀ is then factored afresh), as is any event past the capacity.
+    #[test]
+    fn a_singular_or_full_capacitance_asks_for_a_refactorisation() {
+        let (factor, rows) = setting(30);
+        let order: Vec<usize> = (0..rows.len()).collect();
+        let touching = |start: usize, end: usize| start.saturating_sub(3).min(rows.len())..end.min(rows.len());
+        let mut corrections = Corrections::new(2);
+        let mut push = |c: &mut Corrections, section: usize| {
+            c.push(section, &rows[section], (1.0, 1e20), &factor, &rows, touching, &order)
+        };
+        assert_eq!(push(&mut corrections, 10), Added::Bordered);
+        assert_eq!(push(&mut corrections, 10), Added::Refactor);
+        assert_eq!(corrections.events.len(), 1, "nothing added");
+        assert_eq!(push(&mut corrections, 14), Added::Bordered);
+        assert_eq!(push(&mut corrections, 18), Added::Refactor, "full");
+    }
 }

@@ -24,7 +24,7 @@
 //! is linear in τ between *events*, where some q_j reaches a bound of its interval and the section changes side.
 //! An event is a rank-one change of B, corrected on B₀'s factor by Sherman–Morrison–Woodbury with a local solve
 //! (`corrections`): it moves the rates and event times only of the sections near it; after [`MAX_CORRECTIONS`]
-//! events B₀ is factored afresh. At τ = 1 a *polish* solves the final partition exactly and repairs any section found on the wrong side (round-off
+//! events, or when the capacitance's pivot shows it ill-conditioned, B₀ is factored afresh. At τ = 1 a *polish* solves the final partition exactly and repairs any section found on the wrong side (round-off
 //! at ties) by moving it and solving again (at most [`MAX_REPAIRS`] rounds); a step still inconsistent is reported
 //! stalled and the stepper's fallback solvers take it.
 //!
@@ -43,10 +43,11 @@ pub const MAX_REPAIRS: usize = 3;
 /// ε = this × the relative tolerance × the velocity scale U: the band's half-width in u is 2ε, below the tolerance.
 const BAND_FRACTION: f64 = 0.4;
 
-/// Events corrected by Sherman–Morrison–Woodbury before B₀ is factored afresh (the capacitance system is dense,
-/// refactored at every event: k³/3 flops). Measured on the reference case at 5 kN/m (instructions and wall time):
-/// 8 beats 12 and 24, whose capacitance factorisations cost more than the segments they save.
-pub const MAX_CORRECTIONS: usize = 8;
+/// Events corrected by Sherman–Morrison–Woodbury before B₀ is factored afresh (the capacitance's LDLᵀ grows by a
+/// row per event, O(k²); each event's rates cost O(k × the sections a column touches)). Measured on the four
+/// reference distributed runs (BENCHMARKS.md): 12 is the fastest; 64 brings the factorisations to 1.03–1.38 per
+/// step but costs 1.2–1.7× the time, the rates of ~25 earlier events being redone at every event.
+pub const MAX_CORRECTIONS: usize = 12;
 
 /// An event time waiting in the queue: stale once its section's `version` has moved on.
 #[derive(Debug, Clone, Copy, PartialEq)]

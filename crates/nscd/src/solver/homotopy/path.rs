@@ -1,7 +1,8 @@
 //! One step of the homotopy: the start at τ = 0 from the anchor, the path to τ = 1 through its events, and the
 //! polish of the final partition (see the module documentation above).
 
-use super::{Anchor, MAX_CORRECTIONS, MAX_REPAIRS, ParametricActiveSet, Pending, Side};
+use super::corrections::Added;
+use super::{Anchor, MAX_REPAIRS, ParametricActiveSet, Pending, Side};
 use crate::solver::InteractionProblem;
 
 /// A section found at τ = 1 past the side its status says by more than this fraction of its interval's width is
@@ -80,8 +81,8 @@ impl ParametricActiveSet {
     /// Follow the path from τ = 0 to 1; returns the number of events (sections changing side), stopping early at
     /// the event budget. B₀ is factored at the start's partition (kept from the last step when it has not changed);
     /// each event adds its rank-one change to the Sherman–Morrison–Woodbury correction (`Corrections`) and
-    /// updates the rates and event times of the sections its column touches; after [`MAX_CORRECTIONS`] events B₀
-    /// is factored afresh at the current partition.
+    /// updates the rates and event times of the sections its column touches; after [`super::MAX_CORRECTIONS`]
+    /// events, or where the capacitance turns ill-conditioned, B₀ is factored afresh at the current partition.
     pub(super) fn follow_path(&mut self, problem: &InteractionProblem) -> crate::Result<usize> {
         let rows = problem.interactions.rows();
         let law = &problem.law;
@@ -109,17 +110,15 @@ impl ParametricActiveSet {
             self.changed_at[j] = tau;
             self.stale = true;
             events += 1;
-            if self.corrections.len() >= MAX_CORRECTIONS {
-                self.begin_segment(problem, tau)?;
-                continue;
-            }
             let (order, first_dofs) = (&self.order, &self.first_dofs);
             let touching = |start: usize, end: usize| {
                 first_dofs.partition_point(|&d| d + 3 < start)..first_dofs.partition_point(|&d| d < end)
             };
             let gamma = self.gamma[j];
-            self.corrections.push(j, &rows[j], (sign, gamma), &self.b_factor, rows, touching, order);
-            self.update_rates(j, tau, law);
+            match self.corrections.push(j, &rows[j], (sign, gamma), &self.b_factor, rows, touching, order) {
+                Added::Bordered => self.update_rates(j, tau, law),
+                Added::Refactor => self.begin_segment(problem, tau)?,
+            }
         }
         Ok(events)
     }
