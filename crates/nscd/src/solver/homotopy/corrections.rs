@@ -129,7 +129,7 @@ impl Corrections {
             self.ldl[k * stride + i] = value;
             pivot -= value * u;
         }
-        if !(pivot.abs() > PIVOT_FLOOR * largest) {
+        if pivot.is_nan() || pivot.abs() <= PIVOT_FLOOR * largest {
             self.spare.push(event);
             return Added::Refactor;
         }
@@ -255,7 +255,7 @@ mod tests {
         let order: Vec<usize> = (0..rows.len()).collect();
         let touching = |start: usize, end: usize| start.saturating_sub(3).min(rows.len())..end.min(rows.len());
         let mut corrections = Corrections::new(2);
-        let mut push = |c: &mut Corrections, section: usize| {
+        let push = |c: &mut Corrections, section: usize| {
             c.push(section, &rows[section], (1.0, 1e20), &factor, &rows, touching, &order)
         };
         assert_eq!(push(&mut corrections, 10), Added::Bordered);
