@@ -13,12 +13,14 @@
 //!   A + Hᵀ diag(d) H, four entries at a time.
 
 pub mod block_rows;
+pub mod bordered;
 pub mod diagonals;
 pub mod error;
 pub mod local_solve;
 pub mod symmetric;
 
 pub use block_rows::BlockRows;
+pub use bordered::BorderedLdlt;
 pub use diagonals::BandDiagonals;
 pub use error::{BandedError, Result};
 pub use local_solve::LocalVector;

@@ -12,7 +12,7 @@
 //!
 //! so the section rates change only where some y_i is significant: du_s = du₀_s + Σ_i w_i (h_s·y_i).
 
-use banded::{BandedLdlt, LocalVector};
+use banded::{BandedLdlt, BorderedLdlt, LocalVector};
 use friction::InteractionRow;
 
 /// The entries of y_i = B₀⁻¹h below this fraction of the largest are left out (the local solve's truncation, judged
@@ -44,9 +44,9 @@ pub(super) struct Corrections {
     events: Vec<Event>,
     /// Events kept for reuse of their vectors (`events` shrinks to empty at a refactorisation).
     spare: Vec<Event>,
-    /// C (k × k, row-major, both triangles), and L (unit lower, below the diagonal) with D on the diagonal.
+    /// C (k × k, row-major, both triangles), and its LDLᵀ.
     capacitance: Vec<f64>,
-    ldl: Vec<f64>,
+    ldl: BorderedLdlt,
     /// c and w (k), scratch of the local solves.
     c: Vec<f64>,
     w: Vec<f64>,
@@ -71,7 +71,7 @@ impl Corrections {
             events: Vec::with_capacity(capacity),
             spare: Vec::new(),
             capacitance: vec![0.0; capacity * capacity],
-            ldl: vec![0.0; capacity * capacity],
+            ldl: BorderedLdlt::with_capacity(capacity),
             c: Vec::with_capacity(capacity),
             w: Vec::with_capacity(capacity),
             scratch: Vec::new(),
@@ -82,6 +82,7 @@ impl Corrections {
     /// Forget every event (B₀ has just been factored at the current partition).
     pub(super) fn clear(&mut self) {
         self.spare.append(&mut self.events);
+        self.ldl.clear(self.stride);
     }
 
     /// Add the event of `section` with row `row`, σ = `sign` and γ = `gamma`: its column y = B₀⁻¹h (a local solve),
@@ -117,23 +118,15 @@ impl Corrections {
         }
         let diagonal = event.inverse_s + row_dot(row, &event.column);
         self.capacitance[k * stride + k] = diagonal;
-        // The factor's new row: u_i = C_ki − Σ_{l<i} L_il u_l, L_ki = u_i/d_i, d_k = C_kk − Σ_i L_ki u_i.
-        let (mut largest, mut pivot) = (diagonal.abs(), diagonal);
-        for i in 0..k {
-            let mut u = self.capacitance[k * stride + i];
-            largest = largest.max(u.abs());
-            for l in 0..i {
-                u -= self.ldl[i * stride + l] * self.ldl[k * stride + l] * self.ldl[l * stride + l];
-            }
-            let value = u / self.ldl[i * stride + i];
-            self.ldl[k * stride + i] = value;
-            pivot -= value * u;
-        }
+        // The factor's new row; its pivot judges C's conditioning.
+        let row = &self.capacitance[k * stride..k * stride + k + 1];
+        let largest = row.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+        let pivot = self.ldl.border(row);
         if pivot.is_nan() || pivot.abs() <= PIVOT_FLOOR * largest {
             self.spare.push(event);
             return Added::Refactor;
         }
-        self.ldl[k * stride + k] = pivot;
+        self.ldl.accept();
         event.touched.clear();
         for &s in &order[touching(event.column.start, event.column.end())] {
             let value = row_dot(&rows[s], &event.column);
@@ -174,25 +167,7 @@ impl Corrections {
 
     /// w ← C⁻¹w with the LDLᵀ factors.
     fn solve_capacitance(&mut self) {
-        let (k, stride) = (self.events.len(), self.stride);
-        let (ldl, w) = (&self.ldl, &mut self.w);
-        for r in 0..k {
-            let mut s = w[r];
-            for x in 0..r {
-                s -= ldl[r * stride + x] * w[x];
-            }
-            w[r] = s;
-        }
-        for r in 0..k {
-            w[r] /= ldl[r * stride + r];
-        }
-        for r in (0..k).rev() {
-            let mut s = w[r];
-            for x in r + 1..k {
-                s -= ldl[x * stride + r] * w[x];
-            }
-            w[r] = s;
-        }
+        self.ldl.solve_in_place(&mut self.w);
     }
 }
 

@@ -15,7 +15,7 @@
 //! a closed contact carries Σ → 0, and that quotient would multiply the round-off of E dy by (Σ + D)⁻¹ ~ 1e15/W_jj.
 //! (docs/theory.md §5.)
 
-use banded::{BandedError, BandedLdlt};
+use banded::{BandedError, BandedLdlt, BorderedLdlt};
 
 /// The non-local rows of the active sections, their Z = B_loc⁻¹Eᵀ and the factor of C. Allocates only while a run
 /// grows its number of such rows.
@@ -30,9 +30,10 @@ pub(super) struct ExtraRows {
     /// Column e of Z over the subproblem's DOFs at `e * order`.
     columns: Vec<f64>,
     order: usize,
-    /// C (row-major, k × k), factored in place: L below the diagonal (unit), the pivots on it.
-    capacitance: Vec<f64>,
-    /// E x, then C⁻¹E x.
+    /// The factor of C, and a row of C as it is bordered on.
+    capacitance: BorderedLdlt,
+    row: Vec<f64>,
+    /// r_E − E dy, then Δp_E.
     coefficients: Vec<f64>,
 }
 
@@ -107,34 +108,18 @@ impl ExtraRows {
             }
             factor.solve_in_place(column);
         }
-        self.capacitance.resize(k * k, 0.0);
+        self.capacitance.clear(k);
         for a in 0..k {
+            self.row.clear();
             for b in 0..=a {
-                let mut c = self.dot(a, &self.columns[b * n..(b + 1) * n]);
-                if a == b {
-                    c += 1.0 / inv_sigma[self.sections[a]];
-                }
-                self.capacitance[a * k + b] = c;
+                self.row.push(self.dot(a, &self.columns[b * n..(b + 1) * n]));
             }
-        }
-        // LDLᵀ in place, by columns.
-        let c = &mut self.capacitance;
-        for j in 0..k {
-            let mut pivot = c[j * k + j];
-            for l in 0..j {
-                pivot -= c[j * k + l] * c[j * k + l] * c[l * k + l];
-            }
+            self.row[a] += 1.0 / inv_sigma[self.sections[a]];
+            let pivot = self.capacitance.border(&self.row);
             if pivot.is_nan() || pivot <= 0.0 {
-                return Err(BandedError::NonPositivePivot { index: j, pivot });
+                return Err(BandedError::NonPositivePivot { index: a, pivot });
             }
-            c[j * k + j] = pivot;
-            for i in j + 1..k {
-                let mut sum = c[i * k + j];
-                for l in 0..j {
-                    sum -= c[i * k + l] * c[j * k + l] * c[l * k + l];
-                }
-                c[i * k + j] = sum / pivot;
-            }
+            self.capacitance.accept();
         }
         Ok(k)
     }
@@ -147,20 +132,7 @@ impl ExtraRows {
         for e in 0..k {
             self.coefficients[e] = r[self.sections[e]] - self.dot(e, dy);
         }
-        let (c, t) = (&self.capacitance, &mut self.coefficients);
-        for i in 0..k {
-            for l in 0..i {
-                t[i] -= c[i * k + l] * t[l];
-            }
-        }
-        for i in 0..k {
-            t[i] /= c[i * k + i];
-        }
-        for i in (0..k).rev() {
-            for l in i + 1..k {
-                t[i] -= c[l * k + i] * t[l];
-            }
-        }
+        self.capacitance.solve_in_place(&mut self.coefficients);
         for e in 0..k {
             let s = self.coefficients[e];
             for (y, z) in dy[..n].iter_mut().zip(&self.columns[e * n..(e + 1) * n]) {
