@@ -29,6 +29,7 @@ pub mod span_oscillator;
 pub mod statics;
 pub mod steady_train;
 pub mod supports;
+pub mod tensionless;
 pub mod train;
 
 pub use absorbing::AbsorbingZones;
