@@ -32,6 +32,8 @@ pub struct TensionlessPointLoad {
     linear_peak: f64,
     /// P (N, downward).
     load: f64,
+    /// k (N/m²).
+    foundation_stiffness: f64,
 }
 
 impl TensionlessPointLoad {
@@ -39,7 +41,8 @@ impl TensionlessPointLoad {
     pub fn new(beam: &InfiniteBeam, load: f64) -> Result<Self> {
         crate::error::positive("load", load)?;
         let beta = beam.beta();
-        Ok(Self { beta, linear_peak: load * beta / (2.0 * beam.foundation_stiffness), load })
+        let foundation_stiffness = beam.foundation_stiffness;
+        Ok(Self { beta, linear_peak: load * beta / (2.0 * foundation_stiffness), load, foundation_stiffness })
     }
 
     /// coth(π/2): the peak deflection and peak moment over the linear beam's.
@@ -80,8 +83,8 @@ impl TensionlessPointLoad {
     }
 
     /// The soil's pressure k⟨−w⟩₊ (N/m): what the foundation pushes with, zero where the beam has lifted off.
-    pub fn soil_pressure(&self, x: f64, foundation_stiffness: f64) -> f64 {
-        foundation_stiffness * (-self.deflection(x)).max(0.0)
+    pub fn soil_pressure(&self, x: f64) -> f64 {
+        self.foundation_stiffness * (-self.deflection(x)).max(0.0)
     }
 }
 
@@ -131,7 +134,7 @@ mod tests {
             .map(|i| {
                 let x = -a + i as f64 * h;
                 let weight = if i == 0 || i == n { 0.5 } else { 1.0 };
-                weight * h * t.soil_pressure(x, k)
+                weight * h * t.soil_pressure(x)
             })
             .sum();
         assert!((carried - p).abs() <= 1e-6 * p, "the soil carries {carried} N of {p} N");
