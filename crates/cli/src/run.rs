@@ -91,7 +91,8 @@ pub fn run(args: &RunArgs) -> Result<()> {
         Format::Text => print_text(&report, &WindowWording::of(&scenario, &case)),
     }
     if let Some(out) = &args.out {
-        write_outputs(out, &scenario, &report, &result, &snapshots)?;
+        let positions_of = study::run_output::position_noun(&case.settings.moving.load);
+        write_outputs(out, (&scenario, positions_of), &report, &result, &snapshots)?;
         if args.format == Format::Text {
             let wheels = if result.vehicles.is_some() { ", wheels.csv" } else { "" };
             println!("  wrote {}/summary.json, histories.csv, snapshots.csv{wheels} and figures", out.display());
@@ -102,7 +103,7 @@ pub fn run(args: &RunArgs) -> Result<()> {
 
 fn write_outputs(
     out: &std::path::Path,
-    scenario: &Scenario,
+    (scenario, load): (&Scenario, &str),
     report: &RunSummary,
     result: &RunResult,
     snapshots: &[track::Snapshot],
@@ -115,7 +116,7 @@ fn write_outputs(
         .iter()
         .map(|s| match s.requested {
             SnapshotAt::Time(t) => format!("time {t} s"),
-            SnapshotAt::LoadPosition(x) => format!("load at {x} m"),
+            SnapshotAt::LoadPosition(x) => format!("{load} at {x} m"),
         })
         .collect();
     let mut files = serde_json::json!({
@@ -126,7 +127,6 @@ fn write_outputs(
         files["wheels.csv"] = serde_json::json!({ "columns": columns(&study::vehicle_output::WHEEL_COLUMNS) });
     }
     let title = if scenario.title.is_empty() { format!("v = {} m/s", report.speed) } else { scenario.title.clone() };
-    let load = if report.train.is_some() { "first axle" } else { "load" };
     let subtitle = figure_subtitle(report);
     let summary = serde_json::json!({
         "report": report,

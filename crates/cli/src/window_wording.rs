@@ -3,11 +3,11 @@
 
 use study::{Case, Scenario};
 
-/// What the text report says of the extremes window, true for the run: whose position it is (the load, or a
-/// train's first axle), why it is there (the default middle third, or given), and what lies around it.
+/// What the text report says of the extremes window, true for the run: whose position it is (the load, a train's
+/// first axle, the vehicles' first wheel), why it is there (the default middle third, or given), and what lies around it.
 #[derive(Debug, Default)]
 pub(crate) struct WindowWording {
-    /// "load" or "first axle".
+    /// "load", "first axle" or "first wheel" ([`study::run_output::position_noun`]).
     pub(crate) load: &'static str,
     /// Why the window is where it is.
     pub(crate) why: &'static str,
@@ -15,7 +15,7 @@ pub(crate) struct WindowWording {
 
 impl WindowWording {
     pub(crate) fn of(scenario: &Scenario, case: &Case) -> Self {
-        let load = if matches!(case.settings.moving.load, track::Load::Train(_)) { "first axle" } else { "load" };
+        let load = study::run_output::position_noun(&case.settings.moving.load);
         let span = scenario.foundation.stiffness == 0.0;
         let why = match (scenario.output.extremes_window.is_some(), span) {
             (true, _) => "the window given by [output] extremes_window or --extremes-window",

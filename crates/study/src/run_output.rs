@@ -166,9 +166,19 @@ impl RunCurves {
     }
 }
 
+/// What a run's load position is the position of: "load" for a single force, "first axle" for a train, "first wheel"
+/// for vehicles (the wheels stand at their offsets behind it).
+pub fn position_noun(load: &track::Load) -> &'static str {
+    match load {
+        track::Load::Force(_) => "load",
+        track::Load::Train(_) => "first axle",
+        track::Load::Vehicles { .. } => "first wheel",
+    }
+}
+
 /// Figures of the histories (deflection and moment against the load position, one curve per section) and of the
 /// snapshots (deflected shape and moment along the beam, one curve per instant). `load` names what the positions are
-/// of: "load" for a single load, "first axle" for a train.
+/// of ([`position_noun`]).
 pub fn run_plots(curves: &RunCurves, title: &str, load: &str) -> Vec<PlotSpec> {
     let by_section = |value: usize, scale: f64| -> Curves {
         let curve = |(i, (x, points)): (usize, &(f64, Vec<[f64; 3]>))| {
