@@ -110,7 +110,7 @@ impl BeamModel {
 
     fn element_stiffness_of(beam: &Beam, foundation: &Foundation, l: f64) -> ElementMatrix {
         let kb = hermite::bending_stiffness(beam.bending_stiffness(), l);
-        let kf = hermite::consistent_mass(foundation.stiffness, l);
+        let kf = hermite::consistent_mass(foundation.tension_stiffness(), l);
         hermite::combine(1.0, &kb, 1.0, &kf)
     }
 
@@ -149,7 +149,8 @@ impl BeamModel {
         &self.mass
     }
 
-    /// Stiffness matrix K, bending plus foundation (free DOFs).
+    /// Stiffness matrix K, bending plus the foundation's linear part k_t ([`Foundation::tension_stiffness`]; k_f for
+    /// a linear foundation) (free DOFs).
     pub fn stiffness(&self) -> &SymmetricBanded {
         &self.stiffness
     }

@@ -37,7 +37,7 @@ pub use assembly::BeamModel;
 pub use error::{FemError, Result};
 pub use load::LoadVector;
 pub use mesh::Mesh;
-pub use properties::{Beam, Foundation, Rayleigh};
+pub use properties::{Beam, Foundation, FoundationLaw, Rayleigh};
 pub use supports::{DofMap, Support, Supports};
 pub use train::{Axle, Patch, Train};
 

@@ -46,27 +46,83 @@ impl Beam {
     }
 }
 
+/// How the soil resists deflection w (upward positive) per unit length (docs/theory.md §13): linearly, or in
+/// compression only, or with a softer tension branch. The assembled K holds the linear part, k_t = α·k_c
+/// ([`Foundation::tension_stiffness`]); the rest, (k_c − k_t)⟨−w⟩₊, is a compliant unilateral law at the sections
+/// of the track's foundation layout.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub enum FoundationLaw {
+    /// Force −k_f·w: pushes and pulls alike (default).
+    #[default]
+    Linear,
+    /// Force k_c⟨−w⟩₊: pushes, never pulls (the rail lifts off the soil).
+    Tensionless,
+    /// Force −k_c·w in compression (w < 0), −α·k_c·w in tension.
+    Bilinear {
+        /// α = k_t/k_c ∈ [0, 1].
+        tension_ratio: f64,
+    },
+}
+
+impl FoundationLaw {
+    /// α = k_t/k_c: 1 linear, 0 tensionless.
+    pub fn tension_ratio(&self) -> f64 {
+        match *self {
+            FoundationLaw::Linear => 1.0,
+            FoundationLaw::Tensionless => 0.0,
+            FoundationLaw::Bilinear { tension_ratio } => tension_ratio,
+        }
+    }
+
+    /// Whether the law is linear (k_t = k_c), whatever its name.
+    pub fn is_linear(&self) -> bool {
+        self.tension_ratio() == 1.0
+    }
+}
+
 /// A viscoelastic Winkler foundation: a distributed spring k_f and dashpot c_f per unit length of beam.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Foundation {
-    /// Stiffness k_f (N/m², force per unit length per unit deflection). Default 250 kN/m²; must be ≥ 0.
+    /// Stiffness k_f (N/m², force per unit length per unit deflection), in compression k_c for a nonlinear law.
+    /// Default 250 kN/m²; must be ≥ 0.
     pub stiffness: f64,
     /// Viscous damping c_f (N·s/m²). Default 0; must be ≥ 0. See [`Foundation::critical_damping`].
     pub damping: f64,
+    /// The soil's law. Default linear.
+    pub law: FoundationLaw,
 }
 
 impl Default for Foundation {
     fn default() -> Self {
-        Self { stiffness: 250.0e3, damping: 0.0 }
+        Self::linear(250.0e3, 0.0)
     }
 }
 
 impl Foundation {
+    /// A linear foundation of stiffness k_f (N/m²) and damping c_f (N·s/m²).
+    pub fn linear(stiffness: f64, damping: f64) -> Self {
+        Self { stiffness, damping, law: FoundationLaw::Linear }
+    }
+
     /// Check every field; the error names the first bad one.
     pub fn validate(&self) -> Result<()> {
         non_negative("foundation.stiffness", self.stiffness)?;
         non_negative("foundation.damping", self.damping)?;
+        let ratio = self.law.tension_ratio();
+        if !(0.0..=1.0).contains(&ratio) {
+            return Err(FemError::InvalidField {
+                field: "foundation.tension_ratio",
+                value: ratio,
+                allowed: "must lie in [0, 1]: the tension stiffness k_t = α·k_c cannot exceed the compression \
+                          stiffness",
+            });
+        }
         Ok(())
+    }
+
+    /// k_t = α·k_c (N/m²): the stiffness in tension, the linear part the assembled K holds.
+    pub fn tension_stiffness(&self) -> f64 {
+        self.law.tension_ratio() * self.stiffness
     }
 
     /// Critical damping c_cr = 2√(k_f ρA) (N·s/m²); ≈ 7742 N·s/m² for the reference case.

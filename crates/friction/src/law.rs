@@ -37,6 +37,16 @@ pub enum Law {
         /// k_c > 0 (N/m).
         stiffness: f64,
     },
+    /// A unilateral Winkler spring of a soil that pushes but cannot pull: force k⟨δ_θ⟩₊ at the θ-point penetration
+    /// δ_θ = θδ_{k+1} + (1−θ)δ_k, where the structure's stiffness K acts too, so that while it presses it is that
+    /// linear spring step for step (energy-conserving at θ = ½) — the compliant stop, which takes its force at the
+    /// step's end, damps a distributed soil numerically (docs/theory.md §13). Fixed interactions only.
+    Soil {
+        /// g₀: the gap at q = 0 (m).
+        gap: f64,
+        /// k > 0 (N/m).
+        stiffness: f64,
+    },
     /// A linear spring that also pulls: force k·(−g) of either sign, integrated implicitly — a glued (bilateral)
     /// contact, the reference a unilateral one equals while it presses.
     Spring {
@@ -75,6 +85,7 @@ impl Law {
             Law::Coulomb { .. } => None,
             Law::Signorini { gap, .. }
             | Law::Compliant { gap, .. }
+            | Law::Soil { gap, .. }
             | Law::Spring { gap, .. }
             | Law::Hertz { gap, .. } => Some(gap),
         }
@@ -83,7 +94,7 @@ impl Law {
     /// Whether the law holds energy in a spring (compliant stop, bilateral spring, Hertz): the energy ledger then
     /// books what it stores and loses.
     pub fn has_spring(&self) -> bool {
-        matches!(self, Law::Compliant { .. } | Law::Spring { .. } | Law::Hertz { .. })
+        matches!(self, Law::Compliant { .. } | Law::Soil { .. } | Law::Spring { .. } | Law::Hertz { .. })
     }
 
     /// Whether the contact is rigid (Signorini with Newton impact): its positions are projected after a step and its
@@ -120,6 +131,7 @@ impl Law {
                 }
             }
             Law::Compliant { .. } | Law::Hertz { .. } => (0.0, f64::INFINITY, spring()),
+            Law::Soil { .. } => (0.0, f64::INFINITY, soil_drift(-gap, u, rheonomic, h, theta)),
             Law::Spring { .. } => (f64::NEG_INFINITY, f64::INFINITY, spring()),
         }
     }
@@ -130,6 +142,7 @@ impl Law {
     pub fn run_compliance(&self, h: f64, theta: f64) -> f64 {
         match *self {
             Law::Compliant { stiffness, .. } | Law::Spring { stiffness, .. } => 1.0 / (h * h * theta * stiffness),
+            Law::Soil { stiffness, .. } => 1.0 / (h * h * theta * theta * stiffness),
             Law::Coulomb { .. } | Law::Signorini { .. } | Law::Hertz { .. } => 0.0,
         }
     }
@@ -138,7 +151,9 @@ impl Law {
     /// spring, (2/5)C_H⟨δ⟩₊^{5/2} for Hertz ([`crate::hertz::potential`]); None for laws without a spring.
     pub fn stored_energy(&self, penetration: f64) -> Option<f64> {
         match *self {
-            Law::Compliant { stiffness, .. } => Some(0.5 * stiffness * penetration.max(0.0).powi(2)),
+            Law::Compliant { stiffness, .. } | Law::Soil { stiffness, .. } => {
+                Some(0.5 * stiffness * penetration.max(0.0).powi(2))
+            }
             Law::Spring { stiffness, .. } => Some(0.5 * stiffness * penetration * penetration),
             Law::Hertz { coefficient, .. } => Some(crate::hertz::potential(coefficient, penetration)),
             Law::Coulomb { .. } | Law::Signorini { .. } => None,
@@ -152,7 +167,7 @@ impl Law {
         match *self {
             Law::Compliant { stiffness, .. } => Some(if p > 0.0 { p / (h * stiffness) } else { 0.0 }),
             Law::Spring { stiffness, .. } => Some(p / (h * stiffness)),
-            Law::Coulomb { .. } | Law::Signorini { .. } | Law::Hertz { .. } => None,
+            Law::Coulomb { .. } | Law::Signorini { .. } | Law::Hertz { .. } | Law::Soil { .. } => None,
         }
     }
 }
@@ -164,6 +179,13 @@ pub const PREDICTION_WEIGHT: f64 = 0.5;
 /// b = b_r − (δ_k − h(1−θ)U_k)/(hθ) for the penetration δ_k (m) its spring starts from, U_k (m/s) and b_r (m/s).
 pub fn compliant_drift(penetration: f64, u: f64, rheonomic: f64, h: f64, theta: f64) -> f64 {
     rheonomic - (penetration - h * (1.0 - theta) * u) / (h * theta)
+}
+
+/// The drift of the soil's spring, whose force is k⟨δ_θ⟩₊ at δ_θ = δ_k − hθU_θ, U_θ = θU_{k+1} + (1−θ)U_k
+/// (docs/theory.md §13): 0 ≤ p ⊥ p/(h²θ²k) + U_{k+1} + b ≥ 0 with b = b_r − (δ_k − hθ(1−θ)U_k)/(hθ²), for the
+/// penetration δ_k (m), U_k (m/s) and b_r (m/s); a positive impulse is p = hkδ_θ.
+pub fn soil_drift(penetration: f64, u: f64, rheonomic: f64, h: f64, theta: f64) -> f64 {
+    rheonomic - (penetration - h * theta * (1.0 - theta) * u) / (h * theta * theta)
 }
 
 /// Projection of `p` onto [lo, hi] (lo ≤ hi, hi may be +∞).

@@ -56,3 +56,22 @@ impl Forcing for Constant {
         self.force.iter().zip(v).map(|(f, v)| f * v).sum()
     }
 }
+
+/// A forcing plus a constant force: F(t) + f₀ (a preload on the first DOFs when f₀ is shorter).
+pub struct WithConstant<'a> {
+    /// F(t).
+    pub forcing: &'a dyn Forcing,
+    /// f₀ (N).
+    pub constant: &'a Constant,
+}
+
+impl Forcing for WithConstant<'_> {
+    fn add_to(&self, time: f64, scale: f64, out: &mut [f64]) {
+        self.forcing.add_to(time, scale, out);
+        self.constant.add_to(time, scale, out);
+    }
+
+    fn power(&self, time: f64, v: &[f64]) -> f64 {
+        self.forcing.power(time, v) + self.constant.power(time, v)
+    }
+}

@@ -33,7 +33,7 @@ impl SpeedScale {
             return Ok(Self { critical_speed: None, step: 10.0 });
         }
         let beam = scenario.beam;
-        let foundation = fem_beam::Foundation { stiffness: scenario.foundation.stiffness, damping: 0.0 };
+        let foundation = fem_beam::Foundation::linear(scenario.foundation.stiffness, 0.0);
         let critical = InfiniteBeam::new(&beam, &foundation)?.critical_speed();
         Ok(Self { critical_speed: Some(critical), step: nice(critical / STEPS_TO_CRITICAL) })
     }

@@ -35,6 +35,13 @@ pub enum TrackError {
         /// What is allowed.
         allowed: String,
     },
+    /// The beam has no static equilibrium on its unilateral supports (nothing holds it, or the contact set does not
+    /// settle).
+    #[error("no static equilibrium on the unilateral foundation: {reason}")]
+    NoStaticEquilibrium {
+        /// Why, in words.
+        reason: String,
+    },
     /// A count out of range.
     #[error("invalid {field} = {value}: {allowed}")]
     InvalidCount {
@@ -62,7 +69,8 @@ impl TrackError {
             TrackError::Irregularity(_)
             | TrackError::InvalidField { .. }
             | TrackError::InvalidChoice { .. }
-            | TrackError::InvalidCount { .. } => true,
+            | TrackError::InvalidCount { .. }
+            | TrackError::NoStaticEquilibrium { .. } => true,
         }
     }
 }

@@ -8,16 +8,20 @@
 //! ([`vehicle`]: small linear systems with wheels, rolled over rigid ground with a rail profile).
 
 pub mod error;
+pub mod foundation_layout;
 pub mod friction_layout;
 pub mod moving_load;
 pub mod placed;
+pub mod section_quadrature;
 pub mod simulation;
 pub mod snapshots;
 pub mod statics;
 pub mod system;
+pub mod unilateral_statics;
 pub mod vehicle;
 
 pub use error::{Result, TrackError};
+pub use foundation_layout::FoundationSections;
 pub use friction_layout::{DeviceLayout, Devices, DistributedFriction, Quadrature};
 pub use moving_load::MovingLoad;
 pub use placed::{PlacedInteractions, SectionKind};

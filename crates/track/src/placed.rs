@@ -31,6 +31,9 @@ pub struct PlacedInteractions {
     interactions: InteractionSet,
     positions: Vec<f64>,
     kinds: Vec<SectionKind>,
+    /// f₀ (N, over the beam's free DOFs; empty for none): the constant force that holds the interactions' forces at
+    /// q = 0 in equilibrium — the self-weight a nonlinear foundation's sections carry (docs/theory.md §13).
+    preload: Vec<f64>,
 }
 
 impl PlacedInteractions {
@@ -53,6 +56,23 @@ impl PlacedInteractions {
         self.interactions.extend(other.interactions);
         self.positions.extend(other.positions);
         self.kinds.extend(other.kinds);
+        self.add_preload(&other.preload);
+    }
+
+    /// Add `force` (N, free DOFs) to the preload f₀.
+    pub(crate) fn add_preload(&mut self, force: &[f64]) {
+        if self.preload.len() < force.len() {
+            self.preload.resize(force.len(), 0.0);
+        }
+        for (p, f) in self.preload.iter_mut().zip(force) {
+            *p += f;
+        }
+    }
+
+    /// f₀ (N, free DOFs of the beam; empty for none): the constant force a run adds to its loads so that q = 0 is the
+    /// equilibrium the interactions were placed in.
+    pub fn preload(&self) -> &[f64] {
+        &self.preload
     }
 
     /// The engine's interactions.

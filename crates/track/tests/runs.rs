@@ -9,6 +9,7 @@ mod runs {
     mod friction_law;
     mod homotopy;
     mod linear;
+    mod nonlinear_foundation;
     mod solver_fallback;
     mod solvers_agree;
     mod span;

@@ -19,6 +19,7 @@ fn bad_parameters_name_their_field() {
     let b = case.beam;
     let f = case.foundation;
     let m = case.mesh;
+    let bilinear = |tension_ratio| fem_beam::FoundationLaw::Bilinear { tension_ratio };
     let cases: Vec<(FemError, &str)> = vec![
         (build(b, f, Mesh { length: 0.0, ..m }), "mesh.length"),
         (build(b, f, Mesh { length: -5.0, ..m }), "mesh.length"),
@@ -30,6 +31,9 @@ fn bad_parameters_name_their_field() {
         (build(Beam { density: f64::INFINITY, ..b }, f, m), "beam.density"),
         (build(b, Foundation { stiffness: -1.0, ..f }, m), "foundation.stiffness"),
         (build(b, Foundation { damping: f64::NAN, ..f }, m), "foundation.damping"),
+        (build(b, Foundation { law: bilinear(1.5), ..f }, m), "foundation.tension_ratio"),
+        (build(b, Foundation { law: bilinear(-0.1), ..f }, m), "foundation.tension_ratio"),
+        (build(b, Foundation { law: bilinear(f64::NAN), ..f }, m), "foundation.tension_ratio"),
         (LoadVector::point_force(&m, 200.5, 1.0).unwrap_err(), "position"),
         (LoadVector::point_force(&m, -0.1, 1.0).unwrap_err(), "position"),
         (LoadVector::point_force(&m, f64::NAN, 1.0).unwrap_err(), "position"),
@@ -55,7 +59,7 @@ fn bad_requests_on_a_valid_model_are_errors() {
     let inf = case.infinite_beam().unwrap();
     assert_eq!(field_of(inf.steady_state(-1.0, case.load).unwrap_err()), "speed");
     assert_eq!(field_of(inf.steady_state(f64::NAN, case.load).unwrap_err()), "speed");
-    let no_soil = Foundation { stiffness: 0.0, damping: 0.0 };
+    let no_soil = Foundation::linear(0.0, 0.0);
     assert_eq!(
         field_of(fem_beam::reference::InfiniteBeam::new(&case.beam, &no_soil).unwrap_err()),
         "foundation.stiffness"

@@ -39,7 +39,7 @@ fn midspan_point_load_matches_infinite_beam() {
 #[test]
 fn cantilever_nodal_values_are_exact() {
     let beam = Beam::default();
-    let foundation = Foundation { stiffness: 0.0, damping: 0.0 };
+    let foundation = Foundation::linear(0.0, 0.0);
     let length = 7.0;
     let mesh = Mesh::new(length, 5).unwrap();
     let supports = Supports { left: Support::Clamped, right: Support::Free };
@@ -141,7 +141,7 @@ fn a_standing_train_on_a_span_matches_the_beam_formula() {
     let (length, elements) = (24.0, 48);
     let mesh = Mesh::new(length, elements).unwrap();
     let model =
-        BeamModel::new(beam, Foundation { stiffness: 0.0, damping: 0.0 }, mesh, Supports::both(Support::Pinned))
+        BeamModel::new(beam, Foundation::linear(0.0, 0.0), mesh, Supports::both(Support::Pinned))
             .unwrap();
     let ei = beam.bending_stiffness();
     let train = fem_beam::Train {

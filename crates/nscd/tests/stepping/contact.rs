@@ -215,3 +215,37 @@ fn stiff_compliant_stop_tends_to_the_rigid_stop() {
         previous = compliant;
     }
 }
+
+/// The soil's spring (Law::Soil) takes its force at the θ-point as the structure's K does: a mass of weight 100 N
+/// on a soil spring of 100 N/m pressed in by the 1 m it settles (it never lets go) moves as the mass on the same
+/// spring in K without weight, step for step to round-off (one interaction: the projection is exact), and at θ = ½
+/// conserves ½mv² + ½kδ² + mgx to round-off. The compliant stop, forced at the step's end, loses energy on the same
+/// motion.
+#[test]
+fn the_soil_spring_is_the_structures_spring_while_it_presses() {
+    let (m, k, x0, h) = (1.0, 100.0, 0.01, 2e-3);
+    let weight = DofForce { dof: 0, force: |_| -100.0 };
+    let mut soil = stepper(m, 0.0, Law::Soil { gap: -1.0, stiffness: k }, x0, h, SolverKind::Projection);
+    let mut compliant = stepper(m, 0.0, Law::Compliant { gap: -1.0, stiffness: k }, x0, h, SolverKind::Projection);
+    let mut reference = stepper(m, k, Law::Coulomb { capacity: 0.0 }, x0, h, SolverKind::Projection);
+    let energy = |s: &MoreauJean| {
+        let x = s.q()[0];
+        0.5 * m * s.v()[0].powi(2) + 0.5 * k * (1.0 - x).powi(2) + 100.0 * x
+    };
+    let start = energy(&soil);
+    // Ten periods of 2π/10 s.
+    for _ in 0..3142 {
+        soil.step(&weight).unwrap();
+        compliant.step(&weight).unwrap();
+        reference.step(&Unloaded).unwrap();
+        assert!((soil.q()[0] - reference.q()[0]).abs() <= 1e-12, "{} vs {}", soil.q()[0], reference.q()[0]);
+        // Energies of 50 J around a motion of 5 mJ: round-off of 1e-14 relative.
+        assert!((energy(&soil) - start).abs() <= 1e-11, "{} vs {start}", energy(&soil));
+        // The ledger closes with the soil's work: its terms are of the spring's 50 J.
+        assert!(soil.energy.residual().abs() <= 1e-11, "{:e}", soil.energy.residual());
+    }
+    // The stop's end-of-step force removes ½k(Δδ)² a step, ~ωh/2 of the motion a radian (ωh = 0.02): 0.47 of the
+    // 5 mJ over ten periods, measured.
+    let motion = |s: &MoreauJean| energy(s) - 0.5 * k;
+    assert!(motion(&compliant) < 0.6 * motion(&soil), "{} vs {}", motion(&compliant), motion(&soil));
+}

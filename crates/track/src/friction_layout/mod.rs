@@ -6,4 +6,5 @@ pub mod devices;
 pub mod distributed;
 
 pub use devices::{DeviceLayout, Devices};
-pub use distributed::{DistributedFriction, Quadrature};
+pub use distributed::DistributedFriction;
+pub use crate::section_quadrature::Quadrature;

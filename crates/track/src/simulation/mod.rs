@@ -8,6 +8,7 @@
 //!
 //! Memory of a run is O(DOFs + sections) plus O(steps) per recorded section history.
 
+mod lift_off;
 mod observers;
 mod records;
 mod results;
@@ -15,8 +16,9 @@ mod settings;
 mod setup;
 mod vehicles;
 
+pub use lift_off::LIFT_OFF_GAP;
 pub use results::{
-    BodyResult, Extreme, FallbackCount, LossOfContact, RunResult, SectionHistory, SolverStatistics, StepView,
+    BodyResult, Extreme, FallbackCount, LiftOff, LiftOffZone, LossOfContact, RunResult, SectionHistory, SolverStatistics, StepView,
     VehicleResults, WheelHistory, WheelResult, WindowExtremes, WorkStatistics,
 };
 pub(crate) use settings::counts_for_extremes;
@@ -81,10 +83,15 @@ impl<'a> Simulation<'a> {
         match self.settings.moving.initial {
             InitialState::Rest => Ok((vec![0.0; n], vec![0.0; n])),
             InitialState::Static { position } => {
-                // K q = f of the loads standing there (the vehicles' static wheel loads with vehicles).
+                // K q = f of the loads standing there (the vehicles' static wheel loads with vehicles), with the
+                // springs of a nonlinear foundation's sections where it has them.
                 let mesh = self.model.mesh();
                 let mut q = self.settings.moving.load.train().load_vector(mesh, position).to_free(mesh, dofs);
-                self.model.stiffness().factor()?.solve_in_place(&mut q);
+                if self.model.foundation().law.is_linear() {
+                    self.model.stiffness().factor()?.solve_in_place(&mut q);
+                } else {
+                    q = crate::unilateral_statics::static_deflection(self.model, self.interactions, &q)?;
+                }
                 let v = convected_velocity(self.model, &q, self.settings.moving.speed);
                 Ok((q, v))
             }
@@ -128,15 +135,19 @@ impl<'a> Simulation<'a> {
     pub fn run_observed(&self, observer: &mut dyn FnMut(&StepView<'_>) -> bool) -> Result<RunResult> {
         let Setup { mut stepper, load, weights, mut vehicles, step: h, start, crossing_steps, total_steps } =
             self.set_up()?;
-        let forcing: &dyn Forcing = match &weights {
+        let loads: &dyn Forcing = match &weights {
             Some(weights) => weights,
             None => &load,
         };
+        let preload = nscd::forcing::Constant { force: self.interactions.preload().to_vec() };
+        let preloaded = nscd::forcing::WithConstant { forcing: loads, constant: &preload };
+        let forcing: &dyn Forcing = if preload.force.is_empty() { loads } else { &preloaded };
         let (nb, fixed) = (self.model.dofs().free_len(), self.interactions.len());
         let (q0, v0) = (&stepper.q()[..nb], &stepper.v()[..nb]);
         let record = &self.settings.record;
         let mut deflections = DeflectionRecord::new(self.model, record, q0, start, crossing_steps);
         let mut sections = SectionRecords::new(self.model, self.interactions, &record.sections, total_steps);
+        let mut lift_off = lift_off::LiftOffRecord::new(self.interactions);
         sections.start((q0, v0), &load, start)?;
         let mut tally = SolverTally::default();
         if let Some(vehicles) = vehicles.as_mut() {
@@ -178,8 +189,8 @@ impl<'a> Simulation<'a> {
                 report,
             };
             let vehicles = vehicles.as_mut().map(|v| v as &mut dyn Record);
-            let records: [Option<&mut dyn Record>; 4] =
-                [Some(&mut tally), Some(&mut deflections), vehicles, Some(&mut sections)];
+            let records: [Option<&mut dyn Record>; 5] =
+                [Some(&mut tally), Some(&mut deflections), vehicles, Some(&mut sections), Some(&mut lift_off)];
             for r in records.into_iter().flatten() {
                 r.record(&state)?;
             }
@@ -205,6 +216,7 @@ impl<'a> Simulation<'a> {
             final_displacement: stepper.q()[..nb].to_vec(),
             final_velocity: stepper.v()[..nb].to_vec(),
             vehicles: vehicles.map(|o| o.finish(&stepper.energy)),
+            lift_off: lift_off.finish(),
         })
     }
 }

@@ -188,6 +188,65 @@ pub struct RunResult {
     pub final_velocity: Vec<f64>,
     /// The vehicles' wheels and bodies, in a run with vehicles.
     pub vehicles: Option<VehicleResults>,
+    /// Where and when the rail left the soil, on a nonlinear foundation.
+    pub lift_off: Option<LiftOff>,
+}
+
+/// Where and when the rail left the soil of a nonlinear foundation over a run (docs/theory.md §13).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct LiftOff {
+    /// Foundation sections followed.
+    pub sections: usize,
+    /// The zones of neighbouring sections that lifted at some time in the run, in order of x.
+    pub zones: Vec<LiftOffZone>,
+}
+
+impl LiftOff {
+    /// The zone with the largest gap, if the rail ever lifted.
+    pub fn largest(&self) -> Option<&LiftOffZone> {
+        self.zones.iter().max_by(|a, b| a.largest_gap.total_cmp(&b.largest_gap))
+    }
+
+    /// Sections that lifted at some time, over all zones.
+    pub fn lifted_sections(&self) -> usize {
+        self.zones.iter().map(|z| z.sections).sum()
+    }
+}
+
+/// Neighbouring foundation sections that lifted off the soil (gap above [`crate::simulation::LIFT_OFF_GAP`]) at
+/// some time in the run.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct LiftOffZone {
+    /// The first section's position (m).
+    pub from: f64,
+    /// The last section's position (m).
+    pub to: f64,
+    /// When the first of them lifted (s).
+    pub first_time: f64,
+    /// When the last of them was last lifted (s).
+    pub last_time: f64,
+    /// The largest gap between the rail and the soil's undeformed surface (m).
+    pub largest_gap: f64,
+    /// Where that gap was (m).
+    pub largest_gap_position: f64,
+    /// When (s).
+    pub largest_gap_time: f64,
+    /// Sections in the zone.
+    pub sections: usize,
+}
+
+impl LiftOffZone {
+    /// Widen this zone by its neighbour `next` (further along x).
+    pub(crate) fn absorb(&mut self, next: &LiftOffZone) {
+        self.to = next.to;
+        self.first_time = self.first_time.min(next.first_time);
+        self.last_time = self.last_time.max(next.last_time);
+        if next.largest_gap > self.largest_gap {
+            (self.largest_gap, self.largest_gap_position, self.largest_gap_time) =
+                (next.largest_gap, next.largest_gap_position, next.largest_gap_time);
+        }
+        self.sections += next.sections;
+    }
 }
 
 /// A wheel's loss of contact with the rail: where and when it lifted off, where it landed, and the impact.

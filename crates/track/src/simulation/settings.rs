@@ -183,7 +183,7 @@ impl RunSettings {
     pub fn validate(&self, model: &BeamModel) -> Result<()> {
         self.validate_moving(model)?;
         self.validate_integration(model)?;
-        self.validate_start(model.mesh().length)?;
+        self.validate_start(model)?;
         self.validate_record(model)?;
         self.validate_size(model.mesh().length)
     }
@@ -287,7 +287,18 @@ impl RunSettings {
     }
 
     /// A steady or static start's position on the beam of `length` (m).
-    fn validate_start(&self, length: f64) -> Result<()> {
+    fn validate_start(&self, model: &BeamModel) -> Result<()> {
+        let length = model.mesh().length;
+        if let InitialState::SteadyState { position } = self.moving.initial
+            && !model.foundation().law.is_linear()
+        {
+            return Err(invalid(
+                "initial.position",
+                position,
+                "the steady-state start is the closed form of a linear foundation: a tensionless or bilinear one \
+                 starts at rest or from a static start",
+            ));
+        }
         if let InitialState::SteadyState { position } | InitialState::Static { position } = self.moving.initial
             && !(position.is_finite() && (0.0..length).contains(&position))
         {

@@ -11,7 +11,7 @@ use track::{RunSettings, Simulation};
 /// A pinned span of `length` m without foundation on 40 elements.
 fn span_model(beam: Beam, length: f64) -> BeamModel {
     let pinned = Supports::both(Support::Pinned);
-    let bare = Foundation { stiffness: 0.0, damping: 0.0 };
+    let bare = Foundation::linear(0.0, 0.0);
     BeamModel::new(beam, bare, Mesh::new(length, 40).unwrap(), pinned).unwrap()
 }
 

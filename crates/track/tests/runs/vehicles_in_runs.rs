@@ -274,7 +274,7 @@ fn vehicle_runs_converge_as_the_step_shrinks() {
 /// in 0.5 m elements.
 fn firm_track() -> BeamModel {
     let case = fem_beam::reference::uic60_on_soft_soil();
-    let foundation = fem_beam::Foundation { stiffness: 1e8, damping: 0.0 }.with_damping_ratio(0.1, &case.beam).unwrap();
+    let foundation = fem_beam::Foundation::linear(1e8, 0.0).with_damping_ratio(0.1, &case.beam).unwrap();
     let mesh = fem_beam::Mesh::new(120.0, 240).unwrap();
     BeamModel::new(case.beam, foundation, mesh, case.supports).unwrap()
 }
