@@ -47,6 +47,19 @@ pub(crate) fn figure_subtitle(r: &RunSummary) -> String {
     )
 }
 
+/// The fixed interaction sections by kind: friction, and soil on a nonlinear foundation.
+fn section_count(r: &RunSummary) -> String {
+    match &r.soil {
+        Some(soil) => format!(
+            "{} sections ({} friction, {} soil)",
+            r.stepping.sections,
+            r.stepping.sections - soil.sections,
+            soil.sections
+        ),
+        None => format!("{} friction sections", r.stepping.sections),
+    }
+}
+
 pub(crate) fn print_text(r: &RunSummary, wording: &WindowWording) {
     let title = if r.title.is_empty() { String::new() } else { format!(" — {}", r.title) };
     let load = load_description(r);
@@ -58,6 +71,9 @@ pub(crate) fn print_text(r: &RunSummary, wording: &WindowWording) {
         );
     }
     print_friction(r);
+    if let Some(soil) = &r.soil {
+        print_soil(soil);
+    }
     print_extremes(r, wording);
     print_numbers(r);
     if let Some(v) = &r.vehicles {
@@ -65,6 +81,56 @@ pub(crate) fn print_text(r: &RunSummary, wording: &WindowWording) {
     }
     println!("  wall time {:.3} s", r.wall_time);
 }
+
+/// The soil's lines of the text report: its law, the settlement, where the rail lifted off and the soil's energy.
+fn print_soil(s: &study::soil_output::SoilSummary) {
+    let tension = match s.law {
+        "bilinear" => format!("k_t = {} k_c", study::number::significant(s.tension_ratio, 6)),
+        _ => "no tension".to_string(),
+    };
+    let weight = match s.settlement > 0.0 {
+        true => format!("self-weight settlement {:.3} mm", s.settlement * 1e3),
+        false => "no self-weight".to_string(),
+    };
+    println!(
+        "  soil: {} (k_c = {:.4e} N/m², {tension}), {} sections, {weight}",
+        s.law, s.compression_stiffness, s.sections
+    );
+    match (s.largest_gap_position, s.largest_gap_time) {
+        (Some(x), Some(t)) => {
+            let zones = s.lift_off_zones.len();
+            let first = s.lift_off_zones.iter().map(|z| z.first_time).fold(f64::INFINITY, f64::min);
+            println!(
+                "    the rail lifted off the soil over {} of its sections in {zones} zone{} (first at t = {first:.4} s); \
+                 largest gap {:.3} mm at x = {x:.1} m, t = {t:.4} s",
+                s.lifted_sections,
+                if zones == 1 { "" } else { "s" },
+                s.largest_gap * 1e3
+            );
+            for z in s.lift_off_zones.iter().take(MAX_ZONES_LISTED) {
+                println!(
+                    "      {:.2}–{:.2} m, t = {:.4}–{:.4} s, largest gap {:.3} mm",
+                    z.from,
+                    z.to,
+                    z.first_time,
+                    z.last_time,
+                    z.largest_gap * 1e3
+                );
+            }
+            if zones > MAX_ZONES_LISTED {
+                println!("      … {} more zones in the JSON summary (`--format json`)", zones - MAX_ZONES_LISTED);
+            }
+        }
+        _ => println!("    the rail stayed on the soil throughout"),
+    }
+    println!(
+        "    soil work on the rail {:.4e} J, energy its springs hold at the end {:.4e} J",
+        s.soil_work, s.soil_energy
+    );
+}
+
+/// Lift-off zones listed in the text report (all are in the JSON).
+const MAX_ZONES_LISTED: usize = 5;
 
 /// The vehicles' lines of the text report.
 fn print_vehicles(v: &study::vehicle_output::VehicleReport) {
@@ -229,11 +295,11 @@ fn print_numbers(r: &RunSummary) {
         r.energy.energy_residual
     );
     println!(
-        "  {} steps of {:.3e} s, {} friction sections ({:.0} re-solved per step), solver {}: {:.2} iterations/step \
+        "  {} steps of {:.3e} s, {} ({:.0} re-solved per step), solver {}: {:.2} iterations/step \
          (max {}), max residual {:.2e} m/s",
         r.stepping.steps,
         r.stepping.time_step,
-        r.stepping.sections,
+        section_count(r),
         r.stepping.mean_sections_solved,
         r.stepping.solver,
         r.stepping.mean_iterations,

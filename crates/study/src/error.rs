@@ -84,6 +84,11 @@ impl From<track::TrackError> for StudyError {
             track::TrackError::InvalidCount { field, value, allowed } => {
                 StudyError::InvalidField { path: field.into(), value: value.to_string(), allowed }
             }
+            track::TrackError::NoStaticEquilibrium { reason } => StudyError::InvalidField {
+                path: "foundation.law".into(),
+                value: "(no static equilibrium)".into(),
+                allowed: reason,
+            },
         }
     }
 }

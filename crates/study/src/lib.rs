@@ -23,6 +23,7 @@ pub mod run_output;
 pub mod run_summary;
 pub mod scenario;
 pub mod shard;
+pub mod soil_output;
 pub mod speeds;
 pub mod steady_response;
 pub mod sweep;

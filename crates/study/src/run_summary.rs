@@ -64,6 +64,9 @@ pub struct RunSummary {
     /// The vehicles' wheels and bodies, with vehicles.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub vehicles: Option<crate::vehicle_output::VehicleReport>,
+    /// A tensionless or bilinear soil: its work, energy and where the rail lifted off it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub soil: Option<crate::soil_output::SoilSummary>,
 }
 
 /// The extremes of one run: over the whole run and every recorded node, over the window of load positions, the
@@ -205,6 +208,7 @@ impl RunSummary {
                 let contact = settings.moving.load.vehicles().map_or("", VehicleSettings::contact_name);
                 crate::vehicle_output::VehicleReport::of(v, contact)
             }),
+            soil: crate::soil_output::SoilSummary::of(&case.model, scenario.foundation.self_weight, result),
         })
     }
 }
@@ -226,6 +230,7 @@ impl ExtremesSummary {
         };
         let statics = track::statics::static_envelope(
             &case.model,
+            &case.interactions,
             &settings.moving.load.train(),
             settings.integration.load_advance,
             settings.record.extremes_nodes,

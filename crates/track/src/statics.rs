@@ -2,7 +2,9 @@
 //! reference of a dynamic amplification factor φ = max dynamic deflection / max static deflection.
 
 use crate::error::{Result, invalid};
+use crate::placed::PlacedInteractions;
 use crate::simulation::counts_for_extremes;
+use crate::unilateral_statics::static_deflection;
 use fem_beam::{BeamModel, Train};
 
 /// The largest static downward deflection of the train over its crossing, where and with the first axle where.
@@ -20,10 +22,13 @@ pub struct StaticEnvelope {
 pub const MAX_POSITIONS: usize = 1_000_000;
 
 /// The static envelope of `train` with its first axle at 0, `advance`, 2·`advance`, … up to L + its length (m):
-/// K factored once, one banded solve per position. The largest deflection is taken over the nodes in `nodes`
-/// (m, as [`crate::simulation::RecordSettings::extremes_nodes`]), or over every node.
+/// K factored once, one banded solve per position — or, on a nonlinear foundation (the springs of `placed`), its
+/// static deflection per position ([`crate::unilateral_statics::static_deflection`]). Deflections are from the
+/// self-weight state, as a run's. The largest deflection is taken over the nodes in `nodes` (m, as
+/// [`crate::simulation::RecordSettings::extremes_nodes`]), or over every node.
 pub fn static_envelope(
     model: &BeamModel,
+    placed: &PlacedInteractions,
     train: &Train,
     advance: f64,
     nodes: Option<(f64, f64)>,
@@ -38,7 +43,11 @@ pub fn static_envelope(
             format!("must be > 0 and give at most {MAX_POSITIONS} train positions"),
         ));
     }
-    let factor = model.stiffness().factor()?;
+    // K alone holds a linear foundation; a nonlinear one's soil is in its sections.
+    let factor = match model.foundation().law.is_linear() {
+        true => Some(model.stiffness().factor()?),
+        false => None,
+    };
     let dofs = model.dofs();
     let counted: Vec<(usize, f64)> = (0..mesh.nodes())
         .filter_map(|node| Some((dofs.free_index(2 * node)?, mesh.node_x(node))))
@@ -48,7 +57,10 @@ pub fn static_envelope(
     for i in 0..positions {
         let head = (i as f64 * advance).min(span);
         let mut q = train.load_vector(mesh, head).to_free(mesh, dofs);
-        factor.solve_in_place(&mut q);
+        match &factor {
+            Some(factor) => factor.solve_in_place(&mut q),
+            None => q = static_deflection(model, placed, &q)?,
+        }
         for &(d, x) in &counted {
             if -q[d] > envelope.max_downward {
                 envelope = StaticEnvelope { max_downward: -q[d], position: x, head };

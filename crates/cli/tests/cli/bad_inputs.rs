@@ -34,6 +34,14 @@ const FILES: &[(&str, i32, &str)] = &[
     ("[foundation]\nstiffness = 0.0\n[supports]\nleft = \"free\"\nright = \"free\"\n", 2, "supports"),
     ("[foundation]\nstiffness = 0.0\n[supports]\nright = \"free\"\n", 2, "supports"),
     ("[friction.devices]\ncount = 15\n", 2, "friction.devices.force"),
+    // Nonlinear soils: a tension stiffness above the compression stiffness, a bilinear soil without its ratio, a
+    // ratio on another law, a nonlinear soil's key on a linear one, an unknown law, a steady start (linear only).
+    ("[foundation]\nlaw = \"bilinear\"\ntension_ratio = 1.5\n", 2, "foundation.tension_ratio"),
+    ("[foundation]\nlaw = \"bilinear\"\n", 2, "foundation.tension_ratio"),
+    ("[foundation]\nlaw = \"tensionless\"\ntension_ratio = 0.5\n", 2, "foundation.tension_ratio"),
+    ("[foundation]\nself_weight = false\n", 2, "foundation.self_weight"),
+    ("[foundation]\nlaw = \"sticky\"\n", 2, "foundation.law"),
+    ("[foundation]\nlaw = \"tensionless\"\n[integration]\nsteady_start = 60.0\n", 2, "linear foundation"),
     // 2·10⁶ steps × 30 recorded sections: more history samples than the stated limit, refused before allocating.
     (
         "[integration]\nload_advance = 1e-4\n[output]\nsections = [1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0, 10.0, \

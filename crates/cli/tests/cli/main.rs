@@ -7,6 +7,7 @@ mod examples;
 mod failures;
 mod figures;
 mod run_out;
+mod soil;
 mod track_profile;
 mod trains;
 mod trust;

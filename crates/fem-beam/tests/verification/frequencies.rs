@@ -24,8 +24,7 @@ fn pinned_beam_frequencies_match_closed_form() {
 fn free_free_beam_without_foundation_has_two_zero_modes() {
     let beam = Beam::default();
     let mesh = Mesh::new(20.0, 20).unwrap();
-    let model =
-        BeamModel::new(beam, Foundation::linear(0.0, 0.0), mesh, Supports::both(Support::Free)).unwrap();
+    let model = BeamModel::new(beam, Foundation::linear(0.0, 0.0), mesh, Supports::both(Support::Free)).unwrap();
     let values = model.eigenvalues().unwrap();
     let largest = values.last().copied().unwrap();
     let zero = values.iter().filter(|v| v.abs() < 1e-10 * largest).count();

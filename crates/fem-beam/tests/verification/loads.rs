@@ -96,9 +96,7 @@ fn assembled_matrices_are_positive_definite_for_every_support() {
         }
     }
     // Without foundation, a free–free K is singular: the factorisation reports it.
-    let bare =
-        BeamModel::new(case.beam, Foundation::linear(0.0, 0.0), mesh, Supports::both(Support::Free))
-            .unwrap();
+    let bare = BeamModel::new(case.beam, Foundation::linear(0.0, 0.0), mesh, Supports::both(Support::Free)).unwrap();
     assert!(bare.stiffness().factor().is_err());
 }
 

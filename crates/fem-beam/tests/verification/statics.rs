@@ -140,9 +140,7 @@ fn a_standing_train_on_a_span_matches_the_beam_formula() {
     let beam = Beam::default();
     let (length, elements) = (24.0, 48);
     let mesh = Mesh::new(length, elements).unwrap();
-    let model =
-        BeamModel::new(beam, Foundation::linear(0.0, 0.0), mesh, Supports::both(Support::Pinned))
-            .unwrap();
+    let model = BeamModel::new(beam, Foundation::linear(0.0, 0.0), mesh, Supports::both(Support::Pinned)).unwrap();
     let ei = beam.bending_stiffness();
     let train = fem_beam::Train {
         name: "bogie pair".into(),

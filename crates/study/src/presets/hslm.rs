@@ -404,7 +404,7 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
     let statics = runner.silent().map(&(1..=TRAINS).collect::<Vec<_>>(), |&k| {
         let nodes = case.settings.record.extremes_nodes;
         let train = base.on_the_beam(Train::hslm_a(k));
-        Ok(track::statics::static_envelope(&case.model, &train, advance, nodes)?.max_downward)
+        Ok(track::statics::static_envelope(&case.model, &case.interactions, &train, advance, nodes)?.max_downward)
     })?;
     let runs = points.iter().map(Vec::len).sum::<usize>()
         + refined.iter().map(|(d, a)| d.evaluations.len() + a.evaluations.len()).sum::<usize>();

@@ -1,14 +1,14 @@
 //! From a scenario's sections to what the stepper runs: the beam model, the friction sections and the run
 //! settings, every value checked on the way and errors renamed to their dotted path in the file.
 
-use super::{Case, QuadratureKind, Scenario, SweepSection, fnv1a};
+use super::{Case, FoundationLawKind, QuadratureKind, Scenario, SweepSection, fnv1a};
 use crate::error::{Result, StudyError, invalid};
 use crate::number::number;
-use fem_beam::{AbsorbingZones, BeamModel, Foundation, Mesh};
+use fem_beam::{AbsorbingZones, BeamModel, Foundation, FoundationLaw, Mesh};
 use nscd::SolverSettings;
 use track::PlacedInteractions;
 use track::simulation::{IntegrationSettings, MovingLoadSettings, RecordSettings};
-use track::{DeviceLayout, Devices, DistributedFriction, Quadrature};
+use track::{DeviceLayout, Devices, DistributedFriction, FoundationSections, Quadrature};
 use track::{InitialState, Load, RunSettings};
 
 fn finite_positive(path: &str, value: f64, unit: &str) -> Result<()> {
@@ -40,7 +40,7 @@ impl Scenario {
         beam.validate()?;
         let mesh = Mesh::new(self.mesh.length, self.mesh.elements)?;
         let f = &self.foundation;
-        let mut foundation = Foundation { stiffness: f.stiffness, damping: 0.0 };
+        let mut foundation = Foundation { stiffness: f.stiffness, damping: 0.0, law: self.foundation_law()? };
         foundation.validate()?;
         match (f.damping, f.damping_ratio) {
             (Some(_), Some(ratio)) => {
@@ -81,10 +81,50 @@ impl Scenario {
         Ok(model)
     }
 
+    /// The soil's law from `foundation.law` and `tension_ratio` (given for a bilinear soil only).
+    fn foundation_law(&self) -> Result<FoundationLaw> {
+        let f = &self.foundation;
+        match (f.law, f.tension_ratio) {
+            (FoundationLawKind::Linear, None) => Ok(FoundationLaw::Linear),
+            (FoundationLawKind::Tensionless, None) => Ok(FoundationLaw::Tensionless),
+            (FoundationLawKind::Bilinear, Some(tension_ratio)) => Ok(FoundationLaw::Bilinear { tension_ratio }),
+            (FoundationLawKind::Bilinear, None) => Err(invalid(
+                "foundation.tension_ratio",
+                "missing",
+                "a bilinear soil needs α = k_t/k_c ∈ [0, 1], its stiffness in tension over that in compression",
+            )),
+            (_, Some(ratio)) => Err(invalid(
+                "foundation.tension_ratio",
+                ratio,
+                "is the bilinear soil's: give it with law = \"bilinear\" only",
+            )),
+        }
+    }
+
+    /// The sections of a nonlinear soil (none for a linear one, which K holds whole).
+    fn foundation_sections(&self, model: &BeamModel) -> Result<PlacedInteractions> {
+        let f = &self.foundation;
+        if f.law == FoundationLawKind::Linear && (!f.self_weight || f.subdivisions != 1) {
+            let key = if f.self_weight { "foundation.subdivisions" } else { "foundation.self_weight" };
+            return Err(invalid(
+                key,
+                "given",
+                "belongs to a tensionless or bilinear soil: a linear one needs no soil sections and no settlement",
+            ));
+        }
+        let sections = FoundationSections {
+            subdivisions: f.subdivisions,
+            self_weight: f.self_weight,
+            ..FoundationSections::default()
+        };
+        Ok(sections.interactions(model)?)
+    }
+
     /// Build the model, contact set and run settings, checking every value on the way.
     pub fn build(&self) -> Result<Case> {
         let model = self.model()?;
-        let interactions = self.interactions(&model)?;
+        let mut interactions = self.interactions(&model)?;
+        interactions.extend(self.foundation_sections(&model)?);
         finite_non_negative("load.force", self.load.force, "N")?;
         finite_positive("load.speed", self.load.speed, "m/s")?;
         if let Some([a, b]) = self.output.extremes_window {

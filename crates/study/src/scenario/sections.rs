@@ -8,23 +8,72 @@ use nscd::SolverKind;
 use serde::{Deserialize, Serialize};
 use track::RunSettings;
 
-/// `[foundation]`: Winkler stiffness and viscous damping (as a value or as a ratio of c_cr, not both).
+/// `[foundation]`: Winkler stiffness and viscous damping (as a value or as a ratio of c_cr, not both), and the
+/// soil's law (docs/theory.md §13).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct FoundationSection {
-    /// k_f (N/m²).
+    /// k_f (N/m²), in compression for a nonlinear law.
     pub stiffness: f64,
     /// c_f (N·s/m²).
     pub damping: Option<f64>,
     /// ζ = c_f/c_cr.
     pub damping_ratio: Option<f64>,
+    /// Linear (default), tensionless or bilinear.
+    #[serde(skip_serializing_if = "FoundationLawKind::is_linear")]
+    pub law: FoundationLawKind,
+    /// α = k_t/k_c ∈ [0, 1] of a bilinear soil.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub tension_ratio: Option<f64>,
+    /// Whether the rail's weight ρA·g rests on a nonlinear soil (default true).
+    #[serde(skip_serializing_if = "is_true")]
+    pub self_weight: bool,
+    /// Gauss sub-intervals per element of a nonlinear soil's sections (default 1: four sections per element).
+    #[serde(skip_serializing_if = "is_one")]
+    pub subdivisions: usize,
     /// Damping graded up towards both ends.
     pub absorbing_zones: Option<AbsorbingZonesSection>,
 }
 
+fn is_true(value: &bool) -> bool {
+    *value
+}
+
+fn is_one(value: &usize) -> bool {
+    *value == 1
+}
+
 impl Default for FoundationSection {
     fn default() -> Self {
-        Self { stiffness: Foundation::default().stiffness, damping: None, damping_ratio: None, absorbing_zones: None }
+        Self {
+            stiffness: Foundation::default().stiffness,
+            damping: None,
+            damping_ratio: None,
+            law: FoundationLawKind::Linear,
+            tension_ratio: None,
+            self_weight: true,
+            subdivisions: 1,
+            absorbing_zones: None,
+        }
+    }
+}
+
+/// The soil's law as the file names it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum FoundationLawKind {
+    /// Pushes and pulls alike.
+    #[default]
+    Linear,
+    /// Pushes, never pulls: the rail lifts off.
+    Tensionless,
+    /// k_c in compression, α·k_c in tension (`tension_ratio`).
+    Bilinear,
+}
+
+impl FoundationLawKind {
+    fn is_linear(&self) -> bool {
+        *self == FoundationLawKind::Linear
     }
 }
 

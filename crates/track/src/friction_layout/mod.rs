@@ -5,6 +5,6 @@
 pub mod devices;
 pub mod distributed;
 
+pub use crate::section_quadrature::Quadrature;
 pub use devices::{DeviceLayout, Devices};
 pub use distributed::DistributedFriction;
-pub use crate::section_quadrature::Quadrature;

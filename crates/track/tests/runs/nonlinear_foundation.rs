@@ -51,12 +51,9 @@ fn a_soil_the_rail_never_leaves_is_the_linear_foundation() {
         let lift = r.lift_off.as_ref().unwrap();
         assert!(lift.zones.is_empty(), "{law:?}: {:?}", lift.zones);
         assert_eq!(lift.sections, 800);
-        let moving = r
-            .final_displacement
-            .iter()
-            .zip(&light.final_displacement)
-            .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()))
-            / light.max_downward.magnitude;
+        let moving =
+            r.final_displacement.iter().zip(&light.final_displacement).fold(0.0f64, |m, (a, b)| m.max((a - b).abs()))
+                / light.max_downward.magnitude;
         let peak = (r.max_downward.magnitude - light.max_downward.magnitude).abs() / light.max_downward.magnitude;
         // The interior point stops at a law residual of 1e-8 of the velocity scale per step: the deflections carry
         // that error, measured 3e-8 on the peak; 1e-6 of the peak leaves a margin and catches any modelling
@@ -70,7 +67,8 @@ fn a_soil_the_rail_never_leaves_is_the_linear_foundation() {
 /// down too; the bilinear one (k_t = k_c/2) lies between. Every run closes the energy identity with the soil's work in the ledger.
 #[test]
 fn the_rail_lifts_off_where_the_linear_wave_rises_above_the_settlement() {
-    let linear = run(&model(FoundationLaw::Linear, 200.0, 200, Supports::default()), &PlacedInteractions::new(), 20e3, 100.0);
+    let linear =
+        run(&model(FoundationLaw::Linear, 200.0, 200, Supports::default()), &PlacedInteractions::new(), 20e3, 100.0);
     assert!(linear.max_upward.magnitude > settlement());
     let mut upward = vec![linear.max_upward.magnitude];
     let mut downward = vec![linear.max_downward.magnitude];
@@ -84,7 +82,9 @@ fn the_rail_lifts_off_where_the_linear_wave_rises_above_the_settlement() {
         assert!(e.support_work != 0.0 && e.spring_energy > 0.0, "{law:?}: {e:?}");
         let lift = r.lift_off.as_ref().unwrap();
         let zone = lift.largest().expect("the rail lifts off");
-        assert!(zone.largest_gap > 0.0 && zone.from <= zone.largest_gap_position && zone.largest_gap_position <= zone.to);
+        assert!(
+            zone.largest_gap > 0.0 && zone.from <= zone.largest_gap_position && zone.largest_gap_position <= zone.to
+        );
         assert!(zone.first_time <= zone.largest_gap_time && zone.largest_gap_time <= zone.last_time);
         // The gap is the rail's rise above its settled state less the local settlement (≥ 0; less than q/k_c near a
         // pinned end): at most the largest rise, which between nodes exceeds the nodal one by far less than 1 %.
@@ -131,7 +131,11 @@ fn static_tensionless_contact_against_the_closed_form() {
         .collect();
     let half = 0.5 * (pressed.last().unwrap() - pressed.first().unwrap());
     let spacing = 0.53 * m.mesh().element_length();
-    assert!((half - closed.contact_half_length()).abs() <= spacing, "{half} m against {} m", closed.contact_half_length());
+    assert!(
+        (half - closed.contact_half_length()).abs() <= spacing,
+        "{half} m against {} m",
+        closed.contact_half_length()
+    );
     // Beyond it the beam is straight: no moment.
     let moment = |x: f64| m.interpolated_moment(&full, x).unwrap();
     assert!(moment(50.0 + 1.2 * closed.contact_half_length()).abs() <= 1e-6 * moment(50.0).abs());

@@ -182,7 +182,8 @@ fn static_envelope_gives_the_amplification_factor() {
     let span = SimplySupportedSpan::new(&beam, 0.0, length).unwrap();
     let model = span_model(beam, length);
     let single = Train::single(100e3);
-    let envelope = track::statics::static_envelope(&model, &single, 0.05, None).unwrap();
+    let envelope =
+        track::statics::static_envelope(&model, &track::PlacedInteractions::new(), &single, 0.05, None).unwrap();
     let expected = span.static_midspan_deflection(100e3);
     assert!((envelope.max_downward / expected - 1.0).abs() < 1e-10, "{} vs {expected}", envelope.max_downward);
     assert_eq!((envelope.position, envelope.head), (10.0, 10.0));
@@ -191,7 +192,8 @@ fn static_envelope_gives_the_amplification_factor() {
         axles: vec![Axle { offset: 0.0, force: 100e3 }, Axle { offset: 2.5, force: 100e3 }],
         patches: vec![],
     };
-    let statics = track::statics::static_envelope(&model, &bogie, 0.05, None).unwrap();
+    let statics =
+        track::statics::static_envelope(&model, &track::PlacedInteractions::new(), &bogie, 0.05, None).unwrap();
     let run = |speed: f64| {
         let mut settings = RunSettings::default();
         settings.moving.speed = speed;

@@ -118,7 +118,9 @@ fn extremes_over_a_range_of_nodes() {
     assert!(middle.max_downward.magnitude <= whole.max_downward.magnitude);
     assert!(middle.max_acceleration.magnitude <= whole.max_acceleration.magnitude);
     assert_eq!(middle.global_norm, whole.global_norm, "W̄ stays a whole-beam norm");
-    let statics = track::statics::static_envelope(&model, &train, 0.1, Some((20.0, 40.0))).unwrap();
+    let statics =
+        track::statics::static_envelope(&model, &track::PlacedInteractions::new(), &train, 0.1, Some((20.0, 40.0)))
+            .unwrap();
     assert!((20.0..=40.0).contains(&statics.position));
     let daf = middle.max_downward.magnitude / statics.max_downward;
     assert!(daf > 1.0 && daf < 1.5, "amplification {daf} at 100 m/s, well below v_cr = 206 m/s");

@@ -21,8 +21,7 @@ const MODES: usize = 20;
 /// (times, mid-span deflection, contact force with its time t_k + h/2).
 fn fe_run(vehicle: Vehicle) -> (Vec<f64>, Vec<f64>, Vec<(f64, f64)>) {
     let mesh = Mesh::new(LENGTH, 40).unwrap();
-    let model = BeamModel::new(Beam::default(), Foundation::linear(0.0, 0.0), mesh, Supports::default())
-        .unwrap();
+    let model = BeamModel::new(Beam::default(), Foundation::linear(0.0, 0.0), mesh, Supports::default()).unwrap();
     let mut settings = RunSettings::default();
     settings.moving.speed = SPEED;
     settings.moving.load = Load::Vehicles {

@@ -1,0 +1,101 @@
+//! What a run on a nonlinear foundation reports of its soil (docs/theory.md §13): the law, the self-weight
+//! settlement, the soil's work and stored energy from the ledger, and where and when the rail lifted off it.
+//! Lengths and gaps in m, times in s, energies in J.
+
+use serde::Serialize;
+use track::RunResult;
+use track::simulation::LiftOffZone;
+
+/// A tensionless or bilinear soil under one run.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SoilSummary {
+    /// "tensionless" or "bilinear".
+    pub law: &'static str,
+    /// α = k_t/k_c (0 tensionless).
+    pub tension_ratio: f64,
+    /// k_c (N/m²).
+    pub compression_stiffness: f64,
+    /// The rail's self-weight settlement ρA·g/k_c far from supports (m); 0 without self-weight.
+    pub settlement: f64,
+    /// Foundation sections (Gauss points).
+    pub sections: usize,
+    /// Work of the soil's unilateral part on the rail over the run (J; the linear part k_t is in the strain energy).
+    pub soil_work: f64,
+    /// Energy its springs hold at the end (J, from the soil's surface: includes the self-weight's settlement).
+    pub soil_energy: f64,
+    /// Sections that lifted off at some time.
+    pub lifted_sections: usize,
+    /// The largest gap between rail and soil over the run (m), 0 if the rail never left it.
+    pub largest_gap: f64,
+    /// Where it was (m), if the rail lifted.
+    pub largest_gap_position: Option<f64>,
+    /// When (s).
+    pub largest_gap_time: Option<f64>,
+    /// The zones of neighbouring sections that lifted, in order of x.
+    pub lift_off_zones: Vec<LiftOffZoneSummary>,
+}
+
+/// One lift-off zone.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct LiftOffZoneSummary {
+    /// The first section's position (m).
+    pub from: f64,
+    /// The last section's position (m).
+    pub to: f64,
+    /// When the first of them lifted (s).
+    pub first_time: f64,
+    /// When the last of them was last lifted (s).
+    pub last_time: f64,
+    /// The zone's largest gap (m).
+    pub largest_gap: f64,
+    /// Where (m).
+    pub largest_gap_position: f64,
+    /// When (s).
+    pub largest_gap_time: f64,
+}
+
+impl From<&LiftOffZone> for LiftOffZoneSummary {
+    fn from(z: &LiftOffZone) -> Self {
+        Self {
+            from: z.from,
+            to: z.to,
+            first_time: z.first_time,
+            last_time: z.last_time,
+            largest_gap: z.largest_gap,
+            largest_gap_position: z.largest_gap_position,
+            largest_gap_time: z.largest_gap_time,
+        }
+    }
+}
+
+impl SoilSummary {
+    /// The soil of `model` under `result`; None on a linear foundation.
+    pub fn of(model: &fem_beam::BeamModel, self_weight: bool, result: &RunResult) -> Option<Self> {
+        let lift = result.lift_off.as_ref()?;
+        let foundation = model.foundation();
+        let law = match foundation.law {
+            fem_beam::FoundationLaw::Linear => return None,
+            fem_beam::FoundationLaw::Tensionless => "tensionless",
+            fem_beam::FoundationLaw::Bilinear { .. } => "bilinear",
+        };
+        let largest = lift.largest();
+        let settlement = match self_weight && foundation.stiffness > 0.0 {
+            true => model.beam().mass_per_length() * track::foundation_layout::GRAVITY / foundation.stiffness,
+            false => 0.0,
+        };
+        Some(Self {
+            law,
+            tension_ratio: foundation.law.tension_ratio(),
+            compression_stiffness: foundation.stiffness,
+            settlement,
+            sections: lift.sections,
+            soil_work: result.energy.support_work,
+            soil_energy: result.energy.spring_energy,
+            lifted_sections: lift.lifted_sections(),
+            largest_gap: largest.map_or(0.0, |z| z.largest_gap),
+            largest_gap_position: largest.map(|z| z.largest_gap_position),
+            largest_gap_time: largest.map(|z| z.largest_gap_time),
+            lift_off_zones: lift.zones.iter().map(LiftOffZoneSummary::from).collect(),
+        })
+    }
+}
