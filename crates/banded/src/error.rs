@@ -13,6 +13,12 @@ pub enum BandedError {
         /// The pivot found there.
         pivot: f64,
     },
+    /// A general matrix is singular to working precision: LU found no pivot in a column.
+    #[error("matrix is singular: no pivot for equation {index}")]
+    Singular {
+        /// Equation where the factorisation failed.
+        index: usize,
+    },
 }
 
 /// Result alias of this crate.

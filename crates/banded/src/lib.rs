@@ -8,6 +8,8 @@
 //!   times, O(n·b²) and O(n·b)), principal submatrices and the Schur condensation of leading or trailing blocks.
 //! - [`local_solve`]: A⁻¹h for a right-hand side of a few neighbouring non-zeros, computed only where it is
 //!   significant ([`BandedLdlt::solve_local`]).
+//! - [`general`]: [`GeneralBanded`] non-symmetric banded matrices and their LU with partial pivoting
+//!   ([`GeneralLu`]), for the moving-frame operator of the stationary wave.
 //! - [`diagonals`]: [`BandDiagonals`], the band as diagonals for fast products.
 //! - [`block_rows`]: [`BlockRows`], rows of at most four consecutive nonzeros and the products H x, Hᵀs and
 //!   A + Hᵀ diag(d) H, four entries at a time.
@@ -16,6 +18,7 @@ pub mod block_rows;
 pub mod bordered;
 pub mod diagonals;
 pub mod error;
+pub mod general;
 pub mod local_solve;
 pub mod symmetric;
 
@@ -23,5 +26,6 @@ pub use block_rows::BlockRows;
 pub use bordered::BorderedLdlt;
 pub use diagonals::BandDiagonals;
 pub use error::{BandedError, Result};
+pub use general::{GeneralBanded, GeneralLu};
 pub use local_solve::LocalVector;
 pub use symmetric::{BandedLdlt, SymmetricBanded};

@@ -100,6 +100,8 @@ impl From<banded::BandedError> for FemError {
     fn from(error: banded::BandedError) -> Self {
         match error {
             banded::BandedError::NonPositivePivot { index, pivot } => FemError::NonPositivePivot { index, pivot },
+            // Only the general LU reports singularity, and no beam matrix is factored by it: a zero pivot.
+            banded::BandedError::Singular { index } => FemError::NonPositivePivot { index, pivot: 0.0 },
         }
     }
 }

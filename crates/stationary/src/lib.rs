@@ -1,0 +1,20 @@
+//! # stationary: the wave of a load moving on an infinite track
+//!
+//! In coordinates that move with the load, s = x − vt, a load crossing an endless uniform track at constant speed
+//! leaves a wave W(s) that does not change (docs/theory.md §14): no time stepping, no entry transient, no
+//! reflections. This crate solves for it directly on a finite domain closed by exact transparent ends
+//! ([`far_field`]): the moving-frame operator ([`operator`]), a semismooth Newton iteration on the soil's contact for
+//! tensionless and bilinear soils ([`solve`]), and the wave's peaks, lift-off zones and power balance ([`wave`]).
+//! Continuation in speed ([`solve::solve_from`]) starts each speed from the last one's contact set.
+
+pub mod error;
+pub mod far_field;
+pub mod operator;
+pub mod problem;
+pub mod solve;
+pub mod wave;
+
+pub use error::{Result, StationaryError};
+pub use problem::{Domain, StationaryProblem};
+pub use solve::{ContactGuess, Convergence, solve, solve_from};
+pub use wave::{LiftOffZone, Peak, StationaryWave};

@@ -1,0 +1,196 @@
+//! The moving-frame operator on a finite domain (docs/theory.md §14). With s = x − vt and w(x, t) = W(s) the beam
+//! on its soil under a load moving at v becomes EI W'''' + ρAv² W″ − c_f v W′ + k_t W − p_soil(W) = f(s). Hermite
+//! elements in the weak form
+//!
+//! ```text
+//! ∫ (EI W″φ″ − ρAv² W′φ′ − c_f v W′φ + k_t Wφ) ds + [EI W‴φ − EI W″φ′ + ρAv² W′φ]_ends = ∫ f φ ds
+//! ```
+//!
+//! give a banded non-symmetric matrix A (the convective term −c_f v∫φW′ is skew), closed at both ends by the
+//! transparent relations of [`crate::far_field`] substituted into the boundary terms (a nonlinear soil without
+//! self-weight has free ends instead: its far field rests on the soil without force, or lifts straight off it). The soil's unilateral part
+//! (k_c − k_t)⟨−W⟩₊ acts at four Gauss sections per element, as in a run on the finite track, so that a soil that
+//! never lifts off is the linear one to round-off. The load −F sits on the node at s = 0; a nonlinear soil with
+//! self-weight carries −ρA·g everywhere.
+
+use crate::error::{Result, StationaryError};
+use crate::far_field::{EndRelation, FarField};
+use crate::problem::{GRAVITY, StationaryProblem};
+use banded::general::{GeneralBanded, GeneralLu};
+use fem_beam::element::hermite;
+
+/// The four-point Gauss–Legendre rule on [0, 1].
+pub(crate) const GAUSS: [(f64, f64); 4] = {
+    const INNER: f64 = 0.339_981_043_584_856_26;
+    const OUTER: f64 = 0.861_136_311_594_052_6;
+    const W_INNER: f64 = 0.652_145_154_862_546_1;
+    const W_OUTER: f64 = 0.347_854_845_137_453_85;
+    [
+        (0.5 * (1.0 - OUTER), 0.5 * W_OUTER),
+        (0.5 * (1.0 - INNER), 0.5 * W_INNER),
+        (0.5 * (1.0 + INNER), 0.5 * W_INNER),
+        (0.5 * (1.0 + OUTER), 0.5 * W_OUTER),
+    ]
+};
+
+/// One soil section: its element, its row Ψ(ξ) over the element's four DOFs, its spring (N/m) and place s (m).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SoilSection {
+    /// The element; its DOFs are 2e … 2e + 3.
+    pub element: usize,
+    /// Ψ(ξ_g).
+    pub row: [f64; 4],
+    /// k_s = (k_c − k_t)·weight (N/m).
+    pub stiffness: f64,
+    /// s (m).
+    pub s: f64,
+}
+
+impl SoilSection {
+    /// H_s W: the deflection at the section (m).
+    pub fn deflection(&self, w: &[f64]) -> f64 {
+        let d = 2 * self.element;
+        (0..4).map(|k| self.row[k] * w[d + k]).sum()
+    }
+}
+
+/// The assembled moving-frame problem at one speed.
+#[derive(Debug, Clone)]
+pub struct MovingFrame {
+    /// A: the linear part with the transparent ends.
+    pub matrix: GeneralBanded,
+    /// The right-hand side: the load, the self-weight and the far field's level through the ends (N).
+    pub rhs: Vec<f64>,
+    /// The soil's unilateral sections (none on a linear soil).
+    pub sections: Vec<SoilSection>,
+    /// Node positions s_i (m); the load is on node `load_node`.
+    pub nodes: Vec<f64>,
+    /// The load's node.
+    pub load_node: usize,
+    /// Element length (m).
+    pub element_length: f64,
+    /// The far field's relations.
+    pub far_field: FarField,
+}
+
+/// Half-bandwidth of the Hermite operator in (W₀, W′₀, W₁, W′₁, …).
+const BAND: usize = 3;
+
+impl MovingFrame {
+    /// Assemble `problem` (validated).
+    pub fn new(problem: &StationaryProblem) -> Result<Self> {
+        problem.validate()?;
+        let (beam, foundation, v) = (&problem.beam, &problem.foundation, problem.speed);
+        let (ei, rho_a, c) = (beam.bending_stiffness(), beam.mass_per_length(), foundation.damping);
+        let far_field = FarField::new(ei, rho_a, c, foundation.stiffness, v)?;
+        let (behind, ahead, l) = problem.domain.elements();
+        let elements = behind + ahead;
+        let n = 2 * (elements + 1);
+        let k_t = foundation.tension_stiffness();
+        let element = element_matrix(ei, rho_a * v * v, c * v, k_t, l);
+        let mut matrix = GeneralBanded::zeros(n, BAND, BAND);
+        for e in 0..elements {
+            for (a, row) in element.iter().enumerate() {
+                for (b, value) in row.iter().enumerate() {
+                    matrix.add(2 * e + a, 2 * e + b, *value);
+                }
+            }
+        }
+        let mut rhs = vec![0.0; n];
+        rhs[2 * behind] -= problem.load;
+        let level = problem.far_level();
+        if level != 0.0 {
+            let weight = hermite::uniform_load(-rho_a * GRAVITY, l);
+            for e in 0..elements {
+                (0..4).for_each(|k| rhs[2 * e + k] += weight[k]);
+            }
+        }
+        let rho_v2 = rho_a * v * v;
+        if problem.has_free_ends() {
+            // Without weight the rail beyond the wave rests on the soil without force or lifts straight off it: the
+            // ends carry no moment and no shear (W″ = W‴ = 0), only the convective term.
+            matrix.add(n - 2, n - 1, rho_v2);
+            matrix.add(0, 1, -rho_v2);
+        } else {
+            close_end(&mut matrix, &mut rhs, n - 2, &far_field.ahead, (ei, rho_v2), level, 1.0);
+            close_end(&mut matrix, &mut rhs, 0, &far_field.behind, (ei, rho_v2), level, -1.0);
+        }
+        let unilateral = foundation.stiffness - k_t;
+        let sections = match problem.is_nonlinear() {
+            true => (0..elements)
+                .flat_map(|e| {
+                    GAUSS.iter().map(move |&(xi, w)| SoilSection {
+                        element: e,
+                        row: hermite::shape(xi, l),
+                        stiffness: unilateral * w * l,
+                        s: (e as f64 + xi - behind as f64) * l,
+                    })
+                })
+                .collect(),
+            false => Vec::new(),
+        };
+        let nodes = (0..=elements).map(|i| (i as f64 - behind as f64) * l).collect();
+        Ok(Self { matrix, rhs, sections, nodes, load_node: behind, element_length: l, far_field })
+    }
+
+    /// A + Σ_pressed k_s H_sᵀH_s, factored; `speed` names a singular matrix.
+    pub fn factor_with(&self, pressed: &[bool], speed: f64) -> Result<GeneralLu> {
+        let mut jacobian = self.matrix.clone();
+        for (section, _) in self.sections.iter().zip(pressed).filter(|(_, p)| **p) {
+            let d = 2 * section.element;
+            for a in 0..4 {
+                for b in 0..4 {
+                    jacobian.add(d + a, d + b, section.stiffness * section.row[a] * section.row[b]);
+                }
+            }
+        }
+        jacobian.factor().map_err(|e| match e {
+            banded::BandedError::Singular { index } => StationaryError::Singular { speed, equation: index },
+            other => unreachable!("an LU reports only singularity: {other}"),
+        })
+    }
+}
+
+/// EI·Kb − ρAv²·Kg − c_f v·D + k_t·Mf of one element of length l, with Kg = ∫Ψ′ᵀΨ′ and D_ij = ∫Ψ_i Ψ_j′ by
+/// four-point Gauss (exact: degrees 4 and 5).
+fn element_matrix(ei: f64, rho_v2: f64, c_v: f64, k_t: f64, l: f64) -> [[f64; 4]; 4] {
+    let kb = hermite::bending_stiffness(ei, l);
+    let mf = hermite::consistent_mass(k_t, l);
+    let mut a = [[0.0; 4]; 4];
+    for (i, row) in a.iter_mut().enumerate() {
+        for (j, value) in row.iter_mut().enumerate() {
+            *value = kb[i][j] + mf[i][j];
+        }
+    }
+    for &(xi, w) in &GAUSS {
+        let (n, dn) = (hermite::shape(xi, l), hermite::shape_dx(xi, l));
+        for i in 0..4 {
+            for j in 0..4 {
+                a[i][j] -= w * l * (rho_v2 * dn[i] * dn[j] + c_v * n[i] * dn[j]);
+            }
+        }
+    }
+    a
+}
+
+/// The boundary terms ±[EI W‴φ − EI W″φ′ + ρAv² W′φ] at the end whose W DOF is `w` (θ = w + 1), with W″ and W‴ from
+/// the end's transparent relation in W − W_far and W′; `sign` +1 at the front end, −1 at the rear.
+fn close_end(
+    matrix: &mut GeneralBanded,
+    rhs: &mut [f64],
+    w: usize,
+    end: &EndRelation,
+    (ei, rho_v2): (f64, f64),
+    level: f64,
+    sign: f64,
+) {
+    let theta = w + 1;
+    // φ = N_w (φ = 1, φ′ = 0): EI W‴ + ρAv² W′.
+    matrix.add(w, w, sign * ei * end.third[0]);
+    matrix.add(w, theta, sign * (ei * end.third[1] + rho_v2));
+    rhs[w] += sign * ei * end.third[0] * level;
+    // φ = N_θ (φ = 0, φ′ = 1): −EI W″.
+    matrix.add(theta, w, -sign * ei * end.second[0]);
+    matrix.add(theta, theta, -sign * ei * end.second[1]);
+    rhs[theta] -= sign * ei * end.second[0] * level;
+}

@@ -1,0 +1,123 @@
+//! What a stationary wave is asked of: the track (beam and soil), the load and its speed, and the moving domain.
+
+use crate::error::{Result, invalid};
+use fem_beam::{Beam, Foundation};
+
+/// Standard gravity g (m/s²) for the self-weight.
+pub const GRAVITY: f64 = 9.81;
+
+/// The domain in moving coordinates s = x − vt (m): from `behind` m behind the load to `ahead` m ahead, in
+/// elements of `element_length` m.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Domain {
+    /// Length behind the load (m) > 0.
+    pub behind: f64,
+    /// Length ahead of the load (m) > 0.
+    pub ahead: f64,
+    /// Element length (m) > 0; rounded down so that the load sits on a node.
+    pub element_length: f64,
+}
+
+impl Default for Domain {
+    /// ±60 m in 0.25 m elements: the reference track's wave (length 2π/β = 20 m) resolved to 1e-6 of its peak, and
+    /// room for lift-off zones; the transparent ends make the linear wave exact on any length.
+    fn default() -> Self {
+        Self { behind: 60.0, ahead: 60.0, element_length: 0.25 }
+    }
+}
+
+/// The most elements of a domain (checked before anything is allocated).
+pub const MAX_ELEMENTS: usize = 2_000_000;
+
+impl Domain {
+    /// Elements behind and ahead of the load, and the element length.
+    pub fn elements(&self) -> (usize, usize, f64) {
+        let l = self.element_length;
+        let behind = (self.behind / l).ceil().max(1.0) as usize;
+        let ahead = (self.ahead / l).ceil().max(1.0) as usize;
+        (behind, ahead, l)
+    }
+
+    /// Check the lengths and the size.
+    pub fn validate(&self) -> Result<()> {
+        for (field, value) in [
+            ("domain.behind", self.behind),
+            ("domain.ahead", self.ahead),
+            ("domain.element_length", self.element_length),
+        ] {
+            if !(value.is_finite() && value > 0.0) {
+                return Err(invalid(field, value, "must be finite and > 0 (m)"));
+            }
+        }
+        let (behind, ahead, _) = self.elements();
+        if behind + ahead > MAX_ELEMENTS {
+            return Err(invalid(
+                "domain.element_length",
+                self.element_length,
+                format!("gives {} elements, more than {MAX_ELEMENTS}", behind + ahead),
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// A point load moving at constant speed on an infinite beam on its foundation.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StationaryProblem {
+    /// The rail.
+    pub beam: Beam,
+    /// The soil: stiffness (in compression), damping and law.
+    pub foundation: Foundation,
+    /// The load F (N, downward) ≥ 0.
+    pub load: f64,
+    /// Its speed v (m/s) ≥ 0.
+    pub speed: f64,
+    /// Whether the rail's weight rests on a nonlinear soil (ignored on a linear one, where it only settles the
+    /// rail uniformly).
+    pub self_weight: bool,
+    /// The moving domain.
+    pub domain: Domain,
+}
+
+impl StationaryProblem {
+    /// Check every field; the error names the first bad one.
+    pub fn validate(&self) -> Result<()> {
+        self.beam.validate()?;
+        self.foundation.validate()?;
+        if self.foundation.stiffness <= 0.0 {
+            return Err(invalid(
+                "foundation.stiffness",
+                self.foundation.stiffness,
+                "must be > 0: without a foundation no stationary wave exists on an infinite beam",
+            ));
+        }
+        if !(self.load.is_finite() && self.load >= 0.0) {
+            return Err(invalid("load", self.load, "must be finite and ≥ 0 (N, downward)"));
+        }
+        let bar_wave = (self.beam.youngs_modulus / self.beam.density).sqrt();
+        if !(self.speed.is_finite() && self.speed >= 0.0 && self.speed < bar_wave) {
+            return Err(invalid("speed", self.speed, format!("must lie in [0, {bar_wave:.0}) m/s")));
+        }
+        self.domain.validate()
+    }
+
+    /// Whether the soil is nonlinear (sections carry its unilateral part).
+    pub fn is_nonlinear(&self) -> bool {
+        !self.foundation.law.is_linear()
+    }
+
+    /// Whether the domain's ends are free (W″ = W‴ = 0) rather than transparent: a nonlinear soil without weight,
+    /// whose far field rests on the soil without force or lifts straight off it, and is not the linear one.
+    pub fn has_free_ends(&self) -> bool {
+        self.is_nonlinear() && !self.self_weight
+    }
+
+    /// The far field's level W_far (m): the self-weight settlement −ρA·g/k_c on a nonlinear soil with self-weight,
+    /// else 0 (deflections from the settled state).
+    pub fn far_level(&self) -> f64 {
+        match self.is_nonlinear() && self.self_weight {
+            true => -self.beam.mass_per_length() * GRAVITY / self.foundation.stiffness,
+            false => 0.0,
+        }
+    }
+}

@@ -1,0 +1,191 @@
+//! The stationary wave and what an engineer reads from it (docs/theory.md §14): W(s) from the settled state at the
+//! nodes, the bending moment EI W″, the soil's reaction, the peaks, the zones where the rail leaves the soil, the
+//! deflection left behind, and the power balance of the steady state — the load's power F v W′(0) against the
+//! dashpots' c_f v² ∫W′² ds (a conservative soil, linear or not, dissipates nothing over a cycle).
+
+use crate::operator::{GAUSS, MovingFrame};
+use crate::problem::StationaryProblem;
+use crate::solve::Convergence;
+use fem_beam::element::hermite;
+
+/// An extreme of the wave: its value and where (s, m; positive ahead of the load).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Peak {
+    /// The value (m, or N·m for moments), a magnitude for deflections.
+    pub value: f64,
+    /// s (m).
+    pub s: f64,
+}
+
+/// Neighbouring soil sections where the rail is above the soil's surface.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LiftOffZone {
+    /// From and to (s, m).
+    pub from: f64,
+    /// To (m).
+    pub to: f64,
+    /// The largest gap in the zone (m).
+    pub largest_gap: f64,
+}
+
+/// The stationary wave of a load at one speed.
+#[derive(Debug, Clone, PartialEq)]
+pub struct StationaryWave {
+    /// v (m/s).
+    pub speed: f64,
+    /// F (N).
+    pub load: f64,
+    /// How the solve ended; a wave that did not converge is reported, never taken for the answer.
+    pub convergence: Convergence,
+    /// Node positions s (m), the load at s = 0.
+    pub s: Vec<f64>,
+    /// W − W_far at the nodes (m, upward positive): the deflection from the settled rail.
+    pub deflection: Vec<f64>,
+    /// W′ (rad).
+    pub slope: Vec<f64>,
+    /// EI W″ (N·m, sagging positive), the mean of both elements' values at a node.
+    pub moment: Vec<f64>,
+    /// The soil's spring force on the rail from the settled state (N/m, upward positive), at the nodes.
+    pub soil_reaction: Vec<f64>,
+    /// The settlement level W_far (m): −ρA·g/k_c on a nonlinear soil with self-weight, else 0.
+    pub settlement: f64,
+    /// The zones where the rail left the soil.
+    pub lift_off: Vec<LiftOffZone>,
+    /// F v W′(0) (W): the power the load puts in.
+    pub load_power: f64,
+    /// c_f v² ∫W′² ds (W): what the dashpots take out, on the domain and on the far field beyond its transparent
+    /// ends.
+    pub viscous_power: f64,
+    element_length: f64,
+    load_node: usize,
+    sections_lifted_at_ends: (bool, bool),
+}
+
+impl StationaryWave {
+    pub(crate) fn new(problem: &StationaryProblem, frame: &MovingFrame, w: Vec<f64>, status: Convergence) -> Self {
+        let nodes = frame.nodes.len();
+        let l = frame.element_length;
+        let level = problem.far_level();
+        let ei = problem.beam.bending_stiffness();
+        let deflection: Vec<f64> = (0..nodes).map(|i| w[2 * i] - level).collect();
+        let slope: Vec<f64> = (0..nodes).map(|i| w[2 * i + 1]).collect();
+        let mut moment = vec![0.0; nodes];
+        let mut count = vec![0.0; nodes];
+        let mut viscous = 0.0;
+        for e in 0..nodes - 1 {
+            let q = &w[2 * e..2 * e + 4];
+            let curvature = |xi: f64| hermite::shape_dxx(xi, l).iter().zip(q).map(|(n, q)| n * q).sum::<f64>();
+            moment[e] += ei * curvature(0.0);
+            moment[e + 1] += ei * curvature(1.0);
+            count[e] += 1.0;
+            count[e + 1] += 1.0;
+            for &(xi, weight) in &GAUSS {
+                let dw: f64 = hermite::shape_dx(xi, l).iter().zip(q).map(|(n, q)| n * q).sum();
+                viscous += weight * l * dw * dw;
+            }
+        }
+        moment.iter_mut().zip(&count).for_each(|(m, c)| *m /= c);
+        let f = &problem.foundation;
+        let (k_c, k_t) = (f.stiffness, f.tension_stiffness());
+        let rest = -k_t * level + (k_c - k_t) * (-level).max(0.0);
+        let soil_reaction = (0..nodes).map(|i| -k_t * w[2 * i] + (k_c - k_t) * (-w[2 * i]).max(0.0) - rest).collect();
+        let mut lift_off: Vec<LiftOffZone> = Vec::new();
+        let mut previous = false;
+        for section in &frame.sections {
+            let gap = section.deflection(&w);
+            let lifted = gap > 0.0;
+            if lifted {
+                match lift_off.last_mut().filter(|_| previous) {
+                    Some(zone) => {
+                        zone.to = section.s;
+                        zone.largest_gap = zone.largest_gap.max(gap);
+                    }
+                    None => lift_off.push(LiftOffZone { from: section.s, to: section.s, largest_gap: gap }),
+                }
+            }
+            previous = lifted;
+        }
+        let last = nodes - 2;
+        let at_end = |element: usize| frame.sections.iter().any(|s| s.element == element && s.deflection(&w) > 0.0);
+        let v = problem.speed;
+        // The dashpots work beyond the ends too, where the transparent ends continue the wave by its decaying modes.
+        if !problem.has_free_ends() {
+            let far = &frame.far_field;
+            let ends = [(&far.behind, 0), (&far.ahead, nodes - 1)];
+            for (end, i) in ends {
+                viscous += end.tail_slope_square(w[2 * i] - level, w[2 * i + 1]).unwrap_or(0.0);
+            }
+        }
+        Self {
+            speed: v,
+            load: problem.load,
+            convergence: status,
+            s: frame.nodes.clone(),
+            load_power: problem.load * v * slope[frame.load_node],
+            viscous_power: f.damping * v * v * viscous,
+            deflection,
+            slope,
+            moment,
+            soil_reaction,
+            settlement: level,
+            lift_off,
+            element_length: l,
+            load_node: frame.load_node,
+            sections_lifted_at_ends: (at_end(0), at_end(last)),
+        }
+    }
+
+    /// Whether the rail leaves the soil in the last element behind, and ahead.
+    pub fn lifted_at_ends(&self) -> (bool, bool) {
+        self.sections_lifted_at_ends
+    }
+
+    /// The largest downward deflection (magnitude) and where.
+    pub fn max_downward(&self) -> Peak {
+        self.extreme(&self.deflection, -1.0)
+    }
+
+    /// The largest upward deflection and where.
+    pub fn max_upward(&self) -> Peak {
+        self.extreme(&self.deflection, 1.0)
+    }
+
+    /// The largest sagging moment and where.
+    pub fn max_moment(&self) -> Peak {
+        self.extreme(&self.moment, 1.0)
+    }
+
+    /// The largest hogging moment (magnitude) and where.
+    pub fn min_moment(&self) -> Peak {
+        self.extreme(&self.moment, -1.0)
+    }
+
+    fn extreme(&self, values: &[f64], sign: f64) -> Peak {
+        values
+            .iter()
+            .zip(&self.s)
+            .map(|(v, s)| Peak { value: (sign * v).max(0.0), s: *s })
+            .fold(Peak::default(), |best, p| if p.value > best.value { p } else { best })
+    }
+
+    /// The deflection under the load (m).
+    pub fn under_load(&self) -> f64 {
+        self.deflection[self.load_node]
+    }
+
+    /// The deflection left at the rear end of the domain (m): the wave's tail, or what friction holds.
+    pub fn behind(&self) -> f64 {
+        self.deflection[0]
+    }
+
+    /// (load power − viscous power) / load power: zero for the exact stationary wave on the infinite track; here
+    /// the discretisation's and the ends' share (0 when no power flows).
+    pub fn power_imbalance(&self) -> f64 {
+        if self.load_power.abs() > 0.0 { (self.load_power - self.viscous_power) / self.load_power } else { 0.0 }
+    }
+
+    /// Element length of the domain (m).
+    pub fn element_length(&self) -> f64 {
+        self.element_length
+    }
+}
