@@ -14,6 +14,7 @@ mod reproduce;
 mod run;
 mod run_text;
 mod scenario_args;
+mod stationary;
 mod study_cmd;
 mod sweep;
 mod track_profile;
@@ -60,6 +61,9 @@ enum Command {
     /// Closed-form steady state of an infinite beam under a moving load: max downward/upward deflection, and the
     /// dynamic amplification curve over a speed range.
     Analytic(analytic::AnalyticArgs),
+    /// The stationary wave of the load on the infinite track (moving coordinates, no time stepping), for linear,
+    /// tensionless and bilinear soils: its shape, peaks and lift-off zones at one speed or over a speed range.
+    Stationary(stationary::StationaryArgs),
 }
 
 /// Output format of a command.
@@ -108,6 +112,7 @@ fn main() -> ExitCode {
         Command::Plot(args) => plot::run(&args),
         Command::Reference(args) => reference::run(&args),
         Command::Analytic(args) => analytic::run(&args),
+        Command::Stationary(args) => stationary::run(&args),
         Command::Trains(args) => trains::run(&args),
         Command::TrackProfile(args) => track_profile::run(&args),
     };

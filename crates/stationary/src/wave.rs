@@ -142,12 +142,38 @@ impl StationaryWave {
 
     /// The largest downward deflection (magnitude) and where.
     pub fn max_downward(&self) -> Peak {
-        self.extreme(&self.deflection, -1.0)
+        self.deflection_extreme(-1.0)
     }
 
     /// The largest upward deflection and where.
     pub fn max_upward(&self) -> Peak {
-        self.extreme(&self.deflection, 1.0)
+        self.deflection_extreme(1.0)
+    }
+
+    /// The extreme of sign·W over the whole cubic of every element, not only its nodes: where W′ = aξ² + bξ + c
+    /// vanishes inside (a damped wave's trough lies between nodes, 0.07 m behind the load at 120 m/s).
+    fn deflection_extreme(&self, sign: f64) -> Peak {
+        let l = self.element_length;
+        let mut best = self.extreme(&self.deflection, sign);
+        for e in 0..self.s.len() - 1 {
+            let q = [self.deflection[e], self.slope[e], self.deflection[e + 1], self.slope[e + 1]];
+            let a = 6.0 * (q[0] - q[2]) / l + 3.0 * (q[1] + q[3]);
+            let b = -6.0 * (q[0] - q[2]) / l - 4.0 * q[1] - 2.0 * q[3];
+            let c = q[1];
+            let discriminant = b * b - 4.0 * a * c;
+            if a == 0.0 || discriminant < 0.0 {
+                continue;
+            }
+            for xi in [(-b - discriminant.sqrt()) / (2.0 * a), (-b + discriminant.sqrt()) / (2.0 * a)] {
+                if xi > 0.0 && xi < 1.0 {
+                    let w: f64 = hermite::shape(xi, l).iter().zip(&q).map(|(n, q)| n * q).sum();
+                    if sign * w > best.value {
+                        best = Peak { value: sign * w, s: self.s[e] + xi * l };
+                    }
+                }
+            }
+        }
+        best
     }
 
     /// The largest sagging moment and where.

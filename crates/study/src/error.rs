@@ -60,6 +60,9 @@ pub enum StudyError {
     /// An error from the stepper (invalid setting or a failed run).
     #[error(transparent)]
     Stepping(#[from] nscd::NscdError),
+    /// An error of the stationary solver (a speed without a stationary wave, a singular operator).
+    #[error(transparent)]
+    Stationary(#[from] stationary::StationaryError),
 }
 
 impl From<irregularity::IrregularityError> for StudyError {
@@ -102,6 +105,7 @@ impl StudyError {
             StudyError::Io { .. } | StudyError::CurveFailed { .. } | StudyError::Interrupted => false,
             StudyError::Beam(e) => e.is_invalid_input(),
             StudyError::Stepping(e) => e.is_invalid_input(),
+            StudyError::Stationary(e) => e.is_invalid_input(),
         }
     }
 }

@@ -25,6 +25,7 @@ pub mod scenario;
 pub mod shard;
 pub mod soil_output;
 pub mod speeds;
+pub mod stationary_output;
 pub mod steady_response;
 pub mod sweep;
 pub mod sweep_figures;

@@ -8,6 +8,7 @@ mod failures;
 mod figures;
 mod run_out;
 mod soil;
+mod stationary;
 mod track_profile;
 mod trains;
 mod trust;

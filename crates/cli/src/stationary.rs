@@ -1,0 +1,191 @@
+//! `frictrack stationary`: the stationary wave of the scenario's load on the infinite track, in moving coordinates
+//! (docs/theory.md §14) — at one speed (its shape) or over a speed range by continuation (its peaks).
+
+use crate::files::{check_output_file, prepare_output_folder, write_atomically, write_figures};
+use anyhow::Result;
+use clap::{Args, ValueEnum};
+use stationary::Domain;
+use std::path::PathBuf;
+use study::Scenario;
+use study::stationary_output::{StationaryPoint, StationaryStudy, wave_csv};
+
+/// What `frictrack stationary` prints.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum, Default)]
+pub enum StationaryFormat {
+    /// A table of the peaks per speed.
+    #[default]
+    Text,
+    /// The points as JSON.
+    Json,
+    /// One speed: the wave's shape; several: the points, as CSV.
+    Csv,
+}
+
+/// Options of `frictrack stationary`.
+#[derive(Debug, Args)]
+pub struct StationaryArgs {
+    /// Scenario file (its beam, soil with its law and damping, and single load); without it, the reference case.
+    scenario: Option<PathBuf>,
+    /// Load speed: m/s (`100`), or with a unit (`360km/h`).
+    #[arg(
+        long,
+        conflicts_with = "speeds",
+        required_unless_present = "speeds",
+        allow_negative_numbers = true,
+        value_parser = crate::units::parse_speed
+    )]
+    speed: Option<f64>,
+    /// Speed range A:B:STEP (m/s), solved in order, each speed starting from the last one's contact set.
+    #[arg(long, allow_negative_numbers = true)]
+    speeds: Option<String>,
+    /// Domain behind:ahead of the load (m); grown where the rail leaves the soil at an end. Default 60:60.
+    #[arg(long, value_name = "BEHIND:AHEAD")]
+    domain: Option<String>,
+    /// Element length of the moving domain (m). Default 0.25.
+    #[arg(long, allow_negative_numbers = true)]
+    element_length: Option<f64>,
+    /// Output format on standard output.
+    #[arg(long, value_enum, default_value_t = StationaryFormat::Text)]
+    format: StationaryFormat,
+    /// Folder for stationary.json, the CSV (wave.csv for one speed, speeds.csv for several) and the figure.
+    #[arg(long)]
+    out: Option<PathBuf>,
+}
+
+fn domain(args: &StationaryArgs) -> Result<Domain> {
+    let mut domain = Domain::default();
+    if let Some(text) = &args.domain {
+        let bad = || study::error::invalid("--domain", text, "expected BEHIND:AHEAD in metres, e.g. 60:60");
+        let (behind, ahead) = text.split_once(':').ok_or_else(bad)?;
+        domain.behind = behind.trim().parse().map_err(|_| bad())?;
+        domain.ahead = ahead.trim().parse().map_err(|_| bad())?;
+    }
+    if let Some(l) = args.element_length {
+        domain.element_length = l;
+    }
+    domain.validate().map_err(|e| study::StudyError::from(e).into()).map(|()| domain)
+}
+
+/// Execute `frictrack stationary`.
+pub fn run(args: &StationaryArgs) -> Result<()> {
+    let scenario = match &args.scenario {
+        Some(path) => Scenario::from_path(path)?,
+        None => Scenario::default(),
+    };
+    let speeds = match (&args.speeds, args.speed) {
+        (Some(range), _) => crate::analytic::parse_range(range)?,
+        (None, Some(v)) => vec![v],
+        (None, None) => {
+            return Err(study::error::invalid("--speed", "absent", "give --speed V or --speeds A:B:STEP").into());
+        }
+    };
+    if let Some(&v) = speeds.iter().find(|v| !(v.is_finite() && **v >= 0.0)) {
+        return Err(study::error::invalid("--speed", v, "must be finite and ≥ 0 (m/s)").into());
+    }
+    let domain = domain(args)?;
+    if let Some(folder) = &args.out {
+        prepare_output_folder("--out", folder)?;
+        for name in ["stationary.json", "wave.csv", "speeds.csv"] {
+            check_output_file("--out", &folder.join(name))?;
+        }
+    }
+    let study = StationaryStudy::of(&scenario, &speeds, domain)?;
+    let single = match study.waves.as_slice() {
+        [Some(wave)] => Some(wave),
+        _ => None,
+    };
+    let csv = match single {
+        Some(wave) => wave_csv(wave),
+        None => points_csv(&study.points),
+    };
+    match args.format {
+        StationaryFormat::Json if speeds.len() == 1 => println!("{}", serde_json::to_string_pretty(&study.points[0])?),
+        StationaryFormat::Json => println!("{}", serde_json::to_string_pretty(&study.points)?),
+        StationaryFormat::Csv => print!("{csv}"),
+        StationaryFormat::Text => print_text(&scenario, &study),
+    }
+    if let Some(folder) = &args.out {
+        write_atomically(&folder.join("stationary.json"), serde_json::to_string_pretty(&study.points)?.as_bytes())?;
+        let name = if single.is_some() { "wave.csv" } else { "speeds.csv" };
+        write_atomically(&folder.join(name), csv.as_bytes())?;
+        let title = if scenario.title.is_empty() { "stationary wave on the infinite track" } else { &scenario.title };
+        let drawn = write_figures(&study.figures(title), folder)?;
+        eprintln!("wrote {} (stationary.json, {name}, {})", folder.display(), drawn.join(", "));
+    }
+    Ok(())
+}
+
+fn points_csv(points: &[StationaryPoint]) -> String {
+    let cell = |x: Option<f64>| x.map_or(String::new(), |x| x.to_string());
+    let mut out = String::from(
+        "speed_m_per_s,status,iterations,residual,max_downward_deflection_m,max_downward_position_m,\
+         max_upward_deflection_m,max_upward_position_m,max_moment_Nm,max_hogging_moment_Nm,deflection_behind_m,\
+         lift_off_zones,largest_gap_m,power_imbalance\n",
+    );
+    for p in points {
+        let gap = p
+            .lift_off_zones
+            .iter()
+            .map(|z| z.largest_gap)
+            .fold(None, |m: Option<f64>, g| Some(m.map_or(g, |m| m.max(g))));
+        out.push_str(&format!(
+            "{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
+            p.speed,
+            p.status,
+            p.iterations,
+            p.residual,
+            cell(p.max_downward_deflection),
+            cell(p.max_downward_deflection_position),
+            cell(p.max_upward_deflection),
+            cell(p.max_upward_deflection_position),
+            cell(p.max_moment),
+            cell(p.max_hogging_moment),
+            cell(p.deflection_behind),
+            p.lift_off_zones.len(),
+            cell(gap),
+            cell(p.power_imbalance),
+        ));
+    }
+    out
+}
+
+fn print_text(scenario: &Scenario, study: &StationaryStudy) {
+    let weight = match study.settlement > 0.0 {
+        true => format!(", settled {:.3} mm by the rail's weight", study.settlement * 1e3),
+        false => String::new(),
+    };
+    println!(
+        "stationary wave on the infinite track{}: F = {:.1} kN, {} soil{weight}",
+        if scenario.title.is_empty() { String::new() } else { format!(" ({})", scenario.title) },
+        study.load / 1e3,
+        study.law
+    );
+    println!("  speed (m/s)  max down (mm)  at s (m)  max up (mm)  at s (m)  max M (kN·m)  lift-off zones  status");
+    let mm = |x: Option<f64>| x.map_or("—".to_string(), |x| format!("{:.3}", x * 1e3));
+    let at = |x: Option<f64>| x.map_or("—".to_string(), |x| format!("{x:.2}"));
+    for p in &study.points {
+        let status = match p.status {
+            "converged" => String::new(),
+            "not converged" => format!("not converged (residual {:.1e})", p.residual),
+            other => other.to_string(),
+        };
+        println!(
+            "  {:>10.2}  {:>13}  {:>8}  {:>11}  {:>8}  {:>12}  {:>14}  {status}",
+            p.speed,
+            mm(p.max_downward_deflection),
+            at(p.max_downward_deflection_position),
+            mm(p.max_upward_deflection),
+            at(p.max_upward_deflection_position),
+            p.max_moment.map_or("—".to_string(), |m| format!("{:.2}", m / 1e3)),
+            p.lift_off_zones.len(),
+        );
+    }
+    println!("  (s = x − vt: positive ahead of the load; deflections from the settled rail)");
+    if study.points.iter().any(|p| p.status != "converged") {
+        println!(
+            "  where no wave was found (—), run the load across a long finite track in time (`frictrack run` with \
+             absorbing zones): the stationary wave may not exist there (a tensionless soil lets the rail be thrown \
+             off at speed), or needs foundation damping (undamped at or above the critical speed)"
+        );
+    }
+}

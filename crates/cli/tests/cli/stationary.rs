@@ -1,0 +1,94 @@
+//! `frictrack stationary`: the wave on the infinite track against `frictrack analytic`, its outputs and refusals.
+
+use super::{frictrack, json, temporary_folder};
+
+/// A linear soil's stationary wave is the closed form `frictrack analytic` prints (to 1e-4 of the peak), at a sub-
+/// and a supercritical speed with damping.
+#[test]
+fn the_linear_stationary_wave_is_the_analytic_one() {
+    let folder = temporary_folder("stationary");
+    let file = folder.join("damped.toml");
+    std::fs::write(&file, "[foundation]\ndamping_ratio = 0.05\n").unwrap();
+    let path = file.to_str().unwrap();
+    for speed in ["120", "300"] {
+        let wave = json(&frictrack(&["stationary", path, "--speed", speed, "--format", "json"]));
+        let closed = json(&frictrack(&["analytic", path, "--speed", speed, "--format", "json"]));
+        assert_eq!(wave["status"], "converged");
+        for key in ["max_downward_deflection", "max_upward_deflection"] {
+            let (a, b) = (wave[key].as_f64().unwrap(), closed[key].as_f64().unwrap());
+            let peak = closed["max_downward_deflection"].as_f64().unwrap();
+            assert!((a - b).abs() <= 1e-4 * peak, "v {speed} {key}: {a} vs {b}");
+        }
+    }
+}
+
+#[test]
+fn a_tensionless_sweep_reports_lift_off_and_where_no_wave_was_found() {
+    let folder = temporary_folder("stationary-sweep");
+    let file = folder.join("tensionless.toml");
+    std::fs::write(&file, "[foundation]\ndamping_ratio = 0.05\nlaw = \"tensionless\"\n").unwrap();
+    let path = file.to_str().unwrap();
+    let out = folder.join("out");
+    let points = json(&frictrack(&[
+        "stationary",
+        path,
+        "--speeds",
+        "40:160:40",
+        "--format",
+        "json",
+        "--out",
+        out.to_str().unwrap(),
+    ]));
+    let points = points.as_array().unwrap();
+    assert_eq!(points.len(), 4);
+    // At 40 and 80 m/s the rail lifts off ahead of and behind the load; past ~105 m/s no wave is found, and the
+    // point says so without peaks.
+    for p in &points[..2] {
+        assert_eq!(p["status"], "converged");
+        assert!(!p["lift_off_zones"].as_array().unwrap().is_empty(), "{p}");
+        assert!(p["power_imbalance"].as_f64().unwrap().abs() < 2e-4);
+    }
+    for p in &points[2..] {
+        assert_eq!(p["status"], "not converged");
+        assert!(p["max_downward_deflection"].is_null() && p["residual"].as_f64().unwrap() > 1e-4, "{p}");
+    }
+    for name in ["stationary.json", "speeds.csv", "stationary-peaks.png", "stationary-peaks.svg"] {
+        assert!(out.join(name).is_file(), "{name}");
+    }
+    let text = String::from_utf8_lossy(&frictrack(&["stationary", path, "--speeds", "40:160:40"]).stdout).to_string();
+    assert!(text.contains("not converged (residual") && text.contains("run the load across a long finite track"));
+    // One speed: the wave's shape as CSV, the load at s = 0 with the largest downward deflection.
+    let csv = frictrack(&["stationary", path, "--speed", "60", "--format", "csv"]);
+    let csv = String::from_utf8_lossy(&csv.stdout).to_string();
+    let mut lines = csv.lines();
+    assert_eq!(lines.next().unwrap(), "s_m,deflection_m,slope_rad,moment_Nm,soil_reaction_N_per_m");
+    let rows: Vec<Vec<f64>> = lines.map(|l| l.split(',').map(|x| x.parse().unwrap()).collect()).collect();
+    let lowest = rows.iter().min_by(|a, b| a[1].total_cmp(&b[1])).unwrap();
+    assert_eq!(lowest[0], 0.0);
+}
+
+#[test]
+fn what_the_stationary_solver_does_not_take_is_refused_by_name() {
+    let folder = temporary_folder("stationary-bad");
+    for (toml, args, needle) in [
+        ("[friction.distributed]\nforce_per_length = 1e3\n", vec!["--speed", "100"], "friction.distributed"),
+        ("[load]\ntrain = \"hslm-a1\"\n", vec!["--speed", "100"], "load.train"),
+        ("", vec!["--speed", "100", "--domain", "60"], "--domain"),
+        ("", vec!["--speed", "100", "--element-length", "0"], "domain.element_length"),
+        (
+            "[foundation]\nstiffness = 0.0\n[supports]\nleft = \"clamped\"\n",
+            vec!["--speed", "100"],
+            "foundation.stiffness",
+        ),
+        ("", vec!["--speed", "-4"], "speed"),
+    ] {
+        let file = folder.join("case.toml");
+        std::fs::write(&file, toml).unwrap();
+        let mut all = vec!["stationary", file.to_str().unwrap()];
+        all.extend(args.iter().copied());
+        let out = frictrack(&all);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{all:?}: {err}");
+        assert!(err.contains(needle), "{all:?}: {err}");
+    }
+}

@@ -1,0 +1,270 @@
+//! `frictrack stationary`: the stationary wave of the scenario's load on the infinite track (docs/theory.md §14), at
+//! one speed or over a speed range by continuation, as typed points (JSON), the wave's shape (CSV) and figures. A
+//! speed whose wave was not found carries its status and residual and no peaks: nothing is reported as an answer
+//! that is not one. Deflections (m, from the settled rail, upward positive; peaks as magnitudes), moments (N·m,
+//! sagging positive), positions s = x − vt (m, positive ahead of the load), powers (W).
+
+use crate::error::{Result, invalid};
+use crate::plot::{PlotSpec, Series, Stroke};
+use crate::scenario::Scenario;
+use serde::Serialize;
+use stationary::{ContactGuess, Convergence, Domain, StationaryError, StationaryProblem, StationaryWave};
+
+/// One lift-off zone of a wave.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ZoneSummary {
+    /// From (s, m).
+    pub from: f64,
+    /// To (s, m).
+    pub to: f64,
+    /// Largest gap between rail and soil (m).
+    pub largest_gap: f64,
+}
+
+/// The stationary wave at one speed, summarised.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct StationaryPoint {
+    /// v (m/s).
+    pub speed: f64,
+    /// "converged", "not converged", "domain too short" or "no stationary wave".
+    pub status: &'static str,
+    /// Newton solves taken (0 where no wave exists).
+    pub iterations: usize,
+    /// The relative residual of the last iterate (0 where no wave exists).
+    pub residual: f64,
+    /// Largest downward deflection (m) and where (s, m); None unless converged.
+    pub max_downward_deflection: Option<f64>,
+    /// s (m).
+    pub max_downward_deflection_position: Option<f64>,
+    /// Largest upward deflection (m).
+    pub max_upward_deflection: Option<f64>,
+    /// s (m).
+    pub max_upward_deflection_position: Option<f64>,
+    /// Largest sagging moment (N·m).
+    pub max_moment: Option<f64>,
+    /// s (m).
+    pub max_moment_position: Option<f64>,
+    /// Largest hogging moment (N·m, magnitude).
+    pub max_hogging_moment: Option<f64>,
+    /// Deflection under the load (m, signed).
+    pub deflection_under_load: Option<f64>,
+    /// Deflection at the domain's rear end (m, signed): the residual deflection left behind.
+    pub deflection_behind: Option<f64>,
+    /// Where the rail left the soil.
+    pub lift_off_zones: Vec<ZoneSummary>,
+    /// F v W′(0) (W).
+    pub load_power: Option<f64>,
+    /// c_f v² ∫W′² (W).
+    pub viscous_power: Option<f64>,
+    /// (load − viscous)/load power.
+    pub power_imbalance: Option<f64>,
+    /// The domain behind and ahead of the load (m) and its element length (m).
+    pub domain: (f64, f64, f64),
+}
+
+/// The stationary waves of a scenario over its speeds.
+#[derive(Debug, Clone)]
+pub struct StationaryStudy {
+    /// The soil's law ("linear", "tensionless", "bilinear").
+    pub law: &'static str,
+    /// F (N).
+    pub load: f64,
+    /// The self-weight settlement (m), 0 on a linear soil or without weight.
+    pub settlement: f64,
+    /// One point per speed.
+    pub points: Vec<StationaryPoint>,
+    /// The waves, where found (None where no stationary wave exists at that speed).
+    pub waves: Vec<Option<StationaryWave>>,
+}
+
+/// The stationary problem of `scenario` at `speed` (m/s) on `domain`: its beam, its soil (stiffness, damping and
+/// law; absorbing zones do not apply on an infinite track), its single load, its self-weight.
+pub fn problem(scenario: &Scenario, speed: f64, domain: Domain) -> Result<StationaryProblem> {
+    if scenario.friction.devices.is_some() || scenario.friction.distributed.is_some() {
+        let path = if scenario.friction.devices.is_some() { "friction.devices" } else { "friction.distributed" };
+        return Err(invalid(
+            path,
+            "given",
+            "the stationary solver takes no friction yet: run the finite track (`frictrack run`, with absorbing \
+             zones) for a friction-damped wave",
+        ));
+    }
+    if scenario.load.train.is_some() || !scenario.load.axles.is_empty() || !scenario.load.patches.is_empty() {
+        return Err(invalid("load.train", "given", "the stationary solver takes the single load `load.force`"));
+    }
+    if scenario.vehicle.is_some() {
+        return Err(invalid("vehicle", "given", "the stationary solver takes the moving force, not vehicles"));
+    }
+    let model = scenario.model()?;
+    Ok(StationaryProblem {
+        beam: *model.beam(),
+        // The soil's own damping: the absorbing zones of a finite track have no place on an infinite one.
+        foundation: *model.foundation(),
+        load: scenario.load.force,
+        speed,
+        self_weight: scenario.foundation.self_weight,
+        domain,
+    })
+}
+
+impl StationaryStudy {
+    /// Solve `speeds` (m/s, in the order given: each starts from the last one's contact set) on `domain`.
+    pub fn of(scenario: &Scenario, speeds: &[f64], domain: Domain) -> Result<Self> {
+        let first = problem(scenario, speeds.first().copied().unwrap_or(0.0), domain)?;
+        let law = match first.foundation.law {
+            fem_beam::FoundationLaw::Linear => "linear",
+            fem_beam::FoundationLaw::Tensionless => "tensionless",
+            fem_beam::FoundationLaw::Bilinear { .. } => "bilinear",
+        };
+        let mut guess = ContactGuess::default();
+        let (mut points, mut waves) = (Vec::with_capacity(speeds.len()), Vec::with_capacity(speeds.len()));
+        for &speed in speeds {
+            let problem = StationaryProblem { speed, ..first };
+            match stationary::solve_from(&problem, &mut guess) {
+                Ok(wave) => {
+                    points.push(StationaryPoint::of(&wave));
+                    waves.push(Some(wave));
+                }
+                Err(StationaryError::NoRadiationCondition { .. }) => {
+                    points.push(StationaryPoint::missing(speed, domain));
+                    waves.push(None);
+                }
+                Err(other) => return Err(other.into()),
+            }
+        }
+        Ok(Self { law, load: first.load, settlement: -first.far_level(), points, waves })
+    }
+
+    /// The figures: with one speed the wave's deflection and moment along s; with several the peak deflections
+    /// against speed (converged speeds only).
+    pub fn figures(&self, title: &str) -> Vec<PlotSpec> {
+        let subtitle =
+            format!("{} soil, F = {:.1} kN, s = x − vt (positive ahead of the load)", self.law, self.load / 1e3);
+        if let [Some(wave)] = self.waves.as_slice() {
+            let mut shape = PlotSpec::new("stationary-wave", title, "s = x − vt (m)", "");
+            shape.subtitle = format!("{subtitle}, v = {:.1} m/s", wave.speed);
+            let line = |label: &str, color: usize, values: Vec<(f64, f64)>| Series {
+                label: Some(label.into()),
+                color,
+                stroke: Stroke::Solid,
+                markers: false,
+                points: values,
+            };
+            let mut deflection = PlotSpec::new("", "deflection from the settled rail", "s = x − vt (m)", "w (mm)");
+            deflection.series.push(line(
+                "W(s)",
+                1,
+                wave.s.iter().zip(&wave.deflection).map(|(s, w)| (*s, w * 1e3)).collect(),
+            ));
+            let mut moment = PlotSpec::new("", "bending moment", "s = x − vt (m)", "M (kN·m)");
+            moment.series.push(line(
+                "EI W″(s)",
+                2,
+                wave.s.iter().zip(&wave.moment).map(|(s, m)| (*s, m / 1e3)).collect(),
+            ));
+            shape.panels = vec![deflection, moment];
+            return vec![shape];
+        }
+        let mut peaks = PlotSpec::new("stationary-peaks", title, "speed v (m/s)", "peak deflection (mm)");
+        let missing: Vec<f64> = self.points.iter().filter(|p| p.status != "converged").map(|p| p.speed).collect();
+        peaks.subtitle = match (missing.first(), missing.last()) {
+            (Some(a), Some(b)) => format!(
+                "{subtitle}; no wave found at {} of {} speeds ({a:.0}–{b:.0} m/s)",
+                missing.len(),
+                self.points.len()
+            ),
+            _ => subtitle,
+        };
+        let converged: Vec<&StationaryPoint> = self.points.iter().filter(|p| p.status == "converged").collect();
+        for (label, stroke, values) in [
+            (
+                "downward",
+                Stroke::Solid,
+                converged.iter().filter_map(|p| Some((p.speed, p.max_downward_deflection? * 1e3))).collect(),
+            ),
+            (
+                "upward",
+                Stroke::Dashed,
+                converged.iter().filter_map(|p| Some((p.speed, p.max_upward_deflection? * 1e3))).collect(),
+            ),
+        ] {
+            peaks.series.push(Series { label: Some(label.into()), color: 1, stroke, markers: true, points: values });
+        }
+        vec![peaks]
+    }
+}
+
+impl StationaryPoint {
+    fn of(wave: &StationaryWave) -> Self {
+        let (status, iterations, residual) = match wave.convergence {
+            Convergence::Converged { iterations, residual } => ("converged", iterations, residual),
+            Convergence::NotConverged { iterations, residual } => ("not converged", iterations, residual),
+            Convergence::DomainTooShort { .. } => ("domain too short", 0, f64::NAN),
+        };
+        let found = status == "converged";
+        let some = |x: f64| found.then_some(x);
+        let (down, up, sag, hog) = (wave.max_downward(), wave.max_upward(), wave.max_moment(), wave.min_moment());
+        Self {
+            speed: wave.speed,
+            status,
+            iterations,
+            residual,
+            max_downward_deflection: some(down.value),
+            max_downward_deflection_position: some(down.s),
+            max_upward_deflection: some(up.value),
+            max_upward_deflection_position: some(up.s),
+            max_moment: some(sag.value),
+            max_moment_position: some(sag.s),
+            max_hogging_moment: some(hog.value),
+            deflection_under_load: some(wave.under_load()),
+            deflection_behind: some(wave.behind()),
+            lift_off_zones: match found {
+                true => wave
+                    .lift_off
+                    .iter()
+                    .map(|z| ZoneSummary { from: z.from, to: z.to, largest_gap: z.largest_gap })
+                    .collect(),
+                false => Vec::new(),
+            },
+            load_power: some(wave.load_power),
+            viscous_power: some(wave.viscous_power),
+            power_imbalance: some(wave.power_imbalance()),
+            domain: (-wave.s[0], *wave.s.last().unwrap_or(&0.0), wave.element_length()),
+        }
+    }
+
+    fn missing(speed: f64, domain: Domain) -> Self {
+        Self {
+            speed,
+            status: "no stationary wave",
+            iterations: 0,
+            residual: 0.0,
+            max_downward_deflection: None,
+            max_downward_deflection_position: None,
+            max_upward_deflection: None,
+            max_upward_deflection_position: None,
+            max_moment: None,
+            max_moment_position: None,
+            max_hogging_moment: None,
+            deflection_under_load: None,
+            deflection_behind: None,
+            lift_off_zones: Vec::new(),
+            load_power: None,
+            viscous_power: None,
+            power_imbalance: None,
+            domain: (domain.behind, domain.ahead, domain.element_length),
+        }
+    }
+}
+
+/// The wave's shape as CSV: s (m), deflection (m), slope (rad), moment (N·m), soil reaction (N/m).
+pub fn wave_csv(wave: &StationaryWave) -> String {
+    let mut out = String::from("s_m,deflection_m,slope_rad,moment_Nm,soil_reaction_N_per_m\n");
+    for i in 0..wave.s.len() {
+        out.push_str(&format!(
+            "{},{},{},{},{}\n",
+            wave.s[i], wave.deflection[i], wave.slope[i], wave.moment[i], wave.soil_reaction[i]
+        ));
+    }
+    out
+}
