@@ -2,13 +2,14 @@
 //! crate that started to use a higher one. Read from each crate's Cargo.toml (normal, dev and build dependencies).
 
 /// The layers, bottom first: (package name, folder).
-const LAYERS: [(&str, &str); 8] = [
+const LAYERS: [(&str, &str); 9] = [
     ("banded", "crates/banded"),
     ("irregularity", "crates/irregularity"),
     ("fem-beam", "crates/fem-beam"),
     ("friction", "crates/friction"),
     ("nscd", "crates/nscd"),
     ("track", "crates/track"),
+    ("stationary", "crates/stationary"),
     ("study", "crates/study"),
     ("frictrack", "crates/cli"),
 ];

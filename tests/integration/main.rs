@@ -1,6 +1,7 @@
 //! Workspace-level integration tests: results that cross crate boundaries or cover a whole field.
 
 mod figures;
+mod infinite_track;
 mod layers;
 mod references;
 mod static_shape;
