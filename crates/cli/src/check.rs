@@ -59,6 +59,18 @@ fn check(path: &std::path::Path) -> Result<()> {
             parts.join(" and ")
         }
     };
+    let soil_sections = case.interactions.count(track::SectionKind::Foundation);
+    let friction = match soil_sections {
+        0 => format!("{friction} ({} sections)", case.interactions.len()),
+        n => format!(
+            "{friction} ({} sections), {} soil ({n} sections)",
+            case.interactions.len() - n,
+            match foundation.law {
+                fem_beam::FoundationLaw::Bilinear { tension_ratio } => format!("bilinear, k_t = {tension_ratio} k_c"),
+                _ => "tensionless".to_string(),
+            }
+        ),
+    };
     let title = if scenario.title.is_empty() { String::new() } else { format!(" \"{}\"", scenario.title) };
     let load = match &case.settings.moving.load {
         track::Load::Vehicles { vehicles: v, .. } => {
@@ -69,14 +81,13 @@ fn check(path: &std::path::Path) -> Result<()> {
         track::Load::Force(force) => format!("load {:.1} kN", force / 1e3),
     };
     println!(
-        "{}{title}: ok — {} m beam, {} elements ({} DOFs), k_f = {:.1} kN/m², {damping}, {friction} ({} sections), \
-         {load} at {} m/s, sweep {}–{} m/s by {}",
+        "{}{title}: ok — {} m beam, {} elements ({} DOFs), k_f = {:.1} kN/m², {damping}, {friction}, {load} at {} m/s, \
+         sweep {}–{} m/s by {}",
         path.display(),
         mesh.length,
         mesh.elements,
         case.model.dofs().free_len(),
         foundation.stiffness / 1e3,
-        case.interactions.len(),
         scenario.load.speed,
         range.from,
         range.to,

@@ -30,6 +30,10 @@ fn the_feature_examples_run_from_anywhere() {
     let patches = run_elsewhere("axles-and-patches.toml", &[]);
     assert_eq!((patches["train"]["axles"].as_u64(), patches["train"]["patches"].as_u64()), (Some(4), Some(1)));
     assert_eq!(patches["axle_share"]["carries"], "whole-axle");
+    // A tensionless soil: the rail lifts off it at 100 m/s.
+    let soil = run_elsewhere("tensionless-soil.toml", &[]);
+    assert_eq!(soil["soil"]["law"], "tensionless");
+    assert!(soil["soil"]["lifted_sections"].as_u64().unwrap() > 0, "{}", soil["soil"]);
     // A measured rail read beside the scenario, a random rail, a wheel flat: wheels that feel them.
     let table = run_elsewhere("table-irregularity.toml", &[]);
     assert!(table["vehicles"]["max_dynamic_increment"].as_f64().unwrap() > 0.1, "{}", table["vehicles"]);

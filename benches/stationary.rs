@@ -1,0 +1,74 @@
+//! The stationary wave on the infinite track (docs/theory.md §14): a 100-speed sweep by continuation, per soil, and
+//! a nonlinear soil's run on the finite track beside the linear one (the cost of its sections in the engine).
+//!
+//! Run with `cargo bench -p frictrack-benches --bench stationary`.
+
+use criterion::{Criterion, criterion_group, criterion_main};
+use fem_beam::reference::uic60_on_soft_soil;
+use fem_beam::{BeamModel, Foundation, FoundationLaw};
+use stationary::{ContactGuess, Domain, StationaryProblem, solve_from};
+use std::hint::black_box;
+use std::time::Duration;
+use track::{FoundationSections, PlacedInteractions, RunSettings, Simulation};
+
+fn problem(law: FoundationLaw) -> StationaryProblem {
+    let case = uic60_on_soft_soil();
+    let foundation = Foundation { law, ..case.foundation.with_damping_ratio(0.05, &case.beam).unwrap() };
+    StationaryProblem {
+        beam: case.beam,
+        foundation,
+        load: 83.4e3,
+        speed: 0.0,
+        self_weight: true,
+        domain: Domain::default(),
+    }
+}
+
+/// 100 speeds, 3–300 m/s (linear, bilinear α = ½) or 1–100 m/s (tensionless, whose wave is found up to ~105 m/s).
+fn sweeps(c: &mut Criterion) {
+    let mut group = c.benchmark_group("stationary_sweep_100_speeds");
+    group.sample_size(10).warm_up_time(Duration::from_secs(1)).measurement_time(Duration::from_secs(8));
+    for (name, law, step) in [
+        ("linear", FoundationLaw::Linear, 3.0),
+        ("bilinear_half", FoundationLaw::Bilinear { tension_ratio: 0.5 }, 3.0),
+        ("tensionless", FoundationLaw::Tensionless, 1.0),
+    ] {
+        let base = problem(law);
+        group.bench_function(name, |b| {
+            b.iter(|| {
+                let mut guess = ContactGuess::default();
+                for i in 1..=100 {
+                    let p = StationaryProblem { speed: step * i as f64, ..base };
+                    black_box(solve_from(&p, &mut guess).unwrap());
+                }
+            })
+        });
+    }
+    group.finish();
+}
+
+/// The reference run (200 m, 2000 steps, 200 m/s... here 100 m/s, where the tensionless rail stays near its soil)
+/// on a linear soil, and on a tensionless one through its 800 soil sections.
+fn soil_runs(c: &mut Criterion) {
+    let case = uic60_on_soft_soil();
+    let model_of = |law| {
+        let foundation = Foundation { law, ..case.foundation.with_damping_ratio(0.05, &case.beam).unwrap() };
+        BeamModel::new(case.beam, foundation, case.mesh, case.supports).unwrap()
+    };
+    let (linear, tensionless) = (model_of(FoundationLaw::Linear), model_of(FoundationLaw::Tensionless));
+    let sections = FoundationSections::default().interactions(&tensionless).unwrap();
+    let mut settings = RunSettings::default();
+    settings.moving.speed = 100.0;
+    let mut group = c.benchmark_group("soil_run");
+    group.sample_size(10).warm_up_time(Duration::from_secs(1)).measurement_time(Duration::from_secs(8));
+    group.bench_function("linear", |b| {
+        b.iter(|| Simulation::new(&linear, &PlacedInteractions::new(), &settings).unwrap().run().unwrap())
+    });
+    group.bench_function("tensionless_800_sections", |b| {
+        b.iter(|| Simulation::new(&tensionless, black_box(&sections), &settings).unwrap().run().unwrap())
+    });
+    group.finish();
+}
+
+criterion_group!(benches, sweeps, soil_runs);
+criterion_main!(benches);
