@@ -37,17 +37,22 @@ pub struct EnergyLedger {
     pub projection_work: f64,
     /// Σ (θ − ½)(‖Δv‖²_M + ‖Δq‖²_K) ≥ 0: numerical dissipation of the scheme.
     pub numerical_dissipation: f64,
+    /// Σ over the shifts of a co-moving window of E after − E before (J, ≤ 0 as a rule): the energy the dropped
+    /// rear element carried out of the window ([`crate::MoreauJean::shift`]); 0 on a fixed domain.
+    pub transported: f64,
     /// Largest |per-step residual| seen (J).
     pub max_step_residual: f64,
 }
 
 impl EnergyLedger {
-    /// E_now − E₀ − (load work − viscous + interactions − numerical + projection): zero up to round-off.
+    /// E_now − E₀ − (load work − viscous + interactions − numerical + projection + transported): zero up to
+    /// round-off.
     pub fn residual(&self) -> f64 {
         self.current
             - self.initial
             - (self.load_work - self.viscous_dissipation + self.interaction_work() - self.numerical_dissipation
-                + self.projection_work)
+                + self.projection_work
+                + self.transported)
     }
 
     /// Work of all interaction impulses (J): friction, contact and supports.

@@ -30,6 +30,9 @@ use banded::BandDiagonals;
 use friction::hertz::NEWTON_ITERATIONS;
 use friction::{InteractionKind, InteractionSet, Law};
 
+mod shift;
+pub use shift::ShiftedBlock;
+
 /// The state and scratch of a Moreau–Jean integration; nothing allocates inside [`MoreauJean::step`].
 pub struct MoreauJean {
     theta: f64,

@@ -6,7 +6,8 @@
 //! ```
 //!
 //! and only the decaying ones may appear: Re r < 0 ahead of the load (s → +∞), Re r > 0 behind it. With the two kept
-//! roots r₁, r₂ (σ = r₁ + r₂, π = r₁r₂, real: a conjugate pair or two real roots) every such W satisfies at the end
+//! roots r₁, r₂ (σ = r₁ + r₂, π = r₁r₂, real: a conjugate pair or two real roots; the infinite beam's, from
+//! `fem_beam::reference`) every such W satisfies at the end
 //!
 //! ```text
 //! W″ = −π (W − W_far) + σ W′,     W‴ = −πσ (W − W_far) + (σ² − π) W′,
@@ -16,6 +17,8 @@
 //! roots reach the imaginary axis: no root decays, and no end condition selects the outgoing wave — refused.
 
 use crate::error::{Result, StationaryError};
+use fem_beam::reference::InfiniteBeam;
+use fem_beam::{Beam, FemError, Foundation};
 use num_complex::Complex64;
 
 /// W″ = second·(W − W_far, W′) and W‴ = third·(W − W_far, W′) at one end.
@@ -64,58 +67,28 @@ pub struct FarField {
     pub behind: EndRelation,
 }
 
-/// The four roots of r⁴ + a r² + b r + c = 0 (c > 0) by the Durand–Kerner (Weierstrass) iteration: simultaneous
-/// Newton steps r_i ← r_i − p(r_i)/Π_{j≠i}(r_i − r_j) from four points on the circle of radius max(c^¼, √|a|,
-/// |b|^⅓), to round-off (a fixed number of sweeps well past convergence; measured ≤ 30 on the tracks of the tests).
-fn quartic_roots(a: f64, b: f64, c: f64) -> [Complex64; 4] {
-    let p = |r: Complex64| ((r * r + a) * r + b) * r + c;
-    let radius = c.powf(0.25).max(a.abs().sqrt()).max(b.abs().cbrt());
-    let seed = Complex64::new(0.4, 0.9);
-    let mut roots: [Complex64; 4] = std::array::from_fn(|i| seed.powi(i as i32 + 1) * radius);
-    for _ in 0..DURAND_KERNER_SWEEPS {
-        let mut largest_step = 0.0f64;
-        for i in 0..4 {
-            let mut denominator = Complex64::new(1.0, 0.0);
-            for j in (0..4).filter(|&j| j != i) {
-                denominator *= roots[i] - roots[j];
-            }
-            let step = p(roots[i]) / denominator;
-            roots[i] -= step;
-            largest_step = largest_step.max(step.norm());
-        }
-        if largest_step <= 1e-15 * radius {
-            break;
-        }
-    }
-    roots
-}
-
-/// Sweeps of the Durand–Kerner iteration at most.
-const DURAND_KERNER_SWEEPS: usize = 500;
-
 impl FarField {
-    /// The relations for bending stiffness `ei` (N·m²), mass per length `rho_a` (kg/m), damping `damping` (N·s/m²),
-    /// far-field soil stiffness `stiffness` (N/m², > 0) at speed `speed` (m/s).
-    pub fn new(ei: f64, rho_a: f64, damping: f64, stiffness: f64, speed: f64) -> Result<Self> {
-        let roots = quartic_roots(rho_a * speed * speed / ei, -damping * speed / ei, stiffness / ei);
-        let scale = roots.iter().map(|r| r.norm()).fold(0.0, f64::max);
-        // A root within 1e-9 of the imaginary axis (relative to the largest) neither decays nor grows: the
-        // undamped supercritical case.
-        let floor = 1e-9 * scale;
-        let pick = |decaying: &dyn Fn(&Complex64) -> bool| -> Result<EndRelation> {
-            let kept: Vec<Complex64> = roots.iter().copied().filter(|r| decaying(r) && r.re.abs() > floor).collect();
-            if kept.len() != 2 {
-                return Err(StationaryError::NoRadiationCondition { speed });
-            }
-            let (sigma, pi) = ((kept[0] + kept[1]).re, (kept[0] * kept[1]).re);
-            Ok(EndRelation {
-                second: [-pi, sigma],
-                third: [-pi * sigma, sigma * sigma - pi],
-                decay: kept[0].re.abs().min(kept[1].re.abs()),
-                roots: [kept[0], kept[1]],
-            })
+    /// The relations for `beam` on a far-field soil of damping `damping` (N·s/m²) and stiffness `stiffness` (N/m², > 0)
+    /// at speed `speed` (m/s): the decaying roots of the infinite beam's quartic ([`InfiniteBeam::steady_state`]).
+    pub fn new(beam: &Beam, damping: f64, stiffness: f64, speed: f64) -> Result<Self> {
+        // The roots are the infinite beam's (fem_beam::reference), in ξ = βs: r_s = β r_ξ.
+        let foundation = Foundation::linear(stiffness, damping);
+        let infinite = InfiniteBeam::new(beam, &foundation)?;
+        let state = infinite.steady_state(speed, 1.0).map_err(|e| match e {
+            FemError::NoSteadyState { .. } => StationaryError::NoRadiationCondition { speed },
+            other => other.into(),
+        })?;
+        let roots = state.roots().map(|r| r * infinite.beta());
+        let pick = |kept: [Complex64; 2]| EndRelation {
+            second: [-(kept[0] * kept[1]).re, (kept[0] + kept[1]).re],
+            third: [
+                -((kept[0] * kept[1]) * (kept[0] + kept[1])).re,
+                ((kept[0] + kept[1]).powu(2) - kept[0] * kept[1]).re,
+            ],
+            decay: kept[0].re.abs().min(kept[1].re.abs()),
+            roots: kept,
         };
-        Ok(Self { ahead: pick(&|r| r.re < 0.0)?, behind: pick(&|r| r.re > 0.0)? })
+        Ok(Self { ahead: pick([roots[0], roots[1]]), behind: pick([roots[2], roots[3]]) })
     }
 }
 
@@ -123,22 +96,28 @@ impl FarField {
 mod tests {
     use super::*;
 
+    fn beam() -> Beam {
+        Beam::default()
+    }
+
     /// The kept roots solve the quartic, and a decaying mode satisfies the end relations exactly.
     #[test]
     fn the_relations_hold_for_every_decaying_mode() {
-        let (ei, rho_a, c, k) = (6.4e6, 60.0, 774.0, 250e3);
+        let (rho_a, c, k) = (beam().mass_per_length(), 774.0, 250e3);
+        let ei = beam().bending_stiffness();
         for v in [0.0, 50.0, 200.0, 400.0] {
-            let far = FarField::new(ei, rho_a, c, k, v).unwrap();
-            let roots = quartic_roots(rho_a * v * v / ei, -c * v / ei, k / ei);
-            for r in roots {
-                let p = ((r * r + rho_a * v * v / ei) * r - c * v / ei) * r + k / ei;
-                assert!(p.norm() <= 1e-12 * (k / ei), "v {v}: {p}");
-                let end = if r.re < 0.0 { far.ahead } else { far.behind };
-                // W = e^{rs} at s = 0: W = 1, W′ = r, W″ = r², W‴ = r³.
-                let second = end.second[0] + end.second[1] * r;
-                let third = end.third[0] + end.third[1] * r;
-                assert!((second - r * r).norm() <= 1e-10 * r.norm().powi(2), "v {v}: {second} vs {}", r * r);
-                assert!((third - r * r * r).norm() <= 1e-10 * r.norm().powi(3));
+            let far = FarField::new(&beam(), c, k, v).unwrap();
+            for (end, sign) in [(far.ahead, -1.0), (far.behind, 1.0)] {
+                for r in end.roots {
+                    assert!(r.re * sign > 0.0, "v {v}: {r} decays the wrong way");
+                    let p = ((r * r + rho_a * v * v / ei) * r - c * v / ei) * r + k / ei;
+                    assert!(p.norm() <= 1e-10 * (k / ei), "v {v}: {p}");
+                    // W = e^{rs} at s = 0: W = 1, W′ = r, W″ = r², W‴ = r³.
+                    let second = end.second[0] + end.second[1] * r;
+                    let third = end.third[0] + end.third[1] * r;
+                    assert!((second - r * r).norm() <= 1e-10 * r.norm().powi(2), "v {v}: {second} vs {}", r * r);
+                    assert!((third - r * r * r).norm() <= 1e-10 * r.norm().powi(3));
+                }
             }
         }
     }
@@ -146,10 +125,7 @@ mod tests {
     #[test]
     fn undamped_above_the_critical_speed_no_end_condition_selects_the_wave() {
         // v_cr = (4kEI/ρA²)^¼ = 205.6 m/s for the reference track.
-        assert!(FarField::new(6.4e6, 60.0, 0.0, 250e3, 150.0).is_ok());
-        assert!(matches!(
-            FarField::new(6.4e6, 60.0, 0.0, 250e3, 300.0),
-            Err(StationaryError::NoRadiationCondition { .. })
-        ));
+        assert!(FarField::new(&beam(), 0.0, 250e3, 150.0).is_ok());
+        assert!(matches!(FarField::new(&beam(), 0.0, 250e3, 300.0), Err(StationaryError::NoRadiationCondition { .. })));
     }
 }

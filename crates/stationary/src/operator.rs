@@ -82,7 +82,7 @@ impl MovingFrame {
         problem.validate()?;
         let (beam, foundation, v) = (&problem.beam, &problem.foundation, problem.speed);
         let (ei, rho_a, c) = (beam.bending_stiffness(), beam.mass_per_length(), foundation.damping);
-        let far_field = FarField::new(ei, rho_a, c, foundation.stiffness, v)?;
+        let far_field = FarField::new(beam, c, foundation.stiffness, v)?;
         let (behind, ahead, l) = problem.domain.elements();
         let elements = behind + ahead;
         let n = 2 * (elements + 1);

@@ -7,6 +7,7 @@
 //! window of load positions, histories at sections, W̄, solver statistics), snapshots of the whole beam, and vehicles
 //! ([`vehicle`]: small linear systems with wheels, rolled over rigid ground with a rail profile).
 
+pub mod co_moving;
 pub mod error;
 pub mod foundation_layout;
 pub mod friction_layout;

@@ -45,6 +45,16 @@ impl MovingLoad {
         Self { mesh, free, train, speed, start, cache }
     }
 
+    /// Move the train back by `distance` (m) at every time: the co-moving window's shift, after which the load stands
+    /// an element further back in the shifted window. The cached loads are of the old positions and are dropped.
+    pub fn step_back(&mut self, distance: f64) {
+        self.start -= distance;
+        for (t, loads) in self.cache.get_mut().iter_mut() {
+            *t = f64::NAN;
+            loads.clear();
+        }
+    }
+
     /// Position of the first axle at time t (m), whether or not it is on the beam.
     pub fn position(&self, time: f64) -> f64 {
         self.start + self.speed * time

@@ -1,0 +1,84 @@
+//! Shifting the state along a uniform chain of identical blocks: the co-moving window of a load on an endless
+//! uniform track (docs/theory.md §15). When the load has advanced one element, the window drops its rear element
+//! and gains one at rest ahead — with M, C, K and the fixed interactions' layout translation-invariant, that is
+//! the same system with its state moved by one node: q_i ← q_{i+d}, v_i ← v_{i+d}, the last d DOFs at rest, and in
+//! each block of fixed interactions p_j ← p_{j+r}. The energy the dropped element carried leaves the window and the
+//! new one brings none: E after − E before is booked as [`crate::EnergyLedger::transported`], so the identity
+//! closes with it.
+
+use super::{MoreauJean, energies, spring_energy};
+use crate::error::{NscdError, Result};
+use crate::solver::SolverKind;
+
+/// A block of fixed interactions that shifts with the state: its first index, its length, and how many
+/// interactions one shift moves it by.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ShiftedBlock {
+    /// First interaction of the block.
+    pub start: usize,
+    /// Interactions in the block.
+    pub len: usize,
+    /// Interactions per shift (per element).
+    pub per_shift: usize,
+}
+
+/// Move `values[start..start + len]` down by `by`, the freed tail set to zero.
+fn shift_down(values: &mut [f64], start: usize, len: usize, by: usize) {
+    let block = &mut values[start..start + len];
+    let by = by.min(len);
+    block.copy_within(by.., 0);
+    block[len - by..].iter_mut().for_each(|x| *x = 0.0);
+}
+
+impl MoreauJean {
+    /// Shift the state down by `dofs` DOFs (the rear node's, dropped; the new front node at rest) and each block of
+    /// fixed interactions by its `per_shift`, between steps. Refused with moving interactions (their rows follow
+    /// positions of their own) and with the homotopy solver (it keeps a path that the shift would break).
+    pub fn shift(&mut self, dofs: usize, blocks: &[ShiftedBlock]) -> Result<()> {
+        if self.problem.has_moving() || self.solver.kind() == SolverKind::Homotopy {
+            return Err(NscdError::Unsupported {
+                solver: self.solver.kind(),
+                reason: "a co-moving window shifts fixed interactions only, solved by projection, the interior point \
+                         or clarabel",
+            });
+        }
+        let n = self.q.len();
+        let before = self.energy.current;
+        for x in [&mut self.q, &mut self.v, &mut self.v_prev] {
+            shift_down(x, 0, n, dofs);
+        }
+        for block in blocks {
+            shift_down(&mut self.p, block.start, block.len, block.per_shift);
+            shift_down(&mut self.u, block.start, block.len, block.per_shift);
+        }
+        self.stiffness.mul_vec(&self.q, &mut self.kq);
+        self.stiffness.mul_vec(&self.v, &mut self.kv);
+        self.mass.mul_vec(&self.v, &mut self.mv);
+        if self.damped {
+            self.damping.mul_vec(&self.v, &mut self.cv);
+        }
+        let (kinetic, strain) = energies(&self.v, &self.mv, &self.q, &self.kq);
+        let e = &mut self.energy;
+        (e.kinetic, e.strain, e.current) = (kinetic, strain, kinetic + strain);
+        e.transported += e.current - before;
+        e.spring_energy = spring_energy(&self.problem, &self.q, None);
+        if self.problem.is_varying() {
+            self.problem.update(self.time, &self.q, &self.v);
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::shift_down;
+
+    #[test]
+    fn a_block_moves_down_and_its_tail_comes_to_rest() {
+        let mut x = [1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0];
+        shift_down(&mut x, 2, 4, 1);
+        assert_eq!(x, [1.0, 2.0, 4.0, 5.0, 6.0, 0.0, 7.0]);
+        shift_down(&mut x, 0, 7, 9);
+        assert_eq!(x, [0.0; 7]);
+    }
+}

@@ -1,0 +1,202 @@
+//! A co-moving window (docs/theory.md §15): the load crosses an endless uniform track of any length at a cost per
+//! step independent of that length. The model is a short free-ended window of the track (its soil, friction and
+//! absorbing zones); the load advances through it from `load_at`, and each time it has advanced one element the
+//! state shifts back by one node ([`nscd::MoreauJean::shift`]): the rear element leaves with its energy (booked as
+//! transported), a fresh element at rest in the settled state enters ahead, and the load steps back by an element.
+//! Every matrix and every interaction's layout is translation-invariant, so the shifted system is the same system;
+//! nothing but the window is ever stored. The rear end is free, the front end clamped in the settled state: the
+//! track ahead is at rest, and the element that enters ahead joins the clamped node at rest, so a shift adds no
+//! energy there (a free front end took in a step of the wave at every shift, and the window blew up within 50 m).
+//! Absorbing zones (graded foundation damping) at both ends keep what leaves from coming back.
+//!
+//! The run reports the wave in the frame, W(s) at the nodes with s = x − x_load, how much it changed over each
+//! window length travelled (the stationary state's convergence measure), the extremes over the window's middle
+//! (between its absorbing zones) and the energy ledger.
+
+use crate::error::{Result, invalid};
+use crate::moving_load::MovingLoad;
+use crate::placed::{PlacedInteractions, SectionKind};
+use crate::simulation::{InitialState, RunSettings, Simulation};
+use crate::system::beam_system;
+use fem_beam::{BeamModel, Support};
+use nscd::forcing::{Constant, WithConstant};
+use nscd::solver::SolverSettings;
+use nscd::stepper::{Integration, MoreauJean, ShiftedBlock};
+use nscd::{EnergyLedger, Forcing, SolverKind};
+use std::time::Instant;
+
+/// What a co-moving run is asked for.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CoMovingSettings {
+    /// Where the load stands in the window at the start and after every shift (m from the window's rear end).
+    pub load_at: f64,
+    /// The distance the load travels (m) > 0: any length of track.
+    pub track_length: f64,
+    /// The window's middle, between its absorbing zones (m from its rear end): where extremes are taken.
+    pub middle: (f64, f64),
+}
+
+/// The most steps of a co-moving run (checked before anything is allocated).
+pub const MAX_STEPS: usize = 50_000_000;
+
+/// What a co-moving run gives.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CoMovingResult {
+    /// The wave in the frame at the end: (s, W) at the window's nodes, s = x − x_load (m), W from the settled rail (m).
+    pub wave: Vec<(f64, f64)>,
+    /// After each window length travelled: (distance travelled, max |W − W a window length earlier| over the
+    /// middle's nodes relative to the wave's peak there) — the stationary state's convergence measure.
+    pub changes: Vec<(f64, f64)>,
+    /// Largest downward and upward deflection over the middle's nodes and the whole run (m, magnitudes).
+    pub max_downward: f64,
+    /// Upward (m).
+    pub max_upward: f64,
+    /// The energy ledger, with the energy carried out of the window as `transported`.
+    pub energy: EnergyLedger,
+    /// Steps taken, shifts made.
+    pub steps: usize,
+    /// Shifts of the window.
+    pub shifts: usize,
+    /// The solver that ran, if any.
+    pub solver: Option<SolverKind>,
+    /// Wall time of the loop (s).
+    pub wall_time: f64,
+}
+
+/// The fixed interactions as blocks that shift with the state: each kind's sections must repeat every element.
+fn blocks(model: &BeamModel, placed: &PlacedInteractions) -> Result<Vec<ShiftedBlock>> {
+    let l = model.mesh().element_length();
+    let (kinds, x) = (placed.kinds(), placed.positions());
+    let mut blocks = Vec::new();
+    let mut start = 0;
+    while start < kinds.len() {
+        let kind = kinds[start];
+        let len = kinds[start..].iter().take_while(|&&k| k == kind).count();
+        let per_shift = x[start..start + len].iter().filter(|&&p| p < x[start] + l - 1e-9 * l).count();
+        let repeats = (start..start + len - per_shift).all(|j| (x[j + per_shift] - x[j] - l).abs() <= 1e-9 * l);
+        if kind == SectionKind::Device || !repeats {
+            return Err(invalid(
+                "co_moving",
+                x[start],
+                "takes friction distributed along the track and nonlinear soils, which repeat every element; \
+                 devices at chosen places do not travel with a window",
+            ));
+        }
+        blocks.push(ShiftedBlock { start, len, per_shift });
+        start += len;
+    }
+    Ok(blocks)
+}
+
+/// Run the load of `settings` (moving forces: one or a train; not vehicles) across `track` m of endless track
+/// through the window `model` (free ends, uniform mesh) with its `placed` interactions.
+pub fn run_co_moving(
+    model: &BeamModel,
+    placed: &PlacedInteractions,
+    settings: &RunSettings,
+    window: &CoMovingSettings,
+) -> Result<CoMovingResult> {
+    let mesh = *model.mesh();
+    let supports = model.supports();
+    if supports.left != Support::Free || supports.right != Support::Clamped {
+        return Err(invalid(
+            "supports",
+            0.0,
+            "a co-moving window has a free rear end and a clamped front end (the track ahead at rest)",
+        ));
+    }
+    if settings.moving.load.vehicles().is_some() {
+        return Err(invalid("vehicle", 0.0, "a co-moving window carries moving forces, not vehicles (yet)"));
+    }
+    let l = mesh.element_length();
+    let advance = settings.integration.load_advance;
+    let per_element = (l / advance).round();
+    if (per_element * advance - l).abs() > 1e-9 * l {
+        return Err(invalid("load_advance", advance, format!("must divide the element length {l} m")));
+    }
+    let train_length = settings.moving.load.length();
+    if !(window.load_at >= train_length && window.load_at + l <= mesh.length) {
+        return Err(invalid(
+            "co_moving.load_at",
+            window.load_at,
+            format!("must leave the train ({train_length} m) and an element inside the {} m window", mesh.length),
+        ));
+    }
+    let steps = (window.track_length / advance).round();
+    if !(window.track_length.is_finite() && window.track_length > 0.0 && steps <= MAX_STEPS as f64) {
+        return Err(invalid(
+            "co_moving.track_length",
+            window.track_length,
+            format!("must be > 0 and take at most {MAX_STEPS} steps of {advance} m"),
+        ));
+    }
+    let blocks = blocks(model, placed)?;
+    let start = RunSettings {
+        moving: crate::simulation::MovingLoadSettings {
+            initial: InitialState::Static { position: window.load_at },
+            ..settings.moving.clone()
+        },
+        ..settings.clone()
+    };
+    let (q0, v0) = Simulation::new(model, placed, &start)?.initial_state()?;
+    let (speed, theta) = (settings.moving.speed, settings.integration.theta);
+    let h = advance / speed;
+    let kind = crate::simulation::resolve_solver(settings.integration.solver.kind, model, placed, (h, theta));
+    let solver = SolverSettings { kind, ..settings.integration.solver };
+    let integration = Integration { theta, step: h };
+    let fixed = placed.interactions().clone();
+    let mut stepper = MoreauJean::build(&beam_system(model), fixed, integration, &solver, q0, v0)?;
+    let mut load = MovingLoad::train(mesh, model.dofs(), settings.moving.load.train(), speed, window.load_at);
+    let preload = Constant { force: placed.preload().to_vec() };
+    let dofs = model.dofs();
+    let nodes: Vec<(usize, f64)> =
+        (0..mesh.nodes()).filter_map(|i| Some((dofs.free_index(2 * i)?, mesh.node_x(i)))).collect();
+    let middle: Vec<&(usize, f64)> =
+        nodes.iter().filter(|(_, x)| (window.middle.0..=window.middle.1).contains(x)).collect();
+    let snapshot = |q: &[f64]| -> Vec<f64> { middle.iter().map(|(d, _)| q[*d]).collect() };
+    let shifts_per_window = ((window.middle.1 - window.middle.0) / l).round().max(1.0) as usize;
+    let mut previous = snapshot(stepper.q());
+    let (mut max_downward, mut max_upward) = (0.0f64, 0.0f64);
+    let mut changes = Vec::new();
+    let mut shifts = 0;
+    let clock = Instant::now();
+    for k in 1..=steps as usize {
+        {
+            let forcing: &dyn Forcing = &load;
+            let preloaded = WithConstant { forcing, constant: &preload };
+            let forcing: &dyn Forcing = if preload.force.is_empty() { &load } else { &preloaded };
+            stepper.step(forcing)?;
+        }
+        for &&(d, _) in &middle {
+            let w = stepper.q()[d];
+            (max_downward, max_upward) = (max_downward.max(-w), max_upward.max(w));
+        }
+        if k % per_element as usize == 0 {
+            stepper.shift(2, &blocks)?;
+            load.step_back(l);
+            shifts += 1;
+            if shifts % shifts_per_window == 0 {
+                let now = snapshot(stepper.q());
+                let peak = now.iter().fold(0.0f64, |m, w| m.max(w.abs())).max(f64::MIN_POSITIVE);
+                let change = now.iter().zip(&previous).fold(0.0f64, |m, (a, b)| m.max((a - b).abs())) / peak;
+                changes.push((k as f64 * advance, change));
+                previous = now;
+            }
+        }
+    }
+    let wall_time = clock.elapsed().as_secs_f64();
+    let x_load = load.position(stepper.time);
+    let wave = nodes.iter().map(|&(d, x)| (x - x_load, stepper.q()[d])).collect();
+    let solver = (!placed.is_empty()).then(|| stepper.solver_kind());
+    Ok(CoMovingResult {
+        wave,
+        changes,
+        max_downward,
+        max_upward,
+        energy: stepper.energy,
+        steps: stepper.steps,
+        shifts,
+        solver,
+        wall_time,
+    })
+}
