@@ -2,6 +2,7 @@
 
 mod analytic;
 mod check;
+mod co_moving;
 mod files;
 mod init;
 mod interrupt;

@@ -40,6 +40,10 @@ pub struct RunArgs {
     /// No progress bar.
     #[arg(long)]
     quiet: bool,
+    /// Run through a window that travels with the load over any length of track (`[co_moving]` with its defaults:
+    /// a 120 m window over 1000 m) instead of across the finite beam.
+    #[arg(long)]
+    co_moving: bool,
 }
 
 /// Execute `frictrack run`.
@@ -52,6 +56,12 @@ pub fn run(args: &RunArgs) -> Result<()> {
     if !args.snapshot_at_load.is_empty() {
         scenario.output.snapshot_times.clear();
         scenario.output.snapshot_load_positions = args.snapshot_at_load.clone();
+    }
+    if args.co_moving && scenario.co_moving.is_none() {
+        scenario.co_moving = Some(study::scenario::CoMovingSection::default());
+    }
+    if let Some(section) = scenario.co_moving.clone() {
+        return crate::co_moving::run(&scenario, &section, args.format, args.out.as_deref());
     }
     if args.out.is_some() && scenario.output.sections.is_empty() {
         scenario.output.sections = vec![scenario.mesh.length / 2.0];

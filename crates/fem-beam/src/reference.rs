@@ -239,6 +239,13 @@ impl SteadyState {
         self.speed
     }
 
+    /// The slowest decay rates of the wave ahead of and behind the load (1/m): β·min |Re r| over each pair of roots,
+    /// so that the wave falls to a fraction ε of its size within ln(1/ε)/rate of the load.
+    pub fn decay_rates(&self) -> (f64, f64) {
+        let slowest = |pair: &[(Complex64, Complex64); 2]| self.beta * pair[0].0.re.abs().min(pair[1].0.re.abs());
+        (slowest(&self.ahead), slowest(&self.behind))
+    }
+
     /// The roots r of the characteristic quartic (ahead pair first), for reports and cross-checks.
     pub fn roots(&self) -> [Complex64; 4] {
         [self.ahead[0].0, self.ahead[1].0, self.behind[0].0, self.behind[1].0]

@@ -8,6 +8,7 @@
 //! - [`track_profile`]: a sample of a random rail profile with its periodogram against the target spectrum.
 
 pub mod axis_grid;
+pub mod co_moving_output;
 pub mod cost;
 pub mod diagnostics;
 pub mod error;

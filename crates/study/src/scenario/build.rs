@@ -101,6 +101,13 @@ impl Scenario {
         }
     }
 
+    /// Everything placed on `model`: the friction sections, then the soil's (a window of the track, or the beam).
+    pub(crate) fn placed_on(&self, model: &BeamModel) -> Result<PlacedInteractions> {
+        let mut interactions = self.interactions(model)?;
+        interactions.extend(self.foundation_sections(model)?);
+        Ok(interactions)
+    }
+
     /// The sections of a nonlinear soil (none for a linear one, which K holds whole).
     fn foundation_sections(&self, model: &BeamModel) -> Result<PlacedInteractions> {
         let f = &self.foundation;
@@ -123,8 +130,7 @@ impl Scenario {
     /// Build the model, contact set and run settings, checking every value on the way.
     pub fn build(&self) -> Result<Case> {
         let model = self.model()?;
-        let mut interactions = self.interactions(&model)?;
-        interactions.extend(self.foundation_sections(&model)?);
+        let interactions = self.placed_on(&model)?;
         finite_non_negative("load.force", self.load.force, "N")?;
         finite_positive("load.speed", self.load.speed, "m/s")?;
         if let Some([a, b]) = self.output.extremes_window {

@@ -58,6 +58,9 @@ pub struct Scenario {
     /// Speed range of sweeps and studies; without it, a range around the case's critical speed
     /// ([`crate::speeds::SpeedScale`]).
     pub sweep: Option<SweepSection>,
+    /// Run through a co-moving window instead of across the finite beam (`frictrack run`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub co_moving: Option<CoMovingSection>,
     /// What is recorded.
     pub output: OutputSection,
 }

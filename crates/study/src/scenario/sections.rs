@@ -426,3 +426,27 @@ impl OutputSection {
         self.extremes_window.map_or((length / 3.0, 2.0 * length / 3.0), |[a, b]| (a, b))
     }
 }
+
+/// `[co_moving]`: the load crosses `track_length` m of endless track through a window of `window` m that travels
+/// with it (docs/theory.md §15), the load at `load_at` m from the window's rear end, absorbing zones of `zones` m at
+/// both ends; the mesh's element length and the scenario's soil and friction.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct CoMovingSection {
+    /// Window length (m). Default 120.
+    pub window: f64,
+    /// Track travelled (m). Default 1000.
+    pub track_length: f64,
+    /// The load's place in the window (m from its rear end); default the middle.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub load_at: Option<f64>,
+    /// Absorbing zone at each end (m, damping graded up to c_cr); default a quarter of the window.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub zones: Option<f64>,
+}
+
+impl Default for CoMovingSection {
+    fn default() -> Self {
+        Self { window: 120.0, track_length: 1000.0, load_at: None, zones: None }
+    }
+}

@@ -1,0 +1,80 @@
+//! `frictrack run` through a co-moving window (`[co_moving]` or `--co-moving`): the load crosses any length of
+//! endless track at a cost per step set by the window alone (docs/theory.md §15).
+
+use crate::Format;
+use crate::files::{check_output_file, prepare_output_folder, write_atomically};
+use anyhow::Result;
+use study::Scenario;
+use study::co_moving_output::CoMovingSummary;
+use study::scenario::CoMovingSection;
+
+/// Run `scenario` through its window and print or write the result.
+pub fn run(
+    scenario: &Scenario,
+    section: &CoMovingSection,
+    format: Format,
+    out: Option<&std::path::Path>,
+) -> Result<()> {
+    if let Some(folder) = out {
+        prepare_output_folder("--out", folder)?;
+        for name in ["co-moving.json", "wave.csv"] {
+            check_output_file("--out", &folder.join(name))?;
+        }
+    }
+    let (summary, result) = study::co_moving_output::run(scenario, section)?;
+    match format {
+        Format::Json => println!("{}", serde_json::to_string_pretty(&summary)?),
+        Format::Text => print_text(&summary),
+    }
+    if let Some(folder) = out {
+        write_atomically(&folder.join("co-moving.json"), serde_json::to_string_pretty(&summary)?.as_bytes())?;
+        let mut csv = String::from("s_m,deflection_m\n");
+        for (s, w) in &result.wave {
+            csv.push_str(&format!("{s},{w}\n"));
+        }
+        write_atomically(&folder.join("wave.csv"), csv.as_bytes())?;
+        if format == Format::Text {
+            println!("  wrote {}/co-moving.json and wave.csv", folder.display());
+        }
+    }
+    Ok(())
+}
+
+fn print_text(s: &CoMovingSummary) {
+    let title = if s.title.is_empty() { String::new() } else { format!(" — {}", s.title) };
+    println!(
+        "frictrack run{title}, co-moving window: load {:.1} kN at {:.2} m/s over {:.0} m of track",
+        s.load / 1e3,
+        s.speed,
+        s.track_length
+    );
+    println!(
+        "  window {:.1} m of {:.3} m elements, the load {:.1} m from its rear, absorbing zones {:.1} m at both ends",
+        s.window, s.element_length, s.load_at, s.zones
+    );
+    println!(
+        "  the wave in the frame at the end: max downward {:.3} mm at s = {:.2} m (s = x − x_load)",
+        s.wave_max_downward_deflection * 1e3,
+        s.wave_max_downward_position + 0.0
+    );
+    println!(
+        "  over the run between the zones: max downward {:.3} mm, max upward {:.3} mm",
+        s.max_downward_deflection * 1e3,
+        s.max_upward_deflection * 1e3
+    );
+    if let Some(&(distance, change)) = s.changes.last() {
+        let first = s.changes.first().map_or(change, |c| c.1);
+        println!(
+            "  change of the wave per window length travelled: {first:.1e} after the first, {change:.1e} at {distance:.0} m{}",
+            if change <= 1e-3 { " (stationary)" } else { " (still settling: a longer track_length)" }
+        );
+    }
+    println!(
+        "  energy (J): load work {:.4e}, friction {:.4e}, viscous {:.4e}, carried out behind {:.4e}, balance residual {:.2e}",
+        s.load_work, s.friction_work, s.viscous_dissipation, s.transported, s.energy_residual
+    );
+    println!(
+        "  {} steps, {} shifts of the window, solver {}; wall time {:.3} s",
+        s.steps, s.shifts, s.solver, s.wall_time
+    );
+}

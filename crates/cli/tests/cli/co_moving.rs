@@ -1,0 +1,30 @@
+//! `frictrack run --co-moving` and `[co_moving]`: the load over any length of track through a travelling window.
+
+use super::{frictrack, json, temporary_folder};
+
+#[test]
+fn a_co_moving_run_settles_on_the_analytic_wave_and_refuses_a_window_too_short() {
+    let folder = temporary_folder("co-moving");
+    let file = folder.join("damped.toml");
+    std::fs::write(
+        &file,
+        "[foundation]\ndamping_ratio = 0.05\n[load]\nspeed = 100.0\n[co_moving]\ntrack_length = 600.0\n",
+    )
+    .unwrap();
+    let path = file.to_str().unwrap();
+    let run = json(&frictrack(&["run", path, "--format", "json"]));
+    let closed = json(&frictrack(&["analytic", path, "--speed", "100", "--format", "json"]));
+    let (w, w0) =
+        (run["wave_max_downward_deflection"].as_f64().unwrap(), closed["max_downward_deflection"].as_f64().unwrap());
+    // 1 m elements and nodes only: the trough lies 0.07 m behind the load, between nodes (1e-3 of the peak).
+    assert!((w - w0).abs() <= 2e-3 * w0, "{w} vs {w0}");
+    assert_eq!(run["steps"], 6000);
+    let last = run["changes"].as_array().unwrap().last().unwrap()[1].as_f64().unwrap();
+    assert!(last < 1e-5, "{last}");
+    assert!(run["energy_residual"].as_f64().unwrap().abs() <= 1e-9 * run["load_work"].as_f64().unwrap());
+    // Above the critical speed the wave reaches further than a 120 m window: refused with the length it needs.
+    let out = frictrack(&["run", "--co-moving", "--damping-ratio", "0.05", "--speed", "250"]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains("co_moving.window") && err.contains("too short for the wave"), "{err}");
+}

@@ -1,0 +1,153 @@
+//! `frictrack run` through a co-moving window (`[co_moving]`, `--co-moving`; docs/theory.md §15): the window built
+//! from the scenario's rail, soil, friction and element length, checked against the wave it must hold, run, and
+//! summarised. Deflections (m, from the settled rail, magnitudes for peaks), positions s = x − x_load (m), energies
+//! (J).
+
+use crate::error::{Result, invalid};
+use crate::scenario::{CoMovingSection, Scenario};
+use fem_beam::reference::InfiniteBeam;
+use fem_beam::{AbsorbingZones, BeamModel, Foundation, Mesh, Support, Supports};
+use serde::Serialize;
+use track::co_moving::{CoMovingResult, CoMovingSettings, run_co_moving};
+
+/// Where the wave must have fallen to, relative to its peak, before it reaches a window's absorbing zone: 1 %.
+pub const WINDOW_DECAY: f64 = 0.01;
+
+/// A co-moving run, summarised.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct CoMovingSummary {
+    /// The scenario's title.
+    pub title: String,
+    /// v (m/s).
+    pub speed: f64,
+    /// F (N).
+    pub load: f64,
+    /// Window length, track travelled, the load's place in the window, absorbing zones, element length (m).
+    pub window: f64,
+    /// Track travelled (m).
+    pub track_length: f64,
+    /// The load's place in the window (m from its rear).
+    pub load_at: f64,
+    /// Absorbing zone at each end (m).
+    pub zones: f64,
+    /// Element length (m).
+    pub element_length: f64,
+    /// Steps and shifts.
+    pub steps: usize,
+    /// Shifts of the window.
+    pub shifts: usize,
+    /// Largest downward and upward deflection between the absorbing zones over the run (m).
+    pub max_downward_deflection: f64,
+    /// Upward (m).
+    pub max_upward_deflection: f64,
+    /// The wave in the frame at the end: its largest downward deflection (m) and where (s, m).
+    pub wave_max_downward_deflection: f64,
+    /// s (m).
+    pub wave_max_downward_position: f64,
+    /// After each window length: (distance travelled m, max change of the wave / its peak).
+    pub changes: Vec<(f64, f64)>,
+    /// The ledger: load work, friction work, viscous dissipation, energy carried out of the window, residual (J).
+    pub load_work: f64,
+    /// Friction work (J, ≤ 0).
+    pub friction_work: f64,
+    /// Viscous dissipation (J).
+    pub viscous_dissipation: f64,
+    /// Energy the window carried out behind (J).
+    pub transported: f64,
+    /// The energy identity's residual (J).
+    pub energy_residual: f64,
+    /// The solver that ran ("none" without interactions).
+    pub solver: &'static str,
+    /// Wall time of the loop (s).
+    pub wall_time: f64,
+}
+
+/// The window of `scenario`'s track and its settings: `window` m in the mesh's element length, free rear, clamped
+/// front, absorbing zones; refused where the linear wave would not have fallen to [`WINDOW_DECAY`] of its peak
+/// between the load and a zone (the window too short for the wave).
+pub fn window(scenario: &Scenario, section: &CoMovingSection) -> Result<(BeamModel, CoMovingSettings)> {
+    let l = scenario.mesh.length / scenario.mesh.elements.max(1) as f64;
+    let elements = (section.window / l).round();
+    if !(section.window.is_finite() && elements >= 8.0 && elements <= 1e6) {
+        return Err(invalid("co_moving.window", section.window, format!("must hold 8 to 1e6 elements of {l} m")));
+    }
+    let model = scenario.model()?;
+    let foundation: Foundation = *model.foundation();
+    let length = elements * l;
+    let zones = section.zones.unwrap_or(length / 4.0);
+    let load_at = section.load_at.unwrap_or(length / 2.0);
+    if !(zones.is_finite() && zones >= 0.0 && zones < load_at && load_at < length - zones) {
+        return Err(invalid(
+            "co_moving.load_at",
+            load_at,
+            format!("must lie between the absorbing zones ({zones} m at each end of the {length} m window)"),
+        ));
+    }
+    // The wave must fade before the zones: e^{−Re r·d} ≤ 1 % over the distance d from the load to each zone.
+    // (Undamped at or above the critical speed no linear wave decays; friction alone may hold it: not checked.)
+    if foundation.stiffness > 0.0
+        && let Ok(state) =
+            InfiniteBeam::new(model.beam(), &foundation).and_then(|inf| inf.steady_state(scenario.load.speed, 1.0))
+    {
+        let (rate_ahead, rate_behind) = state.decay_rates();
+        let (ahead, behind) = (-WINDOW_DECAY.ln() / rate_ahead, -WINDOW_DECAY.ln() / rate_behind);
+        if load_at - zones < behind || length - zones - load_at < ahead {
+            return Err(invalid(
+                "co_moving.window",
+                section.window,
+                format!(
+                    "is too short for the wave at {} m/s: it falls to 1 % only {behind:.1} m behind and {ahead:.1} m \
+                     ahead of the load, so the window needs about {:.0} m with its zones of {zones} m (or more \
+                     foundation damping)",
+                    scenario.load.speed,
+                    behind + ahead + 2.0 * zones
+                ),
+            ));
+        }
+    }
+    let mesh = Mesh::new(length, elements as usize)?;
+    let peak_damping = AbsorbingZones { length: zones, peak_damping: foundation.critical_damping(model.beam()) };
+    let damping = match zones > 0.0 {
+        true => peak_damping.element_damping(&mesh, foundation.damping)?,
+        false => vec![foundation.damping; mesh.elements],
+    };
+    let supports = Supports { left: Support::Free, right: Support::Clamped };
+    let window = BeamModel::with_element_damping(*model.beam(), foundation, mesh, supports, damping)?;
+    let settings = CoMovingSettings { load_at, track_length: section.track_length, middle: (zones, length - zones) };
+    Ok((window, settings))
+}
+
+/// Run `scenario` through its co-moving window (`section`).
+pub fn run(scenario: &Scenario, section: &CoMovingSection) -> Result<(CoMovingSummary, CoMovingResult)> {
+    let (model, settings) = window(scenario, section)?;
+    let placed = scenario.placed_on(&model)?;
+    let run_settings = scenario.run_settings(scenario.load.speed)?;
+    let result = run_co_moving(&model, &placed, &run_settings, &settings)?;
+    let (at, peak) = result.wave.iter().fold((0.0, 0.0f64), |(s0, m), &(s, w)| if -w > m { (s, -w) } else { (s0, m) });
+    let e = &result.energy;
+    let summary = CoMovingSummary {
+        title: scenario.title.clone(),
+        speed: scenario.load.speed,
+        load: scenario.load.force,
+        window: model.mesh().length,
+        track_length: settings.track_length,
+        load_at: settings.load_at,
+        zones: settings.middle.0,
+        element_length: model.mesh().element_length(),
+        steps: result.steps,
+        shifts: result.shifts,
+        max_downward_deflection: result.max_downward,
+        max_upward_deflection: result.max_upward,
+        wave_max_downward_deflection: peak,
+        wave_max_downward_position: at,
+        changes: result.changes.clone(),
+        load_work: e.load_work,
+        friction_work: e.friction_work,
+        viscous_dissipation: e.viscous_dissipation,
+        transported: e.transported,
+        energy_residual: e.residual(),
+        solver: result.solver.map_or("none", |k| k.name()),
+        wall_time: result.wall_time,
+    };
+    Ok((summary, result))
+}
