@@ -68,7 +68,7 @@ pub struct CoMovingSummary {
 pub fn window(scenario: &Scenario, section: &CoMovingSection) -> Result<(BeamModel, CoMovingSettings)> {
     let l = scenario.mesh.length / scenario.mesh.elements.max(1) as f64;
     let elements = (section.window / l).round();
-    if !(section.window.is_finite() && elements >= 8.0 && elements <= 1e6) {
+    if !(section.window.is_finite() && (8.0..=1e6).contains(&elements)) {
         return Err(invalid("co_moving.window", section.window, format!("must hold 8 to 1e6 elements of {l} m")));
     }
     let model = scenario.model()?;
