@@ -70,5 +70,34 @@ fn soil_runs(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, sweeps, soil_runs);
+/// A co-moving window of 120 m (0.25 m elements, 30 m zones) carrying the load at 100 m/s over 250 m and over
+/// 1000 m of track (5 000 and 20 000 steps): the cost per step is the window's, whatever the track's length.
+fn co_moving(c: &mut Criterion) {
+    use fem_beam::{AbsorbingZones, Mesh, Support, Supports};
+    use track::co_moving::{CoMovingSettings, run_co_moving};
+    let case = uic60_on_soft_soil();
+    let foundation = case.foundation.with_damping_ratio(0.05, &case.beam).unwrap();
+    let mesh = Mesh::new(120.0, 480).unwrap();
+    let zones = AbsorbingZones { length: 30.0, peak_damping: foundation.critical_damping(&case.beam) };
+    let damping = zones.element_damping(&mesh, foundation.damping).unwrap();
+    let supports = Supports { left: Support::Free, right: Support::Clamped };
+    let model = BeamModel::with_element_damping(case.beam, foundation, mesh, supports, damping).unwrap();
+    let ballast = track::DistributedFriction::new(2e3).interactions(&model).unwrap();
+    let mut settings = RunSettings::default();
+    settings.moving.speed = 100.0;
+    settings.integration.load_advance = 0.05;
+    let mut group = c.benchmark_group("co_moving_window");
+    group.sample_size(10).warm_up_time(Duration::from_secs(1)).measurement_time(Duration::from_secs(10));
+    for (name, placed) in [("linear", PlacedInteractions::new()), ("ballast_2kN_per_m", ballast)] {
+        for track in [250.0, 1000.0] {
+            let window = CoMovingSettings { load_at: 60.0, track_length: track, middle: (30.0, 90.0) };
+            group.bench_function(format!("{name}_{track}m"), |b| {
+                b.iter(|| run_co_moving(&model, black_box(&placed), &settings, &window).unwrap())
+            });
+        }
+    }
+    group.finish();
+}
+
+criterion_group!(benches, sweeps, soil_runs, co_moving);
 criterion_main!(benches);
