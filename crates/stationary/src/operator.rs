@@ -8,8 +8,8 @@
 //!
 //! give a banded non-symmetric matrix A (the convective term −c_f v∫φW′ is skew), closed at both ends by the
 //! transparent relations of [`crate::far_field`] substituted into the boundary terms (a nonlinear soil without
-//! self-weight has free ends instead: its far field rests on the soil without force, or lifts straight off it). The soil's unilateral part
-//! (k_c − k_t)⟨−W⟩₊ acts at four Gauss sections per element, as in a run on the finite track, so that a soil that
+//! self-weight has free ends instead: its far field rests on the soil without force, or lifts straight off it).
+//! The soil's unilateral part (k_c − k_t)⟨−W⟩₊ acts at four Gauss sections per element, as in a run on the finite track, so that a soil that
 //! never lifts off is the linear one to round-off. The load −F sits on the node at s = 0; a nonlinear soil with
 //! self-weight carries −ρA·g everywhere.
 
@@ -18,20 +18,6 @@ use crate::far_field::{EndRelation, FarField};
 use crate::problem::{GRAVITY, StationaryProblem};
 use banded::general::{GeneralBanded, GeneralLu};
 use fem_beam::element::hermite;
-
-/// The four-point Gauss–Legendre rule on [0, 1].
-pub(crate) const GAUSS: [(f64, f64); 4] = {
-    const INNER: f64 = 0.339_981_043_584_856_26;
-    const OUTER: f64 = 0.861_136_311_594_052_6;
-    const W_INNER: f64 = 0.652_145_154_862_546_1;
-    const W_OUTER: f64 = 0.347_854_845_137_453_85;
-    [
-        (0.5 * (1.0 - OUTER), 0.5 * W_OUTER),
-        (0.5 * (1.0 - INNER), 0.5 * W_INNER),
-        (0.5 * (1.0 + INNER), 0.5 * W_INNER),
-        (0.5 * (1.0 + OUTER), 0.5 * W_OUTER),
-    ]
-};
 
 /// One soil section: its element, its row Ψ(ξ) over the element's four DOFs, its spring (N/m) and place s (m).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -119,7 +105,7 @@ impl MovingFrame {
         let sections = match problem.is_nonlinear() {
             true => (0..elements)
                 .flat_map(|e| {
-                    GAUSS.iter().map(move |&(xi, w)| SoilSection {
+                    hermite::GAUSS_4.iter().map(move |&(xi, w)| SoilSection {
                         element: e,
                         row: hermite::shape(xi, l),
                         stiffness: unilateral * w * l,
@@ -162,7 +148,7 @@ fn element_matrix(ei: f64, rho_v2: f64, c_v: f64, k_t: f64, l: f64) -> [[f64; 4]
             *value = kb[i][j] + mf[i][j];
         }
     }
-    for &(xi, w) in &GAUSS {
+    for &(xi, w) in &hermite::GAUSS_4 {
         let (n, dn) = (hermite::shape(xi, l), hermite::shape_dx(xi, l));
         for i in 0..4 {
             for j in 0..4 {

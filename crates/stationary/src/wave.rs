@@ -3,7 +3,7 @@
 //! deflection left behind, and the power balance of the steady state — the load's power F v W′(0) against the
 //! dashpots' c_f v² ∫W′² ds (a conservative soil, linear or not, dissipates nothing over a cycle).
 
-use crate::operator::{GAUSS, MovingFrame};
+use crate::operator::MovingFrame;
 use crate::problem::StationaryProblem;
 use crate::solve::Convergence;
 use fem_beam::element::hermite;
@@ -79,7 +79,7 @@ impl StationaryWave {
             moment[e + 1] += ei * curvature(1.0);
             count[e] += 1.0;
             count[e + 1] += 1.0;
-            for &(xi, weight) in &GAUSS {
+            for &(xi, weight) in &hermite::GAUSS_4 {
                 let dw: f64 = hermite::shape_dx(xi, l).iter().zip(q).map(|(n, q)| n * q).sum();
                 viscous += weight * l * dw * dw;
             }

@@ -1,6 +1,6 @@
 //! A co-moving window (docs/theory.md §15): the load crosses an endless uniform track of any length at a cost per
-//! step independent of that length. The model is a short free-ended window of the track (its soil, friction and
-//! absorbing zones); the load advances through it from `load_at`, and each time it has advanced one element the
+//! step independent of that length. The model is a short window of the track (its soil, friction and absorbing
+//! zones); the load advances through it from `load_at`, and each time it has advanced one element the
 //! state shifts back by one node ([`nscd::MoreauJean::shift`]): the rear element leaves with its energy (booked as
 //! transported), a fresh element at rest in the settled state enters ahead, and the load steps back by an element.
 //! Every matrix and every interaction's layout is translation-invariant, so the shifted system is the same system;
@@ -88,8 +88,9 @@ fn blocks(model: &BeamModel, placed: &PlacedInteractions) -> Result<Vec<ShiftedB
     Ok(blocks)
 }
 
-/// Run the load of `settings` (moving forces: one or a train; not vehicles) across `track` m of endless track
-/// through the window `model` (free ends, uniform mesh) with its `placed` interactions.
+/// Run the load of `settings` (moving forces: one or a train; not vehicles) across `window.track_length` m of
+/// endless track through the window `model` (free rear end, clamped front end, uniform mesh) with its `placed`
+/// interactions (ballast friction and soil sections, which repeat every element).
 pub fn run_co_moving(
     model: &BeamModel,
     placed: &PlacedInteractions,

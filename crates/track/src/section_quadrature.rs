@@ -25,21 +25,6 @@ pub enum Quadrature {
     Gauss,
 }
 
-/// The four-point Gauss–Legendre rule on [0, 1]: abscissae and weights.
-const GAUSS_POINTS: [(f64, f64); 4] = {
-    // ±√(3/7 ∓ (2/7)√(6/5)) on [−1, 1] with weights (18 ± √30)/36, mapped to [0, 1].
-    const INNER: f64 = 0.339_981_043_584_856_26;
-    const OUTER: f64 = 0.861_136_311_594_052_6;
-    const W_INNER: f64 = 0.652_145_154_862_546_1;
-    const W_OUTER: f64 = 0.347_854_845_137_453_85;
-    [
-        (0.5 * (1.0 - OUTER), 0.5 * W_OUTER),
-        (0.5 * (1.0 - INNER), 0.5 * W_INNER),
-        (0.5 * (1.0 + INNER), 0.5 * W_INNER),
-        (0.5 * (1.0 + OUTER), 0.5 * W_OUTER),
-    ]
-};
-
 /// The most sub-intervals per element accepted (checked before the sections are allocated).
 pub const MAX_SUBDIVISIONS: usize = 64;
 
@@ -76,7 +61,7 @@ pub fn validate_subdivisions(field: &'static str, subdivisions: usize, quadratur
 }
 
 /// Weight of sub-section s ∈ 0..=J of one element, as a fraction of the element length.
-/// Trapezoid or Simpson only (Gauss sections are not shared between elements and weigh by [`GAUSS_POINTS`]).
+/// Trapezoid or Simpson only (Gauss sections are not shared between elements and weigh by [`hermite::GAUSS_4`]).
 fn weight_fraction(quadrature: Quadrature, subdivisions: usize, s: usize) -> f64 {
     let j = subdivisions as f64;
     let end = s == 0 || s == subdivisions;
@@ -125,7 +110,7 @@ pub fn sections(model: &BeamModel, subdivisions: usize, quadrature: Quadrature) 
     if quadrature == Quadrature::Gauss {
         let sub = l / j as f64;
         return (0..ne * j)
-            .flat_map(|g| GAUSS_POINTS.iter().map(move |&(t, w)| (g, t, w)))
+            .flat_map(|g| hermite::GAUSS_4.iter().map(move |&(t, w)| (g, t, w)))
             .map(|(g, t, w)| {
                 let (e, i) = (g / j, g % j);
                 let xi = (i as f64 + t) / j as f64;

@@ -10,6 +10,22 @@
 
 use super::{ElementMatrix, ElementVector};
 
+/// The four-point Gauss–Legendre rule on [0, 1]: (ξ_g, w_g), exact for polynomials of degree 7 — so for every
+/// product of two Hermite cubics or their derivatives: Σ_g w_g l N(ξ_g)N(ξ_g)ᵀ is the consistent matrix ∫NNᵀ dx.
+/// ±√(3/7 ∓ (2/7)√(6/5)) on [−1, 1] with weights (18 ± √30)/36, mapped to [0, 1].
+pub const GAUSS_4: [(f64, f64); 4] = {
+    const INNER: f64 = 0.339_981_043_584_856_26;
+    const OUTER: f64 = 0.861_136_311_594_052_6;
+    const W_INNER: f64 = 0.652_145_154_862_546_1;
+    const W_OUTER: f64 = 0.347_854_845_137_453_85;
+    [
+        (0.5 * (1.0 - OUTER), 0.5 * W_OUTER),
+        (0.5 * (1.0 - INNER), 0.5 * W_INNER),
+        (0.5 * (1.0 + INNER), 0.5 * W_INNER),
+        (0.5 * (1.0 + OUTER), 0.5 * W_OUTER),
+    ]
+};
+
 /// Shape functions N(ξ) (dimensionless for w, metres for θ) at local coordinate ξ on an element of length l.
 pub fn shape(xi: f64, l: f64) -> ElementVector {
     let (x2, x3) = (xi * xi, xi * xi * xi);
