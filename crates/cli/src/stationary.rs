@@ -162,7 +162,8 @@ fn print_text(scenario: &Scenario, study: &StationaryStudy) {
     );
     println!("  speed (m/s)  max down (mm)  at s (m)  max up (mm)  at s (m)  max M (kN·m)  lift-off zones  status");
     let mm = |x: Option<f64>| x.map_or("—".to_string(), |x| format!("{:.3}", x * 1e3));
-    let at = |x: Option<f64>| x.map_or("—".to_string(), |x| format!("{x:.2}"));
+    // Positions to 0.01 m, without a "-0.00" for a trough a millimetre behind the load.
+    let at = |x: Option<f64>| x.map_or("—".to_string(), |x| format!("{:.2}", if x.abs() < 0.005 { 0.0 } else { x }));
     for p in &study.points {
         let status = match p.status {
             "converged" => String::new(),
