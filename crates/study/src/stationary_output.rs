@@ -85,8 +85,8 @@ pub fn problem(scenario: &Scenario, speed: f64, domain: Domain) -> Result<Statio
         return Err(invalid(
             path,
             "given",
-            "the stationary solver takes no friction yet: run the finite track (`frictrack run`, with absorbing \
-             zones) for a friction-damped wave",
+            "the stationary solver takes no friction yet: run the load through a co-moving window (`frictrack run \
+             --co-moving`) or across a long finite track with absorbing zones for a friction-damped wave",
         ));
     }
     if scenario.load.train.is_some() || !scenario.load.axles.is_empty() || !scenario.load.patches.is_empty() {
