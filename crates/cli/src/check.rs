@@ -37,6 +37,10 @@ pub fn run(args: &CheckArgs) -> Result<()> {
 fn check(path: &std::path::Path) -> Result<()> {
     let scenario = Scenario::from_path(path)?;
     let case = scenario.build()?;
+    if let Some(section) = &scenario.co_moving {
+        // The window is checked as `run` would build it (too short for the wave, the load between its zones).
+        study::co_moving_output::window(&scenario, section)?;
+    }
     crate::scenario_args::print_warnings(&scenario, &case);
     let range = scenario.speed_range()?;
     let mesh = case.model.mesh();

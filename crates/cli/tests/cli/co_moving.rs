@@ -27,4 +27,10 @@ fn a_co_moving_run_settles_on_the_analytic_wave_and_refuses_a_window_too_short()
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(2), "{err}");
     assert!(err.contains("co_moving.window") && err.contains("too short for the wave"), "{err}");
+    // `check` finds it too, before any run.
+    let short = folder.join("short.toml");
+    std::fs::write(&short, "[foundation]\ndamping_ratio = 0.05\n[load]\nspeed = 250.0\n[co_moving]\n").unwrap();
+    let out = frictrack(&["check", short.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("too short for the wave"));
 }
