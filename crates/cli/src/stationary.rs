@@ -39,7 +39,7 @@ pub struct StationaryArgs {
     #[arg(long, allow_negative_numbers = true)]
     speeds: Option<String>,
     /// Domain behind:ahead of the load (m); grown where the rail leaves the soil at an end. Default 60:60.
-    #[arg(long, value_name = "BEHIND:AHEAD")]
+    #[arg(long, value_name = "BEHIND:AHEAD", allow_hyphen_values = true)]
     domain: Option<String>,
     /// Element length of the moving domain (m). Default 0.25.
     #[arg(long, allow_negative_numbers = true)]

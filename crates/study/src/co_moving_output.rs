@@ -76,7 +76,14 @@ pub fn window(scenario: &Scenario, section: &CoMovingSection) -> Result<(BeamMod
     let length = elements * l;
     let zones = section.zones.unwrap_or(length / 4.0);
     let load_at = section.load_at.unwrap_or(length / 2.0);
-    if !(zones.is_finite() && zones >= 0.0 && zones < load_at && load_at < length - zones) {
+    if !(zones.is_finite() && zones >= 0.0 && 2.0 * zones < length) {
+        return Err(invalid(
+            "co_moving.zones",
+            zones,
+            format!("must be ≥ 0 m and leave room in the {length} m window"),
+        ));
+    }
+    if !(load_at.is_finite() && zones < load_at && load_at < length - zones) {
         return Err(invalid(
             "co_moving.load_at",
             load_at,

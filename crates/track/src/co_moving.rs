@@ -76,8 +76,8 @@ fn blocks(model: &BeamModel, placed: &PlacedInteractions) -> Result<Vec<ShiftedB
         let repeats = (start..start + len - per_shift).all(|j| (x[j + per_shift] - x[j] - l).abs() <= 1e-9 * l);
         if kind == SectionKind::Device || !repeats {
             return Err(invalid(
-                "co_moving",
-                x[start],
+                "friction.devices",
+                len as f64,
                 "takes friction distributed along the track and nonlinear soils, which repeat every element; \
                  devices at chosen places do not travel with a window",
             ));

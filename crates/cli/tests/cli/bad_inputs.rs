@@ -19,6 +19,14 @@ const CASES: &[(&[&str], i32, &str)] = &[
     (&["sweep", "--speeds", "100:110:10", "--critical"], 2, "--speeds"),
     (&["run", "--extremes-window", "150:50"], 2, "output.extremes_window"),
     (&["analytic", "--speed", "-3"], 2, "speed"),
+    (&["stationary", "--speed", "100", "--domain", "-5:10"], 2, "domain.behind"),
+    (&["stationary", "--speed", "100", "--domain", "1e9:1e9"], 2, "more than 2000000"),
+    (
+        &["run", "--co-moving", "--speed", "100", "--damping-ratio", "0.05", "--devices", "7", "--device-force", "1e3"],
+        2,
+        "friction.devices",
+    ),
+    (&["run", "--co-moving", "--speed", "100", "--damping-ratio", "0.05", "--load-advance", "0.3"], 2, "load_advance"),
     // A tolerance at round-off: the interior point stalls (and stops long before its 20 000 iterations), its
     // fallbacks cannot meet it either, and the run stops naming all three.
     (&["run", "--distributed-friction", "5000", "--tolerance", "1e-15"], 1, "stalled before the iteration limit"),
@@ -42,6 +50,14 @@ const FILES: &[(&str, i32, &str)] = &[
     ("[foundation]\nself_weight = false\n", 2, "foundation.self_weight"),
     ("[foundation]\nlaw = \"sticky\"\n", 2, "foundation.law"),
     ("[foundation]\nlaw = \"tensionless\"\n[integration]\nsteady_start = 60.0\n", 2, "linear foundation"),
+    // A co-moving window: zones that leave no room, a load outside the window, a track of too many steps.
+    ("[foundation]\ndamping_ratio = 0.05\n[load]\nspeed = 100.0\n[co_moving]\nzones = -1.0\n", 2, "co_moving.zones"),
+    ("[foundation]\ndamping_ratio = 0.05\n[load]\nspeed = 100.0\n[co_moving]\nload_at = 5.0\n", 2, "co_moving.load_at"),
+    (
+        "[foundation]\ndamping_ratio = 0.05\n[load]\nspeed = 100.0\n[co_moving]\ntrack_length = 1e12\n",
+        2,
+        "co_moving.track_length",
+    ),
     // 2·10⁶ steps × 30 recorded sections: more history samples than the stated limit, refused before allocating.
     (
         "[integration]\nload_advance = 1e-4\n[output]\nsections = [1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0, 10.0, \
