@@ -2,7 +2,7 @@
 //! endless track at a cost per step set by the window alone (docs/theory.md §15).
 
 use crate::Format;
-use crate::files::{check_output_file, prepare_output_folder, write_atomically};
+use crate::files::{check_output_file, prepare_output_folder, write_atomically, write_figures};
 use anyhow::Result;
 use study::Scenario;
 use study::co_moving_output::CoMovingSummary;
@@ -33,8 +33,9 @@ pub fn run(
             csv.push_str(&format!("{s},{w}\n"));
         }
         write_atomically(&folder.join("wave.csv"), csv.as_bytes())?;
+        let drawn = write_figures(&study::co_moving_output::figures(&summary, &result), folder)?;
         if format == Format::Text {
-            println!("  wrote {}/co-moving.json and wave.csv", folder.display());
+            println!("  wrote {}/co-moving.json, wave.csv and {}", folder.display(), drawn.join(", "));
         }
     }
     Ok(())
@@ -52,6 +53,11 @@ fn print_text(s: &CoMovingSummary) {
         "  window {:.1} m of {:.3} m elements, the load {:.1} m from its rear, absorbing zones {:.1} m at both ends",
         s.window, s.element_length, s.load_at, s.zones
     );
+    let friction = match s.distributed_friction > 0.0 {
+        true => format!("ballast friction f_u = {:.1} kN/m", s.distributed_friction / 1e3),
+        false => "no friction".to_string(),
+    };
+    println!("  {} soil, {friction}", s.soil);
     println!(
         "  the wave in the frame at the end: max downward {:.3} mm at s = {:.2} m (s = x − x_load)",
         s.wave_max_downward_deflection * 1e3,

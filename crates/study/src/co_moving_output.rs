@@ -4,6 +4,7 @@
 //! (J).
 
 use crate::error::{Result, invalid};
+use crate::plot::{PlotSpec, Series, Stroke};
 use crate::scenario::{CoMovingSection, Scenario};
 use fem_beam::reference::InfiniteBeam;
 use fem_beam::{AbsorbingZones, BeamModel, Foundation, Mesh, Support, Supports};
@@ -22,6 +23,10 @@ pub struct CoMovingSummary {
     pub speed: f64,
     /// F (N).
     pub load: f64,
+    /// Ballast friction f_u (N/m), 0 without.
+    pub distributed_friction: f64,
+    /// The soil's law: "linear", "tensionless" or "bilinear".
+    pub soil: &'static str,
     /// Window length, track travelled, the load's place in the window, absorbing zones, element length (m).
     pub window: f64,
     /// Track travelled (m).
@@ -136,6 +141,12 @@ pub fn run(scenario: &Scenario, section: &CoMovingSection) -> Result<(CoMovingSu
         title: scenario.title.clone(),
         speed: scenario.load.speed,
         load: scenario.load.force,
+        distributed_friction: scenario.friction.distributed.as_ref().map_or(0.0, |d| d.force_per_length),
+        soil: match model.foundation().law {
+            fem_beam::FoundationLaw::Linear => "linear",
+            fem_beam::FoundationLaw::Tensionless => "tensionless",
+            fem_beam::FoundationLaw::Bilinear { .. } => "bilinear",
+        },
         window: model.mesh().length,
         track_length: settings.track_length,
         load_at: settings.load_at,
@@ -157,4 +168,39 @@ pub fn run(scenario: &Scenario, section: &CoMovingSection) -> Result<(CoMovingSu
         wall_time: result.wall_time,
     };
     Ok((summary, result))
+}
+
+/// The figures of a co-moving run: the wave in the frame at the end, and its change per window length travelled
+/// (logarithmic: the approach to the stationary state).
+pub fn figures(summary: &CoMovingSummary, result: &CoMovingResult) -> Vec<PlotSpec> {
+    let title = if summary.title.is_empty() { "co-moving window" } else { summary.title.as_str() };
+    let friction = match summary.distributed_friction > 0.0 {
+        true => format!("f_u = {:.1} kN/m", summary.distributed_friction / 1e3),
+        false => "no friction".to_string(),
+    };
+    let subtitle = format!(
+        "F = {:.1} kN at {:.1} m/s over {:.0} m of track, {} soil, {friction}, window {:.0} m (zones {:.0} m)",
+        summary.load / 1e3,
+        summary.speed,
+        summary.track_length,
+        summary.soil,
+        summary.window,
+        summary.zones
+    );
+    let line = |label: &str, points: Vec<(f64, f64)>| Series {
+        label: Some(label.into()),
+        color: 1,
+        stroke: Stroke::Solid,
+        markers: false,
+        points,
+    };
+    let mut wave = PlotSpec::new("co-moving-wave", title, "s = x − x_load (m)", "w (mm)");
+    wave.subtitle = format!("{subtitle}; the wave in the frame at the end");
+    wave.series.push(line("W(s)", result.wave.iter().map(|(s, w)| (*s, w * 1e3)).collect()));
+    let mut change = PlotSpec::new("co-moving-convergence", title, "track travelled (m)", "change per window length");
+    change.subtitle = format!("{subtitle}; max |ΔW| over a window length / peak");
+    change.log_y = true;
+    let positive: Vec<(f64, f64)> = result.changes.iter().copied().filter(|(_, c)| *c > 0.0).collect();
+    change.series.push(Series { markers: true, ..line("change", positive) });
+    vec![wave, change]
 }

@@ -19,9 +19,15 @@ fn a_co_moving_run_settles_on_the_analytic_wave_and_refuses_a_window_too_short()
     // 1 m elements and nodes only: the trough lies 0.07 m behind the load, between nodes (1e-3 of the peak).
     assert!((w - w0).abs() <= 2e-3 * w0, "{w} vs {w0}");
     assert_eq!(run["steps"], 6000);
+    assert_eq!((run["soil"].as_str(), run["distributed_friction"].as_f64()), (Some("linear"), Some(0.0)));
     let last = run["changes"].as_array().unwrap().last().unwrap()[1].as_f64().unwrap();
     assert!(last < 1e-5, "{last}");
     assert!(run["energy_residual"].as_f64().unwrap().abs() <= 1e-9 * run["load_work"].as_f64().unwrap());
+    let out = folder.join("out");
+    assert!(frictrack(&["run", path, "--out", out.to_str().unwrap()]).status.success());
+    for name in ["co-moving.json", "wave.csv", "co-moving-wave.png", "co-moving-convergence.svg"] {
+        assert!(out.join(name).is_file(), "{name}");
+    }
     // Above the critical speed the wave reaches further than a 120 m window: refused with the length it needs.
     let out = frictrack(&["run", "--co-moving", "--damping-ratio", "0.05", "--speed", "250"]);
     let err = String::from_utf8_lossy(&out.stderr);
