@@ -83,6 +83,12 @@ fn friction_travels_with_the_window() {
     let ballast = DistributedFriction::new(5e3).interactions(&model).unwrap();
     let r = co_moving(&model, &ballast, 150.0, 300.0);
     assert!(r.changes.last().unwrap().1 <= 1e-3, "{:?}", r.changes);
+    // Behind the wave friction holds the rail still with a residual deflection W_res, |W_res| ≤ f_u/k (docs/theory.md
+    // §13: k|W| ≤ f_u where the rail sticks), here 20 mm; read between the wave and the rear absorbing zone.
+    let bound = 5e3 / model.foundation().stiffness;
+    let behind: Vec<f64> = r.wave.iter().filter(|(s, _)| (-14.0..=-10.0).contains(s)).map(|(_, w)| *w).collect();
+    assert!(!behind.is_empty() && behind.iter().all(|w| w.abs() <= bound), "{behind:?} against ±{bound} m");
+    assert!(behind.iter().any(|w| w.abs() > 1e-2 * bound), "friction leaves a deflection behind: {behind:?}");
     assert!(r.energy.friction_work < 0.0);
     assert!(r.energy.residual().abs() <= 1e-9 * r.energy.load_work);
 }
