@@ -71,7 +71,7 @@ fn check(path: &std::path::Path) -> Result<()> {
             case.interactions.len() - n,
             match foundation.law {
                 fem_beam::FoundationLaw::Bilinear { tension_ratio } => format!("bilinear, k_t = {tension_ratio} k_c"),
-                _ => "tensionless".to_string(),
+                law => law.name().to_string(),
             }
         ),
     };

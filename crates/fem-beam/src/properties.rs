@@ -74,6 +74,15 @@ impl FoundationLaw {
         }
     }
 
+    /// Its name in scenario files and reports: "linear", "tensionless" or "bilinear".
+    pub fn name(&self) -> &'static str {
+        match self {
+            FoundationLaw::Linear => "linear",
+            FoundationLaw::Tensionless => "tensionless",
+            FoundationLaw::Bilinear { .. } => "bilinear",
+        }
+    }
+
     /// Whether the law is linear (k_t = k_c), whatever its name.
     pub fn is_linear(&self) -> bool {
         self.tension_ratio() == 1.0

@@ -142,11 +142,7 @@ pub fn run(scenario: &Scenario, section: &CoMovingSection) -> Result<(CoMovingSu
         speed: scenario.load.speed,
         load: scenario.load.force,
         distributed_friction: scenario.friction.distributed.as_ref().map_or(0.0, |d| d.force_per_length),
-        soil: match model.foundation().law {
-            fem_beam::FoundationLaw::Linear => "linear",
-            fem_beam::FoundationLaw::Tensionless => "tensionless",
-            fem_beam::FoundationLaw::Bilinear { .. } => "bilinear",
-        },
+        soil: model.foundation().law.name(),
         window: model.mesh().length,
         track_length: settings.track_length,
         load_at: settings.load_at,

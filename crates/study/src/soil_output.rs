@@ -73,11 +73,10 @@ impl SoilSummary {
     pub fn of(model: &fem_beam::BeamModel, self_weight: bool, result: &RunResult) -> Option<Self> {
         let lift = result.lift_off.as_ref()?;
         let foundation = model.foundation();
-        let law = match foundation.law {
-            fem_beam::FoundationLaw::Linear => return None,
-            fem_beam::FoundationLaw::Tensionless => "tensionless",
-            fem_beam::FoundationLaw::Bilinear { .. } => "bilinear",
-        };
+        if foundation.law.is_linear() {
+            return None;
+        }
+        let law = foundation.law.name();
         let largest = lift.largest();
         let settlement = match self_weight && foundation.stiffness > 0.0 {
             true => model.beam().mass_per_length() * track::foundation_layout::GRAVITY / foundation.stiffness,

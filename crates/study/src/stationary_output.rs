@@ -111,11 +111,7 @@ impl StationaryStudy {
     /// Solve `speeds` (m/s, in the order given: each starts from the last one's contact set) on `domain`.
     pub fn of(scenario: &Scenario, speeds: &[f64], domain: Domain) -> Result<Self> {
         let first = problem(scenario, speeds.first().copied().unwrap_or(0.0), domain)?;
-        let law = match first.foundation.law {
-            fem_beam::FoundationLaw::Linear => "linear",
-            fem_beam::FoundationLaw::Tensionless => "tensionless",
-            fem_beam::FoundationLaw::Bilinear { .. } => "bilinear",
-        };
+        let law = first.foundation.law.name();
         let mut guess = ContactGuess::default();
         let (mut points, mut waves) = (Vec::with_capacity(speeds.len()), Vec::with_capacity(speeds.len()));
         for &speed in speeds {
