@@ -32,40 +32,7 @@ pub struct SoilSummary {
     /// When (s).
     pub largest_gap_time: Option<f64>,
     /// The zones of neighbouring sections that lifted, in order of x.
-    pub lift_off_zones: Vec<LiftOffZoneSummary>,
-}
-
-/// One lift-off zone.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct LiftOffZoneSummary {
-    /// The first section's position (m).
-    pub from: f64,
-    /// The last section's position (m).
-    pub to: f64,
-    /// When the first of them lifted (s).
-    pub first_time: f64,
-    /// When the last of them was last lifted (s).
-    pub last_time: f64,
-    /// The zone's largest gap (m).
-    pub largest_gap: f64,
-    /// Where (m).
-    pub largest_gap_position: f64,
-    /// When (s).
-    pub largest_gap_time: f64,
-}
-
-impl From<&LiftOffZone> for LiftOffZoneSummary {
-    fn from(z: &LiftOffZone) -> Self {
-        Self {
-            from: z.from,
-            to: z.to,
-            first_time: z.first_time,
-            last_time: z.last_time,
-            largest_gap: z.largest_gap,
-            largest_gap_position: z.largest_gap_position,
-            largest_gap_time: z.largest_gap_time,
-        }
-    }
+    pub lift_off_zones: Vec<LiftOffZone>,
 }
 
 impl SoilSummary {
@@ -94,7 +61,7 @@ impl SoilSummary {
             largest_gap: largest.map_or(0.0, |z| z.largest_gap),
             largest_gap_position: largest.map(|z| z.largest_gap_position),
             largest_gap_time: largest.map(|z| z.largest_gap_time),
-            lift_off_zones: lift.zones.iter().map(LiftOffZoneSummary::from).collect(),
+            lift_off_zones: lift.zones.clone(),
         })
     }
 }

@@ -216,6 +216,7 @@ impl LiftOff {
 /// Neighbouring foundation sections that lifted off the soil (gap above [`crate::simulation::LIFT_OFF_GAP`]) at
 /// some time in the run.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct LiftOffZone {
     /// The first section's position (m).
     pub from: f64,
