@@ -15,18 +15,8 @@ pub struct AnalyticArgs {
     /// Scenario file (its beam, foundation and loads: the single load or its train, as the beam carries it); without
     /// it, the reference case.
     scenario: Option<PathBuf>,
-    /// Load speed: m/s (`100`), or with a unit (`100m/s`, `360km/h`).
-    #[arg(
-        long,
-        conflicts_with = "speeds",
-        required_unless_present = "speeds",
-        allow_negative_numbers = true,
-        value_parser = crate::units::parse_speed
-    )]
-    speed: Option<f64>,
-    /// Speed range A:B:STEP (m/s) for a dynamic-amplification curve.
-    #[arg(long, allow_negative_numbers = true)]
-    speeds: Option<String>,
+    #[command(flatten)]
+    speed: SpeedChoice,
     /// Foundation damping ratio ζ = c_f / c_cr (needed > 0 at and above the critical speed); default the
     /// scenario's (0 for the reference case).
     #[arg(long, allow_negative_numbers = true)]
@@ -39,6 +29,37 @@ pub struct AnalyticArgs {
     /// Output format.
     #[arg(long, value_enum, default_value_t = Format::Text)]
     format: Format,
+}
+
+/// One speed or a range of them, for the commands that answer per speed without running the beam (`analytic`,
+/// `stationary`).
+#[derive(Debug, Args)]
+pub struct SpeedChoice {
+    /// Load speed: m/s (`100`), or with a unit (`100m/s`, `360km/h`).
+    #[arg(
+        long,
+        conflicts_with = "speeds",
+        required_unless_present = "speeds",
+        allow_negative_numbers = true,
+        value_parser = crate::units::parse_speed
+    )]
+    speed: Option<f64>,
+    /// Speed range A:B:STEP (m/s; or all three in km/h with `A:B:STEPkm/h`), in order.
+    #[arg(long, allow_negative_numbers = true)]
+    speeds: Option<String>,
+}
+
+impl SpeedChoice {
+    /// The speeds asked for (m/s): the range's, or the one speed.
+    pub fn speeds(&self) -> Result<Vec<f64>> {
+        match (&self.speeds, self.speed) {
+            (Some(range), _) => parse_range(range),
+            (None, Some(v)) => Ok(vec![v]),
+            (None, None) => {
+                Err(study::error::invalid("--speed", "absent", "give --speed V or --speeds A:B:STEP").into())
+            }
+        }
+    }
 }
 
 /// Parse `A:B:STEP` (m/s, or all three in km/h with `A:B:STEPkm/h`) into the list of speeds A, A+STEP, … ≤ B
@@ -70,13 +91,7 @@ pub fn run(args: &AnalyticArgs) -> Result<()> {
         Some(path) => Scenario::from_path(path)?,
         None => Scenario::default(),
     };
-    let speeds = match (&args.speeds, args.speed) {
-        (Some(range), _) => parse_range(range)?,
-        (None, Some(v)) => vec![v],
-        (None, None) => {
-            return Err(study::error::invalid("--speed", "absent", "give --speed V or --speeds A:B:STEP").into());
-        }
-    };
+    let speeds = args.speed.speeds()?;
     let train = match &args.train {
         Some(name) => Some(study::trains::named_or_file(name, scenario.load.force, "--train")?),
         None => None,

@@ -26,18 +26,9 @@ pub enum StationaryFormat {
 pub struct StationaryArgs {
     /// Scenario file (its beam, soil with its law and damping, and single load); without it, the reference case.
     scenario: Option<PathBuf>,
-    /// Load speed: m/s (`100`), or with a unit (`360km/h`).
-    #[arg(
-        long,
-        conflicts_with = "speeds",
-        required_unless_present = "speeds",
-        allow_negative_numbers = true,
-        value_parser = crate::units::parse_speed
-    )]
-    speed: Option<f64>,
-    /// Speed range A:B:STEP (m/s), solved in order, each speed starting from the last one's contact set.
-    #[arg(long, allow_negative_numbers = true)]
-    speeds: Option<String>,
+    /// The speeds, solved in order, each starting from the last one's contact set.
+    #[command(flatten)]
+    speed: crate::analytic::SpeedChoice,
     /// Domain behind:ahead of the load (m); grown where the rail leaves the soil at an end. Default 60:60.
     #[arg(long, value_name = "BEHIND:AHEAD", allow_hyphen_values = true)]
     domain: Option<String>,
@@ -72,13 +63,7 @@ pub fn run(args: &StationaryArgs) -> Result<()> {
         Some(path) => Scenario::from_path(path)?,
         None => Scenario::default(),
     };
-    let speeds = match (&args.speeds, args.speed) {
-        (Some(range), _) => crate::analytic::parse_range(range)?,
-        (None, Some(v)) => vec![v],
-        (None, None) => {
-            return Err(study::error::invalid("--speed", "absent", "give --speed V or --speeds A:B:STEP").into());
-        }
-    };
+    let speeds = args.speed.speeds()?;
     if let Some(&v) = speeds.iter().find(|v| !(v.is_finite() && **v >= 0.0)) {
         return Err(study::error::invalid("--speed", v, "must be finite and ≥ 0 (m/s)").into());
     }
