@@ -1,7 +1,7 @@
 //! The co-moving window (docs/theory.md §15): the load crosses an endless track through a short window that shifts
 //! with it; its wave against the closed form, the stationary solve and the energy identity.
 
-use fem_beam::reference::{InfiniteBeam, uic60_on_soft_soil};
+use fem_beam::reference::{InfiniteBeam, SteadyState, uic60_on_soft_soil};
 use fem_beam::{AbsorbingZones, BeamModel, Foundation, FoundationLaw, Mesh, Supports};
 use track::co_moving::{CoMovingResult, CoMovingSettings, run_co_moving};
 use track::{DistributedFriction, PlacedInteractions, RunSettings};
@@ -32,23 +32,28 @@ fn co_moving(model: &BeamModel, placed: &PlacedInteractions, speed: f64, track: 
     run_co_moving(model, placed, &settings, &at).unwrap()
 }
 
+/// The infinite beam's steady state under the reference load at `speed` (m/s) on the window's soil.
+fn steady_state(model: &BeamModel, speed: f64) -> SteadyState {
+    let beam = uic60_on_soft_soil().beam;
+    InfiniteBeam::new(&beam, model.foundation()).unwrap().steady_state(speed, 83.4e3).unwrap()
+}
+
+/// max |W − the closed form| over the nodes within 30 m of the load (m).
+fn error_within_30_m(r: &CoMovingResult, closed: &SteadyState) -> f64 {
+    r.wave.iter().filter(|(s, _)| s.abs() <= 30.0).map(|(s, w)| (w - closed.deflection(*s)).abs()).fold(0.0, f64::max)
+}
+
 /// A damped linear track: after a few window lengths the wave in the frame is the closed form of the infinite beam
 /// (docs/theory.md §8) below the critical speed, to 1e-4 of the peak (measured 1.1e-5 at 100 m/s after 600 m; the
 /// change per window length falls by ~8× each window), and the energy identity closes with what the window
 /// carried out.
 #[test]
 fn the_co_moving_wave_is_the_closed_form() {
-    let case = uic60_on_soft_soil();
     let model = window(FoundationLaw::Linear, 0.05, 120.0, 30.0);
     let r = co_moving(&model, &PlacedInteractions::new(), 100.0, 600.0);
-    let closed = InfiniteBeam::new(&case.beam, model.foundation()).unwrap().steady_state(100.0, 83.4e3).unwrap();
+    let closed = steady_state(&model, 100.0);
     let peak = closed.deflection(0.0).abs();
-    let error = r
-        .wave
-        .iter()
-        .filter(|(s, _)| s.abs() <= 30.0)
-        .map(|(s, w)| (w - closed.deflection(*s)).abs())
-        .fold(0.0, f64::max);
+    let error = error_within_30_m(&r, &closed);
     assert!(error <= 1e-4 * peak, "{:e} of the peak", error / peak);
     let (first, last) = (r.changes[0].1, r.changes.last().unwrap().1);
     assert!(last <= 1e-5 && last < first / 1e3, "changes per window length {:?}", r.changes);
@@ -100,20 +105,13 @@ fn friction_travels_with_the_window() {
 #[test]
 #[ignore = "a 480 m window over 1.5 km in 0.0125 m steps: ~10 s; run with --ignored"]
 fn above_the_critical_speed_a_long_enough_window_carries_the_closed_form() {
-    let case = uic60_on_soft_soil();
     let model = window(FoundationLaw::Linear, 0.05, 480.0, 30.0);
     let mut settings = RunSettings::default();
     settings.moving.speed = 250.0;
     settings.integration.load_advance = 0.0125;
     let at = CoMovingSettings { load_at: 240.0, track_length: 1500.0, middle: (120.0, 360.0) };
     let r = run_co_moving(&model, &PlacedInteractions::new(), &settings, &at).unwrap();
-    let closed = InfiniteBeam::new(&case.beam, model.foundation()).unwrap().steady_state(250.0, 83.4e3).unwrap();
     let peak = r.max_downward;
-    let error = r
-        .wave
-        .iter()
-        .filter(|(s, _)| s.abs() <= 30.0)
-        .map(|(s, w)| (w - closed.deflection(*s)).abs())
-        .fold(0.0, f64::max);
+    let error = error_within_30_m(&r, &steady_state(&model, 250.0));
     assert!(error <= 1e-4 * peak, "{:e} of the peak", error / peak);
 }
