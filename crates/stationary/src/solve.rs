@@ -63,7 +63,8 @@ pub fn solve(problem: &StationaryProblem) -> Result<StationaryWave> {
 /// As [`solve`], starting from `guess` (the previous speed's pressed set, if it fits) and leaving this one there.
 pub fn solve_from(problem: &StationaryProblem, guess: &mut ContactGuess) -> Result<StationaryWave> {
     let mut problem = *problem;
-    for _ in 0..=MAX_EXTENSIONS {
+    let mut extensions = 0;
+    loop {
         let frame = MovingFrame::new(&problem)?;
         let (mut w, mut convergence) = newton(&frame, problem.speed, guess)?;
         if !convergence.is_converged() && !guess.pressed.is_empty() {
@@ -79,7 +80,7 @@ pub fn solve_from(problem: &StationaryProblem, guess: &mut ContactGuess) -> Resu
             };
             (w, convergence) = (cold, taken);
         }
-        let wave = StationaryWave::new(&problem, &frame, w, convergence);
+        let mut wave = StationaryWave::new(&problem, &frame, w, convergence);
         // Free ends (a nonlinear soil without weight) may lift: the rail there carries nothing.
         let (behind, ahead) = if problem.has_free_ends() { (false, false) } else { wave.lifted_at_ends() };
         if !(behind || ahead) || !convergence.is_converged() {
@@ -87,16 +88,15 @@ pub fn solve_from(problem: &StationaryProblem, guess: &mut ContactGuess) -> Resu
         }
         let domain = &mut problem.domain;
         let grown = (domain.behind * if behind { 2.0 } else { 1.0 }, domain.ahead * if ahead { 2.0 } else { 1.0 });
-        if (grown.0 + grown.1) / domain.element_length > MAX_ELEMENTS as f64 {
-            break;
+        if extensions == MAX_EXTENSIONS || (grown.0 + grown.1) / domain.element_length > MAX_ELEMENTS as f64 {
+            // The wave of the largest domain tried, said to be what it is.
+            wave.convergence = Convergence::DomainTooShort { behind: domain.behind, ahead: domain.ahead };
+            return Ok(wave);
         }
         (domain.behind, domain.ahead) = grown;
+        extensions += 1;
         guess.pressed.clear();
     }
-    let frame = MovingFrame::new(&problem)?;
-    let (w, _) = newton(&frame, problem.speed, guess)?;
-    let status = Convergence::DomainTooShort { behind: problem.domain.behind, ahead: problem.domain.ahead };
-    Ok(StationaryWave::new(&problem, &frame, w, status))
 }
 
 /// A relative residual at which the wave counts as solved when the pressed set has not repeated exactly (round-off
