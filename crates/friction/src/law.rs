@@ -91,6 +91,17 @@ impl Law {
         }
     }
 
+    /// The stiffness k (N/m) of a linear spring law and whether it also pulls: the compliant stop and the soil push
+    /// only, the bilateral spring pulls as well; None for friction, rigid contact and Hertz (nonlinear). What a
+    /// static solve takes of a law.
+    pub fn linear_spring(&self) -> Option<(f64, bool)> {
+        match *self {
+            Law::Compliant { stiffness, .. } | Law::Soil { stiffness, .. } => Some((stiffness, false)),
+            Law::Spring { stiffness, .. } => Some((stiffness, true)),
+            Law::Coulomb { .. } | Law::Signorini { .. } | Law::Hertz { .. } => None,
+        }
+    }
+
     /// Whether the law holds energy in a spring (compliant stop, bilateral spring, Hertz): the energy ledger then
     /// books what it stores and loses.
     pub fn has_spring(&self) -> bool {

@@ -13,7 +13,6 @@
 
 use crate::error::{Result, TrackError};
 use crate::placed::PlacedInteractions;
-use friction::Law;
 
 /// Largest number of active-set iterations; each changes the set, and the sets seen are never revisited in practice
 /// (measured: 3–8 on the reference track with self-weight and a point load).
@@ -28,10 +27,9 @@ pub fn static_deflection(model: &fem_beam::BeamModel, placed: &PlacedInteraction
         .laws()
         .iter()
         .enumerate()
-        .filter_map(|(j, law)| match *law {
-            Law::Compliant { gap, stiffness } | Law::Soil { gap, stiffness } => Some((j, stiffness, gap, false)),
-            Law::Spring { gap, stiffness } => Some((j, stiffness, gap, true)),
-            _ => None,
+        .filter_map(|(j, law)| {
+            let (stiffness, glued) = law.linear_spring()?;
+            Some((j, stiffness, law.gap()?, glued))
         })
         .collect();
     let rows = placed.interactions().rows();
