@@ -1,4 +1,5 @@
-//! The stationary wave on the infinite track (docs/theory.md §14): a 100-speed sweep by continuation, per soil, and
+//! The stationary wave on the infinite track (docs/theory.md §14): a 100-speed sweep by continuation, per soil and
+//! with ballast friction, and
 //! a nonlinear soil's run on the finite track beside the linear one (the cost of its sections in the engine).
 //!
 //! Run with `cargo bench -p frictrack-benches --bench stationary`.
@@ -20,20 +21,27 @@ fn problem(law: FoundationLaw) -> StationaryProblem {
         load: 83.4e3,
         speed: 0.0,
         self_weight: true,
+        friction: stationary::BallastFriction::default(),
         domain: Domain::default(),
     }
 }
 
-/// 100 speeds, 3–300 m/s (linear, bilinear α = ½) or 1–100 m/s (tensionless, whose wave is found up to ~105 m/s).
+/// 100 speeds, 3–300 m/s (linear, bilinear α = ½, ballast friction of 2 and 10 kN/m on the linear soil) or
+/// 1–100 m/s (tensionless, whose wave is found up to ~105 m/s).
 fn sweeps(c: &mut Criterion) {
     let mut group = c.benchmark_group("stationary_sweep_100_speeds");
     group.sample_size(10).warm_up_time(Duration::from_secs(1)).measurement_time(Duration::from_secs(8));
-    for (name, law, step) in [
-        ("linear", FoundationLaw::Linear, 3.0),
-        ("bilinear_half", FoundationLaw::Bilinear { tension_ratio: 0.5 }, 3.0),
-        ("tensionless", FoundationLaw::Tensionless, 1.0),
+    let friction = |f_u: f64| StationaryProblem {
+        friction: stationary::BallastFriction::new(f_u),
+        ..problem(FoundationLaw::Linear)
+    };
+    for (name, base, step) in [
+        ("linear", problem(FoundationLaw::Linear), 3.0),
+        ("bilinear_half", problem(FoundationLaw::Bilinear { tension_ratio: 0.5 }), 3.0),
+        ("tensionless", problem(FoundationLaw::Tensionless), 1.0),
+        ("friction_2kN_per_m", friction(2e3), 3.0),
+        ("friction_10kN_per_m", friction(10e3), 3.0),
     ] {
-        let base = problem(law);
         group.bench_function(name, |b| {
             b.iter(|| {
                 let mut guess = ContactGuess::default();

@@ -105,7 +105,7 @@ fn points_csv(points: &[StationaryPoint]) -> String {
     let mut out = String::from(
         "speed_m_per_s,status,iterations,residual,max_downward_deflection_m,max_downward_position_m,\
          max_upward_deflection_m,max_upward_position_m,max_moment_Nm,max_hogging_moment_Nm,deflection_behind_m,\
-         lift_off_zones,largest_gap_m,power_imbalance\n",
+         lift_off_zones,largest_gap_m,slip_zones,friction_power_W,power_imbalance\n",
     );
     for p in points {
         let gap = p
@@ -114,7 +114,7 @@ fn points_csv(points: &[StationaryPoint]) -> String {
             .map(|z| z.largest_gap)
             .fold(None, |m: Option<f64>, g| Some(m.map_or(g, |m| m.max(g))));
         out.push_str(&format!(
-            "{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
+            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
             p.speed,
             p.status,
             p.iterations,
@@ -128,6 +128,8 @@ fn points_csv(points: &[StationaryPoint]) -> String {
             cell(p.deflection_behind),
             p.lift_off_zones.len(),
             cell(gap),
+            p.slip_zones.len(),
+            cell(p.friction_power),
             cell(p.power_imbalance),
         ));
     }
@@ -139,13 +141,20 @@ fn print_text(scenario: &Scenario, study: &StationaryStudy) {
         true => format!(", settled {:.3} mm by the rail's weight", study.settlement * 1e3),
         false => String::new(),
     };
+    let friction = match study.friction > 0.0 {
+        true => format!(", ballast friction {:.2} kN/m", study.friction / 1e3),
+        false => String::new(),
+    };
     println!(
-        "stationary wave on the infinite track{}: F = {:.1} kN, {} soil{weight}",
+        "stationary wave on the infinite track{}: F = {:.1} kN, {} soil{weight}{friction}",
         if scenario.title.is_empty() { String::new() } else { format!(" ({})", scenario.title) },
         study.load / 1e3,
         study.law
     );
-    println!("  speed (m/s)  max down (mm)  at s (m)  max up (mm)  at s (m)  max M (kN·m)  lift-off zones  status");
+    println!(
+        "  speed (m/s)  max down (mm)  at s (m)  max up (mm)  at s (m)  max M (kN·m)  behind (mm)  lift-off zones  \
+         slip zones  status"
+    );
     let mm = |x: Option<f64>| x.map_or("—".to_string(), |x| format!("{:.3}", x * 1e3));
     // Positions to 0.01 m, without a "-0.00" for a trough a millimetre behind the load.
     let at = |x: Option<f64>| x.map_or("—".to_string(), |x| format!("{:.2}", if x.abs() < 0.005 { 0.0 } else { x }));
@@ -156,22 +165,28 @@ fn print_text(scenario: &Scenario, study: &StationaryStudy) {
             other => other.to_string(),
         };
         println!(
-            "  {:>10.2}  {:>13}  {:>8}  {:>11}  {:>8}  {:>12}  {:>14}  {status}",
+            "  {:>10.2}  {:>13}  {:>8}  {:>11}  {:>8}  {:>12}  {:>11}  {:>14}  {:>10}  {status}",
             p.speed,
             mm(p.max_downward_deflection),
             at(p.max_downward_deflection_position),
             mm(p.max_upward_deflection),
             at(p.max_upward_deflection_position),
             p.max_moment.map_or("—".to_string(), |m| format!("{:.2}", m / 1e3)),
+            mm(p.deflection_behind),
             p.lift_off_zones.len(),
+            p.slip_zones.len(),
         );
     }
-    println!("  (s = x − vt: positive ahead of the load; deflections from the settled rail)");
+    println!(
+        "  (s = x − vt: positive ahead of the load; deflections from the settled rail, signed behind: what is left \
+         there)"
+    );
     if study.points.iter().any(|p| p.status != "converged") {
         println!(
             "  where no wave was found (—), run the load across a long finite track in time (`frictrack run` with \
              absorbing zones): the stationary wave may not exist there (a tensionless soil lets the rail be thrown \
-             off at speed), or needs foundation damping (undamped at or above the critical speed)"
+             off at speed), or needs foundation damping (undamped at or above the critical speed); with friction, a \
+             co-moving window (`frictrack run --co-moving`) gives the wave by time stepping"
         );
     }
 }

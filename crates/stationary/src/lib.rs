@@ -9,12 +9,14 @@
 
 pub mod error;
 pub mod far_field;
+pub mod friction;
+pub mod newton;
 pub mod operator;
 pub mod problem;
 pub mod solve;
 pub mod wave;
 
 pub use error::{Result, StationaryError};
-pub use problem::{Domain, StationaryProblem};
+pub use problem::{BallastFriction, Domain, StationaryProblem};
 pub use solve::{ContactGuess, Convergence, solve, solve_from};
-pub use wave::{LiftOffZone, Peak, StationaryWave};
+pub use wave::{LiftOffZone, Peak, SlipZone, StationaryWave};

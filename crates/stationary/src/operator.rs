@@ -15,6 +15,7 @@
 
 use crate::error::{Result, StationaryError};
 use crate::far_field::{EndRelation, FarField};
+use crate::friction::{FrictionSections, JENKINS_RATIO};
 use crate::problem::{GRAVITY, StationaryProblem};
 use banded::general::{GeneralBanded, GeneralLu};
 use fem_beam::element::hermite;
@@ -49,6 +50,8 @@ pub struct MovingFrame {
     pub rhs: Vec<f64>,
     /// The soil's unilateral sections (none on a linear soil).
     pub sections: Vec<SoilSection>,
+    /// The ballast's friction sections, if it has friction.
+    pub friction: Option<FrictionSections>,
     /// Node positions s_i (m); the load is on node `load_node`.
     pub nodes: Vec<f64>,
     /// The load's node.
@@ -92,14 +95,15 @@ impl MovingFrame {
             }
         }
         let rho_v2 = rho_a * v * v;
-        if problem.has_free_ends() {
-            // Without weight the rail beyond the wave rests on the soil without force or lifts straight off it: the
-            // ends carry no moment and no shear (W″ = W‴ = 0), only the convective term.
-            matrix.add(n - 2, n - 1, rho_v2);
-            matrix.add(0, 1, -rho_v2);
-        } else {
-            close_end(&mut matrix, &mut rhs, n - 2, &far_field.ahead, (ei, rho_v2), level, 1.0);
-            close_end(&mut matrix, &mut rhs, 0, &far_field.behind, (ei, rho_v2), level, -1.0);
+        // A free end (a weightless nonlinear soil's, or friction's rear) carries no moment and no shear
+        // (W″ = W‴ = 0), only the convective term.
+        match problem.has_free_ends() {
+            true => matrix.add(n - 2, n - 1, rho_v2),
+            false => close_end(&mut matrix, &mut rhs, n - 2, &far_field.ahead, (ei, rho_v2), level, 1.0),
+        }
+        match problem.has_free_rear() {
+            true => matrix.add(0, 1, -rho_v2),
+            false => close_end(&mut matrix, &mut rhs, 0, &far_field.behind, (ei, rho_v2), level, -1.0),
         }
         let unilateral = foundation.stiffness - k_t;
         let sections = match problem.is_nonlinear() {
@@ -116,11 +120,15 @@ impl MovingFrame {
             false => Vec::new(),
         };
         let nodes = (0..=elements).map(|i| (i as f64 - behind as f64) * l).collect();
-        Ok(Self { matrix, rhs, sections, nodes, load_node: behind, element_length: l, far_field })
+        let friction = problem.has_friction().then(|| {
+            let stiffness = JENKINS_RATIO * foundation.stiffness;
+            FrictionSections::new(&problem.friction, elements, behind, l, stiffness, level)
+        });
+        Ok(Self { matrix, rhs, sections, friction, nodes, load_node: behind, element_length: l, far_field })
     }
 
-    /// A + Σ_pressed k_s H_sᵀH_s, factored; `speed` names a singular matrix.
-    pub fn factor_with(&self, pressed: &[bool], speed: f64) -> Result<GeneralLu> {
+    /// A + Σ_pressed k_s H_sᵀH_s, to which friction's stuck springs may be added before it is factored.
+    pub fn with_pressed(&self, pressed: &[bool]) -> GeneralBanded {
         let mut jacobian = self.matrix.clone();
         for (section, _) in self.sections.iter().zip(pressed).filter(|(_, p)| **p) {
             let d = 2 * section.element;
@@ -130,11 +138,16 @@ impl MovingFrame {
                 }
             }
         }
-        jacobian.factor().map_err(|e| match e {
-            banded::BandedError::Singular { index } => StationaryError::Singular { speed, equation: index },
-            other => unreachable!("an LU reports only singularity: {other}"),
-        })
+        jacobian
     }
+}
+
+/// `matrix` factored; `speed` names it when singular.
+pub fn factor(matrix: GeneralBanded, speed: f64) -> Result<GeneralLu> {
+    matrix.factor().map_err(|e| match e {
+        banded::BandedError::Singular { index } => StationaryError::Singular { speed, equation: index },
+        other => unreachable!("an LU reports only singularity: {other}"),
+    })
 }
 
 /// EI·Kb − ρAv²·Kg − c_f v·D + k_t·Mf of one element of length l, with Kg = ∫Ψ′ᵀΨ′ and D_ij = ∫Ψ_i Ψ_j′ by

@@ -61,6 +61,46 @@ impl Domain {
     }
 }
 
+/// Friction distributed in the ballast: f_u (N/m) at J trapezoid sections per element, as in a time-domain run.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BallastFriction {
+    /// f_u (N/m) ≥ 0; 0 = none.
+    pub force_per_length: f64,
+    /// Sections per element J ≥ 1. Default 4, a time-domain run's.
+    pub subdivisions: usize,
+}
+
+impl Default for BallastFriction {
+    fn default() -> Self {
+        Self { force_per_length: 0.0, subdivisions: 4 }
+    }
+}
+
+/// The most friction sections per element accepted.
+pub const MAX_SUBDIVISIONS: usize = 64;
+
+impl BallastFriction {
+    /// f_u (N/m) on the default sections.
+    pub fn new(force_per_length: f64) -> Self {
+        Self { force_per_length, ..Self::default() }
+    }
+
+    /// Check f_u and J.
+    pub fn validate(&self) -> Result<()> {
+        if !(self.force_per_length.is_finite() && self.force_per_length >= 0.0) {
+            return Err(invalid("friction.force_per_length", self.force_per_length, "must be finite and ≥ 0 (N/m)"));
+        }
+        if !(1..=MAX_SUBDIVISIONS).contains(&self.subdivisions) {
+            return Err(invalid(
+                "friction.subdivisions",
+                self.subdivisions as f64,
+                format!("must lie in [1, {MAX_SUBDIVISIONS}] sections per element"),
+            ));
+        }
+        Ok(())
+    }
+}
+
 /// A point load moving at constant speed on an infinite beam on its foundation.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct StationaryProblem {
@@ -75,6 +115,8 @@ pub struct StationaryProblem {
     /// Whether the rail's weight rests on a nonlinear soil (ignored on a linear one, where it only settles the
     /// rail uniformly).
     pub self_weight: bool,
+    /// Friction in the ballast (none by default).
+    pub friction: BallastFriction,
     /// The moving domain.
     pub domain: Domain,
 }
@@ -98,7 +140,13 @@ impl StationaryProblem {
         if !(self.speed.is_finite() && self.speed >= 0.0 && self.speed < bar_wave) {
             return Err(invalid("speed", self.speed, format!("must lie in [0, {bar_wave:.0}) m/s")));
         }
+        self.friction.validate()?;
         self.domain.validate()
+    }
+
+    /// Whether the ballast holds the rail by friction.
+    pub fn has_friction(&self) -> bool {
+        self.friction.force_per_length > 0.0
     }
 
     /// Whether the soil is nonlinear (sections carry its unilateral part).
@@ -110,6 +158,13 @@ impl StationaryProblem {
     /// whose far field rests on the soil without force or lifts straight off it, and is not the linear one.
     pub fn has_free_ends(&self) -> bool {
         self.is_nonlinear() && !self.self_weight
+    }
+
+    /// Whether the rear end is free: as [`Self::has_free_ends`], or with friction, which holds the rail behind the
+    /// wave still at its residual deflection (W′ = 0, so W″ = W‴ = 0 there; the transparent end would pull it
+    /// back to W_far).
+    pub fn has_free_rear(&self) -> bool {
+        self.has_free_ends() || self.has_friction()
     }
 
     /// The far field's level W_far (m): the self-weight settlement −ρA·g/k_c on a nonlinear soil with self-weight,

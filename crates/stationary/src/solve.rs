@@ -6,12 +6,10 @@
 //! lift-off says so — never a silent wrong wave.
 
 use crate::error::Result;
+use crate::newton::newton;
 use crate::operator::MovingFrame;
 use crate::problem::{MAX_ELEMENTS, StationaryProblem};
 use crate::wave::StationaryWave;
-
-/// Most Newton iterations (each changes the pressed set; measured 2–6 from the previous speed's set).
-pub const MAX_ITERATIONS: usize = 100;
 
 /// Most doublings of the domain to hold the lift-off zones.
 pub const MAX_EXTENSIONS: usize = 6;
@@ -47,12 +45,47 @@ impl Convergence {
     pub fn is_converged(&self) -> bool {
         matches!(self, Convergence::Converged { .. })
     }
+
+    /// The Newton iterations taken (0 for a domain too short).
+    pub fn iterations(&self) -> usize {
+        match self {
+            Convergence::Converged { iterations, .. } | Convergence::NotConverged { iterations, .. } => *iterations,
+            Convergence::DomainTooShort { .. } => 0,
+        }
+    }
 }
 
 /// The pressed set of one solve, to start the next speed's from (continuation in speed).
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct ContactGuess {
     pressed: Vec<bool>,
+    wave: Vec<f64>,
+}
+
+impl ContactGuess {
+    fn forget(&mut self) {
+        self.pressed.clear();
+        self.wave.clear();
+    }
+
+    fn is_empty(&self) -> bool {
+        self.pressed.is_empty() && self.wave.is_empty()
+    }
+
+    pub(crate) fn remember(&mut self, pressed: Vec<bool>, wave: &[f64]) {
+        self.pressed = pressed;
+        self.wave = wave.to_vec();
+    }
+
+    /// The last wave's DOFs, if it fits a domain of `dofs`.
+    pub(crate) fn wave(&self, dofs: usize) -> Option<&[f64]> {
+        (self.wave.len() == dofs).then_some(&self.wave[..])
+    }
+
+    /// The last pressed set, if it fits `sections`.
+    pub(crate) fn pressed(&self, sections: usize) -> Option<&[bool]> {
+        (self.pressed.len() == sections).then_some(&self.pressed[..])
+    }
 }
 
 /// The stationary wave of `problem`, its domain grown where the rail lifts off at an end.
@@ -67,9 +100,9 @@ pub fn solve_from(problem: &StationaryProblem, guess: &mut ContactGuess) -> Resu
     loop {
         let frame = MovingFrame::new(&problem)?;
         let (mut w, mut convergence) = newton(&frame, problem.speed, guess)?;
-        if !convergence.is_converged() && !guess.pressed.is_empty() {
+        if !convergence.is_converged() && !guess.is_empty() {
             // The last speed's set led astray: start again from the soil pressed everywhere.
-            guess.pressed.clear();
+            guess.forget();
             let (cold, status) = newton(&frame, problem.speed, guess)?;
             let taken = match (convergence, status) {
                 (
@@ -81,8 +114,11 @@ pub fn solve_from(problem: &StationaryProblem, guess: &mut ContactGuess) -> Resu
             (w, convergence) = (cold, taken);
         }
         let mut wave = StationaryWave::new(&problem, &frame, w, convergence);
-        // Free ends (a nonlinear soil without weight) may lift: the rail there carries nothing.
-        let (behind, ahead) = if problem.has_free_ends() { (false, false) } else { wave.lifted_at_ends() };
+        // Free ends (a nonlinear soil without weight) may lift: the rail there carries nothing. With friction the
+        // wave must have settled near both ends (the free rear and the transparent front are exact only there).
+        let lifted = if problem.has_free_ends() { (false, false) } else { wave.lifted_at_ends() };
+        let unsettled = wave.unsettled_at_ends();
+        let (behind, ahead) = (lifted.0 || unsettled.0, lifted.1 || unsettled.1);
         if !(behind || ahead) || !convergence.is_converged() {
             return Ok(wave);
         }
@@ -95,65 +131,6 @@ pub fn solve_from(problem: &StationaryProblem, guess: &mut ContactGuess) -> Resu
         }
         (domain.behind, domain.ahead) = grown;
         extensions += 1;
-        guess.pressed.clear();
+        guess.forget();
     }
-}
-
-/// A relative residual at which the wave counts as solved when the pressed set has not repeated exactly (round-off
-/// of the LU is ~1e-15 of the load).
-pub const TOLERANCE: f64 = 1e-10;
-
-/// The iteration on one domain, globalised by backtracking on ‖r‖₂ (the plain iteration cycles between sets that
-/// differ in a section at the contact's edge): from W, the Newton point W_N of the set P(W), then W + t(W_N − W)
-/// with t halved until the residual falls by 1e-4·t of itself. Returns (W, how it ended).
-fn newton(frame: &MovingFrame, speed: f64, guess: &mut ContactGuess) -> Result<(Vec<f64>, Convergence)> {
-    let m = frame.sections.len();
-    let mut pressed = match guess.pressed.len() == m {
-        true => guess.pressed.clone(),
-        false => vec![true; m],
-    };
-    let newton_point = |pressed: &[bool]| -> Result<Vec<f64>> {
-        let mut w = frame.rhs.clone();
-        frame.factor_with(pressed, speed)?.solve_in_place(&mut w);
-        Ok(w)
-    };
-    let mut w = newton_point(&pressed)?;
-    let (mut norm, mut relative) = residual(frame, &w);
-    for iteration in 1..=MAX_ITERATIONS {
-        let next: Vec<bool> = frame.sections.iter().map(|s| s.deflection(&w) < 0.0).collect();
-        // The residual decides: after a damped step the iterate is not its set's Newton point, so a repeated set
-        // alone proves nothing (the next step takes that point).
-        if relative <= TOLERANCE {
-            guess.pressed = next;
-            return Ok((w, Convergence::Converged { iterations: iteration, residual: relative }));
-        }
-        pressed = next;
-        let target = newton_point(&pressed)?;
-        let mut t = 1.0;
-        loop {
-            let trial: Vec<f64> = w.iter().zip(&target).map(|(a, b)| a + t * (b - a)).collect();
-            let (trial_norm, trial_relative) = residual(frame, &trial);
-            if trial_norm <= (1.0 - 1e-4 * t) * norm || t < 1e-6 {
-                (w, norm, relative) = (trial, trial_norm, trial_relative);
-                break;
-            }
-            t *= 0.5;
-        }
-    }
-    Ok((w, Convergence::NotConverged { iterations: MAX_ITERATIONS, residual: relative }))
-}
-
-/// (‖r‖₂, ‖r‖∞/‖f‖∞) of r = A W − Σ H_sᵀ k_s⟨−H_s W⟩₊ − f.
-fn residual(frame: &MovingFrame, w: &[f64]) -> (f64, f64) {
-    let mut r = vec![0.0; w.len()];
-    frame.matrix.mul_vec(w, &mut r);
-    for s in &frame.sections {
-        let force = s.stiffness * (-s.deflection(w)).max(0.0);
-        let d = 2 * s.element;
-        (0..4).for_each(|k| r[d + k] -= s.row[k] * force);
-    }
-    r.iter_mut().zip(&frame.rhs).for_each(|(r, f)| *r -= f);
-    let scale = frame.rhs.iter().fold(0.0f64, |m, f| m.max(f.abs())).max(f64::MIN_POSITIVE);
-    let two = r.iter().map(|x| x * x).sum::<f64>().sqrt();
-    (two, r.iter().fold(0.0f64, |m, x| m.max(x.abs())) / scale)
 }

@@ -3,6 +3,7 @@
 //! deflection left behind, and the power balance of the steady state — the load's power F v W′(0) against the
 //! dashpots' c_f v² ∫W′² ds (a conservative soil, linear or not, dissipates nothing over a cycle).
 
+use crate::friction::SectionState;
 use crate::operator::MovingFrame;
 use crate::problem::StationaryProblem;
 use crate::solve::Convergence;
@@ -28,6 +29,17 @@ pub struct LiftOffZone {
     pub largest_gap: f64,
 }
 
+/// Neighbouring friction sections where the rail slides over the ballast the same way.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SlipZone {
+    /// From (s, m).
+    pub from: f64,
+    /// To (s, m).
+    pub to: f64,
+    /// +1 where the rail rises (W′ < 0 as the load comes), −1 where it sinks.
+    pub direction: f64,
+}
+
 /// The stationary wave of a load at one speed.
 #[derive(Debug, Clone, PartialEq)]
 pub struct StationaryWave {
@@ -51,15 +63,34 @@ pub struct StationaryWave {
     pub settlement: f64,
     /// The zones where the rail left the soil.
     pub lift_off: Vec<LiftOffZone>,
+    /// The ballast's friction force at the nodes r (N/m, upward positive on the left-hand side: the rail feels −r);
+    /// zero without friction.
+    pub friction_force: Vec<f64>,
+    /// The zones where the rail slides over the ballast.
+    pub slip_zones: Vec<SlipZone>,
     /// F v W′(0) (W): the power the load puts in.
     pub load_power: f64,
     /// c_f v² ∫W′² ds (W): what the dashpots take out, on the domain and on the far field beyond its transparent
     /// ends.
     pub viscous_power: f64,
+    /// f_u v Σ |W′| over the slipping sections (W): what the ballast's friction takes out.
+    pub friction_power: f64,
+    /// v·e(W_behind) (W): the energy per unit length the wave leaves behind in the soil held by friction (e the
+    /// soil's and the weight's stored energy from the settled state), deposited at the speed the wave advances.
+    pub left_behind_power: f64,
     element_length: f64,
     load_node: usize,
     sections_lifted_at_ends: (bool, bool),
+    unsettled_at_ends: (bool, bool),
 }
+
+/// The share of each side of the domain next to its end over which a wave with friction must have settled.
+pub const END_SHARE: f64 = 0.1;
+
+/// How much of the peak the deflection may still vary there: the rail ahead must be at rest and the rail behind
+/// held (or creeping to where friction holds it, a decay of rate k/(c_f v)), for the transparent front and the free
+/// rear to be exact; 1e-6 is the frictionless wave's accuracy on the default domain.
+pub const SETTLED: f64 = 1e-6;
 
 impl StationaryWave {
     pub(crate) fn new(problem: &StationaryProblem, frame: &MovingFrame, w: Vec<f64>, status: Convergence) -> Self {
@@ -105,16 +136,47 @@ impl StationaryWave {
             }
             previous = lifted;
         }
+        let (mut friction_force, mut slip_zones, mut friction_power) = (vec![0.0; nodes], Vec::<SlipZone>::new(), 0.0);
+        let mut unsettled_at_ends = (false, false);
+        if let Some(friction) = &frame.friction {
+            let state = friction.march(&w);
+            let j = problem.friction.subdivisions;
+            (0..nodes).for_each(|i| friction_force[i] = state.force[i * j]);
+            friction_power = friction.dissipation(&state, &w, l, problem.speed);
+            for (section, state) in friction.sections.iter().zip(&state.states) {
+                let SectionState::Slipping { sign } = *state else { continue };
+                let spacing = l / j as f64;
+                match slip_zones.last_mut() {
+                    Some(zone) if zone.direction == sign && section.s - zone.to <= 1.5 * spacing => zone.to = section.s,
+                    _ => slip_zones.push(SlipZone { from: section.s, to: section.s, direction: sign }),
+                }
+            }
+            // Settled: the deflection varies by at most SETTLED of the peak over the last END_SHARE of each side.
+            let peak = deflection.iter().fold(0.0f64, |m, w| m.max(w.abs()));
+            let spread = |nodes: &mut dyn Iterator<Item = usize>, end: usize| {
+                nodes.map(|i| (deflection[i] - deflection[end]).abs()).fold(0.0f64, f64::max) > SETTLED * peak
+            };
+            let (rear_nodes, front_nodes) = (
+                (frame.load_node as f64 * END_SHARE).ceil() as usize,
+                ((nodes - 1 - frame.load_node) as f64 * END_SHARE).ceil() as usize,
+            );
+            unsettled_at_ends =
+                (spread(&mut (0..=rear_nodes), 0), spread(&mut (nodes - 1 - front_nodes..nodes), nodes - 1));
+        }
+        let stored = |u: f64| {
+            // e(W) = P(W) − P(W_far) + q (W − W_far), P(w) = ½k_t w² + ½(k_c − k_t) min(w, 0)², q = −k_c W_far.
+            let potential = |w: f64| 0.5 * k_t * w * w + 0.5 * (k_c - k_t) * w.min(0.0).powi(2);
+            potential(u) - potential(level) - k_c * level * (u - level)
+        };
         let last = nodes - 2;
         let at_end = |element: usize| frame.sections.iter().any(|s| s.element == element && s.deflection(&w) > 0.0);
         let v = problem.speed;
         // The dashpots work beyond the ends too, where the transparent ends continue the wave by its decaying modes.
-        if !problem.has_free_ends() {
-            let far = &frame.far_field;
-            let ends = [(&far.behind, 0), (&far.ahead, nodes - 1)];
-            for (end, i) in ends {
-                viscous += end.tail_slope_square(w[2 * i] - level, w[2 * i + 1]).unwrap_or(0.0);
-            }
+        let far = &frame.far_field;
+        let transparent =
+            [(!problem.has_free_rear(), &far.behind, 0), (!problem.has_free_ends(), &far.ahead, nodes - 1)];
+        for (_, end, i) in transparent.into_iter().filter(|(t, _, _)| *t) {
+            viscous += end.tail_slope_square(w[2 * i] - level, w[2 * i + 1]).unwrap_or(0.0);
         }
         Self {
             speed: v,
@@ -123,6 +185,11 @@ impl StationaryWave {
             s: frame.nodes.clone(),
             load_power: problem.load * v * slope[frame.load_node],
             viscous_power: f.damping * v * v * viscous,
+            friction_power,
+            left_behind_power: if problem.has_friction() { v * stored(w[0]) } else { 0.0 },
+            friction_force,
+            slip_zones,
+            unsettled_at_ends,
             deflection,
             slope,
             moment,
@@ -133,6 +200,12 @@ impl StationaryWave {
             load_node: frame.load_node,
             sections_lifted_at_ends: (at_end(0), at_end(last)),
         }
+    }
+
+    /// With friction: whether the wave has not settled (to [`SETTLED`] of its peak) over the last [`END_SHARE`] of
+    /// the domain behind the load, and ahead of it.
+    pub fn unsettled_at_ends(&self) -> (bool, bool) {
+        self.unsettled_at_ends
     }
 
     /// Whether the rail leaves the soil in the last element behind, and ahead.
@@ -204,10 +277,11 @@ impl StationaryWave {
         self.deflection[0]
     }
 
-    /// (load power − viscous power) / load power: zero for the exact stationary wave on the infinite track; here
-    /// the discretisation's and the ends' share (0 when no power flows).
+    /// (load power − viscous − friction − left-behind power) / load power: zero for the exact stationary wave on
+    /// the infinite track; here the discretisation's and the ends' share (0 when no power flows).
     pub fn power_imbalance(&self) -> f64 {
-        if self.load_power.abs() > 0.0 { (self.load_power - self.viscous_power) / self.load_power } else { 0.0 }
+        let out = self.viscous_power + self.friction_power + self.left_behind_power;
+        if self.load_power.abs() > 0.0 { (self.load_power - out) / self.load_power } else { 0.0 }
     }
 
     /// Element length of the domain (m).

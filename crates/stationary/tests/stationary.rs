@@ -3,12 +3,20 @@
 use fem_beam::reference::{InfiniteBeam, uic60_on_soft_soil};
 use fem_beam::tensionless::TensionlessPointLoad;
 use fem_beam::{Foundation, FoundationLaw};
-use stationary::{ContactGuess, Convergence, Domain, StationaryProblem, solve, solve_from};
+use stationary::{BallastFriction, ContactGuess, Convergence, Domain, StationaryProblem, solve, solve_from};
 
 fn problem(law: FoundationLaw, damping_ratio: f64, speed: f64, load: f64) -> StationaryProblem {
     let case = uic60_on_soft_soil();
     let foundation = Foundation { law, ..case.foundation.with_damping_ratio(damping_ratio, &case.beam).unwrap() };
-    StationaryProblem { beam: case.beam, foundation, load, speed, self_weight: true, domain: Domain::default() }
+    StationaryProblem {
+        beam: case.beam,
+        foundation,
+        load,
+        speed,
+        self_weight: true,
+        friction: BallastFriction::default(),
+        domain: Domain::default(),
+    }
 }
 
 /// Linear soil: the wave equals the closed form of the infinite beam (`frictrack analytic`) to 1e-4 of its peak at
@@ -91,7 +99,7 @@ fn a_speed_sweep_costs_a_few_solves_per_speed() {
             match wave.convergence {
                 Convergence::Converged { iterations, residual } => {
                     solves += iterations;
-                    assert!(residual <= stationary::solve::TOLERANCE, "{law:?} v {v}: {residual:e}");
+                    assert!(residual <= stationary::newton::TOLERANCE, "{law:?} v {v}: {residual:e}");
                 }
                 other => panic!("{law:?} v {v}: {other:?}"),
             }
@@ -112,7 +120,7 @@ fn a_tensionless_wave_that_is_not_found_is_reported_as_such() {
     let wave = solve(&problem(FoundationLaw::Tensionless, 0.05, 150.0, 83.4e3)).unwrap();
     match wave.convergence {
         Convergence::NotConverged { iterations, residual } => {
-            assert_eq!(iterations, stationary::solve::MAX_ITERATIONS);
+            assert_eq!(iterations, stationary::newton::MAX_ITERATIONS);
             assert!(residual > 1e-4, "{residual:e}");
         }
         other => panic!("{other:?}"),
@@ -125,3 +133,4 @@ fn undamped_above_the_critical_speed_it_says_there_is_no_wave() {
     assert!(err.to_string().contains("no stationary wave at v = 250 m/s"), "{err}");
     assert!(err.is_invalid_input());
 }
+

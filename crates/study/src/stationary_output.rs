@@ -6,9 +6,11 @@
 
 use crate::error::{Result, invalid};
 use crate::plot::{PlotSpec, Series, Stroke};
-use crate::scenario::Scenario;
+use crate::scenario::{QuadratureKind, Scenario};
 use serde::Serialize;
-use stationary::{ContactGuess, Convergence, Domain, StationaryError, StationaryProblem, StationaryWave};
+use stationary::{
+    BallastFriction, ContactGuess, Convergence, Domain, StationaryError, StationaryProblem, StationaryWave,
+};
 
 /// One lift-off zone of a wave.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -19,6 +21,17 @@ pub struct ZoneSummary {
     pub to: f64,
     /// Largest gap between rail and soil (m).
     pub largest_gap: f64,
+}
+
+/// One slip zone of a wave: where the rail slides over the ballast.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SlipSummary {
+    /// From (s, m).
+    pub from: f64,
+    /// To (s, m).
+    pub to: f64,
+    /// "up" where the rail rises as the load passes, "down" where it sinks.
+    pub direction: &'static str,
 }
 
 /// The stationary wave at one speed, summarised.
@@ -52,11 +65,17 @@ pub struct StationaryPoint {
     pub deflection_behind: Option<f64>,
     /// Where the rail left the soil.
     pub lift_off_zones: Vec<ZoneSummary>,
+    /// Where the rail slides over the ballast (none without friction).
+    pub slip_zones: Vec<SlipSummary>,
     /// F v W′(0) (W).
     pub load_power: Option<f64>,
     /// c_f v² ∫W′² (W).
     pub viscous_power: Option<f64>,
-    /// (load − viscous)/load power.
+    /// f_u v ∫_slip |W′| (W): the ballast friction's dissipation.
+    pub friction_power: Option<f64>,
+    /// v·e(W_behind) (W): the energy the wave leaves behind in the soil friction holds deflected.
+    pub left_behind_power: Option<f64>,
+    /// (load − viscous − friction − left-behind)/load power: zero for the exact wave.
     pub power_imbalance: Option<f64>,
     /// The domain behind and ahead of the load (m) and its element length (m).
     pub domain: (f64, f64, f64),
@@ -71,6 +90,8 @@ pub struct StationaryStudy {
     pub load: f64,
     /// The self-weight settlement (m), 0 on a linear soil or without weight.
     pub settlement: f64,
+    /// The ballast's friction f_u (N/m), 0 without.
+    pub friction: f64,
     /// One point per speed.
     pub points: Vec<StationaryPoint>,
     /// The waves, where found (None where no stationary wave exists at that speed).
@@ -80,15 +101,25 @@ pub struct StationaryStudy {
 /// The stationary problem of `scenario` at `speed` (m/s) on `domain`: its beam, its soil (stiffness, damping and
 /// law; absorbing zones do not apply on an infinite track), its single load, its self-weight.
 pub fn problem(scenario: &Scenario, speed: f64, domain: Domain) -> Result<StationaryProblem> {
-    if scenario.friction.devices.is_some() || scenario.friction.distributed.is_some() {
-        let path = if scenario.friction.devices.is_some() { "friction.devices" } else { "friction.distributed" };
+    if scenario.friction.devices.is_some() {
         return Err(invalid(
-            path,
+            "friction.devices",
             "given",
-            "the stationary solver takes no friction yet: run the load through a co-moving window (`frictrack run \
-             --co-moving`) or across a long finite track with absorbing zones for a friction-damped wave",
+            "the stationary solver takes friction distributed along the track (`[friction.distributed]`), not \
+             devices at fixed places of a finite track: run devices across the finite track",
         ));
     }
+    let friction = match &scenario.friction.distributed {
+        None => BallastFriction::default(),
+        Some(d) if d.quadrature != QuadratureKind::Trapezoid => {
+            return Err(invalid(
+                "friction.distributed.quadrature",
+                "simpson",
+                "the stationary solver takes the trapezoid sections (the default) of a time-domain run",
+            ));
+        }
+        Some(d) => BallastFriction { force_per_length: d.force_per_length, subdivisions: d.subdivisions },
+    };
     if scenario.load.train.is_some() || !scenario.load.axles.is_empty() || !scenario.load.patches.is_empty() {
         return Err(invalid("load.train", "given", "the stationary solver takes the single load `load.force`"));
     }
@@ -103,6 +134,7 @@ pub fn problem(scenario: &Scenario, speed: f64, domain: Domain) -> Result<Statio
         load: scenario.load.force,
         speed,
         self_weight: scenario.foundation.self_weight,
+        friction,
         domain,
     })
 }
@@ -128,7 +160,8 @@ impl StationaryStudy {
                 Err(other) => return Err(other.into()),
             }
         }
-        Ok(Self { law, load: first.load, settlement: -first.far_level(), points, waves })
+        let friction = first.friction.force_per_length;
+        Ok(Self { law, load: first.load, settlement: -first.far_level(), friction, points, waves })
     }
 
     /// The figures: with one speed the wave's deflection and moment along s; with several the peak deflections
@@ -222,8 +255,22 @@ impl StationaryPoint {
                     .collect(),
                 false => Vec::new(),
             },
+            slip_zones: match found {
+                true => wave
+                    .slip_zones
+                    .iter()
+                    .map(|z| SlipSummary {
+                        from: z.from,
+                        to: z.to,
+                        direction: if z.direction > 0.0 { "up" } else { "down" },
+                    })
+                    .collect(),
+                false => Vec::new(),
+            },
             load_power: some(wave.load_power),
             viscous_power: some(wave.viscous_power),
+            friction_power: some(wave.friction_power),
+            left_behind_power: some(wave.left_behind_power),
             power_imbalance: some(wave.power_imbalance()),
             domain: (-wave.s[0], *wave.s.last().unwrap_or(&0.0), wave.element_length()),
         }
@@ -245,21 +292,25 @@ impl StationaryPoint {
             deflection_under_load: None,
             deflection_behind: None,
             lift_off_zones: Vec::new(),
+            slip_zones: Vec::new(),
             load_power: None,
             viscous_power: None,
+            friction_power: None,
+            left_behind_power: None,
             power_imbalance: None,
             domain: (domain.behind, domain.ahead, domain.element_length),
         }
     }
 }
 
-/// The wave's shape as CSV: s (m), deflection (m), slope (rad), moment (N·m), soil reaction (N/m).
+/// The wave's shape as CSV: s (m), deflection (m), slope (rad), moment (N·m), soil reaction (N/m), the ballast's
+/// friction force (N/m, the resistance r: the rail feels −r).
 pub fn wave_csv(wave: &StationaryWave) -> String {
-    let mut out = String::from("s_m,deflection_m,slope_rad,moment_Nm,soil_reaction_N_per_m\n");
+    let mut out = String::from("s_m,deflection_m,slope_rad,moment_Nm,soil_reaction_N_per_m,friction_force_N_per_m\n");
     for i in 0..wave.s.len() {
         out.push_str(&format!(
-            "{},{},{},{},{}\n",
-            wave.s[i], wave.deflection[i], wave.slope[i], wave.moment[i], wave.soil_reaction[i]
+            "{},{},{},{},{},{}\n",
+            wave.s[i], wave.deflection[i], wave.slope[i], wave.moment[i], wave.soil_reaction[i], wave.friction_force[i]
         ));
     }
     out

@@ -61,7 +61,10 @@ fn a_tensionless_sweep_reports_lift_off_and_where_no_wave_was_found() {
     let csv = frictrack(&["stationary", path, "--speed", "60", "--format", "csv"]);
     let csv = String::from_utf8_lossy(&csv.stdout).to_string();
     let mut lines = csv.lines();
-    assert_eq!(lines.next().unwrap(), "s_m,deflection_m,slope_rad,moment_Nm,soil_reaction_N_per_m");
+    assert_eq!(
+        lines.next().unwrap(),
+        "s_m,deflection_m,slope_rad,moment_Nm,soil_reaction_N_per_m,friction_force_N_per_m"
+    );
     let rows: Vec<Vec<f64>> = lines.map(|l| l.split(',').map(|x| x.parse().unwrap()).collect()).collect();
     let lowest = rows.iter().min_by(|a, b| a[1].total_cmp(&b[1])).unwrap();
     assert_eq!(lowest[0], 0.0);
@@ -71,7 +74,13 @@ fn a_tensionless_sweep_reports_lift_off_and_where_no_wave_was_found() {
 fn what_the_stationary_solver_does_not_take_is_refused_by_name() {
     let folder = temporary_folder("stationary-bad");
     for (toml, args, needle) in [
-        ("[friction.distributed]\nforce_per_length = 1e3\n", vec!["--speed", "100"], "friction.distributed"),
+        ("[friction.devices]\ncount = 5\nforce = 1e4\n", vec!["--speed", "100"], "friction.devices"),
+        (
+            "[friction.distributed]\nforce_per_length = 1e3\nquadrature = \"simpson\"\n",
+            vec!["--speed", "100"],
+            "friction.distributed.quadrature",
+        ),
+        ("[friction.distributed]\nforce_per_length = -5.0\n", vec!["--speed", "100"], "force_per_length"),
         ("[load]\ntrain = \"hslm-a1\"\n", vec!["--speed", "100"], "load.train"),
         ("", vec!["--speed", "100", "--domain", "60"], "--domain"),
         ("", vec!["--speed", "100", "--element-length", "0"], "domain.element_length"),
@@ -91,4 +100,30 @@ fn what_the_stationary_solver_does_not_take_is_refused_by_name() {
         assert_eq!(out.status.code(), Some(2), "{all:?}: {err}");
         assert!(err.contains(needle), "{all:?}: {err}");
     }
+}
+
+/// Ballast friction on the infinite track: the wave's slip zones, the deflection friction leaves behind (never more
+/// than f_u/k = 8 mm at 2 kN/m on the reference soil), the friction's share of the power balance, and its force
+/// along the wave (within ±f_u).
+#[test]
+fn the_stationary_wave_with_ballast_friction_reports_its_slip_zones_and_what_is_left_behind() {
+    let folder = temporary_folder("stationary-friction");
+    let file = folder.join("friction.toml");
+    std::fs::write(&file, "[foundation]\ndamping_ratio = 0.05\n[friction.distributed]\nforce_per_length = 2000.0\n")
+        .unwrap();
+    let path = file.to_str().unwrap();
+    let point = json(&frictrack(&["stationary", path, "--speed", "100", "--format", "json"]));
+    assert_eq!(point["status"], "converged");
+    assert!(!point["slip_zones"].as_array().unwrap().is_empty(), "{point}");
+    let behind = point["deflection_behind"].as_f64().unwrap();
+    assert!(behind.abs() > 1e-4 && behind.abs() <= 8e-3, "{behind}");
+    let (load, friction) = (point["load_power"].as_f64().unwrap(), point["friction_power"].as_f64().unwrap());
+    assert!(friction > 0.1 * load && point["power_imbalance"].as_f64().unwrap().abs() <= 5e-4, "{point}");
+    let text = String::from_utf8_lossy(&frictrack(&["stationary", path, "--speed", "100"]).stdout).to_string();
+    assert!(text.contains("ballast friction 2.00 kN/m") && text.contains("slip zones"), "{text}");
+    let csv = frictrack(&["stationary", path, "--speed", "100", "--format", "csv"]);
+    let csv = String::from_utf8_lossy(&csv.stdout).to_string();
+    let forces: Vec<f64> = csv.lines().skip(1).map(|l| l.rsplit(',').next().unwrap().parse().unwrap()).collect();
+    let largest = forces.iter().fold(0.0f64, |m, r| m.max(r.abs()));
+    assert!(largest <= 2000.0 * (1.0 + 1e-12) && largest >= 1999.0, "{largest}");
 }

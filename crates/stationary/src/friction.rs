@@ -1,0 +1,207 @@
+//! Ballast friction in the moving frame (docs/theory.md §14.4). A material point meets the wave at s = +∞ and
+//! leaves it at s = −∞: its friction force depends on what the wave did to it *ahead* of where it stands, so the
+//! force along s is a hysteresis (a play operator) of W, marched from the front. Each section is a Jenkins element —
+//! a spring κ (N/m², per unit length) in series with a Coulomb slider of strength f_u (N/m):
+//!
+//! ```text
+//! r_i = clamp(r_{i+1} + κ (W_i − W_{i+1}), −f_u, f_u),     r at the front = 0, W beyond the front = W_far,
+//! ```
+//!
+//! from the front section to the rear one (W_i = H_i W, the deflection at section i). A section whose trial force
+//! passes ±f_u slips (the material point moves, r = f_u·sign of its velocity −vW′); one within it is stuck, and its
+//! force is r_a + κ (W_i − W_a) after the last slipping section a ahead of it (or κ (W_i − W_far) if none: the rail
+//! has not moved since it left the far field). As κ → ∞ this is the rigid Coulomb law of a time-domain run: a stuck
+//! point does not move. κ = [`JENKINS_RATIO`]·k_c moves a stuck point by at most f_u/κ, 1e-6 of the largest
+//! deflection friction can hold, f_u/k_c.
+//!
+//! The sections are the trapezoid sections of a time-domain run (J per element, shared nodes, weights l/J and l/2J
+//! at the domain's ends), so the two methods discretise the same ballast.
+
+use crate::problem::BallastFriction;
+use banded::general::GeneralBanded;
+use fem_beam::element::hermite;
+
+/// κ/k_c: the Jenkins stiffness over the soil's (see the module doc).
+pub const JENKINS_RATIO: f64 = 1e6;
+
+/// One friction section: its element, its row Ψ(ξ) over the element's four DOFs, its length of ballast (m) and
+/// its place s (m).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FrictionSection {
+    /// The element; its DOFs are 2e … 2e + 3.
+    pub element: usize,
+    /// Ψ(ξ).
+    pub row: [f64; 4],
+    /// The ballast length the section stands for (m).
+    pub weight: f64,
+    /// s (m).
+    pub s: f64,
+    /// Its place ξ ∈ [0, 1] in the element.
+    pub xi: f64,
+}
+
+impl FrictionSection {
+    /// H_i W (m).
+    pub fn deflection(&self, w: &[f64]) -> f64 {
+        let d = 2 * self.element;
+        (0..4).map(|k| self.row[k] * w[d + k]).sum()
+    }
+
+    /// W′ at the section (rad), from the element's derivative row.
+    pub fn slope(&self, w: &[f64], l: f64) -> f64 {
+        let d = 2 * self.element;
+        hermite::shape_dx(self.xi, l).iter().zip(&w[d..d + 4]).map(|(n, q)| n * q).sum()
+    }
+}
+
+/// What each section does in the wave.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum SectionState {
+    /// The rail slides over the ballast there: r = sign·f_u, sign that of the velocity −vW′.
+    Slipping {
+        /// ±1.
+        sign: f64,
+    },
+    /// The rail is held: r = r_a + κ (W_i − W_a) after the slipping section `anchor` ahead, or κ (W_i − W_far) if
+    /// none has slipped ahead of it.
+    Stuck {
+        /// The last slipping section ahead.
+        anchor: Option<usize>,
+    },
+}
+
+/// The friction forces along the wave and each section's state.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FrictionState {
+    /// r_i (N/m, upward positive: the resistance on the left-hand side, so the rail feels −r_i).
+    pub force: Vec<f64>,
+    /// Slipping or stuck.
+    pub states: Vec<SectionState>,
+}
+
+/// The ballast's sections on a domain, front last (ascending s).
+#[derive(Debug, Clone, PartialEq)]
+pub struct FrictionSections {
+    /// The sections.
+    pub sections: Vec<FrictionSection>,
+    /// f_u (N/m).
+    pub capacity: f64,
+    /// κ (N/m²).
+    pub stiffness: f64,
+    /// W_far: where the rail rests beyond the front (m).
+    pub rest: f64,
+}
+
+/// One stick segment's coupling to its anchor: the Newton matrix carries −u·H_aᵀ, u = κ Σ_i weight_i H_iᵀ over the
+/// segment's sections.
+#[derive(Debug, Clone, PartialEq)]
+pub struct AnchorCoupling {
+    /// u (length of the DOF vector).
+    pub column: Vec<f64>,
+    /// The anchor section a.
+    pub anchor: usize,
+}
+
+impl FrictionSections {
+    /// The sections of `elements` elements of length `l`, the first starting `behind` elements behind the load.
+    pub fn new(friction: &BallastFriction, elements: usize, behind: usize, l: f64, stiffness: f64, rest: f64) -> Self {
+        let j = friction.subdivisions;
+        let count = j * elements + 1;
+        let sections = (0..count)
+            .map(|i| {
+                let (element, xi) = match i == count - 1 {
+                    true => (elements - 1, 1.0),
+                    false => (i / j, (i % j) as f64 / j as f64),
+                };
+                let ends = i == 0 || i == count - 1;
+                FrictionSection {
+                    element,
+                    row: hermite::shape(xi, l),
+                    weight: if ends { 0.5 * l / j as f64 } else { l / j as f64 },
+                    s: (i as f64 / j as f64 - behind as f64) * l,
+                    xi,
+                }
+            })
+            .collect();
+        Self { sections, capacity: friction.force_per_length, stiffness, rest }
+    }
+
+    /// The play operator's march from the front (see the module doc).
+    pub fn march(&self, w: &[f64]) -> FrictionState {
+        let n = self.sections.len();
+        let mut force = vec![0.0; n];
+        let mut states = vec![SectionState::Stuck { anchor: None }; n];
+        let (mut r, mut previous, mut anchor) = (0.0, self.rest, None);
+        for i in (0..n).rev() {
+            let here = self.sections[i].deflection(w);
+            let trial = r + self.stiffness * (here - previous);
+            (r, states[i]) = if trial.abs() > self.capacity {
+                anchor = Some(i);
+                let sign = trial.signum();
+                (sign * self.capacity, SectionState::Slipping { sign })
+            } else {
+                (trial, SectionState::Stuck { anchor })
+            };
+            force[i] = r;
+            previous = here;
+        }
+        FrictionState { force, states }
+    }
+
+    /// Σ_i weight_i H_iᵀ r_i added to `out` (N): the friction forces' share of A W + … − f.
+    pub fn add_forces(&self, force: &[f64], out: &mut [f64]) {
+        for (section, r) in self.sections.iter().zip(force) {
+            let d = 2 * section.element;
+            (0..4).for_each(|k| out[d + k] += section.row[k] * section.weight * r);
+        }
+    }
+
+    /// The affine friction of `state` in the Newton system: each stuck section's κ weight_i H_iᵀH_i added to
+    /// `matrix`, the forces that do not depend on W moved to `rhs`, and each stick segment's coupling to its anchor
+    /// returned (the matrix of the system is `matrix` − Σ u H_aᵀ).
+    pub fn linearise(&self, state: &FrictionState, matrix: &mut GeneralBanded, rhs: &mut [f64]) -> Vec<AnchorCoupling> {
+        let mut couplings: Vec<AnchorCoupling> = Vec::new();
+        for (i, section) in self.sections.iter().enumerate() {
+            let d = 2 * section.element;
+            let (row, weight) = (section.row, section.weight);
+            // The part of r_i that does not depend on W (N/m).
+            let constant = match state.states[i] {
+                SectionState::Slipping { sign } => sign * self.capacity,
+                SectionState::Stuck { anchor } => {
+                    let spring = self.stiffness * weight;
+                    for a in 0..4 {
+                        for b in 0..4 {
+                            matrix.add(d + a, d + b, spring * row[a] * row[b]);
+                        }
+                    }
+                    match anchor {
+                        None => -self.stiffness * self.rest,
+                        Some(a) => {
+                            let coupling = match couplings.last_mut().filter(|c| c.anchor == a) {
+                                Some(c) => c,
+                                None => {
+                                    couplings.push(AnchorCoupling { column: vec![0.0; rhs.len()], anchor: a });
+                                    couplings.last_mut().expect("just pushed")
+                                }
+                            };
+                            (0..4).for_each(|k| coupling.column[d + k] += spring * row[k]);
+                            state.force[a]
+                        }
+                    }
+                }
+            };
+            (0..4).for_each(|k| rhs[d + k] -= row[k] * weight * constant);
+        }
+        couplings
+    }
+
+    /// f_u v Σ_slipping weight_i |W′_i| (W): the power the slipping ballast dissipates at speed `speed`.
+    pub fn dissipation(&self, state: &FrictionState, w: &[f64], l: f64, speed: f64) -> f64 {
+        self.sections
+            .iter()
+            .zip(&state.states)
+            .filter(|(_, s)| matches!(s, SectionState::Slipping { .. }))
+            .map(|(section, _)| self.capacity * speed * section.weight * section.slope(w, l).abs())
+            .sum()
+    }
+}

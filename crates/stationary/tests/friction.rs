@@ -1,0 +1,119 @@
+//! The stationary wave with ballast friction against its limits (docs/theory.md §14.4): no friction is the linear
+//! wave, huge friction holds the rail still, the power balance closes, friction holds at most f_u/k behind the load,
+//! and continuation in speed converges at every speed of a sweep through the critical speed.
+
+use fem_beam::reference::uic60_on_soft_soil;
+use fem_beam::{Foundation, FoundationLaw};
+use stationary::{BallastFriction, ContactGuess, Domain, StationaryProblem, StationaryWave, solve, solve_from};
+
+/// The reference track (ζ = 5 %) under 83.4 kN at `speed` with `friction` N/m of ballast friction.
+fn problem(friction: f64, speed: f64) -> StationaryProblem {
+    let case = uic60_on_soft_soil();
+    let foundation = case.foundation.with_damping_ratio(0.05, &case.beam).unwrap();
+    StationaryProblem {
+        beam: case.beam,
+        foundation: Foundation { law: FoundationLaw::Linear, ..foundation },
+        load: 83.4e3,
+        speed,
+        self_weight: false,
+        friction: BallastFriction::new(friction),
+        domain: Domain::default(),
+    }
+}
+
+fn converged(p: &StationaryProblem) -> StationaryWave {
+    let wave = solve(p).unwrap();
+    assert!(wave.convergence.is_converged(), "f_u {} v {}: {:?}", p.friction.force_per_length, p.speed, wave.convergence);
+    wave
+}
+
+fn largest_difference(a: &StationaryWave, b: &StationaryWave) -> f64 {
+    a.s.iter()
+        .zip(&a.deflection)
+        .filter_map(|(s, w)| b.s.iter().position(|t| (t - s).abs() < 1e-9).map(|i| (w - b.deflection[i]).abs()))
+        .fold(0.0, f64::max)
+}
+
+/// f_u → 0 is the linear wave: the difference is of the order f_u/k (the largest deflection friction can hold) and
+/// falls in proportion to f_u. Measured at 100 m/s: 1.19·(f_u/k) for 1 and 10 N/m; at 250 m/s: 7.0·(f_u/k) (the
+/// slip zones reach far along the lightly damped supercritical wave).
+#[test]
+fn without_friction_the_wave_is_the_linear_one() {
+    for v in [100.0, 250.0] {
+        let linear = converged(&problem(0.0, v));
+        let differences: Vec<f64> = [1.0, 10.0]
+            .iter()
+            .map(|&f| largest_difference(&converged(&problem(f, v)), &linear) / (f / 250e3))
+            .collect();
+        assert!(differences.iter().all(|d| *d <= 10.0), "v {v}: {differences:?} × f_u/k");
+        let proportional = differences[1] / differences[0];
+        assert!((proportional - 1.0).abs() <= 0.05, "v {v}: {differences:?}");
+    }
+}
+
+/// Huge friction holds the rail: every section stuck, nothing slips, and what is left of W is the Jenkins springs'
+/// compliance — a beam on a soil κ = 10⁶k, whose peak is the linear one times (k/κ)^¾ = 3.2e-5 (measured 2.5e-5 at
+/// 100 m/s, 1.5e-5 at 250 m/s, the same for 10⁶ and 10⁸ N/m).
+#[test]
+fn huge_friction_holds_the_rail_still() {
+    for v in [100.0, 250.0] {
+        let peak = converged(&problem(0.0, v)).max_downward().value;
+        for f in [1e6, 1e8] {
+            let wave = converged(&problem(f, v));
+            let largest = wave.deflection.iter().fold(0.0f64, |m, w| m.max(w.abs()));
+            assert!(wave.slip_zones.is_empty() && wave.friction_power == 0.0, "v {v} f_u {f}: {:?}", wave.slip_zones);
+            assert!(largest <= 1e-6f64.powf(0.75) * peak, "v {v} f_u {f}: {:e} of the linear peak", largest / peak);
+        }
+    }
+}
+
+/// The power balance F v W′(0) = c_f v² ∫W′² + f_u v ∫_slip |W′| + v e(W_behind) closes up to the discretisation
+/// (the trapezoid sections' sum of |W′| and the Hermite slope), which falls with the element: measured at 5 kN/m
+/// 2.4e-4 → 1.0e-4 → 2.1e-5 (100 m/s) and 4.9e-4 → 8.6e-5 → 1.4e-5 (250 m/s) for 0.5, 0.25, 0.125 m elements.
+/// Friction never holds more than f_u/k behind the load.
+#[test]
+fn the_power_balance_closes_and_friction_holds_at_most_f_u_over_k() {
+    for v in [100.0, 250.0] {
+        for f in [1e3, 5e3] {
+            let imbalance: Vec<f64> = [0.5, 0.25, 0.125]
+                .iter()
+                .map(|&l| {
+                    let mut p = problem(f, v);
+                    p.domain.element_length = l;
+                    let wave = converged(&p);
+                    assert!(wave.behind().abs() <= f / 250e3, "v {v} f_u {f} l {l}: {:e} m behind", wave.behind());
+                    assert!(wave.friction_power > 0.0 && wave.viscous_power > 0.0);
+                    wave.power_imbalance().abs()
+                })
+                .collect();
+            assert!(imbalance[2] <= 5e-5 && imbalance[2] <= 0.5 * imbalance[0], "v {v} f_u {f}: {imbalance:?}");
+        }
+    }
+}
+
+/// Continuation in speed through the critical speed (v_cr = 205.6 m/s): every speed of the sweep converges, and
+/// each wave is the one a cold solve finds (the solution the iteration selects does not depend on where it
+/// started; measured: identical to the bit).
+#[test]
+fn a_sweep_through_the_critical_speed_converges_at_every_speed() {
+    let mut guess = ContactGuess::default();
+    for i in 1..=12 {
+        let p = problem(2e3, 25.0 * i as f64);
+        let warm = solve_from(&p, &mut guess).unwrap();
+        assert!(warm.convergence.is_converged(), "v {}: {:?}", p.speed, warm.convergence);
+        let cold = converged(&p);
+        let gap = largest_difference(&warm, &cold) / cold.max_downward().value;
+        assert!(gap <= 1e-9, "v {}: warm and cold waves differ by {gap:e} of the peak", p.speed);
+    }
+}
+
+/// Bad friction input names its field.
+#[test]
+fn bad_friction_is_refused_by_name() {
+    let mut p = problem(-1.0, 100.0);
+    let message = solve(&p).unwrap_err().to_string();
+    assert!(message.contains("friction.force_per_length") && message.contains("-1"), "{message}");
+    p.friction = BallastFriction { force_per_length: 1e3, subdivisions: 0 };
+    let message = solve(&p).unwrap_err().to_string();
+    assert!(message.contains("friction.subdivisions"), "{message}");
+}
