@@ -23,7 +23,13 @@ fn problem(friction: f64, speed: f64) -> StationaryProblem {
 
 fn converged(p: &StationaryProblem) -> StationaryWave {
     let wave = solve(p).unwrap();
-    assert!(wave.convergence.is_converged(), "f_u {} v {}: {:?}", p.friction.force_per_length, p.speed, wave.convergence);
+    assert!(
+        wave.convergence.is_converged(),
+        "f_u {} v {}: {:?}",
+        p.friction.force_per_length,
+        p.speed,
+        wave.convergence
+    );
     wave
 }
 

@@ -133,4 +133,3 @@ fn undamped_above_the_critical_speed_it_says_there_is_no_wave() {
     assert!(err.to_string().contains("no stationary wave at v = 250 m/s"), "{err}");
     assert!(err.is_invalid_input());
 }
-

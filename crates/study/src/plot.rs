@@ -78,7 +78,8 @@ pub struct PlotSpec {
     /// How colour indices map to colours.
     pub palette: Palette,
     /// Panels stacked top to bottom under this figure's title and subtitle, each drawn as a figure of its own (its
-    /// title a heading, its legend beside it) on common x and y ranges; when there are any, this figure's own
+    /// title a heading, its legend beside it) on a common x range, and a common y range among panels of the same
+    /// y label; when there are any, this figure's own
     /// series and marks are not drawn.
     pub panels: Vec<PlotSpec>,
 }
@@ -305,17 +306,19 @@ fn draw<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, spec: &PlotSpec) -> s
         let range = ranges(spec).ok_or("nothing to plot")?;
         return Ok(Layout { image, panels: vec![draw_panel(&body, spec, range)?] });
     }
-    // Common ranges, so that the panels compare at a glance.
-    let found: Vec<_> = spec.panels.iter().filter_map(ranges).collect();
-    let first = *found.first().ok_or("nothing to plot")?;
-    let ((x0, x1), (y0, y1)) =
-        found.iter().fold(first, |((a, b), (c, d)), &((e, f), (g, h))| ((a.min(e), b.max(f)), (c.min(g), d.max(h))));
+    // Common ranges, so that the panels compare at a glance: x for all, y among panels of the same quantity (the
+    // same y label; a moment's kN·m has nothing to share with a deflection's mm).
+    let found: Vec<_> = spec.panels.iter().filter_map(|p| ranges(p).map(|r| (p.y_label.as_str(), r))).collect();
+    let union = |a: (f64, f64), b: (f64, f64)| (a.0.min(b.0), a.1.max(b.1));
+    let x = found.iter().map(|(_, (x, _))| *x).reduce(union).ok_or("nothing to plot")?;
     let mut panels = Vec::with_capacity(spec.panels.len());
     for (area, panel) in body.split_evenly((spec.panels.len(), 1)).iter().zip(&spec.panels) {
         let (heading, rest) = area.split_vertically(30);
         let style = ("sans-serif", fitting_size(&heading, &panel.title, 20.0, width)).into_font();
         heading.draw(&Text::new(panel.title.as_str(), (20, 8), style)).map_err(|e| err(&e))?;
-        panels.push(draw_panel(&rest, panel, ((x0, x1), (y0, y1)))?);
+        let same = found.iter().filter(|(label, _)| *label == panel.y_label).map(|(_, (_, y))| *y);
+        let y = same.reduce(union).unwrap_or((-1.0, 1.0));
+        panels.push(draw_panel(&rest, panel, (x, y))?);
     }
     Ok(Layout { image, panels })
 }

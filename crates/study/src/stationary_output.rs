@@ -167,8 +167,15 @@ impl StationaryStudy {
     /// The figures: with one speed the wave's deflection and moment along s; with several the peak deflections
     /// against speed (converged speeds only).
     pub fn figures(&self, title: &str) -> Vec<PlotSpec> {
-        let subtitle =
-            format!("{} soil, F = {:.1} kN, s = x − vt (positive ahead of the load)", self.law, self.load / 1e3);
+        let friction = match self.friction > 0.0 {
+            true => format!(", ballast friction f_u = {:.1} kN/m", self.friction / 1e3),
+            false => String::new(),
+        };
+        let subtitle = format!(
+            "{} soil{friction}, F = {:.1} kN, s = x − vt (positive ahead of the load)",
+            self.law,
+            self.load / 1e3
+        );
         if let [Some(wave)] = self.waves.as_slice() {
             let mut shape = PlotSpec::new("stationary-wave", title, "s = x − vt (m)", "");
             shape.subtitle = format!("{subtitle}, v = {:.1} m/s", wave.speed);
@@ -192,6 +199,20 @@ impl StationaryStudy {
                 wave.s.iter().zip(&wave.moment).map(|(s, m)| (*s, m / 1e3)).collect(),
             ));
             shape.panels = vec![deflection, moment];
+            if self.friction > 0.0 {
+                let mut resistance = PlotSpec::new(
+                    "",
+                    "ballast friction (flat at ±f_u where the rail slides)",
+                    "s = x − vt (m)",
+                    "r (kN/m)",
+                );
+                resistance.series.push(line(
+                    "r(s)",
+                    3,
+                    wave.s.iter().zip(&wave.friction_force).map(|(s, r)| (*s, r / 1e3)).collect(),
+                ));
+                shape.panels.push(resistance);
+            }
             return vec![shape];
         }
         let mut peaks = PlotSpec::new("stationary-peaks", title, "speed v (m/s)", "peak deflection (mm)");
