@@ -7,6 +7,7 @@
 //! tensionless and bilinear soils ([`solve`]), and the wave's peaks, lift-off zones and power balance ([`wave`]).
 //! Continuation in speed ([`solve::solve_from`]) starts each speed from the last one's contact set.
 
+pub mod continuation;
 pub mod error;
 pub mod far_field;
 pub mod friction;

@@ -4,16 +4,13 @@
 //! point of every W with these sets — is one banded solve plus a small dense one. The iteration takes that point,
 //! damped by backtracking on ‖r‖₂, until the residual vanishes or the sets reproduce themselves (then the point
 //! *is* the solution, to the round-off of its solve).
-//!
-//! With friction the start matters (the stationary problem is not a convex minimisation, docs/theory.md §14.4): at
-//! the full Jenkins stiffness a Newton point from a wrong set is wild (a stiff spring anchored where the rail does
-//! not stay). So the stiffness is raised from the soil's by factors of ten, each stage starting from the last
-//! stage's wave, the factor shrinking to its square root where a stage fails; a warm start (the previous speed's
-//! wave) enters the stages at [`WARM_STAGE`].
+//! With friction the start matters: [`crate::continuation`] leads the iteration there.
 
+use crate::continuation;
 use crate::error::Result;
 use crate::friction::{AnchorCoupling, FrictionState};
 use crate::operator::{MovingFrame, factor};
+use crate::problem::StationaryProblem;
 use crate::solve::{ContactGuess, Convergence};
 use banded::general::GeneralBanded;
 
@@ -25,20 +22,11 @@ pub const MAX_ITERATIONS: usize = 100;
 /// of the LU is ~1e-15 of the load).
 pub const TOLERANCE: f64 = 1e-10;
 
-/// A relative residual below which the sets' Newton point counts as the solution when its sets reproduce
-/// themselves: the round-off of the Woodbury solve with stiff stuck springs (measured up to 3.5e-10).
+/// The relative residual at which a wave with friction counts as solved, and below which the sets' Newton point
+/// counts as the solution when its sets reproduce themselves: the round-off of the Woodbury solve with stiff stuck
+/// springs (κ·weight ~25× the beam's largest entry; measured floors 1e-12–1e-8, sets flipping at sections whose
+/// trial force is ±f_u to round-off). 1e-8 of the load is 0.8 mN on any DOF.
 pub const ROUND_OFF: f64 = 1e-8;
-
-/// From a warm start (the previous speed's wave) the stages start at this fraction of the final stiffness:
-/// measured over 30 speeds 10–300 m/s at 2 kN/m, 2524 iterations against 3115 from cold (1e-6: 2961; 1e-2:
-/// 3275; at the full stiffness a neighbouring speed's wave fails above 170 m/s).
-const WARM_STAGE: f64 = 1e-4;
-
-/// The Jenkins stiffness starts at this fraction of its final value (κ/10⁶ = k_c: the soil's own stiffness).
-const FIRST_STAGE: f64 = 1e-6;
-
-/// The smallest factor between stages before a friction solve gives up.
-const SMALLEST_FACTOR: f64 = 1.05;
 
 /// The sets that make the soil's and the ballast's forces affine near W: the soil sections pressed into it, and
 /// each friction section slipping or stuck (and to which anchor).
@@ -99,51 +87,30 @@ fn newton_point(frame: &MovingFrame, sets: &Sets, speed: f64) -> Result<Vec<f64>
     Ok(y)
 }
 
-/// The wave on `frame`: from the guess's wave when friction makes the start matter and it fits, else from the
-/// frictionless wave of the guess's pressed set; with friction, through the stages of the Jenkins stiffness.
-pub(crate) fn newton(frame: &MovingFrame, speed: f64, guess: &mut ContactGuess) -> Result<(Vec<f64>, Convergence)> {
-    let frictionless = |guess: &ContactGuess| -> Result<Vec<f64>> {
-        let pressed =
-            guess.pressed(frame.sections.len()).map_or_else(|| vec![true; frame.sections.len()], <[bool]>::to_vec);
-        newton_point(frame, &Sets { pressed, friction: None }, speed)
-    };
-    let Some(friction) = &frame.friction else {
-        return iterate(frame, speed, frictionless(guess)?, guess, MAX_ITERATIONS);
-    };
-    let mut spent = 0;
-    let target = friction.stiffness;
-    let (start, from) = match guess.wave(frame.rhs.len()) {
-        Some(warm) => (warm.to_vec(), target * WARM_STAGE),
-        None => (frictionless(guess)?, target * FIRST_STAGE),
-    };
-    let mut stage = frame.clone();
-    let set_stiffness = |stage: &mut MovingFrame, k: f64| stage.friction.as_mut().expect("friction").stiffness = k;
-    let (mut w, mut reached, mut factor) = (start, from, 10.0);
-    set_stiffness(&mut stage, reached);
-    loop {
-        let stiffness = (reached * factor).min(target);
-        let last = w.clone();
-        set_stiffness(&mut stage, stiffness);
-        let (next, status) = iterate(&stage, speed, w, guess, MAX_ITERATIONS)?;
-        spent += status.iterations();
-        match status {
-            Convergence::Converged { residual, .. } if stiffness >= target => {
-                return Ok((next, Convergence::Converged { iterations: spent, residual }));
-            }
-            Convergence::Converged { .. } => (w, reached) = (next, stiffness),
-            _ if factor.sqrt() >= SMALLEST_FACTOR => (w, factor) = (last, factor.sqrt()),
-            Convergence::NotConverged { residual, .. } => {
-                return Ok((next, Convergence::NotConverged { iterations: spent, residual }));
-            }
-            other => return Ok((next, other)),
-        }
+/// The wave on `frame` of `problem`: without friction the iteration from the frictionless wave of the guess's
+/// pressed set; with friction through the continuation of [`crate::continuation`].
+pub(crate) fn newton(
+    problem: &StationaryProblem,
+    frame: &MovingFrame,
+    guess: &mut ContactGuess,
+) -> Result<(Vec<f64>, Convergence)> {
+    match frame.friction {
+        None => iterate(frame, problem.speed, frictionless(frame, problem.speed, guess)?, guess, MAX_ITERATIONS),
+        Some(_) => continuation::friction_wave(problem, frame, guess),
     }
+}
+
+/// The wave without friction for the guess's pressed set (all pressed if it does not fit): one solve.
+pub(crate) fn frictionless(frame: &MovingFrame, speed: f64, guess: &ContactGuess) -> Result<Vec<f64>> {
+    let sections = frame.sections.len();
+    let pressed = guess.pressed(sections).map_or_else(|| vec![true; sections], <[bool]>::to_vec);
+    newton_point(frame, &Sets { pressed, friction: None }, speed)
 }
 
 /// One stage: the iteration from `w`, globalised by backtracking on ‖r‖₂ (the plain iteration cycles between sets
 /// that differ in a section at a zone's edge): the Newton point W_N of the sets of W, then W + t(W_N − W) with t
 /// halved until the residual falls by 1e-4·t of itself.
-fn iterate(
+pub(crate) fn iterate(
     frame: &MovingFrame,
     speed: f64,
     mut w: Vec<f64>,
@@ -151,11 +118,12 @@ fn iterate(
     limit: usize,
 ) -> Result<(Vec<f64>, Convergence)> {
     let (mut norm, mut relative) = residual(frame, &w);
+    let tolerance = if frame.friction.is_some() { ROUND_OFF } else { TOLERANCE };
     for iteration in 1..=limit {
         let sets = Sets::of(frame, &w);
         // The residual decides: after a damped step the iterate is not its sets' Newton point, so repeated sets
         // alone prove nothing (the next step takes that point).
-        if relative <= TOLERANCE {
+        if relative <= tolerance {
             guess.remember(sets.pressed, &w);
             return Ok((w, Convergence::Converged { iterations: iteration, residual: relative }));
         }

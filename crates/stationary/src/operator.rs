@@ -8,7 +8,8 @@
 //!
 //! give a banded non-symmetric matrix A (the convective term −c_f v∫φW′ is skew), closed at both ends by the
 //! transparent relations of [`crate::far_field`] substituted into the boundary terms (a nonlinear soil without
-//! self-weight has free ends instead: its far field rests on the soil without force, or lifts straight off it).
+//! self-weight has free ends instead: its far field rests on the soil without force, or lifts straight off it; so
+//! does a track with friction, which holds the rail still beyond the wave at both ends).
 //! The soil's unilateral part (k_c − k_t)⟨−W⟩₊ acts at four Gauss sections per element, as in a run on the finite track, so that a soil that
 //! never lifts off is the linear one to round-off. The load −F sits on the node at s = 0; a nonlinear soil with
 //! self-weight carries −ρA·g everywhere.
@@ -58,8 +59,8 @@ pub struct MovingFrame {
     pub load_node: usize,
     /// Element length (m).
     pub element_length: f64,
-    /// The far field's relations.
-    pub far_field: FarField,
+    /// The far field's relations at transparent ends; None where the ends are free.
+    pub far_field: Option<FarField>,
 }
 
 /// Half-bandwidth of the Hermite operator in (W₀, W′₀, W₁, W′₁, …).
@@ -71,7 +72,11 @@ impl MovingFrame {
         problem.validate()?;
         let (beam, foundation, v) = (&problem.beam, &problem.foundation, problem.speed);
         let (ei, rho_a, c) = (beam.bending_stiffness(), beam.mass_per_length(), foundation.damping);
-        let far_field = FarField::new(beam, c, foundation.stiffness, v)?;
+        // Free ends need no far field (and exist where none decays: friction undamped above v_cr).
+        let far_field = match problem.has_free_ends() {
+            true => None,
+            false => Some(FarField::new(beam, c, foundation.stiffness, v)?),
+        };
         let (behind, ahead, l) = problem.domain.elements();
         let elements = behind + ahead;
         let n = 2 * (elements + 1);
@@ -95,15 +100,16 @@ impl MovingFrame {
             }
         }
         let rho_v2 = rho_a * v * v;
-        // A free end (a weightless nonlinear soil's, or friction's rear) carries no moment and no shear
-        // (W″ = W‴ = 0), only the convective term.
-        match problem.has_free_ends() {
-            true => matrix.add(n - 2, n - 1, rho_v2),
-            false => close_end(&mut matrix, &mut rhs, n - 2, &far_field.ahead, (ei, rho_v2), level, 1.0),
-        }
-        match problem.has_free_rear() {
-            true => matrix.add(0, 1, -rho_v2),
-            false => close_end(&mut matrix, &mut rhs, 0, &far_field.behind, (ei, rho_v2), level, -1.0),
+        // A free end carries no moment and no shear (W″ = W‴ = 0), only the convective term.
+        match &far_field {
+            None => {
+                matrix.add(n - 2, n - 1, rho_v2);
+                matrix.add(0, 1, -rho_v2);
+            }
+            Some(far) => {
+                close_end(&mut matrix, &mut rhs, n - 2, &far.ahead, (ei, rho_v2), level, 1.0);
+                close_end(&mut matrix, &mut rhs, 0, &far.behind, (ei, rho_v2), level, -1.0);
+            }
         }
         let unilateral = foundation.stiffness - k_t;
         let sections = match problem.is_nonlinear() {

@@ -154,17 +154,17 @@ impl StationaryProblem {
         !self.foundation.law.is_linear()
     }
 
-    /// Whether the domain's ends are free (W″ = W‴ = 0) rather than transparent: a nonlinear soil without weight,
-    /// whose far field rests on the soil without force or lifts straight off it, and is not the linear one.
-    pub fn has_free_ends(&self) -> bool {
+    /// Whether the soil is nonlinear and carries no weight: its far field rests on the soil without force, or lifts
+    /// straight off it, and is not the linear one.
+    pub fn is_weightless_nonlinear(&self) -> bool {
         self.is_nonlinear() && !self.self_weight
     }
 
-    /// Whether the rear end is free: as [`Self::has_free_ends`], or with friction, which holds the rail behind the
-    /// wave still at its residual deflection (W′ = 0, so W″ = W‴ = 0 there; the transparent end would pull it
-    /// back to W_far).
-    pub fn has_free_rear(&self) -> bool {
-        self.has_free_ends() || self.has_friction()
+    /// Whether the domain's ends are free (W″ = W‴ = 0) rather than transparent: on a weightless nonlinear soil, and
+    /// with friction, which holds the rail at rest ahead of the wave and at its residual deflection behind it
+    /// (W′ = 0 there, so W″ = W‴ = 0; a transparent rear would pull the rail back to W_far).
+    pub fn has_free_ends(&self) -> bool {
+        self.is_weightless_nonlinear() || self.has_friction()
     }
 
     /// The far field's level W_far (m): the self-weight settlement −ρA·g/k_c on a nonlinear soil with self-weight,

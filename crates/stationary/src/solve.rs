@@ -99,11 +99,12 @@ pub fn solve_from(problem: &StationaryProblem, guess: &mut ContactGuess) -> Resu
     let mut extensions = 0;
     loop {
         let frame = MovingFrame::new(&problem)?;
-        let (mut w, mut convergence) = newton(&frame, problem.speed, guess)?;
-        if !convergence.is_converged() && !guess.is_empty() {
-            // The last speed's set led astray: start again from the soil pressed everywhere.
+        let (mut w, mut convergence) = newton(&problem, &frame, guess)?;
+        if !convergence.is_converged() && !guess.is_empty() && frame.friction.is_none() {
+            // The last speed's set led astray: start again from the soil pressed everywhere (with friction the
+            // continuation has started cold itself).
             guess.forget();
-            let (cold, status) = newton(&frame, problem.speed, guess)?;
+            let (cold, status) = newton(&problem, &frame, guess)?;
             let taken = match (convergence, status) {
                 (
                     Convergence::NotConverged { iterations, .. },
@@ -113,24 +114,50 @@ pub fn solve_from(problem: &StationaryProblem, guess: &mut ContactGuess) -> Resu
             };
             (w, convergence) = (cold, taken);
         }
+        // With friction the wave starts the grown domain's solve, continued at its ends.
+        let kept = frame.friction.is_some().then(|| w.clone());
         let mut wave = StationaryWave::new(&problem, &frame, w, convergence);
         // Free ends (a nonlinear soil without weight) may lift: the rail there carries nothing. With friction the
         // wave must have settled near both ends (the free rear and the transparent front are exact only there).
-        let lifted = if problem.has_free_ends() { (false, false) } else { wave.lifted_at_ends() };
+        let lifted = if problem.is_weightless_nonlinear() { (false, false) } else { wave.lifted_at_ends() };
         let unsettled = wave.unsettled_at_ends();
-        let (behind, ahead) = (lifted.0 || unsettled.0, lifted.1 || unsettled.1);
-        if !(behind || ahead) || !convergence.is_converged() {
+        let (mut behind, mut ahead) = (lifted.0 || unsettled.0, lifted.1 || unsettled.1);
+        if !convergence.is_converged() {
+            // With friction and free ends a domain too short for the wave may hold no consistent one: try a longer.
+            if frame.friction.is_none() {
+                return Ok(wave);
+            }
+            (behind, ahead) = (true, true);
+        } else if !(behind || ahead) {
             return Ok(wave);
         }
+        let before = problem.domain.elements();
         let domain = &mut problem.domain;
         let grown = (domain.behind * if behind { 2.0 } else { 1.0 }, domain.ahead * if ahead { 2.0 } else { 1.0 });
         if extensions == MAX_EXTENSIONS || (grown.0 + grown.1) / domain.element_length > MAX_ELEMENTS as f64 {
-            // The wave of the largest domain tried, said to be what it is.
-            wave.convergence = Convergence::DomainTooShort { behind: domain.behind, ahead: domain.ahead };
+            // The wave of the largest domain tried, said to be what it is (or that it was not found).
+            if convergence.is_converged() {
+                wave.convergence = Convergence::DomainTooShort { behind: domain.behind, ahead: domain.ahead };
+            }
             return Ok(wave);
         }
         (domain.behind, domain.ahead) = grown;
         extensions += 1;
         guess.forget();
+        if let Some(w) = kept.filter(|_| convergence.is_converged()) {
+            let after = problem.domain.elements();
+            guess.wave = continued(&w, after.0 - before.0, after.1 - before.1);
+        }
     }
+}
+
+/// The DOFs `w` continued by `behind` nodes at the rear and `ahead` at the front, each at its end's deflection
+/// with zero slope (where a wave with friction has settled).
+fn continued(w: &[f64], behind: usize, ahead: usize) -> Vec<f64> {
+    let n = w.len();
+    let mut out = Vec::with_capacity(n + 2 * (behind + ahead));
+    (0..behind).for_each(|_| out.extend([w[0], 0.0]));
+    out.extend_from_slice(w);
+    (0..ahead).for_each(|_| out.extend([w[n - 2], 0.0]));
+    out
 }

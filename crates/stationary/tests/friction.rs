@@ -99,7 +99,7 @@ fn the_power_balance_closes_and_friction_holds_at_most_f_u_over_k() {
 
 /// Continuation in speed through the critical speed (v_cr = 205.6 m/s): every speed of the sweep converges, and
 /// each wave is the one a cold solve finds (the solution the iteration selects does not depend on where it
-/// started; measured: identical to the bit).
+/// started; measured: the same to 2e-9 of the peak, the residual's 1e-8 tolerance).
 #[test]
 fn a_sweep_through_the_critical_speed_converges_at_every_speed() {
     let mut guess = ContactGuess::default();
@@ -109,7 +109,7 @@ fn a_sweep_through_the_critical_speed_converges_at_every_speed() {
         assert!(warm.convergence.is_converged(), "v {}: {:?}", p.speed, warm.convergence);
         let cold = converged(&p);
         let gap = largest_difference(&warm, &cold) / cold.max_downward().value;
-        assert!(gap <= 1e-9, "v {}: warm and cold waves differ by {gap:e} of the peak", p.speed);
+        assert!(gap <= 1e-7, "v {}: warm and cold waves differ by {gap:e} of the peak", p.speed);
     }
 }
 
@@ -122,4 +122,26 @@ fn bad_friction_is_refused_by_name() {
     p.friction = BallastFriction { force_per_length: 1e3, subdivisions: 0 };
     let message = solve(&p).unwrap_err().to_string();
     assert!(message.contains("friction.subdivisions"), "{message}");
+}
+
+/// The thesis's track: no damping but friction's. Above the critical speed no frictionless wave exists, yet friction
+/// alone bounds one: the continuation in damping (from ζ = 5 % down to 0) finds it at every speed, and its power
+/// balance (load = friction + what is left behind) closes. Measured peaks (mm) at 210/250 m/s: 261.1/99.7 with
+/// 2 kN/m, 61.9/60.0 with 10 kN/m; a co-moving window (time stepping, 10 kN/m, 250 m/s) gives 58.0 at Δx = 0.05 m
+/// and 58.6 at 0.0125 m (docs/theory.md §14.4).
+#[test]
+fn undamped_friction_bounds_the_wave_above_the_critical_speed() {
+    let undamped = |f: f64, v: f64| StationaryProblem { foundation: uic60_on_soft_soil().foundation, ..problem(f, v) };
+    assert!(solve(&undamped(0.0, 250.0)).is_err(), "no frictionless wave above v_cr without damping");
+    for (f, v, lowest, highest) in [(2e3, 210.0, 0.2, 0.3), (2e3, 250.0, 0.08, 0.12), (10e3, 250.0, 0.05, 0.07)] {
+        let wave = converged(&undamped(f, v));
+        let peak = wave.max_downward().value;
+        assert!(peak >= lowest && peak <= highest, "f_u {f} v {v}: peak {peak} m");
+        assert!(
+            wave.viscous_power == 0.0 && wave.power_imbalance().abs() <= 5e-4,
+            "f_u {f} v {v}: {:e}",
+            wave.power_imbalance()
+        );
+        assert!(wave.behind().abs() <= f / 250e3, "f_u {f} v {v}: {} m behind", wave.behind());
+    }
 }

@@ -125,5 +125,5 @@ fn the_stationary_wave_with_ballast_friction_reports_its_slip_zones_and_what_is_
     let csv = String::from_utf8_lossy(&csv.stdout).to_string();
     let forces: Vec<f64> = csv.lines().skip(1).map(|l| l.rsplit(',').next().unwrap().parse().unwrap()).collect();
     let largest = forces.iter().fold(0.0f64, |m, r| m.max(r.abs()));
-    assert!(largest <= 2000.0 * (1.0 + 1e-12) && largest >= 1999.0, "{largest}");
+    assert!((1999.0..=2000.0 * (1.0 + 1e-12)).contains(&largest), "{largest}");
 }
