@@ -41,9 +41,9 @@ enum Command {
     Run(run::RunArgs),
     /// Run a scenario at many speeds in parallel; CSV of max deflections, dissipated energy and W̄ per speed.
     Sweep(sweep::SweepArgs),
-    /// Run one of the eight studies of docs/theory.md §7, §10 and §12: CSV, JSON and figures in the output folder.
+    /// Run one of the nine studies of docs/theory.md §7, §10, §12 and §14: CSV, JSON and figures in the output folder.
     Study(study_cmd::StudyArgs),
-    /// Run all eight studies and write their data, figures and report.md.
+    /// Run all nine studies and write their data, figures and report.md.
     Reproduce(reproduce::ReproduceArgs),
     /// Validate a scenario file.
     Check(check::CheckArgs),
@@ -63,7 +63,8 @@ enum Command {
     /// dynamic amplification curve over a speed range.
     Analytic(analytic::AnalyticArgs),
     /// The stationary wave of the load on the infinite track (moving coordinates, no time stepping), for linear,
-    /// tensionless and bilinear soils: its shape, peaks and lift-off zones at one speed or over a speed range.
+    /// tensionless and bilinear soils and ballast friction: its shape, peaks, lift-off and slip zones and what
+    /// friction leaves behind, at one speed or over a speed range.
     Stationary(stationary::StationaryArgs),
 }
 

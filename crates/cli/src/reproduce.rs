@@ -1,6 +1,6 @@
-//! `frictrack reproduce [--out DIR] [--resolution coarse|paper]`: the six studies of docs/theory.md §7 and the HSLM
-//! study of §10, their data, figures and a `report.md` that shows every figure with a two-line summary of what it
-//! shows.
+//! `frictrack reproduce [--out DIR] [--resolution coarse|paper]`: the six studies of docs/theory.md §7, the HSLM
+//! study of §10, the vehicle study of §12 and the stationary wave of §14, their data, figures and a `report.md` that
+//! shows every figure with a two-line summary of what it shows.
 
 use crate::files::write_atomically;
 use crate::study_cmd::{StudyOptions, run_study};

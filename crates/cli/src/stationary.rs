@@ -24,7 +24,8 @@ pub enum StationaryFormat {
 /// Options of `frictrack stationary`.
 #[derive(Debug, Args)]
 pub struct StationaryArgs {
-    /// Scenario file (its beam, soil with its law and damping, and single load); without it, the reference case.
+    /// Scenario file (its beam, soil with its law and damping, ballast friction `[friction.distributed]`, and single
+    /// load); without it, the reference case.
     scenario: Option<PathBuf>,
     /// The speeds, solved in order, each starting from the last one's contact set.
     #[command(flatten)]

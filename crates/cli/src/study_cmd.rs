@@ -1,4 +1,4 @@
-//! `frictrack study <preset>`: run one of the eight studies (docs/theory.md §7, §10 and §12) and write
+//! `frictrack study <preset>`: run one of the nine studies (docs/theory.md §7, §10, §12 and §14) and write
 //! `<preset>.csv` (the data), `<preset>.json` (scenario, version, git revision, resolution, summary, wall time) and
 //! its figures (PNG and SVG) into the output folder.
 
@@ -78,8 +78,8 @@ impl StudyOptions {
 /// Options of `frictrack study`.
 #[derive(Debug, Args)]
 pub struct StudyArgs {
-    /// discrete-speed, equal-cost, optimal-force, distributed-speed, amplification, discrete-vs-distributed, hslm or
-    /// vehicle-speed.
+    /// discrete-speed, equal-cost, optimal-force, distributed-speed, amplification, discrete-vs-distributed, hslm,
+    /// vehicle-speed or stationary-wave.
     preset: String,
     #[command(flatten)]
     options: StudyOptions,

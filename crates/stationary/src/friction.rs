@@ -17,6 +17,7 @@
 //! The sections are the trapezoid sections of a time-domain run (J per element, shared nodes, weights l/J and l/2J
 //! at the domain's ends), so the two methods discretise the same ballast.
 
+use crate::operator::{add_spring, row_add, row_dot};
 use crate::problem::BallastFriction;
 use banded::general::GeneralBanded;
 use fem_beam::element::hermite;
@@ -43,14 +44,12 @@ pub struct FrictionSection {
 impl FrictionSection {
     /// H_i W (m).
     pub fn deflection(&self, w: &[f64]) -> f64 {
-        let d = 2 * self.element;
-        (0..4).map(|k| self.row[k] * w[d + k]).sum()
+        row_dot(self.element, &self.row, w)
     }
 
     /// W′ at the section (rad), from the element's derivative row.
     pub fn slope(&self, w: &[f64], l: f64) -> f64 {
-        let d = 2 * self.element;
-        hermite::shape_dx(self.xi, l).iter().zip(&w[d..d + 4]).map(|(n, q)| n * q).sum()
+        row_dot(self.element, &hermite::shape_dx(self.xi, l), w)
     }
 }
 
@@ -151,8 +150,7 @@ impl FrictionSections {
     /// Σ_i weight_i H_iᵀ r_i added to `out` (N): the friction forces' share of A W + … − f.
     pub fn add_forces(&self, force: &[f64], out: &mut [f64]) {
         for (section, r) in self.sections.iter().zip(force) {
-            let d = 2 * section.element;
-            (0..4).for_each(|k| out[d + k] += section.row[k] * section.weight * r);
+            row_add(section.element, &section.row, section.weight * r, out);
         }
     }
 
@@ -162,18 +160,13 @@ impl FrictionSections {
     pub fn linearise(&self, state: &FrictionState, matrix: &mut GeneralBanded, rhs: &mut [f64]) -> Vec<AnchorCoupling> {
         let mut couplings: Vec<AnchorCoupling> = Vec::new();
         for (i, section) in self.sections.iter().enumerate() {
-            let d = 2 * section.element;
             let (row, weight) = (section.row, section.weight);
             // The part of r_i that does not depend on W (N/m).
             let constant = match state.states[i] {
                 SectionState::Slipping { sign } => sign * self.capacity,
                 SectionState::Stuck { anchor } => {
                     let spring = self.stiffness * weight;
-                    for a in 0..4 {
-                        for b in 0..4 {
-                            matrix.add(d + a, d + b, spring * row[a] * row[b]);
-                        }
-                    }
+                    add_spring(matrix, section.element, &row, spring);
                     match anchor {
                         None => -self.stiffness * self.rest,
                         Some(a) => {
@@ -184,13 +177,13 @@ impl FrictionSections {
                                     couplings.last_mut().expect("just pushed")
                                 }
                             };
-                            (0..4).for_each(|k| coupling.column[d + k] += spring * row[k]);
+                            row_add(section.element, &row, spring, &mut coupling.column);
                             state.force[a]
                         }
                     }
                 }
             };
-            (0..4).for_each(|k| rhs[d + k] -= row[k] * weight * constant);
+            row_add(section.element, &row, -weight * constant, rhs);
         }
         couplings
     }

@@ -9,7 +9,7 @@
 use crate::continuation;
 use crate::error::Result;
 use crate::friction::{AnchorCoupling, FrictionState};
-use crate::operator::{MovingFrame, factor};
+use crate::operator::{MovingFrame, factor, row_add};
 use crate::problem::StationaryProblem;
 use crate::solve::{ContactGuess, Convergence};
 use banded::general::GeneralBanded;
@@ -155,9 +155,7 @@ fn residual(frame: &MovingFrame, w: &[f64]) -> (f64, f64) {
     let mut r = vec![0.0; w.len()];
     frame.matrix.mul_vec(w, &mut r);
     for s in &frame.sections {
-        let force = s.stiffness * (-s.deflection(w)).max(0.0);
-        let d = 2 * s.element;
-        (0..4).for_each(|k| r[d + k] -= s.row[k] * force);
+        row_add(s.element, &s.row, -s.stiffness * (-s.deflection(w)).max(0.0), &mut r);
     }
     if let Some(friction) = &frame.friction {
         friction.add_forces(&friction.march(w).force, &mut r);

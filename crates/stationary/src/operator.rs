@@ -37,9 +37,30 @@ pub struct SoilSection {
 impl SoilSection {
     /// H_s W: the deflection at the section (m).
     pub fn deflection(&self, w: &[f64]) -> f64 {
-        let d = 2 * self.element;
-        (0..4).map(|k| self.row[k] * w[d + k]).sum()
+        row_dot(self.element, &self.row, w)
     }
+}
+
+/// Σ_k row_k w_{2e+k}: a row over element `e`'s four DOFs applied to the DOF vector `w`.
+pub(crate) fn row_dot(element: usize, row: &[f64; 4], w: &[f64]) -> f64 {
+    let d = 2 * element;
+    (0..4).map(|k| row[k] * w[d + k]).sum()
+}
+
+/// matrix += k·rowᵀrow on element `e`'s DOFs: a spring k (N/m) at a section of the element.
+pub(crate) fn add_spring(matrix: &mut GeneralBanded, element: usize, row: &[f64; 4], k: f64) {
+    let d = 2 * element;
+    for a in 0..4 {
+        for b in 0..4 {
+            matrix.add(d + a, d + b, k * row[a] * row[b]);
+        }
+    }
+}
+
+/// out_{2e+k} += scale·row_k: a force `scale` spread over element `e`'s DOFs by `row`.
+pub(crate) fn row_add(element: usize, row: &[f64; 4], scale: f64, out: &mut [f64]) {
+    let d = 2 * element;
+    (0..4).for_each(|k| out[d + k] += scale * row[k]);
 }
 
 /// The assembled moving-frame problem at one speed.
@@ -137,12 +158,7 @@ impl MovingFrame {
     pub fn with_pressed(&self, pressed: &[bool]) -> GeneralBanded {
         let mut jacobian = self.matrix.clone();
         for (section, _) in self.sections.iter().zip(pressed).filter(|(_, p)| **p) {
-            let d = 2 * section.element;
-            for a in 0..4 {
-                for b in 0..4 {
-                    jacobian.add(d + a, d + b, section.stiffness * section.row[a] * section.row[b]);
-                }
-            }
+            add_spring(&mut jacobian, section.element, &section.row, section.stiffness);
         }
         jacobian
     }

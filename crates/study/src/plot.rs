@@ -78,10 +78,21 @@ pub struct PlotSpec {
     /// How colour indices map to colours.
     pub palette: Palette,
     /// Panels stacked top to bottom under this figure's title and subtitle, each drawn as a figure of its own (its
-    /// title a heading, its legend beside it) on a common x range, and a common y range among panels of the same
-    /// y label; when there are any, this figure's own
-    /// series and marks are not drawn.
+    /// title a heading, its legend beside it) on a common x range, and y ranges as [`PanelY`] says; when there are
+    /// any, this figure's own series and marks are not drawn.
     pub panels: Vec<PlotSpec>,
+    /// How the panels' y ranges are chosen.
+    pub panel_y: PanelY,
+}
+
+/// The y ranges of a figure's panels.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Default)]
+pub enum PanelY {
+    /// Common among panels of the same y label (the same quantity compares at a glance).
+    #[default]
+    SharedPerQuantity,
+    /// Each panel its own (one quantity at scales that differ tenfold, e.g. a wave below and at resonance).
+    EachOwn,
 }
 
 /// How a figure maps colour indices to colours.
@@ -127,6 +138,7 @@ impl PlotSpec {
             mark_label: String::new(),
             palette: Palette::Categorical,
             panels: Vec::new(),
+            panel_y: PanelY::SharedPerQuantity,
         }
     }
 }
@@ -316,8 +328,13 @@ fn draw<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, spec: &PlotSpec) -> s
         let (heading, rest) = area.split_vertically(30);
         let style = ("sans-serif", fitting_size(&heading, &panel.title, 20.0, width)).into_font();
         heading.draw(&Text::new(panel.title.as_str(), (20, 8), style)).map_err(|e| err(&e))?;
+        let own = ranges(panel).map(|(_, y)| y);
         let same = found.iter().filter(|(label, _)| *label == panel.y_label).map(|(_, (_, y))| *y);
-        let y = same.reduce(union).unwrap_or((-1.0, 1.0));
+        let y = match spec.panel_y {
+            PanelY::SharedPerQuantity => same.reduce(union),
+            PanelY::EachOwn => own,
+        }
+        .unwrap_or((-1.0, 1.0));
         panels.push(draw_panel(&rest, panel, (x, y))?);
     }
     Ok(Layout { image, panels })

@@ -140,16 +140,22 @@ pub fn problem(scenario: &Scenario, speed: f64, domain: Domain) -> Result<Statio
 }
 
 impl StationaryStudy {
-    /// Solve `speeds` (m/s, in the order given: each starts from the last one's contact set) on `domain`.
+    /// Solve `speeds` (m/s, in the order given: each starts from the last one's contact set and wave, on the domain
+    /// the last one grew to) on `domain`.
     pub fn of(scenario: &Scenario, speeds: &[f64], domain: Domain) -> Result<Self> {
         let first = problem(scenario, speeds.first().copied().unwrap_or(0.0), domain)?;
         let law = first.foundation.law.name();
         let mut guess = ContactGuess::default();
         let (mut points, mut waves) = (Vec::with_capacity(speeds.len()), Vec::with_capacity(speeds.len()));
+        // Each speed starts on the domain the last one grew to, where its wave (the guess) fits.
+        let mut domain = domain;
         for &speed in speeds {
-            let problem = StationaryProblem { speed, ..first };
+            let problem = StationaryProblem { speed, domain, ..first };
             match stationary::solve_from(&problem, &mut guess) {
                 Ok(wave) => {
+                    if wave.convergence.is_converged() {
+                        (domain.behind, domain.ahead) = (-wave.s[0], *wave.s.last().unwrap_or(&domain.ahead));
+                    }
                     points.push(StationaryPoint::of(&wave));
                     waves.push(Some(wave));
                 }

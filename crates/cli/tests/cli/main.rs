@@ -413,7 +413,7 @@ fn study_writes_data_metadata_and_figures() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
-/// All eight studies at coarse resolution (about 1.5 minutes): every file exists and parses, every figure is a valid
+/// All nine studies at coarse resolution (about 2 minutes): every file exists and parses, every figure is a valid
 /// PNG and SVG, and the report shows every figure.
 #[test]
 fn reproduce_coarse_writes_every_study_and_a_report() {
@@ -431,6 +431,7 @@ fn reproduce_coarse_writes_every_study_and_a_report() {
         "discrete-vs-distributed",
         "hslm",
         "vehicle-speed",
+        "stationary-wave",
     ] {
         let csv = std::fs::read_to_string(dir.join(format!("{name}.csv"))).unwrap();
         let columns = csv.lines().next().unwrap().split(',').count();
@@ -446,7 +447,7 @@ fn reproduce_coarse_writes_every_study_and_a_report() {
         }
         assert!(report.contains(&format!("({name}.csv)")));
     }
-    // 3 + 3 + 1 + 3 + 4 + 2 + 6 + 6 figures.
-    assert_eq!(figures, 28);
+    // 3 + 3 + 1 + 3 + 4 + 2 + 6 + 6 + 4 figures.
+    assert_eq!(figures, 32);
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -72,6 +72,11 @@ fn describe(labels: &[(String, f64)]) -> String {
 }
 
 impl Curves {
+    /// Curve `c`'s sweep, one row per speed: a finished point or why the run failed.
+    pub(super) fn speed_rows(&self, c: usize) -> &[SweepRow] {
+        &self.rows[c]
+    }
+
     /// Number of curves.
     pub(super) fn len(&self) -> usize {
         self.labels.len()
@@ -188,7 +193,7 @@ impl Curves {
         out
     }
 
-    fn summary(&self) -> (Value, Vec<String>) {
+    pub(super) fn summary(&self) -> (Value, Vec<String>) {
         let mut items = Vec::new();
         let mut lines = Vec::new();
         for ((labels, points), critical) in self.labels.iter().zip(&self.points).zip(&self.critical) {

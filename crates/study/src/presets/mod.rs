@@ -1,4 +1,5 @@
-//! The six studies of docs/theory.md §7, the train study of §10 and the vehicle study of §12 as named presets. Each returns its data as CSV
+//! The six studies of docs/theory.md §7, the train study of §10, the vehicle study of §12 and the infinite track's
+//! stationary wave of §14 as named presets. Each returns its data as CSV
 //! (long format, one row per point, SI units), a JSON summary (critical speeds, peaks, optimal forces) and a few
 //! human-readable summary lines.
 //! All runs of a study share one rayon pool; results do not depend on the thread count.
@@ -17,6 +18,8 @@ mod hslm_figures;
 mod hslm_headline;
 mod hslm_resonances;
 mod optimal_force;
+mod stationary_wave;
+mod stationary_wave_figures;
 mod table;
 mod vehicle_speed;
 
@@ -48,6 +51,8 @@ pub enum Preset {
     Hslm,
     /// 8. Vehicles against the moving force (docs/theory.md §12): deflection, wheel force, body acceleration vs speed.
     VehicleSpeed,
+    /// 9. The stationary wave on the infinite track (docs/theory.md §14): peak deflection vs speed, finite beam beside.
+    StationaryWave,
 }
 
 /// How finely the studies sample speeds and forces.
@@ -108,8 +113,8 @@ impl Resolution {
 }
 
 impl Preset {
-    /// All eight, in docs/theory.md order.
-    pub const ALL: [Preset; 8] = [
+    /// All nine, in docs/theory.md order.
+    pub const ALL: [Preset; 9] = [
         Preset::DiscreteSpeed,
         Preset::EqualCost,
         Preset::OptimalForce,
@@ -118,6 +123,7 @@ impl Preset {
         Preset::DiscreteVsDistributed,
         Preset::Hslm,
         Preset::VehicleSpeed,
+        Preset::StationaryWave,
     ];
 
     /// Name on the command line and of the output files.
@@ -270,7 +276,7 @@ fn unit_of(column: &str) -> &'static str {
         "global_norm" => "m²",
         "time" => "s",
         "impulse" => "N·s",
-        "model" | "train" | "friction" | "rail" => "text",
+        "model" | "train" | "friction" | "rail" | "foundation" | "status" => "text",
         "max_acceleration" | "max_body_acceleration" | "rms_body_acceleration" => "m/s²",
         "min_wheel_force" | "max_wheel_force" => "N",
         "devices"

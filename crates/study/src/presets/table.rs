@@ -3,7 +3,7 @@
 
 use super::{
     Preset, Resolution, StudyData, amplification, discrete_speed, discrete_vs_distributed, distributed_speed,
-    equal_cost, hslm, optimal_force, vehicle_speed,
+    equal_cost, hslm, optimal_force, stationary_wave, vehicle_speed,
 };
 use crate::error::Result;
 use crate::scenario::Scenario;
@@ -38,7 +38,7 @@ pub(super) struct PresetEntry {
 }
 
 /// The presets, in the order of [`Preset::ALL`] (a test checks it).
-pub(super) const TABLE: [PresetEntry; 8] = [
+pub(super) const TABLE: [PresetEntry; 9] = [
     // 1. Preset::DiscreteSpeed
     PresetEntry {
         name: "discrete-speed",
@@ -138,6 +138,20 @@ pub(super) const TABLE: [PresetEntry; 8] = [
         sampling: Sampling::Speeds,
         run: vehicle_speed::study,
         overrides: Some(vehicle_speed::overrides),
+    },
+    // 9. Preset::StationaryWave
+    PresetEntry {
+        name: "stationary-wave",
+        title: "The stationary wave on the infinite track beside the finite beam",
+        sets: &[
+            "friction: distributed f_u ∈ {0, 1, 2, 5, 10} kN/m, no devices, on the infinite track (stationary solve) \
+                     and on the finite beam (the distributed-speed study's runs)",
+            "foundation.law: linear; and tensionless and bilinear (α = ½) with the rail's weight, without friction, on \
+                     the infinite track",
+        ],
+        sampling: Sampling::Speeds,
+        run: stationary_wave::study,
+        overrides: Some(stationary_wave::overrides),
     },
 ];
 

@@ -4,7 +4,7 @@ use crate::error::Result;
 
 /// Golden-section search for the maximum (`maximise`) of f on [a, b] to an interval width `tolerance`;
 /// returns (argmax, max) among the evaluated points.
-pub(super) fn golden_section(
+pub(crate) fn golden_section(
     f: &mut dyn FnMut(f64) -> Result<f64>,
     mut a: f64,
     mut b: f64,

@@ -9,6 +9,7 @@
 
 mod critical;
 mod golden;
+pub(crate) use golden::golden_section;
 mod optimal_force;
 mod peak;
 

@@ -1,0 +1,311 @@
+//! Study 9: the stationary wave on the infinite track (docs/theory.md §13, §14): the peak deflection against speed
+//! by the stationary solve for no friction and f_u ∈ {1, 2, 5, 10} kN/m, and for tensionless and bilinear (α = ½)
+//! soils with the rail's weight, beside the finite beam's curves of the distributed-speed study (the same runs);
+//! the deflection friction leaves behind the load, the waves' shapes at three speeds, and the critical-speed shift
+//! and peak reduction on the infinite track.
+
+use super::curves::{Curves, sweep_curves};
+use super::stationary_wave_figures as figures;
+use super::{StudyData, blank, mean_iterations, with_distributed};
+use crate::error::Result;
+use crate::scenario::{FoundationLawKind, Scenario};
+use crate::speeds::SpeedScale;
+use crate::stationary_output::{StationaryPoint, StationaryStudy, problem};
+use crate::sweep::Runner;
+use serde::Serialize;
+use serde_json::{Value, json};
+use stationary::{ContactGuess, Domain, StationaryWave};
+use std::fmt::Write as _;
+
+/// The ballast friction levels (N/m), as in the distributed-speed study.
+pub(super) const FRICTION: [f64; 5] = [0.0, 1e3, 2e3, 5e3, 10e3];
+
+/// The bilinear soil's tension ratio α = k_t/k_c.
+const TENSION_RATIO: f64 = 0.5;
+
+/// One soil of the infinite track.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub(super) struct Soil {
+    /// "linear", "tensionless" or "bilinear".
+    pub(super) foundation: &'static str,
+    /// f_u (N/m).
+    pub(super) force_per_length: f64,
+}
+
+impl Soil {
+    /// The curves of the study: the linear soil at every friction level, then the nonlinear ones without friction.
+    fn all() -> Vec<Soil> {
+        let linear = FRICTION.iter().map(|&f| Soil { foundation: "linear", force_per_length: f });
+        let nonlinear = ["tensionless", "bilinear"].map(|foundation| Soil { foundation, force_per_length: 0.0 });
+        linear.chain(nonlinear).collect()
+    }
+
+    /// Legend text.
+    pub(super) fn label(&self) -> String {
+        match (self.foundation, self.force_per_length) {
+            ("linear", 0.0) => "no friction".into(),
+            ("linear", f) => format!("f_u = {} kN/m", f / 1e3),
+            ("bilinear", _) => format!("bilinear soil, α = {TENSION_RATIO}"),
+            (other, _) => format!("{other} soil"),
+        }
+    }
+
+    /// `base` with this soil: its law (with the rail's weight on a nonlinear one) and its ballast friction.
+    fn scenario(&self, base: &Scenario) -> Scenario {
+        let mut s = with_distributed(base, self.force_per_length);
+        let f = &mut s.foundation;
+        (f.law, f.tension_ratio, f.self_weight) = match self.foundation {
+            "tensionless" => (FoundationLawKind::Tensionless, None, true),
+            "bilinear" => (FoundationLawKind::Bilinear, Some(TENSION_RATIO), true),
+            _ => (FoundationLawKind::Linear, None, f.self_weight),
+        };
+        s
+    }
+}
+
+/// Where a curve of the infinite track peaks.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(rename_all = "snake_case", tag = "location")]
+pub(super) enum InfiniteCritical {
+    /// Between two sampled speeds, refined by golden section to 2 % of the speed step.
+    Interior {
+        /// v (m/s).
+        speed: f64,
+        /// Max downward deflection there (m).
+        peak: f64,
+    },
+    /// At the first or last speed with a wave (the sampled largest).
+    AtEnd {
+        /// v (m/s).
+        speed: f64,
+        /// Max downward deflection there (m).
+        peak: f64,
+    },
+    /// Growing without bound towards v_cr: undamped and without friction no wave exists from v_cr on.
+    Unbounded {
+        /// v_cr (m/s).
+        critical_speed: f64,
+        /// The largest sampled peak below it (m).
+        last_peak: f64,
+    },
+    /// No speed had a wave.
+    None,
+}
+
+/// One curve of the infinite track: its soil, its waves, where it peaks.
+pub(super) struct InfiniteCurve {
+    pub(super) soil: Soil,
+    pub(super) study: StationaryStudy,
+    pub(super) critical: InfiniteCritical,
+    /// The waves at the shape speeds (None where none was found).
+    pub(super) shapes: Vec<Option<StationaryWave>>,
+}
+
+pub(super) fn study(resolution: super::Resolution, base: &Scenario, runner: &Runner) -> Result<StudyData> {
+    let speeds = resolution.speeds(base)?;
+    let scale = SpeedScale::of(base)?;
+    let v_cr = scale.critical_speed;
+    // The sampled speeds nearest ½, 1 and 1.25 v_cr: their waves are the sweep's.
+    let nearest = |target: f64| speeds.iter().copied().min_by(|a, b| (a - target).abs().total_cmp(&(b - target).abs()));
+    let shape_speeds: Vec<f64> = [0.5, 1.0, 1.25].iter().filter_map(|f| nearest(f * v_cr.unwrap_or(200.0))).collect();
+    let finite_scenarios =
+        FRICTION.iter().map(|&f| (vec![("force_per_length".into(), f)], with_distributed(base, f))).collect();
+    let finite = sweep_curves(finite_scenarios, &speeds, runner)?;
+    let soils = Soil::all();
+    let infinite = runner.silent().map(&soils, |soil| {
+        let scenario = soil.scenario(base);
+        let study = StationaryStudy::of(&scenario, &speeds, Domain::default())?;
+        let critical = refine(&scenario, &study, v_cr)?;
+        let shapes = shape_speeds
+            .iter()
+            .map(|v| {
+                let at = study.points.iter().position(|p| p.speed == *v);
+                at.and_then(|i| study.waves[i].clone()).filter(|w| w.convergence.is_converged())
+            })
+            .collect();
+        Ok(InfiniteCurve { soil: *soil, study, critical, shapes })
+    })?;
+    let (summary, lines) = summary(&infinite, &finite, v_cr);
+    Ok(StudyData {
+        csv: csv(&infinite, &finite),
+        summary,
+        lines,
+        headline: headline(&infinite, &finite),
+        plots: figures::plots(&infinite, &finite, &shape_speeds, base),
+        mean_iterations: mean_iterations(finite.points.iter().flatten()),
+        failures: finite.failures.clone(),
+        ..blank(finite.runs)
+    })
+}
+
+/// The peak of a curve: the largest sampled max downward deflection, refined by golden section between its
+/// neighbours when both have waves; unbounded where the next speed has none because no wave exists there (undamped,
+/// frictionless, at v_cr).
+fn refine(scenario: &Scenario, study: &StationaryStudy, v_cr: Option<f64>) -> Result<InfiniteCritical> {
+    let points = &study.points;
+    let found = |p: &StationaryPoint| p.max_downward_deflection;
+    let Some((i, peak)) =
+        points.iter().enumerate().filter_map(|(i, p)| found(p).map(|w| (i, w))).max_by(|a, b| a.1.total_cmp(&b.1))
+    else {
+        return Ok(InfiniteCritical::None);
+    };
+    let next = points.get(i + 1);
+    if let (Some(next), Some(critical_speed)) = (next, v_cr)
+        && next.status == "no stationary wave"
+    {
+        return Ok(InfiniteCritical::Unbounded { critical_speed, last_peak: peak });
+    }
+    let (Some(before), Some(after)) = (i.checked_sub(1).and_then(|j| points.get(j)), next) else {
+        return Ok(InfiniteCritical::AtEnd { speed: points[i].speed, peak });
+    };
+    if found(before).is_none() || found(after).is_none() {
+        return Ok(InfiniteCritical::AtEnd { speed: points[i].speed, peak });
+    }
+    // On the domain the sampled peak needed, so that each speed starts from the last one's wave.
+    let (behind, ahead, element_length) = points[i].domain;
+    let domain = Domain { behind, ahead, element_length };
+    let mut guess = ContactGuess::default();
+    let mut deflection = |v: f64| -> Result<f64> {
+        let wave = stationary::solve_from(&problem(scenario, v, domain)?, &mut guess)?;
+        // A speed without a wave inside the bracket cannot be the peak.
+        Ok(if wave.convergence.is_converged() { wave.max_downward().value } else { f64::NEG_INFINITY })
+    };
+    let tolerance = 0.02 * (after.speed - before.speed) / 2.0;
+    let (speed, refined) = crate::sweep::golden_section(&mut deflection, before.speed, after.speed, tolerance, true)?;
+    Ok(match refined >= peak {
+        true => InfiniteCritical::Interior { speed, peak: refined },
+        false => InfiniteCritical::Interior { speed: points[i].speed, peak },
+    })
+}
+
+/// Long format: one row per curve and speed, infinite track first. Text cells: model ("infinite", "finite"),
+/// foundation, status; empty cells where a value does not exist.
+fn csv(infinite: &[InfiniteCurve], finite: &Curves) -> String {
+    let mut out = String::from(
+        "model,foundation,force_per_length,speed,status,max_downward_deflection,max_upward_deflection,\
+         deflection_behind\n",
+    );
+    let cell = |x: Option<f64>| x.map_or(String::new(), |x| x.to_string());
+    for curve in infinite {
+        for p in &curve.study.points {
+            let _ = writeln!(
+                out,
+                "infinite,{},{},{},{},{},{},{}",
+                curve.soil.foundation,
+                curve.soil.force_per_length,
+                p.speed,
+                p.status,
+                cell(p.max_downward_deflection),
+                cell(p.max_upward_deflection),
+                cell(p.deflection_behind)
+            );
+        }
+    }
+    for (c, &f) in FRICTION.iter().enumerate() {
+        for point in finite.speed_rows(c) {
+            let (status, down, up) = match point {
+                Ok(p) => ("finished", Some(p.max_downward_deflection), Some(p.max_upward_deflection)),
+                Err(_) => ("failed", None, None),
+            };
+            let speed = point.as_ref().map_or_else(|f| f.speed, |p| p.speed);
+            let _ = writeln!(out, "finite,linear,{f},{speed},{status},{},{},", cell(down), cell(up));
+        }
+    }
+    out
+}
+
+/// Per curve: where it peaks and what friction leaves behind; the finite beam's curves as the distributed-speed
+/// study reports them.
+fn summary(infinite: &[InfiniteCurve], finite: &Curves, v_cr: Option<f64>) -> (Value, Vec<String>) {
+    let mut items = Vec::new();
+    let mut lines = Vec::new();
+    for curve in infinite {
+        let missing: Vec<f64> =
+            curve.study.points.iter().filter(|p| p.status != "converged").map(|p| p.speed).collect();
+        let behind = curve.study.points.iter().filter_map(|p| p.deflection_behind).fold(0.0f64, |m, w| m.max(w.abs()));
+        items.push(json!({
+            "foundation": curve.soil.foundation,
+            "force_per_length": curve.soil.force_per_length,
+            "critical": curve.critical,
+            "speeds_without_wave": missing,
+            "largest_deflection_behind": behind,
+        }));
+        lines.push(format!("infinite track, {}: {}", curve.soil.label(), critical_text(&curve.critical)));
+    }
+    let (finite_summary, finite_lines) = finite.summary();
+    lines.extend(finite_lines.into_iter().map(|l| format!("finite beam, {l}")));
+    (json!({ "critical_speed_of_the_infinite_beam": v_cr, "infinite": items, "finite": finite_summary }), lines)
+}
+
+/// A curve's peak in words: "at … m/s (peak … mm)" and what bounds it.
+pub(super) fn critical_text(critical: &InfiniteCritical) -> String {
+    match *critical {
+        InfiniteCritical::Interior { speed, peak } => format!("at {speed:.1} m/s (peak {:.0} mm)", peak * 1e3),
+        InfiniteCritical::AtEnd { speed, peak } => {
+            format!("at {speed:.1} m/s, an end of the speeds with a wave (peak there {:.0} mm)", peak * 1e3)
+        }
+        InfiniteCritical::Unbounded { critical_speed, last_peak } => format!(
+            "at v_cr = {critical_speed:.1} m/s, where it grows without bound ({:.0} mm one step below; undamped, no \
+             wave exists from v_cr on)",
+            last_peak * 1e3
+        ),
+        InfiniteCritical::None => "nowhere (no wave found at any speed)".into(),
+    }
+}
+
+/// The critical-speed shift and the peak reduction on the infinite track, and what the nonlinear soils do.
+fn headline(infinite: &[InfiniteCurve], finite: &Curves) -> Vec<String> {
+    let linear = |f: f64| infinite.iter().find(|c| c.soil.foundation == "linear" && c.soil.force_per_length == f);
+    let text = |f: f64| linear(f).map_or("unknown".into(), |c| critical_text(&c.critical));
+    let finite_text = |f: f64| finite.critical_text(finite.find("force_per_length", f));
+    let peaks: Vec<String> = FRICTION[1..]
+        .iter()
+        .map(|&f| match linear(f).map(|c| c.critical) {
+            Some(InfiniteCritical::Interior { peak, .. } | InfiniteCritical::AtEnd { peak, .. }) => {
+                format!("{:.0}", peak * 1e3)
+            }
+            _ => "—".into(),
+        })
+        .collect();
+    let nonlinear = |name: &str| infinite.iter().find(|c| c.soil.foundation == name);
+    let reach = nonlinear("tensionless").map_or("unknown".into(), |c| {
+        let last = c.study.points.iter().take_while(|p| p.status == "converged").last();
+        last.map_or("at no speed".into(), |p| format!("up to {:.0} m/s", p.speed))
+    });
+    let bilinear = nonlinear("bilinear").map_or("unknown".into(), |c| critical_text(&c.critical));
+    vec![
+        format!(
+            "On the infinite track the peak deflection lies {} without friction and {} with f_u = 10 kN/m; on the \
+             finite beam the critical speed is {} and {}.",
+            text(0.0),
+            text(10e3),
+            finite_text(0.0),
+            finite_text(10e3)
+        ),
+        format!(
+            "Ballast friction of 1, 2, 5 and 10 kN/m caps the infinite track's peak at {} mm; without friction a \
+             tensionless soil's wave is found {reach}, and a bilinear soil's (α = {TENSION_RATIO}) peak lies \
+             {bilinear}.",
+            peaks.join(", ")
+        ),
+    ]
+}
+
+/// What of `base` the study replaces: its friction and its soil's law (the study sets both per curve), and its own
+/// [sweep] is used.
+pub(super) fn overrides(base: &Scenario) -> Vec<String> {
+    let mut notes = Vec::new();
+    if base.friction.devices.is_some() || base.friction.distributed.is_some() {
+        notes.push(
+            "the scenario's [friction] is not used: the study compares distributed f_u ∈ {0, 1, 2, 5, 10} kN/m".into(),
+        );
+    }
+    if base.foundation.law != FoundationLawKind::Linear {
+        notes.push(
+            "the scenario's [foundation] law is not used: the study sets linear, tensionless and bilinear (α = ½) \
+             soils itself"
+                .into(),
+        );
+    }
+    notes
+}

@@ -1,0 +1,132 @@
+//! The figures of the stationary-wave study: peaks against speed on the infinite track beside the finite beam, the
+//! three soils, the deflection friction leaves behind the load, and the waves' shapes at three speeds.
+
+use super::curves::Curves;
+use super::stationary_wave::{FRICTION, InfiniteCritical, InfiniteCurve};
+use crate::figures::{DeflectionCurve, deflection_figure};
+use crate::plot::{Mark, PanelY, PlotSpec, Series, Stroke};
+use crate::scenario::Scenario;
+use crate::stationary_output::StationaryPoint;
+
+const SPEED: &str = "load speed v (m/s)";
+
+/// The four figures.
+pub(super) fn plots(
+    infinite: &[InfiniteCurve],
+    finite: &Curves,
+    shape_speeds: &[f64],
+    base: &Scenario,
+) -> Vec<PlotSpec> {
+    vec![friction(infinite, finite), soils(infinite), behind(infinite, base), shapes(infinite, shape_speeds)]
+}
+
+/// Max downward deflection against speed: the infinite track solid (the stationary wave), the finite beam dashed
+/// (the distributed-speed study's runs), one colour per friction level.
+fn friction(infinite: &[InfiniteCurve], finite: &Curves) -> PlotSpec {
+    let mut spec = PlotSpec::new(
+        "stationary-wave-friction",
+        "Infinite track and finite beam: max downward deflection vs speed",
+        SPEED,
+        "max downward deflection (mm)",
+    );
+    spec.subtitle =
+        "solid: stationary wave, infinite track; dashed: finite beam (distributed-speed study); gap: no wave".into();
+    for (c, curve) in infinite.iter().enumerate().filter(|(_, c)| c.soil.foundation == "linear") {
+        spec.series.push(sampled(curve, c, |p| p.max_downward_deflection));
+    }
+    for (c, curve) in infinite.iter().enumerate() {
+        if let InfiniteCritical::Interior { speed, peak } = curve.critical
+            && curve.soil.foundation == "linear"
+        {
+            spec.marks.push(Mark { color: c, point: (speed, peak * 1e3) });
+        }
+    }
+    for (c, &f) in FRICTION.iter().enumerate() {
+        let Some(k) = finite.find("force_per_length", f) else { continue };
+        let points = finite.points[k].iter().map(|p| (p.speed, p.max_downward_deflection * 1e3)).collect();
+        spec.series.push(Series { label: None, color: c, stroke: Stroke::Dashed, markers: false, points });
+        if let Some(critical) = finite.critical[k].as_ref().filter(|k| k.is_interior()) {
+            spec.marks.push(Mark { color: c, point: (critical.speed, critical.max_downward_deflection * 1e3) });
+        }
+    }
+    spec.key = vec![(Stroke::Solid, "infinite track".into()), (Stroke::Dashed, "finite beam".into())];
+    spec.mark_label = "refined peak".into();
+    spec
+}
+
+/// The three soils without friction on the infinite track: max downward (solid) and upward (dashed) deflection.
+fn soils(infinite: &[InfiniteCurve]) -> PlotSpec {
+    let curves = infinite
+        .iter()
+        .enumerate()
+        .filter(|(_, c)| c.soil.force_per_length == 0.0)
+        .map(|(c, curve)| {
+            let points = &curve.study.points;
+            DeflectionCurve {
+                label: curve.soil.label().replace("no friction", "linear soil"),
+                color: c,
+                downward: points.iter().filter_map(|p| Some((p.speed, p.max_downward_deflection?))).collect(),
+                upward: points.iter().filter_map(|p| Some((p.speed, p.max_upward_deflection?))).collect(),
+                optimum: None,
+            }
+        })
+        .collect();
+    let mut spec = deflection_figure(
+        "stationary-wave-soils",
+        "Infinite track without friction: linear, tensionless and bilinear soils",
+        SPEED,
+        curves,
+        "",
+    );
+    spec.subtitle = "nonlinear soils carry the rail's weight; a curve stops where no wave is found".into();
+    spec
+}
+
+/// The deflection friction leaves behind the load (signed, mm), with the bound ±f_u/k of each level.
+fn behind(infinite: &[InfiniteCurve], base: &Scenario) -> PlotSpec {
+    let mut spec = PlotSpec::new(
+        "stationary-wave-behind",
+        "Infinite track: the deflection ballast friction leaves behind the load",
+        SPEED,
+        "residual deflection (mm, + above the rail's level)",
+    );
+    spec.subtitle =
+        format!("dashed: the bound ±f_u/k (k = {:.0} kN/m²) friction can hold", base.foundation.stiffness / 1e3);
+    let speeds: Vec<f64> = infinite.first().map_or(Vec::new(), |c| c.study.points.iter().map(|p| p.speed).collect());
+    let (first, last) = (speeds.first().copied().unwrap_or(0.0), speeds.last().copied().unwrap_or(1.0));
+    for (c, curve) in infinite.iter().enumerate().filter(|(_, c)| c.soil.force_per_length > 0.0) {
+        spec.series.push(sampled(curve, c, |p| p.deflection_behind));
+        let bound = 1e3 * curve.soil.force_per_length / base.foundation.stiffness;
+        for sign in [1.0, -1.0] {
+            let points = vec![(first, sign * bound), (last, sign * bound)];
+            spec.series.push(Series { label: None, color: c, stroke: Stroke::Dashed, markers: false, points });
+        }
+    }
+    spec
+}
+
+/// A curve's `value` (m) in mm against speed, solid with markers, in colour `color`: the speeds with a wave only.
+fn sampled(curve: &InfiniteCurve, color: usize, value: fn(&StationaryPoint) -> Option<f64>) -> Series {
+    let points = curve.study.points.iter().filter_map(|p| Some((p.speed, value(p)? * 1e3))).collect();
+    Series { label: Some(curve.soil.label()), color, stroke: Stroke::Solid, markers: true, points }
+}
+
+/// W(s) at each shape speed, one panel per speed, every soil that has a wave there.
+fn shapes(infinite: &[InfiniteCurve], speeds: &[f64]) -> PlotSpec {
+    let mut spec =
+        PlotSpec::new("stationary-wave-shapes", "The stationary wave at three speeds", "s = x − vt (m)", "W (mm)");
+    spec.subtitle =
+        "from the settled rail, s > 0 ahead of the load, each panel on its own scale; absent: no wave".into();
+    spec.panel_y = PanelY::EachOwn;
+    for (k, &speed) in speeds.iter().enumerate() {
+        let mut panel = PlotSpec::new("", format!("v = {speed:.0} m/s"), "s = x − vt (m)", "W (mm)");
+        for (c, curve) in infinite.iter().enumerate() {
+            let Some(wave) = curve.shapes.get(k).and_then(Option::as_ref) else { continue };
+            let points = wave.s.iter().zip(&wave.deflection).map(|(s, w)| (*s, w * 1e3)).collect();
+            let label = Some(curve.soil.label());
+            panel.series.push(Series { label, color: c, stroke: Stroke::Solid, markers: false, points });
+        }
+        spec.panels.push(panel);
+    }
+    spec
+}
