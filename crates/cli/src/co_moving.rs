@@ -44,8 +44,8 @@ pub fn run(
 fn print_text(s: &CoMovingSummary) {
     let title = if s.title.is_empty() { String::new() } else { format!(" — {}", s.title) };
     println!(
-        "frictrack run{title}, co-moving window: load {:.1} kN at {:.2} m/s over {:.0} m of track",
-        s.load / 1e3,
+        "frictrack run{title}, co-moving window: {} at {:.2} m/s over {:.0} m of track",
+        s.what_moves(),
         s.speed,
         s.track_length
     );
@@ -72,13 +72,30 @@ fn print_text(s: &CoMovingSummary) {
         let first = s.changes.first().map_or(change, |c| c.1);
         println!(
             "  change of the wave per window length travelled: {first:.1e} after the first, {change:.1e} at {distance:.0} m{}",
-            if change <= 1e-3 { " (stationary)" } else { " (still settling: a longer track_length)" }
+            match (s.irregular_rail, change <= 1e-3) {
+                (true, _) => " (an irregular rail keeps the wave changing: no stationary state)",
+                (false, true) => " (stationary)",
+                (false, false) => " (still settling: a longer track_length)",
+            }
         );
     }
     println!(
         "  energy (J): load work {:.4e}, friction {:.4e}, viscous {:.4e}, carried out behind {:.4e}, balance residual {:.2e}",
         s.load_work, s.friction_work, s.viscous_dissipation, s.transported, s.energy_residual
     );
+    if let Some(v) = &s.vehicles {
+        println!(
+            "  vehicles ({} contact): wheel force {:.1}–{:.1} kN, largest ΔQ/Q₀ {:.3}, {} losses of contact, body \
+             acceleration up to {:.3} m/s² (RMS {:.3})",
+            v.contact,
+            v.min_wheel_force / 1e3,
+            v.max_wheel_force / 1e3,
+            v.max_dynamic_increment,
+            v.losses_of_contact,
+            v.max_body_acceleration,
+            v.max_rms_body_acceleration
+        );
+    }
     println!(
         "  {} steps, {} shifts of the window, solver {}; wall time {:.3} s",
         s.steps, s.shifts, s.solver, s.wall_time

@@ -29,6 +29,14 @@ pub trait MovingInteraction: std::fmt::Debug + Send {
     /// q at a fixed time (g = g₀(t) + H(t) q), so the position projection of a rigid contact ([`crate::position`])
     /// solves for it exactly.
     fn gap(&self, time: f64, q: &[f64], row: &mut InteractionRow) -> f64;
+    /// Whether it can follow a co-moving window ([`crate::MoreauJean::shift`]): its place in the window moves back
+    /// by the shift while its place on the track goes on. None can unless it says so.
+    fn follows_shifts(&self) -> bool {
+        false
+    }
+    /// The window has shifted `distance` (m) back under it: its place in the window moves back by that much, its
+    /// place on the track (what it meets there, e.g. the rail's profile) does not.
+    fn shift_back(&mut self, _distance: f64) {}
 }
 
 /// The interactions of a run: fixed ones with their once-per-run data, and moving ones rebuilt every step.

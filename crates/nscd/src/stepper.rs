@@ -31,7 +31,7 @@ use friction::hertz::NEWTON_ITERATIONS;
 use friction::{InteractionKind, InteractionSet, Law};
 
 mod shift;
-pub use shift::ShiftedBlock;
+pub use shift::{ShiftedBlock, WindowShift};
 
 /// The state and scratch of a Moreau–Jean integration; nothing allocates inside [`MoreauJean::step`].
 pub struct MoreauJean {

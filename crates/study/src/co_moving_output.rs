@@ -65,6 +65,12 @@ pub struct CoMovingSummary {
     pub solver: &'static str,
     /// Wall time of the loop (s).
     pub wall_time: f64,
+    /// Whether the rail under the vehicles is irregular: then the wave keeps changing and no stationary state comes.
+    pub irregular_rail: bool,
+    /// With vehicles: wheel forces, losses of contact and body accelerations over the run (positions on the track,
+    /// m from where the window started).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub vehicles: Option<crate::vehicle_output::VehicleReport>,
 }
 
 /// The window of `scenario`'s track and its settings: `window` m in the mesh's element length, free rear, clamped
@@ -129,11 +135,28 @@ pub fn window(scenario: &Scenario, section: &CoMovingSection) -> Result<(BeamMod
     Ok((window, settings))
 }
 
+impl CoMovingSummary {
+    /// "F = 83.4 kN", or "3 vehicles (3 wheels)" with the first wheel at s = 0.
+    pub fn what_moves(&self) -> String {
+        match &self.vehicles {
+            Some(v) => format!(
+                "{} vehicle{} ({} wheel{}, the first at s = 0)",
+                v.bodies.len(),
+                if v.bodies.len() == 1 { "" } else { "s" },
+                v.wheels.len(),
+                if v.wheels.len() == 1 { "" } else { "s" }
+            ),
+            None => format!("F = {:.1} kN", self.load / 1e3),
+        }
+    }
+}
+
 /// Run `scenario` through its co-moving window (`section`).
 pub fn run(scenario: &Scenario, section: &CoMovingSection) -> Result<(CoMovingSummary, CoMovingResult)> {
     let (model, settings) = window(scenario, section)?;
     let placed = scenario.placed_on(&model)?;
-    let run_settings = scenario.run_settings(scenario.load.speed)?;
+    let run_settings =
+        scenario.run_settings_reaching(scenario.load.speed, model.mesh().length + section.track_length)?;
     let result = run_co_moving(&model, &placed, &run_settings, &settings)?;
     let (at, peak) = result.wave.iter().fold((0.0, 0.0f64), |(s0, m), &(s, w)| if -w > m { (s, -w) } else { (s0, m) });
     let e = &result.energy;
@@ -162,6 +185,12 @@ pub fn run(scenario: &Scenario, section: &CoMovingSection) -> Result<(CoMovingSu
         energy_residual: e.residual(),
         solver: result.solver.map_or("none", |k| k.name()),
         wall_time: result.wall_time,
+        irregular_rail: scenario.vehicle.is_some() && !scenario.rail.is_empty(),
+        vehicles: result.vehicles.as_ref().map(|v| {
+            let contact =
+                run_settings.moving.load.vehicles().map_or("", track::vehicle::consist::VehicleSettings::contact_name);
+            crate::vehicle_output::VehicleReport::of(v, contact)
+        }),
     };
     Ok((summary, result))
 }
@@ -175,8 +204,8 @@ pub fn figures(summary: &CoMovingSummary, result: &CoMovingResult) -> Vec<PlotSp
         false => "no friction".to_string(),
     };
     let subtitle = format!(
-        "F = {:.1} kN at {:.1} m/s over {:.0} m of track, {} soil, {friction}, window {:.0} m (zones {:.0} m)",
-        summary.load / 1e3,
+        "{} at {:.1} m/s over {:.0} m of track, {} soil, {friction}, window {:.0} m (zones {:.0} m)",
+        summary.what_moves(),
         summary.speed,
         summary.track_length,
         summary.soil,

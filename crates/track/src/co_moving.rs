@@ -16,13 +16,14 @@
 use crate::error::{Result, invalid};
 use crate::moving_load::MovingLoad;
 use crate::placed::{PlacedInteractions, SectionKind};
-use crate::simulation::{InitialState, RunSettings, Simulation};
+use crate::simulation::{Coupling, InitialState, RunSettings, Simulation};
 use crate::system::beam_system;
+use fem_beam::Train;
 use fem_beam::{BeamModel, Support};
 use nscd::forcing::{Constant, WithConstant};
 use nscd::solver::SolverSettings;
-use nscd::stepper::{Integration, MoreauJean, ShiftedBlock};
-use nscd::{EnergyLedger, Forcing, SolverKind};
+use nscd::stepper::{Integration, MoreauJean, ShiftedBlock, WindowShift};
+use nscd::{EnergyLedger, Forcing, Interactions, SolverKind};
 use std::time::Instant;
 
 /// What a co-moving run is asked for.
@@ -61,6 +62,9 @@ pub struct CoMovingResult {
     pub solver: Option<SolverKind>,
     /// Wall time of the loop (s).
     pub wall_time: f64,
+    /// With vehicles: each wheel's contact forces and losses of contact and each body's accelerations over the
+    /// run (positions on the track, m from where the window started).
+    pub vehicles: Option<crate::simulation::VehicleResults>,
 }
 
 /// The fixed interactions as blocks that shift with the state: each kind's sections must repeat every element.
@@ -88,9 +92,10 @@ fn blocks(model: &BeamModel, placed: &PlacedInteractions) -> Result<Vec<ShiftedB
     Ok(blocks)
 }
 
-/// Run the load of `settings` (moving forces: one or a train; not vehicles) across `window.track_length` m of
-/// endless track through the window `model` (free rear end, clamped front end, uniform mesh) with its `placed`
-/// interactions (ballast friction and soil sections, which repeat every element).
+/// Run the load of `settings` (moving forces, one or a train; or vehicles, whose wheels ride the window while the
+/// rail's profile under them is the track's) across `window.track_length` m of endless track through the window
+/// `model` (free rear end, clamped front end, uniform mesh) with its `placed` interactions (ballast friction and
+/// soil sections, which repeat every element).
 pub fn run_co_moving(
     model: &BeamModel,
     placed: &PlacedInteractions,
@@ -105,9 +110,6 @@ pub fn run_co_moving(
             0.0,
             "a co-moving window has a free rear end and a clamped front end (the track ahead at rest)",
         ));
-    }
-    if settings.moving.load.vehicles().is_some() {
-        return Err(invalid("vehicle", 0.0, "a co-moving window carries moving forces, not vehicles (yet)"));
     }
     let l = mesh.element_length();
     let advance = settings.integration.load_advance;
@@ -140,14 +142,34 @@ pub fn run_co_moving(
         ..settings.clone()
     };
     let (q0, v0) = Simulation::new(model, placed, &start)?.initial_state()?;
+    let fixed_count = placed.len();
     let (speed, theta) = (settings.moving.speed, settings.integration.theta);
     let h = advance / speed;
     let kind = crate::simulation::resolve_solver(settings.integration.solver.kind, model, placed, (h, theta));
     let solver = SolverSettings { kind, ..settings.integration.solver };
     let integration = Integration { theta, step: h };
     let fixed = placed.interactions().clone();
-    let mut stepper = MoreauJean::build(&beam_system(model), fixed, integration, &solver, q0, v0)?;
-    let mut load = MovingLoad::train(mesh, model.dofs(), settings.moving.load.train(), speed, window.load_at);
+    let nb = model.dofs().free_len();
+    // With vehicles the system is the beam and the vehicles, loaded by their weights; their wheels ride the window.
+    let (mut stepper, weights, mut observer, train) = match settings.moving.load.vehicles() {
+        Some(vehicles) => {
+            let beam = (q0.as_slice(), v0.as_slice());
+            let c = Coupling::new(model, vehicles, beam, (window.load_at, speed), theta, None)?;
+            let interactions = Interactions { fixed, moving: c.contacts };
+            let stepper = MoreauJean::build(&c.system, interactions, integration, &solver, c.q0, c.v0)?;
+            (
+                stepper,
+                Some(c.weights),
+                Some(c.observer),
+                Train { name: String::new(), axles: Vec::new(), patches: Vec::new() },
+            )
+        }
+        None => {
+            let stepper = MoreauJean::build(&beam_system(model), fixed, integration, &solver, q0, v0)?;
+            (stepper, None, None, settings.moving.load.train())
+        }
+    };
+    let mut load = MovingLoad::train(mesh, model.dofs(), train, speed, window.load_at);
     let preload = Constant { force: placed.preload().to_vec() };
     let dofs = model.dofs();
     let nodes: Vec<(usize, f64)> =
@@ -163,18 +185,28 @@ pub fn run_co_moving(
     let clock = Instant::now();
     for k in 1..=steps as usize {
         {
-            let forcing: &dyn Forcing = &load;
-            let preloaded = WithConstant { forcing, constant: &preload };
-            let forcing: &dyn Forcing = if preload.force.is_empty() { &load } else { &preloaded };
+            let loads: &dyn Forcing = match &weights {
+                Some(weights) => weights,
+                None => &load,
+            };
+            let preloaded = WithConstant { forcing: loads, constant: &preload };
+            let forcing: &dyn Forcing = if preload.force.is_empty() { loads } else { &preloaded };
             stepper.step(forcing)?;
+        }
+        if let Some(observer) = observer.as_mut() {
+            let (q, v, previous) = (stepper.q(), stepper.v(), stepper.previous_v());
+            observer.observe(stepper.time, h, &stepper.p[fixed_count..], q, (v, previous));
         }
         for &&(d, _) in &middle {
             let w = stepper.q()[d];
             (max_downward, max_upward) = (max_downward.max(-w), max_upward.max(w));
         }
         if k % per_element as usize == 0 {
-            stepper.shift(2, &blocks)?;
+            stepper.shift(&WindowShift { dofs: 2, chain: nb, blocks: &blocks, distance: l })?;
             load.step_back(l);
+            if let Some(observer) = observer.as_mut() {
+                observer.shift_back(l);
+            }
             shifts += 1;
             if shifts % shifts_per_window == 0 {
                 let now = snapshot(stepper.q());
@@ -188,7 +220,8 @@ pub fn run_co_moving(
     let wall_time = clock.elapsed().as_secs_f64();
     let x_load = load.position(stepper.time);
     let wave = nodes.iter().map(|&(d, x)| (x - x_load, stepper.q()[d])).collect();
-    let solver = (!placed.is_empty()).then(|| stepper.solver_kind());
+    let solver = (!placed.is_empty() || observer.is_some()).then(|| stepper.solver_kind());
+    let vehicles = observer.map(|o| o.finish(&stepper.energy));
     Ok(CoMovingResult {
         wave,
         changes,
@@ -199,5 +232,6 @@ pub fn run_co_moving(
         shifts,
         solver,
         wall_time,
+        vehicles,
     })
 }

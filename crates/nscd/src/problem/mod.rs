@@ -290,6 +290,16 @@ impl InteractionProblem {
         !self.moving.is_empty()
     }
 
+    /// Whether every moving interaction follows a co-moving window's shifts.
+    pub fn moving_follow_shifts(&self) -> bool {
+        self.moving.iter().all(|m| m.follows_shifts())
+    }
+
+    /// Move every moving interaction back by `distance` (m) in the window (see [`MovingInteraction::shift_back`]).
+    pub fn shift_moving_back(&mut self, distance: f64) {
+        self.moving.iter_mut().for_each(|m| m.shift_back(distance));
+    }
+
     /// Number of fixed interactions (they come first).
     pub fn fixed_len(&self) -> usize {
         self.fixed

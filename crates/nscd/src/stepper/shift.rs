@@ -30,27 +30,46 @@ fn shift_down(values: &mut [f64], start: usize, len: usize, by: usize) {
     block[len - by..].iter_mut().for_each(|x| *x = 0.0);
 }
 
+/// One shift of a co-moving window: the chain's DOFs move down by `dofs` (one node's), the first `chain` DOFs of
+/// the system being the chain (a coupled vehicle's DOFs after them do not move), each block of fixed interactions by
+/// its `per_shift`, and the moving interactions (wheels) back by `distance` (m, one element) in the window.
+#[derive(Debug, Clone, PartialEq)]
+pub struct WindowShift<'a> {
+    /// DOFs per shift (a node's).
+    pub dofs: usize,
+    /// The chain's DOFs, first in the system.
+    pub chain: usize,
+    /// The blocks of fixed interactions.
+    pub blocks: &'a [ShiftedBlock],
+    /// The element length (m): how far the moving interactions move back.
+    pub distance: f64,
+}
+
 impl MoreauJean {
-    /// Shift the state down by `dofs` DOFs (the rear node's, dropped; the new front node at rest) and each block of
-    /// fixed interactions by its `per_shift`, between steps. Refused with moving interactions (their rows follow
-    /// positions of their own) and with the homotopy solver (it keeps a path that the shift would break).
-    pub fn shift(&mut self, dofs: usize, blocks: &[ShiftedBlock]) -> Result<()> {
-        if self.problem.has_moving() || self.solver.kind() == SolverKind::Homotopy {
+    /// Shift the state by `shift` between steps: the chain's rear node dropped, its new front node at rest, the
+    /// fixed interactions' blocks with it, the moving interactions back by an element in the window (a vehicle's
+    /// DOFs and its wheels' contact impulses stay: the vehicle rides on, the window moved under it). Refused with
+    /// moving interactions that cannot follow a window and with the homotopy solver (it keeps a path that the shift
+    /// would break).
+    pub fn shift(&mut self, shift: &WindowShift<'_>) -> Result<()> {
+        let moving_stay = self.problem.moving_follow_shifts();
+        if !moving_stay || self.solver.kind() == SolverKind::Homotopy {
             return Err(NscdError::Unsupported {
                 solver: self.solver.kind(),
-                reason: "a co-moving window shifts fixed interactions only, solved by projection, the interior point \
-                         or clarabel",
+                reason: "a co-moving window shifts fixed interactions and wheels that follow it, solved by \
+                         projection, the interior point or clarabel",
             });
         }
-        let n = self.q.len();
+        let chain = shift.chain.min(self.q.len());
         let before = self.energy.current;
         for x in [&mut self.q, &mut self.v, &mut self.v_prev] {
-            shift_down(x, 0, n, dofs);
+            shift_down(x, 0, chain, shift.dofs);
         }
-        for block in blocks {
+        for block in shift.blocks {
             shift_down(&mut self.p, block.start, block.len, block.per_shift);
             shift_down(&mut self.u, block.start, block.len, block.per_shift);
         }
+        self.problem.shift_moving_back(shift.distance);
         self.stiffness.mul_vec(&self.q, &mut self.kq);
         self.stiffness.mul_vec(&self.v, &mut self.kv);
         self.mass.mul_vec(&self.v, &mut self.mv);

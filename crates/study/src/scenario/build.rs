@@ -245,6 +245,12 @@ impl Scenario {
     /// Run settings for a load speed `speed` (m/s), with the train resolved ([`crate::trains::resolve`]) but not yet
     /// validated (see [`Scenario::build`]).
     pub fn run_settings(&self, speed: f64) -> Result<RunSettings> {
+        self.run_settings_reaching(speed, self.mesh.length)
+    }
+
+    /// [`Self::run_settings`] for a run whose first wheel covers `reach` m of track (a co-moving window's length
+    /// plus the track it travels): a random rail's period, when not given, covers it, so the rail does not repeat.
+    pub fn run_settings_reaching(&self, speed: f64, reach: f64) -> Result<RunSettings> {
         let train = crate::trains::resolve(&self.load)?.map(|t| self.on_the_beam(t));
         let i = &self.integration;
         let initial = match (i.steady_start, i.static_start) {
@@ -273,7 +279,7 @@ impl Scenario {
         Load::Force(self.load.force).validate().map_err(scenario_path)?;
         let load = match (&self.vehicle, train) {
             (Some(v), train) => {
-                let vehicles = v.settings(train.as_ref(), |behind| self.rail.profile(self.mesh.length + behind))?;
+                let vehicles = v.settings(train.as_ref(), |behind| self.rail.profile(reach + behind))?;
                 Load::Vehicles { vehicles, train }
             }
             (None, Some(train)) => Load::Train(train),

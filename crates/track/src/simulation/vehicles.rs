@@ -24,18 +24,18 @@ pub const LOSS_OF_CONTACT: f64 = 1e-6;
 pub const IMPACT_WINDOW: f64 = 0.01;
 
 /// The coupled system of the beam and the vehicles, and how it starts.
-pub(super) struct Coupling {
+pub(crate) struct Coupling {
     /// M, C, K of beam and vehicles.
-    pub(super) system: LinearSystem,
+    pub(crate) system: LinearSystem,
     /// One wheel–rail interaction per wheel, in [`VehicleSettings::wheels`] order.
-    pub(super) contacts: Vec<Box<dyn MovingInteraction>>,
+    pub(crate) contacts: Vec<Box<dyn MovingInteraction>>,
     /// The vehicles' weights over the whole system (zero on the beam).
-    pub(super) weights: Constant,
+    pub(crate) weights: Constant,
     /// Initial displacement and velocity of the whole system (the beam's part from the run's initial state).
-    pub(super) q0: Vec<f64>,
-    pub(super) v0: Vec<f64>,
+    pub(crate) q0: Vec<f64>,
+    pub(crate) v0: Vec<f64>,
     /// What is observed.
-    pub(super) observer: VehicleObserver,
+    pub(crate) observer: VehicleObserver,
 }
 
 impl Coupling {
@@ -45,7 +45,7 @@ impl Coupling {
     /// beam), pressed into the contact by its static load (two passes: the heights less the penetrations of the first
     /// pass's loads; exact for vehicles whose wheel loads do not depend on the wheels' heights, such as every vehicle
     /// with one wheel).
-    pub(super) fn new(
+    pub(crate) fn new(
         model: &BeamModel,
         vehicles: &VehicleSettings,
         (beam_q0, beam_v0): (&[f64], &[f64]),
@@ -116,11 +116,14 @@ impl Coupling {
 }
 
 /// Per wheel and per body, what every step adds.
-pub(super) struct VehicleObserver {
+pub(crate) struct VehicleObserver {
     wheels: Vec<WheelResult>,
     /// Where each wheel is at t = 0 (m).
     starts: Vec<f64>,
     speed: f64,
+    /// How far a co-moving window has shifted back under the wheels (m): their places on the beam are their places
+    /// on the track less this.
+    shifted: f64,
     /// The body DOF ([`crate::vehicle::Vehicle::body`]) of each vehicle in the system and the range of its wheels in
     /// `wheels`; its largest |acceleration| and Σ a²·h while all its wheels are inside the region.
     bodies: Vec<(usize, std::ops::Range<usize>)>,
@@ -172,6 +175,7 @@ impl VehicleObserver {
             wheels: results,
             starts,
             speed,
+            shifted: 0.0,
             body_square_integral: vec![0.0; bodies.len()],
             bodies,
             body_results,
@@ -193,9 +197,14 @@ impl VehicleObserver {
         }
     }
 
-    /// Where wheel `i` is at `time` (m).
+    /// Where wheel `i` is on the beam at `time` (m).
     pub(super) fn position(&self, i: usize, time: f64) -> f64 {
-        self.starts[i] + self.speed * time
+        self.starts[i] + self.speed * time - self.shifted
+    }
+
+    /// A co-moving window shifted `distance` (m) back under the wheels.
+    pub(crate) fn shift_back(&mut self, distance: f64) {
+        self.shifted += distance;
     }
 
     /// The wheels' element loads at `time` from their impulses `p` of a step `h` (the contact forces −p/h·Ψ on the
@@ -218,12 +227,13 @@ impl VehicleObserver {
 
     /// Book step k → k+1 ending at `time`: the wheels' impulses `p` (N·s) of the step `h`, the system's
     /// displacement `q` and its velocities after and before the step.
-    pub(super) fn observe(&mut self, time: f64, h: f64, impulses: &[f64], q: &[f64], (v, v_prev): (&[f64], &[f64])) {
+    pub(crate) fn observe(&mut self, time: f64, h: f64, impulses: &[f64], q: &[f64], (v, v_prev): (&[f64], &[f64])) {
         for (i, &p) in impulses.iter().enumerate() {
-            let x = self.position(i, time);
+            // On the beam for the rail under the wheel, on the track for what is reported (the same without a window).
+            let (on_beam, x) = (self.position(i, time), self.position(i, time) + self.shifted);
             let force = p / h;
             // Off the beam the rail is rigid ground.
-            let (deflection, curvature) = self.rail.deflection_curvature(q, x).unwrap_or((0.0, 0.0));
+            let (deflection, curvature) = self.rail.deflection_curvature(q, on_beam).unwrap_or((0.0, 0.0));
             let moment = self.bending_stiffness * curvature;
             let w = &mut self.wheels[i];
             let history = &mut w.history;
@@ -232,7 +242,7 @@ impl VehicleObserver {
             history.force.push(force);
             history.rail_deflection.push(deflection);
             history.moment.push(moment);
-            if !counts_for_extremes(self.region.0, x, self.region.1) {
+            if !counts_for_extremes(self.region.0, on_beam, self.region.1) {
                 continue;
             }
             w.min_force = w.min_force.min(force);
@@ -279,7 +289,7 @@ impl VehicleObserver {
 
     /// The results (a wheel that never was inside the region has no extremes: 0), with the contacts' terms of the
     /// run's ledger `energy`.
-    pub(super) fn finish(mut self, energy: &nscd::EnergyLedger) -> VehicleResults {
+    pub(crate) fn finish(mut self, energy: &nscd::EnergyLedger) -> VehicleResults {
         for (result, integral) in self.body_results.iter_mut().zip(&self.body_square_integral) {
             result.rms_acceleration = if result.duration > 0.0 { (integral / result.duration).sqrt() } else { 0.0 };
         }

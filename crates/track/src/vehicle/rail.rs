@@ -44,6 +44,9 @@ pub struct WheelOnBeam {
     law: Law,
     /// θ of the integration: the row is written where the wheel is at t_k + θh.
     theta: f64,
+    /// How far a co-moving window has shifted back under the wheel (m): its place on the beam is its place on the
+    /// track less this.
+    shifted: f64,
 }
 
 /// The beam under a point: (system DOFs of its element's four DOFs, Ψ, Ψ′), or None off the beam.
@@ -106,12 +109,22 @@ impl WheelOnBeam {
     ) -> Result<Self> {
         contact.validate()?;
         let law = contact.law();
-        Ok(Self { wheel, rail: RailPoints::new(model, beam_offset), start, speed, track, law, theta })
+        Ok(Self { wheel, rail: RailPoints::new(model, beam_offset), start, speed, track, law, theta, shifted: 0.0 })
     }
 
-    /// Where the wheel is at `time` (m).
+    /// Where the wheel is on the track at `time` (m).
     pub fn position(&self, time: f64) -> f64 {
         self.start + self.speed * time
+    }
+
+    /// Where the wheel is on the beam at `time` (m): on the track less what a co-moving window shifted.
+    fn on_beam(&self, time: f64) -> f64 {
+        self.position(time) - self.shifted
+    }
+
+    /// The rail's height and slope (m, rad) under the wheel at track position `x` (m).
+    fn profile_at(&self, x: f64) -> (f64, f64) {
+        self.track.height_slope(x, x - self.start)
     }
 
     /// Write the contact's row at `x` into `row` — [−Ψ(x)ᵀ on the element's free DOFs, +1 on the wheel], or [+1] off
@@ -140,14 +153,14 @@ impl MovingInteraction for WheelOnBeam {
 
     fn update(&mut self, time: f64, step: f64, q: &[f64], v: &[f64], row: &mut InteractionRow) -> MovingState {
         let (x, next) = (self.position(time), self.position(time + self.theta * step));
-        let (r, slope) = self.track.height_slope(x, x - self.start);
+        let (r, slope) = self.profile_at(x);
         let (mut gap, mut velocity) = (q[self.wheel] - r, v[self.wheel] - self.speed * slope);
-        if let Some((dofs, n, dn)) = self.rail.under(x) {
+        if let Some((dofs, n, dn)) = self.rail.under(x - self.shifted) {
             gap -= combine(&dofs, &n, q);
             velocity -= combine(&dofs, &n, v) + self.speed * combine(&dofs, &dn, q);
         }
-        let mut rheonomic = -self.speed * self.track.height_slope(next, next - self.start).1;
-        if let Some((dofs, _, dn)) = self.write_row(next, row) {
+        let mut rheonomic = -self.speed * self.profile_at(next).1;
+        if let Some((dofs, _, dn)) = self.write_row(next - self.shifted, row) {
             // −v·Ψ′(x_{k+θ})ᵀq_{k+θ} with q_{k+θ} ≈ q_k + θh v_k: second order, as the row.
             let slope = combine(&dofs, &dn, q) + self.theta * step * combine(&dofs, &dn, v);
             rheonomic -= self.speed * slope;
@@ -157,8 +170,15 @@ impl MovingInteraction for WheelOnBeam {
 
     fn gap(&self, time: f64, q: &[f64], row: &mut InteractionRow) -> f64 {
         let x = self.position(time);
-        let r = self.track.height_slope(x, x - self.start).0;
-        let beam = self.write_row(x, row).map_or(0.0, |(dofs, n, _)| combine(&dofs, &n, q));
-        q[self.wheel] - r - beam
+        let beam = self.write_row(self.on_beam(time), row).map_or(0.0, |(dofs, n, _)| combine(&dofs, &n, q));
+        q[self.wheel] - self.profile_at(x).0 - beam
+    }
+
+    fn follows_shifts(&self) -> bool {
+        true
+    }
+
+    fn shift_back(&mut self, distance: f64) {
+        self.shifted += distance;
     }
 }
