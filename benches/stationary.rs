@@ -2,7 +2,7 @@
 //! with ballast friction, and
 //! a nonlinear soil's run on the finite track beside the linear one (the cost of its sections in the engine).
 //!
-//! Run with `cargo bench -p frictrack-benches --bench stationary`.
+//! Run with `cargo bench -p frictrack-benches --bench stationary` (`-- co_moving_window/quarter_car` for the vehicle).
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use fem_beam::reference::uic60_on_soft_soil;
@@ -107,5 +107,29 @@ fn co_moving(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, sweeps, soil_runs, co_moving);
+/// A quarter car riding a 120 m window (0.25 m elements, 30 m zones) at 60 m/s over a 3 mm dipped joint, over 250 m
+/// and 1000 m of track: the coupled system's cost per step is the window's too.
+fn co_moving_vehicle(c: &mut Criterion) {
+    let scenario = |track: f64| {
+        let toml = format!(
+            "[mesh]\nelements = 800\n[foundation]\ndamping_ratio = 0.05\n[load]\nspeed = 60.0\n[vehicle]\n\
+             kind = \"quarter-car\"\n[[rail.irregularities]]\nkind = \"dipped-joint\"\nposition = 140.0\n\
+             depth = 3e-3\nlength = 1.0\n[integration]\nload_advance = 0.05\n[co_moving]\ntrack_length = {track}\n\
+             zones = 30.0\n"
+        );
+        study::Scenario::from_toml(&toml, "bench.toml").unwrap()
+    };
+    let mut group = c.benchmark_group("co_moving_window");
+    group.sample_size(10).warm_up_time(Duration::from_secs(1)).measurement_time(Duration::from_secs(10));
+    for track in [250.0, 1000.0] {
+        let s = scenario(track);
+        let section = s.co_moving.clone().unwrap();
+        group.bench_function(format!("quarter_car_{track}m"), |b| {
+            b.iter(|| study::co_moving_output::run(black_box(&s), &section).unwrap())
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, sweeps, soil_runs, co_moving, co_moving_vehicle);
 criterion_main!(benches);

@@ -88,7 +88,7 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
 /// The report's opening: the base case in numbers and how to read the figures.
 fn report_header(base: &study::Scenario, options: &crate::study_cmd::StudyOptions) -> Result<String> {
     let mut report = String::new();
-    let _ = writeln!(report, "# frictrack — the studies of docs/theory.md §7 and §10\n");
+    let _ = writeln!(report, "# frictrack — the studies of docs/theory.md §7, §10, §12 and §14\n");
     let model = base.model()?;
     let (beam, foundation, mesh) = (model.beam(), model.foundation(), model.mesh());
     let v_cr = study::speeds::SpeedScale::of(base)?.critical_speed;

@@ -202,7 +202,7 @@ fn fixed_speed_studies_keep_every_finished_run_past_failed_ones() {
 }
 
 /// `reproduce` on a scenario one study's own set-up does not fit (199 devices on a 40 m track of 39 interior nodes):
-/// that study is recorded in the report as not run, with the reason, and the seven others are run and written; the
+/// that study is recorded in the report as not run, with the reason, and the eight others are run and written; the
 /// command exits with 1 naming it. Before, it stopped at the sixth study with exit 2 and no report.
 #[test]
 fn reproduce_records_a_study_that_cannot_run_on_the_scenario() {
@@ -216,6 +216,6 @@ fn reproduce_records_a_study_that_cannot_run_on_the_scenario() {
     let report = std::fs::read_to_string(out_dir.join("report.md")).unwrap();
     assert!(report.contains("## 6. discrete-vs-distributed — not run on this scenario"), "{report}");
     let sections = report.lines().filter(|l| l.starts_with("## ")).count();
-    assert_eq!(sections, 8, "{report}");
+    assert_eq!(sections, 9, "{report}");
     assert!(out_dir.join("vehicle-speed.csv").exists() && !out_dir.join("discrete-vs-distributed.csv").exists());
 }
