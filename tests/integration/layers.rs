@@ -1,8 +1,9 @@
 //! The crates form layers and every dependency points down (docs/architecture.md): a regression here is a lower
 //! crate that started to use a higher one. Read from each crate's Cargo.toml (normal, dev and build dependencies).
 
-/// The layers, bottom first: (package name, folder).
-const LAYERS: [(&str, &str); 9] = [
+/// The layers, bottom first: (package name, folder). The Python bindings stand beside the command line: both on the
+/// study library, neither on the other.
+const LAYERS: [(&str, &str); 10] = [
     ("banded", "crates/banded"),
     ("irregularity", "crates/irregularity"),
     ("fem-beam", "crates/fem-beam"),
@@ -12,6 +13,7 @@ const LAYERS: [(&str, &str); 9] = [
     ("stationary", "crates/stationary"),
     ("study", "crates/study"),
     ("frictrack", "crates/cli"),
+    ("frictrack-python", "crates/python"),
 ];
 
 fn manifest(folder: &str) -> toml::Table {
@@ -69,6 +71,7 @@ fn every_dependency_points_down() {
     assert!(workspace_dependencies("crates/banded").is_empty());
     assert!(workspace_dependencies("crates/irregularity").is_empty(), "rail profiles know no beam and no engine");
     assert!(workspace_dependencies("crates/nscd").contains(&"banded".to_string()));
+    assert!(!workspace_dependencies("crates/python").contains(&"frictrack".to_string()), "Python beside the CLI");
     // Through another crate too: a lower crate reaches no higher one by any path.
     for (layer, (name, folder)) in LAYERS.iter().enumerate() {
         for reached in transitive_dependencies(folder) {

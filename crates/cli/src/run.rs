@@ -63,8 +63,8 @@ pub fn run(args: &RunArgs) -> Result<()> {
     if let Some(section) = scenario.co_moving.clone() {
         return crate::co_moving::run(&scenario, &section, args.format, args.out.as_deref());
     }
-    if args.out.is_some() && scenario.output.sections.is_empty() {
-        scenario.output.sections = vec![scenario.mesh.length / 2.0];
+    if args.out.is_some() {
+        scenario = study::run_output::recording(scenario);
     }
     let case = scenario.build()?;
     crate::scenario_args::print_warnings(&scenario, &case);
@@ -78,10 +78,10 @@ pub fn run(args: &RunArgs) -> Result<()> {
             check_output_file("--out", &out.join(name))?;
         }
     }
-    // The first axle's travel: from the start position (static or steady starts begin on the beam) to L + the
-    // train's length.
-    let travel = (case.settings.start_position(), scenario.mesh.length + case.settings.moving.load.length());
-    let requests = if args.out.is_some() { scenario.output.snapshots(travel) } else { Vec::new() };
+    let requests = match args.out.is_some() {
+        true => study::run_output::snapshot_requests(&scenario, &case),
+        false => Vec::new(),
+    };
     let steps = case.settings.step_count(scenario.mesh.length);
     if !args.quiet {
         crate::progress::announce_cost(&study::cost::RunCost::of(&case), 1, 1);

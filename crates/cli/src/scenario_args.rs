@@ -6,7 +6,7 @@ use clap::builder::{PossibleValuesParser, TypedValueParser};
 use nscd::SolverKind;
 use std::path::PathBuf;
 use study::Scenario;
-use study::scenario::{AbsorbingZonesSection, DevicesSection, DistributedSection};
+use study::overrides::Overrides;
 
 /// `--solver NAME`: the names of [`SolverKind::ALL`], checked by clap, mapped to the kind.
 fn solver_parser() -> impl TypedValueParser<Value = SolverKind> {
@@ -88,87 +88,40 @@ impl ScenarioArgs {
 
     /// The scenario file (or the reference case) with the flags applied.
     pub fn load(&self) -> Result<Scenario> {
-        let mut s = match &self.scenario {
+        let s = match &self.scenario {
             Some(path) => Scenario::from_path(path).with_context(|| format!("reading scenario {}", path.display()))?,
             None => Scenario::default(),
         };
-        if let Some(v) = self.speed {
-            s.load.speed = v;
-        }
-        if let Some(train) = &self.train {
-            s.load.train = Some(train.clone());
-            s.load.axles.clear();
-            s.load.patches.clear();
-        }
-        if self.devices.is_some() || self.device_force.is_some() {
-            let d = s.friction.devices.get_or_insert_with(DevicesSection::default);
-            if let Some(count) = self.devices {
-                d.count = Some(count);
-                d.positions = None;
-            }
-            if let Some(force) = self.device_force {
-                d.force = Some(force);
-            }
-        }
-        if let Some(f) = self.distributed_friction {
-            s.friction.distributed.get_or_insert_with(DistributedSection::default).force_per_length = f;
-        }
-        if let Some(ratio) = self.damping_ratio {
-            s.foundation.damping = None;
-            s.foundation.damping_ratio = Some(ratio);
-        }
-        if let Some(theta) = self.theta {
-            s.integration.theta = theta;
-        }
-        if let Some(elements) = self.elements {
-            s.mesh.elements = elements;
-        }
-        if let Some(dx) = self.load_advance {
-            s.integration.load_advance = dx;
-        }
-        if let Some(solver) = self.solver {
-            s.integration.solver = solver;
-        }
-        if let Some(t) = self.tolerance {
-            s.integration.tolerance = t;
-        }
-        if let Some(x) = self.steady_start {
-            s.integration.steady_start = Some(x);
-        }
-        if let Some(x) = self.static_start {
-            s.integration.static_start = Some(x);
-        }
-        if let Some(text) = &self.extremes_window {
-            let bad = || study::error::invalid("--extremes-window", text, "expected A:B, two load positions in m");
-            let (a, b) = text.split_once(':').ok_or_else(bad)?;
-            let number = |t: &str| t.trim().parse::<f64>().map_err(|_| bad());
-            s.output.extremes_window = Some([number(a)?, number(b)?]);
-        }
-        if let Some(length) = self.absorbing_zones {
-            s.foundation.absorbing_zones = Some(AbsorbingZonesSection { length, peak_ratio: 1.0 });
-        }
-        // A scenario's title describes the file ("…, HSLM-A1"); flags that change what runs are added to it, so that
-        // no header, figure title or JSON names a train, speed or friction that did not run.
-        let changed = self.changes_of_the_case();
-        if !s.title.is_empty() && !changed.is_empty() {
-            s.title = format!("{} (run with {})", s.title, changed.join(" "));
-        }
-        Ok(s)
+        Ok(self.overrides()?.apply(s))
     }
 
-    /// The flags given that change the loads, the speed, the friction or the damping, as `--flag value`.
-    fn changes_of_the_case(&self) -> Vec<String> {
-        let number = |flag: &str, v: Option<f64>| v.map(|v| format!("{flag} {v}"));
-        [
-            number("--speed", self.speed),
-            self.train.as_ref().map(|t| format!("--train {t}")),
-            self.devices.map(|n| format!("--devices {n}")),
-            number("--device-force", self.device_force),
-            number("--distributed-friction", self.distributed_friction),
-            number("--damping-ratio", self.damping_ratio),
-        ]
-        .into_iter()
-        .flatten()
-        .collect()
+    /// The flags as the library's [`Overrides`] (the same names as the Python package's keyword arguments).
+    pub fn overrides(&self) -> Result<Overrides> {
+        let extremes_window = match &self.extremes_window {
+            Some(text) => {
+                let bad = || study::error::invalid("--extremes-window", text, "expected A:B, two load positions in m");
+                let (a, b) = text.split_once(':').ok_or_else(bad)?;
+                let number = |t: &str| t.trim().parse::<f64>().map_err(|_| bad());
+                Some([number(a)?, number(b)?])
+            }
+            None => None,
+        };
+        Ok(Overrides {
+            speed: self.speed,
+            train: self.train.clone(),
+            devices: self.devices,
+            device_force: self.device_force,
+            distributed_friction: self.distributed_friction,
+            damping_ratio: self.damping_ratio,
+            theta: self.theta,
+            elements: self.elements,
+            load_advance: self.load_advance,
+            solver: self.solver,
+            tolerance: self.tolerance,
+            steady_start: self.steady_start,
+            static_start: self.static_start,
+            absorbing_zones: self.absorbing_zones,
+            extremes_window,
+        })
     }
 }

@@ -16,6 +16,7 @@ pub mod figures;
 pub mod journal;
 pub mod metrics;
 pub mod number;
+pub mod overrides;
 pub mod plausibility;
 pub mod plot;
 pub mod presets;

@@ -13,7 +13,7 @@ use crate::error::Result;
 use crate::figures::{Curves, quantity_figure};
 use crate::number::row;
 use crate::plot::PlotSpec;
-use crate::scenario::Case;
+use crate::scenario::{Case, Scenario};
 use std::fmt::Write as _;
 use std::sync::atomic::AtomicBool;
 use track::{RunResult, Snapshot, SnapshotAt, SnapshotTaker};
@@ -37,6 +37,22 @@ pub const HISTORY_COLUMNS: [(&str, &str); 8] = [
 /// Columns of `snapshots.csv`: name and unit.
 pub const SNAPSHOT_COLUMNS: [(&str, &str); 5] =
     [("time", "s"), ("load_position", "m"), ("x", "m"), ("deflection", "m"), ("moment", "N·m")];
+
+/// A recorded run's scenario: `scenario` with mid-span as its recorded section when it names none (a run that writes
+/// its histories records at least there).
+pub fn recording(mut scenario: Scenario) -> Scenario {
+    if scenario.output.sections.is_empty() {
+        scenario.output.sections = vec![scenario.mesh.length / 2.0];
+    }
+    scenario
+}
+
+/// The snapshots a recorded run of `case` (built from `scenario`) takes: the scenario's requests over the first
+/// axle's travel, from its start position (static or steady starts begin on the beam) to L + the train's length.
+pub fn snapshot_requests(scenario: &Scenario, case: &Case) -> Vec<SnapshotAt> {
+    let travel = (case.settings.start_position(), scenario.mesh.length + case.settings.moving.load.length());
+    scenario.output.snapshots(travel)
+}
 
 /// One run with histories (the case's recorded sections) and the requested snapshots, reporting the finished
 /// fraction of steps to `progress` every 1 % and abandoned with [`crate::StudyError::Interrupted`] at the first step after

@@ -94,6 +94,16 @@ impl Scenario {
         })
     }
 
+    /// Parse a scenario given as JSON (a Python dict, a web form): the same keys as the TOML file, checked by the
+    /// same parser, errors named by their dotted path.
+    pub fn from_json(text: &str, source_name: &str) -> Result<Self> {
+        let value: toml::Value = serde_json::from_str(text)
+            .map_err(|e| invalid(source_name, "JSON", format!("is not a scenario table: {e}")))?;
+        let toml = toml::to_string(&value)
+            .map_err(|e| invalid(source_name, "JSON", format!("is not a scenario table: {e}")))?;
+        Self::from_toml(&toml, source_name)
+    }
+
     /// Read and parse a file.
     pub fn from_path(path: &std::path::Path) -> Result<Self> {
         // A scenario that cannot be read is the user's input error (exit code 2), not a failure of the run.

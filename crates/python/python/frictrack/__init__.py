@@ -1,0 +1,134 @@
+"""frictrack from Python: railway track dynamics under moving trains with Coulomb friction.
+
+A thin layer over frictrack's Rust library (the same that the ``frictrack`` command runs): a scenario is read by the
+library's parser and run by the library; this package only turns what the library returns into Python objects —
+the run summary into a dict with the keys of ``frictrack run --format json``, the tables into NumPy structured
+arrays. Units are SI throughout (m, s, N, J; speeds in m/s); each table's units are in its ``UNITS`` mapping and in
+the ``attrs`` of its pandas frame.
+
+>>> import frictrack
+>>> run = frictrack.run(speed=150.0, distributed_friction=2000.0)
+>>> run.summary["max_downward_deflection"]   # m  # doctest: +SKIP
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from typing import Any, Dict, Mapping, Optional, Sequence, Union
+
+from . import _native
+from ._tables import Table, parse_csv
+
+__all__ = ["COLUMNS", "InputError", "Run", "Sweep", "Table", "run", "sweep", "trains", "override_names", "__version__"]
+
+InputError = _native.InputError
+__version__: str = _native.__version__
+
+#: Each table's columns and units, as the library writes them (``histories.csv``, ``snapshots.csv``, ``wheels.csv``).
+COLUMNS: Dict[str, Dict[str, str]] = {name: dict(columns) for name, columns in _native.columns()}
+
+ScenarioLike = Union[None, str, "os.PathLike[str]", Mapping[str, Any]]
+
+
+def _source(scenario: ScenarioLike) -> "tuple[str, Optional[str]]":
+    """(kind, text) of a scenario: none (the reference case), a file, a TOML string, or a dict."""
+    if scenario is None:
+        return "reference", None
+    if isinstance(scenario, Mapping):
+        return "json", json.dumps(scenario)
+    if isinstance(scenario, os.PathLike):
+        return "path", os.fspath(scenario)
+    if isinstance(scenario, str):
+        # A TOML string has a newline or a '='; a file name has neither.
+        if "\n" in scenario or "=" in scenario:
+            return "toml", scenario
+        return "path", scenario
+    raise TypeError(f"scenario must be None, a path, a TOML string or a dict, not {type(scenario).__name__}")
+
+
+class Run:
+    """One run's results.
+
+    ``summary``: the run summary, a dict with the keys and values of ``frictrack run --format json`` (m, s, N, J).
+    ``histories``: the recorded sections over time (``histories.csv``), a :class:`Table`.
+    ``snapshots``: the beam's deflection and moment at the requested instants (``snapshots.csv``).
+    ``wheels``: each wheel over time (``wheels.csv``), or ``None`` without vehicles.
+    ``losses``: each loss of wheel–rail contact (from ``summary["vehicles"]["losses"]``), or ``None``.
+    ``warnings``: what the command line would print as warnings.
+    """
+
+    def __init__(self, summary: Dict[str, Any], histories: Table, snapshots: Table,
+                 wheels: Optional[Table], warnings: "list[str]") -> None:
+        self.summary = summary
+        self.histories = histories
+        self.snapshots = snapshots
+        self.wheels = wheels
+        self.warnings = warnings
+
+    @property
+    def losses(self) -> Optional[Table]:
+        vehicles = self.summary.get("vehicles")
+        if vehicles is None:
+            return None
+        return Table.from_records(
+            vehicles["losses"],
+            {"wheel": "1", "lift_off_position": "m", "lift_off_time": "s", "landing_position": "m",
+             "duration": "s", "impact_force": "N"},
+        )
+
+    def __repr__(self) -> str:
+        down = self.summary.get("max_downward_deflection")
+        return f"<frictrack.Run v = {self.summary.get('speed')} m/s, max downward deflection {down} m>"
+
+
+def run(scenario: ScenarioLike = None, **overrides: Any) -> Run:
+    """Run ``scenario`` (a TOML file path, a TOML string, a dict with the file's keys, or ``None`` for the reference
+    case) with keyword ``overrides`` named as the command line's flags: ``speed`` (m/s), ``train`` (a catalogue name
+    or a CSV file), ``devices``, ``device_force`` (N), ``distributed_friction`` (N/m), ``damping_ratio``, ``theta``,
+    ``elements``, ``load_advance`` (m), ``solver``, ``tolerance``, ``steady_start``, ``static_start`` (m),
+    ``absorbing_zones`` (m), ``extremes_window`` ([A, B] m).
+
+    The run is ``frictrack run SCENARIO --format json --out DIR``: mid-span is recorded when the scenario names no
+    section. It releases the GIL (other threads run meanwhile) and stops within a step on Ctrl-C
+    (KeyboardInterrupt). Bad input raises :class:`InputError` naming the field.
+    """
+    kind, text = _source(scenario)
+    summary, histories, snapshots, wheels, warnings = _native.run(kind, text, list(overrides.items()))
+    return Run(
+        json.loads(summary),
+        parse_csv(histories, COLUMNS["histories"]),
+        parse_csv(snapshots, COLUMNS["snapshots"]),
+        None if wheels is None else parse_csv(wheels, COLUMNS["wheels"]),
+        list(warnings),
+    )
+
+
+class Sweep(Table):
+    """A sweep's table (``frictrack sweep``'s CSV: one row per speed, SI units in ``units``) and its ``failures``,
+    (speed m/s, error) for each run that failed (its row is NaN)."""
+
+    def __init__(self, table: Table, failures: "list[tuple[float, str]]") -> None:
+        super().__init__(table.data, table.units)
+        self.failures = failures
+
+
+def sweep(scenario: ScenarioLike = None, speeds: Sequence[float] = (), jobs: Optional[int] = None,
+          **overrides: Any) -> Sweep:
+    """One run per speed of ``speeds`` (m/s), on ``jobs`` worker threads (``None``: all cores), as ``frictrack
+    sweep``: the same CSV as a table (``speed``, ``max_downward_deflection``, … with their units). A failed run
+    leaves a NaN row and is listed in ``failures``; the others are kept. The scenario and overrides are as for
+    :func:`run`."""
+    kind, text = _source(scenario)
+    csv, failures = _native.sweep(kind, text, [float(v) for v in speeds], int(jobs or 0), list(overrides.items()))
+    return Sweep(parse_csv(csv, dict(_native.sweep_columns())), [(float(v), str(e)) for v, e in failures])
+
+
+def trains() -> "list[str]":
+    """The train catalogue's names (``frictrack trains``): ``single`` and HSLM-A1 … A10."""
+    return list(_native.trains())
+
+
+def override_names() -> "list[str]":
+    """The keyword overrides :func:`run` takes."""
+    return list(_native.override_names())

@@ -1,0 +1,66 @@
+//! Work that releases the GIL and stops on Ctrl-C: it runs on a worker thread with a stop flag (the library's runs
+//! check it every step), while the caller waits without the GIL and, every [`POLL`], takes it back to let Python
+//! handle its signals; a KeyboardInterrupt raises the flag, waits for the worker to stop and is raised.
+
+use pyo3::exceptions::PyRuntimeError;
+use pyo3::prelude::*;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::{Arc, Condvar, Mutex, PoisonError};
+use std::time::Duration;
+
+/// How often a waiting caller checks Python's signals.
+pub const POLL: Duration = Duration::from_millis(50);
+
+/// Run `work(stop)` on a worker thread without the GIL; Ctrl-C raises `stop` and KeyboardInterrupt.
+pub(crate) fn run<T: Send + 'static>(
+    py: Python<'_>,
+    work: impl FnOnce(&AtomicBool) -> T + Send + 'static,
+) -> PyResult<T> {
+    let stop = Arc::new(AtomicBool::new(false));
+    let done = Arc::new((Mutex::new(None::<T>), Condvar::new()));
+    let (flag, slot) = (Arc::clone(&stop), Arc::clone(&done));
+    let worker = std::thread::spawn(move || {
+        let result = work(&flag);
+        let (lock, ready) = &*slot;
+        *lock.lock().unwrap_or_else(PoisonError::into_inner) = Some(result);
+        ready.notify_all();
+    });
+    // Wait up to `timeout` (without the GIL): the result, if it came.
+    let wait = |timeout: Duration| {
+        let (lock, ready) = &*done;
+        let guard = lock.lock().unwrap_or_else(PoisonError::into_inner);
+        let (mut guard, _) =
+            ready.wait_timeout_while(guard, timeout, |r| r.is_none()).unwrap_or_else(PoisonError::into_inner);
+        guard.take()
+    };
+    loop {
+        if let Some(result) = py.detach(|| wait(POLL)) {
+            let _ = worker.join();
+            return Ok(result);
+        }
+        if worker.is_finished() {
+            // Finished without a result: it panicked.
+            let reason = match worker.join() {
+                Err(panic) => panic
+                    .downcast_ref::<&str>()
+                    .map(|s| s.to_string())
+                    .or_else(|| panic.downcast_ref::<String>().cloned())
+                    .unwrap_or_else(|| "unknown".into()),
+                Ok(()) => return py.detach(|| wait(Duration::ZERO)).ok_or_else(lost),
+            };
+            return Err(PyRuntimeError::new_err(format!(
+                "frictrack's worker thread failed: {reason} (a bug: please report it with the scenario)"
+            )));
+        }
+        if let Err(signal) = py.check_signals() {
+            stop.store(true, Ordering::Relaxed);
+            // The run stops at its next step; its result is dropped.
+            let _ = worker.join();
+            return Err(signal);
+        }
+    }
+}
+
+fn lost() -> PyErr {
+    PyRuntimeError::new_err("frictrack's worker thread ended without a result (a bug: please report it)")
+}

@@ -1,0 +1,37 @@
+//! # frictrack from Python (`frictrack._native`)
+//!
+//! A thin layer over the study library (docs/architecture.md): every function here reads a scenario with the
+//! library's parser, applies overrides by the command line's names ([`study::overrides::Overrides`]), runs the
+//! library and returns what the command line prints or writes — the run summary as the JSON of `frictrack run
+//! --format json`, the tables as the CSV text of `histories.csv`, `snapshots.csv` and `wheels.csv`. The package's
+//! Python side (`python/frictrack`) turns these into dicts and NumPy structured arrays; neither side holds
+//! numerics or a schema of its own.
+//!
+//! Runs release the GIL and stop within a step when Python raises KeyboardInterrupt (Ctrl-C): the run goes on a
+//! worker thread, the caller waits without the GIL and checks Python's signals every 50 ms. Errors the user can fix
+//! raise `frictrack.InputError` (a `ValueError`) with the field, its value and what is allowed; nothing panics
+//! across the boundary.
+
+#![allow(unsafe_code)] // PyO3's macros expand to the FFI's unsafe calls.
+
+mod errors;
+mod interruptible;
+mod run;
+mod scenario_input;
+mod sweep;
+
+use pyo3::prelude::*;
+
+/// The compiled half of the `frictrack` package.
+#[pymodule]
+fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add("InputError", m.py().get_type::<errors::InputError>())?;
+    m.add_function(wrap_pyfunction!(run::run, m)?)?;
+    m.add_function(wrap_pyfunction!(run::override_names, m)?)?;
+    m.add_function(wrap_pyfunction!(run::trains, m)?)?;
+    m.add_function(wrap_pyfunction!(run::columns, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep::sweep, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep::sweep_columns, m)?)?;
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    Ok(())
+}

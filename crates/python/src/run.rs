@@ -1,0 +1,66 @@
+//! `frictrack.run`: one recorded run, as `frictrack run SCENARIO --format json --out DIR` makes it — the scenario
+//! with its overrides, mid-span recorded when it names no section, the snapshots it asks for — returning the
+//! summary's JSON and the CSV text of its tables.
+
+use crate::errors::to_python;
+use crate::interruptible;
+use crate::scenario_input::{Source, overrides};
+use pyo3::prelude::*;
+use study::overrides::Overrides;
+use study::run_output::{histories_csv, recording, run_with_snapshots, snapshot_requests, snapshots_csv};
+use study::run_summary::RunSummary;
+
+/// What a run returns to Python: the summary (JSON text, as `frictrack run --format json`), `histories.csv`,
+/// `snapshots.csv`, `wheels.csv` (None without vehicles) and the warnings the command line prints.
+type RunTexts = (String, String, String, Option<String>, Vec<String>);
+
+/// Run the scenario (`kind` "reference", "path", "toml" or "json" with its `text`) with the keyword `overrides`.
+#[pyfunction]
+#[pyo3(signature = (kind, text, keywords))]
+pub(crate) fn run(
+    py: Python<'_>,
+    kind: &str,
+    text: Option<String>,
+    keywords: Vec<(String, Bound<'_, PyAny>)>,
+) -> PyResult<RunTexts> {
+    let scenario = Source::of(kind, text)?.read()?;
+    let overrides = overrides(&keywords)?;
+    let scenario = recording(overrides.apply(scenario));
+    let case = scenario.build().map_err(to_python)?;
+    let warnings = study::diagnostics::warnings(&scenario, &case).iter().map(ToString::to_string).collect();
+    let started = std::time::Instant::now();
+    let outcome = interruptible::run(py, move |stop| {
+        let requests = snapshot_requests(&scenario, &case);
+        let (result, snapshots) = run_with_snapshots(&case, &requests, Some(stop), &|_| {})?;
+        let summary = RunSummary::of(&scenario, &case, &result, started.elapsed().as_secs_f64())?;
+        let json = serde_json::to_string_pretty(&summary)
+            .map_err(|e| study::error::StudyError::Io { path: "summary".into(), message: e.to_string() })?;
+        let wheels = result.vehicles.as_ref().map(study::vehicle_output::wheels_csv);
+        Ok::<_, study::error::StudyError>((json, histories_csv(&result), snapshots_csv(&snapshots), wheels))
+    })?;
+    let (json, histories, snapshots, wheels) = outcome.map_err(to_python)?;
+    Ok((json, histories, snapshots, wheels, warnings))
+}
+
+/// The names `run` takes as keyword overrides (the command line's flags, with underscores).
+#[pyfunction]
+pub(crate) fn override_names() -> Vec<&'static str> {
+    Overrides::NAMES.to_vec()
+}
+
+/// The train catalogue's names (`frictrack trains`).
+#[pyfunction]
+pub(crate) fn trains() -> Vec<String> {
+    fem_beam::Train::catalogue()
+}
+
+/// The columns of the run's tables with their units, as the library writes them: "histories", "snapshots" and
+/// "wheels" (name, unit) lists.
+#[pyfunction]
+pub(crate) fn columns() -> Vec<(&'static str, Vec<(&'static str, &'static str)>)> {
+    vec![
+        ("histories", study::run_output::HISTORY_COLUMNS.to_vec()),
+        ("snapshots", study::run_output::SNAPSHOT_COLUMNS.to_vec()),
+        ("wheels", study::vehicle_output::WHEEL_COLUMNS.to_vec()),
+    ]
+}

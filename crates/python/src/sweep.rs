@@ -1,0 +1,43 @@
+//! `frictrack.sweep`: one run per speed on all cores (or `jobs` threads), as `frictrack sweep` — the CSV text it
+//! writes, a failed run's row empty (its error in the returned failures).
+
+use crate::errors::to_python;
+use crate::interruptible;
+use crate::scenario_input::{Source, overrides};
+use pyo3::prelude::*;
+use study::sweep::{Runner, failures, write_csv_rows};
+
+/// The sweep's CSV (`frictrack sweep`'s), and the failed runs as (speed m/s, error) pairs.
+type SweepTexts = (String, Vec<(f64, String)>);
+
+/// Sweep the scenario (`kind` and `text` as for `run`) with the keyword `overrides` over `speeds` (m/s) on `jobs`
+/// worker threads (0: all cores).
+#[pyfunction]
+#[pyo3(signature = (kind, text, speeds, jobs, keywords))]
+pub(crate) fn sweep(
+    py: Python<'_>,
+    kind: &str,
+    text: Option<String>,
+    speeds: Vec<f64>,
+    jobs: usize,
+    keywords: Vec<(String, Bound<'_, PyAny>)>,
+) -> PyResult<SweepTexts> {
+    let scenario = overrides(&keywords)?.apply(Source::of(kind, text)?.read()?);
+    if speeds.is_empty() {
+        return Err(to_python(study::error::invalid("speeds", "[]", "give at least one speed (m/s)")));
+    }
+    let case = scenario.build().map_err(to_python)?;
+    let runner = Runner::new(jobs).map_err(to_python)?;
+    let rows = interruptible::run(py, move |stop| runner.with_stop(stop).speed_sweep_keeping(&case, &speeds))?
+        .map_err(to_python)?;
+    let mut csv = Vec::new();
+    write_csv_rows(&rows, &mut csv).map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(e.to_string()))?;
+    let failed = failures(&rows).into_iter().map(|f| (f.speed, f.error)).collect();
+    Ok((String::from_utf8_lossy(&csv).into_owned(), failed))
+}
+
+/// The sweep CSV's columns with their units: every sweep's, then those of a sweep with vehicles.
+#[pyfunction]
+pub(crate) fn sweep_columns() -> Vec<(&'static str, &'static str)> {
+    study::sweep::CSV_COLUMNS.iter().chain(&study::sweep::VEHICLE_CSV_COLUMNS).map(|(n, u, _)| (*n, *u)).collect()
+}

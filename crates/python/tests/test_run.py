@@ -1,0 +1,154 @@
+"""frictrack.run against the command line: the same numbers to the bit, the same scenario however it is given, bad
+input named, the GIL released while a run is in flight."""
+
+import json
+import os
+import subprocess
+import tempfile
+import threading
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import frictrack
+
+ROOT = Path(__file__).resolve().parents[3]
+EXAMPLES = ROOT / "examples"
+
+
+def cli() -> str:
+    """The frictrack binary the workspace's tests built (FRICTRACK_BIN overrides)."""
+    path = os.environ.get("FRICTRACK_BIN") or str(ROOT / "target" / "debug" / "frictrack")
+    if not Path(path).exists():
+        pytest.skip(f"no frictrack binary at {path}: run cargo build -p frictrack first")
+    return path
+
+
+def cli_run(args):
+    """`frictrack run ARGS --format json --out DIR`: the summary (dict) and the output folder."""
+    folder = tempfile.mkdtemp(prefix="frictrack-py-")
+    out = subprocess.run([cli(), "run", *args, "--format", "json", "--out", folder], capture_output=True, text=True)
+    assert out.returncode == 0, out.stderr
+    return json.loads(out.stdout), Path(folder)
+
+
+def without_wall_time(summary):
+    return {k: v for k, v in summary.items() if k != "wall_time"}
+
+
+def same_table(table, csv_path):
+    """Every column of `table` equals the CSV file's, to the bit."""
+    expected = np.genfromtxt(csv_path, delimiter=",", names=True)
+    assert list(expected.dtype.names) == table.columns
+    for name in table.columns:
+        assert np.array_equal(np.atleast_1d(expected[name]), table[name]), name
+
+
+@pytest.mark.parametrize(
+    "args, kwargs",
+    [
+        ([], {}),
+        (["--train", "hslm-a1", "--speed", "80", "--elements", "100"], {"train": "hslm-a1", "speed": 80.0, "elements": 100}),
+        (["--speed", "150", "--distributed-friction", "2000"], {"speed": 150.0, "distributed_friction": 2000.0}),
+        ([str(EXAMPLES / "quarter-car-wheel-flat.toml")], {}),
+    ],
+    ids=["reference", "train", "friction", "vehicle"],
+)
+def test_a_run_is_the_command_lines_to_the_bit(args, kwargs):
+    scenario = args[0] if args and args[0].endswith(".toml") else None
+    run = frictrack.run(scenario, **kwargs)
+    summary, folder = cli_run(args)
+    assert without_wall_time(run.summary) == without_wall_time(summary)
+    same_table(run.histories, folder / "histories.csv")
+    same_table(run.snapshots, folder / "snapshots.csv")
+    if scenario is not None:
+        same_table(run.wheels, folder / "wheels.csv")
+        assert len(run.losses) == summary["vehicles"]["losses_of_contact"] > 10
+        assert run.losses.units["impact_force"] == "N"
+    else:
+        assert run.wheels is None and run.losses is None
+
+
+def test_a_dict_a_toml_string_and_a_file_are_the_same_run(tmp_path):
+    toml = '[mesh]\nelements = 100\n[load]\nspeed = 120.0\n[friction.devices]\ncount = 7\nforce = 20e3\n'
+    file = tmp_path / "case.toml"
+    file.write_text(toml)
+    as_dict = {"mesh": {"elements": 100}, "load": {"speed": 120.0}, "friction": {"devices": {"count": 7, "force": 20e3}}}
+    runs = [frictrack.run(toml), frictrack.run(str(file)), frictrack.run(file), frictrack.run(as_dict)]
+    first = without_wall_time(runs[0].summary)
+    assert first["devices"] == 7
+    for other in runs[1:]:
+        assert without_wall_time(other.summary) == first
+        assert np.array_equal(other.histories["deflection"], runs[0].histories["deflection"])
+
+
+def test_bad_input_raises_input_error_naming_it():
+    with pytest.raises(frictrack.InputError, match="sped") as bad_keyword:
+        frictrack.run(sped=100.0)
+    assert isinstance(bad_keyword.value, ValueError)
+    with pytest.raises(frictrack.InputError, match=r"mesh\.lenght.*did you mean `length`"):
+        frictrack.run({"mesh": {"lenght": 100.0}})
+    with pytest.raises(frictrack.InputError, match="speed"):
+        frictrack.run(speed=-5.0)
+    with pytest.raises(frictrack.InputError, match="devices"):
+        frictrack.run(devices=2.5)
+    with pytest.raises(frictrack.InputError, match="solver"):
+        frictrack.run(solver="fastest")
+    with pytest.raises(frictrack.InputError, match="scenario file"):
+        frictrack.run("no/such/file.toml")
+
+
+def test_the_gil_is_released_while_a_run_is_in_flight():
+    """Another Python thread counts while a run of about a second is in flight: with the GIL held it could not."""
+    done = threading.Event()
+    result = {}
+
+    def work():
+        result["run"] = frictrack.run(speed=150.0, distributed_friction=2000.0, elements=400)
+        done.set()
+
+    worker = threading.Thread(target=work)
+    counts = 0
+    started = time.perf_counter()
+    worker.start()
+    while not done.is_set():
+        counts += 1
+    elapsed = time.perf_counter() - started
+    worker.join()
+    assert elapsed > 0.2, f"the run took {elapsed} s: too short to show anything"
+    # A held GIL would let this thread run only between the run's polls (none: the run never returns to Python).
+    assert counts > 10_000, f"{counts} iterations in {elapsed:.2f} s"
+    assert result["run"].summary["steps"] > 0
+
+
+def test_tables_carry_their_units_and_become_data_frames():
+    run = frictrack.run(elements=50)
+    assert run.histories.units["moment"] == "N·m" and run.snapshots.units["x"] == "m"
+    pandas = pytest.importorskip("pandas")
+    frame = run.histories.to_pandas()
+    assert isinstance(frame, pandas.DataFrame) and frame.attrs["units"]["deflection"] == "m"
+    assert list(frame.columns) == run.histories.columns
+
+
+def test_the_catalogue_and_the_keywords():
+    assert frictrack.trains()[:2] == ["single", "hslm-a1"] and len(frictrack.trains()) == 11
+    assert "distributed_friction" in frictrack.override_names()
+
+
+def test_ctrl_c_stops_a_run_within_a_step():
+    """KeyboardInterrupt (what Ctrl-C raises) arrives while a long run is in flight: the run stops at its next step
+    and the interrupt is raised — within a fraction of a second, not at the run's end (several seconds)."""
+    import _thread
+
+    timer = threading.Timer(0.3, _thread.interrupt_main)
+    started = time.perf_counter()
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        frictrack.run(speed=150.0, distributed_friction=2000.0, elements=1600, load_advance=0.025)
+    stopped = time.perf_counter() - started
+    timer.cancel()
+    assert stopped < 1.5, f"stopped after {stopped:.2f} s"
+    # The package still works afterwards.
+    assert frictrack.run(elements=50).summary["steps"] > 0
