@@ -14,6 +14,7 @@
 
 #![allow(unsafe_code)] // PyO3's macros expand to the FFI's unsafe calls.
 
+mod commands;
 mod errors;
 mod interruptible;
 mod run;
@@ -32,6 +33,11 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(run::columns, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep_columns, m)?)?;
+    m.add_function(wrap_pyfunction!(commands::analytic, m)?)?;
+    m.add_function(wrap_pyfunction!(commands::stationary_wave, m)?)?;
+    m.add_function(wrap_pyfunction!(commands::preset, m)?)?;
+    m.add_function(wrap_pyfunction!(commands::train, m)?)?;
+    m.add_function(wrap_pyfunction!(commands::track_profile, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

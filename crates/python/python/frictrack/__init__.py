@@ -20,7 +20,10 @@ from typing import Any, Dict, Mapping, Optional, Sequence, Union
 from . import _native
 from ._tables import Table, parse_csv
 
-__all__ = ["COLUMNS", "InputError", "Run", "Sweep", "Table", "run", "sweep", "trains", "override_names", "__version__"]
+__all__ = [
+    "COLUMNS", "InputError", "Run", "Stationary", "Study", "Sweep", "Table", "analytic", "override_names", "run",
+    "stationary", "study", "sweep", "track_profile", "train", "trains", "__version__",
+]
 
 InputError = _native.InputError
 __version__: str = _native.__version__
@@ -122,6 +125,87 @@ def sweep(scenario: ScenarioLike = None, speeds: Sequence[float] = (), jobs: Opt
     kind, text = _source(scenario)
     csv, failures = _native.sweep(kind, text, [float(v) for v in speeds], int(jobs or 0), list(overrides.items()))
     return Sweep(parse_csv(csv, dict(_native.sweep_columns())), [(float(v), str(e)) for v, e in failures])
+
+
+def analytic(scenario: ScenarioLike = None, speeds: Sequence[float] = (), damping_ratio: Optional[float] = None,
+             train: Optional[str] = None) -> "list[Dict[str, Any]]":
+    """The closed-form steady state of the scenario's beam on an infinite foundation (``frictrack analytic``) at each
+    speed (m/s), optionally at another damping ratio and under a train: one dict per speed, the keys of ``frictrack
+    analytic --format json`` (deflections m, moments N·m, as magnitudes)."""
+    kind, text = _source(scenario)
+    return json.loads(_native.analytic(kind, text, [float(v) for v in speeds], damping_ratio, train))
+
+
+class Stationary:
+    """The stationary wave on the infinite track at each speed (``frictrack stationary``): ``points`` one dict per
+    speed (its ``status``: "converged", "not converged", "domain too short", "no stationary wave"; peaks m, moments
+    N·m, powers W), ``waves`` each found wave's shape by speed (m/s) as a :class:`Table` (s_m, deflection_m, …)."""
+
+    def __init__(self, points: "list[Dict[str, Any]]", waves: Dict[float, Table]) -> None:
+        self.points = points
+        self.waves = waves
+
+
+def stationary(scenario: ScenarioLike = None, speeds: Sequence[float] = (), domain: Sequence[float] = (60.0, 60.0),
+               element_length: float = 0.25, **overrides: Any) -> Stationary:
+    """The stationary wave of the scenario's load on the infinite track at ``speeds`` (m/s, by continuation in
+    order) on a moving domain ``domain`` = (behind, ahead) m of ``element_length`` m elements (grown where needed);
+    linear, tensionless and bilinear soils, ballast friction. Overrides as for :func:`run`."""
+    kind, text = _source(scenario)
+    behind, ahead = (float(x) for x in domain)
+    points, waves = _native.stationary(
+        kind, text, [float(v) for v in speeds], (behind, ahead, float(element_length)), list(overrides.items())
+    )
+    return Stationary(json.loads(points), {float(v): parse_csv(csv, None) for v, csv in waves})
+
+
+class Study:
+    """A study preset's results (``frictrack study NAME``): ``summary`` (its JSON summary), ``table`` (its CSV with
+    units), ``headline`` (the two sentences of its report section), ``lines`` (one per curve)."""
+
+    def __init__(self, name: str, summary: Dict[str, Any], table: Table, headline: "list[str]",
+                 lines: "list[str]") -> None:
+        self.name = name
+        self.summary = summary
+        self.table = table
+        self.headline = headline
+        self.lines = lines
+
+    def __repr__(self) -> str:
+        return f"<frictrack.Study {self.name}: {' '.join(self.headline)}>"
+
+
+def study(name: str, scenario: ScenarioLike = None, resolution: str = "coarse", jobs: Optional[int] = None,
+          **overrides: Any) -> Study:
+    """Run the study preset ``name`` (``discrete-speed``, ``distributed-speed``, ``hslm``, ``stationary-wave``, …) on
+    ``scenario`` (the reference case by default) at ``resolution`` ("coarse" or "paper") on ``jobs`` threads."""
+    kind, text = _source(scenario)
+    summary, table, headline, lines, columns = _native.study(
+        name, kind, text, resolution, int(jobs or 0), list(overrides.items())
+    )
+    return Study(name, json.loads(summary), parse_csv(table, dict(columns)), list(headline), list(lines))
+
+
+def train(name: str) -> Dict[str, Any]:
+    """The train ``name`` (a catalogue name or a CSV file of offset,force lines): its summary (name, axles, patches,
+    length m, total_force N) and ``axles``, a :class:`Table` of offset (m behind the first axle) and force (N)."""
+    summary, axles = _native.train(name)
+    result = json.loads(summary)
+    result["axles_table"] = Table.from_records(
+        [{"offset": o, "force": f} for o, f in axles], {"offset": "m", "force": "N"}
+    )
+    return result
+
+
+def track_profile(spectrum: str = "german-low", length: float = 1000.0, spacing: float = 0.25, seed: int = 1,
+                  band: Optional[Sequence[float]] = None) -> "tuple[Table, Table, Dict[str, Any]]":
+    """A random rail (``frictrack track-profile``): its sample r(x) every ``spacing`` m over ``length`` m, its
+    periodogram against the target spectrum, and the summary (standard deviations in m) — for the spectrum, band
+    (shortest, longest wavelength in m) and seed given."""
+    profile, psd, summary = _native.track_profile(
+        spectrum, float(length), float(spacing), int(seed), None if band is None else tuple(float(b) for b in band)
+    )
+    return parse_csv(profile, None), parse_csv(psd, None), json.loads(summary)
 
 
 def trains() -> "list[str]":

@@ -80,6 +80,60 @@ def sweep(
 ) -> Sweep:
     """One run per speed (m/s) on `jobs` threads (None: all cores), as `frictrack sweep`."""
 
+def analytic(
+    scenario: ScenarioLike = None,
+    speeds: Sequence[float] = ...,
+    damping_ratio: Optional[float] = None,
+    train: Optional[str] = None,
+) -> List[Dict[str, Any]]:
+    """`frictrack analytic --format json`'s points: the closed-form steady state per speed (m/s)."""
+
+class Stationary:
+    """The stationary wave per speed: `points` (dicts, as `frictrack stationary --format json`), `waves` (speed m/s →
+    the wave's shape: s_m, deflection_m, slope_rad, moment_Nm, soil_reaction_N_per_m, friction_force_N_per_m)."""
+
+    points: List[Dict[str, Any]]
+    waves: Dict[float, Table]
+
+def stationary(
+    scenario: ScenarioLike = None,
+    speeds: Sequence[float] = ...,
+    domain: Sequence[float] = (60.0, 60.0),
+    element_length: float = 0.25,
+    **overrides: Any,
+) -> Stationary:
+    """The stationary wave on the infinite track at `speeds` (m/s) on the moving domain (behind, ahead) m."""
+
+class Study:
+    """A study preset's results: `summary`, `table` (its CSV with units), `headline`, `lines`."""
+
+    name: str
+    summary: Dict[str, Any]
+    table: Table
+    headline: List[str]
+    lines: List[str]
+
+def study(
+    name: str,
+    scenario: ScenarioLike = None,
+    resolution: str = "coarse",
+    jobs: Optional[int] = None,
+    **overrides: Any,
+) -> Study:
+    """Run the study preset `name` as `frictrack study` does."""
+
+def train(name: str) -> Dict[str, Any]:
+    """A train's summary (name, axles, patches, length m, total_force N) and `axles_table` (offset m, force N)."""
+
+def track_profile(
+    spectrum: str = "german-low",
+    length: float = 1000.0,
+    spacing: float = 0.25,
+    seed: int = 1,
+    band: Optional[Sequence[float]] = None,
+) -> Tuple[Table, Table, Dict[str, Any]]:
+    """A random rail's sample (x m, r m), periodogram and summary, as `frictrack track-profile`."""
+
 def trains() -> List[str]:
     """The train catalogue's names."""
 

@@ -3,7 +3,7 @@ the numbers of ``histories.csv``, ``snapshots.csv`` or ``wheels.csv``), with eac
 
 from __future__ import annotations
 
-import io
+import csv
 from typing import Any, Dict, Iterable, Mapping, Optional
 
 import numpy as np
@@ -50,20 +50,29 @@ class Table:
         return f"<frictrack.Table {len(self)} rows: {parts}>"
 
 
+def _number(cell: str) -> float:
+    return float(cell) if cell.strip() else np.nan
+
+
 def parse_csv(text: str, units: Optional[Mapping[str, str]]) -> Table:
-    """A table from CSV text with a header line; every value a float (the library writes numbers only; an empty cell,
-    a failed run's, is NaN; `#` lines are comments)."""
-    header = text.split("\n", 1)[0].strip()
-    names = [n for n in header.split(",") if n]
-    body = text.split("\n", 1)[1] if "\n" in text else ""
-    dtype = [(n, "f8") for n in names]
-    if body.strip():
-        # A failed run's row has empty cells: NaN.
-        values = np.genfromtxt(io.StringIO(body), delimiter=",", dtype=np.float64, ndmin=2, comments="#")
-        data = np.empty(len(values), dtype=dtype)
-        for k, name in enumerate(names):
-            data[name] = values[:, k]
-    else:
-        data = np.empty(0, dtype=dtype)
+    """A table from CSV text with a header line: a column of numbers as float64 (an empty cell, a failed run's, is
+    NaN), any other column as text (a study's `model`, `status`…); `#` lines are comments. Numbers read back to the
+    very floats the library wrote."""
+    lines = [line for line in text.splitlines() if line and not line.startswith("#")]
+    if not lines:
+        return Table(np.empty(0, dtype=[]), {})
+    names = lines[0].split(",")
+    rows = list(csv.reader(lines[1:]))
+    columns = []
+    for k, name in enumerate(names):
+        cells = [row[k] if k < len(row) else "" for row in rows]
+        try:
+            columns.append((name, np.array([_number(c) for c in cells], dtype=np.float64)))
+        except ValueError:
+            columns.append((name, np.array(cells, dtype=str)))
+    dtype = [(name, values.dtype if values.dtype.kind == "U" else "f8") for name, values in columns]
+    data = np.empty(len(rows), dtype=dtype)
+    for name, values in columns:
+        data[name] = values
     column_units: Dict[str, str] = {n: (units or {}).get(n, "") for n in names}
     return Table(data, column_units)

@@ -1,0 +1,116 @@
+//! The command line's other commands for Python, each returning what the command prints or writes: `analytic`
+//! (the closed-form steady state, JSON points), `stationary` (the stationary wave's points as JSON, and each wave's
+//! CSV), `study` (a preset's summary, CSV, headline and lines), `train` (a train's axles) and `track_profile` (a
+//! random rail's sample and periodogram as CSV, its summary as JSON).
+
+use crate::errors::to_python;
+use crate::interruptible;
+use crate::scenario_input::{Source, overrides};
+use pyo3::prelude::*;
+use study::error::{StudyError, invalid};
+use study::presets::{Preset, Resolution, run_preset};
+use study::stationary_output::{StationaryStudy, wave_csv};
+use study::steady_response::SteadyResponse;
+use study::sweep::Runner;
+
+fn json<T: serde::Serialize>(value: &T) -> PyResult<String> {
+    serde_json::to_string_pretty(value).map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(e.to_string()))
+}
+
+/// `frictrack analytic`: the steady state of the scenario's beam on its soil (optionally at another damping ratio,
+/// under a train) at `speeds` (m/s): the JSON points.
+#[pyfunction]
+#[pyo3(signature = (kind, text, speeds, damping_ratio, train))]
+pub(crate) fn analytic(
+    kind: &str,
+    text: Option<String>,
+    speeds: Vec<f64>,
+    damping_ratio: Option<f64>,
+    train: Option<String>,
+) -> PyResult<String> {
+    let scenario = Source::of(kind, text)?.read()?;
+    let train = train
+        .map(|name| study::trains::named_or_file(&name, scenario.load.force, "train"))
+        .transpose()
+        .map_err(to_python)?;
+    let response = SteadyResponse::of(&scenario, damping_ratio, train, &speeds).map_err(to_python)?;
+    json(&response.points)
+}
+
+/// `frictrack stationary`: the stationary wave at `speeds` (m/s, by continuation) on the domain `behind`:`ahead` (m)
+/// of `element_length` (m): the points as JSON, and each found wave's CSV (speed, text).
+#[pyfunction]
+#[pyo3(name = "stationary", signature = (kind, text, speeds, domain, keywords))]
+pub(crate) fn stationary_wave(
+    py: Python<'_>,
+    kind: &str,
+    text: Option<String>,
+    speeds: Vec<f64>,
+    domain: (f64, f64, f64),
+    keywords: Vec<(String, Bound<'_, PyAny>)>,
+) -> PyResult<(String, Vec<(f64, String)>)> {
+    let scenario = overrides(&keywords)?.apply(Source::of(kind, text)?.read()?);
+    let (behind, ahead, element_length) = domain;
+    let domain = stationary::Domain { behind, ahead, element_length };
+    let study = interruptible::run(py, move |_| StationaryStudy::of(&scenario, &speeds, domain))?.map_err(to_python)?;
+    let waves = study.waves.iter().flatten().map(|w| (w.speed, wave_csv(w))).collect();
+    Ok((json(&study.points)?, waves))
+}
+
+/// `frictrack study NAME`: the preset on the scenario at `resolution` ("coarse" or "paper") on `jobs` threads:
+/// (summary JSON, CSV, headline, lines, columns with units).
+#[pyfunction]
+#[pyo3(name = "study", signature = (name, kind, text, resolution, jobs, keywords))]
+pub(crate) fn preset(
+    py: Python<'_>,
+    name: &str,
+    kind: &str,
+    text: Option<String>,
+    resolution: &str,
+    jobs: usize,
+    keywords: Vec<(String, Bound<'_, PyAny>)>,
+) -> PyResult<(String, String, Vec<String>, Vec<String>, Vec<(String, String)>)> {
+    let preset = Preset::from_name(name).map_err(to_python)?;
+    let resolution = match resolution {
+        "coarse" => Resolution::Coarse,
+        "paper" => Resolution::Paper,
+        other => return Err(to_python(invalid("resolution", other, "must be coarse or paper"))),
+    };
+    let base = overrides(&keywords)?.apply(Source::of(kind, text)?.read()?);
+    let runner = Runner::new(jobs).map_err(to_python)?;
+    let data = interruptible::run(py, move |stop| run_preset(preset, resolution, &base, &runner.with_stop(stop)))?
+        .map_err(to_python)?;
+    let columns = data.columns.iter().map(|(c, u)| (c.clone(), u.to_string())).collect();
+    Ok((json(&data.summary)?, data.csv, data.headline, data.lines, columns))
+}
+
+/// `frictrack trains` for one: the train `name` (a catalogue name or a CSV file) as its summary (JSON) and axles
+/// (offset m behind the first, force N).
+#[pyfunction]
+pub(crate) fn train(name: &str) -> PyResult<(String, Vec<(f64, f64)>)> {
+    let train = study::trains::named_or_file(name, study::Scenario::default().load.force, "name").map_err(to_python)?;
+    let axles = train.axles.iter().map(|a| (a.offset, a.force)).collect();
+    Ok((json(&study::trains::TrainSummary::of(&train))?, axles))
+}
+
+/// `frictrack track-profile`: a random rail of `spectrum` over `band` (m, shortest and longest wavelength; None: the
+/// spectrum's) and `length` (m) sampled every `spacing` (m) with `seed`: (profile CSV, periodogram CSV, summary JSON).
+#[pyfunction]
+#[pyo3(signature = (spectrum, length, spacing, seed, band))]
+pub(crate) fn track_profile(
+    spectrum: &str,
+    length: f64,
+    spacing: f64,
+    seed: u64,
+    band: Option<(f64, f64)>,
+) -> PyResult<(String, String, String)> {
+    let spectrum = irregularity::Spectrum::from_name(spectrum).map_err(|e| to_python(StudyError::from(e)))?;
+    let mut settings = irregularity::RandomSettings::new(spectrum, length, seed);
+    if let Some(band) = band {
+        settings.band = band;
+    }
+    let request = study::track_profile::ProfileRequest { settings, spacing };
+    request.validate().map_err(to_python)?;
+    let sample = study::track_profile::sample_profile(request).map_err(to_python)?;
+    Ok((sample.profile_csv(), sample.psd_csv(), json(&sample.summary())?))
+}

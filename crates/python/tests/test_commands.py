@@ -1,0 +1,59 @@
+"""The command line's other commands from Python: the same numbers as the command prints or writes, to the bit."""
+
+import json
+import subprocess
+
+import numpy as np
+
+import frictrack
+from test_run import cli
+
+
+def cli_json(*args):
+    out = subprocess.run([cli(), *args, "--format", "json"], capture_output=True, text=True)
+    assert out.returncode == 0, out.stderr
+    return json.loads(out.stdout)
+
+
+def test_analytic_and_stationary_are_the_command_lines(tmp_path):
+    assert frictrack.analytic(None, [80.0, 120.0], damping_ratio=0.05) == cli_json(
+        "analytic", "--speeds", "80:120:40", "--damping-ratio", "0.05"
+    )
+    case = tmp_path / "ballast.toml"
+    case.write_text("[foundation]\ndamping_ratio = 0.05\n[friction.distributed]\nforce_per_length = 2000.0\n")
+    wave = frictrack.stationary(case, [100.0, 200.0])
+    expected = cli_json("stationary", str(case), "--speeds", "100:200:100")
+    assert wave.points == expected
+    # The same as a dict with overrides: the scenario's keys, or the command line's names.
+    assert frictrack.stationary({"foundation": {"damping_ratio": 0.05}}, [100.0, 200.0],
+                                distributed_friction=2000.0).points == expected
+    assert sorted(wave.waves) == [100.0, 200.0]
+    table = wave.waves[100.0]
+    assert np.max(np.abs(table["friction_force_N_per_m"])) <= 2000.0 * (1 + 1e-12)
+    # The peak is refined between nodes: the nodes' lowest is a little above it.
+    lowest, peak = -table["deflection_m"].min(), expected[0]["max_downward_deflection"]
+    assert lowest <= peak and lowest >= 0.99 * peak
+
+
+def test_a_study_is_the_command_lines(tmp_path):
+    study = frictrack.study("amplification", jobs=2)
+    out = subprocess.run([cli(), "study", "amplification", "--out", str(tmp_path), "--quiet"], capture_output=True,
+                         text=True)
+    assert out.returncode == 0, out.stderr
+    written = json.loads((tmp_path / "amplification.json").read_text())
+    assert study.summary == written["summary"]
+    expected = np.genfromtxt(tmp_path / "amplification.csv", delimiter=",", names=True)
+    for name in study.table.columns:
+        assert np.array_equal(expected[name], study.table[name]), name
+    assert len(study.headline) == 2 and study.table.units["speed"] == "m/s"
+
+
+def test_trains_and_rails():
+    a1 = frictrack.train("hslm-a1")
+    assert a1["name"] == "hslm-a1" and a1["axles"] == len(a1["axles_table"]) > 40
+    assert a1["total_force"] == a1["axles_table"]["force"].sum()
+    profile, psd, summary = frictrack.track_profile("german-low", length=200.0, spacing=0.25, seed=3)
+    assert len(profile) == 800 and profile.columns == ["x", "r"]
+    assert abs(np.std(profile["r"]) - summary["sample_std"]) <= 1e-12 * summary["sample_std"] + 1e-15
+    with __import__("pytest").raises(frictrack.InputError, match="spectrum"):
+        frictrack.track_profile("german-medium")
