@@ -57,6 +57,9 @@ pub(crate) fn stationary_wave(
     Ok((json(&study.points)?, waves))
 }
 
+/// A study's summary (JSON), CSV, headline, lines and CSV columns with their units.
+type StudyTexts = (String, String, Vec<String>, Vec<String>, Vec<(String, String)>);
+
 /// `frictrack study NAME`: the preset on the scenario at `resolution` ("coarse" or "paper") on `jobs` threads:
 /// (summary JSON, CSV, headline, lines, columns with units).
 #[pyfunction]
@@ -69,7 +72,7 @@ pub(crate) fn preset(
     resolution: &str,
     jobs: usize,
     keywords: Vec<(String, Bound<'_, PyAny>)>,
-) -> PyResult<(String, String, Vec<String>, Vec<String>, Vec<(String, String)>)> {
+) -> PyResult<StudyTexts> {
     let preset = Preset::from_name(name).map_err(to_python)?;
     let resolution = match resolution {
         "coarse" => Resolution::Coarse,
