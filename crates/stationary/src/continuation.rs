@@ -58,9 +58,9 @@ pub(crate) fn friction_wave(
     if status.is_converged() || own >= DAMPED_START {
         return Ok((w, with_iterations(status, spent)));
     }
-    let mut wave: Option<Vec<f64>> = None;
-    let ratios = DAMPING_STEPS.iter().copied().filter(|&z| z > own).chain([own]);
-    for ratio in ratios {
+    // From ζ = DAMPED_START down to the track's own, each stage from the last one's wave.
+    let (mut wave, mut last) = (None::<Vec<f64>>, status);
+    for ratio in DAMPING_STEPS.iter().copied().filter(|&z| z > own).chain([own]) {
         let damped = StationaryProblem {
             foundation: fem_beam::Foundation { damping: ratio * critical, ..problem.foundation },
             ..*problem
@@ -74,12 +74,9 @@ pub(crate) fn friction_wave(
         if !status.is_converged() {
             return Ok((next, with_iterations(status, spent)));
         }
-        wave = Some(next);
-        if ratio == own {
-            return Ok((wave.unwrap_or_default(), with_iterations(status, spent)));
-        }
+        (wave, last) = (Some(next), status);
     }
-    unreachable!("the ratios end with the track's own")
+    Ok((wave.unwrap_or(w), with_iterations(last, spent)))
 }
 
 fn with_iterations(status: Convergence, iterations: usize) -> Convergence {

@@ -38,8 +38,8 @@ struct Sets {
 impl Sets {
     /// Whether `other` has the same pressed sections and the same friction states.
     fn same_as(&self, other: &Sets) -> bool {
-        let states = |s: &Sets| s.friction.as_ref().map(|f| f.states.clone());
-        self.pressed == other.pressed && states(self) == states(other)
+        self.pressed == other.pressed
+            && self.friction.as_ref().map(|f| &f.states) == other.friction.as_ref().map(|f| &f.states)
     }
 
     fn of(frame: &MovingFrame, w: &[f64]) -> Self {
