@@ -92,6 +92,8 @@ def test_bad_input_raises_input_error_naming_it():
         frictrack.run({"mesh": {"lenght": 100.0}})
     with pytest.raises(frictrack.InputError, match="speed"):
         frictrack.run(speed=-5.0)
+    with pytest.raises(frictrack.InputError, match='invalid speed = "fast": must be a number'):
+        frictrack.run(speed="fast")
     with pytest.raises(frictrack.InputError, match="devices"):
         frictrack.run(devices=2.5)
     with pytest.raises(frictrack.InputError, match="solver"):

@@ -51,6 +51,16 @@ pub enum OverrideValue {
     Pair([f64; 2]),
 }
 
+impl std::fmt::Display for OverrideValue {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            OverrideValue::Number(x) => write!(f, "{x}"),
+            OverrideValue::Text(t) => write!(f, "\"{t}\""),
+            OverrideValue::Pair([a, b]) => write!(f, "[{a}, {b}]"),
+        }
+    }
+}
+
 impl Overrides {
     /// Every override's name, as `--name` with dashes on the command line and `name=` in Python.
     pub const NAMES: [&'static str; 15] = [
@@ -75,7 +85,7 @@ impl Overrides {
     pub fn set(&mut self, name: &str, value: OverrideValue) -> Result<()> {
         let number = |v: &OverrideValue| match v {
             OverrideValue::Number(x) => Ok(*x),
-            other => Err(invalid(name, format!("{other:?}"), "must be a number")),
+            other => Err(invalid(name, other, "must be a number")),
         };
         let count = |v: &OverrideValue| {
             let x = number(v)?;
@@ -86,7 +96,7 @@ impl Overrides {
         };
         let text = |v: &OverrideValue| match v {
             OverrideValue::Text(t) => Ok(t.clone()),
-            other => Err(invalid(name, format!("{other:?}"), "must be text")),
+            other => Err(invalid(name, other, "must be text")),
         };
         match name {
             "speed" => self.speed = Some(number(&value)?),
@@ -113,7 +123,7 @@ impl Overrides {
             "absorbing_zones" => self.absorbing_zones = Some(number(&value)?),
             "extremes_window" => match value {
                 OverrideValue::Pair(pair) => self.extremes_window = Some(pair),
-                other => return Err(invalid(name, format!("{other:?}"), "must be two load positions [A, B] (m)")),
+                other => return Err(invalid(name, other, "must be two load positions [A, B] (m)")),
             },
             unknown => {
                 return Err(invalid("override", unknown, format!("is not one of {}", Self::NAMES.join(", "))));
