@@ -14,16 +14,12 @@
 //! (between its absorbing zones) and the energy ledger.
 
 use crate::error::{Result, invalid};
-use crate::moving_load::MovingLoad;
 use crate::placed::{PlacedInteractions, SectionKind};
-use crate::simulation::{Coupling, InitialState, RunSettings, Simulation};
-use crate::system::beam_system;
-use fem_beam::Train;
+use crate::simulation::{InitialState, RunSettings, Simulation};
 use fem_beam::{BeamModel, Support};
 use nscd::forcing::{Constant, WithConstant};
-use nscd::solver::SolverSettings;
-use nscd::stepper::{Integration, MoreauJean, ShiftedBlock, WindowShift};
-use nscd::{EnergyLedger, Forcing, Interactions, SolverKind};
+use nscd::stepper::{ShiftedBlock, WindowShift};
+use nscd::{EnergyLedger, Forcing, SolverKind};
 use std::time::Instant;
 
 /// What a co-moving run is asked for.
@@ -134,42 +130,15 @@ pub fn run_co_moving(
         ));
     }
     let blocks = blocks(model, placed)?;
-    let start = RunSettings {
-        moving: crate::simulation::MovingLoadSettings {
-            initial: InitialState::Static { position: window.load_at },
-            ..settings.moving.clone()
-        },
-        ..settings.clone()
-    };
-    let (q0, v0) = Simulation::new(model, placed, &start)?.initial_state()?;
-    let fixed_count = placed.len();
-    let (speed, theta) = (settings.moving.speed, settings.integration.theta);
-    let h = advance / speed;
-    let kind = crate::simulation::resolve_solver(settings.integration.solver.kind, model, placed, (h, theta));
-    let solver = SolverSettings { kind, ..settings.integration.solver };
-    let integration = Integration { theta, step: h };
-    let fixed = placed.interactions().clone();
-    let nb = model.dofs().free_len();
-    // With vehicles the system is the beam and the vehicles, loaded by their weights; their wheels ride the window.
-    let (mut stepper, weights, mut observer, train) = match settings.moving.load.vehicles() {
-        Some(vehicles) => {
-            let beam = (q0.as_slice(), v0.as_slice());
-            let c = Coupling::new(model, vehicles, beam, (window.load_at, speed), theta, None)?;
-            let interactions = Interactions { fixed, moving: c.contacts };
-            let stepper = MoreauJean::build(&c.system, interactions, integration, &solver, c.q0, c.v0)?;
-            (
-                stepper,
-                Some(c.weights),
-                Some(c.observer),
-                Train { name: String::new(), axles: Vec::new(), patches: Vec::new() },
-            )
-        }
-        None => {
-            let stepper = MoreauJean::build(&beam_system(model), fixed, integration, &solver, q0, v0)?;
-            (stepper, None, None, settings.moving.load.train())
-        }
-    };
-    let mut load = MovingLoad::train(mesh, model.dofs(), train, speed, window.load_at);
+    // The run's own set-up (the beam, or the beam and the vehicles with their wheels and weights), the loads
+    // standing in static equilibrium at `load_at`, every wheel's extremes counted wherever it is in the window.
+    let mut start = settings.clone();
+    start.moving.initial = InitialState::Static { position: window.load_at };
+    start.record.extremes_nodes = None;
+    let setup = Simulation::new(model, placed, &start)?.set_up()?;
+    let (mut stepper, mut load, weights, mut observer, h) =
+        (setup.stepper, setup.load, setup.weights, setup.vehicles, setup.step);
+    let (fixed_count, nb) = (placed.len(), model.dofs().free_len());
     let preload = Constant { force: placed.preload().to_vec() };
     let dofs = model.dofs();
     let nodes: Vec<(usize, f64)> =

@@ -15,7 +15,6 @@ mod results;
 mod settings;
 mod setup;
 mod vehicles;
-pub(crate) use vehicles::Coupling;
 
 pub use lift_off::LIFT_OFF_GAP;
 pub use results::{

@@ -13,28 +13,28 @@ use nscd::solver::SolverSettings;
 use nscd::stepper::{Integration, MoreauJean};
 
 /// A run ready to step.
-pub(super) struct Setup {
+pub(crate) struct Setup {
     /// The integrator, holding the state of the whole system.
-    pub(super) stepper: MoreauJean,
+    pub(crate) stepper: MoreauJean,
     /// The moving forces (none with vehicles, whose weights load the system); its position is the load's.
-    pub(super) load: MovingLoad,
+    pub(crate) load: MovingLoad,
     /// The vehicles' weights, with vehicles: then they, not `load`, load the system.
-    pub(super) weights: Option<nscd::forcing::Constant>,
+    pub(crate) weights: Option<nscd::forcing::Constant>,
     /// What the vehicles record, with vehicles.
-    pub(super) vehicles: Option<VehicleObserver>,
+    pub(crate) vehicles: Option<VehicleObserver>,
     /// The step h (s).
-    pub(super) step: f64,
+    pub(crate) step: f64,
     /// Where the load (the first axle or wheel) is at t = 0 (m).
-    pub(super) start: f64,
+    pub(crate) start: f64,
     /// Steps until the load has crossed (W̄ is taken over them), and steps of the whole run.
-    pub(super) crossing_steps: usize,
-    pub(super) total_steps: usize,
+    pub(crate) crossing_steps: usize,
+    pub(crate) total_steps: usize,
 }
 
 impl Simulation<'_> {
     /// Set the run up: with vehicles the coupled system starting from the beam's initial state, else the beam; the
     /// solver resolved from `auto`; the step counts.
-    pub(super) fn set_up(&self) -> Result<Setup> {
+    pub(crate) fn set_up(&self) -> Result<Setup> {
         let (model, settings) = (self.model, self.settings);
         let mesh = *model.mesh();
         let h = settings.integration.load_advance / settings.moving.speed;

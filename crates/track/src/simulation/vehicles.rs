@@ -24,18 +24,18 @@ pub const LOSS_OF_CONTACT: f64 = 1e-6;
 pub const IMPACT_WINDOW: f64 = 0.01;
 
 /// The coupled system of the beam and the vehicles, and how it starts.
-pub(crate) struct Coupling {
+pub(super) struct Coupling {
     /// M, C, K of beam and vehicles.
-    pub(crate) system: LinearSystem,
+    pub(super) system: LinearSystem,
     /// One wheel–rail interaction per wheel, in [`VehicleSettings::wheels`] order.
-    pub(crate) contacts: Vec<Box<dyn MovingInteraction>>,
+    pub(super) contacts: Vec<Box<dyn MovingInteraction>>,
     /// The vehicles' weights over the whole system (zero on the beam).
-    pub(crate) weights: Constant,
+    pub(super) weights: Constant,
     /// Initial displacement and velocity of the whole system (the beam's part from the run's initial state).
-    pub(crate) q0: Vec<f64>,
-    pub(crate) v0: Vec<f64>,
+    pub(super) q0: Vec<f64>,
+    pub(super) v0: Vec<f64>,
     /// What is observed.
-    pub(crate) observer: VehicleObserver,
+    pub(super) observer: VehicleObserver,
 }
 
 impl Coupling {
@@ -45,7 +45,7 @@ impl Coupling {
     /// beam), pressed into the contact by its static load (two passes: the heights less the penetrations of the first
     /// pass's loads; exact for vehicles whose wheel loads do not depend on the wheels' heights, such as every vehicle
     /// with one wheel).
-    pub(crate) fn new(
+    pub(super) fn new(
         model: &BeamModel,
         vehicles: &VehicleSettings,
         (beam_q0, beam_v0): (&[f64], &[f64]),
