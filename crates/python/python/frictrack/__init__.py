@@ -3,7 +3,7 @@
 A thin layer over frictrack's Rust library (the same that the ``frictrack`` command runs): a scenario is read by the
 library's parser and run by the library; this package only turns what the library returns into Python objects —
 the run summary into a dict with the keys of ``frictrack run --format json``, the tables into NumPy structured
-arrays. Units are SI throughout (m, s, N, J; speeds in m/s); each table's units are in its ``UNITS`` mapping and in
+arrays. Units are SI throughout (m, s, N, J; speeds in m/s); each table's units are in its ``units`` mapping and in
 the ``attrs`` of its pandas frame.
 
 >>> import frictrack
