@@ -117,10 +117,9 @@ pub(crate) fn iterate(
     guess: &mut ContactGuess,
     limit: usize,
 ) -> Result<(Vec<f64>, Convergence)> {
-    let (mut norm, mut relative) = residual(frame, &w);
+    let Evaluation { mut norm, mut relative, mut sets } = evaluate(frame, &w);
     let tolerance = if frame.friction.is_some() { ROUND_OFF } else { TOLERANCE };
     for iteration in 1..=limit {
-        let sets = Sets::of(frame, &w);
         // The residual decides: after a damped step the iterate is not its sets' Newton point, so repeated sets
         // alone prove nothing (the next step takes that point).
         if relative <= tolerance {
@@ -128,40 +127,50 @@ pub(crate) fn iterate(
             return Ok((w, Convergence::Converged { iterations: iteration, residual: relative }));
         }
         let target = newton_point(frame, &sets, speed)?;
-        let (target_norm, target_relative) = residual(frame, &target);
-        let reproduced = Sets::of(frame, &target);
-        if target_relative <= ROUND_OFF && reproduced.same_as(&sets) {
-            guess.remember(reproduced.pressed, &target);
-            return Ok((target, Convergence::Converged { iterations: iteration, residual: target_relative }));
+        let at_target = evaluate(frame, &target);
+        if at_target.relative <= ROUND_OFF && at_target.sets.same_as(&sets) {
+            guess.remember(at_target.sets.pressed, &target);
+            return Ok((target, Convergence::Converged { iterations: iteration, residual: at_target.relative }));
         }
         let mut t = 1.0;
-        let mut trial_point = (target, target_norm, target_relative);
+        let mut trial_point = (target, at_target);
         loop {
-            if trial_point.1 <= (1.0 - 1e-4 * t) * norm || t < 1e-6 {
-                (w, norm, relative) = trial_point;
+            if trial_point.1.norm <= (1.0 - 1e-4 * t) * norm || t < 1e-6 {
+                let (trial, at_trial) = trial_point;
+                (w, norm, relative, sets) = (trial, at_trial.norm, at_trial.relative, at_trial.sets);
                 break;
             }
             t *= 0.5;
             let trial: Vec<f64> = w.iter().zip(&trial_point.0).map(|(a, b)| a + 0.5 * (b - a)).collect();
-            let (n, r) = residual(frame, &trial);
-            trial_point = (trial, n, r);
+            let at_trial = evaluate(frame, &trial);
+            trial_point = (trial, at_trial);
         }
     }
     Ok((w, Convergence::NotConverged { iterations: limit, residual: relative }))
 }
 
-/// (‖r‖₂, ‖r‖∞/‖f‖∞) of r = A W − Σ H_sᵀ k_s⟨−H_s W⟩₊ + Σ_i weight_i H_iᵀ r_i(W) − f.
-fn residual(frame: &MovingFrame, w: &[f64]) -> (f64, f64) {
+/// The residual of a W and the sets it lies in, from one pass over the soil's and the ballast's sections.
+struct Evaluation {
+    /// ‖r‖₂ of r = A W − Σ H_sᵀ k_s⟨−H_s W⟩₊ + Σ_i weight_i H_iᵀ r_i(W) − f (N).
+    norm: f64,
+    /// ‖r‖∞/‖f‖∞.
+    relative: f64,
+    /// The sets of W (the friction march's forces with them).
+    sets: Sets,
+}
+
+fn evaluate(frame: &MovingFrame, w: &[f64]) -> Evaluation {
+    let sets = Sets::of(frame, w);
     let mut r = vec![0.0; w.len()];
     frame.matrix.mul_vec(w, &mut r);
     for s in &frame.sections {
         row_add(s.element, &s.row, -s.stiffness * (-s.deflection(w)).max(0.0), &mut r);
     }
-    if let Some(friction) = &frame.friction {
-        friction.add_forces(&friction.march(w).force, &mut r);
+    if let (Some(friction), Some(state)) = (&frame.friction, &sets.friction) {
+        friction.add_forces(&state.force, &mut r);
     }
     r.iter_mut().zip(&frame.rhs).for_each(|(r, f)| *r -= f);
     let scale = frame.rhs.iter().fold(0.0f64, |m, f| m.max(f.abs())).max(f64::MIN_POSITIVE);
-    let two = r.iter().map(|x| x * x).sum::<f64>().sqrt();
-    (two, r.iter().fold(0.0f64, |m, x| m.max(x.abs())) / scale)
+    let norm = r.iter().map(|x| x * x).sum::<f64>().sqrt();
+    Evaluation { norm, relative: r.iter().fold(0.0f64, |m, x| m.max(x.abs())) / scale, sets }
 }

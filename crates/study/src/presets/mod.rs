@@ -148,9 +148,15 @@ impl Preset {
     /// The parts of `base` that this study replaces with its own (see [`Preset::sets`]), one sentence each; empty
     /// when the base scenario leaves them at their defaults.
     pub fn overrides(self, base: &Scenario) -> Vec<String> {
-        if let Some(overrides) = self.entry().overrides {
-            return overrides(base);
+        match self.entry().overrides {
+            Some(overrides) => overrides(base),
+            None => self.common_overrides(base),
         }
+    }
+
+    /// The common rule of [`Preset::overrides`]: the scenario's friction, where the study compares set-ups of its
+    /// own (named by the first line of [`Preset::sets`]), and its `[sweep]` in a study at fixed speeds.
+    pub(super) fn common_overrides(self, base: &Scenario) -> Vec<String> {
         let mut notes = Vec::new();
         let f = &base.friction;
         if f.devices.is_some() || f.distributed.is_some() {

@@ -291,15 +291,10 @@ fn headline(infinite: &[InfiniteCurve], finite: &Curves) -> Vec<String> {
     ]
 }
 
-/// What of `base` the study replaces: its friction and its soil's law (the study sets both per curve), and its own
-/// [sweep] is used.
+/// What of `base` the study replaces: the common rule (its friction: the study sets its own per curve), and its
+/// soil's law (the study sets linear, tensionless and bilinear itself).
 pub(super) fn overrides(base: &Scenario) -> Vec<String> {
-    let mut notes = Vec::new();
-    if base.friction.devices.is_some() || base.friction.distributed.is_some() {
-        notes.push(
-            "the scenario's [friction] is not used: the study compares distributed f_u ∈ {0, 1, 2, 5, 10} kN/m".into(),
-        );
-    }
+    let mut notes = super::Preset::StationaryWave.common_overrides(base);
     if base.foundation.law != FoundationLawKind::Linear {
         notes.push(
             "the scenario's [foundation] law is not used: the study sets linear, tensionless and bilinear (α = ½) \
