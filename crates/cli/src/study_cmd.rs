@@ -10,6 +10,7 @@ use std::path::PathBuf;
 use std::time::Instant;
 use study::Scenario;
 use study::presets::{Preset, Resolution, StudyData, run_preset};
+use study::scenario::DeckTrack;
 use study::sweep::Runner;
 
 /// Sampling of a study.
@@ -58,6 +59,11 @@ pub struct StudyOptions {
     /// Continue after an interruption: take the runs already in OUT/.STUDY.journal, run the others.
     #[arg(long)]
     resume: bool,
+    /// The track on a bridge deck, which sets the EN 1990 acceleration limit the hslm study checks a span against:
+    /// ballasted (3.5 m/s²) or direct-fastening (5 m/s²). Default: the scenario's `[output] deck_track`, else
+    /// ballasted.
+    #[arg(long, value_name = "TRACK", value_parser = |s: &str| s.parse::<DeckTrack>())]
+    deck_track: Option<DeckTrack>,
 }
 
 impl StudyOptions {
@@ -66,12 +72,16 @@ impl StudyOptions {
         crate::jobs::runner(self.jobs, self.quiet)
     }
 
-    /// The base scenario: the file given, or the reference case.
+    /// The base scenario: the file given, or the reference case, with `--deck-track` on it.
     pub fn base(&self) -> Result<Scenario> {
-        Ok(match &self.scenario {
+        let mut base = match &self.scenario {
             Some(path) => Scenario::from_path(path)?,
             None => Scenario::default(),
-        })
+        };
+        if let Some(track) = self.deck_track {
+            base.output.deck_track = track;
+        }
+        Ok(base)
     }
 }
 

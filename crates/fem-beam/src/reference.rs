@@ -131,6 +131,15 @@ impl InfiniteBeam {
         (self.foundation_stiffness / self.mass_per_length).sqrt()
     }
 
+    /// The wavenumbers r (1/m) of the moving-frame equation EI r⁴ + ρA v² r² − c_f v r + k_f = 0 at `speed` (m/s):
+    /// every solution of the unloaded track in s = x − vt is a sum of e^{rs}. Unlike [`Self::steady_state`] they exist
+    /// at every speed (undamped above v_cr some lie on the imaginary axis); their largest modulus sets the shortest
+    /// length 1/|r| any wave of the track varies on, which a mesh must resolve.
+    pub fn wavenumbers(&self, speed: f64) -> [Complex64; 4] {
+        let alpha = speed / self.critical_speed();
+        quartic_roots(4.0 * alpha * alpha, -8.0 * alpha * self.damping_ratio(), 4.0).map(|r| r * self.beta())
+    }
+
     /// The steady-state response to a load of magnitude `force` (N, downward) moving at `speed` (m/s, ≥ 0).
     pub fn steady_state(&self, speed: f64, force: f64) -> Result<SteadyState> {
         non_negative("speed", speed)?;

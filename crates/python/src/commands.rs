@@ -9,7 +9,7 @@ use crate::scenario_input::{Source, overrides};
 use pyo3::prelude::*;
 use study::error::{StudyError, invalid};
 use study::presets::{Preset, Resolution, run_preset};
-use study::stationary_output::{StationaryStudy, wave_csv};
+use study::stationary_output::{ErrorEstimate, StationaryStudy, wave_csv};
 use study::steady_response::SteadyResponse;
 use study::sweep::Runner;
 
@@ -48,22 +48,24 @@ pub(crate) fn stationary_wave(
     speeds: Vec<f64>,
     domain: (f64, f64, f64),
     keywords: Vec<(String, Bound<'_, PyAny>)>,
-) -> PyResult<(String, Vec<(f64, String)>)> {
+) -> PyResult<(String, Vec<(f64, String)>, Vec<String>)> {
     let scenario = overrides(&keywords)?.apply(Source::of(kind, text)?.read()?);
     let (behind, ahead, element_length) = domain;
     let domain = stationary::Domain { behind, ahead, element_length };
-    let study = interruptible::run(py, move |_| StationaryStudy::of(&scenario, &speeds, domain))?.map_err(to_python)?;
+    let study =
+        interruptible::run(py, move |_| StationaryStudy::of(&scenario, &speeds, domain, ErrorEstimate::Halving))?
+            .map_err(to_python)?;
     let waves = study.waves.iter().flatten().map(|w| (w.speed, wave_csv(w))).collect();
-    Ok((json(&study.points)?, waves))
+    Ok((json(&study.points)?, waves, study.warnings()))
 }
 
 /// A study's summary (JSON), CSV, headline, lines and CSV columns with their units.
 type StudyTexts = (String, String, Vec<String>, Vec<String>, Vec<(String, String)>);
 
-/// `frictrack study NAME`: the preset on the scenario at `resolution` ("coarse" or "paper") on `jobs` threads:
-/// (summary JSON, CSV, headline, lines, columns with units).
+/// `frictrack study NAME`: the preset on the scenario (its `[output] deck_track` set to `deck_track` if given) at
+/// `resolution` ("coarse" or "paper") on `jobs` threads: (summary JSON, CSV, headline, lines, columns with units).
 #[pyfunction]
-#[pyo3(name = "study", signature = (name, kind, text, resolution, jobs, keywords))]
+#[pyo3(name = "study", signature = (name, kind, text, resolution, jobs, deck_track, keywords))]
 pub(crate) fn preset(
     py: Python<'_>,
     name: &str,
@@ -71,6 +73,7 @@ pub(crate) fn preset(
     text: Option<String>,
     resolution: &str,
     jobs: usize,
+    deck_track: Option<String>,
     keywords: Vec<(String, Bound<'_, PyAny>)>,
 ) -> PyResult<StudyTexts> {
     let preset = Preset::from_name(name).map_err(to_python)?;
@@ -79,7 +82,10 @@ pub(crate) fn preset(
         "paper" => Resolution::Paper,
         other => return Err(to_python(invalid("resolution", other, "must be coarse or paper"))),
     };
-    let base = overrides(&keywords)?.apply(Source::of(kind, text)?.read()?);
+    let mut base = overrides(&keywords)?.apply(Source::of(kind, text)?.read()?);
+    if let Some(track) = deck_track {
+        base.output.deck_track = track.parse().map_err(to_python)?;
+    }
     let runner = Runner::new(jobs).map_err(to_python)?;
     let data = interruptible::run(py, move |stop| run_preset(preset, resolution, &base, &runner.with_stop(stop)))?
         .map_err(to_python)?;

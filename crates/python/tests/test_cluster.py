@@ -51,18 +51,3 @@ def test_the_slurm_dry_run_shards_and_merges_to_the_unsharded_sweep(tmp_path):
                           capture_output=True, text=True)
     assert done.returncode == 0, done.stderr
     assert (out / "sweep.csv").read_text() == whole.read_text()
-
-
-def test_the_engineering_example_answers_its_question(tmp_path):
-    """examples/python/hslm_friction.py end to end (two trains, 40 km/h steps): a verdict per train, a figure."""
-    pytest.importorskip("matplotlib")
-    out = tmp_path / "hslm.png"
-    done = subprocess.run(
-        [os.sys.executable, str(ROOT / "examples" / "python" / "hslm_friction.py"), "--out", str(out), "--step", "40",
-         "--trains", "2"],
-        capture_output=True, text=True,
-    )
-    assert done.returncode == 0, done.stderr
-    lines = done.stdout.strip().splitlines()
-    assert lines[0].startswith("HSLM-A1") and lines[1].startswith("HSLM-A2") and "m/s²" in lines[0]
-    assert out.stat().st_size > 10_000 and out.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"

@@ -58,6 +58,32 @@ impl EndRelation {
     }
 }
 
+impl EndRelation {
+    /// The largest U = W − W_far (m) of the wave continued past this end by its decaying modes,
+    /// U(t) = a₁e^{r₁t} + a₂e^{r₂t} from the end values U and W′, t the distance past the end (t ≥ 0 ahead, ≤ 0
+    /// behind): sampled every 0.1/|r|ₘₐₓ until the slower mode has decayed by e⁻⁸ (3e-4), at most [`TAIL_SAMPLES`]
+    /// samples. A nonlinear soil's transparent end is exact only if this stays on the pressed side. None for a
+    /// double root.
+    pub fn tail_max(&self, u: f64, slope: f64) -> Option<f64> {
+        let [r1, r2] = self.roots;
+        let gap = r2 - r1;
+        if gap.norm() <= 1e-12 * r1.norm().max(r2.norm()) {
+            return None;
+        }
+        let a2 = (Complex64::new(slope, 0.0) - r1 * u) / gap;
+        let a1 = Complex64::new(u, 0.0) - a2;
+        // Ahead the kept roots have Re r < 0 and t runs forward; behind Re r > 0 and t runs backward.
+        let direction = if r1.re < 0.0 { 1.0 } else { -1.0 };
+        let step = 0.1 / r1.norm().max(r2.norm());
+        let samples = ((8.0 / self.decay / step).ceil() as usize).min(TAIL_SAMPLES);
+        let at = |t: f64| (a1 * (r1 * t).exp() + a2 * (r2 * t).exp()).re;
+        Some((0..=samples).map(|i| at(direction * i as f64 * step)).fold(f64::NEG_INFINITY, f64::max))
+    }
+}
+
+/// The most samples [`EndRelation::tail_max`] takes of a tail.
+pub const TAIL_SAMPLES: usize = 200_000;
+
 /// The transparent relations ahead of and behind the load.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FarField {

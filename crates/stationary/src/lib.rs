@@ -14,10 +14,12 @@ pub mod friction;
 pub mod newton;
 pub mod operator;
 pub mod problem;
+pub mod refine;
 pub mod solve;
 pub mod wave;
 
 pub use error::{Result, StationaryError};
 pub use problem::{BallastFriction, Domain, StationaryProblem};
+pub use refine::solve_halved;
 pub use solve::{ContactGuess, Convergence, solve, solve_from};
 pub use wave::{LiftOffZone, Peak, SlipZone, StationaryWave};

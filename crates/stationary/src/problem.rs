@@ -1,6 +1,7 @@
 //! What a stationary wave is asked of: the track (beam and soil), the load and its speed, and the moving domain.
 
 use crate::error::{Result, invalid};
+use fem_beam::reference::InfiniteBeam;
 use fem_beam::{Beam, Foundation};
 
 /// Standard gravity g (m/s²) for the self-weight.
@@ -25,6 +26,10 @@ impl Default for Domain {
         Self { behind: 60.0, ahead: 60.0, element_length: 0.25 }
     }
 }
+
+/// The longest element accepted, in units of the shortest length 1/|r|ₘₐₓ of the track's waves
+/// ([`StationaryProblem::check_resolution`]).
+pub const RESOLUTION: f64 = 1.0;
 
 /// The most elements of a domain (checked before anything is allocated).
 pub const MAX_ELEMENTS: usize = 2_000_000;
@@ -142,6 +147,50 @@ impl StationaryProblem {
         }
         self.friction.validate()?;
         self.domain.validate()
+    }
+
+    /// The shortest length (m) the track's waves vary on at this speed: 1/|r|ₘₐₓ over the wavenumbers r of the
+    /// moving-frame equation EI r⁴ + ρA v² r² − c_f v r + k = 0 ([`InfiniteBeam::wavenumbers`]) of the soil pressed
+    /// (k = k_c) and, on a nonlinear soil, where the rail lifts (k = k_t; on a tensionless soil the free rail's
+    /// r = ±i v√(ρA/EI)). 2.25 m for the reference track at rest (√2 β = 0.444 m⁻¹).
+    pub fn shortest_length(&self) -> Result<f64> {
+        let f = &self.foundation;
+        let largest = |stiffness: f64| -> Result<f64> {
+            let soil = Foundation::linear(stiffness, f.damping);
+            let r = InfiniteBeam::new(&self.beam, &soil)?.wavenumbers(self.speed);
+            Ok(r.iter().map(|r| r.norm()).fold(0.0, f64::max))
+        };
+        let mut fastest = largest(f.stiffness)?;
+        if self.is_nonlinear() {
+            let lifted = match f.tension_stiffness() {
+                k if k > 0.0 => largest(k)?,
+                _ => self.speed * (self.beam.mass_per_length() / self.beam.bending_stiffness()).sqrt(),
+            };
+            fastest = fastest.max(lifted);
+        }
+        Ok(1.0 / fastest)
+    }
+
+    /// Refuse elements longer than [`RESOLUTION`] × [`Self::shortest_length`]: the wave is not resolved and its peaks
+    /// are wrong by more than a few per cent (measured on the reference track at 100 m/s, 1/|r| = 2.25 m: 2 m
+    /// elements leave the moment 4.3 % low, 5 m ones 26 % and the deflection 2 %, 100 m ones the deflection 10× low).
+    pub fn check_resolution(&self) -> Result<()> {
+        let shortest = self.shortest_length()?;
+        let l = self.domain.element_length;
+        if l > RESOLUTION * shortest {
+            return Err(invalid(
+                "domain.element_length",
+                l,
+                format!(
+                    "is longer than the shortest length the wave varies on at {} m/s, 1/|r| = {shortest:.3} m \
+                     (r the track's wavenumbers): the wave is not resolved and its peaks would be wrong; use \
+                     elements of at most {:.3} m (0.25 m or less for peaks to ~0.1 %)",
+                    self.speed,
+                    RESOLUTION * shortest
+                ),
+            ));
+        }
+        Ok(())
     }
 
     /// Whether the ballast holds the rail by friction.

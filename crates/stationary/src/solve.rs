@@ -72,6 +72,14 @@ impl ContactGuess {
         self.pressed.is_empty() && self.wave.is_empty()
     }
 
+    /// A guess for `problem` from the DOFs `wave` (deflection and slope at each node of its domain, absolute): the
+    /// soil sections it presses, and the wave to start the friction iteration from.
+    pub fn started_at(problem: &StationaryProblem, wave: Vec<f64>) -> Result<Self> {
+        let frame = MovingFrame::new(problem)?;
+        let pressed = frame.sections.iter().map(|s| s.deflection(&wave) < 0.0).collect();
+        Ok(Self { pressed, wave })
+    }
+
     pub(crate) fn remember(&mut self, pressed: Vec<bool>, wave: &[f64]) {
         self.pressed = pressed;
         self.wave = wave.to_vec();
@@ -88,13 +96,16 @@ impl ContactGuess {
     }
 }
 
-/// The stationary wave of `problem`, its domain grown where the rail lifts off at an end.
+/// The stationary wave of `problem`, its domain grown where the rail lifts off at an end. Elements that cannot
+/// resolve the wave are refused ([`StationaryProblem::check_resolution`]).
 pub fn solve(problem: &StationaryProblem) -> Result<StationaryWave> {
     solve_from(problem, &mut ContactGuess::default())
 }
 
 /// As [`solve`], starting from `guess` (the previous speed's pressed set, if it fits) and leaving this one there.
 pub fn solve_from(problem: &StationaryProblem, guess: &mut ContactGuess) -> Result<StationaryWave> {
+    problem.validate()?;
+    problem.check_resolution()?;
     let mut problem = *problem;
     let mut extensions = 0;
     loop {

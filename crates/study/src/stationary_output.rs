@@ -8,6 +8,7 @@ use crate::error::{Result, invalid};
 use crate::plot::{PlotSpec, Series, Stroke};
 use crate::scenario::{QuadratureKind, Scenario};
 use serde::Serialize;
+use stationary::refine::ERROR_FACTOR;
 use stationary::{
     BallastFriction, ContactGuess, Convergence, Domain, StationaryError, StationaryProblem, StationaryWave,
 };
@@ -79,7 +80,40 @@ pub struct StationaryPoint {
     pub power_imbalance: Option<f64>,
     /// The domain behind and ahead of the load (m) and its element length (m).
     pub domain: (f64, f64, f64),
+    /// The estimated discretisation error of the peaks (one halving of the elements), where estimated.
+    pub discretisation_error: Option<PeakErrors>,
 }
+
+/// The estimated discretisation error of a wave's peaks: 2|P_h − P_{h/2}| with P_{h/2} the same wave solved on
+/// elements half as long (`stationary::refine`: Richardson's estimate for first-order convergence, an upper one for
+/// these peaks).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct PeakErrors {
+    /// Of the max downward deflection (m).
+    pub max_downward_deflection: f64,
+    /// Of the max sagging moment (N·m).
+    pub max_moment: f64,
+}
+
+impl PeakErrors {
+    /// The larger of the two errors relative to its peak.
+    pub fn relative(&self, point: &StationaryPoint) -> f64 {
+        let share = |e: f64, p: Option<f64>| p.map_or(0.0, |p| e / p.abs().max(f64::MIN_POSITIVE));
+        share(self.max_downward_deflection, point.max_downward_deflection).max(share(self.max_moment, point.max_moment))
+    }
+}
+
+/// Whether the stationary waves' peaks get a discretisation-error estimate.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ErrorEstimate {
+    /// Each wave solved again on halved elements (about twice the cost).
+    Halving,
+    /// None: a study that fixes its own resolution.
+    Skip,
+}
+
+/// The relative discretisation error of a peak above which `frictrack stationary` warns.
+pub const ERROR_TOLERANCE: f64 = 1e-2;
 
 /// The stationary waves of a scenario over its speeds.
 #[derive(Debug, Clone)]
@@ -142,7 +176,7 @@ pub fn problem(scenario: &Scenario, speed: f64, domain: Domain) -> Result<Statio
 impl StationaryStudy {
     /// Solve `speeds` (m/s, in the order given: each starts from the last one's contact set and wave, on the domain
     /// the last one grew to) on `domain`.
-    pub fn of(scenario: &Scenario, speeds: &[f64], domain: Domain) -> Result<Self> {
+    pub fn of(scenario: &Scenario, speeds: &[f64], domain: Domain, estimate: ErrorEstimate) -> Result<Self> {
         let first = problem(scenario, speeds.first().copied().unwrap_or(0.0), domain)?;
         let law = first.foundation.law.name();
         let mut guess = ContactGuess::default();
@@ -156,7 +190,11 @@ impl StationaryStudy {
                     if wave.convergence.is_converged() {
                         (domain.behind, domain.ahead) = (-wave.s[0], *wave.s.last().unwrap_or(&domain.ahead));
                     }
-                    points.push(StationaryPoint::of(&wave));
+                    let mut point = StationaryPoint::of(&wave);
+                    if estimate == ErrorEstimate::Halving && wave.convergence.is_converged() {
+                        point.discretisation_error = peak_errors(&problem, &wave)?;
+                    }
+                    points.push(point);
                     waves.push(Some(wave));
                 }
                 Err(StationaryError::NoRadiationCondition { .. }) => {
@@ -168,6 +206,28 @@ impl StationaryStudy {
         }
         let friction = first.friction.force_per_length;
         Ok(Self { law, load: first.load, settlement: -first.far_level(), friction, points, waves })
+    }
+
+    /// The largest relative discretisation error of a peak over the speeds estimated, and its speed (m/s).
+    pub fn largest_error(&self) -> Option<(f64, f64)> {
+        let estimated = self.points.iter().filter_map(|p| Some((p.speed, p.discretisation_error?.relative(p))));
+        estimated.max_by(|a, b| a.1.total_cmp(&b.1))
+    }
+
+    /// Warnings for the reader: peaks whose estimated discretisation error exceeds [`ERROR_TOLERANCE`], with the
+    /// element length that would bring it under (the moment converges at second order: l·√(tolerance/error)).
+    pub fn warnings(&self) -> Vec<String> {
+        let Some((speed, error)) = self.largest_error().filter(|&(_, e)| e > ERROR_TOLERANCE) else {
+            return Vec::new();
+        };
+        let l = self.points.iter().find(|p| p.speed == speed).map_or(f64::NAN, |p| p.domain.2);
+        vec![format!(
+            "domain.element_length = {l} m: the peaks are resolved only to {:.1} % at {speed} m/s (estimated from one \
+             halving of the elements); elements of {:.3} m or less bring them to {} %",
+            100.0 * error,
+            0.9 * l * (ERROR_TOLERANCE / error).sqrt(),
+            100.0 * ERROR_TOLERANCE
+        )]
     }
 
     /// The figures: with one speed the wave's deflection and moment along s; with several the peak deflections
@@ -250,6 +310,16 @@ impl StationaryStudy {
     }
 }
 
+/// The peaks' discretisation errors of `wave` (of `problem`) from its solution on halved elements; None where that
+/// solve finds no wave.
+fn peak_errors(problem: &StationaryProblem, wave: &StationaryWave) -> Result<Option<PeakErrors>> {
+    let halved = stationary::solve_halved(problem, wave)?;
+    Ok(halved.convergence.is_converged().then(|| PeakErrors {
+        max_downward_deflection: ERROR_FACTOR * (wave.max_downward().value - halved.max_downward().value).abs(),
+        max_moment: ERROR_FACTOR * (wave.max_moment().value - halved.max_moment().value).abs(),
+    }))
+}
+
 impl StationaryPoint {
     fn of(wave: &StationaryWave) -> Self {
         let (status, iterations, residual) = match wave.convergence {
@@ -300,6 +370,7 @@ impl StationaryPoint {
             left_behind_power: some(wave.left_behind_power),
             power_imbalance: some(wave.power_imbalance()),
             domain: (-wave.s[0], *wave.s.last().unwrap_or(&0.0), wave.element_length()),
+            discretisation_error: None,
         }
     }
 
@@ -326,6 +397,7 @@ impl StationaryPoint {
             left_behind_power: None,
             power_imbalance: None,
             domain: (domain.behind, domain.ahead, domain.element_length),
+            discretisation_error: None,
         }
     }
 }

@@ -139,11 +139,14 @@ def analytic(scenario: ScenarioLike = None, speeds: Sequence[float] = (), dampin
 class Stationary:
     """The stationary wave on the infinite track at each speed (``frictrack stationary``): ``points`` one dict per
     speed (its ``status``: "converged", "not converged", "domain too short", "no stationary wave"; peaks m, moments
-    N·m, powers W), ``waves`` each found wave's shape by speed (m/s) as a :class:`Table` (s_m, deflection_m, …)."""
+    N·m, powers W; ``discretisation_error`` of the peaks from one halving of the elements), ``waves`` each found
+    wave's shape by speed (m/s) as a :class:`Table` (s_m, deflection_m, …), ``warnings`` what the command line warns
+    (peaks resolved to worse than 1 %)."""
 
-    def __init__(self, points: "list[Dict[str, Any]]", waves: Dict[float, Table]) -> None:
+    def __init__(self, points: "list[Dict[str, Any]]", waves: Dict[float, Table], warnings: "list[str]") -> None:
         self.points = points
         self.waves = waves
+        self.warnings = warnings
 
 
 def stationary(scenario: ScenarioLike = None, speeds: Sequence[float] = (), domain: Sequence[float] = (60.0, 60.0),
@@ -153,10 +156,10 @@ def stationary(scenario: ScenarioLike = None, speeds: Sequence[float] = (), doma
     linear, tensionless and bilinear soils, ballast friction. Overrides as for :func:`run`."""
     kind, text = _source(scenario)
     behind, ahead = (float(x) for x in domain)
-    points, waves = _native.stationary(
+    points, waves, warnings = _native.stationary(
         kind, text, [float(v) for v in speeds], (behind, ahead, float(element_length)), list(overrides.items())
     )
-    return Stationary(json.loads(points), {float(v): parse_csv(csv, None) for v, csv in waves})
+    return Stationary(json.loads(points), {float(v): parse_csv(csv, None) for v, csv in waves}, list(warnings))
 
 
 class Study:
@@ -176,12 +179,17 @@ class Study:
 
 
 def study(name: str, scenario: ScenarioLike = None, resolution: str = "coarse", jobs: Optional[int] = None,
-          **overrides: Any) -> Study:
+          deck_track: Optional[str] = None, **overrides: Any) -> Study:
     """Run the study preset ``name`` (``discrete-speed``, ``distributed-speed``, ``hslm``, ``stationary-wave``, …) on
-    ``scenario`` (the reference case by default) at ``resolution`` ("coarse" or "paper") on ``jobs`` threads."""
+    ``scenario`` (the reference case by default) at ``resolution`` ("coarse" or "paper") on ``jobs`` threads.
+
+    ``deck_track`` ("ballasted", 3.5 m/s², or "direct-fastening", 5 m/s²; default the scenario's ``[output]
+    deck_track``) sets the EN 1990 deck-acceleration limit the ``hslm`` study checks a span against: each curve of
+    ``summary["curves"]`` then has its ``deck_verdict`` ("within", "over", "within the range only") from the refined
+    peak ``peak_max_acceleration`` (m/s²) at ``peak_acceleration_speed`` (m/s), and ``acceleration_over_limit``."""
     kind, text = _source(scenario)
     summary, table, headline, lines, columns = _native.study(
-        name, kind, text, resolution, int(jobs or 0), list(overrides.items())
+        name, kind, text, resolution, int(jobs or 0), deck_track, list(overrides.items())
     )
     return Study(name, json.loads(summary), parse_csv(table, dict(columns)), list(headline), list(lines))
 

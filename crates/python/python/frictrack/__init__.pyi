@@ -90,10 +90,12 @@ def analytic(
 
 class Stationary:
     """The stationary wave per speed: `points` (dicts, as `frictrack stationary --format json`), `waves` (speed m/s →
-    the wave's shape: s_m, deflection_m, slope_rad, moment_Nm, soil_reaction_N_per_m, friction_force_N_per_m)."""
+    the wave's shape: s_m, deflection_m, slope_rad, moment_Nm, soil_reaction_N_per_m, friction_force_N_per_m),
+    `warnings` (peaks resolved to worse than 1 %)."""
 
     points: List[Dict[str, Any]]
     waves: Dict[float, Table]
+    warnings: List[str]
 
 def stationary(
     scenario: ScenarioLike = None,
@@ -118,9 +120,11 @@ def study(
     scenario: ScenarioLike = None,
     resolution: str = "coarse",
     jobs: Optional[int] = None,
+    deck_track: Optional[str] = None,
     **overrides: Any,
 ) -> Study:
-    """Run the study preset `name` as `frictrack study` does."""
+    """Run the study preset `name` as `frictrack study` does; `deck_track` ("ballasted" or "direct-fastening") sets
+    the EN 1990 deck-acceleration limit of the `hslm` study's verdicts."""
 
 def train(name: str) -> Dict[str, Any]:
     """A train's summary (name, axles, patches, length m, total_force N) and `axles_table` (offset m, force N)."""

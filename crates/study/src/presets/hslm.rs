@@ -7,11 +7,14 @@
 //!
 //! On a span (no foundation, pinned ends) the deck-acceleration check needs frequencies up to f_max = max(30 Hz,
 //! 1.5 f₁, f₃): the study reduces the load advance, where needed, to the one that resolves f_max with 20 steps per
-//! period at the lowest speed, and says so. Acceleration limits of EN 1990 A2.4.4.2.1 (3.5 m/s² for a ballasted deck)
-//! are drawn for spans only: on a track the "deck" is the rail.
+//! period at the lowest speed, and says so. On a span each train's refined acceleration peak is checked against the
+//! EN 1990 A2.4.4.2.1 limit of its deck's track (`[output] deck_track`: 3.5 m/s² ballasted, 5 m/s² direct
+//! fastening), a verdict per train and set-up ([`super::hslm_verdict`]); on a track the "deck" is the rail and nothing
+//! is checked.
 
 use super::hslm_figures::interpolate;
 use super::hslm_resonances::{Resonance, natural_frequencies, resonances};
+use super::hslm_verdict::DeckLimit;
 use super::{Resolution, StudyData, StudyFailure, blank, failed_runs, mean_iterations, nothing_finished, with_devices};
 use crate::diagnostics::{deck_frequency, resolving_advance};
 use crate::error::{Result, StudyError};
@@ -25,8 +28,6 @@ use std::fmt::Write as _;
 
 /// km/h per m/s.
 pub(super) const KMH: f64 = 3.6;
-/// EN 1990 A2.4.4.2.1(4): the peak deck acceleration allowed on a ballasted deck (m/s²).
-pub const BALLASTED_DECK_LIMIT: f64 = 3.5;
 /// The friction set-up when the scenario has none: devices of F_u = 50 kN (the middle force of study 1) at the
 /// density of its strongest set, 31 on the 200 m reference track ([`fallback_devices`]).
 const FALLBACK_FORCE: f64 = 50e3;
@@ -165,8 +166,8 @@ pub(super) struct Results {
     pub(super) friction: String,
     /// f₁ … f₃ (Hz), if the model's eigenproblem was solved.
     pub(super) frequencies: Option<Vec<f64>>,
-    /// The acceleration limit drawn (spans only).
-    pub(super) acceleration_limit: Option<f64>,
+    /// The deck-acceleration limit each train is checked against (spans only).
+    pub(super) acceleration_limit: Option<DeckLimit>,
     /// The load advance used (m).
     pub(super) load_advance: f64,
     /// Refinement tolerance (m/s): golden section stops on a bracket this wide.
@@ -198,6 +199,12 @@ impl Results {
     pub(super) fn acceleration_critical(&self, friction: usize) -> &TrainCurve {
         let peak = |c: &&TrainCurve| c.acceleration.value;
         self.set(friction).max_by(|a, b| peak(a).total_cmp(&peak(b))).expect("ten trains")
+    }
+
+    /// The trains (k of HSLM-Ak) of a friction set-up that fail the deck check (none without a limit).
+    pub(super) fn failing(&self, friction: usize) -> Vec<usize> {
+        let fails = |c: &&TrainCurve| self.acceleration_limit.is_some_and(|l| l.verdict(&c.acceleration).fails());
+        self.set(friction).filter(fails).map(|c| c.train).collect()
     }
 
     /// The envelope of `value` over the ten trains of a friction set-up: at every speed any curve drew (the sweep
@@ -254,13 +261,15 @@ impl Results {
             c.critical.describe()
         };
         let bound = if a.is_interior() { "" } else { " (at an end of the speed range: a bound)" };
+        let verdict = self.acceleration_limit.map(|l| l.verdict(a));
         lines.push(format!(
-            "HSLM-A{} (D = {} m), {}: {text}; max acceleration {:.3} m/s² at {:.1} km/h{bound}",
+            "HSLM-A{} (D = {} m), {}: {text}; max acceleration {:.3} m/s² at {:.1} km/h{bound}{}",
             c.train,
             coach_length(c.train),
             self.friction_label(c.friction),
             a.value,
-            a.speed * KMH
+            a.speed * KMH,
+            verdict.map_or(String::new(), |v| format!("; deck check {}", v.describe())),
         ));
         let resonances: Vec<Value> = c
             .resonances
@@ -282,6 +291,8 @@ impl Results {
             "peak_max_acceleration_sampled": a.sweep_maximum.1,
             "refinement_runs": c.drawn.len() - c.points.len(),
             "resonance_speeds": resonances,
+            "acceleration_over_limit": verdict.map(|v| v.utilisation()),
+            "deck_verdict": verdict.map(|v| v.name()),
         })
     }
 
@@ -290,9 +301,10 @@ impl Results {
         let c = self.critical(friction);
         let a = self.acceleration_critical(friction);
         let p = &a.acceleration;
+        let verdict = self.acceleration_limit.map(|l| l.verdict(p));
         lines.push(format!(
             "{}, envelope of the ten trains: HSLM-A{} at {:.1} m/s ({:.0} km/h), {} (DAF {:.3}){}; max \
-             acceleration {:.3} m/s² from HSLM-A{} at {:.1} km/h{}",
+             acceleration {:.3} m/s² from HSLM-A{} at {:.1} km/h{}{}",
             self.friction_label(friction),
             c.train,
             c.critical.speed,
@@ -304,6 +316,11 @@ impl Results {
             a.train,
             p.speed * KMH,
             if p.is_interior() { "" } else { " (at an end of the speed range: a bound)" },
+            self.acceleration_limit.map_or(String::new(), |l| format!(
+                "; deck check against {}: {} of the ten trains fail",
+                l.describe(),
+                self.failing(friction).len()
+            )),
         ));
         json!({
             "friction": friction_name(friction),
@@ -316,7 +333,11 @@ impl Results {
             "acceleration_speed": p.speed,
             "acceleration_location": p.location,
             "peak_max_acceleration": p.value,
-            "acceleration_over_limit": self.acceleration_limit.map(|l| p.value / l),
+            "acceleration_over_limit": verdict.map(|v| v.utilisation()),
+            "deck_verdict": verdict.map(|v| v.name()),
+            "trains_over_limit": self.acceleration_limit.map(|_| {
+                self.failing(friction).iter().map(|k| format!("hslm-a{k}")).collect::<Vec<_>>()
+            }),
         })
     }
 
@@ -346,7 +367,8 @@ impl Results {
             "natural_frequencies": self.frequencies,
             "load_advance": self.load_advance,
             "extremes_nodes": self.extremes_nodes,
-            "acceleration_limit": self.acceleration_limit,
+            "acceleration_limit": self.acceleration_limit.map(|l| l.value),
+            "deck_track": self.acceleration_limit.map(|l| l.track.name()),
             "curves": curves,
             "envelopes": envelopes,
         });
@@ -413,7 +435,7 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
         axle_share: base.axle_share(),
         friction,
         frequencies,
-        acceleration_limit: span.then_some(BALLASTED_DECK_LIMIT),
+        acceleration_limit: span.then(|| DeckLimit::of(base.output.deck_track)),
         load_advance: advance,
         tolerance,
         extremes_nodes: base.output.extremes_nodes,

@@ -181,7 +181,8 @@ impl Results {
         };
         let mut spec = self.envelope_figure(titles, acceleration, &critical, "refined peak");
         if let Some(limit) = self.acceleration_limit {
-            spec.series.push(level(self, format!("EN 1990 limit {limit} m/s²"), GREY, limit));
+            let label = format!("EN 1990 limit {} m/s², {}", limit.value, limit.track.describe());
+            spec.series.push(level(self, label, GREY, limit.value));
         }
         spec
     }

@@ -35,10 +35,21 @@ impl Results {
         };
         let acceleration = a.acceleration.value;
         let acceleration = match self.acceleration_limit {
-            Some(l) => format!(
-                "deck acceleration, {acceleration:.2} m/s² ({:.2} × the EN 1990 limit of {l} m/s²)",
-                acceleration / l
-            ),
+            Some(l) => {
+                let failing = self.failing(friction);
+                let failing = match failing.len() {
+                    0 => "every train passes".to_string(),
+                    n => {
+                        let trains: Vec<String> = failing.iter().map(|k| format!("A{k}")).collect();
+                        format!("{n} of the ten trains fail: HSLM-{}", trains.join(", "))
+                    }
+                };
+                format!(
+                    "deck acceleration, {acceleration:.2} m/s² ({:.2} × {}: {failing})",
+                    acceleration / l.value,
+                    l.describe()
+                )
+            }
             None => format!("rail acceleration, {acceleration:.0} m/s²"),
         };
         format!(

@@ -17,6 +17,7 @@ mod hslm;
 mod hslm_figures;
 mod hslm_headline;
 mod hslm_resonances;
+pub mod hslm_verdict;
 mod optimal_force;
 mod stationary_wave;
 mod stationary_wave_figures;

@@ -10,7 +10,7 @@ use super::{StudyData, blank, mean_iterations, with_distributed};
 use crate::error::Result;
 use crate::scenario::{FoundationLawKind, Scenario};
 use crate::speeds::SpeedScale;
-use crate::stationary_output::{StationaryPoint, StationaryStudy, problem};
+use crate::stationary_output::{ErrorEstimate, StationaryPoint, StationaryStudy, problem};
 use crate::sweep::Runner;
 use serde::Serialize;
 use serde_json::{Value, json};
@@ -114,7 +114,7 @@ pub(super) fn study(resolution: super::Resolution, base: &Scenario, runner: &Run
     let soils = Soil::all();
     let infinite = runner.silent().map(&soils, |soil| {
         let scenario = soil.scenario(base);
-        let study = StationaryStudy::of(&scenario, &speeds, Domain::default())?;
+        let study = StationaryStudy::of(&scenario, &speeds, Domain::default(), ErrorEstimate::Skip)?;
         let critical = refine(&scenario, &study, v_cr)?;
         let shapes = shape_speeds
             .iter()

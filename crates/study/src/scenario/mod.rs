@@ -9,6 +9,7 @@
 
 mod build;
 pub mod contact;
+mod deck;
 mod parse;
 pub mod rail;
 pub mod sections;

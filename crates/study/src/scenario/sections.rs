@@ -1,6 +1,7 @@
 //! The scenario schema: one struct per TOML section, every key optional with the reference case as default
 //! (docs/theory.md §2), unknown keys refused.
 
+pub use super::deck::DeckTrack;
 use crate::error::{Result, invalid};
 use fem_beam::Foundation;
 use fem_beam::reference::uic60_on_soft_soil;
@@ -405,6 +406,10 @@ pub struct OutputSection {
     pub snapshot_times: Vec<f64>,
     /// Load positions (m) of whole-beam snapshots (`run --out`); with neither list, L/4, L/2 and 3L/4.
     pub snapshot_load_positions: Vec<f64>,
+    /// The track on a bridge deck, which sets the EN 1990 deck-acceleration limit the train study checks a span
+    /// against: ballasted (3.5 m/s², the default) or direct fastening (5 m/s²).
+    #[serde(skip_serializing_if = "DeckTrack::is_default")]
+    pub deck_track: DeckTrack,
 }
 
 impl OutputSection {
