@@ -97,6 +97,9 @@ pub fn run(args: &AnalyticArgs) -> Result<()> {
         None => None,
     };
     let response = SteadyResponse::of(&scenario, args.damping_ratio, train, &speeds)?;
+    for warning in response.warnings() {
+        eprintln!("warning: {warning}");
+    }
     let (points, train, inf, foundation) = (&response.points, &response.train, &response.beam, &response.foundation);
     let w0 = response.static_deflection;
     match (args.format, points.len()) {

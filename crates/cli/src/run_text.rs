@@ -322,11 +322,20 @@ fn print_numbers(r: &RunSummary) {
     if r.stepping.fallback_steps > 0 {
         let by: Vec<String> = r.stepping.fallbacks.iter().map(|f| format!("{} ({})", f.solver, f.steps)).collect();
         println!(
-            "  fallback: {} failed on {} of {} steps, solved instead by {} (docs/theory.md §5)",
+            "  fallback: {} failed on {} of {} steps (after 3 failures in a row the fallback takes steps without it, \
+             trying it again at doubling intervals), solved instead by {} (docs/theory.md §5)",
             r.stepping.solver,
             r.stepping.fallback_steps,
             r.stepping.steps,
             by.join(", ")
         );
+        if 2 * r.stepping.fallback_steps > r.stepping.steps
+            && let Some(most) = r.stepping.fallbacks.iter().max_by_key(|f| f.steps)
+        {
+            eprintln!(
+                "warning: --solver {} could not solve most steps of this run; --solver {} solved them",
+                r.stepping.solver, most.solver
+            );
+        }
     }
 }

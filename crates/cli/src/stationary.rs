@@ -161,7 +161,9 @@ fn print_text(scenario: &Scenario, study: &StationaryStudy) {
         "  speed (m/s)  max down (mm)  at s (m)  max up (mm)  at s (m)  max M (kN·m)  behind (mm)  lift-off zones  \
          slip zones  status"
     );
-    let mm = |x: Option<f64>| x.map_or("—".to_string(), |x| format!("{:.3}", x * 1e3));
+    // To the micrometre, without a "-0.000" for a rail left 1e-12 m below where it was.
+    let mm =
+        |x: Option<f64>| x.map_or("—".to_string(), |x| format!("{:.3}", if x.abs() < 5e-7 { 0.0 } else { x * 1e3 }));
     // Positions to 0.01 m, without a "-0.00" for a trough a millimetre behind the load.
     let at = |x: Option<f64>| x.map_or("—".to_string(), |x| format!("{:.2}", if x.abs() < 0.005 { 0.0 } else { x }));
     for p in &study.points {
@@ -187,6 +189,9 @@ fn print_text(scenario: &Scenario, study: &StationaryStudy) {
         "  (s = x − vt: positive ahead of the load; deflections from the settled rail, signed behind: what is left \
          there)"
     );
+    if let Some(note) = study::stationary_output::branch_note(study.law) {
+        println!("  {note}");
+    }
     if let Some((speed, error)) = study.largest_error() {
         println!(
             "  discretisation error of the peaks (deflection, moment), estimated from one halving of the elements: \

@@ -307,10 +307,23 @@ impl MoreauJean {
     /// (unconverged, or an error of its own); an error naming the run's solver when none converges. `t1` is the
     /// step's end time (s), for the error.
     fn solve_interactions(&mut self, t1: f64) -> Result<StepReport> {
-        let attempt = self.solver.solve(&self.problem, &self.v, &self.u_free, &mut self.p);
-        if let Ok(report) = &attempt
-            && report.converged()
+        // During a hand-over (the run's solver failed steps in a row) the fallbacks go first; should they all fail,
+        // the run's solver still gets the step.
+        if let Some(fallbacks) = self.fallbacks.as_mut()
+            && fallbacks.takes_the_step()
+            && let Some(report) = fallbacks.solve(&self.problem, &self.v, &self.u_free, &mut self.p, None)
         {
+            return Ok(report);
+        }
+        let attempt = self.solver.solve(&self.problem, &self.v, &self.u_free, &mut self.p);
+        let solved = matches!(&attempt, Ok(report) if report.converged());
+        if let Some(fallbacks) = self.fallbacks.as_mut() {
+            match solved {
+                true => fallbacks.solver_succeeded(),
+                false => fallbacks.solver_failed(),
+            }
+        }
+        if solved {
             return attempt;
         }
         if let Some(fallbacks) = self.fallbacks.as_mut()

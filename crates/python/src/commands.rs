@@ -18,7 +18,7 @@ fn json<T: serde::Serialize>(value: &T) -> PyResult<String> {
 }
 
 /// `frictrack analytic`: the steady state of the scenario's beam on its soil (optionally at another damping ratio,
-/// under a train) at `speeds` (m/s): the JSON points.
+/// under a train) at `speeds` (m/s): the JSON points and the command line's warnings.
 #[pyfunction]
 #[pyo3(signature = (kind, text, speeds, damping_ratio, train))]
 pub(crate) fn analytic(
@@ -27,14 +27,14 @@ pub(crate) fn analytic(
     speeds: Vec<f64>,
     damping_ratio: Option<f64>,
     train: Option<String>,
-) -> PyResult<String> {
+) -> PyResult<(String, Vec<String>)> {
     let scenario = Source::of(kind, text)?.read()?;
     let train = train
         .map(|name| study::trains::named_or_file(&name, scenario.load.force, "train"))
         .transpose()
         .map_err(to_python)?;
     let response = SteadyResponse::of(&scenario, damping_ratio, train, &speeds).map_err(to_python)?;
-    json(&response.points)
+    Ok((json(&response.points)?, response.warnings()))
 }
 
 /// `frictrack stationary`: the stationary wave at `speeds` (m/s, by continuation) on the domain `behind`:`ahead` (m)

@@ -133,3 +133,26 @@ fn undamped_above_the_critical_speed_it_says_there_is_no_wave() {
     assert!(err.to_string().contains("no stationary wave at v = 250 m/s"), "{err}");
     assert!(err.is_invalid_input());
 }
+
+/// The tensionless wave need not be unique: at 100 m/s (ζ = 5 %, with weight) the iteration started from the contact
+/// set of a 300 kN load at 60 m/s ends on a second exact wave, 68.6 mm deep, besides the 61.5 mm one continuation in
+/// speed from rest follows (and the co-moving window's time stepping reaches: 61.49 mm). Both solve the discrete
+/// equations to round-off; which one a report gives is the branch its continuation follows (docs/theory.md §14).
+#[test]
+fn the_tensionless_wave_at_100_m_per_s_has_two_solutions() {
+    let at = |load: f64, speed: f64| problem(FoundationLaw::Tensionless, 0.05, speed, load);
+    let mut from_rest = ContactGuess::default();
+    let mut followed = None;
+    for v in (0..=10).map(|i| 10.0 * i as f64) {
+        followed = Some(solve_from(&at(83.4e3, v), &mut from_rest).unwrap());
+    }
+    let followed = followed.unwrap();
+    let mut heavy = ContactGuess::default();
+    solve_from(&at(300e3, 60.0), &mut heavy).unwrap();
+    let other = solve_from(&at(83.4e3, 100.0), &mut heavy).unwrap();
+    for wave in [&followed, &other] {
+        assert!(matches!(wave.convergence, Convergence::Converged { residual, .. } if residual <= 1e-10));
+    }
+    let (a, b) = (followed.max_downward().value, other.max_downward().value);
+    assert!((a - 0.061521).abs() <= 1e-6 && (b - 0.068611).abs() <= 1e-6, "{a} {b}");
+}

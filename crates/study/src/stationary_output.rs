@@ -112,6 +112,18 @@ pub enum ErrorEstimate {
     Skip,
 }
 
+/// What a reader of a nonlinear soil's waves must know: they need not be unique, and which branch is reported
+/// (docs/theory.md §14); None on a linear soil, whose wave is.
+pub fn branch_note(law: &str) -> Option<String> {
+    (law != "linear").then(|| {
+        format!(
+            "on a {law} soil the stationary wave need not be unique (the tensionless reference track has two at \
+             100 m/s, 61.5 and 68.6 mm deep): these are the branch continuation in speed from the static state \
+             follows, the one a load brought up to speed reaches (docs/theory.md §14)"
+        )
+    })
+}
+
 /// The relative discretisation error of a peak above which `frictrack stationary` warns.
 pub const ERROR_TOLERANCE: f64 = 1e-2;
 

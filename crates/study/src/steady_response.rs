@@ -103,4 +103,33 @@ impl SteadyResponse {
             .collect::<Result<Vec<_>>>()?;
         Ok(Self { foundation, beam, train, load: case.load, static_deflection: w0, points })
     }
+
+    /// Warnings for the reader: undamped within [`RESONANCE_BAND`] of the critical speed the closed form is the
+    /// resonance itself — its peaks grow without bound as v → v_cr (∝ 1/√|1 − v/v_cr| for one load), so the number
+    /// printed says how close the speed is, not how the track responds.
+    pub fn warnings(&self) -> Vec<String> {
+        let v_cr = self.beam.critical_speed();
+        if self.foundation.damping > 0.0 {
+            return Vec::new();
+        }
+        self.points
+            .iter()
+            .filter(|p| (p.speed / v_cr - 1.0).abs() <= RESONANCE_BAND)
+            .map(|p| {
+                format!(
+                    "v = {} m/s is {:.3} % from the critical speed v_cr = {v_cr:.2} m/s of the undamped track: there \
+                     the closed form is the undamped resonance and grows without bound as v → v_cr (amplification \
+                     {:.0} here); it is not a response a track would show — give the foundation damping for a \
+                     bounded steady state",
+                    p.speed,
+                    100.0 * (p.speed / v_cr - 1.0).abs(),
+                    p.amplification_downward
+                )
+            })
+            .collect()
+    }
 }
+
+/// How close to v_cr (relative) an undamped speed is warned about: 1 % from it the reference track's amplification
+/// is 7.1, 1e-4 from it 78, 1e-5 from it 177.
+pub const RESONANCE_BAND: f64 = 0.01;

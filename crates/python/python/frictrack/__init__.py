@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import json
 import os
+import warnings as _warnings
 from typing import Any, Dict, Mapping, Optional, Sequence, Union
 
 from . import _native
@@ -131,9 +132,13 @@ def analytic(scenario: ScenarioLike = None, speeds: Sequence[float] = (), dampin
              train: Optional[str] = None) -> "list[Dict[str, Any]]":
     """The closed-form steady state of the scenario's beam on an infinite foundation (``frictrack analytic``) at each
     speed (m/s), optionally at another damping ratio and under a train: one dict per speed, the keys of ``frictrack
-    analytic --format json`` (deflections m, moments N·m, as magnitudes)."""
+    analytic --format json`` (deflections m, moments N·m, as magnitudes). Undamped within 1 % of the critical speed
+    a ``UserWarning`` says the number is the undamped resonance, which grows without bound there."""
     kind, text = _source(scenario)
-    return json.loads(_native.analytic(kind, text, [float(v) for v in speeds], damping_ratio, train))
+    points, warnings = _native.analytic(kind, text, [float(v) for v in speeds], damping_ratio, train)
+    for warning in warnings:
+        _warnings.warn(warning, stacklevel=2)
+    return json.loads(points)
 
 
 class Stationary:

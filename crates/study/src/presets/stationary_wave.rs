@@ -232,6 +232,7 @@ fn summary(infinite: &[InfiniteCurve], finite: &Curves, v_cr: Option<f64>) -> (V
         }));
         lines.push(format!("infinite track, {}: {}", curve.soil.label(), critical_text(&curve.critical)));
     }
+    lines.extend(crate::stationary_output::branch_note("tensionless").map(|n| format!("infinite track: {n}")));
     let (finite_summary, finite_lines) = finite.summary();
     lines.extend(finite_lines.into_iter().map(|l| format!("finite beam, {l}")));
     (json!({ "critical_speed_of_the_infinite_beam": v_cr, "infinite": items, "finite": finite_summary }), lines)
