@@ -40,3 +40,30 @@ fn a_tensionless_soil_reports_where_the_rail_lifted_off() {
     let linear = json(&frictrack(&["run", "--format", "json"]));
     assert!(linear.get("soil").is_none());
 }
+
+/// A weightless rail on a tensionless soil with a free end has no bounded static state (its static envelope
+/// reached 1.8e9 m, exit 0): refused naming the key and what would hold it; with its weight, pinned ends, or a
+/// bilinear soil it runs.
+#[test]
+fn a_weightless_rail_on_a_tensionless_soil_with_a_free_end_is_refused() {
+    let folder = temporary_folder("soil-lever");
+    let file = folder.join("lever.toml");
+    let case = |soil: &str| {
+        format!(
+            "[mesh]\nlength = 40.0\nelements = 40\n[supports]\nleft = \"free\"\nright = \"pinned\"\n[foundation]\n{soil}"
+        )
+    };
+    std::fs::write(&file, case("law = \"tensionless\"\nself_weight = false\n")).unwrap();
+    let out = frictrack(&["run", file.to_str().unwrap()]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains("foundation.self_weight = false") && err.contains("no bounded static state"), "{err}");
+    for held in [
+        "law = \"tensionless\"\nself_weight = true\n",
+        "law = \"bilinear\"\ntension_ratio = 0.5\nself_weight = false\n",
+    ] {
+        std::fs::write(&file, case(held)).unwrap();
+        let out = frictrack(&["run", file.to_str().unwrap()]);
+        assert_eq!(out.status.code(), Some(0), "{held}: {}", String::from_utf8_lossy(&out.stderr));
+    }
+}

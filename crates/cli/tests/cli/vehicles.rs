@@ -57,6 +57,12 @@ fn a_train_of_quarter_cars_carries_its_axles() {
     assert!((wheels[1]["static_force"].as_f64().unwrap() - 60e3).abs() < 1e-6);
     assert_eq!(v["axle_share"]["carries"], "one-rail");
     assert_eq!(wheels[1]["offset"].as_f64().unwrap(), 2.5);
+    // From a static start at 20 m/s the second wheel never leaves the rail: 0 s off it, not "-0.0" (an empty float
+    // sum starts at −0).
+    let slow = ["run", &train, "--speed", "20", "--load-advance", "0.02", "--static-start", "50", "--format", "json"];
+    let out = frictrack(&slow);
+    assert!(!String::from_utf8_lossy(&out.stdout).contains("-0.0"), "{}", String::from_utf8_lossy(&out.stdout));
+    assert_eq!(json(&out)["vehicles"]["wheels"][1]["time_off_rail"].as_f64(), Some(0.0));
     std::fs::remove_dir_all(&folder).unwrap();
 }
 

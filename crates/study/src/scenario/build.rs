@@ -108,6 +108,25 @@ impl Scenario {
         Ok(interactions)
     }
 
+    /// Refuse a weightless rail on a tensionless soil with a free end: with the load near that end the rail bears on
+    /// a few sections at the load and the rest of it, held by nothing, turns about them like a lever — no bounded
+    /// static state (the static envelope of the free–free reference track reached 1.8e9 m; with its weight 4.3 w₀,
+    /// pinned 1.08 w₀). A bilinear soil holds the rail in tension and is not refused.
+    fn refuse_a_lever(&self, model: &BeamModel) -> Result<()> {
+        let f = &self.foundation;
+        let free_end = [self.supports.left, self.supports.right].contains(&fem_beam::Support::Free);
+        if f.law == FoundationLawKind::Tensionless && !f.self_weight && free_end && model.foundation().stiffness > 0.0 {
+            return Err(invalid(
+                "foundation.self_weight",
+                false,
+                "with a tensionless soil and a free end the rail has no bounded static state: under a load near that \
+                 end it tips about the few sections it bears on, the rest held by nothing; give the rail its weight \
+                 (self_weight = true), pin or clamp the ends, or use law = \"bilinear\"",
+            ));
+        }
+        Ok(())
+    }
+
     /// The sections of a nonlinear soil (none for a linear one, which K holds whole).
     fn foundation_sections(&self, model: &BeamModel) -> Result<PlacedInteractions> {
         let f = &self.foundation;
@@ -130,6 +149,7 @@ impl Scenario {
     /// Build the model, contact set and run settings, checking every value on the way.
     pub fn build(&self) -> Result<Case> {
         let model = self.model()?;
+        self.refuse_a_lever(&model)?;
         let interactions = self.placed_on(&model)?;
         finite_non_negative("load.force", self.load.force, "N")?;
         finite_positive("load.speed", self.load.speed, "m/s")?;

@@ -312,9 +312,10 @@ impl WheelResult {
         (self.max_force - self.static_force).max(self.static_force - self.min_force) / self.static_force
     }
 
-    /// Total time without contact (s).
+    /// Total time without contact (s): 0 without losses (a fold from +0, where `Sum` starts at −0.0 and the JSON said
+    /// `-0.0`).
     pub fn time_off_rail(&self) -> f64 {
-        self.losses.iter().map(|l| l.duration).sum()
+        self.losses.iter().fold(0.0, |total, l| total + l.duration)
     }
 }
 
