@@ -79,9 +79,7 @@ pub fn parse_range(text: &str) -> Result<Vec<f64>> {
         other => other,
     })?;
     let speeds: Vec<f64> = range.speeds().into_iter().map(|v| v * factor).collect();
-    if speeds.len() > 1_000_000 {
-        return Err(bad(&format!("gives {} speeds, at most 1 000 000 allowed", speeds.len())).into());
-    }
+    study::speeds::check_count("--speeds", speeds.len())?;
     Ok(speeds)
 }
 

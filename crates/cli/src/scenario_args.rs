@@ -78,14 +78,6 @@ pub fn print_warnings(scenario: &Scenario, case: &study::Case) {
 }
 
 impl ScenarioArgs {
-    /// The scenario with the flags applied, built, with its warnings printed on stderr.
-    pub fn build(&self) -> Result<(Scenario, study::Case)> {
-        let scenario = self.load()?;
-        let case = scenario.build()?;
-        print_warnings(&scenario, &case);
-        Ok((scenario, case))
-    }
-
     /// The scenario file (or the reference case) with the flags applied.
     pub fn load(&self) -> Result<Scenario> {
         let s = match &self.scenario {

@@ -38,6 +38,12 @@ pub struct StationaryArgs {
     /// discretisation error is estimated by solving again on elements half as long, and warned about above 1 %.
     #[arg(long, allow_negative_numbers = true)]
     element_length: Option<f64>,
+    /// Foundation damping ratio ζ (of c_cr = 2√(k_f ρA)), in place of the scenario's (as `run --damping-ratio`).
+    #[arg(long, allow_negative_numbers = true)]
+    damping_ratio: Option<f64>,
+    /// Ballast friction f_u (N/m) along the track, in place of the scenario's (as `run --distributed-friction`).
+    #[arg(long, allow_negative_numbers = true)]
+    distributed_friction: Option<f64>,
     /// Output format on standard output.
     #[arg(long, value_enum, default_value_t = StationaryFormat::Text)]
     format: StationaryFormat,
@@ -66,6 +72,12 @@ pub fn run(args: &StationaryArgs) -> Result<()> {
         Some(path) => Scenario::from_path(path)?,
         None => Scenario::default(),
     };
+    let overrides = study::overrides::Overrides {
+        damping_ratio: args.damping_ratio,
+        distributed_friction: args.distributed_friction,
+        ..Default::default()
+    };
+    let scenario = overrides.apply(scenario);
     let speeds = args.speed.speeds()?;
     if let Some(&v) = speeds.iter().find(|v| !(v.is_finite() && **v >= 0.0)) {
         return Err(study::error::invalid("--speed", v, "must be finite and ≥ 0 (m/s)").into());
@@ -77,7 +89,8 @@ pub fn run(args: &StationaryArgs) -> Result<()> {
             check_output_file("--out", &folder.join(name))?;
         }
     }
-    let study = StationaryStudy::of(&scenario, &speeds, domain, ErrorEstimate::Halving)?;
+    let stop = Some(crate::interrupt::stop_flag());
+    let study = StationaryStudy::of_until(&scenario, &speeds, domain, ErrorEstimate::Halving, stop)?;
     for warning in study.warnings() {
         eprintln!("warning: {warning}");
     }

@@ -58,11 +58,15 @@ pub fn run(args: &SweepArgs) -> Result<()> {
         )
         .into());
     }
-    let (scenario, case) = args.scenario.build()?;
+    let scenario = args.scenario.load()?;
+    let case = scenario.build()?;
     let all_speeds = match &args.speeds {
         Some(range) => parse_range(range)?,
         None => scenario.speed_range()?.speeds(),
     };
+    for warning in study::diagnostics::sweep_warnings(&scenario, &all_speeds)? {
+        eprintln!("warning: {warning}");
+    }
     let shard = args.shard.as_deref().map(Shard::parse).transpose()?;
     let speeds = shard.map_or_else(|| all_speeds.clone(), |s| s.select(&all_speeds));
     if args.critical && speeds.len() < 3 {

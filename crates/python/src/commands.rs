@@ -28,6 +28,7 @@ pub(crate) fn analytic(
     damping_ratio: Option<f64>,
     train: Option<String>,
 ) -> PyResult<(String, Vec<String>)> {
+    study::speeds::check_count("speeds", speeds.len()).map_err(to_python)?;
     let scenario = Source::of(kind, text)?.read()?;
     let train = train
         .map(|name| study::trains::named_or_file(&name, scenario.load.force, "train"))
@@ -49,12 +50,13 @@ pub(crate) fn stationary_wave(
     domain: (f64, f64, f64),
     keywords: Vec<(String, Bound<'_, PyAny>)>,
 ) -> PyResult<(String, Vec<(f64, String)>, Vec<String>)> {
+    study::speeds::check_count("speeds", speeds.len()).map_err(to_python)?;
     let scenario = overrides(&keywords)?.apply(Source::of(kind, text)?.read()?);
     let (behind, ahead, element_length) = domain;
     let domain = stationary::Domain { behind, ahead, element_length };
-    let study =
-        interruptible::run(py, move |_| StationaryStudy::of(&scenario, &speeds, domain, ErrorEstimate::Halving))?
-            .map_err(to_python)?;
+    let solve =
+        move |stop: &_| StationaryStudy::of_until(&scenario, &speeds, domain, ErrorEstimate::Halving, Some(stop));
+    let study = interruptible::run(py, solve)?.map_err(to_python)?;
     let waves = study.waves.iter().flatten().map(|w| (w.speed, wave_csv(w))).collect();
     Ok((json(&study.points)?, waves, study.warnings()))
 }

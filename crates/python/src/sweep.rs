@@ -7,8 +7,9 @@ use crate::scenario_input::{Source, overrides};
 use pyo3::prelude::*;
 use study::sweep::{Runner, failures, write_csv_rows};
 
-/// The sweep's CSV (`frictrack sweep`'s), and the failed runs as (speed m/s, error) pairs.
-type SweepTexts = (String, Vec<(f64, String)>);
+/// The sweep's CSV (`frictrack sweep`'s), the failed runs as (speed m/s, error) pairs, and the warnings the command
+/// line prints for the swept speeds.
+type SweepTexts = (String, Vec<(f64, String)>, Vec<String>);
 
 /// Sweep the scenario (`kind` and `text` as for `run`) with the keyword `overrides` over `speeds` (m/s) on `jobs`
 /// worker threads (0: all cores).
@@ -23,17 +24,20 @@ pub(crate) fn sweep(
     keywords: Vec<(String, Bound<'_, PyAny>)>,
 ) -> PyResult<SweepTexts> {
     let scenario = overrides(&keywords)?.apply(Source::of(kind, text)?.read()?);
+    study::speeds::check_count("speeds", speeds.len()).map_err(to_python)?;
     if speeds.is_empty() {
         return Err(to_python(study::error::invalid("speeds", "[]", "give at least one speed (m/s)")));
     }
     let case = scenario.build().map_err(to_python)?;
+    let warnings = study::diagnostics::sweep_warnings(&scenario, &speeds).map_err(to_python)?;
+    let warnings = warnings.iter().map(ToString::to_string).collect();
     let runner = Runner::new(jobs).map_err(to_python)?;
     let rows = interruptible::run(py, move |stop| runner.with_stop(stop).speed_sweep_keeping(&case, &speeds))?
         .map_err(to_python)?;
     let mut csv = Vec::new();
     write_csv_rows(&rows, &mut csv).map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(e.to_string()))?;
     let failed = failures(&rows).into_iter().map(|f| (f.speed, f.error)).collect();
-    Ok((String::from_utf8_lossy(&csv).into_owned(), failed))
+    Ok((String::from_utf8_lossy(&csv).into_owned(), failed, warnings))
 }
 
 /// The sweep CSV's columns with their units: every sweep's, then those of a sweep with vehicles.

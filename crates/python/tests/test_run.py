@@ -154,3 +154,36 @@ def test_ctrl_c_stops_a_run_within_a_step():
     assert stopped < 1.5, f"stopped after {stopped:.2f} s"
     # The package still works afterwards.
     assert frictrack.run(elements=50).summary["steps"] > 0
+
+
+def test_ctrl_c_stops_a_stationary_sweep_within_a_speed():
+    """Ctrl-C during a long stationary sweep (2000 speeds with ballast friction, tens of seconds) stops it before its
+    next speed — it used to be ignored until the sweep ended (> 30 s seen)."""
+    import _thread
+
+    timer = threading.Timer(0.3, _thread.interrupt_main)
+    started = time.perf_counter()
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        frictrack.stationary({"foundation": {"damping_ratio": 0.05}}, [20.0 + 0.1 * i for i in range(2000)],
+                             distributed_friction=2000.0)
+    stopped = time.perf_counter() - started
+    timer.cancel()
+    assert stopped < 1.3, f"stopped after {stopped:.2f} s"
+
+
+def test_one_cap_on_the_speeds_of_every_entry_point():
+    """More than a million speeds are refused before anything runs, by Python as by the command line."""
+    too_many = [100.0] * 1_000_001
+    for call in (lambda: frictrack.sweep(None, too_many), lambda: frictrack.stationary(None, too_many),
+                 lambda: frictrack.analytic(None, too_many)):
+        with pytest.raises(frictrack.InputError, match="at most 1000000"):
+            call()
+
+
+def test_a_sweep_warns_what_a_run_at_its_speeds_warns():
+    bridge = ROOT / "examples" / "hslm-bridge.toml"
+    sweep = frictrack.sweep(bridge, [20.0, 100.0])
+    run = frictrack.run(bridge, speed=20.0)
+    coarse = [w for w in run.warnings if "load_advance" in w]
+    assert coarse and coarse[0] in sweep.warnings, (run.warnings, sweep.warnings)

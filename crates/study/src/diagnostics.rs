@@ -111,6 +111,25 @@ pub fn warnings(scenario: &Scenario, case: &Case) -> Vec<Warning> {
     out
 }
 
+/// The warnings of a sweep of `scenario` over `speeds` (m/s): those of its runs at the lowest and at the highest
+/// speed — every speed-dependent check (the step h = Δx/v resolving a frequency, the speed against v_cr) is worst at
+/// one of them — each once. A sweep used to print the base case's only, at the scenario's own speed, and drop the
+/// "load advance too coarse" warning a run at a swept speed prints.
+pub fn sweep_warnings(scenario: &Scenario, speeds: &[f64]) -> Result<Vec<Warning>> {
+    let (low, high) = speeds.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| (a.min(v), b.max(v)));
+    let mut out: Vec<Warning> = Vec::new();
+    for v in [low, high].into_iter().filter(|v| v.is_finite()) {
+        let at =
+            Scenario { load: crate::scenario::LoadSection { speed: v, ..scenario.load.clone() }, ..scenario.clone() };
+        for w in warnings(&at, &at.build()?) {
+            if !out.contains(&w) {
+                out.push(w);
+            }
+        }
+    }
+    Ok(out)
+}
+
 /// Rail cars on an HSLM train's axles: the HSLM coaches are articulated (neighbours share a bogie), which cars of
 /// two bogies of their own, four axles each, are not.
 fn articulated_cars(scenario: &Scenario, case: &Case) -> Vec<Warning> {

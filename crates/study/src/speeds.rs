@@ -12,6 +12,19 @@ use crate::error::Result;
 use crate::scenario::{Scenario, SweepSection};
 use fem_beam::reference::InfiniteBeam;
 
+/// The most speeds one sweep, stationary solve or closed-form table takes, from the command line, a scenario's
+/// `[sweep]` or Python: a million runs of even a 10 ms case are ~3 h on all cores of a workstation.
+pub const MAX_SPEEDS: usize = 1_000_000;
+
+/// Refuse more than [`MAX_SPEEDS`] speeds, naming `field` and the count (before anything runs or is allocated for
+/// them).
+pub fn check_count(field: &str, count: usize) -> Result<()> {
+    if count > MAX_SPEEDS {
+        return Err(crate::error::invalid(field, count, format!("speeds: at most {MAX_SPEEDS} are taken at once")));
+    }
+    Ok(())
+}
+
 /// The speed scale of a case.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SpeedScale {

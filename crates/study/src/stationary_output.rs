@@ -189,6 +189,20 @@ impl StationaryStudy {
     /// Solve `speeds` (m/s, in the order given: each starts from the last one's contact set and wave, on the domain
     /// the last one grew to) on `domain`.
     pub fn of(scenario: &Scenario, speeds: &[f64], domain: Domain, estimate: ErrorEstimate) -> Result<Self> {
+        Self::of_until(scenario, speeds, domain, estimate, None)
+    }
+
+    /// As [`Self::of`], stopping with [`StudyError::Interrupted`](crate::StudyError::Interrupted) before the next
+    /// speed (and before each error estimate) once `stop` is raised: a speed takes 1–75 ms (up to ~1 s where the
+    /// domain grows with friction), so Ctrl-C is answered within about that.
+    pub fn of_until(
+        scenario: &Scenario,
+        speeds: &[f64],
+        domain: Domain,
+        estimate: ErrorEstimate,
+        stop: Option<&std::sync::atomic::AtomicBool>,
+    ) -> Result<Self> {
+        let stopped = || stop.is_some_and(|s| s.load(std::sync::atomic::Ordering::Relaxed));
         let first = problem(scenario, speeds.first().copied().unwrap_or(0.0), domain)?;
         let law = first.foundation.law.name();
         let mut guess = ContactGuess::default();
@@ -196,6 +210,9 @@ impl StationaryStudy {
         // Each speed starts on the domain the last one grew to, where its wave (the guess) fits.
         let mut domain = domain;
         for &speed in speeds {
+            if stopped() {
+                return Err(crate::StudyError::Interrupted);
+            }
             let problem = StationaryProblem { speed, domain, ..first };
             match stationary::solve_from(&problem, &mut guess) {
                 Ok(wave) => {
@@ -203,7 +220,7 @@ impl StationaryStudy {
                         (domain.behind, domain.ahead) = (-wave.s[0], *wave.s.last().unwrap_or(&domain.ahead));
                     }
                     let mut point = StationaryPoint::of(&wave);
-                    if estimate == ErrorEstimate::Halving && wave.convergence.is_converged() {
+                    if estimate == ErrorEstimate::Halving && wave.convergence.is_converged() && !stopped() {
                         point.discretisation_error = peak_errors(&problem, &wave)?;
                     }
                     points.push(point);

@@ -109,3 +109,19 @@ fn titles_name_the_train_and_speed_that_ran() {
         assert!(svg.contains("at 80.00 m/s (288 km/h); friction: none"), "{figure}: subtitle");
     }
 }
+
+/// A sweep warns what a run at its speeds warns: the example deck's 0.05 m load advance resolves its 93.5 Hz only
+/// above ~94 m/s; `run --speed 20` said so, a sweep from 20 m/s did not (it checked the scenario's own 100 m/s).
+#[test]
+fn a_sweep_warns_what_a_run_at_its_slowest_speed_warns() {
+    let deck = concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/hslm-bridge.toml");
+    let run = frictrack(&["run", deck, "--speed", "20"]);
+    let warned = String::from_utf8_lossy(&run.stderr).lines().find(|l| l.contains("load_advance")).unwrap().to_string();
+    let sweep = frictrack(&["sweep", deck, "--speeds", "20:100:40", "--quiet"]);
+    assert!(sweep.status.success());
+    assert!(String::from_utf8_lossy(&sweep.stderr).contains(&warned), "{}", String::from_utf8_lossy(&sweep.stderr));
+    // The study's deck-track option is checked before anything runs.
+    let bad = frictrack(&["study", "hslm", "--scenario", deck, "--deck-track", "slab", "--out", "/nonexistent/x"]);
+    assert_eq!(bad.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("direct-fastening"));
+}

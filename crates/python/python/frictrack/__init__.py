@@ -109,12 +109,14 @@ def run(scenario: ScenarioLike = None, **overrides: Any) -> Run:
 
 
 class Sweep(Table):
-    """A sweep's table (``frictrack sweep``'s CSV: one row per speed, SI units in ``units``) and its ``failures``,
-    (speed m/s, error) for each run that failed (its row is NaN)."""
+    """A sweep's table (``frictrack sweep``'s CSV: one row per speed, SI units in ``units``), its ``failures``,
+    (speed m/s, error) for each run that failed (its row is NaN), and its ``warnings``, what the command line warns
+    for the runs at the lowest and highest speed (e.g. a load advance too coarse there)."""
 
-    def __init__(self, table: Table, failures: "list[tuple[float, str]]") -> None:
+    def __init__(self, table: Table, failures: "list[tuple[float, str]]", warnings: "list[str]") -> None:
         super().__init__(table.data, table.units)
         self.failures = failures
+        self.warnings = warnings
 
 
 def sweep(scenario: ScenarioLike = None, speeds: Sequence[float] = (), jobs: Optional[int] = None,
@@ -124,8 +126,11 @@ def sweep(scenario: ScenarioLike = None, speeds: Sequence[float] = (), jobs: Opt
     leaves a NaN row and is listed in ``failures``; the others are kept. The scenario and overrides are as for
     :func:`run`."""
     kind, text = _source(scenario)
-    csv, failures = _native.sweep(kind, text, [float(v) for v in speeds], int(jobs or 0), list(overrides.items()))
-    return Sweep(parse_csv(csv, dict(_native.sweep_columns())), [(float(v), str(e)) for v, e in failures])
+    csv, failures, warnings = _native.sweep(
+        kind, text, [float(v) for v in speeds], int(jobs or 0), list(overrides.items())
+    )
+    return Sweep(parse_csv(csv, dict(_native.sweep_columns())), [(float(v), str(e)) for v, e in failures],
+                 list(warnings))
 
 
 def analytic(scenario: ScenarioLike = None, speeds: Sequence[float] = (), damping_ratio: Optional[float] = None,

@@ -46,9 +46,11 @@ class Run:
     def losses(self) -> Optional[Table]: ...
 
 class Sweep(Table):
-    """`frictrack sweep`'s CSV as a table (one row per speed) and the failed runs (speed m/s, error)."""
+    """`frictrack sweep`'s CSV as a table (one row per speed), the failed runs (speed m/s, error) and the warnings
+    for the swept speeds."""
 
     failures: List[Tuple[float, str]]
+    warnings: List[str]
 
 def run(
     scenario: ScenarioLike = None,

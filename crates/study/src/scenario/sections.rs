@@ -375,7 +375,7 @@ impl SweepSection {
         if !(step.is_finite() && step > 0.0) {
             return Err(invalid(&format!("{path}.step"), step, "must be finite and > 0 (m/s)"));
         }
-        if (to - from) / step > 1e6 {
+        if (to - from) / step > crate::speeds::MAX_SPEEDS as f64 {
             return Err(invalid(&format!("{path}.step"), step, "gives more than a million speeds"));
         }
         Ok(())
