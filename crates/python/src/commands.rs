@@ -49,7 +49,7 @@ pub(crate) fn stationary_wave(
     speeds: Vec<f64>,
     domain: (f64, f64, f64),
     keywords: Vec<(String, Bound<'_, PyAny>)>,
-) -> PyResult<(String, Vec<(f64, String)>, Vec<String>)> {
+) -> PyResult<StationaryTexts> {
     study::speeds::check_count("speeds", speeds.len()).map_err(to_python)?;
     let scenario = overrides(&keywords)?.apply(Source::of(kind, text)?.read()?);
     let (behind, ahead, element_length) = domain;
@@ -60,6 +60,9 @@ pub(crate) fn stationary_wave(
     let waves = study.waves.iter().flatten().map(|w| (w.speed, wave_csv(w))).collect();
     Ok((json(&study.points)?, waves, study.warnings()))
 }
+
+/// The stationary points (JSON), each found wave's CSV by speed, and the warnings.
+type StationaryTexts = (String, Vec<(f64, String)>, Vec<String>);
 
 /// A study's summary (JSON), CSV, headline, lines and CSV columns with their units.
 type StudyTexts = (String, String, Vec<String>, Vec<String>, Vec<(String, String)>);
