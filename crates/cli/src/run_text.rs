@@ -96,13 +96,14 @@ fn print_soil(s: &study::soil_output::SoilSummary) {
         "  soil: {} (k_c = {:.4e} N/m², {tension}), {} sections, {weight}",
         s.law, s.compression_stiffness, s.sections
     );
+    let [a, b] = s.read_region;
     match (s.largest_gap_position, s.largest_gap_time) {
         (Some(x), Some(t)) => {
             let zones = s.lift_off_zones.len();
             let first = s.lift_off_zones.iter().map(|z| z.first_time).fold(f64::INFINITY, f64::min);
             println!(
-                "    the rail lifted off the soil over {} of its sections in {zones} zone{} (first at t = {first:.4} s); \
-                 largest gap {:.3} mm at x = {x:.1} m, t = {t:.4} s",
+                "    where the results are read (x = {a:.1}–{b:.1} m) the rail lifted off the soil over {} sections in \
+                 {zones} zone{} (first at t = {first:.4} s); largest gap {:.3} mm at x = {x:.1} m, t = {t:.4} s",
                 s.lifted_sections,
                 if zones == 1 { "" } else { "s" },
                 s.largest_gap * 1e3
@@ -121,7 +122,17 @@ fn print_soil(s: &study::soil_output::SoilSummary) {
                 println!("      … {} more zones in the JSON summary (`--format json`)", zones - MAX_ZONES_LISTED);
             }
         }
-        _ => println!("    the rail stayed on the soil throughout"),
+        _ => println!("    where the results are read (x = {a:.1}–{b:.1} m) the rail stayed on the soil"),
+    }
+    if let Some(end) = s.end_effect_zones.iter().max_by(|p, q| p.largest_gap.total_cmp(&q.largest_gap)) {
+        println!(
+            "    outside it, end effects (the supports, absorbing zones, the load's entry and exit — not the response \
+             of a long track): {} zone{}, largest gap {:.3} mm at x = {:.1} m",
+            s.end_effect_zones.len(),
+            if s.end_effect_zones.len() == 1 { "" } else { "s" },
+            end.largest_gap * 1e3,
+            end.largest_gap_position
+        );
     }
     println!(
         "    soil work on the rail {:.4e} J, energy its springs hold at the end {:.4e} J",

@@ -208,7 +208,12 @@ impl RunSummary {
                 let contact = settings.moving.load.vehicles().map_or("", VehicleSettings::contact_name);
                 crate::vehicle_output::VehicleReport::of(v, contact)
             }),
-            soil: crate::soil_output::SoilSummary::of(&case.model, scenario.foundation.self_weight, result),
+            soil: crate::soil_output::SoilSummary::of(&case.model, scenario.foundation.self_weight, result, {
+                let length = case.model.mesh().length;
+                let (a, b) =
+                    scenario.output.extremes_nodes.map_or(scenario.output.extremes_window(length), |[a, b]| (a, b));
+                [a, b]
+            }),
         })
     }
 }

@@ -23,28 +23,37 @@ pub struct SoilSummary {
     pub soil_work: f64,
     /// Energy its springs hold at the end (J, from the soil's surface: includes the self-weight's settlement).
     pub soil_energy: f64,
-    /// Sections that lifted off at some time.
+    /// Sections that lifted off at some time where the results are read.
     pub lifted_sections: usize,
-    /// The largest gap between rail and soil over the run (m), 0 if the rail never left it.
+    /// The largest gap between rail and soil over the run where the results are read (m), 0 if the rail never left
+    /// the soil there.
     pub largest_gap: f64,
     /// Where it was (m), if the rail lifted.
     pub largest_gap_position: Option<f64>,
     /// When (s).
     pub largest_gap_time: Option<f64>,
-    /// The zones of neighbouring sections that lifted, in order of x.
+    /// The zones of neighbouring sections that lifted where the results are read, in order of x (the largest gap
+    /// above is theirs).
     pub lift_off_zones: Vec<LiftOffZone>,
+    /// Where the results are read (m): `[output] extremes_nodes`, else the extremes window of load positions.
+    pub read_region: [f64; 2],
+    /// The zones wholly outside that region: end effects of the supports, the absorbing zones and the load's entry
+    /// and exit, not the response of a long track.
+    pub end_effect_zones: Vec<LiftOffZone>,
 }
 
 impl SoilSummary {
-    /// The soil of `model` under `result`; None on a linear foundation.
-    pub fn of(model: &fem_beam::BeamModel, self_weight: bool, result: &RunResult) -> Option<Self> {
+    /// The soil of `model` under `result`, its lift-off read over `read` = [a, b] (m); None on a linear foundation.
+    pub fn of(model: &fem_beam::BeamModel, self_weight: bool, result: &RunResult, read: [f64; 2]) -> Option<Self> {
         let lift = result.lift_off.as_ref()?;
         let foundation = model.foundation();
         if foundation.law.is_linear() {
             return None;
         }
         let law = foundation.law.name();
-        let largest = lift.largest();
+        let (zones, ends): (Vec<LiftOffZone>, Vec<LiftOffZone>) =
+            lift.zones.iter().cloned().partition(|z| z.to >= read[0] && z.from <= read[1]);
+        let largest = zones.iter().max_by(|a, b| a.largest_gap.total_cmp(&b.largest_gap));
         let settlement = match self_weight && foundation.stiffness > 0.0 {
             true => model.beam().mass_per_length() * track::foundation_layout::GRAVITY / foundation.stiffness,
             false => 0.0,
@@ -57,11 +66,13 @@ impl SoilSummary {
             sections: lift.sections,
             soil_work: result.energy.support_work,
             soil_energy: result.energy.spring_energy,
-            lifted_sections: lift.lifted_sections(),
+            lifted_sections: zones.iter().map(|z| z.sections).sum(),
             largest_gap: largest.map_or(0.0, |z| z.largest_gap),
             largest_gap_position: largest.map(|z| z.largest_gap_position),
             largest_gap_time: largest.map(|z| z.largest_gap_time),
-            lift_off_zones: lift.zones.clone(),
+            lift_off_zones: zones,
+            read_region: read,
+            end_effect_zones: ends,
         })
     }
 }
