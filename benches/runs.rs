@@ -210,8 +210,28 @@ fn vehicle_on_ballast_friction(c: &mut Criterion) {
     group.finish();
 }
 
+/// Projection chosen for the reference track's 800 ballast sections (10 kN/m, 10 m/s, 2000 steps), where
+/// Gauss–Seidel stalls: handed over to the interior point after 3 failures (nscd::fallback; ~45 min a run before,
+/// every step ground through 20 000 sweeps), beside the interior point chosen.
+fn projection_handed_over(c: &mut Criterion) {
+    let model = uic60_on_soft_soil().model().unwrap();
+    let interactions = DistributedFriction::new(10e3).interactions(&model).unwrap();
+    let mut group = c.benchmark_group("projection_on_distributed_friction");
+    group.sample_size(10).warm_up_time(Duration::from_secs(1)).measurement_time(Duration::from_secs(10));
+    for kind in [nscd::SolverKind::Projection, nscd::SolverKind::InteriorPoint] {
+        let mut settings = RunSettings::default();
+        settings.moving.speed = 10.0;
+        settings.integration.solver.kind = kind;
+        group.bench_function(BenchmarkId::from_parameter(kind.name()), |b| {
+            b.iter(|| Simulation::new(&model, black_box(&interactions), &settings).unwrap().run().unwrap())
+        });
+    }
+    group.finish();
+}
+
 criterion_group!(
     benches,
+    projection_handed_over,
     whole_runs,
     friction_free_against_bare_solves,
     scaling,

@@ -52,6 +52,23 @@ fn sweeps(c: &mut Criterion) {
             })
         });
     }
+    // What `frictrack stationary` adds to each wave: the same problem on halved elements, started from the wave, for
+    // the peaks' discretisation error (stationary::refine).
+    for (name, base) in [
+        ("bilinear_half_with_error_estimate", problem(FoundationLaw::Bilinear { tension_ratio: 0.5 })),
+        ("friction_2kN_per_m_with_error_estimate", friction(2e3)),
+    ] {
+        group.bench_function(name, |b| {
+            b.iter(|| {
+                let mut guess = ContactGuess::default();
+                for i in 1..=100 {
+                    let p = StationaryProblem { speed: 3.0 * i as f64, ..base };
+                    let wave = solve_from(&p, &mut guess).unwrap();
+                    black_box(stationary::solve_halved(&p, &wave).unwrap());
+                }
+            })
+        });
+    }
     group.finish();
 }
 

@@ -187,3 +187,12 @@ def test_a_sweep_warns_what_a_run_at_its_speeds_warns():
     run = frictrack.run(bridge, speed=20.0)
     coarse = [w for w in run.warnings if "load_advance" in w]
     assert coarse and coarse[0] in sweep.warnings, (run.warnings, sweep.warnings)
+
+
+def test_speeds_may_be_one_number_and_bad_speeds_name_themselves():
+    """`stationary(speeds=200)` raised a bare TypeError ('int' object is not iterable)."""
+    one = frictrack.stationary(None, speeds=200)
+    assert [p["speed"] for p in one.points] == [200.0]
+    assert [p["speed"] for p in frictrack.analytic(None, 150)] == [150.0]
+    with pytest.raises(frictrack.InputError, match="invalid speeds = 'fast'"):
+        frictrack.sweep(None, "fast")

@@ -51,6 +51,20 @@ def _source(scenario: ScenarioLike) -> "tuple[str, Optional[str]]":
     raise TypeError(f"scenario must be None, a path, a TOML string or a dict, not {type(scenario).__name__}")
 
 
+def _speeds(speeds: "Union[float, Sequence[float]]") -> "list[float]":
+    """Speeds (m/s) as a list: one number or any iterable of numbers; anything else is an InputError naming it."""
+    if isinstance(speeds, (int, float)) and not isinstance(speeds, bool):
+        return [float(speeds)]
+    try:
+        if isinstance(speeds, (str, bytes, bool)):
+            raise TypeError
+        return [float(v) for v in speeds]
+    except (TypeError, ValueError):
+        raise InputError(
+            f"invalid speeds = {speeds!r}: must be a speed in m/s or a sequence of them, e.g. 200.0 or [100.0, 200.0]"
+        ) from None
+
+
 class Run:
     """One run's results.
 
@@ -127,7 +141,7 @@ def sweep(scenario: ScenarioLike = None, speeds: Sequence[float] = (), jobs: Opt
     :func:`run`."""
     kind, text = _source(scenario)
     csv, failures, warnings = _native.sweep(
-        kind, text, [float(v) for v in speeds], int(jobs or 0), list(overrides.items())
+        kind, text, _speeds(speeds), int(jobs or 0), list(overrides.items())
     )
     return Sweep(parse_csv(csv, dict(_native.sweep_columns())), [(float(v), str(e)) for v, e in failures],
                  list(warnings))
@@ -140,7 +154,7 @@ def analytic(scenario: ScenarioLike = None, speeds: Sequence[float] = (), dampin
     analytic --format json`` (deflections m, moments N·m, as magnitudes). Undamped within 1 % of the critical speed
     a ``UserWarning`` says the number is the undamped resonance, which grows without bound there."""
     kind, text = _source(scenario)
-    points, warnings = _native.analytic(kind, text, [float(v) for v in speeds], damping_ratio, train)
+    points, warnings = _native.analytic(kind, text, _speeds(speeds), damping_ratio, train)
     for warning in warnings:
         _warnings.warn(warning, stacklevel=2)
     return json.loads(points)
@@ -167,7 +181,7 @@ def stationary(scenario: ScenarioLike = None, speeds: Sequence[float] = (), doma
     kind, text = _source(scenario)
     behind, ahead = (float(x) for x in domain)
     points, waves, warnings = _native.stationary(
-        kind, text, [float(v) for v in speeds], (behind, ahead, float(element_length)), list(overrides.items())
+        kind, text, _speeds(speeds), (behind, ahead, float(element_length)), list(overrides.items())
     )
     return Stationary(json.loads(points), {float(v): parse_csv(csv, None) for v, csv in waves}, list(warnings))
 

@@ -76,7 +76,7 @@ def run(
 
 def sweep(
     scenario: ScenarioLike = None,
-    speeds: Sequence[float] = ...,
+    speeds: Union[float, Sequence[float]] = ...,
     jobs: Optional[int] = None,
     **overrides: Any,
 ) -> Sweep:
@@ -84,7 +84,7 @@ def sweep(
 
 def analytic(
     scenario: ScenarioLike = None,
-    speeds: Sequence[float] = ...,
+    speeds: Union[float, Sequence[float]] = ...,
     damping_ratio: Optional[float] = None,
     train: Optional[str] = None,
 ) -> List[Dict[str, Any]]:
@@ -101,7 +101,7 @@ class Stationary:
 
 def stationary(
     scenario: ScenarioLike = None,
-    speeds: Sequence[float] = ...,
+    speeds: Union[float, Sequence[float]] = ...,
     domain: Sequence[float] = (60.0, 60.0),
     element_length: float = 0.25,
     **overrides: Any,
