@@ -101,13 +101,10 @@ pub enum Palette {
     /// One distinct colour per configuration ([`color`]): 0 = no friction, black.
     #[default]
     Categorical,
-    /// An ordered family of `count` members (e.g. HSLM-A1 … A10, coach length rising): index i < count takes the
-    /// sequential map at i/(count − 1), dark blue to green ([`sequential`]); indices from `count` on take the
-    /// categorical colour of i − count (so `count` is black and `count + 7` grey, for reference lines).
-    Sequential {
-        /// Members of the family.
-        count: usize,
-    },
+    /// Ten members told apart by hue (Tableau 10, matplotlib's default cycle; [`TEN`]), e.g. HSLM-A1 … A10 drawn
+    /// together: a sequential map left neighbours alike (A5 … A8) and seven colours made three trains repeat. Indices
+    /// from 10 on take the categorical colour of i − 10.
+    Ten,
 }
 
 impl Palette {
@@ -115,8 +112,11 @@ impl Palette {
     pub fn color(self, i: usize) -> RGBColor {
         match self {
             Palette::Categorical => color(i),
-            Palette::Sequential { count } if i < count => sequential(i as f64 / (count.max(2) - 1) as f64),
-            Palette::Sequential { count } => color(i - count),
+            Palette::Ten if i < TEN.len() => {
+                let (r, g, b) = TEN[i];
+                RGBColor(r, g, b)
+            }
+            Palette::Ten => color(i - TEN.len()),
         }
     }
 }
@@ -175,34 +175,24 @@ const PALETTE: [(u8, u8, u8); 8] = [
     (128, 128, 128),
 ];
 
+/// Tableau 10: blue, orange, green, red, purple, brown, pink, grey, olive, cyan.
+const TEN: [(u8, u8, u8); 10] = [
+    (31, 119, 180),
+    (255, 127, 14),
+    (44, 160, 44),
+    (214, 39, 40),
+    (148, 103, 189),
+    (140, 86, 75),
+    (227, 119, 194),
+    (127, 127, 127),
+    (188, 189, 34),
+    (23, 190, 207),
+];
+
 /// The colour of index `i` (cycling through the palette).
 pub fn color(i: usize) -> RGBColor {
     let (r, g, b) = PALETTE[i % PALETTE.len()];
     RGBColor(r, g, b)
-}
-
-/// Viridis (Smith & van der Walt 2015, perceptually uniform, legible in grey and for colour-blind readers) from
-/// 0 to about 0.8 of its range at nine anchors: its last, yellow, part vanishes on white.
-const VIRIDIS: [(u8, u8, u8); 9] = [
-    (68, 1, 84),
-    (72, 36, 117),
-    (64, 67, 135),
-    (52, 94, 141),
-    (41, 120, 142),
-    (32, 144, 140),
-    (34, 167, 132),
-    (68, 190, 112),
-    (121, 209, 81),
-];
-
-/// The sequential colour at `t` ∈ [0, 1] (clamped): linear interpolation between the anchors of `VIRIDIS`.
-pub fn sequential(t: f64) -> RGBColor {
-    let x = t.clamp(0.0, 1.0) * (VIRIDIS.len() - 1) as f64;
-    let k = (x.floor() as usize).min(VIRIDIS.len() - 2);
-    let f = x - k as f64;
-    let mix = |a: u8, b: u8| (f64::from(a) + f * (f64::from(b) - f64::from(a))).round() as u8;
-    let (a, b) = (VIRIDIS[k], VIRIDIS[k + 1]);
-    RGBColor(mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
 }
 
 const SIZE: (u32, u32) = (1200, 800);

@@ -91,7 +91,26 @@ fn on_a_span_the_critical_speeds_are_the_resonance_speeds() {
     assert!(cut < 0.6, "friction keeps {cut} of the peak");
     assert!(number(&none["acceleration_over_limit"]) > 1.0 && number(&with["acceleration_over_limit"]) < 1.0);
     assert!(number(&with["dynamic_amplification"]) < 1.1);
+    // The deck check: each curve's verdict is its refined peak against the ballasted deck's 3.5 m/s²; 7 trains fail
+    // without friction (A2 and A10 among them, which a 10 km/h grid passed), none with the devices.
+    assert_eq!((number(&summary["acceleration_limit"]), summary["deck_track"].as_str()), (3.5, Some("ballasted")));
+    for c in curves {
+        let over = number(&c["peak_max_acceleration"]) > 3.5;
+        assert_eq!(c["deck_verdict"] == "over", over, "{c}");
+    }
+    assert_eq!(none["trains_over_limit"].as_array().unwrap().len(), 7);
+    assert!(none["trains_over_limit"].as_array().unwrap().iter().any(|t| t == "hslm-a10"));
+    assert!(with["trains_over_limit"].as_array().unwrap().is_empty());
+    assert!(data.lines.iter().any(|l| l.starts_with("HSLM-A2 ") && l.contains("deck check FAILS")));
+    assert!(data.headline[0].contains("7 of the ten trains fail"), "{}", data.headline[0]);
     assert_eq!(data.plots.len(), 6);
+    // The per-train figures draw the ten trains in ten hues.
+    for spec in data.plots.iter().filter(|p| p.stem.starts_with("hslm-deflection") || p.stem.starts_with("hslm-acc")) {
+        assert_eq!(spec.palette, study::plot::Palette::Ten, "{}", spec.stem);
+        let mut colours: Vec<usize> = spec.series.iter().filter(|s| s.label.is_some()).map(|s| s.color).collect();
+        colours.dedup();
+        assert_eq!(colours, (0..10).collect::<Vec<_>>(), "{}", spec.stem);
+    }
     // A deck carries whole axles, and the study says so.
     assert_eq!(summary["axle_share"]["carries"], "whole-axle");
 }

@@ -1,11 +1,11 @@
 //! The figures of the HSLM study ([`super::hslm`]), speeds in km/h as the field reads them: per friction set-up the
-//! ten trains' max downward deflection and max acceleration (seven colours, solid then dashed, with each train's
+//! ten trains' max downward deflection and max acceleration (ten hues, with each train's
 //! resonance speeds f₁·D/i marked on its curve), and the envelopes over the trains with and without
 //! friction, the critical train and speed marked, the static envelope and — on a span — the EN 1990 acceleration
 //! limit drawn for reference.
 
 use super::hslm::{KMH, Results, TrainCurve, coach_length, millimetres};
-use crate::plot::{Mark, PlotSpec, Series, Stroke};
+use crate::plot::{Mark, Palette, PlotSpec, Series, Stroke};
 use crate::sweep::SweepPoint;
 
 const SPEED_AXIS: &str = "train speed v (km/h)";
@@ -30,12 +30,9 @@ pub(super) fn interpolate(points: &[SweepPoint], speed: f64, value: fn(&SweepPoi
     value(a) + t * (value(b) - value(a))
 }
 
-/// The colour and stroke of HSLM-A`k`: ten trains in seven categorical colours (grey is kept for reference lines),
-/// solid for A1 … A7 and dashed for A8 … A10, so that no two trains look alike (a sequential palette made A5 … A8
-/// and A9/A10 indistinguishable).
-fn train_style(k: usize) -> (usize, Stroke) {
-    let colours = GREY;
-    ((k - 1) % colours, if k <= colours { Stroke::Solid } else { Stroke::Dashed })
+/// The colour index of HSLM-A`k` in [`Palette::Ten`]: ten trains, ten hues, all solid.
+fn train_colour(k: usize) -> usize {
+    k - 1
 }
 
 /// A horizontal reference line at `y` across the figure's speed range.
@@ -91,8 +88,9 @@ impl Results {
         value: fn(&SweepPoint) -> f64,
     ) -> PlotSpec {
         let mut spec = PlotSpec::new(stem, title, SPEED_AXIS, y_label);
+        spec.palette = Palette::Ten;
         for c in self.set(friction) {
-            let (color, stroke) = train_style(c.train);
+            let (color, stroke) = (train_colour(c.train), Stroke::Solid);
             let points: Vec<(f64, f64)> = c.drawn.iter().map(|p| (p.speed * KMH, value(p))).collect();
             spec.series.push(Series {
                 label: Some(format!("HSLM-A{} (D = {} m)", c.train, coach_length(c.train))),
@@ -163,7 +161,7 @@ impl Results {
     }
 
     /// Envelopes of the max acceleration over the ten trains, the largest refined peak marked, and on a span the
-    /// EN 1990 limit for a ballasted deck.
+    /// EN 1990 limit of the deck's track.
     fn acceleration_envelope(&self) -> PlotSpec {
         let axis = self.axis(ACCELERATION_AXIS, "m/s²");
         let titles = ("hslm-envelope-acceleration", "HSLM-A1 … A10: envelope of the max acceleration", axis.as_str());
@@ -171,30 +169,39 @@ impl Results {
             let c = self.acceleration_critical(friction);
             let p = &c.acceleration;
             let text = format!(
-                "{}: HSLM-A{} at {:.0} km/h, {:.2} m/s²",
+                "{}: HSLM-A{} at {}{:.0} km/h, {:.2} m/s²",
                 self.friction_label(friction),
                 c.train,
+                bound_sign(p.location),
                 p.speed * KMH,
                 p.value
             );
             ((p.speed * KMH, p.value), text)
         };
-        let mut spec = self.envelope_figure(titles, acceleration, &critical, "refined peak");
+        // A largest value at an end of the range is a bound, not a refined peak: the legend says which it is.
+        let bounded = (0..2).any(|f| !self.acceleration_critical(f).acceleration.is_interior());
+        let label = if bounded { "largest value (≥: a bound at the range's end)" } else { "refined peak" };
+        let mut spec = self.envelope_figure(titles, acceleration, &critical, label);
         if let Some(limit) = self.acceleration_limit {
-            let label = format!("EN 1990 limit {} m/s², {}", limit.value, limit.track.describe());
+            let label = format!("EN 1990 limit {} m/s², {}", limit.value, limit.track.name());
             spec.series.push(level(self, label, GREY, limit.value));
         }
         spec
     }
 }
 
-/// "no friction: HSLM-A4 at 331 km/h, 1.42 mm", with "≥" / "≤" for a bound at an end of the range.
-fn describe(c: &TrainCurve, label: String) -> String {
-    let bound = match c.critical.location {
+/// "≥ " / "≤ " before the speed of a bound at the upper / lower end of the range, nothing for an interior peak.
+fn bound_sign(location: crate::sweep::PeakLocation) -> &'static str {
+    match location {
         crate::sweep::PeakLocation::Interior => "",
         crate::sweep::PeakLocation::LowerEnd => "≤ ",
         crate::sweep::PeakLocation::UpperEnd => "≥ ",
-    };
+    }
+}
+
+/// "no friction: HSLM-A4 at 331 km/h, 1.42 mm", with "≥" / "≤" for a bound at an end of the range.
+fn describe(c: &TrainCurve, label: String) -> String {
+    let bound = bound_sign(c.critical.location);
     format!(
         "{label}: HSLM-A{} at {bound}{:.0} km/h, {}",
         c.train,
