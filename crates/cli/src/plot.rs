@@ -43,8 +43,17 @@ fn sweep_file(path: &Path) -> Result<Vec<String>> {
         return Err(study::error::invalid(&path.display().to_string(), "no finished run", "nothing to draw").into());
     }
     let stem = path.file_stem().map_or("sweep".into(), |s| s.to_string_lossy().into_owned());
-    let title = title_in(&crate::files::metadata_beside(path)).unwrap_or_else(|| stem.clone());
-    let plots = study::sweep_figures::sweep_plots(&points, &stem, &title, None);
+    // The scenario and the refined critical speed from the JSON `sweep --out` wrote beside the CSV, where there is one
+    // (a merged shard's CSV has none: its figures name no case and mark no critical speed).
+    let metadata: Option<serde_json::Value> = std::fs::read_to_string(crate::files::metadata_beside(path))
+        .ok()
+        .and_then(|text| serde_json::from_str(&text).ok());
+    let scenario =
+        metadata.as_ref().and_then(|m| serde_json::from_value::<study::Scenario>(m["scenario"].clone()).ok());
+    let critical = metadata
+        .as_ref()
+        .and_then(|m| serde_json::from_value::<study::CriticalSpeed>(m["critical_speed"]["result"].clone()).ok());
+    let plots = study::sweep_figures::sweep_plots(&points, &stem, scenario.as_ref(), critical.as_ref());
     write_figures(&plots, path.parent().unwrap_or(Path::new(".")))
 }
 

@@ -174,8 +174,7 @@ fn write_files(
     // The swept metrics against speed, beside the CSV (a shard's few speeds are drawn by `plot` after merge).
     if whole && points.len() >= 2 {
         let stem = path.file_stem().map_or("sweep".into(), |s| s.to_string_lossy().into_owned());
-        let title = if scenario.title.is_empty() { stem.clone() } else { scenario.title.clone() };
-        let plots = study::sweep_figures::sweep_plots(points, &stem, &title, critical);
+        let plots = study::sweep_figures::sweep_plots(points, &stem, Some(scenario), critical);
         crate::files::write_figures(&plots, path.parent().unwrap_or(std::path::Path::new(".")))?;
     }
     let vehicle_columns = study::sweep::VEHICLE_CSV_COLUMNS.iter().filter(|_| scenario.vehicle.is_some());

@@ -6,6 +6,7 @@
 use crate::error::Result;
 use crate::figures::{DeflectionCurve, deflection_figure, quantity_figure};
 use crate::plot::PlotSpec;
+use crate::scenario::Scenario;
 use crate::sweep::{CSV_COLUMNS, CriticalSpeed, SweepPoint, VEHICLE_CSV_COLUMNS, VehicleColumns};
 use crate::tables::Table;
 
@@ -15,9 +16,51 @@ pub const FIGURE_SUFFIXES: [&str; 5] = ["deflection", "acceleration", "energy", 
 /// The x-axis of every sweep figure.
 const SPEED_AXIS: &str = "load speed v (m/s)";
 
+/// What a sweep figure says of its case under the title, so that it reads alone in a report: the load, the soil
+/// with its damping, the friction — "F = 83.4 kN; k_f = 250 kN/m², undamped; friction: 31 devices × 50 kN".
+pub fn case_line(s: &Scenario) -> String {
+    let load = match &s.load.train {
+        Some(train) => format!("train {train}"),
+        None if s.vehicle.is_some() => "vehicles".to_string(),
+        None => format!("F = {} kN", crate::number::significant(s.load.force / 1e3, 4)),
+    };
+    let f = &s.foundation;
+    let soil = match (f.stiffness > 0.0, f.damping, f.damping_ratio) {
+        (false, _, _) => "no foundation (a span)".to_string(),
+        (true, Some(c), _) if c > 0.0 => format!("k_f = {} kN/m², c_f = {c} N·s/m²", f.stiffness / 1e3),
+        (true, _, Some(z)) if z > 0.0 => format!("k_f = {} kN/m², ζ = {z}", f.stiffness / 1e3),
+        (true, _, _) => format!("k_f = {} kN/m², undamped", f.stiffness / 1e3),
+    };
+    let mut friction = Vec::new();
+    if let Some(d) = &s.friction.devices {
+        let count = d.count.or(d.positions.as_ref().map(Vec::len)).unwrap_or(0);
+        friction.push(format!("{count} devices × {} kN", d.force.unwrap_or(f64::NAN) / 1e3));
+    }
+    if let Some(d) = &s.friction.distributed {
+        friction.push(format!("f_u = {} kN/m", d.force_per_length / 1e3));
+    }
+    let friction = if friction.is_empty() { "none".to_string() } else { friction.join(" + ") };
+    format!("{load}; {soil}; friction: {friction}")
+}
+
 /// The figures of `points` (in speed order), named `{stem}-deflection`, `{stem}-acceleration`, `{stem}-energy`,
-/// `{stem}-wheel-forces`, `{stem}-body-acceleration`; `title` heads each; an interior `critical` speed is marked.
-pub fn sweep_plots(points: &[SweepPoint], stem: &str, title: &str, critical: Option<&CriticalSpeed>) -> Vec<PlotSpec> {
+/// `{stem}-wheel-forces`, `{stem}-body-acceleration`; headed by the scenario's title (else "speed sweep") and
+/// [`case_line`] where the scenario is known; an interior `critical` speed is marked and its refinement runs drawn.
+pub fn sweep_plots(
+    points: &[SweepPoint],
+    stem: &str,
+    scenario: Option<&Scenario>,
+    critical: Option<&CriticalSpeed>,
+) -> Vec<PlotSpec> {
+    let title = match scenario.map(|s| s.title.as_str()).filter(|t| !t.is_empty()) {
+        Some(t) => t.to_string(),
+        None => "speed sweep".to_string(),
+    };
+    let case = scenario.map(case_line);
+    let with_case = |first: &str| match &case {
+        Some(c) => format!("{c}; {first}"),
+        None => first.to_string(),
+    };
     // Markers where the points are few enough to tell apart (the renderer drops them past its own limit).
     let markers = points.len() <= crate::plot::MAX_MARKED_POINTS;
     let series = |value: &dyn Fn(&SweepPoint) -> f64| points.iter().map(|p| (p.speed, value(p))).collect::<Vec<_>>();
@@ -45,12 +88,26 @@ pub fn sweep_plots(points: &[SweepPoint], stem: &str, title: &str, critical: Opt
                 optimum: None,
             },
         ],
-        "refined critical speed",
+        &match critical.filter(|c| c.is_interior()) {
+            Some(c) => format!("refined critical speed {:.1} m/s, {:.0} mm", c.speed, c.max_downward_deflection * 1e3),
+            None => "refined critical speed".to_string(),
+        },
     );
-    deflection.subtitle = "downward solid, upward dashed".into();
+    deflection.subtitle = with_case("downward solid, upward dashed");
     let mut plots = vec![deflection];
     let quantity = |name: &str, what: &str, y: &str, curves| {
-        quantity_figure(&format!("{stem}-{name}"), &format!("{title}: {what} vs speed"), SPEED_AXIS, y, curves, markers)
+        let mut spec = quantity_figure(
+            &format!("{stem}-{name}"),
+            &format!("{title}: {what} vs speed"),
+            SPEED_AXIS,
+            y,
+            curves,
+            markers,
+        );
+        if let Some(c) = &case {
+            spec.subtitle = c.clone();
+        }
+        spec
     };
     plots.push(quantity(
         "acceleration",

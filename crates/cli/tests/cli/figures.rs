@@ -26,7 +26,11 @@ fn a_sweep_draws_its_figures_and_plot_draws_them_again() {
     // The refined critical speed's runs are drawn: the deflection curve has more points than the 5 speeds.
     let svg = std::fs::read_to_string(dir.join("dist-deflection.svg")).unwrap();
     assert!(svg.contains("max deflection vs speed") && svg.contains("refined critical speed"));
+    // Titled as a sweep, not by the file's stem, and the case named under the title: the figure reads alone.
+    assert!(svg.contains("speed sweep: max deflection") && !svg.contains("dist:"), "title");
+    assert!(svg.contains("F = 83.4 kN; k_f = 250 kN/m², undamped; friction: fᵤ = 2 kN/m"), "subtitle");
     let drawn = std::fs::read(dir.join("dist-acceleration.svg")).unwrap();
+    let deflection = std::fs::read(dir.join("dist-deflection.svg")).unwrap();
     for f in figures {
         std::fs::remove_file(dir.join(format!("{f}.svg"))).unwrap();
     }
@@ -34,6 +38,8 @@ fn a_sweep_draws_its_figures_and_plot_draws_them_again() {
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     assert!(String::from_utf8_lossy(&out.stdout).contains("dist-energy.png/.svg"));
     assert_eq!(std::fs::read(dir.join("dist-acceleration.svg")).unwrap(), drawn, "the same figure from the CSV");
+    // The refined critical speed, its runs and the case come back from the JSON beside the CSV: the same figure.
+    assert_eq!(std::fs::read(dir.join("dist-deflection.svg")).unwrap(), deflection, "critical speed redrawn");
 
     // A run folder: the histories and snapshots figures again, to the byte.
     let run = dir.join("run");

@@ -10,7 +10,7 @@ use serde::Serialize;
 
 /// The refined critical speed of a configuration, or the bound the sweep gives when its maximum lies at an end of
 /// the range.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, serde::Deserialize)]
 pub struct CriticalSpeed {
     /// Whether `speed` is a critical speed (interior maximum) or a bound (maximum at an end of the range).
     pub location: PeakLocation,

@@ -16,7 +16,7 @@ use crate::scenario::Case;
 use serde::Serialize;
 
 /// Where the largest value of a sweep lies in its speed range.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, serde::Deserialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum PeakLocation {
     /// Inside the range: a peak, refined between the sweep's neighbours of the maximum.
