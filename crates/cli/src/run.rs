@@ -93,7 +93,7 @@ pub fn run(args: &RunArgs) -> Result<()> {
     bar.finish_and_clear();
     let (result, snapshots) = crate::interrupt::explain(ran, None)?;
     let report = RunSummary::of(&scenario, &case, &result, start.elapsed().as_secs_f64())?;
-    for warning in study::plausibility::result_warnings(&case, &result) {
+    for warning in study::plausibility::result_warnings(&case, &report) {
         eprintln!("warning: {warning}");
     }
     match args.format {

@@ -102,10 +102,11 @@ fn print_soil(s: &study::soil_output::SoilSummary) {
             let zones = s.lift_off_zones.len();
             let first = s.lift_off_zones.iter().map(|z| z.first_time).fold(f64::INFINITY, f64::min);
             println!(
-                "    where the results are read (x = {a:.1}–{b:.1} m) the rail lifted off the soil over {} sections in \
-                 {zones} zone{} (first at t = {first:.4} s); largest gap {:.3} mm at x = {x:.1} m, t = {t:.4} s",
-                s.lifted_sections,
+                "    the rail lifted off the soil in {zones} zone{} reaching where the results are read (x = {a:.1}–\
+                 {b:.1} m), over {} sections (first at t = {first:.4} s); largest gap {:.3} mm at x = {x:.1} m, t = \
+                 {t:.4} s",
                 if zones == 1 { "" } else { "s" },
+                s.lifted_sections,
                 s.largest_gap * 1e3
             );
             for z in s.lift_off_zones.iter().take(MAX_ZONES_LISTED) {

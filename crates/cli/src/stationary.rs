@@ -90,7 +90,10 @@ pub fn run(args: &StationaryArgs) -> Result<()> {
         }
     }
     let stop = Some(crate::interrupt::stop_flag());
-    let study = StationaryStudy::of_until(&scenario, &speeds, domain, ErrorEstimate::Halving, stop)?;
+    let bar = crate::progress::bar("stationary", Some(speeds.len() as u64), args.format != StationaryFormat::Text);
+    let progress = |done: usize| bar.set_position(done as u64);
+    let study = StationaryStudy::of_until(&scenario, &speeds, domain, ErrorEstimate::Halving, stop, &progress)?;
+    bar.finish_and_clear();
     for warning in study.warnings() {
         eprintln!("warning: {warning}");
     }

@@ -39,9 +39,10 @@ pub(crate) fn analytic(
 }
 
 /// `frictrack stationary`: the stationary wave at `speeds` (m/s, by continuation) on the domain `behind`:`ahead` (m)
-/// of `element_length` (m): the points as JSON, and each found wave's CSV (speed, text).
+/// of `element_length` (m): the points as JSON, each found wave's CSV (speed, text) and the warnings; `progress`, if
+/// given, is called with the fraction of speeds done.
 #[pyfunction]
-#[pyo3(name = "stationary", signature = (kind, text, speeds, domain, keywords))]
+#[pyo3(name = "stationary", signature = (kind, text, speeds, domain, keywords, progress=None))]
 pub(crate) fn stationary_wave(
     py: Python<'_>,
     kind: &str,
@@ -49,14 +50,18 @@ pub(crate) fn stationary_wave(
     speeds: Vec<f64>,
     domain: (f64, f64, f64),
     keywords: Vec<(String, Bound<'_, PyAny>)>,
+    progress: Option<Bound<'_, PyAny>>,
 ) -> PyResult<StationaryTexts> {
     study::speeds::check_count("speeds", speeds.len()).map_err(to_python)?;
     let scenario = overrides(&keywords)?.apply(Source::of(kind, text)?.read()?);
     let (behind, ahead, element_length) = domain;
     let domain = stationary::Domain { behind, ahead, element_length };
-    let solve =
-        move |stop: &_| StationaryStudy::of_until(&scenario, &speeds, domain, ErrorEstimate::Halving, Some(stop));
-    let study = interruptible::run(py, solve)?.map_err(to_python)?;
+    let total = speeds.len() as f64;
+    let solve = move |stop: &_, told: &interruptible::Progress| {
+        let done = |n: usize| told.set(n as f64 / total);
+        StationaryStudy::of_until(&scenario, &speeds, domain, ErrorEstimate::Halving, Some(stop), &done)
+    };
+    let study = interruptible::run_reporting(py, progress, solve)?.map_err(to_python)?;
     let waves = study.waves.iter().flatten().map(|w| (w.speed, wave_csv(w))).collect();
     Ok((json(&study.points)?, waves, study.warnings()))
 }

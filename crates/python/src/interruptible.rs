@@ -1,26 +1,65 @@
 //! Work that releases the GIL and stops on Ctrl-C: it runs on a worker thread with a stop flag (the library's runs
 //! check it every step), while the caller waits without the GIL and, every [`POLL`], takes it back to let Python
-//! handle its signals; a KeyboardInterrupt raises the flag, waits for the worker to stop and is raised.
+//! handle its signals; a KeyboardInterrupt raises the flag, waits for the worker to stop and is raised. The worker
+//! may tell its progress, which the caller passes to a Python callback as it waits.
 
 use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::sync::{Arc, Condvar, Mutex, PoisonError};
 use std::time::Duration;
 
 /// How often a waiting caller checks Python's signals.
 pub const POLL: Duration = Duration::from_millis(50);
 
+/// How far a worker's job is, as a fraction in [0, 1] (f64 bits in an atomic): set by the worker, read by the
+/// waiting caller.
+#[derive(Debug, Default)]
+pub(crate) struct Progress(AtomicU64);
+
+impl Progress {
+    /// Set the fraction done.
+    pub(crate) fn set(&self, fraction: f64) {
+        self.0.store(fraction.clamp(0.0, 1.0).to_bits(), Ordering::Relaxed);
+    }
+
+    fn get(&self) -> f64 {
+        f64::from_bits(self.0.load(Ordering::Relaxed))
+    }
+}
+
 /// Run `work(stop)` on a worker thread without the GIL; Ctrl-C raises `stop` and KeyboardInterrupt.
 pub(crate) fn run<T: Send + 'static>(
     py: Python<'_>,
     work: impl FnOnce(&AtomicBool) -> T + Send + 'static,
 ) -> PyResult<T> {
+    run_reporting(py, None, move |stop, _| work(stop))
+}
+
+/// As [`run`], with `work` telling its progress, and `report` (a Python callable, if given) called with the fraction
+/// done whenever it changed, every [`POLL`] with the GIL, and with 1.0 at the end; an exception it raises stops the
+/// work and is raised.
+pub(crate) fn run_reporting<T: Send + 'static>(
+    py: Python<'_>,
+    report: Option<Bound<'_, PyAny>>,
+    work: impl FnOnce(&AtomicBool, &Progress) -> T + Send + 'static,
+) -> PyResult<T> {
+    let progress = Arc::new(Progress::default());
+    let mut reported = -1.0;
+    let mut tell = |fraction: f64| -> PyResult<()> {
+        match &report {
+            Some(callback) if fraction != reported => {
+                reported = fraction;
+                callback.call1((fraction,)).map(|_| ())
+            }
+            _ => Ok(()),
+        }
+    };
     let stop = Arc::new(AtomicBool::new(false));
     let done = Arc::new((Mutex::new(None::<T>), Condvar::new()));
-    let (flag, slot) = (Arc::clone(&stop), Arc::clone(&done));
+    let (flag, slot, told) = (Arc::clone(&stop), Arc::clone(&done), Arc::clone(&progress));
     let worker = std::thread::spawn(move || {
-        let result = work(&flag);
+        let result = work(&flag, &told);
         let (lock, ready) = &*slot;
         *lock.lock().unwrap_or_else(PoisonError::into_inner) = Some(result);
         ready.notify_all();
@@ -36,6 +75,7 @@ pub(crate) fn run<T: Send + 'static>(
     loop {
         if let Some(result) = py.detach(|| wait(POLL)) {
             let _ = worker.join();
+            tell(1.0)?;
             return Ok(result);
         }
         if worker.is_finished() {
@@ -52,7 +92,7 @@ pub(crate) fn run<T: Send + 'static>(
                 "frictrack's worker thread failed: {reason} (a bug: please report it with the scenario)"
             )));
         }
-        if let Err(signal) = py.check_signals() {
+        if let Err(signal) = py.check_signals().and_then(|()| tell(progress.get())) {
             stop.store(true, Ordering::Relaxed);
             // The run stops at its next step; its result is dropped.
             let _ = worker.join();

@@ -14,31 +14,37 @@ use study::run_summary::RunSummary;
 /// `snapshots.csv`, `wheels.csv` (None without vehicles) and the warnings the command line prints.
 type RunTexts = (String, String, String, Option<String>, Vec<String>);
 
-/// Run the scenario (`kind` "reference", "path", "toml" or "json" with its `text`) with the keyword `overrides`.
+/// Run the scenario (`kind` "reference", "path", "toml" or "json" with its `text`) with the keyword `overrides`,
+/// telling `progress` (a callable of the fraction done), if given.
 #[pyfunction]
-#[pyo3(signature = (kind, text, keywords))]
+#[pyo3(signature = (kind, text, keywords, progress=None))]
 pub(crate) fn run(
     py: Python<'_>,
     kind: &str,
     text: Option<String>,
     keywords: Vec<(String, Bound<'_, PyAny>)>,
+    progress: Option<Bound<'_, PyAny>>,
 ) -> PyResult<RunTexts> {
     let scenario = Source::of(kind, text)?.read()?;
     let overrides = overrides(&keywords)?;
     let scenario = recording(overrides.apply(scenario));
     let case = scenario.build().map_err(to_python)?;
-    let warnings = study::diagnostics::warnings(&scenario, &case).iter().map(ToString::to_string).collect();
+    let mut warnings: Vec<String> =
+        study::diagnostics::warnings(&scenario, &case).iter().map(ToString::to_string).collect();
     let started = std::time::Instant::now();
-    let outcome = interruptible::run(py, move |stop| {
+    let outcome = interruptible::run_reporting(py, progress, move |stop, told| {
         let requests = snapshot_requests(&scenario, &case);
-        let (result, snapshots) = run_with_snapshots(&case, &requests, Some(stop), &|_| {})?;
+        let (result, snapshots) = run_with_snapshots(&case, &requests, Some(stop), &|f| told.set(f))?;
         let summary = RunSummary::of(&scenario, &case, &result, started.elapsed().as_secs_f64())?;
+        let after: Vec<String> =
+            study::plausibility::result_warnings(&case, &summary).iter().map(ToString::to_string).collect();
         let json = serde_json::to_string_pretty(&summary)
             .map_err(|e| study::error::StudyError::Io { path: "summary".into(), message: e.to_string() })?;
         let wheels = result.vehicles.as_ref().map(study::vehicle_output::wheels_csv);
-        Ok::<_, study::error::StudyError>((json, histories_csv(&result), snapshots_csv(&snapshots), wheels))
+        Ok::<_, study::error::StudyError>((json, histories_csv(&result), snapshots_csv(&snapshots), wheels, after))
     })?;
-    let (json, histories, snapshots, wheels) = outcome.map_err(to_python)?;
+    let (json, histories, snapshots, wheels, after) = outcome.map_err(to_python)?;
+    warnings.extend(after);
     Ok((json, histories, snapshots, wheels, warnings))
 }
 

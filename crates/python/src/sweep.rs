@@ -12,9 +12,9 @@ use study::sweep::{Runner, failures, write_csv_rows};
 type SweepTexts = (String, Vec<(f64, String)>, Vec<String>);
 
 /// Sweep the scenario (`kind` and `text` as for `run`) with the keyword `overrides` over `speeds` (m/s) on `jobs`
-/// worker threads (0: all cores).
+/// worker threads (0: all cores), telling `progress` (a callable of the fraction of runs done), if given.
 #[pyfunction]
-#[pyo3(signature = (kind, text, speeds, jobs, keywords))]
+#[pyo3(signature = (kind, text, speeds, jobs, keywords, progress=None))]
 pub(crate) fn sweep(
     py: Python<'_>,
     kind: &str,
@@ -22,6 +22,7 @@ pub(crate) fn sweep(
     speeds: Vec<f64>,
     jobs: usize,
     keywords: Vec<(String, Bound<'_, PyAny>)>,
+    progress: Option<Bound<'_, PyAny>>,
 ) -> PyResult<SweepTexts> {
     let scenario = overrides(&keywords)?.apply(Source::of(kind, text)?.read()?);
     study::speeds::check_count("speeds", speeds.len()).map_err(to_python)?;
@@ -32,8 +33,12 @@ pub(crate) fn sweep(
     let warnings = study::diagnostics::sweep_warnings(&scenario, &speeds).map_err(to_python)?;
     let warnings = warnings.iter().map(ToString::to_string).collect();
     let runner = Runner::new(jobs).map_err(to_python)?;
-    let rows = interruptible::run(py, move |stop| runner.with_stop(stop).speed_sweep_keeping(&case, &speeds))?
-        .map_err(to_python)?;
+    let total = speeds.len() as f64;
+    let rows = interruptible::run_reporting(py, progress, move |stop, told| {
+        let done = |runs: usize| told.set(runs as f64 / total);
+        runner.with_stop(stop).with_progress(&done).speed_sweep_keeping(&case, &speeds)
+    })?
+    .map_err(to_python)?;
     let mut csv = Vec::new();
     write_csv_rows(&rows, &mut csv).map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(e.to_string()))?;
     let failed = failures(&rows).into_iter().map(|f| (f.speed, f.error)).collect();

@@ -196,3 +196,32 @@ def test_speeds_may_be_one_number_and_bad_speeds_name_themselves():
     assert [p["speed"] for p in frictrack.analytic(None, 150)] == [150.0]
     with pytest.raises(frictrack.InputError, match="invalid speeds = 'fast'"):
         frictrack.sweep(None, "fast")
+
+
+def test_progress_is_told_to_a_callback():
+    """A callable `progress` hears the fraction done as the work goes (polled every 50 ms) and 1.0 at the end, for a
+    run, a sweep and a stationary sweep (each ~1 s: several polls); the results are those without it."""
+    for call in (
+        lambda p: frictrack.run(speed=150.0, distributed_friction=2000.0, elements=400, load_advance=0.05,
+                                progress=p),
+        lambda p: frictrack.sweep(None, [100.0, 150.0, 200.0], jobs=1, distributed_friction=2000.0, progress=p),
+        lambda p: frictrack.stationary({"foundation": {"damping_ratio": 0.05}}, [20.0 + i for i in range(200)],
+                                       distributed_friction=2000.0, progress=p),
+    ):
+        heard = []
+        call(heard.append)
+        assert heard[-1] == 1.0 and len(heard) >= 2, heard
+        assert all(0.0 <= a <= b <= 1.0 for a, b in zip(heard, heard[1:])), heard
+    quiet = frictrack.sweep(None, [100.0, 150.0], jobs=1, progress=False)
+    told = frictrack.sweep(None, [100.0, 150.0], jobs=1, progress=lambda f: None)
+    assert np.array_equal(quiet["max_downward_deflection"], told["max_downward_deflection"])
+
+
+def test_an_exception_in_the_progress_callback_stops_the_work():
+    def fail(fraction):
+        if fraction > 0.0:
+            raise RuntimeError("enough")
+
+    with pytest.raises(RuntimeError, match="enough"):
+        frictrack.stationary({"foundation": {"damping_ratio": 0.05}}, [20.0 + 0.1 * i for i in range(2000)],
+                             distributed_friction=2000.0, progress=fail)

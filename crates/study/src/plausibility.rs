@@ -16,7 +16,7 @@ use crate::diagnostics::Warning;
 use crate::number::number;
 use crate::scenario::{Case, Scenario};
 use crate::speeds::SpeedScale;
-use track::{Load, RunResult};
+use track::Load;
 
 /// A point load (N) above which the load is no railway load: 1 MN, about three of the heaviest axles (35 t).
 pub const LOAD_LIMIT: f64 = 1e6;
@@ -100,12 +100,32 @@ fn steep_rail(case: &Case) -> Option<Warning> {
 }
 
 /// Warnings for a run's result outside the model's validity: a deflection beyond [`DEFLECTION_LIMIT`] of the beam's
-/// length.
-pub fn result_warnings(case: &Case, result: &RunResult) -> Vec<Warning> {
+/// length; on a nonlinear soil, the rail thrown off it by more than the load's static deflection where the results
+/// are read (a weightless rail on a tensionless soil rose 827 mm on the reference track: nothing brings it back, and
+/// the linear beam's small deflections no longer hold).
+pub fn result_warnings(case: &Case, summary: &crate::run_summary::RunSummary) -> Vec<Warning> {
+    let mut out = Vec::new();
+    if let Some(soil) = &summary.soil
+        && soil.largest_gap > summary.extremes.static_max_downward_deflection
+        && summary.extremes.static_max_downward_deflection > 0.0
+    {
+        out.push(Warning {
+            field: "result".into(),
+            value: format!("lift-off {:.1} mm", soil.largest_gap * 1e3),
+            message: format!(
+                "the rail left the {} soil by more than the load's static deflection ({:.1} mm) at x = {:.1} m: it \
+                 is thrown off the soil, not riding on it{}; the numbers are the model's",
+                soil.law,
+                summary.extremes.static_max_downward_deflection * 1e3,
+                soil.largest_gap_position.unwrap_or(f64::NAN),
+                if soil.settlement > 0.0 { "" } else { " (without self-weight nothing brings it back)" }
+            ),
+        });
+    }
     let length = case.model.mesh().length;
-    let largest = result.max_downward.magnitude.max(result.max_upward.magnitude);
+    let largest = summary.extremes.max_downward_deflection.max(summary.extremes.max_upward_deflection);
     if largest > DEFLECTION_LIMIT * length {
-        vec![Warning {
+        out.push(Warning {
             field: "result".into(),
             value: format!("deflection {:.4e} m", largest),
             message: format!(
@@ -114,8 +134,7 @@ pub fn result_warnings(case: &Case, result: &RunResult) -> Vec<Warning> {
                 100.0 * largest / length,
                 100.0 * DEFLECTION_LIMIT
             ),
-        }]
-    } else {
-        Vec::new()
+        });
     }
+    out
 }

@@ -189,18 +189,20 @@ impl StationaryStudy {
     /// Solve `speeds` (m/s, in the order given: each starts from the last one's contact set and wave, on the domain
     /// the last one grew to) on `domain`.
     pub fn of(scenario: &Scenario, speeds: &[f64], domain: Domain, estimate: ErrorEstimate) -> Result<Self> {
-        Self::of_until(scenario, speeds, domain, estimate, None)
+        Self::of_until(scenario, speeds, domain, estimate, None, &|_| {})
     }
 
     /// As [`Self::of`], stopping with [`StudyError::Interrupted`](crate::StudyError::Interrupted) before the next
-    /// speed (and before each error estimate) once `stop` is raised: a speed takes 1–75 ms (up to ~1 s where the
-    /// domain grows with friction), so Ctrl-C is answered within about that.
+    /// speed (and before each error estimate) once `stop` is raised — a speed takes 1–75 ms (up to ~1 s where the
+    /// domain grows with friction), so Ctrl-C is answered within about that — and telling `progress` the number of
+    /// speeds done after each.
     pub fn of_until(
         scenario: &Scenario,
         speeds: &[f64],
         domain: Domain,
         estimate: ErrorEstimate,
         stop: Option<&std::sync::atomic::AtomicBool>,
+        progress: &dyn Fn(usize),
     ) -> Result<Self> {
         let stopped = || stop.is_some_and(|s| s.load(std::sync::atomic::Ordering::Relaxed));
         let first = problem(scenario, speeds.first().copied().unwrap_or(0.0), domain)?;
@@ -232,6 +234,7 @@ impl StationaryStudy {
                 }
                 Err(other) => return Err(other.into()),
             }
+            progress(points.len());
         }
         let friction = first.friction.force_per_length;
         Ok(Self { law, load: first.load, settlement: -first.far_level(), friction, points, waves })

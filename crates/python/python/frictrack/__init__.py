@@ -15,8 +15,9 @@ from __future__ import annotations
 
 import json
 import os
+import sys
 import warnings as _warnings
-from typing import Any, Dict, Mapping, Optional, Sequence, Union
+from typing import Any, Callable, Dict, Mapping, Optional, Sequence, Union
 
 from . import _native
 from ._tables import Table, parse_csv
@@ -65,6 +66,45 @@ def _speeds(speeds: "Union[float, Sequence[float]]") -> "list[float]":
         ) from None
 
 
+ProgressLike = Union[None, bool, Callable[[float], Any]]
+
+
+class _Reporter:
+    """What ``progress=`` asks for: a callable of the fraction done (0–1), a tqdm bar (``True``; by default when tqdm is
+    installed and standard error is a terminal, as the command line's bar), or nothing (``False``)."""
+
+    def __init__(self, progress: ProgressLike, what: str) -> None:
+        self.bar = None
+        self.callback: Optional[Callable[[float], Any]] = None
+        if callable(progress):
+            self.callback = progress
+            return
+        if progress is False:
+            return
+        if progress is None and not (hasattr(sys.stderr, "isatty") and sys.stderr.isatty()):
+            return
+        try:
+            from tqdm.auto import tqdm
+        except ImportError:
+            if progress is True:
+                raise InputError("invalid progress = True: needs tqdm (pip install tqdm), or pass a callable "
+                                 "f(fraction)") from None
+            return
+        self.bar = tqdm(total=1.0, desc=what, bar_format="{desc}: {percentage:3.0f}%|{bar}| {elapsed}<{remaining}")
+        self.callback = self._update
+
+    def _update(self, fraction: float) -> None:
+        self.bar.n = fraction
+        self.bar.refresh()
+
+    def __enter__(self) -> "Optional[Callable[[float], Any]]":
+        return self.callback
+
+    def __exit__(self, *_: Any) -> None:
+        if self.bar is not None:
+            self.bar.close()
+
+
 class Run:
     """One run's results.
 
@@ -100,7 +140,7 @@ class Run:
         return f"<frictrack.Run v = {self.summary.get('speed')} m/s, max downward deflection {down} m>"
 
 
-def run(scenario: ScenarioLike = None, **overrides: Any) -> Run:
+def run(scenario: ScenarioLike = None, *, progress: ProgressLike = None, **overrides: Any) -> Run:
     """Run ``scenario`` (a TOML file path, a TOML string, a dict with the file's keys, or ``None`` for the reference
     case) with keyword ``overrides`` named as the command line's flags: ``speed`` (m/s), ``train`` (a catalogue name
     or a CSV file), ``devices``, ``device_force`` (N), ``distributed_friction`` (N/m), ``damping_ratio``, ``theta``,
@@ -109,10 +149,13 @@ def run(scenario: ScenarioLike = None, **overrides: Any) -> Run:
 
     The run is ``frictrack run SCENARIO --format json --out DIR``: mid-span is recorded when the scenario names no
     section. It releases the GIL (other threads run meanwhile) and stops within a step on Ctrl-C
-    (KeyboardInterrupt). Bad input raises :class:`InputError` naming the field.
+    (KeyboardInterrupt). Bad input raises :class:`InputError` naming the field. ``progress``: a callable of the
+    fraction done, ``True`` for a tqdm bar, ``False`` for none; by default a tqdm bar where tqdm is installed and
+    standard error is a terminal.
     """
     kind, text = _source(scenario)
-    summary, histories, snapshots, wheels, warnings = _native.run(kind, text, list(overrides.items()))
+    with _Reporter(progress, "run") as report:
+        summary, histories, snapshots, wheels, warnings = _native.run(kind, text, list(overrides.items()), report)
     return Run(
         json.loads(summary),
         parse_csv(histories, COLUMNS["histories"]),
@@ -134,15 +177,16 @@ class Sweep(Table):
 
 
 def sweep(scenario: ScenarioLike = None, speeds: Sequence[float] = (), jobs: Optional[int] = None,
-          **overrides: Any) -> Sweep:
+          progress: ProgressLike = None, **overrides: Any) -> Sweep:
     """One run per speed of ``speeds`` (m/s), on ``jobs`` worker threads (``None``: all cores), as ``frictrack
     sweep``: the same CSV as a table (``speed``, ``max_downward_deflection``, … with their units). A failed run
-    leaves a NaN row and is listed in ``failures``; the others are kept. The scenario and overrides are as for
-    :func:`run`."""
+    leaves a NaN row and is listed in ``failures``; the others are kept. The scenario, overrides and ``progress``
+    (the fraction of runs done) are as for :func:`run`."""
     kind, text = _source(scenario)
-    csv, failures, warnings = _native.sweep(
-        kind, text, _speeds(speeds), int(jobs or 0), list(overrides.items())
-    )
+    with _Reporter(progress, "sweep") as report:
+        csv, failures, warnings = _native.sweep(
+            kind, text, _speeds(speeds), int(jobs or 0), list(overrides.items()), report
+        )
     return Sweep(parse_csv(csv, dict(_native.sweep_columns())), [(float(v), str(e)) for v, e in failures],
                  list(warnings))
 
@@ -174,15 +218,17 @@ class Stationary:
 
 
 def stationary(scenario: ScenarioLike = None, speeds: Sequence[float] = (), domain: Sequence[float] = (60.0, 60.0),
-               element_length: float = 0.25, **overrides: Any) -> Stationary:
+               element_length: float = 0.25, progress: ProgressLike = None, **overrides: Any) -> Stationary:
     """The stationary wave of the scenario's load on the infinite track at ``speeds`` (m/s, by continuation in
     order) on a moving domain ``domain`` = (behind, ahead) m of ``element_length`` m elements (grown where needed);
-    linear, tensionless and bilinear soils, ballast friction. Overrides as for :func:`run`."""
+    linear, tensionless and bilinear soils, ballast friction. Overrides and ``progress`` (the fraction of speeds
+    done) as for :func:`run`; Ctrl-C stops it before its next speed."""
     kind, text = _source(scenario)
     behind, ahead = (float(x) for x in domain)
-    points, waves, warnings = _native.stationary(
-        kind, text, _speeds(speeds), (behind, ahead, float(element_length)), list(overrides.items())
-    )
+    with _Reporter(progress, "stationary") as report:
+        points, waves, warnings = _native.stationary(
+            kind, text, _speeds(speeds), (behind, ahead, float(element_length)), list(overrides.items()), report
+        )
     return Stationary(json.loads(points), {float(v): parse_csv(csv, None) for v, csv in waves}, list(warnings))
 
 

@@ -1,7 +1,7 @@
 """Type stubs of the frictrack package (SI units: m, s, N, J; speeds in m/s)."""
 
 import os
-from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, Union
+from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
@@ -11,6 +11,9 @@ __version__: str
 COLUMNS: Dict[str, Dict[str, str]]
 
 ScenarioLike = Union[None, str, "os.PathLike[str]", Mapping[str, Any]]
+#: `progress=`: a callable of the fraction done (0–1), True for a tqdm bar, False for none (default: a tqdm bar where
+#: tqdm is installed and standard error is a terminal).
+ProgressLike = Union[None, bool, Callable[[float], Any]]
 
 class InputError(ValueError):
     """Bad input: the message names the field (its dotted path in the scenario, or the keyword), its value and what
@@ -70,6 +73,7 @@ def run(
     static_start: float = ...,
     absorbing_zones: float = ...,
     extremes_window: Sequence[float] = ...,
+    progress: ProgressLike = None,
 ) -> Run:
     """One run of `scenario` (a TOML path, a TOML string, a dict, or None for the reference case) with overrides named
     as the command line's flags; releases the GIL, stops on Ctrl-C, raises InputError naming bad input."""
@@ -78,6 +82,7 @@ def sweep(
     scenario: ScenarioLike = None,
     speeds: Union[float, Sequence[float]] = ...,
     jobs: Optional[int] = None,
+    progress: ProgressLike = None,
     **overrides: Any,
 ) -> Sweep:
     """One run per speed (m/s) on `jobs` threads (None: all cores), as `frictrack sweep`."""
@@ -104,6 +109,7 @@ def stationary(
     speeds: Union[float, Sequence[float]] = ...,
     domain: Sequence[float] = (60.0, 60.0),
     element_length: float = 0.25,
+    progress: ProgressLike = None,
     **overrides: Any,
 ) -> Stationary:
     """The stationary wave on the infinite track at `speeds` (m/s) on the moving domain (behind, ahead) m."""
