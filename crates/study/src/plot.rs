@@ -78,7 +78,7 @@ pub struct PlotSpec {
     /// How colour indices map to colours.
     pub palette: Palette,
     /// Panels stacked top to bottom under this figure's title and subtitle, each drawn as a figure of its own (its
-    /// title a heading, its legend beside it) on a common x range, and y ranges as [`PanelY`] says; when there are
+    /// title a heading, its legend beside it), its x and y ranges as [`PanelY`] says; when there are
     /// any, this figure's own series and marks are not drawn.
     pub panels: Vec<PlotSpec>,
     /// How the panels' y ranges are chosen.
@@ -91,7 +91,8 @@ pub enum PanelY {
     /// Common among panels of the same y label (the same quantity compares at a glance).
     #[default]
     SharedPerQuantity,
-    /// Each panel its own (one quantity at scales that differ tenfold, e.g. a wave below and at resonance).
+    /// Each panel its own x and y ranges (one quantity at scales that differ tenfold, e.g. a wave below and at
+    /// resonance, whose domains differ fourfold too).
     EachOwn,
 }
 
@@ -318,13 +319,12 @@ fn draw<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, spec: &PlotSpec) -> s
         let (heading, rest) = area.split_vertically(30);
         let style = ("sans-serif", fitting_size(&heading, &panel.title, 20.0, width)).into_font();
         heading.draw(&Text::new(panel.title.as_str(), (20, 8), style)).map_err(|e| err(&e))?;
-        let own = ranges(panel).map(|(_, y)| y);
+        let own = ranges(panel);
         let same = found.iter().filter(|(label, _)| *label == panel.y_label).map(|(_, (_, y))| *y);
-        let y = match spec.panel_y {
-            PanelY::SharedPerQuantity => same.reduce(union),
-            PanelY::EachOwn => own,
-        }
-        .unwrap_or((-1.0, 1.0));
+        let (x, y) = match spec.panel_y {
+            PanelY::SharedPerQuantity => (x, same.reduce(union).unwrap_or((-1.0, 1.0))),
+            PanelY::EachOwn => own.unwrap_or((x, (-1.0, 1.0))),
+        };
         panels.push(draw_panel(&rest, panel, (x, y))?);
     }
     Ok(Layout { image, panels })

@@ -89,7 +89,7 @@ pub fn sweep_plots(
             },
         ],
         &match critical.filter(|c| c.is_interior()) {
-            Some(c) => format!("refined critical speed {:.1} m/s, {:.0} mm", c.speed, c.max_downward_deflection * 1e3),
+            Some(c) => format!("critical speed {:.1} m/s", c.speed),
             None => "refined critical speed".to_string(),
         },
     );

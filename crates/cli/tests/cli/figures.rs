@@ -25,7 +25,7 @@ fn a_sweep_draws_its_figures_and_plot_draws_them_again() {
     }
     // The refined critical speed's runs are drawn: the deflection curve has more points than the 5 speeds.
     let svg = std::fs::read_to_string(dir.join("dist-deflection.svg")).unwrap();
-    assert!(svg.contains("max deflection vs speed") && svg.contains("refined critical speed"));
+    assert!(svg.contains("max deflection vs speed") && svg.contains("critical speed 2"));
     // Titled as a sweep, not by the file's stem, and the case named under the title: the figure reads alone.
     assert!(svg.contains("speed sweep: max deflection") && !svg.contains("dist:"), "title");
     assert!(svg.contains("F = 83.4 kN; k_f = 250 kN/m², undamped; friction: fᵤ = 2 kN/m"), "subtitle");

@@ -180,7 +180,7 @@ impl Results {
         };
         // A largest value at an end of the range is a bound, not a refined peak: the legend says which it is.
         let bounded = (0..2).any(|f| !self.acceleration_critical(f).acceleration.is_interior());
-        let label = if bounded { "largest value (≥: a bound at the range's end)" } else { "refined peak" };
+        let label = if bounded { "largest (≥: range end)" } else { "refined peak" };
         let mut spec = self.envelope_figure(titles, acceleration, &critical, label);
         if let Some(limit) = self.acceleration_limit {
             let label = format!("EN 1990 limit {} m/s², {}", limit.value, limit.track.name());

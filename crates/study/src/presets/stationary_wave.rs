@@ -97,6 +97,9 @@ pub(super) struct InfiniteCurve {
     pub(super) soil: Soil,
     pub(super) study: StationaryStudy,
     pub(super) critical: InfiniteCritical,
+    /// The refinement's waves: (speed m/s, max downward deflection m), drawn with the sweep so that the refined peak
+    /// lies on its curve (near an undamped resonance the sampled speeds miss it by a factor of three).
+    pub(super) refinement: Vec<(f64, f64)>,
     /// The waves at the shape speeds (None where none was found).
     pub(super) shapes: Vec<Option<StationaryWave>>,
 }
@@ -115,7 +118,7 @@ pub(super) fn study(resolution: super::Resolution, base: &Scenario, runner: &Run
     let infinite = runner.silent().map(&soils, |soil| {
         let scenario = soil.scenario(base);
         let study = StationaryStudy::of(&scenario, &speeds, Domain::default(), ErrorEstimate::Skip)?;
-        let critical = refine(&scenario, &study, v_cr)?;
+        let (critical, refinement) = refine(&scenario, &study, v_cr)?;
         let shapes = shape_speeds
             .iter()
             .map(|v| {
@@ -123,7 +126,7 @@ pub(super) fn study(resolution: super::Resolution, base: &Scenario, runner: &Run
                 at.and_then(|i| study.waves[i].clone()).filter(|w| w.convergence.is_converged())
             })
             .collect();
-        Ok(InfiniteCurve { soil: *soil, study, critical, shapes })
+        Ok(InfiniteCurve { soil: *soil, study, critical, refinement, shapes })
     })?;
     let (summary, lines) = summary(&infinite, &finite, v_cr);
     Ok(StudyData {
@@ -141,41 +144,51 @@ pub(super) fn study(resolution: super::Resolution, base: &Scenario, runner: &Run
 /// The peak of a curve: the largest sampled max downward deflection, refined by golden section between its
 /// neighbours when both have waves; unbounded where the next speed has none because no wave exists there (undamped,
 /// frictionless, at v_cr).
-fn refine(scenario: &Scenario, study: &StationaryStudy, v_cr: Option<f64>) -> Result<InfiniteCritical> {
+fn refine(
+    scenario: &Scenario,
+    study: &StationaryStudy,
+    v_cr: Option<f64>,
+) -> Result<(InfiniteCritical, Vec<(f64, f64)>)> {
     let points = &study.points;
     let found = |p: &StationaryPoint| p.max_downward_deflection;
     let Some((i, peak)) =
         points.iter().enumerate().filter_map(|(i, p)| found(p).map(|w| (i, w))).max_by(|a, b| a.1.total_cmp(&b.1))
     else {
-        return Ok(InfiniteCritical::None);
+        return Ok((InfiniteCritical::None, Vec::new()));
     };
     let next = points.get(i + 1);
     if let (Some(next), Some(critical_speed)) = (next, v_cr)
         && next.status == "no stationary wave"
     {
-        return Ok(InfiniteCritical::Unbounded { critical_speed, last_peak: peak });
+        return Ok((InfiniteCritical::Unbounded { critical_speed, last_peak: peak }, Vec::new()));
     }
     let (Some(before), Some(after)) = (i.checked_sub(1).and_then(|j| points.get(j)), next) else {
-        return Ok(InfiniteCritical::AtEnd { speed: points[i].speed, peak });
+        return Ok((InfiniteCritical::AtEnd { speed: points[i].speed, peak }, Vec::new()));
     };
     if found(before).is_none() || found(after).is_none() {
-        return Ok(InfiniteCritical::AtEnd { speed: points[i].speed, peak });
+        return Ok((InfiniteCritical::AtEnd { speed: points[i].speed, peak }, Vec::new()));
     }
     // On the domain the sampled peak needed, so that each speed starts from the last one's wave.
     let (behind, ahead, element_length) = points[i].domain;
     let domain = Domain { behind, ahead, element_length };
     let mut guess = ContactGuess::default();
+    let mut evaluated = Vec::new();
     let mut deflection = |v: f64| -> Result<f64> {
         let wave = stationary::solve_from(&problem(scenario, v, domain)?, &mut guess)?;
         // A speed without a wave inside the bracket cannot be the peak.
-        Ok(if wave.convergence.is_converged() { wave.max_downward().value } else { f64::NEG_INFINITY })
+        if !wave.convergence.is_converged() {
+            return Ok(f64::NEG_INFINITY);
+        }
+        evaluated.push((v, wave.max_downward().value));
+        Ok(wave.max_downward().value)
     };
     let tolerance = 0.02 * (after.speed - before.speed) / 2.0;
     let (speed, refined) = crate::sweep::golden_section(&mut deflection, before.speed, after.speed, tolerance, true)?;
-    Ok(match refined >= peak {
+    let critical = match refined >= peak {
         true => InfiniteCritical::Interior { speed, peak: refined },
         false => InfiniteCritical::Interior { speed: points[i].speed, peak },
-    })
+    };
+    Ok((critical, evaluated))
 }
 
 /// Long format: one row per curve and speed, infinite track first. Text cells: model ("infinite", "finite"),

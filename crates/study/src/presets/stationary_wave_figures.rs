@@ -9,6 +9,8 @@ use crate::scenario::Scenario;
 use crate::stationary_output::StationaryPoint;
 
 const SPEED: &str = "load speed v (m/s)";
+/// Grey in the categorical palette, for reference lines.
+const GREY: usize = 7;
 
 /// The four figures.
 pub(super) fn plots(
@@ -29,10 +31,16 @@ fn friction(infinite: &[InfiniteCurve], finite: &Curves) -> PlotSpec {
         SPEED,
         "max downward deflection (mm)",
     );
-    spec.subtitle =
-        "solid: stationary wave, infinite track; dashed: finite beam (distributed-speed study); gap: no wave".into();
+    spec.subtitle = "solid: stationary wave, infinite track; dashed: finite beam (distributed-speed study); gap: no \
+                     wave (undamped without friction none from v_cr on: grey)"
+        .into();
     for (c, curve) in infinite.iter().enumerate().filter(|(_, c)| c.soil.foundation == "linear") {
-        spec.series.push(sampled(curve, c, |p| p.max_downward_deflection));
+        // The refinement's waves with the sweep's, so that each refined peak sits on its curve.
+        let mut series = sampled(curve, c, |p| p.max_downward_deflection);
+        series.points.extend(curve.refinement.iter().map(|&(v, w)| (v, w * 1e3)));
+        series.points.sort_by(|a, b| a.0.total_cmp(&b.0));
+        series.markers = false;
+        spec.series.push(series);
     }
     for (c, curve) in infinite.iter().enumerate() {
         if let InfiniteCritical::Interior { speed, peak } = curve.critical
@@ -43,11 +51,31 @@ fn friction(infinite: &[InfiniteCurve], finite: &Curves) -> PlotSpec {
     }
     for (c, &f) in FRICTION.iter().enumerate() {
         let Some(k) = finite.find("force_per_length", f) else { continue };
-        let points = finite.points[k].iter().map(|p| (p.speed, p.max_downward_deflection * 1e3)).collect();
+        let mut points: Vec<(f64, f64)> =
+            finite.points[k].iter().map(|p| (p.speed, p.max_downward_deflection * 1e3)).collect();
+        // The refinement's runs too, so that the finite beam's refined peak sits on its curve.
+        let refined = finite.critical[k].iter().flat_map(|c| c.evaluations.iter().map(|&(v, w)| (v, w * 1e3)));
+        points.extend(refined);
+        points.sort_by(|a, b| a.0.total_cmp(&b.0));
         spec.series.push(Series { label: None, color: c, stroke: Stroke::Dashed, markers: false, points });
         if let Some(critical) = finite.critical[k].as_ref().filter(|k| k.is_interior()) {
             spec.marks.push(Mark { color: c, point: (critical.speed, critical.max_downward_deflection * 1e3) });
         }
+    }
+    // Where a curve has no wave from v_cr on (undamped, frictionless: the closed form is unbounded there), a line at
+    // v_cr says why it ends.
+    let top = spec.series.iter().flat_map(|s| s.points.iter().map(|p| p.1)).fold(0.0f64, f64::max);
+    if let Some(v_cr) = infinite.iter().find_map(|curve| match curve.critical {
+        InfiniteCritical::Unbounded { critical_speed, .. } => Some(critical_speed),
+        _ => None,
+    }) {
+        spec.series.push(Series {
+            label: Some(format!("v_cr {v_cr:.1} m/s: unbounded")),
+            color: GREY,
+            stroke: Stroke::Dashed,
+            markers: false,
+            points: vec![(v_cr, 0.0), (v_cr, top)],
+        });
     }
     spec.key = vec![(Stroke::Solid, "infinite track".into()), (Stroke::Dashed, "finite beam".into())];
     spec.mark_label = "refined peak".into();
@@ -56,10 +84,13 @@ fn friction(infinite: &[InfiniteCurve], finite: &Curves) -> PlotSpec {
 
 /// The three soils without friction on the infinite track: max downward (solid) and upward (dashed) deflection.
 fn soils(infinite: &[InfiniteCurve]) -> PlotSpec {
-    let curves = infinite
-        .iter()
-        .enumerate()
-        .filter(|(_, c)| c.soil.force_per_length == 0.0)
+    // The tensionless curve drawn last: it ends near 104 m/s, and below that it lies on the bilinear one, which
+    // would hide it.
+    let mut order: Vec<(usize, &InfiniteCurve)> =
+        infinite.iter().enumerate().filter(|(_, c)| c.soil.force_per_length == 0.0).collect();
+    order.sort_by_key(|(_, c)| c.soil.foundation == "tensionless");
+    let curves = order
+        .into_iter()
         .map(|(c, curve)| {
             let points = &curve.study.points;
             DeflectionCurve {
@@ -90,8 +121,12 @@ fn behind(infinite: &[InfiniteCurve], base: &Scenario) -> PlotSpec {
         SPEED,
         "residual deflection (mm, + above the rail's level)",
     );
-    spec.subtitle =
-        format!("dashed: the bound ±f_u/k (k = {:.0} kN/m²) friction can hold", base.foundation.stiffness / 1e3);
+    spec.subtitle = format!(
+        "solid: left behind by the stationary wave; dashed: the bound ±f_u/k (k = {:.0} kN/m²) friction can hold, \
+         in the colour of its f_u",
+        base.foundation.stiffness / 1e3
+    );
+    spec.key = vec![(Stroke::Solid, "left behind".into()), (Stroke::Dashed, "bound ±f_u/k".into())];
     let speeds: Vec<f64> = infinite.first().map_or(Vec::new(), |c| c.study.points.iter().map(|p| p.speed).collect());
     let (first, last) = (speeds.first().copied().unwrap_or(0.0), speeds.last().copied().unwrap_or(1.0));
     for (c, curve) in infinite.iter().enumerate().filter(|(_, c)| c.soil.force_per_length > 0.0) {
@@ -116,7 +151,9 @@ fn shapes(infinite: &[InfiniteCurve], speeds: &[f64]) -> PlotSpec {
     let mut spec =
         PlotSpec::new("stationary-wave-shapes", "The stationary wave at three speeds", "s = x − vt (m)", "W (mm)");
     spec.subtitle =
-        "from the settled rail, s > 0 ahead of the load, each panel on its own scale; absent: no wave".into();
+        "from the settled rail, s > 0 ahead of the load, each panel on its own scales (its waves' domain); absent: \
+         no wave"
+            .into();
     spec.panel_y = PanelY::EachOwn;
     for (k, &speed) in speeds.iter().enumerate() {
         let mut panel = PlotSpec::new("", format!("v = {speed:.0} m/s"), "s = x − vt (m)", "W (mm)");
