@@ -158,9 +158,8 @@ fn write_outputs(
         write_atomically(&out.join("wheels.csv"), study::vehicle_output::wheels_csv(vehicles).as_bytes())?;
         let range = report.extremes.extremes_nodes.unwrap_or((0.0, scenario.mesh.length));
         let mut spec = study::vehicle_output::wheel_plot(vehicles, &title, range);
-        if spec.subtitle.is_empty() {
-            spec.subtitle = subtitle;
-        }
+        // The run's line (vehicles, speed, friction) before what the figure says of its wheels.
+        spec.subtitle = format!("{subtitle}; {}", spec.subtitle);
         study::plot::render(&spec, out)?;
     }
     Ok(())

@@ -215,50 +215,69 @@ pub fn wheels_csv(results: &VehicleResults) -> String {
 /// The contact force of each wheel against the wheel's position, in kN, while the wheel is inside `range` (m): the
 /// beam, or the nodes the extremes are taken over. Outside it the wheels stand on rigid ground or run over a finite
 /// track's ends, whose pinned supports they hit at their slope (docs/theory.md §12); `wheels.csv` has every step.
-/// One vehicle: one chart; several: a panel per vehicle (the first [`MAX_VEHICLES_DRAWN`]) on common axes, each
-/// wheel in its vehicle's colours in order.
+/// A panel per group of at most two wheels — a vehicle with more (a rail car's four) gets one per half, so that no
+/// wheel's curve hides under another's — for the first [`MAX_VEHICLES_DRAWN`] vehicles; one chart for one group.
+/// The static wheel load Q₀ is said once in the subtitle where all wheels share it, else in each legend entry.
 pub fn wheel_plot(results: &VehicleResults, title: &str, range: (f64, f64)) -> PlotSpec {
     let vehicles = results.wheels.iter().map(|w| w.vehicle + 1).max().unwrap_or(0);
-    let panel = |vehicle: usize| -> PlotSpec {
-        let curves: Curves = results
-            .wheels
+    let first = results.wheels.first().map_or(0.0, |w| w.static_force);
+    let shared = results.wheels.iter().all(|w| (w.static_force - first).abs() <= 1e-9 * first.abs());
+    // (vehicle, its wheels' indices in `results.wheels`), split in halves where a vehicle has more than two.
+    let mut groups: Vec<(usize, Vec<usize>)> = Vec::new();
+    for vehicle in 0..vehicles.min(MAX_VEHICLES_DRAWN) {
+        let wheels: Vec<usize> = (0..results.wheels.len()).filter(|&i| results.wheels[i].vehicle == vehicle).collect();
+        let half = if wheels.len() > 2 { wheels.len().div_ceil(2) } else { wheels.len().max(1) };
+        groups.extend(wheels.chunks(half).map(|c| (vehicle, c.to_vec())));
+    }
+    let panel = |(vehicle, wheels): &(usize, Vec<usize>)| -> PlotSpec {
+        let curves: Curves = wheels
             .iter()
             .enumerate()
-            .filter(|(_, w)| w.vehicle == vehicle)
-            .enumerate()
-            .map(|(k, (i, w))| {
+            .map(|(k, &i)| {
+                let w = &results.wheels[i];
                 let inside = |x: &f64| (range.0..=range.1).contains(x);
                 let points = w.history.position.iter().zip(&w.history.force);
                 let points = points.filter(|(x, _)| inside(x)).map(|(&x, &f)| (x, f / 1e3)).collect();
-                (format!("wheel {} (Q₀ = {:.1} kN)", i + 1, w.static_force / 1e3), 1 + k, points)
+                let label = match shared {
+                    true => format!("wheel {}", i + 1),
+                    false => format!("wheel {} (Q₀ = {:.1} kN)", i + 1, w.static_force / 1e3),
+                };
+                (label, 1 + k, points)
             })
             .collect();
-        let name = results.bodies.get(vehicle).map_or(String::new(), |b| format!(": {}", b.name));
-        // A panel's y axis is short: its label too (the figure's title says what Q is).
-        let y_label = if vehicles <= 1 { "contact force Q (kN, compressive > 0)" } else { "Q (kN)" };
+        let name = results.bodies.get(*vehicle).map_or(String::new(), |b| format!(" ({})", b.name));
+        let which = match (wheels.first(), wheels.last()) {
+            (Some(a), Some(b)) if a != b => format!(", wheels {}–{}", a + 1, b + 1),
+            (Some(a), _) => format!(", wheel {}", a + 1),
+            _ => String::new(),
+        };
+        let y_label = if groups.len() <= 1 { "contact force Q (kN)" } else { "Q (kN)" };
         quantity_figure(
             WHEEL_FIGURE,
-            &format!("vehicle {}{name}", vehicle + 1),
+            &format!("vehicle {}{name}{which}", vehicle + 1),
             "wheel position x (m)",
             y_label,
             curves,
             false,
         )
     };
-    let heading = format!("{title}: wheel–rail contact force, wheels at {:.0}–{:.0} m", range.0, range.1);
-    let heading =
-        if vehicles <= 1 { heading } else { heading.replace("contact force", "contact force Q (compressive > 0)") };
-    if vehicles <= 1 {
-        let mut spec = panel(0);
-        spec.title = heading;
-        return spec;
-    }
     let shown = if vehicles > MAX_VEHICLES_DRAWN {
         format!(" (first {MAX_VEHICLES_DRAWN} of {vehicles} vehicles)")
     } else {
         String::new()
     };
-    let mut spec = PlotSpec::new(WHEEL_FIGURE, format!("{heading}{shown}"), "", "");
-    spec.panels = (0..vehicles.min(MAX_VEHICLES_DRAWN)).map(panel).collect();
+    let heading = format!("{title}: wheel–rail contact force Q{shown}");
+    let static_load = if shared { format!("; static wheel load Q₀ = {:.1} kN", first / 1e3) } else { String::new() };
+    let subtitle = format!("wheels at {:.0}–{:.0} m; Q > 0 in compression{static_load}", range.0, range.1);
+    let mut spec = match groups.as_slice() {
+        [one] => panel(one),
+        _ => {
+            let mut spec = PlotSpec::new(WHEEL_FIGURE, "", "", "");
+            spec.panels = groups.iter().map(panel).collect();
+            spec
+        }
+    };
+    spec.title = heading;
+    spec.subtitle = subtitle;
     spec
 }
