@@ -5,7 +5,7 @@ use crate::Format;
 use crate::files::{check_output_file, prepare_output_folder, write_atomically, write_figures};
 use anyhow::Result;
 use study::Scenario;
-use study::co_moving_output::CoMovingSummary;
+use study::co_moving_output::{CoMovingSummary, Settling};
 use study::scenario::CoMovingSection;
 
 /// Run `scenario` through its window and print or write the result.
@@ -68,14 +68,18 @@ fn print_text(s: &CoMovingSummary) {
         s.max_downward_deflection * 1e3,
         s.max_upward_deflection * 1e3
     );
-    if let Some(&(distance, change)) = s.changes.last() {
+    if let (Some(&(distance, change)), Some(settling)) = (s.changes.last(), s.settling()) {
         let first = s.changes.first().map_or(change, |c| c.1);
         println!(
             "  change of the wave per window length travelled: {first:.1e} after the first, {change:.1e} at {distance:.0} m{}",
-            match (s.irregular_rail, change <= 1e-3) {
-                (true, _) => " (an irregular rail keeps the wave changing: no stationary state)",
-                (false, true) => " (stationary)",
-                (false, false) => " (still settling: a longer track_length)",
+            match settling {
+                Settling::Irregular => " (an irregular rail keeps the wave changing: no stationary state)".to_string(),
+                Settling::Stationary { .. } => " (stationary)".to_string(),
+                Settling::Falling { .. } => " (still settling: a longer track_length)".to_string(),
+                Settling::Levelled { level } => format!(
+                    " (levelled off near {level:.1e}: the ballast's stick–slip keeps the wave changing this much, and a \
+                     longer track_length will not lower it)"
+                ),
             }
         );
     }

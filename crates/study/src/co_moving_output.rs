@@ -195,6 +195,53 @@ pub fn run(scenario: &Scenario, section: &CoMovingSection) -> Result<(CoMovingSu
     Ok((summary, result))
 }
 
+/// The change of the wave per window length travelled below which it counts as stationary.
+pub const STATIONARY_CHANGE: f64 = 1e-3;
+
+/// How the wave in the window approached its end.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Settling {
+    /// Its last change is below [`STATIONARY_CHANGE`].
+    Stationary {
+        /// The last change.
+        change: f64,
+    },
+    /// Still falling over the last half of the run: a longer track would settle it further.
+    Falling {
+        /// The last change.
+        change: f64,
+    },
+    /// Levelled off above [`STATIONARY_CHANGE`] (the mean of the last third of the second half within a factor 2 of
+    /// its first third's): stick–slip of the ballast friction keeps it there, and a longer track does not lower it.
+    Levelled {
+        /// The mean change over the last third of the run's second half.
+        level: f64,
+    },
+    /// On an irregular rail the wave keeps changing: no stationary state.
+    Irregular,
+}
+
+impl CoMovingSummary {
+    /// How the wave settled (None before the first window length).
+    pub fn settling(&self) -> Option<Settling> {
+        let &(_, change) = self.changes.last()?;
+        if self.irregular_rail {
+            return Some(Settling::Irregular);
+        }
+        if change <= STATIONARY_CHANGE {
+            return Some(Settling::Stationary { change });
+        }
+        let second_half = &self.changes[self.changes.len() / 2..];
+        let third = second_half.len() / 3;
+        let mean = |c: &[(f64, f64)]| c.iter().map(|c| c.1).sum::<f64>() / c.len().max(1) as f64;
+        let (early, late) = (mean(&second_half[..third]), mean(&second_half[second_half.len() - third..]));
+        Some(match third > 0 && late > 0.5 * early {
+            true => Settling::Levelled { level: late },
+            false => Settling::Falling { change },
+        })
+    }
+}
+
 /// The figures of a co-moving run: the wave in the frame at the end, and its change per window length travelled
 /// (logarithmic: the approach to the stationary state).
 pub fn figures(summary: &CoMovingSummary, result: &CoMovingResult) -> Vec<PlotSpec> {
@@ -222,10 +269,24 @@ pub fn figures(summary: &CoMovingSummary, result: &CoMovingResult) -> Vec<PlotSp
     let mut wave = PlotSpec::new("co-moving-wave", title, "s = x − x_load (m)", "w (mm)");
     wave.subtitle = format!("{subtitle}; the wave in the frame at the end");
     wave.series.push(line("W(s)", result.wave.iter().map(|(s, w)| (*s, w * 1e3)).collect()));
-    let mut change = PlotSpec::new("co-moving-convergence", title, "track travelled (m)", "change per window length");
-    change.subtitle = format!("{subtitle}; max |ΔW| over a window length / peak");
+    let y = "max |ΔW| per window length / peak";
+    let mut change = PlotSpec::new(
+        "co-moving-convergence",
+        format!("{title}: approach to the stationary wave"),
+        "track travelled (m)",
+        y,
+    );
+    change.subtitle = subtitle;
     change.log_y = true;
     let positive: Vec<(f64, f64)> = result.changes.iter().copied().filter(|(_, c)| *c > 0.0).collect();
-    change.series.push(Series { markers: true, ..line("change", positive) });
+    let ends = (positive.first().map_or(0.0, |p| p.0), positive.last().map_or(1.0, |p| p.0));
+    change.series.push(Series { markers: true, ..line("change of the wave", positive) });
+    change.series.push(Series {
+        label: Some(format!("stationary below {STATIONARY_CHANGE:.0e}")),
+        color: 7,
+        stroke: Stroke::Dashed,
+        markers: false,
+        points: vec![(ends.0, STATIONARY_CHANGE), (ends.1, STATIONARY_CHANGE)],
+    });
     vec![wave, change]
 }

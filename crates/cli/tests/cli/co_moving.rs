@@ -68,3 +68,20 @@ fn a_quarter_car_rides_the_window_over_a_dipped_joint() {
     assert!(text.contains("1 vehicle (1 wheel, the first at s = 0)") && text.contains("no stationary state"), "{text}");
     assert!(text.contains("vehicles (hertz contact): wheel force"), "{text}");
 }
+
+/// With ballast friction the wave's change per window length levels off near 1e-3 (stick–slip), where the report
+/// used to advise "a longer track_length", which cannot lower it: it now says the change has levelled off, and the
+/// figure draws the 1e-3 threshold.
+#[test]
+fn a_change_that_levels_off_under_friction_is_not_sent_to_a_longer_track() {
+    let folder = temporary_folder("co-moving-friction");
+    let out = folder.join("out");
+    let args = ["run", "--co-moving", "--speed", "100", "--damping-ratio", "0.05", "--distributed-friction", "2000"];
+    let mut with_out = args.to_vec();
+    with_out.extend(["--out", out.to_str().unwrap()]);
+    let text = frictrack(&with_out);
+    let text = String::from_utf8_lossy(&text.stdout);
+    assert!(text.contains("levelled off near") && !text.contains("a longer track_length)"), "{text}");
+    let svg = std::fs::read_to_string(out.join("co-moving-convergence.svg")).unwrap();
+    assert!(svg.contains("stationary below 1e-3") && svg.contains("approach to the stationary wave"));
+}
