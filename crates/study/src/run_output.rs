@@ -12,7 +12,7 @@
 use crate::error::Result;
 use crate::figures::{Curves, quantity_figure};
 use crate::number::row;
-use crate::plot::PlotSpec;
+use crate::plot::{Mark, PlotSpec};
 use crate::scenario::{Case, Scenario};
 use std::fmt::Write as _;
 use std::sync::atomic::AtomicBool;
@@ -48,9 +48,16 @@ pub fn recording(mut scenario: Scenario) -> Scenario {
 }
 
 /// The snapshots a recorded run of `case` (built from `scenario`) takes: the scenario's requests over the first
-/// axle's travel, from its start position (static or steady starts begin on the beam) to L + the train's length.
+/// axle's travel — while the whole train is on the beam where it fits, else from its start position (static or
+/// steady starts begin on the beam) to L + the train's length.
 pub fn snapshot_requests(scenario: &Scenario, case: &Case) -> Vec<SnapshotAt> {
-    let travel = (case.settings.start_position(), scenario.mesh.length + case.settings.moving.load.length());
+    let (start, length, train) =
+        (case.settings.start_position(), scenario.mesh.length, case.settings.moving.load.length());
+    // While the whole train is on the beam (its last axle, `train` behind the first, past 0) where one fits: its
+    // first axle at the end hits the support (a rail car's exit spike took a default moment snapshot over); else (a
+    // single load, a train longer than the beam) the whole travel, from the start to the last axle's exit.
+    let on = start.max(train);
+    let travel = if train > 0.0 && on < length { (on, length) } else { (start, length + train) };
     scenario.output.snapshots(travel)
 }
 
@@ -234,6 +241,25 @@ pub fn run_plots(curves: &RunCurves, title: &str, load: &str) -> Vec<PlotSpec> {
             ("deflected shape", "bending moment along the beam"),
             (by_instant(1, 1e3), by_instant(2, 1e-3)),
         );
+        // Where the load is in each snapshot, a triangle on its curve (where it is on the beam).
+        let drawn = plots.len();
+        for spec in &mut plots[drawn - 2..] {
+            for (i, &(_, at, _)) in curves.instants.iter().enumerate() {
+                let Some(series) = spec.series.get(i) else { continue };
+                if let Some(y) = value_at(&series.points, at) {
+                    spec.marks.push(Mark { color: 1 + i, point: (at, y) });
+                }
+            }
+            spec.mark_label = format!("{load} position");
+        }
     }
     plots
+}
+
+/// The polyline `points` (in increasing x) at `x`, linearly interpolated; None outside it.
+fn value_at(points: &[(f64, f64)], x: f64) -> Option<f64> {
+    let i = points.partition_point(|p| p.0 < x);
+    let (a, b) = (points.get(i.checked_sub(1)?)?, points.get(i)?);
+    let t = if b.0 > a.0 { (x - a.0) / (b.0 - a.0) } else { 0.0 };
+    Some(a.1 + t * (b.1 - a.1))
 }
