@@ -73,17 +73,33 @@ pub struct CoMovingSummary {
     pub vehicles: Option<crate::vehicle_output::VehicleReport>,
 }
 
+/// The co-moving window's length where neither the scenario nor the wave asks for more (m).
+pub const DEFAULT_WINDOW: f64 = 120.0;
+
 /// The window of `scenario`'s track and its settings: `window` m in the mesh's element length, free rear, clamped
 /// front, absorbing zones; refused where the linear wave would not have fallen to [`WINDOW_DECAY`] of its peak
 /// between the load and a zone (the window too short for the wave).
 pub fn window(scenario: &Scenario, section: &CoMovingSection) -> Result<(BeamModel, CoMovingSettings)> {
     let l = scenario.mesh.length / scenario.mesh.elements.max(1) as f64;
-    let elements = (section.window / l).round();
-    if !(section.window.is_finite() && (8.0..=1e6).contains(&elements)) {
-        return Err(invalid("co_moving.window", section.window, format!("must hold 8 to 1e6 elements of {l} m")));
-    }
     let model = scenario.model()?;
     let foundation: Foundation = *model.foundation();
+    // The 1 % decay lengths of the linear wave behind and ahead of the load (None where no linear wave decays:
+    // undamped at or above v_cr, or without a foundation).
+    let reach = (foundation.stiffness > 0.0)
+        .then(|| InfiniteBeam::new(model.beam(), &foundation).and_then(|i| i.steady_state(scenario.load.speed, 1.0)))
+        .and_then(std::result::Result::ok)
+        .map(|state| {
+            let (rate_ahead, rate_behind) = state.decay_rates();
+            (-WINDOW_DECAY.ln() / rate_behind, -WINDOW_DECAY.ln() / rate_ahead)
+        });
+    let window = section.window.unwrap_or_else(|| {
+        let needed = reach.map_or(0.0, |(behind, ahead)| 4.0 * behind.max(ahead));
+        DEFAULT_WINDOW.max((needed / 10.0).ceil() * 10.0)
+    });
+    let elements = (window / l).round();
+    if !(window.is_finite() && (8.0..=1e6).contains(&elements)) {
+        return Err(invalid("co_moving.window", window, format!("must hold 8 to 1e6 elements of {l} m")));
+    }
     let length = elements * l;
     let zones = section.zones.unwrap_or(length / 4.0);
     let load_at = section.load_at.unwrap_or(length / 2.0);
@@ -103,16 +119,11 @@ pub fn window(scenario: &Scenario, section: &CoMovingSection) -> Result<(BeamMod
     }
     // The wave must fade before the zones: e^{−Re r·d} ≤ 1 % over the distance d from the load to each zone.
     // (Undamped at or above the critical speed no linear wave decays; friction alone may hold it: not checked.)
-    if foundation.stiffness > 0.0
-        && let Ok(state) =
-            InfiniteBeam::new(model.beam(), &foundation).and_then(|inf| inf.steady_state(scenario.load.speed, 1.0))
-    {
-        let (rate_ahead, rate_behind) = state.decay_rates();
-        let (ahead, behind) = (-WINDOW_DECAY.ln() / rate_ahead, -WINDOW_DECAY.ln() / rate_behind);
+    if let Some((behind, ahead)) = reach {
         if load_at - zones < behind || length - zones - load_at < ahead {
             return Err(invalid(
                 "co_moving.window",
-                section.window,
+                window,
                 format!(
                     "is too short for the wave at {} m/s: it falls to 1 % only {behind:.1} m behind and {ahead:.1} m \
                      ahead of the load, so the window needs about {:.0} m with its zones of {zones} m (or more \

@@ -28,17 +28,21 @@ fn a_co_moving_run_settles_on_the_analytic_wave_and_refuses_a_window_too_short()
     for name in ["co-moving.json", "wave.csv", "co-moving-wave.png", "co-moving-convergence.svg"] {
         assert!(out.join(name).is_file(), "{name}");
     }
-    // Above the critical speed the wave reaches further than a 120 m window: refused with the length it needs.
-    let out = frictrack(&["run", "--co-moving", "--damping-ratio", "0.05", "--speed", "250"]);
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(2), "{err}");
-    assert!(err.contains("co_moving.window") && err.contains("too short for the wave"), "{err}");
-    // `check` finds it too, before any run.
+    // Above the critical speed the wave reaches further than a 120 m window: a window given that short is refused with
+    // the length it needs (`run` and `check`, before any run) …
     let short = folder.join("short.toml");
-    std::fs::write(&short, "[foundation]\ndamping_ratio = 0.05\n[load]\nspeed = 250.0\n[co_moving]\n").unwrap();
-    let out = frictrack(&["check", short.to_str().unwrap()]);
-    assert_eq!(out.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("too short for the wave"));
+    std::fs::write(&short, "[foundation]\ndamping_ratio = 0.05\n[load]\nspeed = 250.0\n[co_moving]\nwindow = 120.0\n")
+        .unwrap();
+    for command in ["run", "check"] {
+        let out = frictrack(&[command, short.to_str().unwrap()]);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{err}");
+        assert!(err.contains("co_moving.window = 120") && err.contains("too short for the wave"), "{err}");
+    }
+    // … and without one the window is as long as the wave needs: at the default 200 m/s with ζ = 5 % (the 120 m
+    // default was refused there) four times its 1 % decay length, 230 m.
+    let grown = json(&frictrack(&["run", "--co-moving", "--damping-ratio", "0.05", "--format", "json"]));
+    assert_eq!(grown["window"].as_f64(), Some(230.0));
 }
 
 /// Vehicles ride the window: a quarter car over 150 m of track with a 3 mm dipped joint 80 m ahead of its start. The
