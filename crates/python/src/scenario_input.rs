@@ -48,6 +48,7 @@ impl Source {
 pub(crate) fn overrides(keywords: &[(String, Bound<'_, PyAny>)]) -> PyResult<Overrides> {
     let mut overrides = Overrides::default();
     for (name, value) in keywords {
+        Overrides::check_name(name).map_err(to_python)?;
         overrides.set(name, value_of(name, value)?).map_err(to_python)?;
     }
     Ok(overrides)

@@ -225,3 +225,9 @@ def test_an_exception_in_the_progress_callback_stops_the_work():
     with pytest.raises(RuntimeError, match="enough"):
         frictrack.stationary({"foundation": {"damping_ratio": 0.05}}, [20.0 + 0.1 * i for i in range(2000)],
                              distributed_friction=2000.0, progress=fail)
+
+
+def test_a_keyword_that_is_no_override_is_named_as_such():
+    """`co_moving=True` was told its value must be a number; the name is what is wrong."""
+    with pytest.raises(frictrack.InputError, match="invalid override = co_moving: is not one of speed"):
+        frictrack.run(co_moving=True)

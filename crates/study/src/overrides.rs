@@ -81,6 +81,15 @@ impl Overrides {
         "extremes_window",
     ];
 
+    /// Refuse a name that is no override, naming every one (before its value is looked at: `co_moving=True` was
+    /// told its value must be a number).
+    pub fn check_name(name: &str) -> Result<()> {
+        match Self::NAMES.contains(&name) {
+            true => Ok(()),
+            false => Err(invalid("override", name, format!("is not one of {}", Self::NAMES.join(", ")))),
+        }
+    }
+
     /// Set the override `name` to `value`; an unknown name or a value of the wrong kind is an error naming it.
     pub fn set(&mut self, name: &str, value: OverrideValue) -> Result<()> {
         let number = |v: &OverrideValue| match v {
@@ -125,9 +134,7 @@ impl Overrides {
                 OverrideValue::Pair(pair) => self.extremes_window = Some(pair),
                 other => return Err(invalid(name, other, "must be two load positions [A, B] (m)")),
             },
-            unknown => {
-                return Err(invalid("override", unknown, format!("is not one of {}", Self::NAMES.join(", "))));
-            }
+            unknown => return Self::check_name(unknown),
         }
         Ok(())
     }
