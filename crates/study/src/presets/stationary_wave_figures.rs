@@ -31,9 +31,8 @@ fn friction(infinite: &[InfiniteCurve], finite: &Curves) -> PlotSpec {
         SPEED,
         "max downward deflection (mm)",
     );
-    spec.subtitle = "solid: stationary wave, infinite track; dashed: finite beam (distributed-speed study); gap: no \
-                     wave (undamped without friction none from v_cr on: grey)"
-        .into();
+    spec.subtitle =
+        "solid: stationary wave, infinite track; dashed: finite beam (distributed-speed study); gap: no wave".into();
     for (c, curve) in infinite.iter().enumerate().filter(|(_, c)| c.soil.foundation == "linear") {
         // The refinement's waves with the sweep's, so that each refined peak sits on its curve.
         let mut series = sampled(curve, c, |p| p.max_downward_deflection);
