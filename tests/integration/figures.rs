@@ -156,7 +156,9 @@ fn wheel_forces_are_drawn_a_panel_per_vehicle() {
     assert!(layout.image.3 > 800, "taller than one chart: {:?}", layout.image);
     assert!(layout.panels.windows(2).all(|w| w[0].plot.3 < w[1].plot.1), "stacked top to bottom");
     let svg = std::fs::read_to_string(svg).unwrap();
-    assert!(svg.contains("vehicle 3: quarter car"), "each panel is headed by its vehicle");
+    assert!(svg.contains("vehicle 3 (quarter car), wheel 3"), "each panel is headed by its vehicle and wheels");
+    // One static wheel load, said once under the title rather than in every legend entry.
+    assert!(svg.contains("static wheel load Q₀ =") && !svg.contains("wheel 1 (Q₀"));
     let _ = std::fs::remove_dir_all(&folder);
 }
 
