@@ -34,7 +34,11 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
     let mut failed = Vec::new();
     for (i, preset) in Preset::ALL.into_iter().enumerate() {
         let timer = Instant::now();
-        let (data, journal) = match run_study(preset, options, &base, &workers) {
+        // The journals of the studies before this one: a run they finished is not run again (the stationary-wave
+        // study's finite-beam curves are the distributed-speed study's).
+        let before: Vec<std::path::PathBuf> =
+            Preset::ALL[..i].iter().map(|p| options.out.join(format!(".{}.journal", p.name()))).collect();
+        let (data, journal) = match run_study(preset, options, &base, &workers, &before) {
             Ok(done) => done,
             Err(e) if crate::error_code(&e) != crate::interrupt::EXIT_CODE => {
                 let verdict = if crate::error_code(&e) == 2 { "not run on this scenario" } else { "failed" };

@@ -99,7 +99,7 @@ pub struct StudyArgs {
 pub fn run(args: &StudyArgs) -> Result<()> {
     let preset = Preset::from_name(&args.preset)?;
     let workers = args.options.workers()?;
-    let (data, journal) = run_study(preset, &args.options, &args.options.base()?, &workers)?;
+    let (data, journal) = run_study(preset, &args.options, &args.options.base()?, &workers, &[])?;
     for line in &data.lines {
         println!("{line}");
     }
@@ -142,6 +142,7 @@ pub fn run_study(
     options: &StudyOptions,
     base: &Scenario,
     workers: &Runner<'static>,
+    borrowed: &[std::path::PathBuf],
 ) -> Result<(StudyData, study::Journal)> {
     let (out, quiet) = (options.out.as_path(), options.quiet);
     let case = base.build()?;
@@ -158,9 +159,14 @@ pub fn run_study(
             check_output_file("--out", &entry.path())?;
         }
     }
-    let journal = study::Journal::open(&out.join(format!(".{}.journal", preset.name())), options.resume)?;
+    let mut journal = study::Journal::open(&out.join(format!(".{}.journal", preset.name())), options.resume)?;
     if journal.resumed() > 0 && !quiet {
         eprintln!("{}: resuming with {} finished runs", preset.name(), journal.resumed());
+    }
+    // Runs another study of the same command finished (the same case at the same speed, the same key) are not run
+    // again.
+    for path in borrowed {
+        journal.borrow_from(path)?;
     }
     let resolution = Resolution::from(options.resolution);
     let overrides = preset.overrides(base);

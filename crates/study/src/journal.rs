@@ -75,6 +75,26 @@ impl Journal {
         Ok(Self { path: path.to_path_buf(), file: Mutex::new(file), finished })
     }
 
+    /// Take the finished runs of another journal at `path` (read only; nothing is written to it or copied into this
+    /// one's file) as if this one held them: `reproduce` runs the distributed-speed study's finite-beam curves and then
+    /// the stationary-wave study runs the same cases at the same speeds (same keys), ~4 min at paper resolution.
+    /// Returns how many were taken; a journal that is not there takes nothing.
+    pub fn borrow_from(&mut self, path: &Path) -> Result<usize> {
+        let error = |message: String| StudyError::Journal { path: path.display().to_string(), message };
+        let bytes = match std::fs::read(path) {
+            Ok(bytes) => bytes,
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(0),
+            Err(e) => return Err(error(e.to_string())),
+        };
+        let mut other = HashMap::new();
+        read_entries(&bytes, &mut other).map_err(error)?;
+        let taken = other.len();
+        for (key, value) in other {
+            self.finished.entry(key).or_insert(value);
+        }
+        Ok(taken)
+    }
+
     /// Where it is.
     pub fn path(&self) -> &Path {
         &self.path

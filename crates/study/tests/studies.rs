@@ -270,3 +270,28 @@ fn stiff_soil_discrete_speed_study_finds_interior_critical_speeds() {
     let free = curves[0]["critical_speed"].as_f64().unwrap();
     assert!((free - v_cr).abs() < 0.1 * v_cr, "friction-free critical speed {free} vs v_cr {v_cr}");
 }
+
+/// A journal borrows another's finished runs (reproduce: the stationary-wave study's finite-beam curves are the
+/// distributed-speed study's): a sweep over them runs nothing, gives the same points, and writes nothing to either.
+#[test]
+fn a_journal_borrows_the_finished_runs_of_another() {
+    use std::sync::atomic::AtomicBool;
+    let case = small_case();
+    let speeds = [100.0, 150.0, 200.0];
+    let folder = temporary("borrow");
+    let (first, second) = (folder.join("first.journal"), folder.join("second.journal"));
+    let journal = study::Journal::open(&first, false).unwrap();
+    let whole = Runner::new(1).unwrap().with_journal(Some(&journal)).speed_sweep(&case, &speeds).unwrap();
+    drop(journal);
+    let before = std::fs::read(&first).unwrap();
+    let mut borrowing = study::Journal::open(&second, false).unwrap();
+    assert_eq!(borrowing.borrow_from(&first).unwrap(), 3);
+    assert_eq!(borrowing.borrow_from(&folder.join("absent.journal")).unwrap(), 0);
+    // A stop raised before any run: only runs taken from a journal can finish.
+    let stop = AtomicBool::new(true);
+    let runner = Runner::new(1).unwrap().with_journal(Some(&borrowing)).with_stop(&stop);
+    assert_eq!(runner.speed_sweep(&case, &speeds).unwrap(), whole, "every point from the other journal");
+    drop(borrowing);
+    assert_eq!(std::fs::read(&first).unwrap(), before, "the other journal is only read");
+    assert_eq!(std::fs::read_to_string(&second).unwrap().lines().count(), 1, "nothing copied: the header alone");
+}
