@@ -119,20 +119,20 @@ pub fn window(scenario: &Scenario, section: &CoMovingSection) -> Result<(BeamMod
     }
     // The wave must fade before the zones: e^{−Re r·d} ≤ 1 % over the distance d from the load to each zone.
     // (Undamped at or above the critical speed no linear wave decays; friction alone may hold it: not checked.)
-    if let Some((behind, ahead)) = reach {
-        if load_at - zones < behind || length - zones - load_at < ahead {
-            return Err(invalid(
-                "co_moving.window",
-                window,
-                format!(
-                    "is too short for the wave at {} m/s: it falls to 1 % only {behind:.1} m behind and {ahead:.1} m \
-                     ahead of the load, so the window needs about {:.0} m with its zones of {zones} m (or more \
-                     foundation damping)",
-                    scenario.load.speed,
-                    behind + ahead + 2.0 * zones
-                ),
-            ));
-        }
+    if let Some((behind, ahead)) = reach
+        && (load_at - zones < behind || length - zones - load_at < ahead)
+    {
+        return Err(invalid(
+            "co_moving.window",
+            window,
+            format!(
+                "is too short for the wave at {} m/s: it falls to 1 % only {behind:.1} m behind and {ahead:.1} m \
+                 ahead of the load, so the window needs about {:.0} m with its zones of {zones} m (or more \
+                 foundation damping)",
+                scenario.load.speed,
+                behind + ahead + 2.0 * zones
+            ),
+        ));
     }
     let mesh = Mesh::new(length, elements as usize)?;
     let peak_damping = AbsorbingZones { length: zones, peak_damping: foundation.critical_damping(model.beam()) };
