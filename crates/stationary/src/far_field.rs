@@ -35,17 +35,24 @@ pub struct EndRelation {
 }
 
 impl EndRelation {
-    /// ∫ W′² ds over the far field beyond this end (m), for the end values U = W − W_far and W′ (the wave continued
-    /// by its decaying modes U = a₁e^{r₁t} + a₂e^{r₂t}, t the distance past the end): Σ_ij a_i a_j r_i r_j/|r_i + r_j|
-    /// taken with the sign that makes each term the integral of a decaying exponential. None for a double root.
-    pub fn tail_slope_square(&self, u: f64, slope: f64) -> Option<f64> {
+    /// The amplitudes (a₁, a₂) of the decaying modes that continue the wave past this end from its end values
+    /// U = W − W_far and W′: U(t) = a₁e^{r₁t} + a₂e^{r₂t}, t the distance past the end (a₁ + a₂ = U,
+    /// a₁r₁ + a₂r₂ = W′). None for a double root.
+    fn tail_modes(&self, u: f64, slope: f64) -> Option<[Complex64; 2]> {
         let [r1, r2] = self.roots;
         let gap = r2 - r1;
         if gap.norm() <= 1e-12 * r1.norm().max(r2.norm()) {
             return None;
         }
         let a2 = (Complex64::new(slope, 0.0) - r1 * u) / gap;
-        let a = [Complex64::new(u, 0.0) - a2, a2];
+        Some([Complex64::new(u, 0.0) - a2, a2])
+    }
+
+    /// ∫ W′² ds over the far field beyond this end (m), for the end values U = W − W_far and W′ (the wave continued
+    /// by its decaying modes, [`Self::tail_modes`]): Σ_ij a_i a_j r_i r_j/|r_i + r_j| taken with the sign that makes
+    /// each term the integral of a decaying exponential. None for a double root.
+    pub fn tail_slope_square(&self, u: f64, slope: f64) -> Option<f64> {
+        let a = self.tail_modes(u, slope)?;
         let mut sum = Complex64::new(0.0, 0.0);
         for i in 0..2 {
             for j in 0..2 {
@@ -56,22 +63,15 @@ impl EndRelation {
         }
         Some(sum.re)
     }
-}
 
-impl EndRelation {
     /// The largest U = W − W_far (m) of the wave continued past this end by its decaying modes,
     /// U(t) = a₁e^{r₁t} + a₂e^{r₂t} from the end values U and W′, t the distance past the end (t ≥ 0 ahead, ≤ 0
     /// behind): sampled every 0.1/|r|ₘₐₓ until the slower mode has decayed by e⁻⁸ (3e-4), at most [`TAIL_SAMPLES`]
     /// samples. A nonlinear soil's transparent end is exact only if this stays on the pressed side. None for a
     /// double root.
     pub fn tail_max(&self, u: f64, slope: f64) -> Option<f64> {
+        let [a1, a2] = self.tail_modes(u, slope)?;
         let [r1, r2] = self.roots;
-        let gap = r2 - r1;
-        if gap.norm() <= 1e-12 * r1.norm().max(r2.norm()) {
-            return None;
-        }
-        let a2 = (Complex64::new(slope, 0.0) - r1 * u) / gap;
-        let a1 = Complex64::new(u, 0.0) - a2;
         // Ahead the kept roots have Re r < 0 and t runs forward; behind Re r > 0 and t runs backward.
         let direction = if r1.re < 0.0 { 1.0 } else { -1.0 };
         let step = 0.1 / r1.norm().max(r2.norm());
