@@ -121,8 +121,7 @@ fn behind(infinite: &[InfiniteCurve], base: &Scenario) -> PlotSpec {
         "residual deflection (mm, + above the rail's level)",
     );
     spec.subtitle = format!(
-        "solid: left behind by the stationary wave; dashed: the bound ±f_u/k (k = {:.0} kN/m²) friction can hold, \
-         in the colour of its f_u",
+        "solid: what the wave leaves behind; dashed: the bound ±f_u/k (k = {:.0} kN/m²) of each f_u",
         base.foundation.stiffness / 1e3
     );
     spec.key = vec![(Stroke::Solid, "left behind".into()), (Stroke::Dashed, "bound ±f_u/k".into())];
