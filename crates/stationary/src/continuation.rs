@@ -43,7 +43,9 @@ pub(crate) fn friction_wave(
     let speed = problem.speed;
     let mut spent = 0;
     if let Some(warm) = guess.wave(frame.rhs.len()).map(<[f64]>::to_vec) {
-        match stages(frame, speed, warm, WARM_STAGE, guess)? {
+        // The same speed's wave on another mesh (an error estimate's halving) starts at the full stiffness.
+        let from = if guess.is_same_speed() { 1.0 } else { WARM_STAGE };
+        match stages(frame, speed, warm, from, guess)? {
             (w, Convergence::Converged { iterations, residual }) => {
                 return Ok((w, Convergence::Converged { iterations: spent + iterations, residual }));
             }

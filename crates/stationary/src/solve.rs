@@ -60,12 +60,16 @@ impl Convergence {
 pub struct ContactGuess {
     pressed: Vec<bool>,
     wave: Vec<f64>,
+    /// The same speed's wave on another mesh (not a neighbouring speed's): the friction stages start at the full
+    /// stiffness from it.
+    same_speed: bool,
 }
 
 impl ContactGuess {
     fn forget(&mut self) {
         self.pressed.clear();
         self.wave.clear();
+        self.same_speed = false;
     }
 
     fn is_empty(&self) -> bool {
@@ -77,12 +81,18 @@ impl ContactGuess {
     pub fn started_at(problem: &StationaryProblem, wave: Vec<f64>) -> Result<Self> {
         let frame = MovingFrame::new(problem)?;
         let pressed = frame.sections.iter().map(|s| s.deflection(&wave) < 0.0).collect();
-        Ok(Self { pressed, wave })
+        Ok(Self { pressed, wave, same_speed: true })
+    }
+
+    /// Whether the wave is the same speed's (on another mesh), to be taken at the full friction stiffness.
+    pub(crate) fn is_same_speed(&self) -> bool {
+        self.same_speed
     }
 
     pub(crate) fn remember(&mut self, pressed: Vec<bool>, wave: &[f64]) {
         self.pressed = pressed;
         self.wave = wave.to_vec();
+        self.same_speed = false;
     }
 
     /// The last wave's DOFs, if it fits a domain of `dofs`.
