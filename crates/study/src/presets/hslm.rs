@@ -14,7 +14,7 @@
 
 use super::hslm_figures::interpolate;
 use super::hslm_resonances::{Resonance, natural_frequencies, resonances};
-use super::hslm_verdict::DeckLimit;
+use super::hslm_verdict::{DeckLimit, larger, near_limit_peaks};
 use super::{Resolution, StudyData, StudyFailure, blank, failed_runs, mean_iterations, nothing_finished, with_devices};
 use crate::diagnostics::{deck_frequency, resolving_advance};
 use crate::error::{Result, StudyError};
@@ -419,7 +419,8 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
         return Err(nothing_finished(curve_name(c), &failures));
     }
     let tolerance = 0.02 * (speeds[1] - speeds[0]);
-    let refined = refine_peaks(&cases, &points, tolerance, runner, &mut |c, e| {
+    let limit = span.then(|| base.output.deck_track.acceleration_limit());
+    let refined = refine_peaks(&cases, &points, (tolerance, limit), runner, &mut |c, e| {
         failures.push(StudyFailure { case: curve_name(c), speed: None, error: format!("peaks not refined: {e}") })
     })?;
     let advance = base.integration.load_advance;
@@ -506,17 +507,25 @@ fn train_scenarios(set_ups: [&Scenario; 2]) -> Vec<(Vec<(String, f64)>, Scenario
 /// Each curve's peaks of the max downward deflection and of the max acceleration, refined to `tolerance` (m/s) on
 /// fresh runs; where a refinement fails, `failed` is told and the sweep's own maxima stand (their resolution the
 /// bracket).
+/// With a deck limit, every other local maximum of the acceleration sampled near it is refined too and the largest
+/// stands ([`near_limit_peaks`]): a verdict of "within" must hold for every peak, not only the largest sampled one.
 fn refine_peaks(
     cases: &[Case],
     points: &[Vec<SweepPoint>],
-    tolerance: f64,
+    (tolerance, limit): (f64, Option<f64>),
     runner: &Runner,
     failed: &mut dyn FnMut(usize, StudyError),
 ) -> Result<Vec<(RefinedPeak, RefinedPeak)>> {
     let ids: Vec<usize> = (0..cases.len()).collect();
     let refined = runner.silent().map_each(&ids, |&c| {
-        let refine = |metric| refine_maximum(&cases[c], &points[c], metric, (tolerance, PEAK_SCAN), runner);
-        Ok((refine(Metric::MaxDownwardDeflection)?, refine(Metric::MaxAcceleration)?))
+        let refine =
+            |metric, sweep: &[SweepPoint]| refine_maximum(&cases[c], sweep, metric, (tolerance, PEAK_SCAN), runner);
+        let deflection = refine(Metric::MaxDownwardDeflection, &points[c])?;
+        let mut acceleration = refine(Metric::MaxAcceleration, &points[c])?;
+        for i in limit.map_or_else(Vec::new, |l| near_limit_peaks(&points[c], &acceleration, l)) {
+            acceleration = larger(acceleration, refine(Metric::MaxAcceleration, &points[c][i - 1..=i + 1])?);
+        }
+        Ok((deflection, acceleration))
     })?;
     let peaks = refined.into_iter().enumerate().map(|(c, result)| {
         result.unwrap_or_else(|e| {

@@ -31,7 +31,7 @@ use track::simulation::StepView;
 use track::{RunResult, RunSettings, Simulation};
 
 /// What one run of a sweep reports.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
 pub struct SweepPoint {
     /// Load speed (m/s).
     pub speed: f64,
