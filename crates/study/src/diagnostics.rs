@@ -84,11 +84,7 @@ pub fn warnings(scenario: &Scenario, case: &Case) -> Vec<Warning> {
         }
     }
     if let Some(devices) = &scenario.friction.devices {
-        let requested = match (devices.count, &devices.positions) {
-            (Some(n), _) => n,
-            (None, Some(x)) => x.len(),
-            (None, None) => 0,
-        };
+        let requested = devices.requested();
         let placed = case.interactions.count(SectionKind::Device);
         if placed < requested {
             out.push(Warning {

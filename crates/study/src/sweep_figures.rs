@@ -31,15 +31,7 @@ pub fn case_line(s: &Scenario) -> String {
         (true, _, Some(z)) if z > 0.0 => format!("k_f = {} kN/m², ζ = {z}", f.stiffness / 1e3),
         (true, _, _) => format!("k_f = {} kN/m², undamped", f.stiffness / 1e3),
     };
-    let mut friction = Vec::new();
-    if let Some(d) = &s.friction.devices {
-        let count = d.count.or(d.positions.as_ref().map(Vec::len)).unwrap_or(0);
-        friction.push(format!("{count} devices × {} kN", d.force.unwrap_or(f64::NAN) / 1e3));
-    }
-    if let Some(d) = &s.friction.distributed {
-        friction.push(format!("f_u = {} kN/m", d.force_per_length / 1e3));
-    }
-    let friction = if friction.is_empty() { "none".to_string() } else { friction.join(" + ") };
+    let friction = s.friction.describe().unwrap_or_else(|| "none".to_string());
     format!("{load}; {soil}; friction: {friction}")
 }
 

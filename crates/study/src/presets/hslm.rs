@@ -19,7 +19,7 @@ use super::{Resolution, StudyData, StudyFailure, blank, failed_runs, mean_iterat
 use crate::diagnostics::{deck_frequency, resolving_advance};
 use crate::error::{Result, StudyError};
 use crate::number::row;
-use crate::scenario::{Case, Scenario};
+use crate::scenario::{Case, Scenario, devices_text};
 use crate::sweep::{CriticalSpeed, Metric, RefinedPeak, Runner, SweepPoint, finished, refine_maximum, unrefined};
 use fem_beam::Train;
 use fem_beam::train::HSLM_A;
@@ -56,11 +56,6 @@ fn friction_name(friction: usize) -> &'static str {
     if friction == 0 { "none" } else { "with" }
 }
 
-/// "1 device × 50 kN", "31 devices × 50 kN".
-pub(super) fn devices_text(count: usize, force: f64) -> String {
-    format!("{count} device{} × {} kN", if count == 1 { "" } else { "s" }, force / 1e3)
-}
-
 /// The study's two set-ups on `base`: without any friction, and with the scenario's `[friction]` (else the fallback
 /// devices) and its description.
 pub(super) fn friction_setups(base: &Scenario) -> (Scenario, Scenario, String) {
@@ -68,16 +63,7 @@ pub(super) fn friction_setups(base: &Scenario) -> (Scenario, Scenario, String) {
     if let Some((count, force)) = fallback_devices(base) {
         return (none, with_devices(base, count, force), devices_text(count, force));
     }
-    let f = &base.friction;
-    let mut parts = Vec::new();
-    if let Some(d) = &f.devices {
-        let count = d.count.or(d.positions.as_ref().map(Vec::len)).unwrap_or(0);
-        parts.push(devices_text(count, d.force.unwrap_or(f64::NAN)));
-    }
-    if let Some(d) = &f.distributed {
-        parts.push(format!("f_u = {} kN/m", d.force_per_length / 1e3));
-    }
-    (none, base.clone(), parts.join(" + "))
+    (none, base.clone(), base.friction.describe().unwrap_or_default())
 }
 
 /// `base` as the study runs it, with a sentence for each change (docs/theory.md §10). On a span, the load advance

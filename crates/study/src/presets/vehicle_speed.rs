@@ -106,7 +106,7 @@ pub(super) fn overrides(base: &Scenario) -> Vec<String> {
     if let Some((count, force)) = super::hslm::fallback_devices(base) {
         notes.push(format!(
             "the scenario has no [friction]: the study compares no friction with {}",
-            super::hslm::devices_text(count, force)
+            crate::scenario::devices_text(count, force)
         ));
     }
     if let Ok(speeds) = Resolution::Coarse.speeds(base)

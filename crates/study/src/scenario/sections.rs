@@ -261,6 +261,25 @@ pub struct FrictionSection {
     pub distributed: Option<DistributedSection>,
 }
 
+impl FrictionSection {
+    /// The friction in words — "31 devices × 50 kN", "f_u = 2 kN/m", both joined by " + " — or None without any.
+    pub fn describe(&self) -> Option<String> {
+        let mut parts = Vec::new();
+        if let Some(d) = &self.devices {
+            parts.push(devices_text(d.requested(), d.force.unwrap_or(f64::NAN)));
+        }
+        if let Some(d) = &self.distributed {
+            parts.push(format!("f_u = {} kN/m", d.force_per_length / 1e3));
+        }
+        (!parts.is_empty()).then(|| parts.join(" + "))
+    }
+}
+
+/// "1 device × 50 kN", "31 devices × 50 kN": `count` devices of `force` (N).
+pub fn devices_text(count: usize, force: f64) -> String {
+    format!("{count} device{} × {} kN", if count == 1 { "" } else { "s" }, force / 1e3)
+}
+
 /// `[friction.devices]`: `count` evenly spaced devices or explicit `positions`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
 #[serde(default, deny_unknown_fields)]
@@ -271,6 +290,13 @@ pub struct DevicesSection {
     pub positions: Option<Vec<f64>>,
     /// Maximal force of one device F_u (N); required.
     pub force: Option<f64>,
+}
+
+impl DevicesSection {
+    /// How many devices are asked for: `count`, else the positions given (0 with neither).
+    pub fn requested(&self) -> usize {
+        self.count.or(self.positions.as_ref().map(Vec::len)).unwrap_or(0)
+    }
 }
 
 /// Quadrature of distributed friction.
