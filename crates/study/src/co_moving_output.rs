@@ -292,12 +292,7 @@ pub fn figures(summary: &CoMovingSummary, result: &CoMovingResult) -> Vec<PlotSp
     let positive: Vec<(f64, f64)> = result.changes.iter().copied().filter(|(_, c)| *c > 0.0).collect();
     let ends = (positive.first().map_or(0.0, |p| p.0), positive.last().map_or(1.0, |p| p.0));
     change.series.push(Series { markers: true, ..line("change of the wave", positive) });
-    change.series.push(Series {
-        label: Some(format!("stationary below {STATIONARY_CHANGE:.0e}")),
-        color: 7,
-        stroke: Stroke::Dashed,
-        markers: false,
-        points: vec![(ends.0, STATIONARY_CHANGE), (ends.1, STATIONARY_CHANGE)],
-    });
+    let threshold = format!("stationary below {STATIONARY_CHANGE:.0e}");
+    change.series.push(Series::reference(threshold, (ends.0, STATIONARY_CHANGE), (ends.1, STATIONARY_CHANGE)));
     vec![wave, change]
 }

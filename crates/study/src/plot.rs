@@ -41,6 +41,22 @@ pub struct Series {
     pub points: Vec<(f64, f64)>,
 }
 
+/// Grey in the categorical palette ([`color`]): reference lines, not configurations.
+pub const GREY: usize = 7;
+
+impl Series {
+    /// A reference line (a limit, a threshold, a speed where a curve ends) from `from` to `to`, dashed grey.
+    pub fn reference(label: impl Into<String>, from: (f64, f64), to: (f64, f64)) -> Self {
+        Series {
+            label: Some(label.into()),
+            color: GREY,
+            stroke: Stroke::Dashed,
+            markers: false,
+            points: vec![from, to],
+        }
+    }
+}
+
 /// A marked point (a refined critical speed or optimum), drawn as a triangle in its configuration's colour.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Mark {

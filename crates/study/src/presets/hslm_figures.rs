@@ -11,8 +11,6 @@ use crate::sweep::SweepPoint;
 const SPEED_AXIS: &str = "train speed v (km/h)";
 const DEFLECTION_AXIS: &str = "max downward deflection";
 const ACCELERATION_AXIS: &str = "max vertical acceleration";
-/// Grey in the categorical palette, for reference lines.
-const GREY: usize = 7;
 
 fn deflection_mm(p: &SweepPoint) -> f64 {
     p.max_downward_deflection * 1e3
@@ -36,10 +34,10 @@ fn train_colour(k: usize) -> usize {
 }
 
 /// A horizontal reference line at `y` across the figure's speed range.
-fn level(results: &Results, label: String, color: usize, y: f64) -> Series {
+fn level(results: &Results, label: String, y: f64) -> Series {
     let points = &results.curves[0].points;
     let (from, to) = (points[0].speed * KMH, points[points.len() - 1].speed * KMH);
-    Series { label: Some(label), color, stroke: Stroke::Dashed, markers: false, points: vec![(from, y), (to, y)] }
+    Series::reference(label, (from, y), (to, y))
 }
 
 impl Results {
@@ -156,7 +154,7 @@ impl Results {
         };
         let mut spec = self.envelope_figure(titles, deflection_mm, &critical, "critical train and speed");
         let heaviest = self.curves.iter().map(|c| c.static_max).fold(0.0, f64::max);
-        spec.series.push(level(self, "static, heaviest train".into(), GREY, heaviest * 1e3));
+        spec.series.push(level(self, "static, heaviest train".into(), heaviest * 1e3));
         spec
     }
 
@@ -184,7 +182,7 @@ impl Results {
         let mut spec = self.envelope_figure(titles, acceleration, &critical, label);
         if let Some(limit) = self.acceleration_limit {
             let label = format!("EN 1990 limit {} m/s², {}", limit.value, limit.track.name());
-            spec.series.push(level(self, label, GREY, limit.value));
+            spec.series.push(level(self, label, limit.value));
         }
         spec
     }

@@ -9,8 +9,6 @@ use crate::scenario::Scenario;
 use crate::stationary_output::StationaryPoint;
 
 const SPEED: &str = "load speed v (m/s)";
-/// Grey in the categorical palette, for reference lines.
-const GREY: usize = 7;
 
 /// The four figures.
 pub(super) fn plots(
@@ -68,13 +66,7 @@ fn friction(infinite: &[InfiniteCurve], finite: &Curves) -> PlotSpec {
         InfiniteCritical::Unbounded { critical_speed, .. } => Some(critical_speed),
         _ => None,
     }) {
-        spec.series.push(Series {
-            label: Some(format!("v_cr {v_cr:.1} m/s: unbounded")),
-            color: GREY,
-            stroke: Stroke::Dashed,
-            markers: false,
-            points: vec![(v_cr, 0.0), (v_cr, top)],
-        });
+        spec.series.push(Series::reference(format!("v_cr {v_cr:.1} m/s: unbounded"), (v_cr, 0.0), (v_cr, top)));
     }
     spec.key = vec![(Stroke::Solid, "infinite track".into()), (Stroke::Dashed, "finite beam".into())];
     spec.mark_label = "refined peak".into();
