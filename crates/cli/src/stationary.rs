@@ -208,7 +208,8 @@ fn print_text(scenario: &Scenario, study: &StationaryStudy) {
     if let Some(note) = study::stationary_output::branch_note(study.law) {
         println!("  {note}");
     }
-    if let Some((speed, error)) = study.largest_error() {
+    if let Some((point, error)) = study.largest_error() {
+        let speed = point.speed;
         println!(
             "  discretisation error of the peaks (deflection, moment), estimated from one halving of the elements: \
              at most {:.2} % (at {speed} m/s)",

@@ -8,6 +8,7 @@ use crate::error::Result;
 use crate::problem::{Domain, StationaryProblem};
 use crate::solve::{ContactGuess, solve_from};
 use crate::wave::StationaryWave;
+use fem_beam::element::hermite;
 
 /// 2ᵖ/(2ᵖ − 1) for p = 1: the factor on |P_h − P_{h/2}| that estimates the error of P_h.
 pub const ERROR_FACTOR: f64 = 2.0;
@@ -23,13 +24,15 @@ pub fn solve_halved(problem: &StationaryProblem, wave: &StationaryWave) -> Resul
     let level = wave.settlement;
     let n = wave.s.len();
     let mut w = Vec::with_capacity(4 * n - 2);
+    // The element's cubic at ξ = ½ (its Hermite shape functions and their slopes there).
+    let (middle, middle_dx) = (hermite::shape(0.5, l), hermite::shape_dx(0.5, l));
     for i in 0..n {
         let (w0, t0) = (wave.deflection[i] + level, wave.slope[i]);
         w.extend([w0, t0]);
         if i + 1 < n {
-            // The element's cubic at ξ = ½: W = (W₀ + W₁)/2 + l(θ₀ − θ₁)/8, W′ = 3(W₁ − W₀)/(2l) − (θ₀ + θ₁)/4.
-            let (w1, t1) = (wave.deflection[i + 1] + level, wave.slope[i + 1]);
-            w.extend([0.5 * (w0 + w1) + l * (t0 - t1) / 8.0, 1.5 * (w1 - w0) / l - 0.25 * (t0 + t1)]);
+            let q = [w0, t0, wave.deflection[i + 1] + level, wave.slope[i + 1]];
+            let at = |n: &[f64; 4]| n.iter().zip(&q).map(|(n, q)| n * q).sum::<f64>();
+            w.extend([at(&middle), at(&middle_dx)]);
         }
     }
     solve_from(&halved, &mut ContactGuess::started_at(&halved, w)?)

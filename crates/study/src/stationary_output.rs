@@ -240,19 +240,20 @@ impl StationaryStudy {
         Ok(Self { law, load: first.load, settlement: -first.far_level(), friction, points, waves })
     }
 
-    /// The largest relative discretisation error of a peak over the speeds estimated, and its speed (m/s).
-    pub fn largest_error(&self) -> Option<(f64, f64)> {
-        let estimated = self.points.iter().filter_map(|p| Some((p.speed, p.discretisation_error?.relative(p))));
+    /// The point whose peaks have the largest relative discretisation error over the speeds estimated, and that
+    /// error.
+    pub fn largest_error(&self) -> Option<(&StationaryPoint, f64)> {
+        let estimated = self.points.iter().filter_map(|p| Some((p, p.discretisation_error?.relative(p))));
         estimated.max_by(|a, b| a.1.total_cmp(&b.1))
     }
 
     /// Warnings for the reader: peaks whose estimated discretisation error exceeds [`ERROR_TOLERANCE`], with the
     /// element length that would bring it under (the moment converges at second order: l·√(tolerance/error)).
     pub fn warnings(&self) -> Vec<String> {
-        let Some((speed, error)) = self.largest_error().filter(|&(_, e)| e > ERROR_TOLERANCE) else {
+        let Some((point, error)) = self.largest_error().filter(|&(_, e)| e > ERROR_TOLERANCE) else {
             return Vec::new();
         };
-        let l = self.points.iter().find(|p| p.speed == speed).map_or(f64::NAN, |p| p.domain.2);
+        let (speed, l) = (point.speed, point.domain.2);
         vec![format!(
             "domain.element_length = {l} m: the peaks are resolved only to {:.1} % at {speed} m/s (estimated from one \
              halving of the elements); elements of {:.3} m or less bring them to {} %",

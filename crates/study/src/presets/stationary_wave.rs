@@ -179,8 +179,9 @@ fn refine(
         if !wave.convergence.is_converged() {
             return Ok(f64::NEG_INFINITY);
         }
-        evaluated.push((v, wave.max_downward().value));
-        Ok(wave.max_downward().value)
+        let peak = wave.max_downward().value;
+        evaluated.push((v, peak));
+        Ok(peak)
     };
     let tolerance = 0.02 * (after.speed - before.speed) / 2.0;
     let (speed, refined) = crate::sweep::golden_section(&mut deflection, before.speed, after.speed, tolerance, true)?;
