@@ -8,6 +8,8 @@
 //!   times, O(n·b²) and O(n·b)), principal submatrices and the Schur condensation of leading or trailing blocks.
 //! - [`local_solve`]: A⁻¹h for a right-hand side of a few neighbouring non-zeros, computed only where it is
 //!   significant ([`BandedLdlt::solve_local`]).
+//! - [`selected_inverse`]: the entries of A⁻¹ inside the band in O(n·b²) ([`BandedLdlt::inverse_band`]), for the
+//!   Delassus diagonal of many short rows.
 //! - [`general`]: [`GeneralBanded`] non-symmetric banded matrices and their LU with partial pivoting
 //!   ([`GeneralLu`]), for the moving-frame operator of the stationary wave.
 //! - [`diagonals`]: [`BandDiagonals`], the band as diagonals for fast products.
@@ -20,6 +22,7 @@ pub mod diagonals;
 pub mod error;
 pub mod general;
 pub mod local_solve;
+pub mod selected_inverse;
 pub mod symmetric;
 
 pub use block_rows::BlockRows;
