@@ -4,36 +4,12 @@ use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use std::io::IsTerminal;
 use std::time::Duration;
 
-/// Runs estimated to take longer than this (s) are announced with their size and estimate before they start.
-const ANNOUNCE_ABOVE: f64 = 10.0;
-
-/// Say on standard error what `runs` runs of this cost will take on `threads` threads, when that is long: the steps,
-/// the DOFs, the sections and wheels, and the estimate — so that nobody waits blind for a run of hours.
-pub fn announce_cost(cost: &study::cost::RunCost, runs: usize, threads: usize) {
-    let seconds = cost.seconds * runs as f64 / threads.max(1).min(runs.max(1)) as f64;
-    if seconds < ANNOUNCE_ABOVE {
-        return;
-    }
-    let size = format!(
-        "{:.0} steps over {} DOFs, {} friction sections, {} wheels",
-        cost.steps, cost.dofs, cost.sections, cost.wheels
-    );
-    let what =
-        if runs == 1 { format!("this run: {size}") } else { format!("{runs} runs of {size} on {threads} threads") };
-    eprintln!(
-        "{what}: estimated {} (within a factor of 2–3; Ctrl-C stops it, a progress bar follows on a terminal)",
-        duration(seconds)
-    );
-}
-
-/// A duration in the unit a reader wants: s, min or h.
-fn duration(seconds: f64) -> String {
-    if seconds < 120.0 {
-        format!("{seconds:.0} s")
-    } else if seconds < 7200.0 {
-        format!("{:.0} min", seconds / 60.0)
-    } else {
-        format!("{:.1} h", seconds / 3600.0)
+/// Say on standard error what `what` ("this run", "sweep", a study's name, "stationary") will take when that is
+/// long ([`study::cost::Estimate::is_long`]): how many runs or solves, the size of the largest, the threads and the
+/// estimate — terminal or not, so that nobody waits blind for a run of hours.
+pub fn announce(what: &str, estimate: &study::cost::Estimate) {
+    if estimate.is_long() {
+        eprintln!("{what}: {}; Ctrl-C stops it, a progress bar follows on a terminal", estimate.describe());
     }
 }
 

@@ -84,7 +84,7 @@ pub fn run(args: &RunArgs) -> Result<()> {
     };
     let steps = case.settings.step_count(scenario.mesh.length);
     if !args.quiet {
-        crate::progress::announce_cost(&study::cost::RunCost::of(&case), 1, 1);
+        crate::progress::announce("this run", &study::cost::Estimate::run(study::cost::RunCost::of(&case)));
     }
     let bar = crate::progress::steps_bar(steps as u64, args.quiet || args.format == Format::Json);
     let progress = |fraction: f64| bar.set_position((fraction * steps) as u64);

@@ -175,8 +175,10 @@ pub fn run_study(
     }
     let bar = crate::progress::bar(preset.name(), None, quiet);
     let progress = |done: usize| bar.set_position(done as u64);
+    let announce = |estimate: &study::cost::Estimate| crate::progress::announce(preset.name(), estimate);
     let runner =
         workers.clone().with_progress(&progress).with_journal(Some(&journal)).with_stop(crate::interrupt::stop_flag());
+    let runner = if quiet { runner } else { runner.with_estimate(&announce) };
     let start = Instant::now();
     let data = crate::interrupt::explain(run_preset(preset, resolution, base, &runner), Some(&journal))?;
     let wall_time = start.elapsed().as_secs_f64();

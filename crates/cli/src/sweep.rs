@@ -80,13 +80,12 @@ pub fn run(args: &SweepArgs) -> Result<()> {
         eprintln!("resuming: {} finished runs in {}", j.resumed(), j.path().display());
     }
     let runner = crate::jobs::runner(args.jobs, args.quiet)?;
-    if !args.quiet {
-        crate::progress::announce_cost(&study::cost::RunCost::of(&case), speeds.len(), runner.threads());
-    }
     let bar = crate::progress::bar("sweep", Some(speeds.len() as u64), args.quiet);
     let progress = |done: usize| bar.set_position(done as u64);
+    let announce = |estimate: &study::cost::Estimate| crate::progress::announce("sweep", estimate);
     let runner =
         runner.with_progress(&progress).with_journal(journal.as_ref()).with_stop(crate::interrupt::stop_flag());
+    let runner = if args.quiet { runner } else { runner.with_estimate(&announce) };
     let rows = crate::interrupt::explain(runner.speed_sweep_keeping(&case, &speeds), journal.as_ref())?;
     bar.finish_and_clear();
     let (points, failed) = (finished(&rows), failures(&rows));

@@ -105,6 +105,11 @@ impl Journal {
         self.finished.len()
     }
 
+    /// Whether a result is stored under `key`.
+    pub fn contains(&self, key: &str) -> bool {
+        self.finished.contains_key(key)
+    }
+
     /// The result stored under `key` by an earlier run, if any.
     pub fn get<R: DeserializeOwned>(&self, key: &str) -> Option<R> {
         self.finished.get(key).and_then(|v| R::deserialize(v).ok())

@@ -28,6 +28,7 @@ pub(super) fn study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
         })
         .collect::<Result<Vec<_>>>()?;
     let indices: Vec<usize> = (0..combos.len()).collect();
+    runner.announce_runs(&cases);
     // A failed run is recorded and leaves its curve out; every other run is kept.
     let results = runner.map_each(&indices, |&i| {
         let ((f, v), case) = (combos[i], &cases[i]);

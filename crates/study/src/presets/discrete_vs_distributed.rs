@@ -87,6 +87,7 @@ fn run_both(
     runner: &Runner,
 ) -> Result<(Vec<ModelRun>, Vec<StudyFailure>)> {
     let cases = [devices.build()?, distributed.build()?];
+    runner.announce_runs(&cases);
     let results = runner.map_each(&cases, |case| {
         let middle =
             case.interactions.positions().iter().position(|&x| (x - case.model.mesh().length / 2.0).abs() < 1e-9);

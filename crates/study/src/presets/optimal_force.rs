@@ -23,6 +23,7 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
     // A failed run leaves a gap in its curve and is recorded; each curve's optimum comes from its finished runs.
     // Built before any run: bad input is refused (exit 2), not recorded as a failed run.
     let cases = scenarios.iter().map(Scenario::build).collect::<Result<Vec<_>>>()?;
+    runner.announce_points(&cases, &(0..cases.len()).map(|c| (c, speed)).collect::<Vec<_>>());
     let points = runner.map_each(&cases, |case| runner.point(case, speed))?;
     let mut csv =
         String::from("devices,device_force,speed,max_downward_deflection,max_upward_deflection,dissipated_energy\n");

@@ -7,6 +7,7 @@
 use super::curves::{Curves, sweep_curves};
 use super::stationary_wave_figures as figures;
 use super::{StudyData, blank, mean_iterations, with_distributed};
+use crate::cost::Estimate;
 use crate::error::Result;
 use crate::scenario::{FoundationLawKind, Scenario};
 use crate::speeds::SpeedScale;
@@ -115,6 +116,10 @@ pub(super) fn study(resolution: super::Resolution, base: &Scenario, runner: &Run
         FRICTION.iter().map(|&f| (vec![("force_per_length".into(), f)], with_distributed(base, f))).collect();
     let finite = sweep_curves(finite_scenarios, &speeds, runner)?;
     let soils = Soil::all();
+    let first = speeds.first().copied().unwrap_or(0.0);
+    let problems = soils.iter().map(|soil| problem(&soil.scenario(base), first, Domain::default()));
+    let solves = problems.map(|p| Ok(Estimate::stationary(&p?, speeds.len(), false))).collect::<Result<Vec<_>>>()?;
+    runner.announce(Estimate::together(solves, runner.threads()));
     let infinite = runner.silent().map(&soils, |soil| {
         let scenario = soil.scenario(base);
         let study = StationaryStudy::of(&scenario, &speeds, Domain::default(), ErrorEstimate::Skip)?;

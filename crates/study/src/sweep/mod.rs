@@ -12,21 +12,19 @@ mod golden;
 pub(crate) use golden::golden_section;
 mod optimal_force;
 mod peak;
+mod runner;
 
 pub use critical::{CriticalSpeed, critical_speed};
 pub use optimal_force::{OptimalForce, log_spaced, optimal_device_force, refine_device_force, refine_from_scan};
 pub use peak::{Metric, PeakLocation, RefinedPeak, refine_maximum, unrefined};
+pub use runner::{Runner, worker_threads};
 
-use crate::error::{Result, StudyError, invalid};
-use crate::journal::Journal;
+use crate::error::{Result, StudyError};
 use crate::number::row_with_gaps;
 use crate::scenario::Case;
-use rayon::prelude::*;
-use serde::de::DeserializeOwned;
 use serde::{Deserialize, Serialize};
 use std::io::Write;
-use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::atomic::{AtomicBool, Ordering};
 use track::simulation::StepView;
 use track::{RunResult, RunSettings, Simulation};
 
@@ -201,202 +199,6 @@ pub(crate) fn simulate_observed(
     let stopped = || stop.is_some_and(|s| s.load(Ordering::Relaxed));
     let result = simulation.run_observed(&mut |view| observer(view) && !stopped())?;
     if stopped() { Err(StudyError::Interrupted) } else { Ok(result) }
-}
-
-/// The worker threads a request for `jobs` gets: all cores for 0, and never more than the cores the machine
-/// has (`std::thread::available_parallelism`): more threads than cores only add memory and switching.
-pub fn worker_threads(jobs: usize) -> usize {
-    let cores = std::thread::available_parallelism().map_or(1, usize::from);
-    if jobs == 0 { cores } else { jobs.min(cores) }
-}
-
-/// How the runs of a sweep or study are carried out: on one thread pool built once (see [`worker_threads`]),
-/// reporting the number of finished runs to `progress`, keeping every finished run in an optional [`Journal`] (and
-/// taking runs already there from it), and stopping once an optional `stop` flag is raised (Ctrl-C, SIGTERM): runs
-/// not started fail with [`StudyError::Interrupted`], runs in flight are abandoned at their next step.
-#[derive(Clone)]
-pub struct Runner<'a> {
-    pool: Arc<rayon::ThreadPool>,
-    /// Called with the number of finished runs of the current parallel loop after each one.
-    pub progress: &'a (dyn Fn(usize) + Sync),
-    /// Finished runs, on disk.
-    pub journal: Option<&'a Journal>,
-    /// Raised to stop: runs not yet started fail with [`StudyError::Interrupted`], runs in flight stop at their next
-    /// step.
-    pub stop: Option<&'a AtomicBool>,
-}
-
-static NO_PROGRESS: fn(usize) = |_| {};
-
-impl Runner<'static> {
-    /// A pool of [`worker_threads`]`(jobs)` threads, no progress, no journal, no stop flag.
-    pub fn new(jobs: usize) -> Result<Self> {
-        let threads = worker_threads(jobs);
-        let pool = rayon::ThreadPoolBuilder::new()
-            .num_threads(threads)
-            .build()
-            .map_err(|e| invalid("jobs", jobs, format!("cannot start {threads} worker threads: {e}")))?;
-        Ok(Runner { pool: Arc::new(pool), progress: &NO_PROGRESS, journal: None, stop: None })
-    }
-}
-
-impl<'a> Runner<'a> {
-    /// The same with progress reported to `progress`.
-    pub fn with_progress<'b>(self, progress: &'b (dyn Fn(usize) + Sync)) -> Runner<'b>
-    where
-        'a: 'b,
-    {
-        Runner { progress, ..self }
-    }
-
-    /// The same keeping finished runs in `journal`.
-    pub fn with_journal<'b>(self, journal: Option<&'b Journal>) -> Runner<'b>
-    where
-        'a: 'b,
-    {
-        Runner { journal, ..self }
-    }
-
-    /// The same, stopping once `stop` is raised.
-    pub fn with_stop<'b>(self, stop: &'b AtomicBool) -> Runner<'b>
-    where
-        'a: 'b,
-    {
-        Runner { stop: Some(stop), ..self }
-    }
-
-    /// The same without progress reports.
-    pub fn silent(&self) -> Self {
-        Runner { progress: &NO_PROGRESS, ..self.clone() }
-    }
-
-    /// The number of worker threads.
-    pub fn threads(&self) -> usize {
-        self.pool.current_num_threads()
-    }
-
-    /// One run of `case` under `settings` that stops with [`StudyError::Interrupted`] when the stop flag is raised.
-    pub fn simulate(&self, case: &Case, settings: &RunSettings) -> Result<RunResult> {
-        simulate_until(case, settings, self.stop)
-    }
-
-    /// `run` unless the journal already holds the result under `key`; a fresh result is journaled at once.
-    pub fn cached<R: Serialize + DeserializeOwned>(&self, key: &str, run: impl FnOnce() -> Result<R>) -> Result<R> {
-        if let Some(done) = self.journal.and_then(|j| j.get(key)) {
-            return Ok(done);
-        }
-        if self.stop.is_some_and(|s| s.load(Ordering::Relaxed)) {
-            return Err(StudyError::Interrupted);
-        }
-        let result = run()?;
-        if let Some(journal) = self.journal {
-            journal.record(key, &result)?;
-        }
-        Ok(result)
-    }
-
-    /// One run of `case` at `speed` (m/s), through the journal.
-    pub fn point(&self, case: &Case, speed: f64) -> Result<SweepPoint> {
-        self.cached(&format!("{:016x}@{speed}", case.fingerprint), || point_until(case, speed, self.stop))
-    }
-
-    /// `f` over `items` on the pool, results in the order of `items` whatever the thread count; the first error
-    /// is returned (after the runs in flight end, so that their results reach the journal).
-    pub fn map<T: Sync, R: Send>(&self, items: &[T], f: impl Fn(&T) -> Result<R> + Sync) -> Result<Vec<R>> {
-        // An interruption is reported only if nothing worse happened.
-        let mut interrupted = false;
-        let mut out = Vec::with_capacity(items.len());
-        for result in self.run_all(items, f) {
-            match result {
-                Ok(r) => out.push(r),
-                Err(StudyError::Interrupted) => interrupted = true,
-                Err(e) => return Err(e),
-            }
-        }
-        if interrupted { Err(StudyError::Interrupted) } else { Ok(out) }
-    }
-
-    /// `f` over `items` on the pool like [`Runner::map`], but a failed item does not end the loop: every item's
-    /// result, in the order of `items`. Only an interruption is an error (the finished runs are in the journal).
-    pub fn map_each<T: Sync, R: Send>(
-        &self,
-        items: &[T],
-        f: impl Fn(&T) -> Result<R> + Sync,
-    ) -> Result<Vec<Result<R>>> {
-        let results = self.run_all(items, f);
-        if results.iter().any(|r| matches!(r, Err(StudyError::Interrupted))) {
-            return Err(StudyError::Interrupted);
-        }
-        Ok(results)
-    }
-
-    /// Every item's result of `f` on the pool, in the order of `items`, progress reported after each.
-    fn run_all<T: Sync, R: Send>(&self, items: &[T], f: impl Fn(&T) -> Result<R> + Sync) -> Vec<Result<R>> {
-        let done = AtomicUsize::new(0);
-        self.pool.install(|| {
-            items
-                .par_iter()
-                .map(|item| {
-                    let result = f(item);
-                    (self.progress)(done.fetch_add(1, Ordering::Relaxed) + 1);
-                    result
-                })
-                .collect()
-        })
-    }
-
-    /// Run `case` at every speed, keeping going past a failed run: one row per speed, in the order of `speeds`
-    /// (an interruption is still an error).
-    pub fn speed_sweep_keeping(&self, case: &Case, speeds: &[f64]) -> Result<Vec<SweepRow>> {
-        Ok(self.sweep_many_keeping(std::slice::from_ref(case), speeds)?.pop().expect("one case"))
-    }
-
-    /// Run every case at every speed like [`Runner::sweep_many`], keeping going past a failed run: per case, one
-    /// row per speed in the order of `speeds` (an interruption is still an error).
-    pub fn sweep_many_keeping(&self, cases: &[Case], speeds: &[f64]) -> Result<Vec<Vec<SweepRow>>> {
-        self.sweep_grids_keeping(cases, &vec![speeds.to_vec(); cases.len()])
-    }
-
-    /// Run each case over its own grid of speeds (`grids[c]` for `cases[c]`), all on one pool, keeping going past
-    /// a failed run: per case, one row per speed of its grid, in its order (an interruption is still an error).
-    pub fn sweep_grids_keeping(&self, cases: &[Case], grids: &[Vec<f64>]) -> Result<Vec<Vec<SweepRow>>> {
-        grids.iter().try_for_each(|g| check_speeds(g))?;
-        let pairs: Vec<(usize, f64)> =
-            grids.iter().enumerate().flat_map(|(c, g)| g.iter().map(move |&v| (c, v))).collect();
-        let rows = self.map_each(&pairs, |&(c, speed)| self.point(&cases[c], speed))?;
-        let mut rows = rows
-            .into_iter()
-            .zip(&pairs)
-            .map(|(row, &(_, speed))| row.map_err(|e| FailedRun { speed, error: e.to_string() }));
-        Ok(grids.iter().map(|g| rows.by_ref().take(g.len()).collect()).collect())
-    }
-
-    /// Run `case` at every speed; results in the order of `speeds`.
-    pub fn speed_sweep(&self, case: &Case, speeds: &[f64]) -> Result<Vec<SweepPoint>> {
-        Ok(self.sweep_many(std::slice::from_ref(case), speeds)?.pop().expect("one case"))
-    }
-
-    /// Run every case at every speed, all (case, speed) pairs on one pool; results per case in the order of
-    /// `speeds`, identical for any thread count.
-    pub fn sweep_many(&self, cases: &[Case], speeds: &[f64]) -> Result<Vec<Vec<SweepPoint>>> {
-        check_speeds(speeds)?;
-        let pairs = case_speed_pairs(cases.len(), speeds);
-        let mut points = self.map(&pairs, |&(c, speed)| self.point(&cases[c], speed))?.into_iter();
-        Ok((0..cases.len()).map(|_| points.by_ref().take(speeds.len()).collect()).collect())
-    }
-}
-
-/// Every (case index, speed) of `cases` cases swept over `speeds`, case by case: one pool runs them all.
-fn case_speed_pairs(cases: usize, speeds: &[f64]) -> Vec<(usize, f64)> {
-    (0..cases).flat_map(|c| speeds.iter().map(move |&v| (c, v))).collect()
-}
-
-/// Every speed of a sweep must be finite and positive.
-fn check_speeds(speeds: &[f64]) -> Result<()> {
-    match speeds.iter().find(|v| !(v.is_finite() && **v > 0.0)) {
-        Some(&v) => Err(invalid("speeds", v, "every speed must be finite and > 0 (m/s)")),
-        None => Ok(()),
-    }
 }
 
 /// The columns of sweep output: name, unit, meaning (in this order; the user guide and the JSON beside a sweep's CSV
