@@ -58,6 +58,8 @@ pub(crate) fn stationary_wave(
     let domain = stationary::Domain { behind, ahead, element_length };
     let total = speeds.len() as f64;
     let solve = move |stop: &_, told: &interruptible::Progress| {
+        let first = study::stationary_output::problem(&scenario, speeds.first().copied().unwrap_or(0.0), domain)?;
+        told.announce("frictrack.stationary", &study::cost::Estimate::stationary(&first, speeds.len(), true));
         let done = |n: usize| told.set(n as f64 / total);
         StationaryStudy::of_until(&scenario, &speeds, domain, ErrorEstimate::Halving, Some(stop), &done)
     };
@@ -97,8 +99,12 @@ pub(crate) fn preset(
         base.output.deck_track = track.parse().map_err(to_python)?;
     }
     let runner = Runner::new(jobs).map_err(to_python)?;
-    let data = interruptible::run(py, move |stop| run_preset(preset, resolution, &base, &runner.with_stop(stop)))?
-        .map_err(to_python)?;
+    let what = format!("frictrack.study({name:?})");
+    let work = move |stop: &_, told: &interruptible::Progress| {
+        let announce = |estimate: &study::cost::Estimate| told.announce(&what, estimate);
+        run_preset(preset, resolution, &base, &runner.with_stop(stop).with_estimate(&announce))
+    };
+    let data = interruptible::run_reporting(py, None, work)?.map_err(to_python)?;
     let columns = data.columns.iter().map(|(c, u)| (c.clone(), u.to_string())).collect();
     Ok((json(&data.summary)?, data.csv, data.headline, data.lines, columns))
 }

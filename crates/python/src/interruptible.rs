@@ -12,33 +12,51 @@ use std::time::Duration;
 /// How often a waiting caller checks Python's signals.
 pub const POLL: Duration = Duration::from_millis(50);
 
-/// How far a worker's job is, as a fraction in [0, 1] (f64 bits in an atomic): set by the worker, read by the
-/// waiting caller.
+/// How far a worker's job is, as a fraction in [0, 1] (f64 bits in an atomic), and the lines it has to say (the
+/// estimate of a long batch): set by the worker, read by the waiting caller.
 #[derive(Debug, Default)]
-pub(crate) struct Progress(AtomicU64);
+pub(crate) struct Progress {
+    fraction: AtomicU64,
+    notes: Mutex<Vec<String>>,
+}
 
 impl Progress {
     /// Set the fraction done.
     pub(crate) fn set(&self, fraction: f64) {
-        self.0.store(fraction.clamp(0.0, 1.0).to_bits(), Ordering::Relaxed);
+        self.fraction.store(fraction.clamp(0.0, 1.0).to_bits(), Ordering::Relaxed);
     }
 
     fn get(&self) -> f64 {
-        f64::from_bits(self.0.load(Ordering::Relaxed))
+        f64::from_bits(self.fraction.load(Ordering::Relaxed))
+    }
+
+    /// Announce `estimate` of `what` ("frictrack.sweep", …) on Python's standard error when it is long
+    /// ([`study::cost::Estimate::is_long`]), as the command line does on its own.
+    pub(crate) fn announce(&self, what: &str, estimate: &study::cost::Estimate) {
+        if estimate.is_long() {
+            let line = format!("{what}: {}; KeyboardInterrupt (Ctrl-C) stops it\n", estimate.describe());
+            self.notes.lock().unwrap_or_else(PoisonError::into_inner).push(line);
+        }
+    }
+
+    /// Write the lines said since the last call to `sys.stderr`.
+    fn write_notes(&self, py: Python<'_>) -> PyResult<()> {
+        let notes = std::mem::take(&mut *self.notes.lock().unwrap_or_else(PoisonError::into_inner));
+        if notes.is_empty() {
+            return Ok(());
+        }
+        let stderr = py.import("sys")?.getattr("stderr")?;
+        for line in notes {
+            stderr.call_method1("write", (line,))?;
+        }
+        stderr.call_method0("flush").map(|_| ())
     }
 }
 
-/// Run `work(stop)` on a worker thread without the GIL; Ctrl-C raises `stop` and KeyboardInterrupt.
-pub(crate) fn run<T: Send + 'static>(
-    py: Python<'_>,
-    work: impl FnOnce(&AtomicBool) -> T + Send + 'static,
-) -> PyResult<T> {
-    run_reporting(py, None, move |stop, _| work(stop))
-}
-
-/// As [`run`], with `work` telling its progress, and `report` (a Python callable, if given) called with the fraction
-/// done whenever it changed, every [`POLL`] with the GIL, and with 1.0 at the end; an exception it raises stops the
-/// work and is raised.
+/// Run `work(stop, progress)` on a worker thread without the GIL; Ctrl-C raises `stop` and KeyboardInterrupt.
+/// `work` tells its progress and the estimate of a long batch: the estimate is written to `sys.stderr`, and `report`
+/// (a Python callable, if given) is called with the fraction done whenever it changed, every [`POLL`] with the GIL,
+/// and with 1.0 at the end; an exception it raises stops the work and is raised.
 pub(crate) fn run_reporting<T: Send + 'static>(
     py: Python<'_>,
     report: Option<Bound<'_, PyAny>>,
@@ -75,6 +93,7 @@ pub(crate) fn run_reporting<T: Send + 'static>(
     loop {
         if let Some(result) = py.detach(|| wait(POLL)) {
             let _ = worker.join();
+            progress.write_notes(py)?;
             tell(1.0)?;
             return Ok(result);
         }
@@ -92,7 +111,9 @@ pub(crate) fn run_reporting<T: Send + 'static>(
                 "frictrack's worker thread failed: {reason} (a bug: please report it with the scenario)"
             )));
         }
-        if let Err(signal) = py.check_signals().and_then(|()| tell(progress.get())) {
+        if let Err(signal) =
+            py.check_signals().and_then(|()| progress.write_notes(py)).and_then(|()| tell(progress.get()))
+        {
             stop.store(true, Ordering::Relaxed);
             // The run stops at its next step; its result is dropped.
             let _ = worker.join();

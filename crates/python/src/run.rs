@@ -33,6 +33,7 @@ pub(crate) fn run(
         study::diagnostics::warnings(&scenario, &case).iter().map(ToString::to_string).collect();
     let started = std::time::Instant::now();
     let outcome = interruptible::run_reporting(py, progress, move |stop, told| {
+        told.announce("frictrack.run", &study::cost::Estimate::run(study::cost::RunCost::of(&case)));
         let requests = snapshot_requests(&scenario, &case);
         let (result, snapshots) = run_with_snapshots(&case, &requests, Some(stop), &|f| told.set(f))?;
         let summary = RunSummary::of(&scenario, &case, &result, started.elapsed().as_secs_f64())?;

@@ -36,7 +36,8 @@ pub(crate) fn sweep(
     let total = speeds.len() as f64;
     let rows = interruptible::run_reporting(py, progress, move |stop, told| {
         let done = |runs: usize| told.set(runs as f64 / total);
-        runner.with_stop(stop).with_progress(&done).speed_sweep_keeping(&case, &speeds)
+        let announce = |estimate: &study::cost::Estimate| told.announce("frictrack.sweep", estimate);
+        runner.with_stop(stop).with_progress(&done).with_estimate(&announce).speed_sweep_keeping(&case, &speeds)
     })?
     .map_err(to_python)?;
     let mut csv = Vec::new();

@@ -227,6 +227,29 @@ def test_an_exception_in_the_progress_callback_stops_the_work():
                              distributed_friction=2000.0, progress=fail)
 
 
+def test_long_work_is_announced_before_it_starts(capsys):
+    """Work estimated above 10 s says so on stderr before it starts, as the command line does (the estimate rule of
+    study.cost): a stationary sweep of 20 000 speeds with friction (~8 min) and a sweep of 3000 runs with ballast
+    friction (~8 min on 2 threads), each stopped by its progress callback at the first poll; short work says nothing."""
+    def stop(fraction):
+        raise RuntimeError("enough")
+
+    for name, call in (
+        ("frictrack.stationary: 20000 stationary solves of 481 nodes, nonsmooth",
+         lambda: frictrack.stationary(None, [10.0 + 0.01 * i for i in range(20000)], distributed_friction=5000.0,
+                                      progress=stop)),
+        ("frictrack.sweep: 3000 runs, the largest of 2000 steps over 400 DOFs, 799 friction sections",
+         lambda: frictrack.sweep(None, [10.0 + 0.1 * i for i in range(3000)], jobs=2, distributed_friction=5000.0,
+                                 progress=stop)),
+    ):
+        with pytest.raises(RuntimeError, match="enough"):
+            call()
+        said = capsys.readouterr().err
+        assert said.startswith(name) and "estimated" in said, said
+    frictrack.sweep(None, [100.0, 150.0], jobs=1, progress=False)
+    assert capsys.readouterr().err == ""
+
+
 def test_a_keyword_that_is_no_override_is_named_as_such():
     """`co_moving=True` was told its value must be a number; the name is what is wrong."""
     with pytest.raises(frictrack.InputError, match="invalid override = co_moving: is not one of speed"):

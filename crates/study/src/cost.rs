@@ -135,7 +135,7 @@ impl Estimate {
             }
         };
         let items = match self.size {
-            Size::Run(_) if self.runs == 1 => format!("one run of {size}"),
+            Size::Run(_) if self.runs == 1 => size,
             Size::Run(_) => format!("{} runs, the largest of {size}, on {} threads", self.runs, self.threads),
             Size::Stationary { .. } => format!("{} stationary solves of {size}", self.runs),
         };

@@ -54,19 +54,39 @@ fn absurd_inputs_are_refused_or_warned_naming_value_and_limit() {
     assert!(!String::from_utf8_lossy(&out.stderr).contains("warning"));
 }
 
-/// A run of hours says so before it starts (the estimate of `study::cost`), instead of printing nothing.
-#[test]
-fn a_long_run_announces_its_size_and_estimate() {
+/// The first line of standard error starting with `prefix` (None if it ends first), the command killed once read.
+fn announced(args: &[&str], prefix: &str) -> Option<String> {
     let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_frictrack"))
-        .args(["run", "--elements", "1000000", "--load-advance", "0.0002"])
+        .args(args)
         .stderr(std::process::Stdio::piped())
         .stdout(std::process::Stdio::null())
         .spawn()
         .unwrap();
-    let mut stderr = std::io::BufReader::new(child.stderr.take().unwrap());
-    let mut line = String::new();
-    std::io::BufRead::read_line(&mut stderr, &mut line).unwrap();
+    let stderr = std::io::BufReader::new(child.stderr.take().unwrap());
+    let line = std::io::BufRead::lines(stderr).map_while(Result::ok).find(|l| l.starts_with(prefix));
     child.kill().unwrap();
     child.wait().unwrap();
-    assert!(line.starts_with("this run: 1000000 steps over 2000000 DOFs") && line.contains(" h "), "{line}");
+    line
+}
+
+/// Work of hours says so before it starts (the estimate rule of `study::cost`), instead of printing nothing: a run,
+/// a stationary sweep of 190 000 speeds with friction, and a study at paper resolution (announced per batch, its
+/// notes first).
+#[test]
+fn long_work_announces_its_size_and_estimate() {
+    let run = announced(&["run", "--elements", "1000000", "--load-advance", "0.0002"], "this run").unwrap();
+    assert!(run.starts_with("this run: 1000000 steps over 2000000 DOFs") && run.contains(" h "), "{run}");
+    let args = ["stationary", "--speeds", "10:200:0.001", "--distributed-friction", "5000", "--format", "json"];
+    let stationary = announced(&args, "stationary").unwrap();
+    assert!(stationary.starts_with("stationary: 190001 stationary solves of 481 nodes, nonsmooth"), "{stationary}");
+    assert!(stationary.contains(" min "), "{stationary}");
+    let out = std::env::temp_dir().join(format!("frictrack-announce-{}", std::process::id()));
+    let out_arg = out.to_string_lossy().into_owned();
+    let study = announced(&["study", "discrete-speed", "--resolution", "paper", "--out", &out_arg], "discrete-speed");
+    let _ = std::fs::remove_dir_all(&out);
+    let study = study.unwrap();
+    assert!(
+        study.starts_with("discrete-speed: 3783 runs, the largest of 2000 steps over 400 DOFs, 31 friction"),
+        "{study}"
+    );
 }
