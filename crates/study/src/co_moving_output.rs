@@ -200,7 +200,7 @@ pub fn run(scenario: &Scenario, section: &CoMovingSection) -> Result<(CoMovingSu
         vehicles: result.vehicles.as_ref().map(|v| {
             let contact =
                 run_settings.moving.load.vehicles().map_or("", track::vehicle::consist::VehicleSettings::contact_name);
-            crate::vehicle_output::VehicleReport::of(v, contact)
+            crate::vehicle_output::VehicleReport::of(v, contact, None)
         }),
     };
     Ok((summary, result))

@@ -14,6 +14,7 @@ pub mod diagnostics;
 pub mod error;
 pub mod figures;
 pub mod journal;
+pub mod mesh_ripple;
 pub mod metrics;
 pub mod number;
 pub mod overrides;

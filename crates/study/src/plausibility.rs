@@ -13,6 +13,7 @@
 //!   not change and its slope stays small).
 
 use crate::diagnostics::Warning;
+use crate::mesh_ripple::{RIPPLE_LIMIT, shorter_elements};
 use crate::number::number;
 use crate::scenario::{Case, Scenario};
 use crate::speeds::SpeedScale;
@@ -122,6 +123,7 @@ pub fn result_warnings(case: &Case, summary: &crate::run_summary::RunSummary) ->
             ),
         });
     }
+    out.extend(ripple_warning(case, summary));
     let length = case.model.mesh().length;
     let largest = summary.extremes.max_downward_deflection.max(summary.extremes.max_upward_deflection);
     if largest > DEFLECTION_LIMIT * length {
@@ -137,4 +139,37 @@ pub fn result_warnings(case: &Case, summary: &crate::run_summary::RunSummary) ->
         });
     }
     out
+}
+
+/// The wheel whose force carries the largest element ripple relative to its static load, when that is above
+/// [`RIPPLE_LIMIT`]: a mesh artefact, said with the element length (and element count) that removes it.
+fn ripple_warning(case: &Case, summary: &crate::run_summary::RunSummary) -> Option<Warning> {
+    let wheels = &summary.vehicles.as_ref()?.wheels;
+    let relative = |w: &crate::vehicle_output::WheelReport| w.element_ripple.map_or(0.0, |r| r / w.static_force);
+    let wheel = wheels.iter().max_by(|a, b| relative(a).total_cmp(&relative(b)))?;
+    let ripple = wheel.element_ripple.filter(|_| relative(wheel) > RIPPLE_LIMIT)?;
+    let mesh = case.model.mesh();
+    let l = mesh.element_length();
+    let (shorter, elements) = shorter_elements(ripple, wheel.static_force, l, mesh.elements);
+    let advance = case.settings.integration.load_advance;
+    let check = match advance > shorter / 4.0 {
+        true => {
+            format!(" and integration.load_advance ≤ {} m (four steps an element, to see the ripple)", shorter / 4.0)
+        }
+        false => String::new(),
+    };
+    Some(Warning {
+        field: "mesh.elements".into(),
+        value: mesh.elements.to_string(),
+        message: format!(
+            "wheel {}'s force carries a ripple of {:.0} N ({:.1} % of its static load {:.1} kN) with the element \
+             period {l} m where results are read: a mesh artefact (the track is the same everywhere), above {} %; \
+             elements of {shorter} m (mesh.elements = {elements}{check}) bring it below",
+            wheel.wheel,
+            ripple,
+            100.0 * ripple / wheel.static_force,
+            wheel.static_force / 1e3,
+            100.0 * RIPPLE_LIMIT
+        ),
+    })
 }

@@ -182,6 +182,12 @@ impl RunSummary {
     pub fn of(scenario: &Scenario, case: &Case, result: &RunResult, wall_time: f64) -> Result<Self> {
         let settings = &case.settings;
         let placed = &case.interactions;
+        // Where results are read: the extremes' nodes, else the extremes window.
+        let mesh = case.model.mesh();
+        let read = scenario.output.extremes_nodes.unwrap_or_else(|| {
+            let (a, b) = scenario.output.extremes_window(mesh.length);
+            [a, b]
+        });
         let device_positions: Vec<f64> = (placed.positions().iter().zip(placed.kinds()))
             .filter_map(|(&x, &kind)| (kind == SectionKind::Device).then_some(x))
             .collect();
@@ -206,14 +212,9 @@ impl RunSummary {
             wall_time,
             vehicles: result.vehicles.as_ref().map(|v| {
                 let contact = settings.moving.load.vehicles().map_or("", VehicleSettings::contact_name);
-                crate::vehicle_output::VehicleReport::of(v, contact)
+                crate::vehicle_output::VehicleReport::of(v, contact, Some((mesh.element_length(), read)))
             }),
-            soil: crate::soil_output::SoilSummary::of(&case.model, scenario.foundation.self_weight, result, {
-                let length = case.model.mesh().length;
-                let (a, b) =
-                    scenario.output.extremes_nodes.map_or(scenario.output.extremes_window(length), |[a, b]| (a, b));
-                [a, b]
-            }),
+            soil: crate::soil_output::SoilSummary::of(&case.model, scenario.foundation.self_weight, result, read),
         })
     }
 }

@@ -7,6 +7,7 @@
 //! the beam, where the rail is rigid ground), the moment EI·w″ of the rail under the wheel, sagging > 0.
 
 use crate::figures::{Curves, quantity_figure};
+use crate::mesh_ripple::element_ripple;
 use crate::number::row;
 use crate::plot::PlotSpec;
 use serde::Serialize;
@@ -60,6 +61,9 @@ pub struct WheelReport {
     pub max_rail_deflection: f64,
     /// Largest |rail bending moment| under the wheel (N·m).
     pub max_moment: f64,
+    /// Amplitude of the wheel force's component with the element period where results are read (N): a mesh
+    /// artefact on a uniform track ([`crate::mesh_ripple`]); None where too few periods or samples to read it.
+    pub element_ripple: Option<f64>,
 }
 
 /// One loss of contact.
@@ -125,7 +129,11 @@ pub struct VehicleReport {
 
 impl VehicleReport {
     /// The report of `results` with contact law `contact` (its name).
-    pub fn of(results: &VehicleResults, contact: &str) -> Self {
+    ///
+    /// `ripple_over`: the element length (m) and the region [from, to] (m) where results are read, over which each
+    /// wheel's element ripple is measured; None where the wheel positions do not run along the track (a co-moving
+    /// window's jump back at each shift).
+    pub fn of(results: &VehicleResults, contact: &str, ripple_over: Option<(f64, [f64; 2])>) -> Self {
         let wheels: Vec<WheelReport> = results
             .wheels
             .iter()
@@ -144,6 +152,8 @@ impl VehicleReport {
                 max_impact_force: w.losses.iter().map(|l| l.impact_force).fold(0.0, f64::max),
                 max_rail_deflection: w.max_rail_deflection,
                 max_moment: w.max_moment,
+                element_ripple: ripple_over
+                    .and_then(|(l, read)| element_ripple(&w.history.position, &w.history.force, l, read)),
             })
             .collect();
         let losses = results
