@@ -27,12 +27,11 @@ pub fn run(
         Format::Text => print_text(&summary),
     }
     if let Some(folder) = out {
-        write_atomically(&folder.join("co-moving.json"), serde_json::to_string_pretty(&summary)?.as_bytes())?;
-        let mut csv = String::from("s_m,deflection_m\n");
-        for (s, w) in &result.wave {
-            csv.push_str(&format!("{s},{w}\n"));
-        }
-        write_atomically(&folder.join("wave.csv"), csv.as_bytes())?;
+        let mut metadata = serde_json::to_value(&summary)?;
+        metadata["csv"] = "wave.csv".into();
+        metadata["columns"] = study::columns::json(study::co_moving_output::WAVE_COLUMNS);
+        write_atomically(&folder.join("co-moving.json"), serde_json::to_string_pretty(&metadata)?.as_bytes())?;
+        write_atomically(&folder.join("wave.csv"), study::co_moving_output::wave_csv(&result).as_bytes())?;
         let drawn = write_figures(&study::co_moving_output::figures(&summary, &result), folder)?;
         if format == Format::Text {
             println!("  wrote {}/co-moving.json, wave.csv and {}", folder.display(), drawn.join(", "));

@@ -119,9 +119,7 @@ fn write_outputs(
     snapshots: &[track::Snapshot],
 ) -> Result<()> {
     use study::run_output::{HISTORY_COLUMNS, RunCurves, SNAPSHOT_COLUMNS, histories_csv, run_plots, snapshots_csv};
-    let columns = |list: &[(&str, &str)]| {
-        list.iter().map(|(name, unit)| serde_json::json!({ "name": name, "unit": unit })).collect::<Vec<_>>()
-    };
+    let columns = |list: &[(&'static str, &'static str)]| study::columns::json(list.iter().copied());
     let requested: Vec<String> = snapshots
         .iter()
         .map(|s| match s.requested {

@@ -7,7 +7,8 @@ use clap::{Args, ValueEnum};
 use stationary::Domain;
 use std::path::PathBuf;
 use study::Scenario;
-use study::stationary_output::{ErrorEstimate, StationaryPoint, StationaryStudy, wave_csv};
+use study::columns;
+use study::stationary_output::{ErrorEstimate, POINT_COLUMNS, StationaryStudy, WAVE_COLUMNS, points_csv, wave_csv};
 
 /// What `frictrack stationary` prints.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum, Default)]
@@ -103,61 +104,34 @@ pub fn run(args: &StationaryArgs) -> Result<()> {
         [Some(wave)] => Some(wave),
         _ => None,
     };
-    let csv = match single {
-        Some(wave) => wave_csv(wave),
-        None => points_csv(&study.points),
+    let (csv, csv_columns) = match single {
+        Some(wave) => (wave_csv(wave), &WAVE_COLUMNS[..]),
+        None => (points_csv(&study.points), &POINT_COLUMNS[..]),
     };
     match args.format {
         StationaryFormat::Json if speeds.len() == 1 => println!("{}", serde_json::to_string_pretty(&study.points[0])?),
         StationaryFormat::Json => println!("{}", serde_json::to_string_pretty(&study.points)?),
-        StationaryFormat::Csv => print!("{csv}"),
+        StationaryFormat::Csv => {
+            print!("{csv}");
+            println!("# {}", columns::units_line(csv_columns.iter().copied()));
+        }
         StationaryFormat::Text => print_text(&scenario, &study),
     }
     if let Some(folder) = &args.out {
-        write_atomically(&folder.join("stationary.json"), serde_json::to_string_pretty(&study.points)?.as_bytes())?;
         let name = if single.is_some() { "wave.csv" } else { "speeds.csv" };
+        let metadata = serde_json::json!({
+            "csv": name,
+            "columns": columns::json(csv_columns.iter().copied()),
+            "points": study.points,
+            "frictrack_version": env!("CARGO_PKG_VERSION"),
+        });
+        write_atomically(&folder.join("stationary.json"), serde_json::to_string_pretty(&metadata)?.as_bytes())?;
         write_atomically(&folder.join(name), csv.as_bytes())?;
         let title = if scenario.title.is_empty() { "stationary wave on the infinite track" } else { &scenario.title };
         let drawn = write_figures(&study.figures(title), folder)?;
         eprintln!("wrote {} (stationary.json, {name}, {})", folder.display(), drawn.join(", "));
     }
     Ok(())
-}
-
-fn points_csv(points: &[StationaryPoint]) -> String {
-    let cell = |x: Option<f64>| x.map_or(String::new(), |x| x.to_string());
-    let mut out = String::from(
-        "speed_m_per_s,status,iterations,residual,max_downward_deflection_m,max_downward_position_m,\
-         max_upward_deflection_m,max_upward_position_m,max_moment_Nm,max_hogging_moment_Nm,deflection_behind_m,\
-         lift_off_zones,largest_gap_m,slip_zones,friction_power_W,power_imbalance\n",
-    );
-    for p in points {
-        let gap = p
-            .lift_off_zones
-            .iter()
-            .map(|z| z.largest_gap)
-            .fold(None, |m: Option<f64>, g| Some(m.map_or(g, |m| m.max(g))));
-        out.push_str(&format!(
-            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
-            p.speed,
-            p.status,
-            p.iterations,
-            p.residual,
-            cell(p.max_downward_deflection),
-            cell(p.max_downward_deflection_position),
-            cell(p.max_upward_deflection),
-            cell(p.max_upward_deflection_position),
-            cell(p.max_moment),
-            cell(p.max_hogging_moment),
-            cell(p.deflection_behind),
-            p.lift_off_zones.len(),
-            cell(gap),
-            p.slip_zones.len(),
-            cell(p.friction_power),
-            cell(p.power_imbalance),
-        ));
-    }
-    out
 }
 
 fn print_text(scenario: &Scenario, study: &StationaryStudy) {

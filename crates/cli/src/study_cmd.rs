@@ -200,7 +200,7 @@ pub fn run_study(
         "speeds": preset.speeds(resolution, base)?,
         "study_sets": preset.sets(),
         "scenario_parts_not_used": overrides,
-        "csv_columns": data.columns,
+        "columns": study::columns::json(data.columns.iter().map(|(name, unit)| (name.as_str(), *unit))),
         "failures": data.failures,
     });
     write_atomically(

@@ -117,6 +117,9 @@ pub fn run(args: &SweepArgs) -> Result<()> {
             for f in &failed {
                 println!("# failed_run {}", serde_json::to_string(f)?);
             }
+            let vehicle_columns = study::sweep::VEHICLE_CSV_COLUMNS.iter().filter(|_| scenario.vehicle.is_some());
+            let units = study::sweep::CSV_COLUMNS.iter().chain(vehicle_columns).map(|(name, unit, _)| (*name, *unit));
+            println!("# {}", study::columns::units_line(units));
         }
     }
     if !failed.is_empty() {

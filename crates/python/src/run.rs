@@ -61,13 +61,14 @@ pub(crate) fn trains() -> Vec<String> {
     fem_beam::Train::catalogue()
 }
 
-/// The columns of the run's tables with their units, as the library writes them: "histories", "snapshots" and
-/// "wheels" (name, unit) lists.
+/// The columns of the tables with their units, as the library writes them: a run's "histories", "snapshots" and
+/// "wheels", and a stationary wave's "stationary_wave" (name, unit) lists.
 #[pyfunction]
 pub(crate) fn columns() -> Vec<(&'static str, Vec<(&'static str, &'static str)>)> {
     vec![
         ("histories", study::run_output::HISTORY_COLUMNS.to_vec()),
         ("snapshots", study::run_output::SNAPSHOT_COLUMNS.to_vec()),
         ("wheels", study::vehicle_output::WHEEL_COLUMNS.to_vec()),
+        ("stationary_wave", study::stationary_output::WAVE_COLUMNS.to_vec()),
     ]
 }

@@ -29,9 +29,11 @@ def test_analytic_and_stationary_are_the_command_lines(tmp_path):
                                 distributed_friction=2000.0).points == expected
     assert sorted(wave.waves) == [100.0, 200.0]
     table = wave.waves[100.0]
-    assert np.max(np.abs(table["friction_force_N_per_m"])) <= 2000.0 * (1 + 1e-12)
+    assert np.max(np.abs(table["friction_force"])) <= 2000.0 * (1 + 1e-12)
+    # The units convention of every table: plain names, units beside them.
+    assert table.columns[:2] == ["s", "deflection"] and table.units["moment"] == "N·m"
     # The peak is refined between nodes: the nodes' lowest is a little above it.
-    lowest, peak = -table["deflection_m"].min(), expected[0]["max_downward_deflection"]
+    lowest, peak = -table["deflection"].min(), expected[0]["max_downward_deflection"]
     assert lowest <= peak and lowest >= 0.99 * peak
 
 

@@ -206,6 +206,18 @@ pub fn run(scenario: &Scenario, section: &CoMovingSection) -> Result<(CoMovingSu
     Ok((summary, result))
 }
 
+/// Columns of the window's last wave (`wave.csv`): s = x − vt (m) and the deflection (m, upward).
+pub const WAVE_COLUMNS: [crate::columns::Column; 2] = [("s", "m"), ("deflection", "m")];
+
+/// The window's last wave as CSV ([`WAVE_COLUMNS`]).
+pub fn wave_csv(result: &track::co_moving::CoMovingResult) -> String {
+    let mut csv = crate::columns::header(&WAVE_COLUMNS) + "\n";
+    for (s, w) in &result.wave {
+        csv.push_str(&format!("{s},{w}\n"));
+    }
+    csv
+}
+
 /// The change of the wave per window length travelled below which it counts as stationary.
 pub const STATIONARY_CHANGE: f64 = 1e-3;
 

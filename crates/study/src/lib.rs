@@ -9,6 +9,7 @@
 
 pub mod axis_grid;
 pub mod co_moving_output;
+pub mod columns;
 pub mod cost;
 pub mod diagnostics;
 pub mod error;
@@ -28,6 +29,7 @@ pub mod scenario;
 pub mod shard;
 pub mod soil_output;
 pub mod speeds;
+pub mod stationary_csv;
 pub mod stationary_output;
 pub mod steady_response;
 pub mod sweep;

@@ -9,6 +9,7 @@
 //!
 //! Deflection is positive upward, the moment sagging-positive; every number in shortest round-trip form.
 
+use crate::columns::{Column, header};
 use crate::error::Result;
 use crate::figures::{Curves, quantity_figure};
 use crate::number::row;
@@ -23,7 +24,7 @@ pub const FIGURE_STEMS: [&str; 4] =
     ["histories-deflection", "histories-moment", "snapshots-deflection", "snapshots-moment"];
 
 /// Columns of `histories.csv`: name and unit.
-pub const HISTORY_COLUMNS: [(&str, &str); 8] = [
+pub const HISTORY_COLUMNS: [Column; 8] = [
     ("section", "m"),
     ("time", "s"),
     ("load_position", "m"),
@@ -35,7 +36,7 @@ pub const HISTORY_COLUMNS: [(&str, &str); 8] = [
 ];
 
 /// Columns of `snapshots.csv`: name and unit.
-pub const SNAPSHOT_COLUMNS: [(&str, &str); 5] =
+pub const SNAPSHOT_COLUMNS: [Column; 5] =
     [("time", "s"), ("load_position", "m"), ("x", "m"), ("deflection", "m"), ("moment", "N·m")];
 
 /// A recorded run's scenario: `scenario` with mid-span as its recorded section when it names none (a run that writes
@@ -90,9 +91,6 @@ pub fn run_with_snapshots(
 }
 
 /// The header line of a CSV with `columns`.
-fn header(columns: &[(&str, &str)]) -> String {
-    columns.iter().map(|(name, _)| *name).collect::<Vec<_>>().join(",")
-}
 
 /// `histories.csv` of a run with step `h` (s).
 pub fn histories_csv(result: &RunResult) -> String {

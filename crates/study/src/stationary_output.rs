@@ -4,6 +4,8 @@
 //! that is not one. Deflections (m, from the settled rail, upward positive; peaks as magnitudes), moments (N·m,
 //! sagging positive), positions s = x − vt (m, positive ahead of the load), powers (W).
 
+pub use crate::stationary_csv::{POINT_COLUMNS, WAVE_COLUMNS, points_csv, wave_csv};
+
 use crate::error::{Result, invalid};
 use crate::plot::{PlotSpec, Series, Stroke};
 use crate::scenario::{QuadratureKind, Scenario};
@@ -433,17 +435,4 @@ impl StationaryPoint {
             discretisation_error: None,
         }
     }
-}
-
-/// The wave's shape as CSV: s (m), deflection (m), slope (rad), moment (N·m), soil reaction (N/m), the ballast's
-/// friction force (N/m, the resistance r: the rail feels −r).
-pub fn wave_csv(wave: &StationaryWave) -> String {
-    let mut out = String::from("s_m,deflection_m,slope_rad,moment_Nm,soil_reaction_N_per_m,friction_force_N_per_m\n");
-    for i in 0..wave.s.len() {
-        out.push_str(&format!(
-            "{},{},{},{},{},{}\n",
-            wave.s[i], wave.deflection[i], wave.slope[i], wave.moment[i], wave.soil_reaction[i], wave.friction_force[i]
-        ));
-    }
-    out
 }

@@ -21,9 +21,9 @@ pub const WHEEL_FIGURE: &str = "wheel-forces";
 pub const MAX_VEHICLES_DRAWN: usize = 4;
 
 /// Columns of `wheels.csv`: name and unit.
-pub const WHEEL_COLUMNS: [(&str, &str); 7] = [
-    ("vehicle", "–"),
-    ("wheel", "–"),
+pub const WHEEL_COLUMNS: [crate::columns::Column; 7] = [
+    ("vehicle", "1"),
+    ("wheel", "1"),
     ("time", "s"),
     ("position", "m"),
     ("force", "N"),

@@ -45,7 +45,8 @@ fn a_sweep_keeps_every_finished_run_past_a_failed_one() {
     let stdout = String::from_utf8_lossy(&out.stdout);
     let stderr = String::from_utf8_lossy(&out.stderr);
     let lines: Vec<&str> = stdout.lines().collect();
-    assert_eq!(lines.len(), 1 + 5 + 2, "{stdout}");
+    // Header, five rows, the two failures and the units as comment lines.
+    assert_eq!(lines.len(), 1 + 5 + 2 + 1, "{stdout}");
     for (line, speed) in lines[1..4].iter().zip(["195,", "200,", "205,"]) {
         assert!(line.starts_with(speed) && !line.contains(",,"), "{line}");
     }

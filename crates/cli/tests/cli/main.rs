@@ -178,9 +178,13 @@ fn init_check_run_and_sweep_a_scenario_file() {
     assert!(lines[0].starts_with("speed,max_downward_deflection,max_upward_deflection,dissipated_energy,global_norm"));
     assert_eq!(lines.len(), 5);
     assert!(lines[1].starts_with("100,"));
-    // The same sweep with the range on the command line and one thread, on stdout: the same bytes.
+    // The same sweep with the range on the command line and one thread, on stdout: the same bytes, then the units
+    // as a comment line.
     let out = frictrack(&["sweep", path, "--speeds", "100:220:40", "--jobs", "1"]);
-    assert_eq!(String::from_utf8_lossy(&out.stdout), csv);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let (data, units) = stdout.split_at(csv.len());
+    assert_eq!(data, csv);
+    assert!(units.starts_with("# units (SI): speed m/s, max_downward_deflection m,") && units.ends_with("m/s²\n"));
     let _ = std::fs::remove_dir_all(&dir);
 }
 
@@ -390,7 +394,7 @@ fn study_writes_data_metadata_and_figures() {
     assert!(meta["wall_time"].as_f64().unwrap() > 0.0);
     assert!(is_png(&dir.join("optimal-force.png")) && is_svg(&dir.join("optimal-force.svg")));
     assert!(meta["speeds"].is_null(), "a fixed-speed study has no speed list");
-    assert_eq!(meta["csv_columns"][1], serde_json::json!(["device_force", "N"]));
+    assert_eq!(meta["columns"][1], serde_json::json!({ "name": "device_force", "unit": "N" }));
     assert!(meta["study_sets"][1].as_str().unwrap().starts_with("load.speed"));
     assert!(meta["scenario_parts_not_used"].as_array().unwrap().is_empty());
     // A base scenario with its own friction and [sweep]: the study says what it does not use, on stderr and in the

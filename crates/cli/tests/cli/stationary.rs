@@ -55,17 +55,30 @@ fn a_tensionless_sweep_reports_lift_off_and_where_no_wave_was_found() {
     for name in ["stationary.json", "speeds.csv", "stationary-peaks.png", "stationary-peaks.svg"] {
         assert!(out.join(name).is_file(), "{name}");
     }
+    // The units convention: plain names in the CSV (the points' JSON keys), their units in the JSON beside it.
+    let meta: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("stationary.json")).unwrap()).unwrap();
+    let header = std::fs::read_to_string(out.join("speeds.csv")).unwrap().lines().next().unwrap().to_string();
+    let names: Vec<&str> = meta["columns"].as_array().unwrap().iter().map(|c| c["name"].as_str().unwrap()).collect();
+    assert_eq!((meta["csv"].as_str(), header), (Some("speeds.csv"), names.join(",")));
+    assert_eq!(meta["columns"][4], serde_json::json!({ "name": "max_downward_deflection", "unit": "m" }));
+    assert_eq!(meta["points"].as_array().unwrap().len(), points.len());
+    assert!(names.iter().all(|n| n.starts_with("largest_gap") || meta["points"][0].get(n).is_some()), "{names:?}");
     let text = String::from_utf8_lossy(&frictrack(&["stationary", path, "--speeds", "40:160:40"]).stdout).to_string();
     assert!(text.contains("not converged (residual") && text.contains("run the load across a long finite track"));
     // One speed: the wave's shape as CSV, the load at s = 0 with the largest downward deflection.
     let csv = frictrack(&["stationary", path, "--speed", "60", "--format", "csv"]);
     let csv = String::from_utf8_lossy(&csv.stdout).to_string();
     let mut lines = csv.lines();
-    assert_eq!(
-        lines.next().unwrap(),
-        "s_m,deflection_m,slope_rad,moment_Nm,soil_reaction_N_per_m,friction_force_N_per_m"
+    assert_eq!(lines.next().unwrap(), "s,deflection,slope,moment,soil_reaction,friction_force");
+    // On standard output the units follow the data as a comment line.
+    assert!(
+        csv.ends_with(
+            "# units (SI): s m, deflection m, slope rad, moment N·m, soil_reaction N/m, friction_force N/m\n"
+        )
     );
-    let rows: Vec<Vec<f64>> = lines.map(|l| l.split(',').map(|x| x.parse().unwrap()).collect()).collect();
+    let rows: Vec<Vec<f64>> =
+        lines.filter(|l| !l.starts_with('#')).map(|l| l.split(',').map(|x| x.parse().unwrap()).collect()).collect();
     let lowest = rows.iter().min_by(|a, b| a[1].total_cmp(&b[1])).unwrap();
     assert_eq!(lowest[0], 0.0);
 }
@@ -126,7 +139,8 @@ fn the_stationary_wave_with_ballast_friction_reports_its_slip_zones_and_what_is_
     assert!(text.contains("ballast friction 2.00 kN/m") && text.contains("slip zones"), "{text}");
     let csv = frictrack(&["stationary", path, "--speed", "100", "--format", "csv"]);
     let csv = String::from_utf8_lossy(&csv.stdout).to_string();
-    let forces: Vec<f64> = csv.lines().skip(1).map(|l| l.rsplit(',').next().unwrap().parse().unwrap()).collect();
+    let rows = csv.lines().skip(1).filter(|l| !l.starts_with('#'));
+    let forces: Vec<f64> = rows.map(|l| l.rsplit(',').next().unwrap().parse().unwrap()).collect();
     let largest = forces.iter().fold(0.0f64, |m, r| m.max(r.abs()));
     assert!((1999.0..=2000.0 * (1.0 + 1e-12)).contains(&largest), "{largest}");
 }

@@ -208,7 +208,8 @@ class Stationary:
     """The stationary wave on the infinite track at each speed (``frictrack stationary``): ``points`` one dict per
     speed (its ``status``: "converged", "not converged", "domain too short", "no stationary wave"; peaks m, moments
     N·m, powers W; ``discretisation_error`` of the peaks from one halving of the elements), ``waves`` each found
-    wave's shape by speed (m/s) as a :class:`Table` (s_m, deflection_m, …), ``warnings`` what the command line warns
+    wave's shape by speed (m/s) as a :class:`Table` (s, deflection, slope, moment, soil_reaction, friction_force, with
+    their units), ``warnings`` what the command line warns
     (peaks resolved to worse than 1 %)."""
 
     def __init__(self, points: "list[Dict[str, Any]]", waves: Dict[float, Table], warnings: "list[str]") -> None:
@@ -229,7 +230,7 @@ def stationary(scenario: ScenarioLike = None, speeds: Sequence[float] = (), doma
         points, waves, warnings = _native.stationary(
             kind, text, _speeds(speeds), (behind, ahead, float(element_length)), list(overrides.items()), report
         )
-    return Stationary(json.loads(points), {float(v): parse_csv(csv, None) for v, csv in waves}, list(warnings))
+    return Stationary(json.loads(points), {float(v): parse_csv(csv, COLUMNS["stationary_wave"]) for v, csv in waves}, list(warnings))
 
 
 class Study:

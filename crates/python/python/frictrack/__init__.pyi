@@ -97,7 +97,7 @@ def analytic(
 
 class Stationary:
     """The stationary wave per speed: `points` (dicts, as `frictrack stationary --format json`), `waves` (speed m/s →
-    the wave's shape: s_m, deflection_m, slope_rad, moment_Nm, soil_reaction_N_per_m, friction_force_N_per_m),
+    the wave's shape: s, deflection, slope, moment, soil_reaction, friction_force, with their units),
     `warnings` (peaks resolved to worse than 1 %)."""
 
     points: List[Dict[str, Any]]

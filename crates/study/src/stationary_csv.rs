@@ -1,0 +1,81 @@
+//! The stationary solver's tables as CSV, in the units convention of [`crate::columns`]: a wave's shape along the
+//! moving coordinate, and the points of a speed sweep (one row per speed, the JSON keys of
+//! [`StationaryPoint`] as column names).
+
+use crate::columns::{Column, header};
+use crate::stationary_output::StationaryPoint;
+use stationary::StationaryWave;
+
+/// Columns of a wave's shape: s = x − vt, deflection (upward), slope, sagging moment, the soil's reaction and the
+/// ballast's friction force (the resistance r: the rail feels −r).
+pub const WAVE_COLUMNS: [Column; 6] = [
+    ("s", "m"),
+    ("deflection", "m"),
+    ("slope", "rad"),
+    ("moment", "N·m"),
+    ("soil_reaction", "N/m"),
+    ("friction_force", "N/m"),
+];
+
+/// Columns of a sweep's points: the [`StationaryPoint`] fields of the same names; `lift_off_zones` and
+/// `slip_zones` counted, `largest_gap` the largest of the lift-off zones'.
+pub const POINT_COLUMNS: [Column; 16] = [
+    ("speed", "m/s"),
+    ("status", "text"),
+    ("iterations", "1"),
+    ("residual", "1"),
+    ("max_downward_deflection", "m"),
+    ("max_downward_deflection_position", "m"),
+    ("max_upward_deflection", "m"),
+    ("max_upward_deflection_position", "m"),
+    ("max_moment", "N·m"),
+    ("max_hogging_moment", "N·m"),
+    ("deflection_behind", "m"),
+    ("lift_off_zones", "1"),
+    ("largest_gap", "m"),
+    ("slip_zones", "1"),
+    ("friction_power", "W"),
+    ("power_imbalance", "1"),
+];
+
+/// The wave's shape as CSV ([`WAVE_COLUMNS`]).
+pub fn wave_csv(wave: &StationaryWave) -> String {
+    let mut out = header(&WAVE_COLUMNS) + "\n";
+    for i in 0..wave.s.len() {
+        out.push_str(&format!(
+            "{},{},{},{},{},{}\n",
+            wave.s[i], wave.deflection[i], wave.slope[i], wave.moment[i], wave.soil_reaction[i], wave.friction_force[i]
+        ));
+    }
+    out
+}
+
+/// The points of a stationary sweep as CSV ([`POINT_COLUMNS`]), a missing value (no wave found) empty.
+pub fn points_csv(points: &[StationaryPoint]) -> String {
+    let cell = |x: Option<f64>| x.map_or(String::new(), |x| x.to_string());
+    let mut out = header(&POINT_COLUMNS) + "\n";
+    for p in points {
+        let gap = p.lift_off_zones.iter().map(|z| z.largest_gap).reduce(f64::max);
+        let cells = [
+            p.speed.to_string(),
+            p.status.to_string(),
+            p.iterations.to_string(),
+            p.residual.to_string(),
+            cell(p.max_downward_deflection),
+            cell(p.max_downward_deflection_position),
+            cell(p.max_upward_deflection),
+            cell(p.max_upward_deflection_position),
+            cell(p.max_moment),
+            cell(p.max_hogging_moment),
+            cell(p.deflection_behind),
+            p.lift_off_zones.len().to_string(),
+            cell(gap),
+            p.slip_zones.len().to_string(),
+            cell(p.friction_power),
+            cell(p.power_imbalance),
+        ];
+        out.push_str(&cells.join(","));
+        out.push('\n');
+    }
+    out
+}
