@@ -90,8 +90,6 @@ pub fn run_with_snapshots(
     Ok((result, taker.finish()?))
 }
 
-/// The header line of a CSV with `columns`.
-
 /// `histories.csv` of a run with step `h` (s).
 pub fn histories_csv(result: &RunResult) -> String {
     let mut out = header(&HISTORY_COLUMNS) + "\n";
