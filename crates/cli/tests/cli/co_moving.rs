@@ -28,6 +28,13 @@ fn a_co_moving_run_settles_on_the_analytic_wave_and_refuses_a_window_too_short()
     for name in ["co-moving.json", "wave.csv", "co-moving-wave.png", "co-moving-convergence.svg"] {
         assert!(out.join(name).is_file(), "{name}");
     }
+    // The units convention: the JSON beside the CSV names its columns with their units.
+    let written: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("co-moving.json")).unwrap()).unwrap();
+    let header = std::fs::read_to_string(out.join("wave.csv")).unwrap().lines().next().unwrap().to_string();
+    assert_eq!((written["csv"].as_str(), header.as_str()), (Some("wave.csv"), "s,deflection"));
+    assert_eq!(written["columns"][1], serde_json::json!({ "name": "deflection", "unit": "m" }));
+    assert_eq!(written["wave_max_downward_deflection"], run["wave_max_downward_deflection"]);
     // Above the critical speed the wave reaches further than a 120 m window: a window given that short is refused with
     // the length it needs (`run` and `check`, before any run) …
     let short = folder.join("short.toml");
