@@ -39,12 +39,14 @@
 
 mod extra_rows;
 mod iteration;
+mod pressed_set;
 mod sections;
 mod window;
 
 use super::{InteractionProblem, InteractionSolver, SolverKind, StepReport, StepStatus, StepWork};
 use banded::{BandedLdlt, SymmetricBanded};
 use iteration::{Subproblem, Work};
+use pressed_set::PressedSet;
 use sections::Sections;
 
 /// How the steps of a run were solved.
@@ -52,6 +54,8 @@ use sections::Sections;
 pub struct WindowStatistics {
     /// Steps where the previous impulses already satisfied the law.
     pub unchanged: usize,
+    /// Steps of compliant supports alone solved by the previous step's pressed set ([`pressed_set`]).
+    pub predicted: usize,
     /// Steps solved on a window.
     pub windowed: usize,
     /// Steps solved on the whole beam.
@@ -75,6 +79,10 @@ pub struct BandedInteriorPoint {
     /// in M̂: a window takes it whole beside its beam range.
     tail: Option<usize>,
     backward: Option<BandedLdlt>,
+    /// The pressed-set predictor, where every row lies in the band.
+    pressed: Option<PressedSet>,
+    /// Whether it applies, once known for a law that does not vary between steps.
+    pressed_applies: Option<bool>,
     window_matrix: SymmetricBanded,
     work: Work,
     v: Vec<f64>,
@@ -121,6 +129,8 @@ impl BandedInteriorPoint {
             places: problem.interactions.rows().iter().map(|r| window::place(r, tail)).collect(),
             tail,
             backward,
+            pressed: PressedSet::new(problem),
+            pressed_applies: None,
             window_matrix: problem.matrix.m_hat.clone(),
             work: Work {
                 sections: Sections::with_capacity(m),
@@ -147,6 +157,60 @@ impl BandedInteriorPoint {
             self.work.counts.solves += 1;
         }
         problem.outcome(v_free, p, &mut self.v, &mut self.check)
+    }
+
+    /// The step from the previous step's pressed set ([`pressed_set`]) when every free interaction is a compliant
+    /// one-sided support: the active-set rounds it took and its law residual, if that meets the tolerance (`p` then
+    /// holds the prediction), else None with `p` as it was.
+    fn predict_pressed(
+        &mut self,
+        problem: &InteractionProblem,
+        v_free: &[f64],
+        u_free: &[f64],
+        p: &mut [f64],
+        tolerance: f64,
+    ) -> crate::Result<Option<(usize, f64)>> {
+        // Whether the predictor applies is decided once for a law that does not vary between steps.
+        let applies = match (self.pressed_applies, problem.is_varying()) {
+            (Some(applies), false) => applies,
+            (_, varying) => {
+                let applies = PressedSet::applies(problem);
+                self.pressed_applies = (!varying).then_some(applies);
+                applies
+            }
+        };
+        let Some(pressed) = self.pressed.as_mut().filter(|_| applies) else {
+            return Ok(None);
+        };
+        pressed.start(p);
+        for round in 1..=pressed_set::MAX_ROUNDS {
+            let Some(pressed) = self.pressed.as_mut() else { break };
+            let refactored = pressed.predict(problem, u_free, p, &mut self.check)?;
+            self.work.counts.factorisations += usize::from(refactored);
+            self.work.counts.solves += 1;
+            // A set that moves is not the solution yet (a pressed section would pull, or a free one sink): the next
+            // round, without the residual. A set that stays is, to round-off: checked on every section.
+            if pressed.update(problem, &self.check, p) {
+                continue;
+            }
+            for ((v, &free), &y) in self.v.iter_mut().zip(v_free).zip(pressed.y()) {
+                *v = free - y;
+            }
+            self.v_current = true;
+            let residual = problem.law_residual(&self.check, p);
+            if residual <= tolerance {
+                self.statistics.predicted += 1;
+                self.statistics.sections_solved += self.all_active.len();
+                return Ok(Some((round, residual)));
+            }
+            break;
+        }
+        // Back to the previous impulses, from which the interior point starts.
+        if let Some(pressed) = &self.pressed {
+            pressed.restore(p);
+        }
+        self.v_current = false;
+        Ok(None)
     }
 
     fn solve_whole(
@@ -216,12 +280,19 @@ impl InteractionSolver for BandedInteriorPoint {
         let solved_before = self.statistics.sections_solved;
         let first = !self.started;
         self.started = true;
-        let (iterations, residual) = match self.reach {
-            Some(reach) if !first => {
-                let predicted = self.full_residual(problem, v_free, p);
-                if predicted <= tolerance {
+        // A step of compliant supports alone tries the previous step's pressed set first; the interior point takes
+        // the steps it cannot (and the first).
+        let predicted = match first {
+            true => None,
+            false => self.predict_pressed(problem, v_free, u_free, p, tolerance)?,
+        };
+        let (iterations, residual) = match (predicted, self.reach) {
+            (Some(solved), _) => solved,
+            (None, Some(reach)) if !first => {
+                let unchanged = self.full_residual(problem, v_free, p);
+                if unchanged <= tolerance {
                     self.statistics.unchanged += 1;
-                    (0, predicted)
+                    (0, unchanged)
                 } else {
                     self.solve_windows(problem, v_free, u_free, p, tolerance, reach)?
                 }
