@@ -323,16 +323,7 @@ mod tests {
     /// sections as DOFs, so W is singular as with distributed friction. Every seventh section is a compliant stop
     /// pressed in by 1 mm (one-sided, with compliance and drift), the others Coulomb of `capacity`.
     fn beam_like_problem(elements: usize, capacity: f64) -> InteractionProblem {
-        let n = 2 * (elements + 1);
-        let mut m_hat = SymmetricBanded::zeros(n, 3);
-        let block = [[4.0, 0.5, 1.0, -0.3], [0.5, 4.0, 0.3, -0.1], [1.0, 0.3, 4.0, -0.5], [-0.3, -0.1, -0.5, 4.0]];
-        for e in 0..elements {
-            for i in 0..4 {
-                for j in 0..=i {
-                    m_hat.add(2 * e + i, 2 * e + j, block[i][j]);
-                }
-            }
-        }
+        let m_hat = beam_like_m_hat(elements);
         let mut interactions = InteractionSet::new();
         for e in 0..elements {
             let xis: &[f64] = if e + 1 == elements { &[0.0, 0.25, 0.5, 0.75, 1.0] } else { &[0.0, 0.25, 0.5, 0.75] };
@@ -353,6 +344,21 @@ mod tests {
         let integration = crate::Integration { theta: 0.5, step: 1.0 };
         InteractionProblem::with_matrix(interactions, IterationMatrix::of(m_hat, integration).expect("M̂ is SPD"))
             .expect("M̂ is SPD")
+    }
+
+    /// M̂ of a beam without a beam: diagonally dominant 4 × 4 blocks over the (w, θ) pairs of `elements` elements,
+    /// SPD with half-bandwidth 3.
+    pub(super) fn beam_like_m_hat(elements: usize) -> SymmetricBanded {
+        let mut m_hat = SymmetricBanded::zeros(2 * (elements + 1), 3);
+        let block = [[4.0, 0.5, 1.0, -0.3], [0.5, 4.0, 0.3, -0.1], [1.0, 0.3, 4.0, -0.5], [-0.3, -0.1, -0.5, 4.0]];
+        for e in 0..elements {
+            for i in 0..4 {
+                for j in 0..=i {
+                    m_hat.add(2 * e + i, 2 * e + j, block[i][j]);
+                }
+            }
+        }
+        m_hat
     }
 
     /// The window's reach is where M̂⁻¹ stops coupling: every column of M̂⁻¹ (not only the three it is measured on)

@@ -203,22 +203,13 @@ mod tests {
     use crate::problem::InteractionProblem;
     use crate::solver::InteractionSolver;
     use crate::solver::interior_point::BandedInteriorPoint;
-    use banded::SymmetricBanded;
     use friction::{InteractionKind, InteractionRow, InteractionSet, Law};
 
-    /// A beam-like M̂ (SPD, half-bandwidth 3, 4 × 4 element blocks) on `elements` elements with a compliant support
+    /// The beam-like M̂ of the interior point's tests on `elements` elements with a compliant support
     /// at ξ = 0, ¼, ½, ¾ of every element, pressed in by up to 1 mm along a wave: some pressed, some free.
     fn supports(elements: usize) -> InteractionProblem {
-        let n = 2 * (elements + 1);
-        let mut m_hat = SymmetricBanded::zeros(n, 3);
-        let block = [[4.0, 0.5, 1.0, -0.3], [0.5, 4.0, 0.3, -0.1], [1.0, 0.3, 4.0, -0.5], [-0.3, -0.1, -0.5, 4.0]];
-        for e in 0..elements {
-            for i in 0..4 {
-                for j in 0..=i {
-                    m_hat.add(2 * e + i, 2 * e + j, block[i][j]);
-                }
-            }
-        }
+        let m_hat = super::super::tests::beam_like_m_hat(elements);
+        let n = m_hat.order();
         let mut interactions = InteractionSet::new();
         for e in 0..elements {
             for xi in [0.0, 0.25, 0.5, 0.75] {
