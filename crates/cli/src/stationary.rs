@@ -91,7 +91,7 @@ pub fn run(args: &StationaryArgs) -> Result<()> {
         }
     }
     let first = study::stationary_output::problem(&scenario, speeds.first().copied().unwrap_or(0.0), domain)?;
-    crate::progress::announce("stationary", &study::cost::Estimate::stationary(&first, speeds.len(), true));
+    crate::progress::announce("stationary", &study::cost::Estimate::stationary(&first, &speeds, true));
     let stop = Some(crate::interrupt::stop_flag());
     let bar = crate::progress::bar("stationary", Some(speeds.len() as u64), args.format != StationaryFormat::Text);
     let progress = |done: usize| bar.set_position(done as u64);

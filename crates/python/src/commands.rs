@@ -59,7 +59,7 @@ pub(crate) fn stationary_wave(
     let total = speeds.len() as f64;
     let solve = move |stop: &_, told: &interruptible::Progress| {
         let first = study::stationary_output::problem(&scenario, speeds.first().copied().unwrap_or(0.0), domain)?;
-        told.announce("frictrack.stationary", &study::cost::Estimate::stationary(&first, speeds.len(), true));
+        told.announce("frictrack.stationary", &study::cost::Estimate::stationary(&first, &speeds, true));
         let done = |n: usize| told.set(n as f64 / total);
         StationaryStudy::of_until(&scenario, &speeds, domain, ErrorEstimate::Halving, Some(stop), &done)
     };

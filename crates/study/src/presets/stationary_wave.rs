@@ -118,7 +118,7 @@ pub(super) fn study(resolution: super::Resolution, base: &Scenario, runner: &Run
     let soils = Soil::all();
     let first = speeds.first().copied().unwrap_or(0.0);
     let problems = soils.iter().map(|soil| problem(&soil.scenario(base), first, Domain::default()));
-    let solves = problems.map(|p| Ok(Estimate::stationary(&p?, speeds.len(), false))).collect::<Result<Vec<_>>>()?;
+    let solves = problems.map(|p| Ok(Estimate::stationary(&p?, &speeds, false))).collect::<Result<Vec<_>>>()?;
     runner.announce(Estimate::together(solves, runner.threads()));
     let infinite = runner.silent().map(&soils, |soil| {
         let scenario = soil.scenario(base);
