@@ -117,8 +117,7 @@ pub fn run(args: &SweepArgs) -> Result<()> {
             for f in &failed {
                 println!("# failed_run {}", serde_json::to_string(f)?);
             }
-            let vehicle_columns = study::sweep::VEHICLE_CSV_COLUMNS.iter().filter(|_| scenario.vehicle.is_some());
-            let units = study::sweep::CSV_COLUMNS.iter().chain(vehicle_columns).map(|(name, unit, _)| (*name, *unit));
+            let units = study::sweep::csv_columns(scenario.vehicle.is_some()).map(|(name, unit, _)| (*name, *unit));
             println!("# {}", study::columns::units_line(units));
         }
     }
@@ -179,10 +178,7 @@ fn write_files(
         let plots = study::sweep_figures::sweep_plots(points, &stem, Some(scenario), critical);
         crate::files::write_figures(&plots, path.parent().unwrap_or(std::path::Path::new(".")))?;
     }
-    let vehicle_columns = study::sweep::VEHICLE_CSV_COLUMNS.iter().filter(|_| scenario.vehicle.is_some());
-    let columns: Vec<_> = study::sweep::CSV_COLUMNS
-        .iter()
-        .chain(vehicle_columns)
+    let columns: Vec<_> = study::sweep::csv_columns(scenario.vehicle.is_some())
         .map(|(name, unit, meaning)| json!({ "name": name, "unit": unit, "meaning": meaning }))
         .collect();
     let metadata = json!({

@@ -223,6 +223,12 @@ pub const CSV_COLUMNS: [(&str, &str, &str); 17] = [
     ("max_acceleration", "m/s²", "largest vertical acceleration over all nodes and steps (magnitude; bridge decks)"),
 ];
 
+/// The columns of a sweep's CSV (name, unit, meaning): [`CSV_COLUMNS`], then [`VEHICLE_CSV_COLUMNS`] for a sweep of
+/// vehicles.
+pub fn csv_columns(vehicles: bool) -> impl Iterator<Item = &'static (&'static str, &'static str, &'static str)> {
+    CSV_COLUMNS.iter().chain(VEHICLE_CSV_COLUMNS.iter().filter(move |_| vehicles))
+}
+
 /// The CSV header line of sweep output (no newline).
 pub fn csv_header() -> String {
     CSV_COLUMNS.map(|(name, _, _)| name).join(",")

@@ -184,7 +184,6 @@ impl BandedInteriorPoint {
         };
         pressed.start(p);
         for round in 1..=pressed_set::MAX_ROUNDS {
-            let Some(pressed) = self.pressed.as_mut() else { break };
             let refactored = pressed.predict(problem, u_free, p, &mut self.check)?;
             self.work.counts.factorisations += usize::from(refactored);
             self.work.counts.solves += 1;
@@ -206,9 +205,7 @@ impl BandedInteriorPoint {
             break;
         }
         // Back to the previous impulses, from which the interior point starts.
-        if let Some(pressed) = &self.pressed {
-            pressed.restore(p);
-        }
+        pressed.restore(p);
         self.v_current = false;
         Ok(None)
     }

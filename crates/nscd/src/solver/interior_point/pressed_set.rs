@@ -17,7 +17,7 @@
 //! velocity, moves the few sections at the edges; once A is right the solution is exact (to round-off), accepted
 //! when the law residual on every section meets the tolerance. Should the set not settle within [`MAX_ROUNDS`],
 //! the step is solved by the interior point as before, from the previous impulses. (A soil's sections re-solved by
-//! the interior point every step cost ten factorisations a step: a tensionless run 60× a linear one.)
+//! the interior point every step cost ten factorisations a step: a tensionless run 52× a linear one.)
 
 use crate::integrator::IterationMatrix;
 use crate::problem::InteractionProblem;
