@@ -186,10 +186,15 @@ pub fn deck_frequency(model: &BeamModel) -> Option<(f64, fem_beam::span::SimplyS
     Some((30f64.max(1.5 * span.frequency(1)).max(span.frequency(3)), span))
 }
 
-/// The largest load advance (m) whose step h = Δx/v resolves `frequency` (Hz) with 20 steps per period at `speed`
-/// (m/s): θ = ½ then has a phase error below 2 % per period.
+/// The longest step h (s) that resolves `frequency` (Hz) with 20 steps per period: θ = ½ then has a phase error
+/// below 2 % per period.
+pub fn resolving_step(frequency: f64) -> f64 {
+    1.0 / (20.0 * frequency)
+}
+
+/// The largest load advance (m) whose step h = Δx/v is the [`resolving_step`] of `frequency` (Hz) at `speed` (m/s).
 pub fn resolving_advance(frequency: f64, speed: f64) -> f64 {
-    speed / (20.0 * frequency)
+    speed * resolving_step(frequency)
 }
 
 /// A span must resolve accelerations up to f_max of [`deck_frequency`]: the mesh resolves the pinned mode n whose
@@ -218,17 +223,19 @@ pub fn deck_resolution(case: &Case) -> Vec<Warning> {
             ),
         });
     }
-    let h = case.settings.integration.load_advance / case.settings.moving.speed;
-    if h > 1.0 / (20.0 * f_max) {
+    let h = case.settings.time_step();
+    if h > resolving_step(f_max) {
         out.push(Warning {
             field: "integration.load_advance".into(),
             value: case.settings.integration.load_advance.to_string(),
             message: format!(
                 "the step h = {h:.3e} s resolves {:.1} Hz with 20 steps per period, below the {f_max:.1} Hz deck \
-                 accelerations need: use a load advance of at most {:.4} m at {} m/s",
+                 accelerations need: use a load advance of at most {:.4} m at {} m/s, or integration.max_step = \
+                 {:.4e} s for every speed",
                 1.0 / (20.0 * h),
                 resolving_advance(f_max, case.settings.moving.speed),
-                case.settings.moving.speed
+                case.settings.moving.speed,
+                resolving_step(f_max)
             ),
         });
     }

@@ -47,6 +47,8 @@ fn vehicles_follow_the_moving_force_below_the_critical_speed() {
     }
     let units: Vec<(&str, &str)> = data.columns.iter().map(|(n, u)| (n.as_str(), *u)).collect();
     assert!(units.contains(&("min_wheel_force", "N")) && units.contains(&("max_body_acceleration", "m/s²")));
-    assert!(number(&data.summary["load_advance"]) < 0.1);
+    // The step resolves the ~180 Hz contact mode at every speed: capped below Δx/v where the 0.1 m advance does not.
+    let h_max = number(&data.summary["max_step"]);
+    assert!(h_max * 2.0 * std::f64::consts::PI * 180.0 < 2.0 && number(&data.summary["load_advance"]) == 0.1);
     assert_eq!(data.headline.len(), 2);
 }

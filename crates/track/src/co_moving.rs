@@ -109,6 +109,17 @@ pub fn run_co_moving(
     }
     let l = mesh.element_length();
     let advance = settings.integration.load_advance;
+    if settings.step_is_capped() {
+        return Err(invalid(
+            "max_step",
+            settings.time_step(),
+            format!(
+                "a co-moving window moves by whole load advances: give a load advance of at most {} m (that divides \
+                 the element length) instead of a longest step below Δx/v",
+                settings.time_step() * settings.moving.speed
+            ),
+        ));
+    }
     let per_element = (l / advance).round();
     if (per_element * advance - l).abs() > 1e-9 * l {
         return Err(invalid("load_advance", advance, format!("must divide the element length {l} m")));

@@ -63,7 +63,7 @@ impl<'a> SnapshotTaker<'a> {
         requests: &[SnapshotAt],
     ) -> Result<Self> {
         let length = model.mesh().length;
-        let step = settings.integration.load_advance / settings.moving.speed;
+        let step = settings.time_step();
         let start = settings.start_position();
         let end = settings.step_count(length) * step;
         let mut pending = Vec::with_capacity(requests.len());

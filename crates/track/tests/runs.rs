@@ -15,6 +15,7 @@ mod runs {
     mod solvers_agree;
     mod span;
     mod steady_state;
+    mod time_step;
     mod trains;
     mod vehicles_in_runs;
     mod vehicles_on_beam;

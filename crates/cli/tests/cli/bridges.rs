@@ -68,6 +68,15 @@ fn a_deck_reports_amplification_and_acceleration_and_warns_when_unresolved() {
     // f₃ = 93.5 Hz is the highest needed: mode 3, 4 elements per half-wave, 12 elements.
     assert!(stderr.contains("warning: mesh.elements = 10") && stderr.contains("use at least 12 elements"), "{stderr}");
     assert!(stderr.contains("warning: integration.load_advance = 0.1"), "{stderr}");
+    // The warning names the longest step that resolves f_max at every speed, 1/(20 f_max); capped there, the step
+    // is no longer warned about.
+    let hint = stderr.split("integration.max_step = ").nth(1).and_then(|t| t.split(' ').next()).unwrap();
+    let h_max: f64 = hint.parse().unwrap();
+    let capped = folder.join("capped.toml");
+    let text = std::fs::read_to_string(&coarse).unwrap() + &format!("max_step = {h_max}\n");
+    std::fs::write(&capped, text).unwrap();
+    let stderr = String::from_utf8_lossy(&frictrack(&["run", capped.to_str().unwrap()]).stderr).into_owned();
+    assert!(stderr.contains("mesh.elements") && !stderr.contains("integration.load_advance"), "{stderr}");
     std::fs::remove_dir_all(&folder).unwrap();
 }
 

@@ -220,6 +220,7 @@ fn bad_scenarios_exit_2_with_line_or_path() {
             "[integration]\nload_advance = 5.0\n",
             &["integration.load_advance = 5: must be > 0 and ≤ the element length"],
         ),
+        ("[integration]\nmax_step = 0.0\n", &["integration.max_step = 0: must be a time step > 0 (s)"]),
         ("[foundation]\ndamping = 1.0\ndamping_ratio = 0.1\n", &["not both"]),
         ("[beam]\nyoungs_modulus = 0.0\n", &["youngs_modulus = 0"]),
         ("[mesh]\nelements = 0\n", &["mesh.elements = 0"]),

@@ -129,7 +129,8 @@ pub(super) const TABLE: [PresetEntry; 9] = [
             "load: a moving force F, a moving mass F/g and the default quarter car scaled to F, in turn",
             "friction: none, and the scenario's [friction] (if it has none: devices of 50 kN, 31 per 200 m)",
             "rail: smooth, and the scenario's [rail] (if it has none: German low irregularity, 1–80 m, seed 1)",
-            "integration.load_advance: at most what resolves the wheel–rail contact mode at the lowest speed",
+            "integration.max_step: what resolves the wheel–rail contact mode at every speed (the load advance kept where \
+             it does)",
             "integration.static_start: every load starts at rest in its static equilibrium at min(40 m, L/5), \
                      unless the scenario gives a start",
             "foundation.absorbing_zones and output.extremes_nodes: on a track, unless the scenario gives them, \

@@ -5,11 +5,12 @@
 //! deflection, the smallest wheel–rail force (0 once the wheel leaves the rail) and the largest body acceleration
 //! against speed. A moving force feels no irregularity, so it runs once per friction set-up.
 //!
-//! The step must resolve the wheel–rail contact mode at the lowest speed ([`track::vehicle::consist::MAX_CONTACT_STEP`]):
-//! the study lowers the load advance for every run to what the slowest speed needs, and says so. On a track it adds
-//! absorbing zones and takes the extremes over the middle third, as the HSLM study does, and every load starts at
-//! rest in its static equilibrium at the end of the left zone: entering from the rigid ground, a moving mass dropped
-//! into the soft reference track's 52 mm trough and still bounced ±37 % in the middle third at 30 m/s.
+//! The step must resolve the wheel–rail contact mode ([`track::vehicle::consist::MAX_CONTACT_STEP`]): the study caps
+//! the time step (`integration.max_step`) where the load advance alone would not at the slower speeds, and says so
+//! (lowering the load advance instead would give the fast speeds the slow ones' steps, which they do not need). On a
+//! track it adds absorbing zones and takes the extremes over the middle third, as the HSLM study does, and every load
+//! starts at rest in its static equilibrium at the end of the left zone: entering from the rigid ground, a moving mass
+//! dropped into the soft reference track's 52 mm trough and still bounced ±37 % in the middle third at 30 m/s.
 
 use super::hslm::friction_setups;
 use super::{Resolution, StudyData, as_long_track, blank, failed_runs, mean_iterations};
@@ -50,8 +51,8 @@ fn vehicle(model: usize) -> VehicleSection {
 /// The one-axle train the vehicles are scaled onto.
 const SINGLE: &str = "single";
 
-/// `base` as the study runs it, and a sentence for each change: a long track, and a load advance that resolves
-/// the stiffest contact mode of the study's vehicles at the lowest of `speeds`, with 5 % to spare.
+/// `base` as the study runs it, and a sentence for each change: a long track, and a longest time step that resolves
+/// the stiffest contact mode of the study's vehicles at every one of `speeds`, with 5 % to spare.
 fn prepared(base: &Scenario, speeds: &[f64]) -> Result<(Scenario, Vec<String>)> {
     let mut s = base.clone();
     let mut notes = Vec::new();
@@ -79,15 +80,17 @@ fn prepared(base: &Scenario, speeds: &[f64]) -> Result<(Scenario, Vec<String>)> 
         let settings = vehicle(model).settings(Some(&axle), |_| Ok(irregularity::Profile::Smooth))?;
         omega = omega.max(settings.contact_frequency()?);
     }
-    let needed = 0.95 * MAX_CONTACT_STEP * slowest / omega;
-    if needed < s.integration.load_advance {
+    let longest = 0.95 * MAX_CONTACT_STEP / omega;
+    let step = s.integration.load_advance / slowest;
+    if longest < step && s.integration.max_step.is_none_or(|h| h > longest) {
         notes.push(format!(
-            "integration.load_advance = {} m is reduced to {needed:.4} m so that the step resolves the wheel–rail \
-             contact mode ({:.0} Hz) at the lowest speed, {slowest:.1} m/s",
+            "integration.max_step = {longest:.4e} s: the step resolves the wheel–rail contact mode ({:.0} Hz) below \
+             {:.1} m/s, where the load advance of {} m would not",
+            omega / std::f64::consts::TAU,
+            s.integration.load_advance / longest,
             s.integration.load_advance,
-            omega / std::f64::consts::TAU
         ));
-        s.integration.load_advance = needed;
+        s.integration.max_step = Some(longest);
     }
     Ok((s, notes))
 }
@@ -197,7 +200,7 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
         curves.push(Curve { model, friction: f, rail: r, rows, points });
     }
     curves.sort_by_key(|c| (c.rail, c.friction, c.model));
-    let (summary, lines) = summary(&curves, force, &friction, base.integration.load_advance);
+    let (summary, lines) = summary(&curves, force, &friction, &base.integration);
     Ok(StudyData {
         csv: csv(&curves, force),
         summary,
@@ -269,7 +272,12 @@ impl Curve {
 
 /// Per curve: the peak deflection and its speed, the smallest wheel force and its speed, the first speed where a
 /// wheel lost contact, the largest body acceleration and its speed.
-fn summary(curves: &[Curve], force: f64, friction: &str, advance: f64) -> (Value, Vec<String>) {
+fn summary(
+    curves: &[Curve],
+    force: f64,
+    friction: &str,
+    integration: &crate::scenario::IntegrationSection,
+) -> (Value, Vec<String>) {
     let mut items = Vec::new();
     let mut lines = Vec::new();
     for c in curves {
@@ -299,7 +307,13 @@ fn summary(curves: &[Curve], force: f64, friction: &str, advance: f64) -> (Value
             f.weakest.0
         ));
     }
-    let summary = json!({ "force": force, "friction_setup": friction, "load_advance": advance, "curves": items });
+    let summary = json!({
+        "force": force,
+        "friction_setup": friction,
+        "load_advance": integration.load_advance,
+        "max_step": integration.max_step,
+        "curves": items
+    });
     (summary, lines)
 }
 

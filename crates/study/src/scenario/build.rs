@@ -310,6 +310,7 @@ impl Scenario {
             integration: IntegrationSettings {
                 theta: i.theta,
                 load_advance: i.load_advance,
+                max_step: i.max_step,
                 end_time: i.end_time,
                 solver,
             },
@@ -356,6 +357,7 @@ fn scenario_path(error: track::TrackError) -> StudyError {
                 "speed" => "load.speed",
                 "load" => "load.force",
                 "load_advance" => "integration.load_advance",
+                "max_step" => "integration.max_step",
                 "integration.step" => "integration.load_advance",
                 "solver.tolerance" => "integration.tolerance",
                 "solver.max_iterations" => "integration.max_iterations",

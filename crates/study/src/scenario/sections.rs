@@ -336,6 +336,9 @@ pub struct IntegrationSection {
     pub theta: f64,
     /// Load advance per step Δx (m); h = Δx/v.
     pub load_advance: f64,
+    /// Longest time step (s): h = min(Δx/v, max_step).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub max_step: Option<f64>,
     /// Friction solver.
     pub solver: SolverKind,
     /// Relative tolerance of the friction law.
@@ -359,6 +362,7 @@ impl Default for IntegrationSection {
         Self {
             theta: s.integration.theta,
             load_advance: s.integration.load_advance,
+            max_step: None,
             solver: SolverKind::Auto,
             tolerance: s.integration.solver.tolerance,
             max_iterations: s.integration.solver.max_iterations,

@@ -130,6 +130,10 @@ pub struct IntegrationSettings {
     pub theta: f64,
     /// Load advance per step Δx (m) > 0, so h = Δx/v. Default 0.1 m; must not exceed one element.
     pub load_advance: f64,
+    /// Longest time step h_max (s) > 0: h = min(Δx/v, h_max) (see [`RunSettings::time_step`]). Default None (h =
+    /// Δx/v). What a sweep over a wide speed range gives its slow speeds — a vehicle's contact mode or a deck's
+    /// accelerations need a step in seconds, not a distance — without shortening the step at every speed.
+    pub max_step: Option<f64>,
     /// End time (s); None stops when the load leaves the beam. Must not be before that.
     pub end_time: Option<f64>,
     /// Friction solver settings.
@@ -138,7 +142,7 @@ pub struct IntegrationSettings {
 
 impl Default for IntegrationSettings {
     fn default() -> Self {
-        Self { theta: 0.5, load_advance: 0.1, end_time: None, solver: SolverSettings::default() }
+        Self { theta: 0.5, load_advance: 0.1, max_step: None, end_time: None, solver: SolverSettings::default() }
     }
 }
 
@@ -244,21 +248,26 @@ impl RunSettings {
                 format!("must be > 0 and ≤ the element length {l} m"),
             ));
         }
-        Integration { theta: self.integration.theta, step: self.integration.load_advance / self.moving.speed }
-            .validate()?;
+        if let Some(h_max) = self.integration.max_step
+            && !(h_max.is_finite() && h_max > 0.0)
+        {
+            return Err(invalid("max_step", h_max, "must be a time step > 0 (s)"));
+        }
+        Integration { theta: self.integration.theta, step: self.time_step() }.validate()?;
         if let Some(vehicles) = self.moving.load.vehicles() {
             let omega = vehicles.contact_frequency()?;
             let largest = MAX_CONTACT_STEP / omega * self.moving.speed;
-            if omega * self.integration.load_advance / self.moving.speed > MAX_CONTACT_STEP {
+            if omega * self.time_step() > MAX_CONTACT_STEP {
                 return Err(invalid(
                     "load_advance",
                     self.integration.load_advance,
                     format!(
                         "must be ≤ {largest:.4e} m at {} m/s with these vehicles: the wheel–rail contact mode at \
                          {:.4e} Hz needs at least π steps per period (a stiffer contact needs a shorter step; check \
-                         vehicle.contact_stiffness or hertz_coefficient)",
+                         vehicle.contact_stiffness or hertz_coefficient; or give integration.max_step ≤ {:.4e} s)",
                         self.moving.speed,
-                        omega / std::f64::consts::TAU
+                        omega / std::f64::consts::TAU,
+                        MAX_CONTACT_STEP / omega
                     ),
                 ));
             }
@@ -353,7 +362,7 @@ impl RunSettings {
         }
         let steps = self.step_count(length);
         if steps > Self::MAX_STEPS as f64 {
-            let h = self.integration.load_advance / self.moving.speed;
+            let h = self.time_step();
             let travel = self.crossing_time(length) * self.moving.speed;
             let allowed = format!(
                 "gives {steps:.3e} time steps of {h:.3e} s over the {travel:.4e} m the load travels (beam length \
@@ -392,7 +401,7 @@ impl RunSettings {
 
     /// Number of time steps of the run (as a float, so that absurd inputs do not overflow).
     pub fn step_count(&self, length: f64) -> f64 {
-        let h = self.integration.load_advance / self.moving.speed;
+        let h = self.time_step();
         let crossing = (self.crossing_time(length) / h).round();
         match self.integration.end_time {
             Some(end) => crossing.max((end / h - 1e-9).ceil()),
@@ -406,6 +415,18 @@ impl RunSettings {
             InitialState::Rest => 0.0,
             InitialState::SteadyState { position } | InitialState::Static { position } => position,
         }
+    }
+
+    /// The time step h = min(Δx/v, h_max) (s): the load advance Δx at the speed v, shortened to the longest step
+    /// h_max where one is given.
+    pub fn time_step(&self) -> f64 {
+        let h = self.integration.load_advance / self.moving.speed;
+        self.integration.max_step.map_or(h, |h_max| h.min(h_max))
+    }
+
+    /// Whether the longest step h_max shortens the step below Δx/v at this speed.
+    pub fn step_is_capped(&self) -> bool {
+        self.time_step() < self.integration.load_advance / self.moving.speed
     }
 
     /// Time for the load — the last axle of a train — to reach x = L (s).

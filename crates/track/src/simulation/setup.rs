@@ -37,7 +37,7 @@ impl Simulation<'_> {
     pub(crate) fn set_up(&self) -> Result<Setup> {
         let (model, settings) = (self.model, self.settings);
         let mesh = *model.mesh();
-        let h = settings.integration.load_advance / settings.moving.speed;
+        let h = settings.time_step();
         let theta = settings.integration.theta;
         let integration = Integration { theta, step: h };
         let start = settings.start_position();
