@@ -169,8 +169,8 @@ impl Estimate {
         let nonsmooth =
             problem.friction.force_per_length > 0.0 || problem.foundation.law == fem_beam::FoundationLaw::Tensionless;
         let (beam, foundation) = (&problem.beam, &problem.foundation);
-        let critical =
-            (4.0 * foundation.stiffness * beam.bending_stiffness() / beam.mass_per_length().powi(2)).powf(0.25);
+        // v_cr of the closed form; 0 without a soil (every speed supercritical), as the formula gives.
+        let critical = fem_beam::reference::InfiniteBeam::new(beam, foundation).map_or(0.0, |b| b.critical_speed());
         let per_node = |v: f64| match (nonsmooth, v >= critical) {
             (false, _) => STATIONARY_SMOOTH_PER_NODE,
             (true, false) => STATIONARY_NONSMOOTH_PER_NODE,
