@@ -197,7 +197,7 @@ fn vehicles(c: &mut Criterion) {
 fn vehicle_on_ballast_friction(c: &mut Criterion) {
     let path =
         std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/quarter-car-on-ballast-friction.toml");
-    let car = study::scenario::Scenario::from_path(&path).unwrap().build().unwrap();
+    let car = scenario::Scenario::from_path(&path).unwrap().build().unwrap();
     let mut force = car.settings.clone();
     force.moving.load = RunSettings::default().moving.load;
     let mut group = c.benchmark_group("vehicle_on_ballast_friction");

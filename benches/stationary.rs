@@ -134,7 +134,7 @@ fn co_moving_vehicle(c: &mut Criterion) {
              depth = 3e-3\nlength = 1.0\n[integration]\nload_advance = 0.05\n[co_moving]\ntrack_length = {track}\n\
              zones = 30.0\n"
         );
-        study::Scenario::from_toml(&toml, "bench.toml").unwrap()
+        scenario::Scenario::from_toml(&toml, "bench.toml").unwrap()
     };
     let mut group = c.benchmark_group("co_moving_window");
     group.sample_size(10).warm_up_time(Duration::from_secs(1)).measurement_time(Duration::from_secs(10));

@@ -142,9 +142,9 @@ fn a_curve_out_of_its_frame_is_caught() {
 fn wheel_forces_are_drawn_a_panel_per_vehicle() {
     let text = "[mesh]\nlength = 60.0\nelements = 120\n[load]\nspeed = 30.0\n[integration]\nload_advance = 0.05\n[vehicle]\nkind = \"quarter-car\"\n\
                 [[vehicle.behind]]\noffset = 10.0\nkind = \"quarter-car\"\ncount = 2\nspacing = 10.0\n";
-    let scenario = study::Scenario::from_toml(text, "three-cars.toml").unwrap();
+    let scenario = scenario::Scenario::from_toml(text, "three-cars.toml").unwrap();
     let case = scenario.build().unwrap();
-    let result = study::sweep::Runner::new(1).unwrap().simulate(&case, &case.settings).unwrap();
+    let result = runner::Runner::new(1).unwrap().simulate(&case, &case.settings).unwrap();
     let spec = study::vehicle_output::wheel_plot(result.vehicles.as_ref().unwrap(), "three cars", (0.0, 60.0));
     assert_eq!(spec.panels.len(), 3);
     assert!(spec.panels.iter().all(|p| p.series.len() == 1), "one wheel in each quarter car");

@@ -2,15 +2,15 @@
 //! (`stationary`) and a run of the load across a long finite track in time through the interaction engine (`track`,
 //! with absorbing zones), read in its middle third when the load is at the middle (docs/theory.md §13, §14).
 
+use scenario::Scenario;
 use stationary::Domain;
-use study::Scenario;
 use track::Simulation;
 
 /// The finite track's deflection at the nodes (x, w) when the load is at `at` (m), and the stationary wave there.
 fn both(toml: &str, speed: f64, at: f64) -> (Vec<(f64, f64)>, stationary::StationaryWave) {
     let snapshot = finite(toml, speed, at);
     let scenario = Scenario::from_toml(toml, "case.toml").unwrap();
-    let problem = study::stationary_output::problem(&scenario, speed, Domain::default()).unwrap();
+    let problem = scenario.stationary_problem(speed, Domain::default()).unwrap();
     (snapshot, stationary::solve(&problem).unwrap())
 }
 
@@ -143,7 +143,7 @@ fn friction_on_a_co_moving_window_and_on_a_long_track() {
     }
     assert!(worst <= 2e-3 * peak, "{:e} of the peak", worst / peak);
     // The third method: the stationary solve, which the window approaches as its step falls.
-    let problem = study::stationary_output::problem(&scenario, 100.0, Domain::default()).unwrap();
+    let problem = scenario.stationary_problem(100.0, Domain::default()).unwrap();
     let wave = stationary::solve(&problem).unwrap();
     assert!(wave.convergence.is_converged(), "{:?}", wave.convergence);
     let apart = |run: &track::co_moving::CoMovingResult| {

@@ -2,8 +2,8 @@
 //! crate that started to use a higher one. Read from each crate's Cargo.toml (normal, dev and build dependencies).
 
 /// The layers, bottom first: (package name, folder). The Python bindings stand beside the command line: both on the
-/// study library, neither on the other.
-const LAYERS: [(&str, &str); 10] = [
+/// scenario, runner and study libraries, neither on the other.
+const LAYERS: [(&str, &str); 12] = [
     ("banded", "crates/banded"),
     ("irregularity", "crates/irregularity"),
     ("fem-beam", "crates/fem-beam"),
@@ -11,6 +11,8 @@ const LAYERS: [(&str, &str); 10] = [
     ("nscd", "crates/nscd"),
     ("track", "crates/track"),
     ("stationary", "crates/stationary"),
+    ("scenario", "crates/scenario"),
+    ("runner", "crates/runner"),
     ("study", "crates/study"),
     ("frictrack", "crates/cli"),
     ("frictrack-python", "crates/python"),

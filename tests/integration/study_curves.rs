@@ -5,9 +5,9 @@
 //! to trust the numbers) and move whenever the numerics do: review such diffs against those spreads.
 //! Long tables are thinned to about 40 rows, keeping the first and last.
 
-use study::Scenario;
+use runner::Runner;
+use scenario::Scenario;
 use study::presets::{Preset, Resolution, StudyData, run_preset};
-use study::sweep::Runner;
 
 /// `value` rounded to four significant digits.
 fn round4(value: f64) -> f64 {

@@ -4,10 +4,10 @@
 use crate::Format;
 use anyhow::Result;
 use clap::Args;
+use scenario::SweepSection;
+use scenario::{Scenario, StudyError};
 use std::path::PathBuf;
-use study::scenario::SweepSection;
 use study::steady_response::SteadyResponse;
-use study::{Scenario, StudyError};
 
 /// Options of `frictrack analytic`.
 #[derive(Debug, Args)]
@@ -56,7 +56,7 @@ impl SpeedChoice {
             (Some(range), _) => parse_range(range),
             (None, Some(v)) => Ok(vec![v]),
             (None, None) => {
-                Err(study::error::invalid("--speed", "absent", "give --speed V or --speeds A:B:STEP").into())
+                Err(scenario::error::invalid("--speed", "absent", "give --speed V or --speeds A:B:STEP").into())
             }
         }
     }
@@ -65,7 +65,7 @@ impl SpeedChoice {
 /// Parse `A:B:STEP` (m/s, or all three in km/h with `A:B:STEPkm/h`) into the list of speeds A, A+STEP, … ≤ B
 /// (inclusive up to round-off), in m/s.
 pub fn parse_range(text: &str) -> Result<Vec<f64>> {
-    let bad = |allowed: &str| study::error::invalid("--speeds", text, allowed);
+    let bad = |allowed: &str| scenario::error::invalid("--speeds", text, allowed);
     let (numbers, factor) = crate::units::split_speed_unit(text);
     let parts: Vec<&str> = numbers.split(':').collect();
     if parts.len() != 3 {
@@ -79,7 +79,7 @@ pub fn parse_range(text: &str) -> Result<Vec<f64>> {
         other => other,
     })?;
     let speeds: Vec<f64> = range.speeds().into_iter().map(|v| v * factor).collect();
-    study::speeds::check_count("--speeds", speeds.len())?;
+    scenario::speeds::check_count("--speeds", speeds.len())?;
     Ok(speeds)
 }
 
@@ -91,7 +91,7 @@ pub fn run(args: &AnalyticArgs) -> Result<()> {
     };
     let speeds = args.speed.speeds()?;
     let train = match &args.train {
-        Some(name) => Some(study::trains::named_or_file(name, scenario.load.force, "--train")?),
+        Some(name) => Some(scenario::trains::named_or_file(name, scenario.load.force, "--train")?),
         None => None,
     };
     let response = SteadyResponse::of(&scenario, args.damping_ratio, train, &speeds)?;

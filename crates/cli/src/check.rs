@@ -3,8 +3,8 @@
 
 use anyhow::Result;
 use clap::Args;
+use scenario::Scenario;
 use std::path::PathBuf;
-use study::Scenario;
 
 /// Options of `frictrack check`.
 #[derive(Debug, Args)]
@@ -29,7 +29,7 @@ pub fn run(args: &CheckArgs) -> Result<()> {
     }
     if invalid > 0 {
         let count = format!("{invalid} of {}", args.scenarios.len());
-        return Err(study::error::invalid("scenario files", count, "see the errors above").into());
+        return Err(scenario::error::invalid("scenario files", count, "see the errors above").into());
     }
     Ok(())
 }

@@ -4,9 +4,9 @@
 use crate::Format;
 use crate::files::{check_output_file, prepare_output_folder, write_atomically, write_figures};
 use anyhow::Result;
-use study::Scenario;
+use scenario::CoMovingSection;
+use scenario::Scenario;
 use study::co_moving_output::{CoMovingSummary, Settling};
-use study::scenario::CoMovingSection;
 
 /// Run `scenario` through its window and print or write the result.
 pub fn run(

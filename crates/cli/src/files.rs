@@ -3,9 +3,9 @@
 //! folder at the target is refused, so `--out /dev/full` or a link to somewhere else cannot be destroyed.
 
 use anyhow::{Context, Result};
+use scenario::error::invalid;
 use std::io::Write;
 use std::path::{Path, PathBuf};
-use study::error::invalid;
 
 /// Check that `path` can take a result file: it is absent or a regular file (not a symlink, device, FIFO or
 /// folder), and its folder exists and accepts new files. `option` names the flag in the error (exit code 2).

@@ -3,8 +3,8 @@
 use crate::files::write_atomically;
 use anyhow::Result;
 use clap::Args;
+use scenario::TEMPLATE;
 use std::path::PathBuf;
-use study::scenario::TEMPLATE;
 
 /// Options of `frictrack init`.
 #[derive(Debug, Args)]
@@ -22,7 +22,7 @@ pub fn run(args: &InitArgs) -> Result<()> {
         None => print!("{TEMPLATE}"),
         Some(path) => {
             if path.exists() && !args.force {
-                return Err(study::error::invalid(
+                return Err(scenario::error::invalid(
                     "scenario file",
                     path.display(),
                     "exists already; use --force to overwrite it",

@@ -29,16 +29,16 @@ pub fn stop_flag() -> &'static AtomicBool {
 }
 
 /// Turn an interruption into an error that says where the finished runs are and how to continue.
-pub fn explain<T>(result: study::Result<T>, journal: Option<&study::Journal>) -> anyhow::Result<T> {
+pub fn explain<T>(result: scenario::Result<T>, journal: Option<&runner::Journal>) -> anyhow::Result<T> {
     match result {
-        Err(study::StudyError::Interrupted) => {
+        Err(scenario::StudyError::Interrupted) => {
             let kept = match journal {
                 Some(j) => {
                     format!("finished runs are kept in {}; run the same command with --resume", j.path().display())
                 }
                 None => "nothing was kept (no --out); run it again".to_string(),
             };
-            Err(anyhow::Error::new(study::StudyError::Interrupted).context(format!("interrupted: {kept}")))
+            Err(anyhow::Error::new(scenario::StudyError::Interrupted).context(format!("interrupted: {kept}")))
         }
         other => Ok(other?),
     }

@@ -1,7 +1,7 @@
 //! `--jobs N`: one pool of worker threads per command, never more threads than the machine has cores.
 
 use anyhow::Result;
-use study::sweep::{Runner, worker_threads};
+use runner::{Runner, worker_threads};
 
 /// The runner of a command with `jobs` threads (0 = all cores); says on stderr (unless `quiet`) when the request
 /// is capped at the number of cores.

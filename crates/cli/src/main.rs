@@ -140,7 +140,9 @@ fn main() -> ExitCode {
 /// Clarabel is limited by its own stopping criteria, the interior point by its iteration cap at tight tolerances.
 fn hint(error: &anyhow::Error) -> Option<&'static str> {
     use nscd::NscdError;
-    let Some(study::StudyError::Stepping(stepping)) = error.downcast_ref::<study::StudyError>() else { return None };
+    let Some(scenario::StudyError::Stepping(stepping)) = error.downcast_ref::<scenario::StudyError>() else {
+        return None;
+    };
     match stepping {
         NscdError::Unconverged { status: nscd::StepStatus::Stalled, fallbacks: Some(_), .. } => Some(
             "every solver stalled short of the tolerance, which lies below what the step's arithmetic resolves: \
@@ -164,9 +166,9 @@ fn hint(error: &anyhow::Error) -> Option<&'static str> {
 /// 2 for invalid input (a parameter the model rejects), 130 after Ctrl-C, 1 for anything else (e.g. a solver
 /// failure).
 /// The library reaches the commands through `study` only: every error of a lower layer arrives as a
-/// [`study::StudyError`], which says whether it is the user's input.
+/// [`scenario::StudyError`], which says whether it is the user's input.
 pub(crate) fn error_code(error: &anyhow::Error) -> u8 {
-    use study::StudyError;
+    use scenario::StudyError;
     match error.downcast_ref::<StudyError>() {
         Some(StudyError::Interrupted) => interrupt::EXIT_CODE,
         Some(e) if e.is_invalid_input() => 2,

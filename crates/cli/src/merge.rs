@@ -27,6 +27,6 @@ pub fn run(args: &MergeArgs) -> Result<()> {
             Ok((p.display().to_string(), text))
         })
         .collect::<Result<Vec<_>>>()?;
-    let merged = study::shard::merge(&inputs)?;
+    let merged = runner::shard::merge(&inputs)?;
     write_atomically(&args.out, merged.as_bytes())
 }

@@ -40,7 +40,7 @@ fn read(path: &Path) -> Result<String> {
 fn sweep_file(path: &Path) -> Result<Vec<String>> {
     let points = study::sweep_figures::read_sweep_csv(&read(path)?, &path.display().to_string())?;
     if points.is_empty() {
-        return Err(study::error::invalid(&path.display().to_string(), "no finished run", "nothing to draw").into());
+        return Err(scenario::error::invalid(&path.display().to_string(), "no finished run", "nothing to draw").into());
     }
     let stem = path.file_stem().map_or("sweep".into(), |s| s.to_string_lossy().into_owned());
     // The scenario and the refined critical speed from the JSON `sweep --out` wrote beside the CSV, where there is one
@@ -49,10 +49,10 @@ fn sweep_file(path: &Path) -> Result<Vec<String>> {
         .ok()
         .and_then(|text| serde_json::from_str(&text).ok());
     let scenario =
-        metadata.as_ref().and_then(|m| serde_json::from_value::<study::Scenario>(m["scenario"].clone()).ok());
+        metadata.as_ref().and_then(|m| serde_json::from_value::<scenario::Scenario>(m["scenario"].clone()).ok());
     let critical = metadata
         .as_ref()
-        .and_then(|m| serde_json::from_value::<study::CriticalSpeed>(m["critical_speed"]["result"].clone()).ok());
+        .and_then(|m| serde_json::from_value::<runner::CriticalSpeed>(m["critical_speed"]["result"].clone()).ok());
     let plots = study::sweep_figures::sweep_plots(&points, &stem, scenario.as_ref(), critical.as_ref());
     write_figures(&plots, path.parent().unwrap_or(Path::new(".")))
 }

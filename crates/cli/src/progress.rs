@@ -5,9 +5,9 @@ use std::io::IsTerminal;
 use std::time::Duration;
 
 /// Say on standard error what `what` ("this run", "sweep", a study's name, "stationary") will take when that is
-/// long ([`study::cost::Estimate::is_long`]): how many runs or solves, the size of the largest, the threads and the
+/// long ([`runner::cost::Estimate::is_long`]): how many runs or solves, the size of the largest, the threads and the
 /// estimate — terminal or not, so that nobody waits blind for a run of hours.
-pub fn announce(what: &str, estimate: &study::cost::Estimate) {
+pub fn announce(what: &str, estimate: &runner::cost::Estimate) {
     if estimate.is_long() {
         eprintln!("{what}: {}; Ctrl-C stops it, a progress bar follows on a terminal", estimate.describe());
     }

@@ -4,11 +4,11 @@
 use crate::Format;
 use anyhow::Result;
 use clap::Args;
+use scenario::{Scenario, StudyError};
 use serde::Serialize;
 use std::path::PathBuf;
 use std::time::Instant;
 use study::reference_check::ReferenceCheck;
-use study::{Scenario, StudyError};
 
 /// Options of `frictrack reference`.
 #[derive(Debug, Args)]

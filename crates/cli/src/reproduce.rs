@@ -90,12 +90,12 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
 }
 
 /// The report's opening: the base case in numbers and how to read the figures.
-fn report_header(base: &study::Scenario, options: &crate::study_cmd::StudyOptions) -> Result<String> {
+fn report_header(base: &scenario::Scenario, options: &crate::study_cmd::StudyOptions) -> Result<String> {
     let mut report = String::new();
     let _ = writeln!(report, "# frictrack — the studies of docs/theory.md §7, §10, §12 and §14\n");
     let model = base.model()?;
     let (beam, foundation, mesh) = (model.beam(), model.foundation(), model.mesh());
-    let v_cr = study::speeds::SpeedScale::of(base)?.critical_speed;
+    let v_cr = scenario::speeds::SpeedScale::of(base)?.critical_speed;
     let _ = writeln!(
         report,
         "{}: EI = {:.4} MN·m², ρA = {:.3} kg/m on a Winkler soil of k_f = {:.1} kN/m² (v_cr = {}), {} m beam of {} \

@@ -12,9 +12,9 @@ use crate::scenario_args::ScenarioArgs;
 use crate::window_wording::WindowWording;
 use anyhow::Result;
 use clap::Args;
+use scenario::Scenario;
 use std::path::PathBuf;
 use std::time::Instant;
-use study::Scenario;
 use study::run_summary::RunSummary;
 use track::{RunResult, SnapshotAt};
 
@@ -58,7 +58,7 @@ pub fn run(args: &RunArgs) -> Result<()> {
         scenario.output.snapshot_load_positions = args.snapshot_at_load.clone();
     }
     if args.co_moving && scenario.co_moving.is_none() {
-        scenario.co_moving = Some(study::scenario::CoMovingSection::default());
+        scenario.co_moving = Some(scenario::CoMovingSection::default());
     }
     if let Some(section) = scenario.co_moving.clone() {
         return crate::co_moving::run(&scenario, &section, args.format, args.out.as_deref());
@@ -84,7 +84,7 @@ pub fn run(args: &RunArgs) -> Result<()> {
     };
     let steps = case.settings.step_count(scenario.mesh.length);
     if !args.quiet {
-        crate::progress::announce("this run", &study::cost::Estimate::run(study::cost::RunCost::of(&case)));
+        crate::progress::announce("this run", &runner::cost::Estimate::run(runner::cost::RunCost::of(&case)));
     }
     let bar = crate::progress::steps_bar(steps as u64, args.quiet || args.format == Format::Json);
     let progress = |fraction: f64| bar.set_position((fraction * steps) as u64);
@@ -93,7 +93,7 @@ pub fn run(args: &RunArgs) -> Result<()> {
     bar.finish_and_clear();
     let (result, snapshots) = crate::interrupt::explain(ran, None)?;
     let report = RunSummary::of(&scenario, &case, &result, start.elapsed().as_secs_f64())?;
-    for warning in study::plausibility::result_warnings(&case, &report) {
+    for warning in study::result_warnings::result_warnings(&case, &report) {
         eprintln!("warning: {warning}");
     }
     match args.format {

@@ -67,7 +67,7 @@ pub(crate) fn print_text(r: &RunSummary, wording: &WindowWording) {
     if let Some(v_cr) = r.critical_speed {
         println!(
             "  critical speed of the infinite track v_cr = {v_cr:.2} m/s; foundation damping ζ = {}",
-            study::number::significant(r.damping_ratio, 12)
+            scenario::number::significant(r.damping_ratio, 12)
         );
     }
     print_friction(r);
@@ -85,7 +85,7 @@ pub(crate) fn print_text(r: &RunSummary, wording: &WindowWording) {
 /// The soil's lines of the text report: its law, the settlement, where the rail lifted off and the soil's energy.
 fn print_soil(s: &study::soil_output::SoilSummary) {
     let tension = match s.law {
-        "bilinear" => format!("k_t = {} k_c", study::number::significant(s.tension_ratio, 6)),
+        "bilinear" => format!("k_t = {} k_c", scenario::number::significant(s.tension_ratio, 6)),
         _ => "no tension".to_string(),
     };
     let weight = match s.settlement > 0.0 {

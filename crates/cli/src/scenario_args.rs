@@ -4,9 +4,9 @@ use anyhow::{Context, Result};
 use clap::Args;
 use clap::builder::{PossibleValuesParser, TypedValueParser};
 use nscd::SolverKind;
+use scenario::Scenario;
+use scenario::overrides::Overrides;
 use std::path::PathBuf;
-use study::Scenario;
-use study::overrides::Overrides;
 
 /// `--solver NAME`: the names of [`SolverKind::ALL`], checked by clap, mapped to the kind.
 fn solver_parser() -> impl TypedValueParser<Value = SolverKind> {
@@ -71,8 +71,8 @@ pub struct ScenarioArgs {
 }
 
 /// Print the warnings of a built scenario on stderr (always: they say a result may be wrong).
-pub fn print_warnings(scenario: &Scenario, case: &study::Case) {
-    for warning in study::diagnostics::warnings(scenario, case) {
+pub fn print_warnings(scenario: &Scenario, case: &scenario::Case) {
+    for warning in scenario::diagnostics::warnings(scenario, case) {
         eprintln!("warning: {warning}");
     }
 }
@@ -91,7 +91,8 @@ impl ScenarioArgs {
     pub fn overrides(&self) -> Result<Overrides> {
         let extremes_window = match &self.extremes_window {
             Some(text) => {
-                let bad = || study::error::invalid("--extremes-window", text, "expected A:B, two load positions in m");
+                let bad =
+                    || scenario::error::invalid("--extremes-window", text, "expected A:B, two load positions in m");
                 let (a, b) = text.split_once(':').ok_or_else(bad)?;
                 let number = |t: &str| t.trim().parse::<f64>().map_err(|_| bad());
                 Some([number(a)?, number(b)?])

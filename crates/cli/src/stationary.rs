@@ -4,9 +4,9 @@
 use crate::files::{check_output_file, prepare_output_folder, write_atomically, write_figures};
 use anyhow::Result;
 use clap::{Args, ValueEnum};
+use scenario::Scenario;
 use stationary::Domain;
 use std::path::PathBuf;
-use study::Scenario;
 use study::columns;
 use study::stationary_output::{ErrorEstimate, POINT_COLUMNS, StationaryStudy, WAVE_COLUMNS, points_csv, wave_csv};
 
@@ -56,7 +56,7 @@ pub struct StationaryArgs {
 fn domain(args: &StationaryArgs) -> Result<Domain> {
     let mut domain = Domain::default();
     if let Some(text) = &args.domain {
-        let bad = || study::error::invalid("--domain", text, "expected BEHIND:AHEAD in metres, e.g. 60:60");
+        let bad = || scenario::error::invalid("--domain", text, "expected BEHIND:AHEAD in metres, e.g. 60:60");
         let (behind, ahead) = text.split_once(':').ok_or_else(bad)?;
         domain.behind = behind.trim().parse().map_err(|_| bad())?;
         domain.ahead = ahead.trim().parse().map_err(|_| bad())?;
@@ -64,7 +64,7 @@ fn domain(args: &StationaryArgs) -> Result<Domain> {
     if let Some(l) = args.element_length {
         domain.element_length = l;
     }
-    domain.validate().map_err(|e| study::StudyError::from(e).into()).map(|()| domain)
+    domain.validate().map_err(|e| scenario::StudyError::from(e).into()).map(|()| domain)
 }
 
 /// Execute `frictrack stationary`.
@@ -73,7 +73,7 @@ pub fn run(args: &StationaryArgs) -> Result<()> {
         Some(path) => Scenario::from_path(path)?,
         None => Scenario::default(),
     };
-    let overrides = study::overrides::Overrides {
+    let overrides = scenario::overrides::Overrides {
         damping_ratio: args.damping_ratio,
         distributed_friction: args.distributed_friction,
         ..Default::default()
@@ -81,7 +81,7 @@ pub fn run(args: &StationaryArgs) -> Result<()> {
     let scenario = overrides.apply(scenario);
     let speeds = args.speed.speeds()?;
     if let Some(&v) = speeds.iter().find(|v| !(v.is_finite() && **v >= 0.0)) {
-        return Err(study::error::invalid("--speed", v, "must be finite and ≥ 0 (m/s)").into());
+        return Err(scenario::error::invalid("--speed", v, "must be finite and ≥ 0 (m/s)").into());
     }
     let domain = domain(args)?;
     if let Some(folder) = &args.out {
@@ -90,8 +90,8 @@ pub fn run(args: &StationaryArgs) -> Result<()> {
             check_output_file("--out", &folder.join(name))?;
         }
     }
-    let first = study::stationary_output::problem(&scenario, speeds.first().copied().unwrap_or(0.0), domain)?;
-    crate::progress::announce("stationary", &study::cost::Estimate::stationary(&first, &speeds, true));
+    let first = scenario.stationary_problem(speeds.first().copied().unwrap_or(0.0), domain)?;
+    crate::progress::announce("stationary", &runner::cost::Estimate::stationary(&first, &speeds, true));
     let stop = Some(crate::interrupt::stop_flag());
     let bar = crate::progress::bar("stationary", Some(speeds.len() as u64), args.format != StationaryFormat::Text);
     let progress = |done: usize| bar.set_position(done as u64);

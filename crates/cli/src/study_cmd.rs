@@ -5,13 +5,13 @@
 use crate::files::{check_output_file, prepare_output_folder, write_atomically};
 use anyhow::Result;
 use clap::{Args, ValueEnum};
+use runner::Runner;
+use scenario::DeckTrack;
+use scenario::Scenario;
 use serde_json::json;
 use std::path::PathBuf;
 use std::time::Instant;
-use study::Scenario;
 use study::presets::{Preset, Resolution, StudyData, run_preset};
-use study::scenario::DeckTrack;
-use study::sweep::Runner;
 
 /// Sampling of a study.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -123,7 +123,7 @@ pub fn failure_lines(data: &StudyData) -> Vec<String> {
 
 /// The error that ends a study in which some runs failed (after every other run finished and its data, figures and
 /// JSON were written): the failed runs with their errors, and what was kept.
-fn failed_runs(data: &StudyData, journal: &study::Journal) -> anyhow::Error {
+fn failed_runs(data: &StudyData, journal: &runner::Journal) -> anyhow::Error {
     anyhow::anyhow!(
         "{} run(s) of {} failed:\n{}\nthe study's CSV, JSON and figures have every other run (the JSON lists the \
          failures), and {} keeps the finished runs for --resume",
@@ -143,7 +143,7 @@ pub fn run_study(
     base: &Scenario,
     workers: &Runner<'static>,
     borrowed: &[std::path::PathBuf],
-) -> Result<(StudyData, study::Journal)> {
+) -> Result<(StudyData, runner::Journal)> {
     let (out, quiet) = (options.out.as_path(), options.quiet);
     let case = base.build()?;
     crate::scenario_args::print_warnings(base, &case);
@@ -159,7 +159,7 @@ pub fn run_study(
             check_output_file("--out", &entry.path())?;
         }
     }
-    let mut journal = study::Journal::open(&out.join(format!(".{}.journal", preset.name())), options.resume)?;
+    let mut journal = runner::Journal::open(&out.join(format!(".{}.journal", preset.name())), options.resume)?;
     if journal.resumed() > 0 && !quiet {
         eprintln!("{}: resuming with {} finished runs", preset.name(), journal.resumed());
     }
@@ -175,7 +175,7 @@ pub fn run_study(
     }
     let bar = crate::progress::bar(preset.name(), None, quiet);
     let progress = |done: usize| bar.set_position(done as u64);
-    let announce = |estimate: &study::cost::Estimate| crate::progress::announce(preset.name(), estimate);
+    let announce = |estimate: &runner::cost::Estimate| crate::progress::announce(preset.name(), estimate);
     let runner =
         workers.clone().with_progress(&progress).with_journal(Some(&journal)).with_stop(crate::interrupt::stop_flag());
     let runner = if quiet { runner } else { runner.with_estimate(&announce) };

@@ -14,11 +14,11 @@ use crate::files::{check_output_file, journal_beside, metadata_beside, write_ato
 use crate::scenario_args::ScenarioArgs;
 use anyhow::Result;
 use clap::Args;
+use runner::shard::Shard;
+use runner::{FailedRun, critical_speed, failures, finished, write_csv_rows};
+use scenario::error::invalid;
 use serde_json::json;
 use std::path::PathBuf;
-use study::error::invalid;
-use study::shard::Shard;
-use study::sweep::{FailedRun, critical_speed, failures, finished, write_csv_rows};
 
 /// Options of `frictrack sweep`.
 #[derive(Debug, Args)]
@@ -64,7 +64,7 @@ pub fn run(args: &SweepArgs) -> Result<()> {
         Some(range) => parse_range(range)?,
         None => scenario.speed_range()?.speeds(),
     };
-    for warning in study::diagnostics::sweep_warnings(&scenario, &all_speeds)? {
+    for warning in scenario::diagnostics::sweep_warnings(&scenario, &all_speeds)? {
         eprintln!("warning: {warning}");
     }
     let shard = args.shard.as_deref().map(Shard::parse).transpose()?;
@@ -75,14 +75,15 @@ pub fn run(args: &SweepArgs) -> Result<()> {
     if let Some(out) = &args.out {
         check_outputs(out)?;
     }
-    let journal = args.out.as_deref().map(|out| study::Journal::open(&journal_beside(out), args.resume)).transpose()?;
+    let journal =
+        args.out.as_deref().map(|out| runner::Journal::open(&journal_beside(out), args.resume)).transpose()?;
     if let Some(j) = journal.as_ref().filter(|j| j.resumed() > 0 && !args.quiet) {
         eprintln!("resuming: {} finished runs in {}", j.resumed(), j.path().display());
     }
     let runner = crate::jobs::runner(args.jobs, args.quiet)?;
     let bar = crate::progress::bar("sweep", Some(speeds.len() as u64), args.quiet);
     let progress = |done: usize| bar.set_position(done as u64);
-    let announce = |estimate: &study::cost::Estimate| crate::progress::announce("sweep", estimate);
+    let announce = |estimate: &runner::cost::Estimate| crate::progress::announce("sweep", estimate);
     let runner =
         runner.with_progress(&progress).with_journal(journal.as_ref()).with_stop(crate::interrupt::stop_flag());
     let runner = if args.quiet { runner } else { runner.with_estimate(&announce) };
@@ -117,7 +118,7 @@ pub fn run(args: &SweepArgs) -> Result<()> {
             for f in &failed {
                 println!("# failed_run {}", serde_json::to_string(f)?);
             }
-            let units = study::sweep::csv_columns(scenario.vehicle.is_some()).map(|(name, unit, _)| (*name, *unit));
+            let units = runner::csv_columns(scenario.vehicle.is_some()).map(|(name, unit, _)| (*name, *unit));
             println!("# {}", study::columns::units_line(units));
         }
     }
@@ -132,7 +133,7 @@ pub fn run(args: &SweepArgs) -> Result<()> {
 
 /// The error that ends a sweep in which some runs failed (after every other run finished and was written): the
 /// failed speeds with their errors, and what was kept.
-fn failed_runs(failed: &[FailedRun], total: usize, critical: bool, journal: Option<&study::Journal>) -> anyhow::Error {
+fn failed_runs(failed: &[FailedRun], total: usize, critical: bool, journal: Option<&runner::Journal>) -> anyhow::Error {
     let list: Vec<String> = failed.iter().map(|f| format!("  {} m/s: {}", f.speed, f.error)).collect();
     let kept = match journal {
         Some(j) => format!(
@@ -166,9 +167,9 @@ fn check_outputs(out: &std::path::Path) -> Result<()> {
 fn write_files(
     path: &std::path::Path,
     csv: &[u8],
-    scenario: &study::Scenario,
-    (points, failed): (&[study::SweepPoint], &[study::sweep::FailedRun]),
-    critical: Option<&study::CriticalSpeed>,
+    scenario: &scenario::Scenario,
+    (points, failed): (&[runner::SweepPoint], &[runner::FailedRun]),
+    critical: Option<&runner::CriticalSpeed>,
     whole: bool,
 ) -> Result<()> {
     write_atomically(path, csv)?;
@@ -178,7 +179,7 @@ fn write_files(
         let plots = study::sweep_figures::sweep_plots(points, &stem, Some(scenario), critical);
         crate::files::write_figures(&plots, path.parent().unwrap_or(std::path::Path::new(".")))?;
     }
-    let columns: Vec<_> = study::sweep::csv_columns(scenario.vehicle.is_some())
+    let columns: Vec<_> = runner::csv_columns(scenario.vehicle.is_some())
         .map(|(name, unit, meaning)| json!({ "name": name, "unit": unit, "meaning": meaning }))
         .collect();
     let metadata = json!({

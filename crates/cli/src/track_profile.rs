@@ -42,14 +42,15 @@ fn parse_band(text: &str) -> Result<(f64, f64)> {
     match numbers.as_deref() {
         Some(&[short, long]) => Ok((short, long)),
         _ => {
-            Err(study::error::invalid("--band", text, "expected SHORTEST:LONGEST wavelengths in m, e.g. 0.5:80").into())
+            Err(scenario::error::invalid("--band", text, "expected SHORTEST:LONGEST wavelengths in m, e.g. 0.5:80")
+                .into())
         }
     }
 }
 
 /// Execute `frictrack track-profile`.
 pub fn run(args: &TrackProfileArgs) -> Result<()> {
-    let spectrum = Spectrum::from_name(&args.spectrum).map_err(study::StudyError::from)?;
+    let spectrum = Spectrum::from_name(&args.spectrum).map_err(scenario::StudyError::from)?;
     let mut settings = RandomSettings::new(spectrum, args.length, args.seed);
     if let Some(band) = &args.band {
         settings.band = parse_band(band)?;

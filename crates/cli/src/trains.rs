@@ -34,11 +34,11 @@ struct AxleListing {
 pub fn run(args: &TrainsArgs) -> Result<()> {
     let single_force = fem_beam::reference::uic60_on_soft_soil().load;
     let Some(name) = &args.name else {
-        let trains: Vec<study::trains::TrainSummary> = Train::catalogue()
+        let trains: Vec<scenario::trains::TrainSummary> = Train::catalogue()
             .iter()
-            .map(|n| Train::named(n, single_force).map(|t| study::trains::TrainSummary::of(&t)))
+            .map(|n| Train::named(n, single_force).map(|t| scenario::trains::TrainSummary::of(&t)))
             .collect::<Result<_, _>>()
-            .map_err(study::StudyError::from)?;
+            .map_err(scenario::StudyError::from)?;
         match args.format {
             Format::Json => println!("{}", serde_json::to_string_pretty(&trains)?),
             Format::Text => {
@@ -51,8 +51,8 @@ pub fn run(args: &TrainsArgs) -> Result<()> {
         }
         return Ok(());
     };
-    let train = study::trains::named_or_file(name, single_force, "train")?;
-    train.validate().map_err(study::StudyError::from)?;
+    let train = scenario::trains::named_or_file(name, single_force, "train")?;
+    train.validate().map_err(scenario::StudyError::from)?;
     let listing = TrainListing {
         name: train.name.clone(),
         axles: train.axles.iter().map(|a| AxleListing { offset: a.offset, force: a.force }).collect(),

@@ -1,7 +1,7 @@
 //! How the text report names the extremes window of a run: words, not numbers (the numbers are in
 //! [`study::run_summary::RunSummary`]).
 
-use study::{Case, Scenario};
+use scenario::{Case, Scenario};
 
 /// What the text report says of the extremes window, true for the run: whose position it is (the load, a train's
 /// first axle, the vehicles' first wheel), why it is there (the default middle third, or given), and what lies around it.

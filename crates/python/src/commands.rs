@@ -7,11 +7,11 @@ use crate::errors::to_python;
 use crate::interruptible;
 use crate::scenario_input::{Source, overrides};
 use pyo3::prelude::*;
-use study::error::{StudyError, invalid};
+use runner::Runner;
+use scenario::error::{StudyError, invalid};
 use study::presets::{Preset, Resolution, run_preset};
 use study::stationary_output::{ErrorEstimate, StationaryStudy, wave_csv};
 use study::steady_response::SteadyResponse;
-use study::sweep::Runner;
 
 fn json<T: serde::Serialize>(value: &T) -> PyResult<String> {
     serde_json::to_string_pretty(value).map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(e.to_string()))
@@ -28,10 +28,10 @@ pub(crate) fn analytic(
     damping_ratio: Option<f64>,
     train: Option<String>,
 ) -> PyResult<(String, Vec<String>)> {
-    study::speeds::check_count("speeds", speeds.len()).map_err(to_python)?;
+    scenario::speeds::check_count("speeds", speeds.len()).map_err(to_python)?;
     let scenario = Source::of(kind, text)?.read()?;
     let train = train
-        .map(|name| study::trains::named_or_file(&name, scenario.load.force, "train"))
+        .map(|name| scenario::trains::named_or_file(&name, scenario.load.force, "train"))
         .transpose()
         .map_err(to_python)?;
     let response = SteadyResponse::of(&scenario, damping_ratio, train, &speeds).map_err(to_python)?;
@@ -52,14 +52,14 @@ pub(crate) fn stationary_wave(
     keywords: Vec<(String, Bound<'_, PyAny>)>,
     progress: Option<Bound<'_, PyAny>>,
 ) -> PyResult<StationaryTexts> {
-    study::speeds::check_count("speeds", speeds.len()).map_err(to_python)?;
+    scenario::speeds::check_count("speeds", speeds.len()).map_err(to_python)?;
     let scenario = overrides(&keywords)?.apply(Source::of(kind, text)?.read()?);
     let (behind, ahead, element_length) = domain;
     let domain = stationary::Domain { behind, ahead, element_length };
     let total = speeds.len() as f64;
     let solve = move |stop: &_, told: &interruptible::Progress| {
-        let first = study::stationary_output::problem(&scenario, speeds.first().copied().unwrap_or(0.0), domain)?;
-        told.announce("frictrack.stationary", &study::cost::Estimate::stationary(&first, &speeds, true));
+        let first = scenario.stationary_problem(speeds.first().copied().unwrap_or(0.0), domain)?;
+        told.announce("frictrack.stationary", &runner::cost::Estimate::stationary(&first, &speeds, true));
         let done = |n: usize| told.set(n as f64 / total);
         StationaryStudy::of_until(&scenario, &speeds, domain, ErrorEstimate::Halving, Some(stop), &done)
     };
@@ -101,7 +101,7 @@ pub(crate) fn preset(
     let runner = Runner::new(jobs).map_err(to_python)?;
     let what = format!("frictrack.study({name:?})");
     let work = move |stop: &_, told: &interruptible::Progress| {
-        let announce = |estimate: &study::cost::Estimate| told.announce(&what, estimate);
+        let announce = |estimate: &runner::cost::Estimate| told.announce(&what, estimate);
         run_preset(preset, resolution, &base, &runner.with_stop(stop).with_estimate(&announce))
     };
     let data = interruptible::run_reporting(py, None, work)?.map_err(to_python)?;
@@ -113,9 +113,10 @@ pub(crate) fn preset(
 /// (offset m behind the first, force N).
 #[pyfunction]
 pub(crate) fn train(name: &str) -> PyResult<(String, Vec<(f64, f64)>)> {
-    let train = study::trains::named_or_file(name, study::Scenario::default().load.force, "name").map_err(to_python)?;
+    let train =
+        scenario::trains::named_or_file(name, scenario::Scenario::default().load.force, "name").map_err(to_python)?;
     let axles = train.axles.iter().map(|a| (a.offset, a.force)).collect();
-    Ok((json(&study::trains::TrainSummary::of(&train))?, axles))
+    Ok((json(&scenario::trains::TrainSummary::of(&train))?, axles))
 }
 
 /// `frictrack track-profile`: a random rail of `spectrum` over `band` (m, shortest and longest wavelength; None: the

@@ -5,7 +5,7 @@
 use pyo3::create_exception;
 use pyo3::exceptions::{PyKeyboardInterrupt, PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
-use study::error::StudyError;
+use scenario::error::StudyError;
 
 create_exception!(
     frictrack,

@@ -31,8 +31,8 @@ impl Progress {
     }
 
     /// Announce `estimate` of `what` ("frictrack.sweep", …) on Python's standard error when it is long
-    /// ([`study::cost::Estimate::is_long`]), as the command line does on its own.
-    pub(crate) fn announce(&self, what: &str, estimate: &study::cost::Estimate) {
+    /// ([`runner::cost::Estimate::is_long`]), as the command line does on its own.
+    pub(crate) fn announce(&self, what: &str, estimate: &runner::cost::Estimate) {
         if estimate.is_long() {
             let line = format!("{what}: {}; KeyboardInterrupt (Ctrl-C) stops it\n", estimate.describe());
             self.notes.lock().unwrap_or_else(PoisonError::into_inner).push(line);

@@ -1,7 +1,7 @@
 //! # frictrack from Python (`frictrack._native`)
 //!
 //! A thin layer over the study library (docs/architecture.md): every function here reads a scenario with the
-//! library's parser, applies overrides by the command line's names ([`study::overrides::Overrides`]), runs the
+//! library's parser, applies overrides by the command line's names ([`scenario::overrides::Overrides`]), runs the
 //! library and returns what the command line prints or writes — the run summary as the JSON of `frictrack run
 //! --format json`, the tables as the CSV text of `histories.csv`, `snapshots.csv` and `wheels.csv`. The package's
 //! Python side (`python/frictrack`) turns these into dicts and NumPy structured arrays; neither side holds

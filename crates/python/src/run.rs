@@ -6,7 +6,7 @@ use crate::errors::to_python;
 use crate::interruptible;
 use crate::scenario_input::{Source, overrides};
 use pyo3::prelude::*;
-use study::overrides::Overrides;
+use scenario::overrides::Overrides;
 use study::run_output::{histories_csv, recording, run_with_snapshots, snapshot_requests, snapshots_csv};
 use study::run_summary::RunSummary;
 
@@ -30,19 +30,19 @@ pub(crate) fn run(
     let scenario = recording(overrides.apply(scenario));
     let case = scenario.build().map_err(to_python)?;
     let mut warnings: Vec<String> =
-        study::diagnostics::warnings(&scenario, &case).iter().map(ToString::to_string).collect();
+        scenario::diagnostics::warnings(&scenario, &case).iter().map(ToString::to_string).collect();
     let started = std::time::Instant::now();
     let outcome = interruptible::run_reporting(py, progress, move |stop, told| {
-        told.announce("frictrack.run", &study::cost::Estimate::run(study::cost::RunCost::of(&case)));
+        told.announce("frictrack.run", &runner::cost::Estimate::run(runner::cost::RunCost::of(&case)));
         let requests = snapshot_requests(&scenario, &case);
         let (result, snapshots) = run_with_snapshots(&case, &requests, Some(stop), &|f| told.set(f))?;
         let summary = RunSummary::of(&scenario, &case, &result, started.elapsed().as_secs_f64())?;
         let after: Vec<String> =
-            study::plausibility::result_warnings(&case, &summary).iter().map(ToString::to_string).collect();
+            study::result_warnings::result_warnings(&case, &summary).iter().map(ToString::to_string).collect();
         let json = serde_json::to_string_pretty(&summary)
-            .map_err(|e| study::error::StudyError::Io { path: "summary".into(), message: e.to_string() })?;
+            .map_err(|e| scenario::error::StudyError::Io { path: "summary".into(), message: e.to_string() })?;
         let wheels = result.vehicles.as_ref().map(study::vehicle_output::wheels_csv);
-        Ok::<_, study::error::StudyError>((json, histories_csv(&result), snapshots_csv(&snapshots), wheels, after))
+        Ok::<_, scenario::error::StudyError>((json, histories_csv(&result), snapshots_csv(&snapshots), wheels, after))
     })?;
     let (json, histories, snapshots, wheels, after) = outcome.map_err(to_python)?;
     warnings.extend(after);

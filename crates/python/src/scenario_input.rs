@@ -4,8 +4,8 @@
 use crate::errors::to_python;
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
-use study::Scenario;
-use study::overrides::{OverrideValue, Overrides};
+use scenario::Scenario;
+use scenario::overrides::{OverrideValue, Overrides};
 
 /// Where the scenario comes from.
 #[derive(Debug, Clone, PartialEq)]
@@ -58,7 +58,7 @@ pub(crate) fn overrides(keywords: &[(String, Bound<'_, PyAny>)]) -> PyResult<Ove
 /// and would pass for a count).
 fn value_of(name: &str, value: &Bound<'_, PyAny>) -> PyResult<OverrideValue> {
     let refuse =
-        |what: &str| to_python(study::error::invalid(name, what, "must be a number, text, or two numbers [A, B]"));
+        |what: &str| to_python(scenario::error::invalid(name, what, "must be a number, text, or two numbers [A, B]"));
     if value.is_instance_of::<pyo3::types::PyBool>() {
         return Err(refuse("a boolean"));
     }

@@ -5,7 +5,7 @@ use crate::errors::to_python;
 use crate::interruptible;
 use crate::scenario_input::{Source, overrides};
 use pyo3::prelude::*;
-use study::sweep::{Runner, failures, write_csv_rows};
+use runner::{Runner, failures, write_csv_rows};
 
 /// The sweep's CSV (`frictrack sweep`'s), the failed runs as (speed m/s, error) pairs, and the warnings the command
 /// line prints for the swept speeds.
@@ -25,18 +25,18 @@ pub(crate) fn sweep(
     progress: Option<Bound<'_, PyAny>>,
 ) -> PyResult<SweepTexts> {
     let scenario = overrides(&keywords)?.apply(Source::of(kind, text)?.read()?);
-    study::speeds::check_count("speeds", speeds.len()).map_err(to_python)?;
+    scenario::speeds::check_count("speeds", speeds.len()).map_err(to_python)?;
     if speeds.is_empty() {
-        return Err(to_python(study::error::invalid("speeds", "[]", "give at least one speed (m/s)")));
+        return Err(to_python(scenario::error::invalid("speeds", "[]", "give at least one speed (m/s)")));
     }
     let case = scenario.build().map_err(to_python)?;
-    let warnings = study::diagnostics::sweep_warnings(&scenario, &speeds).map_err(to_python)?;
+    let warnings = scenario::diagnostics::sweep_warnings(&scenario, &speeds).map_err(to_python)?;
     let warnings = warnings.iter().map(ToString::to_string).collect();
     let runner = Runner::new(jobs).map_err(to_python)?;
     let total = speeds.len() as f64;
     let rows = interruptible::run_reporting(py, progress, move |stop, told| {
         let done = |runs: usize| told.set(runs as f64 / total);
-        let announce = |estimate: &study::cost::Estimate| told.announce("frictrack.sweep", estimate);
+        let announce = |estimate: &runner::cost::Estimate| told.announce("frictrack.sweep", estimate);
         runner.with_stop(stop).with_progress(&done).with_estimate(&announce).speed_sweep_keeping(&case, &speeds)
     })?
     .map_err(to_python)?;
@@ -49,5 +49,5 @@ pub(crate) fn sweep(
 /// The sweep CSV's columns with their units: every sweep's, then those of a sweep with vehicles.
 #[pyfunction]
 pub(crate) fn sweep_columns() -> Vec<(&'static str, &'static str)> {
-    study::sweep::CSV_COLUMNS.iter().chain(&study::sweep::VEHICLE_CSV_COLUMNS).map(|(n, u, _)| (*n, *u)).collect()
+    runner::CSV_COLUMNS.iter().chain(&runner::VEHICLE_CSV_COLUMNS).map(|(n, u, _)| (*n, *u)).collect()
 }

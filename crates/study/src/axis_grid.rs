@@ -133,7 +133,7 @@ pub fn log_tick(exponent: f64, plain: bool) -> String {
     let value = 10f64.powf(exponent);
     if plain {
         // Three significant digits, the float noise of 10^log10(0.05) rounded away.
-        return crate::number::significant(value, 3);
+        return scenario::number::significant(value, 3);
     }
     // The mantissa to one decimal, written shortest ("2", "3.2"); one that rounds up to 10 moves to the next power.
     let power = exponent.floor() as i32;

@@ -3,11 +3,11 @@
 //! summarised. Deflections (m, from the settled rail, magnitudes for peaks), positions s = x − x_load (m), energies
 //! (J).
 
-use crate::error::{Result, invalid};
 use crate::plot::{PlotSpec, Series, Stroke};
-use crate::scenario::{CoMovingSection, Scenario};
 use fem_beam::reference::InfiniteBeam;
 use fem_beam::{AbsorbingZones, BeamModel, Foundation, Mesh, Support, Supports};
+use scenario::error::{Result, invalid};
+use scenario::{CoMovingSection, Scenario};
 use serde::Serialize;
 use track::co_moving::{CoMovingResult, CoMovingSettings, run_co_moving};
 

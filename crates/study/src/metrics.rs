@@ -1,10 +1,10 @@
 //! Metrics of docs/theory.md §6 beyond what a run reports: the static mid-span references and the dynamic amplification
 //! factors φ_w(τ) = w(τ)/w_sta and φ_M(τ) = M(τ)/M_sta at mid-span, τ = x_c/L the load's relative position.
 
-use crate::error::Result;
-use crate::scenario::Case;
 use fem_beam::LoadVector;
 use fem_beam::section::Motion;
+use scenario::Case;
+use scenario::error::Result;
 use serde::{Deserialize, Serialize};
 use track::simulation::SectionHistory;
 

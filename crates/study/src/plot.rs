@@ -9,9 +9,9 @@
 //! to the right; tick labels rounded to the axis' own resolution (no `-0.000000000000000111022`).
 
 use crate::axis_grid::{self, GridAxis};
-use crate::error::{Result, StudyError};
 use plotters::coord::Shift;
 use plotters::prelude::*;
+use scenario::error::{Result, StudyError};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 use std::sync::Once;
@@ -249,7 +249,7 @@ pub fn render(spec: &PlotSpec, folder: &Path) -> Result<(PathBuf, PathBuf, Layou
     // Only regular files are replaced: a link, device or FIFO in the output folder is refused, never written through.
     for path in [&png, &svg] {
         if std::fs::symlink_metadata(path).is_ok_and(|meta| !meta.is_file()) {
-            return Err(crate::error::invalid("figure", path.display(), "exists and is not a regular file"));
+            return Err(scenario::error::invalid("figure", path.display(), "exists and is not a regular file"));
         }
     }
     let layout = {

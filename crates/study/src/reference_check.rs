@@ -2,10 +2,10 @@
 //! frequencies, each beside its closed form (docs/theory.md §2, §8): the deflection and moment of the infinite beam
 //! under a static load, v_cr, and the pinned beam's ω_n.
 
-use crate::error::{Result, invalid};
-use crate::scenario::Scenario;
 use fem_beam::LoadVector;
 use fem_beam::section::Motion;
+use scenario::Scenario;
+use scenario::error::{Result, invalid};
 use serde::Serialize;
 
 /// One natural frequency beside its closed form.

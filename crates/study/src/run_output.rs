@@ -10,11 +10,11 @@
 //! Deflection is positive upward, the moment sagging-positive; every number in shortest round-trip form.
 
 use crate::columns::{Column, header};
-use crate::error::Result;
 use crate::figures::{Curves, quantity_figure};
-use crate::number::row;
 use crate::plot::{Mark, PlotSpec};
-use crate::scenario::{Case, Scenario};
+use scenario::error::Result;
+use scenario::number::row;
+use scenario::{Case, Scenario};
 use std::fmt::Write as _;
 use std::sync::atomic::AtomicBool;
 use track::{RunResult, Snapshot, SnapshotAt, SnapshotTaker};
@@ -63,7 +63,7 @@ pub fn snapshot_requests(scenario: &Scenario, case: &Case) -> Vec<SnapshotAt> {
 }
 
 /// One run with histories (the case's recorded sections) and the requested snapshots, reporting the finished
-/// fraction of steps to `progress` every 1 % and abandoned with [`crate::StudyError::Interrupted`] at the first step after
+/// fraction of steps to `progress` every 1 % and abandoned with [`scenario::StudyError::Interrupted`] at the first step after
 /// `stop` is raised.
 pub fn run_with_snapshots(
     case: &Case,
@@ -74,14 +74,14 @@ pub fn run_with_snapshots(
     let settings = &case.settings;
     let mut taker = SnapshotTaker::new(&case.model, &case.interactions, settings, requests).map_err(|e| match e {
         track::TrackError::InvalidField { value, allowed, .. } => {
-            crate::error::invalid("output.snapshot_times / snapshot_load_positions", value, allowed)
+            scenario::error::invalid("output.snapshot_times / snapshot_load_positions", value, allowed)
         }
         other => other.into(),
     })?;
     let total = settings.step_count(case.model.mesh().length).max(1.0);
     // Every 0.1 % of the run: often enough for a run of hours, one call in a thousand steps.
     let every = ((total / 1000.0).ceil() as usize).max(1);
-    let result = crate::sweep::simulate_observed(case, settings, stop, &mut |view| {
+    let result = runner::simulate_observed(case, settings, stop, &mut |view| {
         if view.step % every == 0 {
             progress(view.step as f64 / total);
         }

@@ -3,8 +3,8 @@
 //! None (null), not a placeholder 0 at x = 0, t = 0. Deflections (m) are magnitudes, positions (m), times (s),
 //! energies (J), forces (N), accelerations (m/s²).
 
-use crate::error::Result;
-use crate::scenario::{Case, Scenario};
+use scenario::error::Result;
+use scenario::{Case, Scenario};
 use serde::Serialize;
 use track::RunResult;
 use track::SectionKind;
@@ -34,7 +34,7 @@ pub struct RunSummary {
     pub load: f64,
     /// The train of axles that crossed (as forces, or carrying the vehicles).
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub train: Option<crate::trains::TrainSummary>,
+    pub train: Option<scenario::trains::TrainSummary>,
     /// With a train: what the beam carries of its axles (`[load] carries`), by which the train's forces were scaled.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub axle_share: Option<AxleShareSummary>,
@@ -195,12 +195,12 @@ impl RunSummary {
             title: scenario.title.clone(),
             speed: settings.moving.speed,
             load: scenario.load.force,
-            train: settings.moving.load.axles().map(crate::trains::TrainSummary::of),
+            train: settings.moving.load.axles().map(scenario::trains::TrainSummary::of),
             axle_share: settings.moving.load.axles().filter(|t| t.name != "single").map(|_| {
                 let share = scenario.axle_share();
                 AxleShareSummary { carries: share.name(), factor: share.factor(), meaning: share.describe() }
             }),
-            critical_speed: crate::speeds::SpeedScale::of(scenario)?.critical_speed,
+            critical_speed: scenario::speeds::SpeedScale::of(scenario)?.critical_speed,
             damping_ratio: case.model.foundation().damping_ratio(case.model.beam()),
             devices: device_positions.len(),
             device_force: scenario.friction.devices.as_ref().and_then(|d| d.force).unwrap_or(0.0),

@@ -6,14 +6,12 @@
 
 pub use crate::stationary_csv::{POINT_COLUMNS, WAVE_COLUMNS, points_csv, wave_csv};
 
-use crate::error::{Result, invalid};
 use crate::plot::{PlotSpec, Series, Stroke};
-use crate::scenario::{QuadratureKind, Scenario};
+use scenario::Scenario;
+use scenario::error::Result;
 use serde::Serialize;
 use stationary::refine::ERROR_FACTOR;
-use stationary::{
-    BallastFriction, ContactGuess, Convergence, Domain, StationaryError, StationaryProblem, StationaryWave,
-};
+use stationary::{ContactGuess, Convergence, Domain, StationaryError, StationaryProblem, StationaryWave};
 
 /// One lift-off zone of a wave.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -146,47 +144,6 @@ pub struct StationaryStudy {
     pub waves: Vec<Option<StationaryWave>>,
 }
 
-/// The stationary problem of `scenario` at `speed` (m/s) on `domain`: its beam, its soil (stiffness, damping and
-/// law; absorbing zones do not apply on an infinite track), its single load, its self-weight.
-pub fn problem(scenario: &Scenario, speed: f64, domain: Domain) -> Result<StationaryProblem> {
-    if scenario.friction.devices.is_some() {
-        return Err(invalid(
-            "friction.devices",
-            "given",
-            "the stationary solver takes friction distributed along the track (`[friction.distributed]`), not \
-             devices at fixed places of a finite track: run devices across the finite track",
-        ));
-    }
-    let friction = match &scenario.friction.distributed {
-        None => BallastFriction::default(),
-        Some(d) if d.quadrature != QuadratureKind::Trapezoid => {
-            return Err(invalid(
-                "friction.distributed.quadrature",
-                "simpson",
-                "the stationary solver takes the trapezoid sections (the default) of a time-domain run",
-            ));
-        }
-        Some(d) => BallastFriction { force_per_length: d.force_per_length, subdivisions: d.subdivisions },
-    };
-    if scenario.load.train.is_some() || !scenario.load.axles.is_empty() || !scenario.load.patches.is_empty() {
-        return Err(invalid("load.train", "given", "the stationary solver takes the single load `load.force`"));
-    }
-    if scenario.vehicle.is_some() {
-        return Err(invalid("vehicle", "given", "the stationary solver takes the moving force, not vehicles"));
-    }
-    let model = scenario.model()?;
-    Ok(StationaryProblem {
-        beam: *model.beam(),
-        // The soil's own damping: the absorbing zones of a finite track have no place on an infinite one.
-        foundation: *model.foundation(),
-        load: scenario.load.force,
-        speed,
-        self_weight: scenario.foundation.self_weight,
-        friction,
-        domain,
-    })
-}
-
 impl StationaryStudy {
     /// Solve `speeds` (m/s, in the order given: each starts from the last one's contact set and wave, on the domain
     /// the last one grew to) on `domain`.
@@ -194,7 +151,7 @@ impl StationaryStudy {
         Self::of_until(scenario, speeds, domain, estimate, None, &|_| {})
     }
 
-    /// As [`Self::of`], stopping with [`StudyError::Interrupted`](crate::StudyError::Interrupted) before the next
+    /// As [`Self::of`], stopping with [`StudyError::Interrupted`](scenario::StudyError::Interrupted) before the next
     /// speed (and before each error estimate) once `stop` is raised — a speed takes 1–75 ms (up to ~1 s where the
     /// domain grows with friction), so Ctrl-C is answered within about that — and telling `progress` the number of
     /// speeds done after each.
@@ -207,7 +164,7 @@ impl StationaryStudy {
         progress: &dyn Fn(usize),
     ) -> Result<Self> {
         let stopped = || stop.is_some_and(|s| s.load(std::sync::atomic::Ordering::Relaxed));
-        let first = problem(scenario, speeds.first().copied().unwrap_or(0.0), domain)?;
+        let first = scenario.stationary_problem(speeds.first().copied().unwrap_or(0.0), domain)?;
         let law = first.foundation.law.name();
         let mut guess = ContactGuess::default();
         let (mut points, mut waves) = (Vec::with_capacity(speeds.len()), Vec::with_capacity(speeds.len()));
@@ -215,7 +172,7 @@ impl StationaryStudy {
         let mut domain = domain;
         for &speed in speeds {
             if stopped() {
-                return Err(crate::StudyError::Interrupted);
+                return Err(scenario::StudyError::Interrupted);
             }
             let problem = StationaryProblem { speed, domain, ..first };
             match stationary::solve_from(&problem, &mut guess) {

@@ -2,10 +2,10 @@
 //! loads (docs/theory.md §8, §10): at each speed the largest downward and upward deflections and where they sit in
 //! the moving frame, and their amplification over the static response of the same loads.
 
-use crate::error::{Result, invalid};
-use crate::scenario::Scenario;
 use fem_beam::reference::{InfiniteBeam, SteadyExtremes};
 use fem_beam::{Foundation, Train};
+use scenario::Scenario;
+use scenario::error::{Result, invalid};
 use serde::Serialize;
 
 /// The steady state at one speed.
@@ -65,7 +65,7 @@ impl SteadyResponse {
         }
         let train = match train {
             Some(t) => Some(t),
-            None => crate::trains::resolve(&scenario.load)?,
+            None => scenario::trains::resolve(&scenario.load)?,
         }
         .map(|t| scenario.on_the_beam(t));
         if let Some(t) = train.as_ref().filter(|t| !t.patches.is_empty()) {

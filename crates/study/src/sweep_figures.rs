@@ -3,12 +3,12 @@
 //! acceleration, the dissipated energy when there is friction or damping, and with vehicles the wheel forces and
 //! the bodies' accelerations.
 
-use crate::error::Result;
 use crate::figures::{DeflectionCurve, deflection_figure, quantity_figure};
 use crate::plot::PlotSpec;
-use crate::scenario::Scenario;
-use crate::sweep::{CSV_COLUMNS, CriticalSpeed, SweepPoint, VEHICLE_CSV_COLUMNS, VehicleColumns};
 use crate::tables::Table;
+use runner::{CSV_COLUMNS, CriticalSpeed, SweepPoint, VEHICLE_CSV_COLUMNS, VehicleColumns};
+use scenario::Scenario;
+use scenario::error::Result;
 
 /// The figures' names after the sweep's stem: `{stem}-{suffix}` (each only when it has something to draw).
 pub const FIGURE_SUFFIXES: [&str; 5] = ["deflection", "acceleration", "energy", "wheel-forces", "body-acceleration"];
@@ -22,7 +22,7 @@ pub fn case_line(s: &Scenario) -> String {
     let load = match &s.load.train {
         Some(train) => format!("train {train}"),
         None if s.vehicle.is_some() => "vehicles".to_string(),
-        None => format!("F = {} kN", crate::number::significant(s.load.force / 1e3, 4)),
+        None => format!("F = {} kN", scenario::number::significant(s.load.force / 1e3, 4)),
     };
     let f = &s.foundation;
     let soil = match (f.stiffness > 0.0, f.damping, f.damping_ratio) {
@@ -194,7 +194,7 @@ pub fn read_sweep_csv(text: &str, source: &str) -> Result<Vec<SweepPoint>> {
 #[cfg(test)]
 mod tests {
     use super::read_sweep_csv;
-    use crate::sweep::{SweepPoint, write_csv};
+    use runner::{SweepPoint, write_csv};
 
     /// What `write_csv` writes, `read_sweep_csv` reads back to the bit.
     #[test]

@@ -2,7 +2,7 @@
 //! again (`frictrack plot`): a header line of column names, `#` lines skipped (comments, a shard's first line, a
 //! sweep's `# failed_run` lines), empty fields read as missing (NaN).
 
-use crate::error::{Result, invalid};
+use scenario::error::{Result, invalid};
 
 /// A table of numbers with named columns.
 #[derive(Debug, Clone, PartialEq)]

@@ -1,11 +1,11 @@
 //! A sample of a random rail profile with its periodogram against the target spectrum (docs/theory.md §11): the
 //! data, a summary and two figures for `frictrack track-profile`, which writes them.
 
-use crate::error::{Result, invalid};
-use crate::number::row;
 use crate::plot::{PlotSpec, Series, Stroke};
 use irregularity::periodogram::{log_bins, periodogram};
 use irregularity::{Profile, RandomProfile, RandomSettings};
+use scenario::error::{Result, invalid};
+use scenario::number::row;
 use serde_json::{Value, json};
 use std::fmt::Write as _;
 

@@ -8,8 +8,8 @@
 
 use crate::figures::{Curves, quantity_figure};
 use crate::mesh_ripple::element_ripple;
-use crate::number::row;
 use crate::plot::PlotSpec;
+use scenario::number::row;
 use serde::Serialize;
 use std::fmt::Write as _;
 use track::simulation::VehicleResults;
@@ -181,7 +181,7 @@ impl VehicleReport {
             })
             .collect();
         // The aggregates once, as the sweeps' columns.
-        let columns = crate::sweep::VehicleColumns::of(results);
+        let columns = runner::VehicleColumns::of(results);
         Self {
             contact: contact.to_string(),
             min_wheel_force: columns.min_wheel_force,

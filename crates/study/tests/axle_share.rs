@@ -1,8 +1,8 @@
 //! What the beam carries of a train's axles (`[load] carries`): one rail's half on a foundation, whole axles on a
 //! span, as given otherwise; the single load is the beam's own.
 
-use study::Scenario;
-use study::scenario::AxleShare;
+use scenario::AxleShare;
+use scenario::Scenario;
 
 fn scenario(toml: &str) -> Scenario {
     Scenario::from_toml(toml, "test.toml").unwrap()

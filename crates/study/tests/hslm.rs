@@ -1,9 +1,9 @@
 //! The HSLM study on a railway bridge (docs/theory.md §10): the 20 m concrete deck of `examples/hslm-bridge.toml`
 //! crossed by HSLM-A1 … A10 at 140–420 km/h, without friction and with the fallback devices.
 
-use study::Scenario;
+use runner::Runner;
+use scenario::Scenario;
 use study::presets::{Preset, Resolution, run_preset};
-use study::sweep::Runner;
 
 fn bridge() -> Scenario {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/hslm-bridge.toml");

@@ -1,8 +1,8 @@
 //! Scenarios and studies.
 
-use study::StudyError;
-use study::scenario::{Scenario, TEMPLATE};
-use study::sweep::{Runner, critical_speed, optimal_device_force, write_csv};
+use runner::{Runner, critical_speed, optimal_device_force, write_csv};
+use scenario::StudyError;
+use scenario::{Scenario, TEMPLATE};
 
 fn path_of(err: StudyError) -> String {
     match err {
@@ -164,7 +164,7 @@ fn example_scenarios_are_valid() {
     assert_eq!(count, 18, "one example per study and per feature");
 }
 
-fn small_case() -> study::Case {
+fn small_case() -> scenario::Case {
     Scenario::from_toml("[mesh]\nlength = 60.0\nelements = 60\n[friction.devices]\ncount = 7\nforce = 20e3", "s")
         .unwrap()
         .build()
@@ -189,8 +189,8 @@ fn journal_resumes_a_stopped_sweep_exactly() {
 
     let path = temporary("journal").join("sweep.journal");
     // A journal left without a finished run (a command refused before its first run) does not block the next one.
-    drop(study::Journal::open(&path, false).unwrap());
-    let journal = study::Journal::open(&path, false).unwrap();
+    drop(runner::Journal::open(&path, false).unwrap());
+    let journal = runner::Journal::open(&path, false).unwrap();
     let stop = AtomicBool::new(false);
     let done = AtomicUsize::new(0);
     let progress = |n: usize| {
@@ -200,7 +200,7 @@ fn journal_resumes_a_stopped_sweep_exactly() {
         }
     };
     let runner = Runner::new(1).unwrap().with_progress(&progress).with_journal(Some(&journal)).with_stop(&stop);
-    assert_eq!(runner.speed_sweep(&case, &speeds), Err(study::StudyError::Interrupted));
+    assert_eq!(runner.speed_sweep(&case, &speeds), Err(scenario::StudyError::Interrupted));
     drop(journal);
     // Simulate a kill while a line was being written.
     let mut bytes = std::fs::read(&path).unwrap();
@@ -208,8 +208,8 @@ fn journal_resumes_a_stopped_sweep_exactly() {
     bytes.extend_from_slice(b"{\"key\":\"cut sh");
     std::fs::write(&path, &bytes).unwrap();
 
-    assert!(study::Journal::open(&path, false).is_err(), "an existing journal needs --resume");
-    let journal = study::Journal::open(&path, true).unwrap();
+    assert!(runner::Journal::open(&path, false).is_err(), "an existing journal needs --resume");
+    let journal = runner::Journal::open(&path, true).unwrap();
     assert_eq!(journal.resumed(), 3);
     let resumed = Runner::new(2).unwrap().with_journal(Some(&journal)).speed_sweep(&case, &speeds).unwrap();
     assert_eq!(resumed, whole, "bit-identical points after resume");
@@ -228,7 +228,7 @@ fn journal_keys_hold_the_case_fingerprint() {
             .unwrap();
     assert_ne!(other.fingerprint(), Scenario::default().fingerprint());
     let path = temporary("fingerprint").join("j");
-    let journal = study::Journal::open(&path, false).unwrap();
+    let journal = runner::Journal::open(&path, false).unwrap();
     let runner = Runner::new(1).unwrap().with_journal(Some(&journal));
     let a = runner.point(&case, 150.0).unwrap();
     let b = runner.point(&other.build().unwrap(), 150.0).unwrap();
@@ -237,7 +237,7 @@ fn journal_keys_hold_the_case_fingerprint() {
     other.title = "renamed".into();
     other.load.speed = 17.0;
     other.output.sections = vec![3.0];
-    other.sweep = Some(study::scenario::SweepSection { step: 1.0, ..Default::default() });
+    other.sweep = Some(scenario::SweepSection { step: 1.0, ..Default::default() });
     assert_eq!(other.fingerprint(), other.build().unwrap().fingerprint);
     let mut same = other.clone();
     same.title.clear();
@@ -266,7 +266,7 @@ fn stiff_soil_discrete_speed_study_finds_interior_critical_speeds() {
     for curve in curves {
         assert_eq!(curve["critical_speed_location"], "interior", "{curve}");
     }
-    let v_cr = study::speeds::SpeedScale::of(&stiff).unwrap().critical_speed.unwrap();
+    let v_cr = scenario::speeds::SpeedScale::of(&stiff).unwrap().critical_speed.unwrap();
     let free = curves[0]["critical_speed"].as_f64().unwrap();
     assert!((free - v_cr).abs() < 0.1 * v_cr, "friction-free critical speed {free} vs v_cr {v_cr}");
 }
@@ -280,11 +280,11 @@ fn a_journal_borrows_the_finished_runs_of_another() {
     let speeds = [100.0, 150.0, 200.0];
     let folder = temporary("borrow");
     let (first, second) = (folder.join("first.journal"), folder.join("second.journal"));
-    let journal = study::Journal::open(&first, false).unwrap();
+    let journal = runner::Journal::open(&first, false).unwrap();
     let whole = Runner::new(1).unwrap().with_journal(Some(&journal)).speed_sweep(&case, &speeds).unwrap();
     drop(journal);
     let before = std::fs::read(&first).unwrap();
-    let mut borrowing = study::Journal::open(&second, false).unwrap();
+    let mut borrowing = runner::Journal::open(&second, false).unwrap();
     assert_eq!(borrowing.borrow_from(&first).unwrap(), 3);
     assert_eq!(borrowing.borrow_from(&folder.join("absent.journal")).unwrap(), 0);
     // A stop raised before any run: only runs taken from a journal can finish.

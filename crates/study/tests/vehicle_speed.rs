@@ -1,10 +1,10 @@
 //! The vehicle study (docs/theory.md §12) on the reference track at three speeds: moving force, moving mass and
 //! quarter car of equal weight, without and with friction, on a smooth and an irregular rail.
 
-use study::Scenario;
+use runner::Runner;
+use scenario::Scenario;
+use scenario::SweepSection;
 use study::presets::{Preset, Resolution, run_preset};
-use study::scenario::SweepSection;
-use study::sweep::Runner;
 
 fn number(v: &serde_json::Value) -> f64 {
     v.as_f64().unwrap_or_else(|| panic!("not a number: {v}"))

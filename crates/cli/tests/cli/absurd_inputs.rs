@@ -1,4 +1,4 @@
-//! Inputs outside the model's validity (docs/theory.md §2–§4, `study::plausibility`): refused where no answer can
+//! Inputs outside the model's validity (docs/theory.md §2–§4, `scenario::plausibility`): refused where no answer can
 //! be given (exit 2, the field, the value and the limit named), warned where the model runs but its answer is not
 //! the track's (exit 0, a warning naming the value and the limit) — never a confident answer without a word.
 
@@ -69,7 +69,7 @@ fn announced(args: &[&str], prefix: &str) -> Option<String> {
     line
 }
 
-/// Work of hours says so before it starts (the estimate rule of `study::cost`), instead of printing nothing: a run,
+/// Work of hours says so before it starts (the estimate rule of `runner::cost`), instead of printing nothing: a run,
 /// a stationary sweep of 190 000 speeds with friction, and a study at paper resolution (announced per batch, its
 /// notes first).
 #[test]

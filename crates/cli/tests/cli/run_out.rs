@@ -18,10 +18,9 @@ fn run_out_writes_histories_and_snapshots_that_match_the_library() {
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
 
     // The same run through the library.
-    let mut scenario = study::Scenario::default();
+    let mut scenario = scenario::Scenario::default();
     scenario.load.speed = 150.0;
-    scenario.friction.devices =
-        Some(study::scenario::DevicesSection { count: Some(7), positions: None, force: Some(20e3) });
+    scenario.friction.devices = Some(scenario::DevicesSection { count: Some(7), positions: None, force: Some(20e3) });
     scenario.output.sections = vec![100.0, 25.0];
     let case = scenario.build().unwrap();
     let result = track::Simulation::new(&case.model, &case.interactions, &case.settings).unwrap().run().unwrap();

@@ -2,13 +2,13 @@
 //! f_u ∈ {1, 2} kN/m (docs/theory.md §6–§7).
 
 use super::{StudyData, blank, keep_finished, nothing_finished, with_distributed};
-use crate::error::Result;
 use crate::figures::quantity_figure;
 use crate::metrics::{amplification, static_midspan};
-use crate::number::row;
-use crate::scenario::Scenario;
-use crate::speeds::SpeedScale;
-use crate::sweep::Runner;
+use runner::Runner;
+use scenario::Scenario;
+use scenario::error::Result;
+use scenario::number::row;
+use scenario::speeds::SpeedScale;
 use serde_json::json;
 use std::fmt::Write as _;
 

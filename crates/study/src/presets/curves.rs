@@ -2,12 +2,12 @@
 //! of the three speed studies (devices, equal cost, distributed friction).
 
 use super::{StudyData, StudyFailure, blank, failed_runs, mean_iterations};
-use crate::error::{Result, invalid};
 use crate::figures::{DeflectionCurve, deflection_figure, quantity_figure};
-use crate::number::{row, row_with_gaps};
 use crate::plot::PlotSpec;
-use crate::scenario::Scenario;
-use crate::sweep::{CriticalSpeed, PeakLocation, Runner, SweepPoint, SweepRow, critical_speed, finished};
+use runner::{CriticalSpeed, PeakLocation, Runner, SweepPoint, SweepRow, critical_speed, finished};
+use scenario::Scenario;
+use scenario::error::{Result, invalid};
+use scenario::number::{row, row_with_gaps};
 use serde_json::{Value, json};
 use std::fmt::Write as _;
 

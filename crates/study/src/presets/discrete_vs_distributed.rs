@@ -2,13 +2,13 @@
 //! the friction mobilised (force over capacity) side by side (docs/theory.md §7).
 
 use super::{StudyData, StudyFailure, blank, keep_finished, nothing_finished, with_devices, with_distributed};
-use crate::error::Result;
 use crate::figures::quantity_figure;
-use crate::number::row;
 use crate::plot::PlotSpec;
-use crate::scenario::Scenario;
-use crate::speeds::SpeedScale;
-use crate::sweep::Runner;
+use runner::Runner;
+use scenario::Scenario;
+use scenario::error::Result;
+use scenario::number::row;
+use scenario::speeds::SpeedScale;
 use serde_json::json;
 use std::fmt::Write as _;
 use track::simulation::SectionHistory;

@@ -3,9 +3,9 @@
 
 use super::curves::{Curves, curves_study};
 use super::{Resolution, StudyData, with_distributed};
-use crate::error::Result;
-use crate::scenario::Scenario;
-use crate::sweep::Runner;
+use runner::Runner;
+use scenario::Scenario;
+use scenario::error::Result;
 
 pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) -> Result<StudyData> {
     let scenarios = [0.0, 1e3, 2e3, 5e3, 10e3]

@@ -3,10 +3,10 @@
 
 use super::curves::{Curves, curves_study};
 use super::{Resolution, StudyData, with_devices};
-use crate::error::Result;
 use crate::figures::device_color;
-use crate::scenario::Scenario;
-use crate::sweep::Runner;
+use runner::Runner;
+use scenario::Scenario;
+use scenario::error::Result;
 
 pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) -> Result<StudyData> {
     let mut scenarios = Vec::new();

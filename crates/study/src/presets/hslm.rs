@@ -16,13 +16,13 @@ use super::hslm_figures::interpolate;
 use super::hslm_resonances::{Resonance, natural_frequencies, resonances};
 use super::hslm_verdict::{DeckLimit, larger, near_limit_peaks};
 use super::{Resolution, StudyData, StudyFailure, blank, failed_runs, mean_iterations, nothing_finished, with_devices};
-use crate::diagnostics::{deck_frequency, resolving_advance};
-use crate::error::{Result, StudyError};
-use crate::number::row;
-use crate::scenario::{Case, Scenario, devices_text};
-use crate::sweep::{CriticalSpeed, Metric, RefinedPeak, Runner, SweepPoint, finished, refine_maximum, unrefined};
 use fem_beam::Train;
 use fem_beam::train::HSLM_A;
+use runner::{CriticalSpeed, Metric, RefinedPeak, Runner, SweepPoint, finished, refine_maximum, unrefined};
+use scenario::diagnostics::{deck_frequency, resolving_advance};
+use scenario::error::{Result, StudyError};
+use scenario::number::row;
+use scenario::{Case, Scenario, devices_text};
 use serde_json::{Value, json};
 use std::fmt::Write as _;
 
@@ -147,7 +147,7 @@ pub(super) struct Results {
     /// The curves, friction set-up major, train minor.
     pub(super) curves: Vec<TrainCurve>,
     /// What the beam carries of the HSLM axles (a rail: half; a deck: all).
-    pub(super) axle_share: crate::scenario::AxleShare,
+    pub(super) axle_share: scenario::AxleShare,
     /// The friction set-up, in words.
     pub(super) friction: String,
     /// f₁ … f₃ (Hz), if the model's eigenproblem was solved.

@@ -6,7 +6,7 @@
 
 use super::hslm::{KMH, Results, TrainCurve, coach_length, millimetres};
 use crate::plot::{Mark, Palette, PlotSpec, Series, Stroke};
-use crate::sweep::SweepPoint;
+use runner::SweepPoint;
 
 const SPEED_AXIS: &str = "train speed v (km/h)";
 const DEFLECTION_AXIS: &str = "max downward deflection";
@@ -189,11 +189,11 @@ impl Results {
 }
 
 /// "≥ " / "≤ " before the speed of a bound at the upper / lower end of the range, nothing for an interior peak.
-fn bound_sign(location: crate::sweep::PeakLocation) -> &'static str {
+fn bound_sign(location: runner::PeakLocation) -> &'static str {
     match location {
-        crate::sweep::PeakLocation::Interior => "",
-        crate::sweep::PeakLocation::LowerEnd => "≤ ",
-        crate::sweep::PeakLocation::UpperEnd => "≥ ",
+        runner::PeakLocation::Interior => "",
+        runner::PeakLocation::LowerEnd => "≤ ",
+        runner::PeakLocation::UpperEnd => "≥ ",
     }
 }
 

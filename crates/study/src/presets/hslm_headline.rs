@@ -2,7 +2,7 @@
 //! much friction moves the peak.
 
 use super::hslm::{KMH, Results, TrainCurve, millimetres};
-use crate::sweep::PeakLocation;
+use runner::PeakLocation;
 
 impl Results {
     /// Without friction the critical train, its speed, peak, amplification and the largest acceleration; with

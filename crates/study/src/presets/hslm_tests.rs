@@ -1,7 +1,7 @@
 //! Tests of the HSLM study's set-up: what it changes in the scenario, its friction set-ups, resonance speeds.
 use super::super::hslm_resonances::resonances;
 use super::{friction_setups, millimetres, prepared};
-use crate::scenario::{AbsorbingZonesSection, DevicesSection, DistributedSection, Scenario};
+use scenario::{AbsorbingZonesSection, DevicesSection, DistributedSection, Scenario};
 
 /// On a track the study adds absorbing zones and takes the extremes over the middle third, unless the scenario
 /// sets them; on a span it reduces the load advance to v_min/(20 f_max) and touches nothing else.
@@ -26,7 +26,7 @@ fn what_the_study_changes() {
     // A 20 m rail span: f_max = 30 Hz, so 40 m/s needs Δx ≤ 0.0667 m, below the default 0.1 m.
     let (s, notes) = prepared(&span, &speeds).unwrap();
     let model = span.model().unwrap();
-    let (f_max, _) = crate::diagnostics::deck_frequency(&model).unwrap();
+    let (f_max, _) = scenario::diagnostics::deck_frequency(&model).unwrap();
     assert_eq!(s.integration.load_advance, 40.0 / (20.0 * f_max));
     assert_eq!((s.foundation.absorbing_zones, s.output.extremes_nodes, notes.len()), (None, None, 1));
 }

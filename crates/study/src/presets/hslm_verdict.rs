@@ -3,8 +3,8 @@
 //! has a deck; on a track the beam is the rail and nothing is checked.
 
 use super::hslm::KMH;
-use crate::scenario::DeckTrack;
-use crate::sweep::{PeakLocation, RefinedPeak, SweepPoint};
+use runner::{PeakLocation, RefinedPeak, SweepPoint};
+use scenario::DeckTrack;
 
 /// The limit a span's deck acceleration is checked against.
 #[derive(Debug, Clone, Copy, PartialEq)]

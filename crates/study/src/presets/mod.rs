@@ -24,11 +24,11 @@ mod stationary_wave_figures;
 mod table;
 mod vehicle_speed;
 
-use crate::error::{Result, StudyError, invalid};
 use crate::plot::PlotSpec;
-use crate::scenario::{AbsorbingZonesSection, DevicesSection, DistributedSection, Scenario, SweepSection};
-use crate::speeds::SpeedScale;
-use crate::sweep::{Runner, SweepPoint, SweepRow};
+use runner::{Runner, SweepPoint, SweepRow};
+use scenario::error::{Result, StudyError, invalid};
+use scenario::speeds::SpeedScale;
+use scenario::{AbsorbingZonesSection, DevicesSection, DistributedSection, Scenario, SweepSection};
 use serde::Serialize;
 use serde_json::Value;
 use table::Sampling;
@@ -227,7 +227,7 @@ pub struct StudyData {
 pub(super) fn failed_runs(rows: &[Vec<SweepRow>], name: impl Fn(usize) -> String) -> Vec<StudyFailure> {
     let failed = |(c, curve): (usize, &Vec<SweepRow>)| {
         let name = name(c);
-        crate::sweep::failures(curve).into_iter().map(move |f| StudyFailure {
+        runner::failures(curve).into_iter().map(move |f| StudyFailure {
             case: name.clone(),
             speed: Some(f.speed),
             error: f.error,

@@ -2,12 +2,12 @@
 //! 1 kN–10 MN, then golden section around the best (docs/theory.md §7).
 
 use super::{Resolution, StudyData, StudyFailure, blank, mean_iterations, nothing_finished, with_devices};
-use crate::error::{Result, invalid};
 use crate::figures::{DeflectionCurve, deflection_figure, device_color};
-use crate::number::row_with_gaps;
-use crate::scenario::Scenario;
-use crate::speeds::SpeedScale;
-use crate::sweep::{OptimalForce, Runner, SweepPoint, log_spaced, refine_from_scan};
+use runner::{OptimalForce, Runner, SweepPoint, log_spaced, refine_from_scan};
+use scenario::Scenario;
+use scenario::error::{Result, invalid};
+use scenario::number::row_with_gaps;
+use scenario::speeds::SpeedScale;
 use serde_json::json;
 use std::fmt::Write as _;
 

@@ -7,12 +7,12 @@
 use super::curves::{Curves, sweep_curves};
 use super::stationary_wave_figures as figures;
 use super::{StudyData, blank, mean_iterations, with_distributed};
-use crate::cost::Estimate;
-use crate::error::Result;
-use crate::scenario::{FoundationLawKind, Scenario};
-use crate::speeds::SpeedScale;
-use crate::stationary_output::{ErrorEstimate, StationaryPoint, StationaryStudy, problem};
-use crate::sweep::Runner;
+use crate::stationary_output::{ErrorEstimate, StationaryPoint, StationaryStudy};
+use runner::Runner;
+use runner::cost::Estimate;
+use scenario::error::Result;
+use scenario::speeds::SpeedScale;
+use scenario::{FoundationLawKind, Scenario};
 use serde::Serialize;
 use serde_json::{Value, json};
 use stationary::{ContactGuess, Domain, StationaryWave};
@@ -117,7 +117,7 @@ pub(super) fn study(resolution: super::Resolution, base: &Scenario, runner: &Run
     let finite = sweep_curves(finite_scenarios, &speeds, runner)?;
     let soils = Soil::all();
     let first = speeds.first().copied().unwrap_or(0.0);
-    let problems = soils.iter().map(|soil| problem(&soil.scenario(base), first, Domain::default()));
+    let problems = soils.iter().map(|soil| soil.scenario(base).stationary_problem(first, Domain::default()));
     let solves = problems.map(|p| Ok(Estimate::stationary(&p?, &speeds, false))).collect::<Result<Vec<_>>>()?;
     runner.announce(Estimate::together(solves, runner.threads()));
     let infinite = runner.silent().map(&soils, |soil| {
@@ -179,7 +179,7 @@ fn refine(
     let mut guess = ContactGuess::default();
     let mut evaluated = Vec::new();
     let mut deflection = |v: f64| -> Result<f64> {
-        let wave = stationary::solve_from(&problem(scenario, v, domain)?, &mut guess)?;
+        let wave = stationary::solve_from(&scenario.stationary_problem(v, domain)?, &mut guess)?;
         // A speed without a wave inside the bracket cannot be the peak.
         if !wave.convergence.is_converged() {
             return Ok(f64::NEG_INFINITY);
@@ -189,7 +189,7 @@ fn refine(
         Ok(peak)
     };
     let tolerance = 0.02 * (after.speed - before.speed) / 2.0;
-    let (speed, refined) = crate::sweep::golden_section(&mut deflection, before.speed, after.speed, tolerance, true)?;
+    let (speed, refined) = runner::golden_section(&mut deflection, before.speed, after.speed, tolerance, true)?;
     let critical = match refined >= peak {
         true => InfiniteCritical::Interior { speed, peak: refined },
         false => InfiniteCritical::Interior { speed: points[i].speed, peak },

@@ -5,8 +5,8 @@ use super::curves::Curves;
 use super::stationary_wave::{FRICTION, InfiniteCritical, InfiniteCurve};
 use crate::figures::{DeflectionCurve, deflection_figure};
 use crate::plot::{Mark, PanelY, PlotSpec, Series, Stroke};
-use crate::scenario::Scenario;
 use crate::stationary_output::StationaryPoint;
+use scenario::Scenario;
 
 const SPEED: &str = "load speed v (m/s)";
 

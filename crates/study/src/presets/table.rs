@@ -5,9 +5,9 @@ use super::{
     Preset, Resolution, StudyData, amplification, discrete_speed, discrete_vs_distributed, distributed_speed,
     equal_cost, hslm, optimal_force, stationary_wave, vehicle_speed,
 };
-use crate::error::Result;
-use crate::scenario::Scenario;
-use crate::sweep::Runner;
+use runner::Runner;
+use scenario::Scenario;
+use scenario::error::Result;
 
 /// How a study samples the load speed.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -14,13 +14,13 @@
 
 use super::hslm::friction_setups;
 use super::{Resolution, StudyData, as_long_track, blank, failed_runs, mean_iterations};
-use crate::error::Result;
-use crate::number::row_with_gaps;
 use crate::plot::{PlotSpec, Series, Stroke};
-use crate::scenario::rail::IrregularitySection;
-use crate::scenario::vehicle::VehicleKind;
-use crate::scenario::{RailSection, Scenario, VehicleSection};
-use crate::sweep::{Runner, SweepPoint, SweepRow, finished};
+use runner::{Runner, SweepPoint, SweepRow, finished};
+use scenario::error::Result;
+use scenario::number::row_with_gaps;
+use scenario::rail::IrregularitySection;
+use scenario::vehicle::VehicleKind;
+use scenario::{RailSection, Scenario, VehicleSection};
 use serde_json::{Value, json};
 use std::fmt::Write as _;
 use track::vehicle::consist::MAX_CONTACT_STEP;
@@ -109,7 +109,7 @@ pub(super) fn overrides(base: &Scenario) -> Vec<String> {
     if let Some((count, force)) = super::hslm::fallback_devices(base) {
         notes.push(format!(
             "the scenario has no [friction]: the study compares no friction with {}",
-            crate::scenario::devices_text(count, force)
+            scenario::devices_text(count, force)
         ));
     }
     if let Ok(speeds) = Resolution::Coarse.speeds(base)
@@ -276,7 +276,7 @@ fn summary(
     curves: &[Curve],
     force: f64,
     friction: &str,
-    integration: &crate::scenario::IntegrationSection,
+    integration: &scenario::IntegrationSection,
 ) -> (Value, Vec<String>) {
     let mut items = Vec::new();
     let mut lines = Vec::new();

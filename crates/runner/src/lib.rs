@@ -1,4 +1,9 @@
-//! Speed sweeps, the critical speed and the optimal device force (docs/theory.md §7).
+//! # runner: how the runs of sweeps and studies are carried out (docs/theory.md §7)
+//!
+//! - Speed sweeps, the critical speed and the optimal device force (this module and [`Runner`]).
+//! - [`journal`]: every finished run on disk at once, so that an interrupted sweep resumes where it stopped.
+//! - [`shard`]: a deterministic 1/N of a sweep's points per machine, and the merge of the shards' outputs.
+//! - [`cost`]: what a run, a batch of runs or a stationary sweep will cost, said before it starts.
 //!
 //! A sweep runs one simulation per speed, in parallel on the runner's one thread pool; every run is independent and
 //! deterministic and the results are returned in speed order, so the output is identical for any thread count.
@@ -7,21 +12,25 @@
 //! fixed N and speed minimises the max downward deflection: a log-spaced scan of the bounds, then golden section
 //! around the best scanned force; every evaluated force is returned with its value.
 
+pub mod cost;
 mod critical;
 mod golden;
-pub(crate) use golden::golden_section;
+pub use golden::golden_section;
+pub mod journal;
 mod optimal_force;
 mod peak;
-mod runner;
+mod pool;
+pub mod shard;
 
 pub use critical::{CriticalSpeed, critical_speed};
+pub use journal::Journal;
 pub use optimal_force::{OptimalForce, log_spaced, optimal_device_force, refine_device_force, refine_from_scan};
 pub use peak::{Metric, PeakLocation, RefinedPeak, refine_maximum, unrefined};
-pub use runner::{Runner, worker_threads};
+pub use pool::{Runner, worker_threads};
 
-use crate::error::{Result, StudyError};
-use crate::number::row_with_gaps;
-use crate::scenario::Case;
+use scenario::Case;
+use scenario::error::{Result, StudyError};
+use scenario::number::row_with_gaps;
 use serde::{Deserialize, Serialize};
 use std::io::Write;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -189,7 +198,7 @@ fn simulate_until(case: &Case, settings: &RunSettings, stop: Option<&AtomicBool>
 }
 
 /// The same, with `observer` called after every step (it may stop the run early by returning false).
-pub(crate) fn simulate_observed(
+pub fn simulate_observed(
     case: &Case,
     settings: &RunSettings,
     stop: Option<&AtomicBool>,
@@ -262,7 +271,7 @@ pub fn write_csv_rows(rows: &[SweepRow], out: &mut dyn Write) -> std::io::Result
         let p = match line {
             Ok(p) => p,
             Err(failed) => {
-                writeln!(out, "{}{}", crate::number::number(failed.speed), ",".repeat(columns - 1))?;
+                writeln!(out, "{}{}", scenario::number::number(failed.speed), ",".repeat(columns - 1))?;
                 continue;
             }
         };

@@ -3,8 +3,8 @@
 
 use super::Runner;
 use super::golden::golden_section;
-use crate::error::{Result, invalid};
-use crate::scenario::Scenario;
+use scenario::Scenario;
+use scenario::error::{Result, invalid};
 use serde::Serialize;
 
 /// The device force minimising the max downward deflection.

@@ -4,8 +4,8 @@
 
 use super::peak::{Metric, PeakLocation, RefinedPeak, refine_maximum};
 use super::{Runner, SweepPoint};
-use crate::error::Result;
-use crate::scenario::Case;
+use scenario::Case;
+use scenario::error::Result;
 use serde::Serialize;
 
 /// The refined critical speed of a configuration, or the bound the sweep gives when its maximum lies at an end of
@@ -35,7 +35,7 @@ impl CriticalSpeed {
     /// One sentence: the critical speed, or the bound and why.
     pub fn describe(&self) -> String {
         // Speeds to 0.1 m/s: a km/h grid gives 38.888888888888886 m/s.
-        let tenth = |v: f64| crate::number::number((v * 10.0).round() / 10.0);
+        let tenth = |v: f64| scenario::number::number((v * 10.0).round() / 10.0);
         let (from, to) = (tenth(self.range.0), tenth(self.range.1));
         let peak = format!("max downward deflection {:.2} mm", self.max_downward_deflection * 1e3);
         match self.location {

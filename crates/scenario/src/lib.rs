@@ -1,25 +1,41 @@
-//! The scenario file: everything docs/theory.md describes, in TOML, every key optional (defaults = the reference case of
-//! docs/theory.md §2). Unknown keys are errors. [`Scenario::build`] turns it into the beam model, the contact set and the
-//! run settings; [`Scenario::validate`] names the offending key by its dotted path.
+//! # scenario: the scenario file and everything checked before a run (docs/theory.md §2–§14)
+//!
+//! Every key of the TOML scenario format is optional (defaults = the reference case of docs/theory.md §2); unknown
+//! keys are errors. [`Scenario::build`] turns a scenario into the beam model, the contact set and the run settings;
+//! [`Scenario::validate`] names the offending key by its dotted path.
 //!
 //! - [`sections`]: the schema, one struct per `[section]` with the reference case as default.
 //! - `build`: from the sections to the beam model, friction sections and run settings, each value checked and named
 //!   by its dotted path ([`Scenario::build`], [`Scenario::model`], [`Scenario::run_settings`]).
 //! - `parse`: TOML errors with file, line, column, the key's path and a "did you mean".
+//! - [`overrides`]: the command-line and Python overrides of a scenario's values.
+//! - [`diagnostics`] and [`plausibility`]: refusals and warnings about a scenario before any run.
+//! - [`speeds`] and [`trains`]: the speed scale of a case (v_cr, default sweeps) and the train catalogue.
+//! - [`error`]: the error type of the crates above this one, every message naming the field, its value and what is
+//!   allowed; [`number`]: numbers as result files and messages print them.
 
 mod build;
 pub mod contact;
 mod deck;
+pub mod diagnostics;
+pub mod error;
+pub mod number;
+pub mod overrides;
 mod parse;
+pub mod plausibility;
 pub mod rail;
 pub mod sections;
+pub mod speeds;
+mod stationary_problem;
+pub mod trains;
 pub mod vehicle;
 
+pub use error::{Result, StudyError};
 pub use rail::RailSection;
 pub use sections::*;
 pub use vehicle::VehicleSection;
 
-use crate::error::{Result, StudyError, invalid};
+use crate::error::invalid;
 use fem_beam::{Beam, BeamModel, Mesh, Supports};
 use parse::{did_you_mean, key_path, line_column};
 use serde::{Deserialize, Serialize};

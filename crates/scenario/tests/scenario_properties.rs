@@ -4,8 +4,8 @@
 
 use proptest::prelude::*;
 use proptest::strategy::ValueTree;
-use study::Scenario;
-use study::scenario::TEMPLATE;
+use scenario::Scenario;
+use scenario::TEMPLATE;
 
 /// A scenario of a small beam (≤ 30 elements, ≤ 60 m) so that each run stays below ~100 steps. Values are drawn
 /// mostly inside their valid ranges (fractions of the mesh where a range depends on it), a few outside.

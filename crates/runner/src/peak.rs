@@ -11,8 +11,8 @@
 
 use super::golden::golden_section;
 use super::{Runner, SweepPoint};
-use crate::error::{Result, invalid};
-use crate::scenario::Case;
+use scenario::Case;
+use scenario::error::{Result, invalid};
 use serde::Serialize;
 
 /// Where the largest value of a sweep lies in its speed range.

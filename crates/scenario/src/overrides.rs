@@ -2,7 +2,7 @@
 //! `devices=`, …) set on top of a scenario: one mapping, by the same names, for both.
 
 use crate::error::{Result, invalid};
-use crate::scenario::{AbsorbingZonesSection, DevicesSection, DistributedSection, Scenario};
+use crate::{AbsorbingZonesSection, DevicesSection, DistributedSection, Scenario};
 use nscd::SolverKind;
 
 /// Overrides of a scenario, each `None` unless given.

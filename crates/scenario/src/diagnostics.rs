@@ -9,7 +9,7 @@
 //!   θ < 0.51 (its force's period-2 mode undamped, docs/theory.md §9).
 
 use crate::error::{Result, invalid};
-use crate::scenario::{Case, Scenario};
+use crate::{Case, Scenario};
 use fem_beam::reference::InfiniteBeam;
 use fem_beam::{BeamModel, Support};
 use std::fmt;
@@ -115,8 +115,7 @@ pub fn sweep_warnings(scenario: &Scenario, speeds: &[f64]) -> Result<Vec<Warning
     let (low, high) = speeds.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| (a.min(v), b.max(v)));
     let mut out: Vec<Warning> = Vec::new();
     for v in [low, high].into_iter().filter(|v| v.is_finite()) {
-        let at =
-            Scenario { load: crate::scenario::LoadSection { speed: v, ..scenario.load.clone() }, ..scenario.clone() };
+        let at = Scenario { load: crate::LoadSection { speed: v, ..scenario.load.clone() }, ..scenario.clone() };
         for w in warnings(&at, &at.build()?) {
             if !out.contains(&w) {
                 out.push(w);
@@ -129,7 +128,7 @@ pub fn sweep_warnings(scenario: &Scenario, speeds: &[f64]) -> Result<Vec<Warning
 /// Rail cars on an HSLM train's axles: the HSLM coaches are articulated (neighbours share a bogie), which cars of
 /// two bogies of their own, four axles each, are not.
 fn articulated_cars(scenario: &Scenario, case: &Case) -> Vec<Warning> {
-    let cars = scenario.vehicle.as_ref().is_some_and(|v| v.kind == crate::scenario::vehicle::VehicleKind::RailCar);
+    let cars = scenario.vehicle.as_ref().is_some_and(|v| v.kind == crate::vehicle::VehicleKind::RailCar);
     match case.settings.moving.load.axles() {
         Some(train) if cars && train.name.starts_with("hslm") => vec![Warning {
             field: "vehicle.kind".into(),

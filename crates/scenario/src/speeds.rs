@@ -9,7 +9,7 @@
 //! (206 m/s).
 
 use crate::error::Result;
-use crate::scenario::{Scenario, SweepSection};
+use crate::{Scenario, SweepSection};
 use fem_beam::reference::InfiniteBeam;
 
 /// The most speeds one sweep, stationary solve or closed-form table takes, from the command line, a scenario's

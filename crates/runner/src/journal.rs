@@ -1,13 +1,13 @@
 //! Finished work survives: an append-only journal with one JSON line per finished run, written and flushed to the
 //! operating system as soon as the run ends, so that a killed or interrupted sweep loses at most the runs that were
 //! in flight. A resumed sweep reads the journal back and skips every run whose key (case fingerprint + speed, see
-//! [`crate::Case::fingerprint`]) it holds; floats are written in shortest round-trip form and read back exactly, so a
+//! [`scenario::Case::fingerprint`]) it holds; floats are written in shortest round-trip form and read back exactly, so a
 //! resumed sweep writes the same bytes as an uninterrupted one.
 //!
 //! Format: a first line `{"frictrack_journal":1}`, then lines `{"key":"…","value":…}`. A last line cut short by a
 //! kill is dropped (and truncated away) when the journal is reopened.
 
-use crate::error::{Result, StudyError};
+use scenario::error::{Result, StudyError};
 use serde::Serialize;
 use serde::de::DeserializeOwned;
 use serde_json::Value;

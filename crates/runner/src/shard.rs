@@ -4,8 +4,8 @@
 //! the shards belong together and are complete, and interleaves their rows back into the unsharded order, so that
 //! the merged file is byte for byte what one unsharded run writes.
 
-use crate::error::{Result, StudyError, invalid};
-use crate::scenario::fnv1a;
+use scenario::error::{Result, StudyError, invalid};
+use scenario::fnv1a;
 
 /// Shard `index` (1-based) of `count`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

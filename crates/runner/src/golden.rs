@@ -1,10 +1,10 @@
 //! Golden-section search for the maximum of a unimodal function on an interval (Kiefer 1953).
 
-use crate::error::Result;
+use scenario::error::Result;
 
 /// Golden-section search for the maximum (`maximise`) of f on [a, b] to an interval width `tolerance`;
 /// returns (argmax, max) among the evaluated points.
-pub(crate) fn golden_section(
+pub fn golden_section(
     f: &mut dyn FnMut(f64) -> Result<f64>,
     mut a: f64,
     mut b: f64,

@@ -1,8 +1,8 @@
 //! The train of a scenario (docs/theory.md §10): a catalogue name, a CSV file of `offset,force`, or axles and
 //! patches given in the scenario file — resolved into a [`fem_beam::Train`] with errors that name the scenario path.
 
+use crate::LoadSection;
 use crate::error::{Result, invalid};
-use crate::scenario::LoadSection;
 use fem_beam::{Axle, FemError, Patch, Train};
 use serde::Serialize;
 

@@ -3,10 +3,10 @@
 
 use super::{FailedRun, SweepPoint, SweepRow, point_until, simulate_until};
 use crate::cost::{Estimate, RunCost};
-use crate::error::{Result, StudyError, invalid};
 use crate::journal::Journal;
-use crate::scenario::Case;
 use rayon::prelude::*;
+use scenario::Case;
+use scenario::error::{Result, StudyError, invalid};
 use serde::Serialize;
 use serde::de::DeserializeOwned;
 use std::sync::Arc;

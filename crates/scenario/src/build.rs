@@ -102,7 +102,7 @@ impl Scenario {
     }
 
     /// Everything placed on `model`: the friction sections, then the soil's (a window of the track, or the beam).
-    pub(crate) fn placed_on(&self, model: &BeamModel) -> Result<PlacedInteractions> {
+    pub fn placed_on(&self, model: &BeamModel) -> Result<PlacedInteractions> {
         let mut interactions = self.interactions(model)?;
         interactions.extend(self.foundation_sections(model)?);
         Ok(interactions)
@@ -251,8 +251,8 @@ impl Scenario {
         Ok(interactions)
     }
 
-    /// What the beam carries of a train's axles ([`LoadSection::share_on`] for this scenario's foundation).
-    pub fn axle_share(&self) -> crate::scenario::AxleShare {
+    /// What the beam carries of a train's axles ([`crate::LoadSection::share_on`] for this scenario's foundation).
+    pub fn axle_share(&self) -> crate::AxleShare {
         self.load.share_on(self.foundation.stiffness)
     }
 

@@ -4,7 +4,7 @@
 //! build, one run on one core; BENCHMARKS.md). An estimate to within a factor of about 2–3, for deciding whether
 //! to wait — the one rule every entry point (runs, sweeps, studies, stationary sweeps) announces long work by.
 
-use crate::scenario::Case;
+use scenario::Case;
 use stationary::StationaryProblem;
 
 /// Seconds per DOF and step of a friction-free run: the two banded solves and products of the step and the
@@ -197,7 +197,7 @@ fn duration(seconds: f64) -> String {
 #[cfg(test)]
 mod tests {
     use super::{Estimate, RunCost, Size};
-    use crate::Scenario;
+    use scenario::Scenario;
 
     /// The reference case is instant; 20 000 elements with a 0.01 m load advance take seconds (measured 6.4 s); a
     /// million elements are hours, and the estimate says so before the run.
@@ -213,7 +213,7 @@ mod tests {
         assert!((3.0..15.0).contains(&fine.seconds), "{fine:?}");
         let mut distributed = Scenario::default();
         distributed.friction.distributed =
-            Some(crate::scenario::DistributedSection { force_per_length: 1e3, ..Default::default() });
+            Some(scenario::DistributedSection { force_per_length: 1e3, ..Default::default() });
         let distributed = RunCost::of(&distributed.build().unwrap());
         assert!(distributed.sections > 700 && (0.1..1.0).contains(&distributed.seconds), "{distributed:?}");
     }
@@ -234,8 +234,7 @@ mod tests {
     /// ballast friction a few seconds (measured 2.2 s); 190 000 speeds with friction hours, said before the first.
     #[test]
     fn stationary_sweeps_cost_by_nodes_and_smoothness() {
-        let problem =
-            crate::stationary_output::problem(&Scenario::default(), 100.0, stationary::Domain::default()).unwrap();
+        let problem = Scenario::default().stationary_problem(100.0, stationary::Domain::default()).unwrap();
         let speeds = |from: f64, to: f64, count: usize| -> Vec<f64> {
             (0..count).map(|i| from + (to - from) * i as f64 / (count - 1).max(1) as f64).collect()
         };
