@@ -4,7 +4,7 @@
 //! character, generous for DejaVu Sans, whose average advance is ~0.55 em). The PNG's blank margins around the
 //! plotting area must stay white.
 
-use study::plot::{Layout, PlotSpec, render};
+use report::plot::{Layout, PlotSpec, render};
 
 /// Numbers of an attribute `name="…"` of an SVG element.
 fn attribute(element: &str, name: &str) -> Option<String> {
@@ -119,10 +119,10 @@ pub fn assert_drawn_inside(plots: &[PlotSpec], name: &str) {
 fn a_curve_out_of_its_frame_is_caught() {
     // A layout whose plotting area misses the data: the checker must report the curve.
     let mut spec = PlotSpec::new("probe", "probe", "x", "y");
-    spec.series.push(study::plot::Series {
+    spec.series.push(report::plot::Series {
         label: Some("probe".into()),
         color: 1,
-        stroke: study::plot::Stroke::Solid,
+        stroke: report::plot::Stroke::Solid,
         markers: true,
         points: vec![(0.0, 0.0), (1.0, 1.0)],
     });
@@ -145,7 +145,7 @@ fn wheel_forces_are_drawn_a_panel_per_vehicle() {
     let scenario = scenario::Scenario::from_toml(text, "three-cars.toml").unwrap();
     let case = scenario.build().unwrap();
     let result = runner::Runner::new(1).unwrap().simulate(&case, &case.settings).unwrap();
-    let spec = study::vehicle_output::wheel_plot(result.vehicles.as_ref().unwrap(), "three cars", (0.0, 60.0));
+    let spec = report::vehicle_output::wheel_plot(result.vehicles.as_ref().unwrap(), "three cars", (0.0, 60.0));
     assert_eq!(spec.panels.len(), 3);
     assert!(spec.panels.iter().all(|p| p.series.len() == 1), "one wheel in each quarter car");
     assert_drawn_inside(std::slice::from_ref(&spec), "wheel-panels");
@@ -169,10 +169,10 @@ fn long_legend_labels_wrap_instead_of_running_off_the_image() {
     let mut spec = PlotSpec::new("long-legend", "long legend", "x", "y");
     for (i, label) in ["wheel 1 (vehicle 1, Q₀ = 61.7 kN) over the dipped joint at 100 m", "short"].iter().enumerate()
     {
-        spec.series.push(study::plot::Series {
+        spec.series.push(report::plot::Series {
             label: Some(label.to_string()),
             color: 1 + i,
-            stroke: study::plot::Stroke::Solid,
+            stroke: report::plot::Stroke::Solid,
             markers: false,
             points: vec![(0.0, i as f64), (1.0, 1.0 + i as f64)],
         });

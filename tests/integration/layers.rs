@@ -2,8 +2,8 @@
 //! crate that started to use a higher one. Read from each crate's Cargo.toml (normal, dev and build dependencies).
 
 /// The layers, bottom first: (package name, folder). The Python bindings stand beside the command line: both on the
-/// scenario, runner and study libraries, neither on the other.
-const LAYERS: [(&str, &str); 12] = [
+/// scenario, runner, report and study libraries, neither on the other.
+const LAYERS: [(&str, &str); 13] = [
     ("banded", "crates/banded"),
     ("irregularity", "crates/irregularity"),
     ("fem-beam", "crates/fem-beam"),
@@ -13,6 +13,7 @@ const LAYERS: [(&str, &str); 12] = [
     ("stationary", "crates/stationary"),
     ("scenario", "crates/scenario"),
     ("runner", "crates/runner"),
+    ("report", "crates/report"),
     ("study", "crates/study"),
     ("frictrack", "crates/cli"),
     ("frictrack-python", "crates/python"),

@@ -87,9 +87,9 @@ pub fn metadata_beside(out: &Path) -> PathBuf {
     out.with_extension("json")
 }
 
-/// Draw `plots` into `folder` (PNG and SVG each, [`study::plot::render`]), every target checked first like any
+/// Draw `plots` into `folder` (PNG and SVG each, [`report::plot::render`]), every target checked first like any
 /// output; the names of the figures drawn.
-pub fn write_figures(plots: &[study::plot::PlotSpec], folder: &Path) -> Result<Vec<String>> {
+pub fn write_figures(plots: &[report::plot::PlotSpec], folder: &Path) -> Result<Vec<String>> {
     for spec in plots {
         for extension in ["png", "svg"] {
             check_output_file("--out", &folder.join(format!("{}.{extension}", spec.stem)))?;
@@ -97,7 +97,7 @@ pub fn write_figures(plots: &[study::plot::PlotSpec], folder: &Path) -> Result<V
     }
     let mut drawn = Vec::with_capacity(plots.len());
     for spec in plots {
-        study::plot::render(spec, folder)?;
+        report::plot::render(spec, folder)?;
         drawn.push(format!("{}.png/.svg", spec.stem));
     }
     Ok(drawn)

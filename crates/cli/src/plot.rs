@@ -38,7 +38,7 @@ fn read(path: &Path) -> Result<String> {
 
 /// A sweep's figures beside its CSV, `{stem}-deflection.png` …
 fn sweep_file(path: &Path) -> Result<Vec<String>> {
-    let points = study::sweep_figures::read_sweep_csv(&read(path)?, &path.display().to_string())?;
+    let points = report::sweep_figures::read_sweep_csv(&read(path)?, &path.display().to_string())?;
     if points.is_empty() {
         return Err(scenario::error::invalid(&path.display().to_string(), "no finished run", "nothing to draw").into());
     }
@@ -53,7 +53,7 @@ fn sweep_file(path: &Path) -> Result<Vec<String>> {
     let critical = metadata
         .as_ref()
         .and_then(|m| serde_json::from_value::<runner::CriticalSpeed>(m["critical_speed"]["result"].clone()).ok());
-    let plots = study::sweep_figures::sweep_plots(&points, &stem, scenario.as_ref(), critical.as_ref());
+    let plots = report::sweep_figures::sweep_plots(&points, &stem, scenario.as_ref(), critical.as_ref());
     write_figures(&plots, path.parent().unwrap_or(Path::new(".")))
 }
 
@@ -62,14 +62,14 @@ fn sweep_file(path: &Path) -> Result<Vec<String>> {
 fn run_folder(folder: &Path) -> Result<Vec<String>> {
     let histories = read(&folder.join("histories.csv"))?;
     let snapshots = read(&folder.join("snapshots.csv"))?;
-    let curves = study::run_output::RunCurves::from_csv(&histories, &snapshots)?;
+    let curves = report::run_output::RunCurves::from_csv(&histories, &snapshots)?;
     let summary: serde_json::Value = serde_json::from_str(&read(&folder.join("summary.json"))?)
         .with_context(|| format!("reading {}", folder.join("summary.json").display()))?;
     let figures = &summary["figures"];
     let text = |key: &str| figures[key].as_str().map(str::to_string);
     let title = text("title").or_else(|| title_in(&folder.join("summary.json"))).unwrap_or_default();
     let load = text("positions_of").unwrap_or_else(|| "load".into());
-    let mut plots = study::run_output::run_plots(&curves, &title, &load);
+    let mut plots = report::run_output::run_plots(&curves, &title, &load);
     for spec in &mut plots {
         spec.subtitle = text("subtitle").unwrap_or_default();
     }

@@ -2,8 +2,8 @@
 //! overriding it; prints the key inputs, the whole-run extremes and the extremes while the load is in the middle
 //! third (or `--extremes-window`), energies, solver statistics and wall time; with vehicles, their wheel forces,
 //! losses of contact and body accelerations. With `--out DIR` it also writes `summary.json`, `histories.csv`,
-//! `snapshots.csv` and their figures ([`study::run_output`]), and with vehicles `wheels.csv` and its figure
-//! ([`study::vehicle_output`]).
+//! `snapshots.csv` and their figures ([`report::run_output`]), and with vehicles `wheels.csv` and its figure
+//! ([`report::vehicle_output`]).
 
 use crate::Format;
 use crate::files::{check_output_file, prepare_output_folder, write_atomically};
@@ -12,10 +12,10 @@ use crate::scenario_args::ScenarioArgs;
 use crate::window_wording::WindowWording;
 use anyhow::Result;
 use clap::Args;
+use report::run_summary::RunSummary;
 use scenario::Scenario;
 use std::path::PathBuf;
 use std::time::Instant;
-use study::run_summary::RunSummary;
 use track::{RunResult, SnapshotAt};
 
 /// Options of `frictrack run`.
@@ -64,13 +64,13 @@ pub fn run(args: &RunArgs) -> Result<()> {
         return crate::co_moving::run(&scenario, &section, args.format, args.out.as_deref());
     }
     if args.out.is_some() {
-        scenario = study::run_output::recording(scenario);
+        scenario = report::run_output::recording(scenario);
     }
     let case = scenario.build()?;
     crate::scenario_args::print_warnings(&scenario, &case);
     if let Some(out) = &args.out {
         prepare_output_folder("--out", out)?;
-        let figures = study::run_output::FIGURE_STEMS.iter().flat_map(|f| [format!("{f}.png"), format!("{f}.svg")]);
+        let figures = report::run_output::FIGURE_STEMS.iter().flat_map(|f| [format!("{f}.png"), format!("{f}.svg")]);
         let files = ["summary.json", "histories.csv", "snapshots.csv"].map(String::from).into_iter();
         let wheel_files = ["wheels.csv", "wheel-forces.png", "wheel-forces.svg"].map(String::from).into_iter();
         let wheel_files = wheel_files.filter(|_| case.settings.moving.load.vehicles().is_some());
@@ -79,7 +79,7 @@ pub fn run(args: &RunArgs) -> Result<()> {
         }
     }
     let requests = match args.out.is_some() {
-        true => study::run_output::snapshot_requests(&scenario, &case),
+        true => report::run_output::snapshot_requests(&scenario, &case),
         false => Vec::new(),
     };
     let steps = case.settings.step_count(scenario.mesh.length);
@@ -89,11 +89,11 @@ pub fn run(args: &RunArgs) -> Result<()> {
     let bar = crate::progress::steps_bar(steps as u64, args.quiet || args.format == Format::Json);
     let progress = |fraction: f64| bar.set_position((fraction * steps) as u64);
     let stop = Some(crate::interrupt::stop_flag());
-    let ran = study::run_output::run_with_snapshots(&case, &requests, stop, &progress);
+    let ran = report::run_output::run_with_snapshots(&case, &requests, stop, &progress);
     bar.finish_and_clear();
     let (result, snapshots) = crate::interrupt::explain(ran, None)?;
     let report = RunSummary::of(&scenario, &case, &result, start.elapsed().as_secs_f64())?;
-    for warning in study::result_warnings::result_warnings(&case, &report) {
+    for warning in report::result_warnings::result_warnings(&case, &report) {
         eprintln!("warning: {warning}");
     }
     match args.format {
@@ -101,7 +101,7 @@ pub fn run(args: &RunArgs) -> Result<()> {
         Format::Text => print_text(&report, &WindowWording::of(&scenario, &case)),
     }
     if let Some(out) = &args.out {
-        let positions_of = study::run_output::position_noun(&case.settings.moving.load);
+        let positions_of = report::run_output::position_noun(&case.settings.moving.load);
         write_outputs(out, (&scenario, positions_of), &report, &result, &snapshots)?;
         if args.format == Format::Text {
             let wheels = if result.vehicles.is_some() { ", wheels.csv" } else { "" };
@@ -118,8 +118,8 @@ fn write_outputs(
     result: &RunResult,
     snapshots: &[track::Snapshot],
 ) -> Result<()> {
-    use study::run_output::{HISTORY_COLUMNS, RunCurves, SNAPSHOT_COLUMNS, histories_csv, run_plots, snapshots_csv};
-    let columns = |list: &[(&'static str, &'static str)]| study::columns::json(list.iter().copied());
+    use report::run_output::{HISTORY_COLUMNS, RunCurves, SNAPSHOT_COLUMNS, histories_csv, run_plots, snapshots_csv};
+    let columns = |list: &[(&'static str, &'static str)]| report::columns::json(list.iter().copied());
     let requested: Vec<String> = snapshots
         .iter()
         .map(|s| match s.requested {
@@ -132,7 +132,7 @@ fn write_outputs(
         "snapshots.csv": { "columns": columns(&SNAPSHOT_COLUMNS), "requested": requested },
     });
     if result.vehicles.is_some() {
-        files["wheels.csv"] = serde_json::json!({ "columns": columns(&study::vehicle_output::WHEEL_COLUMNS) });
+        files["wheels.csv"] = serde_json::json!({ "columns": columns(&report::vehicle_output::WHEEL_COLUMNS) });
     }
     let title = if scenario.title.is_empty() { format!("v = {} m/s", report.speed) } else { scenario.title.clone() };
     let subtitle = figure_subtitle(report);
@@ -150,15 +150,15 @@ fn write_outputs(
     write_atomically(&out.join("snapshots.csv"), snapshots_csv(snapshots).as_bytes())?;
     for mut spec in run_plots(&RunCurves::of(result, snapshots), &title, load) {
         spec.subtitle.clone_from(&subtitle);
-        study::plot::render(&spec, out)?;
+        report::plot::render(&spec, out)?;
     }
     if let Some(vehicles) = &result.vehicles {
-        write_atomically(&out.join("wheels.csv"), study::vehicle_output::wheels_csv(vehicles).as_bytes())?;
+        write_atomically(&out.join("wheels.csv"), report::vehicle_output::wheels_csv(vehicles).as_bytes())?;
         let range = report.extremes.extremes_nodes.unwrap_or((0.0, scenario.mesh.length));
-        let mut spec = study::vehicle_output::wheel_plot(vehicles, &title, range);
+        let mut spec = report::vehicle_output::wheel_plot(vehicles, &title, range);
         // The run's line (vehicles, speed, friction) before what the figure says of its wheels.
         spec.subtitle = format!("{subtitle}; {}", spec.subtitle);
-        study::plot::render(&spec, out)?;
+        report::plot::render(&spec, out)?;
     }
     Ok(())
 }

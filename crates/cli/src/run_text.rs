@@ -3,7 +3,7 @@
 //! words the run's figures are subtitled with.
 
 use crate::window_wording::WindowWording;
-use study::run_summary::RunSummary;
+use report::run_summary::RunSummary;
 
 /// What ran, in words: the load, train or vehicles.
 fn load_description(r: &RunSummary) -> String {
@@ -83,7 +83,7 @@ pub(crate) fn print_text(r: &RunSummary, wording: &WindowWording) {
 }
 
 /// The soil's lines of the text report: its law, the settlement, where the rail lifted off and the soil's energy.
-fn print_soil(s: &study::soil_output::SoilSummary) {
+fn print_soil(s: &report::soil_output::SoilSummary) {
     let tension = match s.law {
         "bilinear" => format!("k_t = {} k_c", scenario::number::significant(s.tension_ratio, 6)),
         _ => "no tension".to_string(),
@@ -145,7 +145,7 @@ fn print_soil(s: &study::soil_output::SoilSummary) {
 const MAX_ZONES_LISTED: usize = 5;
 
 /// The vehicles' lines of the text report.
-fn print_vehicles(v: &study::vehicle_output::VehicleReport) {
+fn print_vehicles(v: &report::vehicle_output::VehicleReport) {
     let count = v.wheels.len();
     println!(
         "  vehicles: {count} wheel{}, {} contact; wheel force {:.1} … {:.1} kN, largest ΔQ/Q₀ {:.3}",

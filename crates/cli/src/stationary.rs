@@ -4,10 +4,10 @@
 use crate::files::{check_output_file, prepare_output_folder, write_atomically, write_figures};
 use anyhow::Result;
 use clap::{Args, ValueEnum};
+use report::columns;
 use scenario::Scenario;
 use stationary::Domain;
 use std::path::PathBuf;
-use study::columns;
 use study::stationary_output::{ErrorEstimate, POINT_COLUMNS, StationaryStudy, WAVE_COLUMNS, points_csv, wave_csv};
 
 /// What `frictrack stationary` prints.

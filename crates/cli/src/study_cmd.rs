@@ -200,7 +200,7 @@ pub fn run_study(
         "speeds": preset.speeds(resolution, base)?,
         "study_sets": preset.sets(),
         "scenario_parts_not_used": overrides,
-        "columns": study::columns::json(data.columns.iter().map(|(name, unit)| (name.as_str(), *unit))),
+        "columns": report::columns::json(data.columns.iter().map(|(name, unit)| (name.as_str(), *unit))),
         "failures": data.failures,
     });
     write_atomically(
@@ -208,7 +208,7 @@ pub fn run_study(
         serde_json::to_string_pretty(&metadata)?.as_bytes(),
     )?;
     for spec in &data.plots {
-        study::plot::render(spec, out)?;
+        report::plot::render(spec, out)?;
     }
     Ok((data, journal))
 }

@@ -119,7 +119,7 @@ pub fn run(args: &SweepArgs) -> Result<()> {
                 println!("# failed_run {}", serde_json::to_string(f)?);
             }
             let units = runner::csv_columns(scenario.vehicle.is_some()).map(|(name, unit, _)| (*name, *unit));
-            println!("# {}", study::columns::units_line(units));
+            println!("# {}", report::columns::units_line(units));
         }
     }
     if !failed.is_empty() {
@@ -153,7 +153,7 @@ fn check_outputs(out: &std::path::Path) -> Result<()> {
     check_output_file("--out", &metadata_beside(out))?;
     let stem = out.file_stem().map_or("sweep".into(), |s| s.to_string_lossy().into_owned());
     let folder = out.parent().unwrap_or(std::path::Path::new("."));
-    for suffix in study::sweep_figures::FIGURE_SUFFIXES {
+    for suffix in report::sweep_figures::FIGURE_SUFFIXES {
         for extension in ["png", "svg"] {
             check_output_file("--out", &folder.join(format!("{stem}-{suffix}.{extension}")))?;
         }
@@ -176,7 +176,7 @@ fn write_files(
     // The swept metrics against speed, beside the CSV (a shard's few speeds are drawn by `plot` after merge).
     if whole && points.len() >= 2 {
         let stem = path.file_stem().map_or("sweep".into(), |s| s.to_string_lossy().into_owned());
-        let plots = study::sweep_figures::sweep_plots(points, &stem, Some(scenario), critical);
+        let plots = report::sweep_figures::sweep_plots(points, &stem, Some(scenario), critical);
         crate::files::write_figures(&plots, path.parent().unwrap_or(std::path::Path::new(".")))?;
     }
     let columns: Vec<_> = runner::csv_columns(scenario.vehicle.is_some())

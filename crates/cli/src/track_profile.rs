@@ -6,8 +6,8 @@ use crate::files::{check_output_file, prepare_output_folder, write_atomically};
 use anyhow::Result;
 use clap::Args;
 use irregularity::{RandomSettings, Spectrum};
+use report::track_profile::{ProfileRequest, sample_profile};
 use std::path::PathBuf;
-use study::track_profile::{ProfileRequest, sample_profile};
 
 /// Arguments of `frictrack track-profile`.
 #[derive(Debug, Args)]
@@ -68,7 +68,7 @@ pub fn run(args: &TrackProfileArgs) -> Result<()> {
     write_atomically(&args.out.join(format!("{stem}-psd.csv")), sample.psd_csv().as_bytes())?;
     write_atomically(&args.out.join(format!("{stem}.json")), serde_json::to_string_pretty(&summary)?.as_bytes())?;
     for spec in sample.figures(stem) {
-        study::plot::render(&spec, &args.out)?;
+        report::plot::render(&spec, &args.out)?;
     }
     match args.format {
         Format::Json => println!("{}", serde_json::to_string(&summary)?),

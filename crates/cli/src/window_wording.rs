@@ -1,5 +1,5 @@
 //! How the text report names the extremes window of a run: words, not numbers (the numbers are in
-//! [`study::run_summary::RunSummary`]).
+//! [`report::run_summary::RunSummary`]).
 
 use scenario::{Case, Scenario};
 
@@ -7,7 +7,7 @@ use scenario::{Case, Scenario};
 /// first axle, the vehicles' first wheel), why it is there (the default middle third, or given), and what lies around it.
 #[derive(Debug, Default)]
 pub(crate) struct WindowWording {
-    /// "load", "first axle" or "first wheel" ([`study::run_output::position_noun`]).
+    /// "load", "first axle" or "first wheel" ([`report::run_output::position_noun`]).
     pub(crate) load: &'static str,
     /// Why the window is where it is.
     pub(crate) why: &'static str,
@@ -15,7 +15,7 @@ pub(crate) struct WindowWording {
 
 impl WindowWording {
     pub(crate) fn of(scenario: &Scenario, case: &Case) -> Self {
-        let load = study::run_output::position_noun(&case.settings.moving.load);
+        let load = report::run_output::position_noun(&case.settings.moving.load);
         let span = scenario.foundation.stiffness == 0.0;
         let why = match (scenario.output.extremes_window.is_some(), span) {
             (true, _) => "the window given by [output] extremes_window or --extremes-window",

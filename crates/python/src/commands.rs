@@ -135,8 +135,8 @@ pub(crate) fn track_profile(
     if let Some(band) = band {
         settings.band = band;
     }
-    let request = study::track_profile::ProfileRequest { settings, spacing };
+    let request = report::track_profile::ProfileRequest { settings, spacing };
     request.validate().map_err(to_python)?;
-    let sample = study::track_profile::sample_profile(request).map_err(to_python)?;
+    let sample = report::track_profile::sample_profile(request).map_err(to_python)?;
     Ok((sample.profile_csv(), sample.psd_csv(), json(&sample.summary())?))
 }

@@ -6,9 +6,9 @@ use crate::errors::to_python;
 use crate::interruptible;
 use crate::scenario_input::{Source, overrides};
 use pyo3::prelude::*;
+use report::run_output::{histories_csv, recording, run_with_snapshots, snapshot_requests, snapshots_csv};
+use report::run_summary::RunSummary;
 use scenario::overrides::Overrides;
-use study::run_output::{histories_csv, recording, run_with_snapshots, snapshot_requests, snapshots_csv};
-use study::run_summary::RunSummary;
 
 /// What a run returns to Python: the summary (JSON text, as `frictrack run --format json`), `histories.csv`,
 /// `snapshots.csv`, `wheels.csv` (None without vehicles) and the warnings the command line prints.
@@ -38,10 +38,10 @@ pub(crate) fn run(
         let (result, snapshots) = run_with_snapshots(&case, &requests, Some(stop), &|f| told.set(f))?;
         let summary = RunSummary::of(&scenario, &case, &result, started.elapsed().as_secs_f64())?;
         let after: Vec<String> =
-            study::result_warnings::result_warnings(&case, &summary).iter().map(ToString::to_string).collect();
+            report::result_warnings::result_warnings(&case, &summary).iter().map(ToString::to_string).collect();
         let json = serde_json::to_string_pretty(&summary)
             .map_err(|e| scenario::error::StudyError::Io { path: "summary".into(), message: e.to_string() })?;
-        let wheels = result.vehicles.as_ref().map(study::vehicle_output::wheels_csv);
+        let wheels = result.vehicles.as_ref().map(report::vehicle_output::wheels_csv);
         Ok::<_, scenario::error::StudyError>((json, histories_csv(&result), snapshots_csv(&snapshots), wheels, after))
     })?;
     let (json, histories, snapshots, wheels, after) = outcome.map_err(to_python)?;
@@ -66,9 +66,9 @@ pub(crate) fn trains() -> Vec<String> {
 #[pyfunction]
 pub(crate) fn columns() -> Vec<(&'static str, Vec<(&'static str, &'static str)>)> {
     vec![
-        ("histories", study::run_output::HISTORY_COLUMNS.to_vec()),
-        ("snapshots", study::run_output::SNAPSHOT_COLUMNS.to_vec()),
-        ("wheels", study::vehicle_output::WHEEL_COLUMNS.to_vec()),
+        ("histories", report::run_output::HISTORY_COLUMNS.to_vec()),
+        ("snapshots", report::run_output::SNAPSHOT_COLUMNS.to_vec()),
+        ("wheels", report::vehicle_output::WHEEL_COLUMNS.to_vec()),
         ("stationary_wave", study::stationary_output::WAVE_COLUMNS.to_vec()),
     ]
 }

@@ -3,9 +3,9 @@
 //! summarised. Deflections (m, from the settled rail, magnitudes for peaks), positions s = x − x_load (m), energies
 //! (J).
 
-use crate::plot::{PlotSpec, Series, Stroke};
 use fem_beam::reference::InfiniteBeam;
 use fem_beam::{AbsorbingZones, BeamModel, Foundation, Mesh, Support, Supports};
+use report::plot::{PlotSpec, Series, Stroke};
 use scenario::error::{Result, invalid};
 use scenario::{CoMovingSection, Scenario};
 use serde::Serialize;
@@ -70,7 +70,7 @@ pub struct CoMovingSummary {
     /// With vehicles: wheel forces, losses of contact and body accelerations over the run (positions on the track,
     /// m from where the window started).
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub vehicles: Option<crate::vehicle_output::VehicleReport>,
+    pub vehicles: Option<report::vehicle_output::VehicleReport>,
 }
 
 /// The co-moving window's length where neither the scenario nor the wave asks for more (m).
@@ -200,18 +200,18 @@ pub fn run(scenario: &Scenario, section: &CoMovingSection) -> Result<(CoMovingSu
         vehicles: result.vehicles.as_ref().map(|v| {
             let contact =
                 run_settings.moving.load.vehicles().map_or("", track::vehicle::consist::VehicleSettings::contact_name);
-            crate::vehicle_output::VehicleReport::of(v, contact, None)
+            report::vehicle_output::VehicleReport::of(v, contact, None)
         }),
     };
     Ok((summary, result))
 }
 
 /// Columns of the window's last wave (`wave.csv`): s = x − vt (m) and the deflection (m, upward).
-pub const WAVE_COLUMNS: [crate::columns::Column; 2] = [("s", "m"), ("deflection", "m")];
+pub const WAVE_COLUMNS: [report::columns::Column; 2] = [("s", "m"), ("deflection", "m")];
 
 /// The window's last wave as CSV ([`WAVE_COLUMNS`]).
 pub fn wave_csv(result: &track::co_moving::CoMovingResult) -> String {
-    let mut csv = crate::columns::header(&WAVE_COLUMNS) + "\n";
+    let mut csv = report::columns::header(&WAVE_COLUMNS) + "\n";
     for (s, w) in &result.wave {
         csv.push_str(&format!("{s},{w}\n"));
     }

@@ -1,9 +1,9 @@
-//! The stationary solver's tables as CSV, in the units convention of [`crate::columns`]: a wave's shape along the
+//! The stationary solver's tables as CSV, in the units convention of [`report::columns`]: a wave's shape along the
 //! moving coordinate, and the points of a speed sweep (one row per speed, the JSON keys of
 //! [`StationaryPoint`] as column names).
 
-use crate::columns::{Column, header};
 use crate::stationary_output::StationaryPoint;
+use report::columns::{Column, header};
 use stationary::StationaryWave;
 
 /// Columns of a wave's shape: s = x − vt, deflection (upward), slope, sagging moment, the soil's reaction and the

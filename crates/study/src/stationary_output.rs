@@ -6,7 +6,7 @@
 
 pub use crate::stationary_csv::{POINT_COLUMNS, WAVE_COLUMNS, points_csv, wave_csv};
 
-use crate::plot::{PlotSpec, Series, Stroke};
+use report::plot::{PlotSpec, Series, Stroke};
 use scenario::Scenario;
 use scenario::error::Result;
 use serde::Serialize;

@@ -106,7 +106,7 @@ fn on_a_span_the_critical_speeds_are_the_resonance_speeds() {
     assert_eq!(data.plots.len(), 6);
     // The per-train figures draw the ten trains in ten hues.
     for spec in data.plots.iter().filter(|p| p.stem.starts_with("hslm-deflection") || p.stem.starts_with("hslm-acc")) {
-        assert_eq!(spec.palette, study::plot::Palette::Ten, "{}", spec.stem);
+        assert_eq!(spec.palette, report::plot::Palette::Ten, "{}", spec.stem);
         let mut colours: Vec<usize> = spec.series.iter().filter(|s| s.label.is_some()).map(|s| s.color).collect();
         colours.dedup();
         assert_eq!(colours, (0..10).collect::<Vec<_>>(), "{}", spec.stem);

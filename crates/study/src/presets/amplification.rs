@@ -2,8 +2,8 @@
 //! f_u ∈ {1, 2} kN/m (docs/theory.md §6–§7).
 
 use super::{StudyData, blank, keep_finished, nothing_finished, with_distributed};
-use crate::figures::quantity_figure;
 use crate::metrics::{amplification, static_midspan};
+use report::figures::quantity_figure;
 use runner::Runner;
 use scenario::Scenario;
 use scenario::error::Result;
@@ -81,7 +81,7 @@ fn figures(
     results: &[(f64, f64, Vec<crate::metrics::Amplification>)],
     speeds: &[f64],
     reference: crate::metrics::StaticReference,
-) -> Vec<crate::plot::PlotSpec> {
+) -> Vec<report::plot::PlotSpec> {
     let subtitle = format!(
         "w_sta = {:.2} mm, M_sta = {:.2} kN·m: mid-span static deflection and moment, load at mid-span, no friction",
         reference.deflection.abs() * 1e3,
@@ -122,7 +122,7 @@ fn figures(
             // The slow runs' curves nearly coincide (50 and 100 m/s): every second one dashed, so both show.
             for (k, series) in plot.series.iter_mut().enumerate() {
                 if k % 2 == 1 {
-                    series.stroke = crate::plot::Stroke::Dashed;
+                    series.stroke = report::plot::Stroke::Dashed;
                 }
             }
             plots.push(plot);

@@ -2,8 +2,8 @@
 //! of the three speed studies (devices, equal cost, distributed friction).
 
 use super::{StudyData, StudyFailure, blank, failed_runs, mean_iterations};
-use crate::figures::{DeflectionCurve, deflection_figure, quantity_figure};
-use crate::plot::PlotSpec;
+use report::figures::{DeflectionCurve, deflection_figure, quantity_figure};
+use report::plot::PlotSpec;
 use runner::{CriticalSpeed, PeakLocation, Runner, SweepPoint, SweepRow, critical_speed, finished};
 use scenario::Scenario;
 use scenario::error::{Result, invalid};

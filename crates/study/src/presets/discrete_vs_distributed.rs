@@ -2,8 +2,8 @@
 //! the friction mobilised (force over capacity) side by side (docs/theory.md §7).
 
 use super::{StudyData, StudyFailure, blank, keep_finished, nothing_finished, with_devices, with_distributed};
-use crate::figures::quantity_figure;
-use crate::plot::PlotSpec;
+use report::figures::quantity_figure;
+use report::plot::PlotSpec;
 use runner::Runner;
 use scenario::Scenario;
 use scenario::error::Result;
@@ -142,7 +142,7 @@ fn figures(runs: &[ModelRun], speed: f64) -> Vec<PlotSpec> {
             );
             // The two histories lie on each other (0.44 % apart): the second dashed, so that both show.
             if let Some(second) = plot.series.get_mut(1) {
-                second.stroke = crate::plot::Stroke::Dashed;
+                second.stroke = report::plot::Stroke::Dashed;
                 plot.subtitle = "the distributed friction dashed over the devices: the two curves coincide".into();
             }
             plot

@@ -3,7 +3,7 @@
 
 use super::curves::{Curves, curves_study};
 use super::{Resolution, StudyData, with_devices};
-use crate::figures::device_color;
+use report::figures::device_color;
 use runner::Runner;
 use scenario::Scenario;
 use scenario::error::Result;

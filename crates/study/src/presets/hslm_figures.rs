@@ -5,7 +5,7 @@
 //! limit drawn for reference.
 
 use super::hslm::{KMH, Results, TrainCurve, coach_length, millimetres};
-use crate::plot::{Mark, Palette, PlotSpec, Series, Stroke};
+use report::plot::{Mark, Palette, PlotSpec, Series, Stroke};
 use runner::SweepPoint;
 
 const SPEED_AXIS: &str = "train speed v (km/h)";

@@ -24,7 +24,7 @@ mod stationary_wave_figures;
 mod table;
 mod vehicle_speed;
 
-use crate::plot::PlotSpec;
+use report::plot::PlotSpec;
 use runner::{Runner, SweepPoint, SweepRow};
 use scenario::error::{Result, StudyError, invalid};
 use scenario::speeds::SpeedScale;

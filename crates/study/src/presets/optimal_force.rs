@@ -2,7 +2,7 @@
 //! 1 kN–10 MN, then golden section around the best (docs/theory.md §7).
 
 use super::{Resolution, StudyData, StudyFailure, blank, mean_iterations, nothing_finished, with_devices};
-use crate::figures::{DeflectionCurve, deflection_figure, device_color};
+use report::figures::{DeflectionCurve, deflection_figure, device_color};
 use runner::{OptimalForce, Runner, SweepPoint, log_spaced, refine_from_scan};
 use scenario::Scenario;
 use scenario::error::{Result, invalid};

@@ -3,9 +3,9 @@
 
 use super::curves::Curves;
 use super::stationary_wave::{FRICTION, InfiniteCritical, InfiniteCurve};
-use crate::figures::{DeflectionCurve, deflection_figure};
-use crate::plot::{Mark, PanelY, PlotSpec, Series, Stroke};
 use crate::stationary_output::StationaryPoint;
+use report::figures::{DeflectionCurve, deflection_figure};
+use report::plot::{Mark, PanelY, PlotSpec, Series, Stroke};
 use scenario::Scenario;
 
 const SPEED: &str = "load speed v (m/s)";

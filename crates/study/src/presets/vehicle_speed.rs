@@ -14,7 +14,7 @@
 
 use super::hslm::friction_setups;
 use super::{Resolution, StudyData, as_long_track, blank, failed_runs, mean_iterations};
-use crate::plot::{PlotSpec, Series, Stroke};
+use report::plot::{PlotSpec, Series, Stroke};
 use runner::{Runner, SweepPoint, SweepRow, finished};
 use scenario::error::Result;
 use scenario::number::row_with_gaps;

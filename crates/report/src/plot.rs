@@ -118,7 +118,7 @@ pub enum Palette {
     /// One distinct colour per configuration ([`color`]): 0 = no friction, black.
     #[default]
     Categorical,
-    /// Ten members told apart by hue (Tableau 10, matplotlib's default cycle; [`TEN`]), e.g. HSLM-A1 … A10 drawn
+    /// Ten members told apart by hue (Tableau 10, matplotlib's default cycle; `TEN`), e.g. HSLM-A1 … A10 drawn
     /// together: a sequential map left neighbours alike (A5 … A8) and seven colours made three trains repeat. Indices
     /// from 10 on take the categorical colour of i − 10.
     Ten,

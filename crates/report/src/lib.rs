@@ -1,0 +1,27 @@
+//! # report: what a run or a sweep reports, as typed values, files and figures (docs/theory.md §7–§12)
+//!
+//! - [`run_summary`]: one run's typed summary — what ran, extremes, static envelope and amplification, energy
+//!   ledger, solver statistics, vehicles, soil — the names of `run --format json`; [`result_warnings`]: a result
+//!   outside the model's validity.
+//! - [`run_output`], [`vehicle_output`], [`soil_output`]: a run's histories, snapshots, wheels and lift-off as CSV
+//!   and figures; [`mesh_ripple`]: the element period in a wheel force.
+//! - [`sweep_figures`]: the figures of a speed sweep, and its CSV read back; [`tables`]: reading CSV files back;
+//!   [`columns`]: one convention for the units of every column.
+//! - [`track_profile`]: a sample of a random rail profile with its periodogram against the target spectrum.
+//! - [`plot`] (with [`axis_grid`], [`typeset`] and the common figure shapes of [`figures`]): line plots as PNG and
+//!   SVG, drawn with plotters and a bundled DejaVu font.
+
+pub mod axis_grid;
+pub mod columns;
+pub mod figures;
+pub mod mesh_ripple;
+pub mod plot;
+pub mod result_warnings;
+pub mod run_output;
+pub mod run_summary;
+pub mod soil_output;
+pub mod sweep_figures;
+pub mod tables;
+pub mod track_profile;
+pub mod typeset;
+pub mod vehicle_output;
