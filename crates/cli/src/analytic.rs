@@ -41,7 +41,7 @@ pub struct SpeedChoice {
         conflicts_with = "speeds",
         required_unless_present = "speeds",
         allow_negative_numbers = true,
-        value_parser = crate::units::parse_speed
+        value_parser = scenario::units::parse_speed
     )]
     speed: Option<f64>,
     /// Speed range A:B:STEP (m/s; or all three in km/h with `A:B:STEPkm/h`), in order.
@@ -66,7 +66,7 @@ impl SpeedChoice {
 /// (inclusive up to round-off), in m/s.
 pub fn parse_range(text: &str) -> Result<Vec<f64>> {
     let bad = |allowed: &str| scenario::error::invalid("--speeds", text, allowed);
-    let (numbers, factor) = crate::units::split_speed_unit(text);
+    let (numbers, factor) = scenario::units::split_speed_unit(text);
     let parts: Vec<&str> = numbers.split(':').collect();
     if parts.len() != 3 {
         return Err(bad("expected A:B:STEP (m/s), e.g. 10:300:5").into());

@@ -20,7 +20,6 @@ mod study_cmd;
 mod sweep;
 mod track_profile;
 mod trains;
-mod units;
 mod window_wording;
 
 use clap::{Parser, Subcommand, ValueEnum};

@@ -50,13 +50,8 @@ pub struct SweepArgs {
 
 /// Execute `frictrack sweep`.
 pub fn run(args: &SweepArgs) -> Result<()> {
-    if args.scenario.speed.is_some() {
-        return Err(invalid(
-            "--speed",
-            args.scenario.speed.unwrap_or_default(),
-            "sweep runs many speeds: give --speeds A:B:STEP",
-        )
-        .into());
+    if let Some(speed) = args.scenario.flags.number("speed") {
+        return Err(invalid("--speed", speed, "sweep runs many speeds: give --speeds A:B:STEP").into());
     }
     let scenario = args.scenario.load()?;
     let case = scenario.build()?;

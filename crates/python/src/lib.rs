@@ -29,6 +29,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("InputError", m.py().get_type::<errors::InputError>())?;
     m.add_function(wrap_pyfunction!(run::run, m)?)?;
     m.add_function(wrap_pyfunction!(run::override_names, m)?)?;
+    m.add_function(wrap_pyfunction!(run::override_table, m)?)?;
     m.add_function(wrap_pyfunction!(run::trains, m)?)?;
     m.add_function(wrap_pyfunction!(run::columns, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep, m)?)?;

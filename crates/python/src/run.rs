@@ -8,7 +8,7 @@ use crate::scenario_input::{Source, overrides};
 use pyo3::prelude::*;
 use report::run_output::{histories_csv, recording, run_with_snapshots, snapshot_requests, snapshots_csv};
 use report::run_summary::RunSummary;
-use scenario::overrides::Overrides;
+use scenario::overrides::{OVERRIDES, OverrideKind};
 
 /// What a run returns to Python: the summary (JSON text, as `frictrack run --format json`), `histories.csv`,
 /// `snapshots.csv`, `wheels.csv` (None without vehicles) and the warnings the command line prints.
@@ -52,7 +52,26 @@ pub(crate) fn run(
 /// The names `run` takes as keyword overrides (the command line's flags, with underscores).
 #[pyfunction]
 pub(crate) fn override_names() -> Vec<&'static str> {
-    Overrides::NAMES.to_vec()
+    OVERRIDES.iter().map(|o| o.name).collect()
+}
+
+/// The table of overrides as Python sees it: (keyword, type in the stubs, unit or "", what it sets) per override,
+/// in the table's order — what the package's docs and type stubs are held against.
+#[pyfunction]
+pub(crate) fn override_table() -> Vec<(&'static str, &'static str, &'static str, &'static str)> {
+    OVERRIDES
+        .iter()
+        .map(|o| {
+            let (python_type, unit) = match o.kind {
+                OverrideKind::Speed => ("Union[float, str]", "m/s"),
+                OverrideKind::Number { unit } => ("float", unit),
+                OverrideKind::Count => ("int", ""),
+                OverrideKind::Text | OverrideKind::Solver => ("str", ""),
+                OverrideKind::Pair { unit } => ("Sequence[float]", unit),
+            };
+            (o.name, python_type, unit, o.help)
+        })
+        .collect()
 }
 
 /// The train catalogue's names (`frictrack trains`).

@@ -5,7 +5,7 @@ use crate::errors::to_python;
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use scenario::Scenario;
-use scenario::overrides::{OverrideValue, Overrides};
+use scenario::overrides::{OverrideSpec, OverrideValue, Overrides};
 
 /// Where the scenario comes from.
 #[derive(Debug, Clone, PartialEq)]
@@ -48,7 +48,7 @@ impl Source {
 pub(crate) fn overrides(keywords: &[(String, Bound<'_, PyAny>)]) -> PyResult<Overrides> {
     let mut overrides = Overrides::default();
     for (name, value) in keywords {
-        Overrides::check_name(name).map_err(to_python)?;
+        OverrideSpec::named(name).map_err(to_python)?;
         overrides.set(name, value_of(name, value)?).map_err(to_python)?;
     }
     Ok(overrides)

@@ -3,6 +3,7 @@ input named, the GIL released while a run is in flight."""
 
 import json
 import os
+import re
 import subprocess
 import tempfile
 import threading
@@ -52,9 +53,10 @@ def same_table(table, csv_path):
         ([], {}),
         (["--train", "hslm-a1", "--speed", "80", "--elements", "100"], {"train": "hslm-a1", "speed": 80.0, "elements": 100}),
         (["--speed", "150", "--distributed-friction", "2000"], {"speed": 150.0, "distributed_friction": 2000.0}),
+        (["--speed", "288km/h", "--devices", "7", "--device-force", "2e4"], {"speed": "288km/h", "devices": 7, "device_force": 2e4}),
         ([str(EXAMPLES / "quarter-car-wheel-flat.toml")], {}),
     ],
-    ids=["reference", "train", "friction", "vehicle"],
+    ids=["reference", "train", "friction", "km/h", "vehicle"],
 )
 def test_a_run_is_the_command_lines_to_the_bit(args, kwargs):
     scenario = args[0] if args and args[0].endswith(".toml") else None
@@ -92,8 +94,10 @@ def test_bad_input_raises_input_error_naming_it():
         frictrack.run({"mesh": {"lenght": 100.0}})
     with pytest.raises(frictrack.InputError, match="speed"):
         frictrack.run(speed=-5.0)
-    with pytest.raises(frictrack.InputError, match='invalid speed = "fast": must be a number'):
+    with pytest.raises(frictrack.InputError, match='invalid speed = "fast": must be a speed: m/s .* or km/h'):
         frictrack.run(speed="fast")
+    with pytest.raises(frictrack.InputError, match='invalid theta = "0.5": must be a number'):
+        frictrack.run(theta="0.5")
     with pytest.raises(frictrack.InputError, match="devices"):
         frictrack.run(devices=2.5)
     with pytest.raises(frictrack.InputError, match="solver"):
@@ -137,6 +141,26 @@ def test_tables_carry_their_units_and_become_data_frames():
 def test_the_catalogue_and_the_keywords():
     assert frictrack.trains()[:2] == ["single", "hslm-a1"] and len(frictrack.trains()) == 11
     assert "distributed_friction" in frictrack.override_names()
+
+
+def test_the_docs_and_stubs_follow_the_table_of_overrides():
+    """`run`'s keywords in the type stubs, its docstring's units and the command line's help all come from one table:
+    a keyword added, renamed, retyped or given a unit there fails here until the docs say it too."""
+    table = frictrack.override_table()
+    assert [row[0] for row in table] == frictrack.override_names()
+    stubs = (Path(frictrack.__file__).parent / "__init__.pyi").read_text()
+    signature = stubs.split("def run(", 1)[1].split(") -> Run:", 1)[0]
+    keywords = re.findall(r"^    (\w+): ([^=]+) = \.\.\.,$", signature.split("*,", 1)[1], re.M)
+    assert keywords == [(name, python_type) for name, python_type, _, _ in table]
+    doc = " ".join(frictrack.run.__doc__.split())
+    for name, _, unit, _ in table:
+        assert f"``{name}``" in doc, name
+        if unit:
+            said = re.search(rf"``{name}`` \(([^)]*)\)", doc)
+            assert said and unit in said.group(1), f"{name}: the docstring must give its unit {unit}"
+    help_text = " ".join(subprocess.run([cli(), "run", "--help"], capture_output=True, text=True, check=True).stdout.split())
+    for name, _, _, what in table:
+        assert " ".join(what.split()) in help_text, name
 
 
 def test_ctrl_c_stops_a_run_within_a_step():

@@ -55,7 +55,7 @@ impl SoilSummary {
             lift.zones.iter().cloned().partition(|z| z.to >= read[0] && z.from <= read[1]);
         let largest = zones.iter().max_by(|a, b| a.largest_gap.total_cmp(&b.largest_gap));
         let settlement = match self_weight && foundation.stiffness > 0.0 {
-            true => model.beam().mass_per_length() * track::foundation_layout::GRAVITY / foundation.stiffness,
+            true => model.beam().mass_per_length() * fem_beam::GRAVITY / foundation.stiffness,
             false => 0.0,
         };
         Some(Self {

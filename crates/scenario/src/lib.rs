@@ -8,7 +8,8 @@
 //! - `build`: from the sections to the beam model, friction sections and run settings, each value checked and named
 //!   by its dotted path ([`Scenario::build`], [`Scenario::model`], [`Scenario::run_settings`]).
 //! - `parse`: TOML errors with file, line, column, the key's path and a "did you mean".
-//! - [`overrides`]: the command-line and Python overrides of a scenario's values.
+//! - [`overrides`]: the one table of the command-line flags and Python keywords that override a scenario's values;
+//!   [`units`]: speeds in m/s or km/h.
 //! - [`diagnostics`] and [`plausibility`]: refusals and warnings about a scenario before any run.
 //! - [`speeds`] and [`trains`]: the speed scale of a case (v_cr, default sweeps) and the train catalogue.
 //! - [`error`]: the error type of the crates above this one, every message naming the field, its value and what is
@@ -28,6 +29,7 @@ pub mod sections;
 pub mod speeds;
 mod stationary_problem;
 pub mod trains;
+pub mod units;
 pub mod vehicle;
 
 pub use error::{Result, StudyError};

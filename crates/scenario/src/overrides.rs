@@ -1,9 +1,224 @@
 //! What a command's flags (`--speed`, `--devices`, …) and the Python package's keyword arguments (`speed=`,
-//! `devices=`, …) set on top of a scenario: one mapping, by the same names, for both.
+//! `devices=`, …) set on top of a scenario: one table, [`OVERRIDES`], from which the command line builds its flags
+//! and help, Python checks its keywords, and a test holds the Python docs and type stubs against it; one mapping,
+//! [`Overrides::set`], for both.
 
 use crate::error::{Result, invalid};
+use crate::units::parse_speed;
 use crate::{AbsorbingZonesSection, DevicesSection, DistributedSection, Scenario};
 use nscd::SolverKind;
+
+/// The kind of value an override takes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum OverrideKind {
+    /// A speed: a number in m/s, or text with a unit (`100m/s`, `360km/h`).
+    Speed,
+    /// A number in `unit` ("" for a pure number).
+    Number {
+        /// The unit of the value ("" for none).
+        unit: &'static str,
+    },
+    /// A whole number ≥ 0.
+    Count,
+    /// Text (a train's catalogue name or CSV file).
+    Text,
+    /// A friction solver's name ([`SolverKind::name`]).
+    Solver,
+    /// Two numbers A, B (`A:B` on the command line, `[A, B]` in Python) in `unit`.
+    Pair {
+        /// The unit of both numbers.
+        unit: &'static str,
+    },
+}
+
+/// One override: its name (`name=` in Python, `--name` with dashes on the command line), its kind and what it does.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct OverrideSpec {
+    /// The Python keyword.
+    pub name: &'static str,
+    /// The command-line flag without its dashes: `name` with `_` written `-`.
+    pub flag: &'static str,
+    /// The kind of value.
+    pub kind: OverrideKind,
+    /// The value's placeholder in the command line's help: the name in capitals unless the value has a form.
+    pub placeholder: &'static str,
+    /// What it sets, one sentence without a final full stop (the command line's help, the Python docs).
+    pub help: &'static str,
+}
+
+/// Every override, in the order the help lists them.
+pub const OVERRIDES: [OverrideSpec; 15] = [
+    OverrideSpec {
+        name: "speed",
+        flag: "speed",
+        kind: OverrideKind::Speed,
+        placeholder: "SPEED",
+        help: "Load speed: m/s (`100`), or with a unit (`100m/s`, `360km/h`)",
+    },
+    OverrideSpec {
+        name: "train",
+        flag: "train",
+        kind: OverrideKind::Text,
+        placeholder: "NAME|FILE",
+        help: "A train instead of the single load: a catalogue name (see `frictrack trains`) or a CSV file of \
+               offset,force lines (m behind the first axle, N)",
+    },
+    OverrideSpec {
+        name: "devices",
+        flag: "devices",
+        kind: OverrideKind::Count,
+        placeholder: "DEVICES",
+        help: "Number of friction devices, evenly spaced at i·L/(N+1) and snapped to nodes",
+    },
+    OverrideSpec {
+        name: "device_force",
+        flag: "device-force",
+        kind: OverrideKind::Number { unit: "N" },
+        placeholder: "DEVICE_FORCE",
+        help: "Maximal force of one device F_u (N); required with --devices unless the scenario gives it",
+    },
+    OverrideSpec {
+        name: "distributed_friction",
+        flag: "distributed-friction",
+        kind: OverrideKind::Number { unit: "N/m" },
+        placeholder: "DISTRIBUTED_FRICTION",
+        help: "Distributed friction f_u (N/m)",
+    },
+    OverrideSpec {
+        name: "damping_ratio",
+        flag: "damping-ratio",
+        kind: OverrideKind::Number { unit: "" },
+        placeholder: "DAMPING_RATIO",
+        help: "Foundation damping ratio ζ = c_f/c_cr",
+    },
+    OverrideSpec {
+        name: "theta",
+        flag: "theta",
+        kind: OverrideKind::Number { unit: "" },
+        placeholder: "THETA",
+        help: "θ of the Moreau–Jean scheme, in [0.5, 1]",
+    },
+    OverrideSpec {
+        name: "elements",
+        flag: "elements",
+        kind: OverrideKind::Count,
+        placeholder: "ELEMENTS",
+        help: "Number of beam elements",
+    },
+    OverrideSpec {
+        name: "load_advance",
+        flag: "load-advance",
+        kind: OverrideKind::Number { unit: "m" },
+        placeholder: "LOAD_ADVANCE",
+        help: "Load advance per time step (m): h = advance / speed",
+    },
+    OverrideSpec {
+        name: "solver",
+        flag: "solver",
+        kind: OverrideKind::Solver,
+        placeholder: "SOLVER",
+        help: "Friction solver: auto (projection for sparse devices, interior point for dense sections), projection \
+               (nonsmooth Gauss–Seidel), interior-point (banded primal–dual) or clarabel (cross-check; slow for many \
+               sections)",
+    },
+    OverrideSpec {
+        name: "tolerance",
+        flag: "tolerance",
+        kind: OverrideKind::Number { unit: "" },
+        placeholder: "TOLERANCE",
+        help: "Relative tolerance of the friction law residual (relative to the largest free section velocity)",
+    },
+    OverrideSpec {
+        name: "steady_start",
+        flag: "steady-start",
+        kind: OverrideKind::Number { unit: "m" },
+        placeholder: "STEADY_START",
+        help: "Start from the analytic steady state with the load at this position (m) instead of at rest",
+    },
+    OverrideSpec {
+        name: "static_start",
+        flag: "static-start",
+        kind: OverrideKind::Number { unit: "m" },
+        placeholder: "STATIC_START",
+        help: "Start in the static equilibrium of the loads (and vehicles) standing with the first at this position \
+               (m): no drop of vehicles into a soft track's trough as they enter",
+    },
+    OverrideSpec {
+        name: "absorbing_zones",
+        flag: "absorbing-zones",
+        kind: OverrideKind::Number { unit: "m" },
+        placeholder: "ABSORBING_ZONES",
+        help: "Absorbing end zones of this length (m), foundation damping graded up to c_cr",
+    },
+    OverrideSpec {
+        name: "extremes_window",
+        flag: "extremes-window",
+        kind: OverrideKind::Pair { unit: "m" },
+        placeholder: "A:B",
+        help: "Load positions A:B (m) over which the \"window\" extremes are reported beside the whole-run ones; \
+               default the middle third of the beam",
+    },
+];
+
+impl OverrideSpec {
+    /// The override named `name`, or an error naming every one (before its value is looked at: `co_moving=True` was
+    /// told its value must be a number).
+    pub fn named(name: &str) -> Result<&'static OverrideSpec> {
+        OVERRIDES.iter().find(|o| o.name == name).ok_or_else(|| {
+            let names: Vec<&str> = OVERRIDES.iter().map(|o| o.name).collect();
+            invalid("override", name, format!("is not one of {}", names.join(", ")))
+        })
+    }
+}
+
+impl OverrideSpec {
+    /// A number (m/s for a speed, which may also be text with its unit).
+    fn number(&self, value: &OverrideValue) -> Result<f64> {
+        match (self.kind, value) {
+            (_, OverrideValue::Number(x)) => Ok(*x),
+            (OverrideKind::Speed, OverrideValue::Text(t)) => parse_speed(t)
+                .map_err(|_| invalid(self.name, value, "must be a speed: m/s (100, \"100m/s\") or km/h (\"360km/h\")")),
+            (OverrideKind::Speed, _) => {
+                Err(invalid(self.name, value, "must be a speed: a number (m/s) or text with its unit"))
+            }
+            _ => Err(invalid(self.name, value, "must be a number")),
+        }
+    }
+
+    /// A whole number ≥ 0.
+    fn count(&self, value: &OverrideValue) -> Result<usize> {
+        let x = self.number(value)?;
+        match x >= 0.0 && x.fract() == 0.0 && x <= u32::MAX as f64 {
+            true => Ok(x as usize),
+            false => Err(invalid(self.name, x, "must be a whole number ≥ 0")),
+        }
+    }
+
+    /// Text.
+    fn text(&self, value: &OverrideValue) -> Result<String> {
+        match value {
+            OverrideValue::Text(t) => Ok(t.clone()),
+            other => Err(invalid(self.name, other, "must be text")),
+        }
+    }
+
+    /// A solver by its name.
+    fn solver(&self, value: &OverrideValue) -> Result<SolverKind> {
+        let given = self.text(value)?;
+        let names = SolverKind::ALL.map(SolverKind::name);
+        given
+            .parse::<SolverKind>()
+            .map_err(|_| invalid(self.name, &given, format!("must be one of {}", names.join(", "))))
+    }
+
+    /// Two numbers.
+    fn pair(&self, value: &OverrideValue) -> Result<[f64; 2]> {
+        match value {
+            OverrideValue::Pair(pair) => Ok(*pair),
+            other => Err(invalid(self.name, other, "must be two load positions [A, B] (m)")),
+        }
+    }
+}
 
 /// Overrides of a scenario, each `None` unless given.
 #[derive(Debug, Clone, Default, PartialEq)]
@@ -62,79 +277,29 @@ impl std::fmt::Display for OverrideValue {
 }
 
 impl Overrides {
-    /// Every override's name, as `--name` with dashes on the command line and `name=` in Python.
-    pub const NAMES: [&'static str; 15] = [
-        "speed",
-        "train",
-        "devices",
-        "device_force",
-        "distributed_friction",
-        "damping_ratio",
-        "theta",
-        "elements",
-        "load_advance",
-        "solver",
-        "tolerance",
-        "steady_start",
-        "static_start",
-        "absorbing_zones",
-        "extremes_window",
-    ];
-
-    /// Refuse a name that is no override, naming every one (before its value is looked at: `co_moving=True` was
-    /// told its value must be a number).
-    pub fn check_name(name: &str) -> Result<()> {
-        match Self::NAMES.contains(&name) {
-            true => Ok(()),
-            false => Err(invalid("override", name, format!("is not one of {}", Self::NAMES.join(", ")))),
-        }
-    }
-
-    /// Set the override `name` to `value`; an unknown name or a value of the wrong kind is an error naming it.
+    /// Set the override `name` to `value`: an unknown name, or a value not of the override's kind, is an error naming
+    /// it, the value and what is allowed.
     pub fn set(&mut self, name: &str, value: OverrideValue) -> Result<()> {
-        let number = |v: &OverrideValue| match v {
-            OverrideValue::Number(x) => Ok(*x),
-            other => Err(invalid(name, other, "must be a number")),
-        };
-        let count = |v: &OverrideValue| {
-            let x = number(v)?;
-            match x >= 0.0 && x.fract() == 0.0 && x <= u32::MAX as f64 {
-                true => Ok(x as usize),
-                false => Err(invalid(name, x, "must be a whole number ≥ 0")),
-            }
-        };
-        let text = |v: &OverrideValue| match v {
-            OverrideValue::Text(t) => Ok(t.clone()),
-            other => Err(invalid(name, other, "must be text")),
-        };
-        match name {
-            "speed" => self.speed = Some(number(&value)?),
-            "train" => self.train = Some(text(&value)?),
-            "devices" => self.devices = Some(count(&value)?),
-            "device_force" => self.device_force = Some(number(&value)?),
-            "distributed_friction" => self.distributed_friction = Some(number(&value)?),
-            "damping_ratio" => self.damping_ratio = Some(number(&value)?),
-            "theta" => self.theta = Some(number(&value)?),
-            "elements" => self.elements = Some(count(&value)?),
-            "load_advance" => self.load_advance = Some(number(&value)?),
-            "solver" => {
-                let given = text(&value)?;
-                let names = SolverKind::ALL.map(SolverKind::name);
-                self.solver = Some(
-                    given
-                        .parse::<SolverKind>()
-                        .map_err(|_| invalid(name, &given, format!("must be one of {}", names.join(", "))))?,
-                );
-            }
-            "tolerance" => self.tolerance = Some(number(&value)?),
-            "steady_start" => self.steady_start = Some(number(&value)?),
-            "static_start" => self.static_start = Some(number(&value)?),
-            "absorbing_zones" => self.absorbing_zones = Some(number(&value)?),
-            "extremes_window" => match value {
-                OverrideValue::Pair(pair) => self.extremes_window = Some(pair),
-                other => return Err(invalid(name, other, "must be two load positions [A, B] (m)")),
-            },
-            unknown => return Self::check_name(unknown),
+        let spec = OverrideSpec::named(name)?;
+        let number = || spec.number(&value);
+        let count = || spec.count(&value);
+        match spec.name {
+            "speed" => self.speed = Some(number()?),
+            "train" => self.train = Some(spec.text(&value)?),
+            "devices" => self.devices = Some(count()?),
+            "device_force" => self.device_force = Some(number()?),
+            "distributed_friction" => self.distributed_friction = Some(number()?),
+            "damping_ratio" => self.damping_ratio = Some(number()?),
+            "theta" => self.theta = Some(number()?),
+            "elements" => self.elements = Some(count()?),
+            "load_advance" => self.load_advance = Some(number()?),
+            "solver" => self.solver = Some(spec.solver(&value)?),
+            "tolerance" => self.tolerance = Some(number()?),
+            "steady_start" => self.steady_start = Some(number()?),
+            "static_start" => self.static_start = Some(number()?),
+            "absorbing_zones" => self.absorbing_zones = Some(number()?),
+            "extremes_window" => self.extremes_window = Some(spec.pair(&value)?),
+            other => return Err(invalid("override", other, "is in the table of overrides but sets nothing")),
         }
         Ok(())
     }
@@ -234,10 +399,52 @@ mod tests {
         assert!(unknown.contains("sped") && unknown.contains("speed"), "{unknown}");
         let fractional = o.set("devices", OverrideValue::Number(3.5)).unwrap_err().to_string();
         assert!(fractional.contains("devices") && fractional.contains("whole"), "{fractional}");
-        let text = o.set("speed", OverrideValue::Text("fast".into())).unwrap_err().to_string();
-        assert!(text.contains("speed") && text.contains("number"), "{text}");
+        let text = o.set("device_force", OverrideValue::Text("strong".into())).unwrap_err().to_string();
+        assert!(text.contains("device_force") && text.contains("number"), "{text}");
         let scenario = o.apply(Scenario { title: "case".into(), ..Scenario::default() });
         assert_eq!(scenario.load.speed, 150.0);
         assert_eq!(scenario.title, "case (run with --speed 150 --devices 31)");
+    }
+
+    /// A value of `kind` that is not the default of its field.
+    fn sample(kind: OverrideKind) -> OverrideValue {
+        match kind {
+            OverrideKind::Speed | OverrideKind::Number { .. } | OverrideKind::Count => OverrideValue::Number(3.0),
+            OverrideKind::Text => OverrideValue::Text("hslm-a1".into()),
+            OverrideKind::Solver => OverrideValue::Text("clarabel".into()),
+            OverrideKind::Pair { .. } => OverrideValue::Pair([1.0, 2.0]),
+        }
+    }
+
+    #[test]
+    fn every_override_of_the_table_sets_its_own_field_and_is_spelled_alike_everywhere() {
+        let mut names = std::collections::BTreeSet::new();
+        for spec in &OVERRIDES {
+            assert!(names.insert(spec.name), "{} listed twice", spec.name);
+            assert_eq!(spec.flag, spec.name.replace('_', "-"), "the flag of {} is its name with dashes", spec.name);
+            assert!(!spec.help.ends_with('.') && !spec.help.contains("  "), "help of {}: {:?}", spec.name, spec.help);
+            let form = spec.placeholder.contains([':', '|']);
+            assert!(form || spec.placeholder == spec.name.to_uppercase(), "placeholder of {}", spec.name);
+            let mut o = Overrides::default();
+            o.set(spec.name, sample(spec.kind)).unwrap();
+            assert_ne!(o, Overrides::default(), "{} sets nothing", spec.name);
+            // Exactly one field: setting a second override changes the value again.
+            let mut twice = o.clone();
+            twice.set(spec.name, sample(spec.kind)).unwrap();
+            assert_eq!(twice, o);
+        }
+    }
+
+    #[test]
+    fn a_speed_may_carry_its_unit_and_other_numbers_may_not() {
+        let mut o = Overrides::default();
+        o.set("speed", OverrideValue::Text("360km/h".into())).unwrap();
+        assert_eq!(o.speed, Some(100.0));
+        o.set("speed", OverrideValue::Text("120 m/s".into())).unwrap();
+        assert_eq!(o.speed, Some(120.0));
+        let bad = o.set("speed", OverrideValue::Text("fast".into())).unwrap_err().to_string();
+        assert!(bad.contains("speed") && bad.contains("fast") && bad.contains("km/h"), "{bad}");
+        let not_a_speed = o.set("theta", OverrideValue::Text("0.5".into())).unwrap_err().to_string();
+        assert!(not_a_speed.contains("theta") && not_a_speed.contains("number"), "{not_a_speed}");
     }
 }

@@ -17,8 +17,9 @@
 use crate::error::{Result, StationaryError};
 use crate::far_field::{EndRelation, FarField};
 use crate::friction::{FrictionSections, JENKINS_RATIO};
-use crate::problem::{GRAVITY, StationaryProblem};
+use crate::problem::StationaryProblem;
 use banded::general::{GeneralBanded, GeneralLu};
+use fem_beam::GRAVITY;
 use fem_beam::element::hermite;
 
 /// One soil section: its element, its row Ψ(ξ) over the element's four DOFs, its spring (N/m) and place s (m).

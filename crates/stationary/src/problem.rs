@@ -2,10 +2,7 @@
 
 use crate::error::{Result, invalid};
 use fem_beam::reference::InfiniteBeam;
-use fem_beam::{Beam, Foundation};
-
-/// Standard gravity g (m/s²) for the self-weight.
-pub const GRAVITY: f64 = 9.81;
+use fem_beam::{Beam, Foundation, GRAVITY};
 
 /// The domain in moving coordinates s = x − vt (m): from `behind` m behind the load to `ahead` m ahead, in
 /// elements of `element_length` m.

@@ -13,11 +13,8 @@ use crate::error::Result;
 use crate::placed::{PlacedInteractions, SectionKind};
 use crate::section_quadrature::{self, Quadrature, QuadratureSection};
 use crate::unilateral_statics::static_deflection;
-use fem_beam::{BeamModel, LoadVector};
+use fem_beam::{BeamModel, GRAVITY, LoadVector};
 use friction::Law;
-
-/// Standard gravity g (m/s²) for the self-weight.
-pub const GRAVITY: f64 = 9.81;
 
 /// The sections of a nonlinear foundation and its self-weight.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -23,8 +23,8 @@ from . import _native
 from ._tables import Table, parse_csv
 
 __all__ = [
-    "COLUMNS", "InputError", "Run", "Stationary", "Study", "Sweep", "Table", "analytic", "override_names", "run",
-    "stationary", "study", "sweep", "track_profile", "train", "trains", "__version__",
+    "COLUMNS", "InputError", "Run", "Stationary", "Study", "Sweep", "Table", "analytic", "override_names",
+    "override_table", "run", "stationary", "study", "sweep", "track_profile", "train", "trains", "__version__",
 ]
 
 InputError = _native.InputError
@@ -142,10 +142,11 @@ class Run:
 
 def run(scenario: ScenarioLike = None, *, progress: ProgressLike = None, **overrides: Any) -> Run:
     """Run ``scenario`` (a TOML file path, a TOML string, a dict with the file's keys, or ``None`` for the reference
-    case) with keyword ``overrides`` named as the command line's flags: ``speed`` (m/s), ``train`` (a catalogue name
-    or a CSV file), ``devices``, ``device_force`` (N), ``distributed_friction`` (N/m), ``damping_ratio``, ``theta``,
-    ``elements``, ``load_advance`` (m), ``solver``, ``tolerance``, ``steady_start``, ``static_start`` (m),
-    ``absorbing_zones`` (m), ``extremes_window`` ([A, B] m).
+    case) with keyword ``overrides`` named as the command line's flags: ``speed`` (m/s, or text with its unit such as
+    ``"360km/h"``), ``train`` (a catalogue name or a CSV file), ``devices``, ``device_force`` (N),
+    ``distributed_friction`` (N/m), ``damping_ratio``, ``theta``, ``elements``, ``load_advance`` (m), ``solver``,
+    ``tolerance``, ``steady_start`` (m), ``static_start`` (m), ``absorbing_zones`` (m), ``extremes_window``
+    ([A, B] m). :func:`override_table` says what each sets.
 
     The run is ``frictrack run SCENARIO --format json --out DIR``: mid-span is recorded when the scenario names no
     section. It releases the GIL (other threads run meanwhile) and stops within a step on Ctrl-C
@@ -295,3 +296,9 @@ def trains() -> "list[str]":
 def override_names() -> "list[str]":
     """The keyword overrides :func:`run` takes."""
     return list(_native.override_names())
+
+
+def override_table() -> "list[tuple[str, str, str, str]]":
+    """The keyword overrides with what they take and do: (keyword, type, unit or "", what it sets) each — the
+    command line's table of flags (``frictrack run --help`` prints the same sentences)."""
+    return [tuple(row) for row in _native.override_table()]

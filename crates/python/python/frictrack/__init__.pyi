@@ -58,7 +58,7 @@ class Sweep(Table):
 def run(
     scenario: ScenarioLike = None,
     *,
-    speed: float = ...,
+    speed: Union[float, str] = ...,
     train: str = ...,
     devices: int = ...,
     device_force: float = ...,
@@ -148,6 +148,9 @@ def track_profile(
 
 def trains() -> List[str]:
     """The train catalogue's names."""
+
+def override_table() -> List[Tuple[str, str, str, str]]:
+    """(keyword, type, unit or "", what it sets) per keyword override of :func:`run`."""
 
 def override_names() -> List[str]:
     """The keyword overrides `run` and `sweep` take."""

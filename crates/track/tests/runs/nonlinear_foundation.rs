@@ -24,7 +24,7 @@ fn run(model: &BeamModel, interactions: &PlacedInteractions, force: f64, speed: 
 /// The self-weight settlement q/k_c of the reference rail (m): the rail lifts off where the dynamic wave rises above it.
 fn settlement() -> f64 {
     let case = uic60_on_soft_soil();
-    case.beam.mass_per_length() * track::foundation_layout::GRAVITY / case.foundation.stiffness
+    case.beam.mass_per_length() * fem_beam::GRAVITY / case.foundation.stiffness
 }
 
 /// A rail that never rises above its settlement never leaves the soil: tensionless and bilinear soils are then the

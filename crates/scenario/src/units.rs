@@ -1,5 +1,5 @@
-//! Speeds on the command line in the unit the user thinks in: m/s (the default, and the unit of every output) or
-//! km/h, written after the number (`--speed 360km/h`, `--speeds 140:420:20km/h`).
+//! Speeds in the unit the user thinks in: m/s (the default, and the unit of every output) or km/h, written after the
+//! number — on the command line (`--speed 360km/h`, `--speeds 140:420:20km/h`) and in Python (`speed="360km/h"`).
 
 /// The units a speed may carry, with their factor to m/s.
 const SPEED_UNITS: [(&str, f64); 2] = [("km/h", 1.0 / 3.6), ("m/s", 1.0)];
@@ -13,7 +13,7 @@ pub fn split_speed_unit(text: &str) -> (&str, f64) {
         .unwrap_or((text, 1.0))
 }
 
-/// A speed in m/s from `100`, `100m/s` or `360km/h` (clap's value parser of `--speed`).
+/// A speed in m/s from `100`, `100m/s` or `360km/h`.
 pub fn parse_speed(text: &str) -> Result<f64, String> {
     let (number, factor) = split_speed_unit(text);
     number
