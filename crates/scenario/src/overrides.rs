@@ -47,7 +47,7 @@ pub struct OverrideSpec {
 }
 
 /// Every override, in the order the help lists them.
-pub const OVERRIDES: [OverrideSpec; 15] = [
+pub const OVERRIDES: [OverrideSpec; 16] = [
     OverrideSpec {
         name: "speed",
         flag: "speed",
@@ -111,6 +111,14 @@ pub const OVERRIDES: [OverrideSpec; 15] = [
         kind: OverrideKind::Number { unit: "m" },
         placeholder: "LOAD_ADVANCE",
         help: "Load advance per time step (m): h = advance / speed",
+    },
+    OverrideSpec {
+        name: "max_step",
+        flag: "max-step",
+        kind: OverrideKind::Number { unit: "s" },
+        placeholder: "MAX_STEP",
+        help: "Longest time step (s): h = min(advance / speed, max_step), for slow runs whose contact or deck needs a \
+               shorter step than the load advance gives",
     },
     OverrideSpec {
         name: "solver",
@@ -241,6 +249,8 @@ pub struct Overrides {
     pub elements: Option<usize>,
     /// Load advance per step (m).
     pub load_advance: Option<f64>,
+    /// Longest time step (s).
+    pub max_step: Option<f64>,
     /// Friction solver.
     pub solver: Option<SolverKind>,
     /// Relative tolerance of the friction law residual.
@@ -293,6 +303,7 @@ impl Overrides {
             "theta" => self.theta = Some(number()?),
             "elements" => self.elements = Some(count()?),
             "load_advance" => self.load_advance = Some(number()?),
+            "max_step" => self.max_step = Some(number()?),
             "solver" => self.solver = Some(spec.solver(&value)?),
             "tolerance" => self.tolerance = Some(number()?),
             "steady_start" => self.steady_start = Some(number()?),
@@ -339,6 +350,9 @@ impl Overrides {
         }
         if let Some(dx) = self.load_advance {
             s.integration.load_advance = dx;
+        }
+        if let Some(h) = self.max_step {
+            s.integration.max_step = Some(h);
         }
         if let Some(solver) = self.solver {
             s.integration.solver = solver;

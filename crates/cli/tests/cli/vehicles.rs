@@ -285,3 +285,19 @@ fn the_element_ripple_of_a_wheel_force_is_measured_and_warned_about() {
     assert!(measured[2].0 < 0.01 * q0 && !measured[2].2.contains("ripple"), "{}", measured[2].2);
     std::fs::remove_dir_all(&folder).unwrap();
 }
+
+/// A quarter car at 10 m/s is refused for its contact mode with the default load advance, and the refusal names the
+/// longest step that resolves it; `--max-step` (a row of the one table of overrides) reaches the run: the same file
+/// then runs on that step, the load advance kept.
+#[test]
+fn a_slow_quarter_car_runs_on_the_step_its_refusal_names() {
+    let example = concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/quarter-car-wheel-flat.toml");
+    let refused = frictrack(&["run", example, "--speed", "10", "--format", "json"]);
+    assert_eq!(refused.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&refused.stderr);
+    let named = stderr.split("integration.max_step ≤ ").nth(1).and_then(|t| t.split(' ').next()).unwrap();
+    let h: f64 = named.parse().unwrap();
+    let v = json(&frictrack(&["run", example, "--speed", "10", "--max-step", named, "--format", "json", "--quiet"]));
+    assert_eq!(v["time_step"].as_f64().unwrap(), h);
+    assert!(v["vehicles"]["wheels"][0]["min_force"].as_f64().unwrap() > 0.0);
+}

@@ -144,8 +144,8 @@ def run(scenario: ScenarioLike = None, *, progress: ProgressLike = None, **overr
     """Run ``scenario`` (a TOML file path, a TOML string, a dict with the file's keys, or ``None`` for the reference
     case) with keyword ``overrides`` named as the command line's flags: ``speed`` (m/s, or text with its unit such as
     ``"360km/h"``), ``train`` (a catalogue name or a CSV file), ``devices``, ``device_force`` (N),
-    ``distributed_friction`` (N/m), ``damping_ratio``, ``theta``, ``elements``, ``load_advance`` (m), ``solver``,
-    ``tolerance``, ``steady_start`` (m), ``static_start`` (m), ``absorbing_zones`` (m), ``extremes_window``
+    ``distributed_friction`` (N/m), ``damping_ratio``, ``theta``, ``elements``, ``load_advance`` (m), ``max_step``
+    (s), ``solver``, ``tolerance``, ``steady_start`` (m), ``static_start`` (m), ``absorbing_zones`` (m), ``extremes_window``
     ([A, B] m). :func:`override_table` says what each sets.
 
     The run is ``frictrack run SCENARIO --format json --out DIR``: mid-span is recorded when the scenario names no

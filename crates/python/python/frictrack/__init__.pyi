@@ -67,6 +67,7 @@ def run(
     theta: float = ...,
     elements: int = ...,
     load_advance: float = ...,
+    max_step: float = ...,
     solver: str = ...,
     tolerance: float = ...,
     steady_start: float = ...,
