@@ -134,6 +134,24 @@ impl Foundation {
         self.law.tension_ratio() * self.stiffness
     }
 
+    /// k_c − k_t (N/m²): the stiffness of the unilateral part (k_c − k_t)⟨−w⟩₊ that acts beside the linear k_t
+    /// (0 on a linear soil).
+    pub fn unilateral_stiffness(&self) -> f64 {
+        self.stiffness - self.tension_stiffness()
+    }
+
+    /// The soil's reaction on the rail per unit length at deflection w (m, upward positive), in N/m, upward positive:
+    /// −k_t·w + (k_c − k_t)⟨−w⟩₊ — −k_f·w on a linear soil, k_c⟨−w⟩₊ on a tensionless one (docs/theory.md §13).
+    pub fn reaction(&self, w: f64) -> f64 {
+        -self.tension_stiffness() * w + self.unilateral_stiffness() * (-w).max(0.0)
+    }
+
+    /// The energy stored in the soil per unit length at deflection w (J/m), the potential of [`Foundation::reaction`]:
+    /// ½k_t w² + ½(k_c − k_t) min(w, 0)².
+    pub fn potential(&self, w: f64) -> f64 {
+        0.5 * self.tension_stiffness() * w * w + 0.5 * self.unilateral_stiffness() * w.min(0.0).powi(2)
+    }
+
     /// Critical damping c_cr = 2√(k_f ρA) (N·s/m²); ≈ 7742 N·s/m² for the reference case.
     pub fn critical_damping(&self, beam: &Beam) -> f64 {
         2.0 * (self.stiffness * beam.mass_per_length()).sqrt()
@@ -195,5 +213,29 @@ impl Rayleigh {
         non_negative("damping.rayleigh.alpha", self.mass_coefficient)?;
         non_negative("damping.rayleigh.beta", self.stiffness_coefficient)?;
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Foundation, FoundationLaw};
+
+    /// The soil's reaction is −dP/dw of its potential on every law (central differences: the branches are quadratic,
+    /// so the difference is exact to round-off away from w = 0), and each law's reaction is the one its name says.
+    #[test]
+    fn the_reaction_is_the_potentials_derivative_and_each_law_says_what_it_is() {
+        let laws = [FoundationLaw::Linear, FoundationLaw::Tensionless, FoundationLaw::Bilinear { tension_ratio: 0.5 }];
+        for law in laws {
+            let soil = Foundation { stiffness: 2.5e5, law, ..Foundation::default() };
+            for w in [-3e-3, -1e-4, 2e-4, 5e-3] {
+                let d = 1e-7;
+                let slope = (soil.potential(w + d) - soil.potential(w - d)) / (2.0 * d);
+                assert!((soil.reaction(w) + slope).abs() <= 1e-9 * soil.stiffness * w.abs(), "{law:?} at {w}");
+            }
+            let (pressed, lifted) = (soil.reaction(-1e-3), soil.reaction(1e-3));
+            assert_eq!(pressed, 2.5e5 * 1e-3, "{law:?}: k_c in compression");
+            assert_eq!(lifted, -law.tension_ratio() * 2.5e5 * 1e-3, "{law:?}: α·k_c in tension");
+            assert_eq!(soil.unilateral_stiffness(), (1.0 - law.tension_ratio()) * 2.5e5);
+        }
     }
 }

@@ -133,7 +133,7 @@ impl MovingFrame {
                 close_end(&mut matrix, &mut rhs, 0, &far.behind, (ei, rho_v2), level, -1.0);
             }
         }
-        let unilateral = foundation.stiffness - k_t;
+        let unilateral = foundation.unilateral_stiffness();
         let sections = match problem.is_nonlinear() {
             true => (0..elements)
                 .flat_map(|e| {

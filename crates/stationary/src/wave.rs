@@ -118,9 +118,8 @@ impl StationaryWave {
         }
         moment.iter_mut().zip(&count).for_each(|(m, c)| *m /= c);
         let f = &problem.foundation;
-        let (k_c, k_t) = (f.stiffness, f.tension_stiffness());
-        let rest = -k_t * level + (k_c - k_t) * (-level).max(0.0);
-        let soil_reaction = (0..nodes).map(|i| -k_t * w[2 * i] + (k_c - k_t) * (-w[2 * i]).max(0.0) - rest).collect();
+        let rest = f.reaction(level);
+        let soil_reaction = (0..nodes).map(|i| f.reaction(w[2 * i]) - rest).collect();
         let mut lift_off: Vec<LiftOffZone> = Vec::new();
         let mut previous = false;
         for section in &frame.sections {
@@ -165,9 +164,8 @@ impl StationaryWave {
                 (spread(&mut (0..=rear_nodes), 0), spread(&mut (nodes - 1 - front_nodes..nodes), nodes - 1));
         }
         let stored = |u: f64| {
-            // e(W) = P(W) − P(W_far) + q (W − W_far), P(w) = ½k_t w² + ½(k_c − k_t) min(w, 0)², q = −k_c W_far.
-            let potential = |w: f64| 0.5 * k_t * w * w + 0.5 * (k_c - k_t) * w.min(0.0).powi(2);
-            potential(u) - potential(level) - k_c * level * (u - level)
+            // e(W) = P(W) − P(W_far) + q (W − W_far), P the soil's potential (Foundation::potential), q = −k_c W_far.
+            f.potential(u) - f.potential(level) - f.stiffness * level * (u - level)
         };
         let last = nodes - 2;
         let at_end = |element: usize| frame.sections.iter().any(|s| s.element == element && s.deflection(&w) > 0.0);

@@ -49,7 +49,7 @@ impl FoundationSections {
         if foundation.law.is_linear() {
             return Ok(PlacedInteractions::new());
         }
-        let unilateral = foundation.stiffness - foundation.tension_stiffness();
+        let unilateral = foundation.unilateral_stiffness();
         let sections = section_quadrature::sections(model, self.subdivisions, self.quadrature);
         let place = |gaps: Option<&[f64]>| {
             let mut set = PlacedInteractions::new();
