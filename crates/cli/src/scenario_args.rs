@@ -30,6 +30,7 @@ pub struct OverrideFlags {
 #[derive(Debug, Clone)]
 enum FlagValue {
     Number(f64),
+    Count(usize),
     Text(String),
 }
 
@@ -38,7 +39,7 @@ impl OverrideFlags {
     pub fn number(&self, name: &str) -> Option<f64> {
         self.given.iter().find(|(spec, _)| spec.name == name).and_then(|(_, v)| match v {
             FlagValue::Number(x) => Some(*x),
-            FlagValue::Text(_) => None,
+            FlagValue::Count(_) | FlagValue::Text(_) => None,
         })
     }
 }
@@ -83,7 +84,7 @@ impl clap::FromArgMatches for OverrideFlags {
                 OverrideKind::Speed | OverrideKind::Number { .. } => {
                     matches.get_one::<f64>(spec.name).map(|x| FlagValue::Number(*x))
                 }
-                OverrideKind::Count => matches.get_one::<usize>(spec.name).map(|n| FlagValue::Number(*n as f64)),
+                OverrideKind::Count => matches.get_one::<usize>(spec.name).map(|n| FlagValue::Count(*n)),
                 OverrideKind::Solver | OverrideKind::Text | OverrideKind::Pair { .. } => {
                     matches.get_one::<String>(spec.name).map(|t| FlagValue::Text(t.clone()))
                 }
@@ -120,6 +121,7 @@ impl ScenarioArgs {
         for (spec, value) in &self.flags.given {
             let value = match (spec.kind, value) {
                 (_, FlagValue::Number(x)) => OverrideValue::Number(*x),
+                (_, FlagValue::Count(n)) => OverrideValue::Count(*n),
                 (OverrideKind::Pair { .. }, FlagValue::Text(text)) => {
                     let flag = format!("--{}", spec.flag);
                     let bad = || scenario::error::invalid(&flag, text, "expected A:B, two load positions in m");

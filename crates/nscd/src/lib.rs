@@ -11,8 +11,9 @@
 //! - [`problem`]: the one-step [`InteractionProblem`] and its update phase (the step's law from the state).
 //! - [`moving`]: interactions whose rows are rebuilt every step (a wheel).
 //! - [`position`]: the position projection of rigid moving contacts after each step.
-//! - [`solver`]: projected Gauss–Seidel, a banded interior point, Clarabel (feature `clarabel`), chosen by
-//!   [`solver_choice`], each ending a step with a [`step_report`].
+//! - [`solver`]: projected Gauss–Seidel, a banded interior point, a parametric active set (homotopy) on a
+//!   regularised Coulomb law, Clarabel (feature `clarabel`), chosen by [`solver_choice`], each ending a
+//!   step with a [`step_report`].
 //! - [`fallback`]: the other solvers, tried in turn on a step the run's solver cannot solve.
 //! - [`stepper`]: [`MoreauJean`], one step at a time, with its [`EnergyLedger`] ([`ledger`]).
 

@@ -1,7 +1,7 @@
 //! From a scenario's sections to what the stepper runs: the beam model, the friction sections and the run
 //! settings, every value checked on the way and errors renamed to their dotted path in the file.
 
-use super::{Case, FoundationLawKind, QuadratureKind, Scenario, SweepSection, fnv1a};
+use super::{Case, DistributedSection, FoundationLawKind, QuadratureKind, Scenario, SweepSection, fnv1a};
 use crate::error::{Result, StudyError, invalid};
 use crate::number::number;
 use fem_beam::{AbsorbingZones, BeamModel, Foundation, FoundationLaw, Mesh};
@@ -240,13 +240,7 @@ impl Scenario {
             interactions.extend(devices.interactions(model).map_err(in_friction)?);
         }
         if let Some(d) = &self.friction.distributed {
-            let quadrature = match d.quadrature {
-                QuadratureKind::Trapezoid => Quadrature::Trapezoid,
-                QuadratureKind::Simpson => Quadrature::Simpson,
-            };
-            let distributed =
-                DistributedFriction { force_per_length: d.force_per_length, subdivisions: d.subdivisions, quadrature };
-            interactions.extend(distributed.interactions(model).map_err(in_friction)?);
+            interactions.extend(d.friction()?.interactions(model).map_err(in_friction)?);
         }
         Ok(interactions)
     }
@@ -339,6 +333,24 @@ fn under(section: &str, error: StudyError) -> StudyError {
 }
 
 /// A field error of the friction placed on the beam (e.g. `devices.count`), renamed to its path in `[friction]`.
+impl DistributedSection {
+    /// The ballast friction this section describes, checked and its errors named by their path in the file: the one
+    /// check that a run and the stationary solver share, so that both refuse the same value in the same words.
+    pub(crate) fn friction(&self) -> Result<DistributedFriction> {
+        let quadrature = match self.quadrature {
+            QuadratureKind::Trapezoid => Quadrature::Trapezoid,
+            QuadratureKind::Simpson => Quadrature::Simpson,
+        };
+        let friction = DistributedFriction {
+            force_per_length: self.force_per_length,
+            subdivisions: self.subdivisions,
+            quadrature,
+        };
+        friction.validate().map_err(in_friction)?;
+        Ok(friction)
+    }
+}
+
 fn in_friction(error: track::TrackError) -> StudyError {
     use track::TrackError as T;
     match error {

@@ -126,8 +126,8 @@ pub const OVERRIDES: [OverrideSpec; 16] = [
         kind: OverrideKind::Solver,
         placeholder: "SOLVER",
         help: "Friction solver: auto (projection for sparse devices, interior point for dense sections), projection \
-               (nonsmooth Gauss–Seidel), interior-point (banded primal–dual) or clarabel (cross-check; slow for many \
-               sections)",
+               (nonsmooth Gauss–Seidel), interior-point (banded primal–dual), homotopy (parametric active set on a \
+               regularised Coulomb law) or clarabel (cross-check; slow for many sections)",
     },
     OverrideSpec {
         name: "tolerance",
@@ -184,6 +184,7 @@ impl OverrideSpec {
     fn number(&self, value: &OverrideValue) -> Result<f64> {
         match (self.kind, value) {
             (_, OverrideValue::Number(x)) => Ok(*x),
+            (_, OverrideValue::Count(n)) => Ok(*n as f64),
             (OverrideKind::Speed, OverrideValue::Text(t)) => parse_speed(t)
                 .map_err(|_| invalid(self.name, value, "must be a speed: m/s (100, \"100m/s\") or km/h (\"360km/h\")")),
             (OverrideKind::Speed, _) => {
@@ -193,10 +194,14 @@ impl OverrideSpec {
         }
     }
 
-    /// A whole number ≥ 0.
+    /// A whole number ≥ 0 (one beyond `usize` becomes `usize::MAX`, which the scenario's own check refuses by its
+    /// path with the limit).
     fn count(&self, value: &OverrideValue) -> Result<usize> {
+        if let OverrideValue::Count(n) = value {
+            return Ok(*n);
+        }
         let x = self.number(value)?;
-        match x >= 0.0 && x.fract() == 0.0 && x <= u32::MAX as f64 {
+        match x >= 0.0 && x.fract() == 0.0 {
             true => Ok(x as usize),
             false => Err(invalid(self.name, x, "must be a whole number ≥ 0")),
         }
@@ -270,6 +275,8 @@ pub struct Overrides {
 pub enum OverrideValue {
     /// A number (a count must be a whole one ≥ 0).
     Number(f64),
+    /// A whole number ≥ 0, exactly as given (a count from the command line).
+    Count(usize),
     /// Text: a train's name or file, a solver's name.
     Text(String),
     /// Two numbers (`extremes_window`).
@@ -280,6 +287,7 @@ impl std::fmt::Display for OverrideValue {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
             OverrideValue::Number(x) => write!(f, "{x}"),
+            OverrideValue::Count(n) => write!(f, "{n}"),
             OverrideValue::Text(t) => write!(f, "\"{t}\""),
             OverrideValue::Pair([a, b]) => write!(f, "[{a}, {b}]"),
         }

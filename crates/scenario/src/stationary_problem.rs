@@ -28,7 +28,10 @@ impl Scenario {
                     "the stationary solver takes the trapezoid sections (the default) of a time-domain run",
                 ));
             }
-            Some(d) => BallastFriction { force_per_length: d.force_per_length, subdivisions: d.subdivisions },
+            Some(d) => {
+                let checked = d.friction()?;
+                BallastFriction { force_per_length: checked.force_per_length, subdivisions: checked.subdivisions }
+            }
         };
         if scenario.load.train.is_some() || !scenario.load.axles.is_empty() || !scenario.load.patches.is_empty() {
             return Err(invalid("load.train", "given", "the stationary solver takes the single load `load.force`"));

@@ -118,6 +118,31 @@ fn what_the_stationary_solver_does_not_take_is_refused_by_name() {
     }
 }
 
+/// Bad ballast friction is refused by `stationary` in the words `run` uses, by its path in the scenario file: one
+/// check for both (the stationary solver once said `friction.force_per_length`, a key no file has).
+#[test]
+fn bad_ballast_friction_is_refused_alike_by_run_and_stationary() {
+    let folder = temporary_folder("stationary-friction");
+    for (toml, flag) in [
+        ("[friction.distributed]\nforce_per_length = -5.0\n", "invalid friction.distributed.force_per_length = -5"),
+        ("[friction.distributed]\nforce_per_length = 1e3\nsubdivisions = 100\n", "friction.distributed.subdivisions"),
+        ("[friction.distributed]\nforce_per_length = 1e3\nsubdivisions = 0\n", "friction.distributed.subdivisions"),
+    ] {
+        let file = folder.join("case.toml");
+        std::fs::write(&file, toml).unwrap();
+        let path = file.to_str().unwrap();
+        let said = |args: &[&str]| {
+            let out = frictrack(args);
+            assert_eq!(out.status.code(), Some(2), "{args:?}");
+            let err = String::from_utf8_lossy(&out.stderr).into_owned();
+            err.lines().find(|l| l.starts_with("error:")).unwrap_or_default().to_string()
+        };
+        let (run, stationary) = (said(&["run", path]), said(&["stationary", path, "--speed", "100"]));
+        assert!(run.contains(flag), "{run}");
+        assert_eq!(stationary, run);
+    }
+}
+
 /// Ballast friction on the infinite track: the wave's slip zones, the deflection friction leaves behind (never more
 /// than f_u/k = 8 mm at 2 kN/m on the reference soil), the friction's share of the power balance, and its force
 /// along the wave (within ±f_u).
