@@ -1,78 +1,9 @@
-//! Writing result files: checked before any work starts, and written so that a finished file is never half-written
-//! (temporary file beside it, then rename). Only regular files are ever replaced: a device node, FIFO, symlink or
-//! folder at the target is refused, so `--out /dev/full` or a link to somewhere else cannot be destroyed.
+//! Where the command line puts the files beside a result: the journal and the metadata of a sweep's CSV. Writing
+//! files (checked first, written atomically) is the library's (`report::files`), shared with Python.
 
-use anyhow::{Context, Result};
-use scenario::error::invalid;
-use std::io::Write;
 use std::path::{Path, PathBuf};
 
-/// Check that `path` can take a result file: it is absent or a regular file (not a symlink, device, FIFO or
-/// folder), and its folder exists and accepts new files. `option` names the flag in the error (exit code 2).
-pub fn check_output_file(option: &str, path: &Path) -> Result<()> {
-    if let Ok(meta) = std::fs::symlink_metadata(path) {
-        let kind = meta.file_type();
-        if !kind.is_file() {
-            let what = if kind.is_dir() {
-                "a folder"
-            } else if kind.is_symlink() {
-                "a symbolic link"
-            } else {
-                "not a regular file (a device, FIFO or socket)"
-            };
-            return Err(invalid(option, path.display(), format!("is {what}; give the path of a regular file")).into());
-        }
-    }
-    check_folder_writable(option, folder_of(path))
-}
-
-/// Check that `folder` is a folder (created if missing) that accepts new files, before any run starts.
-pub fn prepare_output_folder(option: &str, folder: &Path) -> Result<()> {
-    if let Ok(meta) = std::fs::symlink_metadata(folder)
-        && !meta.is_dir()
-        && !(meta.file_type().is_symlink() && folder.is_dir())
-    {
-        return Err(invalid(option, folder.display(), "is not a folder").into());
-    }
-    std::fs::create_dir_all(folder)
-        .map_err(|e| invalid(option, folder.display(), format!("cannot be created: {e}")))?;
-    check_folder_writable(option, folder)
-}
-
-fn folder_of(path: &Path) -> &Path {
-    path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."))
-}
-
-/// Create and remove a probe file in `folder`.
-fn check_folder_writable(option: &str, folder: &Path) -> Result<()> {
-    let probe = folder.join(format!(".frictrack-probe-{}", std::process::id()));
-    match std::fs::OpenOptions::new().write(true).create_new(true).open(&probe) {
-        Ok(_) => {
-            let _ = std::fs::remove_file(&probe);
-            Ok(())
-        }
-        Err(e) => Err(invalid(option, folder.display(), format!("is not a writable folder: {e}")).into()),
-    }
-}
-
-/// Write `bytes` to `path` atomically (a temporary file in the same folder, flushed, then renamed over `path`);
-/// refuses a target that exists and is not a regular file.
-pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<()> {
-    check_output_file("output file", path)?;
-    let folder = folder_of(path);
-    let name = path.file_name().with_context(|| format!("{} is not a file path", path.display()))?;
-    let temporary = folder.join(format!(".{}.tmp-{}", name.to_string_lossy(), std::process::id()));
-    let result = (|| -> std::io::Result<()> {
-        let mut file = std::fs::File::create(&temporary)?;
-        file.write_all(bytes)?;
-        file.sync_all()?;
-        std::fs::rename(&temporary, path)
-    })();
-    if result.is_err() {
-        let _ = std::fs::remove_file(&temporary);
-    }
-    result.with_context(|| format!("writing {}", path.display()))
-}
+pub use report::files::{check_output_file, prepare_output_folder, write_atomically, write_figures};
 
 /// The journal of finished runs kept beside the output `out`: `out.journal`.
 pub fn journal_beside(out: &Path) -> PathBuf {
@@ -85,20 +16,4 @@ pub fn journal_beside(out: &Path) -> PathBuf {
 /// `sweep.json`).
 pub fn metadata_beside(out: &Path) -> PathBuf {
     out.with_extension("json")
-}
-
-/// Draw `plots` into `folder` (PNG and SVG each, [`report::plot::render`]), every target checked first like any
-/// output; the names of the figures drawn.
-pub fn write_figures(plots: &[report::plot::PlotSpec], folder: &Path) -> Result<Vec<String>> {
-    for spec in plots {
-        for extension in ["png", "svg"] {
-            check_output_file("--out", &folder.join(format!("{}.{extension}", spec.stem)))?;
-        }
-    }
-    let mut drawn = Vec::with_capacity(plots.len());
-    for spec in plots {
-        report::plot::render(spec, folder)?;
-        drawn.push(format!("{}.png/.svg", spec.stem));
-    }
-    Ok(drawn)
 }

@@ -28,5 +28,5 @@ pub fn run(args: &MergeArgs) -> Result<()> {
         })
         .collect::<Result<Vec<_>>>()?;
     let merged = runner::shard::merge(&inputs)?;
-    write_atomically(&args.out, merged.as_bytes())
+    Ok(write_atomically(&args.out, merged.as_bytes())?)
 }

@@ -6,17 +6,14 @@
 //! ([`report::vehicle_output`]).
 
 use crate::Format;
-use crate::files::{check_output_file, prepare_output_folder, write_atomically};
-use crate::run_text::{figure_subtitle, print_text};
+use crate::run_text::print_text;
 use crate::scenario_args::ScenarioArgs;
 use crate::window_wording::WindowWording;
 use anyhow::Result;
 use clap::Args;
 use report::run_summary::RunSummary;
-use scenario::Scenario;
 use std::path::PathBuf;
 use std::time::Instant;
-use track::{RunResult, SnapshotAt};
 
 /// Options of `frictrack run`.
 #[derive(Debug, Args)]
@@ -69,14 +66,7 @@ pub fn run(args: &RunArgs) -> Result<()> {
     let case = scenario.build()?;
     crate::scenario_args::print_warnings(&scenario, &case);
     if let Some(out) = &args.out {
-        prepare_output_folder("--out", out)?;
-        let figures = report::run_output::FIGURE_STEMS.iter().flat_map(|f| [format!("{f}.png"), format!("{f}.svg")]);
-        let files = ["summary.json", "histories.csv", "snapshots.csv"].map(String::from).into_iter();
-        let wheel_files = ["wheels.csv", "wheel-forces.png", "wheel-forces.svg"].map(String::from).into_iter();
-        let wheel_files = wheel_files.filter(|_| case.settings.moving.load.vehicles().is_some());
-        for name in files.chain(figures).chain(wheel_files) {
-            check_output_file("--out", &out.join(name))?;
-        }
+        report::run_folder::check("--out", out, &case)?;
     }
     let requests = match args.out.is_some() {
         true => report::run_output::snapshot_requests(&scenario, &case),
@@ -101,64 +91,11 @@ pub fn run(args: &RunArgs) -> Result<()> {
         Format::Text => print_text(&report, &WindowWording::of(&scenario, &case)),
     }
     if let Some(out) = &args.out {
-        let positions_of = report::run_output::position_noun(&case.settings.moving.load);
-        write_outputs(out, (&scenario, positions_of), &report, &result, &snapshots)?;
+        report::run_folder::write(out, (&scenario, &case), &report, &result, &snapshots)?;
         if args.format == Format::Text {
             let wheels = if result.vehicles.is_some() { ", wheels.csv" } else { "" };
             println!("  wrote {}/summary.json, histories.csv, snapshots.csv{wheels} and figures", out.display());
         }
-    }
-    Ok(())
-}
-
-fn write_outputs(
-    out: &std::path::Path,
-    (scenario, load): (&Scenario, &str),
-    report: &RunSummary,
-    result: &RunResult,
-    snapshots: &[track::Snapshot],
-) -> Result<()> {
-    use report::run_output::{HISTORY_COLUMNS, RunCurves, SNAPSHOT_COLUMNS, histories_csv, run_plots, snapshots_csv};
-    let columns = |list: &[(&'static str, &'static str)]| report::columns::json(list.iter().copied());
-    let requested: Vec<String> = snapshots
-        .iter()
-        .map(|s| match s.requested {
-            SnapshotAt::Time(t) => format!("time {t} s"),
-            SnapshotAt::LoadPosition(x) => format!("{load} at {x} m"),
-        })
-        .collect();
-    let mut files = serde_json::json!({
-        "histories.csv": { "columns": columns(&HISTORY_COLUMNS), "sections": scenario.output.sections },
-        "snapshots.csv": { "columns": columns(&SNAPSHOT_COLUMNS), "requested": requested },
-    });
-    if result.vehicles.is_some() {
-        files["wheels.csv"] = serde_json::json!({ "columns": columns(&report::vehicle_output::WHEEL_COLUMNS) });
-    }
-    let title = if scenario.title.is_empty() { format!("v = {} m/s", report.speed) } else { scenario.title.clone() };
-    let subtitle = figure_subtitle(report);
-    let summary = serde_json::json!({
-        "report": report,
-        "files": files,
-        // What the figures are titled, so that `frictrack plot DIR` draws them again as they were.
-        "figures": { "title": title, "subtitle": subtitle, "positions_of": load },
-        "conventions": "deflection positive upward; moment sagging-positive; extremes are magnitudes",
-        "frictrack_version": env!("CARGO_PKG_VERSION"),
-        "scenario": scenario,
-    });
-    write_atomically(&out.join("summary.json"), serde_json::to_string_pretty(&summary)?.as_bytes())?;
-    write_atomically(&out.join("histories.csv"), histories_csv(result).as_bytes())?;
-    write_atomically(&out.join("snapshots.csv"), snapshots_csv(snapshots).as_bytes())?;
-    for mut spec in run_plots(&RunCurves::of(result, snapshots), &title, load) {
-        spec.subtitle.clone_from(&subtitle);
-        report::plot::render(&spec, out)?;
-    }
-    if let Some(vehicles) = &result.vehicles {
-        write_atomically(&out.join("wheels.csv"), report::vehicle_output::wheels_csv(vehicles).as_bytes())?;
-        let range = report.extremes.extremes_nodes.unwrap_or((0.0, scenario.mesh.length));
-        let mut spec = report::vehicle_output::wheel_plot(vehicles, &title, range);
-        // The run's line (vehicles, speed, friction) before what the figure says of its wheels.
-        spec.subtitle = format!("{subtitle}; {}", spec.subtitle);
-        report::plot::render(&spec, out)?;
     }
     Ok(())
 }

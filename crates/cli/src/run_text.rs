@@ -1,51 +1,8 @@
 //! The text report of one `frictrack run`: the inputs echoed, the extremes with where and when, the energy terms,
-//! the solver's statistics and fallbacks, and with vehicles their wheels, losses of contact and bodies; and the
-//! words the run's figures are subtitled with.
+//! the solver's statistics and fallbacks, and with vehicles their wheels, losses of contact and bodies.
 
 use crate::window_wording::WindowWording;
 use report::run_summary::RunSummary;
-
-/// What ran, in words: the load, train or vehicles.
-fn load_description(r: &RunSummary) -> String {
-    match (&r.vehicles, &r.train) {
-        (Some(v), _) => {
-            let total: f64 = v.wheels.iter().map(|w| w.static_force).sum();
-            let plural = if v.bodies.len() == 1 { "" } else { "s" };
-            format!("{} vehicle{plural} ({}) weighing {:.1} kN", v.bodies.len(), v.bodies[0].name, total / 1e3)
-        }
-        (None, Some(t)) => format!(
-            "train {} ({} axles, {} patches, {:.3} m, {:.1} kN on the beam{})",
-            t.name,
-            t.axles,
-            t.patches,
-            t.length,
-            t.total_force / 1e3,
-            r.axle_share.as_ref().map_or(String::new(), |s| format!(": {}", s.meaning))
-        ),
-        (None, None) => format!("load {:.1} kN", r.load / 1e3),
-    }
-}
-
-/// The friction that ran, in words.
-fn friction_description(r: &RunSummary) -> String {
-    let devices = (r.devices > 0).then(|| format!("{} devices × {:.1} kN", r.devices, r.device_force / 1e3));
-    let distributed = (r.distributed_friction > 0.0).then(|| format!("{:.1} N/m distributed", r.distributed_friction));
-    match (devices, distributed) {
-        (None, None) => "none".into(),
-        (a, b) => [a, b].into_iter().flatten().collect::<Vec<_>>().join(" and "),
-    }
-}
-
-/// The subtitle of the run's figures: what ran, at which speed, with which friction.
-pub(crate) fn figure_subtitle(r: &RunSummary) -> String {
-    format!(
-        "{} at {:.2} m/s ({:.0} km/h); friction: {}",
-        load_description(r),
-        r.speed,
-        r.speed * 3.6,
-        friction_description(r)
-    )
-}
 
 /// The fixed interaction sections by kind: friction, and soil on a nonlinear foundation.
 fn section_count(r: &RunSummary) -> String {
@@ -62,7 +19,7 @@ fn section_count(r: &RunSummary) -> String {
 
 pub(crate) fn print_text(r: &RunSummary, wording: &WindowWording) {
     let title = if r.title.is_empty() { String::new() } else { format!(" — {}", r.title) };
-    let load = load_description(r);
+    let load = r.load_description();
     println!("frictrack run{title}: {load} at {:.2} m/s ({:.0} km/h)", r.speed, r.speed * 3.6);
     if let Some(v_cr) = r.critical_speed {
         println!(

@@ -15,20 +15,25 @@ use scenario::overrides::{OVERRIDES, OverrideKind};
 type RunTexts = (String, String, String, Option<String>, Vec<String>);
 
 /// Run the scenario (`kind` "reference", "path", "toml" or "json" with its `text`) with the keyword `overrides`,
-/// telling `progress` (a callable of the fraction done), if given.
+/// telling `progress` (a callable of the fraction done), if given; with `out`, the run folder is written there as
+/// `frictrack run --out` writes it (its files checked before the run starts).
 #[pyfunction]
-#[pyo3(signature = (kind, text, keywords, progress=None))]
+#[pyo3(signature = (kind, text, keywords, progress=None, out=None))]
 pub(crate) fn run(
     py: Python<'_>,
     kind: &str,
     text: Option<String>,
     keywords: Vec<(String, Bound<'_, PyAny>)>,
     progress: Option<Bound<'_, PyAny>>,
+    out: Option<std::path::PathBuf>,
 ) -> PyResult<RunTexts> {
     let scenario = Source::of(kind, text)?.read()?;
     let overrides = overrides(&keywords)?;
     let scenario = recording(overrides.apply(scenario));
     let case = scenario.build().map_err(to_python)?;
+    if let Some(folder) = &out {
+        report::run_folder::check("out", folder, &case).map_err(to_python)?;
+    }
     let mut warnings: Vec<String> =
         scenario::diagnostics::warnings(&scenario, &case).iter().map(ToString::to_string).collect();
     let started = std::time::Instant::now();
@@ -41,6 +46,9 @@ pub(crate) fn run(
             report::result_warnings::result_warnings(&case, &summary).iter().map(ToString::to_string).collect();
         let json = serde_json::to_string_pretty(&summary)
             .map_err(|e| scenario::error::StudyError::Io { path: "summary".into(), message: e.to_string() })?;
+        if let Some(folder) = &out {
+            report::run_folder::write(folder, (&scenario, &case), &summary, &result, &snapshots)?;
+        }
         let wheels = result.vehicles.as_ref().map(report::vehicle_output::wheels_csv);
         Ok::<_, scenario::error::StudyError>((json, histories_csv(&result), snapshots_csv(&snapshots), wheels, after))
     })?;

@@ -73,6 +73,28 @@ def test_a_run_is_the_command_lines_to_the_bit(args, kwargs):
         assert run.wheels is None and run.losses is None
 
 
+def test_the_run_folder_is_the_command_lines(tmp_path):
+    """`out=` writes the folder `frictrack run --out` writes, by the same library code: every file of the command
+    line's folder is there, the CSVs byte for byte and summary.json but its wall time; bad folders are refused before
+    the run."""
+    example = str(EXAMPLES / "quarter-car-wheel-flat.toml")
+    frictrack.run(example, out=tmp_path / "py", progress=False)
+    _, cli_folder = cli_run([example])
+    names = sorted(p.name for p in cli_folder.iterdir())
+    assert {"summary.json", "wheels.csv", "wheel-forces.png", "histories-deflection.svg"} <= set(names), names
+    assert sorted(p.name for p in (tmp_path / "py").iterdir()) == names
+    for name in names:
+        if name.endswith(".csv"):
+            assert (tmp_path / "py" / name).read_bytes() == (cli_folder / name).read_bytes(), name
+    summaries = [json.loads((folder / "summary.json").read_text()) for folder in (tmp_path / "py", cli_folder)]
+    for summary in summaries:
+        summary["report"].pop("wall_time")
+    assert summaries[0] == summaries[1]
+    (tmp_path / "file").write_text("")
+    with pytest.raises(frictrack.InputError, match="out"):
+        frictrack.run(out=tmp_path / "file", progress=False)
+
+
 def test_a_dict_a_toml_string_and_a_file_are_the_same_run(tmp_path):
     toml = '[mesh]\nelements = 100\n[load]\nspeed = 120.0\n[friction.devices]\ncount = 7\nforce = 20e3\n'
     file = tmp_path / "case.toml"

@@ -4,7 +4,8 @@
 //!   ledger, solver statistics, vehicles, soil — the names of `run --format json`; [`result_warnings`]: a result
 //!   outside the model's validity.
 //! - [`run_output`], [`vehicle_output`], [`soil_output`]: a run's histories, snapshots, wheels and lift-off as CSV
-//!   and figures; [`mesh_ripple`]: the element period in a wheel force.
+//!   and figures, written into its folder by [`run_folder`]; [`mesh_ripple`]: the element period in a wheel force.
+//! - [`files`]: result files checked before any work starts and written atomically, never over a link or device.
 //! - [`sweep_figures`]: the figures of a speed sweep, and its CSV read back; [`tables`]: reading CSV files back;
 //!   [`columns`]: one convention for the units of every column.
 //! - [`track_profile`]: a sample of a random rail profile with its periodogram against the target spectrum.
@@ -14,9 +15,11 @@
 pub mod axis_grid;
 pub mod columns;
 pub mod figures;
+pub mod files;
 pub mod mesh_ripple;
 pub mod plot;
 pub mod result_warnings;
+pub mod run_folder;
 pub mod run_output;
 pub mod run_summary;
 pub mod soil_output;

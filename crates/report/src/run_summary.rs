@@ -175,6 +175,55 @@ pub struct FallbackSummary {
     pub steps: usize,
 }
 
+/// The run in words, for the text report and the figures' subtitles.
+impl RunSummary {
+    /// What ran, in words: the load, train or vehicles.
+    pub fn load_description(&self) -> String {
+        let r = self;
+        match (&r.vehicles, &r.train) {
+            (Some(v), _) => {
+                let total: f64 = v.wheels.iter().map(|w| w.static_force).sum();
+                let plural = if v.bodies.len() == 1 { "" } else { "s" };
+                format!("{} vehicle{plural} ({}) weighing {:.1} kN", v.bodies.len(), v.bodies[0].name, total / 1e3)
+            }
+            (None, Some(t)) => format!(
+                "train {} ({} axles, {} patches, {:.3} m, {:.1} kN on the beam{})",
+                t.name,
+                t.axles,
+                t.patches,
+                t.length,
+                t.total_force / 1e3,
+                r.axle_share.as_ref().map_or(String::new(), |s| format!(": {}", s.meaning))
+            ),
+            (None, None) => format!("load {:.1} kN", r.load / 1e3),
+        }
+    }
+
+    /// The friction that ran, in words.
+    pub fn friction_description(&self) -> String {
+        let r = self;
+        let devices = (r.devices > 0).then(|| format!("{} devices × {:.1} kN", r.devices, r.device_force / 1e3));
+        let distributed =
+            (r.distributed_friction > 0.0).then(|| format!("{:.1} N/m distributed", r.distributed_friction));
+        match (devices, distributed) {
+            (None, None) => "none".into(),
+            (a, b) => [a, b].into_iter().flatten().collect::<Vec<_>>().join(" and "),
+        }
+    }
+
+    /// The subtitle of the run's figures: what ran, at which speed, with which friction.
+    pub fn figure_subtitle(&self) -> String {
+        let r = self;
+        format!(
+            "{} at {:.2} m/s ({:.0} km/h); friction: {}",
+            r.load_description(),
+            r.speed,
+            r.speed * 3.6,
+            r.friction_description()
+        )
+    }
+}
+
 impl RunSummary {
     /// The summary of `result`, a run of `case` built from `scenario`, whose loop took `wall_time` (s): what ran,
     /// the extremes, the static envelope of the same loads and the dynamic amplification over it, the energy

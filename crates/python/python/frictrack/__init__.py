@@ -140,7 +140,10 @@ class Run:
         return f"<frictrack.Run v = {self.summary.get('speed')} m/s, max downward deflection {down} m>"
 
 
-def run(scenario: ScenarioLike = None, *, progress: ProgressLike = None, **overrides: Any) -> Run:
+def run(
+    scenario: ScenarioLike = None, *, progress: ProgressLike = None, out: "str | os.PathLike[str] | None" = None,
+    **overrides: Any,
+) -> Run:
     """Run ``scenario`` (a TOML file path, a TOML string, a dict with the file's keys, or ``None`` for the reference
     case) with keyword ``overrides`` named as the command line's flags: ``speed`` (m/s, or text with its unit such as
     ``"360km/h"``), ``train`` (a catalogue name or a CSV file), ``devices``, ``device_force`` (N),
@@ -149,14 +152,17 @@ def run(scenario: ScenarioLike = None, *, progress: ProgressLike = None, **overr
     ([A, B] m). :func:`override_table` says what each sets.
 
     The run is ``frictrack run SCENARIO --format json --out DIR``: mid-span is recorded when the scenario names no
-    section. It releases the GIL (other threads run meanwhile) and stops within a step on Ctrl-C
+    section. With ``out`` (a folder, created if missing) the run folder is written there as that command writes it:
+    ``summary.json``, ``histories.csv``, ``snapshots.csv``, ``wheels.csv`` with vehicles, and the figures (PNG, SVG). It releases the GIL (other threads run meanwhile) and stops within a step on Ctrl-C
     (KeyboardInterrupt). Bad input raises :class:`InputError` naming the field. ``progress``: a callable of the
     fraction done, ``True`` for a tqdm bar, ``False`` for none; by default a tqdm bar where tqdm is installed and
     standard error is a terminal.
     """
     kind, text = _source(scenario)
     with _Reporter(progress, "run") as report:
-        summary, histories, snapshots, wheels, warnings = _native.run(kind, text, list(overrides.items()), report)
+        summary, histories, snapshots, wheels, warnings = _native.run(
+            kind, text, list(overrides.items()), report, None if out is None else os.fspath(out)
+        )
     return Run(
         json.loads(summary),
         parse_csv(histories, COLUMNS["histories"]),

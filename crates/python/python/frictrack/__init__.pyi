@@ -75,9 +75,11 @@ def run(
     absorbing_zones: float = ...,
     extremes_window: Sequence[float] = ...,
     progress: ProgressLike = None,
+    out: Union[str, os.PathLike, None] = None,
 ) -> Run:
     """One run of `scenario` (a TOML path, a TOML string, a dict, or None for the reference case) with overrides named
-    as the command line's flags; releases the GIL, stops on Ctrl-C, raises InputError naming bad input."""
+    as the command line's flags; with `out`, the run folder `frictrack run --out` writes (summary.json, CSVs,
+    figures); releases the GIL, stops on Ctrl-C, raises InputError naming bad input."""
 
 def sweep(
     scenario: ScenarioLike = None,
