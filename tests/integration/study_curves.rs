@@ -72,6 +72,9 @@ fn snapshot(preset: Preset) -> StudyData {
     });
     insta::assert_yaml_snapshot!(preset.name(), value);
     crate::figures::assert_drawn_inside(&data.plots, preset.name());
+    // Every column carries its unit: a new column without one says "unknown" (it once silently became "m").
+    let unknown: Vec<&str> = data.columns.iter().filter(|(_, u)| *u == "unknown").map(|(c, _)| c.as_str()).collect();
+    assert!(unknown.is_empty(), "{}: columns without a unit in presets::unit_of: {unknown:?}", preset.name());
     data
 }
 

@@ -273,9 +273,10 @@ pub struct StudyFailure {
     pub error: String,
 }
 
-/// The unit of a column of a study's CSV (SI; "1" for counts and ratios).
-fn unit_of(column: &str) -> &'static str {
-    match column {
+/// The unit of a column of a study's CSV (SI; "1" for counts and ratios); None for a column not listed here — a new
+/// column must be given its unit (a test runs every study and fails on one without).
+fn unit_of(column: &str) -> Option<&'static str> {
+    Some(match column {
         "speed" => "m/s",
         "device_force" | "cost" => "N",
         "force_per_length" => "N/m",
@@ -293,15 +294,28 @@ fn unit_of(column: &str) -> &'static str {
         | "dynamic_amplification"
         | "max_dynamic_increment"
         | "losses_of_contact" => "1",
-        _ => "m",
-    }
+        "deflection"
+        | "deflection_behind"
+        | "load_position"
+        | "max_downward_deflection"
+        | "max_upward_deflection"
+        | "static_max_downward_deflection"
+        | "window_max_downward_deflection"
+        | "window_max_upward_deflection" => "m",
+        _ => return None,
+    })
+}
+
+/// The unit the study's files give a column: its unit, or "unknown" (never a guess).
+fn column_unit(column: &str) -> &'static str {
+    unit_of(column).unwrap_or("unknown")
 }
 
 /// Run `preset` on top of `base` (normally the reference case).
 pub fn run_preset(preset: Preset, resolution: Resolution, base: &Scenario, runner: &Runner) -> Result<StudyData> {
     let data = (preset.entry().run)(resolution, base, runner)?;
     let header = data.csv.lines().next().unwrap_or_default();
-    let columns = header.split(',').map(|c| (c.to_string(), unit_of(c))).collect();
+    let columns = header.split(',').map(|c| (c.to_string(), column_unit(c))).collect();
     Ok(StudyData { columns, name: preset.name(), title: preset.title(), resolution: resolution.name(), ..data })
 }
 
