@@ -8,7 +8,7 @@ use crate::interruptible;
 use crate::scenario_input::{Source, overrides};
 use pyo3::prelude::*;
 use runner::Runner;
-use scenario::error::{StudyError, invalid};
+use scenario::error::StudyError;
 use study::presets::{Preset, Resolution, run_preset};
 use study::stationary_output::{ErrorEstimate, StationaryStudy, wave_csv};
 use study::steady_response::SteadyResponse;
@@ -48,14 +48,19 @@ pub(crate) fn stationary_wave(
     kind: &str,
     text: Option<String>,
     speeds: Vec<f64>,
-    domain: (f64, f64, f64),
+    domain: (Option<f64>, Option<f64>, Option<f64>),
     keywords: Vec<(String, Bound<'_, PyAny>)>,
     progress: Option<Bound<'_, PyAny>>,
 ) -> PyResult<StationaryTexts> {
     scenario::speeds::check_count("speeds", speeds.len()).map_err(to_python)?;
     let scenario = overrides(&keywords)?.apply(Source::of(kind, text)?.read()?);
-    let (behind, ahead, element_length) = domain;
-    let domain = stationary::Domain { behind, ahead, element_length };
+    // What Python leaves out is the library's default domain, not a copy of it.
+    let default = stationary::Domain::default();
+    let domain = stationary::Domain {
+        behind: domain.0.unwrap_or(default.behind),
+        ahead: domain.1.unwrap_or(default.ahead),
+        element_length: domain.2.unwrap_or(default.element_length),
+    };
     let total = speeds.len() as f64;
     let solve = move |stop: &_, told: &interruptible::Progress| {
         let first = scenario.stationary_problem(speeds.first().copied().unwrap_or(0.0), domain)?;
@@ -89,11 +94,7 @@ pub(crate) fn preset(
     keywords: Vec<(String, Bound<'_, PyAny>)>,
 ) -> PyResult<StudyTexts> {
     let preset = Preset::from_name(name).map_err(to_python)?;
-    let resolution = match resolution {
-        "coarse" => Resolution::Coarse,
-        "paper" => Resolution::Paper,
-        other => return Err(to_python(invalid("resolution", other, "must be coarse or paper"))),
-    };
+    let resolution = Resolution::from_name(resolution).map_err(to_python)?;
     let mut base = overrides(&keywords)?.apply(Source::of(kind, text)?.read()?);
     if let Some(track) = deck_track {
         base.output.deck_track = track.parse().map_err(to_python)?;

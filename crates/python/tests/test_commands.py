@@ -27,6 +27,10 @@ def test_analytic_and_stationary_are_the_command_lines(tmp_path):
     # The same as a dict with overrides: the scenario's keys, or the command line's names.
     assert frictrack.stationary({"foundation": {"damping_ratio": 0.05}}, [100.0, 200.0],
                                 distributed_friction=2000.0).points == expected
+    # A domain of its own, as --domain gives it; left out, the command line's default (not a copy of it).
+    assert frictrack.stationary(case, [100.0], domain=(80.0, 70.0), element_length=0.5).points == [cli_json(
+        "stationary", str(case), "--speed", "100", "--domain", "80:70", "--element-length", "0.5"
+    )]
     assert sorted(wave.waves) == [100.0, 200.0]
     table = wave.waves[100.0]
     assert np.max(np.abs(table["friction_force"])) <= 2000.0 * (1 + 1e-12)
@@ -48,6 +52,8 @@ def test_a_study_is_the_command_lines(tmp_path):
     for name in study.table.columns:
         assert np.array_equal(expected[name], study.table[name]), name
     assert len(study.headline) == 2 and study.table.units["speed"] == "m/s"
+    with __import__("pytest").raises(frictrack.InputError, match="resolution = fine: must be one of coarse, paper"):
+        frictrack.study("amplification", resolution="fine")
 
 
 def test_trains_and_rails():

@@ -225,17 +225,20 @@ class Stationary:
         self.warnings = warnings
 
 
-def stationary(scenario: ScenarioLike = None, speeds: Sequence[float] = (), domain: Sequence[float] = (60.0, 60.0),
-               element_length: float = 0.25, progress: ProgressLike = None, **overrides: Any) -> Stationary:
+def stationary(scenario: ScenarioLike = None, speeds: Sequence[float] = (),
+               domain: Optional[Sequence[float]] = None, element_length: Optional[float] = None,
+               progress: ProgressLike = None, **overrides: Any) -> Stationary:
     """The stationary wave of the scenario's load on the infinite track at ``speeds`` (m/s, by continuation in
-    order) on a moving domain ``domain`` = (behind, ahead) m of ``element_length`` m elements (grown where needed);
+    order) on a moving domain ``domain`` = (behind, ahead) m of ``element_length`` m elements (grown where needed;
+    by default those of ``frictrack stationary``: 60 m each way, 0.25 m elements);
     linear, tensionless and bilinear soils, ballast friction. Overrides and ``progress`` (the fraction of speeds
     done) as for :func:`run`; Ctrl-C stops it before its next speed."""
     kind, text = _source(scenario)
-    behind, ahead = (float(x) for x in domain)
+    behind, ahead = (None, None) if domain is None else (float(x) for x in domain)
+    length = None if element_length is None else float(element_length)
     with _Reporter(progress, "stationary") as report:
         points, waves, warnings = _native.stationary(
-            kind, text, _speeds(speeds), (behind, ahead, float(element_length)), list(overrides.items()), report
+            kind, text, _speeds(speeds), (behind, ahead, length), list(overrides.items()), report
         )
     return Stationary(json.loads(points), {float(v): parse_csv(csv, COLUMNS["stationary_wave"]) for v, csv in waves}, list(warnings))
 

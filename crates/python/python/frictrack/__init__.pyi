@@ -110,12 +110,13 @@ class Stationary:
 def stationary(
     scenario: ScenarioLike = None,
     speeds: Union[float, Sequence[float]] = ...,
-    domain: Sequence[float] = (60.0, 60.0),
-    element_length: float = 0.25,
+    domain: Optional[Sequence[float]] = None,
+    element_length: Optional[float] = None,
     progress: ProgressLike = None,
     **overrides: Any,
 ) -> Stationary:
-    """The stationary wave on the infinite track at `speeds` (m/s) on the moving domain (behind, ahead) m."""
+    """The stationary wave on the infinite track at `speeds` (m/s) on the moving domain (behind, ahead) m (None: the
+    command line's default domain)."""
 
 class Study:
     """A study preset's results: `summary`, `table` (its CSV with units), `headline`, `lines`."""

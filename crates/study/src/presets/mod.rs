@@ -104,12 +104,23 @@ impl Resolution {
         }
     }
 
-    /// Name on the command line.
+    /// Both, coarse first.
+    pub const ALL: [Resolution; 2] = [Resolution::Coarse, Resolution::Paper];
+
+    /// Name on the command line and in Python.
     pub fn name(self) -> &'static str {
         match self {
             Resolution::Coarse => "coarse",
             Resolution::Paper => "paper",
         }
+    }
+
+    /// The resolution called `name`, or an error naming both.
+    pub fn from_name(name: &str) -> Result<Self> {
+        Self::ALL.into_iter().find(|r| r.name() == name).ok_or_else(|| {
+            let names: Vec<&str> = Self::ALL.map(Resolution::name).to_vec();
+            invalid("resolution", name, format!("must be one of {}", names.join(", ")))
+        })
     }
 }
 
