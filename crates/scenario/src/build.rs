@@ -332,7 +332,6 @@ fn under(section: &str, error: StudyError) -> StudyError {
     }
 }
 
-/// A field error of the friction placed on the beam (e.g. `devices.count`), renamed to its path in `[friction]`.
 impl DistributedSection {
     /// The ballast friction this section describes, checked and its errors named by their path in the file: the one
     /// check that a run and the stationary solver share, so that both refuse the same value in the same words.
@@ -351,6 +350,7 @@ impl DistributedSection {
     }
 }
 
+/// A field error of the friction placed on the beam (e.g. `devices.count`), renamed to its path in `[friction]`.
 fn in_friction(error: track::TrackError) -> StudyError {
     use track::TrackError as T;
     match error {
