@@ -22,24 +22,16 @@ pub struct ScenarioArgs {
 /// its help the table's.
 #[derive(Debug, Clone, Default)]
 pub struct OverrideFlags {
-    /// (override, value) in the table's order.
-    given: Vec<(&'static OverrideSpec, FlagValue)>,
-}
-
-/// A flag's value as clap parsed it.
-#[derive(Debug, Clone)]
-enum FlagValue {
-    Number(f64),
-    Count(usize),
-    Text(String),
+    /// (override, value as clap parsed it; a pair still as its text `A:B`) in the table's order.
+    given: Vec<(&'static OverrideSpec, OverrideValue)>,
 }
 
 impl OverrideFlags {
     /// The value given for the override `name`, as a number (None if not given or not a number).
     pub fn number(&self, name: &str) -> Option<f64> {
         self.given.iter().find(|(spec, _)| spec.name == name).and_then(|(_, v)| match v {
-            FlagValue::Number(x) => Some(*x),
-            FlagValue::Count(_) | FlagValue::Text(_) => None,
+            OverrideValue::Number(x) => Some(*x),
+            _ => None,
         })
     }
 }
@@ -82,11 +74,11 @@ impl clap::FromArgMatches for OverrideFlags {
         for spec in &OVERRIDES {
             let value = match spec.kind {
                 OverrideKind::Speed | OverrideKind::Number { .. } => {
-                    matches.get_one::<f64>(spec.name).map(|x| FlagValue::Number(*x))
+                    matches.get_one::<f64>(spec.name).map(|x| OverrideValue::Number(*x))
                 }
-                OverrideKind::Count => matches.get_one::<usize>(spec.name).map(|n| FlagValue::Count(*n)),
+                OverrideKind::Count => matches.get_one::<usize>(spec.name).map(|n| OverrideValue::Count(*n)),
                 OverrideKind::Solver | OverrideKind::Text | OverrideKind::Pair { .. } => {
-                    matches.get_one::<String>(spec.name).map(|t| FlagValue::Text(t.clone()))
+                    matches.get_one::<String>(spec.name).map(|t| OverrideValue::Text(t.clone()))
                 }
             };
             if let Some(value) = value {
@@ -120,16 +112,14 @@ impl ScenarioArgs {
         let mut overrides = Overrides::default();
         for (spec, value) in &self.flags.given {
             let value = match (spec.kind, value) {
-                (_, FlagValue::Number(x)) => OverrideValue::Number(*x),
-                (_, FlagValue::Count(n)) => OverrideValue::Count(*n),
-                (OverrideKind::Pair { .. }, FlagValue::Text(text)) => {
+                (OverrideKind::Pair { .. }, OverrideValue::Text(text)) => {
                     let flag = format!("--{}", spec.flag);
                     let bad = || scenario::error::invalid(&flag, text, "expected A:B, two load positions in m");
                     let (a, b) = text.split_once(':').ok_or_else(bad)?;
                     let number = |t: &str| t.trim().parse::<f64>().map_err(|_| bad());
                     OverrideValue::Pair([number(a)?, number(b)?])
                 }
-                (_, FlagValue::Text(text)) => OverrideValue::Text(text.clone()),
+                (_, given) => given.clone(),
             };
             overrides.set(spec.name, value)?;
         }
