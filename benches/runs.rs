@@ -10,7 +10,7 @@ use std::hint::black_box;
 use std::time::Duration;
 use track::Load;
 use track::PlacedInteractions;
-use track::{Devices, DistributedFriction};
+use track::{BallastOnBeam, Devices, DistributedFriction};
 use track::{RunSettings, Simulation};
 
 fn cases(model: &BeamModel) -> Vec<(&'static str, PlacedInteractions)> {

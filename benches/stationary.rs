@@ -21,7 +21,7 @@ fn problem(law: FoundationLaw) -> StationaryProblem {
         load: 83.4e3,
         speed: 0.0,
         self_weight: true,
-        friction: stationary::BallastFriction::default(),
+        friction: fem_beam::DistributedFriction::default(),
         domain: Domain::default(),
     }
 }
@@ -32,7 +32,7 @@ fn sweeps(c: &mut Criterion) {
     let mut group = c.benchmark_group("stationary_sweep_100_speeds");
     group.sample_size(10).warm_up_time(Duration::from_secs(1)).measurement_time(Duration::from_secs(8));
     let friction = |f_u: f64| StationaryProblem {
-        friction: stationary::BallastFriction::new(f_u),
+        friction: fem_beam::DistributedFriction::new(f_u),
         ..problem(FoundationLaw::Linear)
     };
     for (name, base, step) in [
@@ -107,7 +107,7 @@ fn co_moving(c: &mut Criterion) {
     let damping = zones.element_damping(&mesh, foundation.damping).unwrap();
     let supports = Supports { left: Support::Free, right: Support::Clamped };
     let model = BeamModel::with_element_damping(case.beam, foundation, mesh, supports, damping).unwrap();
-    let ballast = track::DistributedFriction::new(2e3).interactions(&model).unwrap();
+    let ballast = track::BallastOnBeam::interactions(&track::DistributedFriction::new(2e3), &model).unwrap();
     let mut settings = RunSettings::default();
     settings.moving.speed = 100.0;
     settings.integration.load_advance = 0.05;

@@ -99,7 +99,7 @@ fn a_co_moving_window_carries_the_stationary_wave_of_a_tensionless_soil() {
         load: 83.4e3,
         speed: 80.0,
         self_weight: true,
-        friction: stationary::BallastFriction::default(),
+        friction: fem_beam::DistributedFriction::default(),
         domain: Domain::default(),
     };
     let wave = stationary::solve(&problem).unwrap();

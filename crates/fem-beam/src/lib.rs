@@ -11,11 +11,13 @@
 //! - Matrices are the `banded` crate's [`banded::SymmetricBanded`] (storage, LDLᵀ, Schur condensation), the layer
 //!   below this one.
 //! - [`load`]: consistent point forces/moments and uniform loads; [`section`]: w, θ, M from a DOF vector.
+//! - [`distributed`]: the sections of a law distributed along the beam, and ballast friction's description.
 //! - [`statics`], [`modal`]: K q = f and K φ = ω² M φ.
 //! - [`reference`](mod@reference): the reference case and closed-form results (β, w₀, M₀, v_cr, ω_n, moving-load steady state).
 
 pub mod absorbing;
 pub mod assembly;
+pub mod distributed;
 pub mod element;
 pub mod error;
 pub mod load;
@@ -34,6 +36,7 @@ pub mod train;
 
 pub use absorbing::AbsorbingZones;
 pub use assembly::BeamModel;
+pub use distributed::DistributedFriction;
 pub use error::{FemError, Result};
 pub use load::LoadVector;
 pub use mesh::Mesh;

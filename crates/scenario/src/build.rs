@@ -8,7 +8,7 @@ use fem_beam::{AbsorbingZones, BeamModel, Foundation, FoundationLaw, Mesh};
 use nscd::SolverSettings;
 use track::PlacedInteractions;
 use track::simulation::{IntegrationSettings, MovingLoadSettings, RecordSettings};
-use track::{DeviceLayout, Devices, DistributedFriction, FoundationSections, Quadrature};
+use track::{BallastOnBeam, DeviceLayout, Devices, DistributedFriction, FoundationSections, Quadrature};
 use track::{InitialState, Load, RunSettings};
 
 fn finite_positive(path: &str, value: f64, unit: &str) -> Result<()> {
@@ -345,7 +345,7 @@ impl DistributedSection {
             subdivisions: self.subdivisions,
             quadrature,
         };
-        friction.validate().map_err(in_friction)?;
+        friction.validate().map_err(|e| in_friction(track::TrackError::setting(e)))?;
         Ok(friction)
     }
 }

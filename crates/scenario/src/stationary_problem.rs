@@ -3,7 +3,7 @@
 
 use crate::error::{Result, invalid};
 use crate::{QuadratureKind, Scenario};
-use stationary::{BallastFriction, Domain, StationaryProblem};
+use stationary::{Domain, StationaryProblem};
 
 impl Scenario {
     /// The stationary problem of this scenario at `speed` (m/s) on `domain`: its beam, its soil (stiffness, damping
@@ -20,7 +20,7 @@ impl Scenario {
             ));
         }
         let friction = match &scenario.friction.distributed {
-            None => BallastFriction::default(),
+            None => fem_beam::DistributedFriction::default(),
             Some(d) if d.quadrature != QuadratureKind::Trapezoid => {
                 return Err(invalid(
                     "friction.distributed.quadrature",
@@ -28,10 +28,7 @@ impl Scenario {
                     "the stationary solver takes the trapezoid sections (the default) of a time-domain run",
                 ));
             }
-            Some(d) => {
-                let checked = d.friction()?;
-                BallastFriction { force_per_length: checked.force_per_length, subdivisions: checked.subdivisions }
-            }
+            Some(d) => d.friction()?,
         };
         if scenario.load.train.is_some() || !scenario.load.axles.is_empty() || !scenario.load.patches.is_empty() {
             return Err(invalid("load.train", "given", "the stationary solver takes the single load `load.force`"));

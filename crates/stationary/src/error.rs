@@ -15,6 +15,16 @@ pub enum StationaryError {
         /// What is allowed.
         allowed: String,
     },
+    /// A choice the stationary solver does not take: the field, the choice by its name, what is allowed.
+    #[error("invalid {field} = {value}: {allowed}")]
+    InvalidChoice {
+        /// Parameter name, e.g. `distributed.quadrature`.
+        field: &'static str,
+        /// The choice, by its name.
+        value: &'static str,
+        /// What is allowed.
+        allowed: &'static str,
+    },
     /// No far-field mode decays at this speed (undamped at or above the critical speed): no transparent end selects
     /// the physical wave.
     #[error(
@@ -43,7 +53,9 @@ impl StationaryError {
     /// Whether the error is the user's input.
     pub fn is_invalid_input(&self) -> bool {
         match self {
-            StationaryError::InvalidField { .. } | StationaryError::NoRadiationCondition { .. } => true,
+            StationaryError::InvalidField { .. }
+            | StationaryError::InvalidChoice { .. }
+            | StationaryError::NoRadiationCondition { .. } => true,
             StationaryError::Beam(e) => e.is_invalid_input(),
             StationaryError::Singular { .. } => false,
         }

@@ -18,8 +18,8 @@
 //! at the domain's ends), so the two methods discretise the same ballast.
 
 use crate::operator::{add_spring, row_add, row_dot};
-use crate::problem::BallastFriction;
 use banded::general::GeneralBanded;
+use fem_beam::DistributedFriction;
 use fem_beam::element::hermite;
 
 /// κ/k_c: the Jenkins stiffness over the soil's (see the module doc).
@@ -103,7 +103,14 @@ pub struct AnchorCoupling {
 
 impl FrictionSections {
     /// The sections of `elements` elements of length `l`, the first starting `behind` elements behind the load.
-    pub fn new(friction: &BallastFriction, elements: usize, behind: usize, l: f64, stiffness: f64, rest: f64) -> Self {
+    pub fn new(
+        friction: &DistributedFriction,
+        elements: usize,
+        behind: usize,
+        l: f64,
+        stiffness: f64,
+        rest: f64,
+    ) -> Self {
         let j = friction.subdivisions;
         let count = j * elements + 1;
         let sections = (0..count)

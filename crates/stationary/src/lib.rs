@@ -19,7 +19,7 @@ pub mod solve;
 pub mod wave;
 
 pub use error::{Result, StationaryError};
-pub use problem::{BallastFriction, Domain, StationaryProblem};
+pub use problem::{Domain, StationaryProblem};
 pub use refine::solve_halved;
 pub use solve::{ContactGuess, Convergence, solve, solve_from};
 pub use wave::{LiftOffZone, Peak, SlipZone, StationaryWave};

@@ -1,8 +1,9 @@
 //! What a stationary wave is asked of: the track (beam and soil), the load and its speed, and the moving domain.
 
-use crate::error::{Result, invalid};
+use crate::error::{Result, StationaryError, invalid};
+use fem_beam::distributed::Quadrature;
 use fem_beam::reference::InfiniteBeam;
-use fem_beam::{Beam, Foundation, GRAVITY};
+use fem_beam::{Beam, DistributedFriction, Foundation, GRAVITY};
 
 /// The domain in moving coordinates s = x − vt (m): from `behind` m behind the load to `ahead` m ahead, in
 /// elements of `element_length` m.
@@ -63,46 +64,6 @@ impl Domain {
     }
 }
 
-/// Friction distributed in the ballast: f_u (N/m) at J trapezoid sections per element, as in a time-domain run.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct BallastFriction {
-    /// f_u (N/m) ≥ 0; 0 = none.
-    pub force_per_length: f64,
-    /// Sections per element J ≥ 1. Default 4, a time-domain run's.
-    pub subdivisions: usize,
-}
-
-impl Default for BallastFriction {
-    fn default() -> Self {
-        Self { force_per_length: 0.0, subdivisions: 4 }
-    }
-}
-
-/// The most friction sections per element accepted.
-pub const MAX_SUBDIVISIONS: usize = 64;
-
-impl BallastFriction {
-    /// f_u (N/m) on the default sections.
-    pub fn new(force_per_length: f64) -> Self {
-        Self { force_per_length, ..Self::default() }
-    }
-
-    /// Check f_u and J.
-    pub fn validate(&self) -> Result<()> {
-        if !(self.force_per_length.is_finite() && self.force_per_length >= 0.0) {
-            return Err(invalid("friction.force_per_length", self.force_per_length, "must be finite and ≥ 0 (N/m)"));
-        }
-        if !(1..=MAX_SUBDIVISIONS).contains(&self.subdivisions) {
-            return Err(invalid(
-                "friction.subdivisions",
-                self.subdivisions as f64,
-                format!("must lie in [1, {MAX_SUBDIVISIONS}] sections per element"),
-            ));
-        }
-        Ok(())
-    }
-}
-
 /// A point load moving at constant speed on an infinite beam on its foundation.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct StationaryProblem {
@@ -118,7 +79,7 @@ pub struct StationaryProblem {
     /// rail uniformly).
     pub self_weight: bool,
     /// Friction in the ballast (none by default).
-    pub friction: BallastFriction,
+    pub friction: DistributedFriction,
     /// The moving domain.
     pub domain: Domain,
 }
@@ -143,6 +104,13 @@ impl StationaryProblem {
             return Err(invalid("speed", self.speed, format!("must lie in [0, {bar_wave:.0}) m/s")));
         }
         self.friction.validate()?;
+        if self.friction.quadrature != Quadrature::Trapezoid {
+            return Err(StationaryError::InvalidChoice {
+                field: "distributed.quadrature",
+                value: self.friction.quadrature.name(),
+                allowed: "must be the trapezoid sections (the default) of a time-domain run",
+            });
+        }
         self.domain.validate()
     }
 

@@ -2,9 +2,11 @@
 //! wave, huge friction holds the rail still, the power balance closes, friction holds at most f_u/k behind the load,
 //! and continuation in speed converges at every speed of a sweep through the critical speed.
 
+use fem_beam::DistributedFriction;
+use fem_beam::distributed::Quadrature;
 use fem_beam::reference::uic60_on_soft_soil;
 use fem_beam::{Foundation, FoundationLaw};
-use stationary::{BallastFriction, ContactGuess, Domain, StationaryProblem, StationaryWave, solve, solve_from};
+use stationary::{ContactGuess, Domain, StationaryProblem, StationaryWave, solve, solve_from};
 
 /// The reference track (ζ = 5 %) under 83.4 kN at `speed` with `friction` N/m of ballast friction.
 fn problem(friction: f64, speed: f64) -> StationaryProblem {
@@ -16,7 +18,7 @@ fn problem(friction: f64, speed: f64) -> StationaryProblem {
         load: 83.4e3,
         speed,
         self_weight: false,
-        friction: BallastFriction::new(friction),
+        friction: DistributedFriction::new(friction),
         domain: Domain::default(),
     }
 }
@@ -113,15 +115,20 @@ fn a_sweep_through_the_critical_speed_converges_at_every_speed() {
     }
 }
 
-/// Bad friction input names its field.
+/// Bad friction input names its field, as the finite track's does (one description, one check), and the sections the
+/// stationary solver does not take are refused by name.
 #[test]
 fn bad_friction_is_refused_by_name() {
     let mut p = problem(-1.0, 100.0);
     let message = solve(&p).unwrap_err().to_string();
-    assert!(message.contains("friction.force_per_length") && message.contains("-1"), "{message}");
-    p.friction = BallastFriction { force_per_length: 1e3, subdivisions: 0 };
+    assert_eq!(message, "invalid distributed.force_per_length = -1: must be finite and ≥ 0 (N/m)");
+    assert_eq!(message, p.friction.validate().unwrap_err().to_string());
+    p.friction = DistributedFriction { subdivisions: 0, ..DistributedFriction::new(1e3) };
     let message = solve(&p).unwrap_err().to_string();
-    assert!(message.contains("friction.subdivisions"), "{message}");
+    assert!(message.contains("distributed.subdivisions = 0"), "{message}");
+    p.friction = DistributedFriction { quadrature: Quadrature::Simpson, ..DistributedFriction::new(1e3) };
+    let message = solve(&p).unwrap_err().to_string();
+    assert!(message.contains("distributed.quadrature = simpson: must be the trapezoid"), "{message}");
 }
 
 /// The thesis's track: no damping but friction's. Above the critical speed no frictionless wave exists, yet friction

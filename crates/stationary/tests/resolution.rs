@@ -1,9 +1,10 @@
 //! The stationary solver's mesh: elements that cannot resolve the wave are refused with the limit, and the peaks'
 //! discretisation error estimated from one halving of the elements bounds the true error (docs/theory.md §14).
 
+use fem_beam::DistributedFriction;
 use fem_beam::reference::uic60_on_soft_soil;
 use fem_beam::{Foundation, FoundationLaw};
-use stationary::{BallastFriction, Domain, StationaryError, StationaryProblem, solve, solve_halved};
+use stationary::{Domain, StationaryError, StationaryProblem, solve, solve_halved};
 
 fn problem(speed: f64, element_length: f64, friction: f64) -> StationaryProblem {
     let case = uic60_on_soft_soil();
@@ -13,7 +14,7 @@ fn problem(speed: f64, element_length: f64, friction: f64) -> StationaryProblem 
         load: 83.4e3,
         speed,
         self_weight: true,
-        friction: BallastFriction::new(friction),
+        friction: DistributedFriction::new(friction),
         domain: Domain { element_length, ..Domain::default() },
     }
 }

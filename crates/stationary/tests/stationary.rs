@@ -1,9 +1,10 @@
 //! The stationary solver against the closed forms and its own limits (docs/theory.md §14).
 
+use fem_beam::DistributedFriction;
 use fem_beam::reference::{InfiniteBeam, uic60_on_soft_soil};
 use fem_beam::tensionless::TensionlessPointLoad;
 use fem_beam::{Foundation, FoundationLaw};
-use stationary::{BallastFriction, ContactGuess, Convergence, Domain, StationaryProblem, solve, solve_from};
+use stationary::{ContactGuess, Convergence, Domain, StationaryProblem, solve, solve_from};
 
 fn problem(law: FoundationLaw, damping_ratio: f64, speed: f64, load: f64) -> StationaryProblem {
     let case = uic60_on_soft_soil();
@@ -14,7 +15,7 @@ fn problem(law: FoundationLaw, damping_ratio: f64, speed: f64, load: f64) -> Sta
         load,
         speed,
         self_weight: true,
-        friction: BallastFriction::default(),
+        friction: DistributedFriction::default(),
         domain: Domain::default(),
     }
 }

@@ -6,7 +6,7 @@
 
 use fem_beam::reference::uic60_on_soft_soil;
 use track::PlacedInteractions;
-use track::{Devices, DistributedFriction};
+use track::{BallastOnBeam, Devices, DistributedFriction};
 use track::{RunSettings, Simulation};
 
 fn main() {

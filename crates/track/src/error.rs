@@ -61,6 +61,21 @@ impl From<banded::BandedError> for TrackError {
 }
 
 impl TrackError {
+    /// A beam-layer error about a setting of a run (a field or a count, e.g. `distributed.subdivisions`) as this
+    /// crate's own, so that the layers above name it by its place in their input as they name this crate's settings;
+    /// any other beam error as it is.
+    pub fn setting(error: fem_beam::FemError) -> Self {
+        match error {
+            fem_beam::FemError::InvalidField { field, value, allowed } => {
+                TrackError::InvalidField { field, value, allowed: allowed.into() }
+            }
+            fem_beam::FemError::InvalidCount { field, value, allowed } => {
+                TrackError::InvalidCount { field, value, allowed: allowed.into() }
+            }
+            other => other.into(),
+        }
+    }
+
     /// Whether the error is the user's input rather than a failure of the run; each layer answers for its own.
     pub fn is_invalid_input(&self) -> bool {
         match self {

@@ -23,7 +23,7 @@ pub mod vehicle;
 
 pub use error::{Result, TrackError};
 pub use foundation_layout::FoundationSections;
-pub use friction_layout::{DeviceLayout, Devices, DistributedFriction, Quadrature};
+pub use friction_layout::{BallastOnBeam, DeviceLayout, Devices, DistributedFriction, Quadrature};
 pub use moving_load::MovingLoad;
 pub use placed::{PlacedInteractions, SectionKind};
 pub use simulation::{InitialState, Load, RunResult, RunSettings, Simulation, WindowExtremes};

@@ -13,20 +13,7 @@ use fem_beam::BeamModel;
 use fem_beam::element::hermite;
 use friction::InteractionRow;
 
-/// Quadrature of a distributed law along each element.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum Quadrature {
-    /// Composite trapezoid rule (default).
-    #[default]
-    Trapezoid,
-    /// Composite Simpson rule; needs an even number of sub-intervals.
-    Simpson,
-    /// Four-point Gauss–Legendre rule on each sub-interval: the consistent foundation matrix exactly.
-    Gauss,
-}
-
-/// The most sub-intervals per element accepted (checked before the sections are allocated).
-pub const MAX_SUBDIVISIONS: usize = 64;
+pub use fem_beam::distributed::{MAX_SUBDIVISIONS, Quadrature};
 
 /// One section of a distributed law: its row over the free DOFs (empty on a support), its weight (m) and place (m).
 #[derive(Debug, Clone, PartialEq)]
@@ -39,25 +26,9 @@ pub struct QuadratureSection {
     pub x: f64,
 }
 
-/// Check J ∈ [1, [`MAX_SUBDIVISIONS`]] (even with Simpson weights); `field` names it in the error.
+/// Check J ∈ [1, [`MAX_SUBDIVISIONS`]] (even with Simpson weights) as fem-beam does; `field` names it in the error.
 pub fn validate_subdivisions(field: &'static str, subdivisions: usize, quadrature: Quadrature) -> Result<()> {
-    if subdivisions == 0 || subdivisions > MAX_SUBDIVISIONS {
-        return Err(TrackError::InvalidCount {
-            field,
-            value: subdivisions,
-            allowed: format!(
-                "must lie in [1, {MAX_SUBDIVISIONS}]: finer sections than that add nothing a cubic element can show"
-            ),
-        });
-    }
-    if quadrature == Quadrature::Simpson && subdivisions % 2 == 1 {
-        return Err(TrackError::InvalidCount {
-            field,
-            value: subdivisions,
-            allowed: "must be even with Simpson weights".into(),
-        });
-    }
-    Ok(())
+    fem_beam::distributed::validate_subdivisions(field, subdivisions, quadrature).map_err(TrackError::setting)
 }
 
 /// Weight of sub-section s ∈ 0..=J of one element, as a fraction of the element length.

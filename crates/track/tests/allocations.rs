@@ -13,7 +13,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use track::MovingLoad;
 use track::PlacedInteractions;
 use track::system::beam_system;
-use track::{Devices, DistributedFriction};
+use track::{BallastOnBeam, Devices, DistributedFriction};
 
 /// The system allocator, counting allocations and reallocations.
 struct Counting;

@@ -4,7 +4,7 @@
 use fem_beam::reference::uic60_on_soft_soil;
 use fem_beam::{BeamModel, Support, Supports};
 use friction::InteractionKind;
-use track::{DeviceLayout, Devices, DistributedFriction, Quadrature, SectionKind, TrackError};
+use track::{BallastOnBeam, DeviceLayout, Devices, DistributedFriction, Quadrature, SectionKind, TrackError};
 
 fn model(supports: Supports) -> BeamModel {
     let case = uic60_on_soft_soil();

@@ -7,4 +7,4 @@ pub mod distributed;
 
 pub use crate::section_quadrature::Quadrature;
 pub use devices::{DeviceLayout, Devices};
-pub use distributed::DistributedFriction;
+pub use distributed::{BallastOnBeam, DistributedFriction};

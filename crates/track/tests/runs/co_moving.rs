@@ -4,7 +4,7 @@
 use fem_beam::reference::{InfiniteBeam, SteadyState, uic60_on_soft_soil};
 use fem_beam::{AbsorbingZones, BeamModel, Foundation, FoundationLaw, Mesh, Supports};
 use track::co_moving::{CoMovingResult, CoMovingSettings, run_co_moving};
-use track::{DistributedFriction, PlacedInteractions, RunSettings};
+use track::{BallastOnBeam, DistributedFriction, PlacedInteractions, RunSettings};
 
 /// A free window of `length` m in 0.25 m elements with absorbing zones of `zones` m (up to c_cr at the ends).
 fn window(law: FoundationLaw, zeta: f64, length: f64, zones: f64) -> BeamModel {

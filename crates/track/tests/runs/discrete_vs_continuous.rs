@@ -1,7 +1,7 @@
 //! Study 6 of docs/theory.md §7: 199 devices of 1 kN against f_u = 0.995 kN/m (equal total capacity 199 kN) at 150 m/s.
 
 use super::common::reference;
-use track::{Devices, DistributedFriction};
+use track::{BallastOnBeam, Devices, DistributedFriction};
 use track::{RunSettings, Simulation};
 
 #[test]

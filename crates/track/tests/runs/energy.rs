@@ -2,7 +2,7 @@
 
 use super::common::beam;
 use track::PlacedInteractions;
-use track::{Devices, DistributedFriction};
+use track::{BallastOnBeam, Devices, DistributedFriction};
 use track::{RunSettings, Simulation};
 
 #[test]

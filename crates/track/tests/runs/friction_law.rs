@@ -2,7 +2,7 @@
 
 use super::common::{beam, reference};
 use nscd::SolverKind;
-use track::{Devices, DistributedFriction};
+use track::{BallastOnBeam, Devices, DistributedFriction};
 use track::{RunSettings, Simulation};
 
 fn check_law_every_step(

@@ -3,7 +3,7 @@
 
 use super::common::{beam, reference};
 use nscd::SolverKind;
-use track::DistributedFriction;
+use track::{BallastOnBeam, DistributedFriction};
 use track::{RunResult, RunSettings, Simulation};
 
 /// A run of `model` with distributed friction `force_per_length` (N/m) at `speed` (m/s) on `kind` at relative

@@ -4,7 +4,7 @@ use super::common::{beam, relative_difference};
 use nalgebra::DVector;
 use nscd::Forcing;
 use track::PlacedInteractions;
-use track::{Devices, DistributedFriction};
+use track::{BallastOnBeam, Devices, DistributedFriction};
 use track::{MovingLoad, RunSettings, Simulation};
 
 /// The linear θ-method written independently, densely, in terms of v_{k+1}:

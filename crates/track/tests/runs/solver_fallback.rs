@@ -3,7 +3,7 @@
 
 use super::common::{beam, reference};
 use nscd::SolverKind;
-use track::DistributedFriction;
+use track::{BallastOnBeam, DistributedFriction};
 use track::{RunSettings, Simulation};
 
 /// The case that stopped `frictrack reproduce --resolution paper`: the reference track with distributed friction

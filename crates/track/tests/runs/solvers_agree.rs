@@ -6,7 +6,7 @@ use nscd::stepper::Integration;
 use nscd::{MoreauJean, SolverKind};
 use track::PlacedInteractions;
 use track::system::beam_system;
-use track::{Devices, DistributedFriction};
+use track::{BallastOnBeam, Devices, DistributedFriction};
 use track::{InitialState, MovingLoad, RunSettings, Simulation};
 
 /// Settings at `speed` with the solvers held to 1e-10, not the default 1e-6: two exact solvers are compared step by

@@ -480,7 +480,7 @@ fn each_vehicle_may_have_its_own_contact_law() {
 #[test]
 fn a_car_on_ballast_friction_runs_on_the_interior_point() {
     let model = beam(40.0, 40);
-    let interactions = track::DistributedFriction::new(5e3).interactions(&model).unwrap();
+    let interactions = track::BallastOnBeam::interactions(&track::DistributedFriction::new(5e3), &model).unwrap();
     let run = |kind: SolverKind| {
         let mut settings = RunSettings::default();
         settings.moving.speed = 40.0;
