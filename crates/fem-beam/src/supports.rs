@@ -18,6 +18,15 @@ pub enum Support {
 }
 
 impl Support {
+    /// Its name in scenario files and messages: "pinned", "clamped" or "free".
+    pub fn name(self) -> &'static str {
+        match self {
+            Support::Pinned => "pinned",
+            Support::Clamped => "clamped",
+            Support::Free => "free",
+        }
+    }
+
     /// (w constrained, θ constrained).
     fn constrains(self) -> (bool, bool) {
         match self {

@@ -362,31 +362,33 @@ fn in_friction(error: track::TrackError) -> StudyError {
 
 /// Rename a run-setting error's field to its path in the scenario file.
 fn scenario_path(error: track::TrackError) -> StudyError {
+    use track::TrackError as T;
     match error {
-        track::TrackError::Engine(nscd::NscdError::InvalidField { field, value, allowed })
-        | track::TrackError::InvalidField { field, value, allowed } => {
-            let path = match field {
-                "speed" => "load.speed",
-                "load" => "load.force",
-                "load_advance" => "integration.load_advance",
-                "max_step" => "integration.max_step",
-                "integration.step" => "integration.load_advance",
-                "solver.tolerance" => "integration.tolerance",
-                "solver.max_iterations" => "integration.max_iterations",
-                "initial.static_position" => "integration.static_start",
-                "initial.position" => "integration.steady_start",
-                "end_time" => "integration.end_time",
-                "record_sections" => "output.sections",
-                "extremes_nodes" => "output.extremes_nodes",
-                "solver" => "integration.solver",
-                other => other,
-            };
-            invalid(path, number(value), allowed)
-        }
-        track::TrackError::InvalidChoice { field: "solver", value, allowed } => {
-            invalid("integration.solver", value, allowed)
-        }
+        T::Engine(nscd::NscdError::InvalidField { field, value, allowed })
+        | T::InvalidField { field, value, allowed } => invalid(path_of(field), number(value), allowed),
+        T::InvalidCount { field, value, allowed } => invalid(path_of(field), value, allowed),
+        T::InvalidChoice { field, value, allowed } => invalid(path_of(field), value, allowed),
         other => other.into(),
+    }
+}
+
+/// The path in the scenario file of a run setting's field.
+fn path_of(field: &str) -> &str {
+    match field {
+        "speed" => "load.speed",
+        "load" => "load.force",
+        "load_advance" => "integration.load_advance",
+        "max_step" => "integration.max_step",
+        "integration.step" => "integration.load_advance",
+        "solver.tolerance" => "integration.tolerance",
+        "solver.max_iterations" => "integration.max_iterations",
+        "initial.static_position" => "integration.static_start",
+        "initial.position" => "integration.steady_start",
+        "end_time" => "integration.end_time",
+        "record_sections" => "output.sections",
+        "extremes_nodes" => "output.extremes_nodes",
+        "solver" => "integration.solver",
+        other => other,
     }
 }
 

@@ -13,7 +13,7 @@
 //! window length travelled (the stationary state's convergence measure), the extremes over the window's middle
 //! (between its absorbing zones) and the energy ledger.
 
-use crate::error::{Result, invalid};
+use crate::error::{Result, TrackError, invalid};
 use crate::placed::{PlacedInteractions, SectionKind};
 use crate::simulation::{InitialState, RunSettings, Simulation};
 use fem_beam::{BeamModel, Support};
@@ -100,12 +100,17 @@ pub fn run_co_moving(
 ) -> Result<CoMovingResult> {
     let mesh = *model.mesh();
     let supports = model.supports();
-    if supports.left != Support::Free || supports.right != Support::Clamped {
-        return Err(invalid(
-            "supports",
-            0.0,
-            "a co-moving window has a free rear end and a clamped front end (the track ahead at rest)",
-        ));
+    let wrong = match (supports.left, supports.right) {
+        (Support::Free, Support::Clamped) => None,
+        (Support::Free, right) => Some(("supports.right", right)),
+        (left, _) => Some(("supports.left", left)),
+    };
+    if let Some((field, support)) = wrong {
+        return Err(TrackError::InvalidChoice {
+            field,
+            value: support.name(),
+            allowed: "a co-moving window has a free rear end and a clamped front end (the track ahead at rest)".into(),
+        });
     }
     let l = mesh.element_length();
     let advance = settings.integration.load_advance;

@@ -39,6 +39,7 @@ const FILES: &[(&str, i32, &str)] = &[
     ("[mesh]\nelements = 18446744073709551615\n", 2, "mesh.elements"),
     ("[friction.distributed]\nforce_per_length = 1e3\nsubdivisions = 100000\n", 2, "subdivisions"),
     ("[integration]\nend_time = 1e9\n", 2, "integration.end_time"),
+    ("[integration]\nmax_iterations = 0\n", 2, "invalid integration.max_iterations = 0: must be ≥ 1"),
     ("[foundation]\nstiffness = 0.0\n[supports]\nleft = \"free\"\nright = \"free\"\n", 2, "supports"),
     ("[foundation]\nstiffness = 0.0\n[supports]\nright = \"free\"\n", 2, "supports"),
     ("[friction.devices]\ncount = 15\n", 2, "friction.devices.force"),

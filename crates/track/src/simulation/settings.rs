@@ -2,7 +2,7 @@
 //! load advance, end, solver) and what is recorded (sections, extremes window) — and the limits checked before
 //! anything is allocated.
 
-use crate::error::{Result, invalid};
+use crate::error::{Result, TrackError, invalid};
 use crate::vehicle::consist::{MAX_CONTACT_STEP, VehicleSettings};
 use fem_beam::{BeamModel, Train};
 use nscd::solver::{SolverKind, SolverSettings};
@@ -290,7 +290,11 @@ impl RunSettings {
             ));
         }
         if self.integration.solver.max_iterations == 0 {
-            return Err(invalid("solver.max_iterations", 0.0, "must be ≥ 1"));
+            return Err(TrackError::InvalidCount {
+                field: "solver.max_iterations",
+                value: 0,
+                allowed: "must be ≥ 1".into(),
+            });
         }
         Ok(())
     }

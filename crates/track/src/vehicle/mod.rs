@@ -14,7 +14,7 @@ pub mod rail;
 pub mod rail_car;
 pub mod wheel_rail;
 
-use crate::error::{Result, invalid};
+use crate::error::{Result, TrackError, invalid};
 use banded::SymmetricBanded;
 use nscd::LinearSystem;
 
@@ -103,7 +103,11 @@ impl Vehicle {
             return Err(invalid("vehicle.body", self.body as f64, format!("must be a DOF index < {n}")));
         }
         if self.wheels.is_empty() {
-            return Err(invalid("vehicle.wheels", 0.0, "needs at least one wheel"));
+            return Err(TrackError::InvalidCount {
+                field: "vehicle.wheels",
+                value: 0,
+                allowed: "needs at least one wheel".into(),
+            });
         }
         for w in &self.wheels {
             if w.dof >= n {
@@ -179,8 +183,10 @@ impl Vehicle {
             .iter()
             .map(|&i| self.weight[i] - self.wheels.iter().map(|w| k[i * n + w.dof] * x[w.dof]).sum::<f64>())
             .collect();
-        let solution = solve_dense(&mut a, &mut b).ok_or_else(|| {
-            invalid("vehicle.stiffness", 0.0, "leaves a DOF without a spring to a wheel: no static state")
+        let solution = solve_dense(&mut a, &mut b).ok_or_else(|| TrackError::InvalidChoice {
+            field: "vehicle.stiffness",
+            value: "singular",
+            allowed: "leaves a DOF without a spring to a wheel: no static state".into(),
         })?;
         for (&i, s) in free.iter().zip(solution) {
             x[i] = s;

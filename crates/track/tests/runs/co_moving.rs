@@ -115,3 +115,25 @@ fn above_the_critical_speed_a_long_enough_window_carries_the_closed_form() {
     let error = error_within_30_m(&r, &steady_state(&model, 250.0));
     assert!(error <= 1e-4 * peak, "{:e} of the peak", error / peak);
 }
+
+/// A window whose ends are not free behind and clamped ahead is refused naming the end and its support as they are
+/// (the message once read `supports = 0`).
+#[test]
+fn a_window_with_other_supports_is_refused_naming_the_end() {
+    let case = uic60_on_soft_soil();
+    let mesh = Mesh::new(60.0, 240).unwrap();
+    let at = CoMovingSettings { load_at: 30.0, track_length: 100.0, middle: (15.0, 45.0) };
+    let mut settings = RunSettings::default();
+    settings.integration.load_advance = 0.05;
+    for (supports, said) in [
+        (Supports::default(), "invalid supports.left = pinned: a co-moving window has a free rear end"),
+        (
+            Supports { left: fem_beam::Support::Free, right: fem_beam::Support::Free },
+            "invalid supports.right = free: a co-moving window has a free rear end",
+        ),
+    ] {
+        let model = BeamModel::new(case.beam, case.foundation, mesh, supports).unwrap();
+        let error = run_co_moving(&model, &PlacedInteractions::new(), &settings, &at).unwrap_err().to_string();
+        assert!(error.starts_with(said), "{error}");
+    }
+}
