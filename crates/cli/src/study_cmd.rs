@@ -4,7 +4,8 @@
 
 use crate::files::{check_output_file, prepare_output_folder, write_atomically};
 use anyhow::Result;
-use clap::{Args, ValueEnum};
+use clap::Args;
+use clap::builder::{PossibleValue, PossibleValuesParser, TypedValueParser};
 use runner::Runner;
 use scenario::DeckTrack;
 use scenario::Scenario;
@@ -13,29 +14,10 @@ use std::path::PathBuf;
 use std::time::Instant;
 use study::presets::{Preset, Resolution, StudyData, run_preset};
 
-/// Sampling of a study.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum ResolutionArg {
-    /// 20 m/s speed steps, 9 forces: quick.
-    Coarse,
-    /// 1 m/s speed steps, 41 forces: the paper's curves.
-    Paper,
-}
-
-impl ResolutionArg {
-    /// Name on the command line.
-    pub fn name(self) -> &'static str {
-        Resolution::from(self).name()
-    }
-}
-
-impl From<ResolutionArg> for Resolution {
-    fn from(r: ResolutionArg) -> Self {
-        match r {
-            ResolutionArg::Coarse => Resolution::Coarse,
-            ResolutionArg::Paper => Resolution::Paper,
-        }
-    }
+/// `--resolution NAME`: the names of [`Resolution::ALL`] with what each samples, checked by clap.
+fn resolution_parser() -> impl TypedValueParser<Value = Resolution> {
+    PossibleValuesParser::new(Resolution::ALL.map(|r| PossibleValue::new(r.name()).help(r.description())))
+        .try_map(|name| Resolution::from_name(&name))
 }
 
 /// Options shared by `frictrack study` and `frictrack reproduce`.
@@ -45,8 +27,8 @@ pub struct StudyOptions {
     #[arg(long)]
     scenario: Option<PathBuf>,
     /// Speed and force sampling.
-    #[arg(long, value_enum, default_value_t = ResolutionArg::Coarse)]
-    pub resolution: ResolutionArg,
+    #[arg(long, value_parser = resolution_parser(), default_value = "coarse")]
+    pub resolution: Resolution,
     /// Output folder (created if needed).
     #[arg(long, default_value = "out")]
     pub out: PathBuf,
@@ -168,7 +150,7 @@ pub fn run_study(
     for path in borrowed {
         journal.borrow_from(path)?;
     }
-    let resolution = Resolution::from(options.resolution);
+    let resolution = options.resolution;
     let overrides = preset.overrides(base);
     for note in &overrides {
         eprintln!("note: {}: {note}", preset.name());

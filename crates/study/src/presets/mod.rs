@@ -115,6 +115,14 @@ impl Resolution {
         }
     }
 
+    /// What it samples, in words (for the reference case).
+    pub fn description(self) -> &'static str {
+        match self {
+            Resolution::Coarse => "20 m/s speed steps, 9 forces: quick",
+            Resolution::Paper => "1 m/s speed steps, 41 forces: the paper's curves",
+        }
+    }
+
     /// The resolution called `name`, or an error naming both.
     pub fn from_name(name: &str) -> Result<Self> {
         Self::ALL.into_iter().find(|r| r.name() == name).ok_or_else(|| {
