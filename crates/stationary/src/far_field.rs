@@ -49,7 +49,7 @@ impl EndRelation {
     }
 
     /// ∫ W′² ds over the far field beyond this end (m), for the end values U = W − W_far and W′ (the wave continued
-    /// by its decaying modes, [`Self::tail_modes`]): Σ_ij a_i a_j r_i r_j/|r_i + r_j| taken with the sign that makes
+    /// by its decaying modes, `Self::tail_modes`): Σ_ij a_i a_j r_i r_j/|r_i + r_j| taken with the sign that makes
     /// each term the integral of a decaying exponential. None for a double root.
     pub fn tail_slope_square(&self, u: f64, slope: f64) -> Option<f64> {
         let a = self.tail_modes(u, slope)?;

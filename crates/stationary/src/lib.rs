@@ -4,7 +4,7 @@
 //! leaves a wave W(s) that does not change (docs/theory.md §14): no time stepping, no entry transient, no
 //! reflections. This crate solves for it directly on a finite domain closed by exact transparent ends
 //! ([`far_field`]): the moving-frame operator ([`operator`]), a semismooth Newton iteration on the soil's contact for
-//! tensionless and bilinear soils ([`solve`]), and the wave's peaks, lift-off zones and power balance ([`wave`]).
+//! tensionless and bilinear soils ([`solve()`]), and the wave's peaks, lift-off zones and power balance ([`wave`]).
 //! Continuation in speed ([`solve::solve_from`]) starts each speed from the last one's contact set.
 
 pub mod continuation;

@@ -76,7 +76,7 @@ impl<'a> Simulation<'a> {
     }
 
     /// Initial (q, v) over the free DOFs, per [`MovingLoadSettings::initial`]: a static start's deflection moves
-    /// with the loads ([`convected_velocity`]).
+    /// with the loads (`convected_velocity`).
     pub fn initial_state(&self) -> Result<(Vec<f64>, Vec<f64>)> {
         let dofs = self.model.dofs();
         let n = dofs.free_len();
