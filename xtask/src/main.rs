@@ -1,5 +1,6 @@
 //! Project automation: `cargo xtask ci` runs `.ci/run`, exactly what CI runs: the format check, clippy with
-//! warnings as errors, and the README's test command (`scripts/test`: the Rust tests, then the Python package's).
+//! warnings as errors, the API docs without broken links, and the README's test command (`scripts/test`: the Rust
+//! tests, then the Python package's).
 
 use anyhow::{Context, Result, bail};
 use std::path::Path;
@@ -16,7 +17,9 @@ fn main() -> ExitCode {
             }
         },
         _ => {
-            eprintln!("usage: cargo xtask ci    # .ci/run: format check, clippy -D warnings, scripts/test");
+            eprintln!(
+                "usage: cargo xtask ci    # .ci/run: format check, clippy -D warnings, rustdoc -D warnings, scripts/test"
+            );
             ExitCode::from(2)
         }
     }

@@ -72,7 +72,7 @@ pub struct SolverSettings {
     /// Iteration cap per step: sweeps for projection, iterations for interior point. Default 20 000.
     pub max_iterations: usize,
     /// Let the interior point re-solve only a moving window around the sections that change (exact to the same
-    /// tolerance: every section is checked; see [`interior_point`]). Default true.
+    /// tolerance: every section is checked; see [`crate::solver::interior_point`]). Default true.
     pub moving_window: bool,
 }
 

@@ -12,7 +12,7 @@ use super::{InteractionProblem, InteractionSolver, SolverKind, StepReport, StepS
 use crate::kernels::{axpy, dot};
 use friction::law::project;
 
-/// Sweeps between two looks at the contraction of the updates ([`stalls`]).
+/// Sweeps between two looks at the contraction of the updates (`stalls`).
 pub const STALL_CHECK: usize = 50;
 
 /// The sweeps beyond which Gauss–Seidel counts as stalled: by then it has cost more than ~50 interior-point

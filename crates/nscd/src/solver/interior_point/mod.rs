@@ -54,7 +54,7 @@ use sections::Sections;
 pub struct WindowStatistics {
     /// Steps where the previous impulses already satisfied the law.
     pub unchanged: usize,
-    /// Steps of compliant supports alone solved by the previous step's pressed set ([`pressed_set`]).
+    /// Steps of compliant supports alone solved by the previous step's pressed set (`pressed_set`).
     pub predicted: usize,
     /// Steps solved on a window.
     pub windowed: usize,
