@@ -424,13 +424,18 @@ impl RunSettings {
     /// The time step h = min(Δx/v, h_max) (s): the load advance Δx at the speed v, shortened to the longest step
     /// h_max where one is given.
     pub fn time_step(&self) -> f64 {
-        let h = self.integration.load_advance / self.moving.speed;
+        let h = self.advance_step();
         self.integration.max_step.map_or(h, |h_max| h.min(h_max))
     }
 
     /// Whether the longest step h_max shortens the step below Δx/v at this speed.
     pub fn step_is_capped(&self) -> bool {
-        self.time_step() < self.integration.load_advance / self.moving.speed
+        self.integration.max_step.is_some_and(|h_max| h_max < self.advance_step())
+    }
+
+    /// Δx/v (s): the step the load advance gives at this speed, before any longest step.
+    fn advance_step(&self) -> f64 {
+        self.integration.load_advance / self.moving.speed
     }
 
     /// Time for the load — the last axle of a train — to reach x = L (s).
