@@ -54,7 +54,7 @@ fn sweep_file(path: &Path) -> Result<Vec<String>> {
         .as_ref()
         .and_then(|m| serde_json::from_value::<runner::CriticalSpeed>(m["critical_speed"]["result"].clone()).ok());
     let plots = report::sweep_figures::sweep_plots(&points, &stem, scenario.as_ref(), critical.as_ref());
-    Ok(write_figures(&plots, path.parent().unwrap_or(Path::new(".")))?)
+    Ok(write_figures("--out", &plots, path.parent().unwrap_or(Path::new(".")))?)
 }
 
 /// A run folder's history and snapshot figures again, titled as `run --out` titled them (`figures` in its
@@ -73,5 +73,5 @@ fn run_folder(folder: &Path) -> Result<Vec<String>> {
     for spec in &mut plots {
         spec.subtitle = text("subtitle").unwrap_or_default();
     }
-    Ok(write_figures(&plots, folder)?)
+    Ok(write_figures("--out", &plots, folder)?)
 }

@@ -128,7 +128,7 @@ pub fn run(args: &StationaryArgs) -> Result<()> {
         write_atomically(&folder.join("stationary.json"), serde_json::to_string_pretty(&metadata)?.as_bytes())?;
         write_atomically(&folder.join(name), csv.as_bytes())?;
         let title = if scenario.title.is_empty() { "stationary wave on the infinite track" } else { &scenario.title };
-        let drawn = write_figures(&study.figures(title), folder)?;
+        let drawn = write_figures("--out", &study.figures(title), folder)?;
         eprintln!("wrote {} (stationary.json, {name}, {})", folder.display(), drawn.join(", "));
     }
     Ok(())

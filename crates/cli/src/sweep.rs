@@ -172,7 +172,7 @@ fn write_files(
     if whole && points.len() >= 2 {
         let stem = path.file_stem().map_or("sweep".into(), |s| s.to_string_lossy().into_owned());
         let plots = report::sweep_figures::sweep_plots(points, &stem, Some(scenario), critical);
-        crate::files::write_figures(&plots, path.parent().unwrap_or(std::path::Path::new(".")))?;
+        crate::files::write_figures("--out", &plots, path.parent().unwrap_or(std::path::Path::new(".")))?;
     }
     let columns: Vec<_> = runner::csv_columns(scenario.vehicle.is_some())
         .map(|(name, unit, meaning)| json!({ "name": name, "unit": unit, "meaning": meaning }))

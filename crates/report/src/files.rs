@@ -75,11 +75,11 @@ pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<()> {
 }
 
 /// Draw `plots` into `folder` (PNG and SVG each, [`crate::plot::render`]), every target checked first like any
-/// output; the names of the figures drawn.
-pub fn write_figures(plots: &[crate::plot::PlotSpec], folder: &Path) -> Result<Vec<String>> {
+/// output (`option` names where the folder was given in an error); the names of the figures drawn.
+pub fn write_figures(option: &str, plots: &[crate::plot::PlotSpec], folder: &Path) -> Result<Vec<String>> {
     for spec in plots {
         for extension in ["png", "svg"] {
-            check_output_file("--out", &folder.join(format!("{}.{extension}", spec.stem)))?;
+            check_output_file(option, &folder.join(format!("{}.{extension}", spec.stem)))?;
         }
     }
     let mut drawn = Vec::with_capacity(plots.len());
