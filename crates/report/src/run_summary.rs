@@ -179,8 +179,7 @@ pub struct FallbackSummary {
 impl RunSummary {
     /// What ran, in words: the load, train or vehicles.
     pub fn load_description(&self) -> String {
-        let r = self;
-        match (&r.vehicles, &r.train) {
+        match (&self.vehicles, &self.train) {
             (Some(v), _) => {
                 let total: f64 = v.wheels.iter().map(|w| w.static_force).sum();
                 let plural = if v.bodies.len() == 1 { "" } else { "s" };
@@ -193,18 +192,18 @@ impl RunSummary {
                 t.patches,
                 t.length,
                 t.total_force / 1e3,
-                r.axle_share.as_ref().map_or(String::new(), |s| format!(": {}", s.meaning))
+                self.axle_share.as_ref().map_or(String::new(), |s| format!(": {}", s.meaning))
             ),
-            (None, None) => format!("load {:.1} kN", r.load / 1e3),
+            (None, None) => format!("load {:.1} kN", self.load / 1e3),
         }
     }
 
     /// The friction that ran, in words.
     pub fn friction_description(&self) -> String {
-        let r = self;
-        let devices = (r.devices > 0).then(|| format!("{} devices × {:.1} kN", r.devices, r.device_force / 1e3));
+        let devices =
+            (self.devices > 0).then(|| format!("{} devices × {:.1} kN", self.devices, self.device_force / 1e3));
         let distributed =
-            (r.distributed_friction > 0.0).then(|| format!("{:.1} N/m distributed", r.distributed_friction));
+            (self.distributed_friction > 0.0).then(|| format!("{:.1} N/m distributed", self.distributed_friction));
         match (devices, distributed) {
             (None, None) => "none".into(),
             (a, b) => [a, b].into_iter().flatten().collect::<Vec<_>>().join(" and "),
@@ -213,13 +212,12 @@ impl RunSummary {
 
     /// The subtitle of the run's figures: what ran, at which speed, with which friction.
     pub fn figure_subtitle(&self) -> String {
-        let r = self;
         format!(
             "{} at {:.2} m/s ({:.0} km/h); friction: {}",
-            r.load_description(),
-            r.speed,
-            r.speed * 3.6,
-            r.friction_description()
+            self.load_description(),
+            self.speed,
+            self.speed * 3.6,
+            self.friction_description()
         )
     }
 }
