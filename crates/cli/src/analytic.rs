@@ -131,10 +131,10 @@ pub fn run(args: &AnalyticArgs) -> Result<()> {
                 println!(
                     "  {:>10.2}  {:>13.3}  {:>8.2}  {:>11.3}  {:>8.2}  {:>8.3}  {:>6.3}",
                     p.speed,
-                    p.max_downward_deflection * 1e3,
-                    p.max_downward_deflection_position,
-                    p.max_upward_deflection * 1e3,
-                    p.max_upward_deflection_position,
+                    p.max_downward_deflection.value * 1e3,
+                    p.max_downward_deflection.position.unwrap_or(f64::NAN),
+                    p.max_upward_deflection.value * 1e3,
+                    p.max_upward_deflection.position.unwrap_or(f64::NAN),
                     p.amplification_downward,
                     p.amplification_upward
                 );

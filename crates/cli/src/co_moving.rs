@@ -59,13 +59,13 @@ fn print_text(s: &CoMovingSummary) {
     println!("  {} soil, {friction}", s.soil);
     println!(
         "  the wave in the frame at the end: max downward {:.3} mm at s = {:.2} m (s = x − x_load)",
-        s.wave_max_downward_deflection * 1e3,
-        s.wave_max_downward_position + 0.0
+        s.wave_max_downward_deflection.value * 1e3,
+        s.wave_max_downward_deflection.position.unwrap_or(f64::NAN) + 0.0
     );
     println!(
         "  over the run between the zones: max downward {:.3} mm, max upward {:.3} mm",
-        s.max_downward_deflection * 1e3,
-        s.max_upward_deflection * 1e3
+        s.max_downward_deflection.value * 1e3,
+        s.max_upward_deflection.value * 1e3
     );
     if let (Some(&(distance, change)), Some(settling)) = (s.changes.last(), s.settling()) {
         let first = s.changes.first().map_or(change, |c| c.1);
@@ -84,7 +84,11 @@ fn print_text(s: &CoMovingSummary) {
     }
     println!(
         "  energy (J): load work {:.4e}, friction {:.4e}, viscous {:.4e}, carried out behind {:.4e}, balance residual {:.2e}",
-        s.load_work, s.friction_work, s.viscous_dissipation, s.transported, s.energy_residual
+        s.energy.load_work,
+        s.energy.friction_work,
+        s.energy.viscous_dissipation,
+        s.energy.transported,
+        s.energy.residual
     );
     if let Some(v) = &s.vehicles {
         println!(

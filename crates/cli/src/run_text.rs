@@ -54,42 +54,42 @@ fn print_soil(s: &report::soil_output::SoilSummary) {
         s.law, s.compression_stiffness, s.sections
     );
     let [a, b] = s.read_region;
-    match (s.largest_gap_position, s.largest_gap_time) {
-        (Some(x), Some(t)) => {
+    match s.largest_gap.place() {
+        Some((x, t)) => {
             let zones = s.lift_off_zones.len();
-            let first = s.lift_off_zones.iter().map(|z| z.first_time).fold(f64::INFINITY, f64::min);
+            let first = s.lift_off_zones.iter().filter_map(|z| z.first_time).fold(f64::INFINITY, f64::min);
             println!(
                 "    the rail lifted off the soil in {zones} zone{} reaching where the results are read (x = {a:.1}–\
                  {b:.1} m), over {} sections (first at t = {first:.4} s); largest gap {:.3} mm at x = {x:.1} m, t = \
                  {t:.4} s",
                 if zones == 1 { "" } else { "s" },
                 s.lifted_sections,
-                s.largest_gap * 1e3
+                s.largest_gap.value * 1e3
             );
             for z in s.lift_off_zones.iter().take(MAX_ZONES_LISTED) {
                 println!(
                     "      {:.2}–{:.2} m, t = {:.4}–{:.4} s, largest gap {:.3} mm",
                     z.from,
                     z.to,
-                    z.first_time,
-                    z.last_time,
-                    z.largest_gap * 1e3
+                    z.first_time.unwrap_or(f64::NAN),
+                    z.last_time.unwrap_or(f64::NAN),
+                    z.largest_gap.value * 1e3
                 );
             }
             if zones > MAX_ZONES_LISTED {
                 println!("      … {} more zones in the JSON summary (`--format json`)", zones - MAX_ZONES_LISTED);
             }
         }
-        _ => println!("    where the results are read (x = {a:.1}–{b:.1} m) the rail stayed on the soil"),
+        None => println!("    where the results are read (x = {a:.1}–{b:.1} m) the rail stayed on the soil"),
     }
-    if let Some(end) = s.end_effect_zones.iter().max_by(|p, q| p.largest_gap.total_cmp(&q.largest_gap)) {
+    if let Some(end) = fem_beam::extreme::largest_zone(&s.end_effect_zones) {
         println!(
             "    outside it, end effects (the supports, absorbing zones, the load's entry and exit — not the response \
              of a long track): {} zone{}, largest gap {:.3} mm at x = {:.1} m",
             s.end_effect_zones.len(),
             if s.end_effect_zones.len() == 1 { "" } else { "s" },
-            end.largest_gap * 1e3,
-            end.largest_gap_position
+            end.largest_gap.value * 1e3,
+            end.largest_gap.position.unwrap_or(f64::NAN)
         );
     }
     println!(
@@ -209,29 +209,21 @@ fn print_extremes(r: &RunSummary, wording: &WindowWording) {
         Some((a, b)) => println!("  extremes over the nodes at {a:.1}–{b:.1} m ([output] extremes_nodes); whole run:"),
         None => println!("  whole run (includes the entry transient from rest and the exit near x = L):"),
     }
-    let place = |x: Option<f64>, t: Option<f64>| x.zip(t);
-    line(
-        "downward",
-        r.extremes.max_downward_deflection,
-        place(r.extremes.max_downward_deflection_position, r.extremes.max_downward_deflection_time),
-        None,
-    );
-    line(
-        "upward",
-        r.extremes.max_upward_deflection,
-        place(r.extremes.max_upward_deflection_position, r.extremes.max_upward_deflection_time),
-        None,
-    );
+    let whole = [("downward", r.extremes.max_downward_deflection), ("upward", r.extremes.max_upward_deflection)];
+    for (what, e) in whole {
+        line(what, e.value, e.place(), None);
+    }
     let (a, b) = r.extremes.extremes_window;
     let why = wording.why;
     let nodes = if r.extremes.extremes_nodes.is_some() { "the nodes above" } else { "every node" };
     println!("  while the {load} is at {a:.1}–{b:.1} m ({why}), over {nodes}:");
-    match (&r.extremes.window_max_downward, &r.extremes.window_max_upward) {
-        (None, None) => println!("    none: the {load} never was in that range during the run"),
-        (down, up) => {
-            for (what, e) in [("downward", down), ("upward", up)] {
-                let d = e.as_ref().map_or(0.0, |e| e.deflection);
-                line(what, d, e.as_ref().map(|e| (e.position, e.time)), e.as_ref().map(|e| e.load_position));
+    let window =
+        [("downward", r.extremes.window_max_downward_deflection), ("upward", r.extremes.window_max_upward_deflection)];
+    match window.iter().all(|(_, e)| e.extreme.happened().is_none()) {
+        true => println!("    none: the {load} never was in that range during the run"),
+        false => {
+            for (what, e) in window {
+                line(what, e.extreme.value, e.extreme.place(), e.load_position);
             }
         }
     }
@@ -239,17 +231,16 @@ fn print_extremes(r: &RunSummary, wording: &WindowWording) {
 
 /// The static envelope and amplification, the acceleration, W̄, the energy ledger and the solver's statistics.
 fn print_numbers(r: &RunSummary) {
-    let place = |x: Option<f64>, t: Option<f64>| x.zip(t);
     println!(
         "  static (the {} standing at every position): max downward {:.3} mm; dynamic amplification {:.3}",
         if r.train.is_some() { "train" } else { "load" },
         r.extremes.static_max_downward_deflection * 1e3,
         r.extremes.dynamic_amplification
     );
-    match place(r.extremes.max_acceleration_position, r.extremes.max_acceleration_time) {
+    match r.extremes.max_acceleration.place() {
         Some((x, t)) => println!(
             "  max acceleration {:.3} m/s² at x = {x:.1} m, t = {t:.4} s (the step's mean; a bridge deck's check value)",
-            r.extremes.max_acceleration
+            r.extremes.max_acceleration.value
         ),
         None => println!("  max acceleration none (the beam never moved)"),
     }
@@ -257,11 +248,11 @@ fn print_numbers(r: &RunSummary) {
     println!(
         "  energy (J): load work {:.4e}, dissipated {:.4e} (friction {:.4e}, viscous {:.4e}), numerical {:.4e}, balance residual {:.2e}",
         r.energy.load_work,
-        r.energy.dissipated_energy,
+        r.energy.dissipated,
         r.energy.friction_dissipation,
         r.energy.viscous_dissipation,
         r.energy.numerical_dissipation,
-        r.energy.energy_residual
+        r.energy.residual
     );
     println!(
         "  {} steps of {:.3e} s, {} ({:.0} re-solved per step), solver {}: {:.2} iterations/step \

@@ -12,6 +12,7 @@
 //!   below this one.
 //! - [`load`]: consistent point forces/moments and uniform loads; [`section`]: w, θ, M from a DOF vector.
 //! - [`distributed`]: the sections of a law distributed along the beam, and ballast friction's description.
+//! - [`extreme`]: the [`Extreme`] and [`LiftOffZone`] every response is reported in.
 //! - [`statics`], [`modal`]: K q = f and K φ = ω² M φ.
 //! - [`reference`](mod@reference): the reference case and closed-form results (β, w₀, M₀, v_cr, ω_n, moving-load steady state).
 
@@ -20,6 +21,7 @@ pub mod assembly;
 pub mod distributed;
 pub mod element;
 pub mod error;
+pub mod extreme;
 pub mod load;
 pub mod mesh;
 pub mod modal;
@@ -38,6 +40,7 @@ pub use absorbing::AbsorbingZones;
 pub use assembly::BeamModel;
 pub use distributed::DistributedFriction;
 pub use error::{FemError, Result};
+pub use extreme::{Extreme, LiftOffZone};
 pub use load::LoadVector;
 pub use mesh::Mesh;
 pub use properties::{Beam, Foundation, FoundationLaw, Rayleigh};

@@ -18,6 +18,7 @@
 
 use crate::assembly::BeamModel;
 use crate::error::{FemError, Result, non_negative, positive};
+use crate::extreme::Extreme;
 use crate::mesh::Mesh;
 use crate::properties::{Beam, Foundation};
 use crate::supports::Supports;
@@ -208,22 +209,13 @@ fn quartic_roots(c2: f64, c1: f64, c0: f64) -> [Complex64; 4] {
     z
 }
 
-/// An extreme value of the steady-state deflection and where it occurs in the moving frame.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct SteadyExtreme {
-    /// Magnitude (m, ≥ 0).
-    pub magnitude: f64,
-    /// Position s = x − vt (m): positive ahead of the load, negative behind.
-    pub position: f64,
-}
-
 /// Max downward and upward steady-state deflections.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SteadyExtremes {
     /// Largest downward deflection (magnitude) and its position.
-    pub max_downward: SteadyExtreme,
+    pub max_downward: Extreme,
     /// Largest upward deflection (magnitude, 0 if the beam never rises) and its position.
-    pub max_upward: SteadyExtreme,
+    pub max_upward: Extreme,
 }
 
 /// The steady-state deflection of an infinite beam under a moving load, as a function of s = x − vt.
@@ -295,8 +287,8 @@ impl SteadyState {
         let count = (reach / step).ceil() as i64;
         let (down, up) = scan_extremes(|xi| self.g(xi, 0), (-count..=count).map(|i| i as f64 * step), step);
         SteadyExtremes {
-            max_downward: SteadyExtreme { magnitude: self.amplitude * down.1.max(0.0), position: down.0 / self.beta },
-            max_upward: SteadyExtreme { magnitude: self.amplitude * up.1.max(0.0), position: up.0 / self.beta },
+            max_downward: Extreme::in_frame(self.amplitude * down.1.max(0.0), down.0 / self.beta),
+            max_upward: Extreme::in_frame(self.amplitude * up.1.max(0.0), up.0 / self.beta),
         }
     }
 }

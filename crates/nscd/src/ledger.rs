@@ -65,3 +65,61 @@ impl EnergyLedger {
         self.viscous_dissipation - self.friction_work
     }
 }
+
+/// The energy balance of a run as it is reported (J): the ledger's terms a reader checks the identity with, the same
+/// object for a run, each point of a sweep and the co-moving window.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize), serde(deny_unknown_fields))]
+pub struct EnergyBalance {
+    /// Work of the loads (J).
+    pub load_work: f64,
+    /// Work of the friction impulses (J, ≤ 0 at θ = 1).
+    pub friction_work: f64,
+    /// What friction removed, −friction work (J).
+    pub friction_dissipation: f64,
+    /// What the viscous dashpots removed (J, ≥ 0).
+    pub viscous_dissipation: f64,
+    /// Friction plus viscous dissipation (J).
+    pub dissipated: f64,
+    /// The θ-method's numerical dissipation (J; 0 at θ = ½).
+    pub numerical_dissipation: f64,
+    /// What the shifts of a co-moving window carried out of it (J; 0 on a fixed domain).
+    pub transported: f64,
+    /// What the discrete energy identity leaves over (J; round-off).
+    pub residual: f64,
+}
+
+impl EnergyBalance {
+    /// A balance none of whose terms is known (NaN, a missing value): what a file that holds only some of them
+    /// reads back into, those filled in.
+    pub fn unknown() -> Self {
+        let n = f64::NAN;
+        Self {
+            load_work: n,
+            friction_work: n,
+            friction_dissipation: n,
+            viscous_dissipation: n,
+            dissipated: n,
+            numerical_dissipation: n,
+            transported: n,
+            residual: n,
+        }
+    }
+}
+
+impl EnergyLedger {
+    /// The balance a report shows.
+    pub fn balance(&self) -> EnergyBalance {
+        EnergyBalance {
+            load_work: self.load_work,
+            friction_work: self.friction_work,
+            // 0 − W, not −W: no "-0" in a report without friction.
+            friction_dissipation: 0.0 - self.friction_work,
+            viscous_dissipation: self.viscous_dissipation,
+            dissipated: self.dissipated(),
+            numerical_dissipation: self.numerical_dissipation,
+            transported: self.transported,
+            residual: self.residual(),
+        }
+    }
+}

@@ -34,6 +34,7 @@ pub mod system;
 
 pub use error::{NscdError, Result};
 pub use forcing::Forcing;
+pub use ledger::EnergyBalance;
 pub use moving::{Interactions, MovingInteraction, MovingState};
 pub use problem::{InteractionProblem, StepLaw};
 pub use solver::{SolverKind, SolverSettings, StepReport, StepStatus, StepWork};

@@ -16,25 +16,25 @@ use scenario::plausibility::DEFLECTION_LIMIT;
 pub fn result_warnings(case: &Case, summary: &RunSummary) -> Vec<Warning> {
     let mut out = Vec::new();
     if let Some(soil) = &summary.soil
-        && soil.largest_gap > summary.extremes.static_max_downward_deflection
+        && soil.largest_gap.value > summary.extremes.static_max_downward_deflection
         && summary.extremes.static_max_downward_deflection > 0.0
     {
         out.push(Warning {
             field: "result".into(),
-            value: format!("lift-off {:.1} mm", soil.largest_gap * 1e3),
+            value: format!("lift-off {:.1} mm", soil.largest_gap.value * 1e3),
             message: format!(
                 "the rail left the {} soil by more than the load's static deflection ({:.1} mm) at x = {:.1} m: it \
                  is thrown off the soil, not riding on it{}; the numbers are the model's",
                 soil.law,
                 summary.extremes.static_max_downward_deflection * 1e3,
-                soil.largest_gap_position.unwrap_or(f64::NAN),
+                soil.largest_gap.position.unwrap_or(f64::NAN),
                 if soil.settlement > 0.0 { "" } else { " (without self-weight nothing brings it back)" }
             ),
         });
     }
     out.extend(ripple_warning(case, summary));
     let length = case.model.mesh().length;
-    let largest = summary.extremes.max_downward_deflection.max(summary.extremes.max_upward_deflection);
+    let largest = summary.extremes.max_downward_deflection.value.max(summary.extremes.max_upward_deflection.value);
     if largest > DEFLECTION_LIMIT * length {
         out.push(Warning {
             field: "result".into(),

@@ -3,6 +3,8 @@
 //! None (null), not a placeholder 0 at x = 0, t = 0. Deflections (m) are magnitudes, positions (m), times (s),
 //! energies (J), forces (N), accelerations (m/s²).
 
+use fem_beam::Extreme;
+use nscd::EnergyBalance;
 use scenario::error::Result;
 use scenario::{Case, Scenario};
 use serde::Serialize;
@@ -10,17 +12,14 @@ use track::RunResult;
 use track::SectionKind;
 use track::vehicle::consist::VehicleSettings;
 
-/// An extreme of the run while the load was in the extremes window.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct ExtremeSummary {
-    /// Deflection magnitude (m).
-    pub deflection: f64,
-    /// Node where it happened (m).
-    pub position: f64,
-    /// When (s).
-    pub time: f64,
-    /// Where the load (the first axle) was then (m).
-    pub load_position: f64,
+/// An extreme of the run while the load was in the extremes window, and where the load (the first axle) was then.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct WindowExtreme {
+    /// The deflection's magnitude (m), its node (m) and time (s).
+    #[serde(flatten)]
+    pub extreme: Extreme,
+    /// Where the load was then (m); None if the extreme never happened.
+    pub load_position: Option<f64>,
 }
 
 /// One run, summarised. Deflections are positive magnitudes (m), relative to the self-weight state.
@@ -53,9 +52,8 @@ pub struct RunSummary {
     /// The extremes of the run, the static envelope and the amplification over it.
     #[serde(flatten)]
     pub extremes: ExtremesSummary,
-    /// The energy ledger.
-    #[serde(flatten)]
-    pub energy: EnergySummary,
+    /// The energy balance (J).
+    pub energy: EnergyBalance,
     /// How the steps were solved.
     #[serde(flatten)]
     pub stepping: SteppingSummary,
@@ -73,24 +71,12 @@ pub struct RunSummary {
 /// static envelope of the same loads and the dynamic amplification over it, and W̄.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ExtremesSummary {
-    /// Largest downward deflection (m, magnitude).
-    pub max_downward_deflection: f64,
-    /// Node of the largest downward deflection (m).
-    pub max_downward_deflection_position: Option<f64>,
-    /// Time of the largest downward deflection (s).
-    pub max_downward_deflection_time: Option<f64>,
-    /// Largest upward deflection (m).
-    pub max_upward_deflection: f64,
-    /// Node of the largest upward deflection (m).
-    pub max_upward_deflection_position: Option<f64>,
-    /// Time of the largest upward deflection (s).
-    pub max_upward_deflection_time: Option<f64>,
-    /// Largest nodal acceleration, the step's mean (m/s²).
-    pub max_acceleration: f64,
-    /// Node of the largest acceleration (m).
-    pub max_acceleration_position: Option<f64>,
-    /// Time of the largest acceleration (s).
-    pub max_acceleration_time: Option<f64>,
+    /// Largest downward deflection (m, magnitude), its node and time.
+    pub max_downward_deflection: Extreme,
+    /// Largest upward deflection (m), its node and time.
+    pub max_upward_deflection: Extreme,
+    /// Largest nodal acceleration, the step's mean (m/s²), its node and time.
+    pub max_acceleration: Extreme,
     /// Largest downward deflection of the same loads standing at every position (m).
     pub static_max_downward_deflection: f64,
     /// max downward deflection over its static value.
@@ -100,30 +86,11 @@ pub struct ExtremesSummary {
     /// The nodes [a, b] (m) the extremes are taken over; None: every node.
     pub extremes_nodes: Option<(f64, f64)>,
     /// Largest downward deflection while the load was in the window.
-    pub window_max_downward: Option<ExtremeSummary>,
+    pub window_max_downward_deflection: WindowExtreme,
     /// Largest upward deflection while the load was in the window.
-    pub window_max_upward: Option<ExtremeSummary>,
+    pub window_max_upward_deflection: WindowExtreme,
     /// W̄, the time mean of ∫|w| dx over the crossing (m²).
     pub global_norm: f64,
-}
-
-/// The energy ledger of one run (J).
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct EnergySummary {
-    /// Work of the loads (J).
-    pub load_work: f64,
-    /// Work of the friction forces (J, ≤ 0).
-    pub friction_work: f64,
-    /// Energy friction removed (J, ≥ 0).
-    pub friction_dissipation: f64,
-    /// Energy viscous damping removed (J).
-    pub viscous_dissipation: f64,
-    /// Friction plus viscous dissipation (J).
-    pub dissipated_energy: f64,
-    /// The θ-method's numerical dissipation (J; 0 at θ = ½).
-    pub numerical_dissipation: f64,
-    /// What the energy balance leaves over (J; round-off).
-    pub energy_residual: f64,
 }
 
 /// How the steps of one run were solved.
@@ -254,7 +221,7 @@ impl RunSummary {
             device_positions,
             distributed_friction: scenario.friction.distributed.as_ref().map_or(0.0, |d| d.force_per_length),
             extremes: ExtremesSummary::of(case, result)?,
-            energy: EnergySummary::of(&result.energy),
+            energy: result.energy.balance(),
             stepping: SteppingSummary::of(result),
             wall_time,
             vehicles: result.vehicles.as_ref().map(|v| {
@@ -273,14 +240,8 @@ impl ExtremesSummary {
         let settings = &case.settings;
         let window = result.window.unwrap_or_default();
         let x0 = settings.start_position();
-        let extreme = |x: &track::simulation::Extreme| {
-            x.happened().map(|x| ExtremeSummary {
-                deflection: x.magnitude,
-                position: x.position,
-                time: x.time,
-                load_position: x0 + settings.moving.speed * x.time,
-            })
-        };
+        let in_window =
+            |x: Extreme| WindowExtreme { extreme: x, load_position: x.time.map(|t| x0 + settings.moving.speed * t) };
         let statics = track::statics::static_envelope(
             &case.model,
             &case.interactions,
@@ -289,44 +250,21 @@ impl ExtremesSummary {
             settings.record.extremes_nodes,
         )?;
         Ok(Self {
-            max_downward_deflection: result.max_downward.magnitude,
-            max_downward_deflection_position: result.max_downward.happened().map(|x| x.position),
-            max_downward_deflection_time: result.max_downward.happened().map(|x| x.time),
-            max_upward_deflection: result.max_upward.magnitude,
-            max_upward_deflection_position: result.max_upward.happened().map(|x| x.position),
-            max_upward_deflection_time: result.max_upward.happened().map(|x| x.time),
-            max_acceleration: result.max_acceleration.magnitude,
-            max_acceleration_position: result.max_acceleration.happened().map(|x| x.position),
-            max_acceleration_time: result.max_acceleration.happened().map(|x| x.time),
+            max_downward_deflection: result.max_downward,
+            max_upward_deflection: result.max_upward,
+            max_acceleration: result.max_acceleration,
             static_max_downward_deflection: statics.max_downward,
             dynamic_amplification: if statics.max_downward > 0.0 {
-                result.max_downward.magnitude / statics.max_downward
+                result.max_downward.value / statics.max_downward
             } else {
                 0.0
             },
             extremes_window: window.load_range,
             extremes_nodes: settings.record.extremes_nodes,
-            window_max_downward: extreme(&window.max_downward),
-            window_max_upward: extreme(&window.max_upward),
+            window_max_downward_deflection: in_window(window.max_downward),
+            window_max_upward_deflection: in_window(window.max_upward),
             global_norm: result.global_norm,
         })
-    }
-}
-
-impl EnergySummary {
-    /// The ledger `e` of a run.
-    pub fn of(e: &nscd::EnergyLedger) -> Self {
-        Self {
-            load_work: e.load_work,
-            friction_work: e.friction_work,
-            // Positive, as `viscous_dissipation` and `dissipated_energy`: the energy friction removed (0 − W, not −W:
-            // no "-0" without friction).
-            friction_dissipation: 0.0 - e.friction_work,
-            viscous_dissipation: e.viscous_dissipation,
-            dissipated_energy: e.dissipated(),
-            numerical_dissipation: e.numerical_dissipation,
-            energy_residual: e.residual(),
-        }
     }
 }
 

@@ -2,9 +2,10 @@
 //! settlement, the soil's work and stored energy from the ledger, and where and when the rail lifted off it.
 //! Lengths and gaps in m, times in s, energies in J.
 
+use fem_beam::LiftOffZone;
+use fem_beam::extreme::{Extreme, largest_zone};
 use serde::Serialize;
 use track::RunResult;
-use track::simulation::LiftOffZone;
 
 /// A tensionless or bilinear soil under one run.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -25,13 +26,9 @@ pub struct SoilSummary {
     pub soil_energy: f64,
     /// Sections that lifted off at some time where the results are read.
     pub lifted_sections: usize,
-    /// The largest gap between rail and soil over the run where the results are read (m), 0 if the rail never left
-    /// the soil there.
-    pub largest_gap: f64,
-    /// Where it was (m), if the rail lifted.
-    pub largest_gap_position: Option<f64>,
-    /// When (s).
-    pub largest_gap_time: Option<f64>,
+    /// The largest gap between rail and soil over the run where the results are read (m), where and when; 0 if the
+    /// rail never left the soil there.
+    pub largest_gap: Extreme,
     /// The zones of neighbouring sections that lifted where the results are read, in order of x (the largest gap
     /// above is theirs).
     pub lift_off_zones: Vec<LiftOffZone>,
@@ -53,7 +50,7 @@ impl SoilSummary {
         let law = foundation.law.name();
         let (zones, ends): (Vec<LiftOffZone>, Vec<LiftOffZone>) =
             lift.zones.iter().cloned().partition(|z| z.to >= read[0] && z.from <= read[1]);
-        let largest = zones.iter().max_by(|a, b| a.largest_gap.total_cmp(&b.largest_gap));
+        let largest_gap = largest_zone(&zones).map_or(Extreme::default(), |z| z.largest_gap);
         let settlement = match self_weight && foundation.stiffness > 0.0 {
             true => model.beam().mass_per_length() * fem_beam::GRAVITY / foundation.stiffness,
             false => 0.0,
@@ -67,9 +64,7 @@ impl SoilSummary {
             soil_work: result.energy.support_work,
             soil_energy: result.energy.spring_energy,
             lifted_sections: zones.iter().map(|z| z.sections).sum(),
-            largest_gap: largest.map_or(0.0, |z| z.largest_gap),
-            largest_gap_position: largest.map(|z| z.largest_gap_position),
-            largest_gap_time: largest.map(|z| z.largest_gap_time),
+            largest_gap,
             lift_off_zones: zones,
             read_region: read,
             end_effect_zones: ends,

@@ -6,6 +6,8 @@
 use crate::figures::{DeflectionCurve, deflection_figure, quantity_figure};
 use crate::plot::PlotSpec;
 use crate::tables::Table;
+use fem_beam::Extreme;
+use nscd::EnergyBalance;
 use runner::{CSV_COLUMNS, CriticalSpeed, SweepPoint, VEHICLE_CSV_COLUMNS, VehicleColumns};
 use scenario::Scenario;
 use scenario::error::Result;
@@ -57,7 +59,7 @@ pub fn sweep_plots(
     let markers = points.len() <= crate::plot::MAX_MARKED_POINTS;
     let series = |value: &dyn Fn(&SweepPoint) -> f64| points.iter().map(|p| (p.speed, value(p))).collect::<Vec<_>>();
     // The refinement's runs drawn with the sweep, so that the refined critical speed lies on its curve.
-    let mut downward = series(&|p| p.max_downward_deflection);
+    let mut downward = series(&|p| p.max_downward_deflection.value);
     downward.extend(critical.iter().flat_map(|c| c.evaluations.iter().copied()));
     downward.sort_by(|a, b| a.0.total_cmp(&b.0));
     let mut deflection = deflection_figure(
@@ -69,14 +71,14 @@ pub fn sweep_plots(
                 label: "whole run".into(),
                 color: 0,
                 downward,
-                upward: series(&|p| p.max_upward_deflection),
+                upward: series(&|p| p.max_upward_deflection.value),
                 optimum: critical.filter(|c| c.is_interior()).map(|c| (c.speed, c.max_downward_deflection)),
             },
             DeflectionCurve {
                 label: "load in the window".into(),
                 color: 1,
-                downward: series(&|p| p.window_max_downward_deflection),
-                upward: series(&|p| p.window_max_upward_deflection),
+                downward: series(&|p| p.window_max_downward_deflection.value),
+                upward: series(&|p| p.window_max_upward_deflection.value),
                 optimum: None,
             },
         ],
@@ -105,14 +107,14 @@ pub fn sweep_plots(
         "acceleration",
         "max acceleration",
         "max vertical acceleration (m/s²)",
-        vec![("over all nodes".into(), 0, series(&|p| p.max_acceleration))],
+        vec![("over all nodes".into(), 0, series(&|p| p.max_acceleration.value))],
     ));
-    if points.iter().any(|p| p.dissipated_energy > 0.0) {
+    if points.iter().any(|p| p.energy.dissipated > 0.0) {
         plots.push(quantity(
             "energy",
             "dissipated energy",
             "energy dissipated by friction and damping (kJ)",
-            vec![("dissipated".into(), 0, series(&|p| p.dissipated_energy / 1e3))],
+            vec![("dissipated".into(), 0, series(&|p| p.energy.dissipated / 1e3))],
         ));
     }
     if points.iter().all(|p| p.vehicles.is_some()) && !points.is_empty() {
@@ -160,24 +162,20 @@ pub fn read_sweep_csv(text: &str, source: &str) -> Result<Vec<SweepPoint>> {
         .filter(|r| !r[base[1]].is_nan())
         .map(|r| {
             let v: Vec<f64> = base.iter().map(|&i| r[i]).collect();
+            let place = |x: f64| (!x.is_nan()).then_some(x);
+            let extreme =
+                |value: f64, position: f64, time: f64| Extreme { value, position: place(position), time: place(time) };
             SweepPoint {
                 speed: v[0],
-                max_downward_deflection: v[1],
-                max_upward_deflection: v[2],
-                dissipated_energy: v[3],
+                max_downward_deflection: extreme(v[1], v[5], v[6]),
+                max_upward_deflection: extreme(v[2], f64::NAN, f64::NAN),
+                window_max_downward_deflection: extreme(v[10], v[11], v[12]),
+                window_max_upward_deflection: extreme(v[13], v[14], v[15]),
+                max_acceleration: extreme(v[16], f64::NAN, f64::NAN),
                 global_norm: v[4],
-                max_downward_deflection_position: v[5],
-                max_downward_deflection_time: v[6],
-                load_work: v[7],
-                energy_residual: v[8],
+                // The CSV holds three of the balance's terms; the others are not known from it.
+                energy: EnergyBalance { load_work: v[7], dissipated: v[3], residual: v[8], ..EnergyBalance::unknown() },
                 mean_iterations: v[9],
-                window_max_downward_deflection: v[10],
-                window_max_downward_deflection_position: v[11],
-                window_max_downward_deflection_time: v[12],
-                window_max_upward_deflection: v[13],
-                window_max_upward_deflection_position: v[14],
-                window_max_upward_deflection_time: v[15],
-                max_acceleration: v[16],
                 vehicles: vehicles.as_ref().map(|c| VehicleColumns {
                     min_wheel_force: r[c[0]],
                     max_wheel_force: r[c[1]],
@@ -194,6 +192,8 @@ pub fn read_sweep_csv(text: &str, source: &str) -> Result<Vec<SweepPoint>> {
 #[cfg(test)]
 mod tests {
     use super::read_sweep_csv;
+    use fem_beam::Extreme;
+    use nscd::EnergyBalance;
     use runner::{SweepPoint, write_csv};
 
     /// What `write_csv` writes, `read_sweep_csv` reads back to the bit.
@@ -201,37 +201,31 @@ mod tests {
     fn a_sweep_csv_reads_back() {
         let point = |speed: f64| SweepPoint {
             speed,
-            max_downward_deflection: 0.1 + speed * 1e-3,
-            max_upward_deflection: 0.05,
-            dissipated_energy: 12.5,
+            max_downward_deflection: Extreme::at(0.1 + speed * 1e-3, 100.0, 0.5),
+            max_upward_deflection: Extreme { value: 0.05, position: None, time: None },
+            window_max_downward_deflection: Extreme::at(0.09, 99.0, 0.45),
+            window_max_upward_deflection: Extreme::at(0.04, 98.0, 0.44),
+            max_acceleration: Extreme { value: 12.0, position: None, time: None },
             global_norm: 0.3,
-            max_downward_deflection_position: 100.0,
-            max_downward_deflection_time: 0.5,
-            load_work: 1e3,
-            energy_residual: 1e-12,
+            energy: EnergyBalance { load_work: 1e3, dissipated: 12.5, residual: 1e-12, ..EnergyBalance::unknown() },
             mean_iterations: 3.0,
-            window_max_downward_deflection: 0.09,
-            window_max_downward_deflection_position: 99.0,
-            window_max_downward_deflection_time: 0.45,
-            window_max_upward_deflection: 0.04,
-            window_max_upward_deflection_position: 98.0,
-            window_max_upward_deflection_time: 0.44,
-            max_acceleration: 12.0,
             vehicles: None,
         };
         let points = vec![point(10.0), point(20.0), point(30.0)];
         let mut csv = Vec::new();
         write_csv(&points, &mut csv).unwrap();
         let text = String::from_utf8(csv).unwrap() + "# failed_run {}\n";
-        assert_eq!(read_sweep_csv(&text, "sweep.csv").unwrap(), points);
+        // Debug forms compare the balance's unknown terms (NaN: not in the CSV) as equal.
+        let same = |a: &[SweepPoint], b: &[SweepPoint]| assert_eq!(format!("{a:?}"), format!("{b:?}"));
+        same(&read_sweep_csv(&text, "sweep.csv").unwrap(), &points);
         // An extreme that never happened (no upward deflection in the window) has no place nor time: empty fields.
-        let still = SweepPoint { window_max_upward_deflection: 0.0, ..point(40.0) };
+        let still = SweepPoint { window_max_upward_deflection: Extreme::default(), ..point(40.0) };
         let mut csv = Vec::new();
         write_csv(std::slice::from_ref(&still), &mut csv).unwrap();
         let text = String::from_utf8(csv).unwrap();
         assert!(text.lines().nth(1).unwrap().contains(",0,,,"), "{text}");
         let back = &read_sweep_csv(&text, "sweep.csv").unwrap()[0];
-        assert!(back.window_max_upward_deflection_position.is_nan() && back.window_max_upward_deflection_time.is_nan());
+        assert_eq!(back.window_max_upward_deflection, Extreme::default());
         // A file of the earlier format (`max_downward_position`, …) reads back the same.
         let mut csv = Vec::new();
         write_csv(&points, &mut csv).unwrap();
@@ -241,6 +235,6 @@ mod tests {
             3,
         );
         assert!(old.starts_with("speed,") && old.lines().next().unwrap().contains(",max_downward_position,"));
-        assert_eq!(read_sweep_csv(&old, "old.csv").unwrap(), points);
+        same(&read_sweep_csv(&old, "old.csv").unwrap(), &points);
     }
 }

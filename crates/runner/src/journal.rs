@@ -4,8 +4,9 @@
 //! [`scenario::Case::fingerprint`]) it holds; floats are written in shortest round-trip form and read back exactly, so a
 //! resumed sweep writes the same bytes as an uninterrupted one.
 //!
-//! Format: a first line `{"frictrack_journal":1}`, then lines `{"key":"…","value":…}`. A last line cut short by a
-//! kill is dropped (and truncated away) when the journal is reopened.
+//! Format: a first line `{"frictrack_journal":N}` with N the [`scenario::RESULT_FORMAT`] of what its runs
+//! report, then lines `{"key":"…","value":…}`. A journal of another format is refused by name, never read back. A
+//! last line cut short by a kill is dropped (and truncated away) when the journal is reopened.
 
 use scenario::error::{Result, StudyError};
 use serde::Serialize;
@@ -17,7 +18,10 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::sync::Mutex;
 
-const HEADER: &str = "{\"frictrack_journal\":1}";
+/// The first line of a journal of this version's results.
+fn header() -> String {
+    format!("{{\"frictrack_journal\":{}}}", scenario::RESULT_FORMAT)
+}
 
 /// An append-only record of finished runs; shared by all worker threads.
 #[derive(Debug)]
@@ -59,7 +63,7 @@ impl Journal {
                 // Drop a line cut short by a kill so that appends start on a fresh line (appends go to the new end).
                 file.set_len(good as u64).map_err(|e| error(e.to_string()))?;
                 if good == 0 {
-                    writeln!(file, "{HEADER}").map_err(|e| error(e.to_string()))?;
+                    writeln!(file, "{}", header()).map_err(|e| error(e.to_string()))?;
                 }
                 file
             }
@@ -68,7 +72,7 @@ impl Journal {
                     std::fs::create_dir_all(folder).map_err(|e| error(e.to_string()))?;
                 }
                 let mut file = File::create(path).map_err(|e| error(e.to_string()))?;
-                writeln!(file, "{HEADER}").map_err(|e| error(e.to_string()))?;
+                writeln!(file, "{}", header()).map_err(|e| error(e.to_string()))?;
                 file
             }
         };
@@ -131,6 +135,11 @@ impl Journal {
     }
 }
 
+/// The result format a journal's first line names, if it is one.
+fn journal_format(line: &str) -> Option<u64> {
+    serde_json::from_str::<Value>(line).ok()?.get("frictrack_journal")?.as_u64()
+}
+
 /// Load the entries of a journal; returns the length in bytes of its well-formed prefix.
 fn read_entries(bytes: &[u8], finished: &mut HashMap<String, Value>) -> std::result::Result<usize, String> {
     let mut good = 0;
@@ -138,11 +147,19 @@ fn read_entries(bytes: &[u8], finished: &mut HashMap<String, Value>) -> std::res
         let complete = line.ends_with(b"\n");
         let text = std::str::from_utf8(line).map(str::trim_end);
         if number == 0 {
-            if text != Ok(HEADER) {
-                if !complete && HEADER.as_bytes().starts_with(line) {
+            let header = header();
+            if text != Ok(header.as_str()) {
+                if !complete && header.as_bytes().starts_with(line) {
                     return Ok(0);
                 }
-                return Err("not a frictrack journal (first line differs); delete it or choose another output".into());
+                return Err(match text.ok().and_then(journal_format) {
+                    Some(format) => format!(
+                        "a journal of results of format {format}, another version of frictrack (this one writes \
+                         format {}): its runs are not results of this version; delete it to run them afresh",
+                        scenario::RESULT_FORMAT
+                    ),
+                    None => "not a frictrack journal (first line differs); delete it or choose another output".into(),
+                });
             }
         } else {
             let entry: Option<(String, Value)> = text
@@ -161,4 +178,26 @@ fn read_entries(bytes: &[u8], finished: &mut HashMap<String, Value>) -> std::res
         good += line.len();
     }
     Ok(good)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A journal written by a version whose runs report another shape is refused by its format, with what to do;
+    /// one of this version reads back.
+    #[test]
+    fn a_journal_of_another_result_format_is_refused_by_name() {
+        let mut finished = HashMap::new();
+        let old = b"{\"frictrack_journal\":1}\n{\"key\":\"a\",\"value\":{\"max_downward_deflection\":0.001}}\n";
+        let message = read_entries(old, &mut finished).unwrap_err();
+        assert!(message.contains("format 1") && message.contains(&format!("format {}", scenario::RESULT_FORMAT)));
+        assert!(message.contains("delete it"), "{message}");
+        assert!(finished.is_empty());
+        let current = format!("{}\n{{\"key\":\"a\",\"value\":1.5}}\n", header());
+        assert_eq!(read_entries(current.as_bytes(), &mut finished), Ok(current.len()));
+        assert_eq!(finished["a"], 1.5);
+        let foreign = b"speed,max\n";
+        assert!(read_entries(foreign, &mut HashMap::new()).unwrap_err().contains("not a frictrack journal"));
+    }
 }

@@ -28,6 +28,8 @@ pub use optimal_force::{OptimalForce, log_spaced, optimal_device_force, refine_d
 pub use peak::{Metric, PeakLocation, RefinedPeak, refine_maximum, unrefined};
 pub use pool::{Runner, worker_threads};
 
+use fem_beam::Extreme;
+use nscd::EnergyBalance;
 use scenario::Case;
 use scenario::error::{Result, StudyError};
 use scenario::number::row_with_gaps;
@@ -37,43 +39,28 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use track::simulation::StepView;
 use track::{RunResult, RunSettings, Simulation};
 
-/// What one run of a sweep reports.
+/// What one run of a sweep reports: extremes as [`Extreme`]s (magnitudes with node and time), the energy balance.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
 pub struct SweepPoint {
     /// Load speed (m/s).
     pub speed: f64,
-    /// Max downward deflection over nodes and steps (m, magnitude).
-    pub max_downward_deflection: f64,
+    /// Max downward deflection over nodes and steps (m, magnitude), its node and time.
+    pub max_downward_deflection: Extreme,
     /// Max upward deflection (m, magnitude).
-    pub max_upward_deflection: f64,
-    /// Energy removed by friction and viscous damping (J).
-    pub dissipated_energy: f64,
+    pub max_upward_deflection: Extreme,
+    /// Max downward deflection while the load was inside the extremes window (m, magnitude).
+    pub window_max_downward_deflection: Extreme,
+    /// Max upward deflection while the load was inside the extremes window (m, magnitude).
+    pub window_max_upward_deflection: Extreme,
+    /// Largest vertical acceleration over nodes and steps (m/s², magnitude): a bridge deck's check value.
+    pub max_acceleration: Extreme,
     /// W̄ (m²).
     pub global_norm: f64,
-    /// Where the max downward deflection occurred (m).
-    pub max_downward_deflection_position: f64,
-    /// When (s).
-    pub max_downward_deflection_time: f64,
-    /// Work of the load (J).
-    pub load_work: f64,
-    /// Residual of the discrete energy balance (J).
-    pub energy_residual: f64,
+    /// The energy balance (J).
+    pub energy: EnergyBalance,
     /// Mean friction-solver iterations per step.
     pub mean_iterations: f64,
-    /// Max downward deflection while the load was inside the extremes window (m, magnitude).
-    pub window_max_downward_deflection: f64,
-    /// Where (m).
-    pub window_max_downward_deflection_position: f64,
-    /// When (s).
-    pub window_max_downward_deflection_time: f64,
-    /// Max upward deflection while the load was inside the extremes window (m, magnitude).
-    pub window_max_upward_deflection: f64,
-    /// Where (m).
-    pub window_max_upward_deflection_position: f64,
-    /// When (s).
-    pub window_max_upward_deflection_time: f64,
-    /// Largest vertical acceleration over nodes and steps (m/s², magnitude): a bridge deck's check value.
-    pub max_acceleration: f64,
     /// The vehicles' columns, in a run with vehicles.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub vehicles: Option<VehicleColumns>,
@@ -171,22 +158,14 @@ fn point_until(case: &Case, speed: f64, stop: Option<&AtomicBool>) -> Result<Swe
     let window = r.window.unwrap_or_default();
     Ok(SweepPoint {
         speed,
-        max_downward_deflection: r.max_downward.magnitude,
-        max_upward_deflection: r.max_upward.magnitude,
-        dissipated_energy: r.energy.dissipated(),
+        max_downward_deflection: r.max_downward,
+        max_upward_deflection: r.max_upward,
+        window_max_downward_deflection: window.max_downward,
+        window_max_upward_deflection: window.max_upward,
+        max_acceleration: r.max_acceleration,
         global_norm: r.global_norm,
-        max_downward_deflection_position: r.max_downward.position,
-        max_downward_deflection_time: r.max_downward.time,
-        load_work: r.energy.load_work,
-        energy_residual: r.energy.residual(),
+        energy: r.energy.balance(),
         mean_iterations: r.statistics.mean_iterations,
-        window_max_downward_deflection: window.max_downward.magnitude,
-        window_max_downward_deflection_position: window.max_downward.position,
-        window_max_downward_deflection_time: window.max_downward.time,
-        window_max_upward_deflection: window.max_upward.magnitude,
-        window_max_upward_deflection_position: window.max_upward.position,
-        window_max_upward_deflection_time: window.max_upward.time,
-        max_acceleration: r.max_acceleration.magnitude,
         vehicles: r.vehicles.as_ref().map(VehicleColumns::of),
     })
 }
@@ -250,11 +229,10 @@ pub fn write_csv(points: &[SweepPoint], out: &mut dyn Write) -> std::io::Result<
     write_csv_rows(&rows, out)
 }
 
-/// Where and when an extreme of `magnitude` happened: `value`, or missing (NaN, an empty field) when it never
-/// happened (magnitude 0: no step deflected that way while the load was in the window), not a placeholder 0 — the
-/// rule of [`track::simulation::Extreme::happened`] on the point's flattened fields.
-fn where_if(magnitude: f64, value: f64) -> f64 {
-    if magnitude > 0.0 { value } else { f64::NAN }
+/// A place or time that may be absent (an extreme that never happened) as a CSV cell: NaN, written as an empty
+/// field, not a placeholder 0.
+fn missing(value: Option<f64>) -> f64 {
+    value.unwrap_or(f64::NAN)
 }
 
 /// Write sweep rows as CSV like [`write_csv`]; a failed run's line has its speed and every other field empty (read
@@ -280,22 +258,22 @@ pub fn write_csv_rows(rows: &[SweepRow], out: &mut dyn Write) -> std::io::Result
             "{}",
             row_with_gaps(&[
                 p.speed,
-                p.max_downward_deflection,
-                p.max_upward_deflection,
-                p.dissipated_energy,
+                p.max_downward_deflection.value,
+                p.max_upward_deflection.value,
+                p.energy.dissipated,
                 p.global_norm,
-                p.max_downward_deflection_position,
-                p.max_downward_deflection_time,
-                p.load_work,
-                p.energy_residual,
+                missing(p.max_downward_deflection.position),
+                missing(p.max_downward_deflection.time),
+                p.energy.load_work,
+                p.energy.residual,
                 p.mean_iterations,
-                p.window_max_downward_deflection,
-                where_if(p.window_max_downward_deflection, p.window_max_downward_deflection_position),
-                where_if(p.window_max_downward_deflection, p.window_max_downward_deflection_time),
-                p.window_max_upward_deflection,
-                where_if(p.window_max_upward_deflection, p.window_max_upward_deflection_position),
-                where_if(p.window_max_upward_deflection, p.window_max_upward_deflection_time),
-                p.max_acceleration,
+                p.window_max_downward_deflection.value,
+                missing(p.window_max_downward_deflection.position),
+                missing(p.window_max_downward_deflection.time),
+                p.window_max_upward_deflection.value,
+                missing(p.window_max_upward_deflection.position),
+                missing(p.window_max_upward_deflection.time),
+                p.max_acceleration.value,
             ])
         )?;
         match (vehicles, p.vehicles) {

@@ -40,8 +40,8 @@ impl Metric {
     /// Its value at `point`.
     pub fn of(self, point: &SweepPoint) -> f64 {
         match self {
-            Metric::MaxDownwardDeflection => point.max_downward_deflection,
-            Metric::MaxAcceleration => point.max_acceleration,
+            Metric::MaxDownwardDeflection => point.max_downward_deflection.value,
+            Metric::MaxAcceleration => point.max_acceleration.value,
         }
     }
 }

@@ -392,6 +392,7 @@ fn path_of(field: &str) -> &str {
     }
 }
 
-/// Version of what a run reports ([`crate::SweepPoint`]'s fields), part of every fingerprint so that journals of
-/// an older format are never read back as results of this one.
-const RESULT_FORMAT: u32 = 5;
+/// Version of what a run reports (the sweep points a journal holds: their extremes, energy balance and columns),
+/// part of every fingerprint and of a journal's first line, so that results of an older format are refused, never
+/// read back as results of this one. 6: extremes as `{value, position, time}` and the energy balance as one object.
+pub const RESULT_FORMAT: u32 = 6;

@@ -32,6 +32,7 @@ pub mod trains;
 pub mod units;
 pub mod vehicle;
 
+pub use build::RESULT_FORMAT;
 pub use error::{Result, StudyError};
 pub use rail::RailSection;
 pub use sections::*;

@@ -22,4 +22,4 @@ pub use error::{Result, StationaryError};
 pub use problem::{Domain, StationaryProblem};
 pub use refine::solve_halved;
 pub use solve::{ContactGuess, Convergence, solve, solve_from};
-pub use wave::{LiftOffZone, Peak, SlipZone, StationaryWave};
+pub use wave::{PowerBalance, SlipZone, StationaryWave};

@@ -8,25 +8,24 @@ use crate::operator::MovingFrame;
 use crate::problem::StationaryProblem;
 use crate::solve::Convergence;
 use fem_beam::element::hermite;
+use fem_beam::{Extreme, LiftOffZone};
 
-/// An extreme of the wave: its value and where (s, m; positive ahead of the load).
+/// The steady state's balance, in the moving frame a balance of powers (W): what the load puts in against what the
+/// dashpots and the ballast's friction take out and what the wave leaves behind — the stationary counterpart of a
+/// run's energy balance.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct Peak {
-    /// The value (m, or N·m for moments), a magnitude for deflections.
-    pub value: f64,
-    /// s (m).
-    pub s: f64,
-}
-
-/// Neighbouring soil sections where the rail is above the soil's surface.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct LiftOffZone {
-    /// From and to (s, m).
-    pub from: f64,
-    /// To (m).
-    pub to: f64,
-    /// The largest gap in the zone (m).
-    pub largest_gap: f64,
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct PowerBalance {
+    /// F v W′(0) (W).
+    pub load: f64,
+    /// c_f v² ∫W′² ds (W).
+    pub viscous: f64,
+    /// f_u v Σ_slip |W′| (W).
+    pub friction: f64,
+    /// v·e(W_behind) (W).
+    pub left_behind: f64,
+    /// (load − viscous − friction − left behind) / load: zero for the exact wave.
+    pub imbalance: f64,
 }
 
 /// Neighbouring friction sections where the rail slides over the ballast the same way.
@@ -126,12 +125,16 @@ impl StationaryWave {
             let gap = section.deflection(&w);
             let lifted = gap > 0.0;
             if lifted {
+                let zone = LiftOffZone {
+                    from: section.s,
+                    to: section.s,
+                    sections: 1,
+                    largest_gap: Extreme::in_frame(gap, section.s),
+                    ..LiftOffZone::default()
+                };
                 match lift_off.last_mut().filter(|_| previous) {
-                    Some(zone) => {
-                        zone.to = section.s;
-                        zone.largest_gap = zone.largest_gap.max(gap);
-                    }
-                    None => lift_off.push(LiftOffZone { from: section.s, to: section.s, largest_gap: gap }),
+                    Some(open) => open.absorb(&zone),
+                    None => lift_off.push(zone),
                 }
             }
             previous = lifted;
@@ -220,18 +223,18 @@ impl StationaryWave {
     }
 
     /// The largest downward deflection (magnitude) and where.
-    pub fn max_downward(&self) -> Peak {
+    pub fn max_downward(&self) -> Extreme {
         self.deflection_extreme(-1.0)
     }
 
     /// The largest upward deflection and where.
-    pub fn max_upward(&self) -> Peak {
+    pub fn max_upward(&self) -> Extreme {
         self.deflection_extreme(1.0)
     }
 
     /// The extreme of sign·W over the whole cubic of every element, not only its nodes: where W′ = aξ² + bξ + c
     /// vanishes inside (a damped wave's trough lies between nodes, 0.07 m behind the load at 120 m/s).
-    fn deflection_extreme(&self, sign: f64) -> Peak {
+    fn deflection_extreme(&self, sign: f64) -> Extreme {
         let l = self.element_length;
         let mut best = self.extreme(&self.deflection, sign);
         for e in 0..self.s.len() - 1 {
@@ -247,7 +250,7 @@ impl StationaryWave {
                 if xi > 0.0 && xi < 1.0 {
                     let w: f64 = hermite::shape(xi, l).iter().zip(&q).map(|(n, q)| n * q).sum();
                     if sign * w > best.value {
-                        best = Peak { value: sign * w, s: self.s[e] + xi * l };
+                        best = Extreme::in_frame(sign * w, self.s[e] + xi * l);
                     }
                 }
             }
@@ -256,21 +259,21 @@ impl StationaryWave {
     }
 
     /// The largest sagging moment and where.
-    pub fn max_moment(&self) -> Peak {
+    pub fn max_moment(&self) -> Extreme {
         self.extreme(&self.moment, 1.0)
     }
 
     /// The largest hogging moment (magnitude) and where.
-    pub fn min_moment(&self) -> Peak {
+    pub fn min_moment(&self) -> Extreme {
         self.extreme(&self.moment, -1.0)
     }
 
-    fn extreme(&self, values: &[f64], sign: f64) -> Peak {
+    fn extreme(&self, values: &[f64], sign: f64) -> Extreme {
         values
             .iter()
             .zip(&self.s)
-            .map(|(v, s)| Peak { value: (sign * v).max(0.0), s: *s })
-            .fold(Peak::default(), |best, p| if p.value > best.value { p } else { best })
+            .map(|(v, s)| Extreme::in_frame((sign * v).max(0.0), *s))
+            .fold(Extreme::default(), |best, p| if p.value > best.value { p } else { best })
     }
 
     /// The deflection under the load (m).
@@ -288,6 +291,17 @@ impl StationaryWave {
     pub fn power_imbalance(&self) -> f64 {
         let out = self.viscous_power + self.friction_power + self.left_behind_power;
         if self.load_power.abs() > 0.0 { (self.load_power - out) / self.load_power } else { 0.0 }
+    }
+
+    /// The wave's power balance as it is reported.
+    pub fn power_balance(&self) -> PowerBalance {
+        PowerBalance {
+            load: self.load_power,
+            viscous: self.viscous_power,
+            friction: self.friction_power,
+            left_behind: self.left_behind_power,
+            imbalance: self.power_imbalance(),
+        }
     }
 
     /// Element length of the domain (m).

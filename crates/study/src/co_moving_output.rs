@@ -4,7 +4,8 @@
 //! (J).
 
 use fem_beam::reference::InfiniteBeam;
-use fem_beam::{AbsorbingZones, BeamModel, Foundation, Mesh, Support, Supports};
+use fem_beam::{AbsorbingZones, BeamModel, Extreme, Foundation, Mesh, Support, Supports};
+use nscd::EnergyBalance;
 use report::plot::{PlotSpec, Series, Stroke};
 use scenario::error::{Result, invalid};
 use scenario::{CoMovingSection, Scenario};
@@ -41,26 +42,17 @@ pub struct CoMovingSummary {
     pub steps: usize,
     /// Shifts of the window.
     pub shifts: usize,
-    /// Largest downward and upward deflection between the absorbing zones over the run (m).
-    pub max_downward_deflection: f64,
-    /// Upward (m).
-    pub max_upward_deflection: f64,
+    /// Largest downward deflection between the absorbing zones over the run (m, magnitude), where on the track (m
+    /// from where the window started) and when (s).
+    pub max_downward_deflection: Extreme,
+    /// Largest upward deflection (m), where and when.
+    pub max_upward_deflection: Extreme,
     /// The wave in the frame at the end: its largest downward deflection (m) and where (s, m).
-    pub wave_max_downward_deflection: f64,
-    /// s (m).
-    pub wave_max_downward_position: f64,
+    pub wave_max_downward_deflection: Extreme,
     /// After each window length: (distance travelled m, max change of the wave / its peak).
     pub changes: Vec<(f64, f64)>,
-    /// The ledger: load work, friction work, viscous dissipation, energy carried out of the window, residual (J).
-    pub load_work: f64,
-    /// Friction work (J, ≤ 0).
-    pub friction_work: f64,
-    /// Viscous dissipation (J).
-    pub viscous_dissipation: f64,
-    /// Energy the window carried out behind (J).
-    pub transported: f64,
-    /// The energy identity's residual (J).
-    pub energy_residual: f64,
+    /// The energy balance (J), with what the window carried out behind as `transported`.
+    pub energy: EnergyBalance,
     /// The solver that ran ("none" without interactions).
     pub solver: &'static str,
     /// Wall time of the loop (s).
@@ -169,8 +161,10 @@ pub fn run(scenario: &Scenario, section: &CoMovingSection) -> Result<(CoMovingSu
     let run_settings =
         scenario.run_settings_reaching(scenario.load.speed, model.mesh().length + section.track_length)?;
     let result = run_co_moving(&model, &placed, &run_settings, &settings)?;
-    let (at, peak) = result.wave.iter().fold((0.0, 0.0f64), |(s0, m), &(s, w)| if -w > m { (s, -w) } else { (s0, m) });
-    let e = &result.energy;
+    let wave_peak = result.wave.iter().fold(Extreme::default(), |m, &(s, w)| match -w > m.value {
+        true => Extreme::in_frame(-w, s),
+        false => m,
+    });
     let summary = CoMovingSummary {
         title: scenario.title.clone(),
         speed: scenario.load.speed,
@@ -186,14 +180,9 @@ pub fn run(scenario: &Scenario, section: &CoMovingSection) -> Result<(CoMovingSu
         shifts: result.shifts,
         max_downward_deflection: result.max_downward,
         max_upward_deflection: result.max_upward,
-        wave_max_downward_deflection: peak,
-        wave_max_downward_position: at,
+        wave_max_downward_deflection: wave_peak,
         changes: result.changes.clone(),
-        load_work: e.load_work,
-        friction_work: e.friction_work,
-        viscous_dissipation: e.viscous_dissipation,
-        transported: e.transported,
-        energy_residual: e.residual(),
+        energy: result.energy.balance(),
         solver: result.solver.map_or("none", |k| k.name()),
         wall_time: result.wall_time,
         irregular_rail: scenario.vehicle.is_some() && !scenario.rail.is_empty(),

@@ -3,6 +3,7 @@
 //! [`StationaryPoint`] as column names).
 
 use crate::stationary_output::StationaryPoint;
+use fem_beam::Extreme;
 use report::columns::{Column, header};
 use stationary::StationaryWave;
 
@@ -55,24 +56,26 @@ pub fn points_csv(points: &[StationaryPoint]) -> String {
     let cell = |x: Option<f64>| x.map_or(String::new(), |x| x.to_string());
     let mut out = header(&POINT_COLUMNS) + "\n";
     for p in points {
-        let gap = p.lift_off_zones.iter().map(|z| z.largest_gap).reduce(f64::max);
+        let gap = fem_beam::extreme::largest_zone(&p.lift_off_zones).map(|z| z.largest_gap.value);
+        let value = |e: Option<Extreme>| e.map(|e| e.value);
+        let position = |e: Option<Extreme>| e.and_then(|e| e.position);
         let cells = [
             p.speed.to_string(),
             p.status.to_string(),
             p.iterations.to_string(),
             p.residual.to_string(),
-            cell(p.max_downward_deflection),
-            cell(p.max_downward_deflection_position),
-            cell(p.max_upward_deflection),
-            cell(p.max_upward_deflection_position),
-            cell(p.max_moment),
-            cell(p.max_hogging_moment),
+            cell(value(p.max_downward_deflection)),
+            cell(position(p.max_downward_deflection)),
+            cell(value(p.max_upward_deflection)),
+            cell(position(p.max_upward_deflection)),
+            cell(value(p.max_moment)),
+            cell(value(p.max_hogging_moment)),
             cell(p.deflection_behind),
             p.lift_off_zones.len().to_string(),
             cell(gap),
             p.slip_zones.len().to_string(),
-            cell(p.friction_power),
-            cell(p.power_imbalance),
+            cell(p.power.map(|b| b.friction)),
+            cell(p.power.map(|b| b.imbalance)),
         ];
         out.push_str(&cells.join(","));
         out.push('\n');

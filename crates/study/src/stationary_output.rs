@@ -6,23 +6,13 @@
 
 pub use crate::stationary_csv::{POINT_COLUMNS, WAVE_COLUMNS, points_csv, wave_csv};
 
+use fem_beam::{Extreme, LiftOffZone};
 use report::plot::{PlotSpec, Series, Stroke};
 use scenario::Scenario;
 use scenario::error::Result;
 use serde::Serialize;
 use stationary::refine::ERROR_FACTOR;
-use stationary::{ContactGuess, Convergence, Domain, StationaryError, StationaryProblem, StationaryWave};
-
-/// One lift-off zone of a wave.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct ZoneSummary {
-    /// From (s, m).
-    pub from: f64,
-    /// To (s, m).
-    pub to: f64,
-    /// Largest gap between rail and soil (m).
-    pub largest_gap: f64,
-}
+use stationary::{ContactGuess, Convergence, Domain, PowerBalance, StationaryError, StationaryProblem, StationaryWave};
 
 /// One slip zone of a wave: where the rail slides over the ballast.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -46,38 +36,24 @@ pub struct StationaryPoint {
     pub iterations: usize,
     /// The relative residual of the last iterate (0 where no wave exists).
     pub residual: f64,
-    /// Largest downward deflection (m) and where (s, m); None unless converged.
-    pub max_downward_deflection: Option<f64>,
-    /// s (m).
-    pub max_downward_deflection_position: Option<f64>,
-    /// Largest upward deflection (m).
-    pub max_upward_deflection: Option<f64>,
-    /// s (m).
-    pub max_upward_deflection_position: Option<f64>,
-    /// Largest sagging moment (N·m).
-    pub max_moment: Option<f64>,
-    /// s (m).
-    pub max_moment_position: Option<f64>,
-    /// Largest hogging moment (N·m, magnitude).
-    pub max_hogging_moment: Option<f64>,
+    /// Largest downward deflection (m, magnitude) and where (s, m); None unless converged.
+    pub max_downward_deflection: Option<Extreme>,
+    /// Largest upward deflection (m) and where.
+    pub max_upward_deflection: Option<Extreme>,
+    /// Largest sagging moment (N·m) and where.
+    pub max_moment: Option<Extreme>,
+    /// Largest hogging moment (N·m, magnitude) and where.
+    pub max_hogging_moment: Option<Extreme>,
     /// Deflection under the load (m, signed).
     pub deflection_under_load: Option<f64>,
     /// Deflection at the domain's rear end (m, signed): the residual deflection left behind.
     pub deflection_behind: Option<f64>,
-    /// Where the rail left the soil.
-    pub lift_off_zones: Vec<ZoneSummary>,
+    /// Where the rail left the soil (s, m), the largest gap of each zone (m) and where.
+    pub lift_off_zones: Vec<LiftOffZone>,
     /// Where the rail slides over the ballast (none without friction).
     pub slip_zones: Vec<SlipSummary>,
-    /// F v W′(0) (W).
-    pub load_power: Option<f64>,
-    /// c_f v² ∫W′² (W).
-    pub viscous_power: Option<f64>,
-    /// f_u v ∫_slip |W′| (W): the ballast friction's dissipation.
-    pub friction_power: Option<f64>,
-    /// v·e(W_behind) (W): the energy the wave leaves behind in the soil friction holds deflected.
-    pub left_behind_power: Option<f64>,
-    /// (load − viscous − friction − left-behind)/load power: zero for the exact wave.
-    pub power_imbalance: Option<f64>,
+    /// The power balance (W): the load's power against the dashpots', the friction's and what is left behind.
+    pub power: Option<PowerBalance>,
     /// The domain behind and ahead of the load (m) and its element length (m).
     pub domain: (f64, f64, f64),
     /// The estimated discretisation error of the peaks (one halving of the elements), where estimated.
@@ -99,7 +75,9 @@ impl PeakErrors {
     /// The larger of the two errors relative to its peak.
     pub fn relative(&self, point: &StationaryPoint) -> f64 {
         let share = |e: f64, p: Option<f64>| p.map_or(0.0, |p| e / p.abs().max(f64::MIN_POSITIVE));
-        share(self.max_downward_deflection, point.max_downward_deflection).max(share(self.max_moment, point.max_moment))
+        let value = |e: Option<Extreme>| e.map(|e| e.value);
+        share(self.max_downward_deflection, value(point.max_downward_deflection))
+            .max(share(self.max_moment, value(point.max_moment)))
     }
 }
 
@@ -288,12 +266,12 @@ impl StationaryStudy {
             (
                 "downward",
                 Stroke::Solid,
-                converged.iter().filter_map(|p| Some((p.speed, p.max_downward_deflection? * 1e3))).collect(),
+                converged.iter().filter_map(|p| Some((p.speed, p.max_downward_deflection?.value * 1e3))).collect(),
             ),
             (
                 "upward",
                 Stroke::Dashed,
-                converged.iter().filter_map(|p| Some((p.speed, p.max_upward_deflection? * 1e3))).collect(),
+                converged.iter().filter_map(|p| Some((p.speed, p.max_upward_deflection?.value * 1e3))).collect(),
             ),
         ] {
             peaks.series.push(Series { label: Some(label.into()), color: 1, stroke, markers: true, points: values });
@@ -321,27 +299,20 @@ impl StationaryPoint {
         };
         let found = status == "converged";
         let some = |x: f64| found.then_some(x);
-        let (down, up, sag, hog) = (wave.max_downward(), wave.max_upward(), wave.max_moment(), wave.min_moment());
+        let peak = |x: Extreme| found.then_some(x);
         Self {
             speed: wave.speed,
             status,
             iterations,
             residual,
-            max_downward_deflection: some(down.value),
-            max_downward_deflection_position: some(down.s),
-            max_upward_deflection: some(up.value),
-            max_upward_deflection_position: some(up.s),
-            max_moment: some(sag.value),
-            max_moment_position: some(sag.s),
-            max_hogging_moment: some(hog.value),
+            max_downward_deflection: peak(wave.max_downward()),
+            max_upward_deflection: peak(wave.max_upward()),
+            max_moment: peak(wave.max_moment()),
+            max_hogging_moment: peak(wave.min_moment()),
             deflection_under_load: some(wave.under_load()),
             deflection_behind: some(wave.behind()),
             lift_off_zones: match found {
-                true => wave
-                    .lift_off
-                    .iter()
-                    .map(|z| ZoneSummary { from: z.from, to: z.to, largest_gap: z.largest_gap })
-                    .collect(),
+                true => wave.lift_off.clone(),
                 false => Vec::new(),
             },
             slip_zones: match found {
@@ -356,11 +327,7 @@ impl StationaryPoint {
                     .collect(),
                 false => Vec::new(),
             },
-            load_power: some(wave.load_power),
-            viscous_power: some(wave.viscous_power),
-            friction_power: some(wave.friction_power),
-            left_behind_power: some(wave.left_behind_power),
-            power_imbalance: some(wave.power_imbalance()),
+            power: found.then(|| wave.power_balance()),
             domain: (-wave.s[0], *wave.s.last().unwrap_or(&0.0), wave.element_length()),
             discretisation_error: None,
         }
@@ -373,21 +340,14 @@ impl StationaryPoint {
             iterations: 0,
             residual: 0.0,
             max_downward_deflection: None,
-            max_downward_deflection_position: None,
             max_upward_deflection: None,
-            max_upward_deflection_position: None,
             max_moment: None,
-            max_moment_position: None,
             max_hogging_moment: None,
             deflection_under_load: None,
             deflection_behind: None,
             lift_off_zones: Vec::new(),
             slip_zones: Vec::new(),
-            load_power: None,
-            viscous_power: None,
-            friction_power: None,
-            left_behind_power: None,
-            power_imbalance: None,
+            power: None,
             domain: (domain.behind, domain.ahead, domain.element_length),
             discretisation_error: None,
         }

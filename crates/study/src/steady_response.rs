@@ -3,7 +3,7 @@
 //! the moving frame, and their amplification over the static response of the same loads.
 
 use fem_beam::reference::{InfiniteBeam, SteadyExtremes};
-use fem_beam::{Foundation, Train};
+use fem_beam::{Extreme, Foundation, Train};
 use scenario::Scenario;
 use scenario::error::{Result, invalid};
 use serde::Serialize;
@@ -13,14 +13,11 @@ use serde::Serialize;
 pub struct SteadyPoint {
     /// Load speed v (m/s).
     pub speed: f64,
-    /// Largest downward deflection (m, magnitude).
-    pub max_downward_deflection: f64,
-    /// Where, in the moving frame s (m; s = x − vt for one load, x − x_head for a train).
-    pub max_downward_deflection_position: f64,
-    /// Largest upward deflection (m).
-    pub max_upward_deflection: f64,
-    /// Where, in the moving frame (m).
-    pub max_upward_deflection_position: f64,
+    /// Largest downward deflection (m, magnitude) and where, in the moving frame s (m; s = x − vt for one load,
+    /// x − x_head for a train).
+    pub max_downward_deflection: Extreme,
+    /// Largest upward deflection (m) and where.
+    pub max_upward_deflection: Extreme,
     /// Downward deflection over the static one w₀.
     pub amplification_downward: f64,
     /// Upward deflection over w₀.
@@ -83,7 +80,7 @@ impl SteadyResponse {
         };
         // The static response of the same load (v = 0): a train's superposed static shapes.
         let w0 = match &train {
-            Some(_) => extremes(0.0)?.max_downward.magnitude,
+            Some(_) => extremes(0.0)?.max_downward.value,
             None => beam.static_deflection(case.load),
         };
         let points = speeds
@@ -92,12 +89,10 @@ impl SteadyResponse {
                 let e = extremes(v)?;
                 Ok(SteadyPoint {
                     speed: v,
-                    max_downward_deflection: e.max_downward.magnitude,
-                    max_downward_deflection_position: e.max_downward.position,
-                    max_upward_deflection: e.max_upward.magnitude,
-                    max_upward_deflection_position: e.max_upward.position,
-                    amplification_downward: e.max_downward.magnitude / w0,
-                    amplification_upward: e.max_upward.magnitude / w0,
+                    max_downward_deflection: e.max_downward,
+                    max_upward_deflection: e.max_upward,
+                    amplification_downward: e.max_downward.value / w0,
+                    amplification_upward: e.max_upward.value / w0,
                 })
             })
             .collect::<Result<Vec<_>>>()?;

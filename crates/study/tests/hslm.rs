@@ -140,11 +140,11 @@ fn the_default_study_finds_the_peaks_of_a_fine_search() {
             (-40..=40).map(|i| resonance + 0.1 * f64::from(i)).filter(|&v| v <= 420.0 / 3.6 + 1e-9).collect();
         let points = runner.speed_sweep(&scenario.build().unwrap(), &speeds).unwrap();
         for p in &points {
-            if p.max_acceleration > acceleration.0 {
-                acceleration = (p.max_acceleration, p.speed, k);
+            if p.max_acceleration.value > acceleration.0 {
+                acceleration = (p.max_acceleration.value, p.speed, k);
             }
-            if p.max_downward_deflection > deflection.0 {
-                deflection = (p.max_downward_deflection, p.speed, k);
+            if p.max_downward_deflection.value > deflection.0 {
+                deflection = (p.max_downward_deflection.value, p.speed, k);
             }
         }
     }

@@ -16,7 +16,7 @@
 use crate::error::{Result, TrackError, invalid};
 use crate::placed::{PlacedInteractions, SectionKind};
 use crate::simulation::{InitialState, RunSettings, Simulation};
-use fem_beam::{BeamModel, Support};
+use fem_beam::{BeamModel, Extreme, Support};
 use nscd::forcing::{Constant, WithConstant};
 use nscd::stepper::{ShiftedBlock, WindowShift};
 use nscd::{EnergyLedger, Forcing, SolverKind};
@@ -44,10 +44,11 @@ pub struct CoMovingResult {
     /// After each window length travelled: (distance travelled, max |W − W a window length earlier| over the
     /// middle's nodes relative to the wave's peak there) — the stationary state's convergence measure.
     pub changes: Vec<(f64, f64)>,
-    /// Largest downward and upward deflection over the middle's nodes and the whole run (m, magnitudes).
-    pub max_downward: f64,
-    /// Upward (m).
-    pub max_upward: f64,
+    /// Largest downward deflection over the middle's nodes and the whole run (m, magnitude), where on the track (m
+    /// from where the window started) and when (s).
+    pub max_downward: Extreme,
+    /// Largest upward deflection (m), where and when.
+    pub max_upward: Extreme,
     /// The energy ledger, with the energy carried out of the window as `transported`.
     pub energy: EnergyLedger,
     /// Steps taken, shifts made.
@@ -164,7 +165,7 @@ pub fn run_co_moving(
     let snapshot = |q: &[f64]| -> Vec<f64> { middle.iter().map(|(d, _)| q[*d]).collect() };
     let shifts_per_window = ((window.middle.1 - window.middle.0) / l).round().max(1.0) as usize;
     let mut previous = snapshot(stepper.q());
-    let (mut max_downward, mut max_upward) = (0.0f64, 0.0f64);
+    let (mut max_downward, mut max_upward) = (Extreme::default(), Extreme::default());
     let mut changes = Vec::new();
     let mut shifts = 0;
     let clock = Instant::now();
@@ -182,9 +183,11 @@ pub fn run_co_moving(
             let (q, v, previous) = (stepper.q(), stepper.v(), stepper.previous_v());
             observer.observe(stepper.time, h, &stepper.p[fixed_count..], q, (v, previous));
         }
-        for &&(d, _) in &middle {
+        let travelled = shifts as f64 * l;
+        for &&(d, x) in &middle {
             let w = stepper.q()[d];
-            (max_downward, max_upward) = (max_downward.max(-w), max_upward.max(w));
+            max_downward.raise(-w, x + travelled, stepper.time);
+            max_upward.raise(w, x + travelled, stepper.time);
         }
         if k % per_element as usize == 0 {
             stepper.shift(&WindowShift { dofs: 2, chain: nb, blocks: &blocks, distance: l })?;

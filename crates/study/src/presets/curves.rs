@@ -135,8 +135,8 @@ impl Curves {
             .map(|&c| DeflectionCurve {
                 label: legend(c),
                 color: color(c),
-                downward: self.points[c].iter().map(|q| (q.speed, q.max_downward_deflection)).collect(),
-                upward: self.points[c].iter().map(|q| (q.speed, q.max_upward_deflection)).collect(),
+                downward: self.points[c].iter().map(|q| (q.speed, q.max_downward_deflection.value)).collect(),
+                upward: self.points[c].iter().map(|q| (q.speed, q.max_upward_deflection.value)).collect(),
                 optimum: self.critical[c]
                     .as_ref()
                     .filter(|k| k.is_interior())
@@ -178,12 +178,12 @@ impl Curves {
                 let values = match r {
                     Ok(p) => [
                         p.speed,
-                        p.max_downward_deflection,
-                        p.max_upward_deflection,
-                        p.dissipated_energy,
+                        p.max_downward_deflection.value,
+                        p.max_upward_deflection.value,
+                        p.energy.dissipated,
                         p.global_norm,
-                        p.window_max_downward_deflection,
-                        p.window_max_upward_deflection,
+                        p.window_max_downward_deflection.value,
+                        p.window_max_upward_deflection.value,
                     ],
                     Err(f) => [f.speed, f64::NAN, f64::NAN, f64::NAN, f64::NAN, f64::NAN, f64::NAN],
                 };
@@ -197,8 +197,8 @@ impl Curves {
         let mut items = Vec::new();
         let mut lines = Vec::new();
         for ((labels, points), critical) in self.labels.iter().zip(&self.points).zip(&self.critical) {
-            let upward = points.iter().fold(0.0f64, |m, p| m.max(p.max_upward_deflection));
-            let window = points.iter().fold(0.0f64, |m, p| m.max(p.window_max_downward_deflection));
+            let upward = points.iter().fold(0.0f64, |m, p| m.max(p.max_upward_deflection.value));
+            let window = points.iter().fold(0.0f64, |m, p| m.max(p.window_max_downward_deflection.value));
             let mut item = serde_json::Map::new();
             for (name, value) in labels {
                 item.insert(name.clone(), json!(value));

@@ -43,7 +43,7 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
                     "distributed-speed-dissipated",
                     "Distributed friction: dissipated energy vs speed",
                     "energy dissipated by friction and damping (kJ)",
-                    |q| q.dissipated_energy / 1e3,
+                    |q| q.energy.dissipated / 1e3,
                     &legend,
                     &color,
                 ),

@@ -217,14 +217,14 @@ impl Results {
             for p in &c.points {
                 let values = [
                     p.speed,
-                    p.max_downward_deflection,
-                    p.max_upward_deflection,
-                    p.max_acceleration,
-                    p.max_downward_deflection / c.static_max,
+                    p.max_downward_deflection.value,
+                    p.max_upward_deflection.value,
+                    p.max_acceleration.value,
+                    p.max_downward_deflection.value / c.static_max,
                     c.static_max,
-                    p.dissipated_energy,
-                    p.window_max_downward_deflection,
-                    p.window_max_upward_deflection,
+                    p.energy.dissipated,
+                    p.window_max_downward_deflection.value,
+                    p.window_max_upward_deflection.value,
                 ];
                 let _ = writeln!(out, "hslm-a{},{},{}", c.train, friction_name(c.friction), row(&values));
             }

@@ -13,11 +13,11 @@ const DEFLECTION_AXIS: &str = "max downward deflection";
 const ACCELERATION_AXIS: &str = "max vertical acceleration";
 
 fn deflection_mm(p: &SweepPoint) -> f64 {
-    p.max_downward_deflection * 1e3
+    p.max_downward_deflection.value * 1e3
 }
 
 fn acceleration(p: &SweepPoint) -> f64 {
-    p.max_acceleration
+    p.max_acceleration.value
 }
 
 /// `value` of the sweep linearly interpolated at `speed` (m/s) inside its range.

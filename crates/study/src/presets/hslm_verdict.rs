@@ -123,7 +123,7 @@ impl DeckVerdict {
 pub(super) fn near_limit_peaks(points: &[SweepPoint], main: &RefinedPeak, limit: f64) -> Vec<usize> {
     let a = |i: usize| points[i].max_acceleration;
     (1..points.len().saturating_sub(1))
-        .filter(|&i| a(i) >= a(i - 1) && a(i) >= a(i + 1) && a(i) >= NEAR_LIMIT * limit)
+        .filter(|&i| a(i).value >= a(i - 1).value && a(i).value >= a(i + 1).value && a(i).value >= NEAR_LIMIT * limit)
         .filter(|&i| !(points[i - 1].speed..=points[i + 1].speed).contains(&main.speed))
         .collect()
 }
@@ -182,7 +182,11 @@ mod tests {
         let sampled = [(60.0, 1.0), (70.0, 2.6), (80.0, 1.2), (90.0, 1.0), (100.0, 3.3), (110.0, 2.0), (120.0, 2.3)];
         let points: Vec<SweepPoint> = sampled
             .iter()
-            .map(|&(speed, a)| SweepPoint { speed, max_acceleration: a, ..SweepPoint::default() })
+            .map(|&(speed, a)| SweepPoint {
+                speed,
+                max_acceleration: fem_beam::Extreme::at(a, 0.0, 0.0),
+                ..SweepPoint::default()
+            })
             .collect();
         let main = RefinedPeak { speed: 99.0, range: (60.0, 120.0), ..peak(3.3, PeakLocation::Interior) };
         // 70 m/s (2.6 ≥ 0.7 × 3.5 = 2.45) is refined; 100 m/s is the main one's; 120 m/s is an end, not a local max.

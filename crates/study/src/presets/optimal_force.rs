@@ -58,8 +58,8 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
         figure_curves.push(DeflectionCurve {
             label: format!("N = {n}"),
             color: device_color(n),
-            downward: curve.iter().map(|(f, p)| (kn(*f), p.max_downward_deflection)).collect(),
-            upward: curve.iter().map(|(f, p)| (kn(*f), p.max_upward_deflection)).collect(),
+            downward: curve.iter().map(|(f, p)| (kn(*f), p.max_downward_deflection.value)).collect(),
+            upward: curve.iter().map(|(f, p)| (kn(*f), p.max_upward_deflection.value)).collect(),
             optimum: optimum.as_ref().map(|o| (kn(o.force), o.max_downward_deflection)),
         });
         refinement_runs += optimum.map_or(0, |o| o.explored.len());
@@ -95,7 +95,7 @@ fn optimum(scenario: &Scenario, speed: f64, curve: &[(f64, SweepPoint)], runner:
         return Err(invalid("device forces", format!("{} finished", curve.len()), "at least 3 to bracket an optimum"));
     }
     let forces: Vec<f64> = curve.iter().map(|(f, _)| *f).collect();
-    let values: Vec<f64> = curve.iter().map(|(_, p)| p.max_downward_deflection).collect();
+    let values: Vec<f64> = curve.iter().map(|(_, p)| p.max_downward_deflection.value).collect();
     refine_from_scan(scenario, speed, &forces, &values, 0.02, runner)
 }
 
@@ -128,7 +128,14 @@ fn scan(
         let values = match p {
             Ok(p) => {
                 curve.push((f, p.clone()));
-                [n as f64, f, speed, p.max_downward_deflection, p.max_upward_deflection, p.dissipated_energy]
+                [
+                    n as f64,
+                    f,
+                    speed,
+                    p.max_downward_deflection.value,
+                    p.max_upward_deflection.value,
+                    p.energy.dissipated,
+                ]
             }
             Err(e) => {
                 let case = format!("devices = {n}, device_force = {f}");

@@ -155,7 +155,7 @@ fn refine(
     v_cr: Option<f64>,
 ) -> Result<(InfiniteCritical, Vec<(f64, f64)>)> {
     let points = &study.points;
-    let found = |p: &StationaryPoint| p.max_downward_deflection;
+    let found = |p: &StationaryPoint| p.max_downward_deflection.map(|e| e.value);
     let Some((i, peak)) =
         points.iter().enumerate().filter_map(|(i, p)| found(p).map(|w| (i, w))).max_by(|a, b| a.1.total_cmp(&b.1))
     else {
@@ -214,8 +214,8 @@ fn csv(infinite: &[InfiniteCurve], finite: &Curves) -> String {
                 curve.soil.force_per_length,
                 p.speed,
                 p.status,
-                cell(p.max_downward_deflection),
-                cell(p.max_upward_deflection),
+                cell(p.max_downward_deflection.map(|e| e.value)),
+                cell(p.max_upward_deflection.map(|e| e.value)),
                 cell(p.deflection_behind)
             );
         }
@@ -223,7 +223,7 @@ fn csv(infinite: &[InfiniteCurve], finite: &Curves) -> String {
     for (c, &f) in FRICTION.iter().enumerate() {
         for point in finite.speed_rows(c) {
             let (status, down, up) = match point {
-                Ok(p) => ("finished", Some(p.max_downward_deflection), Some(p.max_upward_deflection)),
+                Ok(p) => ("finished", Some(p.max_downward_deflection.value), Some(p.max_upward_deflection.value)),
                 Err(_) => ("failed", None, None),
             };
             let speed = point.as_ref().map_or_else(|f| f.speed, |p| p.speed);

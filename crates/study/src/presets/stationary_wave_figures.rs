@@ -33,7 +33,7 @@ fn friction(infinite: &[InfiniteCurve], finite: &Curves) -> PlotSpec {
         "solid: stationary wave, infinite track; dashed: finite beam (distributed-speed study); gap: no wave".into();
     for (c, curve) in infinite.iter().enumerate().filter(|(_, c)| c.soil.foundation == "linear") {
         // The refinement's waves with the sweep's, so that each refined peak sits on its curve.
-        let mut series = sampled(curve, c, |p| p.max_downward_deflection);
+        let mut series = sampled(curve, c, |p| p.max_downward_deflection.map(|e| e.value));
         series.points.extend(curve.refinement.iter().map(|&(v, w)| (v, w * 1e3)));
         series.points.sort_by(|a, b| a.0.total_cmp(&b.0));
         series.markers = false;
@@ -49,7 +49,7 @@ fn friction(infinite: &[InfiniteCurve], finite: &Curves) -> PlotSpec {
     for (c, &f) in FRICTION.iter().enumerate() {
         let Some(k) = finite.find("force_per_length", f) else { continue };
         let mut points: Vec<(f64, f64)> =
-            finite.points[k].iter().map(|p| (p.speed, p.max_downward_deflection * 1e3)).collect();
+            finite.points[k].iter().map(|p| (p.speed, p.max_downward_deflection.value * 1e3)).collect();
         // The refinement's runs too, so that the finite beam's refined peak sits on its curve.
         let refined = finite.critical[k].iter().flat_map(|c| c.evaluations.iter().map(|&(v, w)| (v, w * 1e3)));
         points.extend(refined);
@@ -87,8 +87,8 @@ fn soils(infinite: &[InfiniteCurve]) -> PlotSpec {
             DeflectionCurve {
                 label: curve.soil.label().replace("no friction", "linear soil"),
                 color: c,
-                downward: points.iter().filter_map(|p| Some((p.speed, p.max_downward_deflection?))).collect(),
-                upward: points.iter().filter_map(|p| Some((p.speed, p.max_upward_deflection?))).collect(),
+                downward: points.iter().filter_map(|p| Some((p.speed, p.max_downward_deflection?.value))).collect(),
+                upward: points.iter().filter_map(|p| Some((p.speed, p.max_upward_deflection?.value))).collect(),
                 optimum: None,
             }
         })

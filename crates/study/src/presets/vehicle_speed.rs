@@ -227,7 +227,7 @@ fn csv(curves: &[Curve], force: f64) -> String {
             let values = match r {
                 Ok(p) => {
                     let vehicle = p.vehicles.map_or([force, force, 0.0, 0.0, f64::NAN, f64::NAN], |v| v.values());
-                    let mut values = vec![p.speed, p.max_downward_deflection];
+                    let mut values = vec![p.speed, p.max_downward_deflection.value];
                     values.extend(vehicle);
                     values
                 }
@@ -256,13 +256,16 @@ struct Findings {
 impl Curve {
     /// The findings of the curve; None when none of its runs finished.
     fn findings(&self, force: f64) -> Option<Findings> {
-        let peak = self.points.iter().max_by(|a, b| a.max_downward_deflection.total_cmp(&b.max_downward_deflection))?;
+        let peak = self
+            .points
+            .iter()
+            .max_by(|a, b| a.max_downward_deflection.value.total_cmp(&b.max_downward_deflection.value))?;
         let weakest =
             self.points.iter().min_by(|a, b| self.min_force(a, force).total_cmp(&self.min_force(b, force)))?;
         let lifts = self.points.iter().find(|p| p.vehicles.is_some_and(|v| v.losses_of_contact > 0)).map(|p| p.speed);
         let body = self.points.iter().filter_map(|p| self.body_acceleration(p).map(|a| (p.speed, a)));
         Some(Findings {
-            peak: (peak.speed, peak.max_downward_deflection),
+            peak: (peak.speed, peak.max_downward_deflection.value),
             weakest: (weakest.speed, self.min_force(weakest, force)),
             lifts,
             body: body.max_by(|a, b| a.1.total_cmp(&b.1)),
@@ -360,7 +363,7 @@ fn figures(curves: &[Curve], force: f64, friction: &str) -> Vec<PlotSpec> {
         // car without and with friction, not the loads.
         let quantities: [(&str, &str, &str, &Quantity<'_>); 3] = [
             ("deflection", "Vehicles vs moving force", "max downward rail deflection (mm)", &|_, p| {
-                Some(p.max_downward_deflection * 1e3)
+                Some(p.max_downward_deflection.value * 1e3)
             }),
             (
                 "wheel-force",

@@ -4,9 +4,10 @@
 //! of neighbouring sections that lifted, when, and by how much.
 
 use super::records::{Record, StepState};
-use super::results::{LiftOff, LiftOffZone};
+use super::results::LiftOff;
 use crate::error::Result;
 use crate::placed::{PlacedInteractions, SectionKind};
+use fem_beam::{Extreme, LiftOffZone};
 use friction::InteractionRow;
 
 /// A gap above this (m) counts as lifted: far above the round-off of deflections of millimetres (~1e-19 m) and far
@@ -60,11 +61,9 @@ impl LiftOffRecord {
                 let zone = LiftOffZone {
                     from: s.x,
                     to: s.x,
-                    first_time: s.first,
-                    last_time: s.last,
-                    largest_gap: s.largest.0,
-                    largest_gap_position: s.x,
-                    largest_gap_time: s.largest.1,
+                    first_time: Some(s.first),
+                    last_time: Some(s.last),
+                    largest_gap: Extreme::at(s.largest.0, s.x, s.largest.1),
                     sections: 1,
                 };
                 match zones.last_mut().filter(|_| previous_lifted) {

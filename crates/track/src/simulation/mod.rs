@@ -18,8 +18,8 @@ mod vehicles;
 
 pub use lift_off::LIFT_OFF_GAP;
 pub use results::{
-    BodyResult, Extreme, FallbackCount, LiftOff, LiftOffZone, LossOfContact, RunResult, SectionHistory,
-    SolverStatistics, StepView, VehicleResults, WheelHistory, WheelResult, WindowExtremes, WorkStatistics,
+    BodyResult, FallbackCount, LiftOff, LossOfContact, RunResult, SectionHistory, SolverStatistics, StepView,
+    VehicleResults, WheelHistory, WheelResult, WindowExtremes, WorkStatistics,
 };
 pub(crate) use settings::counts_for_extremes;
 pub use settings::{InitialState, IntegrationSettings, Load, MovingLoadSettings, RecordSettings, RunSettings};

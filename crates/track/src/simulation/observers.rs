@@ -1,10 +1,11 @@
 //! What the time loop reads after each step: the nodal deflections (extremes and W̄ in one pass), the recorders
 //! of section histories and their full-DOF scratch vectors.
 
-use super::results::{Extreme, SectionHistory, WindowExtremes};
+use super::results::{SectionHistory, WindowExtremes};
 use super::settings::counts_for_extremes;
 use crate::error::Result;
 use fem_beam::BeamModel;
+use fem_beam::Extreme;
 
 pub(super) struct Recorder {
     pub(super) position: f64,
@@ -78,12 +79,8 @@ impl NodalDeflections {
 impl DeflectionScan {
     /// Keep the record extremes (downward, upward) up to date at `time`.
     pub(super) fn update(&self, extremes: &mut (Extreme, Extreme), time: f64) {
-        if -self.lowest.0 > extremes.0.magnitude {
-            extremes.0 = Extreme { magnitude: -self.lowest.0, position: self.lowest.1, time };
-        }
-        if self.highest.0 > extremes.1.magnitude {
-            extremes.1 = Extreme { magnitude: self.highest.0, position: self.highest.1, time };
-        }
+        extremes.0.raise(-self.lowest.0, self.lowest.1, time);
+        extremes.1.raise(self.highest.0, self.highest.1, time);
     }
 
     /// The same for the extremes of a load-position window.

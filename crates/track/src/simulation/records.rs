@@ -3,12 +3,13 @@
 //! ([`SolverTally`]) and the vehicles' wheels and bodies ([`super::vehicles::VehicleObserver`]).
 
 use super::observers::{Buffers, DeflectionScan, InsideSection, NodalDeflections, Recorder, record};
-use super::results::{Extreme, SectionHistory, SolverStatistics, WindowExtremes, WorkStatistics};
+use super::results::{SectionHistory, SolverStatistics, WindowExtremes, WorkStatistics};
 use super::settings::RecordSettings;
 use crate::error::Result;
 use crate::moving_load::MovingLoad;
 use crate::placed::PlacedInteractions;
 use fem_beam::BeamModel;
+use fem_beam::Extreme;
 use fem_beam::element::hermite;
 use fem_beam::section::Motion;
 use nscd::solver::StepReport;
@@ -96,9 +97,7 @@ impl Record for DeflectionRecord {
         let scan = self.deflections.scan(&s.q[..s.beam]);
         self.update(&scan, s.load.position(s.time), s.time);
         let (a, x) = self.deflections.largest_acceleration(s.v, s.previous_v, s.h);
-        if a > self.acceleration.magnitude {
-            self.acceleration = Extreme { magnitude: a, position: x, time: s.time };
-        }
+        self.acceleration.raise(a, x, s.time);
         if s.step <= self.crossing_steps {
             self.norm_integral += 0.5 * (scan.norm + self.previous_norm) * s.h;
             self.previous_norm = scan.norm;

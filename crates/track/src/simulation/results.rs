@@ -1,26 +1,8 @@
 //! What a run reports (docs/theory.md §6): extremes over the whole run and over a window of load positions,
 //! histories at sections, solver statistics, and the state lent to observers after each step.
 
+use fem_beam::{Extreme, LiftOffZone};
 use nscd::stepper::EnergyLedger;
-
-/// An extreme deflection over the run.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct Extreme {
-    /// Magnitude (m, ≥ 0).
-    pub magnitude: f64,
-    /// Node position (m).
-    pub position: f64,
-    /// Time (s).
-    pub time: f64,
-}
-
-impl Extreme {
-    /// This extreme if it happened: a magnitude of 0 is no extreme at all (no step deflected that way), whose place
-    /// and time would be placeholders.
-    pub fn happened(&self) -> Option<&Extreme> {
-        (self.magnitude > 0.0).then_some(self)
-    }
-}
 
 /// The extremes while the load was inside a range of positions (docs/theory.md §8: away from the entry and exit
 /// transients of a finite beam started from rest).
@@ -204,49 +186,12 @@ pub struct LiftOff {
 impl LiftOff {
     /// The zone with the largest gap, if the rail ever lifted.
     pub fn largest(&self) -> Option<&LiftOffZone> {
-        self.zones.iter().max_by(|a, b| a.largest_gap.total_cmp(&b.largest_gap))
+        fem_beam::extreme::largest_zone(&self.zones)
     }
 
     /// Sections that lifted at some time, over all zones.
     pub fn lifted_sections(&self) -> usize {
         self.zones.iter().map(|z| z.sections).sum()
-    }
-}
-
-/// Neighbouring foundation sections that lifted off the soil (gap above [`crate::simulation::LIFT_OFF_GAP`]) at
-/// some time in the run.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
-pub struct LiftOffZone {
-    /// The first section's position (m).
-    pub from: f64,
-    /// The last section's position (m).
-    pub to: f64,
-    /// When the first of them lifted (s).
-    pub first_time: f64,
-    /// When the last of them was last lifted (s).
-    pub last_time: f64,
-    /// The largest gap between the rail and the soil's undeformed surface (m).
-    pub largest_gap: f64,
-    /// Where that gap was (m).
-    pub largest_gap_position: f64,
-    /// When (s).
-    pub largest_gap_time: f64,
-    /// Sections in the zone.
-    pub sections: usize,
-}
-
-impl LiftOffZone {
-    /// Widen this zone by its neighbour `next` (further along x).
-    pub(crate) fn absorb(&mut self, next: &LiftOffZone) {
-        self.to = next.to;
-        self.first_time = self.first_time.min(next.first_time);
-        self.last_time = self.last_time.max(next.last_time);
-        if next.largest_gap > self.largest_gap {
-            (self.largest_gap, self.largest_gap_position, self.largest_gap_time) =
-                (next.largest_gap, next.largest_gap_position, next.largest_gap_time);
-        }
-        self.sections += next.sections;
     }
 }
 

@@ -111,7 +111,7 @@ fn above_the_critical_speed_a_long_enough_window_carries_the_closed_form() {
     settings.integration.load_advance = 0.0125;
     let at = CoMovingSettings { load_at: 240.0, track_length: 1500.0, middle: (120.0, 360.0) };
     let r = run_co_moving(&model, &PlacedInteractions::new(), &settings, &at).unwrap();
-    let peak = r.max_downward;
+    let peak = r.max_downward.value;
     let error = error_within_30_m(&r, &steady_state(&model, 250.0));
     assert!(error <= 1e-4 * peak, "{:e} of the peak", error / peak);
 }

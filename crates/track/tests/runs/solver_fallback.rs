@@ -102,8 +102,8 @@ fn some_steps_fall_back_and_the_run_stays_within_the_solvers_spread() {
     assert_eq!(steps, observed);
     assert!(steps > 40 && steps < 360, "{steps} of 400 steps fell back: a mix is what this test is for");
     for (a, b) in [
-        (helped.max_downward.magnitude, alone.max_downward.magnitude),
-        (helped.max_upward.magnitude, alone.max_upward.magnitude),
+        (helped.max_downward.value, alone.max_downward.value),
+        (helped.max_upward.value, alone.max_upward.value),
         (helped.energy.friction_work, alone.energy.friction_work),
     ] {
         eprintln!("with fallback {a:.9e}, alone {b:.9e}: {:.2e}", (a - b).abs() / b.abs());

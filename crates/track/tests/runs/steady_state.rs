@@ -30,15 +30,15 @@ fn fe_response_matches_infinite_beam_steady_state() {
         let run = Simulation::new(&model, &interactions, &settings).unwrap().run().unwrap();
         let r = run.window.unwrap();
         let exact = infinite.steady_state(speed, case.load).unwrap().extremes();
-        let down = (r.max_downward.magnitude - exact.max_downward.magnitude) / exact.max_downward.magnitude;
-        let up = (r.max_upward.magnitude - exact.max_upward.magnitude) / exact.max_upward.magnitude;
+        let down = (r.max_downward.value - exact.max_downward.value) / exact.max_downward.value;
+        let up = (r.max_upward.value - exact.max_upward.value) / exact.max_upward.value;
         eprintln!(
             "v = {speed}: down {:.5} vs {:.5} ({:+.3} %), up {:.5} vs {:.5} ({:+.3} %)",
-            r.max_downward.magnitude,
-            exact.max_downward.magnitude,
+            r.max_downward.value,
+            exact.max_downward.value,
             100.0 * down,
-            r.max_upward.magnitude,
-            exact.max_upward.magnitude,
+            r.max_upward.value,
+            exact.max_upward.value,
             100.0 * up
         );
         assert!(down.abs() < 0.005 && up.abs() < 0.005, "v = {speed}: down {down:+e}, up {up:+e}");
@@ -106,7 +106,7 @@ fn a_train_started_from_its_steady_state_keeps_it() {
     let r = Simulation::new(&model, &PlacedInteractions::new(), &settings).unwrap().run().unwrap();
     let state = infinite.train_steady_state(speed, &train).unwrap();
     let history = &r.histories[0];
-    let scale = state.extremes().max_downward.magnitude;
+    let scale = state.extremes().max_downward.value;
     let mut compared = 0;
     for (&head, &w) in history.load_position.iter().zip(&history.deflection) {
         // The whole train within 50–150 m, away from the ends.

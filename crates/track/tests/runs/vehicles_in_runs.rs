@@ -313,7 +313,7 @@ fn a_train_populated_with_quarter_cars_carries_its_axle_loads() {
     for w in wheels {
         assert!(w.min_force > 0.99 * w.static_force && w.max_force < 1.01 * w.static_force, "{w:?}");
     }
-    let ratio = cars.max_downward.magnitude / forces.max_downward.magnitude;
+    let ratio = cars.max_downward.value / forces.max_downward.value;
     eprintln!("max deflection: cars / forces = {ratio:.5}");
     assert!((ratio - 1.0).abs() < 2e-3);
 }
@@ -345,7 +345,7 @@ fn rail_cars_carry_their_weight_on_four_wheels() {
     let wheels = &cars.vehicles.as_ref().unwrap().wheels;
     assert_eq!(wheels.len(), 8);
     let worst = wheels.iter().map(|w| w.dynamic_increment()).fold(0.0, f64::max);
-    let ratio = cars.max_downward.magnitude / forces.max_downward.magnitude;
+    let ratio = cars.max_downward.value / forces.max_downward.value;
     eprintln!("largest ΔQ/Q₀ {worst:.4}, deflection cars/forces {ratio:.5}");
     assert!(wheels.iter().all(|w| (w.static_force / quarter - 1.0).abs() < 1e-12));
     assert!(worst < 0.02 && (ratio - 1.0).abs() < 1.5e-2);
@@ -397,7 +397,7 @@ fn a_train_populated_with_rail_cars_takes_its_geometry_from_the_axles() {
         assert!((wheel.static_force / force - 1.0).abs() < 1e-12 && (wheel.offset - offset).abs() < 1e-12, "{wheel:?}");
     }
     let worst = wheels.iter().map(|w| w.dynamic_increment()).fold(0.0, f64::max);
-    let ratio = cars.max_downward.magnitude / forces.max_downward.magnitude;
+    let ratio = cars.max_downward.value / forces.max_downward.value;
     eprintln!("largest ΔQ/Q₀ {worst:.4}, deflection cars/forces {ratio:.5}");
     assert!(worst < 0.03 && (ratio - 1.0).abs() < 2e-2);
     for (bad, field) in [
@@ -503,7 +503,7 @@ fn a_car_on_ballast_friction_runs_on_the_interior_point() {
     let gap = |a: f64, b: f64| (a - b).abs() / b.abs();
     let peak = |r: &RunResult| forces(r).iter().fold(0.0f64, |m, f| m.max(f.abs()));
     let differences = [
-        gap(interior.max_downward.magnitude, clarabel.max_downward.magnitude),
+        gap(interior.max_downward.value, clarabel.max_downward.value),
         gap(interior.energy.friction_work, clarabel.energy.friction_work),
         gap(peak(&interior), peak(&clarabel)),
     ];
