@@ -21,11 +21,16 @@ fn a_damped_span_runs_and_bad_damping_is_refused() {
     let run = |path: &std::path::Path| json(&frictrack(&["run", path.to_str().unwrap(), "--format", "json"]));
     let (b, d, c) = (run(&bare), run(&damped), run(&by_coefficients));
     // Damping dissipates energy and lowers the free vibration after the load has left (end_time 2 s).
-    assert_eq!(b["viscous_dissipation"].as_f64().unwrap(), 0.0);
-    assert!(d["viscous_dissipation"].as_f64().unwrap() > 0.0);
-    assert!(d["max_upward_deflection"].as_f64().unwrap() < b["max_upward_deflection"].as_f64().unwrap());
+    assert_eq!(b["energy"]["viscous_dissipation"].as_f64().unwrap(), 0.0);
+    assert!(d["energy"]["viscous_dissipation"].as_f64().unwrap() > 0.0);
+    assert!(
+        d["max_upward_deflection"]["value"].as_f64().unwrap() < b["max_upward_deflection"]["value"].as_f64().unwrap()
+    );
     // ζ = 5 % at 1.285 and 11.57 Hz is α = 0.7266818 1/s, β = 1.2380781e-3 s (7 digits): the same run to 1e-6.
-    let (dd, cd) = (d["max_downward_deflection"].as_f64().unwrap(), c["max_downward_deflection"].as_f64().unwrap());
+    let (dd, cd) = (
+        d["max_downward_deflection"]["value"].as_f64().unwrap(),
+        c["max_downward_deflection"]["value"].as_f64().unwrap(),
+    );
     assert!((dd - cd).abs() <= 1e-6 * dd, "{dd} vs {cd}");
     let mixed = write("mixed.toml", "[damping]\nrayleigh = { ratio = 0.05, alpha = 0.1 }");
     let reversed = write("reversed.toml", "[damping]\nrayleigh = { ratio = 0.05, frequencies = [10.0, 1.0] }");
@@ -58,11 +63,13 @@ fn a_deck_reports_amplification_and_acceleration_and_warns_when_unresolved() {
     let out = frictrack(&["run", fine.to_str().unwrap(), "--format", "json"]);
     assert!(!String::from_utf8_lossy(&out.stderr).contains("warning"), "{}", String::from_utf8_lossy(&out.stderr));
     let v = json(&out);
-    let (dynamic, statics) =
-        (v["max_downward_deflection"].as_f64().unwrap(), v["static_max_downward_deflection"].as_f64().unwrap());
+    let (dynamic, statics) = (
+        v["max_downward_deflection"]["value"].as_f64().unwrap(),
+        v["static_max_downward_deflection"].as_f64().unwrap(),
+    );
     assert!((v["dynamic_amplification"].as_f64().unwrap() - dynamic / statics).abs() < 1e-12);
     assert!(statics > 5e-4 && statics < 2e-3, "static {statics} m");
-    assert!(v["max_acceleration"].as_f64().unwrap() > 0.0);
+    assert!(v["max_acceleration"]["value"].as_f64().unwrap() > 0.0);
     let coarse = write("coarse.toml", 10, 0.1);
     let stderr = String::from_utf8_lossy(&frictrack(&["run", coarse.to_str().unwrap()]).stderr).into_owned();
     // f₃ = 93.5 Hz is the highest needed: mode 3, 4 elements per half-wave, 12 elements.
@@ -81,15 +88,16 @@ fn a_deck_reports_amplification_and_acceleration_and_warns_when_unresolved() {
 }
 
 /// The example deck under HSLM-A1: while the first axle is in the middle third of the span the deck never deflects
-/// upward, so that extreme is absent — null in JSON, "none" in the text — not "0.000 mm at x = 0.0 m, t = 0"; the
+/// upward, so that extreme is absent — value 0 without place or time in JSON, "none" in the text — not "0.000 mm at x = 0.0 m, t = 0"; the
 /// window is named for what it is (the first axle, the middle third of the span, over every node).
 #[test]
 fn absent_extremes_are_absent_and_the_window_is_named_for_the_run() {
     let example = concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/hslm-bridge.toml");
     let v = json(&frictrack(&["run", example, "--format", "json"]));
-    assert!(v["window_max_upward"].is_null(), "{}", v["window_max_upward"]);
-    assert!(v["window_max_downward"]["deflection"].as_f64().unwrap() > 0.0);
-    assert!(v["max_upward_deflection_position"].as_f64().is_some(), "the whole run does deflect upward");
+    let never = serde_json::json!({ "value": 0.0, "position": null, "time": null, "load_position": null });
+    assert_eq!(v["window_max_upward_deflection"], never);
+    assert!(v["window_max_downward_deflection"]["value"].as_f64().unwrap() > 0.0);
+    assert!(v["max_upward_deflection"]["position"].as_f64().is_some(), "the whole run does deflect upward");
     let text = frictrack(&["run", example]);
     let stdout = String::from_utf8_lossy(&text.stdout);
     assert!(

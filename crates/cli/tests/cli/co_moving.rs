@@ -14,15 +14,17 @@ fn a_co_moving_run_settles_on_the_analytic_wave_and_refuses_a_window_too_short()
     let path = file.to_str().unwrap();
     let run = json(&frictrack(&["run", path, "--format", "json"]));
     let closed = json(&frictrack(&["analytic", path, "--speed", "100", "--format", "json"]));
-    let (w, w0) =
-        (run["wave_max_downward_deflection"].as_f64().unwrap(), closed["max_downward_deflection"].as_f64().unwrap());
+    let (w, w0) = (
+        run["wave_max_downward_deflection"]["value"].as_f64().unwrap(),
+        closed["max_downward_deflection"]["value"].as_f64().unwrap(),
+    );
     // 1 m elements and nodes only: the trough lies 0.07 m behind the load, between nodes (1e-3 of the peak).
     assert!((w - w0).abs() <= 2e-3 * w0, "{w} vs {w0}");
     assert_eq!(run["steps"], 6000);
     assert_eq!((run["soil"].as_str(), run["distributed_friction"].as_f64()), (Some("linear"), Some(0.0)));
     let last = run["changes"].as_array().unwrap().last().unwrap()[1].as_f64().unwrap();
     assert!(last < 1e-5, "{last}");
-    assert!(run["energy_residual"].as_f64().unwrap().abs() <= 1e-9 * run["load_work"].as_f64().unwrap());
+    assert!(run["energy"]["residual"].as_f64().unwrap().abs() <= 1e-9 * run["energy"]["load_work"].as_f64().unwrap());
     let out = folder.join("out");
     assert!(frictrack(&["run", path, "--out", out.to_str().unwrap()]).status.success());
     for name in ["co-moving.json", "wave.csv", "co-moving-wave.png", "co-moving-convergence.svg"] {
@@ -74,7 +76,10 @@ fn a_quarter_car_rides_the_window_over_a_dipped_joint() {
         (vehicles["wheels"][0]["static_force"].as_f64().unwrap(), vehicles["max_wheel_force"].as_f64().unwrap());
     assert!((peak / q0 - 1.344).abs() < 0.01, "{peak} N against Q₀ {q0} N");
     assert_eq!(run["irregular_rail"], true);
-    assert!(run["energy_residual"].as_f64().unwrap().abs() <= 1e-9 * run["viscous_dissipation"].as_f64().unwrap());
+    assert!(
+        run["energy"]["residual"].as_f64().unwrap().abs()
+            <= 1e-9 * run["energy"]["viscous_dissipation"].as_f64().unwrap()
+    );
     let text = String::from_utf8_lossy(&frictrack(&["run", path]).stdout).to_string();
     assert!(text.contains("1 vehicle (1 wheel, the first at s = 0)") && text.contains("no stationary state"), "{text}");
     assert!(text.contains("vehicles (hertz contact): wheel force"), "{text}");

@@ -44,7 +44,7 @@ fn reference_reports_static_case_against_closed_form() {
 fn analytic_matches_model_md_value() {
     let v = json(&frictrack(&["analytic", "--speed", "200", "--damping-ratio", "0.05", "--format", "json"]));
     // docs/theory.md §8: 176.17 mm at v = 200 m/s, ζ = 0.05.
-    let w = v["max_downward_deflection"].as_f64().unwrap();
+    let w = v["max_downward_deflection"]["value"].as_f64().unwrap();
     assert!((w - 0.17617).abs() < 0.5e-5, "{w}");
     let curve = json(&frictrack(&["analytic", "--speeds", "10:300:10", "--damping-ratio", "0.1", "--format", "json"]));
     let points = curve.as_array().unwrap();
@@ -52,7 +52,10 @@ fn analytic_matches_model_md_value() {
     let peak = points
         .iter()
         .max_by(|a, b| {
-            a["max_downward_deflection"].as_f64().partial_cmp(&b["max_downward_deflection"].as_f64()).unwrap()
+            a["max_downward_deflection"]["value"]
+                .as_f64()
+                .partial_cmp(&b["max_downward_deflection"]["value"].as_f64())
+                .unwrap()
         })
         .unwrap();
     let v_peak = peak["speed"].as_f64().unwrap();
@@ -63,40 +66,45 @@ fn analytic_matches_model_md_value() {
 fn run_prints_the_documented_json() {
     let v =
         json(&frictrack(&["run", "--speed", "180", "--devices", "31", "--device-force", "50e3", "--format", "json"]));
+    // One shape for every extreme ({value, position, time}) and one object for the energy balance.
     for key in [
-        "max_downward_deflection",
-        "max_upward_deflection",
-        "max_downward_deflection_position",
-        "max_downward_deflection_time",
-        "max_upward_deflection_position",
-        "max_upward_deflection_time",
-        "load_work",
-        "friction_work",
-        "friction_dissipation",
-        "dissipated_energy",
-        "numerical_dissipation",
-        "energy_residual",
-        "steps",
-        "mean_iterations",
-        "max_iterations",
-        "solver",
-        "wall_time",
+        "/max_downward_deflection/value",
+        "/max_downward_deflection/position",
+        "/max_downward_deflection/time",
+        "/max_upward_deflection/value",
+        "/max_upward_deflection/position",
+        "/max_upward_deflection/time",
+        "/max_acceleration/value",
+        "/window_max_downward_deflection/load_position",
+        "/energy/load_work",
+        "/energy/friction_work",
+        "/energy/friction_dissipation",
+        "/energy/dissipated",
+        "/energy/numerical_dissipation",
+        "/energy/transported",
+        "/energy/residual",
+        "/steps",
+        "/mean_iterations",
+        "/max_iterations",
+        "/solver",
+        "/wall_time",
     ] {
-        assert!(v.get(key).is_some(), "missing {key}");
+        assert!(v.pointer(key).is_some_and(|x| !x.is_null()), "missing {key}");
     }
-    let f = |k: &str| v[k].as_f64().unwrap();
+    let f = |k: &str| v.pointer(k).and_then(serde_json::Value::as_f64).unwrap();
     assert_eq!(v["solver"], "projection");
     assert_eq!(v["steps"], 2000);
-    assert!(f("max_downward_deflection") > 0.0 && f("max_upward_deflection") > 0.0);
-    assert!(f("dissipated_energy") > 0.0 && f("friction_work") < 0.0);
+    assert!(f("/max_downward_deflection/value") > 0.0 && f("/max_upward_deflection/value") > 0.0);
+    assert!(f("/energy/dissipated") > 0.0 && f("/energy/friction_work") < 0.0);
     // Dissipations are positive: friction's is the opposite of its work, and all of the dissipated energy here.
-    assert_eq!(f("friction_dissipation"), -f("friction_work"));
-    assert_eq!(f("friction_dissipation") + f("viscous_dissipation"), f("dissipated_energy"));
-    assert!(f("energy_residual").abs() < 1e-9 * f("load_work"));
+    assert_eq!(f("/energy/friction_dissipation"), -f("/energy/friction_work"));
+    assert_eq!(f("/energy/friction_dissipation") + f("/energy/viscous_dissipation"), f("/energy/dissipated"));
+    assert!(f("/energy/residual").abs() < 1e-9 * f("/energy/load_work"));
+    assert_eq!(f("/energy/transported"), 0.0, "a fixed track carries nothing out");
     assert_eq!(v["device_positions"].as_array().unwrap().len(), 31);
     // Friction cuts the peak of the friction-free run.
     let free = json(&frictrack(&["run", "--speed", "180", "--format", "json"]));
-    assert!(f("max_downward_deflection") < free["max_downward_deflection"].as_f64().unwrap());
+    assert!(f("/max_downward_deflection/value") < free["max_downward_deflection"]["value"].as_f64().unwrap());
 }
 
 #[test]

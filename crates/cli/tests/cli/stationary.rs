@@ -15,8 +15,8 @@ fn the_linear_stationary_wave_is_the_analytic_one() {
         let closed = json(&frictrack(&["analytic", path, "--speed", speed, "--format", "json"]));
         assert_eq!(wave["status"], "converged");
         for key in ["max_downward_deflection", "max_upward_deflection"] {
-            let (a, b) = (wave[key].as_f64().unwrap(), closed[key].as_f64().unwrap());
-            let peak = closed["max_downward_deflection"].as_f64().unwrap();
+            let (a, b) = (wave[key]["value"].as_f64().unwrap(), closed[key]["value"].as_f64().unwrap());
+            let peak = closed["max_downward_deflection"]["value"].as_f64().unwrap();
             assert!((a - b).abs() <= 1e-4 * peak, "v {speed} {key}: {a} vs {b}");
         }
     }
@@ -46,7 +46,7 @@ fn a_tensionless_sweep_reports_lift_off_and_where_no_wave_was_found() {
     for p in &points[..2] {
         assert_eq!(p["status"], "converged");
         assert!(!p["lift_off_zones"].as_array().unwrap().is_empty(), "{p}");
-        assert!(p["power_imbalance"].as_f64().unwrap().abs() < 2e-4);
+        assert!(p["power"]["imbalance"].as_f64().unwrap().abs() < 2e-4);
     }
     for p in &points[2..] {
         assert_eq!(p["status"], "not converged");
@@ -63,7 +63,17 @@ fn a_tensionless_sweep_reports_lift_off_and_where_no_wave_was_found() {
     assert_eq!((meta["csv"].as_str(), header), (Some("speeds.csv"), names.join(",")));
     assert_eq!(meta["columns"][4], serde_json::json!({ "name": "max_downward_deflection", "unit": "m" }));
     assert_eq!(meta["points"].as_array().unwrap().len(), points.len());
-    assert!(names.iter().all(|n| n.starts_with("largest_gap") || meta["points"][0].get(n).is_some()), "{names:?}");
+    // Each column is a key of the points, flattened: an extreme's value under its name, its place as `_position`,
+    // the power balance's terms as `<term>_power`/`power_<term>`.
+    let point = &meta["points"][0];
+    let flattened = |name: &str| {
+        let extreme = name.strip_suffix("_position").map_or(point.get(name).and_then(|x| x.get("value")), |base| {
+            point.get(base).and_then(|x| x.get("position"))
+        });
+        let power = name.strip_suffix("_power").or(name.strip_prefix("power_")).and_then(|t| point["power"].get(t));
+        point.get(name).filter(|x| !x.is_object()).or(extreme).or(power).is_some()
+    };
+    assert!(names.iter().all(|n| n.starts_with("largest_gap") || flattened(n)), "{names:?}");
     let text = String::from_utf8_lossy(&frictrack(&["stationary", path, "--speeds", "40:160:40"]).stdout).to_string();
     assert!(text.contains("not converged (residual") && text.contains("run the load across a long finite track"));
     // One speed: the wave's shape as CSV, the load at s = 0 with the largest downward deflection.
@@ -158,8 +168,8 @@ fn the_stationary_wave_with_ballast_friction_reports_its_slip_zones_and_what_is_
     assert!(!point["slip_zones"].as_array().unwrap().is_empty(), "{point}");
     let behind = point["deflection_behind"].as_f64().unwrap();
     assert!(behind.abs() > 1e-4 && behind.abs() <= 8e-3, "{behind}");
-    let (load, friction) = (point["load_power"].as_f64().unwrap(), point["friction_power"].as_f64().unwrap());
-    assert!(friction > 0.1 * load && point["power_imbalance"].as_f64().unwrap().abs() <= 5e-4, "{point}");
+    let power = |term: &str| point["power"][term].as_f64().unwrap();
+    assert!(power("friction") > 0.1 * power("load") && power("imbalance").abs() <= 5e-4, "{point}");
     let text = String::from_utf8_lossy(&frictrack(&["stationary", path, "--speed", "100"]).stdout).to_string();
     assert!(text.contains("ballast friction 2.00 kN/m") && text.contains("slip zones"), "{text}");
     let csv = frictrack(&["stationary", path, "--speed", "100", "--format", "csv"]);
@@ -185,7 +195,7 @@ fn the_peaks_carry_their_discretisation_error_and_a_coarse_mesh_is_warned_about(
     let point = json(&fine);
     let error = point["discretisation_error"]["max_moment"].as_f64().unwrap();
     // 0.25 m elements: the moment is 0.056 % low (against 1/32 m elements), estimated 0.09 %.
-    let moment = point["max_moment"].as_f64().unwrap();
+    let moment = point["max_moment"]["value"].as_f64().unwrap();
     assert!(error > 0.0005 * moment && error < 0.002 * moment, "{error} of {moment}");
     let folder = temporary_folder("stationary-branch");
     let file = folder.join("tensionless.toml");

@@ -28,7 +28,7 @@ fn a_quarter_car_over_a_dipped_joint_writes_its_wheel() {
     );
     assert!((q0 / (8500.0 * 9.81) - 1.0).abs() < 1e-12 && min < 0.5 * q0 && max > 1.2 * q0, "{q0} {min} {max}");
     assert!(vehicles["bodies"][0]["rms_acceleration"].as_f64().unwrap() > 0.0);
-    assert!(v["energy_residual"].as_f64().unwrap().abs() < 1e-9 * v["load_work"].as_f64().unwrap().abs());
+    assert!(v["energy"]["residual"].as_f64().unwrap().abs() < 1e-9 * v["energy"]["load_work"].as_f64().unwrap().abs());
     let csv = std::fs::read_to_string(out.join("wheels.csv")).unwrap();
     let mut lines = csv.lines();
     assert_eq!(lines.next().unwrap(), "vehicle,wheel,time,position,force,rail_deflection,moment");
@@ -190,7 +190,10 @@ fn the_rail_car_example_runs_with_hertz_and_rigid_contact() {
     let (a, b) = (h["max_body_acceleration"].as_f64().unwrap(), r["max_body_acceleration"].as_f64().unwrap());
     assert!((a / b - 1.0).abs() < 0.02, "body {a} against {b} m/s²");
     assert!(r["projection_work"].as_f64().unwrap() < 0.0);
-    assert!(rigid["energy_residual"].as_f64().unwrap().abs() < 1e-9 * rigid["load_work"].as_f64().unwrap().abs());
+    assert!(
+        rigid["energy"]["residual"].as_f64().unwrap().abs()
+            < 1e-9 * rigid["energy"]["load_work"].as_f64().unwrap().abs()
+    );
     std::fs::remove_dir_all(&folder).unwrap();
 }
 
@@ -215,7 +218,7 @@ fn groups_of_vehicles_each_with_its_contact() {
     assert!((wheels[0]["static_force"].as_f64().unwrap() - 61.68e3).abs() < 10.0);
     assert!((wheels[5]["static_force"].as_f64().unwrap() - 8500.0 * 9.81).abs() < 1e-6 * 8500.0 * 9.81);
     assert_eq!(vehicles["bodies"].as_array().unwrap().len(), 3);
-    assert!(v["energy_residual"].as_f64().unwrap().abs() < 1e-9 * v["load_work"].as_f64().unwrap().abs());
+    assert!(v["energy"]["residual"].as_f64().unwrap().abs() < 1e-9 * v["energy"]["load_work"].as_f64().unwrap().abs());
     for (name, text, path) in [
         ("nooffset.toml", format!("{base}[[vehicle.behind]]\nkind = \"moving-mass\"\n"), "vehicle.behind[0].offset"),
         ("first.toml", format!("{base}offset = 3.0\n"), "vehicle.offset"),

@@ -8,7 +8,7 @@ the ``attrs`` of its pandas frame.
 
 >>> import frictrack
 >>> run = frictrack.run(speed=150.0, distributed_friction=2000.0)
->>> run.summary["max_downward_deflection"]   # m  # doctest: +SKIP
+>>> run.summary["max_downward_deflection"]["value"]   # m; also "position" (m) and "time" (s)  # doctest: +SKIP
 """
 
 from __future__ import annotations
@@ -136,7 +136,7 @@ class Run:
         )
 
     def __repr__(self) -> str:
-        down = self.summary.get("max_downward_deflection")
+        down = (self.summary.get("max_downward_deflection") or {}).get("value")
         return f"<frictrack.Run v = {self.summary.get('speed')} m/s, max downward deflection {down} m>"
 
 
