@@ -15,11 +15,11 @@
 
 use crate::error::{Result, TrackError, invalid};
 use crate::placed::{PlacedInteractions, SectionKind};
-use crate::simulation::{InitialState, RunSettings, Simulation};
+use crate::simulation::setup::Setup;
+use crate::simulation::{InitialState, Record, RunSettings, Simulation, StepState, Stepping};
 use fem_beam::{BeamModel, Extreme, Support};
-use nscd::forcing::{Constant, WithConstant};
 use nscd::stepper::{ShiftedBlock, WindowShift};
-use nscd::{EnergyLedger, Forcing, SolverKind};
+use nscd::{EnergyLedger, SolverKind};
 use std::time::Instant;
 
 /// What a co-moving run is asked for.
@@ -99,7 +99,43 @@ pub fn run_co_moving(
     settings: &RunSettings,
     window: &CoMovingSettings,
 ) -> Result<CoMovingResult> {
-    let mesh = *model.mesh();
+    let (per_element, steps) = check(model, settings, window)?;
+    let blocks = blocks(model, placed)?;
+    // The run's own set-up (the beam, or the beam and the vehicles with their wheels and weights), the loads
+    // standing in static equilibrium at `load_at`, every wheel's extremes counted wherever it is in the window.
+    let mut start = settings.clone();
+    start.moving.initial = InitialState::Static { position: window.load_at };
+    start.record.extremes_nodes = None;
+    let setup = Simulation::new(model, placed, &start)?.set_up()?;
+    let mut run = Stepping::new(model, placed, setup, false);
+    let mut middle = Middle::new(model, window, per_element);
+    let advance = settings.integration.load_advance;
+    let mut shifter = Shifter::new(model, window, blocks, (per_element, advance), &middle, run.beam_state().0);
+    let clock = Instant::now();
+    run.run(steps, &mut [&mut middle], &mut |_| true, &mut |run, k| shifter.after_step(run, k))?;
+    let wall_time = clock.elapsed().as_secs_f64();
+    let Setup { stepper, load, vehicles, .. } = run.setup;
+    let x_load = load.position(stepper.time);
+    let wave = middle.all.iter().map(|&(d, x)| (x - x_load, stepper.q()[d])).collect();
+    let solver = (!placed.is_empty() || vehicles.is_some()).then(|| stepper.solver_kind());
+    Ok(CoMovingResult {
+        wave,
+        changes: shifter.changes,
+        max_downward: middle.max_downward,
+        max_upward: middle.max_upward,
+        vehicles: vehicles.map(|o| o.finish(&stepper.energy)),
+        energy: stepper.energy,
+        steps: stepper.steps,
+        shifts: shifter.shifts,
+        solver,
+        wall_time,
+    })
+}
+
+/// Whether the window can travel: a free rear end and a clamped front one, whole load advances per element, the
+/// load inside, a track length of a finite number of steps; the load advances per element and the steps.
+fn check(model: &BeamModel, settings: &RunSettings, window: &CoMovingSettings) -> Result<(usize, usize)> {
+    let mesh = model.mesh();
     let supports = model.supports();
     let wrong = match (supports.left, supports.right) {
         (Support::Free, Support::Clamped) => None,
@@ -146,80 +182,109 @@ pub fn run_co_moving(
             format!("must be > 0 and take at most {MAX_STEPS} steps of {advance} m"),
         ));
     }
-    let blocks = blocks(model, placed)?;
-    // The run's own set-up (the beam, or the beam and the vehicles with their wheels and weights), the loads
-    // standing in static equilibrium at `load_at`, every wheel's extremes counted wherever it is in the window.
-    let mut start = settings.clone();
-    start.moving.initial = InitialState::Static { position: window.load_at };
-    start.record.extremes_nodes = None;
-    let setup = Simulation::new(model, placed, &start)?.set_up()?;
-    let (mut stepper, mut load, weights, mut observer, h) =
-        (setup.stepper, setup.load, setup.weights, setup.vehicles, setup.step);
-    let (fixed_count, nb) = (placed.len(), model.dofs().free_len());
-    let preload = Constant { force: placed.preload().to_vec() };
-    let dofs = model.dofs();
-    let nodes: Vec<(usize, f64)> =
-        (0..mesh.nodes()).filter_map(|i| Some((dofs.free_index(2 * i)?, mesh.node_x(i)))).collect();
-    let middle: Vec<&(usize, f64)> =
-        nodes.iter().filter(|(_, x)| (window.middle.0..=window.middle.1).contains(x)).collect();
-    let snapshot = |q: &[f64]| -> Vec<f64> { middle.iter().map(|(d, _)| q[*d]).collect() };
-    let shifts_per_window = ((window.middle.1 - window.middle.0) / l).round().max(1.0) as usize;
-    let mut previous = snapshot(stepper.q());
-    let (mut max_downward, mut max_upward) = (Extreme::default(), Extreme::default());
-    let mut changes = Vec::new();
-    let mut shifts = 0;
-    let clock = Instant::now();
-    for k in 1..=steps as usize {
-        {
-            let loads: &dyn Forcing = match &weights {
-                Some(weights) => weights,
-                None => &load,
-            };
-            let preloaded = WithConstant { forcing: loads, constant: &preload };
-            let forcing: &dyn Forcing = if preload.force.is_empty() { loads } else { &preloaded };
-            stepper.step(forcing)?;
+    Ok((per_element as usize, steps as usize))
+}
+
+/// The window's record: the extremes over the nodes of its middle (between the absorbing zones), placed on the
+/// track — a node's x in the window plus the distance the window has travelled.
+struct Middle {
+    /// Every node's deflection DOF and x in the window (m), and those of the middle.
+    all: Vec<(usize, f64)>,
+    middle: Vec<(usize, f64)>,
+    element_length: f64,
+    per_element: usize,
+    max_downward: Extreme,
+    max_upward: Extreme,
+}
+
+impl Middle {
+    fn new(model: &BeamModel, window: &CoMovingSettings, per_element: usize) -> Self {
+        let (mesh, dofs) = (model.mesh(), model.dofs());
+        let all: Vec<(usize, f64)> =
+            (0..mesh.nodes()).filter_map(|i| Some((dofs.free_index(2 * i)?, mesh.node_x(i)))).collect();
+        let middle = all.iter().copied().filter(|(_, x)| (window.middle.0..=window.middle.1).contains(x)).collect();
+        let (max_downward, max_upward) = (Extreme::default(), Extreme::default());
+        Self { all, middle, element_length: mesh.element_length(), per_element, max_downward, max_upward }
+    }
+
+    /// The middle's deflections in `q` (m).
+    fn snapshot(&self, q: &[f64]) -> Vec<f64> {
+        self.middle.iter().map(|(d, _)| q[*d]).collect()
+    }
+}
+
+impl Record for Middle {
+    fn record(&mut self, s: &StepState<'_>) -> Result<()> {
+        // The window shifts after every `per_element` steps' records: before step k's, (k − 1)/per_element times.
+        let travelled = ((s.step - 1) / self.per_element) as f64 * self.element_length;
+        for &(d, x) in &self.middle {
+            let w = s.q[d];
+            self.max_downward.raise(-w, x + travelled, s.time);
+            self.max_upward.raise(w, x + travelled, s.time);
         }
-        if let Some(observer) = observer.as_mut() {
-            let (q, v, previous) = (stepper.q(), stepper.v(), stepper.previous_v());
-            observer.observe(stepper.time, h, &stepper.p[fixed_count..], q, (v, previous));
-        }
-        let travelled = shifts as f64 * l;
-        for &&(d, x) in &middle {
-            let w = stepper.q()[d];
-            max_downward.raise(-w, x + travelled, stepper.time);
-            max_upward.raise(w, x + travelled, stepper.time);
-        }
-        if k % per_element as usize == 0 {
-            stepper.shift(&WindowShift { dofs: 2, chain: nb, blocks: &blocks, distance: l })?;
-            load.step_back(l);
-            if let Some(observer) = observer.as_mut() {
-                observer.shift_back(l);
-            }
-            shifts += 1;
-            if shifts % shifts_per_window == 0 {
-                let now = snapshot(stepper.q());
-                let peak = now.iter().fold(0.0f64, |m, w| m.max(w.abs())).max(f64::MIN_POSITIVE);
-                let change = now.iter().zip(&previous).fold(0.0f64, |m, (a, b)| m.max((a - b).abs())) / peak;
-                changes.push((k as f64 * advance, change));
-                previous = now;
-            }
+        Ok(())
+    }
+}
+
+/// What the co-moving run does between two steps: after every element the load has advanced, the state shifts
+/// back by a node and the load (and the vehicles) by an element; after every window length, the wave's change.
+struct Shifter {
+    blocks: Vec<ShiftedBlock>,
+    per_element: usize,
+    element_length: f64,
+    advance: f64,
+    chain: usize,
+    shifts: usize,
+    shifts_per_window: usize,
+    /// The middle's deflections a window length ago, its nodes' DOFs, and the changes so far.
+    previous: Vec<f64>,
+    dofs: Vec<usize>,
+    changes: Vec<(f64, f64)>,
+}
+
+impl Shifter {
+    fn new(
+        model: &BeamModel,
+        window: &CoMovingSettings,
+        blocks: Vec<ShiftedBlock>,
+        (per_element, advance): (usize, f64),
+        middle: &Middle,
+        q0: &[f64],
+    ) -> Self {
+        let l = model.mesh().element_length();
+        Self {
+            blocks,
+            per_element,
+            element_length: l,
+            advance,
+            chain: model.dofs().free_len(),
+            shifts: 0,
+            shifts_per_window: ((window.middle.1 - window.middle.0) / l).round().max(1.0) as usize,
+            previous: middle.snapshot(q0),
+            dofs: middle.middle.iter().map(|(d, _)| *d).collect(),
+            changes: Vec::new(),
         }
     }
-    let wall_time = clock.elapsed().as_secs_f64();
-    let x_load = load.position(stepper.time);
-    let wave = nodes.iter().map(|&(d, x)| (x - x_load, stepper.q()[d])).collect();
-    let solver = (!placed.is_empty() || observer.is_some()).then(|| stepper.solver_kind());
-    let vehicles = observer.map(|o| o.finish(&stepper.energy));
-    Ok(CoMovingResult {
-        wave,
-        changes,
-        max_downward,
-        max_upward,
-        energy: stepper.energy,
-        steps: stepper.steps,
-        shifts,
-        solver,
-        wall_time,
-        vehicles,
-    })
+
+    fn after_step(&mut self, run: &mut Stepping<'_>, k: usize) -> Result<()> {
+        if !k.is_multiple_of(self.per_element) {
+            return Ok(());
+        }
+        let l = self.element_length;
+        let Setup { stepper, load, vehicles, .. } = &mut run.setup;
+        stepper.shift(&WindowShift { dofs: 2, chain: self.chain, blocks: &self.blocks, distance: l })?;
+        load.step_back(l);
+        if let Some(vehicles) = vehicles.as_mut() {
+            vehicles.shift_back(l);
+        }
+        self.shifts += 1;
+        if self.shifts.is_multiple_of(self.shifts_per_window) {
+            let now: Vec<f64> = self.dofs.iter().map(|&d| stepper.q()[d]).collect();
+            let peak = now.iter().fold(0.0f64, |m, w| m.max(w.abs())).max(f64::MIN_POSITIVE);
+            let change = now.iter().zip(&self.previous).fold(0.0f64, |m, (a, b)| m.max((a - b).abs())) / peak;
+            self.changes.push((k as f64 * self.advance, change));
+            self.previous = now;
+        }
+        Ok(())
+    }
 }

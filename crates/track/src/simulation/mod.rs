@@ -13,7 +13,8 @@ mod observers;
 mod records;
 mod results;
 mod settings;
-mod setup;
+pub(crate) mod setup;
+mod stepping;
 mod vehicles;
 
 pub use lift_off::LIFT_OFF_GAP;
@@ -29,11 +30,12 @@ use crate::error::Result;
 use crate::placed::PlacedInteractions;
 use fem_beam::BeamModel;
 use fem_beam::reference::InfiniteBeam;
-use nscd::Forcing;
 use nscd::solver::SolverKind;
-use records::{DeflectionRecord, Record, SectionRecords, SolverTally, StepState};
+use records::{DeflectionRecord, SectionRecords, SolverTally};
+pub(crate) use records::{Record, StepState};
 use setup::Setup;
 use std::time::Instant;
+pub(crate) use stepping::Stepping;
 
 /// The coupling length ℓ = (EI·h²θ²/ρA)^¼ (m): sections closer than this are strongly coupled in one step.
 pub fn coupling_length(model: &BeamModel, step: f64, theta: f64) -> f64 {
@@ -133,73 +135,27 @@ impl<'a> Simulation<'a> {
     /// Integrate, calling `observer` with the borrowed state after every step; the run stops early (with the
     /// results so far) when it returns false.
     pub fn run_observed(&self, observer: &mut dyn FnMut(&StepView<'_>) -> bool) -> Result<RunResult> {
-        let Setup { mut stepper, load, weights, mut vehicles, step: h, start, crossing_steps, total_steps } =
-            self.set_up()?;
-        let loads: &dyn Forcing = match &weights {
-            Some(weights) => weights,
-            None => &load,
-        };
-        let preload = nscd::forcing::Constant { force: self.interactions.preload().to_vec() };
-        let preloaded = nscd::forcing::WithConstant { forcing: loads, constant: &preload };
-        let forcing: &dyn Forcing = if preload.force.is_empty() { loads } else { &preloaded };
-        let (nb, fixed) = (self.model.dofs().free_len(), self.interactions.len());
-        let (q0, v0) = (&stepper.q()[..nb], &stepper.v()[..nb]);
+        let setup = self.set_up()?;
+        let (h, start, crossing_steps, total_steps) =
+            (setup.step, setup.start, setup.crossing_steps, setup.total_steps);
         let record = &self.settings.record;
+        let mut run = Stepping::new(self.model, self.interactions, setup, !record.sections.is_empty());
+        let (q0, v0) = run.beam_state();
         let mut deflections = DeflectionRecord::new(self.model, record, q0, start, crossing_steps);
         let mut sections = SectionRecords::new(self.model, self.interactions, &record.sections, total_steps);
         let mut lift_off = lift_off::LiftOffRecord::new(self.interactions);
-        sections.start((q0, v0), &load, start)?;
+        sections.start((q0, v0), &run.setup.load, start)?;
         let mut tally = SolverTally::default();
-        if let Some(vehicles) = vehicles.as_mut() {
-            vehicles.reserve(total_steps);
-        }
-        let mut wheel_loads: Vec<(usize, [f64; 4])> = Vec::new();
         let clock = Instant::now();
-        for k in 1..=total_steps {
-            let report = stepper.step(forcing)?;
-            let (time, impulses) = (stepper.time, stepper.p.as_slice());
-            let keep_going = observer(&StepView {
-                step: k,
-                time,
-                load_position: load.position(time),
-                displacement: &stepper.q()[..nb],
-                velocity: &stepper.v()[..nb],
-                previous_velocity: &stepper.previous_v()[..nb],
-                impulses,
-                section_velocities: &stepper.u,
-                law: stepper.law(),
-                report,
-            });
-            if let Some(vehicles) = vehicles.as_ref().filter(|_| !sections.is_empty()) {
-                wheel_loads.clear();
-                wheel_loads.extend(vehicles.element_loads(self.model, time, &impulses[fixed..], h));
-            }
-            let state = StepState {
-                step: k,
-                time,
-                h,
-                q: stepper.q(),
-                v: stepper.v(),
-                previous_v: stepper.previous_v(),
-                beam: nb,
-                impulses,
-                fixed,
-                load: &load,
-                wheel_loads: &wheel_loads,
-                report,
-            };
-            let vehicles = vehicles.as_mut().map(|v| v as &mut dyn Record);
-            let records: [Option<&mut dyn Record>; 5] =
-                [Some(&mut tally), Some(&mut deflections), vehicles, Some(&mut sections), Some(&mut lift_off)];
-            for r in records.into_iter().flatten() {
-                r.record(&state)?;
-            }
-            if !keep_going {
-                break;
-            }
-        }
+        run.run(
+            total_steps,
+            &mut [&mut tally, &mut deflections, &mut sections, &mut lift_off],
+            observer,
+            &mut |_, _| Ok(()),
+        )?;
         let wall_time = clock.elapsed().as_secs_f64();
-        let steps = stepper.steps;
+        let Setup { stepper, vehicles, .. } = run.setup;
+        let (fixed, nb) = (self.interactions.len(), self.model.dofs().free_len());
         let t_on = self.settings.crossing_time(self.model.mesh().length);
         let solver = (!self.interactions.is_empty() || vehicles.is_some()).then(|| stepper.solver_kind());
         Ok(RunResult {
@@ -210,7 +166,7 @@ impl<'a> Simulation<'a> {
             energy: stepper.energy,
             global_norm: if t_on > 0.0 { deflections.norm_integral / t_on } else { 0.0 },
             histories: sections.finish(),
-            statistics: tally.finish(solver, fixed, steps, wall_time),
+            statistics: tally.finish(solver, fixed, stepper.steps, wall_time),
             step: h,
             section_positions: self.interactions.positions().to_vec(),
             final_displacement: stepper.q()[..nb].to_vec(),

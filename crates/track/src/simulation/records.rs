@@ -15,31 +15,31 @@ use fem_beam::section::Motion;
 use nscd::solver::StepReport;
 
 /// The state after step k, as every record reads it.
-pub(super) struct StepState<'s> {
+pub(crate) struct StepState<'s> {
     /// Step index k (1-based).
-    pub(super) step: usize,
+    pub(crate) step: usize,
     /// t_{k+1} (s).
-    pub(super) time: f64,
+    pub(crate) time: f64,
     /// h (s).
-    pub(super) h: f64,
+    pub(crate) h: f64,
     /// q_{k+1}, v_{k+1} and v_k of the whole system (the beam's free DOFs first, `beam` of them).
-    pub(super) q: &'s [f64],
-    pub(super) v: &'s [f64],
-    pub(super) previous_v: &'s [f64],
-    pub(super) beam: usize,
+    pub(crate) q: &'s [f64],
+    pub(crate) v: &'s [f64],
+    pub(crate) previous_v: &'s [f64],
+    pub(crate) beam: usize,
     /// The step's impulses (N·s): the fixed interactions first, `fixed` of them, then the wheels.
-    pub(super) impulses: &'s [f64],
-    pub(super) fixed: usize,
+    pub(crate) impulses: &'s [f64],
+    pub(crate) fixed: usize,
     /// The moving forces, where they stand at `time`.
-    pub(super) load: &'s MovingLoad,
+    pub(crate) load: &'s MovingLoad,
     /// The wheels' element loads on the beam (element, nodal forces), for the moments at recorded nodes.
-    pub(super) wheel_loads: &'s [(usize, [f64; 4])],
+    pub(crate) wheel_loads: &'s [(usize, [f64; 4])],
     /// The solver's report of the step.
-    pub(super) report: StepReport,
+    pub(crate) report: StepReport,
 }
 
 /// Something a run records after each step.
-pub(super) trait Record {
+pub(crate) trait Record {
     /// Book the state after a step.
     fn record(&mut self, step: &StepState<'_>) -> Result<()>;
 }
@@ -139,11 +139,6 @@ impl<'a> SectionRecords<'a> {
             })
             .collect();
         Self { model, recorders, full: Buffers::new(model.dofs().full_len()) }
-    }
-
-    /// Whether any section is recorded.
-    pub(super) fn is_empty(&self) -> bool {
-        self.recorders.is_empty()
     }
 
     /// Record the initial state: the beam's q₀, v₀ (free DOFs) with `load` at `start` (m), at rest in acceleration.
