@@ -3,7 +3,7 @@
 //! acceleration, the dissipated energy when there is friction or damping, and with vehicles the wheel forces and
 //! the bodies' accelerations.
 
-use crate::figures::{DeflectionCurve, deflection_figure, quantity_figure};
+use crate::figures::{Curves, DeflectionCurve, deflection_figure, quantity_figure};
 use crate::plot::PlotSpec;
 use crate::tables::Table;
 use fem_beam::Extreme;
@@ -50,95 +50,117 @@ pub fn sweep_plots(
         Some(t) => t.to_string(),
         None => "speed sweep".to_string(),
     };
-    let case = scenario.map(case_line);
-    let with_case = |first: &str| match &case {
-        Some(c) => format!("{c}; {first}"),
-        None => first.to_string(),
-    };
     // Markers where the points are few enough to tell apart (the renderer drops them past its own limit).
     let markers = points.len() <= crate::plot::MAX_MARKED_POINTS;
-    let series = |value: &dyn Fn(&SweepPoint) -> f64| points.iter().map(|p| (p.speed, value(p))).collect::<Vec<_>>();
-    // The refinement's runs drawn with the sweep, so that the refined critical speed lies on its curve.
-    let mut downward = series(&|p| p.max_downward_deflection.value);
-    downward.extend(critical.iter().flat_map(|c| c.evaluations.iter().copied()));
-    downward.sort_by(|a, b| a.0.total_cmp(&b.0));
-    let mut deflection = deflection_figure(
-        &format!("{stem}-deflection"),
-        &format!("{title}: max deflection vs speed"),
-        SPEED_AXIS,
-        vec![
-            DeflectionCurve {
-                label: "whole run".into(),
-                color: 0,
-                downward,
-                upward: series(&|p| p.max_upward_deflection.value),
-                optimum: critical.filter(|c| c.is_interior()).map(|c| (c.speed, c.max_downward_deflection)),
-            },
-            DeflectionCurve {
-                label: "load in the window".into(),
-                color: 1,
-                downward: series(&|p| p.window_max_downward_deflection.value),
-                upward: series(&|p| p.window_max_upward_deflection.value),
-                optimum: None,
-            },
-        ],
-        &match critical.filter(|c| c.is_interior()) {
-            Some(c) => format!("critical speed {:.1} m/s", c.speed),
-            None => "refined critical speed".to_string(),
-        },
-    );
-    deflection.subtitle = with_case("downward solid, upward dashed");
-    let mut plots = vec![deflection];
-    let quantity = |name: &str, what: &str, y: &str, curves| {
-        let mut spec = quantity_figure(
-            &format!("{stem}-{name}"),
-            &format!("{title}: {what} vs speed"),
-            SPEED_AXIS,
-            y,
-            curves,
-            markers,
-        );
-        if let Some(c) = &case {
-            spec.subtitle = c.clone();
-        }
-        spec
-    };
-    plots.push(quantity(
+    let sheet = Sheet { points, stem, title, case: scenario.map(case_line), markers };
+    let mut plots = vec![sheet.deflection(critical)];
+    plots.push(sheet.quantity(
         "acceleration",
         "max acceleration",
         "max vertical acceleration (m/s²)",
-        vec![("over all nodes".into(), 0, series(&|p| p.max_acceleration.value))],
+        vec![("over all nodes".into(), 0, sheet.series(&|p| p.max_acceleration.value))],
     ));
     if points.iter().any(|p| p.energy.dissipated > 0.0) {
-        plots.push(quantity(
+        plots.push(sheet.quantity(
             "energy",
             "dissipated energy",
             "energy dissipated by friction and damping (kJ)",
-            vec![("dissipated".into(), 0, series(&|p| p.energy.dissipated / 1e3))],
+            vec![("dissipated".into(), 0, sheet.series(&|p| p.energy.dissipated / 1e3))],
         ));
     }
     if points.iter().all(|p| p.vehicles.is_some()) && !points.is_empty() {
-        let wheel = |f: fn(&VehicleColumns) -> f64| series(&|p: &SweepPoint| p.vehicles.map_or(f64::NAN, |v| f(&v)));
-        plots.push(quantity(
-            "wheel-forces",
-            "wheel–rail contact forces",
-            "contact force Q (kN, compressive > 0)",
-            vec![
-                ("largest of any wheel".into(), 0, wheel(|v| v.max_wheel_force / 1e3)),
-                ("smallest of any wheel (0: contact lost)".into(), 1, wheel(|v| v.min_wheel_force / 1e3)),
-            ],
-        ));
-        plots.push(quantity(
-            "body-acceleration",
-            "body accelerations",
-            "body acceleration (m/s²)",
-            vec![
-                ("largest of any body".into(), 0, wheel(|v| v.max_body_acceleration)),
-                ("largest RMS".into(), 1, wheel(|v| v.rms_body_acceleration)),
-            ],
-        ));
+        plots.extend(sheet.vehicles());
     }
     plots
+}
+
+/// What every figure of one sweep shares: its points, file stem, title, the case line under it, and markers.
+struct Sheet<'a> {
+    points: &'a [SweepPoint],
+    stem: &'a str,
+    title: String,
+    case: Option<String>,
+    markers: bool,
+}
+
+impl Sheet<'_> {
+    /// (speed, value) of every point.
+    fn series(&self, value: &dyn Fn(&SweepPoint) -> f64) -> Vec<(f64, f64)> {
+        self.points.iter().map(|p| (p.speed, value(p))).collect()
+    }
+
+    /// The deflections over speed, whole run and load in the window, with the refined critical speed's runs drawn
+    /// on the curve so that the refined peak lies on it.
+    fn deflection(&self, critical: Option<&CriticalSpeed>) -> PlotSpec {
+        let mut downward = self.series(&|p| p.max_downward_deflection.value);
+        downward.extend(critical.iter().flat_map(|c| c.evaluations.iter().copied()));
+        downward.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let mut deflection = deflection_figure(
+            &format!("{}-deflection", self.stem),
+            &format!("{}: max deflection vs speed", self.title),
+            SPEED_AXIS,
+            vec![
+                DeflectionCurve {
+                    label: "whole run".into(),
+                    color: 0,
+                    downward,
+                    upward: self.series(&|p| p.max_upward_deflection.value),
+                    optimum: critical.filter(|c| c.is_interior()).map(|c| (c.speed, c.max_downward_deflection)),
+                },
+                DeflectionCurve {
+                    label: "load in the window".into(),
+                    color: 1,
+                    downward: self.series(&|p| p.window_max_downward_deflection.value),
+                    upward: self.series(&|p| p.window_max_upward_deflection.value),
+                    optimum: None,
+                },
+            ],
+            &match critical.filter(|c| c.is_interior()) {
+                Some(c) => format!("critical speed {:.1} m/s", c.speed),
+                None => "refined critical speed".to_string(),
+            },
+        );
+        deflection.subtitle = match &self.case {
+            Some(c) => format!("{c}; downward solid, upward dashed"),
+            None => "downward solid, upward dashed".to_string(),
+        };
+        deflection
+    }
+
+    /// A quantity over speed, in figure `<stem>-<name>`.
+    fn quantity(&self, name: &str, what: &str, y: &str, curves: Curves) -> PlotSpec {
+        let title = format!("{}: {what} vs speed", self.title);
+        let mut spec = quantity_figure(&format!("{}-{name}", self.stem), &title, SPEED_AXIS, y, curves, self.markers);
+        if let Some(c) = &self.case {
+            spec.subtitle = c.clone();
+        }
+        spec
+    }
+
+    /// The vehicles' wheel forces and body accelerations over speed.
+    fn vehicles(&self) -> [PlotSpec; 2] {
+        let wheel = |f: fn(&VehicleColumns) -> f64| self.series(&|p| p.vehicles.map_or(f64::NAN, |v| f(&v)));
+        [
+            self.quantity(
+                "wheel-forces",
+                "wheel–rail contact forces",
+                "contact force Q (kN, compressive > 0)",
+                vec![
+                    ("largest of any wheel".into(), 0, wheel(|v| v.max_wheel_force / 1e3)),
+                    ("smallest of any wheel (0: contact lost)".into(), 1, wheel(|v| v.min_wheel_force / 1e3)),
+                ],
+            ),
+            self.quantity(
+                "body-acceleration",
+                "body accelerations",
+                "body acceleration (m/s²)",
+                vec![
+                    ("largest of any body".into(), 0, wheel(|v| v.max_body_acceleration)),
+                    ("largest RMS".into(), 1, wheel(|v| v.rms_body_acceleration)),
+                ],
+            ),
+        ]
+    }
 }
 
 /// The points of a sweep CSV as `frictrack sweep` writes it (columns [`CSV_COLUMNS`], and [`VEHICLE_CSV_COLUMNS`]

@@ -2,7 +2,10 @@
 //! number — on the command line (`--speed 360km/h`, `--speeds 140:420:20km/h`) and in Python (`speed="360km/h"`).
 
 /// The units a speed may carry, with their factor to m/s.
-const SPEED_UNITS: [(&str, f64); 2] = [("km/h", 1.0 / 3.6), ("m/s", 1.0)];
+/// km/h in one m/s.
+pub const KMH: f64 = 3.6;
+
+const SPEED_UNITS: [(&str, f64); 2] = [("km/h", 1.0 / KMH), ("m/s", 1.0)];
 
 /// `text` without a trailing speed unit, and the unit's factor to m/s (1 without a unit).
 pub fn split_speed_unit(text: &str) -> (&str, f64) {

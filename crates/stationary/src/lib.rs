@@ -14,6 +14,7 @@ pub mod friction;
 pub mod newton;
 pub mod operator;
 pub mod problem;
+mod reading;
 pub mod refine;
 pub mod solve;
 pub mod wave;

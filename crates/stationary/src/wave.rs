@@ -3,9 +3,10 @@
 //! deflection left behind, and the power balance of the steady state — the load's power F v W′(0) against the
 //! dashpots' c_f v² ∫W′² ds (a conservative soil, linear or not, dissipates nothing over a cycle).
 
-use crate::friction::SectionState;
 use crate::operator::MovingFrame;
 use crate::problem::StationaryProblem;
+use crate::reading;
+pub use crate::reading::{END_SHARE, SETTLED, SlipZone};
 use crate::solve::Convergence;
 use fem_beam::element::hermite;
 use fem_beam::{Extreme, LiftOffZone};
@@ -26,17 +27,6 @@ pub struct PowerBalance {
     pub left_behind: f64,
     /// (load − viscous − friction − left behind) / load: zero for the exact wave.
     pub imbalance: f64,
-}
-
-/// Neighbouring friction sections where the rail slides over the ballast the same way.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct SlipZone {
-    /// From (s, m).
-    pub from: f64,
-    /// To (s, m).
-    pub to: f64,
-    /// +1 where the rail rises (W′ < 0 as the load comes), −1 where it sinks.
-    pub direction: f64,
 }
 
 /// The stationary wave of a load at one speed.
@@ -83,130 +73,41 @@ pub struct StationaryWave {
     unsettled_at_ends: (bool, bool),
 }
 
-/// The share of each side of the domain next to its end over which a wave with friction must have settled.
-pub const END_SHARE: f64 = 0.1;
-
-/// How much of the peak the deflection may still vary there: the rail ahead must be at rest and the rail behind
-/// held (or creeping to where friction holds it, a decay of rate k/(c_f v)), for the transparent front and the free
-/// rear to be exact. 1e-5: the discretisation's share of the wave is ~1e-5–1e-4 of its peak on 0.25 m elements,
-/// and an undamped track's tail behind the load decays only by friction (linearly, slowly).
-pub const SETTLED: f64 = 1e-5;
-
 impl StationaryWave {
     pub(crate) fn new(problem: &StationaryProblem, frame: &MovingFrame, w: Vec<f64>, status: Convergence) -> Self {
         let nodes = frame.nodes.len();
-        let l = frame.element_length;
         let level = problem.far_level();
-        let ei = problem.beam.bending_stiffness();
         let deflection: Vec<f64> = (0..nodes).map(|i| w[2 * i] - level).collect();
         let slope: Vec<f64> = (0..nodes).map(|i| w[2 * i + 1]).collect();
-        let mut moment = vec![0.0; nodes];
-        let mut count = vec![0.0; nodes];
-        let mut viscous = 0.0;
-        for e in 0..nodes - 1 {
-            let q = &w[2 * e..2 * e + 4];
-            let curvature = |xi: f64| hermite::shape_dxx(xi, l).iter().zip(q).map(|(n, q)| n * q).sum::<f64>();
-            moment[e] += ei * curvature(0.0);
-            moment[e + 1] += ei * curvature(1.0);
-            count[e] += 1.0;
-            count[e + 1] += 1.0;
-            for &(xi, weight) in &hermite::GAUSS_4 {
-                let dw: f64 = hermite::shape_dx(xi, l).iter().zip(q).map(|(n, q)| n * q).sum();
-                viscous += weight * l * dw * dw;
-            }
-        }
-        moment.iter_mut().zip(&count).for_each(|(m, c)| *m /= c);
+        let (moment, slope_square) = reading::bending(problem, frame, &w);
         let f = &problem.foundation;
         let rest = f.reaction(level);
         let soil_reaction = (0..nodes).map(|i| f.reaction(w[2 * i]) - rest).collect();
-        let mut lift_off: Vec<LiftOffZone> = Vec::new();
-        let mut previous = false;
-        for section in &frame.sections {
-            let gap = section.deflection(&w);
-            let lifted = gap > 0.0;
-            if lifted {
-                let zone = LiftOffZone {
-                    from: section.s,
-                    to: section.s,
-                    sections: 1,
-                    largest_gap: Extreme::in_frame(gap, section.s),
-                    ..LiftOffZone::default()
-                };
-                match lift_off.last_mut().filter(|_| previous) {
-                    Some(open) => open.absorb(&zone),
-                    None => lift_off.push(zone),
-                }
-            }
-            previous = lifted;
-        }
-        let (mut friction_force, mut slip_zones, mut friction_power) = (vec![0.0; nodes], Vec::<SlipZone>::new(), 0.0);
-        let mut unsettled_at_ends = (false, false);
-        if let Some(friction) = &frame.friction {
-            let state = friction.march(&w);
-            let j = problem.friction.subdivisions;
-            (0..nodes).for_each(|i| friction_force[i] = state.force[i * j]);
-            friction_power = friction.dissipation(&state, &w, l, problem.speed);
-            for (section, state) in friction.sections.iter().zip(&state.states) {
-                let SectionState::Slipping { sign } = *state else { continue };
-                let spacing = l / j as f64;
-                match slip_zones.last_mut() {
-                    Some(zone) if zone.direction == sign && section.s - zone.to <= 1.5 * spacing => zone.to = section.s,
-                    _ => slip_zones.push(SlipZone { from: section.s, to: section.s, direction: sign }),
-                }
-            }
-            // Settled: the deflection varies by at most SETTLED of the peak over the last END_SHARE of each side.
-            let peak = deflection.iter().fold(0.0f64, |m, w| m.max(w.abs()));
-            let spread = |nodes: &mut dyn Iterator<Item = usize>, end: usize| {
-                nodes.map(|i| (deflection[i] - deflection[end]).abs()).fold(0.0f64, f64::max) > SETTLED * peak
-            };
-            let (rear_nodes, front_nodes) = (
-                (frame.load_node as f64 * END_SHARE).ceil() as usize,
-                ((nodes - 1 - frame.load_node) as f64 * END_SHARE).ceil() as usize,
-            );
-            unsettled_at_ends =
-                (spread(&mut (0..=rear_nodes), 0), spread(&mut (nodes - 1 - front_nodes..nodes), nodes - 1));
-        }
-        let stored = |u: f64| {
-            // e(W) = P(W) − P(W_far) + q (W − W_far), P the soil's potential (Foundation::potential), q = −k_c W_far.
-            f.potential(u) - f.potential(level) - f.stiffness * level * (u - level)
-        };
-        let last = nodes - 2;
-        let at_end = |element: usize| frame.sections.iter().any(|s| s.element == element && s.deflection(&w) > 0.0);
-        // A nonlinear soil's transparent end holds only where the wave continued past it stays pressed: W_far + U < 0
-        // for every U of the tail (lift-off zones 2 m inside a ±60 m domain at 196 m/s had 30 mm gaps beyond it).
-        let tail_lifts = |i: usize| {
-            let far = frame.far_field.as_ref().filter(|_| problem.is_nonlinear());
-            let end = far.map(|f| if i == 0 { &f.behind } else { &f.ahead });
-            end.and_then(|end| end.tail_max(w[2 * i] - level, w[2 * i + 1])).is_some_and(|u| level + u > 0.0)
-        };
+        let friction = reading::FrictionReading::of(problem, frame, &w, &deflection);
         let v = problem.speed;
-        // The dashpots work beyond the ends too, where the transparent ends continue the wave by its decaying modes.
-        if let Some(far) = &frame.far_field {
-            for (end, i) in [(&far.behind, 0), (&far.ahead, nodes - 1)] {
-                viscous += end.tail_slope_square(w[2 * i] - level, w[2 * i + 1]).unwrap_or(0.0);
-            }
-        }
+        // e(W) = P(W) − P(W_far) + q (W − W_far), P the soil's potential (Foundation::potential), q = −k_c W_far.
+        let stored = |u: f64| f.potential(u) - f.potential(level) - f.stiffness * level * (u - level);
         Self {
             speed: v,
             load: problem.load,
             convergence: status,
             s: frame.nodes.clone(),
             load_power: problem.load * v * slope[frame.load_node],
-            viscous_power: f.damping * v * v * viscous,
-            friction_power,
+            viscous_power: f.damping * v * v * slope_square,
+            friction_power: friction.power,
             left_behind_power: if problem.has_friction() { v * stored(w[0]) } else { 0.0 },
-            friction_force,
-            slip_zones,
-            unsettled_at_ends,
+            friction_force: friction.force,
+            slip_zones: friction.slip_zones,
+            unsettled_at_ends: friction.unsettled_at_ends,
             deflection,
             slope,
             moment,
             soil_reaction,
             settlement: level,
-            lift_off,
-            element_length: l,
+            lift_off: reading::lift_off_zones(frame, &w),
+            element_length: frame.element_length,
             load_node: frame.load_node,
-            sections_lifted_at_ends: (at_end(0) || tail_lifts(0), at_end(last) || tail_lifts(nodes - 1)),
+            sections_lifted_at_ends: reading::lifted_at_ends(problem, frame, &w),
         }
     }
 

@@ -12,22 +12,22 @@
 //! fastening), a verdict per train and set-up ([`super::hslm_verdict`]); on a track the "deck" is the rail and nothing
 //! is checked.
 
-use super::hslm_figures::interpolate;
+use super::hslm_results::{Results, TrainCurve, coach_length, millimetres};
 use super::hslm_resonances::{Resonance, natural_frequencies, resonances};
 use super::hslm_verdict::{DeckLimit, larger, near_limit_peaks};
 use super::{Resolution, StudyData, StudyFailure, blank, failed_runs, mean_iterations, nothing_finished, with_devices};
 use fem_beam::Train;
 use fem_beam::train::HSLM_A;
-use runner::{CriticalSpeed, Metric, RefinedPeak, Runner, SweepPoint, finished, refine_maximum, unrefined};
+use runner::{Metric, RefinedPeak, Runner, SweepPoint, finished, refine_maximum, unrefined};
 use scenario::diagnostics::{deck_frequency, resolving_advance};
 use scenario::error::{Result, StudyError};
 use scenario::number::row;
+use scenario::units::KMH;
 use scenario::{Case, Scenario, devices_text};
 use serde_json::{Value, json};
 use std::fmt::Write as _;
 
 /// km/h per m/s.
-pub(super) const KMH: f64 = 3.6;
 /// The friction set-up when the scenario has none: devices of F_u = 50 kN (the middle force of study 1) at the
 /// density of its strongest set, 31 on the 200 m reference track ([`fallback_devices`]).
 const FALLBACK_FORCE: f64 = 50e3;
@@ -37,11 +37,6 @@ pub(super) const TRAINS: usize = HSLM_A.len();
 /// acceleration over the nodes has two peaks 0.7 m/s apart at HSLM-A3's resonance on the example deck, which
 /// golden section alone may tell apart wrongly (7.76 instead of 7.91 m/s²).
 const PEAK_SCAN: usize = 7;
-
-/// Coach length D (m) of HSLM-A`k`, k = 1 … 10.
-pub(super) fn coach_length(k: usize) -> f64 {
-    HSLM_A[k - 1].1
-}
 
 /// The devices the study compares when `base` has no `[friction]`: N = round(31·L/200 m), at least 1 (3 on a 20 m
 /// span), of 50 kN; None when the scenario gives its own friction.
@@ -114,99 +109,7 @@ pub(super) fn overrides(base: &Scenario) -> Vec<String> {
     notes
 }
 
-/// One train under one friction set-up.
-pub(super) struct TrainCurve {
-    /// k of HSLM-Ak.
-    pub(super) train: usize,
-    /// 0 = no friction, 1 = the friction set-up.
-    pub(super) friction: usize,
-    /// The sweep: the study's speeds and this train's resonance speeds f₁·D/i inside the range, in increasing speed.
-    pub(super) points: Vec<SweepPoint>,
-    /// The refined critical speed of the max downward deflection.
-    pub(super) critical: CriticalSpeed,
-    /// The refined peak of the max acceleration.
-    pub(super) acceleration: RefinedPeak,
-    /// The sweep and both refinements' runs, in increasing speed: what the figures draw, so that every refined
-    /// peak sits on its curve.
-    pub(super) drawn: Vec<SweepPoint>,
-    /// Largest static downward deflection of the train over its crossing (m).
-    pub(super) static_max: f64,
-    /// Resonance speeds inside the swept range.
-    pub(super) resonances: Vec<Resonance>,
-}
-
-impl TrainCurve {
-    /// The refined peak of the max downward deflection over the train's static maximum.
-    pub(super) fn peak_amplification(&self) -> f64 {
-        self.critical.max_downward_deflection / self.static_max
-    }
-}
-
-/// Everything the study found.
-pub(super) struct Results {
-    /// The curves, friction set-up major, train minor.
-    pub(super) curves: Vec<TrainCurve>,
-    /// What the beam carries of the HSLM axles (a rail: half; a deck: all).
-    pub(super) axle_share: scenario::AxleShare,
-    /// The friction set-up, in words.
-    pub(super) friction: String,
-    /// f₁ … f₃ (Hz), if the model's eigenproblem was solved.
-    pub(super) frequencies: Option<Vec<f64>>,
-    /// The deck-acceleration limit each train is checked against (spans only).
-    pub(super) acceleration_limit: Option<DeckLimit>,
-    /// The load advance used (m).
-    pub(super) load_advance: f64,
-    /// Refinement tolerance (m/s): golden section stops on a bracket this wide.
-    pub(super) tolerance: f64,
-    /// The nodes the extremes are taken over (m), if not all.
-    pub(super) extremes_nodes: Option<[f64; 2]>,
-}
-
 impl Results {
-    /// The curves of one friction set-up.
-    pub(super) fn set(&self, friction: usize) -> impl Iterator<Item = &TrainCurve> {
-        self.curves.iter().filter(move |c| c.friction == friction)
-    }
-
-    /// Legend text of a friction set-up.
-    pub(super) fn friction_label(&self, friction: usize) -> String {
-        if friction == 0 { "no friction".into() } else { self.friction.clone() }
-    }
-
-    /// The critical curve of a friction set-up: the largest refined peak of the max downward deflection.
-    pub(super) fn critical(&self, friction: usize) -> &TrainCurve {
-        let by_peak = |a: &&TrainCurve, b: &&TrainCurve| {
-            a.critical.max_downward_deflection.total_cmp(&b.critical.max_downward_deflection)
-        };
-        self.set(friction).max_by(by_peak).expect("ten trains")
-    }
-
-    /// The curve with the largest refined peak of the max acceleration of a friction set-up.
-    pub(super) fn acceleration_critical(&self, friction: usize) -> &TrainCurve {
-        let peak = |c: &&TrainCurve| c.acceleration.value;
-        self.set(friction).max_by(|a, b| peak(a).total_cmp(&peak(b))).expect("ten trains")
-    }
-
-    /// The trains (k of HSLM-Ak) of a friction set-up that fail the deck check (none without a limit).
-    pub(super) fn failing(&self, friction: usize) -> Vec<usize> {
-        let fails = |c: &&TrainCurve| self.acceleration_limit.is_some_and(|l| l.verdict(&c.acceleration).fails());
-        self.set(friction).filter(fails).map(|c| c.train).collect()
-    }
-
-    /// The envelope of `value` over the ten trains of a friction set-up: at every speed any curve drew (the sweep
-    /// and the refinements' runs), the largest of the trains' curves there (each linearly interpolated between its
-    /// own speeds), so that it passes through every refined peak.
-    pub(super) fn envelope(&self, friction: usize, value: fn(&SweepPoint) -> f64) -> Vec<(f64, f64)> {
-        let curves: Vec<&TrainCurve> = self.set(friction).collect();
-        let mut speeds: Vec<f64> = curves.iter().flat_map(|c| c.drawn.iter().map(|p| p.speed)).collect();
-        speeds.sort_by(f64::total_cmp);
-        speeds.dedup();
-        speeds
-            .into_iter()
-            .map(|v| (v, curves.iter().map(|c| interpolate(&c.drawn, v, value)).fold(f64::NEG_INFINITY, f64::max)))
-            .collect()
-    }
-
     fn csv(&self) -> String {
         let mut out = String::from(
             "train,friction,speed,max_downward_deflection,max_upward_deflection,max_acceleration,\
@@ -362,12 +265,6 @@ impl Results {
     }
 }
 
-/// A deflection (m) in mm with three significant digits: bridges deflect ~1 mm, the soft-soil track ~300 mm.
-pub(super) fn millimetres(w: f64) -> String {
-    let mm = w * 1e3;
-    let decimals = (2 - mm.abs().max(1e-12).log10().floor() as i32).clamp(0, 6) as usize;
-    format!("{mm:.decimals$} mm")
-}
 
 pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) -> Result<StudyData> {
     let speeds = resolution.train_speeds(base);

@@ -4,7 +4,8 @@
 //! friction, the critical train and speed marked, the static envelope and — on a span — the EN 1990 acceleration
 //! limit drawn for reference.
 
-use super::hslm::{KMH, Results, TrainCurve, coach_length, millimetres};
+use super::hslm_results::{Results, TrainCurve, coach_length, interpolate, millimetres};
+use scenario::units::KMH;
 use report::plot::{Mark, Palette, PlotSpec, Series, Stroke};
 use runner::SweepPoint;
 
@@ -18,14 +19,6 @@ fn deflection_mm(p: &SweepPoint) -> f64 {
 
 fn acceleration(p: &SweepPoint) -> f64 {
     p.max_acceleration.value
-}
-
-/// `value` of the sweep linearly interpolated at `speed` (m/s) inside its range.
-pub(super) fn interpolate(points: &[SweepPoint], speed: f64, value: fn(&SweepPoint) -> f64) -> f64 {
-    let i = points.partition_point(|p| p.speed < speed).clamp(1, points.len() - 1);
-    let (a, b) = (&points[i - 1], &points[i]);
-    let t = if b.speed > a.speed { (speed - a.speed) / (b.speed - a.speed) } else { 0.0 };
-    value(a) + t * (value(b) - value(a))
 }
 
 /// The colour index of HSLM-A`k` in [`Palette::Ten`]: ten trains, ten hues, all solid.

@@ -1,7 +1,8 @@
 //! The two sentences of the train study's report section: the critical train without and with friction, and by how
 //! much friction moves the peak.
 
-use super::hslm::{KMH, Results, TrainCurve, millimetres};
+use super::hslm_results::{Results, TrainCurve, millimetres};
+use scenario::units::KMH;
 use runner::PeakLocation;
 
 impl Results {

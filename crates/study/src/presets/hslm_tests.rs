@@ -1,6 +1,7 @@
 //! Tests of the HSLM study's set-up: what it changes in the scenario, its friction set-ups, resonance speeds.
 use super::super::hslm_resonances::resonances;
-use super::{friction_setups, millimetres, prepared};
+use super::super::hslm_results::millimetres;
+use super::{friction_setups, prepared};
 use scenario::{AbsorbingZonesSection, DevicesSection, DistributedSection, Scenario};
 
 /// On a track the study adds absorbing zones and takes the extremes over the middle third, unless the scenario

@@ -17,6 +17,7 @@ mod hslm;
 mod hslm_figures;
 mod hslm_headline;
 mod hslm_resonances;
+mod hslm_results;
 pub mod hslm_verdict;
 mod optimal_force;
 mod stationary_wave;
@@ -94,7 +95,7 @@ impl Resolution {
             Resolution::Paper => 2.0,
         };
         let kmh = SweepSection { from: 140.0, to: 420.0, step };
-        kmh.speeds().into_iter().map(|v| v / hslm::KMH).collect()
+        kmh.speeds().into_iter().map(|v| v / scenario::units::KMH).collect()
     }
 
     fn forces(self) -> usize {
