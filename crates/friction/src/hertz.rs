@@ -44,7 +44,7 @@ impl HertzStep {
     /// The compliance d (m/s per N·s) and drift b (m/s) of the step's law at the current linearisation.
     pub fn law(&self, h: f64, theta: f64) -> (f64, f64) {
         let (k, offset) = self.tangent();
-        let drift = crate::law::compliant_drift(self.penetration - offset, self.velocity, self.rheonomic, h, theta);
+        let drift = crate::drift::compliant_drift(self.penetration - offset, self.velocity, self.rheonomic, h, theta);
         (1.0 / (h * h * theta * k), drift)
     }
 

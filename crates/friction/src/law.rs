@@ -13,6 +13,8 @@
 //! Each [`Law`] states its own behaviour in the step — bounds and drift, compliance, gap, stored energy, end
 //! penetration — so that a new law is written here and in no other file of the engine.
 
+pub use crate::drift::{compliant_drift, soil_drift};
+
 /// The law of an interaction (docs/theory.md §9). The gap of a unilateral law is g = `gap` + H_α q (m, positive
 /// open), so U_α = ġ.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -185,19 +187,6 @@ impl Law {
 
 /// γ of Moreau's index-set rule for rigid contact: a contact enters the step when g_k + γ h U_k ≤ 0.
 pub const PREDICTION_WEIGHT: f64 = 0.5;
-
-/// The drift of a spring law whose force is implicit in the penetration at the step's end (docs/theory.md §9):
-/// b = b_r − (δ_k − h(1−θ)U_k)/(hθ) for the penetration δ_k (m) its spring starts from, U_k (m/s) and b_r (m/s).
-pub fn compliant_drift(penetration: f64, u: f64, rheonomic: f64, h: f64, theta: f64) -> f64 {
-    rheonomic - (penetration - h * (1.0 - theta) * u) / (h * theta)
-}
-
-/// The drift of the soil's spring, whose force is k⟨δ_θ⟩₊ at δ_θ = δ_k − hθU_θ, U_θ = θU_{k+1} + (1−θ)U_k
-/// (docs/theory.md §13): 0 ≤ p ⊥ p/(h²θ²k) + U_{k+1} + b ≥ 0 with b = b_r − (δ_k − hθ(1−θ)U_k)/(hθ²), for the
-/// penetration δ_k (m), U_k (m/s) and b_r (m/s); a positive impulse is p = hkδ_θ.
-pub fn soil_drift(penetration: f64, u: f64, rheonomic: f64, h: f64, theta: f64) -> f64 {
-    rheonomic - (penetration - h * theta * (1.0 - theta) * u) / (h * theta * theta)
-}
 
 /// Projection of `p` onto [lo, hi] (lo ≤ hi, hi may be +∞).
 #[inline]

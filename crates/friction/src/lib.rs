@@ -8,11 +8,13 @@
 //!
 //! - [`law`]: the laws, each with its behaviour in the step, and the one form they all take (an impulse in
 //!   [lo, hi] against its velocity) as a projection, and its natural residual.
+//! - `drift`: the drift of the compliant laws' rows (re-exported by [`law`]).
 //! - [`hertz`]: Hertz's law linearised within the step (its Newton iterations' state).
 //! - [`interaction`]: interaction sets, their sparse rows, laws and kinds.
 //!
 //! The crate knows no beam: what places devices and ballast sections on a beam mesh lives in `track`.
 
+mod drift;
 pub mod hertz;
 pub mod interaction;
 pub mod law;

@@ -233,6 +233,25 @@ fn plot_error(path: &Path, e: impl std::fmt::Display) -> StudyError {
     StudyError::Io { path: path.display().to_string(), message: format!("plotting failed: {e}") }
 }
 
+impl PlotSpec {
+    /// This figure with every text it draws typeset ([`crate::typeset::text`]): title, subtitle, axis labels,
+    /// legend labels, key, marks, panels.
+    pub fn typeset(&self) -> PlotSpec {
+        let text = crate::typeset::text;
+        let mut out = self.clone();
+        (out.title, out.subtitle) = (text(&self.title), text(&self.subtitle));
+        (out.x_label, out.y_label, out.mark_label) = (text(&self.x_label), text(&self.y_label), text(&self.mark_label));
+        for s in &mut out.series {
+            s.label = s.label.as_deref().map(text);
+        }
+        for (_, key) in &mut out.key {
+            *key = text(key);
+        }
+        out.panels = self.panels.iter().map(PlotSpec::typeset).collect();
+        out
+    }
+}
+
 /// The image size of `spec`: 1200×800, or taller by [`PANEL_HEIGHT`] a panel beyond two.
 fn size(spec: &PlotSpec) -> (u32, u32) {
     let extra = spec.panels.len().saturating_sub(2) as u32;
@@ -243,7 +262,7 @@ fn size(spec: &PlotSpec) -> (u32, u32) {
 /// returns both paths and the layout.
 pub fn render(spec: &PlotSpec, folder: &Path) -> Result<(PathBuf, PathBuf, Layout)> {
     register_fonts();
-    let spec = &crate::typeset::spec(spec);
+    let spec = &spec.typeset();
     let png = folder.join(format!("{}.png", spec.stem));
     let svg = folder.join(format!("{}.svg", spec.stem));
     // Only regular files are replaced: a link, device or FIFO in the output folder is refused, never written through.

@@ -3,8 +3,6 @@
 //! which the bundled DejaVu Sans draws; a subscript with any other letter (c, w, capitals) is left as written, so
 //! labels avoid those (`φ(w)` rather than `φ_w`).
 
-use crate::plot::PlotSpec;
-
 /// The subscript form of `c`, if Unicode has one the figures' font draws.
 fn subscript(c: char) -> Option<char> {
     const LETTERS: [(char, char); 16] = [
@@ -59,24 +57,6 @@ pub fn text(text: &str) -> String {
             }
         }
     }
-    out
-}
-
-/// `spec` with every text it draws typeset ([`text`]): title, subtitle, axis labels, legend labels, key, marks.
-pub fn spec(spec: &PlotSpec) -> PlotSpec {
-    let mut out = spec.clone();
-    out.title = text(&spec.title);
-    out.subtitle = text(&spec.subtitle);
-    out.x_label = text(&spec.x_label);
-    out.y_label = text(&spec.y_label);
-    out.mark_label = text(&spec.mark_label);
-    for s in &mut out.series {
-        s.label = s.label.as_deref().map(text);
-    }
-    for (_, key) in &mut out.key {
-        *key = text(key);
-    }
-    out.panels = spec.panels.iter().map(self::spec).collect();
     out
 }
 

@@ -9,29 +9,12 @@
 //!   θ < 0.51 (its force's period-2 mode undamped, docs/theory.md §9).
 
 use crate::error::{Result, invalid};
+pub use crate::warning::Warning;
 use crate::{Case, Scenario};
 use fem_beam::reference::InfiniteBeam;
 use fem_beam::{BeamModel, Support};
-use std::fmt;
 use track::SectionKind;
 use track::vehicle::wheel_rail::WheelRail;
-
-/// A suspicious input: the field, its value, and what is wrong with it against which limit.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Warning {
-    /// Dotted path in the scenario.
-    pub field: String,
-    /// The value, as text.
-    pub value: String,
-    /// What it means and the limit it crosses.
-    pub message: String,
-}
-
-impl fmt::Display for Warning {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{} = {}: {}", self.field, self.value, self.message)
-    }
-}
 
 /// Refuse models that cannot give an answer (see the module documentation).
 pub fn refuse_degenerate(model: &BeamModel) -> Result<()> {

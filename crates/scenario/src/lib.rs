@@ -31,6 +31,7 @@ mod stationary_problem;
 pub mod trains;
 pub mod units;
 pub mod vehicle;
+mod warning;
 
 pub use build::RESULT_FORMAT;
 pub use error::{Result, StudyError};

@@ -13,9 +13,9 @@
 //!   not change and its slope stays small) — the limit is here, the check of a run's result with the result
 //!   (`study::result_warnings`).
 
-use crate::diagnostics::Warning;
 use crate::number::number;
 use crate::speeds::SpeedScale;
+use crate::warning::Warning;
 use crate::{Case, Scenario};
 use track::Load;
 

@@ -17,7 +17,7 @@
 //! The sections are the trapezoid sections of a time-domain run (J per element, shared nodes, weights l/J and l/2J
 //! at the domain's ends), so the two methods discretise the same ballast.
 
-use crate::operator::{add_spring, row_add, row_dot};
+use crate::rows::{add_spring, row_add, row_dot};
 use banded::general::GeneralBanded;
 use fem_beam::DistributedFriction;
 use fem_beam::element::hermite;

@@ -16,7 +16,9 @@ pub mod operator;
 pub mod problem;
 mod reading;
 pub mod refine;
+mod rows;
 pub mod solve;
+mod status;
 pub mod wave;
 
 pub use error::{Result, StationaryError};

@@ -6,12 +6,11 @@
 //! *is* the solution, to the round-off of its solve).
 //! With friction the start matters: [`crate::continuation`] leads the iteration there.
 
-use crate::continuation;
 use crate::error::Result;
 use crate::friction::{AnchorCoupling, FrictionState};
-use crate::operator::{MovingFrame, factor, row_add};
-use crate::problem::StationaryProblem;
-use crate::solve::{ContactGuess, Convergence};
+use crate::operator::{MovingFrame, factor};
+use crate::rows::row_add;
+use crate::status::{ContactGuess, Convergence};
 use banded::general::GeneralBanded;
 
 /// Most Newton iterations of one stage (each changes the sets; measured 2–6 from the previous speed's soil set, up
@@ -85,19 +84,6 @@ fn newton_point(frame: &MovingFrame, sets: &Sets, speed: f64) -> Result<Vec<f64>
         y.iter_mut().zip(column).for_each(|(y, z)| *y += c * z);
     }
     Ok(y)
-}
-
-/// The wave on `frame` of `problem`: without friction the iteration from the frictionless wave of the guess's
-/// pressed set; with friction through the continuation of [`crate::continuation`].
-pub(crate) fn newton(
-    problem: &StationaryProblem,
-    frame: &MovingFrame,
-    guess: &mut ContactGuess,
-) -> Result<(Vec<f64>, Convergence)> {
-    match frame.friction {
-        None => iterate(frame, problem.speed, frictionless(frame, problem.speed, guess)?, guess, MAX_ITERATIONS),
-        Some(_) => continuation::friction_wave(problem, frame, guess),
-    }
 }
 
 /// The wave without friction for the guess's pressed set (all pressed if it does not fit): one solve.

@@ -6,7 +6,8 @@
 
 use crate::error::Result;
 use crate::problem::{Domain, StationaryProblem};
-use crate::solve::{ContactGuess, solve_from};
+use crate::solve::solve_from;
+use crate::status::ContactGuess;
 use crate::wave::StationaryWave;
 use fem_beam::element::hermite;
 

@@ -5,106 +5,16 @@
 //! pressed and linear for the transparent ends to hold), and a set that cycles or a domain that cannot hold the
 //! lift-off says so — never a silent wrong wave.
 
+use crate::continuation;
 use crate::error::Result;
-use crate::newton::newton;
+use crate::newton::{MAX_ITERATIONS, frictionless, iterate};
 use crate::operator::MovingFrame;
 use crate::problem::{MAX_ELEMENTS, StationaryProblem};
+pub use crate::status::{ContactGuess, Convergence};
 use crate::wave::StationaryWave;
 
 /// Most doublings of the domain to hold the lift-off zones.
 pub const MAX_EXTENSIONS: usize = 6;
-
-/// How the iteration ended.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Convergence {
-    /// The pressed set repeated: the wave solves the discrete equations to round-off.
-    Converged {
-        /// Newton iterations (solves).
-        iterations: usize,
-        /// ‖A W − p_soil(W) − f‖∞ / ‖f‖∞ of the wave.
-        residual: f64,
-    },
-    /// The set kept changing (or cycled) for the iteration limit.
-    NotConverged {
-        /// Iterations taken.
-        iterations: usize,
-        /// Relative residual of the last iterate.
-        residual: f64,
-    },
-    /// The rail still left the soil at an end of the largest domain tried.
-    DomainTooShort {
-        /// The domain's length behind and ahead of the load then (m).
-        behind: f64,
-        /// Ahead (m).
-        ahead: f64,
-    },
-}
-
-impl Convergence {
-    /// Whether the wave is the solution.
-    pub fn is_converged(&self) -> bool {
-        matches!(self, Convergence::Converged { .. })
-    }
-
-    /// The Newton iterations taken (0 for a domain too short).
-    pub fn iterations(&self) -> usize {
-        match self {
-            Convergence::Converged { iterations, .. } | Convergence::NotConverged { iterations, .. } => *iterations,
-            Convergence::DomainTooShort { .. } => 0,
-        }
-    }
-}
-
-/// The pressed set of one solve, to start the next speed's from (continuation in speed).
-#[derive(Debug, Clone, PartialEq, Default)]
-pub struct ContactGuess {
-    pressed: Vec<bool>,
-    wave: Vec<f64>,
-    /// The same speed's wave on another mesh (not a neighbouring speed's): the friction stages start at the full
-    /// stiffness from it.
-    same_speed: bool,
-}
-
-impl ContactGuess {
-    fn forget(&mut self) {
-        self.pressed.clear();
-        self.wave.clear();
-        self.same_speed = false;
-    }
-
-    fn is_empty(&self) -> bool {
-        self.pressed.is_empty() && self.wave.is_empty()
-    }
-
-    /// A guess for `problem` from the DOFs `wave` (deflection and slope at each node of its domain, absolute): the
-    /// soil sections it presses, and the wave to start the friction iteration from.
-    pub fn started_at(problem: &StationaryProblem, wave: Vec<f64>) -> Result<Self> {
-        let frame = MovingFrame::new(problem)?;
-        let pressed = frame.sections.iter().map(|s| s.deflection(&wave) < 0.0).collect();
-        Ok(Self { pressed, wave, same_speed: true })
-    }
-
-    /// Whether the wave is the same speed's (on another mesh), to be taken at the full friction stiffness.
-    pub(crate) fn is_same_speed(&self) -> bool {
-        self.same_speed
-    }
-
-    pub(crate) fn remember(&mut self, pressed: Vec<bool>, wave: &[f64]) {
-        self.pressed = pressed;
-        self.wave = wave.to_vec();
-        self.same_speed = false;
-    }
-
-    /// The last wave's DOFs, if it fits a domain of `dofs`.
-    pub(crate) fn wave(&self, dofs: usize) -> Option<&[f64]> {
-        (self.wave.len() == dofs).then_some(&self.wave[..])
-    }
-
-    /// The last pressed set, if it fits `sections`.
-    pub(crate) fn pressed(&self, sections: usize) -> Option<&[bool]> {
-        (self.pressed.len() == sections).then_some(&self.pressed[..])
-    }
-}
 
 /// The stationary wave of `problem`, its domain grown where the rail lifts off at an end. Elements that cannot
 /// resolve the wave are refused ([`StationaryProblem::check_resolution`]).
@@ -120,12 +30,12 @@ pub fn solve_from(problem: &StationaryProblem, guess: &mut ContactGuess) -> Resu
     let mut extensions = 0;
     loop {
         let frame = MovingFrame::new(&problem)?;
-        let (mut w, mut convergence) = newton(&problem, &frame, guess)?;
+        let (mut w, mut convergence) = nonlinear_solve(&problem, &frame, guess)?;
         if !convergence.is_converged() && !guess.is_empty() && frame.friction.is_none() {
             // The last speed's set led astray: start again from the soil pressed everywhere (with friction the
             // continuation has started cold itself).
             guess.forget();
-            let (cold, status) = newton(&problem, &frame, guess)?;
+            let (cold, status) = nonlinear_solve(&problem, &frame, guess)?;
             let taken = match (convergence, status) {
                 (
                     Convergence::NotConverged { iterations, .. },
@@ -167,7 +77,7 @@ pub fn solve_from(problem: &StationaryProblem, guess: &mut ContactGuess) -> Resu
         guess.forget();
         if let Some(w) = kept.filter(|_| convergence.is_converged()) {
             let after = problem.domain.elements();
-            guess.wave = continued(&w, after.0 - before.0, after.1 - before.1);
+            guess.set_wave(continued(&w, after.0 - before.0, after.1 - before.1));
         }
     }
 }
@@ -181,4 +91,17 @@ fn continued(w: &[f64], behind: usize, ahead: usize) -> Vec<f64> {
     out.extend_from_slice(w);
     (0..ahead).for_each(|_| out.extend([w[n - 2], 0.0]));
     out
+}
+
+/// The nonlinear solve on one domain: the semismooth Newton iteration on the soil's contact without friction, the
+/// continuation in the friction's stiffness with it ([`continuation`]).
+fn nonlinear_solve(
+    problem: &StationaryProblem,
+    frame: &MovingFrame,
+    guess: &mut ContactGuess,
+) -> Result<(Vec<f64>, Convergence)> {
+    match frame.friction {
+        None => iterate(frame, problem.speed, frictionless(frame, problem.speed, guess)?, guess, MAX_ITERATIONS),
+        Some(_) => continuation::friction_wave(problem, frame, guess),
+    }
 }

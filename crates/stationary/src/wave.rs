@@ -7,7 +7,7 @@ use crate::operator::MovingFrame;
 use crate::problem::StationaryProblem;
 use crate::reading;
 pub use crate::reading::{END_SHARE, SETTLED, SlipZone};
-use crate::solve::Convergence;
+use crate::status::Convergence;
 use fem_beam::element::hermite;
 use fem_beam::{Extreme, LiftOffZone};
 

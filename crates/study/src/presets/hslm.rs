@@ -12,8 +12,8 @@
 //! fastening), a verdict per train and set-up ([`super::hslm_verdict`]); on a track the "deck" is the rail and nothing
 //! is checked.
 
-use super::hslm_results::{Results, TrainCurve, coach_length, millimetres};
 use super::hslm_resonances::{Resonance, natural_frequencies, resonances};
+use super::hslm_results::{Results, TrainCurve, coach_length, millimetres};
 use super::hslm_verdict::{DeckLimit, larger, near_limit_peaks};
 use super::{Resolution, StudyData, StudyFailure, blank, failed_runs, mean_iterations, nothing_finished, with_devices};
 use fem_beam::Train;
@@ -264,7 +264,6 @@ impl Results {
         (summary, lines)
     }
 }
-
 
 pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) -> Result<StudyData> {
     let speeds = resolution.train_speeds(base);

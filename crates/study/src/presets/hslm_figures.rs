@@ -5,9 +5,9 @@
 //! limit drawn for reference.
 
 use super::hslm_results::{Results, TrainCurve, coach_length, interpolate, millimetres};
-use scenario::units::KMH;
 use report::plot::{Mark, Palette, PlotSpec, Series, Stroke};
 use runner::SweepPoint;
+use scenario::units::KMH;
 
 const SPEED_AXIS: &str = "train speed v (km/h)";
 const DEFLECTION_AXIS: &str = "max downward deflection";

@@ -2,8 +2,8 @@
 //! much friction moves the peak.
 
 use super::hslm_results::{Results, TrainCurve, millimetres};
-use scenario::units::KMH;
 use runner::PeakLocation;
+use scenario::units::KMH;
 
 impl Results {
     /// Without friction the critical train, its speed, peak, amplification and the largest acceleration; with

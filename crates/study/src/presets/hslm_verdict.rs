@@ -2,9 +2,9 @@
 //! the limit of the deck's track — 3.5 m/s² ballasted, 5 m/s² direct fastening (`[output] deck_track`). Only a span
 //! has a deck; on a track the beam is the rail and nothing is checked.
 
-use scenario::units::KMH;
 use runner::{PeakLocation, RefinedPeak, SweepPoint};
 use scenario::DeckTrack;
+use scenario::units::KMH;
 
 /// The limit a span's deck acceleration is checked against.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -21,6 +21,7 @@ mod hslm_results;
 pub mod hslm_verdict;
 mod optimal_force;
 mod stationary_wave;
+mod stationary_wave_curves;
 mod stationary_wave_figures;
 mod table;
 mod vehicle_speed;

@@ -2,7 +2,7 @@
 //! three soils, the deflection friction leaves behind the load, and the waves' shapes at three speeds.
 
 use super::curves::Curves;
-use super::stationary_wave::{FRICTION, InfiniteCritical, InfiniteCurve};
+use super::stationary_wave_curves::{FRICTION, InfiniteCritical, InfiniteCurve};
 use crate::stationary_output::StationaryPoint;
 use report::figures::{DeflectionCurve, deflection_figure};
 use report::plot::{Mark, PanelY, PlotSpec, Series, Stroke};
