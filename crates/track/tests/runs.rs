@@ -18,6 +18,7 @@ mod runs {
     mod time_step;
     mod trains;
     mod vehicles_in_runs;
+    mod vehicles_in_trains;
     mod vehicles_on_beam;
     mod vehicles_on_ground;
     mod vehicles_on_span;

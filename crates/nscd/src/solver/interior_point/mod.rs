@@ -41,6 +41,7 @@ mod extra_rows;
 mod iteration;
 mod pressed_set;
 mod sections;
+mod terms;
 mod window;
 
 use super::{InteractionProblem, InteractionSolver, SolverKind, StepReport, StepStatus, StepWork};
