@@ -16,14 +16,26 @@ import argparse
 
 import frictrack
 
-#: The sweep CSV's columns that a run's summary carries under the same name (the rest are the sweep's own).
-COLUMNS = ["speed", "max_downward_deflection", "max_upward_deflection", "dissipated_energy", "global_norm"]
+#: Sweep CSV columns and where a run's summary holds each: an extreme's value, a term of the energy balance.
+COLUMNS = {
+    "speed": ("speed",),
+    "max_downward_deflection": ("max_downward_deflection", "value"),
+    "max_upward_deflection": ("max_upward_deflection", "value"),
+    "dissipated_energy": ("energy", "dissipated"),
+    "global_norm": ("global_norm",),
+}
 
 
 def run_case(case):
     """One run: the scenario with its speed (a top-level function, so that the workers can unpickle it)."""
     run = frictrack.run(case["scenario"], speed=case["speed"])
-    return {name: run.summary[name] for name in COLUMNS}
+    row = {}
+    for name, path in COLUMNS.items():
+        value = run.summary
+        for key in path:
+            value = value[key]
+        row[name] = value
+    return row
 
 
 def speeds_of(text):
