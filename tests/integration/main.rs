@@ -3,6 +3,7 @@
 mod figures;
 mod infinite_track;
 mod layers;
+mod recipes;
 mod references;
 mod static_shape;
 mod study_curves;

@@ -69,10 +69,7 @@ fn check(path: &std::path::Path) -> Result<()> {
         n => format!(
             "{friction} ({} sections), {} soil ({n} sections)",
             case.interactions.len() - n,
-            match foundation.law {
-                fem_beam::FoundationLaw::Bilinear { tension_ratio } => format!("bilinear, k_t = {tension_ratio} k_c"),
-                law => law.name().to_string(),
-            }
+            foundation.law.describe()
         ),
     };
     let title = if scenario.title.is_empty() { String::new() } else { format!(" \"{}\"", scenario.title) };

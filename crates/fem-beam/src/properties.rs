@@ -83,6 +83,14 @@ impl FoundationLaw {
         }
     }
 
+    /// The law in words for a report: its name, with the tension ratio of a bilinear soil ("bilinear, k_t = 0.5 k_c").
+    pub fn describe(&self) -> String {
+        match self {
+            FoundationLaw::Bilinear { tension_ratio } => format!("bilinear, k_t = {tension_ratio} k_c"),
+            law => law.name().to_string(),
+        }
+    }
+
     /// Whether the law is linear (k_t = k_c), whatever its name.
     pub fn is_linear(&self) -> bool {
         self.tension_ratio() == 1.0

@@ -27,6 +27,12 @@ impl Support {
         }
     }
 
+    /// The DOFs it holds at its node (0: free, 1: w, 2: w and θ).
+    pub fn held(self) -> usize {
+        let (w, theta) = self.constrains();
+        usize::from(w) + usize::from(theta)
+    }
+
     /// (w constrained, θ constrained).
     fn constrains(self) -> (bool, bool) {
         match self {

@@ -29,12 +29,7 @@ pub fn refuse_degenerate(model: &BeamModel) -> Result<()> {
         ));
     }
     let supports = model.supports();
-    let held = |s: Support| match s {
-        Support::Free => 0,
-        Support::Pinned => 1,
-        Support::Clamped => 2,
-    };
-    if model.foundation().stiffness == 0.0 && held(supports.left) + held(supports.right) < 2 {
+    if model.foundation().stiffness == 0.0 && supports.left.held() + supports.right.held() < 2 {
         return Err(invalid(
             "supports",
             format!("{:?}/{:?}", supports.left, supports.right).to_lowercase(),
