@@ -133,6 +133,13 @@ pub struct AxleShareSummary {
     pub meaning: &'static str,
 }
 
+impl AxleShareSummary {
+    /// The summary of `share`.
+    pub fn of(share: scenario::AxleShare) -> Self {
+        Self { carries: share.name(), factor: share.factor(), meaning: share.describe() }
+    }
+}
+
 /// Steps of the run solved by one fallback solver (the run's solver failed on them).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct FallbackSummary {
@@ -210,10 +217,12 @@ impl RunSummary {
             speed: settings.moving.speed,
             load: scenario.load.force,
             train: settings.moving.load.axles().map(scenario::trains::TrainSummary::of),
-            axle_share: settings.moving.load.axles().filter(|t| t.name != "single").map(|_| {
-                let share = scenario.axle_share();
-                AxleShareSummary { carries: share.name(), factor: share.factor(), meaning: share.describe() }
-            }),
+            axle_share: settings
+                .moving
+                .load
+                .axles()
+                .filter(|t| t.name != "single")
+                .map(|_| AxleShareSummary::of(scenario.axle_share())),
             critical_speed: scenario::speeds::SpeedScale::of(scenario)?.critical_speed,
             damping_ratio: case.model.foundation().damping_ratio(case.model.beam()),
             devices: device_positions.len(),

@@ -24,7 +24,7 @@ fn number(v: &serde_json::Value) -> f64 {
 fn on_a_span_the_critical_speeds_are_the_resonance_speeds() {
     let base = bridge();
     let data = run_preset(Preset::Hslm, Resolution::Coarse, &base, &Runner::new(0).unwrap()).unwrap();
-    let summary = &data.summary;
+    let summary = &data.summary_json();
 
     // The structure's f₁ (FE eigenproblem, 40 cubic elements) against the closed form of the span: the FE error
     // of mode 1 is O((L/N)⁴), about 1e-7 here; 1e-5 leaves room for the dense eigensolver's round-off.
@@ -127,7 +127,7 @@ fn the_default_study_finds_the_peaks_of_a_fine_search() {
     let base = bridge();
     let runner = Runner::new(0).unwrap();
     let data = run_preset(Preset::Hslm, Resolution::Coarse, &base, &runner).unwrap();
-    let summary = &data.summary;
+    let summary = &data.summary_json();
     let none = &summary["envelopes"][0];
     let f1 = number(&summary["natural_frequencies"][0]);
     let mut scenario = base.clone();

@@ -261,7 +261,8 @@ fn stiff_soil_discrete_speed_study_finds_interior_critical_speeds() {
         &Runner::new(0).unwrap(),
     )
     .unwrap();
-    let curves = data.summary["curves"].as_array().unwrap();
+    let summary = data.summary_json();
+    let curves = summary["curves"].as_array().unwrap();
     assert_eq!(curves.len(), 13);
     for curve in curves {
         assert_eq!(curve["critical_speed_location"], "interior", "{curve}");

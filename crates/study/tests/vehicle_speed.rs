@@ -19,7 +19,8 @@ fn number(v: &serde_json::Value) -> f64 {
 fn vehicles_follow_the_moving_force_below_the_critical_speed() {
     let base = Scenario { sweep: Some(SweepSection { from: 30.0, to: 210.0, step: 90.0 }), ..Scenario::default() };
     let data = run_preset(Preset::VehicleSpeed, Resolution::Coarse, &base, &Runner::new(0).unwrap()).unwrap();
-    let curves = data.summary["curves"].as_array().unwrap();
+    let summary = data.summary_json();
+    let curves = summary["curves"].as_array().unwrap();
     assert_eq!(curves.len(), 12);
     assert_eq!(data.plots.len(), 6);
     let rows: Vec<Vec<&str>> = data.csv.lines().skip(1).map(|l| l.split(',').collect()).collect();
@@ -48,7 +49,7 @@ fn vehicles_follow_the_moving_force_below_the_critical_speed() {
     let units: Vec<(&str, &str)> = data.columns.iter().map(|(n, u)| (n.as_str(), *u)).collect();
     assert!(units.contains(&("min_wheel_force", "N")) && units.contains(&("max_body_acceleration", "m/s²")));
     // The step resolves the ~180 Hz contact mode at every speed: capped below Δx/v where the 0.1 m advance does not.
-    let h_max = number(&data.summary["max_step"]);
-    assert!(h_max * 2.0 * std::f64::consts::PI * 180.0 < 2.0 && number(&data.summary["load_advance"]) == 0.1);
+    let h_max = number(&data.summary_json()["max_step"]);
+    assert!(h_max * 2.0 * std::f64::consts::PI * 180.0 < 2.0 && number(&data.summary_json()["load_advance"]) == 0.1);
     assert_eq!(data.headline.len(), 2);
 }

@@ -1,7 +1,7 @@
 //! Study 5: dynamic amplification at mid-span, φ_w(τ) = w/w_sta and φ_M(τ) = M/M_sta, at ¼, ½, ¾ and 1 × v_cr for
 //! f_u ∈ {1, 2} kN/m (docs/theory.md §6–§7).
 
-use super::{StudyData, blank, keep_finished, nothing_finished, with_distributed};
+use super::{StudyData, StudySummary, blank, keep_finished, nothing_finished, with_distributed};
 use crate::metrics::{amplification, static_midspan};
 use report::figures::quantity_figure;
 use runner::Runner;
@@ -9,7 +9,7 @@ use scenario::Scenario;
 use scenario::error::Result;
 use scenario::number::row;
 use scenario::speeds::SpeedScale;
-use serde_json::json;
+use serde::Serialize;
 use std::fmt::Write as _;
 
 pub(super) fn study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
@@ -56,12 +56,40 @@ pub(super) fn study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
         let max_w = samples.iter().fold(f64::NEG_INFINITY, |m, a| m.max(a.deflection));
         let max_m = samples.iter().fold(f64::NEG_INFINITY, |m, a| m.max(a.moment));
         maxima.push((*f, *v, max_w, max_m));
-        items.push(json!({ "force_per_length": f, "speed": v, "max_phi_w": max_w, "max_phi_m": max_m }));
+        items.push(AmplificationCurve { force_per_length: *f, speed: *v, max_phi_w: max_w, max_phi_m: max_m });
         lines.push(format!("f_u = {:.0} kN/m, v = {v} m/s: max φ_w {max_w:.3}, max φ_M {max_m:.3}", f / 1e3));
     }
     let plots = figures(&results, &speeds, reference);
     let headline = headline(&maxima);
-    Ok(StudyData { csv, summary: json!({ "curves": items }), lines, headline, plots, failures, ..blank(results.len()) })
+    Ok(StudyData {
+        csv,
+        summary: StudySummary::Amplification(AmplificationSummary { curves: items }),
+        lines,
+        headline,
+        plots,
+        failures,
+        ..blank(results.len())
+    })
+}
+
+/// The amplification at mid-span of each run.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct AmplificationSummary {
+    /// One per friction level and speed.
+    pub curves: Vec<AmplificationCurve>,
+}
+
+/// The largest amplifications of one run over the static mid-span response.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct AmplificationCurve {
+    /// f_u (N/m).
+    pub force_per_length: f64,
+    /// v (m/s).
+    pub speed: f64,
+    /// max φ_w = w/w_static at mid-span.
+    pub max_phi_w: f64,
+    /// max φ_M = M/M_static at mid-span.
+    pub max_phi_m: f64,
 }
 
 /// The amplification at the fastest speed run, for both friction levels, from `maxima` (f_u, v, max φ_w, max φ_M).

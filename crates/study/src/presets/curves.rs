@@ -1,14 +1,15 @@
 //! A labelled family of speed sweeps with the refined critical speed of each curve: the data, figures and summary
 //! of the three speed studies (devices, equal cost, distributed friction).
 
-use super::{StudyData, StudyFailure, blank, failed_runs, mean_iterations};
+use super::{StudyData, StudyFailure, StudySummary, blank, failed_runs, mean_iterations};
 use report::figures::{DeflectionCurve, deflection_figure, quantity_figure};
 use report::plot::PlotSpec;
 use runner::{CriticalSpeed, PeakLocation, Runner, SweepPoint, SweepRow, critical_speed, finished};
 use scenario::Scenario;
 use scenario::error::{Result, invalid};
 use scenario::number::{row, row_with_gaps};
-use serde_json::{Value, json};
+use serde::Serialize;
+use std::collections::BTreeMap;
 use std::fmt::Write as _;
 
 /// A labelled family of speed sweeps with the critical speed of each curve.
@@ -193,25 +194,22 @@ impl Curves {
         out
     }
 
-    pub(super) fn summary(&self) -> (Value, Vec<String>) {
-        let mut items = Vec::new();
+    pub(super) fn summary(&self) -> (CurvesSummary, Vec<String>) {
+        let mut curves = Vec::new();
         let mut lines = Vec::new();
         for ((labels, points), critical) in self.labels.iter().zip(&self.points).zip(&self.critical) {
-            let upward = points.iter().fold(0.0f64, |m, p| m.max(p.max_upward_deflection.value));
-            let window = points.iter().fold(0.0f64, |m, p| m.max(p.window_max_downward_deflection.value));
-            let mut item = serde_json::Map::new();
-            for (name, value) in labels {
-                item.insert(name.clone(), json!(value));
-            }
-            item.insert("critical_speed".into(), json!(critical.as_ref().map(|k| k.speed)));
-            item.insert("critical_speed_location".into(), json!(critical.as_ref().map(|k| k.location)));
-            item.insert(
-                "peak_max_downward_deflection".into(),
-                json!(critical.as_ref().map(|k| k.max_downward_deflection)),
-            );
-            item.insert("peak_max_upward_deflection_sampled".into(), json!(upward));
-            item.insert("peak_window_max_downward_deflection_sampled".into(), json!(window));
-            items.push(Value::Object(item));
+            curves.push(CurveSummary {
+                labels: labels.iter().cloned().collect(),
+                critical_speed: critical.as_ref().map(|k| k.speed),
+                critical_speed_location: critical.as_ref().map(|k| k.location),
+                peak_max_downward_deflection: critical.as_ref().map(|k| k.max_downward_deflection),
+                peak_max_upward_deflection_sampled: points
+                    .iter()
+                    .fold(0.0, |m, p| m.max(p.max_upward_deflection.value)),
+                peak_window_max_downward_deflection_sampled: points
+                    .iter()
+                    .fold(0.0, |m, p| m.max(p.window_max_downward_deflection.value)),
+            });
             let text = match critical {
                 Some(k) if k.is_interior() => format!(
                     "critical speed {:.1} m/s ({:.0} km/h), peak max downward deflection {:.1} mm",
@@ -224,8 +222,33 @@ impl Curves {
             };
             lines.push(format!("{}: {text}", describe(labels)));
         }
-        (json!({ "curves": items }), lines)
+        (CurvesSummary { curves }, lines)
     }
+}
+
+/// The curves of a study over speed.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct CurvesSummary {
+    /// One per curve, in the order of the data.
+    pub curves: Vec<CurveSummary>,
+}
+
+/// One curve: what sets it (its labels, e.g. `devices`, `device_force` N, `force_per_length` N/m) and its peak.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct CurveSummary {
+    /// The curve's parameters by name.
+    #[serde(flatten)]
+    pub labels: BTreeMap<String, f64>,
+    /// The refined critical speed (m/s); None when too few runs finished.
+    pub critical_speed: Option<f64>,
+    /// Where in the speed range it lies.
+    pub critical_speed_location: Option<runner::PeakLocation>,
+    /// The refined peak of the max downward deflection (m).
+    pub peak_max_downward_deflection: Option<f64>,
+    /// The largest max upward deflection of the sampled speeds (m).
+    pub peak_max_upward_deflection_sampled: f64,
+    /// The largest window max downward deflection of the sampled speeds (m).
+    pub peak_window_max_downward_deflection_sampled: f64,
 }
 
 /// A study of curves: sweep `scenarios` over `speeds`, draw them with `plots`, and say what they show with
@@ -241,7 +264,7 @@ pub(super) fn curves_study(
     let (summary, lines) = curves.summary();
     Ok(StudyData {
         csv: curves.csv(),
-        summary,
+        summary: StudySummary::Curves(summary),
         lines,
         headline: headline(&curves),
         plots: plots(&curves),

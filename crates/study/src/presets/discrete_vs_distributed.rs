@@ -1,7 +1,9 @@
 //! Study 6: 199 devices of 1 kN against f_u = 0.995 kN/m, equal capacity, at ¾ v_cr: mid-span deflection and
 //! the friction mobilised (force over capacity) side by side (docs/theory.md §7).
 
-use super::{StudyData, StudyFailure, blank, keep_finished, nothing_finished, with_devices, with_distributed};
+use super::{
+    StudyData, StudyFailure, StudySummary, blank, keep_finished, nothing_finished, with_devices, with_distributed,
+};
 use report::figures::quantity_figure;
 use report::plot::PlotSpec;
 use runner::Runner;
@@ -9,7 +11,7 @@ use scenario::Scenario;
 use scenario::error::Result;
 use scenario::number::row;
 use scenario::speeds::SpeedScale;
-use serde_json::json;
+use serde::Serialize;
 use std::fmt::Write as _;
 use track::simulation::SectionHistory;
 
@@ -63,15 +65,30 @@ pub(super) fn study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
         ),
         format!("They dissipate {:.0} J and {:.0} J.", dissipated(0).unwrap_or(nan), dissipated(1).unwrap_or(nan)),
     ];
-    let summary = json!({
-        "speed": speed,
-        "max_history_gap": comparison.map(|c| c.0),
-        "peak_midspan_deflection": comparison.map(|c| c.1),
-        "dissipated_devices": dissipated(0),
-        "dissipated_distributed": dissipated(1),
+    let summary = StudySummary::DiscreteVsDistributed(ComparisonSummary {
+        speed,
+        max_history_gap: comparison.map(|c| c.0),
+        peak_midspan_deflection: comparison.map(|c| c.1),
+        dissipated_devices: dissipated(0),
+        dissipated_distributed: dissipated(1),
     });
     let plots = figures(&runs, speed);
     Ok(StudyData { csv, summary, lines, headline, plots, failures, ..blank(runs.len()) })
+}
+
+/// Devices against distributed friction of the same capacity at one speed; None where a run failed.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ComparisonSummary {
+    /// v (m/s).
+    pub speed: f64,
+    /// The largest gap between the two mid-span deflection histories (m).
+    pub max_history_gap: Option<f64>,
+    /// The peak mid-span deflection (m).
+    pub peak_midspan_deflection: Option<f64>,
+    /// Energy the devices dissipated (J).
+    pub dissipated_devices: Option<f64>,
+    /// Energy the distributed friction dissipated (J).
+    pub dissipated_distributed: Option<f64>,
 }
 
 /// A finished run of one model: its index in [`MODELS`], its result and the capacity F_j (N) of its friction

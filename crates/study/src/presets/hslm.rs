@@ -13,7 +13,7 @@
 //! is checked.
 
 use super::hslm_resonances::{Resonance, natural_frequencies, resonances};
-use super::hslm_results::{Results, TrainCurve, coach_length, millimetres};
+use super::hslm_results::{Results, TrainCurve, coach_length, friction_name};
 use super::hslm_verdict::{DeckLimit, larger, near_limit_peaks};
 use super::{Resolution, StudyData, StudyFailure, blank, failed_runs, mean_iterations, nothing_finished, with_devices};
 use fem_beam::Train;
@@ -22,9 +22,7 @@ use runner::{Metric, RefinedPeak, Runner, SweepPoint, finished, refine_maximum, 
 use scenario::diagnostics::{deck_frequency, resolving_advance};
 use scenario::error::{Result, StudyError};
 use scenario::number::row;
-use scenario::units::KMH;
 use scenario::{Case, Scenario, devices_text};
-use serde_json::{Value, json};
 use std::fmt::Write as _;
 
 /// km/h per m/s.
@@ -36,7 +34,7 @@ pub(super) const TRAINS: usize = HSLM_A.len();
 /// Samples of the bracket around each sampled maximum before golden section ([`refine_maximum`]): the largest
 /// acceleration over the nodes has two peaks 0.7 m/s apart at HSLM-A3's resonance on the example deck, which
 /// golden section alone may tell apart wrongly (7.76 instead of 7.91 m/s²).
-const PEAK_SCAN: usize = 7;
+pub(super) const PEAK_SCAN: usize = 7;
 
 /// The devices the study compares when `base` has no `[friction]`: N = round(31·L/200 m), at least 1 (3 on a 20 m
 /// span), of 50 kN; None when the scenario gives its own friction.
@@ -44,11 +42,6 @@ pub(super) fn fallback_devices(base: &Scenario) -> Option<(usize, f64)> {
     let f = &base.friction;
     (f.devices.is_none() && f.distributed.is_none())
         .then(|| (((31.0 * base.mesh.length / 200.0).round() as usize).max(1), FALLBACK_FORCE))
-}
-
-/// The name of a friction set-up in the files: 0 "none", 1 "with".
-fn friction_name(friction: usize) -> &'static str {
-    if friction == 0 { "none" } else { "with" }
 }
 
 /// The study's two set-ups on `base`: without any friction, and with the scenario's `[friction]` (else the fallback
@@ -134,135 +127,6 @@ impl Results {
         }
         out
     }
-
-    /// One train's curve: its summary line (into `lines`) and its JSON.
-    fn curve_summary(&self, c: &TrainCurve, lines: &mut Vec<String>) -> Value {
-        let a = &c.acceleration;
-        let text = if c.critical.is_interior() {
-            format!(
-                "critical speed {:.1} m/s ({:.0} km/h), peak {} (DAF {:.3})",
-                c.critical.speed,
-                c.critical.speed * KMH,
-                millimetres(c.critical.max_downward_deflection),
-                c.peak_amplification()
-            )
-        } else {
-            c.critical.describe()
-        };
-        let bound = if a.is_interior() { "" } else { " (at an end of the speed range: a bound)" };
-        let verdict = self.acceleration_limit.map(|l| l.verdict(a));
-        lines.push(format!(
-            "HSLM-A{} (D = {} m), {}: {text}; max acceleration {:.3} m/s² at {:.1} km/h{bound}{}",
-            c.train,
-            coach_length(c.train),
-            self.friction_label(c.friction),
-            a.value,
-            a.speed * KMH,
-            verdict.map_or(String::new(), |v| format!("; deck check {}", v.describe())),
-        ));
-        let resonances: Vec<Value> = c
-            .resonances
-            .iter()
-            .map(|r| json!({"mode": r.mode, "order": r.order, "frequency": r.frequency, "speed": r.speed}))
-            .collect();
-        json!({
-            "train": format!("hslm-a{}", c.train),
-            "coach_length": coach_length(c.train),
-            "friction": friction_name(c.friction),
-            "static_max_downward_deflection": c.static_max,
-            "critical_speed": c.critical.speed,
-            "critical_speed_location": c.critical.location,
-            "peak_max_downward_deflection": c.critical.max_downward_deflection,
-            "peak_dynamic_amplification": c.peak_amplification(),
-            "peak_max_acceleration": a.value,
-            "peak_acceleration_speed": a.speed,
-            "peak_acceleration_location": a.location,
-            "peak_max_acceleration_sampled": a.sweep_maximum.1,
-            "refinement_runs": c.drawn.len() - c.points.len(),
-            "resonance_speeds": resonances,
-            "acceleration_over_limit": verdict.map(|v| v.utilisation()),
-            "deck_verdict": verdict.map(|v| v.name()),
-        })
-    }
-
-    /// The envelope of the ten trains under friction set-up `friction`: its line (into `lines`) and its JSON.
-    fn envelope_summary(&self, friction: usize, lines: &mut Vec<String>) -> Value {
-        let c = self.critical(friction);
-        let a = self.acceleration_critical(friction);
-        let p = &a.acceleration;
-        let verdict = self.acceleration_limit.map(|l| l.verdict(p));
-        lines.push(format!(
-            "{}, envelope of the ten trains: HSLM-A{} at {:.1} m/s ({:.0} km/h), {} (DAF {:.3}){}; max \
-             acceleration {:.3} m/s² from HSLM-A{} at {:.1} km/h{}{}",
-            self.friction_label(friction),
-            c.train,
-            c.critical.speed,
-            c.critical.speed * KMH,
-            millimetres(c.critical.max_downward_deflection),
-            c.peak_amplification(),
-            if c.critical.is_interior() { "" } else { ", at an end of the speed range: a bound" },
-            p.value,
-            a.train,
-            p.speed * KMH,
-            if p.is_interior() { "" } else { " (at an end of the speed range: a bound)" },
-            self.acceleration_limit.map_or(String::new(), |l| format!(
-                "; deck check against {}: {} of the ten trains fail",
-                l.describe(),
-                self.failing(friction).len()
-            )),
-        ));
-        json!({
-            "friction": friction_name(friction),
-            "critical_train": format!("hslm-a{}", c.train),
-            "critical_speed": c.critical.speed,
-            "critical_speed_location": c.critical.location,
-            "peak_max_downward_deflection": c.critical.max_downward_deflection,
-            "dynamic_amplification": c.peak_amplification(),
-            "acceleration_train": format!("hslm-a{}", a.train),
-            "acceleration_speed": p.speed,
-            "acceleration_location": p.location,
-            "peak_max_acceleration": p.value,
-            "acceleration_over_limit": verdict.map(|v| v.utilisation()),
-            "deck_verdict": verdict.map(|v| v.name()),
-            "trains_over_limit": self.acceleration_limit.map(|_| {
-                self.failing(friction).iter().map(|k| format!("hslm-a{k}")).collect::<Vec<_>>()
-            }),
-        })
-    }
-
-    fn summary(&self) -> (Value, Vec<String>) {
-        let mut lines = Vec::new();
-        let curves: Vec<Value> = self.curves.iter().map(|c| self.curve_summary(c, &mut lines)).collect();
-        let envelopes: Vec<Value> = (0..2).map(|friction| self.envelope_summary(friction, &mut lines)).collect();
-        let refinement = format!(
-            "every maximum (deflection and acceleration, per train and the envelopes) is refined on fresh runs around \
-             its sampled maximum: {PEAK_SCAN} samples of the bracket between the neighbouring speeds, then golden \
-             section to {:.3} m/s ({:.2} km/h); the speeds include each train's resonance speeds f₁·D/i",
-            self.tolerance,
-            self.tolerance * KMH
-        );
-        lines.push(refinement.clone());
-        lines.push(format!(
-            "axle loads as the beam carries them: {} ([load] carries = \"{}\", × {})",
-            self.axle_share.describe(),
-            self.axle_share.name(),
-            self.axle_share.factor()
-        ));
-        let summary = json!({
-            "refinement": refinement,
-            "refinement_tolerance": self.tolerance,
-            "axle_share": { "carries": self.axle_share.name(), "factor": self.axle_share.factor() },
-            "friction_setup": self.friction,
-            "natural_frequencies": self.frequencies,
-            "load_advance": self.load_advance,
-            "extremes_nodes": self.extremes_nodes,
-            "acceleration_limit": self.acceleration_limit.map(|l| l.value),
-            "deck_track": self.acceleration_limit.map(|l| l.track.name()),
-            "curves": curves,
-            "envelopes": envelopes,
-        });
-        (summary, lines)
-    }
 }
 
 pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) -> Result<StudyData> {
@@ -326,7 +190,7 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
     let (summary, lines) = results.summary();
     Ok(StudyData {
         csv: results.csv(),
-        summary,
+        summary: super::StudySummary::Hslm(summary),
         lines,
         headline: results.headline(),
         plots: results.figures(),

@@ -9,16 +9,16 @@ const MODES: usize = 3;
 const MAX_ORDER: usize = 20;
 
 /// A resonance speed v = f_j·D/i.
-#[derive(Debug, Clone, Copy)]
-pub(super) struct Resonance {
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct Resonance {
     /// j (1 = the lowest natural frequency).
-    pub(super) mode: usize,
+    pub mode: usize,
     /// i.
-    pub(super) order: usize,
+    pub order: usize,
     /// f_j (Hz).
-    pub(super) frequency: f64,
+    pub frequency: f64,
     /// v (m/s).
-    pub(super) speed: f64,
+    pub speed: f64,
 }
 
 /// The resonance speeds of coach length `d` (m) for `frequencies` (Hz, ascending) inside [from, to] (m/s). A

@@ -121,3 +121,8 @@ pub(super) fn millimetres(w: f64) -> String {
     let decimals = (2 - mm.abs().max(1e-12).log10().floor() as i32).clamp(0, 6) as usize;
     format!("{mm:.decimals$} mm")
 }
+
+/// The name of a friction set-up in the files: 0 "none", 1 "with".
+pub(super) fn friction_name(friction: usize) -> &'static str {
+    if friction == 0 { "none" } else { "with" }
+}

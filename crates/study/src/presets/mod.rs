@@ -18,6 +18,7 @@ mod hslm_figures;
 mod hslm_headline;
 mod hslm_resonances;
 mod hslm_results;
+mod hslm_summary;
 pub mod hslm_verdict;
 mod optimal_force;
 mod stationary_wave;
@@ -32,7 +33,6 @@ use scenario::error::{Result, StudyError, invalid};
 use scenario::speeds::SpeedScale;
 use scenario::{AbsorbingZonesSection, DevicesSection, DistributedSection, Scenario, SweepSection};
 use serde::Serialize;
-use serde_json::Value;
 use table::Sampling;
 
 /// The studies of docs/theory.md §7.
@@ -225,8 +225,8 @@ pub struct StudyData {
     /// The data, CSV with a header line.
     #[serde(skip)]
     pub csv: String,
-    /// Machine-readable summary (critical speeds, peaks, optimal forces…).
-    pub summary: Value,
+    /// Machine-readable summary (critical speeds, peaks, optimal forces…), typed per study.
+    pub summary: StudySummary,
     /// Human-readable summary lines, one per curve or case.
     pub lines: Vec<String>,
     /// Two sentences saying what the study shows, for reports.
@@ -242,6 +242,36 @@ pub struct StudyData {
     /// The runs that failed; every other run is in the data (a failed run's CSV row, where the study writes one,
     /// has its case and speed with the values empty).
     pub failures: Vec<StudyFailure>,
+}
+
+/// What a study found, typed: each preset's own summary, written with its names (`study --format json`,
+/// `<study>.json`); `None` (null) for a study that has none.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(untagged)]
+pub enum StudySummary {
+    /// Curves over speed, each with its refined critical speed (the speed studies, the finite beam's curves).
+    Curves(curves::CurvesSummary),
+    /// The amplification at mid-span.
+    Amplification(amplification::AmplificationSummary),
+    /// Devices against distributed friction of the same capacity.
+    DiscreteVsDistributed(discrete_vs_distributed::ComparisonSummary),
+    /// The optimal device force per device count.
+    OptimalForce(optimal_force::OptimaSummary),
+    /// The vehicles against the moving force.
+    VehicleSpeed(vehicle_speed::VehicleSummary),
+    /// The HSLM trains on the track or the deck.
+    Hslm(hslm_summary::HslmSummary),
+    /// The infinite track's stationary waves beside the finite beam's curves.
+    StationaryWave(stationary_wave::StationarySummary),
+    /// No summary.
+    None,
+}
+
+impl StudyData {
+    /// The summary as a JSON reader sees it (`study --format json`, `<study>.json`).
+    pub fn summary_json(&self) -> serde_json::Value {
+        serde_json::to_value(&self.summary).unwrap_or(serde_json::Value::Null)
+    }
 }
 
 /// The failed runs of a family of sweeps (`rows[c]` the sweep of the case called `name(c)`), in order.
@@ -389,7 +419,7 @@ pub(super) fn blank(runs: usize) -> StudyData {
         title: "",
         resolution: "",
         csv: String::new(),
-        summary: Value::Null,
+        summary: StudySummary::None,
         lines: Vec::new(),
         headline: Vec::new(),
         plots: Vec::new(),

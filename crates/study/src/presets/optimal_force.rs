@@ -1,14 +1,16 @@
 //! Study 3: the optimal device force at the critical speed for N ∈ {3, 7, 15, 31}: a log scan of F_u over
 //! 1 kN–10 MN, then golden section around the best (docs/theory.md §7).
 
-use super::{Resolution, StudyData, StudyFailure, blank, mean_iterations, nothing_finished, with_devices};
+use super::{
+    Resolution, StudyData, StudyFailure, StudySummary, blank, mean_iterations, nothing_finished, with_devices,
+};
 use report::figures::{DeflectionCurve, deflection_figure, device_color};
 use runner::{OptimalForce, Runner, SweepPoint, log_spaced, refine_from_scan};
 use scenario::Scenario;
 use scenario::error::{Result, invalid};
 use scenario::number::row_with_gaps;
 use scenario::speeds::SpeedScale;
-use serde_json::json;
+use serde::Serialize;
 use std::fmt::Write as _;
 
 pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) -> Result<StudyData> {
@@ -49,11 +51,11 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
         };
         lines.push(describe(n, optimum.as_ref(), speed, (curve.len(), forces.len())));
         optima.push((n, optimum.as_ref().map(|o| (o.force, o.max_downward_deflection))));
-        items.push(json!({
-            "devices": n,
-            "optimal_device_force": optimum.as_ref().map(|o| o.force),
-            "max_downward_deflection": optimum.as_ref().map(|o| o.max_downward_deflection),
-        }));
+        items.push(Optimum {
+            devices: n,
+            optimal_device_force: optimum.as_ref().map(|o| o.force),
+            max_downward_deflection: optimum.as_ref().map(|o| o.max_downward_deflection),
+        });
         let kn = |f: f64| f / 1e3;
         figure_curves.push(DeflectionCurve {
             label: format!("N = {n}"),
@@ -78,7 +80,7 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
     plot.log_x = true;
     Ok(StudyData {
         csv,
-        summary: json!({ "speed": speed, "optima": items }),
+        summary: StudySummary::OptimalForce(OptimaSummary { speed, optima: items }),
         headline: headline(speed, &optima),
         lines,
         plots: vec![plot],
@@ -86,6 +88,26 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
         failures,
         ..blank(refinement_runs + finished_points.len())
     })
+}
+
+/// The optimal device force for each number of devices at one speed.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct OptimaSummary {
+    /// v (m/s).
+    pub speed: f64,
+    /// One per device count.
+    pub optima: Vec<Optimum>,
+}
+
+/// The refined device force that minimises the max downward deflection; None where too few runs finished.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Optimum {
+    /// N.
+    pub devices: usize,
+    /// F_u (N).
+    pub optimal_device_force: Option<f64>,
+    /// The max downward deflection there (m).
+    pub max_downward_deflection: Option<f64>,
 }
 
 /// The refined optimal device force of a curve from its finished scan `(F_u, point)`: refused with fewer than

@@ -4,17 +4,17 @@
 //! the deflection friction leaves behind the load, the waves' shapes at three speeds, and the critical-speed shift
 //! and peak reduction on the infinite track.
 
-use super::curves::{Curves, sweep_curves};
+use super::curves::{Curves, CurvesSummary, sweep_curves};
 use super::stationary_wave_curves::{FRICTION, InfiniteCritical, InfiniteCurve, Soil, TENSION_RATIO};
 use super::stationary_wave_figures as figures;
-use super::{StudyData, blank, mean_iterations, with_distributed};
+use super::{StudyData, StudySummary, blank, mean_iterations, with_distributed};
 use crate::stationary_output::{ErrorEstimate, StationaryPoint, StationaryStudy};
 use runner::Runner;
 use runner::cost::Estimate;
 use scenario::error::Result;
 use scenario::speeds::SpeedScale;
 use scenario::{FoundationLawKind, Scenario};
-use serde_json::{Value, json};
+use serde::Serialize;
 use stationary::{ContactGuess, Domain};
 use std::fmt::Write as _;
 
@@ -49,7 +49,7 @@ pub(super) fn study(resolution: super::Resolution, base: &Scenario, runner: &Run
     let (summary, lines) = summary(&infinite, &finite, v_cr);
     Ok(StudyData {
         csv: csv(&infinite, &finite),
-        summary,
+        summary: StudySummary::StationaryWave(summary),
         lines,
         headline: headline(&infinite, &finite),
         plots: figures::plots(&infinite, &finite, &shape_speeds, base),
@@ -148,26 +148,54 @@ fn csv(infinite: &[InfiniteCurve], finite: &Curves) -> String {
 
 /// Per curve: where it peaks and what friction leaves behind; the finite beam's curves as the distributed-speed
 /// study reports them.
-fn summary(infinite: &[InfiniteCurve], finite: &Curves, v_cr: Option<f64>) -> (Value, Vec<String>) {
+fn summary(infinite: &[InfiniteCurve], finite: &Curves, v_cr: Option<f64>) -> (StationarySummary, Vec<String>) {
     let mut items = Vec::new();
     let mut lines = Vec::new();
     for curve in infinite {
         let missing: Vec<f64> =
             curve.study.points.iter().filter(|p| p.status != "converged").map(|p| p.speed).collect();
         let behind = curve.study.points.iter().filter_map(|p| p.deflection_behind).fold(0.0f64, |m, w| m.max(w.abs()));
-        items.push(json!({
-            "foundation": curve.soil.foundation,
-            "force_per_length": curve.soil.force_per_length,
-            "critical": curve.critical,
-            "speeds_without_wave": missing,
-            "largest_deflection_behind": behind,
-        }));
+        items.push(InfiniteSummary {
+            foundation: curve.soil.foundation,
+            force_per_length: curve.soil.force_per_length,
+            critical: curve.critical,
+            speeds_without_wave: missing,
+            largest_deflection_behind: behind,
+        });
         lines.push(format!("infinite track, {}: {}", curve.soil.label(), critical_text(&curve.critical)));
     }
     lines.extend(crate::stationary_output::branch_note("tensionless").map(|n| format!("infinite track: {n}")));
     let (finite_summary, finite_lines) = finite.summary();
     lines.extend(finite_lines.into_iter().map(|l| format!("finite beam, {l}")));
-    (json!({ "critical_speed_of_the_infinite_beam": v_cr, "infinite": items, "finite": finite_summary }), lines)
+    let summary =
+        StationarySummary { critical_speed_of_the_infinite_beam: v_cr, infinite: items, finite: finite_summary };
+    (summary, lines)
+}
+
+/// The infinite track's curves beside the finite beam's.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct StationarySummary {
+    /// v_cr of the infinite beam on the linear soil (m/s); None without a foundation.
+    pub critical_speed_of_the_infinite_beam: Option<f64>,
+    /// One per soil of the infinite track.
+    pub infinite: Vec<InfiniteSummary>,
+    /// The finite beam's curves (linear soil, each friction level).
+    pub finite: CurvesSummary,
+}
+
+/// One soil's curve of stationary waves.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct InfiniteSummary {
+    /// "linear", "tensionless" or "bilinear".
+    pub foundation: &'static str,
+    /// f_u (N/m).
+    pub force_per_length: f64,
+    /// Where the curve peaks.
+    pub critical: InfiniteCritical,
+    /// The speeds without a wave (m/s).
+    pub speeds_without_wave: Vec<f64>,
+    /// The largest |deflection| left behind the load (m).
+    pub largest_deflection_behind: f64,
 }
 
 /// A curve's peak in words: "at … m/s (peak … mm)" and what bounds it.

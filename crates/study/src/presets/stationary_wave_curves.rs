@@ -57,7 +57,7 @@ impl Soil {
 /// Where a curve of the infinite track peaks.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 #[serde(rename_all = "snake_case", tag = "location")]
-pub(super) enum InfiniteCritical {
+pub enum InfiniteCritical {
     /// Between two sampled speeds, refined by golden section to 2 % of the speed step.
     Interior {
         /// v (m/s).

@@ -13,7 +13,7 @@
 //! dropped into the soft reference track's 52 mm trough and still bounced ±37 % in the middle third at 30 m/s.
 
 use super::hslm::friction_setups;
-use super::{Resolution, StudyData, as_long_track, blank, failed_runs, mean_iterations};
+use super::{Resolution, StudyData, StudySummary, as_long_track, blank, failed_runs, mean_iterations};
 use report::plot::{PlotSpec, Series, Stroke};
 use runner::{Runner, SweepPoint, SweepRow, finished};
 use scenario::error::Result;
@@ -21,7 +21,7 @@ use scenario::number::row_with_gaps;
 use scenario::rail::IrregularitySection;
 use scenario::vehicle::VehicleKind;
 use scenario::{RailSection, Scenario, VehicleSection};
-use serde_json::{Value, json};
+use serde::Serialize;
 use std::fmt::Write as _;
 use track::vehicle::consist::MAX_CONTACT_STEP;
 
@@ -203,7 +203,7 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
     let (summary, lines) = summary(&curves, force, &friction, &base.integration);
     Ok(StudyData {
         csv: csv(&curves, force),
-        summary,
+        summary: StudySummary::VehicleSpeed(summary),
         lines,
         headline: headline(&curves, force),
         plots: figures(&curves, force, &friction),
@@ -273,6 +273,47 @@ impl Curve {
     }
 }
 
+/// The vehicles against the moving force over speed: the set-up and what each curve found.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct VehicleSummary {
+    /// The axle load Q₀ (N).
+    pub force: f64,
+    /// The friction set-up, in words.
+    pub friction_setup: String,
+    /// Δx (m).
+    pub load_advance: f64,
+    /// The longest step (s), if capped.
+    pub max_step: Option<f64>,
+    /// One per load model, friction set-up and rail.
+    pub curves: Vec<VehicleCurve>,
+}
+
+/// What one curve found: its peak deflection, the smallest wheel force, the first loss of contact and the largest
+/// body acceleration, each with its speed (m/s).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct VehicleCurve {
+    /// "moving-force", "moving-mass" or "quarter-car".
+    pub model: &'static str,
+    /// "none" or "with".
+    pub friction: &'static str,
+    /// "smooth" or "irregular".
+    pub rail: &'static str,
+    /// m.
+    pub peak_max_downward_deflection: f64,
+    /// m/s.
+    pub peak_speed: f64,
+    /// N.
+    pub min_wheel_force: f64,
+    /// m/s.
+    pub min_wheel_force_speed: f64,
+    /// m/s; None if no wheel left the rail.
+    pub first_loss_of_contact_speed: Option<f64>,
+    /// m/s²; None without a body.
+    pub max_body_acceleration: Option<f64>,
+    /// m/s.
+    pub max_body_acceleration_speed: Option<f64>,
+}
+
 /// Per curve: the peak deflection and its speed, the smallest wheel force and its speed, the first speed where a
 /// wheel lost contact, the largest body acceleration and its speed.
 fn summary(
@@ -280,23 +321,23 @@ fn summary(
     force: f64,
     friction: &str,
     integration: &scenario::IntegrationSection,
-) -> (Value, Vec<String>) {
+) -> (VehicleSummary, Vec<String>) {
     let mut items = Vec::new();
     let mut lines = Vec::new();
     for c in curves {
         let Some(f) = c.findings(force) else { continue };
-        items.push(json!({
-            "model": MODELS[c.model],
-            "friction": FRICTION[c.friction],
-            "rail": RAILS[c.rail],
-            "peak_max_downward_deflection": f.peak.1,
-            "peak_speed": f.peak.0,
-            "min_wheel_force": f.weakest.1,
-            "min_wheel_force_speed": f.weakest.0,
-            "first_loss_of_contact_speed": f.lifts,
-            "max_body_acceleration": f.body.map(|b| b.1),
-            "max_body_acceleration_speed": f.body.map(|b| b.0),
-        }));
+        items.push(VehicleCurve {
+            model: MODELS[c.model],
+            friction: FRICTION[c.friction],
+            rail: RAILS[c.rail],
+            peak_max_downward_deflection: f.peak.1,
+            peak_speed: f.peak.0,
+            min_wheel_force: f.weakest.1,
+            min_wheel_force_speed: f.weakest.0,
+            first_loss_of_contact_speed: f.lifts,
+            max_body_acceleration: f.body.map(|b| b.1),
+            max_body_acceleration_speed: f.body.map(|b| b.0),
+        });
         let lift =
             f.lifts.map_or("never leaves the rail".to_string(), |v| format!("first leaves the rail at {v:.0} m/s"));
         let body = f.body.map_or(String::new(), |(v, a)| format!(", body up to {a:.2} m/s² (at {v:.0} m/s)"));
@@ -310,13 +351,13 @@ fn summary(
             f.weakest.0
         ));
     }
-    let summary = json!({
-        "force": force,
-        "friction_setup": friction,
-        "load_advance": integration.load_advance,
-        "max_step": integration.max_step,
-        "curves": items
-    });
+    let summary = VehicleSummary {
+        force,
+        friction_setup: friction.to_string(),
+        load_advance: integration.load_advance,
+        max_step: integration.max_step,
+        curves: items,
+    };
     (summary, lines)
 }
 
