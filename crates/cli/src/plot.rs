@@ -63,15 +63,19 @@ fn run_folder(folder: &Path) -> Result<Vec<String>> {
     let histories = read(&folder.join("histories.csv"))?;
     let snapshots = read(&folder.join("snapshots.csv"))?;
     let curves = report::run_output::RunCurves::from_csv(&histories, &snapshots)?;
-    let summary: serde_json::Value = serde_json::from_str(&read(&folder.join("summary.json"))?)
+    let summary = read(&folder.join("summary.json"))?;
+    serde_json::from_str::<serde::de::IgnoredAny>(&summary)
         .with_context(|| format!("reading {}", folder.join("summary.json").display()))?;
-    let figures = &summary["figures"];
-    let text = |key: &str| figures[key].as_str().map(str::to_string);
-    let title = text("title").or_else(|| title_in(&folder.join("summary.json"))).unwrap_or_default();
-    let load = text("positions_of").unwrap_or_else(|| "load".into());
-    let mut plots = report::run_output::run_plots(&curves, &title, &load);
+    // A folder written before the titles were kept: the scenario's title, positions of the load, no subtitle.
+    let figures =
+        report::run_folder::FigureTitles::read(&summary).unwrap_or_else(|| report::run_folder::FigureTitles {
+            positions_of: "load".into(),
+            subtitle: String::new(),
+            title: title_in(&folder.join("summary.json")).unwrap_or_default(),
+        });
+    let mut plots = report::run_output::run_plots(&curves, &figures.title, &figures.positions_of);
     for spec in &mut plots {
-        spec.subtitle = text("subtitle").unwrap_or_default();
+        spec.subtitle.clone_from(&figures.subtitle);
     }
     Ok(write_figures("--out", &plots, folder)?)
 }

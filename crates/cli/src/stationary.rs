@@ -121,7 +121,7 @@ pub fn run(args: &StationaryArgs) -> Result<()> {
         let name = if single.is_some() { "wave.csv" } else { "speeds.csv" };
         let metadata = serde_json::json!({
             "csv": name,
-            "columns": columns::json(csv_columns.iter().copied()),
+            "columns": columns::listed(csv_columns.iter().copied()),
             "points": study.points,
             "frictrack_version": env!("CARGO_PKG_VERSION"),
         });

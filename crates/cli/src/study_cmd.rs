@@ -182,7 +182,7 @@ pub fn run_study(
         "speeds": preset.speeds(resolution, base)?,
         "study_sets": preset.sets(),
         "scenario_parts_not_used": overrides,
-        "columns": report::columns::json(data.columns.iter().map(|(name, unit)| (name.as_str(), *unit))),
+        "columns": report::columns::listed(data.columns.iter().map(|(name, unit)| (name.as_str(), *unit))),
         "failures": data.failures,
     });
     write_atomically(

@@ -175,8 +175,12 @@ fn write_files(
         crate::files::write_figures("--out", &plots, path.parent().unwrap_or(std::path::Path::new(".")))?;
     }
     let columns: Vec<_> = runner::csv_columns(scenario.vehicle.is_some())
-        .map(|(name, unit, meaning)| json!({ "name": name, "unit": unit, "meaning": meaning }))
-        .collect();
+        .map(|(name, unit, meaning)| report::columns::ColumnMeta {
+            name: name.to_string(),
+            unit: unit.to_string(),
+            meaning: Some(meaning.to_string()),
+        })
+        .collect::<Vec<_>>();
     let metadata = json!({
         "csv": path.file_name().map(|n| n.to_string_lossy().into_owned()),
         "columns": columns,

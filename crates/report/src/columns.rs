@@ -5,7 +5,7 @@
 //! printed on standard output, in a comment line after the data (`# units (SI): …`, [`units_line`]; pandas reads
 //! past it with `comment="#"`).
 
-use serde_json::{Value, json};
+use serde::{Deserialize, Serialize};
 
 /// A column of a table: its name and its SI unit ("1" for counts and ratios, "text" for words).
 pub type Column = (&'static str, &'static str);
@@ -15,9 +15,21 @@ pub fn header(columns: &[Column]) -> String {
     columns.iter().map(|(name, _)| *name).collect::<Vec<_>>().join(",")
 }
 
-/// `columns` as the JSON beside their CSV lists them: `[{"name": …, "unit": …}, …]`.
-pub fn json<'a>(columns: impl IntoIterator<Item = (&'a str, &'a str)>) -> Value {
-    Value::Array(columns.into_iter().map(|(name, unit)| json!({ "name": name, "unit": unit })).collect())
+/// A column as the JSON beside its CSV lists it: `{"name": …, "unit": …}`, with what it means where the file says.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
+pub struct ColumnMeta {
+    /// The column's name in the CSV header.
+    pub name: String,
+    /// Its SI unit.
+    pub unit: String,
+    /// What it is, in words (a sweep's columns).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub meaning: Option<String>,
+}
+
+/// `columns` as the JSON beside their CSV lists them.
+pub fn listed<'a>(columns: impl IntoIterator<Item = (&'a str, &'a str)>) -> Vec<ColumnMeta> {
+    columns.into_iter().map(|(name, unit)| ColumnMeta { name: name.into(), unit: unit.into(), meaning: None }).collect()
 }
 
 /// The units of `columns` in one line, for a CSV printed on standard output (after a `#`): "units (SI): speed m/s,
@@ -29,13 +41,14 @@ pub fn units_line<'a>(columns: impl IntoIterator<Item = (&'a str, &'a str)>) -> 
 
 #[cfg(test)]
 mod tests {
-    use super::{header, json, units_line};
+    use super::{header, listed, units_line};
 
     #[test]
     fn header_json_and_units_line_say_the_same_columns() {
         let columns = [("speed", "m/s"), ("max_moment", "N·m")];
         assert_eq!(header(&columns), "speed,max_moment");
-        assert_eq!(json(columns)[1], serde_json::json!({ "name": "max_moment", "unit": "N·m" }));
+        let json = serde_json::to_value(listed(columns)).unwrap();
+        assert_eq!(json[1], serde_json::json!({ "name": "max_moment", "unit": "N·m" }));
         assert_eq!(units_line(columns), "units (SI): speed m/s, max_moment N·m");
     }
 }

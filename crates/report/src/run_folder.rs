@@ -3,6 +3,7 @@
 //! vehicles wheels.csv, and the run's figures as PNG and SVG. Which files, checked before the run and written after
 //! it, once for the command line and Python.
 
+use crate::columns::ColumnMeta;
 use crate::files::{check_output_file, prepare_output_folder, write_atomically};
 use crate::run_output::{
     FIGURE_STEMS, HISTORY_COLUMNS, RunCurves, SNAPSHOT_COLUMNS, histories_csv, position_noun, run_plots, snapshots_csv,
@@ -11,8 +12,71 @@ use crate::run_summary::RunSummary;
 use crate::vehicle_output::{WHEEL_COLUMNS, wheel_plot, wheels_csv};
 use scenario::error::Result;
 use scenario::{Case, Scenario};
+use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
 use std::path::Path;
 use track::{RunResult, Snapshot, SnapshotAt};
+
+/// How a run folder's numbers are signed.
+pub const CONVENTIONS: &str = "deflection positive upward; moment sagging-positive; extremes are magnitudes";
+
+/// A run folder's `summary.json`: the run's summary, its files' columns, the figures' titles and the scenario.
+#[derive(Debug, Clone, Serialize)]
+pub struct FolderSummary<'a> {
+    /// [`CONVENTIONS`].
+    pub conventions: &'static str,
+    /// What the figures are titled, so that `frictrack plot DIR` draws them again as they were.
+    pub figures: FigureTitles,
+    /// Each CSV's columns and what it holds.
+    pub files: BTreeMap<&'static str, FileMeta>,
+    /// The version that wrote it.
+    pub frictrack_version: &'static str,
+    /// The run's summary.
+    pub report: &'a RunSummary,
+    /// The scenario that ran.
+    pub scenario: &'a Scenario,
+}
+
+/// The titles of a run folder's figures.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
+pub struct FigureTitles {
+    /// What positions are of: "load", "first axle", "first wheel".
+    pub positions_of: String,
+    /// The line under each title.
+    pub subtitle: String,
+    /// The title.
+    pub title: String,
+}
+
+impl FigureTitles {
+    /// The titles a run folder's `summary.json` (its text) holds; None for a folder written before they were kept.
+    pub fn read(summary_json: &str) -> Option<Self> {
+        #[derive(Deserialize)]
+        struct Folder {
+            figures: Option<FigureTitles>,
+        }
+        serde_json::from_str::<Folder>(summary_json).ok()?.figures
+    }
+}
+
+/// One CSV of a run folder: its columns, and the sections or snapshots it was asked for.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FileMeta {
+    /// Name and unit of each column.
+    pub columns: Vec<ColumnMeta>,
+    /// The snapshots asked for, in words (snapshots.csv).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub requested: Option<Vec<String>>,
+    /// The sections asked for (m; histories.csv).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub sections: Option<Vec<f64>>,
+}
+
+impl FileMeta {
+    fn of(columns: Vec<ColumnMeta>) -> Self {
+        Self { columns, requested: None, sections: None }
+    }
+}
 
 /// The files a run of `case` writes into its folder.
 pub fn file_names(case: &Case) -> Vec<String> {
@@ -39,7 +103,7 @@ pub fn write(
     snapshots: &[Snapshot],
 ) -> Result<()> {
     let load = position_noun(&case.settings.moving.load);
-    let columns = |list: &[(&'static str, &'static str)]| crate::columns::json(list.iter().copied());
+    let columns = |list: &[(&'static str, &'static str)]| crate::columns::listed(list.iter().copied());
     let requested: Vec<String> = snapshots
         .iter()
         .map(|s| match s.requested {
@@ -47,24 +111,26 @@ pub fn write(
             SnapshotAt::LoadPosition(x) => format!("{load} at {x} m"),
         })
         .collect();
-    let mut files = serde_json::json!({
-        "histories.csv": { "columns": columns(&HISTORY_COLUMNS), "sections": scenario.output.sections },
-        "snapshots.csv": { "columns": columns(&SNAPSHOT_COLUMNS), "requested": requested },
-    });
+    let mut files = BTreeMap::from([
+        (
+            "histories.csv",
+            FileMeta { sections: Some(scenario.output.sections.clone()), ..FileMeta::of(columns(&HISTORY_COLUMNS)) },
+        ),
+        ("snapshots.csv", FileMeta { requested: Some(requested), ..FileMeta::of(columns(&SNAPSHOT_COLUMNS)) }),
+    ]);
     if result.vehicles.is_some() {
-        files["wheels.csv"] = serde_json::json!({ "columns": columns(&WHEEL_COLUMNS) });
+        files.insert("wheels.csv", FileMeta::of(columns(&WHEEL_COLUMNS)));
     }
     let title = if scenario.title.is_empty() { format!("v = {} m/s", report.speed) } else { scenario.title.clone() };
     let subtitle = report.figure_subtitle();
-    let summary = serde_json::json!({
-        "report": report,
-        "files": files,
-        // What the figures are titled, so that `frictrack plot DIR` draws them again as they were.
-        "figures": { "title": title, "subtitle": subtitle, "positions_of": load },
-        "conventions": "deflection positive upward; moment sagging-positive; extremes are magnitudes",
-        "frictrack_version": env!("CARGO_PKG_VERSION"),
-        "scenario": scenario,
-    });
+    let summary = FolderSummary {
+        conventions: CONVENTIONS,
+        figures: FigureTitles { positions_of: load.to_string(), subtitle: subtitle.clone(), title: title.clone() },
+        files,
+        frictrack_version: env!("CARGO_PKG_VERSION"),
+        report,
+        scenario,
+    };
     let text = serde_json::to_string_pretty(&summary).map_err(|e| scenario::error::StudyError::Io {
         path: folder.join("summary.json").display().to_string(),
         message: e.to_string(),
