@@ -6,7 +6,7 @@ use irregularity::periodogram::{log_bins, periodogram};
 use irregularity::{Profile, RandomProfile, RandomSettings};
 use scenario::error::{Result, invalid};
 use scenario::number::row;
-use serde_json::{Value, json};
+use serde::Serialize;
 use std::fmt::Write as _;
 
 /// Largest number of samples written (80 MB of CSV).
@@ -21,6 +21,45 @@ pub struct ProfileRequest {
     pub settings: RandomSettings,
     /// Sample spacing (m).
     pub spacing: f64,
+}
+
+/// What a sampled rail profile is (`track-profile --format json`, `track-profile.json`): the spectrum and band
+/// (m), the length and spacing (m), the seed, the number of harmonics, the target and sample standard deviations (m).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ProfileSummary {
+    /// The spectrum's name.
+    pub spectrum: String,
+    /// The shortest and longest wavelength (m).
+    pub band_wavelengths: [f64; 2],
+    /// m.
+    pub length: f64,
+    /// m.
+    pub spacing: f64,
+    /// The random generator's seed.
+    pub seed: u64,
+    /// The harmonics summed.
+    pub harmonics: usize,
+    /// σ of the spectrum over the band (m).
+    pub target_std: f64,
+    /// σ of the sample (m).
+    pub sample_std: f64,
+    /// The units of the CSVs' columns.
+    pub units: ProfileUnits,
+    /// Where the formula is.
+    pub formula: &'static str,
+}
+
+/// The units of a profile's CSV columns.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub struct ProfileUnits {
+    /// x.
+    pub x: &'static str,
+    /// r.
+    pub r: &'static str,
+    /// k.
+    pub wavenumber: &'static str,
+    /// S(k).
+    pub psd: &'static str,
 }
 
 impl ProfileRequest {
@@ -107,21 +146,20 @@ impl ProfileSample {
     }
 
     /// The settings, the target and sample standard deviations and the formula of the spectrum.
-    pub fn summary(&self) -> Value {
+    pub fn summary(&self) -> ProfileSummary {
         let s = &self.request.settings;
-        let (short, long) = s.band;
-        json!({
-            "spectrum": s.spectrum.name(),
-            "band_wavelengths": [short, long],
-            "length": s.length,
-            "spacing": self.request.spacing,
-            "seed": s.seed,
-            "harmonics": self.profile.harmonics.len(),
-            "target_std": self.target_std(),
-            "sample_std": self.sample_variance.sqrt(),
-            "units": { "x": "m", "r": "m", "wavenumber": "rad/m", "psd": "m²/(rad/m)" },
-            "formula": "docs/theory.md §11",
-        })
+        ProfileSummary {
+            spectrum: s.spectrum.name(),
+            band_wavelengths: [s.band.0, s.band.1],
+            length: s.length,
+            spacing: self.request.spacing,
+            seed: s.seed,
+            harmonics: self.profile.harmonics.len(),
+            target_std: self.target_std(),
+            sample_std: self.sample_variance.sqrt(),
+            units: ProfileUnits { x: "m", r: "m", wavenumber: "rad/m", psd: "m²/(rad/m)" },
+            formula: "docs/theory.md §11",
+        }
     }
 
     /// The profile in mm against x, and the periodogram (log-binned, 10 bins a decade) against the target S.
