@@ -32,7 +32,7 @@ pub fn run(
         metadata["columns"] = serde_json::to_value(report::columns::listed(study::co_moving_output::WAVE_COLUMNS))?;
         write_atomically(&folder.join("co-moving.json"), serde_json::to_string_pretty(&metadata)?.as_bytes())?;
         write_atomically(&folder.join("wave.csv"), study::co_moving_output::wave_csv(&result).as_bytes())?;
-        let drawn = write_figures("--out", &study::co_moving_output::figures(&summary, &result), folder)?;
+        let drawn = write_figures("--out", &study::co_moving_figures::figures(&summary, &result), folder)?;
         if format == Format::Text {
             println!("  wrote {}/co-moving.json, wave.csv and {}", folder.display(), drawn.join(", "));
         }

@@ -5,15 +5,17 @@
 //!
 //! - [`presets`]: the nine studies of the theory manual, with their figures and summaries.
 //! - [`stationary_output`]: the stationary wave on the infinite track over speeds (continuation, error estimate,
-//!   typed points, figures; CSV in [`stationary_csv`]); [`co_moving_output`]: a run in a window that moves with the
-//!   load.
+//!   typed points; CSV in [`stationary_csv`], figures in [`stationary_figures`]); [`co_moving_output`]: a run in a
+//!   window that moves with the load (figures in [`co_moving_figures`]).
 //! - [`reference_check`]: the FE model against closed forms; [`steady_response`]: the infinite beam's steady state
 //!   over speeds; [`metrics`]: dynamic amplification at a section.
 
+pub mod co_moving_figures;
 pub mod co_moving_output;
 pub mod metrics;
 pub mod presets;
 pub mod reference_check;
 pub mod stationary_csv;
+pub mod stationary_figures;
 pub mod stationary_output;
 pub mod steady_response;

@@ -7,7 +7,6 @@
 pub use crate::stationary_csv::{POINT_COLUMNS, WAVE_COLUMNS, points_csv, wave_csv};
 
 use fem_beam::{Extreme, LiftOffZone};
-use report::plot::{PlotSpec, Series, Stroke};
 use scenario::Scenario;
 use scenario::error::Result;
 use serde::Serialize;
@@ -198,85 +197,6 @@ impl StationaryStudy {
             0.9 * l * (ERROR_TOLERANCE / error).sqrt(),
             100.0 * ERROR_TOLERANCE
         )]
-    }
-
-    /// The figures: with one speed the wave's deflection and moment along s; with several the peak deflections
-    /// against speed (converged speeds only).
-    pub fn figures(&self, title: &str) -> Vec<PlotSpec> {
-        let friction = match self.friction > 0.0 {
-            true => format!(", ballast friction f_u = {:.1} kN/m", self.friction / 1e3),
-            false => String::new(),
-        };
-        let subtitle = format!(
-            "{} soil{friction}, F = {:.1} kN, s = x − vt (positive ahead of the load)",
-            self.law,
-            self.load / 1e3
-        );
-        if let [Some(wave)] = self.waves.as_slice() {
-            let mut shape = PlotSpec::new("stationary-wave", title, "s = x − vt (m)", "");
-            shape.subtitle = format!("{subtitle}, v = {:.1} m/s", wave.speed);
-            let line = |label: &str, color: usize, values: Vec<(f64, f64)>| Series {
-                label: Some(label.into()),
-                color,
-                stroke: Stroke::Solid,
-                markers: false,
-                points: values,
-            };
-            let mut deflection = PlotSpec::new("", "deflection from the settled rail", "s = x − vt (m)", "w (mm)");
-            deflection.series.push(line(
-                "W(s)",
-                1,
-                wave.s.iter().zip(&wave.deflection).map(|(s, w)| (*s, w * 1e3)).collect(),
-            ));
-            let mut moment = PlotSpec::new("", "bending moment", "s = x − vt (m)", "M (kN·m)");
-            moment.series.push(line(
-                "EI W″(s)",
-                2,
-                wave.s.iter().zip(&wave.moment).map(|(s, m)| (*s, m / 1e3)).collect(),
-            ));
-            shape.panels = vec![deflection, moment];
-            if self.friction > 0.0 {
-                let mut resistance = PlotSpec::new(
-                    "",
-                    "ballast friction (flat at ±f_u where the rail slides)",
-                    "s = x − vt (m)",
-                    "r (kN/m)",
-                );
-                resistance.series.push(line(
-                    "r(s)",
-                    3,
-                    wave.s.iter().zip(&wave.friction_force).map(|(s, r)| (*s, r / 1e3)).collect(),
-                ));
-                shape.panels.push(resistance);
-            }
-            return vec![shape];
-        }
-        let mut peaks = PlotSpec::new("stationary-peaks", title, "speed v (m/s)", "peak deflection (mm)");
-        let missing: Vec<f64> = self.points.iter().filter(|p| p.status != "converged").map(|p| p.speed).collect();
-        peaks.subtitle = match (missing.first(), missing.last()) {
-            (Some(a), Some(b)) => format!(
-                "{subtitle}; no wave found at {} of {} speeds ({a:.0}–{b:.0} m/s)",
-                missing.len(),
-                self.points.len()
-            ),
-            _ => subtitle,
-        };
-        let converged: Vec<&StationaryPoint> = self.points.iter().filter(|p| p.status == "converged").collect();
-        for (label, stroke, values) in [
-            (
-                "downward",
-                Stroke::Solid,
-                converged.iter().filter_map(|p| Some((p.speed, p.max_downward_deflection?.value * 1e3))).collect(),
-            ),
-            (
-                "upward",
-                Stroke::Dashed,
-                converged.iter().filter_map(|p| Some((p.speed, p.max_upward_deflection?.value * 1e3))).collect(),
-            ),
-        ] {
-            peaks.series.push(Series { label: Some(label.into()), color: 1, stroke, markers: true, points: values });
-        }
-        vec![peaks]
     }
 }
 
