@@ -73,6 +73,9 @@ pub struct StationaryWave {
     unsettled_at_ends: (bool, bool),
 }
 
+/// Below this share of F·v·max|W′| the wave's powers are round-off: no power flows (an undamped wave without friction).
+pub const NO_POWER: f64 = 1e-9;
+
 impl StationaryWave {
     pub(crate) fn new(problem: &StationaryProblem, frame: &MovingFrame, w: Vec<f64>, status: Convergence) -> Self {
         let nodes = frame.nodes.len();
@@ -188,10 +191,17 @@ impl StationaryWave {
     }
 
     /// (load power − viscous − friction − left-behind power) / load power: zero for the exact stationary wave on
-    /// the infinite track; here the discretisation's and the ends' share (0 when no power flows).
+    /// the infinite track; here the discretisation's and the ends' share. 0 when no power flows: an undamped wave
+    /// without friction is symmetric, W′(0) = 0, and its load power is round-off — below [`NO_POWER`] of
+    /// F·v·max|W′| — whose ratio to the others' would read as a 100 % imbalance.
     pub fn power_imbalance(&self) -> f64 {
         let out = self.viscous_power + self.friction_power + self.left_behind_power;
-        if self.load_power.abs() > 0.0 { (self.load_power - out) / self.load_power } else { 0.0 }
+        let scale = (self.load * self.speed).abs() * self.slope.iter().fold(0.0f64, |m, d| m.max(d.abs()));
+        if self.load_power.abs().max(out.abs()) > NO_POWER * scale {
+            (self.load_power - out) / self.load_power
+        } else {
+            0.0
+        }
     }
 
     /// The wave's power balance as it is reported.

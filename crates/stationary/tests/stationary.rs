@@ -20,6 +20,18 @@ fn problem(law: FoundationLaw, damping_ratio: f64, speed: f64, load: f64) -> Sta
     }
 }
 
+/// Undamped and without friction no power flows: the wave is symmetric, the load's power F v W′(0) is round-off
+/// (5e-8 W at 100 m/s against F v max|W′| ≈ 1e5 W), and the balance says no imbalance — not the 100 % that a ratio
+/// of round-offs gives.
+#[test]
+fn an_undamped_wave_without_friction_has_no_power_imbalance() {
+    let wave = solve(&problem(FoundationLaw::Linear, 0.0, 100.0, 83.4e3)).unwrap();
+    assert!(wave.convergence.is_converged());
+    let scale = 83.4e3 * 100.0 * wave.slope.iter().fold(0.0f64, |m, d| m.max(d.abs()));
+    assert!(wave.load_power.abs() < 1e-9 * scale && scale > 1e4, "{} W of {scale} W", wave.load_power);
+    assert_eq!(wave.power_imbalance(), 0.0);
+}
+
 /// Linear soil: the wave equals the closed form of the infinite beam (`frictrack analytic`) to 1e-4 of its peak at
 /// sub- and supercritical speeds with damping — on any domain, the transparent ends being exact.
 #[test]
