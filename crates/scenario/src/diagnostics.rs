@@ -87,8 +87,8 @@ pub fn warnings(scenario: &Scenario, case: &Case) -> Vec<Warning> {
 
 /// The warnings of a sweep of `scenario` over `speeds` (m/s): those of its runs at the lowest and at the highest
 /// speed — every speed-dependent check (the step h = Δx/v resolving a frequency, the speed against v_cr) is worst at
-/// one of them — each once. A sweep used to print the base case's only, at the scenario's own speed, and drop the
-/// "load advance too coarse" warning a run at a swept speed prints.
+/// one of them — each once, so that a sweep warns of what any of its runs would (the scenario's own speed alone
+/// would miss a "load advance too coarse" at a swept speed).
 pub fn sweep_warnings(scenario: &Scenario, speeds: &[f64]) -> Result<Vec<Warning>> {
     let (low, high) = speeds.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| (a.min(v), b.max(v)));
     let mut out: Vec<Warning> = Vec::new();
