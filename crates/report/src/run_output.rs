@@ -72,12 +72,7 @@ pub fn run_with_snapshots(
     progress: &dyn Fn(f64),
 ) -> Result<(RunResult, Vec<Snapshot>)> {
     let settings = &case.settings;
-    let mut taker = SnapshotTaker::new(&case.model, &case.interactions, settings, requests).map_err(|e| match e {
-        track::TrackError::InvalidField { value, allowed, .. } => {
-            scenario::error::invalid("output.snapshot_times / snapshot_load_positions", value, allowed)
-        }
-        other => other.into(),
-    })?;
+    let mut taker = SnapshotTaker::new(&case.model, &case.interactions, settings, requests)?;
     let total = settings.step_count(case.model.mesh().length).max(1.0);
     // Every 0.1 % of the run: often enough for a run of hours, one call in a thousand steps.
     let every = ((total / 1000.0).ceil() as usize).max(1);

@@ -164,7 +164,7 @@ impl Scenario {
             }
         }
         let settings = self.run_settings(self.load.speed)?;
-        settings.validate(&model).map_err(scenario_path)?;
+        settings.validate(&model)?;
         if let Some(sweep) = &self.sweep {
             sweep.validate("sweep")?;
         }
@@ -232,15 +232,15 @@ impl Scenario {
             };
             // The layout's own checks (e.g. the count against the mesh) come first, then the force.
             let mut devices = Devices { layout, force: 0.0 };
-            devices.validate(model).map_err(in_friction)?;
+            devices.validate(model)?;
             devices.force = d.force.ok_or_else(|| {
                 invalid("friction.devices.force", "missing", "give the maximal force of one device F_u (N)")
             })?;
             finite_non_negative("friction.devices.force", devices.force, "N")?;
-            interactions.extend(devices.interactions(model).map_err(in_friction)?);
+            interactions.extend(devices.interactions(model)?);
         }
         if let Some(d) = &self.friction.distributed {
-            interactions.extend(d.friction()?.interactions(model).map_err(in_friction)?);
+            interactions.extend(d.friction()?.interactions(model)?);
         }
         Ok(interactions)
     }
@@ -290,7 +290,7 @@ impl Scenario {
         }
         // `load.force` is checked even where a train or vehicles carry the load instead: a bad value is refused,
         // never silently unused.
-        Load::Force(self.load.force).validate().map_err(scenario_path)?;
+        Load::Force(self.load.force).validate()?;
         let load = match (&self.vehicle, train) {
             (Some(v), train) => {
                 let vehicles = v.settings(train.as_ref(), |behind| self.rail.profile(reach + behind))?;
@@ -345,50 +345,8 @@ impl DistributedSection {
             subdivisions: self.subdivisions,
             quadrature,
         };
-        friction.validate().map_err(|e| in_friction(track::TrackError::setting(e)))?;
+        friction.validate().map_err(track::TrackError::friction)?;
         Ok(friction)
-    }
-}
-
-/// A field error of the friction placed on the beam (e.g. `devices.count`), renamed to its path in `[friction]`.
-fn in_friction(error: track::TrackError) -> StudyError {
-    use track::TrackError as T;
-    match error {
-        T::InvalidField { field, value, allowed } => invalid(&format!("friction.{field}"), number(value), allowed),
-        T::InvalidCount { field, value, allowed } => invalid(&format!("friction.{field}"), value, allowed),
-        other => other.into(),
-    }
-}
-
-/// Rename a run-setting error's field to its path in the scenario file.
-fn scenario_path(error: track::TrackError) -> StudyError {
-    use track::TrackError as T;
-    match error {
-        T::Engine(nscd::NscdError::InvalidField { field, value, allowed })
-        | T::InvalidField { field, value, allowed } => invalid(path_of(field), number(value), allowed),
-        T::InvalidCount { field, value, allowed } => invalid(path_of(field), value, allowed),
-        T::InvalidChoice { field, value, allowed } => invalid(path_of(field), value, allowed),
-        other => other.into(),
-    }
-}
-
-/// The path in the scenario file of a run setting's field.
-fn path_of(field: &str) -> &str {
-    match field {
-        "speed" => "load.speed",
-        "load" => "load.force",
-        "load_advance" => "integration.load_advance",
-        "max_step" => "integration.max_step",
-        "integration.step" => "integration.load_advance",
-        "solver.tolerance" => "integration.tolerance",
-        "solver.max_iterations" => "integration.max_iterations",
-        "initial.static_position" => "integration.static_start",
-        "initial.position" => "integration.steady_start",
-        "end_time" => "integration.end_time",
-        "record_sections" => "output.sections",
-        "extremes_nodes" => "output.extremes_nodes",
-        "solver" => "integration.solver",
-        other => other,
     }
 }
 

@@ -78,14 +78,13 @@ impl From<track::TrackError> for StudyError {
             track::TrackError::Engine(e) => StudyError::Stepping(e),
             track::TrackError::Beam(e) => StudyError::Beam(e),
             track::TrackError::Irregularity(e) => e.into(),
-            track::TrackError::InvalidField { field, value, allowed } => {
-                StudyError::InvalidField { path: field.into(), value: crate::number::number(value), allowed }
-            }
-            track::TrackError::InvalidChoice { field, value, allowed } => {
-                StudyError::InvalidField { path: field.into(), value: value.into(), allowed }
-            }
-            track::TrackError::InvalidCount { field, value, allowed } => {
-                StudyError::InvalidField { path: field.into(), value: value.to_string(), allowed }
+            track::TrackError::Invalid { setting, value, allowed } => {
+                let value = match value {
+                    track::Refused::Number(x) => crate::number::number(x),
+                    track::Refused::Count(n) => n.to_string(),
+                    track::Refused::Choice(name) => name.to_string(),
+                };
+                StudyError::InvalidField { path: path(setting), value, allowed }
             }
             track::TrackError::NoStaticEquilibrium { reason } => StudyError::InvalidField {
                 path: "foundation.law".into(),
@@ -93,6 +92,36 @@ impl From<track::TrackError> for StudyError {
                 allowed: reason,
             },
         }
+    }
+}
+
+/// Where a setting the track checks is in a scenario file: one exhaustive match, so that a new setting cannot go
+/// unnamed (the friction's and the vehicles' keys are theirs under `[friction]` and `[vehicle]`).
+pub fn path(setting: track::Setting) -> String {
+    use track::Setting as S;
+    match setting {
+        S::Speed => "load.speed".into(),
+        S::Load => "load.force".into(),
+        S::LoadAdvance => "integration.load_advance".into(),
+        S::MaxStep => "integration.max_step".into(),
+        S::Theta => "integration.theta".into(),
+        S::EndTime => "integration.end_time".into(),
+        S::Tolerance => "integration.tolerance".into(),
+        S::MaxIterations => "integration.max_iterations".into(),
+        S::Solver => "integration.solver".into(),
+        S::StaticStart => "integration.static_start".into(),
+        S::SteadyStart => "integration.steady_start".into(),
+        S::RecordSections => "output.sections".into(),
+        S::ExtremesNodes => "output.extremes_nodes".into(),
+        S::ExtremesWindow => "output.extremes_window".into(),
+        S::Snapshots => "output.snapshot_times / snapshot_load_positions".into(),
+        S::Friction(name) => format!("friction.{name}"),
+        S::Vehicle(key) => key.into(),
+        S::CoMovingLoadAt => "co_moving.load_at".into(),
+        S::CoMovingTrackLength => "co_moving.track_length".into(),
+        S::LeftSupport => "supports.left".into(),
+        S::RightSupport => "supports.right".into(),
+        S::Beam(name) => name.into(),
     }
 }
 

@@ -13,7 +13,7 @@
 //! window length travelled (the stationary state's convergence measure), the extremes over the window's middle
 //! (between its absorbing zones) and the energy ledger.
 
-use crate::error::{Result, TrackError, invalid};
+use crate::error::{Result, Setting, invalid, invalid_choice};
 use crate::placed::{PlacedInteractions, SectionKind};
 use crate::simulation::setup::Setup;
 use crate::simulation::{InitialState, Record, RunSettings, Simulation, StepState, Stepping};
@@ -77,7 +77,7 @@ fn blocks(model: &BeamModel, placed: &PlacedInteractions) -> Result<Vec<ShiftedB
         let repeats = (start..start + len - per_shift).all(|j| (x[j + per_shift] - x[j] - l).abs() <= 1e-9 * l);
         if kind == SectionKind::Device || !repeats {
             return Err(invalid(
-                "friction.devices",
+                Setting::Friction("devices"),
                 len as f64,
                 "takes friction distributed along the track and nonlinear soils, which repeat every element; \
                  devices at chosen places do not travel with a window",
@@ -139,21 +139,18 @@ fn check(model: &BeamModel, settings: &RunSettings, window: &CoMovingSettings) -
     let supports = model.supports();
     let wrong = match (supports.left, supports.right) {
         (Support::Free, Support::Clamped) => None,
-        (Support::Free, right) => Some(("supports.right", right)),
-        (left, _) => Some(("supports.left", left)),
+        (Support::Free, right) => Some((Setting::RightSupport, right)),
+        (left, _) => Some((Setting::LeftSupport, left)),
     };
-    if let Some((field, support)) = wrong {
-        return Err(TrackError::InvalidChoice {
-            field,
-            value: support.name(),
-            allowed: "a co-moving window has a free rear end and a clamped front end (the track ahead at rest)".into(),
-        });
+    if let Some((setting, support)) = wrong {
+        let allowed = "a co-moving window has a free rear end and a clamped front end (the track ahead at rest)";
+        return Err(invalid_choice(setting, support.name(), allowed));
     }
     let l = mesh.element_length();
     let advance = settings.integration.load_advance;
     if settings.step_is_capped() {
         return Err(invalid(
-            "max_step",
+            Setting::MaxStep,
             settings.time_step(),
             format!(
                 "a co-moving window moves by whole load advances: give a load advance of at most {} m (that divides \
@@ -164,12 +161,12 @@ fn check(model: &BeamModel, settings: &RunSettings, window: &CoMovingSettings) -
     }
     let per_element = (l / advance).round();
     if (per_element * advance - l).abs() > 1e-9 * l {
-        return Err(invalid("load_advance", advance, format!("must divide the element length {l} m")));
+        return Err(invalid(Setting::LoadAdvance, advance, format!("must divide the element length {l} m")));
     }
     let train_length = settings.moving.load.length();
     if !(window.load_at >= train_length && window.load_at + l <= mesh.length) {
         return Err(invalid(
-            "co_moving.load_at",
+            Setting::CoMovingLoadAt,
             window.load_at,
             format!("must leave the train ({train_length} m) and an element inside the {} m window", mesh.length),
         ));
@@ -177,7 +174,7 @@ fn check(model: &BeamModel, settings: &RunSettings, window: &CoMovingSettings) -
     let steps = (window.track_length / advance).round();
     if !(window.track_length.is_finite() && window.track_length > 0.0 && steps <= MAX_STEPS as f64) {
         return Err(invalid(
-            "co_moving.track_length",
+            Setting::CoMovingTrackLength,
             window.track_length,
             format!("must be > 0 and take at most {MAX_STEPS} steps of {advance} m"),
         ));

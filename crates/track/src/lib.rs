@@ -21,7 +21,7 @@ pub mod system;
 pub mod unilateral_statics;
 pub mod vehicle;
 
-pub use error::{Result, TrackError};
+pub use error::{Refused, Result, Setting, TrackError};
 pub use foundation_layout::FoundationSections;
 pub use friction_layout::{BallastOnBeam, DeviceLayout, Devices, DistributedFriction, Quadrature};
 pub use moving_load::MovingLoad;

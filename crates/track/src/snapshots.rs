@@ -7,7 +7,8 @@
 //! ([`fem_beam::BeamModel::nodal_moments`]), with q̈ the step's mean acceleration (v_{k+1} − v_k)/h and f_e the
 //! moving load where it stands plus the friction forces p_j/h of the step at their sections.
 
-use crate::error::{Result, invalid};
+use crate::error::Result;
+use crate::error::{Setting, invalid};
 use crate::placed::PlacedInteractions;
 use crate::simulation::{RunSettings, StepView};
 use fem_beam::section::Motion;
@@ -72,7 +73,7 @@ impl<'a> SnapshotTaker<'a> {
                 SnapshotAt::Time(t) => {
                     if !(t.is_finite() && (0.0..=end).contains(&t)) {
                         let allowed = format!("a snapshot time must lie in the run, [0, {end}] s");
-                        return Err(invalid("snapshots", t, allowed));
+                        return Err(invalid(Setting::Snapshots, t, allowed));
                     }
                     t
                 }
@@ -81,7 +82,7 @@ impl<'a> SnapshotTaker<'a> {
                     let last = length + settings.moving.load.length();
                     if !(x.is_finite() && (start..=last).contains(&x)) {
                         let allowed = format!("a snapshot load (first axle) position must lie in [{start}, {last}] m");
-                        return Err(invalid("snapshots", x, allowed));
+                        return Err(invalid(Setting::Snapshots, x, allowed));
                     }
                     (x - start) / settings.moving.speed
                 }

@@ -1,7 +1,8 @@
 //! The static response of a train standing at every position along its crossing (docs/theory.md §10): the
 //! reference of a dynamic amplification factor φ = max dynamic deflection / max static deflection.
 
-use crate::error::{Result, invalid};
+use crate::error::Result;
+use crate::error::{Setting, invalid};
 use crate::placed::PlacedInteractions;
 use crate::simulation::counts_for_extremes;
 use crate::unilateral_statics::static_deflection;
@@ -38,7 +39,7 @@ pub fn static_envelope(
     let positions = (span / advance).ceil() as usize + 1;
     if !(advance.is_finite() && advance > 0.0) || positions > MAX_POSITIONS {
         return Err(invalid(
-            "load_advance",
+            Setting::LoadAdvance,
             advance,
             format!("must be > 0 and give at most {MAX_POSITIONS} train positions"),
         ));

@@ -4,7 +4,9 @@
 use fem_beam::reference::uic60_on_soft_soil;
 use fem_beam::{BeamModel, Support, Supports};
 use friction::InteractionKind;
-use track::{BallastOnBeam, DeviceLayout, Devices, DistributedFriction, Quadrature, SectionKind, TrackError};
+use track::{
+    BallastOnBeam, DeviceLayout, Devices, DistributedFriction, Quadrature, Refused, SectionKind, Setting, TrackError,
+};
 
 fn model(supports: Supports) -> BeamModel {
     let case = uic60_on_soft_soil();
@@ -43,7 +45,8 @@ fn devices_on_one_node_merge_and_too_many_are_rejected() {
     assert_eq!([set.interactions().capacity(0), set.interactions().capacity(1)], [2e3, 1e3]);
     assert_eq!(set.positions(), &[10.0, 50.0]);
     let err = Devices::uniform(200, 1e3).interactions(&m).unwrap_err();
-    assert!(matches!(err, TrackError::InvalidCount { field: "devices.count", value: 200, .. }), "{err}");
+    let TrackError::Invalid { setting, value, .. } = &err else { panic!("{err}") };
+    assert_eq!((setting, value), (&Setting::Friction("devices.count"), &Refused::Count(200)), "{err}");
     let err = Devices::uniform(3, -1.0).interactions(&m).unwrap_err();
     assert!(err.to_string().contains("devices.force"), "{err}");
     let err = Devices { layout: DeviceLayout::Positions(vec![250.0]), force: 1.0 }.interactions(&m).unwrap_err();

@@ -5,6 +5,7 @@
 //! has the row selecting its node's w DOF and the bound F_u. Devices snapped to the same node merge (bounds add).
 
 use crate::error::{Result, TrackError};
+use crate::error::{Setting, invalid, invalid_count};
 use crate::placed::{PlacedInteractions, SectionKind};
 use fem_beam::BeamModel;
 use friction::{InteractionRow, Law};
@@ -39,21 +40,17 @@ impl Devices {
     /// Check the parameters against the mesh of `model`.
     pub fn validate(&self, model: &BeamModel) -> Result<()> {
         if !(self.force.is_finite() && self.force >= 0.0) {
-            return Err(TrackError::InvalidField {
-                field: "devices.force",
-                value: self.force,
-                allowed: "must be finite and ≥ 0 (N)".into(),
-            });
+            return Err(invalid(Setting::Friction("devices.force"), self.force, "must be finite and ≥ 0 (N)"));
         }
         let interior = model.mesh().elements - 1;
         if let DeviceLayout::Uniform { count } = self.layout
             && count > interior
         {
-            return Err(TrackError::InvalidCount {
-                field: "devices.count",
-                value: count,
-                allowed: format!("at most {interior}, the number of interior nodes of the mesh"),
-            });
+            return Err(invalid_count(
+                Setting::Friction("devices.count"),
+                count,
+                format!("at most {interior}, the number of interior nodes of the mesh"),
+            ));
         }
         Ok(())
     }

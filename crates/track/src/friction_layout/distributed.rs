@@ -17,7 +17,7 @@ pub trait BallastOnBeam {
 
 impl BallastOnBeam for DistributedFriction {
     fn interactions(&self, model: &BeamModel) -> Result<PlacedInteractions> {
-        self.validate().map_err(TrackError::setting)?;
+        self.validate().map_err(TrackError::friction)?;
         let mut set = PlacedInteractions::new();
         for section in section_quadrature::sections(model, self.subdivisions, self.quadrature) {
             let law = Law::Coulomb { capacity: self.force_per_length * section.weight };

@@ -27,6 +27,7 @@ pub use settings::{InitialState, IntegrationSettings, Load, MovingLoadSettings, 
 pub use vehicles::{IMPACT_WINDOW, LOSS_OF_CONTACT};
 
 use crate::error::Result;
+use crate::error::Setting;
 use crate::placed::PlacedInteractions;
 use fem_beam::BeamModel;
 use fem_beam::reference::InfiniteBeam;
@@ -103,7 +104,7 @@ impl<'a> Simulation<'a> {
                 let train = self.settings.moving.load.train();
                 if !train.patches.is_empty() {
                     return Err(crate::error::invalid(
-                        "initial.position",
+                        Setting::SteadyStart,
                         position,
                         "the steady-state start takes trains of axles only (no load patches)",
                     ));

@@ -2,7 +2,7 @@
 //! load advance, end, solver) and what is recorded (sections, extremes window) — and the limits checked before
 //! anything is allocated.
 
-use crate::error::{Result, TrackError, invalid};
+use crate::error::{Result, Setting, invalid, invalid_choice, invalid_count};
 use crate::vehicle::consist::{MAX_CONTACT_STEP, VehicleSettings};
 use fem_beam::{BeamModel, Train};
 use nscd::solver::{SolverKind, SolverSettings};
@@ -90,7 +90,7 @@ impl Load {
     pub fn validate(&self) -> Result<()> {
         match self {
             Load::Force(force) if !(force.is_finite() && *force >= 0.0) => {
-                Err(invalid("load", *force, "must be finite and ≥ 0 (N, acting downward)"))
+                Err(invalid(Setting::Load, *force, "must be finite and ≥ 0 (N, acting downward)"))
             }
             Load::Force(_) => Ok(()),
             Load::Train(train) => Ok(train.validate()?),
@@ -195,7 +195,7 @@ impl RunSettings {
     /// The speed (positive, below the bar wave speed) and what crosses; vehicles' own limits.
     fn validate_moving(&self, model: &BeamModel) -> Result<()> {
         if !(self.moving.speed.is_finite() && self.moving.speed > 0.0) {
-            return Err(invalid("speed", self.moving.speed, "must be finite and > 0 (m/s)"));
+            return Err(invalid(Setting::Speed, self.moving.speed, "must be finite and > 0 (m/s)"));
         }
         // Faster than the beam's bar wave speed √(E/ρ) (5.2 km/s in steel, 3.7 km/s in concrete) no beam theory holds,
         // and the step h = Δx/v would shrink towards round-off: refused, not answered.
@@ -203,7 +203,7 @@ impl RunSettings {
         let bar_wave = (beam.youngs_modulus / beam.density).sqrt();
         if self.moving.speed >= bar_wave {
             return Err(invalid(
-                "speed",
+                Setting::Speed,
                 self.moving.speed,
                 format!(
                     "must be below the beam's bar wave speed √(E/ρ) = {bar_wave:.0} m/s: beyond it no beam theory \
@@ -215,17 +215,16 @@ impl RunSettings {
         if self.moving.load.vehicles().is_some() {
             let kind = self.integration.solver.kind;
             if kind == SolverKind::Homotopy {
-                return Err(crate::TrackError::InvalidChoice {
-                    field: "solver",
-                    value: kind.name(),
-                    allowed: "the homotopy takes fixed friction sections only: runs with vehicles need auto, \
-                              interior-point, projection or clarabel"
-                        .into(),
-                });
+                return Err(invalid_choice(
+                    Setting::Solver,
+                    kind.name(),
+                    "the homotopy takes fixed friction sections only: runs with vehicles need auto, \
+                              interior-point, projection or clarabel",
+                ));
             }
             if let InitialState::SteadyState { position } = self.moving.initial {
                 return Err(invalid(
-                    "initial.position",
+                    Setting::SteadyStart,
                     position,
                     "vehicles start at rest in static equilibrium (on the unloaded rail, or on the loaded one with a \
                      static start): no steady-state start",
@@ -243,7 +242,7 @@ impl RunSettings {
             && self.integration.load_advance <= l)
         {
             return Err(invalid(
-                "load_advance",
+                Setting::LoadAdvance,
                 self.integration.load_advance,
                 format!("must be > 0 and ≤ the element length {l} m"),
             ));
@@ -251,15 +250,23 @@ impl RunSettings {
         if let Some(h_max) = self.integration.max_step
             && !(h_max.is_finite() && h_max > 0.0)
         {
-            return Err(invalid("max_step", h_max, "must be a time step > 0 (s)"));
+            return Err(invalid(Setting::MaxStep, h_max, "must be a time step > 0 (s)"));
         }
-        Integration { theta: self.integration.theta, step: self.time_step() }.validate()?;
+        // The engine's own check of θ and h, named as this crate's settings: h = Δx/v is the load advance's (its
+        // speed checked above).
+        Integration { theta: self.integration.theta, step: self.time_step() }.validate().map_err(|e| match e {
+            nscd::NscdError::InvalidField { field: "integration.theta", value, allowed } => {
+                invalid(Setting::Theta, value, allowed)
+            }
+            nscd::NscdError::InvalidField { value, allowed, .. } => invalid(Setting::LoadAdvance, value, allowed),
+            other => other.into(),
+        })?;
         if let Some(vehicles) = self.moving.load.vehicles() {
             let omega = vehicles.contact_frequency()?;
             let largest = MAX_CONTACT_STEP / omega * self.moving.speed;
             if omega * self.time_step() > MAX_CONTACT_STEP {
                 return Err(invalid(
-                    "load_advance",
+                    Setting::LoadAdvance,
                     self.integration.load_advance,
                     format!(
                         "must be ≤ {largest:.4e} m at {} m/s with these vehicles: the wheel–rail contact mode at \
@@ -276,12 +283,12 @@ impl RunSettings {
             && self.integration.solver.tolerance > 0.0
             && self.integration.solver.tolerance <= 1e-2)
         {
-            return Err(invalid("solver.tolerance", self.integration.solver.tolerance, "must lie in (0, 1e-2]"));
+            return Err(invalid(Setting::Tolerance, self.integration.solver.tolerance, "must lie in (0, 1e-2]"));
         }
         let minimum = nscd::solver::homotopy::MIN_TOLERANCE;
         if self.integration.solver.kind == SolverKind::Homotopy && self.integration.solver.tolerance < minimum {
             return Err(invalid(
-                "solver.tolerance",
+                Setting::Tolerance,
                 self.integration.solver.tolerance,
                 format!(
                     "must be at least {minimum:e} with the homotopy solver (its band of width ε = 0.4·tol·U \
@@ -290,11 +297,7 @@ impl RunSettings {
             ));
         }
         if self.integration.solver.max_iterations == 0 {
-            return Err(TrackError::InvalidCount {
-                field: "solver.max_iterations",
-                value: 0,
-                allowed: "must be ≥ 1".into(),
-            });
+            return Err(invalid_count(Setting::MaxIterations, 0, "must be ≥ 1"));
         }
         Ok(())
     }
@@ -306,7 +309,7 @@ impl RunSettings {
             && !model.foundation().law.is_linear()
         {
             return Err(invalid(
-                "initial.position",
+                Setting::SteadyStart,
                 position,
                 "the steady-state start is the closed form of a linear foundation: a tensionless or bilinear one \
                  starts at rest or from a static start",
@@ -316,9 +319,9 @@ impl RunSettings {
             && !(position.is_finite() && (0.0..length).contains(&position))
         {
             let field = if matches!(self.moving.initial, InitialState::Static { .. }) {
-                "initial.static_position"
+                Setting::StaticStart
             } else {
-                "initial.position"
+                Setting::SteadyStart
             };
             return Err(invalid(field, position, format!("must lie in [0, {length}) m")));
         }
@@ -330,14 +333,14 @@ impl RunSettings {
         let length = model.mesh().length;
         for &x in &self.record.sections {
             if !(x.is_finite() && (0.0..=length).contains(&x)) {
-                return Err(invalid("record_sections", x, format!("must lie on the beam, in [0, {length}] m")));
+                return Err(invalid(Setting::RecordSections, x, format!("must lie on the beam, in [0, {length}] m")));
             }
         }
         if let Some((a, b)) = self.record.extremes_window
             && !(a.is_finite() && b.is_finite() && a < b)
         {
             let allowed = format!("needs finite load positions A < B (m), got {a}:{b}");
-            return Err(invalid("extremes_window", if a.is_finite() { b } else { a }, allowed));
+            return Err(invalid(Setting::ExtremesWindow, if a.is_finite() { b } else { a }, allowed));
         }
         if let Some((a, b)) = self.record.extremes_nodes {
             let mesh = model.mesh();
@@ -347,7 +350,7 @@ impl RunSettings {
             });
             if !(a.is_finite() && b.is_finite() && a <= b && has_node) {
                 let allowed = format!("needs positions a ≤ b (m) with a free node between them, got {a}:{b}");
-                return Err(invalid("extremes_nodes", if a.is_finite() { b } else { a }, allowed));
+                return Err(invalid(Setting::ExtremesNodes, if a.is_finite() { b } else { a }, allowed));
             }
         }
         Ok(())
@@ -359,7 +362,7 @@ impl RunSettings {
             && !(end.is_finite() && end >= self.crossing_time(length) * (1.0 - 1e-12))
         {
             return Err(invalid(
-                "end_time",
+                Setting::EndTime,
                 end,
                 format!("must be ≥ the crossing time {} s", self.crossing_time(length)),
             ));
@@ -375,15 +378,15 @@ impl RunSettings {
                 Self::MAX_STEPS
             );
             return match self.integration.end_time {
-                Some(end) => Err(invalid("end_time", end, allowed)),
-                None => Err(invalid("load_advance", self.integration.load_advance, allowed)),
+                Some(end) => Err(invalid(Setting::EndTime, end, allowed)),
+                None => Err(invalid(Setting::LoadAdvance, self.integration.load_advance, allowed)),
             };
         }
         let wheels = self.moving.load.vehicles().map_or(0, |v| v.wheels().count());
         let samples = (steps + 1.0) * (self.record.sections.len() + wheels) as f64;
         if samples > Self::MAX_RECORDED_SAMPLES as f64 {
             return Err(invalid(
-                "record_sections",
+                Setting::RecordSections,
                 self.record.sections.len() as f64,
                 format!(
                     "{} sections and {wheels} wheels × {steps:.3e} steps exceed {} recorded samples; record fewer \

@@ -3,7 +3,8 @@
 //! and one `validate`; each builds its [`Vehicle`].
 
 use super::{GRAVITY, Vehicle, Wheel};
-use crate::error::{Result, invalid};
+use crate::error::Result;
+use crate::error::{Setting, invalid};
 
 /// A moving mass.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -22,7 +23,7 @@ impl MovingMass {
     /// Check m.
     pub fn validate(&self) -> Result<()> {
         if !(self.mass.is_finite() && self.mass > 0.0) {
-            return Err(invalid("vehicle.mass", self.mass, "must be finite and > 0 (kg)"));
+            return Err(invalid(Setting::Vehicle("vehicle.mass"), self.mass, "must be finite and > 0 (kg)"));
         }
         Ok(())
     }
@@ -69,7 +70,7 @@ impl QuarterCar {
             if v.is_finite() && v > 0.0 {
                 Ok(())
             } else {
-                Err(invalid(field, v, format!("must be finite and > 0 ({unit})")))
+                Err(invalid(Setting::Vehicle(field), v, format!("must be finite and > 0 ({unit})")))
             }
         };
         positive("vehicle.body_mass", self.body_mass, "kg")?;
@@ -79,7 +80,7 @@ impl QuarterCar {
             ("vehicle.wheel_mass", self.wheel_mass, "kg"),
         ] {
             if !(v.is_finite() && v >= 0.0) {
-                return Err(invalid(field, v, format!("must be finite and ≥ 0 ({unit})")));
+                return Err(invalid(Setting::Vehicle(field), v, format!("must be finite and ≥ 0 ({unit})")));
             }
         }
         Ok(())

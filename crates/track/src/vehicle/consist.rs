@@ -5,7 +5,8 @@
 use super::Vehicle;
 use super::rail_car::RailCar;
 use super::wheel_rail::WheelRail;
-use crate::error::{Result, invalid};
+use crate::error::Result;
+use crate::error::{Setting, invalid};
 use fem_beam::Train;
 use irregularity::{Profile, WheelFlat, WheelTrack};
 
@@ -15,7 +16,11 @@ pub const MAX_VEHICLES: usize = 1_000;
 /// Check a number of vehicles against 1 … [`MAX_VEHICLES`] (before any is built from it).
 pub fn check_count(count: usize) -> Result<()> {
     if count == 0 || count > MAX_VEHICLES {
-        return Err(invalid("vehicle.count", count as f64, format!("must lie in 1 … {MAX_VEHICLES}")));
+        return Err(invalid(
+            Setting::Vehicle("vehicle.count"),
+            count as f64,
+            format!("must lie in 1 … {MAX_VEHICLES}"),
+        ));
     }
     Ok(())
 }
@@ -107,18 +112,26 @@ impl VehicleSettings {
         template.validate()?;
         if template.wheels.len() != 1 {
             return Err(invalid(
-                "vehicle.train",
+                Setting::Vehicle("vehicle.train"),
                 template.wheels.len() as f64,
                 "a train's axles take one-wheel vehicles (moving mass, quarter car), or rail cars four axles each \
                  (populate_cars); run other vehicles with several wheels in a row instead",
             ));
         }
         if !train.patches.is_empty() {
-            return Err(invalid("vehicle.train", train.patches.len() as f64, "load patches cannot carry vehicles"));
+            return Err(invalid(
+                Setting::Vehicle("vehicle.train"),
+                train.patches.len() as f64,
+                "load patches cannot carry vehicles",
+            ));
         }
         let weight = -template.weight.iter().sum::<f64>();
         if weight.is_nan() || weight <= 0.0 {
-            return Err(invalid("vehicle.weight", weight, "must press the rail (total weight > 0 N) to scale"));
+            return Err(invalid(
+                Setting::Vehicle("vehicle.weight"),
+                weight,
+                "must press the rail (total weight > 0 N) to scale",
+            ));
         }
         let vehicles = train
             .axles
@@ -140,12 +153,16 @@ impl VehicleSettings {
     pub fn populate_cars(template: &RailCar, train: &Train) -> Result<Self> {
         template.validate()?;
         if !train.patches.is_empty() {
-            return Err(invalid("vehicle.train", train.patches.len() as f64, "load patches cannot carry vehicles"));
+            return Err(invalid(
+                Setting::Vehicle("vehicle.train"),
+                train.patches.len() as f64,
+                "load patches cannot carry vehicles",
+            ));
         }
         let n = train.axles.len();
         if n == 0 || !n.is_multiple_of(4) {
             let allowed = "rail cars take four axles each: the train's axles must be a whole number of cars";
-            return Err(invalid("vehicle.train", n as f64, allowed));
+            return Err(invalid(Setting::Vehicle("vehicle.train"), n as f64, allowed));
         }
         let first = train.axles[0].offset;
         let mut vehicles = Vec::with_capacity(n / 4);
@@ -164,7 +181,7 @@ impl VehicleSettings {
         for placed in &self.vehicles {
             placed.vehicle.validate()?;
             if !(placed.offset.is_finite() && placed.offset >= 0.0) {
-                return Err(invalid("vehicle.offset", placed.offset, "must be finite and ≥ 0 (m)"));
+                return Err(invalid(Setting::Vehicle("vehicle.offset"), placed.offset, "must be finite and ≥ 0 (m)"));
             }
         }
         self.contact.validate()?;
@@ -179,7 +196,7 @@ impl VehicleSettings {
         for f in &self.flats {
             if f.wheel >= wheels {
                 return Err(invalid(
-                    "vehicle.flats.wheel",
+                    Setting::Vehicle("vehicle.flats.wheel"),
                     f.wheel as f64,
                     format!("must be a wheel index < {wheels}"),
                 ));

@@ -14,7 +14,7 @@ pub mod rail;
 pub mod rail_car;
 pub mod wheel_rail;
 
-use crate::error::{Result, TrackError, invalid};
+use crate::error::{Result, Setting, invalid, invalid_choice, invalid_count};
 use banded::SymmetricBanded;
 use nscd::LinearSystem;
 
@@ -76,45 +76,65 @@ impl Vehicle {
     pub fn validate(&self) -> Result<()> {
         let n = self.dofs();
         if n == 0 || n > MAX_VEHICLE_DOFS {
-            return Err(invalid("vehicle.dofs", n as f64, format!("must lie in 1 … {MAX_VEHICLE_DOFS}")));
+            return Err(invalid(
+                Setting::Vehicle("vehicle.dofs"),
+                n as f64,
+                format!("must lie in 1 … {MAX_VEHICLE_DOFS}"),
+            ));
         }
         for (field, matrix) in
             [("vehicle.mass", &self.mass), ("vehicle.damping", &self.damping), ("vehicle.stiffness", &self.stiffness)]
         {
             if matrix.len() != n * n {
-                return Err(invalid(field, matrix.len() as f64, format!("needs {n} × {n} = {} entries", n * n)));
+                return Err(invalid(
+                    Setting::Vehicle(field),
+                    matrix.len() as f64,
+                    format!("needs {n} × {n} = {} entries", n * n),
+                ));
             }
             for i in 0..n {
                 for j in 0..n {
                     let (a, b) = (matrix[i * n + j], matrix[j * n + i]);
                     if !a.is_finite() || (a - b).abs() > 1e-12 * a.abs().max(b.abs()) {
-                        return Err(invalid(field, a, format!("must be finite and symmetric (entry {i}, {j})")));
+                        return Err(invalid(
+                            Setting::Vehicle(field),
+                            a,
+                            format!("must be finite and symmetric (entry {i}, {j})"),
+                        ));
                     }
                 }
                 if matrix[i * n + i] < 0.0 {
-                    return Err(invalid(field, matrix[i * n + i], format!("diagonal entry {i} must be ≥ 0")));
+                    return Err(invalid(
+                        Setting::Vehicle(field),
+                        matrix[i * n + i],
+                        format!("diagonal entry {i} must be ≥ 0"),
+                    ));
                 }
             }
         }
         if let Some(w) = self.weight.iter().find(|w| !w.is_finite()) {
-            return Err(invalid("vehicle.weight", *w, "must be finite (N)"));
+            return Err(invalid(Setting::Vehicle("vehicle.weight"), *w, "must be finite (N)"));
         }
         if self.body >= n {
-            return Err(invalid("vehicle.body", self.body as f64, format!("must be a DOF index < {n}")));
+            return Err(invalid(
+                Setting::Vehicle("vehicle.body"),
+                self.body as f64,
+                format!("must be a DOF index < {n}"),
+            ));
         }
         if self.wheels.is_empty() {
-            return Err(TrackError::InvalidCount {
-                field: "vehicle.wheels",
-                value: 0,
-                allowed: "needs at least one wheel".into(),
-            });
+            return Err(invalid_count(Setting::Vehicle("vehicle.wheels"), 0, "needs at least one wheel"));
         }
         for w in &self.wheels {
             if w.dof >= n {
-                return Err(invalid("vehicle.wheels.dof", w.dof as f64, format!("must be a DOF index < {n}")));
+                return Err(invalid(
+                    Setting::Vehicle("vehicle.wheels.dof"),
+                    w.dof as f64,
+                    format!("must be a DOF index < {n}"),
+                ));
             }
             if !(w.offset.is_finite() && w.offset >= 0.0) {
-                return Err(invalid("vehicle.wheels.offset", w.offset, "must be finite and ≥ 0 (m)"));
+                return Err(invalid(Setting::Vehicle("vehicle.wheels.offset"), w.offset, "must be finite and ≥ 0 (m)"));
             }
         }
         // On a level rail every wheel must press with a share of the weight: a wheel the weight lifts would start
@@ -122,7 +142,7 @@ impl Vehicle {
         let (_, forces) = self.static_state(&vec![0.0; self.wheels.len()])?;
         if let Some((i, &q)) = forces.iter().enumerate().find(|(_, q)| q.is_nan() || **q <= 0.0) {
             return Err(invalid(
-                "vehicle.weight",
+                Setting::Vehicle("vehicle.weight"),
                 q,
                 format!(
                     "gives wheel {} a static load of {q:.6e} N on a level rail: every wheel must press on the rail \
@@ -183,10 +203,12 @@ impl Vehicle {
             .iter()
             .map(|&i| self.weight[i] - self.wheels.iter().map(|w| k[i * n + w.dof] * x[w.dof]).sum::<f64>())
             .collect();
-        let solution = solve_dense(&mut a, &mut b).ok_or_else(|| TrackError::InvalidChoice {
-            field: "vehicle.stiffness",
-            value: "singular",
-            allowed: "leaves a DOF without a spring to a wheel: no static state".into(),
+        let solution = solve_dense(&mut a, &mut b).ok_or_else(|| {
+            invalid_choice(
+                Setting::Vehicle("vehicle.stiffness"),
+                "singular",
+                "leaves a DOF without a spring to a wheel: no static state",
+            )
         })?;
         for (&i, s) in free.iter().zip(solution) {
             x[i] = s;

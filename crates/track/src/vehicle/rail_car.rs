@@ -17,7 +17,8 @@
 //! with the primaries (√(2k/M_c), k = k_s·2k_p/(k_s + 2k_p)).
 
 use super::{GRAVITY, Vehicle, Wheel};
-use crate::error::{Result, invalid};
+use crate::error::Result;
+use crate::error::{Setting, invalid};
 use fem_beam::Axle;
 
 /// A 2-D rail car's parameters, for one rail.
@@ -86,7 +87,7 @@ impl RailCar {
             ("vehicle.axle_half_distance", self.axle_half_distance, "m"),
         ] {
             if !(value.is_finite() && value > 0.0) {
-                return Err(invalid(field, value, format!("must be finite and > 0 ({unit})")));
+                return Err(invalid(Setting::Vehicle(field), value, format!("must be finite and > 0 ({unit})")));
             }
         }
         for (field, value, unit) in [
@@ -95,13 +96,13 @@ impl RailCar {
             ("vehicle.secondary_damping", self.secondary_damping, "N·s/m"),
         ] {
             if !(value.is_finite() && value >= 0.0) {
-                return Err(invalid(field, value, format!("must be finite and ≥ 0 ({unit})")));
+                return Err(invalid(Setting::Vehicle(field), value, format!("must be finite and ≥ 0 ({unit})")));
             }
         }
         let (lc, lb) = (self.bogie_half_distance, self.axle_half_distance);
         if !(lc.is_finite() && lc > lb) {
             let allowed = format!("must be finite and > axle_half_distance = {lb} m (the bogies must not overlap)");
-            return Err(invalid("vehicle.bogie_half_distance", lc, allowed));
+            return Err(invalid(Setting::Vehicle("vehicle.bogie_half_distance"), lc, allowed));
         }
         Ok(())
     }
@@ -126,7 +127,7 @@ impl RailCar {
                 4 * car,
                 4 * car + 3
             );
-            return Err(invalid("vehicle.train", rear, allowed));
+            return Err(invalid(Setting::Vehicle("vehicle.train"), rear, allowed));
         }
         let total: f64 = axles[..4].iter().map(|a| a.force).sum();
         let mean = total / 4.0;
@@ -137,7 +138,7 @@ impl RailCar {
                 4 * car,
                 4 * car + 3
             );
-            return Err(invalid("vehicle.train", a.force, allowed));
+            return Err(invalid(Setting::Vehicle("vehicle.train"), a.force, allowed));
         }
         let fitted = Self { bogie_half_distance: (a2 - a0) / 2.0, axle_half_distance: front / 2.0, ..*self };
         fitted.validate()?;

@@ -1,7 +1,8 @@
 //! The wheel–rail contact (docs/theory.md §9, §12): the law a wheel meets the rail with — [`WheelRail`], with its
 //! parameter — and the choice of law alone, [`WheelRailKind`] (what a scenario file's `contact` key names).
 
-use crate::error::{Result, invalid};
+use crate::error::Result;
+use crate::error::{Setting, invalid};
 
 /// The choice of wheel–rail law, without its parameter; named in scenario files and reports in kebab case.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -80,14 +81,14 @@ impl WheelRail {
             Self::Linear { stiffness } | Self::Glued { stiffness } => ("vehicle.contact_stiffness", stiffness),
             Self::Rigid { restitution } => {
                 if !(restitution.is_finite() && (0.0..=1.0).contains(&restitution)) {
-                    return Err(invalid("vehicle.restitution", restitution, "must lie in [0, 1]"));
+                    return Err(invalid(Setting::Vehicle("vehicle.restitution"), restitution, "must lie in [0, 1]"));
                 }
                 return Ok(());
             }
         };
         if !(value.is_finite() && value > 0.0) {
             let unit = if matches!(self, Self::Hertz { .. }) { "N/m^1.5" } else { "N/m" };
-            return Err(invalid(field, value, format!("must be finite and > 0 ({unit})")));
+            return Err(invalid(Setting::Vehicle(field), value, format!("must be finite and > 0 ({unit})")));
         }
         Ok(())
     }
