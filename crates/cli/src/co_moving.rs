@@ -27,9 +27,7 @@ pub fn run(
         Format::Text => print_text(&summary),
     }
     if let Some(folder) = out {
-        let mut metadata = serde_json::to_value(&summary)?;
-        metadata["csv"] = "wave.csv".into();
-        metadata["columns"] = serde_json::to_value(report::columns::listed(study::co_moving_output::WAVE_COLUMNS))?;
+        let metadata = summary.file("wave.csv");
         write_atomically(&folder.join("co-moving.json"), serde_json::to_string_pretty(&metadata)?.as_bytes())?;
         write_atomically(&folder.join("wave.csv"), study::co_moving_output::wave_csv(&result).as_bytes())?;
         let drawn = write_figures("--out", &study::co_moving_figures::figures(&summary, &result), folder)?;

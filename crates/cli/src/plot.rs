@@ -45,14 +45,11 @@ fn sweep_file(path: &Path) -> Result<Vec<String>> {
     let stem = path.file_stem().map_or("sweep".into(), |s| s.to_string_lossy().into_owned());
     // The scenario and the refined critical speed from the JSON `sweep --out` wrote beside the CSV, where there is one
     // (a merged shard's CSV has none: its figures name no case and mark no critical speed).
-    let metadata: Option<serde_json::Value> = std::fs::read_to_string(crate::files::metadata_beside(path))
+    let metadata = std::fs::read_to_string(crate::files::metadata_beside(path))
         .ok()
-        .and_then(|text| serde_json::from_str(&text).ok());
-    let scenario =
-        metadata.as_ref().and_then(|m| serde_json::from_value::<scenario::Scenario>(m["scenario"].clone()).ok());
-    let critical = metadata
-        .as_ref()
-        .and_then(|m| serde_json::from_value::<runner::CriticalSpeed>(m["critical_speed"]["result"].clone()).ok());
+        .and_then(|text| report::sweep_file::SweepFile::read(&text));
+    let scenario = metadata.as_ref().map(|m| m.scenario.clone());
+    let critical = metadata.and_then(|m| m.critical_speed).map(|c| c.result);
     let plots = report::sweep_figures::sweep_plots(&points, &stem, scenario.as_ref(), critical.as_ref());
     Ok(write_figures("--out", &plots, path.parent().unwrap_or(Path::new(".")))?)
 }

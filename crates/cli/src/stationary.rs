@@ -119,12 +119,7 @@ pub fn run(args: &StationaryArgs) -> Result<()> {
     }
     if let Some(folder) = &args.out {
         let name = if single.is_some() { "wave.csv" } else { "speeds.csv" };
-        let metadata = serde_json::json!({
-            "csv": name,
-            "columns": columns::listed(csv_columns.iter().copied()),
-            "points": study.points,
-            "frictrack_version": env!("CARGO_PKG_VERSION"),
-        });
+        let metadata = study.file(name, csv_columns);
         write_atomically(&folder.join("stationary.json"), serde_json::to_string_pretty(&metadata)?.as_bytes())?;
         write_atomically(&folder.join(name), csv.as_bytes())?;
         let title = if scenario.title.is_empty() { "stationary wave on the infinite track" } else { &scenario.title };

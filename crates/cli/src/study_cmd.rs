@@ -9,7 +9,6 @@ use clap::builder::{PossibleValue, PossibleValuesParser, TypedValueParser};
 use runner::Runner;
 use scenario::DeckTrack;
 use scenario::Scenario;
-use serde_json::json;
 use std::path::PathBuf;
 use std::time::Instant;
 use study::presets::{Preset, Resolution, StudyData, run_preset};
@@ -166,25 +165,7 @@ pub fn run_study(
     let wall_time = start.elapsed().as_secs_f64();
     bar.finish_and_clear();
     write_atomically(&out.join(format!("{}.csv", preset.name())), data.csv.as_bytes())?;
-    let metadata = json!({
-        "study": data.name,
-        "title": data.title,
-        "resolution": data.resolution,
-        "runs": data.runs,
-        "solver_statistics": { "mean_iterations_per_step": data.mean_iterations },
-        "wall_time": wall_time,
-        "frictrack_version": env!("CARGO_PKG_VERSION"),
-        "git_revision": git_revision(),
-        "summary": data.summary,
-        "lines": data.lines,
-        "plots": data.plots.iter().map(|p| p.stem.as_str()).collect::<Vec<_>>(),
-        "scenario": base,
-        "speeds": preset.speeds(resolution, base)?,
-        "study_sets": preset.sets(),
-        "scenario_parts_not_used": overrides,
-        "columns": report::columns::listed(data.columns.iter().map(|(name, unit)| (name.as_str(), *unit))),
-        "failures": data.failures,
-    });
+    let metadata = data.file((preset, resolution, base), wall_time, git_revision())?;
     write_atomically(
         &out.join(format!("{}.json", preset.name())),
         serde_json::to_string_pretty(&metadata)?.as_bytes(),

@@ -17,7 +17,6 @@ use clap::Args;
 use runner::shard::Shard;
 use runner::{FailedRun, critical_speed, failures, finished, write_csv_rows};
 use scenario::error::invalid;
-use serde_json::json;
 use std::path::PathBuf;
 
 /// Options of `frictrack sweep`.
@@ -174,22 +173,8 @@ fn write_files(
         let plots = report::sweep_figures::sweep_plots(points, &stem, Some(scenario), critical);
         crate::files::write_figures("--out", &plots, path.parent().unwrap_or(std::path::Path::new(".")))?;
     }
-    let columns: Vec<_> = runner::csv_columns(scenario.vehicle.is_some())
-        .map(|(name, unit, meaning)| report::columns::ColumnMeta {
-            name: name.to_string(),
-            unit: unit.to_string(),
-            meaning: Some(meaning.to_string()),
-        })
-        .collect::<Vec<_>>();
-    let metadata = json!({
-        "csv": path.file_name().map(|n| n.to_string_lossy().into_owned()),
-        "columns": columns,
-        "extremes_window": scenario.output.extremes_window(scenario.mesh.length),
-        "critical_speed": critical.map(|c| json!({ "description": c.describe(), "result": c })),
-        "failures": failed,
-        "frictrack_version": env!("CARGO_PKG_VERSION"),
-        "scenario": scenario,
-    });
+    let name = path.file_name().map(|n| n.to_string_lossy().into_owned());
+    let metadata = report::sweep_file::SweepFile::of(name, scenario, critical, failed);
     write_atomically(&metadata_beside(path), serde_json::to_string_pretty(&metadata)?.as_bytes())?;
     Ok(())
 }

@@ -6,7 +6,7 @@
 //! - [`run_output`], [`vehicle_output`], [`soil_output`]: a run's histories, snapshots, wheels and lift-off as CSV
 //!   and figures, written into its folder by [`run_folder`]; [`mesh_ripple`]: the element period in a wheel force.
 //! - [`files`]: result files checked before any work starts and written atomically, never over a link or device.
-//! - [`sweep_figures`]: the figures of a speed sweep, and its CSV read back; [`tables`]: reading CSV files back;
+//! - [`sweep_figures`]: the figures of a speed sweep, and its CSV read back; [`sweep_file`]: the JSON beside it; [`tables`]: reading CSV files back;
 //!   [`columns`]: one convention for the units of every column.
 //! - [`track_profile`]: a sample of a random rail profile with its periodogram against the target spectrum.
 //! - [`plot`] (with [`axis_grid`], [`typeset`] and the common figure shapes of [`figures`]): line plots as PNG and
@@ -24,6 +24,7 @@ pub mod run_output;
 pub mod run_summary;
 pub mod soil_output;
 pub mod sweep_figures;
+pub mod sweep_file;
 pub mod tables;
 pub mod track_profile;
 pub mod typeset;

@@ -194,6 +194,26 @@ pub fn run(scenario: &Scenario, section: &CoMovingSection) -> Result<(CoMovingSu
     Ok((summary, result))
 }
 
+/// The JSON a co-moving run writes beside its wave (`run --co-moving --out DIR` writes `DIR/co-moving.json`): the
+/// run's summary, the CSV's name and its columns with units.
+#[derive(Debug, Clone, Serialize)]
+pub struct CoMovingFile<'a> {
+    /// The run's summary.
+    #[serde(flatten)]
+    pub summary: &'a CoMovingSummary,
+    /// The wave's CSV.
+    pub csv: &'static str,
+    /// Name and unit of each column.
+    pub columns: Vec<report::columns::ColumnMeta>,
+}
+
+impl CoMovingSummary {
+    /// The JSON beside the wave's CSV `csv`.
+    pub fn file(&self, csv: &'static str) -> CoMovingFile<'_> {
+        CoMovingFile { summary: self, csv, columns: report::columns::listed(WAVE_COLUMNS) }
+    }
+}
+
 /// Columns of the window's last wave (`wave.csv`): s = x − vt (m) and the deflection (m, upward).
 pub const WAVE_COLUMNS: [report::columns::Column; 2] = [("s", "m"), ("deflection", "m")];
 

@@ -200,6 +200,32 @@ impl StationaryStudy {
     }
 }
 
+/// The JSON a stationary sweep writes beside its CSV (`stationary --out DIR` writes `DIR/stationary.json`): the CSV's
+/// name and columns with units, and the points.
+#[derive(Debug, Clone, Serialize)]
+pub struct StationaryFile<'a> {
+    /// "wave.csv" (one speed's shape) or "speeds.csv" (the points).
+    pub csv: &'static str,
+    /// Name and unit of each column.
+    pub columns: Vec<report::columns::ColumnMeta>,
+    /// The points, one per speed.
+    pub points: &'a [StationaryPoint],
+    /// The version that wrote it.
+    pub frictrack_version: &'static str,
+}
+
+impl StationaryStudy {
+    /// The JSON beside the CSV `csv` of `columns`.
+    pub fn file(&self, csv: &'static str, columns: &[report::columns::Column]) -> StationaryFile<'_> {
+        StationaryFile {
+            csv,
+            columns: report::columns::listed(columns.iter().copied()),
+            points: &self.points,
+            frictrack_version: env!("CARGO_PKG_VERSION"),
+        }
+    }
+}
+
 /// The peaks' discretisation errors of `wave` (of `problem`) from its solution on halved elements; None where that
 /// solve finds no wave.
 fn peak_errors(problem: &StationaryProblem, wave: &StationaryWave) -> Result<Option<PeakErrors>> {

@@ -24,8 +24,11 @@ mod optimal_force;
 mod stationary_wave;
 mod stationary_wave_curves;
 mod stationary_wave_figures;
+mod study_file;
 mod table;
 mod vehicle_speed;
+
+pub use study_file::{SolverStatisticsNote, StudyFile};
 
 use report::plot::PlotSpec;
 use runner::{Runner, SweepPoint, SweepRow};

@@ -1,0 +1,84 @@
+//! The JSON a study writes beside its CSV (`study NAME --out DIR` writes `DIR/NAME.json`).
+
+use super::{Preset, Resolution, StudyData, StudyFailure, StudySummary};
+use scenario::Scenario;
+use scenario::error::Result;
+use serde::Serialize;
+
+/// The JSON a study writes beside its CSV (`study NAME --out DIR` writes `DIR/NAME.json`): what ran, how long, its
+/// typed summary and lines, its figures, the scenario with the speeds and sets the study used and the parts of it
+/// the study does not use, its columns with units and its failed runs.
+#[derive(Debug, Clone, Serialize)]
+pub struct StudyFile<'a> {
+    /// The preset's name.
+    pub study: &'static str,
+    /// Its title.
+    pub title: &'static str,
+    /// "coarse" or "paper".
+    pub resolution: &'static str,
+    /// Simulations run.
+    pub runs: usize,
+    /// The solvers' work.
+    pub solver_statistics: SolverStatisticsNote,
+    /// Wall time of the study (s).
+    pub wall_time: f64,
+    /// The version that wrote it, and the git revision where known.
+    pub frictrack_version: &'static str,
+    /// `git rev-parse` of the working directory, if one.
+    pub git_revision: Option<String>,
+    /// The typed summary.
+    pub summary: &'a StudySummary,
+    /// The summary in lines.
+    pub lines: &'a [String],
+    /// The figures' file stems.
+    pub plots: Vec<&'a str>,
+    /// The scenario it ran on.
+    pub scenario: &'a Scenario,
+    /// The speeds it swept (m/s), where one list serves every curve.
+    pub speeds: Option<Vec<f64>>,
+    /// What the study sets itself.
+    pub study_sets: &'static [&'static str],
+    /// The parts of the scenario it does not use.
+    pub scenario_parts_not_used: Vec<String>,
+    /// Name and unit of each CSV column.
+    pub columns: Vec<report::columns::ColumnMeta>,
+    /// The runs that failed.
+    pub failures: &'a [StudyFailure],
+}
+
+/// The mean work of the step solver over a study.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct SolverStatisticsNote {
+    /// Mean friction-solver iterations per step over the study's sweep runs.
+    pub mean_iterations_per_step: f64,
+}
+
+impl StudyData {
+    /// The JSON beside this study's CSV: `data` of `preset` at `resolution` on `base`, run in `wall_time` s.
+    pub fn file<'a>(
+        &'a self,
+        (preset, resolution, base): (Preset, Resolution, &'a Scenario),
+        wall_time: f64,
+        git_revision: Option<String>,
+    ) -> Result<StudyFile<'a>> {
+        Ok(StudyFile {
+            study: self.name,
+            title: self.title,
+            resolution: self.resolution,
+            runs: self.runs,
+            solver_statistics: SolverStatisticsNote { mean_iterations_per_step: self.mean_iterations },
+            wall_time,
+            frictrack_version: env!("CARGO_PKG_VERSION"),
+            git_revision,
+            summary: &self.summary,
+            lines: &self.lines,
+            plots: self.plots.iter().map(|p| p.stem.as_str()).collect(),
+            scenario: base,
+            speeds: preset.speeds(resolution, base)?,
+            study_sets: preset.sets(),
+            scenario_parts_not_used: preset.overrides(base),
+            columns: report::columns::listed(self.columns.iter().map(|(name, unit)| (name.as_str(), *unit))),
+            failures: &self.failures,
+        })
+    }
+}
