@@ -24,9 +24,8 @@ pub fn run(args: &PlotArgs) -> Result<()> {
     Ok(())
 }
 
-/// The title a sweep or run gave itself in the JSON beside it, if any: `scenario.title`, else `report.title`.
-fn title_in(json: &Path) -> Option<String> {
-    let value: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(json).ok()?).ok()?;
+/// The title a run gave itself in its summary, if any: `scenario.title`, else `report.title`.
+fn title_in(value: &serde_json::Value) -> Option<String> {
     [&value["scenario"]["title"], &value["report"]["title"]]
         .into_iter()
         .find_map(|t| t.as_str().filter(|t| !t.is_empty()).map(str::to_string))
@@ -60,16 +59,14 @@ fn run_folder(folder: &Path) -> Result<Vec<String>> {
     let histories = read(&folder.join("histories.csv"))?;
     let snapshots = read(&folder.join("snapshots.csv"))?;
     let curves = report::run_output::RunCurves::from_csv(&histories, &snapshots)?;
-    let summary = read(&folder.join("summary.json"))?;
-    serde_json::from_str::<serde::de::IgnoredAny>(&summary)
+    let summary: serde_json::Value = serde_json::from_str(&read(&folder.join("summary.json"))?)
         .with_context(|| format!("reading {}", folder.join("summary.json").display()))?;
     // A folder written before the titles were kept: the scenario's title, positions of the load, no subtitle.
-    let figures =
-        report::run_folder::FigureTitles::read(&summary).unwrap_or_else(|| report::run_folder::FigureTitles {
-            positions_of: "load".into(),
-            subtitle: String::new(),
-            title: title_in(&folder.join("summary.json")).unwrap_or_default(),
-        });
+    let figures = report::run_folder::FigureTitles::of(&summary).unwrap_or_else(|| report::run_folder::FigureTitles {
+        positions_of: "load".into(),
+        subtitle: String::new(),
+        title: title_in(&summary).unwrap_or_default(),
+    });
     let mut plots = report::run_output::run_plots(&curves, &figures.title, &figures.positions_of);
     for spec in &mut plots {
         spec.subtitle.clone_from(&figures.subtitle);

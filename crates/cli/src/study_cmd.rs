@@ -165,7 +165,7 @@ pub fn run_study(
     let wall_time = start.elapsed().as_secs_f64();
     bar.finish_and_clear();
     write_atomically(&out.join(format!("{}.csv", preset.name())), data.csv.as_bytes())?;
-    let metadata = data.file((preset, resolution, base), wall_time, git_revision())?;
+    let metadata = data.file((preset, resolution, base), overrides, (wall_time, git_revision()))?;
     write_atomically(
         &out.join(format!("{}.json", preset.name())),
         serde_json::to_string_pretty(&metadata)?.as_bytes(),

@@ -49,13 +49,9 @@ pub struct FigureTitles {
 }
 
 impl FigureTitles {
-    /// The titles a run folder's `summary.json` (its text) holds; None for a folder written before they were kept.
-    pub fn read(summary_json: &str) -> Option<Self> {
-        #[derive(Deserialize)]
-        struct Folder {
-            figures: Option<FigureTitles>,
-        }
-        serde_json::from_str::<Folder>(summary_json).ok()?.figures
+    /// The titles a run folder's `summary.json` holds; None for a folder written before they were kept.
+    pub fn of(summary: &serde_json::Value) -> Option<Self> {
+        serde_json::from_value(summary.get("figures")?.clone()).ok()
     }
 }
 

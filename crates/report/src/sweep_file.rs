@@ -38,7 +38,7 @@ pub struct CriticalSpeedNote {
 
 impl SweepFile {
     /// The JSON beside `csv` (its file name) of a sweep of `scenario` with its refined `critical` speed and `failed`
-    /// runs; `vehicles` adds the vehicles' columns.
+    /// runs; a scenario with vehicles has the vehicles' columns too.
     pub fn of(
         csv: Option<String>,
         scenario: &Scenario,

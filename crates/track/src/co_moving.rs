@@ -203,11 +203,11 @@ impl Middle {
         let (max_downward, max_upward) = (Extreme::default(), Extreme::default());
         Self { all, middle, element_length: mesh.element_length(), per_element, max_downward, max_upward }
     }
+}
 
-    /// The middle's deflections in `q` (m).
-    fn snapshot(&self, q: &[f64]) -> Vec<f64> {
-        self.middle.iter().map(|(d, _)| q[*d]).collect()
-    }
+/// The deflections at `dofs` in `q` (m).
+fn deflections(dofs: &[usize], q: &[f64]) -> Vec<f64> {
+    dofs.iter().map(|&d| q[d]).collect()
 }
 
 impl Record for Middle {
@@ -249,6 +249,7 @@ impl Shifter {
         q0: &[f64],
     ) -> Self {
         let l = model.mesh().element_length();
+        let dofs: Vec<usize> = middle.middle.iter().map(|(d, _)| *d).collect();
         Self {
             blocks,
             per_element,
@@ -257,8 +258,8 @@ impl Shifter {
             chain: model.dofs().free_len(),
             shifts: 0,
             shifts_per_window: ((window.middle.1 - window.middle.0) / l).round().max(1.0) as usize,
-            previous: middle.snapshot(q0),
-            dofs: middle.middle.iter().map(|(d, _)| *d).collect(),
+            previous: deflections(&dofs, q0),
+            dofs,
             changes: Vec::new(),
         }
     }
@@ -276,7 +277,7 @@ impl Shifter {
         }
         self.shifts += 1;
         if self.shifts.is_multiple_of(self.shifts_per_window) {
-            let now: Vec<f64> = self.dofs.iter().map(|&d| stepper.q()[d]).collect();
+            let now = deflections(&self.dofs, stepper.q());
             let peak = now.iter().fold(0.0f64, |m, w| m.max(w.abs())).max(f64::MIN_POSITIVE);
             let change = now.iter().zip(&self.previous).fold(0.0f64, |m, (a, b)| m.max((a - b).abs())) / peak;
             self.changes.push((k as f64 * self.advance, change));

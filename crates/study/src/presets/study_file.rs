@@ -54,12 +54,14 @@ pub struct SolverStatisticsNote {
 }
 
 impl StudyData {
-    /// The JSON beside this study's CSV: `data` of `preset` at `resolution` on `base`, run in `wall_time` s.
+    /// The JSON beside this study's CSV: these results of `preset` at `resolution` on `base`, with the parts of
+    /// `base` it does not use (`Preset::overrides`, which the caller has already told the user), run in
+    /// `wall_time` s at `git_revision`.
     pub fn file<'a>(
         &'a self,
         (preset, resolution, base): (Preset, Resolution, &'a Scenario),
-        wall_time: f64,
-        git_revision: Option<String>,
+        scenario_parts_not_used: Vec<String>,
+        (wall_time, git_revision): (f64, Option<String>),
     ) -> Result<StudyFile<'a>> {
         Ok(StudyFile {
             study: self.name,
@@ -76,7 +78,7 @@ impl StudyData {
             scenario: base,
             speeds: preset.speeds(resolution, base)?,
             study_sets: preset.sets(),
-            scenario_parts_not_used: preset.overrides(base),
+            scenario_parts_not_used,
             columns: report::columns::listed(self.columns.iter().map(|(name, unit)| (name.as_str(), *unit))),
             failures: &self.failures,
         })
