@@ -14,12 +14,14 @@
 //! point does not move. κ = [`JENKINS_RATIO`]·k_c moves a stuck point by at most f_u/κ, 1e-6 of the largest
 //! deflection friction can hold, f_u/k_c.
 //!
-//! The sections are the trapezoid sections of a time-domain run (J per element, shared nodes, weights l/J and l/2J
-//! at the domain's ends), so the two methods discretise the same ballast.
+//! The sections are placed and weighed by the rule a time-domain run uses (`fem_beam::distributed::section_places`,
+//! trapezoid: J per element, shared nodes, weights l/J and l/2J at the domain's ends), so the two methods discretise
+//! the same ballast.
 
 use crate::rows::{add_spring, row_add, row_dot};
 use banded::general::GeneralBanded;
 use fem_beam::DistributedFriction;
+use fem_beam::distributed::section_places;
 use fem_beam::element::hermite;
 
 /// κ/k_c: the Jenkins stiffness over the soil's (see the module doc).
@@ -111,22 +113,15 @@ impl FrictionSections {
         stiffness: f64,
         rest: f64,
     ) -> Self {
-        let j = friction.subdivisions;
-        let count = j * elements + 1;
-        let sections = (0..count)
-            .map(|i| {
-                let (element, xi) = match i == count - 1 {
-                    true => (elements - 1, 1.0),
-                    false => (i / j, (i % j) as f64 / j as f64),
-                };
-                let ends = i == 0 || i == count - 1;
-                FrictionSection {
-                    element,
-                    row: hermite::shape(xi, l),
-                    weight: if ends { 0.5 * l / j as f64 } else { l / j as f64 },
-                    s: (i as f64 / j as f64 - behind as f64) * l,
-                    xi,
-                }
+        let places = section_places(elements, l, friction.subdivisions, friction.quadrature);
+        let sections = places
+            .into_iter()
+            .map(|p| FrictionSection {
+                element: p.element,
+                row: hermite::shape(p.xi, l),
+                weight: p.weight,
+                s: p.x - behind as f64 * l,
+                xi: p.xi,
             })
             .collect();
         Self { sections, capacity: friction.force_per_length, stiffness, rest }
