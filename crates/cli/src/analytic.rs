@@ -8,6 +8,7 @@ use scenario::SweepSection;
 use scenario::{Scenario, StudyError};
 use std::path::PathBuf;
 use study::steady_response::SteadyResponse;
+use study::steady_text::SteadyReport;
 
 /// Options of `frictrack analytic`.
 #[derive(Debug, Args)]
@@ -98,52 +99,5 @@ pub fn run(args: &AnalyticArgs) -> Result<()> {
     for warning in response.warnings() {
         eprintln!("warning: {warning}");
     }
-    let (points, train, inf, foundation) = (&response.points, &response.train, &response.beam, &response.foundation);
-    let w0 = response.static_deflection;
-    match (args.format, points.len()) {
-        (Format::Json, 1) => println!("{}", serde_json::to_string_pretty(&points[0])?),
-        (Format::Json, _) => println!("{}", serde_json::to_string_pretty(&points)?),
-        (Format::Text, _) => {
-            println!(
-                "infinite beam{}, EI = {:.4} MN·m², ρA = {:.3} kg/m, k_f = {:.1} kN/m², {}, ζ = {:.4}, \
-                 v_cr = {:.2} m/s, static w₀ = {:.2} mm",
-                if scenario.title.is_empty() { String::new() } else { format!(" ({})", scenario.title) },
-                scenario.beam.bending_stiffness() / 1e6,
-                scenario.beam.mass_per_length(),
-                foundation.stiffness / 1e3,
-                match &train {
-                    Some(t) => format!(
-                        "train {} ({} axles, {:.3} m, {:.1} kN on the beam: {})",
-                        t.name,
-                        t.axles.len(),
-                        t.length(),
-                        t.total_force() / 1e3,
-                        scenario.axle_share().describe()
-                    ),
-                    None => format!("F = {:.1} kN", response.load / 1e3),
-                },
-                foundation.damping / inf.critical_damping(),
-                inf.critical_speed(),
-                w0 * 1e3
-            );
-            println!("  speed (m/s)  max down (mm)  at s (m)  max up (mm)  at s (m)   DAF down  DAF up");
-            for p in points {
-                println!(
-                    "  {:>10.2}  {:>13.3}  {:>8.2}  {:>11.3}  {:>8.2}  {:>8.3}  {:>6.3}",
-                    p.speed,
-                    p.max_downward_deflection.value * 1e3,
-                    p.max_downward_deflection.position.unwrap_or(f64::NAN),
-                    p.max_upward_deflection.value * 1e3,
-                    p.max_upward_deflection.position.unwrap_or(f64::NAN),
-                    p.amplification_downward,
-                    p.amplification_upward
-                );
-            }
-            match &train {
-                Some(_) => println!("  (s = x − x_head: positive ahead of the first axle, axle i at s = −d_i)"),
-                None => println!("  (s = x − vt: positive ahead of the load)"),
-            }
-        }
-    }
-    Ok(())
+    crate::print_output(&SteadyReport { scenario: &scenario, response: &response }, args.format)
 }

@@ -13,14 +13,12 @@ mod progress;
 mod reference;
 mod reproduce;
 mod run;
-mod run_text;
 mod scenario_args;
 mod stationary;
 mod study_cmd;
 mod sweep;
 mod track_profile;
 mod trains;
-mod window_wording;
 
 use clap::{Parser, Subcommand, ValueEnum};
 use std::process::ExitCode;
@@ -75,6 +73,24 @@ pub enum Format {
     Text,
     /// One JSON object on stdout.
     Json,
+}
+
+impl From<Format> for report::output::Format {
+    fn from(format: Format) -> Self {
+        match format {
+            Format::Text => Self::Text,
+            Format::Json => Self::Json,
+        }
+    }
+}
+
+/// Print `output` in `format` (the library renders it: the CLI and Python give the same text and JSON).
+pub fn print_output(
+    output: &dyn report::output::Output,
+    format: impl Into<report::output::Format>,
+) -> anyhow::Result<()> {
+    print!("{}", report::output::render(output, format.into())?);
+    Ok(())
 }
 
 /// Exit code when standard output is closed early (`frictrack … | head`): 128 + SIGPIPE, as a Unix tool killed by

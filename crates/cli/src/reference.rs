@@ -5,10 +5,10 @@ use crate::Format;
 use anyhow::Result;
 use clap::Args;
 use scenario::{Scenario, StudyError};
-use serde::Serialize;
 use std::path::PathBuf;
 use std::time::Instant;
 use study::reference_check::ReferenceCheck;
+use study::reference_text::ReferenceReport;
 
 /// Options of `frictrack reference`.
 #[derive(Debug, Args)]
@@ -25,14 +25,6 @@ pub struct ReferenceArgs {
     /// Output format.
     #[arg(long, value_enum, default_value_t = Format::Text)]
     format: Format,
-}
-
-/// The JSON of `frictrack reference`: the check and the wall time (s).
-#[derive(Debug, Serialize)]
-struct ReferenceReport {
-    #[serde(flatten)]
-    check: ReferenceCheck,
-    wall_time: f64,
 }
 
 /// Execute `frictrack reference`.
@@ -53,40 +45,5 @@ pub fn run(args: &ReferenceArgs) -> Result<()> {
         other => other,
     })?;
     let report = ReferenceReport { check, wall_time: start.elapsed().as_secs_f64() };
-    match args.format {
-        Format::Json => println!("{}", serde_json::to_string_pretty(&report)?),
-        Format::Text => print_text(&report),
-    }
-    Ok(())
-}
-
-fn print_text(report: &ReferenceReport) {
-    let r = &report.check;
-    println!(
-        "frictrack — {}: {} m beam ({} ends), {} elements ({} DOFs)",
-        r.title, r.length, r.supports, r.elements, r.dofs
-    );
-    println!(
-        "static load {:.1} kN at mid-span                  FE            closed form (infinite beam)",
-        r.load / 1e3
-    );
-    println!(
-        "  deflection under the load           {:>10.3} mm   {:>10.3} mm",
-        r.midspan_deflection * 1e3,
-        r.midspan_deflection_closed_form * 1e3
-    );
-    println!(
-        "  bending moment under the load       {:>10.3} kN·m {:>10.3} kN·m",
-        r.midspan_moment / 1e3,
-        r.midspan_moment_closed_form / 1e3
-    );
-    println!("critical speed v_cr = {:.2} m/s ({:.0} km/h)", r.critical_speed, r.critical_speed * 3.6);
-    println!("natural circular frequencies (pinned beam)     FE            closed form");
-    for m in &r.modes {
-        println!(
-            "  ω{:<3}                               {:>10.4} rad/s {:>10.4} rad/s",
-            m.n, m.omega, m.omega_closed_form
-        );
-    }
-    println!("wall time {:.3} s", report.wall_time);
+    crate::print_output(&report, args.format)
 }

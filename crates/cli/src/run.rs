@@ -6,9 +6,7 @@
 //! ([`report::vehicle_output`]).
 
 use crate::Format;
-use crate::run_text::print_text;
 use crate::scenario_args::ScenarioArgs;
-use crate::window_wording::WindowWording;
 use anyhow::Result;
 use clap::Args;
 use report::run_summary::RunSummary;
@@ -86,9 +84,10 @@ pub fn run(args: &RunArgs) -> Result<()> {
     for warning in report::result_warnings::result_warnings(&case, &report) {
         eprintln!("warning: {warning}");
     }
-    match args.format {
-        Format::Json => println!("{}", serde_json::to_string_pretty(&report)?),
-        Format::Text => print_text(&report, &WindowWording::of(&scenario, &case)),
+    crate::print_output(&report, args.format)?;
+    if let Some(fallback) = report.mostly_solved_by() {
+        let solver = &report.stepping.solver;
+        eprintln!("warning: --solver {solver} could not solve most steps of this run; --solver {fallback} solved them");
     }
     if let Some(out) = &args.out {
         report::run_folder::write(out, (&scenario, &case), &report, &result, &snapshots)?;

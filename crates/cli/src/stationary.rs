@@ -4,11 +4,11 @@
 use crate::files::{check_output_file, prepare_output_folder, write_atomically, write_figures};
 use anyhow::Result;
 use clap::{Args, ValueEnum};
-use report::columns;
 use scenario::Scenario;
 use stationary::Domain;
 use std::path::PathBuf;
-use study::stationary_output::{ErrorEstimate, POINT_COLUMNS, StationaryStudy, WAVE_COLUMNS, points_csv, wave_csv};
+use study::stationary_output::{ErrorEstimate, StationaryStudy};
+use study::stationary_text::StationaryReport;
 
 /// What `frictrack stationary` prints.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum, Default)]
@@ -20,6 +20,16 @@ pub enum StationaryFormat {
     Json,
     /// One speed: the wave's shape; several: the points, as CSV.
     Csv,
+}
+
+impl From<StationaryFormat> for report::output::Format {
+    fn from(format: StationaryFormat) -> Self {
+        match format {
+            StationaryFormat::Text => Self::Text,
+            StationaryFormat::Json => Self::Json,
+            StationaryFormat::Csv => Self::Csv,
+        }
+    }
 }
 
 /// Options of `frictrack stationary`.
@@ -100,94 +110,10 @@ pub fn run(args: &StationaryArgs) -> Result<()> {
     for warning in study.warnings() {
         eprintln!("warning: {warning}");
     }
-    let single = match study.waves.as_slice() {
-        [Some(wave)] => Some(wave),
-        _ => None,
-    };
-    let (csv, csv_columns) = match single {
-        Some(wave) => (wave_csv(wave), &WAVE_COLUMNS[..]),
-        None => (points_csv(&study.points), &POINT_COLUMNS[..]),
-    };
-    match args.format {
-        StationaryFormat::Json if speeds.len() == 1 => println!("{}", serde_json::to_string_pretty(&study.points[0])?),
-        StationaryFormat::Json => println!("{}", serde_json::to_string_pretty(&study.points)?),
-        StationaryFormat::Csv => {
-            print!("{csv}");
-            println!("# {}", columns::units_line(csv_columns.iter().copied()));
-        }
-        StationaryFormat::Text => print_text(&scenario, &study),
-    }
-    if let Some(folder) = &args.out {
-        let name = if single.is_some() { "wave.csv" } else { "speeds.csv" };
-        let metadata = study.file(name, csv_columns);
-        write_atomically(&folder.join("stationary.json"), serde_json::to_string_pretty(&metadata)?.as_bytes())?;
-        write_atomically(&folder.join(name), csv.as_bytes())?;
-        let title = if scenario.title.is_empty() { "stationary wave on the infinite track" } else { &scenario.title };
-        let drawn = write_figures("--out", &study.figures(title), folder)?;
-        eprintln!("wrote {} (stationary.json, {name}, {})", folder.display(), drawn.join(", "));
-    }
-    Ok(())
-}
-
-fn print_text(scenario: &Scenario, study: &StationaryStudy) {
-    let weight = match study.settlement > 0.0 {
-        true => format!(", settled {:.3} mm by the rail's weight", study.settlement * 1e3),
-        false => String::new(),
-    };
-    let friction = match study.friction > 0.0 {
-        true => format!(", ballast friction {:.2} kN/m", study.friction / 1e3),
-        false => String::new(),
-    };
-    println!(
-        "stationary wave on the infinite track{}: F = {:.1} kN, {} soil{weight}{friction}",
-        if scenario.title.is_empty() { String::new() } else { format!(" ({})", scenario.title) },
-        study.load / 1e3,
-        study.law
-    );
-    println!(
-        "  speed (m/s)  max down (mm)  at s (m)  max up (mm)  at s (m)  max M (kN·m)  behind (mm)  lift-off zones  \
-         slip zones  status"
-    );
-    // To the micrometre, without a "-0.000" for a rail left 1e-12 m below where it was.
-    let mm =
-        |x: Option<f64>| x.map_or("—".to_string(), |x| format!("{:.3}", if x.abs() < 5e-7 { 0.0 } else { x * 1e3 }));
-    // Positions to 0.01 m, without a "-0.00" for a trough a millimetre behind the load.
-    let at = |x: Option<f64>| x.map_or("—".to_string(), |x| format!("{:.2}", if x.abs() < 0.005 { 0.0 } else { x }));
-    for p in &study.points {
-        let status = match p.status {
-            "converged" => String::new(),
-            "not converged" => format!("not converged (residual {:.1e})", p.residual),
-            other => other.to_string(),
-        };
-        println!(
-            "  {:>10.2}  {:>13}  {:>8}  {:>11}  {:>8}  {:>12}  {:>11}  {:>14}  {:>10}  {status}",
-            p.speed,
-            mm(p.max_downward_deflection.map(|e| e.value)),
-            at(p.max_downward_deflection.and_then(|e| e.position)),
-            mm(p.max_upward_deflection.map(|e| e.value)),
-            at(p.max_upward_deflection.and_then(|e| e.position)),
-            p.max_moment.map_or("—".to_string(), |m| format!("{:.2}", m.value / 1e3)),
-            mm(p.deflection_behind),
-            p.lift_off_zones.len(),
-            p.slip_zones.len(),
-        );
-    }
-    println!(
-        "  (s = x − vt: positive ahead of the load; deflections from the settled rail, signed behind: what is left \
-         there)"
-    );
-    if let Some(note) = study::stationary_output::branch_note(study.law) {
-        println!("  {note}");
-    }
-    if let Some((point, error)) = study.largest_error() {
-        let speed = point.speed;
-        println!(
-            "  discretisation error of the peaks (deflection, moment), estimated from one halving of the elements: \
-             at most {:.2} % (at {speed} m/s)",
-            100.0 * error
-        );
-    }
-    if study.points.iter().any(|p| p.status != "converged") {
+    let report = StationaryReport { title: &scenario.title, study: &study };
+    let table = report.table();
+    crate::print_output(&report, args.format)?;
+    if args.format == StationaryFormat::Text && study.points.iter().any(|p| p.status != "converged") {
         println!(
             "  where no wave was found (—), run the load across a long finite track in time (`frictrack run` with \
              absorbing zones): the stationary wave may not exist there (a tensionless soil lets the rail be thrown \
@@ -195,4 +121,13 @@ fn print_text(scenario: &Scenario, study: &StationaryStudy) {
              co-moving window (`frictrack run --co-moving`) gives the wave by time stepping"
         );
     }
+    if let Some(folder) = &args.out {
+        let metadata = study.file(table.name, table.columns);
+        write_atomically(&folder.join("stationary.json"), serde_json::to_string_pretty(&metadata)?.as_bytes())?;
+        write_atomically(&folder.join(table.name), table.csv.as_bytes())?;
+        let title = if scenario.title.is_empty() { "stationary wave on the infinite track" } else { &scenario.title };
+        let drawn = write_figures("--out", &study.figures(title), folder)?;
+        eprintln!("wrote {} (stationary.json, {}, {})", folder.display(), table.name, drawn.join(", "));
+    }
+    Ok(())
 }

@@ -70,25 +70,9 @@ pub fn run(args: &TrackProfileArgs) -> Result<()> {
     for spec in sample.figures(stem) {
         report::plot::render(&spec, &args.out)?;
     }
-    match args.format {
-        Format::Json => println!("{}", serde_json::to_string(&summary)?),
-        Format::Text => {
-            let (short, long) = settings.band;
-            println!(
-                "frictrack track-profile: {} spectrum, wavelengths {short}–{long} m, {} m every {} m, seed {}",
-                spectrum.name(),
-                args.length,
-                args.spacing,
-                args.seed
-            );
-            println!(
-                "  {} harmonics; σ = {:.4} mm (target √∫S dΩ = {:.4} mm)",
-                sample.profile.harmonics.len(),
-                1e3 * sample.sample_variance.sqrt(),
-                1e3 * sample.target_std()
-            );
-            println!("  wrote {}/{stem}.csv, {stem}-psd.csv, {stem}.json and figures", args.out.display());
-        }
+    crate::print_output(&summary, args.format)?;
+    if args.format == Format::Text {
+        println!("  wrote {}/{stem}.csv, {stem}-psd.csv, {stem}.json and figures", args.out.display());
     }
     Ok(())
 }

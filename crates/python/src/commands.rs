@@ -1,16 +1,18 @@
 //! The command line's other commands for Python, each returning what the command prints or writes: `analytic`
-//! (the closed-form steady state, JSON points), `stationary` (the stationary wave's points as JSON, and each wave's
-//! CSV), `study` (a preset's summary, CSV, headline and lines), `train` (a train's axles) and `track_profile` (a
+//! (the closed-form steady state, JSON points), `stationary` (the stationary wave's points as JSON, its text report
+//! and each wave's CSV), `study` (a preset's summary, CSV, headline and lines), `train` (a train's axles) and `track_profile` (a
 //! random rail's sample and periodogram as CSV, its summary as JSON).
 
 use crate::errors::to_python;
 use crate::interruptible;
 use crate::scenario_input::{Source, overrides};
 use pyo3::prelude::*;
+use report::output::Output;
 use runner::Runner;
 use scenario::error::StudyError;
 use study::presets::{Preset, Resolution, run_preset};
 use study::stationary_output::{ErrorEstimate, StationaryStudy, wave_csv};
+use study::stationary_text::StationaryReport;
 use study::steady_response::SteadyResponse;
 
 fn json<T: serde::Serialize>(value: &T) -> PyResult<String> {
@@ -54,6 +56,7 @@ pub(crate) fn stationary_wave(
 ) -> PyResult<StationaryTexts> {
     scenario::speeds::check_count("speeds", speeds.len()).map_err(to_python)?;
     let scenario = overrides(&keywords)?.apply(Source::of(kind, text)?.read()?);
+    let title = scenario.title.clone();
     // What Python leaves out is the library's default domain, not a copy of it.
     let default = stationary::Domain::default();
     let domain = stationary::Domain {
@@ -70,11 +73,13 @@ pub(crate) fn stationary_wave(
     };
     let study = interruptible::run_reporting(py, progress, solve)?.map_err(to_python)?;
     let waves = study.waves.iter().flatten().map(|w| (w.speed, wave_csv(w))).collect();
-    Ok((json(&study.points)?, waves, study.warnings()))
+    let text = StationaryReport { title: &title, study: &study }.text();
+    Ok((json(&study.points)?, text, waves, study.warnings()))
 }
 
-/// The stationary points (JSON), each found wave's CSV by speed, and the warnings.
-type StationaryTexts = (String, Vec<(f64, String)>, Vec<String>);
+/// The stationary points (JSON, a list even for one speed), the text report, each found wave's CSV by speed, and
+/// the warnings.
+type StationaryTexts = (String, String, Vec<(f64, String)>, Vec<String>);
 
 /// A study's summary (JSON), CSV, headline, lines and CSV columns with their units.
 type StudyTexts = (String, String, Vec<String>, Vec<String>, Vec<(String, String)>);

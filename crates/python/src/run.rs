@@ -1,18 +1,20 @@
 //! `frictrack.run`: one recorded run, as `frictrack run SCENARIO --format json --out DIR` makes it — the scenario
 //! with its overrides, mid-span recorded when it names no section, the snapshots it asks for — returning the
-//! summary's JSON and the CSV text of its tables.
+//! summary's JSON, its text report and the CSV text of its tables.
 
 use crate::errors::to_python;
 use crate::interruptible;
 use crate::scenario_input::{Source, overrides};
 use pyo3::prelude::*;
+use report::output::Output;
 use report::run_output::{histories_csv, recording, run_with_snapshots, snapshot_requests, snapshots_csv};
 use report::run_summary::RunSummary;
 use scenario::overrides::{OVERRIDES, OverrideKind};
 
-/// What a run returns to Python: the summary (JSON text, as `frictrack run --format json`), `histories.csv`,
-/// `snapshots.csv`, `wheels.csv` (None without vehicles) and the warnings the command line prints.
-type RunTexts = (String, String, String, Option<String>, Vec<String>);
+/// What a run returns to Python: the summary (JSON text, as `frictrack run --format json`), its text report (as
+/// `frictrack run` prints it), `histories.csv`, `snapshots.csv`, `wheels.csv` (None without vehicles) and the
+/// warnings the command line prints.
+type RunTexts = (String, String, String, String, Option<String>, Vec<String>);
 
 /// Run the scenario (`kind` "reference", "path", "toml" or "json" with its `text`) with the keyword `overrides`,
 /// telling `progress` (a callable of the fraction done), if given; with `out`, the run folder is written there as
@@ -44,17 +46,20 @@ pub(crate) fn run(
         let summary = RunSummary::of(&scenario, &case, &result, started.elapsed().as_secs_f64())?;
         let after: Vec<String> =
             report::result_warnings::result_warnings(&case, &summary).iter().map(ToString::to_string).collect();
-        let json = serde_json::to_string_pretty(&summary)
+        let json = summary
+            .json()
             .map_err(|e| scenario::error::StudyError::Io { path: "summary".into(), message: e.to_string() })?;
+        let text = summary.text();
         if let Some(folder) = &out {
             report::run_folder::write(folder, (&scenario, &case), &summary, &result, &snapshots)?;
         }
         let wheels = result.vehicles.as_ref().map(report::vehicle_output::wheels_csv);
-        Ok::<_, scenario::error::StudyError>((json, histories_csv(&result), snapshots_csv(&snapshots), wheels, after))
+        let tables = (histories_csv(&result), snapshots_csv(&snapshots), wheels);
+        Ok::<_, scenario::error::StudyError>((json, text, tables, after))
     })?;
-    let (json, histories, snapshots, wheels, after) = outcome.map_err(to_python)?;
+    let (json, text, (histories, snapshots, wheels), after) = outcome.map_err(to_python)?;
     warnings.extend(after);
-    Ok((json, histories, snapshots, wheels, warnings))
+    Ok((json, text, histories, snapshots, wheels, warnings))
 }
 
 /// The names `run` takes as keyword overrides (the command line's flags, with underscores).

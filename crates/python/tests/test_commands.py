@@ -32,6 +32,10 @@ def test_analytic_and_stationary_are_the_command_lines(tmp_path):
         "stationary", str(case), "--speed", "100", "--domain", "80:70", "--element-length", "0.5"
     )]
     assert sorted(wave.waves) == [100.0, 200.0]
+    # Its text report is the command line's table, by the same library code.
+    table_text = subprocess.run([cli(), "stationary", str(case), "--speeds", "100:200:100"], capture_output=True,
+                                text=True).stdout
+    assert str(wave) == table_text and "speed (m/s)" in str(wave)
     table = wave.waves[100.0]
     assert np.max(np.abs(table["friction_force"])) <= 2000.0 * (1 + 1e-12)
     # The units convention of every table: plain names, units beside them.

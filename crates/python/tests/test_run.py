@@ -71,6 +71,13 @@ def test_a_run_is_the_command_lines_to_the_bit(args, kwargs):
         assert run.losses.units["impact_force"] == "N"
     else:
         assert run.wheels is None and run.losses is None
+    # The text report is the command line's, by the same library code (but the wall time's line).
+    text = subprocess.run([cli(), "run", *args], capture_output=True, text=True).stdout
+    assert without_wall_time_line(str(run)) == without_wall_time_line(text)
+
+
+def without_wall_time_line(text):
+    return [line for line in text.splitlines() if "wall time" not in line]
 
 
 def test_the_run_folder_is_the_command_lines(tmp_path):

@@ -1,5 +1,7 @@
 //! # report: what a run or a sweep reports, as typed values, files and figures (docs/theory.md §7–§12)
 //!
+//! - [`output`]: one way every result reaches a reader — its text report, JSON and CSV ([`output::Output`]);
+//!   [`run_text`] is a run's text report, [`window_wording`] how it names the extremes window.
 //! - [`run_summary`]: one run's typed summary — what ran, extremes, static envelope and amplification, energy
 //!   ledger, solver statistics, vehicles, soil — the names of `run --format json`; [`result_warnings`]: a result
 //!   outside the model's validity.
@@ -17,15 +19,19 @@ pub mod columns;
 pub mod figures;
 pub mod files;
 pub mod mesh_ripple;
+pub mod output;
 pub mod plot;
 pub mod result_warnings;
 pub mod run_folder;
 pub mod run_output;
 pub mod run_summary;
+pub mod run_text;
 pub mod soil_output;
 pub mod sweep_figures;
 pub mod sweep_file;
 pub mod tables;
 pub mod track_profile;
+pub mod train_listing;
 pub mod typeset;
 pub mod vehicle_output;
+pub mod window_wording;

@@ -65,6 +65,9 @@ pub struct RunSummary {
     /// A tensionless or bilinear soil: its work, energy and where the rail lifted off it.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub soil: Option<crate::soil_output::SoilSummary>,
+    /// How the text report names the extremes window (words only: not in the JSON).
+    #[serde(skip)]
+    pub window: crate::window_wording::WindowWording,
 }
 
 /// The extremes of one run: over the whole run and every recorded node, over the window of load positions, the
@@ -151,6 +154,13 @@ pub struct FallbackSummary {
 
 /// The run in words, for the text report and the figures' subtitles.
 impl RunSummary {
+    /// The fallback solver that solved most of the run's steps, when the run's own solver failed on more than half.
+    pub fn mostly_solved_by(&self) -> Option<&'static str> {
+        let s = &self.stepping;
+        let most = s.fallbacks.iter().max_by_key(|f| f.steps)?;
+        (2 * s.fallback_steps > s.steps).then_some(most.solver)
+    }
+
     /// What ran, in words: the load, train or vehicles.
     pub fn load_description(&self) -> String {
         match (&self.vehicles, &self.train) {
@@ -238,6 +248,7 @@ impl RunSummary {
                 crate::vehicle_output::VehicleReport::of(v, contact, Some((mesh.element_length(), read)))
             }),
             soil: crate::soil_output::SoilSummary::of(&case.model, scenario.foundation.self_weight, result, read),
+            window: crate::window_wording::WindowWording::of(scenario, case),
         })
     }
 }

@@ -214,3 +214,26 @@ impl ProfileSample {
         vec![profile, psd]
     }
 }
+
+impl crate::output::Output for ProfileSummary {
+    fn write_text(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let [short, long] = self.band_wavelengths;
+        writeln!(
+            f,
+            "frictrack track-profile: {} spectrum, wavelengths {short}–{long} m, {} m every {} m, seed {}",
+            self.spectrum, self.length, self.spacing, self.seed
+        )?;
+        writeln!(
+            f,
+            "  {} harmonics; σ = {:.4} mm (target √∫S dΩ = {:.4} mm)",
+            self.harmonics,
+            1e3 * self.sample_std,
+            1e3 * self.target_std
+        )
+    }
+
+    /// One line: the summary is short.
+    fn json(&self) -> serde_json::Result<String> {
+        serde_json::to_string(self)
+    }
+}

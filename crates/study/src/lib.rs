@@ -9,13 +9,19 @@
 //!   window that moves with the load (figures in [`co_moving_figures`]).
 //! - [`reference_check`]: the FE model against closed forms; [`steady_response`]: the infinite beam's steady state
 //!   over speeds; [`metrics`]: dynamic amplification at a section.
+//! - Their reports ([`report::output::Output`]: text, JSON, CSV): [`stationary_text`], [`co_moving_text`],
+//!   [`reference_text`], [`steady_text`].
 
 pub mod co_moving_figures;
 pub mod co_moving_output;
+pub mod co_moving_text;
 pub mod metrics;
 pub mod presets;
 pub mod reference_check;
+pub mod reference_text;
 pub mod stationary_csv;
 pub mod stationary_figures;
 pub mod stationary_output;
+pub mod stationary_text;
 pub mod steady_response;
+pub mod steady_text;

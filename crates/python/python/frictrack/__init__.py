@@ -114,11 +114,13 @@ class Run:
     ``wheels``: each wheel over time (``wheels.csv``), or ``None`` without vehicles.
     ``losses``: each loss of wheel–rail contact (from ``summary["vehicles"]["losses"]``), or ``None``.
     ``warnings``: what the command line would print as warnings.
+    ``report``: the text report ``frictrack run`` prints (also ``str(run)``).
     """
 
     def __init__(self, summary: Dict[str, Any], histories: Table, snapshots: Table,
-                 wheels: Optional[Table], warnings: "list[str]") -> None:
+                 wheels: Optional[Table], warnings: "list[str]", report: str = "") -> None:
         self.summary = summary
+        self.report = report
         self.histories = histories
         self.snapshots = snapshots
         self.wheels = wheels
@@ -134,6 +136,9 @@ class Run:
             {"wheel": "1", "lift_off_position": "m", "lift_off_time": "s", "landing_position": "m",
              "duration": "s", "impact_force": "N"},
         )
+
+    def __str__(self) -> str:
+        return self.report
 
     def __repr__(self) -> str:
         down = (self.summary.get("max_downward_deflection") or {}).get("value")
@@ -160,7 +165,7 @@ def run(
     """
     kind, text = _source(scenario)
     with _Reporter(progress, "run") as report:
-        summary, histories, snapshots, wheels, warnings = _native.run(
+        summary, lines, histories, snapshots, wheels, warnings = _native.run(
             kind, text, list(overrides.items()), report, None if out is None else os.fspath(out)
         )
     return Run(
@@ -169,6 +174,7 @@ def run(
         parse_csv(snapshots, COLUMNS["snapshots"]),
         None if wheels is None else parse_csv(wheels, COLUMNS["wheels"]),
         list(warnings),
+        lines,
     )
 
 
@@ -217,12 +223,17 @@ class Stationary:
     N·m, powers W; ``discretisation_error`` of the peaks from one halving of the elements), ``waves`` each found
     wave's shape by speed (m/s) as a :class:`Table` (s, deflection, slope, moment, soil_reaction, friction_force, with
     their units), ``warnings`` what the command line warns
-    (peaks resolved to worse than 1 %)."""
+    (peaks resolved to worse than 1 %), ``report`` the table ``frictrack stationary`` prints (also ``str()``)."""
 
-    def __init__(self, points: "list[Dict[str, Any]]", waves: Dict[float, Table], warnings: "list[str]") -> None:
+    def __init__(self, points: "list[Dict[str, Any]]", waves: Dict[float, Table], warnings: "list[str]",
+                 report: str = "") -> None:
         self.points = points
         self.waves = waves
         self.warnings = warnings
+        self.report = report
+
+    def __str__(self) -> str:
+        return self.report
 
 
 def stationary(scenario: ScenarioLike = None, speeds: Sequence[float] = (),
@@ -237,10 +248,11 @@ def stationary(scenario: ScenarioLike = None, speeds: Sequence[float] = (),
     behind, ahead = (None, None) if domain is None else (float(x) for x in domain)
     length = None if element_length is None else float(element_length)
     with _Reporter(progress, "stationary") as report:
-        points, waves, warnings = _native.stationary(
+        points, lines, waves, warnings = _native.stationary(
             kind, text, _speeds(speeds), (behind, ahead, length), list(overrides.items()), report
         )
-    return Stationary(json.loads(points), {float(v): parse_csv(csv, COLUMNS["stationary_wave"]) for v, csv in waves}, list(warnings))
+    return Stationary(json.loads(points), {float(v): parse_csv(csv, COLUMNS["stationary_wave"]) for v, csv in waves},
+                      list(warnings), lines)
 
 
 class Study:

@@ -38,9 +38,10 @@ class Run:
     """One run: `summary` (dict, the keys of `frictrack run --format json`), `histories` (histories.csv: section m,
     time s, load_position m, deflection m, velocity m/s, acceleration m/s², moment N·m, friction_force N),
     `snapshots` (snapshots.csv), `wheels` (wheels.csv, None without vehicles), `losses` (losses of wheel–rail
-    contact), `warnings`."""
+    contact), `warnings`, `report` (the text `frictrack run` prints; also `str(run)`)."""
 
     summary: Dict[str, Any]
+    report: str
     histories: Table
     snapshots: Table
     wheels: Optional[Table]
@@ -101,9 +102,11 @@ def analytic(
 class Stationary:
     """The stationary wave per speed: `points` (dicts, as `frictrack stationary --format json`), `waves` (speed m/s →
     the wave's shape: s, deflection, slope, moment, soil_reaction, friction_force, with their units),
-    `warnings` (peaks resolved to worse than 1 %)."""
+    `warnings` (peaks resolved to worse than 1 %), `report` (the table `frictrack stationary` prints; also
+    `str(result)`)."""
 
     points: List[Dict[str, Any]]
+    report: str
     waves: Dict[float, Table]
     warnings: List[str]
 
