@@ -4,7 +4,7 @@
 //! [`SymmetricBanded`] matrices over the free DOFs (half-bandwidth 3). The foundation damping may vary from element
 //! to element (absorbing end zones); by default it is the uniform c_f of the [`Foundation`].
 
-use crate::element::{ElementMatrix, hermite};
+use crate::element::{Element, ElementMatrix, hermite};
 use crate::error::{FemError, Result};
 use crate::mesh::Mesh;
 use crate::properties::{Beam, Foundation, Rayleigh};
@@ -65,7 +65,8 @@ impl BeamModel {
         }
         let dofs = DofMap::new(mesh.nodes(), supports);
         let l = mesh.element_length();
-        let me = hermite::consistent_mass(beam.mass_per_length(), l);
+        let element = Element::of(&beam, l);
+        let me = element.mass(&beam);
         let ke = Self::element_stiffness_of(&beam, &foundation, l);
         let n = dofs.free_len();
         let (mut mass, mut stiffness, mut damping) = (
@@ -74,7 +75,7 @@ impl BeamModel {
             SymmetricBanded::zeros(n, BANDWIDTH),
         );
         for e in 0..mesh.elements {
-            let ce = hermite::consistent_mass(element_damping[e], l);
+            let ce = element.distributed(element_damping[e]);
             let free: [Option<usize>; 4] = std::array::from_fn(|k| dofs.free_index(2 * e + k));
             for a in 0..4 {
                 for b in 0..=a {
@@ -109,9 +110,15 @@ impl BeamModel {
     }
 
     fn element_stiffness_of(beam: &Beam, foundation: &Foundation, l: f64) -> ElementMatrix {
-        let kb = hermite::bending_stiffness(beam.bending_stiffness(), l);
-        let kf = hermite::consistent_mass(foundation.tension_stiffness(), l);
+        let element = Element::of(beam, l);
+        let kb = element.stiffness(beam.bending_stiffness());
+        let kf = element.distributed(foundation.tension_stiffness());
         hermite::combine(1.0, &kb, 1.0, &kf)
+    }
+
+    /// The element of the mesh (all elements are alike): its theory's shape functions and matrices.
+    pub fn element(&self) -> Element {
+        Element::of(&self.beam, self.mesh.element_length())
     }
 
     /// Beam (rail) parameters.
@@ -167,12 +174,12 @@ impl BeamModel {
 
     /// Element mass matrix, identical for all elements.
     pub fn element_mass(&self) -> ElementMatrix {
-        hermite::consistent_mass(self.beam.mass_per_length(), self.mesh.element_length())
+        self.element().mass(&self.beam)
     }
 
     /// Element damping matrix of element `e`: its foundation dashpots and the Rayleigh terms α M_e + β K_e.
     pub fn element_damping_matrix(&self, e: usize) -> ElementMatrix {
-        let foundation = hermite::consistent_mass(self.element_damping[e], self.mesh.element_length());
+        let foundation = self.element().distributed(self.element_damping[e]);
         if self.rayleigh.is_zero() {
             return foundation;
         }

@@ -43,7 +43,7 @@ pub use error::{FemError, Result};
 pub use extreme::{Extreme, LiftOffZone};
 pub use load::LoadVector;
 pub use mesh::Mesh;
-pub use properties::{Beam, Foundation, FoundationLaw, Rayleigh};
+pub use properties::{Beam, BeamTheory, Foundation, FoundationLaw, Rayleigh};
 pub use supports::{DofMap, Support, Supports};
 pub use train::{Axle, Patch, Train};
 

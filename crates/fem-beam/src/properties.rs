@@ -17,11 +17,37 @@ pub struct Beam {
     pub area: f64,
     /// Density ρ (kg/m³). Default 7800 kg/m³; must be > 0.
     pub density: f64,
+    /// The beam theory. Default Euler–Bernoulli. (Not yet a scenario key: the track's interaction rows and section
+    /// results take the Timoshenko element's shape functions next.)
+    #[cfg_attr(feature = "serde", serde(skip))]
+    pub theory: BeamTheory,
+}
+
+/// How the beam deforms in bending (docs/theory.md §3, §15).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub enum BeamTheory {
+    /// Plane sections stay normal to the axis: no shear deformation, no rotary inertia (default).
+    #[default]
+    EulerBernoulli,
+    /// Shear deformation and rotary inertia ρI: the cross-section rotates by ψ ≠ w′, with the shear force
+    /// κGA(w′ − ψ).
+    Timoshenko {
+        /// Shear modulus G (Pa), > 0 (steel: 81 GPa).
+        shear_modulus: f64,
+        /// Shear coefficient κ ∈ (0, 1] (UIC60 in vertical bending ≈ 0.4; a rectangle 5/6).
+        shear_coefficient: f64,
+    },
 }
 
 impl Default for Beam {
     fn default() -> Self {
-        Self { youngs_modulus: 210.0e9, second_moment: 3055.0e-8, area: 7684.0e-6, density: 7800.0 }
+        Self {
+            youngs_modulus: 210.0e9,
+            second_moment: 3055.0e-8,
+            area: 7684.0e-6,
+            density: 7800.0,
+            theory: BeamTheory::EulerBernoulli,
+        }
     }
 }
 
@@ -32,7 +58,35 @@ impl Beam {
         positive("beam.second_moment", self.second_moment)?;
         positive("beam.area", self.area)?;
         positive("beam.density", self.density)?;
+        if let BeamTheory::Timoshenko { shear_modulus, shear_coefficient } = self.theory {
+            positive("beam.shear_modulus", shear_modulus)?;
+            if !(shear_coefficient > 0.0 && shear_coefficient <= 1.0) {
+                return Err(FemError::InvalidField {
+                    field: "beam.shear_coefficient",
+                    value: shear_coefficient,
+                    allowed: "must lie in (0, 1] (UIC60 in vertical bending ≈ 0.4, a rectangle 5/6)",
+                });
+            }
+        }
         Ok(())
+    }
+
+    /// Shear stiffness κGA (N) of a Timoshenko beam; None for Euler–Bernoulli (infinite).
+    pub fn shear_stiffness(&self) -> Option<f64> {
+        match self.theory {
+            BeamTheory::EulerBernoulli => None,
+            BeamTheory::Timoshenko { shear_modulus, shear_coefficient } => {
+                Some(shear_coefficient * shear_modulus * self.area)
+            }
+        }
+    }
+
+    /// Rotary inertia per unit length ρI (kg·m): a Timoshenko beam's; 0 for Euler–Bernoulli, which neglects it.
+    pub fn rotary_inertia(&self) -> f64 {
+        match self.theory {
+            BeamTheory::EulerBernoulli => 0.0,
+            BeamTheory::Timoshenko { .. } => self.density * self.second_moment,
+        }
     }
 
     /// Bending stiffness EI (N·m²).

@@ -9,7 +9,7 @@
 //!   Accurate to ~1e-5 against the closed form; [`NodalMoments::at`] interpolates them linearly between nodes.
 
 use crate::assembly::BeamModel;
-use crate::element::{ElementVector, hermite};
+use crate::element::{Element, ElementVector, hermite};
 use crate::error::{FemError, Result};
 use crate::load::LoadVector;
 
@@ -54,27 +54,28 @@ impl BeamModel {
         [q[2 * e], q[2 * e + 1], q[2 * e + 2], q[2 * e + 3]]
     }
 
-    fn interpolate(&self, q: &[f64], x: f64, basis: fn(f64, f64) -> ElementVector) -> Result<f64> {
+    fn interpolate(&self, q: &[f64], x: f64, basis: fn(&Element, f64) -> ElementVector) -> Result<f64> {
         self.check_full("DOF vector", q)?;
         let p = self.mesh().locate(x)?;
-        let n = basis(p.xi, self.mesh().element_length());
+        let n = basis(&self.element(), p.xi);
         let qe = Self::element_dofs(q, p.element);
         Ok((0..4).map(|k| n[k] * qe[k]).sum())
     }
 
     /// Deflection w(x) (m, positive upward) from a full DOF vector.
     pub fn deflection_at(&self, q: &[f64], x: f64) -> Result<f64> {
-        self.interpolate(q, x, hermite::shape)
+        self.interpolate(q, x, Element::shape)
     }
 
-    /// Rotation θ(x) = dw/dx (rad).
+    /// Slope dw/dx (rad); the cross-section's rotation too for Euler–Bernoulli.
     pub fn slope_at(&self, q: &[f64], x: f64) -> Result<f64> {
-        self.interpolate(q, x, hermite::shape_dx)
+        self.interpolate(q, x, Element::shape_dx)
     }
 
-    /// EI·w″(x) of the cubic interpolation (N·m); see the module note on its accuracy.
+    /// EI·κ(x) of the element's interpolation (N·m): EI·w″ (Euler–Bernoulli), EI·ψ′ (Timoshenko); see the module
+    /// note on its accuracy.
     pub fn interpolated_moment(&self, q: &[f64], x: f64) -> Result<f64> {
-        Ok(self.beam().bending_stiffness() * self.interpolate(q, x, hermite::shape_dxx)?)
+        Ok(self.beam().bending_stiffness() * self.interpolate(q, x, Element::curvature)?)
     }
 
     /// Nodal deflections w_i (m).

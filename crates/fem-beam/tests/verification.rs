@@ -7,4 +7,5 @@ mod verification {
     mod invalid_input;
     mod loads;
     mod statics;
+    mod timoshenko;
 }
