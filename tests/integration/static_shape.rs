@@ -11,7 +11,7 @@ fn static_deflection_line_matches_infinite_beam_everywhere() {
     let inf = case.infinite_beam().unwrap();
     let (w0, beta) = (inf.static_deflection(case.load), inf.beta());
     let x0 = 100.0;
-    let load = LoadVector::point_force(&case.mesh, x0, -case.load).unwrap();
+    let load = LoadVector::point_force(&model.discretisation(), x0, -case.load).unwrap();
     let q = model.static_solve(&load).unwrap();
     let zero_speed = inf.steady_state(0.0, case.load).unwrap();
     let mut worst: f64 = 0.0;

@@ -81,8 +81,12 @@ fn check(path: &std::path::Path) -> Result<()> {
         track::Load::Train(t) => format!("train {} ({} axles, {:.3} m)", t.name, t.axles.len(), t.length()),
         track::Load::Force(force) => format!("load {:.1} kN", force / 1e3),
     };
+    let beam = match scenario.beam.theory {
+        fem_beam::BeamTheory::EulerBernoulli => "beam".to_string(),
+        theory => format!("{} beam", theory.describe()),
+    };
     println!(
-        "{}{title}: ok — {} m beam, {} elements ({} DOFs), k_f = {:.1} kN/m², {damping}, {friction}, {load} at {} m/s, \
+        "{}{title}: ok — {} m {beam}, {} elements ({} DOFs), k_f = {:.1} kN/m², {damping}, {friction}, {load} at {} m/s, \
          sweep {}–{} m/s by {}",
         path.display(),
         mesh.length,

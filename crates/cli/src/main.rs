@@ -10,6 +10,7 @@ mod jobs;
 mod merge;
 mod plot;
 mod progress;
+mod receptance;
 mod reference;
 mod reproduce;
 mod run;
@@ -63,6 +64,9 @@ enum Command {
     /// tensionless and bilinear soils and ballast friction: its shape, peaks, lift-off and slip zones and what
     /// friction leaves behind, at one speed or over a speed range.
     Stationary(stationary::StationaryArgs),
+    /// The track's receptance (m/N) and mobility over frequency — point or transfer, Euler–Bernoulli or Timoshenko
+    /// rail, viscous damping and loss factors — from the scenario's own model, with its resonances and a figure.
+    Receptance(receptance::ReceptanceArgs),
 }
 
 /// Output format of a command.
@@ -73,6 +77,28 @@ pub enum Format {
     Text,
     /// One JSON object on stdout.
     Json,
+}
+
+/// Output format of a command whose result is a table.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum, Default)]
+pub enum TableFormat {
+    /// Human-readable text.
+    #[default]
+    Text,
+    /// One JSON value on stdout.
+    Json,
+    /// The table as CSV, with a closing `# units (SI): …` line.
+    Csv,
+}
+
+impl From<TableFormat> for report::output::Format {
+    fn from(format: TableFormat) -> Self {
+        match format {
+            TableFormat::Text => Self::Text,
+            TableFormat::Json => Self::Json,
+            TableFormat::Csv => Self::Csv,
+        }
+    }
 }
 
 impl From<Format> for report::output::Format {
@@ -130,6 +156,7 @@ fn main() -> ExitCode {
         Command::Reference(args) => reference::run(&args),
         Command::Analytic(args) => analytic::run(&args),
         Command::Stationary(args) => stationary::run(&args),
+        Command::Receptance(args) => receptance::run(&args),
         Command::Trains(args) => trains::run(&args),
         Command::TrackProfile(args) => track_profile::run(&args),
     };

@@ -1,36 +1,15 @@
 //! `frictrack stationary`: the stationary wave of the scenario's load on the infinite track, in moving coordinates
 //! (docs/theory.md §14) — at one speed (its shape) or over a speed range by continuation (its peaks).
 
+use crate::TableFormat;
 use crate::files::{check_output_file, prepare_output_folder, write_atomically, write_figures};
 use anyhow::Result;
-use clap::{Args, ValueEnum};
+use clap::Args;
 use scenario::Scenario;
 use stationary::Domain;
 use std::path::PathBuf;
 use study::stationary_output::{ErrorEstimate, StationaryStudy};
 use study::stationary_text::StationaryReport;
-
-/// What `frictrack stationary` prints.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum, Default)]
-pub enum StationaryFormat {
-    /// A table of the peaks per speed.
-    #[default]
-    Text,
-    /// The points as JSON.
-    Json,
-    /// One speed: the wave's shape; several: the points, as CSV.
-    Csv,
-}
-
-impl From<StationaryFormat> for report::output::Format {
-    fn from(format: StationaryFormat) -> Self {
-        match format {
-            StationaryFormat::Text => Self::Text,
-            StationaryFormat::Json => Self::Json,
-            StationaryFormat::Csv => Self::Csv,
-        }
-    }
-}
 
 /// Options of `frictrack stationary`.
 #[derive(Debug, Args)]
@@ -55,9 +34,9 @@ pub struct StationaryArgs {
     /// Ballast friction f_u (N/m) along the track, in place of the scenario's (as `run --distributed-friction`).
     #[arg(long, allow_negative_numbers = true)]
     distributed_friction: Option<f64>,
-    /// Output format on standard output.
-    #[arg(long, value_enum, default_value_t = StationaryFormat::Text)]
-    format: StationaryFormat,
+    /// Output format on standard output (csv: one speed's wave, or the points over several speeds).
+    #[arg(long, value_enum, default_value_t = TableFormat::Text)]
+    format: TableFormat,
     /// Folder for stationary.json, the CSV (wave.csv for one speed, speeds.csv for several) and the figure.
     #[arg(long)]
     out: Option<PathBuf>,
@@ -103,7 +82,7 @@ pub fn run(args: &StationaryArgs) -> Result<()> {
     let first = scenario.stationary_problem(speeds.first().copied().unwrap_or(0.0), domain)?;
     crate::progress::announce("stationary", &runner::cost::Estimate::stationary(&first, &speeds, true));
     let stop = Some(crate::interrupt::stop_flag());
-    let bar = crate::progress::bar("stationary", Some(speeds.len() as u64), args.format != StationaryFormat::Text);
+    let bar = crate::progress::bar("stationary", Some(speeds.len() as u64), args.format != TableFormat::Text);
     let progress = |done: usize| bar.set_position(done as u64);
     let study = StationaryStudy::of_until(&scenario, &speeds, domain, ErrorEstimate::Halving, stop, &progress)?;
     bar.finish_and_clear();
@@ -113,7 +92,7 @@ pub fn run(args: &StationaryArgs) -> Result<()> {
     let report = StationaryReport { title: &scenario.title, study: &study };
     let table = report.table();
     crate::print_output(&report, args.format)?;
-    if args.format == StationaryFormat::Text && study.points.iter().any(|p| p.status != "converged") {
+    if args.format == TableFormat::Text && study.points.iter().any(|p| p.status != "converged") {
         println!(
             "  where no wave was found (—), run the load across a long finite track in time (`frictrack run` with \
              absorbing zones): the stationary wave may not exist there (a tensionless soil lets the rail be thrown \

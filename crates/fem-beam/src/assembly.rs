@@ -4,6 +4,7 @@
 //! [`SymmetricBanded`] matrices over the free DOFs (half-bandwidth 3). The foundation damping may vary from element
 //! to element (absorbing end zones); by default it is the uniform c_f of the [`Foundation`].
 
+use crate::discretisation::Discretisation;
 use crate::element::{Element, ElementMatrix, hermite};
 use crate::error::{FemError, Result};
 use crate::mesh::Mesh;
@@ -119,6 +120,11 @@ impl BeamModel {
     /// The element of the mesh (all elements are alike): its theory's shape functions and matrices.
     pub fn element(&self) -> Element {
         Element::of(&self.beam, self.mesh.element_length())
+    }
+
+    /// The mesh with its element: where loads, contacts and sections act on this beam.
+    pub fn discretisation(&self) -> Discretisation {
+        Discretisation::new(self.mesh, self.element())
     }
 
     /// Beam (rail) parameters.

@@ -1,13 +1,15 @@
-//! # fem-beam: an Euler–Bernoulli rail on a viscoelastic Winkler foundation
+//! # fem-beam: an Euler–Bernoulli or Timoshenko rail on a viscoelastic Winkler foundation
 //!
-//! The first layer of frictrack (docs/theory.md §2–§3): Hermite cubic beam elements on [0, L], the consistent mass
+//! The first layer of frictrack (docs/theory.md §2–§3, §15): Hermite cubic beam elements on [0, L] (or the
+//! Timoshenko element of [`element::timoshenko`], which is Hermite's at φ = 0), the consistent mass
 //! ρA·l/420·[…], bending stiffness EI/l³·[…] and consistent foundation stiffness/damping k_f·l/420·[…],
 //! c_f·l/420·[…], assembled into symmetric banded matrices of half-bandwidth 3 over the DOFs left free by the
 //! supports, for the semi-discrete equation M q̈ + C q̇ + K q = f. Units are SI; w is positive upward.
 //!
 //! - [`properties`]: [`Beam`] (E, I, A, ρ) and [`Foundation`] (k_f, c_f) with UIC60 / soft-soil defaults.
 //! - [`mesh`], [`supports`]: the uniform mesh, end supports and the full ↔ free DOF map.
-//! - [`element`]: Hermite shape functions and element matrices; [`assembly`]: the global [`BeamModel`].
+//! - [`element`]: Hermite and Timoshenko shape functions and element matrices; [`assembly`]: the global
+//!   [`BeamModel`]; [`discretisation`]: its mesh paired with its element, where loads and contacts act.
 //! - Matrices are the `banded` crate's [`banded::SymmetricBanded`] (storage, LDLᵀ, Schur condensation), the layer
 //!   below this one.
 //! - [`load`]: consistent point forces/moments and uniform loads; [`section`]: w, θ, M from a DOF vector.
@@ -18,6 +20,10 @@
 
 pub mod absorbing;
 pub mod assembly;
+#[cfg(feature = "serde")]
+pub mod beam_keys;
+pub mod discretisation;
+pub mod dispersion;
 pub mod distributed;
 pub mod element;
 pub mod error;
@@ -26,6 +32,7 @@ pub mod load;
 pub mod mesh;
 pub mod modal;
 pub mod properties;
+pub mod receptance;
 pub mod reference;
 pub mod section;
 pub mod span;
@@ -38,6 +45,7 @@ pub mod train;
 
 pub use absorbing::AbsorbingZones;
 pub use assembly::BeamModel;
+pub use discretisation::Discretisation;
 pub use distributed::DistributedFriction;
 pub use error::{FemError, Result};
 pub use extreme::{Extreme, LiftOffZone};

@@ -1,13 +1,16 @@
 //! Consistent load vectors: point forces and moments anywhere on the beam, uniform distributed loads.
 //!
 //! A point force P at x (N, positive upward) contributes P·N(ξ) to the four DOFs of the one element containing x
-//! (forces *and* moments at its two nodes); a point moment C (N·m, counter-clockwise) contributes C·N′(ξ). A load on
-//! a node is assigned to a single element (see [`Mesh::locate`]), so it is never counted twice. A uniform load q
-//! (N/m) contributes (ql/2, ql²/12, ql/2, −ql²/12) per element.
+//! (forces *and* moments at its two nodes); a point moment C (N·m, counter-clockwise) contributes C·N_θ(ξ), the
+//! rotation's row (N′ for Euler–Bernoulli, N_ψ for Timoshenko). N is the beam's element's
+//! ([`Discretisation`]). A load on a node is assigned to a single element (see [`crate::Mesh::locate`]), so it is
+//! never counted twice. A uniform load q (N/m) contributes (ql/2, ql²/12, ql/2, −ql²/12) per element, for either
+//! theory.
 //!
 //! Loads are kept per element so that element end forces (hence bending moments at nodes) can be recovered.
 
-use crate::element::{ElementVector, hermite};
+use crate::discretisation::Discretisation;
+use crate::element::{Element, ElementVector, hermite};
 use crate::error::{FemError, Result};
 use crate::mesh::Mesh;
 use crate::supports::DofMap;
@@ -25,9 +28,8 @@ impl ElementLoad {
     /// The consistent nodal loads F·Ψ(ξ) of a point force `force` (N, positive upward) at `x` (m), on the element
     /// that owns x ([`Mesh::locate`]: [x_a, x_b), the last element closed): nodal forces and moments, the one
     /// formula every point load of frictrack uses (static loads, the moving load, section results).
-    pub fn point_force(mesh: &Mesh, x: f64, force: f64) -> Result<Self> {
-        let p = mesh.locate(x)?;
-        let n = hermite::shape(p.xi, mesh.element_length());
+    pub fn point_force(beam: &Discretisation, x: f64, force: f64) -> Result<Self> {
+        let (p, n) = beam.shape_at(x)?;
         Ok(Self { element: p.element, nodal: n.map(|v| v * force) })
     }
 }
@@ -35,17 +37,24 @@ impl ElementLoad {
 impl ElementLoad {
     /// The consistent nodal loads q·∫Ψᵀdx of a uniform load `per_length` (N/m, positive upward) over the part of
     /// [a, b] (m) that lies on the beam, one contribution per element it covers (none when it misses the beam):
-    /// the closed-form integrals of the Hermite cubics over partial elements ([`hermite::shape_integral`]).
-    pub fn uniform_patch(mesh: &Mesh, a: f64, b: f64, per_length: f64) -> impl Iterator<Item = ElementLoad> + '_ {
+    /// the closed-form integrals of the shape functions over partial elements ([`Element::shape_integral`]).
+    pub fn uniform_patch(
+        beam: &Discretisation,
+        a: f64,
+        b: f64,
+        per_length: f64,
+    ) -> impl Iterator<Item = ElementLoad> + '_ {
+        let (mesh, element) = (beam.mesh(), beam.element());
         let l = mesh.element_length();
         let (a, b) = (a.max(0.0), b.min(mesh.length));
         let (first, last) =
             if b > a { ((a / l).floor() as usize, ((b / l).ceil() as usize).min(mesh.elements)) } else { (0, 0) };
-        (first..last).filter_map(move |element| {
-            let x_a = mesh.node_x(element);
+        let shape: Element = element;
+        (first..last).filter_map(move |e| {
+            let x_a = mesh.node_x(e);
             let (xi0, xi1) = (((a - x_a) / l).clamp(0.0, 1.0), ((b - x_a) / l).clamp(0.0, 1.0));
             (xi1 > xi0)
-                .then(|| ElementLoad { element, nodal: hermite::shape_integral(xi0, xi1, l).map(|v| v * per_length) })
+                .then(|| ElementLoad { element: e, nodal: shape.shape_integral(xi0, xi1).map(|v| v * per_length) })
         })
     }
 }
@@ -67,24 +76,24 @@ impl LoadVector {
     }
 
     /// A point force `force` (N, positive upward) at `x` (m).
-    pub fn point_force(mesh: &Mesh, x: f64, force: f64) -> Result<Self> {
+    pub fn point_force(beam: &Discretisation, x: f64, force: f64) -> Result<Self> {
         let mut load = Self::new();
-        load.add_point_force(mesh, x, force)?;
+        load.add_point_force(beam, x, force)?;
         Ok(load)
     }
 
     /// Add a point force `force` (N, positive upward) at `x` (m).
-    pub fn add_point_force(&mut self, mesh: &Mesh, x: f64, force: f64) -> Result<()> {
+    pub fn add_point_force(&mut self, beam: &Discretisation, x: f64, force: f64) -> Result<()> {
         finite("force", force)?;
-        self.contributions.push(ElementLoad::point_force(mesh, x, force)?);
+        self.contributions.push(ElementLoad::point_force(beam, x, force)?);
         Ok(())
     }
 
-    /// Add a point moment `moment` (N·m, positive counter-clockwise, i.e. work-conjugate to θ = dw/dx) at `x`.
-    pub fn add_point_moment(&mut self, mesh: &Mesh, x: f64, moment: f64) -> Result<()> {
+    /// Add a point moment `moment` (N·m, positive counter-clockwise, i.e. work-conjugate to the rotation θ) at `x`.
+    pub fn add_point_moment(&mut self, beam: &Discretisation, x: f64, moment: f64) -> Result<()> {
         finite("moment", moment)?;
-        let p = mesh.locate(x)?;
-        let n = hermite::shape_dx(p.xi, mesh.element_length());
+        let p = beam.mesh().locate(x)?;
+        let n = beam.element().rotation(p.xi);
         self.contributions.push(ElementLoad { element: p.element, nodal: n.map(|v| v * moment) });
         Ok(())
     }
@@ -95,15 +104,16 @@ impl LoadVector {
     }
 
     /// Add a uniform load `per_length` (N/m, positive upward) over the part of [a, b] (m) on the beam.
-    pub fn add_patch(&mut self, mesh: &Mesh, a: f64, b: f64, per_length: f64) -> Result<()> {
+    pub fn add_patch(&mut self, beam: &Discretisation, a: f64, b: f64, per_length: f64) -> Result<()> {
         finite("patch load", per_length)?;
         finite("patch start", a)?;
         finite("patch end", b)?;
-        self.contributions.extend(ElementLoad::uniform_patch(mesh, a, b, per_length));
+        self.contributions.extend(ElementLoad::uniform_patch(beam, a, b, per_length));
         Ok(())
     }
 
-    /// A uniform load `per_length` (N/m, positive upward) over the whole beam, e.g. self-weight −ρA·g.
+    /// A uniform load `per_length` (N/m, positive upward) over the whole beam, e.g. self-weight −ρA·g: the same
+    /// nodal loads for either theory (∫N_w dx over an element does not depend on φ).
     pub fn uniform(mesh: &Mesh, per_length: f64) -> Result<Self> {
         finite("uniform load", per_length)?;
         let l = mesh.element_length();

@@ -5,9 +5,14 @@
 
 use crate::error::{FemError, Result, non_negative, positive};
 
-/// Cross-section and material of the rail (an Euler–Bernoulli beam). SI units.
+/// Cross-section and material of the rail (an Euler–Bernoulli or Timoshenko beam). SI units. In files its keys are
+/// those of [`crate::beam_keys`].
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize), serde(default, deny_unknown_fields))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(try_from = "crate::beam_keys::BeamKeys", into = "crate::beam_keys::BeamKeys")
+)]
 pub struct Beam {
     /// Young's modulus E (Pa). Default 210 GPa; must be > 0.
     pub youngs_modulus: f64,
@@ -17,10 +22,11 @@ pub struct Beam {
     pub area: f64,
     /// Density ρ (kg/m³). Default 7800 kg/m³; must be > 0.
     pub density: f64,
-    /// The beam theory. Default Euler–Bernoulli. (Not yet a scenario key: the track's interaction rows and section
-    /// results take the Timoshenko element's shape functions next.)
-    #[cfg_attr(feature = "serde", serde(skip))]
+    /// The beam theory. Default Euler–Bernoulli.
     pub theory: BeamTheory,
+    /// Loss factor η_r ≥ 0 of the rail's material, EI → EI(1 + iη_r) (and κGA): the frequency domain's (the
+    /// receptance; steel 0.01–0.02); a run in time takes viscous damping. Default 0.
+    pub loss_factor: f64,
 }
 
 /// How the beam deforms in bending (docs/theory.md §3, §15).
@@ -39,6 +45,18 @@ pub enum BeamTheory {
     },
 }
 
+impl BeamTheory {
+    /// The theory in words for a report: "Euler–Bernoulli", or "Timoshenko (G = 81 GPa, κ = 0.4)".
+    pub fn describe(&self) -> String {
+        match self {
+            BeamTheory::EulerBernoulli => "Euler–Bernoulli".to_string(),
+            BeamTheory::Timoshenko { shear_modulus, shear_coefficient } => {
+                format!("Timoshenko (G = {} GPa, κ = {shear_coefficient})", shear_modulus / 1e9)
+            }
+        }
+    }
+}
+
 impl Default for Beam {
     fn default() -> Self {
         Self {
@@ -47,6 +65,7 @@ impl Default for Beam {
             area: 7684.0e-6,
             density: 7800.0,
             theory: BeamTheory::EulerBernoulli,
+            loss_factor: 0.0,
         }
     }
 }
@@ -58,6 +77,7 @@ impl Beam {
         positive("beam.second_moment", self.second_moment)?;
         positive("beam.area", self.area)?;
         positive("beam.density", self.density)?;
+        non_negative("beam.loss_factor", self.loss_factor)?;
         if let BeamTheory::Timoshenko { shear_modulus, shear_coefficient } = self.theory {
             positive("beam.shear_modulus", shear_modulus)?;
             if !(shear_coefficient > 0.0 && shear_coefficient <= 1.0) {
@@ -161,6 +181,9 @@ pub struct Foundation {
     pub damping: f64,
     /// The soil's law. Default linear.
     pub law: FoundationLaw,
+    /// Loss factor η_f ≥ 0 of hysteretic damping, k_f → k_f(1 + iη_f): the frequency domain's (the receptance); a
+    /// run in time takes the viscous c_f. Default 0.
+    pub loss_factor: f64,
 }
 
 impl Default for Foundation {
@@ -172,13 +195,14 @@ impl Default for Foundation {
 impl Foundation {
     /// A linear foundation of stiffness k_f (N/m²) and damping c_f (N·s/m²).
     pub fn linear(stiffness: f64, damping: f64) -> Self {
-        Self { stiffness, damping, law: FoundationLaw::Linear }
+        Self { stiffness, damping, law: FoundationLaw::Linear, loss_factor: 0.0 }
     }
 
     /// Check every field; the error names the first bad one.
     pub fn validate(&self) -> Result<()> {
         non_negative("foundation.stiffness", self.stiffness)?;
         non_negative("foundation.damping", self.damping)?;
+        non_negative("foundation.loss_factor", self.loss_factor)?;
         let ratio = self.law.tension_ratio();
         if !(0.0..=1.0).contains(&ratio) {
             return Err(FemError::InvalidField {

@@ -3,9 +3,9 @@
 //!
 //! Offsets are measured backwards from the first axle: axle i is at x_i(t) = x_head(t) − d_i. Forces act downward.
 
+use crate::discretisation::Discretisation;
 use crate::error::{FemError, Result};
 use crate::load::{ElementLoad, LoadVector};
-use crate::mesh::Mesh;
 
 /// One axle: its offset d ≥ 0 behind the first axle (m) and its static force P ≥ 0 (N, downward).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -130,27 +130,27 @@ impl Train {
     /// The consistent element loads of the train with its first axle at `head` (m): each axle on the beam
     /// (−P·Ψᵀ(x), within 1e-9·L of an end counted at the end, against round-off in x = vt), then the covered part of
     /// each patch (−q∫Ψᵀdx). Nothing allocates: the moving load calls it every step.
-    pub fn element_loads<'a>(&'a self, mesh: &'a Mesh, head: f64) -> impl Iterator<Item = ElementLoad> + 'a {
-        let length = mesh.length;
+    pub fn element_loads<'a>(&'a self, beam: &'a Discretisation, head: f64) -> impl Iterator<Item = ElementLoad> + 'a {
+        let length = beam.mesh().length;
         let tol = 1e-9 * length;
         let axles = self.axles.iter().filter_map(move |axle| {
             let x = head - axle.offset;
             if x < -tol || x > length + tol {
                 return None;
             }
-            ElementLoad::point_force(mesh, x.clamp(0.0, length), -axle.force).ok()
+            ElementLoad::point_force(beam, x.clamp(0.0, length), -axle.force).ok()
         });
         let patches = self.patches.iter().flat_map(move |patch| {
             let front = head - patch.offset;
-            ElementLoad::uniform_patch(mesh, front - patch.length, front, -patch.intensity)
+            ElementLoad::uniform_patch(beam, front - patch.length, front, -patch.intensity)
         });
         axles.chain(patches)
     }
 
     /// The train standing with its first axle at `head` (m), as a load case (for statics).
-    pub fn load_vector(&self, mesh: &Mesh, head: f64) -> LoadVector {
+    pub fn load_vector(&self, beam: &Discretisation, head: f64) -> LoadVector {
         let mut loads = LoadVector::new();
-        for load in self.element_loads(mesh, head) {
+        for load in self.element_loads(beam, head) {
             loads.push(load);
         }
         loads

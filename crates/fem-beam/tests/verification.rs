@@ -6,6 +6,7 @@ mod verification {
     mod frequencies;
     mod invalid_input;
     mod loads;
+    mod receptance;
     mod statics;
     mod timoshenko;
 }

@@ -17,6 +17,7 @@
 mod commands;
 mod errors;
 mod interruptible;
+mod receptance;
 mod run;
 mod scenario_input;
 mod sweep;
@@ -39,6 +40,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(commands::preset, m)?)?;
     m.add_function(wrap_pyfunction!(commands::train, m)?)?;
     m.add_function(wrap_pyfunction!(commands::track_profile, m)?)?;
+    m.add_function(wrap_pyfunction!(receptance::receptance, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

@@ -94,7 +94,7 @@ pub(crate) fn trains() -> Vec<String> {
 }
 
 /// The columns of the tables with their units, as the library writes them: a run's "histories", "snapshots" and
-/// "wheels", and a stationary wave's "stationary_wave" (name, unit) lists.
+/// "wheels", a stationary wave's "stationary_wave" and a receptance's "receptance" (name, unit) lists.
 #[pyfunction]
 pub(crate) fn columns() -> Vec<(&'static str, Vec<(&'static str, &'static str)>)> {
     vec![
@@ -102,5 +102,6 @@ pub(crate) fn columns() -> Vec<(&'static str, Vec<(&'static str, &'static str)>)
         ("snapshots", report::run_output::SNAPSHOT_COLUMNS.to_vec()),
         ("wheels", report::vehicle_output::WHEEL_COLUMNS.to_vec()),
         ("stationary_wave", study::stationary_output::WAVE_COLUMNS.to_vec()),
+        ("receptance", study::receptance_text::RECEPTANCE_COLUMNS.to_vec()),
     ]
 }

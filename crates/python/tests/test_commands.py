@@ -4,6 +4,7 @@ import json
 import subprocess
 
 import numpy as np
+import pytest
 
 import frictrack
 from test_run import cli
@@ -69,3 +70,25 @@ def test_trains_and_rails():
     assert abs(np.std(profile["r"]) - summary["sample_std"]) <= 1e-12 * summary["sample_std"] + 1e-15
     with __import__("pytest").raises(frictrack.InputError, match="spectrum"):
         frictrack.track_profile("german-medium")
+
+
+def test_receptance_is_the_command_lines(tmp_path):
+    """frictrack.receptance gives the command line's JSON to the bit, its CSV as a table with units, its text as
+    str(); the undamped reference track's warnings arrive as UserWarning; bad input names the field."""
+    case = tmp_path / "track.toml"
+    case.write_text("[mesh]\nelements = 800\n[foundation]\ndamping_ratio = 0.1\nloss_factor = 0.2\n"
+                    "[foundation.absorbing_zones]\nlength = 40.0\n")
+    result = frictrack.receptance(case, np.arange(1.0, 51.0), at=100.0, out=tmp_path / "out")
+    expected = cli_json("receptance", str(case), "--frequencies", "1:50:1", "--at", "100")
+    assert result.summary == expected
+    assert result.table.units["magnitude"] == "m/N" and len(result.table) == 50
+    assert np.array_equal(result.table["magnitude"], [p["magnitude"] for p in expected["points"]])
+    assert 9.5 < result.resonances[0]["frequency"] < 10.5
+    text = subprocess.run([cli(), "receptance", str(case), "--frequencies", "1:50:1", "--at", "100"],
+                          capture_output=True, text=True).stdout
+    assert str(result) == text
+    assert (tmp_path / "out" / "receptance.png").is_file()
+    with pytest.warns(UserWarning, match="come back"):
+        frictrack.receptance(None, [5.0, 10.0, 20.0])
+    with pytest.raises(frictrack.InputError, match="at = 500"):
+        frictrack.receptance(None, [10.0], at=500.0)

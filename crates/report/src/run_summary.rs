@@ -39,6 +39,9 @@ pub struct RunSummary {
     pub axle_share: Option<AxleShareSummary>,
     /// The infinite beam's critical speed v_cr (m/s); None without a foundation.
     pub critical_speed: Option<f64>,
+    /// A Timoshenko rail in words ("Timoshenko (G = 81 GPa, κ = 0.4)"); absent for Euler–Bernoulli.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rail_theory: Option<String>,
     /// The foundation's damping ratio ζ = c_f / c_cr.
     pub damping_ratio: f64,
     /// Friction devices placed (after merging on shared nodes).
@@ -234,6 +237,10 @@ impl RunSummary {
                 .filter(|t| t.name != "single")
                 .map(|_| AxleShareSummary::of(scenario.axle_share())),
             critical_speed: scenario::speeds::SpeedScale::of(scenario)?.critical_speed,
+            rail_theory: match scenario.beam.theory {
+                fem_beam::BeamTheory::EulerBernoulli => None,
+                theory => Some(theory.describe()),
+            },
             damping_ratio: case.model.foundation().damping_ratio(case.model.beam()),
             devices: device_positions.len(),
             device_force: scenario.friction.devices.as_ref().and_then(|d| d.force).unwrap_or(0.0),

@@ -23,6 +23,9 @@ fn write_text(f: &mut Formatter<'_>, r: &RunSummary) -> fmt::Result {
     let title = if r.title.is_empty() { String::new() } else { format!(" — {}", r.title) };
     let load = r.load_description();
     writeln!(f, "frictrack run{title}: {load} at {:.2} m/s ({:.0} km/h)", r.speed, r.speed * 3.6)?;
+    if let Some(theory) = &r.rail_theory {
+        writeln!(f, "  rail: {theory} beam, shear deformation and rotary inertia included")?;
+    }
     if let Some(v_cr) = r.critical_speed {
         writeln!(
             f,

@@ -34,6 +34,13 @@ pub struct FoundationSection {
     pub subdivisions: usize,
     /// Damping graded up towards both ends.
     pub absorbing_zones: Option<AbsorbingZonesSection>,
+    /// Loss factor η_f of hysteretic damping, for the receptance (default 0; a run takes the viscous damping).
+    #[serde(skip_serializing_if = "is_zero")]
+    pub loss_factor: f64,
+}
+
+fn is_zero(value: &f64) -> bool {
+    *value == 0.0
 }
 
 fn is_true(value: &bool) -> bool {
@@ -55,6 +62,7 @@ impl Default for FoundationSection {
             self_weight: true,
             subdivisions: 1,
             absorbing_zones: None,
+            loss_factor: 0.0,
         }
     }
 }

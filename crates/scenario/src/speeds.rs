@@ -10,7 +10,6 @@
 
 use crate::error::Result;
 use crate::{Scenario, SweepSection};
-use fem_beam::reference::InfiniteBeam;
 
 /// The most speeds one sweep, stationary solve or closed-form table takes, from the command line, a scenario's
 /// `[sweep]` or Python: a million runs of even a 10 ms case are ~3 h on all cores of a workstation.
@@ -47,7 +46,8 @@ impl SpeedScale {
         }
         let beam = scenario.beam;
         let foundation = fem_beam::Foundation::linear(scenario.foundation.stiffness, 0.0);
-        let critical = InfiniteBeam::new(&beam, &foundation)?.critical_speed();
+        // The closed form for Euler–Bernoulli, the least phase velocity of the bending waves for Timoshenko.
+        let critical = fem_beam::dispersion::critical_speed(&beam, &foundation)?;
         Ok(Self { critical_speed: Some(critical), step: nice(critical / STEPS_TO_CRITICAL) })
     }
 

@@ -9,6 +9,8 @@
 //!   window that moves with the load (figures in [`co_moving_figures`]).
 //! - [`reference_check`]: the FE model against closed forms; [`steady_response`]: the infinite beam's steady state
 //!   over speeds; [`metrics`]: dynamic amplification at a section.
+//! - [`receptance`]: the track's receptance and mobility over frequency, its resonances ([`receptance_peaks`]) and
+//!   report ([`receptance_text`]).
 //! - Their reports ([`report::output::Output`]: text, JSON, CSV): [`stationary_text`], [`co_moving_text`],
 //!   [`reference_text`], [`steady_text`].
 
@@ -17,6 +19,9 @@ pub mod co_moving_output;
 pub mod co_moving_text;
 pub mod metrics;
 pub mod presets;
+pub mod receptance;
+pub mod receptance_peaks;
+pub mod receptance_text;
 pub mod reference_check;
 pub mod reference_text;
 pub mod stationary_csv;

@@ -22,7 +22,7 @@ pub fn static_midspan(case: &Case) -> Result<StaticReference> {
     let model = &case.model;
     let mid = model.mesh().length / 2.0;
     let heaviest = case.settings.moving.load.train().axles.iter().fold(0.0f64, |m, a| m.max(a.force));
-    let load = LoadVector::point_force(model.mesh(), mid, -heaviest)?;
+    let load = LoadVector::point_force(&model.discretisation(), mid, -heaviest)?;
     let q = model.static_solve(&load)?;
     let moments = model.nodal_moments(&q, &load, Motion::default())?;
     Ok(StaticReference { deflection: model.deflection_at(&q, mid)?, moment: moments.at(mid) })

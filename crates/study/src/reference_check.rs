@@ -73,7 +73,7 @@ impl ReferenceCheck {
         let model = case.model()?;
         let inf = case.infinite_beam()?;
         let mid = case.mesh.length / 2.0;
-        let load = LoadVector::point_force(&case.mesh, mid, -case.load)?;
+        let load = LoadVector::point_force(&model.discretisation(), mid, -case.load)?;
         let q = model.static_solve(&load)?;
         let moments = model.nodal_moments(&q, &load, Motion::default())?;
         let free = model.dofs().free_len();

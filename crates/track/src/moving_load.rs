@@ -2,17 +2,17 @@
 //! uniform patches at speed v (one axle: the reference case's single load).
 
 use fem_beam::load::ElementLoad;
-use fem_beam::{DofMap, Mesh, Train};
+use fem_beam::{BeamModel, Discretisation, Train};
 use nscd::Forcing;
 use std::cell::RefCell;
 
 /// A train moving at constant speed, its first axle at x_c(t) = x₀ + v·t. Axle i (offset d_i) is at x_c − d_i and
-/// loads the beam with −P_i·Ψᵀ(x) while 0 ≤ x ≤ L (Ψ the Hermite shape functions of the element containing it:
+/// loads the beam with −P_i·Ψᵀ(x) while 0 ≤ x ≤ L (Ψ the shape functions of the beam's element containing it:
 /// consistent nodal forces *and* moments); a patch loads the part of it on the beam with −q∫Ψᵀdx. Each axle enters
 /// and leaves on its own.
 #[derive(Debug, Clone)]
 pub struct MovingLoad {
-    mesh: Mesh,
+    beam: Discretisation,
     /// Free index of each full DOF (None if constrained).
     free: Vec<Option<usize>>,
     /// The train.
@@ -28,13 +28,15 @@ pub struct MovingLoad {
 }
 
 impl MovingLoad {
-    /// A single load of magnitude `force` (N, downward) at `start` (m) at t = 0 moving at `speed` (m/s).
-    pub fn new(mesh: Mesh, dofs: &DofMap, force: f64, speed: f64, start: f64) -> Self {
-        Self::train(mesh, dofs, Train::single(force), speed, start)
+    /// A single load of magnitude `force` (N, downward) on `model` at `start` (m) at t = 0 moving at `speed` (m/s).
+    pub fn new(model: &BeamModel, force: f64, speed: f64, start: f64) -> Self {
+        Self::train(model, Train::single(force), speed, start)
     }
 
-    /// `train` with its first axle at `start` (m) at t = 0, moving at `speed` (m/s).
-    pub fn train(mesh: Mesh, dofs: &DofMap, train: Train, speed: f64, start: f64) -> Self {
+    /// `train` on `model` with its first axle at `start` (m) at t = 0, moving at `speed` (m/s).
+    pub fn train(model: &BeamModel, train: Train, speed: f64, start: f64) -> Self {
+        let (beam, dofs) = (model.discretisation(), model.dofs());
+        let mesh = *beam.mesh();
         let free = (0..dofs.full_len()).map(|d| dofs.free_index(d)).collect();
         // Room for every element load the train can make at once, so that no step allocates: one per axle, and per
         // patch one per element it can cover.
@@ -42,7 +44,7 @@ impl MovingLoad {
         let room = train.axles.len()
             + train.patches.iter().map(|p| ((p.length / l).ceil() as usize + 2).min(mesh.elements)).sum::<usize>();
         let cache = RefCell::new([(f64::NAN, Vec::with_capacity(room)), (f64::NAN, Vec::with_capacity(room))]);
-        Self { mesh, free, train, speed, start, cache }
+        Self { beam, free, train, speed, start, cache }
     }
 
     /// Move the train back by `distance` (m) at every time: the co-moving window's shift, after which the load stands
@@ -62,7 +64,7 @@ impl MovingLoad {
 
     /// The consistent element loads of everything on the beam at time t ([`Train::element_loads`]).
     pub fn element_loads(&self, time: f64) -> impl Iterator<Item = ElementLoad> + '_ {
-        self.train.element_loads(&self.mesh, self.position(time))
+        self.train.element_loads(&self.beam, self.position(time))
     }
 
     /// `f` of the element loads at `time`, from the cache when that time was asked for last or the time before.

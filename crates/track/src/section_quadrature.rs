@@ -5,7 +5,6 @@
 
 use crate::error::{Result, TrackError};
 use fem_beam::BeamModel;
-use fem_beam::element::hermite;
 use friction::InteractionRow;
 
 use fem_beam::distributed::section_places;
@@ -31,12 +30,11 @@ pub fn validate_subdivisions(field: &'static str, subdivisions: usize, quadratur
 /// ξ = 0 or 1).
 fn row_at(model: &BeamModel, e: usize, xi: f64) -> InteractionRow {
     let dofs = model.dofs();
-    let l = model.mesh().element_length();
     if xi == 0.0 || xi == 1.0 {
         let node = e + xi as usize;
         InteractionRow::from_entries(dofs.free_index(2 * node).map(|d| (d, 1.0)))
     } else {
-        let n = hermite::shape(xi, l);
+        let n = model.element().shape(xi);
         InteractionRow::from_entries((0..4).filter_map(|k| dofs.free_index(2 * e + k).map(|d| (d, n[k]))))
     }
 }

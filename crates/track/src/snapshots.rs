@@ -120,9 +120,10 @@ impl<'a> SnapshotTaker<'a> {
             view.velocity.iter().zip(view.previous_velocity).map(|(a, b)| (a - b) / self.step).collect();
         let a = dofs.expand(&mean);
         // The train where the step left its first axle (the position the view reports).
-        let mut loads = self.train.load_vector(&mesh, view.load_position);
+        let beam = model.discretisation();
+        let mut loads = self.train.load_vector(&beam, view.load_position);
         for (&x, &p) in self.interactions.positions().iter().zip(view.impulses) {
-            loads.add_point_force(&mesh, x, p / self.step)?;
+            loads.add_point_force(&beam, x, p / self.step)?;
         }
         let moments = model.nodal_moments(&q, &loads, Motion { velocity: Some(&v), acceleration: Some(&a) })?;
         Ok(Snapshot {

@@ -34,7 +34,7 @@ pub fn static_envelope(
     advance: f64,
     nodes: Option<(f64, f64)>,
 ) -> Result<StaticEnvelope> {
-    let mesh = model.mesh();
+    let (mesh, beam) = (model.mesh(), model.discretisation());
     let span = mesh.length + train.length();
     let positions = (span / advance).ceil() as usize + 1;
     if !(advance.is_finite() && advance > 0.0) || positions > MAX_POSITIONS {
@@ -57,7 +57,7 @@ pub fn static_envelope(
     let mut envelope = StaticEnvelope::default();
     for i in 0..positions {
         let head = (i as f64 * advance).min(span);
-        let mut q = train.load_vector(mesh, head).to_free(mesh, dofs);
+        let mut q = train.load_vector(&beam, head).to_free(mesh, dofs);
         match &factor {
             Some(factor) => factor.solve_in_place(&mut q),
             None => q = static_deflection(model, placed, &q)?,

@@ -50,7 +50,7 @@ fn allocations_in_steps(interactions: &PlacedInteractions, kind: SolverKind) -> 
     let system = beam_system(&model);
     let integration = Integration { theta, step: h };
     let settings = SolverSettings { kind, ..SolverSettings::default() };
-    let load = MovingLoad::new(*model.mesh(), model.dofs(), 83.4e3, speed, 0.0);
+    let load = MovingLoad::new(&model, 83.4e3, speed, 0.0);
     let n = system.dofs();
     let (q0, v0) = (vec![0.0; n], vec![0.0; n]);
     let mut stepper =

@@ -16,6 +16,7 @@ mod runs {
     mod span;
     mod steady_state;
     mod time_step;
+    mod timoshenko_rail;
     mod trains;
     mod vehicles_in_runs;
     mod vehicles_in_trains;

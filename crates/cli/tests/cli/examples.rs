@@ -30,6 +30,36 @@ fn the_feature_examples_run_from_anywhere() {
     let patches = run_elsewhere("axles-and-patches.toml", &[]);
     assert_eq!((patches["train"]["axles"].as_u64(), patches["train"]["patches"].as_u64()), (Some(4), Some(1)));
     assert_eq!(patches["axle_share"]["carries"], "whole-axle");
+    // A Timoshenko rail: said so, with a critical speed below Euler–Bernoulli's 205.57 m/s (its header); shear
+    // changes the deflection by a fraction of a percent against the same track with an Euler–Bernoulli rail.
+    let timoshenko = run_elsewhere("timoshenko-rail.toml", &[]);
+    assert_eq!(timoshenko["rail_theory"], "Timoshenko (G = 81 GPa, κ = 0.4)");
+    assert!(timoshenko["critical_speed"].as_f64().unwrap() < 205.57);
+    let euler = json(
+        &std::process::Command::new(env!("CARGO_BIN_EXE_frictrack"))
+            .args(["run", "--elements", "800", "--damping-ratio", "0.05", "--speed", "150", "--format", "json"])
+            .output()
+            .unwrap(),
+    );
+    let (t, e) = (
+        timoshenko["max_downward_deflection"]["value"].as_f64().unwrap(),
+        euler["max_downward_deflection"]["value"].as_f64().unwrap(),
+    );
+    assert!(t > e && t < 1.01 * e, "Timoshenko {t} vs Euler–Bernoulli {e}");
+    // The receptance example: one resonance, the rail on its soil near √(k_f/ρA)/2π = 10.3 Hz, and above it the
+    // phase of a rail whose bending waves carry the force away (−135° for bending, −90° for shear: at 1 kHz the
+    // Timoshenko rail is between them).
+    let receptance = json(
+        &std::process::Command::new(env!("CARGO_BIN_EXE_frictrack"))
+            .args(["receptance", &example("receptance.toml"), "--frequencies", "2:1000:2", "--format", "json"])
+            .output()
+            .unwrap(),
+    );
+    let peaks = receptance["resonances"].as_array().unwrap();
+    assert_eq!(peaks.len(), 1, "{peaks:?}");
+    assert!((peaks[0]["frequency"].as_f64().unwrap() - 10.3).abs() < 0.5, "{peaks:?}");
+    let last = receptance["points"].as_array().unwrap().last().unwrap()["phase"].as_f64().unwrap();
+    assert!((-130.0..-100.0).contains(&last), "{last}");
     // A tensionless soil: the rail lifts off it at 100 m/s.
     let soil = run_elsewhere("tensionless-soil.toml", &[]);
     assert_eq!(soil["soil"]["law"], "tensionless");

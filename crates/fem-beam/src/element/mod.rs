@@ -61,6 +61,22 @@ impl Element {
         }
     }
 
+    /// ∫ N_w dx over [ξ₀, ξ₁]: the consistent loads of a unit uniform load on that part of the element.
+    pub fn shape_integral(&self, xi0: f64, xi1: f64) -> ElementVector {
+        match *self {
+            Element::Hermite { length } => hermite::shape_integral(xi0, xi1, length),
+            Element::Timoshenko { length, phi } => timoshenko::shape_integral(xi0, xi1, length, phi),
+        }
+    }
+
+    /// The rotation row θ(ξ), work-conjugate to a point moment: w′ (Euler–Bernoulli), ψ (Timoshenko).
+    pub fn rotation(&self, xi: f64) -> ElementVector {
+        match *self {
+            Element::Hermite { length } => hermite::shape_dx(xi, length),
+            Element::Timoshenko { length, phi } => timoshenko::rotation(xi, length, phi),
+        }
+    }
+
     /// The curvature row κ(ξ) = dθ/dx (w″ for Euler–Bernoulli, ψ′ for Timoshenko): the bending moment is EI·κ·q.
     pub fn curvature(&self, xi: f64) -> ElementVector {
         match *self {

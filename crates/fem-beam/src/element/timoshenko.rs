@@ -51,6 +51,25 @@ pub fn shape_dx(xi: f64, l: f64, phi: f64) -> ElementVector {
     ]
 }
 
+/// ∫ N_w dx over the part [ξ₀, ξ₁] of the element (m for w, m² for ψ): the consistent nodal loads of a unit uniform
+/// load there, l·(A(ξ₁) − A(ξ₀)) with the antiderivatives in ξ A₁ = (ξ⁴/2 − ξ³ − φξ²/2 + (1+φ)ξ)/(1+φ),
+/// A₂ = l(ξ⁴/4 − (2 + φ/2)ξ³/3 + (1 + φ/2)ξ²/2)/(1+φ), A₃ = (−ξ⁴/2 + ξ³ + φξ²/2)/(1+φ),
+/// A₄ = l(ξ⁴/4 − (1 − φ/2)ξ³/3 − φξ²/4)/(1+φ); over the whole element (l/2, l²/12, l/2, −l²/12), as Hermite's.
+pub fn shape_integral(xi0: f64, xi1: f64, l: f64, phi: f64) -> ElementVector {
+    let d = 1.0 + phi;
+    let antiderivative = |x: f64| {
+        let (x2, x3, x4) = (x * x, x * x * x, x * x * x * x);
+        [
+            (0.5 * x4 - x3 - 0.5 * phi * x2 + d * x) / d,
+            l * (0.25 * x4 - (2.0 + 0.5 * phi) * x3 / 3.0 + 0.5 * (1.0 + 0.5 * phi) * x2) / d,
+            (-0.5 * x4 + x3 + 0.5 * phi * x2) / d,
+            l * (0.25 * x4 - (1.0 - 0.5 * phi) * x3 / 3.0 - 0.25 * phi * x2) / d,
+        ]
+    };
+    let (a, b) = (antiderivative(xi0), antiderivative(xi1));
+    std::array::from_fn(|k| l * (b[k] - a[k]))
+}
+
 /// N_ψ(ξ): the cross-section rotation's shape functions (1/m for w, dimensionless for ψ).
 pub fn rotation(xi: f64, l: f64, phi: f64) -> ElementVector {
     let (x2, d) = (xi * xi, 1.0 + phi);
@@ -171,6 +190,23 @@ mod tests {
         }
         assert_close(&stiffness(ei, l, 0.0), &hermite::bending_stiffness(ei, l), "K at φ = 0");
         assert_close(&translational_mass(rho_a, l, 0.0), &hermite::consistent_mass(rho_a, l), "M at φ = 0");
+    }
+
+    /// The partial integrals of N_w are Simpson's rule on [ξ₀, ξ₁] (exact for cubics), and the whole element's is
+    /// the uniform load (l/2, l²/12, l/2, −l²/12) whatever φ.
+    #[test]
+    fn shape_integrals_are_the_integrals_of_the_shapes() {
+        let (l, phi) = (0.25, 5.0);
+        let (a, b) = (0.2, 0.7);
+        let exact = shape_integral(a, b, l, phi);
+        let (n0, n1, n2) = (shape(a, l, phi), shape(0.5 * (a + b), l, phi), shape(b, l, phi));
+        for k in 0..4 {
+            let simpson = (b - a) * l / 6.0 * (n0[k] + 4.0 * n1[k] + n2[k]);
+            assert!((exact[k] - simpson).abs() < 1e-15, "{k}: {} vs {simpson}", exact[k]);
+        }
+        let whole = shape_integral(0.0, 1.0, l, phi);
+        let uniform = hermite::uniform_load(1.0, l);
+        assert!((0..4).all(|k| (whole[k] - uniform[k]).abs() < 1e-15), "{whole:?}");
     }
 
     /// The shape functions interpolate the nodal values (w and ψ at both ends), the slope minus the rotation is the

@@ -35,6 +35,6 @@ fn free_free_beam_without_foundation_has_two_zero_modes() {
     // Hermite frequency error ≈ (β₁l)⁴/… with β₁l = 0.2365: ~1e-5.
     assert!(err < 1e-4, "first flexible mode {} vs {exact} ({err:e})", values[2].sqrt());
     // A static solve has no unique answer: a typed error, not a panic.
-    let load = fem_beam::LoadVector::point_force(&mesh, 3.0, 1.0).unwrap();
+    let load = fem_beam::LoadVector::point_force(&model.discretisation(), 3.0, 1.0).unwrap();
     assert!(matches!(model.static_solve(&load), Err(fem_beam::FemError::NonPositivePivot { .. })));
 }

@@ -1,7 +1,7 @@
 //! Bad input returns a typed error naming the field — never a panic.
 
 use fem_beam::reference::uic60_on_soft_soil;
-use fem_beam::{Beam, BeamModel, FemError, Foundation, LoadVector, Mesh};
+use fem_beam::{Beam, BeamModel, Discretisation, FemError, Foundation, LoadVector, Mesh};
 
 fn field_of(err: FemError) -> &'static str {
     match err {
@@ -34,10 +34,10 @@ fn bad_parameters_name_their_field() {
         (build(b, Foundation { law: bilinear(1.5), ..f }, m), "foundation.tension_ratio"),
         (build(b, Foundation { law: bilinear(-0.1), ..f }, m), "foundation.tension_ratio"),
         (build(b, Foundation { law: bilinear(f64::NAN), ..f }, m), "foundation.tension_ratio"),
-        (LoadVector::point_force(&m, 200.5, 1.0).unwrap_err(), "position"),
-        (LoadVector::point_force(&m, -0.1, 1.0).unwrap_err(), "position"),
-        (LoadVector::point_force(&m, f64::NAN, 1.0).unwrap_err(), "position"),
-        (LoadVector::point_force(&m, 3.0, f64::NAN).unwrap_err(), "force"),
+        (LoadVector::point_force(&Discretisation::euler_bernoulli(m), 200.5, 1.0).unwrap_err(), "position"),
+        (LoadVector::point_force(&Discretisation::euler_bernoulli(m), -0.1, 1.0).unwrap_err(), "position"),
+        (LoadVector::point_force(&Discretisation::euler_bernoulli(m), f64::NAN, 1.0).unwrap_err(), "position"),
+        (LoadVector::point_force(&Discretisation::euler_bernoulli(m), 3.0, f64::NAN).unwrap_err(), "force"),
         (f.with_damping_ratio(-0.1, &b).unwrap_err(), "foundation.damping_ratio"),
     ];
     for (err, field) in cases {

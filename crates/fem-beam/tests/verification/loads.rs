@@ -2,7 +2,7 @@
 
 use fem_beam::element::hermite;
 use fem_beam::reference::uic60_on_soft_soil;
-use fem_beam::{Beam, BeamModel, Foundation, LoadVector, Mesh, Support, Supports};
+use fem_beam::{Beam, BeamModel, Discretisation, Foundation, LoadVector, Mesh, Support, Supports};
 
 #[test]
 fn uniform_load_sums_to_total() {
@@ -21,8 +21,9 @@ fn uniform_load_sums_to_total() {
 #[test]
 fn point_load_on_a_node_is_counted_once() {
     let mesh = Mesh::new(200.0, 200).unwrap();
+    let beam = Discretisation::euler_bernoulli(mesh);
     for x in [0.0, 50.0, 100.0, 200.0, 100.3] {
-        let load = LoadVector::point_force(&mesh, x, -83.4e3).unwrap();
+        let load = LoadVector::point_force(&beam, x, -83.4e3).unwrap();
         assert_eq!(load.contributions().len(), 1);
         assert!((load.total_force() + 83.4e3).abs() < 1e-9, "x = {x}");
         let full = load.to_full(&mesh);
@@ -32,7 +33,7 @@ fn point_load_on_a_node_is_counted_once() {
         let moment: f64 = (0..mesh.nodes()).map(|i| full[2 * i] * mesh.node_x(i) + full[2 * i + 1]).sum();
         assert!((moment + 83.4e3 * x).abs() < 1e-6 * 83.4e3 * 200.0);
     }
-    let on_node = LoadVector::point_force(&mesh, 100.0, 1.0).unwrap().to_full(&mesh);
+    let on_node = LoadVector::point_force(&beam, 100.0, 1.0).unwrap().to_full(&mesh);
     assert_eq!(on_node[200], 1.0);
     assert_eq!(on_node.iter().filter(|v| **v != 0.0).count(), 1);
 }
@@ -40,8 +41,9 @@ fn point_load_on_a_node_is_counted_once() {
 #[test]
 fn point_moment_is_a_pure_couple() {
     let mesh = Mesh::new(10.0, 10).unwrap();
+    let beam = Discretisation::euler_bernoulli(mesh);
     let mut load = LoadVector::new();
-    load.add_point_moment(&mesh, 3.7, 250.0).unwrap();
+    load.add_point_moment(&beam, 3.7, 250.0).unwrap();
     let full = load.to_full(&mesh);
     let force: f64 = full.iter().step_by(2).sum();
     let moment: f64 = (0..mesh.nodes()).map(|i| full[2 * i] * mesh.node_x(i) + full[2 * i + 1]).sum();
@@ -106,9 +108,10 @@ fn assembled_matrices_are_positive_definite_for_every_support() {
 #[test]
 fn patch_loads_are_the_limit_of_point_loads() {
     let mesh = Mesh::new(20.0, 20).unwrap();
+    let beam = Discretisation::euler_bernoulli(mesh);
     let q = -2.5e4;
     let mut whole = LoadVector::new();
-    whole.add_patch(&mesh, 4.0, 6.0, q).unwrap();
+    whole.add_patch(&beam, 4.0, 6.0, q).unwrap();
     assert_eq!(whole.contributions().len(), 2);
     for c in whole.contributions() {
         for (a, b) in c.nodal.iter().zip(hermite::uniform_load(q, 1.0)) {
@@ -117,7 +120,7 @@ fn patch_loads_are_the_limit_of_point_loads() {
     }
     let (a, b) = (3.3, 7.85);
     let mut patch = LoadVector::new();
-    patch.add_patch(&mesh, a, b, q).unwrap();
+    patch.add_patch(&beam, a, b, q).unwrap();
     let exact = patch.to_full(&mesh);
     assert!((patch.total_force() - q * (b - a)).abs() <= 1e-12 * (q * (b - a)).abs());
     let mut errors = Vec::new();
@@ -125,7 +128,7 @@ fn patch_loads_are_the_limit_of_point_loads() {
         let mut points = LoadVector::new();
         let width = (b - a) / n as f64;
         for i in 0..n {
-            points.add_point_force(&mesh, a + (i as f64 + 0.5) * width, q * width).unwrap();
+            points.add_point_force(&beam, a + (i as f64 + 0.5) * width, q * width).unwrap();
         }
         let approx = points.to_full(&mesh);
         let scale = exact.iter().fold(0.0f64, |m, x| m.max(x.abs()));
@@ -136,9 +139,9 @@ fn patch_loads_are_the_limit_of_point_loads() {
     }
     // Off the beam: only the covered part counts.
     let mut hanging = LoadVector::new();
-    hanging.add_patch(&mesh, 18.5, 25.0, q).unwrap();
+    hanging.add_patch(&beam, 18.5, 25.0, q).unwrap();
     assert!((hanging.total_force() - q * 1.5).abs() <= 1e-12 * (q * 1.5).abs());
     let mut missing = LoadVector::new();
-    missing.add_patch(&mesh, 21.0, 25.0, q).unwrap();
+    missing.add_patch(&beam, 21.0, 25.0, q).unwrap();
     assert!(missing.contributions().is_empty());
 }

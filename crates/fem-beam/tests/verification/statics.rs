@@ -14,7 +14,7 @@ fn midspan_point_load_matches_infinite_beam() {
     let case = uic60_on_soft_soil();
     let model = case.model().unwrap();
     let inf = case.infinite_beam().unwrap();
-    let load = LoadVector::point_force(&case.mesh, 100.0, -case.load).unwrap();
+    let load = LoadVector::point_force(&model.discretisation(), 100.0, -case.load).unwrap();
     let q = model.static_solve(&load).unwrap();
     let w = model.deflection_at(&q, 100.0).unwrap();
     let w0 = inf.static_deflection(case.load);
@@ -47,7 +47,7 @@ fn cantilever_nodal_values_are_exact() {
     let ei = beam.bending_stiffness();
 
     let p = 1000.0;
-    let load = LoadVector::point_force(&mesh, length, p).unwrap();
+    let load = LoadVector::point_force(&model.discretisation(), length, p).unwrap();
     let q = model.static_solve(&load).unwrap();
     let tip = model.deflection_at(&q, length).unwrap();
     assert!(rel(tip, p * length.powi(3) / (3.0 * ei)) < 1e-12);
@@ -83,7 +83,7 @@ fn non_nodal_load_converges_with_refinement() {
         .map(|&elements| {
             let mesh = Mesh::new(case.mesh.length, elements).unwrap();
             let model = BeamModel::new(case.beam, case.foundation, mesh, case.supports).unwrap();
-            let load = LoadVector::point_force(&mesh, x, -case.load).unwrap();
+            let load = LoadVector::point_force(&model.discretisation(), x, -case.load).unwrap();
             let q = model.static_solve(&load).unwrap();
             (model.deflection_at(&q, x).unwrap() + w0).abs() / w0
         })
@@ -113,7 +113,7 @@ fn a_standing_train_is_the_sum_of_closed_form_shapes() {
         patches: Vec::new(),
     };
     let head = 110.0;
-    let q = model.static_solve(&train.load_vector(model.mesh(), head)).unwrap();
+    let q = model.static_solve(&train.load_vector(&model.discretisation(), head)).unwrap();
     let closed = |x: f64| -> f64 {
         train
             .axles
@@ -148,7 +148,7 @@ fn a_standing_train_on_a_span_matches_the_beam_formula() {
         patches: Vec::new(),
     };
     let head = 22.0;
-    let q = model.static_solve(&train.load_vector(&mesh, head)).unwrap();
+    let q = model.static_solve(&train.load_vector(&model.discretisation(), head)).unwrap();
     let formula = |x: f64| -> f64 {
         train
             .axles

@@ -23,8 +23,9 @@ from . import _native
 from ._tables import Table, parse_csv
 
 __all__ = [
-    "COLUMNS", "InputError", "Run", "Stationary", "Study", "Sweep", "Table", "analytic", "override_names",
-    "override_table", "run", "stationary", "study", "sweep", "track_profile", "train", "trains", "__version__",
+    "COLUMNS", "InputError", "Receptance", "Run", "Stationary", "Study", "Sweep", "Table", "analytic",
+    "override_names", "override_table", "receptance", "run", "stationary", "study", "sweep", "track_profile", "train",
+    "trains", "__version__",
 ]
 
 InputError = _native.InputError
@@ -285,6 +286,44 @@ def study(name: str, scenario: ScenarioLike = None, resolution: str = "coarse", 
         name, kind, text, resolution, int(jobs or 0), deck_track, list(overrides.items())
     )
     return Study(name, json.loads(summary), parse_csv(table, dict(columns)), list(headline), list(lines))
+
+
+class Receptance:
+    """The track's receptance over frequency (``frictrack receptance``): ``table`` one row per frequency
+    (frequency Hz, real, imaginary and magnitude of α in m/N, phase in degrees, mobility in m/(s·N)),
+    ``resonances`` the peaks of |α| (frequency refined between the grid's, magnitude, prominence), ``summary`` the
+    whole JSON (place, kind, rail, loss factors), ``warnings`` (a mesh too coarse, waves back from the ends) and
+    ``report`` the text the command line prints (also ``str()``)."""
+
+    def __init__(self, summary: Dict[str, Any], table: Table, report: str, warnings: "list[str]") -> None:
+        self.summary = summary
+        self.table = table
+        self.resonances: "list[Dict[str, Any]]" = summary["resonances"]
+        self.report = report
+        self.warnings = warnings
+
+    def __str__(self) -> str:
+        return self.report
+
+
+def receptance(scenario: ScenarioLike = None, frequencies: Sequence[float] = (), at: Optional[float] = None,
+               excite: Optional[float] = None, jobs: Optional[int] = None,
+               out: "str | os.PathLike[str] | None" = None, **overrides: Any) -> Receptance:
+    """The receptance α = w(at)/F (m/N) of the scenario's track for a harmonic force at ``excite`` (m; default
+    ``at``, the point receptance; ``at`` defaults to mid-track) at each of ``frequencies`` (Hz, > 0, increasing),
+    from the same model as a run — Euler–Bernoulli or Timoshenko rail, viscous damping and the loss factors of
+    ``[beam]`` and ``[foundation]`` — one complex banded solve per frequency on ``jobs`` threads. A linear
+    foundation only. ``out`` (a folder) receives receptance.csv, receptance.json and the figure. Overrides as for
+    :func:`run`."""
+    kind, text = _source(scenario)
+    summary, table, report, warnings = _native.receptance(
+        kind, text, [float(f) for f in frequencies], None if at is None else float(at),
+        None if excite is None else float(excite), int(jobs or 0), list(overrides.items()),
+        None if out is None else os.fspath(out),
+    )
+    for warning in warnings:
+        _warnings.warn(warning, stacklevel=2)
+    return Receptance(json.loads(summary), parse_csv(table, COLUMNS["receptance"]), report, list(warnings))
 
 
 def train(name: str) -> Dict[str, Any]:

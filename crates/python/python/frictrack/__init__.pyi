@@ -161,3 +161,26 @@ def override_table() -> List[Tuple[str, str, str, str]]:
 
 def override_names() -> List[str]:
     """The keyword overrides `run` and `sweep` take."""
+
+class Receptance:
+    """The track's receptance over frequency: `table` (frequency Hz, real/imaginary/magnitude of α m/N, phase deg,
+    mobility m/(s·N)), `resonances` (refined peaks of |α|), `summary` (the JSON), `warnings`, `report` (the text of
+    `frictrack receptance`; also `str()`)."""
+
+    summary: Dict[str, Any]
+    table: Table
+    resonances: List[Dict[str, Any]]
+    report: str
+    warnings: List[str]
+
+def receptance(
+    scenario: ScenarioLike = None,
+    frequencies: Sequence[float] = ...,
+    at: Optional[float] = None,
+    excite: Optional[float] = None,
+    jobs: Optional[int] = None,
+    out: Union[str, os.PathLike[str], None] = None,
+    **overrides: Any,
+) -> Receptance:
+    """`frictrack receptance`: α = w(at)/F (m/N) at each frequency (Hz) for a force at `excite` (default `at`, the
+    point receptance; `at` defaults to mid-track), from the scenario's own model; warnings as UserWarning."""

@@ -89,7 +89,8 @@ impl<'a> Simulation<'a> {
                 // K q = f of the loads standing there (the vehicles' static wheel loads with vehicles), with the
                 // springs of a nonlinear foundation's sections where it has them.
                 let mesh = self.model.mesh();
-                let mut q = self.settings.moving.load.train().load_vector(mesh, position).to_free(mesh, dofs);
+                let beam = self.model.discretisation();
+                let mut q = self.settings.moving.load.train().load_vector(&beam, position).to_free(mesh, dofs);
                 if self.model.foundation().law.is_linear() {
                     self.model.stiffness().factor()?.solve_in_place(&mut q);
                 } else {

@@ -10,7 +10,6 @@ use crate::moving_load::MovingLoad;
 use crate::placed::PlacedInteractions;
 use fem_beam::BeamModel;
 use fem_beam::Extreme;
-use fem_beam::element::hermite;
 use fem_beam::section::Motion;
 use nscd::solver::StepReport;
 
@@ -117,7 +116,7 @@ pub(super) struct SectionRecords<'a> {
 impl<'a> SectionRecords<'a> {
     /// Recorders at `sections` (m) of `model` with friction `interactions`, their series reserved for `steps` steps.
     pub(super) fn new(model: &'a BeamModel, interactions: &PlacedInteractions, sections: &[f64], steps: usize) -> Self {
-        let mesh = model.mesh();
+        let (mesh, beam) = (model.mesh(), model.discretisation());
         let recorders = sections
             .iter()
             .map(|&x| {
@@ -135,7 +134,7 @@ impl<'a> SectionRecords<'a> {
                 ] {
                     series.reserve(steps + 1);
                 }
-                Recorder { position: x, node, inside: inside_sections(mesh, interactions, node), contact, history }
+                Recorder { position: x, node, inside: inside_sections(&beam, interactions, node), contact, history }
             })
             .collect();
         Self { model, recorders, full: Buffers::new(model.dofs().full_len()) }
@@ -176,7 +175,12 @@ impl Record for SectionRecords<'_> {
 }
 
 /// The friction sections strictly inside the elements next to `node`, with their shape functions there.
-fn inside_sections(mesh: &fem_beam::Mesh, interactions: &PlacedInteractions, node: usize) -> Vec<InsideSection> {
+fn inside_sections(
+    beam: &fem_beam::Discretisation,
+    interactions: &PlacedInteractions,
+    node: usize,
+) -> Vec<InsideSection> {
+    let (mesh, element_shape) = (beam.mesh(), beam.element());
     let l = mesh.element_length();
     let elements = [node.wrapping_sub(1), node].into_iter().filter(|&e| e < mesh.elements);
     let inside = |(contact, &xs): (usize, &f64)| {
@@ -185,7 +189,7 @@ fn inside_sections(mesh: &fem_beam::Mesh, interactions: &PlacedInteractions, nod
             (xs > x_a && xs < x_a + l).then(|| InsideSection {
                 element,
                 contact,
-                shape: hermite::shape((xs - x_a) / l, l),
+                shape: element_shape.shape((xs - x_a) / l),
             })
         })
     };

@@ -58,7 +58,7 @@ impl Simulation<'_> {
         } else {
             settings.moving.load.train()
         };
-        let load = MovingLoad::train(mesh, model.dofs(), train, settings.moving.speed, start);
+        let load = MovingLoad::train(model, train, settings.moving.speed, start);
         let solver = SolverSettings { kind, ..settings.integration.solver };
         let fixed = self.interactions.interactions().clone();
         let (stepper, weights, vehicles) = match coupling {

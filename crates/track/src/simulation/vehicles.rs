@@ -216,11 +216,9 @@ impl VehicleObserver {
         impulses: &'a [f64],
         h: f64,
     ) -> impl Iterator<Item = (usize, [f64; 4])> + 'a {
-        let mesh = *model.mesh();
-        let l = mesh.element_length();
+        let beam = model.discretisation();
         impulses.iter().enumerate().filter_map(move |(i, &p)| {
-            let point = mesh.locate(self.position(i, time)).ok()?;
-            let n = fem_beam::element::hermite::shape(point.xi, l);
+            let (point, n) = beam.shape_at(self.position(i, time)).ok()?;
             Some((point.element, n.map(|n| -p / h * n)))
         })
     }

@@ -18,8 +18,7 @@
 //! positions projected after each step ([`nscd::position`]), whose strain-energy change — the drift's spurious work,
 //! O(h) over a run — the energy ledger books apart.
 
-use fem_beam::element::hermite::{shape, shape_dx, shape_dxx};
-use fem_beam::{BeamModel, Mesh};
+use fem_beam::{BeamModel, Discretisation};
 use friction::{InteractionKind, InteractionRow, Law};
 use irregularity::WheelTrack;
 use nscd::{MovingInteraction, MovingState};
@@ -52,10 +51,11 @@ pub struct WheelOnBeam {
 /// The beam under a point: (system DOFs of its element's four DOFs, Ψ, Ψ′), or None off the beam.
 type Under = ([Option<usize>; 4], [f64; 4], [f64; 4]);
 
-/// Points of the rail read from the system's state: the element under x, its system DOFs and Hermite shapes.
+/// Points of the rail read from the system's state: the element under x, its system DOFs and the shape functions of
+/// the beam's element there.
 #[derive(Debug, Clone)]
 pub(crate) struct RailPoints {
-    mesh: Mesh,
+    beam: Discretisation,
     /// System DOF of each full beam DOF (None where a support fixes it).
     beam_dofs: Vec<Option<usize>>,
 }
@@ -65,27 +65,29 @@ impl RailPoints {
     pub(crate) fn new(model: &BeamModel, beam_offset: usize) -> Self {
         let dofs = model.dofs();
         let beam_dofs = (0..dofs.full_len()).map(|d| dofs.free_index(d).map(|f| beam_offset + f)).collect();
-        Self { mesh: *model.mesh(), beam_dofs }
+        Self { beam: model.discretisation(), beam_dofs }
     }
 
-    /// The system DOFs of the element under `x`, its local coordinate ξ ∈ [0, 1] and its length l (m); None off
-    /// the beam.
-    fn element_at(&self, x: f64) -> Option<([Option<usize>; 4], f64, f64)> {
-        let point = self.mesh.locate(x).ok()?;
+    /// The system DOFs of the element under `x` and its local coordinate ξ ∈ [0, 1]; None off the beam.
+    fn element_at(&self, x: f64) -> Option<([Option<usize>; 4], f64)> {
+        let point = self.beam.mesh().locate(x).ok()?;
         let dofs = [0, 1, 2, 3].map(|i| self.beam_dofs[2 * point.element + i]);
-        Some((dofs, point.xi, self.mesh.element_length()))
+        Some((dofs, point.xi))
     }
 
     /// The element's DOFs and Ψ, Ψ′ at `x`, None off the beam.
     fn under(&self, x: f64) -> Option<Under> {
-        let (dofs, xi, l) = self.element_at(x)?;
-        Some((dofs, shape(xi, l), shape_dx(xi, l)))
+        let (dofs, xi) = self.element_at(x)?;
+        let element = self.beam.element();
+        Some((dofs, element.shape(xi), element.shape_dx(xi)))
     }
 
-    /// (w, w″) of the rail at `x` from the system's displacement `q` (m, 1/m), None off the beam.
+    /// (w, κ) of the rail at `x` from the system's displacement `q` (m, 1/m): the deflection and the curvature
+    /// whose EI-fold is the bending moment (w″, or ψ′ for a Timoshenko rail); None off the beam.
     pub(crate) fn deflection_curvature(&self, q: &[f64], x: f64) -> Option<(f64, f64)> {
-        let (dofs, xi, l) = self.element_at(x)?;
-        let (n, ddn) = (shape(xi, l), shape_dxx(xi, l));
+        let (dofs, xi) = self.element_at(x)?;
+        let element = self.beam.element();
+        let (n, ddn) = (element.shape(xi), element.curvature(xi));
         Some((combine(&dofs, &n, q), combine(&dofs, &ddn, q)))
     }
 }

@@ -13,13 +13,7 @@ fn dense_theta_method(model: &fem_beam::BeamModel, settings: &RunSettings) -> Ve
     let (m, c, k) = (model.mass().to_dense(), model.damping().to_dense(), model.stiffness().to_dense());
     let (h, theta) = (settings.integration.load_advance / settings.moving.speed, settings.integration.theta);
     let lhs = (&m + &c * (h * theta) + &k * (h * h * theta * theta)).lu();
-    let load = MovingLoad::new(
-        *model.mesh(),
-        model.dofs(),
-        settings.moving.load.train().axles[0].force,
-        settings.moving.speed,
-        0.0,
-    );
+    let load = MovingLoad::new(model, settings.moving.load.train().axles[0].force, settings.moving.speed, 0.0);
     let n = m.nrows();
     let steps = (model.mesh().length / settings.integration.load_advance).round() as usize;
     let (mut q, mut v) = (DVector::zeros(n), DVector::zeros(n));

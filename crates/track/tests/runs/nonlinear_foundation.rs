@@ -35,7 +35,8 @@ fn a_soil_the_rail_never_leaves_is_the_linear_foundation() {
     let laws = [FoundationLaw::Tensionless, FoundationLaw::Bilinear { tension_ratio: 0.5 }];
     let linear = model(FoundationLaw::Linear, 200.0, 200, Supports::default());
     // At rest: a 5 kN load standing at 70 m, deflections relative to the settled rail.
-    let load = LoadVector::point_force(linear.mesh(), 70.0, -5e3).unwrap().to_free(linear.mesh(), linear.dofs());
+    let load =
+        LoadVector::point_force(&linear.discretisation(), 70.0, -5e3).unwrap().to_free(linear.mesh(), linear.dofs());
     let mut reference = load.clone();
     linear.stiffness().factor().unwrap().solve_in_place(&mut reference);
     let light = run(&linear, &PlacedInteractions::new(), 5e3, 100.0);
@@ -107,7 +108,7 @@ fn static_tensionless_contact_against_the_closed_form() {
     let m = model(FoundationLaw::Tensionless, 100.0, 400, Supports::both(Support::Free));
     let sections = FoundationSections { self_weight: false, ..Default::default() }.interactions(&m).unwrap();
     assert!(sections.preload().is_empty());
-    let load = LoadVector::point_force(m.mesh(), 50.0, -p).unwrap().to_free(m.mesh(), m.dofs());
+    let load = LoadVector::point_force(&m.discretisation(), 50.0, -p).unwrap().to_free(m.mesh(), m.dofs());
     let q = static_deflection(&m, &sections, &load).unwrap();
     let full = m.dofs().expand(&q);
     let w0 = m.deflection_at(&full, 50.0).unwrap();

@@ -40,13 +40,7 @@ fn same_state_difference(
     let mut solver_b = build_solver(b, &checking, &whole).unwrap();
     let (q0, v0) = Simulation::new(&model, interactions, settings).unwrap().initial_state().unwrap();
     let start = settings.start_position();
-    let load = MovingLoad::new(
-        *model.mesh(),
-        model.dofs(),
-        settings.moving.load.train().axles[0].force,
-        settings.moving.speed,
-        start,
-    );
+    let load = MovingLoad::new(&model, settings.moving.load.train().axles[0].force, settings.moving.speed, start);
     let n = system.dofs();
     let stepping = SolverSettings { kind: a, ..settings.integration.solver };
     let mut stepper = MoreauJean::build(&system, set.clone(), integration, &stepping, q0, v0).unwrap();

@@ -1,0 +1,69 @@
+//! `frictrack receptance`: the files it writes, its JSON and CSV, its warnings, bad flags named with exit code 2.
+
+use super::{frictrack, json, temporary_folder};
+
+#[test]
+fn receptance_writes_its_table_json_and_figure() {
+    let folder = temporary_folder("receptance");
+    let file = folder.join("track.toml");
+    std::fs::write(
+        &file,
+        "[mesh]\nelements = 1600\n[foundation]\ndamping_ratio = 0.1\nloss_factor = 0.2\n\
+         [foundation.absorbing_zones]\nlength = 40.0\n[beam]\nloss_factor = 0.02\n",
+    )
+    .unwrap();
+    let (path, out) = (file.to_str().unwrap(), folder.join("out"));
+    let v = json(&frictrack(&[
+        "receptance",
+        path,
+        "--frequencies",
+        "1:100:1",
+        "--format",
+        "json",
+        "--out",
+        out.to_str().unwrap(),
+    ]));
+    assert_eq!(v["kind"], "point");
+    assert_eq!(v["points"].as_array().unwrap().len(), 100);
+    let resonance = v["resonances"][0]["frequency"].as_f64().unwrap();
+    assert!((9.5..10.5).contains(&resonance), "{resonance}");
+    for name in ["receptance.csv", "receptance.json", "receptance.png", "receptance.svg"] {
+        assert!(out.join(name).is_file(), "{name}");
+    }
+    let csv = frictrack(&[
+        "receptance",
+        path,
+        "--frequencies",
+        "10:12:1",
+        "--at",
+        "90",
+        "--excite",
+        "100",
+        "--format",
+        "csv",
+    ]);
+    let text = String::from_utf8_lossy(&csv.stdout);
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines[0], "frequency,real,imaginary,magnitude,phase,mobility");
+    assert_eq!(lines.len(), 5, "{text}");
+    assert!(lines[4].starts_with("# units (SI): frequency Hz"), "{text}");
+    // The reference track, undamped on pinned ends: the warnings say why its peaks are the finite beam's modes.
+    let undamped = frictrack(&["receptance", "--frequencies", "1:50:1"]);
+    let stderr = String::from_utf8_lossy(&undamped.stderr);
+    assert!(undamped.status.success() && stderr.contains("come back at up to"), "{stderr}");
+}
+
+#[test]
+fn bad_receptance_flags_are_named() {
+    for (args, named) in [
+        (vec!["--frequencies", "0:100:1"], "--frequencies = 0"),
+        (vec!["--frequencies", "10:100"], "--frequencies = 10:100"),
+        (vec!["--frequencies", "10:100:1", "--at", "500"], "--at = 500"),
+        (vec!["--frequencies", "10:100:1", "--excite", "-1"], "--excite = -1"),
+    ] {
+        let out = frictrack(&[&["receptance"], args.as_slice()].concat());
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
+        assert!(stderr.contains(named), "{args:?}: {stderr}");
+    }
+}

@@ -1,0 +1,85 @@
+//! The track's response to a harmonic force (docs/theory.md §17): receptance α(ω) = w(x)/F (m/N) and mobility
+//! iωα (m/s/N) at a place x for a unit force F e^{iωt} at a place x_F, from the model's own matrices:
+//!
+//! ```text
+//! (K_rail (1 + iη_r) + K_soil (1 + iη_f) + iω C − ω² M) q = f,     α = H(x) q
+//! ```
+//!
+//! with K_rail the beam's stiffness (bending, and shear for Timoshenko), K_soil the foundation's linear part, C every
+//! viscous term of the model (foundation dashpots, absorbing zones, Rayleigh), M the mass, η_r and η_f loss factors
+//! (hysteretic damping as the literature quotes it: `Beam::loss_factor`, `Foundation::loss_factor`), f = N_w(x_F)ᵀ the consistent load and H(x) the
+//! element's N_w there. One complex banded LU per frequency ([`banded::general`], partial pivoting).
+
+use crate::assembly::BeamModel;
+use crate::element::ElementMatrix;
+use crate::error::{FemError, Result};
+use banded::general::GeneralBanded;
+use num_complex::Complex64;
+
+/// The harmonic response of a model.
+#[derive(Debug, Clone, Copy)]
+pub struct FrequencyResponse<'a> {
+    model: &'a BeamModel,
+}
+
+impl<'a> FrequencyResponse<'a> {
+    /// The response of `model`, with the loss factors of its beam and foundation.
+    pub fn new(model: &'a BeamModel) -> Self {
+        Self { model }
+    }
+
+    /// The receptances (m/N) at each of `at` (m) for a unit force at `excite` (m) at circular frequency `omega`
+    /// (rad/s, ≥ 0). A singular dynamic stiffness (an undamped natural frequency hit exactly) is an error.
+    pub fn receptance(&self, omega: f64, excite: f64, at: &[f64]) -> Result<Vec<Complex64>> {
+        let model = self.model;
+        let beam = model.discretisation();
+        let dofs = model.dofs();
+        let (point, shape) = beam.shape_at(excite)?;
+        let mut rhs = vec![Complex64::new(0.0, 0.0); dofs.free_len()];
+        for (k, n) in shape.iter().enumerate() {
+            if let Some(d) = dofs.free_index(2 * point.element + k) {
+                rhs[d] += n;
+            }
+        }
+        let lu = self.dynamic_stiffness(omega).factor().map_err(|_| FemError::InvalidField {
+            field: "frequency",
+            value: omega / std::f64::consts::TAU,
+            allowed: "must not be an undamped natural frequency of the track (give it damping or a loss factor)",
+        })?;
+        lu.solve_in_place(&mut rhs);
+        at.iter()
+            .map(|&x| {
+                let (p, n) = beam.shape_at(x)?;
+                Ok((0..4).filter_map(|k| dofs.free_index(2 * p.element + k).map(|d| rhs[d] * n[k])).sum())
+            })
+            .collect()
+    }
+
+    /// D(ω) = K_rail(1 + iη_r) + K_soil(1 + iη_f) + iωC − ω²M over the free DOFs, element by element.
+    fn dynamic_stiffness(&self, omega: f64) -> GeneralBanded<Complex64> {
+        let model = self.model;
+        let (dofs, element) = (model.dofs(), model.element());
+        let rail = element.stiffness(model.beam().bending_stiffness());
+        let soil = element.distributed(model.foundation().tension_stiffness());
+        let mass = model.element_mass();
+        let band = crate::assembly::BANDWIDTH;
+        let mut out = GeneralBanded::zeros(dofs.free_len(), band, band);
+        let (rail_factor, soil_factor) =
+            (Complex64::new(1.0, model.beam().loss_factor), Complex64::new(1.0, model.foundation().loss_factor));
+        for e in 0..model.mesh().elements {
+            let damping: ElementMatrix = model.element_damping_matrix(e);
+            let free: [Option<usize>; 4] = std::array::from_fn(|k| dofs.free_index(2 * e + k));
+            for a in 0..4 {
+                for b in 0..4 {
+                    if let (Some(i), Some(j)) = (free[a], free[b]) {
+                        let value = rail_factor * rail[a][b]
+                            + soil_factor * soil[a][b]
+                            + Complex64::new(-omega * omega * mass[a][b], omega * damping[a][b]);
+                        out.add(i, j, value);
+                    }
+                }
+            }
+        }
+        out
+    }
+}

@@ -1,0 +1,175 @@
+//! The track's receptance over frequency (`frictrack receptance`, docs/theory.md §17): the point or transfer
+//! receptance α(f) = w(x)/F (m/N) of the scenario's track for a harmonic force at x_F, its mobility 2πf·|α|
+//! (m/s/N), magnitude and phase, one complex banded solve per frequency on the runner's threads; the resonances
+//! (local peaks of |α|) refined between the grid's frequencies; and what makes the numbers doubtful — a mesh too
+//! coarse for the top frequency, waves that reach the ends and come back.
+
+use fem_beam::receptance::FrequencyResponse;
+use num_complex::Complex64;
+use runner::Runner;
+use scenario::Scenario;
+use scenario::error::{Result, StudyError, invalid};
+use serde::Serialize;
+use std::f64::consts::TAU;
+
+/// Elements per bending wavelength below which the mesh is said not to resolve a frequency: 10 (Hermite's error is
+/// then below 1e-4 of |α|, the Timoshenko element's below 1 %; docs/theory.md §17).
+pub const ELEMENTS_PER_WAVELENGTH: f64 = 10.0;
+
+/// Reflections from the ends above this share of the outgoing wave are warned about (1 %).
+pub const REFLECTION_LIMIT: f64 = 0.01;
+
+/// The most frequencies one request may ask for (checked before anything is allocated).
+pub const MAX_FREQUENCIES: usize = 100_000;
+
+/// What to compute: frequencies (Hz, > 0, increasing), where the force acts and where the response is read (m).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ReceptanceRequest {
+    /// f (Hz).
+    pub frequencies: Vec<f64>,
+    /// x_F (m).
+    pub excite: f64,
+    /// x (m): equal to `excite` for the point receptance.
+    pub at: f64,
+}
+
+/// The receptance at one frequency.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ReceptancePoint {
+    /// f (Hz).
+    pub frequency: f64,
+    /// Re α (m/N).
+    pub real: f64,
+    /// Im α (m/N).
+    pub imaginary: f64,
+    /// |α| (m/N).
+    pub magnitude: f64,
+    /// arg α (degrees, in (−180, 180]): −90 and below is the response lagging the force.
+    pub phase: f64,
+    /// |iωα| = 2πf|α| (m/s/N).
+    pub mobility: f64,
+}
+
+impl ReceptancePoint {
+    fn of(frequency: f64, alpha: Complex64) -> Self {
+        Self {
+            frequency,
+            real: alpha.re,
+            imaginary: alpha.im,
+            magnitude: alpha.norm(),
+            phase: alpha.arg().to_degrees(),
+            mobility: TAU * frequency * alpha.norm(),
+        }
+    }
+}
+
+/// A resonance: a local peak of |α|, its frequency refined between the grid's neighbours (golden section, to 1e-6 of
+/// the frequency).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Resonance {
+    /// f (Hz).
+    pub frequency: f64,
+    /// |α| there (m/N).
+    pub magnitude: f64,
+    /// Peak over the larger of the two minima beside it on the grid (≥ 1.05: smaller bumps are not listed).
+    pub prominence: f64,
+}
+
+/// The receptance of a scenario's track.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ReceptanceStudy {
+    /// The scenario's title.
+    pub title: String,
+    /// x_F (m).
+    pub excite: f64,
+    /// x (m).
+    pub at: f64,
+    /// "point" (x = x_F) or "transfer".
+    pub kind: &'static str,
+    /// The rail: "Euler–Bernoulli" or "Timoshenko (G = …, κ = …)".
+    pub rail: String,
+    /// The loss factors of rail and foundation.
+    pub loss_factors: [f64; 2],
+    /// One point per frequency.
+    pub points: Vec<ReceptancePoint>,
+    /// The peaks of |α|.
+    pub resonances: Vec<Resonance>,
+    /// What makes the numbers doubtful (mesh, reflections).
+    pub warnings: Vec<String>,
+}
+
+/// The frequencies from, from + step, … ≤ to (Hz, up to round-off), checked: from > 0, step > 0, to ≥ from, at
+/// most [`MAX_FREQUENCIES`] of them (counted before any is made).
+pub fn frequency_range(from: f64, to: f64, step: f64) -> Result<Vec<f64>> {
+    if !(from.is_finite() && from > 0.0) {
+        return Err(invalid("frequencies", from, "must start above 0 Hz"));
+    }
+    if !(step.is_finite() && step > 0.0) {
+        return Err(invalid("frequencies", step, "the step must be finite and > 0 (Hz)"));
+    }
+    if !(to.is_finite() && to >= from) {
+        return Err(invalid("frequencies", to, format!("must end at or above its start, {from} Hz")));
+    }
+    let count = ((to - from) / step * (1.0 + 1e-12)).floor() + 1.0;
+    if count > MAX_FREQUENCIES as f64 {
+        return Err(invalid("frequencies", count, format!("at most {MAX_FREQUENCIES} frequencies")));
+    }
+    Ok((0..count as usize).map(|i| from + i as f64 * step).collect())
+}
+
+impl ReceptanceRequest {
+    /// Check the frequencies (count, > 0, finite, increasing) and the places (on the beam of length `length`).
+    pub fn validate(&self, length: f64) -> Result<()> {
+        let count = self.frequencies.len();
+        if count == 0 || count > MAX_FREQUENCIES {
+            return Err(invalid("frequencies", count, format!("must be 1 … {MAX_FREQUENCIES} frequencies")));
+        }
+        if let Some(f) = self.frequencies.iter().find(|f| !(f.is_finite() && **f > 0.0)) {
+            return Err(invalid("frequencies", f, "must be finite and > 0 (Hz)"));
+        }
+        if self.frequencies.windows(2).any(|w| w[1] <= w[0]) {
+            return Err(invalid("frequencies", "not increasing", "must increase"));
+        }
+        for (name, x) in [("at", self.at), ("excite", self.excite)] {
+            if !(x.is_finite() && (0.0..=length).contains(&x)) {
+                return Err(invalid(name, x, format!("must lie on the beam, in [0, {length}] m")));
+            }
+        }
+        Ok(())
+    }
+}
+
+impl ReceptanceStudy {
+    /// The receptance of `scenario`'s track (a linear foundation) for `request`, on `runner`'s threads.
+    pub fn of(scenario: &Scenario, request: &ReceptanceRequest, runner: &Runner<'_>) -> Result<Self> {
+        let model = scenario.model()?;
+        if !model.foundation().law.is_linear() {
+            return Err(invalid(
+                "foundation.law",
+                model.foundation().law.name(),
+                "the receptance is that of a linear track: give a linear foundation",
+            ));
+        }
+        request.validate(model.mesh().length)?;
+        let response = FrequencyResponse::new(&model);
+        let alpha = |f: f64| -> Result<Complex64> {
+            Ok(response.receptance(TAU * f, request.excite, &[request.at]).map_err(StudyError::from)?[0])
+        };
+        let values = runner.map(&request.frequencies, |&f| alpha(f))?;
+        let points: Vec<ReceptancePoint> =
+            request.frequencies.iter().zip(&values).map(|(&f, &a)| ReceptancePoint::of(f, a)).collect();
+        let resonances = crate::receptance_peaks::resonances(&points, |f| alpha(f).map(|a| a.norm()))?;
+        let warnings = crate::receptance_peaks::warnings(&model, request);
+        Ok(Self {
+            title: scenario.title.clone(),
+            excite: request.excite,
+            at: request.at,
+            kind: if request.at == request.excite { "point" } else { "transfer" },
+            rail: model.beam().theory.describe(),
+            loss_factors: [model.beam().loss_factor, model.foundation().loss_factor],
+            points,
+            resonances,
+            warnings,
+        })
+    }
+}

@@ -1,0 +1,127 @@
+//! The resonances of a receptance curve and the doubts about it (docs/theory.md §17): local peaks of |α| refined
+//! between the grid's frequencies; a mesh that does not resolve the bending waves at the top frequency; waves that
+//! reach the track's ends and come back.
+
+use crate::receptance::{ELEMENTS_PER_WAVELENGTH, REFLECTION_LIMIT, ReceptancePoint, ReceptanceRequest, Resonance};
+use fem_beam::BeamModel;
+use fem_beam::dispersion::wavenumbers;
+use num_complex::Complex64;
+use scenario::error::Result;
+use std::f64::consts::TAU;
+
+/// A peak must stand this much above the larger minimum beside it to be listed (5 %).
+const PROMINENCE: f64 = 1.05;
+
+/// The local peaks of |α| on the grid, each refined by golden section on `magnitude` between its neighbours' frequencies
+/// (to 1e-6 of the frequency: the peak's value is flat there, its place is what is refined).
+pub fn resonances(points: &[ReceptancePoint], magnitude: impl Fn(f64) -> Result<f64>) -> Result<Vec<Resonance>> {
+    let mut out = Vec::new();
+    for i in 1..points.len().saturating_sub(1) {
+        let (before, here, after) = (points[i - 1].magnitude, points[i].magnitude, points[i + 1].magnitude);
+        if !(here > before && here >= after) {
+            continue;
+        }
+        // The minima beside the peak on the grid: a resonance stands above both, a ripple does not.
+        let floor = lowest_before(points, i).max(lowest_after(points, i));
+        if here < PROMINENCE * floor {
+            continue;
+        }
+        let (frequency, magnitude) = golden_peak(points[i - 1].frequency, points[i + 1].frequency, &magnitude)?;
+        out.push(Resonance { frequency, magnitude, prominence: magnitude / floor });
+    }
+    Ok(out)
+}
+
+/// The least |α| walking down from peak `i` to the left until it rises again.
+fn lowest_before(points: &[ReceptancePoint], i: usize) -> f64 {
+    let mut low = points[i].magnitude;
+    for p in points[..i].iter().rev() {
+        if p.magnitude > low {
+            break;
+        }
+        low = p.magnitude;
+    }
+    low
+}
+
+/// The least |α| walking down from peak `i` to the right until it rises again.
+fn lowest_after(points: &[ReceptancePoint], i: usize) -> f64 {
+    let mut low = points[i].magnitude;
+    for p in &points[i + 1..] {
+        if p.magnitude > low {
+            break;
+        }
+        low = p.magnitude;
+    }
+    low
+}
+
+/// The maximum of `f` on [a, b] by golden section, to 1e-6 of b.
+fn golden_peak(mut a: f64, mut b: f64, f: &impl Fn(f64) -> Result<f64>) -> Result<(f64, f64)> {
+    let ratio = 0.5 * (5f64.sqrt() - 1.0);
+    let (mut c, mut d) = (b - ratio * (b - a), a + ratio * (b - a));
+    let (mut fc, mut fd) = (f(c)?, f(d)?);
+    while b - a > 1e-6 * b {
+        if fc > fd {
+            (b, d, fd) = (d, c, fc);
+            c = b - ratio * (b - a);
+            fc = f(c)?;
+        } else {
+            (a, c, fc) = (c, d, fd);
+            d = a + ratio * (b - a);
+            fd = f(d)?;
+        }
+    }
+    let x = 0.5 * (a + b);
+    Ok((x, f(x)?))
+}
+
+/// The doubts about `request` on `model`: elements too long for the bending waves at the top frequencies, and
+/// waves from the force that come back from the ends (on a track without absorbing zones).
+pub fn warnings(model: &BeamModel, request: &ReceptanceRequest) -> Vec<String> {
+    let (beam, foundation, mesh) = (model.beam(), model.foundation(), model.mesh());
+    let l = mesh.element_length();
+    let waves = |f: f64| {
+        let omega = TAU * f;
+        let soil = Complex64::new(
+            foundation.stiffness,
+            foundation.stiffness * foundation.loss_factor + omega * foundation.damping,
+        );
+        wavenumbers(beam, soil, beam.loss_factor, omega)
+    };
+    let shortest = |f: f64| TAU / waves(f).iter().map(|k| k.re.abs()).fold(0.0, f64::max);
+    let mut out = Vec::new();
+    let resolved = |f: &&f64| shortest(**f) / l >= ELEMENTS_PER_WAVELENGTH;
+    let top = *request.frequencies.last().expect("validated: at least one");
+    if !resolved(&&top) {
+        let needed = shortest(top) / ELEMENTS_PER_WAVELENGTH;
+        let up_to = request
+            .frequencies
+            .iter()
+            .rev()
+            .find(resolved)
+            .map_or("none of them".to_string(), |f| format!("up to {f} Hz"));
+        out.push(format!(
+            "the mesh's {l} m elements resolve the bending waves ({ELEMENTS_PER_WAVELENGTH} elements a wavelength) {up_to}; \
+             at {top} Hz the wavelength is {:.3} m: elements of {needed:.4} m or shorter resolve it",
+            shortest(top)
+        ));
+    }
+    if model.element_damping().iter().all(|&c| c == foundation.damping) {
+        let distance = request.excite.min(mesh.length - request.excite);
+        let (f, back) = request
+            .frequencies
+            .iter()
+            .map(|&f| (f, (-2.0 * distance * waves(f).iter().map(|k| k.im).fold(f64::INFINITY, f64::min)).exp()))
+            .fold((0.0, 0.0), |best, this| if this.1 > best.1 { this } else { best });
+        if back > REFLECTION_LIMIT {
+            out.push(format!(
+                "waves from the force reach the track's ends {distance:.1} m away and come back at up to {:.1} % of \
+                 their size (at {f} Hz): give the foundation damping or a loss factor, [foundation.absorbing_zones], \
+                 or a longer track",
+                100.0 * back
+            ));
+        }
+    }
+    out
+}

@@ -1,0 +1,130 @@
+//! The report of a receptance (`frictrack receptance`'s text, JSON and CSV, `frictrack.receptance` in Python) and
+//! its figure in the form the literature draws: |α| (m/N, logarithmic) over a logarithmic frequency axis, the phase
+//! (degrees) below.
+
+use crate::receptance::ReceptanceStudy;
+use report::columns::{Column, header, units_line};
+use report::output::{Output, pretty};
+use report::plot::{PanelY, PlotSpec, Series, Stroke};
+use scenario::number::row;
+use std::fmt::{self, Formatter};
+
+/// The CSV's columns.
+pub const RECEPTANCE_COLUMNS: [Column; 6] = [
+    ("frequency", "Hz"),
+    ("real", "m/N"),
+    ("imaginary", "m/N"),
+    ("magnitude", "m/N"),
+    ("phase", "deg"),
+    ("mobility", "m/(s·N)"),
+];
+
+impl ReceptanceStudy {
+    /// One row per frequency ([`RECEPTANCE_COLUMNS`]).
+    pub fn csv(&self) -> String {
+        let mut csv = header(&RECEPTANCE_COLUMNS) + "\n";
+        for p in &self.points {
+            csv.push_str(&row(&[p.frequency, p.real, p.imaginary, p.magnitude, p.phase, p.mobility]));
+            csv.push('\n');
+        }
+        csv
+    }
+
+    /// Write receptance.csv, receptance.json and the figure into `folder` (created if missing; every file checked
+    /// first, written atomically), `what` naming the folder in errors (`--out`, `out`); the figures' file names.
+    pub fn write_folder(&self, folder: &std::path::Path, what: &str) -> scenario::error::Result<Vec<String>> {
+        use report::files::{check_output_file, prepare_output_folder, write_atomically, write_figures};
+        prepare_output_folder(what, folder)?;
+        for name in ["receptance.csv", "receptance.json", "receptance.png", "receptance.svg"] {
+            check_output_file(what, &folder.join(name))?;
+        }
+        let json = pretty(self).map_err(|e| scenario::error::StudyError::Io {
+            path: folder.join("receptance.json").display().to_string(),
+            message: e.to_string(),
+        })?;
+        write_atomically(&folder.join("receptance.csv"), ReceptanceStudy::csv(self).as_bytes())?;
+        write_atomically(&folder.join("receptance.json"), json.as_bytes())?;
+        write_figures(what, &[self.figure()], folder)
+    }
+
+    /// What the figure says it shows.
+    fn describe(&self) -> String {
+        let place = match self.kind {
+            "point" => format!("point receptance at x = {} m", self.at),
+            _ => format!("transfer receptance at x = {} m, force at {} m", self.at, self.excite),
+        };
+        let [rail, soil] = self.loss_factors;
+        format!("{place}; {} rail, loss factors {rail} (rail) and {soil} (foundation)", self.rail)
+    }
+
+    /// The figure: magnitude over frequency (both logarithmic) above the phase, the resonances marked.
+    pub fn figure(&self) -> PlotSpec {
+        let title = if self.title.is_empty() { "Track receptance" } else { self.title.as_str() };
+        let mut figure = PlotSpec::new("receptance", title, "frequency f (Hz)", "");
+        figure.subtitle = self.describe();
+        let curve = |label: &str, points: Vec<(f64, f64)>| Series {
+            label: Some(label.into()),
+            color: 1,
+            stroke: Stroke::Solid,
+            markers: false,
+            points,
+        };
+        let mut magnitude = PlotSpec::new("", "magnitude", "frequency f (Hz)", "|α| (m/N)");
+        (magnitude.log_x, magnitude.log_y) = (true, true);
+        magnitude.series.push(curve("|α|", self.points.iter().map(|p| (p.frequency, p.magnitude)).collect()));
+        magnitude.marks = self
+            .resonances
+            .iter()
+            .map(|r| report::plot::Mark { color: 1, point: (r.frequency, r.magnitude) })
+            .collect();
+        if !magnitude.marks.is_empty() {
+            magnitude.mark_label = "resonance (refined)".into();
+        }
+        let mut phase =
+            PlotSpec::new("", "phase (−90° and below: the rail lags the force)", "frequency f (Hz)", "arg α (°)");
+        phase.log_x = true;
+        phase.series.push(curve("arg α", self.points.iter().map(|p| (p.frequency, p.phase)).collect()));
+        figure.panels = vec![magnitude, phase];
+        figure.panel_y = PanelY::EachOwn;
+        figure
+    }
+}
+
+impl Output for ReceptanceStudy {
+    fn write_text(&self, f: &mut Formatter<'_>) -> fmt::Result {
+        let title = if self.title.is_empty() { String::new() } else { format!(" — {}", self.title) };
+        writeln!(f, "frictrack receptance{title}: {}", self.describe())?;
+        let (first, last) = (self.points[0], self.points[self.points.len() - 1]);
+        writeln!(
+            f,
+            "  {} frequencies, {} … {} Hz: |α| from {:.3e} to {:.3e} m/N",
+            self.points.len(),
+            first.frequency,
+            last.frequency,
+            first.magnitude,
+            last.magnitude
+        )?;
+        match self.resonances.as_slice() {
+            [] => writeln!(f, "  no resonance peak in that range")?,
+            peaks => {
+                writeln!(f, "  resonances (peaks of |α|, refined between the frequencies given):")?;
+                for r in peaks {
+                    writeln!(
+                        f,
+                        "    {:>10.2} Hz  |α| = {:.3e} m/N  ({:.2}× the trough beside it)",
+                        r.frequency, r.magnitude, r.prominence
+                    )?;
+                }
+            }
+        }
+        Ok(())
+    }
+
+    fn json(&self) -> serde_json::Result<String> {
+        pretty(self)
+    }
+
+    fn csv(&self) -> Option<String> {
+        Some(format!("{}# {}\n", ReceptanceStudy::csv(self), units_line(RECEPTANCE_COLUMNS.iter().copied())))
+    }
+}
