@@ -9,10 +9,12 @@ use crate::element::{Element, ElementMatrix, hermite};
 use crate::error::{FemError, Result};
 use crate::mesh::Mesh;
 use crate::properties::{Beam, Foundation, Rayleigh};
+use crate::sleepers::Sleepers;
 use crate::supports::{DofMap, Supports};
 use banded::SymmetricBanded;
 
-/// Half-bandwidth of assembled Hermite beam matrices.
+/// Half-bandwidth of assembled beam matrices: 3, and 4 with sleepers (a sleeper's DOF between its node's and the
+/// next's).
 pub const BANDWIDTH: usize = 3;
 
 /// The assembled beam on its foundation: parameters, DOF map and the banded M, C, K over the free DOFs.
@@ -28,6 +30,7 @@ pub struct BeamModel {
     stiffness: SymmetricBanded,
     damping: SymmetricBanded,
     rayleigh: Rayleigh,
+    sleepers: Option<(Sleepers, Vec<usize>)>,
 }
 
 impl BeamModel {
@@ -64,17 +67,37 @@ impl BeamModel {
                 allowed: "must be finite and ≥ 0",
             });
         }
-        let dofs = DofMap::new(mesh.nodes(), supports);
+        Self::assemble(beam, foundation, mesh, supports, element_damping, None)
+    }
+
+    /// The model with `sleepers` under the rail (docs/theory.md §18): a DOF per sleeper beside its node, its mass,
+    /// pad and ballast in M, C, K (Rayleigh damping, if any, applied again over them).
+    pub fn with_sleepers(self, sleepers: Sleepers) -> Result<Self> {
+        let nodes = sleepers.nodes(&self.mesh)?;
+        let Self { beam, foundation, mesh, supports, element_damping, rayleigh, .. } = self;
+        let model = Self::assemble(beam, foundation, mesh, supports, element_damping, Some((sleepers, nodes)))?;
+        if rayleigh.is_zero() { Ok(model) } else { model.with_rayleigh(rayleigh) }
+    }
+
+    fn assemble(
+        beam: Beam,
+        foundation: Foundation,
+        mesh: Mesh,
+        supports: Supports,
+        element_damping: Vec<f64>,
+        sleepers: Option<(Sleepers, Vec<usize>)>,
+    ) -> Result<Self> {
+        let (dofs, band) = match &sleepers {
+            None => (DofMap::new(mesh.nodes(), supports), BANDWIDTH),
+            Some((_, nodes)) => (DofMap::with_sleepers(mesh.nodes(), supports, nodes), BANDWIDTH + 1),
+        };
         let l = mesh.element_length();
         let element = Element::of(&beam, l);
         let me = element.mass(&beam);
         let ke = Self::element_stiffness_of(&beam, &foundation, l);
         let n = dofs.free_len();
-        let (mut mass, mut stiffness, mut damping) = (
-            SymmetricBanded::zeros(n, BANDWIDTH),
-            SymmetricBanded::zeros(n, BANDWIDTH),
-            SymmetricBanded::zeros(n, BANDWIDTH),
-        );
+        let (mut mass, mut stiffness, mut damping) =
+            (SymmetricBanded::zeros(n, band), SymmetricBanded::zeros(n, band), SymmetricBanded::zeros(n, band));
         for e in 0..mesh.elements {
             let ce = element.distributed(element_damping[e]);
             let free: [Option<usize>; 4] = std::array::from_fn(|k| dofs.free_index(2 * e + k));
@@ -88,8 +111,28 @@ impl BeamModel {
                 }
             }
         }
+        if let Some((layer, nodes)) = &sleepers {
+            for stamp in layer.stamps(&dofs, mesh.nodes(), nodes) {
+                let (i, j, [m, c, k]) = stamp;
+                mass.add(i, j, m);
+                damping.add(i, j, c);
+                stiffness.add(i, j, k);
+            }
+        }
         let rayleigh = Rayleigh::default();
-        Ok(Self { beam, foundation, mesh, supports, dofs, element_damping, mass, stiffness, damping, rayleigh })
+        Ok(Self {
+            beam,
+            foundation,
+            mesh,
+            supports,
+            dofs,
+            element_damping,
+            mass,
+            stiffness,
+            damping,
+            rayleigh,
+            sleepers,
+        })
     }
 
     /// The model with Rayleigh damping α M + β K added to C (docs/theory.md §10); its element damping matrices
@@ -103,6 +146,11 @@ impl BeamModel {
         ]);
         self.rayleigh = rayleigh;
         Ok(self)
+    }
+
+    /// The sleepers and the node under each, if the rail lies on discrete supports.
+    pub fn sleepers(&self) -> Option<(&Sleepers, &[usize])> {
+        self.sleepers.as_ref().map(|(s, nodes)| (s, nodes.as_slice()))
     }
 
     /// The Rayleigh damping in C (zero unless [`BeamModel::with_rayleigh`]).

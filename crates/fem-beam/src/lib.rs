@@ -35,6 +35,7 @@ pub mod properties;
 pub mod receptance;
 pub mod reference;
 pub mod section;
+pub mod sleepers;
 pub mod span;
 pub mod span_oscillator;
 pub mod statics;
@@ -52,6 +53,7 @@ pub use extreme::{Extreme, LiftOffZone};
 pub use load::LoadVector;
 pub use mesh::Mesh;
 pub use properties::{Beam, BeamTheory, Foundation, FoundationLaw, Rayleigh};
+pub use sleepers::{Layer, Sleepers};
 pub use supports::{DofMap, Support, Supports};
 pub use train::{Axle, Patch, Train};
 

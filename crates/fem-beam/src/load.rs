@@ -144,7 +144,10 @@ impl LoadVector {
 
     /// Assembled free-DOF vector (loads on constrained DOFs are taken by the supports).
     pub fn to_free(&self, mesh: &Mesh, dofs: &DofMap) -> Vec<f64> {
-        dofs.reduce(&self.to_full(mesh))
+        let mut full = self.to_full(mesh);
+        // Sleepers' DOFs (after the rail's) carry no load of their own.
+        full.resize(dofs.full_len(), 0.0);
+        dofs.reduce(&full)
     }
 
     /// Sum of all nodal forces (the w components), N: equals the total applied force.

@@ -8,7 +8,8 @@
 //! with K_rail the beam's stiffness (bending, and shear for Timoshenko), K_soil the foundation's linear part, C every
 //! viscous term of the model (foundation dashpots, absorbing zones, Rayleigh), M the mass, η_r and η_f loss factors
 //! (hysteretic damping as the literature quotes it: `Beam::loss_factor`, `Foundation::loss_factor`), f = N_w(x_F)ᵀ the consistent load and H(x) the
-//! element's N_w there. One complex banded LU per frequency ([`banded::general`], partial pivoting).
+//! element's N_w there; sleepers (docs/theory.md §18) add their mass and, each with its loss factor, their pads and
+//! ballast. One complex banded LU per frequency ([`banded::general`], partial pivoting).
 
 use crate::assembly::BeamModel;
 use crate::element::ElementMatrix;
@@ -62,7 +63,7 @@ impl<'a> FrequencyResponse<'a> {
         let rail = element.stiffness(model.beam().bending_stiffness());
         let soil = element.distributed(model.foundation().tension_stiffness());
         let mass = model.element_mass();
-        let band = crate::assembly::BANDWIDTH;
+        let band = model.stiffness().bandwidth();
         let mut out = GeneralBanded::zeros(dofs.free_len(), band, band);
         let (rail_factor, soil_factor) =
             (Complex64::new(1.0, model.beam().loss_factor), Complex64::new(1.0, model.foundation().loss_factor));
@@ -77,6 +78,23 @@ impl<'a> FrequencyResponse<'a> {
                             + Complex64::new(-omega * omega * mass[a][b], omega * damping[a][b]);
                         out.add(i, j, value);
                     }
+                }
+            }
+        }
+        if let Some((sleepers, nodes)) = model.sleepers() {
+            // Each layer's spring with its own loss factor, its dashpot and the sleeper's mass.
+            let layered = |layer: &crate::sleepers::Layer| {
+                Complex64::new(layer.stiffness, layer.stiffness * layer.loss_factor + omega * layer.damping)
+            };
+            let (pad, ballast) = (layered(&sleepers.pad), layered(&sleepers.ballast));
+            let mesh_nodes = model.mesh().nodes();
+            for (s, &node) in nodes.iter().enumerate() {
+                let z = dofs.free_index(2 * mesh_nodes + s).expect("a sleeper's DOF is free");
+                out.add(z, z, pad + ballast - omega * omega * sleepers.mass);
+                if let Some(w) = dofs.free_index(2 * node) {
+                    out.add(w, w, pad);
+                    out.add(w, z, -pad);
+                    out.add(z, w, -pad);
                 }
             }
         }

@@ -81,7 +81,7 @@ impl BeamModel {
     /// Nodal deflections w_i (m).
     pub fn nodal_deflections(&self, q: &[f64]) -> Result<Vec<f64>> {
         self.check_full("DOF vector", q)?;
-        Ok(q.iter().step_by(2).copied().collect())
+        Ok(q[..2 * self.mesh().nodes()].iter().step_by(2).copied().collect())
     }
 
     /// End forces of element `e`, f = K_e q_e + C_e q̇_e + M_e q̈_e − f_e (N on w, N·m on θ, element DOF order), from

@@ -89,7 +89,33 @@ impl DofMap {
         Self { free_of_full, full_of_free }
     }
 
-    /// Number of full DOFs, 2·(n_e + 1).
+    /// The map with a sleeper DOF under each of `sleeper_nodes` (increasing): full DOFs 2·nodes + s for sleeper s
+    /// after the rail's, free DOFs numbered node by node — the rail's w, θ, then the sleeper under it — so that a
+    /// sleeper sits in the band beside its rail node (half-bandwidth 4).
+    pub fn with_sleepers(nodes: usize, supports: Supports, sleeper_nodes: &[usize]) -> Self {
+        let rail = Self::new(nodes, supports);
+        let full = 2 * nodes + sleeper_nodes.len();
+        let mut free_of_full = vec![None; full];
+        let mut full_of_free = Vec::with_capacity(full);
+        let mut next_sleeper = 0;
+        for node in 0..nodes {
+            for dof in [2 * node, 2 * node + 1] {
+                if rail.free_of_full[dof].is_some() {
+                    free_of_full[dof] = Some(full_of_free.len());
+                    full_of_free.push(dof);
+                }
+            }
+            while next_sleeper < sleeper_nodes.len() && sleeper_nodes[next_sleeper] == node {
+                let dof = 2 * nodes + next_sleeper;
+                free_of_full[dof] = Some(full_of_free.len());
+                full_of_free.push(dof);
+                next_sleeper += 1;
+            }
+        }
+        Self { free_of_full, full_of_free }
+    }
+
+    /// Number of full DOFs: 2·(n_e + 1) of the rail, and one per sleeper after them.
     pub fn full_len(&self) -> usize {
         self.free_of_full.len()
     }

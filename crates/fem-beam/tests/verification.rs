@@ -7,6 +7,7 @@ mod verification {
     mod invalid_input;
     mod loads;
     mod receptance;
+    mod sleepers;
     mod statics;
     mod timoshenko;
 }

@@ -75,6 +75,9 @@ impl Scenario {
             None => vec![foundation.damping; mesh.elements],
         };
         let mut model = BeamModel::with_element_damping(beam, foundation, mesh, supports, damping)?;
+        if let Some(sleepers) = &self.sleepers {
+            model = model.with_sleepers(sleepers.sleepers())?;
+        }
         if let Some(rayleigh) = &self.damping.rayleigh {
             model = model.with_rayleigh(rayleigh.rayleigh()?)?;
         }
@@ -149,6 +152,14 @@ impl Scenario {
 
     /// Build the model, contact set and run settings, checking every value on the way.
     pub fn build(&self) -> Result<Case> {
+        if self.sleepers.is_some() {
+            return Err(invalid(
+                "sleepers",
+                "given",
+                "a rail on discrete supports is, so far, analysed in the frequency domain only (the receptance); \
+                 runs, sweeps and studies take the continuous [foundation]",
+            ));
+        }
         let model = self.model()?;
         self.refuse_a_lever(&model)?;
         let interactions = self.placed_on(&model)?;

@@ -29,7 +29,10 @@ pub fn refuse_degenerate(model: &BeamModel) -> Result<()> {
         ));
     }
     let supports = model.supports();
-    if model.foundation().stiffness == 0.0 && supports.left.held() + supports.right.held() < 2 {
+    if model.foundation().stiffness == 0.0
+        && model.sleepers().is_none()
+        && supports.left.held() + supports.right.held() < 2
+    {
         return Err(invalid(
             "supports",
             format!("{:?}/{:?}", supports.left, supports.right).to_lowercase(),

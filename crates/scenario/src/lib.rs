@@ -26,6 +26,7 @@ mod parse;
 pub mod plausibility;
 pub mod rail;
 pub mod sections;
+pub mod sleepers;
 pub mod speeds;
 mod stationary_problem;
 pub mod trains;
@@ -60,6 +61,9 @@ pub struct Scenario {
     pub supports: Supports,
     /// The soil.
     pub foundation: FoundationSection,
+    /// Discrete supports — rail pads on sleepers on ballast — beside (or instead of) the soil.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub sleepers: Option<sleepers::SleepersSection>,
     /// Damping of the structure itself (Rayleigh), beside the foundation's.
     #[serde(skip_serializing_if = "DampingSection::is_empty")]
     pub damping: DampingSection,

@@ -71,7 +71,8 @@ pub struct Resonance {
     pub frequency: f64,
     /// |α| there (m/N).
     pub magnitude: f64,
-    /// Peak over the larger of the two minima beside it on the grid (≥ 1.05: smaller bumps are not listed).
+    /// Peak over the higher of its two bases — the least |α| on each side before the curve climbs above the peak —
+    /// (≥ 1.05: smaller bumps are not listed).
     pub prominence: f64,
 }
 
@@ -90,6 +91,8 @@ pub struct ReceptanceStudy {
     pub rail: String,
     /// The loss factors of rail and foundation.
     pub loss_factors: [f64; 2],
+    /// What carries the rail, in words: the continuous foundation and/or the sleepers with their pads and ballast.
+    pub support: String,
     /// One point per frequency.
     pub points: Vec<ReceptancePoint>,
     /// The peaks of |α|.
@@ -139,6 +142,26 @@ impl ReceptanceRequest {
     }
 }
 
+/// What carries the rail of `model`, in words.
+fn support(model: &fem_beam::BeamModel) -> String {
+    let f = model.foundation();
+    let soil = format!("a foundation of k_f = {:.4e} N/m² (η = {})", f.stiffness, f.loss_factor);
+    let Some((s, nodes)) = model.sleepers() else { return soil };
+    let layer = |name: &str, l: &fem_beam::Layer| {
+        format!("{name} {:.4e} N/m, {:.4e} N·s/m, η = {}", l.stiffness, l.damping, l.loss_factor)
+    };
+    let sleepers = format!(
+        "{} sleepers every {} m from {} m ({} kg each; {}; {})",
+        nodes.len(),
+        s.spacing,
+        s.first,
+        s.mass,
+        layer("pads", &s.pad),
+        layer("ballast", &s.ballast)
+    );
+    if f.stiffness > 0.0 { format!("{sleepers}, on {soil}") } else { sleepers }
+}
+
 impl ReceptanceStudy {
     /// The receptance of `scenario`'s track (a linear foundation) for `request`, on `runner`'s threads.
     pub fn of(scenario: &Scenario, request: &ReceptanceRequest, runner: &Runner<'_>) -> Result<Self> {
@@ -167,6 +190,7 @@ impl ReceptanceStudy {
             kind: if request.at == request.excite { "point" } else { "transfer" },
             rail: model.beam().theory.describe(),
             loss_factors: [model.beam().loss_factor, model.foundation().loss_factor],
+            support: support(&model),
             points,
             resonances,
             warnings,

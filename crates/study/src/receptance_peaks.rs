@@ -21,7 +21,8 @@ pub fn resonances(points: &[ReceptancePoint], magnitude: impl Fn(f64) -> Result<
         if !(here > before && here >= after) {
             continue;
         }
-        // The minima beside the peak on the grid: a resonance stands above both, a ripple does not.
+        // The bases on either side (down to where the curve climbs higher than this peak): a resonance stands 5 %
+        // above the higher of them, a ripple does not.
         let floor = lowest_before(points, i).max(lowest_after(points, i));
         if here < PROMINENCE * floor {
             continue;
@@ -32,28 +33,17 @@ pub fn resonances(points: &[ReceptancePoint], magnitude: impl Fn(f64) -> Result<
     Ok(out)
 }
 
-/// The least |α| walking down from peak `i` to the left until it rises again.
+/// The least |α| to the left of peak `i` before the curve rises above it (or the grid ends): the topographic
+/// prominence's left base, blind to ripples on the flank.
 fn lowest_before(points: &[ReceptancePoint], i: usize) -> f64 {
-    let mut low = points[i].magnitude;
-    for p in points[..i].iter().rev() {
-        if p.magnitude > low {
-            break;
-        }
-        low = p.magnitude;
-    }
-    low
+    let peak = points[i].magnitude;
+    points[..i].iter().rev().map(|p| p.magnitude).take_while(|&m| m <= peak).fold(peak, f64::min)
 }
 
-/// The least |α| walking down from peak `i` to the right until it rises again.
+/// The least |α| to the right of peak `i` before the curve rises above it (or the grid ends).
 fn lowest_after(points: &[ReceptancePoint], i: usize) -> f64 {
-    let mut low = points[i].magnitude;
-    for p in &points[i + 1..] {
-        if p.magnitude > low {
-            break;
-        }
-        low = p.magnitude;
-    }
-    low
+    let peak = points[i].magnitude;
+    points[i + 1..].iter().map(|p| p.magnitude).take_while(|&m| m <= peak).fold(peak, f64::min)
 }
 
 /// The maximum of `f` on [a, b] by golden section, to 1e-6 of b.
@@ -76,6 +66,15 @@ fn golden_peak(mut a: f64, mut b: f64, f: &impl Fn(f64) -> Result<f64>) -> Resul
     Ok((x, f(x)?))
 }
 
+/// The sleepers' dynamic stiffness spread over their spacing (N/m², 0 without): the pad in series with the sleeper's
+/// mass on the ballast, k̃_p(k̃_b − ω²m_s)/(k̃_p + k̃_b − ω²m_s)/a with k̃ = k(1 + iη) + iωc — the long waves' view of them.
+fn sleepers_per_metre(model: &BeamModel, omega: f64) -> Complex64 {
+    let Some((s, _)) = model.sleepers() else { return Complex64::new(0.0, 0.0) };
+    let layer = |l: &fem_beam::Layer| Complex64::new(l.stiffness, l.stiffness * l.loss_factor + omega * l.damping);
+    let (pad, below) = (layer(&s.pad), layer(&s.ballast) - omega * omega * s.mass);
+    pad * below / (pad + below) / s.spacing
+}
+
 /// The doubts about `request` on `model`: elements too long for the bending waves at the top frequencies, and
 /// waves from the force that come back from the ends (on a track without absorbing zones).
 pub fn warnings(model: &BeamModel, request: &ReceptanceRequest) -> Vec<String> {
@@ -87,7 +86,7 @@ pub fn warnings(model: &BeamModel, request: &ReceptanceRequest) -> Vec<String> {
             foundation.stiffness,
             foundation.stiffness * foundation.loss_factor + omega * foundation.damping,
         );
-        wavenumbers(beam, soil, beam.loss_factor, omega)
+        wavenumbers(beam, soil + sleepers_per_metre(model, omega), beam.loss_factor, omega)
     };
     let shortest = |f: f64| TAU / waves(f).iter().map(|k| k.re.abs()).fold(0.0, f64::max);
     let mut out = Vec::new();

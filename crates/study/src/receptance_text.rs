@@ -53,8 +53,7 @@ impl ReceptanceStudy {
             "point" => format!("point receptance at x = {} m", self.at),
             _ => format!("transfer receptance at x = {} m, force at {} m", self.at, self.excite),
         };
-        let [rail, soil] = self.loss_factors;
-        format!("{place}; {} rail, loss factors {rail} (rail) and {soil} (foundation)", self.rail)
+        format!("{place}; {} rail (η = {}) on {}", self.rail, self.loss_factors[0], self.support)
     }
 
     /// The figure: magnitude over frequency (both logarithmic) above the phase, the resonances marked.

@@ -53,6 +53,29 @@ fn receptance_writes_its_table_json_and_figure() {
     assert!(undamped.status.success() && stderr.contains("come back at up to"), "{stderr}");
 }
 
+/// Sleepers: the receptance takes them (the pinned–pinned peak of the rail between them is listed); a run refuses
+/// them by key, exit code 2, rather than run a track without them.
+#[test]
+fn sleepers_are_taken_by_the_receptance_and_refused_by_runs() {
+    let folder = temporary_folder("receptance-sleepers");
+    let file = folder.join("discrete.toml");
+    std::fs::write(
+        &file,
+        "[mesh]\nlength = 60.0\nelements = 800\n[foundation]\nstiffness = 0.0\n[supports]\nleft = \"free\"\n\
+         right = \"free\"\n[sleepers]\n[sleepers.pad]\nloss_factor = 0.25\n[sleepers.ballast]\nloss_factor = 0.5\n",
+    )
+    .unwrap();
+    let path = file.to_str().unwrap();
+    let v = json(&frictrack(&["receptance", path, "--frequencies", "1200:1600:10", "--at", "30", "--format", "json"]));
+    let peak = v["resonances"][0]["frequency"].as_f64().unwrap();
+    // Euler–Bernoulli's pinned–pinned span: π/(2a²)·√(EI/ρA) = 1428 Hz, to 2 % (the pads give a little).
+    assert!((peak / 1428.0 - 1.0).abs() < 2e-2, "{peak}");
+    let run = frictrack(&["run", path]);
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert_eq!(run.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("sleepers") && stderr.contains("frequency domain"), "{stderr}");
+}
+
 #[test]
 fn bad_receptance_flags_are_named() {
     for (args, named) in [

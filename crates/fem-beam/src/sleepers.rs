@@ -1,0 +1,152 @@
+//! The track as it is built (docs/theory.md §18): the rail on discrete supports — a rail pad (spring k_p, dashpot
+//! c_p, loss factor η_p) on a sleeper of mass m_s (per rail seat) on the ballast (k_b, c_b, η_b) — every `spacing` m
+//! from `first`. Each sleeper is a DOF z (m, upward) under a mesh node: the pad acts on w_node − z, the ballast on z.
+//! The continuous Winkler foundation is its long-wave limit, k_f ≈ (k_p k_b/(k_p + k_b))/a; the two may be used
+//! together (a slab under a continuous pad, or a soil left under sleepers).
+
+use crate::error::{FemError, Result, non_negative, positive};
+use crate::mesh::Mesh;
+
+/// A spring–dashpot layer: stiffness (N/m), viscous damping (N·s/m), loss factor (hysteretic, frequency domain).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Layer {
+    /// k (N/m), > 0.
+    pub stiffness: f64,
+    /// c (N·s/m), ≥ 0.
+    pub damping: f64,
+    /// η ≥ 0: k → k(1 + iη) in the frequency domain.
+    pub loss_factor: f64,
+}
+
+/// Sleepers under the rail, per rail seat. Defaults: typical values of a ballasted track (Knothe & Grassie 1993):
+/// a = 0.6 m, m_s = 150 kg, pads k_p = 200 MN/m, c_p = 30 kN·s/m, ballast k_b = 100 MN/m, c_b = 50 kN·s/m.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Sleepers {
+    /// a (m), > 0.
+    pub spacing: f64,
+    /// Where the first sleeper sits (m), ≥ 0; default half a spacing.
+    pub first: f64,
+    /// m_s (kg per rail seat), > 0.
+    pub mass: f64,
+    /// The rail pad between rail and sleeper.
+    pub pad: Layer,
+    /// The ballast under the sleeper.
+    pub ballast: Layer,
+}
+
+impl Default for Sleepers {
+    fn default() -> Self {
+        Self {
+            spacing: 0.6,
+            first: 0.3,
+            mass: 150.0,
+            pad: Layer { stiffness: 200e6, damping: 30e3, loss_factor: 0.0 },
+            ballast: Layer { stiffness: 100e6, damping: 50e3, loss_factor: 0.0 },
+        }
+    }
+}
+
+impl Sleepers {
+    /// Check every value; the error names the key.
+    pub fn validate(&self) -> Result<()> {
+        positive("sleepers.spacing", self.spacing)?;
+        non_negative("sleepers.first", self.first)?;
+        positive("sleepers.mass", self.mass)?;
+        let layers = [
+            (&self.pad, ["sleepers.pad.stiffness", "sleepers.pad.damping", "sleepers.pad.loss_factor"]),
+            (&self.ballast, ["sleepers.ballast.stiffness", "sleepers.ballast.damping", "sleepers.ballast.loss_factor"]),
+        ];
+        for (layer, [stiffness, damping, loss]) in layers {
+            positive(stiffness, layer.stiffness)?;
+            non_negative(damping, layer.damping)?;
+            non_negative(loss, layer.loss_factor)?;
+        }
+        Ok(())
+    }
+
+    /// The equivalent continuous support (N/m²): the pad and ballast in series, spread over a spacing.
+    pub fn equivalent_stiffness(&self) -> f64 {
+        let (kp, kb) = (self.pad.stiffness, self.ballast.stiffness);
+        kp * kb / (kp + kb) / self.spacing
+    }
+
+    /// The mesh node under each sleeper, first to last: every sleeper on the beam must sit on a node (within 1e-9 of
+    /// an element), else the error names the keys that place them.
+    pub fn nodes(&self, mesh: &Mesh) -> Result<Vec<usize>> {
+        self.validate()?;
+        let l = mesh.element_length();
+        if self.first > mesh.length {
+            return Err(FemError::InvalidField {
+                field: "sleepers.first",
+                value: self.first,
+                allowed: "must lie on the beam (≤ its length)",
+            });
+        }
+        let count = ((mesh.length - self.first) / self.spacing * (1.0 + 1e-12)).floor() as usize + 1;
+        if count > Mesh::MAX_ELEMENTS {
+            return Err(FemError::InvalidCount {
+                field: "sleepers.spacing",
+                value: count,
+                allowed: "must leave at most one sleeper per node of the largest mesh (1 000 000)",
+            });
+        }
+        (0..count)
+            .map(|i| {
+                let x = self.first + i as f64 * self.spacing;
+                let node = (x / l).round();
+                if (x / l - node).abs() > 1e-9 * (1.0 + node) {
+                    let field = if i == 0 { "sleepers.first" } else { "sleepers.spacing" };
+                    let value = if i == 0 { self.first } else { self.spacing };
+                    return Err(FemError::InvalidField {
+                        field,
+                        value,
+                        allowed: "must put every sleeper on a mesh node: first and spacing multiples of the element \
+                                  length (mesh.length / mesh.elements)",
+                    });
+                }
+                Ok(node as usize)
+            })
+            .collect()
+    }
+}
+
+/// One entry (i, j ≤ i) of the free DOFs' lower triangle and what it adds to [M, C, K].
+pub type Stamp = (usize, usize, [f64; 3]);
+
+impl Sleepers {
+    /// What the sleepers under `nodes` add to M, C and K over the free DOFs of `dofs` (a map with their DOFs, of a
+    /// mesh of `mesh_nodes` nodes): m_s on z; the pad's k_p, c_p on (w, z) as [[1, −1], [−1, 1]] (on z alone where a
+    /// support holds w); the ballast's k_b, c_b on z.
+    pub fn stamps(&self, dofs: &crate::supports::DofMap, mesh_nodes: usize, nodes: &[usize]) -> Vec<Stamp> {
+        let (pad, ballast) = (&self.pad, &self.ballast);
+        let mut out = Vec::with_capacity(3 * nodes.len());
+        for (s, &node) in nodes.iter().enumerate() {
+            let z = dofs.free_index(2 * mesh_nodes + s).expect("a sleeper's DOF is free");
+            out.push((z, z, [self.mass, pad.damping + ballast.damping, pad.stiffness + ballast.stiffness]));
+            if let Some(w) = dofs.free_index(2 * node) {
+                out.push((w, w, [0.0, pad.damping, pad.stiffness]));
+                out.push((z.max(w), z.min(w), [0.0, -pad.damping, -pad.stiffness]));
+            }
+        }
+        out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sleepers_sit_on_nodes_or_are_refused_by_key() {
+        let mesh = Mesh::new(6.0, 40).unwrap(); // l = 0.15 m: a = 0.6 m is four elements
+        let nodes = Sleepers::default().nodes(&mesh).unwrap();
+        assert_eq!(nodes, vec![2, 6, 10, 14, 18, 22, 26, 30, 34, 38]);
+        let off = Sleepers { first: 0.25, ..Sleepers::default() }.nodes(&mesh).unwrap_err().to_string();
+        assert!(off.contains("sleepers.first = 0.25") && off.contains("element length"), "{off}");
+        let spacing = Sleepers { first: 0.0, spacing: 0.5, ..Sleepers::default() }.nodes(&mesh).unwrap_err();
+        assert!(spacing.to_string().contains("sleepers.spacing = 0.5"), "{spacing}");
+        let soft = Sleepers { pad: Layer { stiffness: -1.0, ..Sleepers::default().pad }, ..Sleepers::default() };
+        assert!(soft.validate().unwrap_err().to_string().contains("sleepers.pad.stiffness = -1"));
+        assert!((Sleepers::default().equivalent_stiffness() - 200e6 * 100e6 / 300e6 / 0.6).abs() < 1e-3);
+    }
+}
