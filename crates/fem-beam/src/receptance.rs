@@ -6,10 +6,12 @@
 //! ```
 //!
 //! with K_rail the beam's stiffness (bending, and shear for Timoshenko), K_soil the foundation's linear part, C every
-//! viscous term of the model (foundation dashpots, absorbing zones, Rayleigh), M the mass, η_r and η_f loss factors
-//! (hysteretic damping as the literature quotes it: `Beam::loss_factor`, `Foundation::loss_factor`), f = N_w(x_F)ᵀ the consistent load and H(x) the
-//! element's N_w there; sleepers (docs/theory.md §18) add their mass and, each with its loss factor, their pads and
-//! ballast. One complex banded LU per frequency ([`banded::general`], partial pivoting).
+//! viscous term of the model (foundation dashpots, absorbing zones, Rayleigh on the rail's elements), M the mass,
+//! η_r and η_f loss factors (hysteretic damping as the literature quotes it: `Beam::loss_factor`,
+//! `Foundation::loss_factor`), f = N_w(x_F)ᵀ the consistent load and H(x) the element's N_w there; sleepers
+//! (docs/theory.md §18) add their mass and, each with its loss factor, their pads and ballast (their own dashpots:
+//! Rayleigh damping is not applied to them here). One complex banded LU per frequency ([`banded::general`], partial
+//! pivoting).
 
 use crate::assembly::BeamModel;
 use crate::element::ElementMatrix;

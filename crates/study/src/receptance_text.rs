@@ -106,11 +106,14 @@ impl Output for ReceptanceStudy {
         match self.resonances.as_slice() {
             [] => writeln!(f, "  no resonance peak in that range")?,
             peaks => {
-                writeln!(f, "  resonances (peaks of |α|, refined between the frequencies given):")?;
+                writeln!(
+                    f,
+                    "  resonances (peaks of |α| 5 % or more above their bases, refined between the frequencies given):"
+                )?;
                 for r in peaks {
                     writeln!(
                         f,
-                        "    {:>10.2} Hz  |α| = {:.3e} m/N  ({:.2}× the trough beside it)",
+                        "    {:>10.2} Hz  |α| = {:.3e} m/N  (prominence {:.2})",
                         r.frequency, r.magnitude, r.prominence
                     )?;
                 }
