@@ -142,19 +142,18 @@ impl ReceptanceRequest {
     }
 }
 
-/// What carries the rail of `model`, in words.
+/// What carries the rail of `model`, in words (MN/m, kN·s/m: the units the literature quotes pads and ballast in).
 fn support(model: &fem_beam::BeamModel) -> String {
     let f = model.foundation();
-    let soil = format!("a foundation of k_f = {:.4e} N/m² (η = {})", f.stiffness, f.loss_factor);
+    let soil = format!("a foundation of k_f = {:.4e} N/m² (η {})", f.stiffness, f.loss_factor);
     let Some((s, nodes)) = model.sleepers() else { return soil };
     let layer = |name: &str, l: &fem_beam::Layer| {
-        format!("{name} {:.4e} N/m, {:.4e} N·s/m, η = {}", l.stiffness, l.damping, l.loss_factor)
+        format!("{name} {} MN/m, {} kN·s/m, η {}", l.stiffness / 1e6, l.damping / 1e3, l.loss_factor)
     };
     let sleepers = format!(
-        "{} sleepers every {} m from {} m ({} kg each; {}; {})",
+        "{} sleepers every {} m ({} kg; {}; {})",
         nodes.len(),
         s.spacing,
-        s.first,
         s.mass,
         layer("pads", &s.pad),
         layer("ballast", &s.ballast)

@@ -47,20 +47,21 @@ impl ReceptanceStudy {
         write_figures(what, &[self.figure()], folder)
     }
 
-    /// What the figure says it shows.
-    fn describe(&self) -> String {
+    /// What was computed: where, the rail as `rail` names it, what carries it.
+    fn describe(&self, rail: &str) -> String {
         let place = match self.kind {
             "point" => format!("point receptance at x = {} m", self.at),
             _ => format!("transfer receptance at x = {} m, force at {} m", self.at, self.excite),
         };
-        format!("{place}; {} rail (η = {}) on {}", self.rail, self.loss_factors[0], self.support)
+        format!("{place}; {rail} rail, η {}; {}", self.loss_factors[0], self.support)
     }
 
     /// The figure: magnitude over frequency (both logarithmic) above the phase, the resonances marked.
     pub fn figure(&self) -> PlotSpec {
         let title = if self.title.is_empty() { "Track receptance" } else { self.title.as_str() };
         let mut figure = PlotSpec::new("receptance", title, "frequency f (Hz)", "");
-        figure.subtitle = self.describe();
+        // The rail's theory without its parameters: the subtitle must stay one readable line.
+        figure.subtitle = self.describe(self.rail.split(" (").next().unwrap_or(&self.rail));
         let curve = |label: &str, points: Vec<(f64, f64)>| Series {
             label: Some(label.into()),
             color: 1,
@@ -92,7 +93,7 @@ impl ReceptanceStudy {
 impl Output for ReceptanceStudy {
     fn write_text(&self, f: &mut Formatter<'_>) -> fmt::Result {
         let title = if self.title.is_empty() { String::new() } else { format!(" — {}", self.title) };
-        writeln!(f, "frictrack receptance{title}: {}", self.describe())?;
+        writeln!(f, "frictrack receptance{title}: {}", self.describe(&self.rail))?;
         let (first, last) = (self.points[0], self.points[self.points.len() - 1]);
         writeln!(
             f,

@@ -100,7 +100,7 @@ fn a_discrete_track_has_the_resonances_of_the_literature() {
     assert!(peaks[0] < 250.0 && (300.0..600.0).contains(&peaks[1]), "{peaks:?}");
     assert!((peaks[2] / 1072.0 - 1.0).abs() < 1e-2, "{peaks:?}");
     assert!(mid_span.warnings.is_empty(), "{:?}", mid_span.warnings);
-    assert!(mid_span.support.starts_with("100 sleepers every 0.6 m"), "{}", mid_span.support);
+    assert!(mid_span.support.starts_with("100 sleepers every 0.6 m (150 kg; pads 200 MN/m"), "{}", mid_span.support);
     let above = ReceptanceStudy::of(&scenario, &at(30.3), &runner).unwrap();
     let index = mid_span.points.iter().position(|p| p.frequency >= peaks[2]).unwrap();
     assert!(above.points[index].magnitude < mid_span.points[index].magnitude / 3.0);
