@@ -4,6 +4,7 @@
 //! (local peaks of |α|) refined between the grid's frequencies; and what makes the numbers doubtful — a mesh too
 //! coarse for the top frequency, waves that reach the ends and come back.
 
+use crate::receptance_peaks::{Resonance, resonances, warnings};
 use fem_beam::receptance::FrequencyResponse;
 use num_complex::Complex64;
 use runner::Runner;
@@ -11,13 +12,6 @@ use scenario::Scenario;
 use scenario::error::{Result, StudyError, invalid};
 use serde::Serialize;
 use std::f64::consts::TAU;
-
-/// Elements per bending wavelength below which the mesh is said not to resolve a frequency: 10 (Hermite's error is
-/// then below 1e-4 of |α|, the Timoshenko element's below 1 %; docs/theory.md §17).
-pub const ELEMENTS_PER_WAVELENGTH: f64 = 10.0;
-
-/// Reflections from the ends above this share of the outgoing wave are warned about (1 %).
-pub const REFLECTION_LIMIT: f64 = 0.01;
 
 /// The most frequencies one request may ask for (checked before anything is allocated).
 pub const MAX_FREQUENCIES: usize = 100_000;
@@ -61,19 +55,6 @@ impl ReceptancePoint {
             mobility: TAU * frequency * alpha.norm(),
         }
     }
-}
-
-/// A resonance: a local peak of |α|, its frequency refined between the grid's neighbours (golden section, to 1e-6 of
-/// the frequency).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct Resonance {
-    /// f (Hz).
-    pub frequency: f64,
-    /// |α| there (m/N).
-    pub magnitude: f64,
-    /// Peak over the higher of its two bases — the least |α| on each side before the curve climbs above the peak —
-    /// (≥ 1.05: smaller bumps are not listed).
-    pub prominence: f64,
 }
 
 /// The receptance of a scenario's track.
@@ -180,8 +161,9 @@ impl ReceptanceStudy {
         let values = runner.map(&request.frequencies, |&f| alpha(f))?;
         let points: Vec<ReceptancePoint> =
             request.frequencies.iter().zip(&values).map(|(&f, &a)| ReceptancePoint::of(f, a)).collect();
-        let resonances = crate::receptance_peaks::resonances(&points, |f| alpha(f).map(|a| a.norm()))?;
-        let warnings = crate::receptance_peaks::warnings(&model, request);
+        let curve: Vec<(f64, f64)> = points.iter().map(|p| (p.frequency, p.magnitude)).collect();
+        let resonances = resonances(&curve, |f| alpha(f).map(|a| a.norm()))?;
+        let warnings = warnings(&model, &request.frequencies, request.excite);
         Ok(Self {
             title: scenario.title.clone(),
             excite: request.excite,

@@ -2,22 +2,42 @@
 //! between the grid's frequencies; a mesh that does not resolve the bending waves at the top frequency; waves that
 //! reach the track's ends and come back.
 
-use crate::receptance::{ELEMENTS_PER_WAVELENGTH, REFLECTION_LIMIT, ReceptancePoint, ReceptanceRequest, Resonance};
 use fem_beam::BeamModel;
 use fem_beam::dispersion::wavenumbers;
 use num_complex::Complex64;
 use scenario::error::Result;
+use serde::Serialize;
 use std::f64::consts::TAU;
+
+/// Elements per bending wavelength below which the mesh is said not to resolve a frequency: 10 (Hermite's error is
+/// then below 1e-4 of |α|, the Timoshenko element's below 1 %; docs/theory.md §17).
+pub const ELEMENTS_PER_WAVELENGTH: f64 = 10.0;
+
+/// Reflections from the ends above this share of the outgoing wave are warned about (1 %).
+pub const REFLECTION_LIMIT: f64 = 0.01;
+
+/// A resonance: a local peak of |α|, its frequency refined between the grid's neighbours (golden section, to 1e-6 of
+/// the frequency).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Resonance {
+    /// f (Hz).
+    pub frequency: f64,
+    /// |α| there (m/N).
+    pub magnitude: f64,
+    /// Peak over the higher of its two bases — the least |α| on each side before the curve climbs above the peak —
+    /// (≥ 1.05: smaller bumps are not listed).
+    pub prominence: f64,
+}
 
 /// A peak must stand this much above the larger minimum beside it to be listed (5 %).
 const PROMINENCE: f64 = 1.05;
 
-/// The local peaks of |α| on the grid, each refined by golden section on `magnitude` between its neighbours' frequencies
-/// (to 1e-6 of the frequency: the peak's value is flat there, its place is what is refined).
-pub fn resonances(points: &[ReceptancePoint], magnitude: impl Fn(f64) -> Result<f64>) -> Result<Vec<Resonance>> {
+/// The local peaks of a curve of (frequency Hz, |α|), each refined by golden section on `magnitude` between its
+/// neighbours' frequencies (to 1e-6 of the frequency: the peak's value is flat there, its place is what is refined).
+pub fn resonances(points: &[(f64, f64)], magnitude: impl Fn(f64) -> Result<f64>) -> Result<Vec<Resonance>> {
     let mut out = Vec::new();
     for i in 1..points.len().saturating_sub(1) {
-        let (before, here, after) = (points[i - 1].magnitude, points[i].magnitude, points[i + 1].magnitude);
+        let (before, here, after) = (points[i - 1].1, points[i].1, points[i + 1].1);
         if !(here > before && here >= after) {
             continue;
         }
@@ -27,7 +47,7 @@ pub fn resonances(points: &[ReceptancePoint], magnitude: impl Fn(f64) -> Result<
         if here < PROMINENCE * floor {
             continue;
         }
-        let (frequency, magnitude) = golden_peak(points[i - 1].frequency, points[i + 1].frequency, &magnitude)?;
+        let (frequency, magnitude) = golden_peak(points[i - 1].0, points[i + 1].0, &magnitude)?;
         out.push(Resonance { frequency, magnitude, prominence: magnitude / floor });
     }
     Ok(out)
@@ -35,15 +55,15 @@ pub fn resonances(points: &[ReceptancePoint], magnitude: impl Fn(f64) -> Result<
 
 /// The least |α| to the left of peak `i` before the curve rises above it (or the grid ends): the topographic
 /// prominence's left base, blind to ripples on the flank.
-fn lowest_before(points: &[ReceptancePoint], i: usize) -> f64 {
-    let peak = points[i].magnitude;
-    points[..i].iter().rev().map(|p| p.magnitude).take_while(|&m| m <= peak).fold(peak, f64::min)
+fn lowest_before(points: &[(f64, f64)], i: usize) -> f64 {
+    let peak = points[i].1;
+    points[..i].iter().rev().map(|p| p.1).take_while(|&m| m <= peak).fold(peak, f64::min)
 }
 
 /// The least |α| to the right of peak `i` before the curve rises above it (or the grid ends).
-fn lowest_after(points: &[ReceptancePoint], i: usize) -> f64 {
-    let peak = points[i].magnitude;
-    points[i + 1..].iter().map(|p| p.magnitude).take_while(|&m| m <= peak).fold(peak, f64::min)
+fn lowest_after(points: &[(f64, f64)], i: usize) -> f64 {
+    let peak = points[i].1;
+    points[i + 1..].iter().map(|p| p.1).take_while(|&m| m <= peak).fold(peak, f64::min)
 }
 
 /// The maximum of `f` on [a, b] by golden section, to 1e-6 of b.
@@ -75,9 +95,10 @@ fn sleepers_per_metre(model: &BeamModel, omega: f64) -> Complex64 {
     pad * below / (pad + below) / s.spacing
 }
 
-/// The doubts about `request` on `model`: elements too long for the bending waves at the top frequencies, and
-/// waves from the force that come back from the ends (on a track without absorbing zones).
-pub fn warnings(model: &BeamModel, request: &ReceptanceRequest) -> Vec<String> {
+/// The doubts about a receptance of `model` at `frequencies` (Hz, increasing) for a force at `excite` (m):
+/// elements too long for the bending waves at the top frequencies, and waves from the force that come back from the
+/// ends (on a track without absorbing zones).
+pub fn warnings(model: &BeamModel, frequencies: &[f64], excite: f64) -> Vec<String> {
     let (beam, foundation, mesh) = (model.beam(), model.foundation(), model.mesh());
     let l = mesh.element_length();
     let waves = |f: f64| {
@@ -91,15 +112,11 @@ pub fn warnings(model: &BeamModel, request: &ReceptanceRequest) -> Vec<String> {
     let shortest = |f: f64| TAU / waves(f).iter().map(|k| k.re.abs()).fold(0.0, f64::max);
     let mut out = Vec::new();
     let resolved = |f: &&f64| shortest(**f) / l >= ELEMENTS_PER_WAVELENGTH;
-    let top = *request.frequencies.last().expect("validated: at least one");
+    let top = *frequencies.last().expect("validated: at least one");
     if !resolved(&&top) {
         let needed = shortest(top) / ELEMENTS_PER_WAVELENGTH;
-        let up_to = request
-            .frequencies
-            .iter()
-            .rev()
-            .find(resolved)
-            .map_or("none of them".to_string(), |f| format!("up to {f} Hz"));
+        let up_to =
+            frequencies.iter().rev().find(resolved).map_or("none of them".to_string(), |f| format!("up to {f} Hz"));
         out.push(format!(
             "the mesh's {l} m elements resolve the bending waves ({ELEMENTS_PER_WAVELENGTH} elements a wavelength) {up_to}; \
              at {top} Hz the wavelength is {:.3} m: elements of {needed:.4} m or shorter resolve it",
@@ -107,9 +124,8 @@ pub fn warnings(model: &BeamModel, request: &ReceptanceRequest) -> Vec<String> {
         ));
     }
     if model.element_damping().iter().all(|&c| c == foundation.damping) {
-        let distance = request.excite.min(mesh.length - request.excite);
-        let (f, back) = request
-            .frequencies
+        let distance = excite.min(mesh.length - excite);
+        let (f, back) = frequencies
             .iter()
             .map(|&f| (f, (-2.0 * distance * waves(f).iter().map(|k| k.im).fold(f64::INFINITY, f64::min)).exp()))
             .fold((0.0, 0.0), |best, this| if this.1 > best.1 { this } else { best });
