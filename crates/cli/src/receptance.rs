@@ -2,12 +2,12 @@
 //! scenario's own model in the frequency domain (docs/theory.md §17), with its resonances and a figure.
 
 use crate::TableFormat;
-use crate::files::{check_output_file, prepare_output_folder};
 use anyhow::Result;
 use clap::Args;
 use scenario::Scenario;
 use std::path::PathBuf;
 use study::receptance::{ReceptanceRequest, ReceptanceStudy, frequency_range};
+use study::receptance_text::check_folder;
 
 /// Options of `frictrack receptance`.
 #[derive(Debug, Args)]
@@ -68,10 +68,7 @@ pub fn run(args: &ReceptanceArgs) -> Result<()> {
     let at = args.at.unwrap_or(0.5 * scenario.mesh.length);
     let request = ReceptanceRequest { frequencies, excite: args.excite.unwrap_or(at), at };
     if let Some(folder) = &args.out {
-        prepare_output_folder("--out", folder)?;
-        for name in ["receptance.csv", "receptance.json", "receptance.png", "receptance.svg"] {
-            check_output_file("--out", &folder.join(name))?;
-        }
+        check_folder(folder, "--out")?;
     }
     let runner = crate::jobs::runner(args.jobs, args.format != TableFormat::Text)?;
     let study = ReceptanceStudy::of(&scenario, &request, &runner).map_err(|e| rename(e, "--frequencies"))?;

@@ -100,7 +100,7 @@ impl BeamModel {
             (SymmetricBanded::zeros(n, band), SymmetricBanded::zeros(n, band), SymmetricBanded::zeros(n, band));
         for e in 0..mesh.elements {
             let ce = element.distributed(element_damping[e]);
-            let free: [Option<usize>; 4] = std::array::from_fn(|k| dofs.free_index(2 * e + k));
+            let free = dofs.element_free(e);
             for a in 0..4 {
                 for b in 0..=a {
                     if let (Some(i), Some(j)) = (free[a], free[b]) {
@@ -111,13 +111,16 @@ impl BeamModel {
                 }
             }
         }
-        if let Some((layer, nodes)) = &sleepers {
-            for stamp in layer.stamps(&dofs, mesh.nodes(), nodes) {
-                let (i, j, [m, c, k]) = stamp;
-                mass.add(i, j, m);
-                damping.add(i, j, c);
-                stiffness.add(i, j, k);
-            }
+        if let Some((layers, nodes)) = &sleepers {
+            let entries =
+                |matrix: &mut SymmetricBanded, layer: fn(&crate::sleepers::Layer) -> f64, mass: fn(f64) -> f64| {
+                    for (i, j, value) in layers.entries(&dofs, mesh.nodes(), nodes, layer, mass) {
+                        matrix.add(i, j, value);
+                    }
+                };
+            entries(&mut mass, |_| 0.0, |m| m);
+            entries(&mut damping, |l| l.damping, |_| 0.0);
+            entries(&mut stiffness, |l| l.stiffness, |_| 0.0);
         }
         let rayleigh = Rayleigh::default();
         Ok(Self {

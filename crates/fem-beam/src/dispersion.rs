@@ -13,6 +13,7 @@
 //! v_cr = (4 k_f EI/(ρA)²)^{1/4} ([`crate::reference::InfiniteBeam::critical_speed`]).
 
 use crate::error::Result;
+use crate::golden::golden_section;
 use crate::properties::{Beam, Foundation};
 use crate::reference::InfiniteBeam;
 use num_complex::Complex64;
@@ -58,30 +59,15 @@ pub fn critical_wave(beam: &Beam, foundation: &Foundation) -> Result<CriticalWav
         return Ok(CriticalWave { wavenumber: euler_k, speed: euler.critical_speed() });
     }
     let k_f = foundation.stiffness;
-    let phase = |ln_k: f64| {
+    let mut phase = |ln_k: f64| {
         let k = ln_k.exp();
-        bending_frequency(beam, k_f, k) / k
+        Ok::<_, std::convert::Infallible>(bending_frequency(beam, k_f, k) / k)
     };
     // Shear and rotary inertia soften short waves: the minimum moves to shorter waves than Euler–Bernoulli's, never
     // by a factor of 100 for a rail on any soil (a 20-fold bracket either way is searched).
     let centre = euler_k.ln();
-    let (mut a, mut b) = (centre - 20f64.ln(), centre + 20f64.ln());
-    let ratio = 0.5 * (5f64.sqrt() - 1.0);
-    let (mut c, mut d) = (b - ratio * (b - a), a + ratio * (b - a));
-    let (mut fc, mut fd) = (phase(c), phase(d));
-    while b - a > 1e-12 {
-        if fc < fd {
-            (b, d, fd) = (d, c, fc);
-            c = b - ratio * (b - a);
-            fc = phase(c);
-        } else {
-            (a, c, fc) = (c, d, fd);
-            d = a + ratio * (b - a);
-            fd = phase(d);
-        }
-    }
-    let ln_k = 0.5 * (a + b);
-    Ok(CriticalWave { wavenumber: ln_k.exp(), speed: phase(ln_k) })
+    let Ok((ln_k, speed)) = golden_section(&mut phase, centre - 20f64.ln(), centre + 20f64.ln(), 1e-12, false);
+    Ok(CriticalWave { wavenumber: ln_k.exp(), speed })
 }
 
 /// The static deflection (m, magnitude) under a point force `force` (N) on `beam` resting on a foundation of

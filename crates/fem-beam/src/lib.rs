@@ -28,6 +28,7 @@ pub mod distributed;
 pub mod element;
 pub mod error;
 pub mod extreme;
+pub mod golden;
 pub mod load;
 pub mod mesh;
 pub mod modal;

@@ -10,7 +10,7 @@
 //! Loads are kept per element so that element end forces (hence bending moments at nodes) can be recovered.
 
 use crate::discretisation::Discretisation;
-use crate::element::{Element, ElementVector, hermite};
+use crate::element::{ElementVector, hermite};
 use crate::error::{FemError, Result};
 use crate::mesh::Mesh;
 use crate::supports::DofMap;
@@ -37,19 +37,18 @@ impl ElementLoad {
 impl ElementLoad {
     /// The consistent nodal loads q·∫Ψᵀdx of a uniform load `per_length` (N/m, positive upward) over the part of
     /// [a, b] (m) that lies on the beam, one contribution per element it covers (none when it misses the beam):
-    /// the closed-form integrals of the shape functions over partial elements ([`Element::shape_integral`]).
+    /// the closed-form integrals of the shape functions over partial elements ([`crate::element::Element::shape_integral`]).
     pub fn uniform_patch(
         beam: &Discretisation,
         a: f64,
         b: f64,
         per_length: f64,
     ) -> impl Iterator<Item = ElementLoad> + '_ {
-        let (mesh, element) = (beam.mesh(), beam.element());
+        let (mesh, shape) = (beam.mesh(), beam.element());
         let l = mesh.element_length();
         let (a, b) = (a.max(0.0), b.min(mesh.length));
         let (first, last) =
             if b > a { ((a / l).floor() as usize, ((b / l).ceil() as usize).min(mesh.elements)) } else { (0, 0) };
-        let shape: Element = element;
         (first..last).filter_map(move |e| {
             let x_a = mesh.node_x(e);
             let (xi0, xi1) = (((a - x_a) / l).clamp(0.0, 1.0), ((b - x_a) / l).clamp(0.0, 1.0));

@@ -6,7 +6,7 @@
 use crate::error::{FemError, Result, non_negative, positive};
 
 /// Cross-section and material of the rail (an Euler–Bernoulli or Timoshenko beam). SI units. In files its keys are
-/// those of [`crate::beam_keys`].
+/// those of `beam_keys` (with the `serde` feature).
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(
     feature = "serde",

@@ -39,8 +39,8 @@ impl<'a> FrequencyResponse<'a> {
         let dofs = model.dofs();
         let (point, shape) = beam.shape_at(excite)?;
         let mut rhs = vec![Complex64::new(0.0, 0.0); dofs.free_len()];
-        for (k, n) in shape.iter().enumerate() {
-            if let Some(d) = dofs.free_index(2 * point.element + k) {
+        for (free, n) in dofs.element_free(point.element).into_iter().zip(shape) {
+            if let Some(d) = free {
                 rhs[d] += n;
             }
         }
@@ -53,7 +53,7 @@ impl<'a> FrequencyResponse<'a> {
         at.iter()
             .map(|&x| {
                 let (p, n) = beam.shape_at(x)?;
-                Ok((0..4).filter_map(|k| dofs.free_index(2 * p.element + k).map(|d| rhs[d] * n[k])).sum())
+                Ok(dofs.element_free(p.element).into_iter().zip(n).filter_map(|(d, n)| d.map(|d| rhs[d] * n)).sum())
             })
             .collect()
     }
@@ -71,7 +71,7 @@ impl<'a> FrequencyResponse<'a> {
             (Complex64::new(1.0, model.beam().loss_factor), Complex64::new(1.0, model.foundation().loss_factor));
         for e in 0..model.mesh().elements {
             let damping: ElementMatrix = model.element_damping_matrix(e);
-            let free: [Option<usize>; 4] = std::array::from_fn(|k| dofs.free_index(2 * e + k));
+            let free = dofs.element_free(e);
             for a in 0..4 {
                 for b in 0..4 {
                     if let (Some(i), Some(j)) = (free[a], free[b]) {
@@ -84,19 +84,15 @@ impl<'a> FrequencyResponse<'a> {
             }
         }
         if let Some((sleepers, nodes)) = model.sleepers() {
-            // Each layer's spring with its own loss factor, its dashpot and the sleeper's mass.
-            let layered = |layer: &crate::sleepers::Layer| {
-                Complex64::new(layer.stiffness, layer.stiffness * layer.loss_factor + omega * layer.damping)
+            // Each layer's spring with its own loss factor and its dashpot; the sleeper's inertia −ω²m_s.
+            let layer = |l: &crate::sleepers::Layer| {
+                Complex64::new(l.stiffness, l.stiffness * l.loss_factor + omega * l.damping)
             };
-            let (pad, ballast) = (layered(&sleepers.pad), layered(&sleepers.ballast));
-            let mesh_nodes = model.mesh().nodes();
-            for (s, &node) in nodes.iter().enumerate() {
-                let z = dofs.free_index(2 * mesh_nodes + s).expect("a sleeper's DOF is free");
-                out.add(z, z, pad + ballast - omega * omega * sleepers.mass);
-                if let Some(w) = dofs.free_index(2 * node) {
-                    out.add(w, w, pad);
-                    out.add(w, z, -pad);
-                    out.add(z, w, -pad);
+            let inertia = |m: f64| Complex64::new(-omega * omega * m, 0.0);
+            for (i, j, value) in sleepers.entries(dofs, model.mesh().nodes(), nodes, layer, inertia) {
+                out.add(i, j, value);
+                if i != j {
+                    out.add(j, i, value);
                 }
             }
         }

@@ -110,22 +110,31 @@ impl Sleepers {
     }
 }
 
-/// One entry (i, j ≤ i) of the free DOFs' lower triangle and what it adds to [M, C, K].
-pub type Stamp = (usize, usize, [f64; 3]);
-
 impl Sleepers {
-    /// What the sleepers under `nodes` add to M, C and K over the free DOFs of `dofs` (a map with their DOFs, of a
-    /// mesh of `mesh_nodes` nodes): m_s on z; the pad's k_p, c_p on (w, z) as [[1, −1], [−1, 1]] (on z alone where a
-    /// support holds w); the ballast's k_b, c_b on z.
-    pub fn stamps(&self, dofs: &crate::supports::DofMap, mesh_nodes: usize, nodes: &[usize]) -> Vec<Stamp> {
-        let (pad, ballast) = (&self.pad, &self.ballast);
+    /// What the sleepers under `nodes` add to a matrix over the free DOFs of `dofs` (a map with their DOFs, of a mesh
+    /// of `mesh_nodes` nodes), as entries (i, j ≤ i) of its lower triangle: on z the sleeper's `mass` term and both
+    /// layers, on (w, z) the pad as [[1, −1], [−1, 1]] (on z alone where a support holds w). `layer` is what a layer
+    /// contributes — its k for K, c for C, k(1 + iη) + iωc for a dynamic stiffness — and `mass` what m_s does (m_s
+    /// for M, −ω²m_s for a dynamic stiffness, 0 for K and C).
+    pub fn entries<T>(
+        &self,
+        dofs: &crate::supports::DofMap,
+        mesh_nodes: usize,
+        nodes: &[usize],
+        layer: impl Fn(&Layer) -> T,
+        mass: impl Fn(f64) -> T,
+    ) -> Vec<(usize, usize, T)>
+    where
+        T: Copy + std::ops::Add<Output = T> + std::ops::Neg<Output = T>,
+    {
+        let (pad, ballast) = (layer(&self.pad), layer(&self.ballast));
         let mut out = Vec::with_capacity(3 * nodes.len());
         for (s, &node) in nodes.iter().enumerate() {
             let z = dofs.free_index(2 * mesh_nodes + s).expect("a sleeper's DOF is free");
-            out.push((z, z, [self.mass, pad.damping + ballast.damping, pad.stiffness + ballast.stiffness]));
+            out.push((z, z, mass(self.mass) + pad + ballast));
             if let Some(w) = dofs.free_index(2 * node) {
-                out.push((w, w, [0.0, pad.damping, pad.stiffness]));
-                out.push((z.max(w), z.min(w), [0.0, -pad.damping, -pad.stiffness]));
+                out.push((w, w, pad));
+                out.push((z.max(w), z.min(w), -pad));
             }
         }
         out

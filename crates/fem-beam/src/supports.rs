@@ -130,6 +130,11 @@ impl DofMap {
         self.free_of_full[full_dof]
     }
 
+    /// Free index of each of element `e`'s four DOFs (w_a, θ_a, w_b, θ_b), None where a support holds it.
+    pub fn element_free(&self, e: usize) -> [Option<usize>; 4] {
+        std::array::from_fn(|k| self.free_of_full[2 * e + k])
+    }
+
     /// Full index of each free DOF, in order.
     pub fn full_indices(&self) -> &[usize] {
         &self.full_of_free

@@ -32,6 +32,9 @@ pub(crate) fn receptance(
     let scenario = overrides(&keywords)?.apply(Source::of(kind, text)?.read()?);
     let at = at.unwrap_or(0.5 * scenario.mesh.length);
     let request = ReceptanceRequest { frequencies, excite: excite.unwrap_or(at), at };
+    if let Some(folder) = &out {
+        study::receptance_text::check_folder(folder, "out").map_err(to_python)?;
+    }
     let runner = Runner::new(jobs).map_err(to_python)?;
     let work = move |stop: &_, _: &interruptible::Progress| {
         let study = ReceptanceStudy::of(&scenario, &request, &runner.with_stop(stop))?;

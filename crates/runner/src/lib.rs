@@ -14,8 +14,6 @@
 
 pub mod cost;
 mod critical;
-mod golden;
-pub use golden::golden_section;
 pub mod journal;
 mod optimal_force;
 mod peak;
@@ -23,6 +21,7 @@ mod pool;
 pub mod shard;
 
 pub use critical::{CriticalSpeed, critical_speed};
+pub use fem_beam::golden::golden_section;
 pub use journal::Journal;
 pub use optimal_force::{OptimalForce, log_spaced, optimal_device_force, refine_device_force, refine_from_scan};
 pub use peak::{Metric, PeakLocation, RefinedPeak, refine_maximum, unrefined};

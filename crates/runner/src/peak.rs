@@ -9,8 +9,8 @@
 //! still refined to its largest peak, not to whichever one golden section meets. `scan` = 0 is golden section on the
 //! whole bracket. A maximum at the first or last speed is no interior peak: it is returned unrefined, as a bound.
 
-use super::golden::golden_section;
 use super::{Runner, SweepPoint};
+use fem_beam::golden::golden_section;
 use scenario::Case;
 use scenario::error::{Result, invalid};
 use serde::Serialize;

@@ -4,6 +4,7 @@
 
 use fem_beam::BeamModel;
 use fem_beam::dispersion::wavenumbers;
+use fem_beam::golden::golden_section;
 use num_complex::Complex64;
 use scenario::error::Result;
 use serde::Serialize;
@@ -47,7 +48,8 @@ pub fn resonances(points: &[(f64, f64)], magnitude: impl Fn(f64) -> Result<f64>)
         if here < PROMINENCE * floor {
             continue;
         }
-        let (frequency, magnitude) = golden_peak(points[i - 1].0, points[i + 1].0, &magnitude)?;
+        let (a, b) = (points[i - 1].0, points[i + 1].0);
+        let (frequency, magnitude) = golden_section(&mut |f| magnitude(f), a, b, 1e-6 * b, true)?;
         out.push(Resonance { frequency, magnitude, prominence: magnitude / floor });
     }
     Ok(out)
@@ -64,26 +66,6 @@ fn lowest_before(points: &[(f64, f64)], i: usize) -> f64 {
 fn lowest_after(points: &[(f64, f64)], i: usize) -> f64 {
     let peak = points[i].1;
     points[i + 1..].iter().map(|p| p.1).take_while(|&m| m <= peak).fold(peak, f64::min)
-}
-
-/// The maximum of `f` on [a, b] by golden section, to 1e-6 of b.
-fn golden_peak(mut a: f64, mut b: f64, f: &impl Fn(f64) -> Result<f64>) -> Result<(f64, f64)> {
-    let ratio = 0.5 * (5f64.sqrt() - 1.0);
-    let (mut c, mut d) = (b - ratio * (b - a), a + ratio * (b - a));
-    let (mut fc, mut fd) = (f(c)?, f(d)?);
-    while b - a > 1e-6 * b {
-        if fc > fd {
-            (b, d, fd) = (d, c, fc);
-            c = b - ratio * (b - a);
-            fc = f(c)?;
-        } else {
-            (a, c, fc) = (c, d, fd);
-            d = a + ratio * (b - a);
-            fd = f(d)?;
-        }
-    }
-    let x = 0.5 * (a + b);
-    Ok((x, f(x)?))
 }
 
 /// The sleepers' dynamic stiffness spread over their spacing (N/m², 0 without): the pad in series with the sleeper's

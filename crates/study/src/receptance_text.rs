@@ -19,6 +19,16 @@ pub const RECEPTANCE_COLUMNS: [Column; 6] = [
     ("mobility", "m/(s·N)"),
 ];
 
+/// The files a receptance writes into its folder.
+const FILES: [&str; 4] = ["receptance.csv", "receptance.json", "receptance.png", "receptance.svg"];
+
+/// Create `folder` if missing and check that none of a receptance's files there is a link, device or directory
+/// (`what` names the folder in errors): before the work, so that a bad folder costs nothing.
+pub fn check_folder(folder: &std::path::Path, what: &str) -> scenario::error::Result<()> {
+    report::files::prepare_output_folder(what, folder)?;
+    FILES.iter().try_for_each(|name| report::files::check_output_file(what, &folder.join(name)))
+}
+
 impl ReceptanceStudy {
     /// One row per frequency ([`RECEPTANCE_COLUMNS`]).
     pub fn csv(&self) -> String {
@@ -33,11 +43,8 @@ impl ReceptanceStudy {
     /// Write receptance.csv, receptance.json and the figure into `folder` (created if missing; every file checked
     /// first, written atomically), `what` naming the folder in errors (`--out`, `out`); the figures' file names.
     pub fn write_folder(&self, folder: &std::path::Path, what: &str) -> scenario::error::Result<Vec<String>> {
-        use report::files::{check_output_file, prepare_output_folder, write_atomically, write_figures};
-        prepare_output_folder(what, folder)?;
-        for name in ["receptance.csv", "receptance.json", "receptance.png", "receptance.svg"] {
-            check_output_file(what, &folder.join(name))?;
-        }
+        use report::files::{write_atomically, write_figures};
+        check_folder(folder, what)?;
         let json = pretty(self).map_err(|e| scenario::error::StudyError::Io {
             path: folder.join("receptance.json").display().to_string(),
             message: e.to_string(),

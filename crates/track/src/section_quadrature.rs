@@ -35,7 +35,7 @@ fn row_at(model: &BeamModel, e: usize, xi: f64) -> InteractionRow {
         InteractionRow::from_entries(dofs.free_index(2 * node).map(|d| (d, 1.0)))
     } else {
         let n = model.element().shape(xi);
-        InteractionRow::from_entries((0..4).filter_map(|k| dofs.free_index(2 * e + k).map(|d| (d, n[k]))))
+        InteractionRow::from_entries(dofs.element_free(e).into_iter().zip(n).filter_map(|(d, n)| d.map(|d| (d, n))))
     }
 }
 
