@@ -112,15 +112,15 @@ impl BeamModel {
             }
         }
         if let Some((layers, nodes)) = &sleepers {
-            let entries =
-                |matrix: &mut SymmetricBanded, layer: fn(&crate::sleepers::Layer) -> f64, mass: fn(f64) -> f64| {
-                    for (i, j, value) in layers.entries(&dofs, mesh.nodes(), nodes, layer, mass) {
-                        matrix.add(i, j, value);
-                    }
-                };
-            entries(&mut mass, |_| 0.0, |m| m);
-            entries(&mut damping, |l| l.damping, |_| 0.0);
-            entries(&mut stiffness, |l| l.stiffness, |_| 0.0);
+            type Layers = fn(&crate::SleeperSupport) -> (f64, f64);
+            let entries = |matrix: &mut SymmetricBanded, layers_of: Layers, mass: fn(f64) -> f64| {
+                for (i, j, value) in layers.entries(&dofs, mesh.nodes(), nodes, layers_of, mass) {
+                    matrix.add(i, j, value);
+                }
+            };
+            entries(&mut mass, |_| (0.0, 0.0), |m| m);
+            entries(&mut damping, |s| (s.pad.damping, s.ballast.damping), |_| 0.0);
+            entries(&mut stiffness, |s| (s.pad.stiffness, s.bonded_stiffness()), |_| 0.0);
         }
         let rayleigh = Rayleigh::default();
         Ok(Self {

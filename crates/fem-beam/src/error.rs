@@ -45,6 +45,18 @@ pub enum FemError {
         /// What is allowed, in words.
         allowed: &'static str,
     },
+    /// A value of a `[[sleepers.exceptions]]` entry is out of range.
+    #[error("invalid sleepers.exceptions[{exception}].{key} = {value}: {allowed}")]
+    InvalidSleeper {
+        /// Which exception (0-based, in the order given).
+        exception: usize,
+        /// Which key of it.
+        key: &'static str,
+        /// The offending value.
+        value: f64,
+        /// What is allowed, in words.
+        allowed: String,
+    },
     /// A vector does not have the length the model expects.
     #[error("{what} has length {actual}, expected {expected}")]
     LengthMismatch {
@@ -89,6 +101,7 @@ impl FemError {
             self,
             FemError::InvalidField { .. }
                 | FemError::InvalidCount { .. }
+                | FemError::InvalidSleeper { .. }
                 | FemError::NoSteadyState { .. }
                 | FemError::InvalidTrain { .. }
                 | FemError::UnknownTrain { .. }

@@ -36,6 +36,7 @@ pub mod properties;
 pub mod receptance;
 pub mod reference;
 pub mod section;
+pub mod sleeper_exceptions;
 pub mod sleepers;
 pub mod span;
 pub mod span_oscillator;
@@ -54,7 +55,8 @@ pub use extreme::{Extreme, LiftOffZone};
 pub use load::LoadVector;
 pub use mesh::Mesh;
 pub use properties::{Beam, BeamTheory, Foundation, FoundationLaw, Rayleigh};
-pub use sleepers::{Layer, Sleepers};
+pub use sleeper_exceptions::{BallastContact, SleeperException, SleeperSupport};
+pub use sleepers::{BayResonances, Layer, Sleepers};
 pub use supports::{DofMap, Support, Supports};
 pub use train::{Axle, Patch, Train};
 

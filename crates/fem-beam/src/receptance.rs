@@ -88,8 +88,9 @@ impl<'a> FrequencyResponse<'a> {
             let layer = |l: &crate::sleepers::Layer| {
                 Complex64::new(l.stiffness, l.stiffness * l.loss_factor + omega * l.damping)
             };
+            let layers = |s: &crate::SleeperSupport| (layer(&s.pad), layer(&s.ballast));
             let inertia = |m: f64| Complex64::new(-omega * omega * m, 0.0);
-            for (i, j, value) in sleepers.entries(dofs, model.mesh().nodes(), nodes, layer, inertia) {
+            for (i, j, value) in sleepers.entries(dofs, model.mesh().nodes(), nodes, layers, inertia) {
                 out.add(i, j, value);
                 if i != j {
                     out.add(j, i, value);

@@ -6,6 +6,8 @@
 
 use crate::error::{FemError, Result, non_negative, positive};
 use crate::mesh::Mesh;
+use crate::properties::Beam;
+use crate::sleeper_exceptions::{SleeperException, SleeperSupport};
 
 /// A spring–dashpot layer: stiffness (N/m), viscous damping (N·s/m), loss factor (hysteretic, frequency domain).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -18,9 +20,19 @@ pub struct Layer {
     pub loss_factor: f64,
 }
 
-/// Sleepers under the rail, per rail seat. Defaults: typical values of a ballasted track (Knothe & Grassie 1993):
-/// a = 0.6 m, m_s = 150 kg, pads k_p = 200 MN/m, c_p = 30 kN·s/m, ballast k_b = 100 MN/m, c_b = 50 kN·s/m.
+/// The lumped resonances of a bay (Hz), [`Sleepers::bay_resonances`].
 #[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BayResonances {
+    /// The whole track bouncing on the ballast.
+    pub track: f64,
+    /// The rail on its pads, the sleeper against it.
+    pub rail_on_pads: f64,
+}
+
+/// Sleepers under the rail, per rail seat. Defaults: typical values of a ballasted track (Knothe & Grassie 1993):
+/// a = 0.6 m, m_s = 150 kg, pads k_p = 200 MN/m, c_p = 30 kN·s/m, ballast k_b = 100 MN/m, c_b = 50 kN·s/m, no
+/// exceptions.
+#[derive(Debug, Clone, PartialEq)]
 pub struct Sleepers {
     /// a (m), > 0.
     pub spacing: f64,
@@ -32,6 +44,8 @@ pub struct Sleepers {
     pub pad: Layer,
     /// The ballast under the sleeper.
     pub ballast: Layer,
+    /// Sleepers that differ from the rest, later entries over earlier ones ([`Sleepers::support`]).
+    pub exceptions: Vec<SleeperException>,
 }
 
 impl Default for Sleepers {
@@ -42,6 +56,7 @@ impl Default for Sleepers {
             mass: 150.0,
             pad: Layer { stiffness: 200e6, damping: 30e3, loss_factor: 0.0 },
             ballast: Layer { stiffness: 100e6, damping: 50e3, loss_factor: 0.0 },
+            exceptions: Vec::new(),
         }
     }
 }
@@ -70,6 +85,38 @@ impl Sleepers {
         kp * kb / (kp + kb) / self.spacing
     }
 
+    /// The sleepers' mass spread over their spacing, m_s/a (kg/m).
+    pub fn mass_per_length(&self) -> f64 {
+        self.mass / self.spacing
+    }
+
+    /// The equivalent continuous track of `beam` on these sleepers and a soil `k_f` (N/m²): the beam carrying the
+    /// sleepers' mass spread (ρ → ρ + m_s/(aA)), on k_f + [`Self::equivalent_stiffness`] — the long-wave limit, in
+    /// which the sleeper moves with the rail (well below the bay's resonances, [`Self::bay_resonances`]).
+    pub fn equivalent_track(&self, beam: &Beam, k_f: f64) -> (Beam, f64) {
+        let density = beam.density + self.mass_per_length() / beam.area;
+        (Beam { density, ..*beam }, k_f + self.equivalent_stiffness())
+    }
+
+    /// The two resonances of one bay lumped (Hz): the rail's mass over a spacing ρA·a on the pad, on the sleeper on
+    /// the ballast — the lower the whole track bouncing on the ballast, the upper the rail on its pads (the sleeper
+    /// moving against it). Estimates that name the peaks of a receptance; the rail's bending shifts them.
+    pub fn bay_resonances(&self, rail_mass_per_length: f64) -> BayResonances {
+        let (m1, m2) = (rail_mass_per_length * self.spacing, self.mass);
+        let (k1, k2) = (self.pad.stiffness, self.ballast.stiffness);
+        // m1 m2 ω⁴ − (m1 (k1 + k2) + m2 k1) ω² + k1 k2 = 0.
+        let (a, b, c) = (m1 * m2, m1 * (k1 + k2) + m2 * k1, k1 * k2);
+        let root = (b * b - 4.0 * a * c).max(0.0).sqrt();
+        let hz = |omega2: f64| omega2.sqrt() / std::f64::consts::TAU;
+        BayResonances { track: hz(2.0 * c / (b + root)), rail_on_pads: hz((b + root) / (2.0 * a)) }
+    }
+
+    /// The pinned–pinned frequency (Hz): the free rail's bending wave of half a wavelength per spacing, k = π/a,
+    /// nodes over the sleepers ([`crate::dispersion::bending_frequency`]; π/(2a²)·√(EI/ρA) for Euler–Bernoulli).
+    pub fn pinned_pinned(&self, beam: &Beam) -> f64 {
+        crate::dispersion::bending_frequency(beam, 0.0, std::f64::consts::PI / self.spacing) / std::f64::consts::TAU
+    }
+
     /// The mesh node under each sleeper, first to last: every sleeper on the beam must sit on a node (within 1e-9 of
     /// an element), else the error names the keys that place them.
     pub fn nodes(&self, mesh: &Mesh) -> Result<Vec<usize>> {
@@ -89,6 +136,9 @@ impl Sleepers {
                 value: count,
                 allowed: "must leave at most one sleeper per node of the largest mesh (1 000 000)",
             });
+        }
+        for (index, exception) in self.exceptions.iter().enumerate() {
+            exception.validate(index, count)?;
         }
         (0..count)
             .map(|i| {
@@ -113,23 +163,24 @@ impl Sleepers {
 impl Sleepers {
     /// What the sleepers under `nodes` add to a matrix over the free DOFs of `dofs` (a map with their DOFs, of a mesh
     /// of `mesh_nodes` nodes), as entries (i, j ≤ i) of its lower triangle: on z the sleeper's `mass` term and both
-    /// layers, on (w, z) the pad as [[1, −1], [−1, 1]] (on z alone where a support holds w). `layer` is what a layer
-    /// contributes — its k for K, c for C, k(1 + iη) + iωc for a dynamic stiffness — and `mass` what m_s does (m_s
-    /// for M, −ω²m_s for a dynamic stiffness, 0 for K and C).
+    /// layers, on (w, z) the pad as [[1, −1], [−1, 1]] (on z alone where a support holds w). `layers` gives what a
+    /// sleeper's pad and ballast contribute, from its [`SleeperSupport`] — their k for K (the ballast's where bonded),
+    /// c for C, k(1 + iη) + iωc for a dynamic stiffness — and `mass` what m_s does (m_s for M, −ω²m_s for a dynamic
+    /// stiffness, 0 for K and C).
     pub fn entries<T>(
         &self,
         dofs: &crate::supports::DofMap,
         mesh_nodes: usize,
         nodes: &[usize],
-        layer: impl Fn(&Layer) -> T,
+        layers: impl Fn(&SleeperSupport) -> (T, T),
         mass: impl Fn(f64) -> T,
     ) -> Vec<(usize, usize, T)>
     where
         T: Copy + std::ops::Add<Output = T> + std::ops::Neg<Output = T>,
     {
-        let (pad, ballast) = (layer(&self.pad), layer(&self.ballast));
         let mut out = Vec::with_capacity(3 * nodes.len());
         for (s, &node) in nodes.iter().enumerate() {
+            let (pad, ballast) = layers(&self.support(s));
             let z = dofs.free_index(2 * mesh_nodes + s).expect("a sleeper's DOF is free");
             out.push((z, z, mass(self.mass) + pad + ballast));
             if let Some(w) = dofs.free_index(2 * node) {
@@ -157,5 +208,24 @@ mod tests {
         let soft = Sleepers { pad: Layer { stiffness: -1.0, ..Sleepers::default().pad }, ..Sleepers::default() };
         assert!(soft.validate().unwrap_err().to_string().contains("sleepers.pad.stiffness = -1"));
         assert!((Sleepers::default().equivalent_stiffness() - 200e6 * 100e6 / 300e6 / 0.6).abs() < 1e-3);
+    }
+
+    #[test]
+    fn a_bay_lumped_has_the_two_mass_resonances_and_the_span_its_pinned_pinned_one() {
+        // Two masses on two springs: the product of ω² is k1k2/(m1m2), their sum (k1 + k2)/m2 + k1/m1.
+        let s = Sleepers::default();
+        let r = s.bay_resonances(60.0);
+        let (w1, w2) = ((r.track * std::f64::consts::TAU).powi(2), (r.rail_on_pads * std::f64::consts::TAU).powi(2));
+        let (m1, m2, k1, k2) = (36.0, 150.0, 200e6, 100e6);
+        assert!((w1 * w2 / (k1 * k2 / (m1 * m2)) - 1.0).abs() < 1e-12);
+        assert!(((w1 + w2) / ((k1 + k2) / m2 + k1 / m1) - 1.0).abs() < 1e-12);
+        assert!(r.track < r.rail_on_pads);
+        // Euler–Bernoulli: π/(2a²)·√(EI/ρA), 1428 Hz for UIC60 at a = 0.6 m.
+        let beam = Beam::default();
+        let closed = std::f64::consts::PI / (2.0 * 0.36) * (beam.bending_stiffness() / beam.mass_per_length()).sqrt();
+        assert!((s.pinned_pinned(&beam) / closed - 1.0).abs() < 1e-12);
+        let (smeared, k) = s.equivalent_track(&beam, 1e6);
+        assert!((smeared.mass_per_length() - beam.mass_per_length() - 250.0).abs() < 1e-9);
+        assert!((k - 1e6 - s.equivalent_stiffness()).abs() < 1e-6);
     }
 }

@@ -37,7 +37,8 @@ pub struct RunSummary {
     /// With a train: what the beam carries of its axles (`[load] carries`), by which the train's forces were scaled.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub axle_share: Option<AxleShareSummary>,
-    /// The infinite beam's critical speed v_cr (m/s); None without a foundation.
+    /// The infinite beam's critical speed v_cr (m/s) — on sleepers the equivalent continuous track's; None without a
+    /// foundation.
     pub critical_speed: Option<f64>,
     /// A Timoshenko rail in words ("Timoshenko (G = 81 GPa, κ = 0.4)"); absent for Euler–Bernoulli.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -68,6 +69,9 @@ pub struct RunSummary {
     /// A tensionless or bilinear soil: its work, energy and where the rail lifted off it.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub soil: Option<crate::soil_output::SoilSummary>,
+    /// A rail on sleepers: their frequencies, forces and the deflection under the load over a bay.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub sleepers: Option<crate::sleeper_output::SleepersSummary>,
     /// How the text report names the extremes window (words only: not in the JSON).
     #[serde(skip)]
     pub window: crate::window_wording::WindowWording,
@@ -191,9 +195,14 @@ impl RunSummary {
             (self.devices > 0).then(|| format!("{} devices × {:.1} kN", self.devices, self.device_force / 1e3));
         let distributed =
             (self.distributed_friction > 0.0).then(|| format!("{:.1} N/m distributed", self.distributed_friction));
-        match (devices, distributed) {
-            (None, None) => "none".into(),
-            (a, b) => [a, b].into_iter().flatten().collect::<Vec<_>>().join(" and "),
+        let sleepers = self
+            .sleepers
+            .as_ref()
+            .filter(|s| s.sliders > 0)
+            .map(|s| format!("{} sleepers on the ballast, {:.1} kN in all", s.sliders, s.slider_force / 1e3));
+        match (devices, distributed, sleepers) {
+            (None, None, None) => "none".into(),
+            (a, b, c) => [a, b, c].into_iter().flatten().collect::<Vec<_>>().join(" and "),
         }
     }
 
@@ -255,6 +264,13 @@ impl RunSummary {
                 crate::vehicle_output::VehicleReport::of(v, contact, Some((mesh.element_length(), read)))
             }),
             soil: crate::soil_output::SoilSummary::of(&case.model, scenario.foundation.self_weight, result, read),
+            sleepers: crate::sleeper_output::SleepersSummary::of(
+                &case.model,
+                placed,
+                result.sleepers.as_ref(),
+                settings.moving.speed,
+                read,
+            ),
             window: crate::window_wording::WindowWording::of(scenario, case),
         })
     }

@@ -5,17 +5,19 @@
 use crate::run_summary::RunSummary;
 use std::fmt::{self, Formatter};
 
-/// The fixed interaction sections by kind: friction, and soil on a nonlinear foundation.
+/// The fixed interactions by kind: friction (devices, ballast), soil on a nonlinear foundation, sleepers' unilateral
+/// ballast and sliders — "N friction sections" where friction is all there is.
 fn section_count(r: &RunSummary) -> String {
-    match &r.soil {
-        Some(soil) => format!(
-            "{} sections ({} friction, {} soil)",
-            r.stepping.sections,
-            r.stepping.sections - soil.sections,
-            soil.sections
-        ),
-        None => format!("{} friction sections", r.stepping.sections),
+    let soil = r.soil.as_ref().map_or(0, |s| s.sections);
+    let (unilateral, sliders) = r.sleepers.as_ref().map_or((0, 0), |s| (s.unilateral, s.sliders));
+    let friction = r.stepping.sections - soil - unilateral - sliders;
+    if soil + unilateral + sliders == 0 {
+        return format!("{friction} friction sections");
     }
+    let parts =
+        [(friction, "friction"), (soil, "soil"), (unilateral, "sleepers' ballast"), (sliders, "sleepers' friction")];
+    let named: Vec<String> = parts.iter().filter(|(n, _)| *n > 0).map(|(n, what)| format!("{n} {what}")).collect();
+    format!("{} interactions ({})", r.stepping.sections, named.join(", "))
 }
 
 /// The whole report.
@@ -27,15 +29,22 @@ fn write_text(f: &mut Formatter<'_>, r: &RunSummary) -> fmt::Result {
         writeln!(f, "  rail: {theory} beam, shear deformation and rotary inertia included")?;
     }
     if let Some(v_cr) = r.critical_speed {
+        let track = match r.sleepers {
+            Some(_) => "the equivalent continuous track (sleepers' mass and support spread)",
+            None => "the infinite track",
+        };
         writeln!(
             f,
-            "  critical speed of the infinite track v_cr = {v_cr:.2} m/s; foundation damping ζ = {}",
+            "  critical speed of {track} v_cr = {v_cr:.2} m/s; foundation damping ζ = {}",
             scenario::number::significant(r.damping_ratio, 12)
         )?;
     }
     write_friction(f, r)?;
     if let Some(soil) = &r.soil {
         write_soil(f, soil)?;
+    }
+    if let Some(sleepers) = &r.sleepers {
+        crate::sleeper_output::write_sleepers(f, sleepers)?;
     }
     write_extremes(f, r)?;
     write_numbers(f, r)?;
@@ -199,7 +208,18 @@ fn write_vehicles(f: &mut Formatter<'_>, v: &crate::vehicle_output::VehicleRepor
 
 /// The friction lines: none, the devices (the first five positions), the distributed friction.
 fn write_friction(f: &mut Formatter<'_>, r: &RunSummary) -> fmt::Result {
+    let sliders = r.sleepers.as_ref().map_or(0, |s| s.sliders);
+    if sliders > 0 {
+        let force = r.sleepers.as_ref().map_or(0.0, |s| s.slider_force);
+        let plural = if sliders == 1 { "" } else { "s" };
+        writeln!(
+            f,
+            "  friction between sleepers and ballast: {sliders} sleeper{plural}, {:.1} kN in all",
+            force / 1e3
+        )?;
+    }
     match (r.devices, r.distributed_friction > 0.0) {
+        (0, false) if sliders > 0 => {}
         (0, false) => writeln!(f, "  friction: none")?,
         (n, distributed) => {
             if n > 0 {

@@ -66,23 +66,33 @@ impl Scenario {
             Some(z) => {
                 finite_positive("foundation.absorbing_zones.length", z.length, "m")?;
                 finite_non_negative("foundation.absorbing_zones.peak_ratio", z.peak_ratio, "ratio of c_cr")?;
-                let zones = AbsorbingZones {
-                    length: z.length,
-                    peak_damping: z.peak_ratio * foundation.critical_damping(&beam),
-                };
+                // On sleepers the zones' dashpots are scaled to the support the rail feels in the long wave: the
+                // soil plus the sleepers' equivalent k_eq (docs/theory.md §18).
+                let support =
+                    Foundation { stiffness: foundation.stiffness + self.sleepers_equivalent()?, ..foundation };
+                let zones =
+                    AbsorbingZones { length: z.length, peak_damping: z.peak_ratio * support.critical_damping(&beam) };
                 zones.element_damping(&mesh, foundation.damping).map_err(|e| under("foundation", e.into()))?
             }
             None => vec![foundation.damping; mesh.elements],
         };
         let mut model = BeamModel::with_element_damping(beam, foundation, mesh, supports, damping)?;
         if let Some(sleepers) = &self.sleepers {
-            model = model.with_sleepers(sleepers.sleepers())?;
+            model = model.with_sleepers(sleepers.sleepers()?)?;
         }
         if let Some(rayleigh) = &self.damping.rayleigh {
             model = model.with_rayleigh(rayleigh.rayleigh()?)?;
         }
         crate::diagnostics::refuse_degenerate(&model)?;
         Ok(model)
+    }
+
+    /// The sleepers' equivalent continuous support k_eq (N/m², 0 without sleepers), their values checked.
+    fn sleepers_equivalent(&self) -> Result<f64> {
+        let Some(section) = &self.sleepers else { return Ok(0.0) };
+        let sleepers = section.sleepers()?;
+        sleepers.validate()?;
+        Ok(sleepers.equivalent_stiffness())
     }
 
     /// The soil's law from `foundation.law` and `tension_ratio` (given for a bilinear soil only).
@@ -109,6 +119,7 @@ impl Scenario {
     pub fn placed_on(&self, model: &BeamModel) -> Result<PlacedInteractions> {
         let mut interactions = self.interactions(model)?;
         interactions.extend(self.foundation_sections(model)?);
+        interactions.extend(track::sleeper_layout::sleeper_interactions(model));
         Ok(interactions)
     }
 
@@ -152,14 +163,6 @@ impl Scenario {
 
     /// Build the model, contact set and run settings, checking every value on the way.
     pub fn build(&self) -> Result<Case> {
-        if self.sleepers.is_some() {
-            return Err(invalid(
-                "sleepers",
-                "given",
-                "a rail on discrete supports is, so far, analysed in the frequency domain only (the receptance); \
-                 runs, sweeps and studies take the continuous [foundation]",
-            ));
-        }
         let model = self.model()?;
         self.refuse_a_lever(&model)?;
         let interactions = self.placed_on(&model)?;

@@ -82,6 +82,7 @@ pub fn warnings(scenario: &Scenario, case: &Case) -> Vec<Warning> {
         }
     }
     out.extend(deck_resolution(case));
+    out.extend(crate::track_resolution::sleeper_resolution(case));
     out.extend(rigid_contact_damping(case));
     out.extend(articulated_cars(scenario, case));
     out.extend(crate::plausibility::input_warnings(scenario, case));
@@ -159,7 +160,7 @@ fn rigid_contact_damping(case: &Case) -> Vec<Warning> {
 pub fn deck_frequency(model: &BeamModel) -> Option<(f64, fem_beam::span::SimplySupportedSpan)> {
     let supports = model.supports();
     let pinned = supports.left == Support::Pinned && supports.right == Support::Pinned;
-    if !(pinned && model.foundation().stiffness == 0.0) {
+    if !(pinned && model.foundation().stiffness == 0.0 && model.sleepers().is_none()) {
         return None;
     }
     let span = fem_beam::span::SimplySupportedSpan::new(model.beam(), 0.0, model.mesh().length).ok()?;

@@ -1,12 +1,15 @@
 //! The `[sleepers]` section (docs/theory.md §18): discrete supports under the rail — `spacing`, `first`, `mass` per
 //! rail seat, `[sleepers.pad]` and `[sleepers.ballast]` each with `stiffness` (N/m), `damping` (N·s/m) and
 //! `loss_factor`. What is left out takes a typical ballasted track's value (`fem_beam::Sleepers::default`).
+//! `[[sleepers.exceptions]]` change some sleepers: `index` (one sleeper, 0-based, or `[first, last]`), `gap` (m, a
+//! voided sleeper), `law = "tensionless"`, `friction` (N), `pad_scale`, `ballast_scale`.
 
-use fem_beam::{Layer, Sleepers};
+use crate::error::{Result, invalid};
+use fem_beam::{BallastContact, Layer, SleeperException, Sleepers};
 use serde::{Deserialize, Serialize};
 
 /// `[sleepers]`.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct SleepersSection {
     /// a (m).
@@ -19,6 +22,82 @@ pub struct SleepersSection {
     pub pad: LayerSection,
     /// The ballast: what is left out takes the typical ballast's value.
     pub ballast: LayerSection,
+    /// Sleepers that differ from the rest (later entries over earlier ones).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub exceptions: Vec<ExceptionSection>,
+}
+
+/// Which sleepers an exception names: one index, or the first and last of a range (inclusive).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(untagged)]
+pub enum SleeperIndex {
+    /// `index = 12`.
+    One(usize),
+    /// `index = [12, 14]`.
+    Range([usize; 2]),
+}
+
+/// How the ballast under an exception's sleepers acts: `law = "linear"` (bonded) or `"tensionless"`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum BallastLawKind {
+    /// Pushes and pulls.
+    Linear,
+    /// Pushes only.
+    Tensionless,
+}
+
+/// `[[sleepers.exceptions]]`.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ExceptionSection {
+    /// The sleeper(s) (0-based; sleeper i at first + i·spacing).
+    pub index: SleeperIndex,
+    /// A void under the sleeper at rest (m): the ballast pushes once it has closed (implies tensionless).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub gap: Option<f64>,
+    /// The ballast's law; default linear, tensionless where a gap is given.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub law: Option<BallastLawKind>,
+    /// Coulomb friction at the sleeper–ballast interface (N).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub friction: Option<f64>,
+    /// The pad's stiffness times this.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pad_scale: Option<f64>,
+    /// The ballast's stiffness times this (a soft spot; 0 for none).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ballast_scale: Option<f64>,
+}
+
+impl ExceptionSection {
+    /// The exception (its values checked when the model places the sleepers); the `position`-th in the file.
+    fn exception(&self, position: usize) -> Result<SleeperException> {
+        let (first, last) = match self.index {
+            SleeperIndex::One(i) => (i, i),
+            SleeperIndex::Range([a, b]) => (a, b),
+        };
+        let contact = match (self.law, self.gap) {
+            (Some(BallastLawKind::Linear), Some(gap)) => {
+                return Err(invalid(
+                    &format!("sleepers.exceptions[{position}].gap"),
+                    gap,
+                    "a void needs ballast that cannot pull: leave law out or give law = \"tensionless\"",
+                ));
+            }
+            (None | Some(BallastLawKind::Linear), None) => BallastContact::Bonded,
+            (_, gap) => BallastContact::Unilateral { gap: gap.unwrap_or(0.0) },
+        };
+        let typical = SleeperException::default();
+        Ok(SleeperException {
+            first,
+            last,
+            pad_scale: self.pad_scale.unwrap_or(typical.pad_scale),
+            ballast_scale: self.ballast_scale.unwrap_or(typical.ballast_scale),
+            contact,
+            friction: self.friction.unwrap_or(0.0),
+        })
+    }
 }
 
 /// `[sleepers.pad]` or `[sleepers.ballast]`: each key left out takes the layer's typical value.
@@ -56,21 +135,23 @@ impl Default for SleepersSection {
             mass: s.mass,
             pad: LayerSection::default(),
             ballast: LayerSection::default(),
+            exceptions: Vec::new(),
         }
     }
 }
 
 impl SleepersSection {
-    /// The sleepers (checked when the model places them).
-    pub fn sleepers(&self) -> Sleepers {
+    /// The sleepers (their values checked when the model places them).
+    pub fn sleepers(&self) -> Result<Sleepers> {
         let typical = Sleepers::default();
-        Sleepers {
+        Ok(Sleepers {
             spacing: self.spacing,
             first: self.first.unwrap_or(0.5 * self.spacing),
             mass: self.mass,
             pad: self.pad.layer(typical.pad),
             ballast: self.ballast.layer(typical.ballast),
-        }
+            exceptions: self.exceptions.iter().enumerate().map(|(i, e)| e.exception(i)).collect::<Result<_>>()?,
+        })
     }
 }
 
@@ -83,9 +164,31 @@ mod tests {
     fn each_layer_takes_its_own_defaults() {
         let section: SleepersSection =
             toml::from_str("[ballast]\nloss_factor = 1.0\n[pad]\nstiffness = 5e8\n").unwrap();
-        let (s, typical) = (section.sleepers(), Sleepers::default());
+        let (s, typical) = (section.sleepers().unwrap(), Sleepers::default());
         assert_eq!(s.ballast, Layer { loss_factor: 1.0, ..typical.ballast });
         assert_eq!(s.pad, Layer { stiffness: 5e8, ..typical.pad });
         assert_eq!(s.first, 0.3);
+    }
+
+    #[test]
+    fn exceptions_read_one_index_or_a_range_and_a_gap_means_tensionless() {
+        let text = "[[exceptions]]\nindex = 3\ngap = 0.002\n[[exceptions]]\nindex = [5, 7]\nfriction = 500.0\n\
+                    ballast_scale = 0.3\n[[exceptions]]\nindex = 9\nlaw = \"tensionless\"\n";
+        let section: SleepersSection = toml::from_str(text).unwrap();
+        let s = section.sleepers().unwrap();
+        assert_eq!((s.exceptions[0].first, s.exceptions[0].last), (3, 3));
+        assert_eq!(s.exceptions[0].contact, BallastContact::Unilateral { gap: 0.002 });
+        assert_eq!((s.exceptions[1].first, s.exceptions[1].last), (5, 7));
+        assert_eq!((s.exceptions[1].friction, s.exceptions[1].ballast_scale), (500.0, 0.3));
+        assert_eq!(s.exceptions[1].contact, BallastContact::Bonded);
+        assert_eq!(s.exceptions[2].contact, BallastContact::Unilateral { gap: 0.0 });
+        let linear_gap: SleepersSection =
+            toml::from_str("[[exceptions]]\nindex = 1\nlaw = \"linear\"\ngap = 0.001\n").unwrap();
+        let error = linear_gap.sleepers().unwrap_err().to_string();
+        assert!(error.contains("sleepers.exceptions[0].gap = 0.001"), "{error}");
+        assert!(toml::from_str::<SleepersSection>("[[exceptions]]\nindex = 1\nvoid = 0.1\n").is_err());
+        // Written back as read.
+        let back: SleepersSection = toml::from_str(&toml::to_string(&section).unwrap()).unwrap();
+        assert_eq!(back, section);
     }
 }

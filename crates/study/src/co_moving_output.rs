@@ -71,6 +71,14 @@ pub const DEFAULT_WINDOW: f64 = 120.0;
 /// front, absorbing zones; refused where the linear wave would not have fallen to [`WINDOW_DECAY`] of its peak
 /// between the load and a zone (the window too short for the wave).
 pub fn window(scenario: &Scenario, section: &CoMovingSection) -> Result<(BeamModel, CoMovingSettings)> {
+    if scenario.sleepers.is_some() {
+        return Err(invalid(
+            "sleepers",
+            "given",
+            "a co-moving window shifts the track under the load an element at a time, which holds for a uniform \
+             (continuous) support only: run the load across a rail on sleepers (frictrack run)",
+        ));
+    }
     let l = scenario.mesh.length / scenario.mesh.elements.max(1) as f64;
     let model = scenario.model()?;
     let foundation: Foundation = *model.foundation();

@@ -128,17 +128,7 @@ fn support(model: &fem_beam::BeamModel) -> String {
     let f = model.foundation();
     let soil = format!("a foundation of k_f = {:.4e} N/m² (η {})", f.stiffness, f.loss_factor);
     let Some((s, nodes)) = model.sleepers() else { return soil };
-    let layer = |name: &str, l: &fem_beam::Layer| {
-        format!("{name} {} MN/m, {} kN·s/m, η {}", l.stiffness / 1e6, l.damping / 1e3, l.loss_factor)
-    };
-    let sleepers = format!(
-        "{} sleepers every {} m ({} kg; {}; {})",
-        nodes.len(),
-        s.spacing,
-        s.mass,
-        layer("pads", &s.pad),
-        layer("ballast", &s.ballast)
-    );
+    let sleepers = report::sleeper_output::sleepers_in_words(s, nodes.len());
     if f.stiffness > 0.0 { format!("{sleepers}, on {soil}") } else { sleepers }
 }
 
@@ -151,6 +141,16 @@ impl ReceptanceStudy {
                 "foundation.law",
                 model.foundation().law.name(),
                 "the receptance is that of a linear track: give a linear foundation",
+            ));
+        }
+        if let Some((sleepers, _)) = model.sleepers()
+            && !sleepers.is_linear()
+        {
+            return Err(invalid(
+                "sleepers.exceptions",
+                "unilateral ballast or friction",
+                "the receptance is that of a linear track: voided, tensionless and frictional sleepers are run in \
+                 time (scaled stiffnesses are linear and taken)",
             ));
         }
         request.validate(model.mesh().length)?;

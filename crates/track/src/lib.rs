@@ -15,6 +15,7 @@ pub mod moving_load;
 pub mod placed;
 pub mod section_quadrature;
 pub mod simulation;
+pub mod sleeper_layout;
 pub mod snapshots;
 pub mod statics;
 pub mod system;

@@ -13,14 +13,18 @@ pub enum SectionKind {
     Ballast,
     /// A section of a foundation that cannot pull (a unilateral support).
     Foundation,
+    /// The ballast under a sleeper that cannot pull (tensionless, or voided by a gap).
+    SleeperBallast,
+    /// Coulomb friction between a sleeper and the ballast.
+    SleeperFriction,
 }
 
 impl SectionKind {
     /// The energy ledger's account for this kind's work.
     pub fn ledger_kind(self) -> InteractionKind {
         match self {
-            Self::Device | Self::Ballast => InteractionKind::Friction,
-            Self::Foundation => InteractionKind::Support,
+            Self::Device | Self::Ballast | Self::SleeperFriction => InteractionKind::Friction,
+            Self::Foundation | Self::SleeperBallast => InteractionKind::Support,
         }
     }
 }

@@ -23,7 +23,8 @@ pub struct StaticEnvelope {
 pub const MAX_POSITIONS: usize = 1_000_000;
 
 /// The static envelope of `train` with its first axle at 0, `advance`, 2·`advance`, … up to L + its length (m):
-/// K factored once, one banded solve per position — or, on a nonlinear foundation (the springs of `placed`), its
+/// K factored once, one banded solve per position — or, with unilateral springs (a nonlinear soil's sections, a
+/// sleeper's tensionless or voided ballast, in `placed`), its
 /// static deflection per position ([`crate::unilateral_statics::static_deflection`]). Deflections are from the
 /// self-weight state, as a run's. The largest deflection is taken over the nodes in `nodes` (m, as
 /// [`crate::simulation::RecordSettings::extremes_nodes`]), or over every node.
@@ -44,10 +45,12 @@ pub fn static_envelope(
             format!("must be > 0 and give at most {MAX_POSITIONS} train positions"),
         ));
     }
-    // K alone holds a linear foundation; a nonlinear one's soil is in its sections.
-    let factor = match model.foundation().law.is_linear() {
-        true => Some(model.stiffness().factor()?),
-        false => None,
+    // K alone holds a linear track; a nonlinear soil's sections, or a sleeper's unilateral ballast, are springs of
+    // `placed` (friction is not: the envelope is the frictionless static line).
+    let springs = placed.interactions().laws().iter().any(|law| law.linear_spring().is_some());
+    let factor = match springs {
+        false => Some(model.stiffness().factor()?),
+        true => None,
     };
     let dofs = model.dofs();
     let counted: Vec<(usize, f64)> = (0..mesh.nodes())

@@ -14,6 +14,7 @@ mod records;
 mod results;
 mod settings;
 pub(crate) mod setup;
+mod sleeper_record;
 mod stepping;
 mod vehicles;
 
@@ -24,6 +25,7 @@ pub use results::{
 };
 pub(crate) use settings::counts_for_extremes;
 pub use settings::{InitialState, IntegrationSettings, Load, MovingLoadSettings, RecordSettings, RunSettings};
+pub use sleeper_record::{SleeperPeaks, SleeperResults};
 pub use vehicles::{IMPACT_WINDOW, LOSS_OF_CONTACT};
 
 use crate::error::Result;
@@ -146,12 +148,13 @@ impl<'a> Simulation<'a> {
         let mut deflections = DeflectionRecord::new(self.model, record, q0, start, crossing_steps);
         let mut sections = SectionRecords::new(self.model, self.interactions, &record.sections, total_steps);
         let mut lift_off = lift_off::LiftOffRecord::new(self.interactions);
+        let mut sleepers = sleeper_record::SleeperRecord::new(self.model);
         sections.start((q0, v0), &run.setup.load, start)?;
         let mut tally = SolverTally::default();
         let clock = Instant::now();
         run.run(
             total_steps,
-            &mut [&mut tally, &mut deflections, &mut sections, &mut lift_off],
+            &mut [&mut tally, &mut deflections, &mut sections, &mut lift_off, &mut sleepers],
             observer,
             &mut |_, _| Ok(()),
         )?;
@@ -175,6 +178,7 @@ impl<'a> Simulation<'a> {
             final_velocity: stepper.v()[..nb].to_vec(),
             vehicles: vehicles.map(|o| o.finish(&stepper.energy)),
             lift_off: lift_off.finish(),
+            sleepers: sleepers.finish(),
         })
     }
 }

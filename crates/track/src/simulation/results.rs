@@ -172,6 +172,8 @@ pub struct RunResult {
     pub vehicles: Option<VehicleResults>,
     /// Where and when the rail left the soil, on a nonlinear foundation.
     pub lift_off: Option<LiftOff>,
+    /// The sleepers' forces and the rail's deflection under the load, on sleepers.
+    pub sleepers: Option<super::sleeper_record::SleeperResults>,
 }
 
 /// Where and when the rail left the soil of a nonlinear foundation over a run (docs/theory.md §13).

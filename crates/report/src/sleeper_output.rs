@@ -1,0 +1,247 @@
+//! What a run on sleepers reports of them (docs/theory.md §18): the track in words, the frequencies a discrete track
+//! adds — sleeper passing v/a, the bay's lumped resonances, pinned–pinned —, the largest pad and ballast forces where
+//! the results are read, the sleepers that differ from the rest, and the rail's deflection under the load over a bay.
+//! Forces in N (compression positive), lengths in m, times in s, frequencies in Hz.
+
+use fem_beam::{BallastContact, BeamModel, Extreme, Layer, Sleepers};
+use serde::Serialize;
+use track::simulation::{SleeperPeaks, SleeperResults};
+use track::{PlacedInteractions, SectionKind};
+
+/// Bins of the bay (positions of the load between two sleepers) the deflection under the load is averaged over.
+pub const BAY_BINS: usize = 20;
+
+/// The sleepers in words (MN/m, kN·s/m: the units the literature quotes pads and ballast in), `count` of them.
+pub fn sleepers_in_words(s: &Sleepers, count: usize) -> String {
+    let layer = |name: &str, l: &Layer| {
+        format!("{name} {} MN/m, {} kN·s/m, η {}", l.stiffness / 1e6, l.damping / 1e3, l.loss_factor)
+    };
+    format!(
+        "{count} sleepers every {} m ({} kg; {}; {})",
+        s.spacing,
+        s.mass,
+        layer("pads", &s.pad),
+        layer("ballast", &s.ballast)
+    )
+}
+
+/// A sleeper of an exception, over the run.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ExceptionalSleeper {
+    /// Its number (0-based).
+    pub index: usize,
+    /// Where it sits (m).
+    pub x: f64,
+    /// What differs, in words ("void 1 mm", "tensionless", "friction 2 kN", "ballast × 0.5").
+    pub what: String,
+    /// Largest pad and ballast forces (N).
+    pub pad_force: f64,
+    /// See `pad_force`.
+    pub ballast_force: f64,
+    /// Its lowest position (m, downward).
+    pub lowest: f64,
+    /// Unilateral ballast: the largest gap under it (m) and when it first pressed (s).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub largest_gap: Option<f64>,
+    /// See `largest_gap`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub first_contact: Option<f64>,
+}
+
+/// The rail's deflection under the load against the load's place in the bay.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct BayProfile {
+    /// The bins' centres ξ = (x − x_s)/a ∈ [0, 1) from the sleeper behind the load, and the mean downward deflection
+    /// under the load there (m; None where no step fell) while the load was where the results are read.
+    pub bins: Vec<(f64, Option<f64>)>,
+    /// Above a sleeper (ξ = 0) and at mid-span (ξ = ½), m downward.
+    pub above_sleeper: Option<f64>,
+    /// See `above_sleeper`.
+    pub mid_span: Option<f64>,
+}
+
+/// The sleepers under one run.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SleepersSummary {
+    /// The sleepers in words.
+    pub track: String,
+    /// How many sleepers.
+    pub count: usize,
+    /// a (m).
+    pub spacing: f64,
+    /// v/a (Hz).
+    pub passing_frequency: f64,
+    /// The bay lumped: track on ballast, rail on pads (Hz).
+    pub track_resonance: f64,
+    /// See `track_resonance`.
+    pub rail_on_pads_resonance: f64,
+    /// The pinned–pinned frequency (Hz).
+    pub pinned_pinned: f64,
+    /// Sleepers on ballast that cannot pull (the engine's unilateral laws).
+    pub unilateral: usize,
+    /// Sleepers with friction on the ballast (the engine's Coulomb sliders), and their forces' sum F (N).
+    pub sliders: usize,
+    /// See `sliders`.
+    pub slider_force: f64,
+    /// The largest pad and ballast forces over the sleepers where the results are read (N), where and when.
+    pub max_pad_force: Extreme,
+    /// See `max_pad_force`.
+    pub max_ballast_force: Extreme,
+    /// The sleepers of `[[sleepers.exceptions]]`.
+    pub exceptions: Vec<ExceptionalSleeper>,
+    /// The deflection under the load over a bay.
+    pub bay: BayProfile,
+    /// Where the results are read (m).
+    pub read_region: [f64; 2],
+}
+
+impl SleepersSummary {
+    /// The sleepers of `model` (with the interactions `placed` on it) under `results` at `speed` (m/s), forces read over `read` = [a, b] (m); None on a
+    /// continuous track.
+    pub fn of(
+        model: &BeamModel,
+        placed: &PlacedInteractions,
+        results: Option<&SleeperResults>,
+        speed: f64,
+        read: [f64; 2],
+    ) -> Option<Self> {
+        let ((s, nodes), results) = (model.sleepers()?, results?);
+        let inside = |p: &&SleeperPeaks| (read[0]..=read[1]).contains(&p.x);
+        let largest = |value: fn(&SleeperPeaks) -> (f64, f64)| {
+            results.sleepers.iter().filter(inside).fold(Extreme::default(), |mut e, p| {
+                let (v, t) = value(p);
+                e.raise(v, p.x, t);
+                e
+            })
+        };
+        let lumped = s.bay_resonances(model.beam().mass_per_length());
+        Some(Self {
+            track: sleepers_in_words(s, nodes.len()),
+            count: nodes.len(),
+            spacing: s.spacing,
+            passing_frequency: speed / s.spacing,
+            track_resonance: lumped.track,
+            rail_on_pads_resonance: lumped.rail_on_pads,
+            pinned_pinned: s.pinned_pinned(model.beam()),
+            unilateral: placed.count(SectionKind::SleeperBallast),
+            sliders: placed.count(SectionKind::SleeperFriction),
+            slider_force: (0..nodes.len()).map(|i| s.support(i).friction).sum(),
+            max_pad_force: largest(|p| p.pad_force),
+            max_ballast_force: largest(|p| p.ballast_force),
+            exceptions: exceptional(s, results),
+            bay: BayProfile::of(results, read),
+            read_region: read,
+        })
+    }
+}
+
+/// The sleepers named by an exception, in order.
+fn exceptional(s: &Sleepers, results: &SleeperResults) -> Vec<ExceptionalSleeper> {
+    let typical = Sleepers { exceptions: Vec::new(), ..s.clone() }.support(0);
+    results
+        .sleepers
+        .iter()
+        .enumerate()
+        .filter(|(i, _)| s.exceptions.iter().any(|e| e.covers(*i)))
+        .map(|(index, p)| {
+            let support = s.support(index);
+            let mut what = Vec::new();
+            match support.contact {
+                BallastContact::Unilateral { gap } if gap > 0.0 => what.push(format!("void {} mm", gap * 1e3)),
+                BallastContact::Unilateral { .. } => what.push("tensionless".into()),
+                BallastContact::Bonded => {}
+            }
+            if support.friction > 0.0 {
+                what.push(format!("friction {} kN", support.friction / 1e3));
+            }
+            for (name, layer, normal) in
+                [("pad", support.pad, typical.pad), ("ballast", support.ballast, typical.ballast)]
+            {
+                if layer.stiffness != normal.stiffness {
+                    what.push(format!("{name} × {}", layer.stiffness / normal.stiffness));
+                }
+            }
+            ExceptionalSleeper {
+                index,
+                x: p.x,
+                what: what.join(", "),
+                pad_force: p.pad_force.0,
+                ballast_force: p.ballast_force.0,
+                lowest: p.lowest,
+                largest_gap: p.largest_gap,
+                first_contact: p.first_contact,
+            }
+        })
+        .collect()
+}
+
+impl BayProfile {
+    /// The mean downward deflection under the load in each of [`BAY_BINS`] bins of the bay, over the load's positions
+    /// in `read` (m).
+    fn of(results: &SleeperResults, read: [f64; 2]) -> Self {
+        let mut sums = [(0.0, 0usize); BAY_BINS];
+        for &(x, w) in results.under_load.iter().filter(|(x, _)| (read[0]..=read[1]).contains(x)) {
+            let xi = ((x - results.first) / results.spacing).rem_euclid(1.0);
+            let bin = (xi * BAY_BINS as f64).round() as usize % BAY_BINS;
+            sums[bin].0 -= w;
+            sums[bin].1 += 1;
+        }
+        let bins: Vec<(f64, Option<f64>)> = (0..BAY_BINS)
+            .map(|j| (j as f64 / BAY_BINS as f64, (sums[j].1 > 0).then(|| sums[j].0 / sums[j].1 as f64)))
+            .collect();
+        Self { above_sleeper: bins[0].1, mid_span: bins[BAY_BINS / 2].1, bins }
+    }
+}
+
+/// The sleepers' lines of a run's text report.
+pub(crate) fn write_sleepers(f: &mut std::fmt::Formatter<'_>, s: &SleepersSummary) -> std::fmt::Result {
+    let [a, b] = s.read_region;
+    writeln!(f, "  track: {}", s.track)?;
+    writeln!(
+        f,
+        "    sleeper passing v/a = {:.1} Hz; a bay lumped resonates at {:.0} Hz (track on ballast) and {:.0} Hz (rail on \
+         pads); pinned–pinned {:.0} Hz",
+        s.passing_frequency, s.track_resonance, s.rail_on_pads_resonance, s.pinned_pinned
+    )?;
+    let force = |e: &Extreme| match e.place() {
+        Some((x, t)) => format!("{:.2} kN at x = {x:.1} m, t = {t:.4} s", e.value / 1e3),
+        None => "none".into(),
+    };
+    writeln!(
+        f,
+        "    largest forces on the sleepers at x = {a:.1}–{b:.1} m: pad {}, ballast {}",
+        force(&s.max_pad_force),
+        force(&s.max_ballast_force)
+    )?;
+    if let (Some(above), Some(mid)) = (s.bay.above_sleeper, s.bay.mid_span) {
+        writeln!(
+            f,
+            "    deflection under the load (mean over the bays there): {:.4} mm above a sleeper, {:.4} mm at mid-span \
+             ({:+.2} %)",
+            above * 1e3,
+            mid * 1e3,
+            (mid / above - 1.0) * 100.0
+        )?;
+    }
+    for e in s.exceptions.iter().take(12) {
+        let contact = match (e.largest_gap, e.first_contact) {
+            (Some(_), Some(t)) => format!("; on the ballast first at t = {t:.4} s"),
+            (Some(_), None) => "; never reached the ballast".into(),
+            (None, _) => String::new(),
+        };
+        writeln!(
+            f,
+            "    sleeper {} at x = {:.2} m ({}): pad {:.2} kN, ballast {:.2} kN, lowest {:.3} mm{contact}",
+            e.index,
+            e.x,
+            e.what,
+            e.pad_force / 1e3,
+            e.ballast_force / 1e3,
+            e.lowest * 1e3
+        )?;
+    }
+    if s.exceptions.len() > 12 {
+        writeln!(f, "    … and {} more sleepers of the exceptions (the JSON lists them all)", s.exceptions.len() - 12)?;
+    }
+    Ok(())
+}

@@ -1,0 +1,147 @@
+//! What a run on sleepers records of them (docs/theory.md §18): for each sleeper the largest force in its pad and in
+//! the ballast under it (N, compression positive), its lowest position and, where the ballast cannot pull, the
+//! largest gap that opened under it; and the rail's deflection under the first load at every step, from which the
+//! report reads its variation over a bay (above a sleeper against mid-span).
+//!
+//! Pad P = k_p(z − w) + c_p(ż − ẇ), ballast B = k_b·(−z) − c_b ż where bonded, k_b⟨−(z + g)⟩₊ − c_b ż where
+//! unilateral with void g; w the rail's deflection over the sleeper, z the sleeper's (m, upward).
+
+use super::records::{Record, StepState};
+use crate::error::Result;
+use fem_beam::{BallastContact, BeamModel, SleeperSupport};
+use friction::InteractionRow;
+
+/// One sleeper over a run.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SleeperPeaks {
+    /// Where it sits (m).
+    pub x: f64,
+    /// Largest pad force (N, compression) and when (s).
+    pub pad_force: (f64, f64),
+    /// Largest ballast force (N, compression) and when (s).
+    pub ballast_force: (f64, f64),
+    /// The sleeper's lowest position (m, downward positive).
+    pub lowest: f64,
+    /// Where the ballast cannot pull: the largest gap under the sleeper (m; a voided sleeper's starts at its void, a
+    /// tensionless one's stays 0 while it presses). None for bonded ballast.
+    pub largest_gap: Option<f64>,
+    /// Where the ballast cannot pull: when the sleeper first pressed on it (s; None if never).
+    pub first_contact: Option<f64>,
+}
+
+/// The sleepers over a run, and the rail's deflection under the first load.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct SleeperResults {
+    /// Each sleeper, first to last.
+    pub sleepers: Vec<SleeperPeaks>,
+    /// The sleepers' spacing a (m) and where the first sits (m).
+    pub spacing: f64,
+    /// See `spacing`.
+    pub first: f64,
+    /// (first load's position (m), the rail's deflection under it (m, upward)) after every step it was on the rail.
+    pub under_load: Vec<(f64, f64)>,
+}
+
+/// A followed sleeper: its DOFs and layers.
+struct Followed {
+    w: Option<usize>,
+    z: usize,
+    support: SleeperSupport,
+    peaks: SleeperPeaks,
+}
+
+/// The record; empty (and free) on a continuous track.
+pub(super) struct SleeperRecord<'m> {
+    model: &'m BeamModel,
+    sleepers: Vec<Followed>,
+    results: SleeperResults,
+}
+
+impl<'m> SleeperRecord<'m> {
+    pub(super) fn new(model: &'m BeamModel) -> Self {
+        let mut results = SleeperResults::default();
+        let mut sleepers = Vec::new();
+        if let Some((s, nodes)) = model.sleepers() {
+            let (mesh, dofs) = (model.mesh(), model.dofs());
+            (results.spacing, results.first) = (s.spacing, s.first);
+            for (i, &node) in nodes.iter().enumerate() {
+                let support = s.support(i);
+                let unilateral = matches!(support.contact, BallastContact::Unilateral { .. });
+                sleepers.push(Followed {
+                    w: dofs.free_index(2 * node),
+                    z: dofs.free_index(2 * mesh.nodes() + i).expect("a sleeper's DOF is free"),
+                    support,
+                    peaks: SleeperPeaks {
+                        x: mesh.node_x(node),
+                        pad_force: (0.0, f64::NAN),
+                        ballast_force: (0.0, f64::NAN),
+                        lowest: 0.0,
+                        largest_gap: unilateral.then_some(0.0),
+                        first_contact: None,
+                    },
+                });
+            }
+        }
+        Self { model, sleepers, results }
+    }
+
+    /// The results; None on a continuous track.
+    pub(super) fn finish(self) -> Option<SleeperResults> {
+        if self.sleepers.is_empty() {
+            return None;
+        }
+        Some(SleeperResults { sleepers: self.sleepers.into_iter().map(|s| s.peaks).collect(), ..self.results })
+    }
+
+    /// The rail's deflection at `x` (m) from the beam's free DOFs `q`; None off the rail.
+    fn deflection_at(&self, x: f64, q: &[f64]) -> Option<f64> {
+        if !(0.0..=self.model.mesh().length).contains(&x) {
+            return None;
+        }
+        let (point, shape) = self.model.discretisation().shape_at(x).ok()?;
+        let free = self.model.dofs().element_free(point.element);
+        let row = InteractionRow::from_entries(free.into_iter().zip(shape).filter_map(|(d, n)| Some((d?, n))));
+        Some(row.dot(q))
+    }
+}
+
+impl Record for SleeperRecord<'_> {
+    fn record(&mut self, s: &StepState<'_>) -> Result<()> {
+        if self.sleepers.is_empty() {
+            return Ok(());
+        }
+        for f in &mut self.sleepers {
+            let (w, dw) = f.w.map_or((0.0, 0.0), |d| (s.q[d], s.v[d]));
+            let (z, dz) = (s.q[f.z], s.v[f.z]);
+            let pad = f.support.pad.stiffness * (z - w) + f.support.pad.damping * (dz - dw);
+            let (k, c) = (f.support.ballast.stiffness, f.support.ballast.damping);
+            let spring = match f.support.contact {
+                BallastContact::Bonded => -k * z,
+                BallastContact::Unilateral { gap } => {
+                    let opening = z + gap;
+                    if opening <= 0.0 && f.peaks.first_contact.is_none() {
+                        f.peaks.first_contact = Some(s.time);
+                    }
+                    if let Some(largest) = f.peaks.largest_gap.as_mut() {
+                        *largest = largest.max(opening);
+                    }
+                    k * (-opening).max(0.0)
+                }
+            };
+            let ballast = spring - c * dz;
+            let p = &mut f.peaks;
+            if pad > p.pad_force.0 {
+                p.pad_force = (pad, s.time);
+            }
+            if ballast > p.ballast_force.0 {
+                p.ballast_force = (ballast, s.time);
+            }
+            p.lowest = p.lowest.max(-z);
+        }
+        let x = s.load.position(s.time);
+        if let Some(w) = self.deflection_at(x, &s.q[..s.beam]) {
+            self.results.under_load.push((x, w));
+        }
+        Ok(())
+    }
+}

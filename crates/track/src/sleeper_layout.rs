@@ -1,0 +1,32 @@
+//! The nonlinear part of the sleepers placed on the track as the engine's interactions (docs/theory.md §18): under
+//! a sleeper whose ballast cannot pull (tensionless, or voided by a gap g) a unilateral spring on its DOF z, force
+//! k_b⟨−(z + g)⟩₊ ([`Law::Soil`]: the linear spring step for step while it presses); where the sleeper rubs on the
+//! ballast a Coulomb slider on ż with maximal force F, in parallel with the ballast's spring. The linear rest — pads,
+//! bonded ballast, every dashpot, the sleepers' masses — is in the model's M, C, K.
+
+use crate::placed::{PlacedInteractions, SectionKind};
+use fem_beam::{BallastContact, BeamModel};
+use friction::{InteractionRow, Law};
+
+/// The sleepers' unilateral ballast and friction of `model` (none on a continuous track or linear sleepers), each
+/// placed at its sleeper (m).
+pub fn sleeper_interactions(model: &BeamModel) -> PlacedInteractions {
+    let mut set = PlacedInteractions::new();
+    let Some((sleepers, nodes)) = model.sleepers() else { return set };
+    let (mesh, dofs) = (model.mesh(), model.dofs());
+    for (s, &node) in nodes.iter().enumerate() {
+        let support = sleepers.support(s);
+        let z = dofs.free_index(2 * mesh.nodes() + s).expect("a sleeper's DOF is free");
+        let row = || InteractionRow::from_entries([(z, 1.0)]);
+        let x = mesh.node_x(node);
+        if let BallastContact::Unilateral { gap } = support.contact
+            && support.ballast.stiffness > 0.0
+        {
+            set.push(row(), Law::Soil { gap, stiffness: support.ballast.stiffness }, x, SectionKind::SleeperBallast);
+        }
+        if support.friction > 0.0 {
+            set.push(row(), Law::Coulomb { capacity: support.friction }, x, SectionKind::SleeperFriction);
+        }
+    }
+    set
+}
