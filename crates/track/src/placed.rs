@@ -104,6 +104,12 @@ impl PlacedInteractions {
         &self.kinds
     }
 
+    /// Whether any placed law is a spring (a soil section, a sleeper's unilateral ballast): statics then needs
+    /// [`crate::unilateral_statics::static_deflection`], K alone does not hold the track.
+    pub fn has_springs(&self) -> bool {
+        self.interactions.laws().iter().any(|law| law.linear_spring().is_some())
+    }
+
     /// How many interactions of `kind` are placed.
     pub fn count(&self, kind: SectionKind) -> usize {
         self.kinds.iter().filter(|&&k| k == kind).count()

@@ -47,8 +47,7 @@ pub fn static_envelope(
     }
     // K alone holds a linear track; a nonlinear soil's sections, or a sleeper's unilateral ballast, are springs of
     // `placed` (friction is not: the envelope is the frictionless static line).
-    let springs = placed.interactions().laws().iter().any(|law| law.linear_spring().is_some());
-    let factor = match springs {
+    let factor = match placed.has_springs() {
         false => Some(model.stiffness().factor()?),
         true => None,
     };

@@ -11,6 +11,7 @@ mod runs {
     mod homotopy;
     mod linear;
     mod nonlinear_foundation;
+    mod sleepers;
     mod solver_fallback;
     mod solvers_agree;
     mod span;

@@ -89,14 +89,14 @@ impl<'a> Simulation<'a> {
             InitialState::Rest => Ok((vec![0.0; n], vec![0.0; n])),
             InitialState::Static { position } => {
                 // K q = f of the loads standing there (the vehicles' static wheel loads with vehicles), with the
-                // springs of a nonlinear foundation's sections where it has them.
+                // unilateral springs (a nonlinear soil's sections, sleepers' tensionless ballast) where there are.
                 let mesh = self.model.mesh();
                 let beam = self.model.discretisation();
                 let mut q = self.settings.moving.load.train().load_vector(&beam, position).to_free(mesh, dofs);
-                if self.model.foundation().law.is_linear() {
-                    self.model.stiffness().factor()?.solve_in_place(&mut q);
-                } else {
+                if self.interactions.has_springs() {
                     q = crate::unilateral_statics::static_deflection(self.model, self.interactions, &q)?;
+                } else {
+                    self.model.stiffness().factor()?.solve_in_place(&mut q);
                 }
                 let v = convected_velocity(self.model, &q, self.settings.moving.speed);
                 Ok((q, v))
@@ -203,6 +203,16 @@ fn convected_velocity(model: &BeamModel, q: &[f64], speed: f64) -> Vec<f64> {
         }
         if let Some(k) = dofs.free_index(2 * i + 1) {
             v[k] = -speed * curvature;
+        }
+    }
+    // A sleeper follows its rail node in the same ratio as in the static state, z/w (k_p/(k_p + k_b) on bonded
+    // ballast, 1 hanging): ż = (z/w) ẇ, exact for the bowl carried along quasi-statically.
+    if let Some((_, sleeper_nodes)) = model.sleepers() {
+        for (s, &node) in sleeper_nodes.iter().enumerate() {
+            let z = dofs.free_index(2 * nodes + s).expect("a sleeper's DOF is free");
+            if let Some(w) = dofs.free_index(2 * node).filter(|&w| q[w] != 0.0) {
+                v[z] = v[w] * q[z] / q[w];
+            }
         }
     }
     v
