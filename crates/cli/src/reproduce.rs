@@ -32,12 +32,12 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
     // it, its journal kept for --resume. The base scenario itself was checked before the first study; an interruption
     // ends the command.
     let mut failed = Vec::new();
-    for (i, preset) in Preset::ALL.into_iter().enumerate() {
+    for (i, preset) in Preset::REPRODUCED.into_iter().enumerate() {
         let timer = Instant::now();
         // The journals of the studies before this one: a run they finished is not run again (the stationary-wave
         // study's finite-beam curves are the distributed-speed study's).
         let before: Vec<std::path::PathBuf> =
-            Preset::ALL[..i].iter().map(|p| options.out.join(format!(".{}.journal", p.name()))).collect();
+            Preset::REPRODUCED[..i].iter().map(|p| options.out.join(format!(".{}.journal", p.name()))).collect();
         let (data, journal) = match run_study(preset, options, &base, &workers, &before) {
             Ok(done) => done,
             Err(e) if crate::error_code(&e) != crate::interrupt::EXIT_CODE => {
@@ -69,7 +69,7 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
         }
         study_section(&mut report, &data);
     }
-    let _ = writeln!(report, "All {} studies took {:.1} s.", Preset::ALL.len(), start.elapsed().as_secs_f64());
+    let _ = writeln!(report, "All {} studies took {:.1} s.", Preset::REPRODUCED.len(), start.elapsed().as_secs_f64());
     write_atomically(&options.out.join("report.md"), report.as_bytes())?;
     for journal in journals {
         journal.remove()?;
@@ -82,7 +82,7 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
             "{} of {} studies failed, could not run on this scenario or had failed runs (the report has everything else; \
              their finished runs are kept for --resume):\n  {}",
             failed.len(),
-            Preset::ALL.len(),
+            Preset::REPRODUCED.len(),
             failed.join("\n  ")
         );
     }

@@ -6,7 +6,8 @@ use crate::run_summary::RunSummary;
 use std::fmt::{self, Formatter};
 
 /// The fixed interactions by kind: friction (devices, ballast), soil on a nonlinear foundation, sleepers' unilateral
-/// ballast and sliders — "N friction sections" where friction is all there is.
+/// ballast and sliders — "N friction sections" where friction is all there is, else "N sections (a friction, b soil,
+/// …)".
 fn section_count(r: &RunSummary) -> String {
     let soil = r.soil.as_ref().map_or(0, |s| s.sections);
     let (unilateral, sliders) = r.sleepers.as_ref().map_or((0, 0), |s| (s.unilateral, s.sliders));
@@ -14,10 +15,9 @@ fn section_count(r: &RunSummary) -> String {
     if soil + unilateral + sliders == 0 {
         return format!("{friction} friction sections");
     }
-    let parts =
-        [(friction, "friction"), (soil, "soil"), (unilateral, "sleepers' ballast"), (sliders, "sleepers' friction")];
-    let named: Vec<String> = parts.iter().filter(|(n, _)| *n > 0).map(|(n, what)| format!("{n} {what}")).collect();
-    format!("{} interactions ({})", r.stepping.sections, named.join(", "))
+    let parts = [(soil, "soil"), (unilateral, "sleepers' ballast"), (sliders, "sleepers' friction")];
+    let named = parts.iter().filter(|(n, _)| *n > 0).map(|(n, what)| format!(", {n} {what}")).collect::<String>();
+    format!("{} sections ({friction} friction{named})", r.stepping.sections)
 }
 
 /// The whole report.

@@ -164,7 +164,7 @@ impl Sheet<'_> {
 }
 
 /// The points of a sweep CSV as `frictrack sweep` writes it (columns [`CSV_COLUMNS`], and [`VEHICLE_CSV_COLUMNS`]
-/// with vehicles; an older file's names of the extremes' node and time too); the rows of failed runs (empty fields)
+/// with vehicles, [`runner::SLEEPER_CSV_COLUMNS`] on sleepers; an older file's names of the extremes' node and time too); the rows of failed runs (empty fields)
 /// are left out.
 pub fn read_sweep_csv(text: &str, source: &str) -> Result<Vec<SweepPoint>> {
     let table = Table::parse(text, source)?;
@@ -178,6 +178,7 @@ pub fn read_sweep_csv(text: &str, source: &str) -> Result<Vec<SweepPoint>> {
     };
     let base: Vec<usize> = CSV_COLUMNS.iter().map(|(n, _, _)| index(n)).collect::<Result<_>>()?;
     let vehicles: Option<Vec<usize>> = VEHICLE_CSV_COLUMNS.iter().map(|(n, _, _)| index(n).ok()).collect();
+    let sleepers: Option<Vec<usize>> = runner::SLEEPER_CSV_COLUMNS.iter().map(|(n, _, _)| index(n).ok()).collect();
     Ok(table
         .rows
         .iter()
@@ -206,6 +207,16 @@ pub fn read_sweep_csv(text: &str, source: &str) -> Result<Vec<SweepPoint>> {
                     max_body_acceleration: r[c[4]],
                     rms_body_acceleration: r[c[5]],
                 }),
+                sleepers: sleepers.as_ref().map(|c| {
+                    let present = |x: f64| (!x.is_nan()).then_some(x);
+                    runner::SleeperColumns {
+                        max_pad_force: r[c[0]],
+                        max_ballast_force: r[c[1]],
+                        exception_ballast_force: present(r[c[2]]),
+                        neighbour_ballast_force: present(r[c[3]]),
+                        exception_lowest: present(r[c[4]]),
+                    }
+                }),
             }
         })
         .collect())
@@ -218,7 +229,7 @@ mod tests {
     use nscd::EnergyBalance;
     use runner::{SweepPoint, write_csv};
 
-    /// What `write_csv` writes, `read_sweep_csv` reads back to the bit.
+    /// What `write_csv` writes, `read_sweep_csv` reads back to the bit (the sleepers' columns with an absent one).
     #[test]
     fn a_sweep_csv_reads_back() {
         let point = |speed: f64| SweepPoint {
@@ -232,6 +243,13 @@ mod tests {
             energy: EnergyBalance { load_work: 1e3, dissipated: 12.5, residual: 1e-12, ..EnergyBalance::unknown() },
             mean_iterations: 3.0,
             vehicles: None,
+            sleepers: Some(runner::SleeperColumns {
+                max_pad_force: 4e4,
+                max_ballast_force: 3.9e4,
+                exception_ballast_force: None,
+                neighbour_ballast_force: Some(5.5e4 + speed),
+                exception_lowest: Some(1.6e-3),
+            }),
         };
         let points = vec![point(10.0), point(20.0), point(30.0)];
         let mut csv = Vec::new();

@@ -19,6 +19,7 @@ mod optimal_force;
 mod peak;
 mod pool;
 pub mod shard;
+pub mod sleeper_columns;
 
 pub use critical::{CriticalSpeed, critical_speed};
 pub use fem_beam::golden::golden_section;
@@ -26,6 +27,7 @@ pub use journal::Journal;
 pub use optimal_force::{OptimalForce, log_spaced, optimal_device_force, refine_device_force, refine_from_scan};
 pub use peak::{Metric, PeakLocation, RefinedPeak, refine_maximum, unrefined};
 pub use pool::{Runner, worker_threads};
+pub use sleeper_columns::{SLEEPER_CSV_COLUMNS, SleeperColumns};
 
 use fem_beam::Extreme;
 use nscd::EnergyBalance;
@@ -63,6 +65,9 @@ pub struct SweepPoint {
     /// The vehicles' columns, in a run with vehicles.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub vehicles: Option<VehicleColumns>,
+    /// The sleepers' columns, in a run on sleepers.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub sleepers: Option<SleeperColumns>,
 }
 
 /// What a sweep point reports of the vehicles (docs/theory.md §12), over the wheels and bodies of the run.
@@ -166,6 +171,7 @@ fn point_until(case: &Case, speed: f64, stop: Option<&AtomicBool>) -> Result<Swe
         energy: r.energy.balance(),
         mean_iterations: r.statistics.mean_iterations,
         vehicles: r.vehicles.as_ref().map(VehicleColumns::of),
+        sleepers: r.sleepers.as_ref().map(|s| SleeperColumns::of(&case.model, s, settings.record.extremes_nodes)),
     })
 }
 
@@ -211,9 +217,15 @@ pub const CSV_COLUMNS: [(&str, &str, &str); 17] = [
 ];
 
 /// The columns of a sweep's CSV (name, unit, meaning): [`CSV_COLUMNS`], then [`VEHICLE_CSV_COLUMNS`] for a sweep of
-/// vehicles.
-pub fn csv_columns(vehicles: bool) -> impl Iterator<Item = &'static (&'static str, &'static str, &'static str)> {
-    CSV_COLUMNS.iter().chain(VEHICLE_CSV_COLUMNS.iter().filter(move |_| vehicles))
+/// vehicles, then [`SLEEPER_CSV_COLUMNS`] for a sweep on sleepers.
+pub fn csv_columns(
+    vehicles: bool,
+    sleepers: bool,
+) -> impl Iterator<Item = &'static (&'static str, &'static str, &'static str)> {
+    CSV_COLUMNS
+        .iter()
+        .chain(VEHICLE_CSV_COLUMNS.iter().filter(move |_| vehicles))
+        .chain(SLEEPER_CSV_COLUMNS.iter().filter(move |_| sleepers))
 }
 
 /// The CSV header line of sweep output (no newline).
@@ -222,7 +234,7 @@ pub fn csv_header() -> String {
 }
 
 /// Write sweep points as CSV (header + one line per point, full precision), with the vehicles' columns
-/// ([`VEHICLE_CSV_COLUMNS`]) when the points have them.
+/// ([`VEHICLE_CSV_COLUMNS`]) and the sleepers' ([`SLEEPER_CSV_COLUMNS`]) when the points have them.
 pub fn write_csv(points: &[SweepPoint], out: &mut dyn Write) -> std::io::Result<()> {
     let rows: Vec<SweepRow> = points.iter().cloned().map(Ok).collect();
     write_csv_rows(&rows, out)
@@ -238,12 +250,10 @@ fn missing(value: Option<f64>) -> f64 {
 /// as missing by CSV readers; why it failed is beside it, in the sweep's JSON).
 pub fn write_csv_rows(rows: &[SweepRow], out: &mut dyn Write) -> std::io::Result<()> {
     let vehicles = rows.iter().any(|r| r.as_ref().is_ok_and(|p| p.vehicles.is_some()));
-    let columns = CSV_COLUMNS.len() + if vehicles { VEHICLE_CSV_COLUMNS.len() } else { 0 };
-    if vehicles {
-        writeln!(out, "{},{}", csv_header(), VEHICLE_CSV_COLUMNS.map(|(name, _, _)| name).join(","))?;
-    } else {
-        writeln!(out, "{}", csv_header())?;
-    }
+    let sleepers = rows.iter().any(|r| r.as_ref().is_ok_and(|p| p.sleepers.is_some()));
+    let names: Vec<&str> = csv_columns(vehicles, sleepers).map(|(name, _, _)| *name).collect();
+    writeln!(out, "{}", names.join(","))?;
+    let columns = names.len();
     for line in rows {
         let p = match line {
             Ok(p) => p,
@@ -275,11 +285,13 @@ pub fn write_csv_rows(rows: &[SweepRow], out: &mut dyn Write) -> std::io::Result
                 p.max_acceleration.value,
             ])
         )?;
-        match (vehicles, p.vehicles) {
-            (true, Some(v)) => writeln!(out, ",{}", row_with_gaps(&v.values()))?,
-            (true, None) => writeln!(out, ",{}", row_with_gaps(&[f64::NAN; 6]))?,
-            (false, _) => writeln!(out)?,
+        if vehicles {
+            write!(out, ",{}", row_with_gaps(&p.vehicles.map_or([f64::NAN; 6], |v| v.values())))?;
         }
+        if sleepers {
+            write!(out, ",{}", row_with_gaps(&p.sleepers.map_or([f64::NAN; 5], |s| s.values())))?;
+        }
+        writeln!(out)?;
     }
     Ok(())
 }

@@ -40,7 +40,7 @@ pub fn sleeper_resolution(case: &Case) -> Vec<Warning> {
     let h = case.settings.time_step();
     let missed: Vec<String> = frequencies
         .iter()
-        .filter(|(_, f)| h > resolving_step(*f))
+        .filter(|(_, f)| h > resolving_step(*f) * (1.0 + 1e-9))
         .map(|(what, f)| {
             format!(
                 "{what} {f:.0} Hz (load advance ≤ {:.4} m, or max_step ≤ {:.3e} s)",

@@ -56,7 +56,7 @@ fn receptance_writes_its_table_json_and_figure() {
 /// Sleepers: the receptance takes them (the pinned–pinned peak of the rail between them is listed); a run refuses
 /// them by key, exit code 2, rather than run a track without them.
 #[test]
-fn sleepers_are_taken_by_the_receptance_and_refused_by_runs() {
+fn sleepers_are_taken_by_the_receptance_and_by_runs() {
     let folder = temporary_folder("receptance-sleepers");
     let file = folder.join("discrete.toml");
     std::fs::write(
@@ -70,10 +70,23 @@ fn sleepers_are_taken_by_the_receptance_and_refused_by_runs() {
     let peak = v["resonances"][0]["frequency"].as_f64().unwrap();
     // Euler–Bernoulli's pinned–pinned span: π/(2a²)·√(EI/ρA) = 1428 Hz, to 2 % (the pads give a little).
     assert!((peak / 1428.0 - 1.0).abs() < 2e-2, "{peak}");
-    let run = frictrack(&["run", path]);
-    let stderr = String::from_utf8_lossy(&run.stderr);
-    assert_eq!(run.status.code(), Some(2), "{stderr}");
-    assert!(stderr.contains("sleepers") && stderr.contains("frequency domain"), "{stderr}");
+    // A run takes them (reporting what the discrete track adds); a co-moving window, which needs a uniform support,
+    // refuses them by key, and the receptance refuses a voided sleeper (it is the linear track's).
+    let run = frictrack(&["run", path, "--elements", "400"]);
+    let stdout = String::from_utf8_lossy(&run.stdout);
+    assert_eq!(run.status.code(), Some(0), "{}", String::from_utf8_lossy(&run.stderr));
+    assert!(stdout.contains("sleeper passing v/a") && stdout.contains("pinned–pinned 1428 Hz"), "{stdout}");
+    let window = frictrack(&["run", path, "--co-moving"]);
+    let stderr = String::from_utf8_lossy(&window.stderr);
+    assert_eq!(window.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("sleepers") && stderr.contains("uniform"), "{stderr}");
+    let voided = folder.join("voided.toml");
+    let text = std::fs::read_to_string(&file).unwrap() + "[[sleepers.exceptions]]\nindex = 40\ngap = 0.001\n";
+    std::fs::write(&voided, text).unwrap();
+    let refused = frictrack(&["receptance", voided.to_str().unwrap(), "--frequencies", "100:200:10"]);
+    let stderr = String::from_utf8_lossy(&refused.stderr);
+    assert_eq!(refused.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("sleepers.exceptions") && stderr.contains("linear track"), "{stderr}");
 }
 
 #[test]

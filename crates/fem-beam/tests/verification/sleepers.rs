@@ -29,7 +29,7 @@ fn a_rigid_rail_on_two_sleepers_is_a_two_mass_system() {
     let mesh = Mesh::new(1.2, 8).unwrap();
     let model = BeamModel::new(beam, Foundation::linear(0.0, 0.0), mesh, Supports::both(Support::Free))
         .unwrap()
-        .with_sleepers(sleepers)
+        .with_sleepers(sleepers.clone())
         .unwrap();
     assert_eq!(model.sleepers().unwrap().1, &[2, 6]);
     let response = FrequencyResponse::new(&model);
@@ -65,7 +65,7 @@ fn closer_sleepers_are_the_winkler_track() {
                 first: 0.0,
                 pad: layer(reference.pad),
                 ballast: layer(reference.ballast),
-                ..reference
+                ..reference.clone()
             };
             let mesh = Mesh::new(36.0, (36.0 / a).round() as usize * 2).unwrap();
             let model = BeamModel::new(beam, Foundation::linear(0.0, 0.0), mesh, Supports::both(Support::Clamped))
@@ -103,7 +103,7 @@ fn the_pinned_pinned_resonance_is_the_span_between_sleepers() {
         let mesh = Mesh::new(30.0, 800).unwrap();
         let model = BeamModel::new(beam, Foundation::linear(0.0, 0.0), mesh, Supports::both(Support::Free))
             .unwrap()
-            .with_sleepers(sleepers)
+            .with_sleepers(sleepers.clone())
             .unwrap();
         let response = FrequencyResponse::new(&model);
         let frequencies: Vec<f64> = (0..=160).map(|i| 800.0 + 5.0 * i as f64).collect();

@@ -10,6 +10,7 @@
 mod amplification;
 mod curves;
 mod discrete_speed;
+mod discrete_track;
 mod discrete_vs_distributed;
 mod distributed_speed;
 mod equal_cost;
@@ -21,12 +22,14 @@ mod hslm_results;
 mod hslm_summary;
 pub mod hslm_verdict;
 mod optimal_force;
+mod sleeper_friction;
 mod stationary_wave;
 mod stationary_wave_curves;
 mod stationary_wave_figures;
 mod study_file;
 mod table;
 mod vehicle_speed;
+mod voided_sleepers;
 
 pub use study_file::{SolverStatisticsNote, StudyFile};
 
@@ -59,6 +62,11 @@ pub enum Preset {
     VehicleSpeed,
     /// 9. The stationary wave on the infinite track (docs/theory.md §14): peak deflection vs speed, finite beam beside.
     StationaryWave,
+    /// 10. Voided sleepers under a quarter car (docs/theory.md §18): 0–3 hanging sleepers, voids 0–3 mm, 20–100 m/s.
+    VoidedSleepers,
+    /// Study 11: friction at the sleepers against friction in the ballast, and the discrete track's critical speed
+    /// (docs/theory.md §18).
+    SleeperFriction,
 }
 
 /// How finely the studies sample speeds and forces.
@@ -138,8 +146,9 @@ impl Resolution {
 }
 
 impl Preset {
-    /// All nine, in docs/theory.md order.
-    pub const ALL: [Preset; 9] = [
+    /// The nine studies `frictrack reproduce` runs: the thesis's (§7), the trains' (§10), the vehicles' (§12) and the
+    /// stationary wave's (§14). The discrete track's studies (§18) are run on their own (`frictrack study`).
+    pub const REPRODUCED: [Preset; 9] = [
         Preset::DiscreteSpeed,
         Preset::EqualCost,
         Preset::OptimalForce,
@@ -149,6 +158,21 @@ impl Preset {
         Preset::Hslm,
         Preset::VehicleSpeed,
         Preset::StationaryWave,
+    ];
+
+    /// All eleven, in docs/theory.md order.
+    pub const ALL: [Preset; 11] = [
+        Preset::DiscreteSpeed,
+        Preset::EqualCost,
+        Preset::OptimalForce,
+        Preset::DistributedSpeed,
+        Preset::Amplification,
+        Preset::DiscreteVsDistributed,
+        Preset::Hslm,
+        Preset::VehicleSpeed,
+        Preset::StationaryWave,
+        Preset::VoidedSleepers,
+        Preset::SleeperFriction,
     ];
 
     /// Name on the command line and of the output files.
@@ -266,6 +290,8 @@ pub enum StudySummary {
     Hslm(hslm_summary::HslmSummary),
     /// The infinite track's stationary waves beside the finite beam's curves.
     StationaryWave(stationary_wave::StationarySummary),
+    /// Voided sleepers under a quarter car.
+    VoidedSleepers(voided_sleepers::VoidedSummary),
     /// No summary.
     None,
 }
@@ -339,6 +365,9 @@ fn unit_of(column: &str) -> Option<&'static str> {
         "time" => "s",
         "impulse" => "N·s",
         "model" | "train" | "friction" | "rail" | "foundation" | "status" => "text",
+        "voided" | "sleepers" => "1",
+        "gap" | "exception_lowest" => "m",
+        "max_pad_force" | "max_ballast_force" | "exception_ballast_force" | "neighbour_ballast_force" => "N",
         "max_acceleration" | "max_body_acceleration" | "rms_body_acceleration" => "m/s²",
         "min_wheel_force" | "max_wheel_force" => "N",
         "devices"

@@ -3,7 +3,7 @@
 
 use super::{
     Preset, Resolution, StudyData, amplification, discrete_speed, discrete_vs_distributed, distributed_speed,
-    equal_cost, hslm, optimal_force, stationary_wave, vehicle_speed,
+    equal_cost, hslm, optimal_force, sleeper_friction, stationary_wave, vehicle_speed, voided_sleepers,
 };
 use runner::Runner;
 use scenario::Scenario;
@@ -38,7 +38,7 @@ pub(super) struct PresetEntry {
 }
 
 /// The presets, in the order of [`Preset::ALL`] (a test checks it).
-pub(super) const TABLE: [PresetEntry; 9] = [
+pub(super) const TABLE: [PresetEntry; 11] = [
     // 1. Preset::DiscreteSpeed
     PresetEntry {
         name: "discrete-speed",
@@ -153,6 +153,38 @@ pub(super) const TABLE: [PresetEntry; 9] = [
         sampling: Sampling::Speeds,
         run: stationary_wave::study,
         overrides: Some(stationary_wave::overrides),
+    },
+    // 10. Preset::VoidedSleepers
+    PresetEntry {
+        name: "voided-sleepers",
+        title: "Voided sleepers under a quarter car: rail deflection, neighbouring sleepers, wheel force",
+        sets: &[
+            "sleepers: 0–3 consecutive sleepers at mid-track hanging by voids of 0, 1, 2, 3 mm (0: tensionless \
+             ballast), on the scenario's [sleepers] (if it has none: the typical ballasted track in place of its soil)",
+            "load: the default quarter car scaled to F, from a static start; speeds 20–100 m/s every 20 (coarse) or \
+             5 (paper)",
+            "integration.load_advance: a/20 (20 steps a sleeper-passing period), and a step that resolves the \
+             wheel–rail contact mode",
+            "mesh: whole bays, four elements each, where the scenario's does not put a node over every sleeper",
+        ],
+        sampling: Sampling::Fixed,
+        run: voided_sleepers::study,
+        overrides: Some(voided_sleepers::overrides),
+    },
+    // 11. Preset::SleeperFriction
+    PresetEntry {
+        name: "sleeper-friction",
+        title: "Friction at the sleepers against friction in the ballast",
+        sets: &[
+            "friction: none and f_u ∈ {2, 5} kN/m — distributed in the ballast on the continuous track, a slider of \
+             f_u·a at every sleeper on the discrete one",
+            "sleepers: the scenario's [sleepers] (if it has none: light sleepers every 0.6 m holding its soil), and \
+             the continuous twin with their long-wave support and mass",
+            "mesh: whole bays, four elements each, where the scenario's does not put a node over every sleeper",
+        ],
+        sampling: Sampling::Speeds,
+        run: sleeper_friction::study,
+        overrides: Some(sleeper_friction::overrides),
     },
 ];
 

@@ -49,7 +49,7 @@ fn vehicle(model: usize) -> VehicleSection {
 }
 
 /// The one-axle train the vehicles are scaled onto.
-const SINGLE: &str = "single";
+pub(super) const SINGLE: &str = "single";
 
 /// `base` as the study runs it, and a sentence for each change: a long track, and a longest time step that resolves
 /// the stiffest contact mode of the study's vehicles at every one of `speeds`, with 5 % to spare.
@@ -73,11 +73,25 @@ fn prepared(base: &Scenario, speeds: &[f64]) -> Result<(Scenario, Vec<String>)> 
         ));
         s.integration.static_start = Some(start);
     }
+    let vehicles: Vec<VehicleSection> = (1..MODELS.len()).map(vehicle).collect();
+    cap_contact_step(&mut s, speeds, &vehicles, &mut notes)?;
+    Ok((s, notes))
+}
+
+/// Cap `s`'s step (`integration.max_step`) where its load advance at the slowest of `speeds` (m/s) would not
+/// resolve the stiffest wheel–rail contact mode of `vehicles` (each on the one-axle train of F), 5 % to spare; a
+/// sentence in `notes` when it does.
+pub(super) fn cap_contact_step(
+    s: &mut Scenario,
+    speeds: &[f64],
+    vehicles: &[VehicleSection],
+    notes: &mut Vec<String>,
+) -> Result<()> {
     let slowest = speeds.iter().copied().fold(f64::INFINITY, f64::min);
     let mut omega = 0.0f64;
     let axle = fem_beam::Train::single(s.load.force);
-    for model in 1..MODELS.len() {
-        let settings = vehicle(model).settings(Some(&axle), |_| Ok(irregularity::Profile::Smooth))?;
+    for v in vehicles {
+        let settings = v.settings(Some(&axle), |_| Ok(irregularity::Profile::Smooth))?;
         omega = omega.max(settings.contact_frequency()?);
     }
     let longest = 0.95 * MAX_CONTACT_STEP / omega;
@@ -92,7 +106,7 @@ fn prepared(base: &Scenario, speeds: &[f64]) -> Result<(Scenario, Vec<String>)> 
         ));
         s.integration.max_step = Some(longest);
     }
-    Ok((s, notes))
+    Ok(())
 }
 
 /// The parts of `base` the study replaces or adds, one sentence each.

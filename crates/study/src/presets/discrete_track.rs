@@ -1,0 +1,75 @@
+//! What the studies of the discrete track share (docs/theory.md §18): a mesh with a node over every sleeper and four
+//! elements a bay, and the continuous track a discrete one stands for.
+
+use scenario::Scenario;
+use scenario::sleepers::SleepersSection;
+
+/// Elements a bay the studies run with: half a pinned–pinned wavelength in four.
+const ELEMENTS_PER_BAY: f64 = 4.0;
+
+/// Make `s`'s mesh put a node over every sleeper with at least four elements a bay, if it does not: whole bays of the
+/// track's length, four elements each; a sentence in `notes` when it changes.
+pub(super) fn fit_mesh(s: &mut Scenario, notes: &mut Vec<String>) {
+    let Some(sleepers) = &s.sleepers else { return };
+    let a = sleepers.spacing;
+    let first = sleepers.first.unwrap_or(0.5 * a);
+    let l = s.mesh.length / s.mesh.elements as f64;
+    let on_nodes = |x: f64| (x / l - (x / l).round()).abs() <= 1e-9 * (1.0 + x / l);
+    if on_nodes(a) && on_nodes(first) && a / l >= ELEMENTS_PER_BAY - 1e-9 {
+        return;
+    }
+    let bays = (s.mesh.length / a + 1e-9).floor();
+    // Whole bays, rounded to a nanometre so that the length reads as it is meant (199.8 m, not 199.799…).
+    s.mesh.length = (bays * a * 1e9).round() / 1e9;
+    s.mesh.elements = (ELEMENTS_PER_BAY * bays) as usize;
+    if let Some(section) = s.sleepers.as_mut() {
+        section.first = Some(0.5 * a);
+    }
+    notes.push(format!(
+        "mesh: {} m in {} elements — whole bays of {a} m, four elements each, a node over every sleeper (the first at \
+         {} m)",
+        s.mesh.length,
+        s.mesh.elements,
+        0.5 * a
+    ));
+}
+
+/// The continuous track that `s` on sleepers stands for in the long wave (`fem_beam::Sleepers::equivalent_track`):
+/// its soil plus the pads and ballast in series spread over a spacing, k_eq = (k_p k_b/(k_p + k_b))/a, their dashpots
+/// in series to first order in frequency, c_eq = (c_p k_b² + c_b k_p²)/((k_p + k_b)² a) (exact when c/k is the
+/// same in both), and the sleepers' mass spread on the rail as the long wave moves it.
+pub(super) fn continuous_twin(s: &Scenario) -> scenario::error::Result<Scenario> {
+    let mut twin = s.clone();
+    let Some(section) = twin.sleepers.take() else { return Ok(twin) };
+    let sleepers = section.sleepers()?;
+    let (beam, stiffness) = sleepers.equivalent_track(&s.beam, s.foundation.stiffness);
+    let (p, b) = (sleepers.pad, sleepers.ballast);
+    let damping = (p.damping * b.stiffness.powi(2) + b.damping * p.stiffness.powi(2))
+        / ((p.stiffness + b.stiffness).powi(2) * sleepers.spacing);
+    let soil = s.model()?.foundation().damping;
+    twin.beam = beam;
+    twin.foundation.stiffness = stiffness;
+    twin.foundation.damping = Some(soil + damping);
+    twin.foundation.damping_ratio = None;
+    Ok(twin)
+}
+
+/// Sleepers every 0.6 m holding `s`'s soil in their stead: pad and ballast k = 2k_f a, c = 2c_f a each (in series,
+/// the soil's spring and dashpot per sleeper), a light sleeper of a tenth of the rail's mass over a bay.
+pub(super) fn sleepers_for_soil(s: &Scenario) -> scenario::error::Result<SleepersSection> {
+    let a = 0.6;
+    let foundation = *s.model()?.foundation();
+    let layer = scenario::sleepers::LayerSection {
+        stiffness: Some(2.0 * foundation.stiffness * a),
+        damping: Some(2.0 * foundation.damping * a),
+        loss_factor: None,
+    };
+    Ok(SleepersSection {
+        spacing: a,
+        first: None,
+        mass: 0.1 * s.beam.mass_per_length() * a,
+        pad: layer,
+        ballast: layer,
+        exceptions: Vec::new(),
+    })
+}
