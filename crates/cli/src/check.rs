@@ -45,9 +45,14 @@ fn check(path: &std::path::Path) -> Result<()> {
     let range = scenario.speed_range()?;
     let mesh = case.model.mesh();
     let foundation = case.model.foundation();
-    let damping = match foundation.stiffness > 0.0 {
-        true => format!("ζ = {:.4}", foundation.damping_ratio(case.model.beam())),
-        false => "no foundation".into(),
+    let damping = match (foundation.stiffness > 0.0, case.model.sleepers()) {
+        (true, _) => format!("ζ = {:.4}", foundation.damping_ratio(case.model.beam())),
+        (false, None) => "no foundation".into(),
+        (false, Some(_)) => "no soil".into(),
+    };
+    let damping = match case.model.sleepers() {
+        Some((s, nodes)) => format!("{damping}, on {}", report::sleeper_output::sleepers_in_words(s, nodes.len())),
+        None => damping,
     };
     let friction = match (&scenario.friction.devices, &scenario.friction.distributed) {
         (None, None) => "no friction".to_string(),

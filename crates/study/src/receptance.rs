@@ -162,7 +162,8 @@ impl ReceptanceStudy {
         let points: Vec<ReceptancePoint> =
             request.frequencies.iter().zip(&values).map(|(&f, &a)| ReceptancePoint::of(f, a)).collect();
         let curve: Vec<(f64, f64)> = points.iter().map(|p| (p.frequency, p.magnitude)).collect();
-        let resonances = resonances(&curve, |f| alpha(f).map(|a| a.norm()))?;
+        let mut resonances = resonances(&curve, |f| alpha(f).map(|a| a.norm()))?;
+        crate::receptance_peaks::name_resonances(&model, &mut resonances);
         let warnings = warnings(&model, &request.frequencies, request.excite);
         Ok(Self {
             title: scenario.title.clone(),

@@ -28,6 +28,9 @@ pub struct Resonance {
     /// Peak over the higher of its two bases — the least |α| on each side before the curve climbs above the peak —
     /// (≥ 1.05: smaller bumps are not listed).
     pub prominence: f64,
+    /// What resonates, where an estimate of the track's names it ([`name_resonances`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub name: Option<&'static str>,
 }
 
 /// A peak must stand this much above the larger minimum beside it to be listed (5 %).
@@ -50,9 +53,47 @@ pub fn resonances(points: &[(f64, f64)], magnitude: impl Fn(f64) -> Result<f64>)
         }
         let (a, b) = (points[i - 1].0, points[i + 1].0);
         let (frequency, magnitude) = golden_section(&mut |f| magnitude(f), a, b, 1e-6 * b, true)?;
-        out.push(Resonance { frequency, magnitude, prominence: magnitude / floor });
+        out.push(Resonance { frequency, magnitude, prominence: magnitude / floor, name: None });
     }
     Ok(out)
+}
+
+/// The resonances a track is known for (Hz), by name: the rail bouncing on a continuous foundation, √(k_f/ρA)/2π;
+/// on sleepers the bay's two lumped resonances ([`fem_beam::Sleepers::bay_resonances`]: the track on the ballast, the
+/// rail on its pads) and the pinned–pinned one ([`fem_beam::Sleepers::pinned_pinned`]).
+pub fn known_resonances(model: &BeamModel) -> Vec<(&'static str, f64)> {
+    let rho_a = model.beam().mass_per_length();
+    let mut out = Vec::new();
+    let k_f = model.foundation().stiffness;
+    if k_f > 0.0 && model.sleepers().is_none() {
+        out.push(("rail on its foundation", (k_f / rho_a).sqrt() / TAU));
+    }
+    if let Some((s, _)) = model.sleepers() {
+        let bay = s.bay_resonances(rho_a);
+        out.push(("track on the ballast", bay.track));
+        out.push(("rail on its pads", bay.rail_on_pads));
+        out.push(("pinned–pinned", s.pinned_pinned(model.beam())));
+    }
+    out
+}
+
+/// A resonance is named by an estimate within this factor of it (the lumped estimates of a bay miss the rail's
+/// bending by up to ~20 %).
+const NAMING_FACTOR: f64 = 1.5;
+
+/// Name each of `resonances` by the known resonance of `model` nearest to it (in ratio), each name given once, to
+/// the resonance nearest to it, within [`NAMING_FACTOR`].
+pub fn name_resonances(model: &BeamModel, resonances: &mut [Resonance]) {
+    for (name, estimate) in known_resonances(model) {
+        let distance = |r: &Resonance| (r.frequency / estimate).ln().abs();
+        let nearest = resonances
+            .iter_mut()
+            .filter(|r| r.name.is_none() && distance(r) <= NAMING_FACTOR.ln())
+            .min_by(|a, b| distance(a).total_cmp(&distance(b)));
+        if let Some(r) = nearest {
+            r.name = Some(name);
+        }
+    }
 }
 
 /// The least |α| to the left of peak `i` before the curve rises above it (or the grid ends): the topographic

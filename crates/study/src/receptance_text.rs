@@ -121,8 +121,11 @@ impl Output for ReceptanceStudy {
                 for r in peaks {
                     writeln!(
                         f,
-                        "    {:>10.2} Hz  |α| = {:.3e} m/N  (prominence {:.2})",
-                        r.frequency, r.magnitude, r.prominence
+                        "    {:>10.2} Hz  |α| = {:.3e} m/N  (prominence {:.2}){}",
+                        r.frequency,
+                        r.magnitude,
+                        r.prominence,
+                        r.name.map_or(String::new(), |n| format!("  {n}"))
                     )?;
                 }
             }

@@ -99,6 +99,9 @@ fn a_discrete_track_has_the_resonances_of_the_literature() {
     assert_eq!(peaks.len(), 3, "{peaks:?}");
     assert!(peaks[0] < 250.0 && (300.0..600.0).contains(&peaks[1]), "{peaks:?}");
     assert!((peaks[2] / 1072.0 - 1.0).abs() < 1e-2, "{peaks:?}");
+    // Named by the track's estimates: the bay lumped (track on ballast, rail on pads), pinned–pinned.
+    let names: Vec<Option<&str>> = mid_span.resonances.iter().map(|r| r.name).collect();
+    assert_eq!(names, [Some("track on the ballast"), Some("rail on its pads"), Some("pinned–pinned")]);
     assert!(mid_span.warnings.is_empty(), "{:?}", mid_span.warnings);
     assert!(mid_span.support.starts_with("100 sleepers every 0.6 m (150 kg; pads 200 MN/m"), "{}", mid_span.support);
     let above = ReceptanceStudy::of(&scenario, &at(30.3), &runner).unwrap();
