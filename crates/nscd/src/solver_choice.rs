@@ -5,7 +5,8 @@
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize), serde(rename_all = "kebab-case"))]
 pub enum SolverKind {
-    /// Projection for sections spaced wider than twice the coupling length, interior point otherwise.
+    /// Projection for a few sections (at most eight) or sections spaced wider than twice the coupling length,
+    /// interior point otherwise.
     #[default]
     Auto,
     /// Nonsmooth (projected) Gauss–Seidel.

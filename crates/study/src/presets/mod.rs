@@ -28,6 +28,7 @@ mod stationary_wave_curves;
 mod stationary_wave_figures;
 mod study_file;
 mod table;
+mod track_receptance;
 mod vehicle_speed;
 mod voided_sleepers;
 
@@ -67,6 +68,9 @@ pub enum Preset {
     /// Study 11: friction at the sleepers against friction in the ballast, and the discrete track's critical speed
     /// (docs/theory.md §18).
     SleeperFriction,
+    /// 12. The track's receptance (docs/theory.md §17, §18): Euler–Bernoulli and Timoshenko rails on sleepers (mid-span,
+    /// above a sleeper) and on the equivalent continuous support.
+    Receptance,
 }
 
 /// How finely the studies sample speeds and forces.
@@ -160,8 +164,8 @@ impl Preset {
         Preset::StationaryWave,
     ];
 
-    /// All eleven, in docs/theory.md order.
-    pub const ALL: [Preset; 11] = [
+    /// All twelve, in docs/theory.md order.
+    pub const ALL: [Preset; 12] = [
         Preset::DiscreteSpeed,
         Preset::EqualCost,
         Preset::OptimalForce,
@@ -173,6 +177,7 @@ impl Preset {
         Preset::StationaryWave,
         Preset::VoidedSleepers,
         Preset::SleeperFriction,
+        Preset::Receptance,
     ];
 
     /// Name on the command line and of the output files.
@@ -292,6 +297,8 @@ pub enum StudySummary {
     StationaryWave(stationary_wave::StationarySummary),
     /// Voided sleepers under a quarter car.
     VoidedSleepers(voided_sleepers::VoidedSummary),
+    /// The track's receptance: resonances per rail, support and place.
+    Receptance(track_receptance::ReceptanceSummary),
     /// No summary.
     None,
 }
@@ -364,7 +371,10 @@ fn unit_of(column: &str) -> Option<&'static str> {
         "global_norm" => "m²",
         "time" => "s",
         "impulse" => "N·s",
-        "model" | "train" | "friction" | "rail" | "foundation" | "status" => "text",
+        "model" | "train" | "friction" | "rail" | "foundation" | "status" | "support" | "place" => "text",
+        "frequency" => "Hz",
+        "magnitude" | "real" | "imaginary" => "m/N",
+        "phase" => "degrees",
         "voided" | "sleepers" => "1",
         "gap" | "exception_lowest" => "m",
         "max_pad_force" | "max_ballast_force" | "exception_ballast_force" | "neighbour_ballast_force" => "N",

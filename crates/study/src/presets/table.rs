@@ -3,7 +3,8 @@
 
 use super::{
     Preset, Resolution, StudyData, amplification, discrete_speed, discrete_vs_distributed, distributed_speed,
-    equal_cost, hslm, optimal_force, sleeper_friction, stationary_wave, vehicle_speed, voided_sleepers,
+    equal_cost, hslm, optimal_force, sleeper_friction, stationary_wave, track_receptance, vehicle_speed,
+    voided_sleepers,
 };
 use runner::Runner;
 use scenario::Scenario;
@@ -38,7 +39,7 @@ pub(super) struct PresetEntry {
 }
 
 /// The presets, in the order of [`Preset::ALL`] (a test checks it).
-pub(super) const TABLE: [PresetEntry; 11] = [
+pub(super) const TABLE: [PresetEntry; 12] = [
     // 1. Preset::DiscreteSpeed
     PresetEntry {
         name: "discrete-speed",
@@ -185,6 +186,22 @@ pub(super) const TABLE: [PresetEntry; 11] = [
         sampling: Sampling::Speeds,
         run: sleeper_friction::study,
         overrides: Some(sleeper_friction::overrides),
+    },
+    // 12. Preset::Receptance
+    PresetEntry {
+        name: "receptance",
+        title: "The track's receptance: Euler–Bernoulli and Timoshenko rails, on sleepers and on a continuous support",
+        sets: &[
+            "rail: Euler–Bernoulli and Timoshenko (the scenario's G and κ, else 81 GPa and 0.4)",
+            "support: the scenario's [sleepers] (if it has none: the typical ballasted track in place of its soil), \
+             read at mid-span and above a sleeper near mid-track; and the continuous twin (k_eq, c_eq, the sleepers' \
+             long-wave mass)",
+            "frequencies: 10 Hz – 2 kHz, 200 (coarse) or 1000 (paper) log-spaced; mesh eight elements a bay; \
+             absorbing zones of min(40 m, L/5) unless the scenario gives them",
+        ],
+        sampling: Sampling::Fixed,
+        run: track_receptance::study,
+        overrides: Some(track_receptance::overrides),
     },
 ];
 
