@@ -1,4 +1,4 @@
-//! `frictrack study <preset>`: run one of the eleven studies (docs/theory.md §7, §10, §12, §14 and §18) and write
+//! `frictrack study <preset>`: run one of the twelve studies (docs/theory.md §7, §10, §12, §14, §17 and §18) and write
 //! `<preset>.csv` (the data), `<preset>.json` (scenario, version, git revision, resolution, summary, wall time) and
 //! its figures (PNG and SVG) into the output folder.
 

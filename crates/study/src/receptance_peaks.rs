@@ -58,37 +58,36 @@ pub fn resonances(points: &[(f64, f64)], magnitude: impl Fn(f64) -> Result<f64>)
     Ok(out)
 }
 
-/// The resonances a track is known for (Hz), by name: the rail bouncing on a continuous foundation, √(k_f/ρA)/2π;
-/// on sleepers the bay's two lumped resonances ([`fem_beam::Sleepers::bay_resonances`]: the track on the ballast, the
-/// rail on its pads) and the pinned–pinned one ([`fem_beam::Sleepers::pinned_pinned`]).
-pub fn known_resonances(model: &BeamModel) -> Vec<(&'static str, f64)> {
+/// The resonances a track is known for, by name, with their estimates (Hz) and how far (as a ratio) a peak may lie
+/// from the estimate to take its name: the rail bouncing on a continuous foundation, √(k_f/ρA)/2π; on sleepers the
+/// bay's two lumped resonances ([`fem_beam::Sleepers::bay_resonances`]: the track on the ballast, the rail on its
+/// pads — lumped, they miss the rail's bending by up to ~20 %: a factor 1.5) and the pinned–pinned one
+/// ([`fem_beam::Sleepers::pinned_pinned`], within 1 % at mid-span: 10 %, so that the peak beside the dip above a
+/// sleeper, ~20 % higher, is not taken for it).
+pub fn known_resonances(model: &BeamModel) -> Vec<(&'static str, f64, f64)> {
     let rho_a = model.beam().mass_per_length();
     let mut out = Vec::new();
     let k_f = model.foundation().stiffness;
     if k_f > 0.0 && model.sleepers().is_none() {
-        out.push(("rail on its foundation", (k_f / rho_a).sqrt() / TAU));
+        out.push(("rail on its foundation", (k_f / rho_a).sqrt() / TAU, 1.5));
     }
     if let Some((s, _)) = model.sleepers() {
         let bay = s.bay_resonances(rho_a);
-        out.push(("track on the ballast", bay.track));
-        out.push(("rail on its pads", bay.rail_on_pads));
-        out.push(("pinned–pinned", s.pinned_pinned(model.beam())));
+        out.push(("track on the ballast", bay.track, 1.5));
+        out.push(("rail on its pads", bay.rail_on_pads, 1.5));
+        out.push(("pinned–pinned", s.pinned_pinned(model.beam()), 1.1));
     }
     out
 }
 
-/// A resonance is named by an estimate within this factor of it (the lumped estimates of a bay miss the rail's
-/// bending by up to ~20 %).
-const NAMING_FACTOR: f64 = 1.5;
-
 /// Name each of `resonances` by the known resonance of `model` nearest to it (in ratio), each name given once, to
-/// the resonance nearest to it, within [`NAMING_FACTOR`].
+/// the resonance nearest to it, within that name's factor ([`known_resonances`]).
 pub fn name_resonances(model: &BeamModel, resonances: &mut [Resonance]) {
-    for (name, estimate) in known_resonances(model) {
+    for (name, estimate, factor) in known_resonances(model) {
         let distance = |r: &Resonance| (r.frequency / estimate).ln().abs();
         let nearest = resonances
             .iter_mut()
-            .filter(|r| r.name.is_none() && distance(r) <= NAMING_FACTOR.ln())
+            .filter(|r| r.name.is_none() && distance(r) <= factor.ln())
             .min_by(|a, b| distance(a).total_cmp(&distance(b)));
         if let Some(r) = nearest {
             r.name = Some(name);

@@ -74,3 +74,33 @@ fn friction_at_the_sleepers_against_friction_in_the_ballast() {
     }
     assert!(peak(1.0, 5e3) > peak(0.0, 5e3));
 }
+
+/// The receptance study on 60 m of the typical ballasted track: six curves of 200 frequencies; on sleepers the
+/// three resonances of the literature at mid-span, named — pinned–pinned within 1 % of the span's frequency
+/// (Euler–Bernoulli π/(2a²)·√(EI/ρA) = 1428 Hz, Timoshenko's frequency equation 1072 Hz) —, above a sleeper no
+/// pinned–pinned peak (a dip there), and on the continuous twin the one resonance of a rail on its foundation.
+#[test]
+fn the_receptance_study_names_the_resonances_of_the_literature() {
+    let base = Scenario::from_toml("[mesh]\nlength = 60.0\nelements = 100\n", "short.toml").unwrap();
+    let data = run_preset(Preset::Receptance, Resolution::Coarse, &base, &Runner::new(0).unwrap()).unwrap();
+    assert_eq!(data.plots.len(), 2);
+    assert_eq!(data.csv.lines().count(), 1 + 6 * 200);
+    let summary = data.summary_json();
+    let curves = summary["curves"].as_array().unwrap();
+    let find = |rail: &str, support: &str, place: &str| {
+        curves.iter().find(|c| c["rail"] == rail && c["support"] == support && c["place"] == place).unwrap()
+    };
+    let named = |c: &serde_json::Value, name: &str| {
+        c["resonances"].as_array().unwrap().iter().find(|r| r["name"] == name).map(|r| number(&r["frequency"]))
+    };
+    for (rail, pinned) in [("Euler–Bernoulli", 1428.0), ("Timoshenko", 1072.0)] {
+        let mid = find(rail, "sleepers", "mid-span");
+        let f = named(mid, "pinned–pinned").unwrap_or_else(|| panic!("{rail}: {mid}"));
+        assert!((f / pinned - 1.0).abs() < 1e-2, "{rail}: {f} Hz");
+        assert!(named(mid, "track on the ballast").is_some() && named(mid, "rail on its pads").is_some(), "{mid}");
+        assert!(named(find(rail, "sleepers", "above a sleeper"), "pinned–pinned").is_none());
+        let twin = find(rail, "continuous", "mid-span")["resonances"].as_array().unwrap().clone();
+        assert_eq!(twin.len(), 1, "{twin:?}");
+        assert_eq!(twin[0]["name"], "rail on its foundation");
+    }
+}

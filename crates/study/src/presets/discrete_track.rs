@@ -4,30 +4,30 @@
 use scenario::Scenario;
 use scenario::sleepers::SleepersSection;
 
-/// Elements a bay the studies run with: half a pinned–pinned wavelength in four.
-const ELEMENTS_PER_BAY: f64 = 4.0;
+/// Elements a bay the time-domain studies run with: half a pinned–pinned wavelength in four.
+pub(super) const ELEMENTS_PER_BAY: usize = 4;
 
-/// Make `s`'s mesh put a node over every sleeper with at least four elements a bay, if it does not: whole bays of the
-/// track's length, four elements each; a sentence in `notes` when it changes.
-pub(super) fn fit_mesh(s: &mut Scenario, notes: &mut Vec<String>) {
+/// Make `s`'s mesh put a node over every sleeper with at least `per_bay` elements a bay, if it does not: whole bays
+/// of the track's length, `per_bay` elements each; a sentence in `notes` when it changes.
+pub(super) fn fit_mesh(s: &mut Scenario, per_bay: usize, notes: &mut Vec<String>) {
     let Some(sleepers) = &s.sleepers else { return };
     let a = sleepers.spacing;
     let first = sleepers.first.unwrap_or(0.5 * a);
     let l = s.mesh.length / s.mesh.elements as f64;
     let on_nodes = |x: f64| (x / l - (x / l).round()).abs() <= 1e-9 * (1.0 + x / l);
-    if on_nodes(a) && on_nodes(first) && a / l >= ELEMENTS_PER_BAY - 1e-9 {
+    if on_nodes(a) && on_nodes(first) && a / l >= per_bay as f64 - 1e-9 {
         return;
     }
     let bays = (s.mesh.length / a + 1e-9).floor();
     // Whole bays, rounded to a nanometre so that the length reads as it is meant (199.8 m, not 199.799…).
     s.mesh.length = (bays * a * 1e9).round() / 1e9;
-    s.mesh.elements = (ELEMENTS_PER_BAY * bays) as usize;
+    s.mesh.elements = per_bay * bays as usize;
     if let Some(section) = s.sleepers.as_mut() {
         section.first = Some(0.5 * a);
     }
     notes.push(format!(
-        "mesh: {} m in {} elements — whole bays of {a} m, four elements each, a node over every sleeper (the first at \
-         {} m)",
+        "mesh: {} m in {} elements — whole bays of {a} m, {per_bay} elements each, a node over every sleeper (the first \
+         at {} m)",
         s.mesh.length,
         s.mesh.elements,
         0.5 * a

@@ -68,8 +68,8 @@ pub enum Preset {
     /// Study 11: friction at the sleepers against friction in the ballast, and the discrete track's critical speed
     /// (docs/theory.md §18).
     SleeperFriction,
-    /// 12. The track's receptance (docs/theory.md §17, §18): Euler–Bernoulli and Timoshenko rails on sleepers (mid-span,
-    /// above a sleeper) and on the equivalent continuous support.
+    /// Study 12: the track's receptance (docs/theory.md §17, §18): Euler–Bernoulli and Timoshenko rails on sleepers
+    /// (mid-span, above a sleeper) and on the equivalent continuous support.
     Receptance,
 }
 

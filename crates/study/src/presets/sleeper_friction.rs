@@ -39,7 +39,7 @@ fn discrete(base: &Scenario) -> Result<(Scenario, Vec<String>)> {
         section.exceptions.clear();
         notes.push("the scenario's [[sleepers.exceptions]] are not used".into());
     }
-    fit_mesh(&mut s, &mut notes);
+    fit_mesh(&mut s, super::discrete_track::ELEMENTS_PER_BAY, &mut notes);
     Ok((s, notes))
 }
 

@@ -63,12 +63,7 @@ fn prepared(base: &Scenario) -> Result<(Scenario, Vec<String>)> {
             "the receptance is the linear track's: voided, tensionless and frictional sleepers are left out".into(),
         );
     }
-    fit_mesh(&mut s, &mut notes);
-    let a = s.sleepers.as_ref().map_or(0.6, |x| x.spacing);
-    if s.mesh.length / s.mesh.elements as f64 > a / ELEMENTS_PER_BAY as f64 + 1e-12 {
-        s.mesh.elements = (s.mesh.length / a).round() as usize * ELEMENTS_PER_BAY;
-        notes.push(format!("mesh: {} elements, eight a bay (ten a bending wavelength up to 2 kHz)", s.mesh.elements));
-    }
+    fit_mesh(&mut s, ELEMENTS_PER_BAY, &mut notes);
     if s.foundation.absorbing_zones.is_none() {
         let zones = AbsorbingZonesSection { length: (s.mesh.length / 5.0).min(40.0), ..Default::default() };
         notes.push(format!("absorbing zones of {:.1} m at the ends, so that no wave comes back", zones.length));

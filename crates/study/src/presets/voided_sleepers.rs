@@ -49,7 +49,7 @@ fn prepared(base: &Scenario, speeds: &[f64]) -> Result<(Scenario, Vec<String>)> 
         );
     }
     let a = s.sleepers.as_ref().map_or(0.6, |x| x.spacing);
-    super::discrete_track::fit_mesh(&mut s, &mut notes);
+    super::discrete_track::fit_mesh(&mut s, super::discrete_track::ELEMENTS_PER_BAY, &mut notes);
     s.load.train = Some(SINGLE.into());
     s.load.axles.clear();
     s.load.patches.clear();
