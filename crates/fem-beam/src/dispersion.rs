@@ -34,6 +34,12 @@ pub fn bending_frequency(beam: &Beam, k_f: f64, k: f64) -> f64 {
     (2.0 * c / (big_b + discriminant.sqrt())).sqrt()
 }
 
+/// The pinned–pinned frequency (Hz) of a rail on supports `spacing` m apart: the free rail's bending wave of half a
+/// wavelength per spacing, k = π/a, its nodes over the supports (π/(2a²)·√(EI/ρA) for Euler–Bernoulli).
+pub fn pinned_pinned(beam: &Beam, spacing: f64) -> f64 {
+    bending_frequency(beam, 0.0, std::f64::consts::PI / spacing) / std::f64::consts::TAU
+}
+
 /// The wave a load at the critical speed resonates with.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CriticalWave {

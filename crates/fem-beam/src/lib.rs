@@ -55,8 +55,8 @@ pub use extreme::{Extreme, LiftOffZone};
 pub use load::LoadVector;
 pub use mesh::Mesh;
 pub use properties::{Beam, BeamTheory, Foundation, FoundationLaw, Rayleigh};
-pub use sleeper_exceptions::{BallastContact, SleeperException, SleeperSupport};
-pub use sleepers::{BayResonances, Layer, Sleepers};
+pub use sleeper_exceptions::{BallastContact, SleeperException};
+pub use sleepers::{BayResonances, Layer, SleeperSupport, Sleepers};
 pub use supports::{DofMap, Support, Supports};
 pub use train::{Axle, Patch, Train};
 

@@ -8,7 +8,6 @@
 //! hanging sleeper too). The friction slider and the unilateral spring are interactions placed by the `track` crate.
 
 use crate::error::{FemError, Result};
-use crate::sleepers::{Layer, Sleepers};
 
 /// How the ballast holds a sleeper.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -43,35 +42,6 @@ pub struct SleeperException {
 impl Default for SleeperException {
     fn default() -> Self {
         Self { first: 0, last: 0, pad_scale: 1.0, ballast_scale: 1.0, contact: BallastContact::Bonded, friction: 0.0 }
-    }
-}
-
-/// What holds one sleeper, the exceptions applied: its pad and ballast layers (stiffnesses scaled), how the ballast
-/// holds it, its friction force (N).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct SleeperSupport {
-    /// The pad (stiffness scaled).
-    pub pad: Layer,
-    /// The ballast (stiffness scaled).
-    pub ballast: Layer,
-    /// Bonded or unilateral.
-    pub contact: BallastContact,
-    /// F (N), 0 for none.
-    pub friction: f64,
-}
-
-impl SleeperSupport {
-    /// The ballast's stiffness K holds (N/m): all of it where bonded, none where a unilateral law carries it.
-    pub fn bonded_stiffness(&self) -> f64 {
-        match self.contact {
-            BallastContact::Bonded => self.ballast.stiffness,
-            BallastContact::Unilateral { .. } => 0.0,
-        }
-    }
-
-    /// Whether this sleeper is linear (bonded, no friction).
-    pub fn is_linear(&self) -> bool {
-        self.contact == BallastContact::Bonded && self.friction == 0.0
     }
 }
 
@@ -113,32 +83,11 @@ impl SleeperException {
     }
 }
 
-impl Sleepers {
-    /// What holds sleeper `s`: the typical layers, changed by the last exception that names it.
-    pub fn support(&self, s: usize) -> SleeperSupport {
-        let typical =
-            SleeperSupport { pad: self.pad, ballast: self.ballast, contact: BallastContact::Bonded, friction: 0.0 };
-        match self.exceptions.iter().rev().find(|e| e.covers(s)) {
-            None => typical,
-            Some(e) => SleeperSupport {
-                pad: Layer { stiffness: self.pad.stiffness * e.pad_scale, ..self.pad },
-                ballast: Layer { stiffness: self.ballast.stiffness * e.ballast_scale, ..self.ballast },
-                contact: e.contact,
-                friction: e.friction,
-            },
-        }
-    }
-
-    /// Whether every sleeper is linear (no unilateral ballast, no friction): what the receptance needs.
-    pub fn is_linear(&self) -> bool {
-        self.exceptions.iter().all(|e| e.contact == BallastContact::Bonded && e.friction == 0.0)
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::mesh::Mesh;
+    use crate::sleepers::Sleepers;
 
     #[test]
     fn the_last_exception_naming_a_sleeper_decides_and_bad_ones_are_named() {

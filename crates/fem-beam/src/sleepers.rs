@@ -7,7 +7,7 @@
 use crate::error::{FemError, Result, non_negative, positive};
 use crate::mesh::Mesh;
 use crate::properties::Beam;
-use crate::sleeper_exceptions::{SleeperException, SleeperSupport};
+use crate::sleeper_exceptions::{BallastContact, SleeperException};
 
 /// A spring–dashpot layer: stiffness (N/m), viscous damping (N·s/m), loss factor (hysteretic, frequency domain).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -114,12 +114,6 @@ impl Sleepers {
         BayResonances { track: hz(2.0 * c / (b + root)), rail_on_pads: hz((b + root) / (2.0 * a)) }
     }
 
-    /// The pinned–pinned frequency (Hz): the free rail's bending wave of half a wavelength per spacing, k = π/a,
-    /// nodes over the sleepers ([`crate::dispersion::bending_frequency`]; π/(2a²)·√(EI/ρA) for Euler–Bernoulli).
-    pub fn pinned_pinned(&self, beam: &Beam) -> f64 {
-        crate::dispersion::bending_frequency(beam, 0.0, std::f64::consts::PI / self.spacing) / std::f64::consts::TAU
-    }
-
     /// The mesh node under each sleeper, first to last: every sleeper on the beam must sit on a node (within 1e-9 of
     /// an element), else the error names the keys that place them.
     pub fn nodes(&self, mesh: &Mesh) -> Result<Vec<usize>> {
@@ -195,6 +189,57 @@ impl Sleepers {
     }
 }
 
+/// What holds one sleeper, the exceptions applied: its pad and ballast layers (stiffnesses scaled), how the ballast
+/// holds it, its friction force (N).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SleeperSupport {
+    /// The pad (stiffness scaled).
+    pub pad: Layer,
+    /// The ballast (stiffness scaled).
+    pub ballast: Layer,
+    /// Bonded or unilateral.
+    pub contact: BallastContact,
+    /// F (N), 0 for none.
+    pub friction: f64,
+}
+
+impl SleeperSupport {
+    /// The ballast's stiffness K holds (N/m): all of it where bonded, none where a unilateral law carries it.
+    pub fn bonded_stiffness(&self) -> f64 {
+        match self.contact {
+            BallastContact::Bonded => self.ballast.stiffness,
+            BallastContact::Unilateral { .. } => 0.0,
+        }
+    }
+
+    /// Whether this sleeper is linear (bonded, no friction).
+    pub fn is_linear(&self) -> bool {
+        self.contact == BallastContact::Bonded && self.friction == 0.0
+    }
+}
+
+impl Sleepers {
+    /// What holds sleeper `s`: the typical layers, changed by the last exception that names it.
+    pub fn support(&self, s: usize) -> SleeperSupport {
+        let typical =
+            SleeperSupport { pad: self.pad, ballast: self.ballast, contact: BallastContact::Bonded, friction: 0.0 };
+        match self.exceptions.iter().rev().find(|e| e.covers(s)) {
+            None => typical,
+            Some(e) => SleeperSupport {
+                pad: Layer { stiffness: self.pad.stiffness * e.pad_scale, ..self.pad },
+                ballast: Layer { stiffness: self.ballast.stiffness * e.ballast_scale, ..self.ballast },
+                contact: e.contact,
+                friction: e.friction,
+            },
+        }
+    }
+
+    /// Whether every sleeper is linear (no unilateral ballast, no friction): what the receptance needs.
+    pub fn is_linear(&self) -> bool {
+        self.exceptions.iter().all(|e| e.contact == BallastContact::Bonded && e.friction == 0.0)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -226,7 +271,7 @@ mod tests {
         // Euler–Bernoulli: π/(2a²)·√(EI/ρA), 1428 Hz for UIC60 at a = 0.6 m.
         let beam = Beam::default();
         let closed = std::f64::consts::PI / (2.0 * 0.36) * (beam.bending_stiffness() / beam.mass_per_length()).sqrt();
-        assert!((s.pinned_pinned(&beam) / closed - 1.0).abs() < 1e-12);
+        assert!((crate::dispersion::pinned_pinned(&beam, s.spacing) / closed - 1.0).abs() < 1e-12);
         let (smeared, k) = s.equivalent_track(&beam, 1e6);
         // 150 kg every 0.6 m moving with (2/3) of the rail's deflection: 250 kg/m × 4/9.
         assert!((smeared.mass_per_length() - beam.mass_per_length() - 250.0 * 4.0 / 9.0).abs() < 1e-9);

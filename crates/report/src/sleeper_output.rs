@@ -122,7 +122,7 @@ impl SleepersSummary {
             passing_frequency: speed / s.spacing,
             track_resonance: lumped.track,
             rail_on_pads_resonance: lumped.rail_on_pads,
-            pinned_pinned: s.pinned_pinned(model.beam()),
+            pinned_pinned: fem_beam::dispersion::pinned_pinned(model.beam(), s.spacing),
             unilateral: placed.count(SectionKind::SleeperBallast),
             sliders: placed.count(SectionKind::SleeperFriction),
             slider_force: (0..nodes.len()).map(|i| s.support(i).friction).sum(),

@@ -6,7 +6,8 @@
 //! - Warned: elements longer than a quarter of the deflection bowl π/β (β = (k_f/4EI)^¼; 10 m for the reference
 //!   case, so elements over 2.5 m cannot represent it and the peaks come out wrong), and friction devices that snap
 //!   to the same node and merge (their forces add) or sit on a support (dropped); a rigid wheel–rail contact at
-//!   θ < 0.51 (its force's period-2 mode undamped, docs/theory.md §9).
+//!   θ < 0.51 (its force's period-2 mode undamped, docs/theory.md §9); on sleepers, a bay of fewer than 4 elements and
+//!   a step that does not resolve the sleeper passing, rail-on-pad or pinned–pinned frequency (§18).
 
 use crate::error::{Result, invalid};
 pub use crate::warning::Warning;
@@ -82,7 +83,7 @@ pub fn warnings(scenario: &Scenario, case: &Case) -> Vec<Warning> {
         }
     }
     out.extend(deck_resolution(case));
-    out.extend(crate::track_resolution::sleeper_resolution(case));
+    out.extend(sleeper_resolution(case));
     out.extend(rigid_contact_damping(case));
     out.extend(articulated_cars(scenario, case));
     out.extend(crate::plausibility::input_warnings(scenario, case));
@@ -217,6 +218,64 @@ pub fn deck_resolution(case: &Case) -> Vec<Warning> {
                 resolving_advance(f_max, case.settings.moving.speed),
                 case.settings.moving.speed,
                 resolving_step(f_max)
+            ),
+        });
+    }
+    out
+}
+
+/// Elements a bay the pinned–pinned wave needs (its half wavelength is the spacing).
+pub const ELEMENTS_PER_BAY: usize = 4;
+
+/// What a run of `case` on sleepers must resolve (docs/theory.md §18), warned about where it does not (none on a
+/// continuous track): the mesh the pinned–pinned wave ([`ELEMENTS_PER_BAY`], the rule a span's modes follow), the
+/// step the frequencies the sleepers add — the sleeper passing frequency v/a the load excites, the rail bouncing on
+/// its pads and the pinned–pinned resonance — each with 20 steps per period ([`resolving_step`]).
+pub fn sleeper_resolution(case: &Case) -> Vec<Warning> {
+    let model = &case.model;
+    let Some((sleepers, _)) = model.sleepers() else { return Vec::new() };
+    let mut out = Vec::new();
+    let mesh = model.mesh();
+    let per_bay = sleepers.spacing / mesh.element_length();
+    if per_bay < ELEMENTS_PER_BAY as f64 - 1e-9 {
+        let needed = (mesh.length / sleepers.spacing * ELEMENTS_PER_BAY as f64).round();
+        out.push(Warning {
+            field: "mesh.elements".into(),
+            value: mesh.elements.to_string(),
+            message: format!(
+                "{per_bay:.0} element(s) a bay of {} m: the pinned–pinned wave (half a wavelength a bay) needs at least \
+                 {ELEMENTS_PER_BAY}; use {needed} elements",
+                sleepers.spacing
+            ),
+        });
+    }
+    let speed = case.settings.moving.speed;
+    let lumped = sleepers.bay_resonances(model.beam().mass_per_length());
+    let frequencies = [
+        ("the sleeper passing frequency v/a", speed / sleepers.spacing),
+        ("the rail on its pads (a bay lumped)", lumped.rail_on_pads),
+        ("the pinned–pinned resonance", fem_beam::dispersion::pinned_pinned(model.beam(), sleepers.spacing)),
+    ];
+    let h = case.settings.time_step();
+    let missed: Vec<String> = frequencies
+        .iter()
+        .filter(|(_, f)| h > resolving_step(*f) * (1.0 + 1e-9))
+        .map(|(what, f)| {
+            format!(
+                "{what} {f:.0} Hz (load advance ≤ {:.4} m, or max_step ≤ {:.3e} s)",
+                resolving_advance(*f, speed),
+                resolving_step(*f)
+            )
+        })
+        .collect();
+    if !missed.is_empty() {
+        out.push(Warning {
+            field: "integration.load_advance".into(),
+            value: case.settings.integration.load_advance.to_string(),
+            message: format!(
+                "the step h = {h:.3e} s resolves {:.1} Hz with 20 steps per period; not resolved on these sleepers: {}",
+                1.0 / (20.0 * h),
+                missed.join("; ")
             ),
         });
     }

@@ -29,7 +29,6 @@ pub mod sections;
 pub mod sleepers;
 pub mod speeds;
 mod stationary_problem;
-pub mod track_resolution;
 pub mod trains;
 pub mod units;
 pub mod vehicle;

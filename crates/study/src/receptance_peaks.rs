@@ -62,7 +62,7 @@ pub fn resonances(points: &[(f64, f64)], magnitude: impl Fn(f64) -> Result<f64>)
 /// from the estimate to take its name: the rail bouncing on a continuous foundation, √(k_f/ρA)/2π; on sleepers the
 /// bay's two lumped resonances ([`fem_beam::Sleepers::bay_resonances`]: the track on the ballast, the rail on its
 /// pads — lumped, they miss the rail's bending by up to ~20 %: a factor 1.5) and the pinned–pinned one
-/// ([`fem_beam::Sleepers::pinned_pinned`], within 1 % at mid-span: 10 %, so that the peak beside the dip above a
+/// ([`fem_beam::dispersion::pinned_pinned`], within 1 % at mid-span: 10 %, so that the peak beside the dip above a
 /// sleeper, ~20 % higher, is not taken for it).
 pub fn known_resonances(model: &BeamModel) -> Vec<(&'static str, f64, f64)> {
     let rho_a = model.beam().mass_per_length();
@@ -75,7 +75,7 @@ pub fn known_resonances(model: &BeamModel) -> Vec<(&'static str, f64, f64)> {
         let bay = s.bay_resonances(rho_a);
         out.push(("track on the ballast", bay.track, 1.5));
         out.push(("rail on its pads", bay.rail_on_pads, 1.5));
-        out.push(("pinned–pinned", s.pinned_pinned(model.beam()), 1.1));
+        out.push(("pinned–pinned", fem_beam::dispersion::pinned_pinned(model.beam(), s.spacing), 1.1));
     }
     out
 }

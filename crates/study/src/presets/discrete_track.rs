@@ -7,6 +7,23 @@ use scenario::sleepers::SleepersSection;
 /// Elements a bay the time-domain studies run with: half a pinned–pinned wavelength in four.
 pub(super) const ELEMENTS_PER_BAY: usize = 4;
 
+/// Where `s` has no `[sleepers]`, put its rail on `sleepers` (`what` they are, in words) in place of its soil; a
+/// sentence in `notes` when it does.
+pub(super) fn sleepers_unless_given(s: &mut Scenario, sleepers: SleepersSection, what: &str, notes: &mut Vec<String>) {
+    if s.sleepers.is_some() {
+        return;
+    }
+    s.sleepers = Some(sleepers);
+    s.foundation.stiffness = 0.0;
+    s.foundation.damping = None;
+    s.foundation.damping_ratio = None;
+    notes.push(format!("the scenario has no [sleepers]: the study puts its rail on {what} in place of its soil"));
+}
+
+/// The typical ballasted track's sleepers, in words for [`sleepers_unless_given`].
+pub(super) const TYPICAL: &str =
+    "the typical ballasted track (pads 200 MN/m on 150 kg sleepers every 0.6 m on ballast of 100 MN/m)";
+
 /// Make `s`'s mesh put a node over every sleeper with at least `per_bay` elements a bay, if it does not: whole bays
 /// of the track's length, `per_bay` elements each; a sentence in `notes` when it changes.
 pub(super) fn fit_mesh(s: &mut Scenario, per_bay: usize, notes: &mut Vec<String>) {

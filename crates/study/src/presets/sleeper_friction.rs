@@ -8,7 +8,7 @@
 //! track's critical speed against the continuous one's.
 
 use super::curves::{Curves, curves_study};
-use super::discrete_track::{continuous_twin, fit_mesh, sleepers_for_soil};
+use super::discrete_track::{continuous_twin, fit_mesh, sleepers_for_soil, sleepers_unless_given};
 use super::{Resolution, StudyData, with_distributed};
 use report::plot::PlotSpec;
 use runner::Runner;
@@ -25,15 +25,9 @@ fn discrete(base: &Scenario) -> Result<(Scenario, Vec<String>)> {
     let mut notes = Vec::new();
     s.friction = Default::default();
     if s.sleepers.is_none() {
-        s.sleepers = Some(sleepers_for_soil(base)?);
-        s.foundation.stiffness = 0.0;
-        s.foundation.damping = None;
-        s.foundation.damping_ratio = None;
-        notes.push(
-            "the scenario has no [sleepers]: the study puts its rail on light sleepers (a tenth of the rail's mass \
-             over a bay) every 0.6 m whose pads and ballast in series hold its soil's spring and dashpot"
-                .into(),
-        );
+        let what = "light sleepers (a tenth of the rail's mass over a bay) every 0.6 m whose pads and ballast in \
+                    series hold its soil's spring and dashpot";
+        sleepers_unless_given(&mut s, sleepers_for_soil(base)?, what, &mut notes);
     }
     if let Some(section) = s.sleepers.as_mut().filter(|x| !x.exceptions.is_empty()) {
         section.exceptions.clear();

@@ -5,7 +5,7 @@
 //! equivalent continuous support (the continuous twin: k_eq, c_eq and the sleepers' long-wave mass): |α| and phase
 //! over 10 Hz – 2 kHz, log-spaced, the resonances refined and named.
 
-use super::discrete_track::{continuous_twin, fit_mesh};
+use super::discrete_track::{TYPICAL, continuous_twin, fit_mesh, sleepers_unless_given};
 use super::{Resolution, StudyData, StudySummary, blank};
 use crate::receptance::{ReceptanceRequest, ReceptanceStudy};
 use crate::receptance_peaks::Resonance;
@@ -47,16 +47,7 @@ fn timoshenko(base: &Scenario) -> BeamTheory {
 fn prepared(base: &Scenario) -> Result<(Scenario, Vec<String>)> {
     let mut s = base.clone();
     let mut notes = Vec::new();
-    if s.sleepers.is_none() {
-        s.sleepers = Some(SleepersSection::default());
-        s.foundation.stiffness = 0.0;
-        s.foundation.damping = None;
-        s.foundation.damping_ratio = None;
-        notes.push(
-            "the scenario has no [sleepers]: the study puts the rail on the typical ballasted track in place of its soil"
-                .into(),
-        );
-    }
+    sleepers_unless_given(&mut s, SleepersSection::default(), TYPICAL, &mut notes);
     if let Some(section) = s.sleepers.as_mut().filter(|x| !x.exceptions.is_empty()) {
         section.exceptions.retain(|e| e.gap.is_none() && e.law.is_none() && e.friction.is_none());
         notes.push(

@@ -5,6 +5,7 @@
 //! deflection, the largest ballast force under the neighbouring sleepers (which carry what the voided ones do not)
 //! and the largest pad force, how low the voided sleepers go, and the wheel–rail force and losses of contact.
 
+use super::discrete_track::{ELEMENTS_PER_BAY, TYPICAL, fit_mesh, sleepers_unless_given};
 use super::vehicle_speed::{SINGLE, cap_contact_step};
 use super::{Resolution, StudyData, StudySummary, as_long_track, blank, failed_runs, mean_iterations};
 use report::plot::{PlotSpec, Series, Stroke};
@@ -37,19 +38,9 @@ fn speeds(resolution: Resolution) -> Vec<f64> {
 fn prepared(base: &Scenario, speeds: &[f64]) -> Result<(Scenario, Vec<String>)> {
     let mut s = base.clone();
     let mut notes = Vec::new();
-    if s.sleepers.is_none() {
-        s.sleepers = Some(SleepersSection::default());
-        s.foundation.stiffness = 0.0;
-        s.foundation.damping = None;
-        s.foundation.damping_ratio = None;
-        notes.push(
-            "the scenario has no [sleepers]: the study puts the rail on the typical ballasted track (pads 200 MN/m on \
-             150 kg sleepers every 0.6 m on ballast of 100 MN/m) in place of its soil"
-                .into(),
-        );
-    }
+    sleepers_unless_given(&mut s, SleepersSection::default(), TYPICAL, &mut notes);
     let a = s.sleepers.as_ref().map_or(0.6, |x| x.spacing);
-    super::discrete_track::fit_mesh(&mut s, super::discrete_track::ELEMENTS_PER_BAY, &mut notes);
+    fit_mesh(&mut s, ELEMENTS_PER_BAY, &mut notes);
     s.load.train = Some(SINGLE.into());
     s.load.axles.clear();
     s.load.patches.clear();

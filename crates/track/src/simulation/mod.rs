@@ -20,12 +20,11 @@ mod vehicles;
 
 pub use lift_off::LIFT_OFF_GAP;
 pub use results::{
-    BodyResult, FallbackCount, LiftOff, LossOfContact, RunResult, SectionHistory, SolverStatistics, StepView,
-    VehicleResults, WheelHistory, WheelResult, WindowExtremes, WorkStatistics,
+    BodyResult, FallbackCount, LiftOff, LossOfContact, RunResult, SectionHistory, SleeperPeaks, SleeperResults,
+    SolverStatistics, StepView, VehicleResults, WheelHistory, WheelResult, WindowExtremes, WorkStatistics,
 };
 pub(crate) use settings::counts_for_extremes;
 pub use settings::{InitialState, IntegrationSettings, Load, MovingLoadSettings, RecordSettings, RunSettings};
-pub use sleeper_record::{SleeperPeaks, SleeperResults};
 pub use vehicles::{IMPACT_WINDOW, LOSS_OF_CONTACT};
 
 use crate::error::Result;

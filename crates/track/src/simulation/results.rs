@@ -173,7 +173,7 @@ pub struct RunResult {
     /// Where and when the rail left the soil, on a nonlinear foundation.
     pub lift_off: Option<LiftOff>,
     /// The sleepers' forces and the rail's deflection under the load, on sleepers.
-    pub sleepers: Option<super::sleeper_record::SleeperResults>,
+    pub sleepers: Option<SleeperResults>,
 }
 
 /// Where and when the rail left the soil of a nonlinear foundation over a run (docs/theory.md §13).
@@ -300,4 +300,35 @@ pub struct VehicleResults {
     /// contacts): the O(h) drift of the velocity-level constraint along the moving rail, removed
     /// ([`nscd::EnergyLedger::projection_work`]).
     pub projection_work: f64,
+}
+
+/// One sleeper over a run.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SleeperPeaks {
+    /// Where it sits (m).
+    pub x: f64,
+    /// Largest pad force (N, compression) and when (s).
+    pub pad_force: (f64, f64),
+    /// Largest ballast force (N, compression) and when (s).
+    pub ballast_force: (f64, f64),
+    /// The sleeper's lowest position (m, downward positive).
+    pub lowest: f64,
+    /// Where the ballast cannot pull: the largest gap under the sleeper (m; a voided sleeper's starts at its void, a
+    /// tensionless one's stays 0 while it presses). None for bonded ballast.
+    pub largest_gap: Option<f64>,
+    /// Where the ballast cannot pull: when the sleeper first pressed on it (s; None if never).
+    pub first_contact: Option<f64>,
+}
+
+/// The sleepers over a run, and the rail's deflection under the first load.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct SleeperResults {
+    /// Each sleeper, first to last.
+    pub sleepers: Vec<SleeperPeaks>,
+    /// The sleepers' spacing a (m) and where the first sits (m).
+    pub spacing: f64,
+    /// See `spacing`.
+    pub first: f64,
+    /// (first load's position (m), the rail's deflection under it (m, upward)) after every step it was on the rail.
+    pub under_load: Vec<(f64, f64)>,
 }

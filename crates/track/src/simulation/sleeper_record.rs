@@ -7,40 +7,10 @@
 //! unilateral with void g; w the rail's deflection over the sleeper, z the sleeper's (m, upward).
 
 use super::records::{Record, StepState};
+use super::results::{SleeperPeaks, SleeperResults};
 use crate::error::Result;
 use fem_beam::{BallastContact, BeamModel, SleeperSupport};
 use friction::InteractionRow;
-
-/// One sleeper over a run.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct SleeperPeaks {
-    /// Where it sits (m).
-    pub x: f64,
-    /// Largest pad force (N, compression) and when (s).
-    pub pad_force: (f64, f64),
-    /// Largest ballast force (N, compression) and when (s).
-    pub ballast_force: (f64, f64),
-    /// The sleeper's lowest position (m, downward positive).
-    pub lowest: f64,
-    /// Where the ballast cannot pull: the largest gap under the sleeper (m; a voided sleeper's starts at its void, a
-    /// tensionless one's stays 0 while it presses). None for bonded ballast.
-    pub largest_gap: Option<f64>,
-    /// Where the ballast cannot pull: when the sleeper first pressed on it (s; None if never).
-    pub first_contact: Option<f64>,
-}
-
-/// The sleepers over a run, and the rail's deflection under the first load.
-#[derive(Debug, Clone, PartialEq, Default)]
-pub struct SleeperResults {
-    /// Each sleeper, first to last.
-    pub sleepers: Vec<SleeperPeaks>,
-    /// The sleepers' spacing a (m) and where the first sits (m).
-    pub spacing: f64,
-    /// See `spacing`.
-    pub first: f64,
-    /// (first load's position (m), the rail's deflection under it (m, upward)) after every step it was on the rail.
-    pub under_load: Vec<(f64, f64)>,
-}
 
 /// A followed sleeper: its DOFs and layers.
 struct Followed {
