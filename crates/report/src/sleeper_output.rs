@@ -137,7 +137,6 @@ impl SleepersSummary {
 
 /// The sleepers named by an exception, in order.
 fn exceptional(s: &Sleepers, results: &SleeperResults) -> Vec<ExceptionalSleeper> {
-    let typical = Sleepers { exceptions: Vec::new(), ..s.clone() }.support(0);
     results
         .sleepers
         .iter()
@@ -154,9 +153,7 @@ fn exceptional(s: &Sleepers, results: &SleeperResults) -> Vec<ExceptionalSleeper
             if support.friction > 0.0 {
                 what.push(format!("friction {} kN", support.friction / 1e3));
             }
-            for (name, layer, normal) in
-                [("pad", support.pad, typical.pad), ("ballast", support.ballast, typical.ballast)]
-            {
+            for (name, layer, normal) in [("pad", support.pad, s.pad), ("ballast", support.ballast, s.ballast)] {
                 if layer.stiffness != normal.stiffness {
                     what.push(format!("{name} × {}", layer.stiffness / normal.stiffness));
                 }

@@ -9,8 +9,7 @@
 use super::records::{Record, StepState};
 use super::results::{SleeperPeaks, SleeperResults};
 use crate::error::Result;
-use fem_beam::{BallastContact, BeamModel, SleeperSupport};
-use friction::InteractionRow;
+use fem_beam::{BallastContact, BeamModel, Discretisation, SleeperSupport};
 
 /// A followed sleeper: its DOFs and layers.
 struct Followed {
@@ -23,6 +22,7 @@ struct Followed {
 /// The record; empty (and free) on a continuous track.
 pub(super) struct SleeperRecord<'m> {
     model: &'m BeamModel,
+    beam: Discretisation,
     sleepers: Vec<Followed>,
     results: SleeperResults,
 }
@@ -52,7 +52,7 @@ impl<'m> SleeperRecord<'m> {
                 });
             }
         }
-        Self { model, sleepers, results }
+        Self { model, beam: model.discretisation(), sleepers, results }
     }
 
     /// The results; None on a continuous track.
@@ -68,10 +68,9 @@ impl<'m> SleeperRecord<'m> {
         if !(0.0..=self.model.mesh().length).contains(&x) {
             return None;
         }
-        let (point, shape) = self.model.discretisation().shape_at(x).ok()?;
+        let (point, shape) = self.beam.shape_at(x).ok()?;
         let free = self.model.dofs().element_free(point.element);
-        let row = InteractionRow::from_entries(free.into_iter().zip(shape).filter_map(|(d, n)| Some((d?, n))));
-        Some(row.dot(q))
+        Some(free.into_iter().zip(shape).filter_map(|(d, n)| Some(q[d?] * n)).sum())
     }
 }
 
