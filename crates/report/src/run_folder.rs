@@ -1,6 +1,7 @@
 //! The run folder (`frictrack run --out DIR`, `frictrack.run(out=DIR)` in Python): summary.json (the run's summary
 //! with its files' columns and units, the figures' titles and the scenario), histories.csv, snapshots.csv, with
-//! vehicles wheels.csv, and the run's figures as PNG and SVG. Which files, checked before the run and written after
+//! vehicles wheels.csv, and the run's figures as PNG and SVG (on sleepers also `bay`, the deflection under the load
+//! over a bay). Which files, checked before the run and written after
 //! it, once for the command line and Python.
 
 use crate::columns::ColumnMeta;
@@ -80,7 +81,8 @@ pub fn file_names(case: &Case) -> Vec<String> {
     let figures = FIGURE_STEMS.iter().flat_map(|f| [format!("{f}.png"), format!("{f}.svg")]);
     let wheel_files = ["wheels.csv", "wheel-forces.png", "wheel-forces.svg"].map(String::from).into_iter();
     let wheel_files = wheel_files.filter(|_| case.settings.moving.load.vehicles().is_some());
-    files.chain(figures).chain(wheel_files).collect()
+    let bay_files = ["bay.png", "bay.svg"].map(String::from).into_iter().filter(|_| case.model.sleepers().is_some());
+    files.chain(figures).chain(wheel_files).chain(bay_files).collect()
 }
 
 /// Before the run: `folder` exists (created if missing) and takes every file of [`file_names`] (none is a link, a
@@ -144,6 +146,11 @@ pub fn write(
         let mut spec = wheel_plot(vehicles, &title, range);
         // The run's line (vehicles, speed, friction) before what the figure says of its wheels.
         spec.subtitle = format!("{subtitle}; {}", spec.subtitle);
+        crate::plot::render(&spec, folder)?;
+    }
+    if let Some(sleepers) = &report.sleepers {
+        let mut spec = crate::sleeper_output::bay_plot(sleepers, &title);
+        spec.subtitle = format!("{subtitle}; {}", sleepers.track);
         crate::plot::render(&spec, folder)?;
     }
     Ok(())

@@ -91,6 +91,9 @@ pub struct SleepersSummary {
     pub exceptions: Vec<ExceptionalSleeper>,
     /// The deflection under the load over a bay.
     pub bay: BayProfile,
+    /// The mesh's element length (m): between nodes the cubic element under-reads the deflection under a point load
+    /// (the element ripple), so [`bay_plot`] draws the bins at nodes.
+    pub element_length: f64,
     /// Where the results are read (m).
     pub read_region: [f64; 2],
 }
@@ -130,6 +133,7 @@ impl SleepersSummary {
             max_ballast_force: largest(|p| p.ballast_force),
             exceptions: exceptional(s, results),
             bay: BayProfile::of(results, read),
+            element_length: model.mesh().element_length(),
             read_region: read,
         })
     }
@@ -241,4 +245,41 @@ pub(crate) fn write_sleepers(f: &mut std::fmt::Formatter<'_>, s: &SleepersSummar
         writeln!(f, "    … and {} more sleepers of the exceptions (the JSON lists them all)", s.exceptions.len() - 12)?;
     }
     Ok(())
+}
+
+/// The figure `bay` of a run on sleepers: the rail's mean downward deflection under the first load (mm) against the
+/// load's distance from the sleeper behind it (m), over the bays where the results are read, at the mesh's nodes —
+/// above a sleeper at both ends (the first bin drawn again at a), mid-span in the middle; the sleepers marked.
+pub fn bay_plot(s: &SleepersSummary, title: &str) -> crate::plot::PlotSpec {
+    use crate::plot::{Mark, PlotSpec, Series, Stroke};
+    let mut spec = PlotSpec::new(
+        "bay",
+        format!("{title}: deflection under the load over a bay (v/a = {:.1} Hz)", s.passing_frequency),
+        "load's distance from the sleeper behind it (m)",
+        "mean downward deflection under the load (mm)",
+    );
+    // The bins centred on a node (within half a bin): between nodes a point load's deflection is under-read by the
+    // cubic element, a ripple of the mesh, not of the track.
+    let half_bin = 0.5 * s.spacing / BAY_BINS as f64;
+    let on_node = |x: f64| (x - (x / s.element_length).round() * s.element_length).abs() <= half_bin;
+    let mut points: Vec<(f64, f64)> = s
+        .bay
+        .bins
+        .iter()
+        .filter(|(xi, _)| on_node(xi * s.spacing))
+        .filter_map(|&(xi, w)| Some((xi * s.spacing, w? * 1e3)))
+        .collect();
+    if let Some(above) = s.bay.above_sleeper {
+        points.push((s.spacing, above * 1e3));
+        spec.marks =
+            vec![Mark { color: 0, point: (0.0, above * 1e3) }, Mark { color: 0, point: (s.spacing, above * 1e3) }];
+        spec.mark_label = "above a sleeper".into();
+    }
+    let [a, b] = s.read_region;
+    let label = format!(
+        "load at x = {a:.1}–{b:.1} m, on the nodes (every {} m)",
+        scenario::number::significant(s.element_length, 6)
+    );
+    spec.series.push(Series { label: Some(label), color: 0, stroke: Stroke::Solid, markers: true, points });
+    spec
 }

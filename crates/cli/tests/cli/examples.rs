@@ -134,7 +134,10 @@ fn a_static_start_begins_in_equilibrium_at_speed() {
 /// ballast by the quarter car, each lower than its 1.5 mm void, the wheel keeping contact.
 #[test]
 fn the_discrete_track_examples_run_as_their_headers_say() {
-    let discrete = run_elsewhere("discrete-track.toml", &[]);
+    let folder = temporary_folder("example-discrete-out");
+    let discrete = run_elsewhere("discrete-track.toml", &["--out", folder.to_str().unwrap()]);
+    // The figure of the deflection under the load over a bay, beside the run's others.
+    assert!(folder.join("bay.png").is_file() && folder.join("bay.svg").is_file());
     let s = &discrete["sleepers"];
     assert_eq!(s["count"], 333);
     assert!((s["passing_frequency"].as_f64().unwrap() - 50.0 / 0.6).abs() < 1e-9);
