@@ -151,6 +151,11 @@ impl BeamModel {
         Ok(self)
     }
 
+    /// The free DOF of sleeper `s` (a sleeper's DOF z is never held: it follows the rail's in the full vector).
+    pub fn sleeper_dof(&self, s: usize) -> usize {
+        self.dofs.free_index(2 * self.mesh.nodes() + s).expect("a sleeper's DOF is free")
+    }
+
     /// The sleepers and the node under each, if the rail lies on discrete supports.
     pub fn sleepers(&self) -> Option<(&Sleepers, &[usize])> {
         self.sleepers.as_ref().map(|(s, nodes)| (s, nodes.as_slice()))

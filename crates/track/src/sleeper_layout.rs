@@ -13,10 +13,10 @@ use friction::{InteractionRow, Law};
 pub fn sleeper_interactions(model: &BeamModel) -> PlacedInteractions {
     let mut set = PlacedInteractions::new();
     let Some((sleepers, nodes)) = model.sleepers() else { return set };
-    let (mesh, dofs) = (model.mesh(), model.dofs());
+    let mesh = model.mesh();
     for (s, &node) in nodes.iter().enumerate() {
         let support = sleepers.support(s);
-        let z = dofs.free_index(2 * mesh.nodes() + s).expect("a sleeper's DOF is free");
+        let z = model.sleeper_dof(s);
         let row = || InteractionRow::from_entries([(z, 1.0)]);
         let x = mesh.node_x(node);
         if let BallastContact::Unilateral { gap } = support.contact
