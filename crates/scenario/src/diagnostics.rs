@@ -7,7 +7,8 @@
 //!   case, so elements over 2.5 m cannot represent it and the peaks come out wrong), and friction devices that snap
 //!   to the same node and merge (their forces add) or sit on a support (dropped); a rigid wheel–rail contact at
 //!   θ < 0.51 (its force's period-2 mode undamped, docs/theory.md §9); on sleepers, a bay of fewer than 4 elements and
-//!   a step that does not resolve the sleeper passing, rail-on-pad or pinned–pinned frequency (§18).
+//!   a step that does not resolve the sleeper passing, rail-on-pad or pinned–pinned frequency (§18); a damping ratio
+//!   without a soil (a ratio of a critical damping that is 0).
 
 use crate::error::{Result, invalid};
 pub use crate::warning::Warning;
@@ -84,6 +85,7 @@ pub fn warnings(scenario: &Scenario, case: &Case) -> Vec<Warning> {
     }
     out.extend(deck_resolution(case));
     out.extend(sleeper_resolution(case));
+    out.extend(damping_without_soil(scenario));
     out.extend(rigid_contact_damping(case));
     out.extend(articulated_cars(scenario, case));
     out.extend(crate::plausibility::input_warnings(scenario, case));
@@ -280,4 +282,46 @@ pub fn sleeper_resolution(case: &Case) -> Vec<Warning> {
         });
     }
     out
+}
+
+/// A damping ratio given without a soil: ζ is a ratio of c_cr = 2√(k_f ρA), which is 0 at k_f = 0, so it damps
+/// nothing — on sleepers their pads and ballast carry the damping (`[sleepers.pad]`, `[sleepers.ballast]` damping).
+fn damping_without_soil(scenario: &Scenario) -> Option<Warning> {
+    let ratio = scenario.foundation.damping_ratio.filter(|&r| r > 0.0)?;
+    if scenario.foundation.stiffness > 0.0 {
+        return None;
+    }
+    let instead = match scenario.sleepers {
+        Some(_) => {
+            "the sleepers' pads and ballast carry their own dashpots ([sleepers.pad] and [sleepers.ballast] damping)"
+        }
+        None => "give foundation.damping in N·s/m², or [damping] rayleigh for a deck",
+    };
+    Some(Warning {
+        field: "foundation.damping_ratio".into(),
+        value: crate::number::number(ratio),
+        message: format!(
+            "is a ratio of the soil's critical damping 2√(k_f ρA), which is 0 with foundation.stiffness = 0: it damps \
+             nothing; {instead}"
+        ),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A damping ratio without a soil is said to damp nothing (on sleepers, pointing at their dashpots); with a soil
+    /// it is not warned about.
+    #[test]
+    fn a_damping_ratio_without_a_soil_is_warned_about() {
+        let text = "[foundation]\nstiffness = 0.0\ndamping_ratio = 0.05\n[sleepers]\n[mesh]\nlength = 60.0\n\
+                    elements = 400\n[integration]\nload_advance = 0.03\n";
+        let scenario = Scenario::from_toml(text, "t.toml").unwrap();
+        let said = warnings(&scenario, &scenario.build().unwrap());
+        let damping = said.iter().find(|w| w.field == "foundation.damping_ratio").expect("warned");
+        assert!(damping.message.contains("damps nothing") && damping.message.contains("[sleepers.pad]"), "{damping}");
+        let soil = Scenario::from_toml("[foundation]\ndamping_ratio = 0.05\n", "t.toml").unwrap();
+        assert!(warnings(&soil, &soil.build().unwrap()).iter().all(|w| w.field != "foundation.damping_ratio"));
+    }
 }
