@@ -39,9 +39,9 @@ enum Command {
     Run(run::RunArgs),
     /// Run a scenario at many speeds in parallel; CSV of max deflections, dissipated energy and W̄ per speed.
     Sweep(sweep::SweepArgs),
-    /// Run one of the nine studies of docs/theory.md §7, §10, §12 and §14: CSV, JSON and figures in the output folder.
+    /// Run one of the twelve studies (docs/theory.md §7, §10, §12, §14, §17, §18): CSV, JSON and figures in a folder.
     Study(study_cmd::StudyArgs),
-    /// Run all nine studies and write their data, figures and report.md.
+    /// Run the nine studies of the thesis (§7, §10, §12, §14) and write their data, figures and report.md.
     Reproduce(reproduce::ReproduceArgs),
     /// Validate a scenario file.
     Check(check::CheckArgs),

@@ -70,7 +70,7 @@ impl StudyOptions {
 #[derive(Debug, Args)]
 pub struct StudyArgs {
     /// discrete-speed, equal-cost, optimal-force, distributed-speed, amplification, discrete-vs-distributed, hslm,
-    /// vehicle-speed or stationary-wave.
+    /// vehicle-speed, stationary-wave (the nine `reproduce` runs), voided-sleepers, sleeper-friction or receptance.
     preset: String,
     #[command(flatten)]
     options: StudyOptions,

@@ -466,3 +466,19 @@ fn reproduce_coarse_writes_every_study_and_a_report() {
     assert_eq!(figures, 32);
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// `study --help` names every preset the library knows (the list an unknown preset's error gives), so that the help
+/// cannot fall behind a new study.
+#[test]
+fn study_help_names_every_preset() {
+    let unknown = frictrack(&["study", "no-such-study"]);
+    let stderr = String::from_utf8_lossy(&unknown.stderr);
+    assert_eq!(unknown.status.code(), Some(2), "{stderr}");
+    let list = stderr.split("must be one of ").nth(1).unwrap_or_else(|| panic!("{stderr}"));
+    let names: Vec<&str> = list.trim().split(", ").collect();
+    assert_eq!(names.len(), 12, "{names:?}");
+    let help = String::from_utf8_lossy(&frictrack(&["study", "--help"]).stdout).replace('\n', " ");
+    for name in names {
+        assert!(help.contains(name), "study --help does not name {name}: {help}");
+    }
+}
