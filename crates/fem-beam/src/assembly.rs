@@ -114,7 +114,7 @@ impl BeamModel {
         if let Some((layers, nodes)) = &sleepers {
             type Layers = fn(&crate::SleeperSupport) -> (f64, f64);
             let entries = |matrix: &mut SymmetricBanded, layers_of: Layers, mass: fn(f64) -> f64| {
-                for (i, j, value) in layers.entries(&dofs, mesh.nodes(), nodes, layers_of, mass) {
+                for (i, j, value) in layers.entries(&dofs, nodes, layers_of, mass) {
                     matrix.add(i, j, value);
                 }
             };
@@ -149,11 +149,6 @@ impl BeamModel {
         ]);
         self.rayleigh = rayleigh;
         Ok(self)
-    }
-
-    /// The free DOF of sleeper `s` (a sleeper's DOF z is never held: it follows the rail's in the full vector).
-    pub fn sleeper_dof(&self, s: usize) -> usize {
-        self.dofs.free_index(2 * self.mesh.nodes() + s).expect("a sleeper's DOF is free")
     }
 
     /// The sleepers and the node under each, if the rail lies on discrete supports.

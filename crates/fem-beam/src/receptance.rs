@@ -90,7 +90,7 @@ impl<'a> FrequencyResponse<'a> {
             };
             let layers = |s: &crate::SleeperSupport| (layer(&s.pad), layer(&s.ballast));
             let inertia = |m: f64| Complex64::new(-omega * omega * m, 0.0);
-            for (i, j, value) in sleepers.entries(dofs, model.mesh().nodes(), nodes, layers, inertia) {
+            for (i, j, value) in sleepers.entries(dofs, nodes, layers, inertia) {
                 out.add(i, j, value);
                 if i != j {
                     out.add(j, i, value);

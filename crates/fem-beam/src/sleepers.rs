@@ -158,8 +158,8 @@ impl Sleepers {
 }
 
 impl Sleepers {
-    /// What the sleepers under `nodes` add to a matrix over the free DOFs of `dofs` (a map with their DOFs, of a mesh
-    /// of `mesh_nodes` nodes), as entries (i, j ≤ i) of its lower triangle: on z the sleeper's `mass` term and both
+    /// What the sleepers under `nodes` add to a matrix over the free DOFs of `dofs` (a map with their DOFs,
+    /// [`crate::supports::DofMap::with_sleepers`]), as entries (i, j ≤ i) of its lower triangle: on z the sleeper's `mass` term and both
     /// layers, on (w, z) the pad as [[1, −1], [−1, 1]] (on z alone where a support holds w). `layers` gives what a
     /// sleeper's pad and ballast contribute, from its [`SleeperSupport`] — their k for K (the ballast's where bonded),
     /// c for C, k(1 + iη) + iωc for a dynamic stiffness — and `mass` what m_s does (m_s for M, −ω²m_s for a dynamic
@@ -167,7 +167,6 @@ impl Sleepers {
     pub fn entries<T>(
         &self,
         dofs: &crate::supports::DofMap,
-        mesh_nodes: usize,
         nodes: &[usize],
         layers: impl Fn(&SleeperSupport) -> (T, T),
         mass: impl Fn(f64) -> T,
@@ -178,7 +177,7 @@ impl Sleepers {
         let mut out = Vec::with_capacity(3 * nodes.len());
         for (s, &node) in nodes.iter().enumerate() {
             let (pad, ballast) = layers(&self.support(s));
-            let z = dofs.free_index(2 * mesh_nodes + s).expect("a sleeper's DOF is free");
+            let z = dofs.sleeper(s);
             out.push((z, z, mass(self.mass) + pad + ballast));
             if let Some(w) = dofs.free_index(2 * node) {
                 out.push((w, w, pad));
@@ -232,6 +231,11 @@ impl Sleepers {
                 friction: e.friction,
             },
         }
+    }
+
+    /// Whether an exception names sleeper `s` (it differs from the rest).
+    pub fn differs(&self, s: usize) -> bool {
+        self.exceptions.iter().any(|e| e.covers(s))
     }
 
     /// Whether every sleeper is linear (no unilateral ballast, no friction): what the receptance needs.

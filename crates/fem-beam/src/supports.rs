@@ -65,6 +65,8 @@ impl Supports {
 pub struct DofMap {
     free_of_full: Vec<Option<usize>>,
     full_of_free: Vec<usize>,
+    /// The rail's full DOFs, 2·nodes; sleeper s's is the next `rail + s`.
+    rail: usize,
 }
 
 impl DofMap {
@@ -86,7 +88,7 @@ impl DofMap {
                 full_of_free.push(dof);
             }
         }
-        Self { free_of_full, full_of_free }
+        Self { free_of_full, full_of_free, rail: full }
     }
 
     /// The map with a sleeper DOF under each of `sleeper_nodes` (increasing): full DOFs 2·nodes + s for sleeper s
@@ -106,13 +108,18 @@ impl DofMap {
                 }
             }
             while next_sleeper < sleeper_nodes.len() && sleeper_nodes[next_sleeper] == node {
-                let dof = 2 * nodes + next_sleeper;
+                let dof = rail.rail + next_sleeper;
                 free_of_full[dof] = Some(full_of_free.len());
                 full_of_free.push(dof);
                 next_sleeper += 1;
             }
         }
-        Self { free_of_full, full_of_free }
+        Self { free_of_full, full_of_free, rail: rail.rail }
+    }
+
+    /// The free DOF of sleeper `s` of a map [`DofMap::with_sleepers`] made (a sleeper's DOF is never held).
+    pub fn sleeper(&self, s: usize) -> usize {
+        self.free_of_full[self.rail + s].expect("a sleeper's DOF is free")
     }
 
     /// Number of full DOFs: 2·(n_e + 1) of the rail, and one per sleeper after them.

@@ -145,7 +145,7 @@ fn exceptional(s: &Sleepers, results: &SleeperResults) -> Vec<ExceptionalSleeper
         .sleepers
         .iter()
         .enumerate()
-        .filter(|(i, _)| s.exceptions.iter().any(|e| e.covers(*i)))
+        .filter(|(i, _)| s.differs(*i))
         .map(|(index, p)| {
             let support = s.support(index);
             let mut what = Vec::new();

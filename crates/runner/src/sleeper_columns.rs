@@ -39,7 +39,7 @@ impl SleeperColumns {
         let sleepers = &results.sleepers;
         let largest = |values: &mut dyn Iterator<Item = f64>| values.fold(0.0, f64::max);
         let exceptional: Vec<bool> = match model.sleepers() {
-            Some((s, _)) => (0..sleepers.len()).map(|i| s.exceptions.iter().any(|e| e.covers(i))).collect(),
+            Some((s, _)) => (0..sleepers.len()).map(|i| s.differs(i)).collect(),
             None => vec![false; sleepers.len()],
         };
         let neighbour = |i: usize| {

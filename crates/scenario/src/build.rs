@@ -90,9 +90,7 @@ impl Scenario {
     /// The sleepers' equivalent continuous support k_eq (N/m², 0 without sleepers), their values checked.
     fn sleepers_equivalent(&self) -> Result<f64> {
         let Some(section) = &self.sleepers else { return Ok(0.0) };
-        let sleepers = section.sleepers()?;
-        sleepers.validate()?;
-        Ok(sleepers.equivalent_stiffness())
+        Ok(section.sleepers()?.equivalent_stiffness())
     }
 
     /// The soil's law from `foundation.law` and `tension_ratio` (given for a bilinear soil only).

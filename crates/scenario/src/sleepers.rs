@@ -141,17 +141,19 @@ impl Default for SleepersSection {
 }
 
 impl SleepersSection {
-    /// The sleepers (their values checked when the model places them).
+    /// The sleepers, their values checked (the exceptions' indices are, once the model places them on its mesh).
     pub fn sleepers(&self) -> Result<Sleepers> {
         let typical = Sleepers::default();
-        Ok(Sleepers {
+        let sleepers = Sleepers {
             spacing: self.spacing,
             first: self.first.unwrap_or(0.5 * self.spacing),
             mass: self.mass,
             pad: self.pad.layer(typical.pad),
             ballast: self.ballast.layer(typical.ballast),
             exceptions: self.exceptions.iter().enumerate().map(|(i, e)| e.exception(i)).collect::<Result<_>>()?,
-        })
+        };
+        sleepers.validate()?;
+        Ok(sleepers)
     }
 }
 

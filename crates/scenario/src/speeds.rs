@@ -4,7 +4,8 @@
 //! The reference case (v_cr = 205.57 m/s) gets exactly the range of docs/theory.md §7: a step of v_cr/20.557 rounded to a
 //! "nice" number (1, 2, 2.5 or 5 × 10ᵏ m/s: 10 m/s), from one step to 1.46·v_cr rounded to the step (10–300 m/s).
 //! A stiff soil, k_f = 10 MN/m² (v_cr ≈ 517 m/s), gets 25–750 m/s by 25. Without a foundation (k_f = 0, a bridge
-//! span) there is no v_cr and the reference range is kept. On sleepers the scale is the equivalent continuous track's. Fixed-speed studies scale the same way: a fraction f of
+//! span) there is no v_cr and the reference range is kept; on sleepers the scale is the equivalent continuous
+//! track's. Fixed-speed studies scale the same way: a fraction f of
 //! v_cr rounded to five steps (the reference's 50, 100, 150, 200 m/s), the optimal-force speed to a tenth of a step
 //! (206 m/s).
 
@@ -44,11 +45,7 @@ impl SpeedScale {
     /// on the rail, pads and ballast in series spread over a spacing, beside the soil).
     pub fn of(scenario: &Scenario) -> Result<Self> {
         let (beam, stiffness) = match &scenario.sleepers {
-            Some(s) => {
-                let sleepers = s.sleepers()?;
-                sleepers.validate()?;
-                sleepers.equivalent_track(&scenario.beam, scenario.foundation.stiffness)
-            }
+            Some(s) => s.sleepers()?.equivalent_track(&scenario.beam, scenario.foundation.stiffness),
             None => (scenario.beam, scenario.foundation.stiffness),
         };
         if stiffness <= 0.0 {

@@ -16,7 +16,7 @@ pub fn sleeper_interactions(model: &BeamModel) -> PlacedInteractions {
     let mesh = model.mesh();
     for (s, &node) in nodes.iter().enumerate() {
         let support = sleepers.support(s);
-        let z = model.sleeper_dof(s);
+        let z = model.dofs().sleeper(s);
         let row = || InteractionRow::from_entries([(z, 1.0)]);
         let x = mesh.node_x(node);
         if let BallastContact::Unilateral { gap } = support.contact

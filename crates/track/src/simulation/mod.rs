@@ -217,7 +217,7 @@ fn convected_velocity(model: &BeamModel, q: &[f64], speed: f64) -> Vec<f64> {
     // ballast, 1 hanging): ż = (z/w) ẇ, exact for the bowl carried along quasi-statically.
     if let Some((_, sleeper_nodes)) = model.sleepers() {
         for (s, &node) in sleeper_nodes.iter().enumerate() {
-            let z = model.sleeper_dof(s);
+            let z = dofs.sleeper(s);
             if let Some(w) = dofs.free_index(2 * node).filter(|&w| q[w] != 0.0) {
                 v[z] = v[w] * q[z] / q[w];
             }

@@ -39,7 +39,7 @@ impl<'m> SleeperRecord<'m> {
                 let unilateral = matches!(support.contact, BallastContact::Unilateral { .. });
                 sleepers.push(Followed {
                     w: dofs.free_index(2 * node),
-                    z: model.sleeper_dof(i),
+                    z: dofs.sleeper(i),
                     support,
                     peaks: SleeperPeaks {
                         x: mesh.node_x(node),
