@@ -13,8 +13,8 @@ use crate::sleepers::Sleepers;
 use crate::supports::{DofMap, Supports};
 use banded::SymmetricBanded;
 
-/// Half-bandwidth of assembled beam matrices: 3, and 4 with sleepers (a sleeper's DOF between its node's and the
-/// next's).
+/// Half-bandwidth of assembled beam matrices: 3; with sleepers 3 + their DOFs per sleeper (4, or 5 under ballast
+/// bodies: a sleeper's DOFs sit between its node's and the next's).
 pub const BANDWIDTH: usize = 3;
 
 /// The assembled beam on its foundation: parameters, DOF map and the banded M, C, K over the free DOFs.
@@ -70,8 +70,8 @@ impl BeamModel {
         Self::assemble(beam, foundation, mesh, supports, element_damping, None)
     }
 
-    /// The model with `sleepers` under the rail (docs/theory.md §18): a DOF per sleeper beside its node, its mass,
-    /// pad and ballast in M, C, K (Rayleigh damping, if any, applied again over them).
+    /// The model with `sleepers` under the rail (docs/theory.md §18): a DOF per sleeper beside its node (two under
+    /// a ballast body), the masses, pad, ballast and subgrade in M, C, K (Rayleigh damping, if any, applied again over them).
     pub fn with_sleepers(self, sleepers: Sleepers) -> Result<Self> {
         let nodes = sleepers.nodes(&self.mesh)?;
         let Self { beam, foundation, mesh, supports, element_damping, rayleigh, .. } = self;
@@ -89,7 +89,10 @@ impl BeamModel {
     ) -> Result<Self> {
         let (dofs, band) = match &sleepers {
             None => (DofMap::new(mesh.nodes(), supports), BANDWIDTH),
-            Some((_, nodes)) => (DofMap::with_sleepers(mesh.nodes(), supports, nodes), BANDWIDTH + 1),
+            Some((s, nodes)) => {
+                let per = s.dofs_per_sleeper();
+                (DofMap::with_sleepers(mesh.nodes(), supports, nodes, per), BANDWIDTH + per)
+            }
         };
         let l = mesh.element_length();
         let element = Element::of(&beam, l);
@@ -112,15 +115,23 @@ impl BeamModel {
             }
         }
         if let Some((layers, nodes)) = &sleepers {
-            type Layers = fn(&crate::SleeperSupport) -> (f64, f64);
+            type Layers = fn(&crate::SleeperSupport) -> [f64; 3];
             let entries = |matrix: &mut SymmetricBanded, layers_of: Layers, mass: fn(f64) -> f64| {
                 for (i, j, value) in layers.entries(&dofs, nodes, layers_of, mass) {
                     matrix.add(i, j, value);
                 }
             };
-            entries(&mut mass, |_| (0.0, 0.0), |m| m);
-            entries(&mut damping, |s| (s.pad.damping, s.ballast.damping), |_| 0.0);
-            entries(&mut stiffness, |s| (s.pad.stiffness, s.bonded_stiffness()), |_| 0.0);
+            entries(&mut mass, |_| [0.0; 3], |m| m);
+            entries(
+                &mut damping,
+                |s| [s.pad.damping, s.ballast.damping, s.subgrade.unwrap_or_default().damping],
+                |_| 0.0,
+            );
+            entries(
+                &mut stiffness,
+                |s| [s.pad.stiffness, s.bonded_stiffness(), s.subgrade.unwrap_or_default().stiffness],
+                |_| 0.0,
+            );
         }
         let rayleigh = Rayleigh::default();
         Ok(Self {

@@ -56,7 +56,7 @@ pub use load::LoadVector;
 pub use mesh::Mesh;
 pub use properties::{Beam, BeamTheory, Foundation, FoundationLaw, Rayleigh};
 pub use sleeper_exceptions::{BallastContact, SleeperException};
-pub use sleepers::{BayResonances, Layer, SleeperSupport, Sleepers};
+pub use sleepers::{BallastBody, BayResonances, Layer, SleeperSupport, Sleepers};
 pub use supports::{DofMap, Support, Supports};
 pub use train::{Axle, Patch, Train};
 

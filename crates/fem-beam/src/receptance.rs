@@ -84,11 +84,12 @@ impl<'a> FrequencyResponse<'a> {
             }
         }
         if let Some((sleepers, nodes)) = model.sleepers() {
-            // Each layer's spring with its own loss factor and its dashpot; the sleeper's inertia −ω²m_s.
+            // Each layer's spring with its own loss factor and its dashpot; the masses' inertia −ω²m.
             let layer = |l: &crate::sleepers::Layer| {
                 Complex64::new(l.stiffness, l.stiffness * l.loss_factor + omega * l.damping)
             };
-            let layers = |s: &crate::SleeperSupport| (layer(&s.pad), layer(&s.ballast));
+            let layers =
+                |s: &crate::SleeperSupport| [layer(&s.pad), layer(&s.ballast), layer(&s.subgrade.unwrap_or_default())];
             let inertia = |m: f64| Complex64::new(-omega * omega * m, 0.0);
             for (i, j, value) in sleepers.entries(dofs, nodes, layers, inertia) {
                 out.add(i, j, value);

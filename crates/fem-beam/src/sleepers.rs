@@ -2,7 +2,9 @@
 //! c_p, loss factor η_p) on a sleeper of mass m_s (per rail seat) on the ballast (k_b, c_b, η_b) — every `spacing` m
 //! from `first`. Each sleeper is a DOF z (m, upward) under a mesh node: the pad acts on w_node − z, the ballast on z.
 //! The continuous Winkler foundation is its long-wave limit, k_f ≈ (k_p k_b/(k_p + k_b))/a; the two may be used
-//! together (a slab under a continuous pad, or a soil left under sleepers).
+//! together (a slab under a continuous pad, or a soil left under sleepers). Optionally the ballast is a body of its
+//! own (Zhai's two-layer model, [`BallastBody`]): a mass m_b (a second DOF y under each sleeper) on a subgrade
+//! (k_g, c_g, η_g); the ballast then acts on z − y and the subgrade on y.
 
 use crate::error::{FemError, Result, non_negative, positive};
 use crate::mesh::Mesh;
@@ -10,7 +12,8 @@ use crate::properties::Beam;
 use crate::sleeper_exceptions::{BallastContact, SleeperException};
 
 /// A spring–dashpot layer: stiffness (N/m), viscous damping (N·s/m), loss factor (hysteretic, frequency domain).
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// Its default, all zeros, is no layer.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Layer {
     /// k (N/m), > 0.
     pub stiffness: f64,
@@ -20,11 +23,30 @@ pub struct Layer {
     pub loss_factor: f64,
 }
 
+/// The ballast as a body of its own under each sleeper (Zhai's two-layer model; Zhai, Wang & Lin 2004): the
+/// vibrating ballast under a rail seat lumped as a mass on a subgrade spring–dashpot. The ballast layer then joins
+/// sleeper and ballast mass; a voided or tensionless sleeper's law and its friction act between the two.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BallastBody {
+    /// m_b (kg per rail seat), > 0.
+    pub mass: f64,
+    /// The subgrade under the ballast mass (k_g > 0).
+    pub subgrade: Layer,
+}
+
+impl BallastBody {
+    /// The subgrade a track on a firm formation has when only the ballast mass is given: k_g = 65 MN/m,
+    /// c_g = 31.15 kN·s/m per rail seat, the values of Zhai, Wang & Lin (2004).
+    pub const TYPICAL_SUBGRADE: Layer = Layer { stiffness: 65e6, damping: 31.15e3, loss_factor: 0.0 };
+}
+
 /// The lumped resonances of a bay (Hz), [`Sleepers::bay_resonances`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct BayResonances {
-    /// The whole track bouncing on the ballast.
+    /// The whole track bouncing on the ballast (on the subgrade where the ballast is a body).
     pub track: f64,
+    /// Where the ballast is a body: the sleeper on the ballast, the ballast mass against it.
+    pub sleeper_on_ballast: Option<f64>,
     /// The rail on its pads, the sleeper against it.
     pub rail_on_pads: f64,
 }
@@ -44,6 +66,8 @@ pub struct Sleepers {
     pub pad: Layer,
     /// The ballast under the sleeper.
     pub ballast: Layer,
+    /// The ballast as a mass on the subgrade (two layers), or None: the ballast stands on rigid ground.
+    pub ballast_body: Option<BallastBody>,
     /// Sleepers that differ from the rest, later entries over earlier ones ([`Sleepers::support`]).
     pub exceptions: Vec<SleeperException>,
 }
@@ -56,6 +80,7 @@ impl Default for Sleepers {
             mass: 150.0,
             pad: Layer { stiffness: 200e6, damping: 30e3, loss_factor: 0.0 },
             ballast: Layer { stiffness: 100e6, damping: 50e3, loss_factor: 0.0 },
+            ballast_body: None,
             exceptions: Vec::new(),
         }
     }
@@ -71,18 +96,48 @@ impl Sleepers {
             (&self.pad, ["sleepers.pad.stiffness", "sleepers.pad.damping", "sleepers.pad.loss_factor"]),
             (&self.ballast, ["sleepers.ballast.stiffness", "sleepers.ballast.damping", "sleepers.ballast.loss_factor"]),
         ];
-        for (layer, [stiffness, damping, loss]) in layers {
+        let subgrade = self.ballast_body.map(|body| {
+            (
+                body.subgrade,
+                ["sleepers.subgrade.stiffness", "sleepers.subgrade.damping", "sleepers.subgrade.loss_factor"],
+            )
+        });
+        for (layer, [stiffness, damping, loss]) in layers.iter().map(|(l, keys)| (**l, *keys)).chain(subgrade) {
             positive(stiffness, layer.stiffness)?;
             non_negative(damping, layer.damping)?;
             non_negative(loss, layer.loss_factor)?;
         }
+        if let Some(body) = self.ballast_body {
+            positive("sleepers.ballast.mass", body.mass)?;
+        }
         Ok(())
     }
 
-    /// The equivalent continuous support (N/m²): the pad and ballast in series, spread over a spacing.
+    /// DOFs per sleeper: z, and the ballast mass's y where the ballast is a body.
+    pub fn dofs_per_sleeper(&self) -> usize {
+        if self.ballast_body.is_some() { 2 } else { 1 }
+    }
+
+    /// The layers' compliances from the rail down (m/N): 1/k_p, 1/k_b and, under a ballast body, 1/k_g.
+    fn compliances(&self) -> [f64; 3] {
+        let subgrade = self.ballast_body.map_or(0.0, |b| 1.0 / b.subgrade.stiffness);
+        [1.0 / self.pad.stiffness, 1.0 / self.ballast.stiffness, subgrade]
+    }
+
+    /// The equivalent continuous support (N/m²): the pad, ballast (and subgrade) in series, spread over a spacing.
     pub fn equivalent_stiffness(&self) -> f64 {
-        let (kp, kb) = (self.pad.stiffness, self.ballast.stiffness);
-        kp * kb / (kp + kb) / self.spacing
+        1.0 / self.compliances().iter().sum::<f64>() / self.spacing
+    }
+
+    /// The equivalent continuous dashpot (N·s/m²): the layers' Kelvin–Voigt pairs in series to first order in ω,
+    /// Σ 1/(k_i + iωc_i) ≈ Σ 1/k_i − iω Σ c_i/k_i², so c_eq = k_s² Σ c_i/k_i² / a with k_s = 1/Σ 1/k_i — for pad and
+    /// ballast (c_p k_b² + c_b k_p²)/((k_p + k_b)² a), exact when every layer has the same c/k.
+    pub fn equivalent_damping(&self) -> f64 {
+        let subgrade = self.ballast_body.map(|b| b.subgrade);
+        let layers = [Some(self.pad), Some(self.ballast), subgrade];
+        let series = self.equivalent_stiffness() * self.spacing;
+        let sum: f64 = layers.iter().flatten().map(|l| l.damping / (l.stiffness * l.stiffness)).sum();
+        series * series * sum / self.spacing
     }
 
     /// The sleepers' mass spread over their spacing, m_s/a (kg/m).
@@ -91,27 +146,53 @@ impl Sleepers {
     }
 
     /// The equivalent continuous track of `beam` on these sleepers and a soil `k_f` (N/m²): the beam carrying the
-    /// sleepers' mass spread as the long wave moves it, on k_f + [`Self::equivalent_stiffness`]. Well below the
-    /// bay's resonances ([`Self::bay_resonances`]) a sleeper follows its rail node quasi-statically,
-    /// z = w·k_p/(k_p + k_b), so its kinetic energy is that of a mass m_s (k_p/(k_p + k_b))² moving with the rail:
-    /// ρ → ρ + m_s (k_p/(k_p + k_b))²/(aA) — 0.44 m_s for the typical pads and ballast.
+    /// sleepers' (and ballast bodies') mass spread as the long wave moves it, on k_f + [`Self::equivalent_stiffness`].
+    /// Well below the bay's resonances ([`Self::bay_resonances`]) the layers follow the rail node quasi-statically,
+    /// each mass moving with the share of w in the compliances below it — z = w·(1/k_b + 1/k_g)/Σ1/k,
+    /// y = w·(1/k_g)/Σ1/k — so their kinetic energy is that of m_s (z/w)² + m_b (y/w)² moving with the rail:
+    /// ρ → ρ + (m_s (z/w)² + m_b (y/w)²)/(aA) — 0.44 m_s for the typical pads on rigidly founded ballast.
     pub fn equivalent_track(&self, beam: &Beam, k_f: f64) -> (Beam, f64) {
-        let ratio = self.pad.stiffness / (self.pad.stiffness + self.ballast.stiffness);
-        let density = beam.density + self.mass_per_length() * ratio * ratio / beam.area;
+        let [pad, ballast, subgrade] = self.compliances();
+        let total = pad + ballast + subgrade;
+        let (sleeper, body) = ((ballast + subgrade) / total, subgrade / total);
+        let body_mass = self.ballast_body.map_or(0.0, |b| b.mass);
+        let moved = self.mass * sleeper * sleeper + body_mass * body * body;
+        let density = beam.density + moved / self.spacing / beam.area;
         (Beam { density, ..*beam }, k_f + self.equivalent_stiffness())
     }
 
-    /// The two resonances of one bay lumped (Hz): the rail's mass over a spacing ρA·a on the pad, on the sleeper on
-    /// the ballast — the lower the whole track bouncing on the ballast, the upper the rail on its pads (the sleeper
-    /// moving against it). Estimates that name the peaks of a receptance; the rail's bending shifts them.
+    /// The resonances of one bay lumped (Hz): the rail's mass over a spacing ρA·a on the pad, on the sleeper on
+    /// the ballast (on the ballast mass on the subgrade) — the lowest the whole track bouncing, the highest the rail
+    /// on its pads (the sleeper moving against it) and, under a ballast body, the sleeper on the ballast (the mode
+    /// the rail moves least in). The eigenvalues of the chain's M⁻¹K. Estimates that name the peaks of a receptance; the rail's bending
+    /// shifts them.
     pub fn bay_resonances(&self, rail_mass_per_length: f64) -> BayResonances {
+        let hz = |omega2: f64| omega2.max(0.0).sqrt() / std::f64::consts::TAU;
         let (m1, m2) = (rail_mass_per_length * self.spacing, self.mass);
         let (k1, k2) = (self.pad.stiffness, self.ballast.stiffness);
-        // m1 m2 ω⁴ − (m1 (k1 + k2) + m2 k1) ω² + k1 k2 = 0.
-        let (a, b, c) = (m1 * m2, m1 * (k1 + k2) + m2 * k1, k1 * k2);
-        let root = (b * b - 4.0 * a * c).max(0.0).sqrt();
-        let hz = |omega2: f64| omega2.sqrt() / std::f64::consts::TAU;
-        BayResonances { track: hz(2.0 * c / (b + root)), rail_on_pads: hz((b + root) / (2.0 * a)) }
+        let Some(body) = self.ballast_body else {
+            // m1 m2 ω⁴ − (m1 (k1 + k2) + m2 k1) ω² + k1 k2 = 0.
+            let (a, b, c) = (m1 * m2, m1 * (k1 + k2) + m2 * k1, k1 * k2);
+            let root = (b * b - 4.0 * a * c).max(0.0).sqrt();
+            return BayResonances {
+                track: hz(2.0 * c / (b + root)),
+                sleeper_on_ballast: None,
+                rail_on_pads: hz((b + root) / (2.0 * a)),
+            };
+        };
+        let (m3, k3) = (body.mass, body.subgrade.stiffness);
+        // M^{-1/2} K M^{-1/2} of the chain rail–pad–sleeper–ballast–ballast mass–subgrade: symmetric, same ω²; in
+        // its eigenvector v the kinetic energy's share of mass i is v_i².
+        let s = [m1.sqrt(), m2.sqrt(), m3.sqrt()];
+        let k = nalgebra::Matrix3::new(k1, -k1, 0.0, -k1, k1 + k2, -k2, 0.0, -k2, k2 + k3);
+        let eigen = nalgebra::Matrix3::from_fn(|i, j| k[(i, j)] / (s[i] * s[j])).symmetric_eigen();
+        let mut modes: Vec<(f64, f64)> =
+            (0..3).map(|i| (eigen.eigenvalues[i], eigen.eigenvectors[(0, i)].powi(2))).collect();
+        modes.sort_by(|a, b| a.0.total_cmp(&b.0));
+        // The lowest is the track bouncing; of the other two, the rail on its pads is the one the rail's mass
+        // carries more of (for typical layers the highest; on a stiff subgrade the ballast mass's own is higher).
+        let (rail, other) = if modes[2].1 >= modes[1].1 { (modes[2], modes[1]) } else { (modes[1], modes[2]) };
+        BayResonances { track: hz(modes[0].0), sleeper_on_ballast: Some(hz(other.0)), rail_on_pads: hz(rail.0) }
     }
 
     /// The mesh node under each sleeper, first to last: every sleeper on the beam must sit on a node (within 1e-9 of
@@ -159,29 +240,44 @@ impl Sleepers {
 
 impl Sleepers {
     /// What the sleepers under `nodes` add to a matrix over the free DOFs of `dofs` (a map with their DOFs,
-    /// [`crate::supports::DofMap::with_sleepers`]), as entries (i, j ≤ i) of its lower triangle: on z the sleeper's `mass` term and both
-    /// layers, on (w, z) the pad as [[1, −1], [−1, 1]] (on z alone where a support holds w). `layers` gives what a
-    /// sleeper's pad and ballast contribute, from its [`SleeperSupport`] — their k for K (the ballast's where bonded),
-    /// c for C, k(1 + iη) + iωc for a dynamic stiffness — and `mass` what m_s does (m_s for M, −ω²m_s for a dynamic
-    /// stiffness, 0 for K and C).
+    /// [`crate::supports::DofMap::with_sleepers`]), as entries (i, j ≤ i) of its lower triangle: each layer a
+    /// spring [[1, −1], [−1, 1]] between the DOFs it joins — the pad between w and z (on z alone where a support
+    /// holds w), the ballast between z and the ground or, under a ballast body, its y, the subgrade between y and
+    /// the ground — and the masses on z and y. `layers` gives what a sleeper's pad, ballast and subgrade contribute,
+    /// from its [`SleeperSupport`] — their k for K (the ballast's where bonded), c for C, k(1 + iη) + iωc for a
+    /// dynamic stiffness — and `mass` what m_s and m_b do (m for M, −ω²m for a dynamic stiffness, 0 for K and C).
     pub fn entries<T>(
         &self,
         dofs: &crate::supports::DofMap,
         nodes: &[usize],
-        layers: impl Fn(&SleeperSupport) -> (T, T),
+        layers: impl Fn(&SleeperSupport) -> [T; 3],
         mass: impl Fn(f64) -> T,
     ) -> Vec<(usize, usize, T)>
     where
-        T: Copy + std::ops::Add<Output = T> + std::ops::Neg<Output = T>,
+        T: Copy + std::ops::Neg<Output = T>,
     {
-        let mut out = Vec::with_capacity(3 * nodes.len());
+        // A layer joining DOFs a and b (None: held, or the ground).
+        fn spring<T: Copy + std::ops::Neg<Output = T>>(
+            out: &mut Vec<(usize, usize, T)>,
+            a: Option<usize>,
+            b: Option<usize>,
+            k: T,
+        ) {
+            out.extend([a, b].into_iter().flatten().map(|d| (d, d, k)));
+            if let (Some(a), Some(b)) = (a, b) {
+                out.push((a.max(b), a.min(b), -k));
+            }
+        }
+        let mut out = Vec::with_capacity(5 * self.dofs_per_sleeper() * nodes.len());
         for (s, &node) in nodes.iter().enumerate() {
-            let (pad, ballast) = layers(&self.support(s));
-            let z = dofs.sleeper(s);
-            out.push((z, z, mass(self.mass) + pad + ballast));
-            if let Some(w) = dofs.free_index(2 * node) {
-                out.push((w, w, pad));
-                out.push((z.max(w), z.min(w), -pad));
+            let [pad, ballast, subgrade] = layers(&self.support(s));
+            let (z, y) = (dofs.sleeper(s), dofs.ballast_body(s));
+            out.push((z, z, mass(self.mass)));
+            spring(&mut out, dofs.free_index(2 * node), Some(z), pad);
+            spring(&mut out, Some(z), y, ballast);
+            if let (Some(y), Some(body)) = (y, self.ballast_body) {
+                out.push((y, y, mass(body.mass)));
+                spring(&mut out, Some(y), None, subgrade);
             }
         }
         out
@@ -196,6 +292,8 @@ pub struct SleeperSupport {
     pub pad: Layer,
     /// The ballast (stiffness scaled).
     pub ballast: Layer,
+    /// The subgrade under a ballast body ([`BallastBody`]), or None.
+    pub subgrade: Option<Layer>,
     /// Bonded or unilateral.
     pub contact: BallastContact,
     /// F (N), 0 for none.
@@ -220,8 +318,13 @@ impl SleeperSupport {
 impl Sleepers {
     /// What holds sleeper `s`: the typical layers, changed by the last exception that names it.
     pub fn support(&self, s: usize) -> SleeperSupport {
-        let typical =
-            SleeperSupport { pad: self.pad, ballast: self.ballast, contact: BallastContact::Bonded, friction: 0.0 };
+        let typical = SleeperSupport {
+            pad: self.pad,
+            ballast: self.ballast,
+            subgrade: self.ballast_body.map(|b| b.subgrade),
+            contact: BallastContact::Bonded,
+            friction: 0.0,
+        };
         match self.exceptions.iter().rev().find(|e| e.covers(s)) {
             None => typical,
             Some(e) => SleeperSupport {
@@ -229,6 +332,7 @@ impl Sleepers {
                 ballast: Layer { stiffness: self.ballast.stiffness * e.ballast_scale, ..self.ballast },
                 contact: e.contact,
                 friction: e.friction,
+                ..typical
             },
         }
     }
@@ -280,5 +384,43 @@ mod tests {
         // 150 kg every 0.6 m moving with (2/3) of the rail's deflection: 250 kg/m × 4/9.
         assert!((smeared.mass_per_length() - beam.mass_per_length() - 250.0 * 4.0 / 9.0).abs() < 1e-9);
         assert!((k - 1e6 - s.equivalent_stiffness()).abs() < 1e-6);
+    }
+
+    #[test]
+    fn a_ballast_body_adds_a_third_resonance_and_its_share_of_the_long_wave() {
+        // Three masses on three springs: Σω² = tr(M⁻¹K) = k1/m1 + (k1 + k2)/m2 + (k2 + k3)/m3 and
+        // Πω² = det K/det M = k1k2k3/(m1m2m3).
+        let body = BallastBody { mass: 500.0, subgrade: BallastBody::TYPICAL_SUBGRADE };
+        let s = Sleepers { ballast: Layer { stiffness: 180e6, ..Sleepers::default().ballast }, ..Sleepers::default() };
+        let s = Sleepers { ballast_body: Some(body), ..s };
+        let r = s.bay_resonances(60.0);
+        let w2 = |f: f64| (f * std::f64::consts::TAU).powi(2);
+        let middle = r.sleeper_on_ballast.unwrap();
+        let (m1, m2, m3, k1, k2, k3) = (36.0, 150.0, 500.0, 200e6, 180e6, 65e6);
+        let sum = w2(r.track) + w2(middle) + w2(r.rail_on_pads);
+        assert!((sum / (k1 / m1 + (k1 + k2) / m2 + (k2 + k3) / m3) - 1.0).abs() < 1e-12);
+        let product = w2(r.track) * w2(middle) * w2(r.rail_on_pads);
+        assert!((product / (k1 * k2 * k3 / (m1 * m2 * m3)) - 1.0).abs() < 1e-10);
+        assert!(r.track < middle && middle < r.rail_on_pads, "{r:?}");
+        // In series: 1/k_eq a = 1/k_p + 1/k_b + 1/k_g; in the long wave z = w(1/k_b + 1/k_g)/Σ, y = w(1/k_g)/Σ.
+        let total = 1.0 / k1 + 1.0 / k2 + 1.0 / k3;
+        assert!((s.equivalent_stiffness() * 0.6 * total - 1.0).abs() < 1e-12);
+        let beam = Beam::default();
+        let (zr, yr) = ((1.0 / k2 + 1.0 / k3) / total, (1.0 / k3) / total);
+        let (smeared, _) = s.equivalent_track(&beam, 0.0);
+        let added = (150.0 * zr * zr + 500.0 * yr * yr) / 0.6;
+        assert!((smeared.mass_per_length() - beam.mass_per_length() - added).abs() < 1e-9);
+        // Every layer with c/k = τ: the series is one layer of the same τ.
+        let tau = 1e-4;
+        let same = |l: Layer| Layer { damping: tau * l.stiffness, ..l };
+        let body_same = BallastBody { subgrade: same(body.subgrade), ..body };
+        let uniform =
+            Sleepers { pad: same(s.pad), ballast: same(s.ballast), ballast_body: Some(body_same), ..s.clone() };
+        assert!((uniform.equivalent_damping() / (tau * uniform.equivalent_stiffness()) - 1.0).abs() < 1e-12);
+        let error = Sleepers { ballast_body: Some(BallastBody { mass: 0.0, ..body }), ..s.clone() }.validate();
+        assert!(error.unwrap_err().to_string().contains("sleepers.ballast.mass = 0"));
+        let soft = BallastBody { subgrade: Layer { stiffness: -1.0, ..body.subgrade }, ..body };
+        let error = Sleepers { ballast_body: Some(soft), ..s }.validate().unwrap_err().to_string();
+        assert!(error.contains("sleepers.subgrade.stiffness = -1"), "{error}");
     }
 }

@@ -65,8 +65,10 @@ impl Supports {
 pub struct DofMap {
     free_of_full: Vec<Option<usize>>,
     full_of_free: Vec<usize>,
-    /// The rail's full DOFs, 2·nodes; sleeper s's is the next `rail + s`.
+    /// The rail's full DOFs, 2·nodes; sleeper s's are the next `per_sleeper`, from `rail + per_sleeper·s`.
     rail: usize,
+    /// DOFs per sleeper: 1 (z) or 2 (z, and y of a ballast body).
+    per_sleeper: usize,
 }
 
 impl DofMap {
@@ -88,15 +90,16 @@ impl DofMap {
                 full_of_free.push(dof);
             }
         }
-        Self { free_of_full, full_of_free, rail: full }
+        Self { free_of_full, full_of_free, rail: full, per_sleeper: 1 }
     }
 
-    /// The map with a sleeper DOF under each of `sleeper_nodes` (increasing): full DOFs 2·nodes + s for sleeper s
-    /// after the rail's, free DOFs numbered node by node — the rail's w, θ, then the sleeper under it — so that a
-    /// sleeper sits in the band beside its rail node (half-bandwidth 4).
-    pub fn with_sleepers(nodes: usize, supports: Supports, sleeper_nodes: &[usize]) -> Self {
+    /// The map with `per_sleeper` DOFs (1: the sleeper's z; 2: z and the ballast body's y under it) under each of
+    /// `sleeper_nodes` (increasing): full DOFs from 2·nodes + per_sleeper·s for sleeper s after the rail's, free
+    /// DOFs numbered node by node — the rail's w, θ, then the sleeper's — so that a sleeper sits in the band beside
+    /// its rail node (half-bandwidth 3 + per_sleeper).
+    pub fn with_sleepers(nodes: usize, supports: Supports, sleeper_nodes: &[usize], per_sleeper: usize) -> Self {
         let rail = Self::new(nodes, supports);
-        let full = 2 * nodes + sleeper_nodes.len();
+        let full = 2 * nodes + per_sleeper * sleeper_nodes.len();
         let mut free_of_full = vec![None; full];
         let mut full_of_free = Vec::with_capacity(full);
         let mut next_sleeper = 0;
@@ -108,21 +111,27 @@ impl DofMap {
                 }
             }
             while next_sleeper < sleeper_nodes.len() && sleeper_nodes[next_sleeper] == node {
-                let dof = rail.rail + next_sleeper;
-                free_of_full[dof] = Some(full_of_free.len());
-                full_of_free.push(dof);
+                for dof in rail.rail + per_sleeper * next_sleeper..rail.rail + per_sleeper * (next_sleeper + 1) {
+                    free_of_full[dof] = Some(full_of_free.len());
+                    full_of_free.push(dof);
+                }
                 next_sleeper += 1;
             }
         }
-        Self { free_of_full, full_of_free, rail: rail.rail }
+        Self { free_of_full, full_of_free, rail: rail.rail, per_sleeper }
     }
 
-    /// The free DOF of sleeper `s` of a map [`DofMap::with_sleepers`] made (a sleeper's DOF is never held).
+    /// The free DOF z of sleeper `s` of a map [`DofMap::with_sleepers`] made (a sleeper's DOF is never held).
     pub fn sleeper(&self, s: usize) -> usize {
-        self.free_of_full[self.rail + s].expect("a sleeper's DOF is free")
+        self.free_of_full[self.rail + self.per_sleeper * s].expect("a sleeper's DOF is free")
     }
 
-    /// Number of full DOFs: 2·(n_e + 1) of the rail, and one per sleeper after them.
+    /// The free DOF y of the ballast body under sleeper `s`, where the map has one.
+    pub fn ballast_body(&self, s: usize) -> Option<usize> {
+        (self.per_sleeper == 2).then(|| self.free_of_full[self.rail + 2 * s + 1].expect("a ballast DOF is free"))
+    }
+
+    /// Number of full DOFs: 2·(n_e + 1) of the rail, and those of the sleepers after them.
     pub fn full_len(&self) -> usize {
         self.free_of_full.len()
     }

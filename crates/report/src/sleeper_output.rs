@@ -16,8 +16,11 @@ pub fn sleepers_in_words(s: &Sleepers, count: usize) -> String {
     let layer = |name: &str, l: &Layer| {
         format!("{name} {} MN/m, {} kN·s/m, η {}", l.stiffness / 1e6, l.damping / 1e3, l.loss_factor)
     };
+    let body = s.ballast_body.map_or(String::new(), |b| {
+        format!("; a ballast body of {} kg on the {}", b.mass, layer("subgrade", &b.subgrade))
+    });
     format!(
-        "{count} sleepers every {} m ({} kg; {}; {})",
+        "{count} sleepers every {} m ({} kg; {}; {}{body})",
         s.spacing,
         s.mass,
         layer("pads", &s.pad),
@@ -71,8 +74,11 @@ pub struct SleepersSummary {
     pub spacing: f64,
     /// v/a (Hz).
     pub passing_frequency: f64,
-    /// The bay lumped: track on ballast, rail on pads (Hz).
+    /// The bay lumped: track on ballast (on the subgrade under ballast bodies), rail on pads (Hz).
     pub track_resonance: f64,
+    /// Under ballast bodies: the sleeper on the ballast (Hz).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub sleeper_on_ballast_resonance: Option<f64>,
     /// See `track_resonance`.
     pub rail_on_pads_resonance: f64,
     /// The pinned–pinned frequency (Hz).
@@ -87,6 +93,9 @@ pub struct SleepersSummary {
     pub max_pad_force: Extreme,
     /// See `max_pad_force`.
     pub max_ballast_force: Extreme,
+    /// Under ballast bodies: the largest subgrade force (N), where and when.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub max_subgrade_force: Option<Extreme>,
     /// The sleepers of `[[sleepers.exceptions]]`.
     pub exceptions: Vec<ExceptionalSleeper>,
     /// The deflection under the load over a bay.
@@ -110,10 +119,11 @@ impl SleepersSummary {
     ) -> Option<Self> {
         let ((s, nodes), results) = (model.sleepers()?, results?);
         let inside = |p: &&SleeperPeaks| (read[0]..=read[1]).contains(&p.x);
-        let largest = |value: fn(&SleeperPeaks) -> (f64, f64)| {
+        let largest = |value: fn(&SleeperPeaks) -> Option<(f64, f64)>| {
             results.sleepers.iter().filter(inside).fold(Extreme::default(), |mut e, p| {
-                let (v, t) = value(p);
-                e.raise(v, p.x, t);
+                if let Some((v, t)) = value(p) {
+                    e.raise(v, p.x, t);
+                }
                 e
             })
         };
@@ -124,13 +134,15 @@ impl SleepersSummary {
             spacing: s.spacing,
             passing_frequency: speed / s.spacing,
             track_resonance: lumped.track,
+            sleeper_on_ballast_resonance: lumped.sleeper_on_ballast,
             rail_on_pads_resonance: lumped.rail_on_pads,
             pinned_pinned: fem_beam::dispersion::pinned_pinned(model.beam(), s.spacing),
             unilateral: placed.count(SectionKind::SleeperBallast),
             sliders: placed.count(SectionKind::SleeperFriction),
             slider_force: (0..nodes.len()).map(|i| s.support(i).friction).sum(),
-            max_pad_force: largest(|p| p.pad_force),
-            max_ballast_force: largest(|p| p.ballast_force),
+            max_pad_force: largest(|p| Some(p.pad_force)),
+            max_ballast_force: largest(|p| Some(p.ballast_force)),
+            max_subgrade_force: s.ballast_body.map(|_| largest(|p| p.subgrade_force)),
             exceptions: exceptional(s, results),
             bay: BayProfile::of(results, read),
             element_length: model.mesh().element_length(),
@@ -198,19 +210,24 @@ impl BayProfile {
 pub(crate) fn write_sleepers(f: &mut std::fmt::Formatter<'_>, s: &SleepersSummary) -> std::fmt::Result {
     let [a, b] = s.read_region;
     writeln!(f, "  track: {}", s.track)?;
+    let lumped = match s.sleeper_on_ballast_resonance {
+        None => format!("{:.0} Hz (track on ballast)", s.track_resonance),
+        Some(middle) => format!("{:.0} Hz (track on subgrade), {middle:.0} Hz (sleeper on ballast)", s.track_resonance),
+    };
     writeln!(
         f,
-        "    sleeper passing v/a = {:.1} Hz; a bay lumped resonates at {:.0} Hz (track on ballast) and {:.0} Hz (rail on \
-         pads); pinned–pinned {:.0} Hz",
-        s.passing_frequency, s.track_resonance, s.rail_on_pads_resonance, s.pinned_pinned
+        "    sleeper passing v/a = {:.1} Hz; a bay lumped resonates at {lumped} and {:.0} Hz (rail on pads); \
+         pinned–pinned {:.0} Hz",
+        s.passing_frequency, s.rail_on_pads_resonance, s.pinned_pinned
     )?;
     let force = |e: &Extreme| match e.place() {
         Some((x, t)) => format!("{:.2} kN at x = {x:.1} m, t = {t:.4} s", e.value / 1e3),
         None => "none".into(),
     };
+    let subgrade = s.max_subgrade_force.map_or(String::new(), |e| format!(", subgrade {}", force(&e)));
     writeln!(
         f,
-        "    largest forces on the sleepers at x = {a:.1}–{b:.1} m: pad {}, ballast {}",
+        "    largest forces on the sleepers at x = {a:.1}–{b:.1} m: pad {}, ballast {}{subgrade}",
         force(&s.max_pad_force),
         force(&s.max_ballast_force)
     )?;

@@ -253,11 +253,15 @@ pub fn sleeper_resolution(case: &Case) -> Vec<Warning> {
     }
     let speed = case.settings.moving.speed;
     let lumped = sleepers.bay_resonances(model.beam().mass_per_length());
-    let frequencies = [
+    let body = lumped.sleeper_on_ballast.map(|f| ("the sleeper on the ballast body (a bay lumped)", f));
+    let frequencies: Vec<(&str, f64)> = [
         ("the sleeper passing frequency v/a", speed / sleepers.spacing),
         ("the rail on its pads (a bay lumped)", lumped.rail_on_pads),
         ("the pinned–pinned resonance", fem_beam::dispersion::pinned_pinned(model.beam(), sleepers.spacing)),
-    ];
+    ]
+    .into_iter()
+    .chain(body)
+    .collect();
     let h = case.settings.time_step();
     let missed: Vec<String> = frequencies
         .iter()

@@ -1,11 +1,13 @@
 //! The `[sleepers]` section (docs/theory.md §18): discrete supports under the rail — `spacing`, `first`, `mass` per
 //! rail seat, `[sleepers.pad]` and `[sleepers.ballast]` each with `stiffness` (N/m), `damping` (N·s/m) and
 //! `loss_factor`. What is left out takes a typical ballasted track's value (`fem_beam::Sleepers::default`).
+//! `[sleepers.ballast] mass` (kg per rail seat) makes the ballast a body of its own on a subgrade (Zhai's two
+//! layers), `[sleepers.subgrade]` its `stiffness`, `damping`, `loss_factor` (default k_g = 65 MN/m, c_g = 31.15 kN·s/m).
 //! `[[sleepers.exceptions]]` change some sleepers: `index` (one sleeper, 0-based, or `[first, last]`), `gap` (m, a
 //! voided sleeper), `law = "tensionless"`, `friction` (N), `pad_scale`, `ballast_scale`.
 
 use crate::error::{Result, invalid};
-use fem_beam::{BallastContact, Layer, SleeperException, Sleepers};
+use fem_beam::{BallastBody, BallastContact, Layer, SleeperException, Sleepers};
 use serde::{Deserialize, Serialize};
 
 /// `[sleepers]`.
@@ -20,8 +22,11 @@ pub struct SleepersSection {
     pub mass: f64,
     /// The rail pad: what is left out takes the typical pad's value.
     pub pad: LayerSection,
-    /// The ballast: what is left out takes the typical ballast's value.
-    pub ballast: LayerSection,
+    /// The ballast: what is left out takes the typical ballast's value; a `mass` makes it a body on the subgrade.
+    pub ballast: BallastSection,
+    /// The subgrade under a ballast body: what is left out takes [`BallastBody::TYPICAL_SUBGRADE`]'s value.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub subgrade: Option<LayerSection>,
     /// Sleepers that differ from the rest (later entries over earlier ones).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub exceptions: Vec<ExceptionSection>,
@@ -126,6 +131,31 @@ impl LayerSection {
     }
 }
 
+/// `[sleepers.ballast]`: a layer, and the mass of the ballast body under a rail seat (two layers) if given.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct BallastSection {
+    /// k (N/m).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub stiffness: Option<f64>,
+    /// c (N·s/m).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub damping: Option<f64>,
+    /// η (frequency domain only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub loss_factor: Option<f64>,
+    /// m_b (kg per rail seat): the ballast as a body on the subgrade.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub mass: Option<f64>,
+}
+
+impl BallastSection {
+    /// The ballast layer, what is left out taken from `typical`.
+    fn layer(&self, typical: Layer) -> Layer {
+        LayerSection { stiffness: self.stiffness, damping: self.damping, loss_factor: self.loss_factor }.layer(typical)
+    }
+}
+
 impl Default for SleepersSection {
     fn default() -> Self {
         let s = Sleepers::default();
@@ -134,7 +164,8 @@ impl Default for SleepersSection {
             first: None,
             mass: s.mass,
             pad: LayerSection::default(),
-            ballast: LayerSection::default(),
+            ballast: BallastSection::default(),
+            subgrade: None,
             exceptions: Vec::new(),
         }
     }
@@ -144,12 +175,27 @@ impl SleepersSection {
     /// The sleepers, their values checked (the exceptions' indices are, once the model places them on its mesh).
     pub fn sleepers(&self) -> Result<Sleepers> {
         let typical = Sleepers::default();
+        let ballast_body = match (self.ballast.mass, &self.subgrade) {
+            (Some(mass), subgrade) => {
+                Some(BallastBody { mass, subgrade: subgrade.unwrap_or_default().layer(BallastBody::TYPICAL_SUBGRADE) })
+            }
+            (None, Some(subgrade)) => {
+                return Err(invalid(
+                    "sleepers.subgrade.stiffness",
+                    subgrade.stiffness.unwrap_or(BallastBody::TYPICAL_SUBGRADE.stiffness),
+                    "a subgrade carries a ballast body: give its mass as sleepers.ballast.mass (kg per rail seat), \
+                     or leave [sleepers.subgrade] out for ballast on rigid ground",
+                ));
+            }
+            (None, None) => None,
+        };
         let sleepers = Sleepers {
             spacing: self.spacing,
             first: self.first.unwrap_or(0.5 * self.spacing),
             mass: self.mass,
             pad: self.pad.layer(typical.pad),
             ballast: self.ballast.layer(typical.ballast),
+            ballast_body,
             exceptions: self.exceptions.iter().enumerate().map(|(i, e)| e.exception(i)).collect::<Result<_>>()?,
         };
         sleepers.validate()?;
@@ -170,6 +216,22 @@ mod tests {
         assert_eq!(s.ballast, Layer { loss_factor: 1.0, ..typical.ballast });
         assert_eq!(s.pad, Layer { stiffness: 5e8, ..typical.pad });
         assert_eq!(s.first, 0.3);
+    }
+
+    #[test]
+    fn a_ballast_mass_puts_the_ballast_on_the_subgrade() {
+        let section: SleepersSection = toml::from_str("[ballast]\nmass = 500.0\n[subgrade]\ndamping = 1e4\n").unwrap();
+        let body = section.sleepers().unwrap().ballast_body.unwrap();
+        assert_eq!(body.mass, 500.0);
+        assert_eq!(body.subgrade, Layer { damping: 1e4, ..BallastBody::TYPICAL_SUBGRADE });
+        let back: SleepersSection = toml::from_str(&toml::to_string(&section).unwrap()).unwrap();
+        assert_eq!(back, section);
+        let lonely: SleepersSection = toml::from_str("[subgrade]\nstiffness = 5e7\n").unwrap();
+        let error = lonely.sleepers().unwrap_err().to_string();
+        assert!(error.contains("sleepers.subgrade.stiffness = 50000000") && error.contains("sleepers.ballast.mass"));
+        let light: SleepersSection = toml::from_str("[ballast]\nmass = -5.0\n").unwrap();
+        assert!(light.sleepers().unwrap_err().to_string().contains("sleepers.ballast.mass = -5"));
+        assert!(toml::from_str::<SleepersSection>("[pad]\nmass = 5.0\n").is_err(), "a pad has no mass");
     }
 
     #[test]

@@ -60,8 +60,8 @@ pub fn resonances(points: &[(f64, f64)], magnitude: impl Fn(f64) -> Result<f64>)
 
 /// The resonances a track is known for, by name, with their estimates (Hz) and how far (as a ratio) a peak may lie
 /// from the estimate to take its name: the rail bouncing on a continuous foundation, √(k_f/ρA)/2π; on sleepers the
-/// bay's two lumped resonances ([`fem_beam::Sleepers::bay_resonances`]: the track on the ballast, the rail on its
-/// pads — lumped, they miss the rail's bending by up to ~20 %: a factor 1.5) and the pinned–pinned one
+/// bay's lumped resonances ([`fem_beam::Sleepers::bay_resonances`]: the track on the ballast (on the subgrade, with
+/// the sleeper on the ballast above it, where the ballast is a body), the rail on its pads — lumped, they miss the rail's bending by up to ~20 %: a factor 1.5) and the pinned–pinned one
 /// ([`fem_beam::dispersion::pinned_pinned`], within 1 % at mid-span: 10 %, so that the peak beside the dip above a
 /// sleeper, ~20 % higher, is not taken for it).
 pub fn known_resonances(model: &BeamModel) -> Vec<(&'static str, f64, f64)> {
@@ -73,7 +73,13 @@ pub fn known_resonances(model: &BeamModel) -> Vec<(&'static str, f64, f64)> {
     }
     if let Some((s, _)) = model.sleepers() {
         let bay = s.bay_resonances(rho_a);
-        out.push(("track on the ballast", bay.track, 1.5));
+        match bay.sleeper_on_ballast {
+            None => out.push(("track on the ballast", bay.track, 1.5)),
+            Some(middle) => {
+                out.push(("track on the subgrade", bay.track, 1.5));
+                out.push(("sleeper on the ballast", middle, 1.5));
+            }
+        }
         out.push(("rail on its pads", bay.rail_on_pads, 1.5));
         out.push(("pinned–pinned", fem_beam::dispersion::pinned_pinned(model.beam(), s.spacing), 1.1));
     }

@@ -1,8 +1,9 @@
 //! The nonlinear part of the sleepers placed on the track as the engine's interactions (docs/theory.md §18): under
-//! a sleeper whose ballast cannot pull (tensionless, or voided by a gap g) a unilateral spring on its DOF z, force
-//! k_b⟨−(z + g)⟩₊ ([`Law::Soil`]: the linear spring step for step while it presses); where the sleeper rubs on the
-//! ballast a Coulomb slider on ż with maximal force F, in parallel with the ballast's spring. The linear rest — pads,
-//! bonded ballast, every dashpot, the sleepers' masses — is in the model's M, C, K.
+//! a sleeper whose ballast cannot pull (tensionless, or voided by a gap g) a unilateral spring on the sleeper's
+//! place relative to the ballast, u = z (z − y on a ballast body y), force k_b⟨−(u + g)⟩₊ ([`Law::Soil`]: the
+//! linear spring step for step while it presses); where the sleeper rubs on the ballast a Coulomb slider on u̇ with
+//! maximal force F, in parallel with the ballast's spring. The linear rest — pads, bonded ballast, subgrade, every
+//! dashpot, the masses — is in the model's M, C, K.
 
 use crate::placed::{PlacedInteractions, SectionKind};
 use fem_beam::{BallastContact, BeamModel};
@@ -16,8 +17,8 @@ pub fn sleeper_interactions(model: &BeamModel) -> PlacedInteractions {
     let mesh = model.mesh();
     for (s, &node) in nodes.iter().enumerate() {
         let support = sleepers.support(s);
-        let z = model.dofs().sleeper(s);
-        let row = || InteractionRow::from_entries([(z, 1.0)]);
+        let (z, y) = (model.dofs().sleeper(s), model.dofs().ballast_body(s));
+        let row = || InteractionRow::from_entries(std::iter::once((z, 1.0)).chain(y.map(|y| (y, -1.0))));
         let x = mesh.node_x(node);
         if let BallastContact::Unilateral { gap } = support.contact
             && support.ballast.stiffness > 0.0

@@ -157,3 +157,22 @@ fn the_discrete_track_examples_run_as_their_headers_say() {
     }
     assert_eq!(voided["vehicles"]["wheels"][0]["losses_of_contact"], 0);
 }
+
+/// The ballast-body example, as its header says: the subgrade's largest force reported (near the wheel's 83.4 kN
+/// shared by the sleepers under it: between a quarter and all of it), the bay's three lumped resonances in order,
+/// the voided sleeper's 1 mm void closed between sleeper and ballast mass.
+#[test]
+fn the_ballast_body_example_reports_the_subgrade() {
+    let run = run_elsewhere("ballast-body.toml", &[]);
+    let s = &run["sleepers"];
+    let subgrade = s["max_subgrade_force"]["value"].as_f64().unwrap();
+    assert!(subgrade > 0.25 * 83.4e3 && subgrade < 83.4e3, "{subgrade}");
+    let (track, middle, pads) = (
+        s["track_resonance"].as_f64().unwrap(),
+        s["sleeper_on_ballast_resonance"].as_f64().unwrap(),
+        s["rail_on_pads_resonance"].as_f64().unwrap(),
+    );
+    assert!(track < middle && middle < pads, "{track} {middle} {pads}");
+    let voided = &s["exceptions"][0];
+    assert!(voided["first_contact"].as_f64().is_some() && voided["lowest"].as_f64().unwrap() > 1e-3, "{voided}");
+}

@@ -52,17 +52,15 @@ pub(super) fn fit_mesh(s: &mut Scenario, per_bay: usize, notes: &mut Vec<String>
 }
 
 /// The continuous track that `s` on sleepers stands for in the long wave (`fem_beam::Sleepers::equivalent_track`):
-/// its soil plus the pads and ballast in series spread over a spacing, k_eq = (k_p k_b/(k_p + k_b))/a, their dashpots
-/// in series to first order in frequency, c_eq = (c_p k_b² + c_b k_p²)/((k_p + k_b)² a) (exact when c/k is the
-/// same in both), and the sleepers' mass spread on the rail as the long wave moves it.
+/// its soil plus the pads and ballast (and subgrade) in series spread over a spacing, k_eq, their dashpots in series
+/// to first order in frequency, c_eq (`fem_beam::Sleepers::equivalent_damping`), and the sleepers' (and ballast
+/// bodies') mass spread on the rail as the long wave moves it.
 pub(super) fn continuous_twin(s: &Scenario) -> scenario::error::Result<Scenario> {
     let mut twin = s.clone();
     let Some(section) = twin.sleepers.take() else { return Ok(twin) };
     let sleepers = section.sleepers()?;
     let (beam, stiffness) = sleepers.equivalent_track(&s.beam, s.foundation.stiffness);
-    let (p, b) = (sleepers.pad, sleepers.ballast);
-    let damping = (p.damping * b.stiffness.powi(2) + b.damping * p.stiffness.powi(2))
-        / ((p.stiffness + b.stiffness).powi(2) * sleepers.spacing);
+    let damping = sleepers.equivalent_damping();
     let soil = s.model()?.foundation().damping;
     twin.beam = beam;
     twin.foundation.stiffness = stiffness;
@@ -86,7 +84,13 @@ pub(super) fn sleepers_for_soil(s: &Scenario) -> scenario::error::Result<Sleeper
         first: None,
         mass: 0.1 * s.beam.mass_per_length() * a,
         pad: layer,
-        ballast: layer,
+        ballast: scenario::sleepers::BallastSection {
+            stiffness: layer.stiffness,
+            damping: layer.damping,
+            loss_factor: None,
+            mass: None,
+        },
+        subgrade: None,
         exceptions: Vec::new(),
     })
 }

@@ -213,13 +213,15 @@ fn convected_velocity(model: &BeamModel, q: &[f64], speed: f64) -> Vec<f64> {
             v[k] = -speed * curvature;
         }
     }
-    // A sleeper follows its rail node in the same ratio as in the static state, z/w (k_p/(k_p + k_b) on bonded
-    // ballast, 1 hanging): ż = (z/w) ẇ, exact for the bowl carried along quasi-statically.
+    // A sleeper (and the ballast body under it) follows its rail node in the same ratio as in the static state, z/w
+    // (k_p/(k_p + k_b) on bonded, rigidly founded ballast, 1 hanging): ż = (z/w) ẇ, exact for the bowl carried along
+    // quasi-statically.
     if let Some((_, sleeper_nodes)) = model.sleepers() {
         for (s, &node) in sleeper_nodes.iter().enumerate() {
-            let z = dofs.sleeper(s);
             if let Some(w) = dofs.free_index(2 * node).filter(|&w| q[w] != 0.0) {
-                v[z] = v[w] * q[z] / q[w];
+                for d in std::iter::once(dofs.sleeper(s)).chain(dofs.ballast_body(s)) {
+                    v[d] = v[w] * q[d] / q[w];
+                }
             }
         }
     }

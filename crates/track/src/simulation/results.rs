@@ -311,6 +311,9 @@ pub struct SleeperPeaks {
     pub pad_force: (f64, f64),
     /// Largest ballast force (N, compression) and when (s).
     pub ballast_force: (f64, f64),
+    /// Under a ballast body: the largest subgrade force (N, compression) and when (s); None on rigidly founded
+    /// ballast.
+    pub subgrade_force: Option<(f64, f64)>,
     /// The sleeper's lowest position (m, downward positive).
     pub lowest: f64,
     /// Where the ballast cannot pull: the largest gap under the sleeper (m; a voided sleeper's starts at its void, a

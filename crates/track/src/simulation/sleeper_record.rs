@@ -3,8 +3,10 @@
 //! largest gap that opened under it; and the rail's deflection under the first load at every step, from which the
 //! report reads its variation over a bay (above a sleeper against mid-span).
 //!
-//! Pad P = k_p(z − w) + c_p(ż − ẇ), ballast B = k_b·(−z) − c_b ż where bonded, k_b⟨−(z + g)⟩₊ − c_b ż where
-//! unilateral with void g; w the rail's deflection over the sleeper, z the sleeper's (m, upward).
+//! Pad P = k_p(z − w) + c_p(ż − ẇ), ballast B = k_b·(−u) − c_b u̇ where bonded, k_b⟨−(u + g)⟩₊ − c_b u̇ where
+//! unilateral with void g, u = z − y the sleeper's place over the ballast (y = 0 on rigidly founded ballast, the
+//! ballast body's DOF in Zhai's two layers), subgrade G = −k_g y − c_g ẏ; w the rail's deflection over the sleeper,
+//! z the sleeper's (m, upward).
 
 use super::records::{Record, StepState};
 use super::results::{SleeperPeaks, SleeperResults};
@@ -15,6 +17,8 @@ use fem_beam::{BallastContact, BeamModel, Discretisation, SleeperSupport};
 struct Followed {
     w: Option<usize>,
     z: usize,
+    /// The ballast body's DOF, if any.
+    y: Option<usize>,
     support: SleeperSupport,
     peaks: SleeperPeaks,
 }
@@ -40,11 +44,13 @@ impl<'m> SleeperRecord<'m> {
                 sleepers.push(Followed {
                     w: dofs.free_index(2 * node),
                     z: dofs.sleeper(i),
+                    y: dofs.ballast_body(i),
                     support,
                     peaks: SleeperPeaks {
                         x: mesh.node_x(node),
                         pad_force: (0.0, f64::NAN),
                         ballast_force: (0.0, f64::NAN),
+                        subgrade_force: support.subgrade.map(|_| (0.0, f64::NAN)),
                         lowest: 0.0,
                         largest_gap: unilateral.then_some(0.0),
                         first_contact: None,
@@ -82,12 +88,14 @@ impl Record for SleeperRecord<'_> {
         for f in &mut self.sleepers {
             let (w, dw) = f.w.map_or((0.0, 0.0), |d| (s.q[d], s.v[d]));
             let (z, dz) = (s.q[f.z], s.v[f.z]);
+            let (y, dy) = f.y.map_or((0.0, 0.0), |d| (s.q[d], s.v[d]));
+            let (u, du) = (z - y, dz - dy);
             let pad = f.support.pad.stiffness * (z - w) + f.support.pad.damping * (dz - dw);
             let (k, c) = (f.support.ballast.stiffness, f.support.ballast.damping);
             let spring = match f.support.contact {
-                BallastContact::Bonded => -k * z,
+                BallastContact::Bonded => -k * u,
                 BallastContact::Unilateral { gap } => {
-                    let opening = z + gap;
+                    let opening = u + gap;
                     if opening <= 0.0 && f.peaks.first_contact.is_none() {
                         f.peaks.first_contact = Some(s.time);
                     }
@@ -97,8 +105,14 @@ impl Record for SleeperRecord<'_> {
                     k * (-opening).max(0.0)
                 }
             };
-            let ballast = spring - c * dz;
+            let ballast = spring - c * du;
             let p = &mut f.peaks;
+            if let (Some(subgrade), Some(peak)) = (f.support.subgrade, p.subgrade_force.as_mut()) {
+                let force = -subgrade.stiffness * y - subgrade.damping * dy;
+                if force > peak.0 {
+                    *peak = (force, s.time);
+                }
+            }
             if pad > p.pad_force.0 {
                 p.pad_force = (pad, s.time);
             }

@@ -11,7 +11,7 @@ use track::vehicle::consist::VehicleSettings;
 use track::{InitialState, Load, RunResult, RunSettings, Simulation};
 
 /// The UIC60 rail on `sleepers` (no soil), `elements` over `length` m, pinned ends.
-fn on_sleepers(length: f64, elements: usize, sleepers: Sleepers) -> BeamModel {
+pub(super) fn on_sleepers(length: f64, elements: usize, sleepers: Sleepers) -> BeamModel {
     let case = uic60_on_soft_soil();
     let mesh = Mesh::new(length, elements).unwrap();
     BeamModel::new(case.beam, Foundation::linear(0.0, 0.0), mesh, case.supports)
@@ -20,7 +20,7 @@ fn on_sleepers(length: f64, elements: usize, sleepers: Sleepers) -> BeamModel {
         .unwrap()
 }
 
-fn settings(speed: f64, theta: f64, advance: f64) -> RunSettings {
+pub(super) fn settings(speed: f64, theta: f64, advance: f64) -> RunSettings {
     let mut s = RunSettings::default();
     s.integration.theta = theta;
     s.moving.speed = speed;
@@ -28,15 +28,15 @@ fn settings(speed: f64, theta: f64, advance: f64) -> RunSettings {
     s
 }
 
-fn run(model: &BeamModel, s: &RunSettings) -> RunResult {
+pub(super) fn run(model: &BeamModel, s: &RunSettings) -> RunResult {
     Simulation::new(model, &sleeper_interactions(model), s).unwrap().run().unwrap()
 }
 
-fn exception(first: usize, last: usize) -> SleeperException {
+pub(super) fn exception(first: usize, last: usize) -> SleeperException {
     SleeperException { first, last, ..SleeperException::default() }
 }
 
-fn voided(first: usize, last: usize, gap: f64) -> SleeperException {
+pub(super) fn voided(first: usize, last: usize, gap: f64) -> SleeperException {
     SleeperException { contact: BallastContact::Unilateral { gap }, ..exception(first, last) }
 }
 
@@ -95,13 +95,10 @@ fn energy_closes_with_a_vehicle_over_voided_sleepers() {
     }
 }
 
-/// The interior point (default) and Clarabel on voided and frictional sleepers, both asked for law residuals of
-/// 1e-10 m/s (they reach 2e-10 and 1e-9): the same peak, final state and friction work to 1e-8.
-#[test]
-fn clarabel_agrees_on_voided_and_frictional_sleepers() {
-    // The later exception decides: the voided sleepers have no friction.
-    let exceptions = vec![SleeperException { friction: 3e3, ..exception(30, 70) }, voided(49, 51, 0.1e-3)];
-    let model = on_sleepers(60.0, 400, Sleepers { exceptions, ..Sleepers::default() });
+/// The interior point (default) and Clarabel on `sleepers`, both asked for law residuals of 1e-10 m/s (they reach
+/// 2e-10 and 1e-9): the same peak, final state and friction work to 1e-8 — a hundred times what is measured.
+pub(super) fn clarabel_agrees_on(sleepers: Sleepers) {
+    let model = on_sleepers(60.0, 400, sleepers);
     let mut s = settings(50.0, 0.5, 0.0375);
     s.integration.solver.tolerance = 1e-10;
     let ip = run(&model, &s);
@@ -114,10 +111,20 @@ fn clarabel_agrees_on_voided_and_frictional_sleepers() {
             / peak;
     let (f_ip, f_c) = (ip.energy.friction_work, clarabel.energy.friction_work);
     assert!(ip.energy.support_work != 0.0, "the voids must close: {:?}", ip.energy);
-    // Measured 4e-11, 5e-10, 2e-10: a hundred times that.
     assert!((clarabel.max_downward.value - peak).abs() <= 1e-8 * peak, "{} vs {peak}", clarabel.max_downward.value);
     assert!(difference <= 1e-8, "{difference:e}");
     assert!((f_c / f_ip - 1.0).abs() <= 1e-8, "friction work {f_ip} vs {f_c} J");
+}
+
+/// Voided and frictional sleepers, the later exception deciding (the voided sleepers have no friction): measured
+/// 4e-11 on the peak, 5e-10 on the final state, 2e-10 on the friction work.
+pub(super) fn voided_and_frictional() -> Vec<SleeperException> {
+    vec![SleeperException { friction: 3e3, ..exception(30, 70) }, voided(49, 51, 0.1e-3)]
+}
+
+#[test]
+fn clarabel_agrees_on_voided_and_frictional_sleepers() {
+    clarabel_agrees_on(Sleepers { exceptions: voided_and_frictional(), ..Sleepers::default() });
 }
 
 /// A tensionless sleeper (gap 0) that keeps pressing on the ballast is the bonded sleeper step for step (the soil
@@ -170,7 +177,15 @@ fn sleepers_ever_closer_are_the_winkler_track() {
         let a = 60.0 / elements as f64;
         let layer = Layer { stiffness: 2.0 * k_f * a, damping: 2.0 * c_f * a, loss_factor: 0.0 };
         let mass = 1e-9 * case.beam.mass_per_length() * a;
-        let sleepers = Sleepers { spacing: a, first: 0.0, mass, pad: layer, ballast: layer, exceptions: vec![] };
+        let sleepers = Sleepers {
+            spacing: a,
+            first: 0.0,
+            mass,
+            pad: layer,
+            ballast: layer,
+            ballast_body: None,
+            exceptions: vec![],
+        };
         let (beam, soil) = sleepers.equivalent_track(&case.beam, 0.0);
         assert!((soil / k_f - 1.0).abs() < 1e-12);
         let discrete = on_sleepers(60.0, elements, sleepers);
