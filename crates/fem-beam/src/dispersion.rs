@@ -34,6 +34,13 @@ pub fn bending_frequency(beam: &Beam, k_f: f64, k: f64) -> f64 {
     (2.0 * c / (big_b + discriminant.sqrt())).sqrt()
 }
 
+/// ω_n (rad/s) of `beam` pinned at both ends of a span `length` m long on a foundation of stiffness `k_f` (N/m²),
+/// whose modes are sin(nπx/L): the bending branch at k = nπ/L — ω_n² = (EI k⁴ + k_f)/(ρA) for Euler–Bernoulli, the
+/// lower root of Timoshenko's frequency equation for a Timoshenko beam.
+pub fn pinned_natural_frequency(beam: &Beam, k_f: f64, length: f64, n: usize) -> f64 {
+    bending_frequency(beam, k_f, n as f64 * std::f64::consts::PI / length)
+}
+
 /// The pinned–pinned frequency (Hz) of a rail on supports `spacing` m apart: the free rail's bending wave of half a
 /// wavelength per spacing, k = π/a, its nodes over the supports (π/(2a²)·√(EI/ρA) for Euler–Bernoulli).
 pub fn pinned_pinned(beam: &Beam, spacing: f64) -> f64 {

@@ -55,6 +55,11 @@ impl BeamTheory {
             }
         }
     }
+
+    /// The theory in words where a report must name it: None for Euler–Bernoulli, the default.
+    pub fn unless_default(&self) -> Option<String> {
+        (*self != BeamTheory::EulerBernoulli).then(|| self.describe())
+    }
 }
 
 impl Default for Beam {

@@ -62,12 +62,6 @@ impl ReferenceCase {
     pub fn infinite_beam(&self) -> Result<InfiniteBeam> {
         InfiniteBeam::new(&self.beam, &self.foundation)
     }
-
-    /// ω_n (rad/s) of the pinned–pinned beam: ω_n² = (EI(nπ/L)⁴ + k_f)/(ρA).
-    pub fn pinned_natural_frequency(&self, n: usize) -> f64 {
-        let k = n as f64 * PI / self.mesh.length;
-        ((self.beam.bending_stiffness() * k.powi(4) + self.foundation.stiffness) / self.beam.mass_per_length()).sqrt()
-    }
 }
 
 /// An infinite Euler–Bernoulli beam on a viscoelastic Winkler foundation.
@@ -181,11 +175,18 @@ impl InfiniteBeam {
 
 /// Roots of the monic quartic r⁴ + c₂r² + c₁r + c₀ (Durand–Kerner iteration, then Newton polishing).
 fn quartic_roots(c2: f64, c1: f64, c0: f64) -> [Complex64; 4] {
-    let p = |z: Complex64| ((z * z + c2) * z + c1) * z + c0;
-    let dp = |z: Complex64| (z * z * 4.0 + 2.0 * c2) * z + c1;
+    monic_quartic_roots([0.0, c2, c1, c0])
+}
+
+/// Roots of the monic quartic r⁴ + c₃r³ + c₂r² + c₁r + c₀, `c` = [c₃, c₂, c₁, c₀] (Durand–Kerner iteration, then
+/// three Newton steps each). With c₃ = 0 every operation is the depressed quartic's, bit for bit.
+pub(crate) fn monic_quartic_roots(c: [f64; 4]) -> [Complex64; 4] {
+    let [c3, c2, c1, c0] = c;
+    let p = |z: Complex64| ((z * z + z * c3 + c2) * z + c1) * z + c0;
+    let dp = |z: Complex64| (z * z * 4.0 + z * (3.0 * c3) + 2.0 * c2) * z + c1;
     let seed = Complex64::new(0.4, 0.9);
     let mut z = [seed, seed * seed, seed.powu(3), seed.powu(4)];
-    let size = 1.0 + c2.abs().max(c1.abs()).max(c0.abs());
+    let size = 1.0 + c3.abs().max(c2.abs()).max(c1.abs()).max(c0.abs());
     for _ in 0..2000 {
         let mut change: f64 = 0.0;
         for i in 0..4 {
@@ -280,16 +281,29 @@ impl SteadyState {
     /// Largest downward and upward deflections and their positions: dense sampling over the region where the
     /// response is above ~e⁻⁴⁰ of its scale, then golden-section refinement to 1e-12 in ξ.
     pub fn extremes(&self) -> SteadyExtremes {
-        let decay = self.roots().iter().map(|r| r.re.abs()).fold(f64::INFINITY, f64::min);
-        let wave = self.roots().iter().map(|r| r.im.abs()).fold(1.0, f64::max);
-        let reach = (40.0 / decay).min(4000.0);
-        let step = (2.0 * PI / wave / 64.0).min(0.05);
+        let (step, reach) = self.sampling_in_xi();
         let count = (reach / step).ceil() as i64;
         let (down, up) = scan_extremes(|xi| self.g(xi, 0), (-count..=count).map(|i| i as f64 * step), step);
         SteadyExtremes {
             max_downward: Extreme::in_frame(self.amplitude * down.1.max(0.0), down.0 / self.beta),
             max_upward: Extreme::in_frame(self.amplitude * up.1.max(0.0), up.0 / self.beta),
         }
+    }
+}
+
+impl SteadyState {
+    /// A step resolving the shortest wave (a 64th of it, at most 0.05) and the reach beyond which the wave is below
+    /// e⁻⁴⁰ of its scale (at most 4000), in ξ = βs.
+    fn sampling_in_xi(&self) -> (f64, f64) {
+        let decay = self.roots().iter().map(|r| r.re.abs()).fold(f64::INFINITY, f64::min);
+        let wave = self.roots().iter().map(|r| r.im.abs()).fold(1.0, f64::max);
+        ((2.0 * PI / wave / 64.0).min(0.05), (40.0 / decay).min(4000.0))
+    }
+
+    /// The same sampling in s (m): (step, reach).
+    pub fn sampling(&self) -> (f64, f64) {
+        let (step, reach) = self.sampling_in_xi();
+        (step / self.beta, reach / self.beta)
     }
 }
 

@@ -5,14 +5,14 @@
 
 use crate::error::{FemError, Result};
 use crate::extreme::Extreme;
-use crate::reference::{InfiniteBeam, SteadyExtremes, SteadyState, scan_extremes};
+use crate::infinite_track::{InfiniteTrack, SteadyWave};
+use crate::reference::{SteadyExtremes, scan_extremes};
 use crate::train::Train;
-use std::f64::consts::PI;
 
 /// A train's steady state: the unit-load state and the axles (offset, force).
 #[derive(Debug, Clone)]
 pub struct TrainSteadyState {
-    unit: SteadyState,
+    unit: SteadyWave,
     axles: Vec<(f64, f64)>,
     length: f64,
     /// Sampling of the unit state: step (m) and reach (m) beyond which it is below e⁻⁴⁰ of its scale.
@@ -20,7 +20,7 @@ pub struct TrainSteadyState {
     reach: f64,
 }
 
-impl InfiniteBeam {
+impl InfiniteTrack {
     /// The steady state of `train` (axles only) at `speed` (m/s).
     pub fn train_steady_state(&self, speed: f64, train: &Train) -> Result<TrainSteadyState> {
         train.validate()?;
@@ -32,16 +32,13 @@ impl InfiniteBeam {
             });
         }
         let unit = self.steady_state(speed, 1.0)?;
-        let roots = unit.roots();
-        let decay = roots.iter().map(|r| r.re.abs()).fold(f64::INFINITY, f64::min);
-        let wave = roots.iter().map(|r| r.im.abs()).fold(1.0, f64::max);
-        let beta = self.beta();
+        let (step, reach) = unit.sampling();
         Ok(TrainSteadyState {
             unit,
             axles: train.axles.iter().map(|a| (a.offset, a.force)).collect(),
             length: train.length(),
-            step: (2.0 * PI / wave / 64.0).min(0.05) / beta,
-            reach: (40.0 / decay).min(4000.0) / beta,
+            step,
+            reach,
         })
     }
 }
@@ -69,40 +66,42 @@ impl TrainSteadyState {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::properties::BeamTheory;
     use crate::reference::uic60_on_soft_soil;
     use crate::train::Axle;
 
     /// One axle is the single-load state; two far-apart axles each give their own peak; axles closer than the
-    /// decay length add up (at rest: the superposed static shapes).
+    /// decay length add up (at rest: the superposed static shapes) — on an Euler–Bernoulli and a Timoshenko rail.
     #[test]
     fn a_train_superposes_its_axles() {
         let case = uic60_on_soft_soil();
-        let foundation = case.foundation.with_damping_ratio(0.05, &case.beam).unwrap();
-        let infinite = InfiniteBeam::new(&case.beam, &foundation).unwrap();
-        let single = infinite.steady_state(150.0, 100e3).unwrap().extremes();
-        let one = infinite.train_steady_state(150.0, &Train::single(100e3)).unwrap().extremes();
-        assert!((one.max_downward.value - single.max_downward.value).abs() <= 1e-12 * single.max_downward.value);
-        assert!((one.max_downward.position.unwrap() - single.max_downward.position.unwrap()).abs() <= 1e-6);
-        let far = Train {
-            name: "far".into(),
-            axles: vec![Axle { offset: 0.0, force: 100e3 }, Axle { offset: 300.0, force: 50e3 }],
-            patches: vec![],
-        };
-        let apart = infinite.train_steady_state(150.0, &far).unwrap();
-        let e = apart.extremes();
-        assert!((e.max_downward.value - single.max_downward.value).abs() <= 1e-9 * single.max_downward.value);
-        assert!(
-            (apart.deflection(-300.0) - 0.5 * infinite.steady_state(150.0, 100e3).unwrap().deflection(0.0)).abs()
-                < 1e-12
-        );
-        let pair = Train {
-            name: "pair".into(),
-            axles: vec![Axle { offset: 0.0, force: 100e3 }, Axle { offset: 0.0, force: 100e3 }],
-            patches: vec![],
-        };
-        let doubled = infinite.train_steady_state(150.0, &pair).unwrap().extremes();
-        assert!(
-            (doubled.max_downward.value - 2.0 * single.max_downward.value).abs() <= 1e-9 * single.max_downward.value
-        );
+        let timoshenko =
+            crate::Beam { theory: BeamTheory::Timoshenko { shear_modulus: 81e9, shear_coefficient: 0.4 }, ..case.beam };
+        for beam in [case.beam, timoshenko] {
+            let foundation = case.foundation.with_damping_ratio(0.05, &beam).unwrap();
+            let infinite = InfiniteTrack::new(&beam, &foundation).unwrap();
+            let single = infinite.steady_state(150.0, 100e3).unwrap().extremes();
+            let one = infinite.train_steady_state(150.0, &Train::single(100e3)).unwrap().extremes();
+            assert!((one.max_downward.value - single.max_downward.value).abs() <= 1e-12 * single.max_downward.value);
+            assert!((one.max_downward.position.unwrap() - single.max_downward.position.unwrap()).abs() <= 1e-6);
+            let far = Train {
+                name: "far".into(),
+                axles: vec![Axle { offset: 0.0, force: 100e3 }, Axle { offset: 300.0, force: 50e3 }],
+                patches: vec![],
+            };
+            let apart = infinite.train_steady_state(150.0, &far).unwrap();
+            let e = apart.extremes();
+            assert!((e.max_downward.value - single.max_downward.value).abs() <= 1e-9 * single.max_downward.value);
+            let under = infinite.steady_state(150.0, 100e3).unwrap().deflection(0.0);
+            assert!((apart.deflection(-300.0) - 0.5 * under).abs() < 1e-12);
+            let pair = Train {
+                name: "pair".into(),
+                axles: vec![Axle { offset: 0.0, force: 100e3 }, Axle { offset: 0.0, force: 100e3 }],
+                patches: vec![],
+            };
+            let doubled = infinite.train_steady_state(150.0, &pair).unwrap().extremes();
+            let twice = 2.0 * single.max_downward.value;
+            assert!((doubled.max_downward.value - twice).abs() <= 1e-9 * single.max_downward.value);
+        }
     }
 }

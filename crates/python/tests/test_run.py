@@ -132,8 +132,6 @@ def test_bad_input_raises_input_error_naming_it():
         frictrack.run({"mesh": {"lenght": 100.0}})
     with pytest.raises(frictrack.InputError, match="needs shear_coefficient"):
         frictrack.run({"beam": {"theory": "timoshenko", "shear_modulus": 81e9}})
-    with pytest.raises(frictrack.InputError, match="beam.theory = timoshenko"):
-        frictrack.stationary({"beam": {"theory": "timoshenko", "shear_modulus": 81e9, "shear_coefficient": 0.4}}, [100.0])
     with pytest.raises(frictrack.InputError, match="speed"):
         frictrack.run(speed=-5.0)
     with pytest.raises(frictrack.InputError, match='invalid speed = "fast": must be a speed: m/s .* or km/h'):

@@ -246,10 +246,7 @@ impl RunSummary {
                 .filter(|t| t.name != "single")
                 .map(|_| AxleShareSummary::of(scenario.axle_share())),
             critical_speed: scenario::speeds::SpeedScale::of(scenario)?.critical_speed,
-            rail_theory: match scenario.beam.theory {
-                fem_beam::BeamTheory::EulerBernoulli => None,
-                theory => Some(theory.describe()),
-            },
+            rail_theory: scenario.beam.theory.unless_default(),
             damping_ratio: case.model.foundation().damping_ratio(case.model.beam()),
             devices: device_positions.len(),
             device_force: scenario.friction.devices.as_ref().and_then(|d| d.force).unwrap_or(0.0),

@@ -202,9 +202,6 @@ impl Scenario {
     /// The scenario's beam, foundation (with its damping), mesh, supports and load force as the closed-form
     /// reference case (`frictrack reference` and `analytic` on a scenario).
     pub fn reference_case(&self) -> Result<fem_beam::reference::ReferenceCase> {
-        self.euler_bernoulli_only(
-            "the closed forms (the infinite beam's steady state, the static line, the pinned beam's frequencies)",
-        )?;
         finite_non_negative("load.force", self.load.force, "N")?;
         let model = self.model()?;
         Ok(fem_beam::reference::ReferenceCase {
@@ -214,21 +211,6 @@ impl Scenario {
             supports: model.supports(),
             load: self.load.force,
         })
-    }
-
-    /// Refuse a Timoshenko rail for `what`, which is written for an Euler–Bernoulli one.
-    pub fn euler_bernoulli_only(&self, what: &str) -> Result<()> {
-        match self.beam.theory {
-            fem_beam::BeamTheory::EulerBernoulli => Ok(()),
-            fem_beam::BeamTheory::Timoshenko { .. } => Err(invalid(
-                "beam.theory",
-                "timoshenko",
-                format!(
-                    "{what} are Euler–Bernoulli's: remove beam.theory and its shear keys to use them, or run the Timoshenko rail in time \
-                     (a run across the track, or a co-moving window)"
-                ),
-            )),
-        }
     }
 
     /// The speeds of a sweep: `[sweep]` if given, else the default range around the critical speed.

@@ -11,7 +11,6 @@ impl Scenario {
     /// key, for what the infinite track cannot take: devices, Simpson sections, trains, vehicles.
     pub fn stationary_problem(&self, speed: f64, domain: Domain) -> Result<StationaryProblem> {
         let scenario = self;
-        scenario.euler_bernoulli_only("the stationary wave's equations in moving coordinates")?;
         if scenario.friction.devices.is_some() {
             return Err(invalid(
                 "friction.devices",

@@ -1,58 +1,83 @@
-//! The far field of the moving-frame beam equation (docs/theory.md §14): where the track is linear and at rest, the
-//! wave W(s) = W_far + Σ a_i e^{r_i s} with r the roots of the characteristic quartic
+//! The far field of the moving-frame beam equations (docs/theory.md §14, §16): where the track is linear and at
+//! rest, the wave W(s) = W_far + Σ a_i e^{r_i s} with r the roots of the characteristic quartic — Euler–Bernoulli's
 //!
 //! ```text
 //! EI r⁴ + ρA v² r² − c_f v r + k = 0,
 //! ```
 //!
-//! and only the decaying ones may appear: Re r < 0 ahead of the load (s → +∞), Re r > 0 behind it. With the two kept
-//! roots r₁, r₂ (σ = r₁ + r₂, π = r₁r₂, real: a conjugate pair or two real roots; the infinite beam's, from
-//! `fem_beam::reference`) every such W satisfies at the end
+//! or the Timoshenko beam's (`fem_beam::moving_timoshenko`) — and only the decaying ones may appear: Re r < 0 ahead
+//! of the load (s → +∞), Re r > 0 behind it. Each mode carries the rotation DOF θ = β(r) W (β = r, the slope, for
+//! Euler–Bernoulli; the cross-section's Ψ = κGA r/(κGA + D r²) W for Timoshenko, D = ρIv² − EI), so the two kept
+//! modes' amplitudes follow from an end's values U = W − W_far and θ, and with them what the end's boundary terms
+//! need: the weak form's
 //!
 //! ```text
-//! W″ = −π (W − W_far) + σ W′,     W‴ = −πσ (W − W_far) + (σ² − π) W′,
+//! [(ρA v² W′ − Q) φ + (ρI v² − EI) Ψ′ χ]_ends,    Q = D Ψ″ (the shear force κGA(W′ − Ψ); −EI W‴ for Euler–Bernoulli)
 //! ```
 //!
-//! the exact transparent (non-reflecting) condition of a finite domain. Undamped above the critical speed the
-//! roots reach the imaginary axis: no root decays, and no end condition selects the outgoing wave — refused.
+//! become, per mode, ρAv² r − D r² β on the W row and D r β on the θ row: a 2×2 "traction" T with
+//! (row forces) = T·(U, θ), the exact transparent (non-reflecting) condition of a finite domain. Undamped above the
+//! critical speed the roots reach the imaginary axis: no root decays, and no end condition selects the outgoing
+//! wave — refused.
 
 use crate::error::{Result, StationaryError};
+use fem_beam::moving_timoshenko::MovingTimoshenko;
 use fem_beam::reference::InfiniteBeam;
 use fem_beam::{Beam, FemError, Foundation};
 use num_complex::Complex64;
 
-/// W″ = second·(W − W_far, W′) and W‴ = third·(W − W_far, W′) at one end.
+/// What one end of the domain needs of the far field beyond it.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct EndRelation {
-    /// (−π, σ).
-    pub second: [f64; 2],
-    /// (−πσ, σ² − π).
-    pub third: [f64; 2],
+    /// T: the boundary terms' forces on the end node's (W, θ) rows = T·(W − W_far, θ) (N/m, N; N, N·m).
+    pub traction: [[f64; 2]; 2],
     /// The slowest decay rate min |Re r| of the kept roots (1/m).
     pub decay: f64,
     /// The kept roots r₁, r₂ (1/m).
     pub roots: [Complex64; 2],
+    /// β(r₁), β(r₂): θ = β W in each mode.
+    pub rotation_per_deflection: [Complex64; 2],
 }
 
 impl EndRelation {
+    /// The relation of the modes `roots` with rotations `beta`, for ρAv² (N) and D = ρIv² − EI (N·m²).
+    fn new(roots: [Complex64; 2], beta: [Complex64; 2], rho_v2: f64, d: f64) -> Self {
+        let mut relation = Self {
+            traction: [[0.0; 2]; 2],
+            decay: roots[0].re.abs().min(roots[1].re.abs()),
+            roots,
+            rotation_per_deflection: beta,
+        };
+        // The row forces per unit amplitude of each mode, times the amplitudes per unit U and per unit θ.
+        let per_mode = |i: usize| [roots[i] * rho_v2 - roots[i] * roots[i] * beta[i] * d, roots[i] * beta[i] * d];
+        for (column, (u, theta)) in [(1.0, 0.0), (0.0, 1.0)].into_iter().enumerate() {
+            if let Some(a) = relation.tail_modes(u, theta) {
+                for row in 0..2 {
+                    relation.traction[row][column] = (a[0] * per_mode(0)[row] + a[1] * per_mode(1)[row]).re;
+                }
+            }
+        }
+        relation
+    }
+
     /// The amplitudes (a₁, a₂) of the decaying modes that continue the wave past this end from its end values
-    /// U = W − W_far and W′: U(t) = a₁e^{r₁t} + a₂e^{r₂t}, t the distance past the end (a₁ + a₂ = U,
-    /// a₁r₁ + a₂r₂ = W′). None for a double root.
-    fn tail_modes(&self, u: f64, slope: f64) -> Option<[Complex64; 2]> {
-        let [r1, r2] = self.roots;
-        let gap = r2 - r1;
-        if gap.norm() <= 1e-12 * r1.norm().max(r2.norm()) {
+    /// U = W − W_far and θ: U(t) = a₁e^{r₁t} + a₂e^{r₂t}, t the distance past the end (a₁ + a₂ = U,
+    /// a₁β₁ + a₂β₂ = θ). None for a double root.
+    fn tail_modes(&self, u: f64, theta: f64) -> Option<[Complex64; 2]> {
+        let [b1, b2] = self.rotation_per_deflection;
+        let gap = b2 - b1;
+        if gap.norm() <= 1e-12 * b1.norm().max(b2.norm()) {
             return None;
         }
-        let a2 = (Complex64::new(slope, 0.0) - r1 * u) / gap;
+        let a2 = (Complex64::new(theta, 0.0) - b1 * u) / gap;
         Some([Complex64::new(u, 0.0) - a2, a2])
     }
 
-    /// ∫ W′² ds over the far field beyond this end (m), for the end values U = W − W_far and W′ (the wave continued
+    /// ∫ W′² ds over the far field beyond this end (m), for the end values U = W − W_far and θ (the wave continued
     /// by its decaying modes, `Self::tail_modes`): Σ_ij a_i a_j r_i r_j/|r_i + r_j| taken with the sign that makes
     /// each term the integral of a decaying exponential. None for a double root.
-    pub fn tail_slope_square(&self, u: f64, slope: f64) -> Option<f64> {
-        let a = self.tail_modes(u, slope)?;
+    pub fn tail_slope_square(&self, u: f64, theta: f64) -> Option<f64> {
+        let a = self.tail_modes(u, theta)?;
         let mut sum = Complex64::new(0.0, 0.0);
         for i in 0..2 {
             for j in 0..2 {
@@ -65,12 +90,12 @@ impl EndRelation {
     }
 
     /// The largest U = W − W_far (m) of the wave continued past this end by its decaying modes,
-    /// U(t) = a₁e^{r₁t} + a₂e^{r₂t} from the end values U and W′, t the distance past the end (t ≥ 0 ahead, ≤ 0
+    /// U(t) = a₁e^{r₁t} + a₂e^{r₂t} from the end values U and θ, t the distance past the end (t ≥ 0 ahead, ≤ 0
     /// behind): sampled every 0.1/|r|ₘₐₓ until the slower mode has decayed by e⁻⁸ (3e-4), at most [`TAIL_SAMPLES`]
     /// samples. A nonlinear soil's transparent end is exact only if this stays on the pressed side. None for a
     /// double root.
-    pub fn tail_max(&self, u: f64, slope: f64) -> Option<f64> {
-        let [a1, a2] = self.tail_modes(u, slope)?;
+    pub fn tail_max(&self, u: f64, theta: f64) -> Option<f64> {
+        let [a1, a2] = self.tail_modes(u, theta)?;
         let [r1, r2] = self.roots;
         // Ahead the kept roots have Re r < 0 and t runs forward; behind Re r > 0 and t runs backward.
         let direction = if r1.re < 0.0 { 1.0 } else { -1.0 };
@@ -95,26 +120,32 @@ pub struct FarField {
 
 impl FarField {
     /// The relations for `beam` on a far-field soil of damping `damping` (N·s/m²) and stiffness `stiffness` (N/m², > 0)
-    /// at speed `speed` (m/s): the decaying roots of the infinite beam's quartic ([`InfiniteBeam::steady_state`]).
+    /// at speed `speed` (m/s): the decaying roots of the infinite beam's quartic — Euler–Bernoulli's
+    /// ([`InfiniteBeam::steady_state`]) or Timoshenko's ([`MovingTimoshenko::decaying_wavenumbers`]).
     pub fn new(beam: &Beam, damping: f64, stiffness: f64, speed: f64) -> Result<Self> {
-        // The roots are the infinite beam's (fem_beam::reference), in ξ = βs: r_s = β r_ξ.
         let foundation = Foundation::linear(stiffness, damping);
-        let infinite = InfiniteBeam::new(beam, &foundation)?;
-        let state = infinite.steady_state(speed, 1.0).map_err(|e| match e {
+        let no_condition = |e: FemError| match e {
             FemError::NoSteadyState { .. } => StationaryError::NoRadiationCondition { speed },
             other => other.into(),
-        })?;
-        let roots = state.roots().map(|r| r * infinite.beta());
-        let pick = |kept: [Complex64; 2]| EndRelation {
-            second: [-(kept[0] * kept[1]).re, (kept[0] + kept[1]).re],
-            third: [
-                -((kept[0] * kept[1]) * (kept[0] + kept[1])).re,
-                ((kept[0] + kept[1]).powu(2) - kept[0] * kept[1]).re,
-            ],
-            decay: kept[0].re.abs().min(kept[1].re.abs()),
-            roots: kept,
         };
-        Ok(Self { ahead: pick([roots[0], roots[1]]), behind: pick([roots[2], roots[3]]) })
+        let rho_v2 = beam.mass_per_length() * speed * speed;
+        let d = beam.rotary_inertia() * speed * speed - beam.bending_stiffness();
+        let (roots, beta): ([Complex64; 4], [Complex64; 4]) = match beam.shear_stiffness() {
+            None => {
+                // The roots are the infinite beam's (fem_beam::reference), in ξ = βs: r_s = β r_ξ; θ = W′.
+                let infinite = InfiniteBeam::new(beam, &foundation)?;
+                let state = infinite.steady_state(speed, 1.0).map_err(no_condition)?;
+                let roots = state.roots().map(|r| r * infinite.beta());
+                (roots, roots)
+            }
+            Some(_) => {
+                let moving = MovingTimoshenko::new(beam, &foundation)?;
+                let roots = moving.decaying_wavenumbers(speed).map_err(no_condition)?;
+                (roots, roots.map(|r| moving.rotation_per_deflection(r, speed)))
+            }
+        };
+        let end = |i: usize| EndRelation::new([roots[i], roots[i + 1]], [beta[i], beta[i + 1]], rho_v2, d);
+        Ok(Self { ahead: end(0), behind: end(2) })
     }
 }
 
@@ -126,7 +157,8 @@ mod tests {
         Beam::default()
     }
 
-    /// The kept roots solve the quartic, and a decaying mode satisfies the end relations exactly.
+    /// The kept roots solve the quartic, and a decaying mode e^{rs} meets the end's traction exactly: on the W row
+    /// ρAv² r + EI r³ (ρAv² W′ − Q with Q = −EI W‴), on the θ row −EI r² (−EI W″).
     #[test]
     fn the_relations_hold_for_every_decaying_mode() {
         let (rho_a, c, k) = (beam().mass_per_length(), 774.0, 250e3);
@@ -138,11 +170,41 @@ mod tests {
                     assert!(r.re * sign > 0.0, "v {v}: {r} decays the wrong way");
                     let p = ((r * r + rho_a * v * v / ei) * r - c * v / ei) * r + k / ei;
                     assert!(p.norm() <= 1e-10 * (k / ei), "v {v}: {p}");
-                    // W = e^{rs} at s = 0: W = 1, W′ = r, W″ = r², W‴ = r³.
-                    let second = end.second[0] + end.second[1] * r;
-                    let third = end.third[0] + end.third[1] * r;
-                    assert!((second - r * r).norm() <= 1e-10 * r.norm().powi(2), "v {v}: {second} vs {}", r * r);
-                    assert!((third - r * r * r).norm() <= 1e-10 * r.norm().powi(3));
+                    // W = e^{rs} at s = 0: U = 1, θ = W′ = r.
+                    let t = end.traction;
+                    let w_row = Complex64::new(t[0][0], 0.0) + r * t[0][1];
+                    let theta_row = Complex64::new(t[1][0], 0.0) + r * t[1][1];
+                    let exact = r * rho_a * v * v + r * r * r * ei;
+                    assert!((w_row - exact).norm() <= 1e-9 * exact.norm(), "v {v}: {w_row} vs {exact}");
+                    assert!((theta_row + r * r * ei).norm() <= 1e-9 * (r * r * ei).norm());
+                }
+            }
+        }
+    }
+
+    /// The same for a Timoshenko rail: each kept root solves its quartic P, and its mode (W = e^{rs}, Ψ = βW) meets
+    /// the traction: ρAv² r − D r² β on the W row, D r β on the θ row, with D = ρIv² − EI.
+    #[test]
+    fn the_relations_hold_for_a_timoshenko_rail() {
+        let beam = Beam {
+            theory: fem_beam::BeamTheory::Timoshenko { shear_modulus: 81e9, shear_coefficient: 0.4 },
+            ..Beam::default()
+        };
+        let moving = MovingTimoshenko::new(&beam, &Foundation::linear(250e3, 774.0)).unwrap();
+        for v in [0.0, 50.0, 200.0, 400.0] {
+            let far = FarField::new(&beam, 774.0, 250e3, v).unwrap();
+            let p = moving.characteristic(v);
+            let d = beam.rotary_inertia() * v * v - beam.bending_stiffness();
+            for end in [far.ahead, far.behind] {
+                for (r, beta) in end.roots.into_iter().zip(end.rotation_per_deflection) {
+                    let value = (((r * p[0] + p[1]) * r + p[2]) * r + p[3]) * r + p[4];
+                    assert!(value.norm() <= 1e-9 * p[4], "v {v}: P({r}) = {value}");
+                    let t = end.traction;
+                    let w_row = Complex64::new(t[0][0], 0.0) + beta * t[0][1];
+                    let theta_row = Complex64::new(t[1][0], 0.0) + beta * t[1][1];
+                    let exact = r * beam.mass_per_length() * v * v - r * r * beta * d;
+                    assert!((w_row - exact).norm() <= 1e-9 * exact.norm(), "v {v}: {w_row} vs {exact}");
+                    assert!((theta_row - r * beta * d).norm() <= 1e-9 * (r * beta * d).norm());
                 }
             }
         }

@@ -22,7 +22,7 @@ use crate::rows::{add_spring, row_add, row_dot};
 use banded::general::GeneralBanded;
 use fem_beam::DistributedFriction;
 use fem_beam::distributed::section_places;
-use fem_beam::element::hermite;
+use fem_beam::element::Element;
 
 /// κ/k_c: the Jenkins stiffness over the soil's (see the module doc).
 pub const JENKINS_RATIO: f64 = 1e6;
@@ -50,8 +50,8 @@ impl FrictionSection {
     }
 
     /// W′ at the section (rad), from the element's derivative row.
-    pub fn slope(&self, w: &[f64], l: f64) -> f64 {
-        row_dot(self.element, &hermite::shape_dx(self.xi, l), w)
+    pub fn slope(&self, w: &[f64], element: &Element) -> f64 {
+        row_dot(self.element, &element.shape_dx(self.xi), w)
     }
 }
 
@@ -104,21 +104,22 @@ pub struct AnchorCoupling {
 }
 
 impl FrictionSections {
-    /// The sections of `elements` elements of length `l`, the first starting `behind` elements behind the load.
+    /// The sections of `elements` elements like `element`, the first starting `behind` elements behind the load.
     pub fn new(
         friction: &DistributedFriction,
         elements: usize,
         behind: usize,
-        l: f64,
+        element: &Element,
         stiffness: f64,
         rest: f64,
     ) -> Self {
+        let l = element.length();
         let places = section_places(elements, l, friction.subdivisions, friction.quadrature);
         let sections = places
             .into_iter()
             .map(|p| FrictionSection {
                 element: p.element,
-                row: hermite::shape(p.xi, l),
+                row: element.shape(p.xi),
                 weight: p.weight,
                 s: p.x - behind as f64 * l,
                 xi: p.xi,
@@ -191,12 +192,12 @@ impl FrictionSections {
     }
 
     /// f_u v Σ_slipping weight_i |W′_i| (W): the power the slipping ballast dissipates at speed `speed`.
-    pub fn dissipation(&self, state: &FrictionState, w: &[f64], l: f64, speed: f64) -> f64 {
+    pub fn dissipation(&self, state: &FrictionState, w: &[f64], element: &Element, speed: f64) -> f64 {
         self.sections
             .iter()
             .zip(&state.states)
             .filter(|(_, s)| matches!(s, SectionState::Slipping { .. }))
-            .map(|(section, _)| self.capacity * speed * section.weight * section.slope(w, l).abs())
+            .map(|(section, _)| self.capacity * speed * section.weight * section.slope(w, element).abs())
             .sum()
     }
 }

@@ -6,7 +6,17 @@
 //! ∫ (EI W″φ″ − ρAv² W′φ′ − c_f v W′φ + k_t Wφ) ds + [EI W‴φ − EI W″φ′ + ρAv² W′φ]_ends = ∫ f φ ds
 //! ```
 //!
-//! give a banded non-symmetric matrix A (the convective term −c_f v∫φW′ is skew), closed at both ends by the
+//! A Timoshenko rail (docs/theory.md §16) takes its own element (W and the cross-section's rotation Ψ: the same
+//! DOFs (W, θ = Ψ) per node) and its stiffness in place of EI∫W″φ″, and its rotary inertia adds the convective
+//! −ρIv²∫Ψ′χ′ (χ the rotation's test function):
+//!
+//! ```text
+//! ∫ (κGA(W′ − Ψ)(φ′ − χ) + EI Ψ′χ′ − ρAv² W′φ′ − ρIv² Ψ′χ′ − c_f v W′φ + k_t Wφ) ds
+//!     + [(ρAv² W′ − Q)φ + (ρIv² − EI)Ψ′χ]_ends = ∫ f φ ds,
+//! ```
+//!
+//! Euler–Bernoulli's form at κGA → ∞, ρI = 0. Either gives a banded non-symmetric matrix A (the convective term
+//! −c_f v∫φW′ is skew), closed at both ends by the
 //! transparent relations of [`crate::far_field`] substituted into the boundary terms (a nonlinear soil without
 //! self-weight has free ends instead: its far field rests on the soil without force, or lifts straight off it; so
 //! does a track with friction, which holds the rail still beyond the wave at both ends).
@@ -21,7 +31,7 @@ use crate::problem::StationaryProblem;
 use crate::rows::{add_spring, row_dot};
 use banded::general::{GeneralBanded, GeneralLu};
 use fem_beam::GRAVITY;
-use fem_beam::element::hermite;
+use fem_beam::element::{Element, ElementMatrix, hermite};
 
 /// One soil section: its element, its row Ψ(ξ) over the element's four DOFs, its spring (N/m) and place s (m).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -60,6 +70,8 @@ pub struct MovingFrame {
     pub load_node: usize,
     /// Element length (m).
     pub element_length: f64,
+    /// The rail's element at that length (Hermite, or Timoshenko's).
+    pub element: Element,
     /// The far field's relations at transparent ends; None where the ends are free.
     pub far_field: Option<FarField>,
 }
@@ -82,10 +94,12 @@ impl MovingFrame {
         let elements = behind + ahead;
         let n = 2 * (elements + 1);
         let k_t = foundation.tension_stiffness();
-        let element = element_matrix(ei, rho_a * v * v, c * v, k_t, l);
+        let element = Element::of(beam, l);
+        let convective = Convective { rho_a: rho_a * v * v, rho_i: beam.rotary_inertia() * v * v, damping: c * v };
+        let matrix_e = element_matrix(&element, ei, convective, k_t);
         let mut matrix = GeneralBanded::zeros(n, BAND, BAND);
         for e in 0..elements {
-            for (a, row) in element.iter().enumerate() {
+            for (a, row) in matrix_e.iter().enumerate() {
                 for (b, value) in row.iter().enumerate() {
                     matrix.add(2 * e + a, 2 * e + b, *value);
                 }
@@ -95,6 +109,7 @@ impl MovingFrame {
         rhs[2 * behind] -= problem.load;
         let level = problem.far_level();
         if level != 0.0 {
+            // Consistent loads of a uniform load: the Timoshenko element's over a whole element are Hermite's.
             let weight = hermite::uniform_load(-rho_a * GRAVITY, l);
             for e in 0..elements {
                 (0..4).for_each(|k| rhs[2 * e + k] += weight[k]);
@@ -108,8 +123,8 @@ impl MovingFrame {
                 matrix.add(0, 1, -rho_v2);
             }
             Some(far) => {
-                close_end(&mut matrix, &mut rhs, n - 2, &far.ahead, (ei, rho_v2), level, 1.0);
-                close_end(&mut matrix, &mut rhs, 0, &far.behind, (ei, rho_v2), level, -1.0);
+                close_end(&mut matrix, &mut rhs, n - 2, &far.ahead, level, 1.0);
+                close_end(&mut matrix, &mut rhs, 0, &far.behind, level, -1.0);
             }
         }
         let unilateral = foundation.unilateral_stiffness();
@@ -118,7 +133,7 @@ impl MovingFrame {
                 .flat_map(|e| {
                     hermite::GAUSS_4.iter().map(move |&(xi, w)| SoilSection {
                         element: e,
-                        row: hermite::shape(xi, l),
+                        row: element.shape(xi),
                         stiffness: unilateral * w * l,
                         s: (e as f64 + xi - behind as f64) * l,
                     })
@@ -129,9 +144,9 @@ impl MovingFrame {
         let nodes = (0..=elements).map(|i| (i as f64 - behind as f64) * l).collect();
         let friction = problem.has_friction().then(|| {
             let stiffness = JENKINS_RATIO * foundation.stiffness;
-            FrictionSections::new(&problem.friction, elements, behind, l, stiffness, level)
+            FrictionSections::new(&problem.friction, elements, behind, &element, stiffness, level)
         });
-        Ok(Self { matrix, rhs, sections, friction, nodes, load_node: behind, element_length: l, far_field })
+        Ok(Self { matrix, rhs, sections, friction, nodes, load_node: behind, element_length: l, element, far_field })
     }
 
     /// A + Σ_pressed k_s H_sᵀH_s, to which friction's stuck springs may be added before it is factored.
@@ -152,46 +167,52 @@ pub fn factor(matrix: GeneralBanded, speed: f64) -> Result<GeneralLu> {
     })
 }
 
-/// EI·Kb − ρAv²·Kg − c_f v·D + k_t·Mf of one element of length l, with Kg = ∫Ψ′ᵀΨ′ and D_ij = ∫Ψ_i Ψ_j′ by
-/// four-point Gauss (exact: degrees 4 and 5).
-fn element_matrix(ei: f64, rho_v2: f64, c_v: f64, k_t: f64, l: f64) -> [[f64; 4]; 4] {
-    let kb = hermite::bending_stiffness(ei, l);
-    let mf = hermite::consistent_mass(k_t, l);
+/// The convective coefficients at speed v: ρAv² (N), ρIv² (N·m²), c_f v (N/m²).
+#[derive(Debug, Clone, Copy)]
+struct Convective {
+    rho_a: f64,
+    rho_i: f64,
+    damping: f64,
+}
+
+/// K(EI) − ρAv²·Kg − ρIv²·Kr − c_f v·D + k_t·Mf of one element, with Kg = ∫N_w′ᵀN_w′, Kr = ∫N_ψ′ᵀN_ψ′ (Timoshenko
+/// only) and D_ij = ∫N_wi N_wj′ by four-point Gauss (exact: degrees 4, 2 and 5).
+fn element_matrix(element: &Element, ei: f64, v: Convective, k_t: f64) -> ElementMatrix {
+    let kb = element.stiffness(ei);
+    let mf = element.distributed(k_t);
     let mut a = [[0.0; 4]; 4];
     for (i, row) in a.iter_mut().enumerate() {
         for (j, value) in row.iter_mut().enumerate() {
             *value = kb[i][j] + mf[i][j];
         }
     }
+    let l = element.length();
     for &(xi, w) in &hermite::GAUSS_4 {
-        let (n, dn) = (hermite::shape(xi, l), hermite::shape_dx(xi, l));
+        let (n, dn) = (element.shape(xi), element.shape_dx(xi));
         for i in 0..4 {
             for j in 0..4 {
-                a[i][j] -= w * l * (rho_v2 * dn[i] * dn[j] + c_v * n[i] * dn[j]);
+                a[i][j] -= w * l * (v.rho_a * dn[i] * dn[j] + v.damping * n[i] * dn[j]);
+            }
+        }
+        if let Element::Timoshenko { .. } = element {
+            let dpsi = element.curvature(xi);
+            for i in 0..4 {
+                for j in 0..4 {
+                    a[i][j] -= w * l * v.rho_i * dpsi[i] * dpsi[j];
+                }
             }
         }
     }
     a
 }
 
-/// The boundary terms ±[EI W‴φ − EI W″φ′ + ρAv² W′φ] at the end whose W DOF is `w` (θ = w + 1), with W″ and W‴ from
-/// the end's transparent relation in W − W_far and W′; `sign` +1 at the front end, −1 at the rear.
-fn close_end(
-    matrix: &mut GeneralBanded,
-    rhs: &mut [f64],
-    w: usize,
-    end: &EndRelation,
-    (ei, rho_v2): (f64, f64),
-    level: f64,
-    sign: f64,
-) {
-    let theta = w + 1;
-    // φ = N_w (φ = 1, φ′ = 0): EI W‴ + ρAv² W′.
-    matrix.add(w, w, sign * ei * end.third[0]);
-    matrix.add(w, theta, sign * (ei * end.third[1] + rho_v2));
-    rhs[w] += sign * ei * end.third[0] * level;
-    // φ = N_θ (φ = 0, φ′ = 1): −EI W″.
-    matrix.add(theta, w, -sign * ei * end.second[0]);
-    matrix.add(theta, theta, -sign * ei * end.second[1]);
-    rhs[theta] -= sign * ei * end.second[0] * level;
+/// The boundary terms ±[(ρAv² W′ − Q)φ + (ρIv² − EI)Ψ′χ] at the end whose W DOF is `w` (θ = w + 1), from the
+/// end's transparent relation T·(W − W_far, θ) ([`EndRelation::traction`]); `sign` +1 at the front end, −1 at the rear.
+fn close_end(matrix: &mut GeneralBanded, rhs: &mut [f64], w: usize, end: &EndRelation, level: f64, sign: f64) {
+    let t = end.traction;
+    for (row, dof) in [(0, w), (1, w + 1)] {
+        matrix.add(dof, w, sign * t[row][0]);
+        matrix.add(dof, w + 1, sign * t[row][1]);
+        rhs[dof] += sign * t[row][0] * level;
+    }
 }

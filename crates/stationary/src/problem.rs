@@ -2,6 +2,7 @@
 
 use crate::error::{Result, StationaryError, invalid};
 use fem_beam::distributed::Quadrature;
+use fem_beam::moving_timoshenko::MovingTimoshenko;
 use fem_beam::reference::InfiniteBeam;
 use fem_beam::{Beam, DistributedFriction, Foundation, GRAVITY};
 
@@ -99,9 +100,12 @@ impl StationaryProblem {
         if !(self.load.is_finite() && self.load >= 0.0) {
             return Err(invalid("load", self.load, "must be finite and ≥ 0 (N, downward)"));
         }
+        // Euler–Bernoulli's bar wave, a Timoshenko rail's shear wave √(κGA/ρA) (slower): the moving-frame
+        // equations change type at it.
         let bar_wave = (self.beam.youngs_modulus / self.beam.density).sqrt();
-        if !(self.speed.is_finite() && self.speed >= 0.0 && self.speed < bar_wave) {
-            return Err(invalid("speed", self.speed, format!("must lie in [0, {bar_wave:.0}) m/s")));
+        let limit = self.beam.shear_stiffness().map_or(bar_wave, |g| (g / self.beam.mass_per_length()).sqrt());
+        if !(self.speed.is_finite() && self.speed >= 0.0 && self.speed < limit) {
+            return Err(invalid("speed", self.speed, format!("must lie in [0, {limit:.0}) m/s")));
         }
         self.friction.validate()?;
         if self.friction.quadrature != Quadrature::Trapezoid {
@@ -122,13 +126,16 @@ impl StationaryProblem {
         let f = &self.foundation;
         let largest = |stiffness: f64| -> Result<f64> {
             let soil = Foundation::linear(stiffness, f.damping);
-            let r = InfiniteBeam::new(&self.beam, &soil)?.wavenumbers(self.speed);
+            let r = match self.beam.shear_stiffness() {
+                None => InfiniteBeam::new(&self.beam, &soil)?.wavenumbers(self.speed),
+                Some(_) => MovingTimoshenko::new(&self.beam, &soil)?.wavenumbers(self.speed),
+            };
             Ok(r.iter().map(|r| r.norm()).fold(0.0, f64::max))
         };
         let mut fastest = largest(f.stiffness)?;
         if self.is_nonlinear() {
             let lifted = match f.tension_stiffness() {
-                k if k > 0.0 => largest(k)?,
+                k if k > 0.0 || self.beam.shear_stiffness().is_some() => largest(k)?,
                 _ => self.speed * (self.beam.mass_per_length() / self.beam.bending_stiffness()).sqrt(),
             };
             fastest = fastest.max(lifted);

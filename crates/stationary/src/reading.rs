@@ -29,36 +29,65 @@ pub const END_SHARE: f64 = 0.1;
 /// and an undamped track's tail behind the load decays only by friction (linearly, slowly).
 pub const SETTLED: f64 = 1e-5;
 
-/// EI W″ at the nodes (N·m, sagging positive; the mean of both elements' values at a node) and ∫W′² ds (rad²·m)
-/// over the domain by 4-point Gauss, plus the transparent ends' tails beyond it, whose decaying modes continue the
-/// wave there.
-pub(crate) fn bending(problem: &StationaryProblem, frame: &MovingFrame, w: &[f64]) -> (Vec<f64>, f64) {
+/// The bending moment EI κ at the nodes (N·m, sagging positive; κ = W″, or Ψ′ for Timoshenko), W′ at the nodes
+/// (rad) — each the mean of both elements' values at a node — and ∫W′² ds (rad²·m) over the domain by 4-point
+/// Gauss, plus the transparent ends' tails beyond it, whose decaying modes continue the wave there.
+pub(crate) fn bending(problem: &StationaryProblem, frame: &MovingFrame, w: &[f64]) -> (Vec<f64>, Vec<f64>, f64) {
     let nodes = frame.nodes.len();
-    let l = frame.element_length;
+    let element = frame.element;
     let ei = problem.beam.bending_stiffness();
     let mut moment = vec![0.0; nodes];
+    let mut slope = vec![0.0; nodes];
     let mut count = vec![0.0; nodes];
     let mut slope_square = 0.0;
     for e in 0..nodes - 1 {
         let q = &w[2 * e..2 * e + 4];
-        let curvature = |xi: f64| hermite::shape_dxx(xi, l).iter().zip(q).map(|(n, q)| n * q).sum::<f64>();
-        moment[e] += ei * curvature(0.0);
-        moment[e + 1] += ei * curvature(1.0);
+        let at = |n: [f64; 4]| n.iter().zip(q).map(|(n, q)| n * q).sum::<f64>();
+        moment[e] += ei * at(element.curvature(0.0));
+        moment[e + 1] += ei * at(element.curvature(1.0));
+        slope[e] += at(element.shape_dx(0.0));
+        slope[e + 1] += at(element.shape_dx(1.0));
         count[e] += 1.0;
         count[e + 1] += 1.0;
         for &(xi, weight) in &hermite::GAUSS_4 {
-            let dw: f64 = hermite::shape_dx(xi, l).iter().zip(q).map(|(n, q)| n * q).sum();
-            slope_square += weight * l * dw * dw;
+            let dw = at(element.shape_dx(xi));
+            slope_square += weight * element.length() * dw * dw;
         }
     }
     moment.iter_mut().zip(&count).for_each(|(m, c)| *m /= c);
+    slope.iter_mut().zip(&count).for_each(|(m, c)| *m /= c);
     if let Some(far) = &frame.far_field {
         let level = problem.far_level();
         for (end, i) in [(&far.behind, 0), (&far.ahead, nodes - 1)] {
             slope_square += end.tail_slope_square(w[2 * i] - level, w[2 * i + 1]).unwrap_or(0.0);
         }
     }
-    (moment, slope_square)
+    (moment, slope, slope_square)
+}
+
+/// W′ under the load (rad), the mean of its two sides, where the load's power F·v·W′ is taken. Euler–Bernoulli: the
+/// rotation DOF there. Timoshenko: W′ = Ψ + γ jumps with the shear strain γ, which an element holds constant — its
+/// value at the element's middle to second order — so each side's γ(0±) is extrapolated linearly from the two
+/// elements that side, 3γ₁/2 − γ₂/2: the load's power converges at second order with the mesh, as the dashpots' does
+/// (the element's own W′ at the node, first order, left the balance 5.6e-3 off on 0.1 m elements).
+pub(crate) fn slope_under_load(frame: &MovingFrame, w: &[f64]) -> f64 {
+    let (i, element) = (frame.load_node, frame.element);
+    let shear_strain = |e: usize| {
+        let q = &w[2 * e..2 * e + 4];
+        let at = |n: [f64; 4]| n.iter().zip(q).map(|(n, q)| n * q).sum::<f64>();
+        at(element.shape_dx(0.5)) - at(element.rotation(0.5))
+    };
+    let elements = frame.nodes.len() - 1;
+    let side = |near: Option<usize>, far: Option<usize>| match (near, far) {
+        (Some(a), Some(b)) => 1.5 * shear_strain(a) - 0.5 * shear_strain(b),
+        (Some(a), None) => shear_strain(a),
+        _ => 0.0,
+    };
+    let within = |e: usize| (e < elements).then_some(e);
+    let behind = side(i.checked_sub(1), i.checked_sub(2));
+    let ahead = side(within(i), within(i + 1));
+    let sides = if i == 0 || i == elements { 1.0 } else { 2.0 };
+    w[2 * i + 1] + (behind + ahead) / sides
 }
 
 /// The zones of neighbouring soil sections where the rail is above the soil's surface, in the moving frame.
@@ -110,7 +139,7 @@ impl FrictionReading {
         let state = friction.march(w);
         let j = problem.friction.subdivisions;
         (0..nodes).for_each(|i| this.force[i] = state.force[i * j]);
-        this.power = friction.dissipation(&state, w, l, problem.speed);
+        this.power = friction.dissipation(&state, w, &frame.element, problem.speed);
         let spacing = l / j as f64;
         for (section, state) in friction.sections.iter().zip(&state.states) {
             let SectionState::Slipping { sign } = *state else { continue };

@@ -9,7 +9,6 @@ use crate::problem::{Domain, StationaryProblem};
 use crate::solve::solve_from;
 use crate::status::ContactGuess;
 use crate::wave::StationaryWave;
-use fem_beam::element::hermite;
 
 /// 2ᵖ/(2ᵖ − 1) for p = 1: the factor on |P_h − P_{h/2}| that estimates the error of P_h.
 pub const ERROR_FACTOR: f64 = 2.0;
@@ -25,15 +24,16 @@ pub fn solve_halved(problem: &StationaryProblem, wave: &StationaryWave) -> Resul
     let level = wave.settlement;
     let n = wave.s.len();
     let mut w = Vec::with_capacity(4 * n - 2);
-    // The element's cubic at ξ = ½ (its Hermite shape functions and their slopes there).
-    let (middle, middle_dx) = (hermite::shape(0.5, l), hermite::shape_dx(0.5, l));
+    // The element's W and rotation θ at ξ = ½ (its shape functions there: for Euler–Bernoulli θ = W′).
+    let element = fem_beam::element::Element::of(&problem.beam, l);
+    let (middle, middle_rotation) = (element.shape(0.5), element.rotation(0.5));
     for i in 0..n {
-        let (w0, t0) = (wave.deflection[i] + level, wave.slope[i]);
+        let (w0, t0) = (wave.deflection[i] + level, wave.rotation[i]);
         w.extend([w0, t0]);
         if i + 1 < n {
-            let q = [w0, t0, wave.deflection[i + 1] + level, wave.slope[i + 1]];
+            let q = [w0, t0, wave.deflection[i + 1] + level, wave.rotation[i + 1]];
             let at = |n: &[f64; 4]| n.iter().zip(&q).map(|(n, q)| n * q).sum::<f64>();
-            w.extend([at(&middle), at(&middle_dx)]);
+            w.extend([at(&middle), at(&middle_rotation)]);
         }
     }
     solve_from(&halved, &mut ContactGuess::started_at(&halved, w)?)

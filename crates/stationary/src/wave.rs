@@ -8,7 +8,7 @@ use crate::problem::StationaryProblem;
 use crate::reading;
 pub use crate::reading::{END_SHARE, SETTLED, SlipZone};
 use crate::status::Convergence;
-use fem_beam::element::hermite;
+use fem_beam::element::Element;
 use fem_beam::{Extreme, LiftOffZone};
 
 /// The steady state's balance, in the moving frame a balance of powers (W): what the load puts in against what the
@@ -42,8 +42,10 @@ pub struct StationaryWave {
     pub s: Vec<f64>,
     /// W − W_far at the nodes (m, upward positive): the deflection from the settled rail.
     pub deflection: Vec<f64>,
-    /// W′ (rad).
+    /// W′ (rad): the mean of both elements' values at a node (a Timoshenko rail's slope jumps under the load).
     pub slope: Vec<f64>,
+    /// The rotation DOF θ at the nodes (rad): W′ for Euler–Bernoulli, the cross-section's Ψ for Timoshenko.
+    pub rotation: Vec<f64>,
     /// EI W″ (N·m, sagging positive), the mean of both elements' values at a node.
     pub moment: Vec<f64>,
     /// The soil's spring force on the rail from the settled state (N/m, upward positive), at the nodes.
@@ -57,7 +59,7 @@ pub struct StationaryWave {
     pub friction_force: Vec<f64>,
     /// The zones where the rail slides over the ballast.
     pub slip_zones: Vec<SlipZone>,
-    /// F v W′(0) (W): the power the load puts in.
+    /// F v W′(0) (W): the power the load puts in (W′ the mean of both sides for a Timoshenko rail).
     pub load_power: f64,
     /// c_f v² ∫W′² ds (W): what the dashpots take out, on the domain and on the far field beyond its transparent
     /// ends.
@@ -68,6 +70,7 @@ pub struct StationaryWave {
     /// soil's and the weight's stored energy from the settled state), deposited at the speed the wave advances.
     pub left_behind_power: f64,
     element_length: f64,
+    element: Element,
     load_node: usize,
     sections_lifted_at_ends: (bool, bool),
     unsettled_at_ends: (bool, bool),
@@ -81,8 +84,8 @@ impl StationaryWave {
         let nodes = frame.nodes.len();
         let level = problem.far_level();
         let deflection: Vec<f64> = (0..nodes).map(|i| w[2 * i] - level).collect();
-        let slope: Vec<f64> = (0..nodes).map(|i| w[2 * i + 1]).collect();
-        let (moment, slope_square) = reading::bending(problem, frame, &w);
+        let rotation: Vec<f64> = (0..nodes).map(|i| w[2 * i + 1]).collect();
+        let (moment, slope, slope_square) = reading::bending(problem, frame, &w);
         let f = &problem.foundation;
         let rest = f.reaction(level);
         let soil_reaction = (0..nodes).map(|i| f.reaction(w[2 * i]) - rest).collect();
@@ -95,7 +98,7 @@ impl StationaryWave {
             load: problem.load,
             convergence: status,
             s: frame.nodes.clone(),
-            load_power: problem.load * v * slope[frame.load_node],
+            load_power: problem.load * v * reading::slope_under_load(frame, &w),
             viscous_power: f.damping * v * v * slope_square,
             friction_power: friction.power,
             left_behind_power: if problem.has_friction() { v * stored(w[0]) } else { 0.0 },
@@ -104,11 +107,13 @@ impl StationaryWave {
             unsettled_at_ends: friction.unsettled_at_ends,
             deflection,
             slope,
+            rotation,
             moment,
             soil_reaction,
             settlement: level,
             lift_off: reading::lift_off_zones(frame, &w),
             element_length: frame.element_length,
+            element: frame.element,
             load_node: frame.load_node,
             sections_lifted_at_ends: reading::lifted_at_ends(problem, frame, &w),
         }
@@ -137,22 +142,25 @@ impl StationaryWave {
     }
 
     /// The extreme of sign·W over the whole cubic of every element, not only its nodes: where W′ = aξ² + bξ + c
-    /// vanishes inside (a damped wave's trough lies between nodes, 0.07 m behind the load at 120 m/s).
+    /// vanishes inside (a damped wave's trough lies between nodes, 0.07 m behind the load at 120 m/s); the quadratic
+    /// from W′ (times l) at ξ = 0, ½, 1.
     fn deflection_extreme(&self, sign: f64) -> Extreme {
         let l = self.element_length;
         let mut best = self.extreme(&self.deflection, sign);
+        let element = self.element;
         for e in 0..self.s.len() - 1 {
-            let q = [self.deflection[e], self.slope[e], self.deflection[e + 1], self.slope[e + 1]];
-            let a = 6.0 * (q[0] - q[2]) / l + 3.0 * (q[1] + q[3]);
-            let b = -6.0 * (q[0] - q[2]) / l - 4.0 * q[1] - 2.0 * q[3];
-            let c = q[1];
+            let q = [self.deflection[e], self.rotation[e], self.deflection[e + 1], self.rotation[e + 1]];
+            let at = |n: [f64; 4]| n.iter().zip(&q).map(|(n, q)| n * q).sum::<f64>();
+            let slope = |xi: f64| l * at(element.shape_dx(xi));
+            let (start, middle, end) = (slope(0.0), slope(0.5), slope(1.0));
+            let (a, b, c) = (2.0 * (start + end) - 4.0 * middle, 4.0 * middle - 3.0 * start - end, start);
             let discriminant = b * b - 4.0 * a * c;
             if a == 0.0 || discriminant < 0.0 {
                 continue;
             }
             for xi in [(-b - discriminant.sqrt()) / (2.0 * a), (-b + discriminant.sqrt()) / (2.0 * a)] {
                 if xi > 0.0 && xi < 1.0 {
-                    let w: f64 = hermite::shape(xi, l).iter().zip(&q).map(|(n, q)| n * q).sum();
+                    let w = at(element.shape(xi));
                     if sign * w > best.value {
                         best = Extreme::in_frame(sign * w, self.s[e] + xi * l);
                     }

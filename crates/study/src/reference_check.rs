@@ -15,7 +15,7 @@ pub struct ModeCheck {
     pub n: usize,
     /// ω_n of the finite-element model (rad/s).
     pub omega: f64,
-    /// ω_n of the pinned Euler–Bernoulli beam on its foundation (rad/s).
+    /// ω_n of the pinned beam on its foundation (rad/s; Timoshenko's frequency equation for a Timoshenko rail).
     pub omega_closed_form: f64,
 }
 
@@ -24,6 +24,9 @@ pub struct ModeCheck {
 pub struct ReferenceCheck {
     /// The scenario's title, or the reference case's name.
     pub title: String,
+    /// The rail where it is not Euler–Bernoulli's ("Timoshenko (G = 81 GPa, κ = 0.4)").
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rail_theory: Option<String>,
     /// Beam length L (m).
     pub length: f64,
     /// The end supports, `left/right`.
@@ -71,7 +74,7 @@ impl ReferenceCheck {
         }
         let case = scenario.reference_case()?;
         let model = case.model()?;
-        let inf = case.infinite_beam()?;
+        let inf = fem_beam::infinite_track::InfiniteTrack::new(&case.beam, &case.foundation)?;
         let mid = case.mesh.length / 2.0;
         let load = LoadVector::point_force(&model.discretisation(), mid, -case.load)?;
         let q = model.static_solve(&load)?;
@@ -91,15 +94,16 @@ impl ReferenceCheck {
             } else {
                 scenario.title.clone()
             },
+            rail_theory: case.beam.theory.unless_default(),
             length: case.mesh.length,
             supports: format!("{:?}/{:?}", case.supports.left, case.supports.right).to_lowercase(),
             elements: case.mesh.elements,
             dofs: free,
             load: case.load,
             midspan_deflection: model.deflection_at(&q, mid)?,
-            midspan_deflection_closed_form: -inf.static_deflection(case.load),
+            midspan_deflection_closed_form: -inf.static_deflection(case.load)?,
             midspan_moment: moments.at(mid),
-            midspan_moment_closed_form: inf.static_moment(case.load),
+            midspan_moment_closed_form: inf.static_moment(case.load)?,
             critical_speed: inf.critical_speed(),
             modes: omega
                 .iter()
@@ -107,7 +111,12 @@ impl ReferenceCheck {
                 .map(|(i, &w)| ModeCheck {
                     n: i + 1,
                     omega: w,
-                    omega_closed_form: case.pinned_natural_frequency(i + 1),
+                    omega_closed_form: fem_beam::dispersion::pinned_natural_frequency(
+                        &case.beam,
+                        case.foundation.stiffness,
+                        case.mesh.length,
+                        i + 1,
+                    ),
                 })
                 .collect(),
         })

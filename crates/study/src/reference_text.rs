@@ -21,8 +21,13 @@ impl Output for ReferenceReport {
         let r = &self.check;
         writeln!(
             f,
-            "frictrack — {}: {} m beam ({} ends), {} elements ({} DOFs)",
-            r.title, r.length, r.supports, r.elements, r.dofs
+            "frictrack — {}: {} m {}beam ({} ends), {} elements ({} DOFs)",
+            r.title,
+            r.length,
+            r.rail_theory.as_ref().map_or(String::new(), |t| format!("{t} ")),
+            r.supports,
+            r.elements,
+            r.dofs
         )?;
         writeln!(
             f,

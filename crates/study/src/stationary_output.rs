@@ -107,6 +107,8 @@ pub const ERROR_TOLERANCE: f64 = 1e-2;
 /// The stationary waves of a scenario over its speeds.
 #[derive(Debug, Clone)]
 pub struct StationaryStudy {
+    /// The rail in words where it is not Euler–Bernoulli's ("Timoshenko (G = 81 GPa, κ = 0.4)").
+    pub rail_theory: Option<String>,
     /// The soil's law ("linear", "tensionless", "bilinear").
     pub law: &'static str,
     /// F (N).
@@ -173,7 +175,8 @@ impl StationaryStudy {
             progress(points.len());
         }
         let friction = first.friction.force_per_length;
-        Ok(Self { law, load: first.load, settlement: -first.far_level(), friction, points, waves })
+        let rail_theory = scenario.beam.theory.unless_default();
+        Ok(Self { rail_theory, law, load: first.load, settlement: -first.far_level(), friction, points, waves })
     }
 
     /// The point whose peaks have the largest relative discretisation error over the speeds estimated, and that

@@ -50,8 +50,9 @@ impl Output for StationaryReport<'_> {
         };
         writeln!(
             f,
-            "stationary wave on the infinite track{}: F = {:.1} kN, {} soil{weight}{friction}",
+            "stationary wave on the infinite track{}: {}F = {:.1} kN, {} soil{weight}{friction}",
             if title.is_empty() { String::new() } else { format!(" ({title})") },
+            study.rail_theory.as_ref().map_or(String::new(), |t| format!("{t} rail, ")),
             study.load / 1e3,
             study.law
         )?;

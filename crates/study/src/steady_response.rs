@@ -2,7 +2,8 @@
 //! loads (docs/theory.md §8, §10): at each speed the largest downward and upward deflections and where they sit in
 //! the moving frame, and their amplification over the static response of the same loads.
 
-use fem_beam::reference::{InfiniteBeam, SteadyExtremes};
+use fem_beam::infinite_track::InfiniteTrack;
+use fem_beam::reference::SteadyExtremes;
 use fem_beam::{Extreme, Foundation, Train};
 use scenario::Scenario;
 use scenario::error::{Result, invalid};
@@ -29,8 +30,8 @@ pub struct SteadyPoint {
 pub struct SteadyResponse {
     /// The foundation used (its damping from the given ratio, if one was given).
     pub foundation: Foundation,
-    /// The infinite beam of the scenario's beam on that foundation.
-    pub beam: InfiniteBeam,
+    /// The infinite track of the scenario's beam (either rail theory) on that foundation.
+    pub beam: InfiniteTrack,
     /// The train, as the beam carries it; None for the single load.
     pub train: Option<Train>,
     /// The single load F (N), used without a train.
@@ -51,7 +52,7 @@ impl SteadyResponse {
             Some(ratio) => case.foundation.with_damping_ratio(ratio, &case.beam)?,
             None => case.foundation,
         };
-        let beam = InfiniteBeam::new(&case.beam, &foundation)?;
+        let beam = InfiniteTrack::new(&case.beam, &foundation)?;
         if scenario.vehicle.is_some() {
             return Err(invalid(
                 "vehicle",
@@ -81,7 +82,7 @@ impl SteadyResponse {
         // The static response of the same load (v = 0): a train's superposed static shapes.
         let w0 = match &train {
             Some(_) => extremes(0.0)?.max_downward.value,
-            None => beam.static_deflection(case.load),
+            None => beam.static_deflection(case.load)?,
         };
         let points = speeds
             .iter()

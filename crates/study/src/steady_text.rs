@@ -24,8 +24,9 @@ impl Output for SteadyReport<'_> {
         let w0 = response.static_deflection;
         writeln!(
             f,
-            "infinite beam{}, EI = {:.4} MN·m², ρA = {:.3} kg/m, k_f = {:.1} kN/m², {}, ζ = {:.4}, \
+            "infinite {}{}, EI = {:.4} MN·m², ρA = {:.3} kg/m, k_f = {:.1} kN/m², {}, ζ = {:.4}, \
              v_cr = {:.2} m/s, static w₀ = {:.2} mm",
+            scenario.beam.theory.unless_default().map_or("beam".to_string(), |t| format!("{t} beam")),
             if scenario.title.is_empty() { String::new() } else { format!(" ({})", scenario.title) },
             scenario.beam.bending_stiffness() / 1e6,
             scenario.beam.mass_per_length(),

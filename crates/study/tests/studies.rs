@@ -161,8 +161,8 @@ fn example_scenarios_are_valid() {
     // One per study, the HSLM bridge, the rail cars, and one per further feature (flat, random rail, measured rail,
     // matrices vehicle, vehicle groups, CSV train, axles and patches, a vehicle on ballast friction, a tensionless
     // soil, vehicles through a co-moving window, a Timoshenko rail, a receptance, a track on sleepers, voided
-    // sleepers).
-    assert_eq!(count, 22, "one example per study and per feature");
+    // sleepers, ballast bodies on the subgrade).
+    assert_eq!(count, 23, "one example per study and per feature");
 }
 
 fn small_case() -> scenario::Case {

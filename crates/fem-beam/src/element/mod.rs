@@ -45,6 +45,13 @@ impl Element {
         }
     }
 
+    /// l (m).
+    pub fn length(&self) -> f64 {
+        match *self {
+            Element::Hermite { length } | Element::Timoshenko { length, .. } => length,
+        }
+    }
+
     /// N_w(ξ): the deflection's shape functions at ξ ∈ [0, 1].
     pub fn shape(&self, xi: f64) -> ElementVector {
         match *self {

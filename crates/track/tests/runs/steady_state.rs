@@ -84,14 +84,14 @@ fn recorded_histories_match_steady_state_under_the_load() {
 
 /// A train started from its steady state (the sum of its axles', docs/theory.md §10) keeps it: the deflection
 /// history at x = 100 m while the power car (4 axles over 17 m) passes equals the closed form w(x − x_head) of
-/// `InfiniteBeam::train_steady_state`, to the accuracy of the single-load case above.
+/// `InfiniteTrack::train_steady_state`, to the accuracy of the single-load case above.
 #[test]
 fn a_train_started_from_its_steady_state_keeps_it() {
     use fem_beam::{Axle, Train};
     let case = uic60_on_soft_soil();
     let foundation = case.foundation.with_damping_ratio(0.05, &case.beam).unwrap();
     let model = BeamModel::new(case.beam, foundation, case.mesh, case.supports).unwrap();
-    let infinite = InfiniteBeam::new(&case.beam, &foundation).unwrap();
+    let infinite = fem_beam::infinite_track::InfiniteTrack::new(&case.beam, &foundation).unwrap();
     let train = Train {
         name: "power car".into(),
         axles: [0.0, 3.0, 14.0, 17.0].iter().map(|&offset| Axle { offset, force: 170e3 }).collect(),
