@@ -99,6 +99,30 @@ impl SteadyWave {
         }
     }
 
+    /// The rotation DOF θ at s (rad): W′ for Euler–Bernoulli, the cross-section's Ψ for Timoshenko.
+    pub fn rotation(&self, s: f64) -> f64 {
+        match self {
+            Self::EulerBernoulli(w) => w.slope(s),
+            Self::Timoshenko(w) => w.rotation(s),
+        }
+    }
+
+    /// ∂w/∂t = −v W′ (m/s) at s.
+    pub fn velocity(&self, s: f64) -> f64 {
+        match self {
+            Self::EulerBernoulli(w) => w.velocity(s),
+            Self::Timoshenko(w) => w.velocity(s),
+        }
+    }
+
+    /// ∂θ/∂t = −v θ′ (rad/s) at s.
+    pub fn rotation_rate(&self, s: f64) -> f64 {
+        match self {
+            Self::EulerBernoulli(w) => w.rotation_rate(s),
+            Self::Timoshenko(w) => w.rotation_rate(s),
+        }
+    }
+
     /// The largest downward and upward deflections and where.
     pub fn extremes(&self) -> SteadyExtremes {
         match self {

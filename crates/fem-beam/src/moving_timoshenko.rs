@@ -121,6 +121,7 @@ impl MovingTimoshenko {
             ahead: [term(roots[0], -1.0), term(roots[1], -1.0)],
             behind: [term(roots[2], 1.0), term(roots[3], 1.0)],
             bending_stiffness: self.beam.bending_stiffness(),
+            speed,
         })
     }
 }
@@ -133,6 +134,7 @@ pub struct TimoshenkoSteadyState {
     /// (r, C, β) behind it (s ≤ 0).
     behind: [(Complex64, Complex64, Complex64); 2],
     bending_stiffness: f64,
+    speed: f64,
 }
 
 impl TimoshenkoSteadyState {
@@ -159,6 +161,16 @@ impl TimoshenkoSteadyState {
     /// The bending moment EI Ψ′ (N·m, sagging positive) at s.
     pub fn moment(&self, s: f64) -> f64 {
         self.bending_stiffness * self.sum(s, |r, beta| r * beta)
+    }
+
+    /// ∂w/∂t = −v W′ (m/s) at s.
+    pub fn velocity(&self, s: f64) -> f64 {
+        -self.speed * self.slope(s)
+    }
+
+    /// ∂ψ/∂t = −v Ψ′ (rad/s) at s.
+    pub fn rotation_rate(&self, s: f64) -> f64 {
+        -self.speed * self.sum(s, |r, beta| r * beta)
     }
 
     /// The roots, ahead pair first (1/m).

@@ -229,6 +229,39 @@ pub fn deck_resolution(case: &Case) -> Vec<Warning> {
 /// Elements a bay the pinned–pinned wave needs (its half wavelength is the spacing).
 pub const ELEMENTS_PER_BAY: usize = 4;
 
+/// How far the mesh's pinned–pinned frequency may lie from the rail's (relative) before it is warned about.
+pub const PINNED_PINNED_TOLERANCE: f64 = 0.01;
+
+/// The pinned–pinned resonance as `per_bay` elements of `beam` give it — the first mode of one bay `spacing` m long
+/// pinned at both ends, against the rail's own ([`fem_beam::dispersion::pinned_pinned`]) — warned about beyond
+/// [`PINNED_PINNED_TOLERANCE`]. Hermite elements converge as O(h⁴) (UIC60 at a = 0.6 m: +0.39 % at two a bay, +0.03 %
+/// at four); the Timoshenko element as O(h²) (κ = 0.4: +4.1 % at two, +1.0 % at four, +0.25 % at eight), so the
+/// elements it needs are estimated as per_bay·√(error/tolerance).
+fn meshed_pinned_pinned(beam: &fem_beam::Beam, spacing: f64, per_bay: usize, mesh: &fem_beam::Mesh) -> Option<Warning> {
+    use fem_beam::{BeamModel, Foundation, Mesh, Support, Supports};
+    let bay = Mesh::new(spacing, per_bay.max(1)).ok()?;
+    let model = BeamModel::new(*beam, Foundation::linear(0.0, 0.0), bay, Supports::both(Support::Pinned)).ok()?;
+    let meshed = model.natural_frequencies(1).ok()?.first()? / std::f64::consts::TAU;
+    let exact = fem_beam::dispersion::pinned_pinned(beam, spacing);
+    let error = meshed / exact - 1.0;
+    if error.abs() <= PINNED_PINNED_TOLERANCE {
+        return None;
+    }
+    let per_bay_needed = (per_bay as f64 * (error.abs() / PINNED_PINNED_TOLERANCE).sqrt()).ceil();
+    Some(Warning {
+        field: "mesh.elements".into(),
+        value: mesh.elements.to_string(),
+        message: format!(
+            "{per_bay} elements a bay give this {} rail's pinned–pinned resonance at {meshed:.0} Hz against its \
+             {exact:.0} Hz ({:+.1} %); about {per_bay_needed} a bay bring it within {} % — use {} elements",
+            beam.theory.describe(),
+            100.0 * error,
+            100.0 * PINNED_PINNED_TOLERANCE,
+            (mesh.length / spacing * per_bay_needed).round()
+        ),
+    })
+}
+
 /// What a run of `case` on sleepers must resolve (docs/theory.md §18), warned about where it does not (none on a
 /// continuous track): the mesh the pinned–pinned wave ([`ELEMENTS_PER_BAY`], the rule a span's modes follow), the
 /// step the frequencies the sleepers add — the sleeper passing frequency v/a the load excites, the rail bouncing on
@@ -250,6 +283,9 @@ pub fn sleeper_resolution(case: &Case) -> Vec<Warning> {
                 sleepers.spacing
             ),
         });
+    }
+    if per_bay >= ELEMENTS_PER_BAY as f64 - 1e-9 {
+        out.extend(meshed_pinned_pinned(model.beam(), sleepers.spacing, per_bay.round() as usize, mesh));
     }
     let speed = case.settings.moving.speed;
     let lumped = sleepers.bay_resonances(model.beam().mass_per_length());
@@ -327,5 +363,27 @@ mod tests {
         assert!(damping.message.contains("damps nothing") && damping.message.contains("[sleepers.pad]"), "{damping}");
         let soil = Scenario::from_toml("[foundation]\ndamping_ratio = 0.05\n", "t.toml").unwrap();
         assert!(warnings(&soil, &soil.build().unwrap()).iter().all(|w| w.field != "foundation.damping_ratio"));
+    }
+
+    /// A Timoshenko rail of soft shear (κ = 0.1) on four elements a bay: its pinned–pinned resonance comes out more
+    /// than 1 % high and the warning says by how much and how many elements bring it within 1 %; with that many it
+    /// is not warned about, nor is UIC60 (κ = 0.4: +1.0 %) or an Euler–Bernoulli rail (+0.03 %) on four a bay.
+    #[test]
+    fn a_timoshenko_bay_too_coarse_for_the_pinned_pinned_resonance_is_warned_about() {
+        let said = |kappa: Option<f64>, elements: usize| {
+            let beam = kappa.map_or(String::new(), |k| {
+                format!("[beam]\ntheory = \"timoshenko\"\nshear_modulus = 81e9\nshear_coefficient = {k}\n")
+            });
+            let text = format!(
+                "{beam}[foundation]\nstiffness = 0.0\n[sleepers]\n[mesh]\nlength = 60.0\nelements = {elements}\n"
+            );
+            let scenario = Scenario::from_toml(&text, "t.toml").unwrap();
+            sleeper_resolution(&scenario.build().unwrap()).into_iter().find(|w| w.message.contains("resonance at"))
+        };
+        let coarse = said(Some(0.1), 400).expect("warned");
+        assert!(coarse.message.contains("4 elements a bay") && coarse.message.contains("within 1 %"), "{coarse}");
+        let needed: usize = coarse.message.rsplit("use ").next().unwrap().split(' ').next().unwrap().parse().unwrap();
+        assert!(said(Some(0.1), needed).is_none(), "{needed} elements still warned: {coarse}");
+        assert!(said(Some(0.4), 400).is_none() && said(None, 400).is_none());
     }
 }

@@ -31,7 +31,7 @@ use crate::error::Result;
 use crate::error::Setting;
 use crate::placed::PlacedInteractions;
 use fem_beam::BeamModel;
-use fem_beam::reference::InfiniteBeam;
+use fem_beam::infinite_track::InfiniteTrack;
 use nscd::solver::SolverKind;
 use records::{DeflectionRecord, SectionRecords, SolverTally};
 pub(crate) use records::{Record, StepState};
@@ -120,7 +120,7 @@ impl<'a> Simulation<'a> {
                         "the steady-state start takes trains of axles only (no load patches)",
                     ));
                 }
-                let infinite = InfiniteBeam::new(self.model.beam(), self.model.foundation())?;
+                let infinite = InfiniteTrack::new(self.model.beam(), self.model.foundation())?;
                 let mesh = self.model.mesh();
                 let mut q = vec![0.0; dofs.full_len()];
                 let mut v = vec![0.0; dofs.full_len()];
@@ -129,7 +129,7 @@ impl<'a> Simulation<'a> {
                     for i in 0..mesh.nodes() {
                         let s = mesh.node_x(i) - (position - axle.offset);
                         q[2 * i] += state.deflection(s);
-                        q[2 * i + 1] += state.slope(s);
+                        q[2 * i + 1] += state.rotation(s);
                         v[2 * i] += state.velocity(s);
                         v[2 * i + 1] += state.rotation_rate(s);
                     }

@@ -316,13 +316,13 @@ impl RunSettings {
             ));
         }
         if let InitialState::SteadyState { position } = self.moving.initial
-            && (model.sleepers().is_some() || model.beam().theory != fem_beam::BeamTheory::EulerBernoulli)
+            && model.sleepers().is_some()
         {
             return Err(invalid(
                 Setting::SteadyStart,
                 position,
-                "the steady-state start is the closed form of an Euler–Bernoulli rail on a continuous foundation: a \
-                 Timoshenko rail or a rail on sleepers starts at rest or from a static start",
+                "the steady-state start is the closed form of a rail on a continuous foundation: a rail on sleepers \
+                 starts at rest or from a static start",
             ));
         }
         if let InitialState::SteadyState { position } | InitialState::Static { position } = self.moving.initial
