@@ -40,24 +40,34 @@ pub struct EndRelation {
 }
 
 impl EndRelation {
-    /// The relation of the modes `roots` with rotations `beta`, for ρAv² (N) and D = ρIv² − EI (N·m²).
-    fn new(roots: [Complex64; 2], beta: [Complex64; 2], rho_v2: f64, d: f64) -> Self {
-        let mut relation = Self {
-            traction: [[0.0; 2]; 2],
-            decay: roots[0].re.abs().min(roots[1].re.abs()),
-            roots,
-            rotation_per_deflection: beta,
+    /// The relation of the modes `roots`, whose rotation per deflection and its derivative in r are `beta`(r) =
+    /// (β, dβ/dr), for ρAv² (N) and D = ρIv² − EI (N·m²). With f(r) the row forces of the mode e^{rs} (W row
+    /// ρAv² r − D r² β, θ row D r β), T·(1, β_i) = f(r_i): T's θ column is (f(r₂) − f(r₁))/(β₂ − β₁) and its U column
+    /// f(r₁) − β₁·that — for roots closer than √ε (a double root, where both differences vanish) their limits
+    /// f′/β′ and f − β f′/β′ at the mean root.
+    fn new(roots: [Complex64; 2], beta: impl Fn(Complex64) -> (Complex64, Complex64), rho_v2: f64, d: f64) -> Self {
+        let force = |r: Complex64| {
+            let (b, db) = beta(r);
+            let value = [r * rho_v2 - r * r * b * d, r * b * d];
+            let derivative = [-(r * b * 2.0 + r * r * db) * d + rho_v2, (b + r * db) * d];
+            (value, derivative, b, db)
         };
-        // The row forces per unit amplitude of each mode, times the amplitudes per unit U and per unit θ.
-        let per_mode = |i: usize| [roots[i] * rho_v2 - roots[i] * roots[i] * beta[i] * d, roots[i] * beta[i] * d];
-        for (column, (u, theta)) in [(1.0, 0.0), (0.0, 1.0)].into_iter().enumerate() {
-            if let Some(a) = relation.tail_modes(u, theta) {
-                for row in 0..2 {
-                    relation.traction[row][column] = (a[0] * per_mode(0)[row] + a[1] * per_mode(1)[row]).re;
-                }
-            }
+        let (f1, _, b1, _) = force(roots[0]);
+        let (f2, _, b2, _) = force(roots[1]);
+        let close = (roots[1] - roots[0]).norm() <= 1e-8 * roots[0].norm().max(roots[1].norm());
+        let mut traction = [[0.0; 2]; 2];
+        for row in 0..2 {
+            let (theta, u) = if close {
+                let (f, df, b, db) = force(0.5 * (roots[0] + roots[1]));
+                (df[row] / db, f[row] - b * df[row] / db)
+            } else {
+                let theta = (f2[row] - f1[row]) / (b2 - b1);
+                (theta, f1[row] - b1 * theta)
+            };
+            traction[row] = [u.re, theta.re];
         }
-        relation
+        let decay = roots[0].re.abs().min(roots[1].re.abs());
+        Self { traction, decay, roots, rotation_per_deflection: [beta(roots[0]).0, beta(roots[1]).0] }
     }
 
     /// The amplitudes (a₁, a₂) of the decaying modes that continue the wave past this end from its end values
@@ -130,22 +140,30 @@ impl FarField {
         };
         let rho_v2 = beam.mass_per_length() * speed * speed;
         let d = beam.rotary_inertia() * speed * speed - beam.bending_stiffness();
-        let (roots, beta): ([Complex64; 4], [Complex64; 4]) = match beam.shear_stiffness() {
+        let end = |roots: [Complex64; 4], i: usize, beta: &dyn Fn(Complex64) -> (Complex64, Complex64)| {
+            EndRelation::new([roots[i], roots[i + 1]], beta, rho_v2, d)
+        };
+        let (ahead, behind) = match beam.shear_stiffness() {
             None => {
                 // The roots are the infinite beam's (fem_beam::reference), in ξ = βs: r_s = β r_ξ; θ = W′.
                 let infinite = InfiniteBeam::new(beam, &foundation)?;
                 let state = infinite.steady_state(speed, 1.0).map_err(no_condition)?;
                 let roots = state.roots().map(|r| r * infinite.beta());
-                (roots, roots)
+                let slope = |r: Complex64| (r, Complex64::new(1.0, 0.0));
+                (end(roots, 0, &slope), end(roots, 2, &slope))
             }
-            Some(_) => {
+            Some(g) => {
                 let moving = MovingTimoshenko::new(beam, &foundation)?;
                 let roots = moving.decaying_wavenumbers(speed).map_err(no_condition)?;
-                (roots, roots.map(|r| moving.rotation_per_deflection(r, speed)))
+                // β = G r/(G + D r²), dβ/dr = G (G − D r²)/(G + D r²)².
+                let rotation = |r: Complex64| {
+                    let denominator = r * r * d + g;
+                    (moving.rotation_per_deflection(r, speed), (-(r * r * d) + g) * g / (denominator * denominator))
+                };
+                (end(roots, 0, &rotation), end(roots, 2, &rotation))
             }
         };
-        let end = |i: usize| EndRelation::new([roots[i], roots[i + 1]], [beta[i], beta[i + 1]], rho_v2, d);
-        Ok(Self { ahead: end(0), behind: end(2) })
+        Ok(Self { ahead, behind })
     }
 }
 
@@ -207,6 +225,24 @@ mod tests {
                     assert!((theta_row - r * beta * d).norm() <= 1e-9 * (r * beta * d).norm());
                 }
             }
+        }
+    }
+
+    /// A double root (the two kept modes merging) has the limit of the distinct roots' relation: for
+    /// Euler–Bernoulli W″ = −π U + σ W′ and W‴ = −πσ U + (σ² − π) W′ with σ = 2r, π = r², so
+    /// T = [[−2EI r³, 3EI r² + ρAv²], [EI r², −2EI r]]; and roots 1e-5 apart lie within 1e-4 of it.
+    #[test]
+    fn a_double_root_takes_the_limit() {
+        let (ei, rho_v2, r) = (6.4e6, 3e5, Complex64::new(-0.7, 0.0));
+        let slope = |r: Complex64| (r, Complex64::new(1.0, 0.0));
+        let exact =
+            [[-2.0 * ei * r.re.powi(3), 3.0 * ei * r.re.powi(2) + rho_v2], [ei * r.re.powi(2), -2.0 * ei * r.re]];
+        let double = EndRelation::new([r, r], slope, rho_v2, -ei);
+        let apart = EndRelation::new([r, r + 1e-5], slope, rho_v2, -ei);
+        for (i, j) in [(0, 0), (0, 1), (1, 0), (1, 1)] {
+            let scale = exact[i][j].abs();
+            assert!((double.traction[i][j] - exact[i][j]).abs() <= 1e-12 * scale, "{i}{j}: {:?}", double.traction);
+            assert!((apart.traction[i][j] - exact[i][j]).abs() <= 1e-4 * scale, "{i}{j}: {:?}", apart.traction);
         }
     }
 
