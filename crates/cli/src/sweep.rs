@@ -81,7 +81,11 @@ pub fn run(args: &SweepArgs) -> Result<()> {
     let runner =
         runner.with_progress(&progress).with_journal(journal.as_ref()).with_stop(crate::interrupt::stop_flag());
     let runner = if args.quiet { runner } else { runner.with_estimate(&announce) };
-    let rows = crate::interrupt::explain(runner.speed_sweep_keeping(&case, &speeds), journal.as_ref())?;
+    let (step, tolerance) = critical_tolerance(&speeds);
+    // With --critical the refinement's runs follow the sweep: counted in its estimate.
+    let refinements = if args.critical { runner::refinement_runs(step, tolerance, 0) } else { 0 };
+    let sweeping = runner.clone().with_refinement(refinements);
+    let rows = crate::interrupt::explain(sweeping.speed_sweep_keeping(&case, &speeds), journal.as_ref())?;
     bar.finish_and_clear();
     let (points, failed) = (finished(&rows), failures(&rows));
     let mut csv = Vec::new();
@@ -91,8 +95,6 @@ pub fn run(args: &SweepArgs) -> Result<()> {
     }
     write_csv_rows(&rows, &mut csv)?;
     let critical = if args.critical && failed.is_empty() {
-        let step = speeds.windows(2).map(|w| w[1] - w[0]).fold(f64::INFINITY, f64::min);
-        let tolerance = if step.is_finite() { (0.01 * step).max(1e-3) } else { 0.1 };
         let c = crate::interrupt::explain(critical_speed(&case, &points, tolerance, &runner), journal.as_ref())?;
         if !args.quiet {
             eprintln!("{}", c.describe());
@@ -178,4 +180,11 @@ fn write_files(
     let metadata = report::sweep_file::SweepFile::of(name, scenario, critical, failed);
     write_atomically(&metadata_beside(path), serde_json::to_string_pretty(&metadata)?.as_bytes())?;
     Ok(())
+}
+
+/// The sweep's smallest speed step and the tolerance (m/s) `--critical` refines the critical speed to: 1 % of that
+/// step (at least 1 mm/s; 0.1 m/s for a single speed, whose step counts as 10 m/s).
+fn critical_tolerance(speeds: &[f64]) -> (f64, f64) {
+    let step = speeds.windows(2).map(|w| w[1] - w[0]).fold(f64::INFINITY, f64::min);
+    if step.is_finite() { (step, (0.01 * step).max(1e-3)) } else { (10.0, 0.1) }
 }

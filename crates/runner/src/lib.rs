@@ -25,7 +25,7 @@ pub use critical::{CriticalSpeed, critical_speed};
 pub use fem_beam::golden::golden_section;
 pub use journal::Journal;
 pub use optimal_force::{OptimalForce, log_spaced, optimal_device_force, refine_device_force, refine_from_scan};
-pub use peak::{Metric, PeakLocation, RefinedPeak, refine_maximum, unrefined};
+pub use peak::{Metric, PeakLocation, RefinedPeak, refine_maximum, refinement_runs, unrefined};
 pub use pool::{Runner, worker_threads};
 pub use sleeper_columns::{SLEEPER_CSV_COLUMNS, SleeperColumns};
 

@@ -101,6 +101,15 @@ pub fn unrefined(sweep: &[SweepPoint], metric: Metric) -> Option<RefinedPeak> {
     })
 }
 
+/// The runs [`refine_maximum`] adds to a sweep of speed step `step` (m/s) for `tolerance` and `scan`, for estimates
+/// made before the sweep: `scan` evenly spaced speeds in the bracket of two steps around the sweep's best, then golden
+/// section between the neighbours of the best of them (a bracket of 2·2step/(scan + 1)).
+pub fn refinement_runs(step: f64, tolerance: f64, scan: usize) -> usize {
+    let bracket = 2.0 * step;
+    let golden = if scan > 0 { 2.0 * bracket / (scan + 1) as f64 } else { bracket };
+    scan + fem_beam::golden::golden_section_evaluations(golden, tolerance)
+}
+
 /// Refine the sweep's maximum of `metric` to `tolerance` (m/s) on fresh runs of `case` (see the module
 /// documentation); `scan` interior samples of the bracket first (0: golden section alone). The sweep must be in
 /// increasing speed; its spacing need not be even.

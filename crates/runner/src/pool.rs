@@ -36,6 +36,9 @@ pub struct Runner<'a> {
     /// Raised to stop: runs not yet started fail with [`StudyError::Interrupted`], runs in flight stop at their next
     /// step.
     pub stop: Option<&'a AtomicBool>,
+    /// Runs each case of a sweep will take after it (a critical speed's refinement, [`crate::refinement_runs`]),
+    /// counted in the sweep's estimate. Default 0.
+    pub refinement_runs: usize,
 }
 
 static NO_PROGRESS: fn(usize) = |_| {};
@@ -49,7 +52,14 @@ impl Runner<'static> {
             .num_threads(threads)
             .build()
             .map_err(|e| invalid("jobs", jobs, format!("cannot start {threads} worker threads: {e}")))?;
-        Ok(Runner { pool: Arc::new(pool), progress: &NO_PROGRESS, estimate: &NO_ESTIMATE, journal: None, stop: None })
+        Ok(Runner {
+            pool: Arc::new(pool),
+            progress: &NO_PROGRESS,
+            estimate: &NO_ESTIMATE,
+            journal: None,
+            stop: None,
+            refinement_runs: 0,
+        })
     }
 }
 
@@ -86,6 +96,12 @@ impl<'a> Runner<'a> {
         Runner { estimate, ..self }
     }
 
+    /// The same, counting `runs` more of each case of a sweep in its estimate: those that refine its critical speed
+    /// after it ([`crate::refinement_runs`]).
+    pub fn with_refinement(self, runs: usize) -> Self {
+        Runner { refinement_runs: runs, ..self }
+    }
+
     /// The same without progress reports or estimates (for the short loops that follow a study's main batch).
     pub fn silent(&self) -> Self {
         Runner { progress: &NO_PROGRESS, estimate: &NO_ESTIMATE, ..self.clone() }
@@ -101,12 +117,14 @@ impl<'a> Runner<'a> {
         self.announce(Estimate::of_runs(cases.iter().map(RunCost::of), self.threads()));
     }
 
-    /// Announce the runs of `cases` at these speeds (case index, speed) that the journal does not already hold.
+    /// Announce the runs of `cases` at these speeds (case index, speed) that the journal does not already hold, and
+    /// the [`Runner::refinement_runs`] that follow each case.
     pub fn announce_points(&self, cases: &[Case], pairs: &[(usize, f64)]) {
         let costs: Vec<RunCost> = cases.iter().map(RunCost::of).collect();
         let to_run =
             pairs.iter().filter(|&&(c, speed)| !self.journal.is_some_and(|j| j.contains(&point_key(&cases[c], speed))));
-        self.announce(Estimate::of_runs(to_run.map(|&(c, _)| costs[c]), self.threads()));
+        let refinements = costs.iter().flat_map(|&cost| std::iter::repeat_n(cost, self.refinement_runs));
+        self.announce(Estimate::of_runs(to_run.map(|&(c, _)| costs[c]).chain(refinements), self.threads()));
     }
 
     /// The number of worker threads.

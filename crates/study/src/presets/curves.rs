@@ -42,9 +42,11 @@ pub(super) fn sweep_curves(
     }
     let cases = scenarios.iter().map(|(_, s)| s.build()).collect::<Result<Vec<_>>>()?;
     let labels: Vec<Vec<(String, f64)>> = scenarios.into_iter().map(|(l, _)| l).collect();
-    let rows = runner.sweep_many_keeping(&cases, speeds)?;
-    let points: Vec<Vec<SweepPoint>> = rows.iter().map(|r| finished(r)).collect();
     let step = speeds[1] - speeds[0];
+    // The refinement of each curve's critical speed follows the sweep: counted in its estimate.
+    let refinements = runner::refinement_runs(step, 0.02 * step, 0);
+    let rows = runner.clone().with_refinement(refinements).sweep_many_keeping(&cases, speeds)?;
+    let points: Vec<Vec<SweepPoint>> = rows.iter().map(|r| finished(r)).collect();
     let curves: Vec<usize> = (0..cases.len()).collect();
     let refined = runner.silent().map_each(&curves, |&c| critical_speed(&cases[c], &points[c], 0.02 * step, runner))?;
     let mut failures = failed_runs(&rows, |c| describe(&labels[c]));

@@ -158,13 +158,15 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
     // resolution the sweep's bracket); each is recorded, and the study goes on.
     let curve_name =
         |c: usize| format!("HSLM-A{}, {}", train_of(c), if c < TRAINS { "no friction" } else { "friction" });
-    let rows = runner.sweep_grids_keeping(&cases, &grids)?;
+    let tolerance = 0.02 * (speeds[1] - speeds[0]);
+    // Each curve's two peaks (deflection, acceleration) are refined after the sweep: counted in its estimate.
+    let refinements = 2 * runner::refinement_runs(speeds[1] - speeds[0], tolerance, PEAK_SCAN);
+    let rows = runner.clone().with_refinement(refinements).sweep_grids_keeping(&cases, &grids)?;
     let mut failures = failed_runs(&rows, curve_name);
     let points: Vec<Vec<SweepPoint>> = rows.iter().map(|r| finished(r)).collect();
     if let Some(c) = points.iter().position(Vec::is_empty) {
         return Err(nothing_finished(curve_name(c), &failures));
     }
-    let tolerance = 0.02 * (speeds[1] - speeds[0]);
     let limit = span.then(|| base.output.deck_track.acceleration_limit());
     let refined = refine_peaks(&cases, &points, (tolerance, limit), runner, &mut |c, e| {
         failures.push(StudyFailure { case: curve_name(c), speed: None, error: format!("peaks not refined: {e}") })
