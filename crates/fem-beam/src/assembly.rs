@@ -162,6 +162,23 @@ impl BeamModel {
         Ok(self)
     }
 
+    /// The track's weight (N over the free DOFs, downward negative): the rail's ρA·g as consistent loads (a
+    /// Timoshenko element's over a whole element are Hermite's), each sleeper's m_s·g on its z and each ballast
+    /// body's m_b·g on its y (docs/theory.md §13, §18).
+    pub fn self_weight(&self) -> Result<Vec<f64>> {
+        let rail = crate::load::LoadVector::uniform(&self.mesh, -self.beam.mass_per_length() * crate::GRAVITY)?;
+        let mut weight = rail.to_free(&self.mesh, &self.dofs);
+        if let Some((sleepers, nodes)) = &self.sleepers {
+            for s in 0..nodes.len() {
+                weight[self.dofs.sleeper(s)] -= sleepers.mass * crate::GRAVITY;
+                if let (Some(y), Some(body)) = (self.dofs.ballast_body(s), sleepers.ballast_body) {
+                    weight[y] -= body.mass * crate::GRAVITY;
+                }
+            }
+        }
+        Ok(weight)
+    }
+
     /// The sleepers and the node under each, if the rail lies on discrete supports.
     pub fn sleepers(&self) -> Option<(&Sleepers, &[usize])> {
         self.sleepers.as_ref().map(|(s, nodes)| (s, nodes.as_slice()))

@@ -342,6 +342,11 @@ impl Sleepers {
         self.exceptions.iter().any(|e| e.covers(s))
     }
 
+    /// Whether some sleeper's ballast cannot pull (tensionless or voided).
+    pub fn has_unilateral_ballast(&self) -> bool {
+        self.exceptions.iter().any(|e| e.contact != BallastContact::Bonded)
+    }
+
     /// Whether every sleeper is linear (no unilateral ballast, no friction): what the receptance needs.
     pub fn is_linear(&self) -> bool {
         self.exceptions.iter().all(|e| e.contact == BallastContact::Bonded && e.friction == 0.0)

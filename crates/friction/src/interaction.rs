@@ -216,6 +216,11 @@ impl InteractionSet {
         &mut self.rows[j]
     }
 
+    /// The law of interaction j, to change in place (a gap moved to a settled state).
+    pub fn law_mut(&mut self, j: usize) -> &mut Law {
+        &mut self.laws[j]
+    }
+
     /// Append all interactions of another set.
     pub fn extend(&mut self, other: InteractionSet) {
         self.rows.extend(other.rows);

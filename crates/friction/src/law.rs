@@ -93,6 +93,21 @@ impl Law {
         }
     }
 
+    /// The same law with its gap moved by `shift` (m): the law seen from a state where the row reads `shift` more
+    /// (friction, which has no gap, unchanged).
+    pub fn shifted(&self, shift: f64) -> Self {
+        let mut law = *self;
+        match &mut law {
+            Law::Coulomb { .. } => {}
+            Law::Signorini { gap, .. }
+            | Law::Compliant { gap, .. }
+            | Law::Soil { gap, .. }
+            | Law::Spring { gap, .. }
+            | Law::Hertz { gap, .. } => *gap += shift,
+        }
+        law
+    }
+
     /// The stiffness k (N/m) of a linear spring law and whether it also pulls: the compliant stop and the soil push
     /// only, the bilateral spring pulls as well; None for friction, rigid contact and Hertz (nonlinear). What a
     /// static solve takes of a law.

@@ -113,12 +113,41 @@ impl Scenario {
         }
     }
 
-    /// Everything placed on `model`: the friction sections, then the soil's (a window of the track, or the beam).
+    /// Everything placed on `model`: the friction sections, then the soil's and the sleepers' unilateral laws (a
+    /// window of the track, or the beam), settled together under the track's weight where it is kept
+    /// ([`Self::keeps_weight`]).
     pub fn placed_on(&self, model: &BeamModel) -> Result<PlacedInteractions> {
         let mut interactions = self.interactions(model)?;
-        interactions.extend(self.foundation_sections(model)?);
-        interactions.extend(track::sleeper_layout::sleeper_interactions(model));
+        let mut springs = self.foundation_sections(model)?;
+        springs.extend(track::sleeper_layout::sleeper_interactions(model));
+        if self.keeps_weight(model)? && springs.has_springs() {
+            springs = track::unilateral_statics::settle(model, springs, &model.self_weight()?)?.0;
+        }
+        interactions.extend(springs);
         Ok(interactions)
+    }
+
+    /// Whether the track's weight rests on unilateral supports before the load comes: a nonlinear soil's
+    /// `foundation.self_weight`, unilateral sleepers' `sleepers.self_weight` — one weight, so where both are there
+    /// they must agree.
+    fn keeps_weight(&self, model: &BeamModel) -> Result<bool> {
+        let soil = (!model.foundation().law.is_linear()).then_some(self.foundation.self_weight);
+        let sleepers = self
+            .sleepers
+            .as_ref()
+            .filter(|_| model.sleepers().is_some_and(|(s, _)| s.has_unilateral_ballast()))
+            .map(|s| s.self_weight);
+        match (soil, sleepers) {
+            (Some(a), Some(b)) if a != b => Err(invalid(
+                "sleepers.self_weight",
+                b,
+                format!(
+                    "differs from foundation.self_weight = {a}: the track has one weight, resting on its soil and \
+                     its sleepers' ballast alike; give both the same value"
+                ),
+            )),
+            (a, b) => Ok(a.or(b).unwrap_or(false)),
+        }
     }
 
     /// Refuse a weightless rail on a tensionless soil with a free end: with the load near that end the rail bears on
@@ -151,11 +180,9 @@ impl Scenario {
                 "belongs to a tensionless or bilinear soil: a linear one needs no soil sections and no settlement",
             ));
         }
-        let sections = FoundationSections {
-            subdivisions: f.subdivisions,
-            self_weight: f.self_weight,
-            ..FoundationSections::default()
-        };
+        // Unsettled: placed_on settles the soil with the sleepers under the one weight.
+        let sections =
+            FoundationSections { subdivisions: f.subdivisions, self_weight: false, ..FoundationSections::default() };
         Ok(sections.interactions(model)?)
     }
 

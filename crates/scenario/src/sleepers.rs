@@ -27,6 +27,9 @@ pub struct SleepersSection {
     /// The subgrade under a ballast body: what is left out takes [`BallastBody::TYPICAL_SUBGRADE`]'s value.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub subgrade: Option<LayerSection>,
+    /// Whether the track's weight (rail, sleepers, ballast bodies) rests on the ballast before the load comes: voids
+    /// are measured under it, ballast that cannot pull is preloaded by it (docs/theory.md §18). Default true.
+    pub self_weight: bool,
     /// Sleepers that differ from the rest (later entries over earlier ones).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub exceptions: Vec<ExceptionSection>,
@@ -166,6 +169,7 @@ impl Default for SleepersSection {
             pad: LayerSection::default(),
             ballast: BallastSection::default(),
             subgrade: None,
+            self_weight: true,
             exceptions: Vec::new(),
         }
     }
@@ -254,5 +258,19 @@ mod tests {
         // Written back as read.
         let back: SleepersSection = toml::from_str(&toml::to_string(&section).unwrap()).unwrap();
         assert_eq!(back, section);
+    }
+
+    /// The track has one weight: a tensionless soil and tensionless sleepers must agree on keeping it.
+    #[test]
+    fn soil_and_sleepers_share_one_weight() {
+        let text = |weight: bool| {
+            format!(
+                "[foundation]\nlaw = \"tensionless\"\n[sleepers]\nself_weight = {weight}\n[[sleepers.exceptions]]\n\
+                 index = [0, 9]\nlaw = \"tensionless\"\n[mesh]\nlength = 6.0\nelements = 40\n"
+            )
+        };
+        assert!(crate::Scenario::from_toml(&text(true), "t.toml").unwrap().build().is_ok());
+        let error = crate::Scenario::from_toml(&text(false), "t.toml").unwrap().build().unwrap_err().to_string();
+        assert!(error.contains("sleepers.self_weight = false") && error.contains("foundation.self_weight"), "{error}");
     }
 }

@@ -5,15 +5,15 @@
 //! so it goes through the one interaction engine, alone or beside ballast friction.
 //!
 //! The rail's self-weight q = ρA·g is kept (with a nonlinear law the static settlement q/k_c decides where the rail
-//! lifts off): the placed sections hold the static state q_s under it, found by
-//! [`crate::unilateral_statics::static_deflection`], as their gaps g₀ₛ = H_s q_s, and the run's preload
-//! f₀ = P − K q_s keeps q = 0 (the state a run reports deflections from) in equilibrium.
+//! lifts off): [`crate::unilateral_statics::settle`] places the sections in the static state q_s under it, as their
+//! gaps g₀ₛ = H_s q_s, and the run's preload f₀ = P − K q_s keeps q = 0 (the state a run reports deflections from) in
+//! equilibrium.
 
 use crate::error::Result;
 use crate::placed::{PlacedInteractions, SectionKind};
 use crate::section_quadrature::{self, Quadrature, QuadratureSection};
-use crate::unilateral_statics::static_deflection;
-use fem_beam::{BeamModel, GRAVITY, LoadVector};
+use crate::unilateral_statics::settle;
+use fem_beam::BeamModel;
 use friction::Law;
 
 /// The sections of a nonlinear foundation and its self-weight.
@@ -50,32 +50,15 @@ impl FoundationSections {
             return Ok(PlacedInteractions::new());
         }
         let unilateral = foundation.unilateral_stiffness();
-        let sections = section_quadrature::sections(model, self.subdivisions, self.quadrature);
-        let place = |gaps: Option<&[f64]>| {
-            let mut set = PlacedInteractions::new();
-            for (s, QuadratureSection { row, weight, x }) in sections.iter().enumerate() {
-                let law = Law::Soil { gap: gaps.map_or(0.0, |g| g[s]), stiffness: unilateral * weight };
-                set.push(row.clone(), law, *x, SectionKind::Foundation);
-            }
-            set
-        };
-        let untouched = place(None);
+        let mut untouched = PlacedInteractions::new();
+        for QuadratureSection { row, weight, x } in
+            section_quadrature::sections(model, self.subdivisions, self.quadrature)
+        {
+            untouched.push(row, Law::Soil { gap: 0.0, stiffness: unilateral * weight }, x, SectionKind::Foundation);
+        }
         if !self.self_weight {
             return Ok(untouched);
         }
-        let (mesh, dofs) = (model.mesh(), model.dofs());
-        let weight = LoadVector::uniform(mesh, -model.beam().mass_per_length() * GRAVITY)?.to_free(mesh, dofs);
-        let settled = static_deflection(model, &untouched, &weight)?;
-        let gaps: Vec<f64> =
-            sections.iter().map(|s| if s.row.is_empty() { 0.0 } else { s.row.dot(&settled) }).collect();
-        let mut set = place(Some(&gaps));
-        // f₀ = P − K q_s: with the sections' forces at their gaps it balances (docs/theory.md §13).
-        let mut preload = vec![0.0; settled.len()];
-        model.stiffness().mul_vec(&settled, &mut preload);
-        for (f, p) in preload.iter_mut().zip(&weight) {
-            *f = p - *f;
-        }
-        set.add_preload(&preload);
-        Ok(set)
+        Ok(settle(model, untouched, &model.self_weight()?)?.0)
     }
 }

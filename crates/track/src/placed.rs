@@ -63,6 +63,34 @@ impl PlacedInteractions {
         self.add_preload(&other.preload);
     }
 
+    /// Whether interaction j is a void: a law with a positive gap, open at rest.
+    fn is_void(&self, j: usize) -> bool {
+        self.interactions.laws()[j].gap().is_some_and(|g| g > 0.0)
+    }
+
+    /// The same without its voids ([`Self::is_void`]): what holds the track at rest.
+    pub(crate) fn without_voids(&self) -> Self {
+        let mut kept = Self { preload: self.preload.clone(), ..Self::default() };
+        for j in (0..self.len()).filter(|&j| !self.is_void(j)) {
+            let (rows, laws) = (self.interactions.rows(), self.interactions.laws());
+            kept.push(rows[j].clone(), laws[j], self.positions[j], self.kinds[j]);
+        }
+        kept
+    }
+
+    /// Move the gap of every law touching at rest (gap ≤ 0) to what its row reads in the state `q` (free DOFs):
+    /// g → g + H q ([`Law::shifted`]); a void keeps its gap, measured in that state.
+    pub(crate) fn shift_gaps(&mut self, q: &[f64]) {
+        for j in 0..self.interactions.len() {
+            if self.is_void(j) {
+                continue;
+            }
+            let shift = self.interactions.rows()[j].dot(q);
+            let law = self.interactions.law_mut(j);
+            *law = law.shifted(shift);
+        }
+    }
+
     /// Add `force` (N, free DOFs) to the preload f₀.
     pub(crate) fn add_preload(&mut self, force: &[f64]) {
         if self.preload.len() < force.len() {

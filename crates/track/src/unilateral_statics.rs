@@ -69,3 +69,25 @@ fn unheld() -> TrackError {
             .into(),
     }
 }
+
+/// `placed` settled under `weight` (N, free DOFs of the beam; docs/theory.md §13, §18): the static state q_s under it
+/// ([`static_deflection`]) on the laws touching at rest — a void (a law with a positive gap: a voided sleeper) is a
+/// gap measured in the settled state, open there and carrying nothing —, each touching law's gap moved to what its row
+/// reads there, g + H q_s (negative: the weight presses it), and the preload f₀ = P − K q_s that, with the laws'
+/// forces at those gaps, holds q = 0 in equilibrium — the settled state a run reports deflections from. Returns the
+/// settled interactions and q_s.
+pub fn settle(
+    model: &fem_beam::BeamModel,
+    mut placed: PlacedInteractions,
+    weight: &[f64],
+) -> Result<(PlacedInteractions, Vec<f64>)> {
+    let settled = static_deflection(model, &placed.without_voids(), weight)?;
+    placed.shift_gaps(&settled);
+    let mut preload = vec![0.0; settled.len()];
+    model.stiffness().mul_vec(&settled, &mut preload);
+    for (f, p) in preload.iter_mut().zip(weight) {
+        *f = p - *f;
+    }
+    placed.add_preload(&preload);
+    Ok((placed, settled))
+}

@@ -12,6 +12,7 @@ mod runs {
     mod homotopy;
     mod linear;
     mod nonlinear_foundation;
+    mod sleeper_weight;
     mod sleepers;
     mod solver_fallback;
     mod solvers_agree;

@@ -91,6 +91,7 @@ pub(super) fn sleepers_for_soil(s: &Scenario) -> scenario::error::Result<Sleeper
             mass: None,
         },
         subgrade: None,
+        self_weight: true,
         exceptions: Vec::new(),
     })
 }

@@ -156,7 +156,7 @@ impl<'a> Simulation<'a> {
         let mut deflections = DeflectionRecord::new(self.model, record, q0, start, crossing_steps);
         let mut sections = SectionRecords::new(self.model, self.interactions, &record.sections, total_steps);
         let mut lift_off = lift_off::LiftOffRecord::new(self.interactions);
-        let mut sleepers = sleeper_record::SleeperRecord::new(self.model);
+        let mut sleepers = sleeper_record::SleeperRecord::new(self.model, self.interactions);
         sections.start((q0, v0), &run.setup.load, start)?;
         let mut tally = SolverTally::default();
         let clock = Instant::now();

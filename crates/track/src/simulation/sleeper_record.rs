@@ -3,14 +3,17 @@
 //! largest gap that opened under it; and the rail's deflection under the first load at every step, from which the
 //! report reads its variation over a bay (above a sleeper against mid-span).
 //!
-//! Pad P = k_p(z − w) + c_p(ż − ẇ), ballast B = k_b·(−u) − c_b u̇ where bonded, k_b⟨−(u + g)⟩₊ − c_b u̇ where
-//! unilateral with void g, u = z − y the sleeper's place over the ballast (y = 0 on rigidly founded ballast, the
-//! ballast body's DOF in Zhai's two layers), subgrade G = −k_g y − c_g ẏ; w the rail's deflection over the sleeper,
-//! z the sleeper's (m, upward).
+//! Pad P = k_p(z − w) + c_p(ż − ẇ), ballast B = k_b·(−u) − c_b u̇ where bonded, k_b⟨−(u + g)⟩₊ − k_b⟨−g⟩₊ − c_b u̇
+//! where unilateral with the law's gap g (the void, or under the track's weight the gap in the settled state, negative
+//! where the weight presses the sleeper on), u = z − y the sleeper's place over the ballast (y = 0 on rigidly founded
+//! ballast, the ballast body's DOF in Zhai's two layers), subgrade G = −k_g y − c_g ẏ; w the rail's deflection over
+//! the sleeper, z the sleeper's (m, upward). Like the deflections, the forces are counted from the settled state:
+//! the weight's share is not in them.
 
 use super::records::{Record, StepState};
 use super::results::{SleeperPeaks, SleeperResults};
 use crate::error::Result;
+use crate::placed::{PlacedInteractions, SectionKind};
 use fem_beam::{BallastContact, BeamModel, Discretisation, SleeperSupport};
 
 /// A followed sleeper: its DOFs and layers.
@@ -20,6 +23,8 @@ struct Followed {
     /// The ballast body's DOF, if any.
     y: Option<usize>,
     support: SleeperSupport,
+    /// Unilateral ballast: its law's gap (m), the void or the settled state's.
+    gap: f64,
     peaks: SleeperPeaks,
 }
 
@@ -32,20 +37,32 @@ pub(super) struct SleeperRecord<'m> {
 }
 
 impl<'m> SleeperRecord<'m> {
-    pub(super) fn new(model: &'m BeamModel) -> Self {
+    /// The record of the sleepers of `model`, their unilateral laws as `placed` holds them.
+    pub(super) fn new(model: &'m BeamModel, placed: &PlacedInteractions) -> Self {
         let mut results = SleeperResults::default();
         let mut sleepers = Vec::new();
         if let Some((s, nodes)) = model.sleepers() {
             let (mesh, dofs) = (model.mesh(), model.dofs());
             (results.spacing, results.first) = (s.spacing, s.first);
+            let law_gap = |x: f64| {
+                let laws = placed.interactions().laws();
+                let mut at = placed.positions().iter().zip(placed.kinds());
+                let j = at.position(|(&p, &k)| k == SectionKind::SleeperBallast && p == x)?;
+                laws[j].gap()
+            };
             for (i, &node) in nodes.iter().enumerate() {
                 let support = s.support(i);
+                let gap = match support.contact {
+                    BallastContact::Unilateral { gap } => law_gap(mesh.node_x(node)).unwrap_or(gap),
+                    BallastContact::Bonded => 0.0,
+                };
                 let unilateral = matches!(support.contact, BallastContact::Unilateral { .. });
                 sleepers.push(Followed {
                     w: dofs.free_index(2 * node),
                     z: dofs.sleeper(i),
                     y: dofs.ballast_body(i),
                     support,
+                    gap,
                     peaks: SleeperPeaks {
                         x: mesh.node_x(node),
                         pad_force: (0.0, f64::NAN),
@@ -94,15 +111,15 @@ impl Record for SleeperRecord<'_> {
             let (k, c) = (f.support.ballast.stiffness, f.support.ballast.damping);
             let spring = match f.support.contact {
                 BallastContact::Bonded => -k * u,
-                BallastContact::Unilateral { gap } => {
-                    let opening = u + gap;
+                BallastContact::Unilateral { .. } => {
+                    let opening = u + f.gap;
                     if opening <= 0.0 && f.peaks.first_contact.is_none() {
                         f.peaks.first_contact = Some(s.time);
                     }
                     if let Some(largest) = f.peaks.largest_gap.as_mut() {
                         *largest = largest.max(opening);
                     }
-                    k * (-opening).max(0.0)
+                    k * ((-opening).max(0.0) - (-f.gap).max(0.0))
                 }
             };
             let ballast = spring - c * du;
