@@ -11,9 +11,11 @@ use stationary::StationaryProblem;
 /// observers (measured 7.9e-9 s with 40 002 DOFs × 20 000 steps, 1.4e-8 s on the 402-DOF reference case, where the
 /// fixed costs weigh more).
 const PER_DOF_STEP: f64 = 1.0e-8;
-/// Seconds per friction section and step (distributed friction on the reference track: 0.25–0.3 s for 799 sections
-/// × 2000 steps beyond the friction-free run; devices cost about the same per section).
-const PER_SECTION_STEP: f64 = 2.0e-7;
+/// Seconds per friction section and step: distributed friction on the reference track 0.25–0.3 s for 799 sections
+/// × 2000 steps beyond the friction-free run (1.7e-7); on 0.15 m elements near the critical speed, 5327 sections of
+/// 2–5 kN/m with 10–13 interior-point iterations a step, 3.3–4.3 s for 1998 steps (3.1e-7–4.0e-7, the
+/// sleeper-friction study's continuous twin); devices cost about the same per section. Between the two.
+const PER_SECTION_STEP: f64 = 3.0e-7;
 /// Seconds per wheel and step (a quarter car with Hertz contact on the reference track: 20 ms against 11 ms for the
 /// moving force over 2000 steps).
 const PER_WHEEL_STEP: f64 = 5.0e-6;
