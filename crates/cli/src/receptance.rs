@@ -47,10 +47,13 @@ fn parse_frequencies(text: &str) -> Result<Vec<f64>> {
     frequency_range(number(a)?, number(b)?, number(step)?).map_err(|e| rename(e, "--frequencies").into())
 }
 
-/// The library names its inputs as Python does (`frequencies`, `at`, `excite`); here they are flags.
+/// The library names the request's inputs as Python does (`frequencies`, `at`, `excite`); here they are flags
+/// (`frequencies` as `flag`). Every other field (the scenario's keys) keeps its name.
 fn rename(error: scenario::StudyError, flag: &str) -> scenario::StudyError {
     match error {
-        scenario::StudyError::InvalidField { path, value, allowed } if !path.contains('.') => {
+        scenario::StudyError::InvalidField { path, value, allowed }
+            if matches!(path.as_str(), "frequencies" | "at" | "excite") =>
+        {
             let flag = if path == "frequencies" { flag.to_string() } else { format!("--{path}") };
             scenario::StudyError::InvalidField { path: flag, value, allowed }
         }
