@@ -116,7 +116,8 @@ impl MovingFrame {
             }
         }
         let rho_v2 = rho_a * v * v;
-        // A free end carries no moment and no shear (W″ = W‴ = 0), only the convective term.
+        // A free end carries no moment and no shear (W″ = W‴ = 0; for Timoshenko Ψ′ = 0 and W′ = Ψ), only the
+        // convective term ρAv² W′ on the rotation DOF.
         match &far_field {
             None => {
                 matrix.add(n - 2, n - 1, rho_v2);

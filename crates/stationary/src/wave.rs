@@ -46,7 +46,8 @@ pub struct StationaryWave {
     pub slope: Vec<f64>,
     /// The rotation DOF θ at the nodes (rad): W′ for Euler–Bernoulli, the cross-section's Ψ for Timoshenko.
     pub rotation: Vec<f64>,
-    /// EI W″ (N·m, sagging positive), the mean of both elements' values at a node.
+    /// The bending moment EI W″ (EI Ψ′ for Timoshenko; N·m, sagging positive), the mean of both elements' values at
+    /// a node.
     pub moment: Vec<f64>,
     /// The soil's spring force on the rail from the settled state (N/m, upward positive), at the nodes.
     pub soil_reaction: Vec<f64>,
