@@ -115,7 +115,7 @@ impl Scenario {
 
     /// Everything placed on `model`: the friction sections, then the soil's and the sleepers' unilateral laws (a
     /// window of the track, or the beam), settled together under the track's weight where it is kept
-    /// ([`Self::keeps_weight`]).
+    /// (`foundation.self_weight`, `sleepers.self_weight`).
     pub fn placed_on(&self, model: &BeamModel) -> Result<PlacedInteractions> {
         let mut interactions = self.interactions(model)?;
         let mut springs = self.foundation_sections(model)?;
