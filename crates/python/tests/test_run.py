@@ -308,7 +308,7 @@ def test_an_exception_in_the_progress_callback_stops_the_work():
 def test_long_work_is_announced_before_it_starts(capsys):
     """Work estimated above 10 s says so on stderr before it starts, as the command line does (the estimate rule of
     study.cost): a stationary sweep of 20 000 speeds with friction (~8 min) and a sweep of 3000 runs with ballast
-    friction (~8 min on 2 threads), each stopped by its progress callback at the first poll; short work says nothing."""
+    friction (~12 min on 2 threads), each stopped by its progress callback at the first poll; short work says nothing."""
     def stop(fraction):
         raise RuntimeError("enough")
 
