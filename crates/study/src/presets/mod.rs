@@ -403,10 +403,21 @@ fn column_unit(column: &str) -> &'static str {
 
 /// Run `preset` on top of `base` (normally the reference case).
 pub fn run_preset(preset: Preset, resolution: Resolution, base: &Scenario, runner: &Runner) -> Result<StudyData> {
-    let data = (preset.entry().run)(resolution, base, runner)?;
+    let mut data = (preset.entry().run)(resolution, base, runner)?;
+    name_the_rail(preset, base, &mut data.plots);
     let header = data.csv.lines().next().unwrap_or_default();
     let columns = header.split(',').map(|c| (c.to_string(), column_unit(c))).collect();
     Ok(StudyData { columns, name: preset.name(), title: preset.title(), resolution: resolution.name(), ..data })
+}
+
+/// A figure pasted alone into a report names a rail that is not the default Euler–Bernoulli one, first in its
+/// subtitle (the receptance study draws both rails and says which in its legends).
+fn name_the_rail(preset: Preset, base: &Scenario, plots: &mut [PlotSpec]) {
+    let Some(rail) = base.beam.theory.unless_default().filter(|_| preset != Preset::Receptance) else { return };
+    for plot in plots {
+        plot.subtitle =
+            if plot.subtitle.is_empty() { format!("{rail} rail") } else { format!("{rail} rail; {}", plot.subtitle) };
+    }
 }
 
 /// On a track, what stands for an infinite one under long loads (`what`, e.g. "the trains"): absorbing zones of
@@ -472,4 +483,28 @@ pub(super) fn blank(runs: usize) -> StudyData {
 pub(super) fn mean_iterations<'a>(points: impl Iterator<Item = &'a SweepPoint>) -> f64 {
     let (sum, count) = points.fold((0.0, 0usize), |(s, c), p| (s + p.mean_iterations, c + 1));
     if count > 0 { sum / count as f64 } else { 0.0 }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_timoshenko_rail_is_named_on_every_figure_but_the_receptance_studys() {
+        let plot = |subtitle: &str| PlotSpec { subtitle: subtitle.into(), ..PlotSpec::new("p", "t", "x", "y") };
+        let timoshenko = Scenario::from_toml(
+            "[beam]\ntheory = \"timoshenko\"\nshear_modulus = 81e9\nshear_coefficient = 0.4\n",
+            "t.toml",
+        )
+        .unwrap();
+        let mut plots = vec![plot("solid: infinite track"), plot("")];
+        name_the_rail(Preset::StationaryWave, &timoshenko, &mut plots);
+        assert_eq!(plots[0].subtitle, "Timoshenko (G = 81 GPa, κ = 0.4) rail; solid: infinite track");
+        assert_eq!(plots[1].subtitle, "Timoshenko (G = 81 GPa, κ = 0.4) rail");
+        let mut receptance = vec![plot("both rails")];
+        name_the_rail(Preset::Receptance, &timoshenko, &mut receptance);
+        let mut euler = vec![plot("both rails")];
+        name_the_rail(Preset::StationaryWave, &Scenario::default(), &mut euler);
+        assert_eq!((receptance[0].subtitle.as_str(), euler[0].subtitle.as_str()), ("both rails", "both rails"));
+    }
 }
