@@ -67,7 +67,7 @@ impl EndRelation {
             traction[row] = [u.re, theta.re];
         }
         let decay = roots[0].re.abs().min(roots[1].re.abs());
-        Self { traction, decay, roots, rotation_per_deflection: [beta(roots[0]).0, beta(roots[1]).0] }
+        Self { traction, decay, roots, rotation_per_deflection: [b1, b2] }
     }
 
     /// The amplitudes (a₁, a₂) of the decaying modes that continue the wave past this end from its end values

@@ -6,6 +6,7 @@
 use crate::friction::SectionState;
 use crate::operator::MovingFrame;
 use crate::problem::StationaryProblem;
+use crate::rows::row_dot;
 use fem_beam::element::hermite;
 use fem_beam::{Extreme, LiftOffZone};
 
@@ -41,8 +42,7 @@ pub(crate) fn bending(problem: &StationaryProblem, frame: &MovingFrame, w: &[f64
     let mut count = vec![0.0; nodes];
     let mut slope_square = 0.0;
     for e in 0..nodes - 1 {
-        let q = &w[2 * e..2 * e + 4];
-        let at = |n: [f64; 4]| n.iter().zip(q).map(|(n, q)| n * q).sum::<f64>();
+        let at = |row: [f64; 4]| row_dot(e, &row, w);
         moment[e] += ei * at(element.curvature(0.0));
         moment[e + 1] += ei * at(element.curvature(1.0));
         slope[e] += at(element.shape_dx(0.0));
@@ -72,11 +72,8 @@ pub(crate) fn bending(problem: &StationaryProblem, frame: &MovingFrame, w: &[f64
 /// (the element's own W′ at the node, first order, left the balance 5.6e-3 off on 0.1 m elements).
 pub(crate) fn slope_under_load(frame: &MovingFrame, w: &[f64]) -> f64 {
     let (i, element) = (frame.load_node, frame.element);
-    let shear_strain = |e: usize| {
-        let q = &w[2 * e..2 * e + 4];
-        let at = |n: [f64; 4]| n.iter().zip(q).map(|(n, q)| n * q).sum::<f64>();
-        at(element.shape_dx(0.5)) - at(element.rotation(0.5))
-    };
+    let row = element.shear_strain();
+    let shear_strain = |e: usize| row_dot(e, &row, w);
     let elements = frame.nodes.len() - 1;
     let side = |near: Option<usize>, far: Option<usize>| match (near, far) {
         (Some(a), Some(b)) => 1.5 * shear_strain(a) - 0.5 * shear_strain(b),

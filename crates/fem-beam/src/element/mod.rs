@@ -92,6 +92,15 @@ impl Element {
         }
     }
 
+    /// The shear strain row γ = w′ − ψ, constant on the element: zero for Euler–Bernoulli, [`timoshenko::shear_strain`]
+    /// for Timoshenko.
+    pub fn shear_strain(&self) -> ElementVector {
+        match *self {
+            Element::Hermite { .. } => [0.0; 4],
+            Element::Timoshenko { length, phi } => timoshenko::shear_strain(length, phi),
+        }
+    }
+
     /// The beam's stiffness at bending stiffness `ei` (N·m²), with shear for Timoshenko.
     pub fn stiffness(&self, ei: f64) -> ElementMatrix {
         match *self {
