@@ -45,7 +45,7 @@ fn friction_free_against_bare_solves(c: &mut Criterion) {
     let h = settings.integration.load_advance / settings.moving.speed;
     let m_hat = nscd::stepper::iteration_matrix(
         &system,
-        nscd::stepper::Integration { theta: settings.integration.theta, step: h },
+        nscd::stepper::Integration { scheme: settings.integration.scheme(), step: h },
     );
     let factor = m_hat.factor().unwrap();
     let steps = (model.mesh().length / settings.integration.load_advance).round() as usize;

@@ -47,7 +47,7 @@ fn the_receptance_is_the_struck_tracks_response() {
     let system = track::system::beam_system(&model);
     let n = model.dofs().free_len();
     let none = track::PlacedInteractions::new();
-    let integration = Integration { theta: 0.5, step: h };
+    let integration = Integration::theta(0.5, h);
     let mut stepper = MoreauJean::build(
         &system,
         none.interactions().clone(),

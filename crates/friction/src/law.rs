@@ -15,6 +15,19 @@
 
 pub use crate::drift::{compliant_drift, soil_drift};
 
+/// What a law needs of the time-stepping scheme (docs/theory.md §5): the step h (s), the weight θ of U_{k+1} in the
+/// step's displacement HΔq = h[(1−θ)U_k + θU_{k+1}] (U_k the scheme's start velocity), and the weight w in [0, 1] of
+/// the point t_k + wh where the scheme's forces act (θ for the θ-method, αf for the generalized-α).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StepWeights {
+    /// h (s).
+    pub step: f64,
+    /// θ: the weight of U_{k+1} in the displacement.
+    pub theta: f64,
+    /// w: where the forces act.
+    pub force: f64,
+}
+
 /// The law of an interaction (docs/theory.md §9). The gap of a unilateral law is g = `gap` + H_α q (m, positive
 /// open), so U_α = ġ.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -132,7 +145,7 @@ impl Law {
     }
 
     /// The step's impulse bounds and drift (lo, hi, b) from the gap g_k (m), the relative velocity U_k (m/s), the
-    /// rheonomic velocity b_r (m/s, U = Hq̇ + b_r), the step h (s) and θ (docs/theory.md §9):
+    /// rheonomic velocity b_r (m/s, U = Hq̇ + b_r) and the scheme's [`StepWeights`] (docs/theory.md §9):
     ///
     /// - Coulomb of capacity F: [−hF, hF], b = b_r;
     /// - Signorini: [0, +∞), b = b_r + e·U_k when the predicted gap g_k + γhU_k ≤ 0 ([`PREDICTION_WEIGHT`]) or
@@ -140,14 +153,8 @@ impl Law {
     /// - compliant stop and Hertz: [0, +∞), a bilateral spring (−∞, +∞), each with the drift of
     ///   [`compliant_drift`] from the penetration δ_k = −g_k. Their compliance is [`Law::run_compliance`]
     ///   (Hertz: its linearisation's, [`crate::hertz::HertzStep::law`]).
-    pub fn step_bounds(
-        &self,
-        gap: f64,
-        u: f64,
-        rheonomic: f64,
-        (h, theta): (f64, f64),
-        closed: bool,
-    ) -> (f64, f64, f64) {
+    pub fn step_bounds(&self, gap: f64, u: f64, rheonomic: f64, weights: StepWeights, closed: bool) -> (f64, f64, f64) {
+        let StepWeights { step: h, theta, force } = weights;
         let spring = || compliant_drift(-gap, u, rheonomic, h, theta);
         match *self {
             Law::Coulomb { capacity } => (-h * capacity, h * capacity, rheonomic),
@@ -159,18 +166,20 @@ impl Law {
                 }
             }
             Law::Compliant { .. } | Law::Hertz { .. } => (0.0, f64::INFINITY, spring()),
-            Law::Soil { .. } => (0.0, f64::INFINITY, soil_drift(-gap, u, rheonomic, h, theta)),
+            Law::Soil { .. } => (0.0, f64::INFINITY, soil_drift(-gap, u, rheonomic, h, theta, force)),
             Law::Spring { .. } => (f64::NEG_INFINITY, f64::INFINITY, spring()),
         }
     }
 
-    /// The compliance d (m/s per N·s) the law keeps for a whole run of step h (s) and θ: 1/(h²θk) for a linear
-    /// spring of stiffness k (so that a positive impulse is p = h·k·δ_{k+1}), 0 for friction and rigid contact, and
-    /// 0 for Hertz, whose compliance follows its linearisation step by step.
-    pub fn run_compliance(&self, h: f64, theta: f64) -> f64 {
+    /// The compliance d (m/s per N·s) the law keeps for a whole run of the step's `weights`: 1/(h²θk) for a linear
+    /// spring of stiffness k (so that a positive impulse is p = h·k·δ_{k+1}), 1/(h²wθk) for the soil (p = hkδ_w,
+    /// [`soil_drift`]), 0 for friction and rigid contact, and 0 for Hertz, whose compliance follows its
+    /// linearisation step by step.
+    pub fn run_compliance(&self, weights: StepWeights) -> f64 {
+        let StepWeights { step: h, theta, force } = weights;
         match *self {
             Law::Compliant { stiffness, .. } | Law::Spring { stiffness, .. } => 1.0 / (h * h * theta * stiffness),
-            Law::Soil { stiffness, .. } => 1.0 / (h * h * theta * theta * stiffness),
+            Law::Soil { stiffness, .. } => 1.0 / (h * h * force * theta * stiffness),
             Law::Coulomb { .. } | Law::Signorini { .. } | Law::Hertz { .. } => 0.0,
         }
     }

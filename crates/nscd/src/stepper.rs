@@ -30,11 +30,14 @@ use banded::BandDiagonals;
 use friction::hertz::NEWTON_ITERATIONS;
 use friction::{InteractionKind, InteractionSet, Law};
 
+mod rates;
 mod shift;
+use rates::{RateStep, Rates};
 pub use shift::{ShiftedBlock, WindowShift};
 
 /// The state and scratch of a Moreau–Jean integration; nothing allocates inside [`MoreauJean::step`].
 pub struct MoreauJean {
+    /// θ of the θ-method (αf of the generalized-α, which reads its coefficients from `rates`).
     theta: f64,
     h: f64,
     damped: bool,
@@ -86,6 +89,8 @@ pub struct MoreauJean {
     v_free: Vec<f64>,
     /// The position projection's Δq (n when some moving contact is rigid, else empty).
     dq: Vec<f64>,
+    /// The generalized-α's rates (None for the θ-method).
+    rates: Option<Rates>,
 }
 
 impl MoreauJean {
@@ -119,10 +124,11 @@ impl MoreauJean {
         v0: Vec<f64>,
     ) -> Self {
         let integration = problem.matrix.integration;
+        let coefficients = integration.coefficients();
         let n = system.dofs();
         let m = problem.interactions.len();
         let mut stepper = Self {
-            theta: integration.theta,
+            theta: coefficients.alpha_f,
             h: integration.step,
             damped: system.has_damping(),
             varying_energy: problem.interactions.laws().iter().any(Law::has_spring),
@@ -156,6 +162,7 @@ impl MoreauJean {
             u_free: vec![0.0; m],
             v_free: vec![0.0; n],
             dq: Vec::new(),
+            rates: None,
         };
         if stepper.problem.has_projection() {
             stepper.dq = vec![0.0; n];
@@ -167,6 +174,9 @@ impl MoreauJean {
             stepper.damping.mul_vec(&stepper.v, &mut stepper.cv);
         }
         stepper.v_prev.copy_from_slice(&stepper.v);
+        if coefficients.has_rates() {
+            stepper.rates = Some(Rates::new(coefficients, &stepper.v, &stepper.kv, system.mass.clone()));
+        }
         let (kinetic, strain) = energies(&stepper.v, &stepper.mv, &stepper.q, &stepper.kq);
         stepper.energy.initial = kinetic + strain;
         stepper.energy.current = kinetic + strain;
@@ -208,13 +218,18 @@ impl MoreauJean {
     }
 
     /// The free velocity v_free of the next step (no friction impulse), without advancing:
-    /// v_free = v_k + M̂⁻¹ h [θF_{k+1} + (1−θ)F_k − C v_k − K(q_k + hθ v_k)].
+    /// v_free = v_k + M̂⁻¹ h [θF_{k+1} + (1−θ)F_k − C v_k − K(q_k + hθ v_k)] for the θ-method (the generalized-α's
+    /// in [`rates`]).
     pub fn free_velocity(&mut self, forcing: &dyn Forcing) -> &[f64] {
         let (h, theta) = (self.h, self.theta);
         let (t0, t1) = (self.time, self.time + h);
-        // −h [C v_k + K(q_k + hθ v_k)] from the cached products (C v stays zero without damping).
-        for (((w, kq), kv), cv) in self.work.iter_mut().zip(&self.kq).zip(&self.kv).zip(&self.cv) {
-            *w = -h * (kq + h * theta * kv + cv);
+        if let Some(rates) = &self.rates {
+            rates.free_rhs(h, (&self.kq, &self.kv, &self.cv), &mut self.work);
+        } else {
+            // −h [C v_k + K(q_k + hθ v_k)] from the cached products (C v stays zero without damping).
+            for (((w, kq), kv), cv) in self.work.iter_mut().zip(&self.kq).zip(&self.kv).zip(&self.cv) {
+                *w = -h * (kq + h * theta * kv + cv);
+            }
         }
         forcing.add_to(t1, h * theta, &mut self.work);
         forcing.add_to(t0, h * (1.0 - theta), &mut self.work);
@@ -230,10 +245,18 @@ impl MoreauJean {
     pub fn step(&mut self, forcing: &dyn Forcing) -> Result<StepReport> {
         let (h, theta) = (self.h, self.theta);
         let (t0, t1) = (self.time, self.time + h);
+        if let Some(rates) = self.rates.as_mut() {
+            if rates.needs_start() {
+                start_residual(&self.problem, forcing, t0, (&self.q, &self.kq, &self.cv), &mut self.work);
+                rates.start(&self.work)?;
+            }
+            rates.set_start_velocity(&self.v);
+        }
         if self.problem.is_varying() {
             // The update phase: moving rows and the step's law from (t_k, q_k, v_k), the warm start brought into
-            // the new bounds, the solver told of the new rows.
-            self.problem.update(self.time, &self.q, &self.v);
+            // the new bounds, the solver told of the new rows. The generalized-α's laws see its start velocity.
+            let v = self.rates.as_ref().map_or(&self.v[..], |r| &r.start_velocity[..]);
+            self.problem.update(self.time, &self.q, v);
             self.problem.clamp_to_bounds(&mut self.p);
             if self.problem.has_moving() {
                 self.solver.refresh(&self.problem)?;
@@ -269,10 +292,16 @@ impl MoreauJean {
             }
             report
         };
-        // work = v_θ, the velocity of the step: q_{k+1} = q_k + h v_θ.
-        for (((w, q), v), v_prev) in self.work.iter_mut().zip(self.q.iter_mut()).zip(&self.v).zip(&self.v_prev) {
-            *w = theta * v + (1.0 - theta) * v_prev;
-            *q += h * *w;
+        if let Some(rates) = self.rates.as_mut() {
+            // work = v_{n+αf}, where the forces act; q_{n+1} = q_n + h[(1−γ)Q_n + γQ_{n+1}].
+            rates.force_point_velocity(&self.v_prev, &self.v, &mut self.work);
+            rates.advance_position(h, &self.work, &mut self.q);
+        } else {
+            // work = v_θ, the velocity of the step: q_{k+1} = q_k + h v_θ.
+            for (((w, q), v), v_prev) in self.work.iter_mut().zip(self.q.iter_mut()).zip(&self.v).zip(&self.v_prev) {
+                *w = theta * v + (1.0 - theta) * v_prev;
+                *q += h * *w;
+            }
         }
         let projection = if self.problem.has_projection() {
             let projection = self.problem.project_positions(t1, (&self.q, &self.v), &self.p, &mut self.dq);
@@ -363,7 +392,8 @@ impl MoreauJean {
         e.contact_loss -= change;
     }
 
-    /// Book the energy terms of the step just taken (`work` holds v_θ) and carry the products forward. A
+    /// Book the energy terms of the step just taken (`work` holds v_θ, the generalized-α's v_{n+αf}) and carry the
+    /// products forward. A
     /// non-finite energy — some displacement or velocity overflowed or became NaN, which the quadratic forms
     /// ½vᵀMv and ½qᵀKq always propagate (M has a positive diagonal) — stops the run before the ledger changes.
     fn book_energy(&mut self, forcing: &dyn Forcing, t0: f64, t1: f64) -> Result<()> {
@@ -374,11 +404,34 @@ impl MoreauJean {
         if self.damped {
             self.damping.mul_vec(&self.v, &mut self.cv_next);
         }
-        // work2 = K v_θ, so that K Δq = h K v_θ; then K q_{k+1} = K q_k + h K v_θ.
-        for (((w, kv_next), kv), kq) in self.work2.iter_mut().zip(&self.kv_next).zip(&self.kv).zip(self.kq.iter_mut()) {
-            *w = theta * kv_next + (1.0 - theta) * kv;
-            *kq += h * *w;
-        }
+        let numerical = if let Some(rates) = self.rates.as_mut() {
+            let step = RateStep {
+                h,
+                v: &self.v,
+                v_prev: &self.v_prev,
+                mv: &self.mv,
+                mv_next: &self.mv_next,
+                kv: &self.kv,
+                kv_next: &self.kv_next,
+            };
+            rates.finish_step(step, &mut self.kq)
+        } else {
+            // work2 = K v_θ, so that K Δq = h K v_θ; then K q_{k+1} = K q_k + h K v_θ.
+            for (((w, kv_next), kv), kq) in
+                self.work2.iter_mut().zip(&self.kv_next).zip(&self.kv).zip(self.kq.iter_mut())
+            {
+                *w = theta * kv_next + (1.0 - theta) * kv;
+                *kq += h * *w;
+            }
+            if theta > 0.5 {
+                // (θ − ½)[ΔvᵀMΔv + ΔqᵀKΔq] with MΔv = Mv_{k+1} − Mv_k, Δq = h v_θ and KΔq = h K v_θ.
+                let kinetic: f64 =
+                    (0..self.v.len()).map(|i| (self.v[i] - self.v_prev[i]) * (self.mv_next[i] - self.mv[i])).sum();
+                (theta - 0.5) * (kinetic + h * h * dot(&self.work, &self.work2))
+            } else {
+                0.0
+            }
+        };
         let (kinetic, strain) = energies(&self.v, &self.mv_next, &self.q, &self.kq);
         if !(kinetic + strain).is_finite() {
             return Err(NscdError::NonFinite {
@@ -396,14 +449,6 @@ impl MoreauJean {
             0.0
         };
         let work = interaction_work(&self.problem.interactions, self.friction_only, &self.p, &self.work);
-        let numerical = if theta > 0.5 {
-            // (θ − ½)[ΔvᵀMΔv + ΔqᵀKΔq] with MΔv = Mv_{k+1} − Mv_k, Δq = h v_θ and KΔq = h K v_θ.
-            let kinetic: f64 =
-                (0..self.v.len()).map(|i| (self.v[i] - self.v_prev[i]) * (self.mv_next[i] - self.mv[i])).sum();
-            (theta - 0.5) * (kinetic + h * h * dot(&self.work, &self.work2))
-        } else {
-            0.0
-        };
         std::mem::swap(&mut self.kv, &mut self.kv_next);
         std::mem::swap(&mut self.mv, &mut self.mv_next);
         std::mem::swap(&mut self.cv, &mut self.cv_next);
@@ -484,6 +529,31 @@ fn spring_energy(problem: &InteractionProblem, q: &[f64], impulses: Option<&[f64
         }
     }
     energy
+}
+
+/// The generalized-α's start: M A₀ = F(t₀) − C v₀ − K q₀ + Σ_j H_jᵀ r_j into `out`, r_j the force each fixed linear
+/// spring law holds at q₀ (k⟨δ⟩₊ of a stop or the soil, kδ of a bilateral spring; friction, rigid and moving
+/// contacts hold none at the start), from the products K q₀ and C v₀.
+fn start_residual(
+    problem: &InteractionProblem,
+    forcing: &dyn Forcing,
+    t0: f64,
+    state: (&[f64], &[f64], &[f64]),
+    out: &mut [f64],
+) {
+    let (q, kq, cv) = state;
+    for ((o, kq), cv) in out.iter_mut().zip(kq).zip(cv) {
+        *o = -(kq + cv);
+    }
+    forcing.add_to(t0, 1.0, out);
+    let interactions = &problem.interactions;
+    for (row, law) in interactions.rows().iter().zip(interactions.laws()).take(problem.fixed_len()) {
+        if let (Some((stiffness, pulls)), Some(gap)) = (law.linear_spring(), law.gap()) {
+            let penetration = -(gap + row.dot(q));
+            let force = if pulls { stiffness * penetration } else { stiffness * penetration.max(0.0) };
+            row.add_transpose(force, out);
+        }
+    }
 }
 
 /// Kinetic ½vᵀMv and strain ½qᵀKq energy (J), from the products M v and K q.

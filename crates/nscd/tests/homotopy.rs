@@ -17,7 +17,7 @@ use proptest::prelude::*;
 const TOLERANCE: f64 = 1e-6;
 
 fn stepping(m_hat: SymmetricBanded, interactions: InteractionSet) -> InteractionProblem {
-    let integration = nscd::Integration { theta: 0.5, step: 1.0 };
+    let integration = nscd::Integration::theta(0.5, 1.0);
     InteractionProblem::with_matrix(interactions, IterationMatrix::of(m_hat, integration).expect("SPD")).expect("SPD")
 }
 

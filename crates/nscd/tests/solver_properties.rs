@@ -139,7 +139,7 @@ fn problem() -> impl Strategy<Value = Problem> {
 
 /// v of every solver, after checking each meets the law: (name, v).
 fn solve_all(problem: &Problem) -> Vec<(&'static str, Vec<f64>)> {
-    let integration = nscd::Integration { theta: 0.5, step: 1.0 };
+    let integration = nscd::Integration::theta(0.5, 1.0);
     let moving: Vec<Box<dyn MovingInteraction>> =
         problem.moving.iter().map(|r| Box::new(r.clone()) as Box<dyn MovingInteraction>).collect();
     let mut stepping = InteractionProblem::with_matrix(

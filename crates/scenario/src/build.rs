@@ -343,6 +343,7 @@ impl Scenario {
             moving: MovingLoadSettings { speed, load, initial },
             integration: IntegrationSettings {
                 theta: i.theta,
+                spectral_radius: i.spectral_radius,
                 load_advance: i.load_advance,
                 max_step: i.max_step,
                 end_time: i.end_time,

@@ -105,6 +105,7 @@ pub fn path(setting: track::Setting) -> String {
         S::LoadAdvance => "integration.load_advance".into(),
         S::MaxStep => "integration.max_step".into(),
         S::Theta => "integration.theta".into(),
+        S::SpectralRadius => "integration.spectral_radius".into(),
         S::EndTime => "integration.end_time".into(),
         S::Tolerance => "integration.tolerance".into(),
         S::MaxIterations => "integration.max_iterations".into(),

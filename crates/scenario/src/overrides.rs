@@ -47,7 +47,7 @@ pub struct OverrideSpec {
 }
 
 /// Every override, in the order the help lists them.
-pub const OVERRIDES: [OverrideSpec; 16] = [
+pub const OVERRIDES: [OverrideSpec; 17] = [
     OverrideSpec {
         name: "speed",
         flag: "speed",
@@ -97,6 +97,13 @@ pub const OVERRIDES: [OverrideSpec; 16] = [
         kind: OverrideKind::Number { unit: "" },
         placeholder: "THETA",
         help: "θ of the Moreau–Jean scheme, in [0.5, 1]",
+    },
+    OverrideSpec {
+        name: "spectral_radius",
+        flag: "spectral-radius",
+        kind: OverrideKind::Number { unit: "" },
+        placeholder: "RHO",
+        help: "Integrate with the generalized-α of spectral radius ρ∞ in [0, 1] (damps unresolved modes; θ stays 0.5)",
     },
     OverrideSpec {
         name: "elements",
@@ -250,6 +257,8 @@ pub struct Overrides {
     pub damping_ratio: Option<f64>,
     /// θ of the Moreau–Jean scheme.
     pub theta: Option<f64>,
+    /// ρ∞ of the generalized-α.
+    pub spectral_radius: Option<f64>,
     /// Number of beam elements.
     pub elements: Option<usize>,
     /// Load advance per step (m).
@@ -309,6 +318,7 @@ impl Overrides {
             "distributed_friction" => self.distributed_friction = Some(number()?),
             "damping_ratio" => self.damping_ratio = Some(number()?),
             "theta" => self.theta = Some(number()?),
+            "spectral_radius" => self.spectral_radius = Some(number()?),
             "elements" => self.elements = Some(count()?),
             "load_advance" => self.load_advance = Some(number()?),
             "max_step" => self.max_step = Some(number()?),
@@ -352,6 +362,9 @@ impl Overrides {
         }
         if let Some(theta) = self.theta {
             s.integration.theta = theta;
+        }
+        if let Some(rho) = self.spectral_radius {
+            s.integration.spectral_radius = Some(rho);
         }
         if let Some(elements) = self.elements {
             s.mesh.elements = elements;

@@ -340,8 +340,11 @@ impl Default for DistributedSection {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct IntegrationSection {
-    /// θ ∈ [0.5, 1].
+    /// θ ∈ [0.5, 1] of the θ-method.
     pub theta: f64,
+    /// ρ∞ ∈ [0, 1]: the generalized-α instead of the θ-method.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub spectral_radius: Option<f64>,
     /// Load advance per step Δx (m); h = Δx/v.
     pub load_advance: f64,
     /// Longest time step (s): h = min(Δx/v, max_step).
@@ -369,6 +372,7 @@ impl Default for IntegrationSection {
         let s = RunSettings::default();
         Self {
             theta: s.integration.theta,
+            spectral_radius: None,
             load_advance: s.integration.load_advance,
             max_step: None,
             solver: SolverKind::Auto,

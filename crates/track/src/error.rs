@@ -104,6 +104,8 @@ pub enum Setting {
     MaxStep,
     /// θ of the integrator.
     Theta,
+    /// ρ∞ of the generalized-α.
+    SpectralRadius,
     /// The run's end time (s).
     EndTime,
     /// The step solver's tolerance.
@@ -149,6 +151,7 @@ impl Setting {
             Setting::LoadAdvance => "load_advance",
             Setting::MaxStep => "max_step",
             Setting::Theta => "integration.theta",
+            Setting::SpectralRadius => "integration.spectral_radius",
             Setting::EndTime => "end_time",
             Setting::Tolerance => "solver.tolerance",
             Setting::MaxIterations => "solver.max_iterations",

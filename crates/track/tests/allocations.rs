@@ -48,7 +48,7 @@ fn allocations_in_steps(interactions: &PlacedInteractions, kind: SolverKind) -> 
     let (speed, theta) = (200.0, 0.5);
     let h = 0.1 / speed;
     let system = beam_system(&model);
-    let integration = Integration { theta, step: h };
+    let integration = Integration::theta(theta, h);
     let settings = SolverSettings { kind, ..SolverSettings::default() };
     let load = MovingLoad::new(&model, 83.4e3, speed, 0.0);
     let n = system.dofs();

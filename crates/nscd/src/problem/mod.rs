@@ -117,7 +117,7 @@ impl InteractionProblem {
     pub fn with_matrix(interactions: impl Into<Interactions>, matrix: Arc<IterationMatrix>) -> crate::Result<Self> {
         let Interactions { fixed: mut interactions, moving } = interactions.into();
         let (factor, integration) = (&matrix.factor, matrix.integration);
-        let (h, theta) = (integration.step, integration.theta);
+        let weights = integration.weights();
         let fixed = interactions.len();
         let (responses, mut delassus_diagonal) = ImpulseResponses::new(&interactions, factor);
         for interaction in &moving {
@@ -141,10 +141,10 @@ impl InteractionProblem {
                 hertz[j] = Some(HertzStep { coefficient, ..HertzStep::default() });
                 continue;
             }
-            law.compliance[j] = l.run_compliance(h, theta);
+            law.compliance[j] = l.run_compliance(weights);
             // Friction's bounds are fixed for the run: set here, by the one mapping from law to bounds.
             if !l.depends_on_state() {
-                (law.lower[j], law.upper[j], law.drift[j]) = l.step_bounds(0.0, 0.0, 0.0, (h, theta), false);
+                (law.lower[j], law.upper[j], law.drift[j]) = l.step_bounds(0.0, 0.0, 0.0, weights, false);
             }
         }
         for (w, d) in delassus_diagonal.iter_mut().zip(&law.compliance) {
@@ -200,7 +200,8 @@ impl InteractionProblem {
             self.delassus_diagonal[j] = row.dot(column) + self.law.compliance[j];
             self.moving_states[k] = state;
         }
-        let (h, theta) = (self.matrix.integration.step, self.matrix.integration.theta);
+        let weights = self.matrix.integration.weights();
+        let (h, theta) = (weights.step, weights.theta);
         let rows = self.interactions.rows();
         for (j, law) in self.interactions.laws().iter().enumerate() {
             let (gap, u, rheonomic) = if j >= self.fixed {
@@ -217,7 +218,7 @@ impl InteractionProblem {
             }
             // A moving rigid contact's positions are projected: closed, it stays in the step's index set.
             let closed = j >= self.fixed && gap <= CLOSED_GAP;
-            let (lower, upper, drift) = law.step_bounds(gap, u, rheonomic, (h, theta), closed);
+            let (lower, upper, drift) = law.step_bounds(gap, u, rheonomic, weights, closed);
             self.law.lower[j] = lower;
             self.law.upper[j] = upper;
             self.law.drift[j] = drift;
@@ -240,7 +241,8 @@ impl InteractionProblem {
     /// δ* would move by more than [`friction::hertz::NEWTON_TOLERANCE`], relinearise them all and return true (solve
     /// again); else leave the law as the impulses were solved for and return false.
     pub fn newton_step(&mut self, p: &[f64]) -> bool {
-        let (h, theta) = (self.matrix.integration.step, self.matrix.integration.theta);
+        let weights = self.matrix.integration.weights();
+        let (h, theta) = (weights.step, weights.theta);
         let moves = self.hertz.iter().zip(p).any(|(hz, &pj)| {
             hz.is_some_and(|hz| {
                 (hz.end_penetration(pj, h).max(PENETRATION_FLOOR) - hz.linearised_at).abs() > NEWTON_TOLERANCE

@@ -65,6 +65,12 @@ impl MoreauJean {
         for x in [&mut self.q, &mut self.v, &mut self.v_prev] {
             shift_down(x, 0, chain, shift.dofs);
         }
+        if let Some(rates) = self.rates.as_mut() {
+            shift_down(&mut rates.q_rate, 0, chain, shift.dofs);
+            shift_down(&mut rates.acceleration, 0, chain, shift.dofs);
+            self.stiffness.mul_vec(&rates.q_rate, &mut rates.kq_rate);
+            self.mass.mul_vec(&rates.acceleration, &mut rates.m_acceleration);
+        }
         for block in shift.blocks {
             shift_down(&mut self.p, block.start, block.len, block.per_shift);
             shift_down(&mut self.u, block.start, block.len, block.per_shift);

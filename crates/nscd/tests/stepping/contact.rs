@@ -22,7 +22,7 @@ fn stepper(mass: f64, stiffness: f64, law: Law, x0: f64, h: f64, kind: SolverKin
     let system = LinearSystem { mass: scalar(mass), damping: scalar(0.0), stiffness: scalar(stiffness) };
     let mut interactions = InteractionSet::new();
     interactions.push(InteractionRow::from_entries([(0, 1.0)]), law, InteractionKind::Contact);
-    let integration = Integration { theta: 0.5, step: h };
+    let integration = Integration::theta(0.5, h);
     let settings = SolverSettings { kind, tolerance: 1e-10, ..SolverSettings::default() };
     MoreauJean::build(&system, interactions, integration, &settings, vec![x0], vec![0.0]).unwrap()
 }

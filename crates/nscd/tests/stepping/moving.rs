@@ -69,7 +69,7 @@ fn chain(law: Law, moving: bool, kind: SolverKind) -> (Vec<f64>, usize, f64, f64
         fixed.push(InteractionRow::from_entries([(2, 1.0)]), fixed_law, InteractionKind::Contact);
         Interactions::from(fixed)
     };
-    let integration = Integration { theta: 0.5, step: 1e-3 };
+    let integration = Integration::theta(0.5, 1e-3);
     // Clarabel is held to 1e-5 of the velocity scale: its own stopping criteria leave law residuals up to ~1e-6 of
     // it (seen: 1.04e-6 on an impact step), just past its 1e-6 acceptance.
     let tolerance = if kind == SolverKind::Clarabel { 1e-5 } else { 1e-10 };
@@ -191,7 +191,7 @@ fn ride(ratio: f64, h: f64, end: f64) -> Vec<(f64, f64, f64, f64)> {
     one.add(0, 0, 1.0);
     let system = LinearSystem::new(one, SymmetricBanded::zeros(1, 0), SymmetricBanded::zeros(1, 0));
     let interactions = Interactions { fixed: InteractionSet::new(), moving: vec![Box::new(ground)] };
-    let integration = Integration { theta: 0.5, step: h };
+    let integration = Integration::theta(0.5, h);
     let settings = SolverSettings { kind: SolverKind::Projection, tolerance: 1e-12, ..SolverSettings::default() };
     let v0 = speed * profile.slope(0.0);
     let mut stepper = MoreauJean::build(&system, interactions, integration, &settings, vec![0.0], vec![v0]).unwrap();
@@ -283,7 +283,7 @@ fn coupled_rigid_contacts_are_projected_together() {
     let moving: Vec<Box<dyn MovingInteraction>> = vec![Box::new(first), Box::new(shifted(second))];
     let interactions = Interactions { fixed: InteractionSet::new(), moving };
     let settings = SolverSettings { kind: SolverKind::Projection, tolerance: 1e-12, ..SolverSettings::default() };
-    let integration = Integration { theta: 0.5, step: 1e-3 };
+    let integration = Integration::theta(0.5, 1e-3);
     let mut stepper =
         MoreauJean::build(&system, interactions, integration, &settings, vec![0.0; 2], vec![v0, -v0]).unwrap();
     let gravity = PressingBoth;

@@ -31,7 +31,7 @@ fn oscillator(
         Law::Coulomb { capacity: force },
         InteractionKind::Friction,
     );
-    let integration = Integration { theta: 0.5, step: h };
+    let integration = Integration::theta(0.5, h);
     let settings = SolverSettings { kind, tolerance: 1e-12, ..SolverSettings::default() };
     let mut stepper = MoreauJean::build(&system, interactions, integration, &settings, vec![x0], vec![0.0]).unwrap();
     let mut out = vec![(0.0, x0)];
@@ -112,7 +112,7 @@ fn non_finite_state_stops_the_run_at_its_step() {
     for (bad, label) in [(f64::NAN, "NaN"), (f64::MAX, "overflow"), (f64::INFINITY, "∞")] {
         let system = LinearSystem { mass: scalar(2.0), damping: scalar(0.0), stiffness: scalar(50.0) };
         let interactions = InteractionSet::new();
-        let integration = Integration { theta: 0.5, step: 1e-3 };
+        let integration = Integration::theta(0.5, 1e-3);
         let settings = SolverSettings { kind: SolverKind::Projection, ..SolverSettings::default() };
         let mut stepper =
             MoreauJean::build(&system, interactions, integration, &settings, vec![0.1], vec![0.0]).unwrap();

@@ -5,6 +5,7 @@
 use crate::error::{Result, Setting, invalid, invalid_choice, invalid_count};
 use crate::vehicle::consist::{MAX_CONTACT_STEP, VehicleSettings};
 use fem_beam::{BeamModel, Train};
+use nscd::integrator::Scheme;
 use nscd::solver::{SolverKind, SolverSettings};
 use nscd::stepper::Integration;
 
@@ -123,11 +124,16 @@ impl Default for MovingLoadSettings {
     }
 }
 
-/// How a run is integrated: the θ-method, the step (through the load advance), the end, the friction solver.
+/// How a run is integrated: the scheme (the θ-method or the generalized-α), the step (through the load advance), the
+/// end, the friction solver.
 #[derive(Debug, Clone, PartialEq)]
 pub struct IntegrationSettings {
-    /// θ ∈ [½, 1]. Default ½.
+    /// θ ∈ [½, 1] of the θ-method. Default ½.
     pub theta: f64,
+    /// ρ∞ ∈ [0, 1]: integrate with the generalized-α of this spectral radius instead of the θ-method (θ then stays
+    /// ½). Default None. What a Timoshenko rail needs: its shear modes sit far above any step, and θ = ½ keeps their
+    /// energy as a step-to-step sawtooth of the velocities (docs/theory.md §5.4).
+    pub spectral_radius: Option<f64>,
     /// Load advance per step Δx (m) > 0, so h = Δx/v. Default 0.1 m; must not exceed one element.
     pub load_advance: f64,
     /// Longest time step h_max (s) > 0: h = min(Δx/v, h_max) (see [`RunSettings::time_step`]). Default None (h =
@@ -142,7 +148,24 @@ pub struct IntegrationSettings {
 
 impl Default for IntegrationSettings {
     fn default() -> Self {
-        Self { theta: 0.5, load_advance: 0.1, max_step: None, end_time: None, solver: SolverSettings::default() }
+        Self {
+            theta: 0.5,
+            spectral_radius: None,
+            load_advance: 0.1,
+            max_step: None,
+            end_time: None,
+            solver: SolverSettings::default(),
+        }
+    }
+}
+
+impl IntegrationSettings {
+    /// The engine's scheme: the generalized-α when a spectral radius is given, else the θ-method.
+    pub fn scheme(&self) -> Scheme {
+        match self.spectral_radius {
+            Some(spectral_radius) => Scheme::GeneralizedAlpha { spectral_radius },
+            None => Scheme::Theta(self.theta),
+        }
     }
 }
 
@@ -252,11 +275,21 @@ impl RunSettings {
         {
             return Err(invalid(Setting::MaxStep, h_max, "must be a time step > 0 (s)"));
         }
-        // The engine's own check of θ and h, named as this crate's settings: h = Δx/v is the load advance's (its
-        // speed checked above).
-        Integration { theta: self.integration.theta, step: self.time_step() }.validate().map_err(|e| match e {
+        if self.integration.spectral_radius.is_some() && self.integration.theta != 0.5 {
+            return Err(invalid(
+                Setting::Theta,
+                self.integration.theta,
+                "must stay 0.5 when integration.spectral_radius chooses the generalized-α: give one of the two",
+            ));
+        }
+        // The engine's own check of the scheme and h, named as this crate's settings: h = Δx/v is the load
+        // advance's (its speed checked above).
+        Integration { scheme: self.integration.scheme(), step: self.time_step() }.validate().map_err(|e| match e {
             nscd::NscdError::InvalidField { field: "integration.theta", value, allowed } => {
                 invalid(Setting::Theta, value, allowed)
+            }
+            nscd::NscdError::InvalidField { field: "integration.spectral_radius", value, allowed } => {
+                invalid(Setting::SpectralRadius, value, allowed)
             }
             nscd::NscdError::InvalidField { value, allowed, .. } => invalid(Setting::LoadAdvance, value, allowed),
             other => other.into(),

@@ -38,8 +38,9 @@ impl Simulation<'_> {
         let (model, settings) = (self.model, self.settings);
         let mesh = *model.mesh();
         let h = settings.time_step();
-        let theta = settings.integration.theta;
-        let integration = Integration { theta, step: h };
+        let integration = Integration { scheme: settings.integration.scheme(), step: h };
+        // θ_e: the weight of v_{n+1} in the step's displacement (θ of the θ-method), where a wheel's row is taken.
+        let theta = integration.coefficients().position_weight();
         let start = settings.start_position();
         let (q0, v0) = self.initial_state()?;
         let coupling = match settings.moving.load.vehicles() {

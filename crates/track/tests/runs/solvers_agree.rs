@@ -33,7 +33,7 @@ fn same_state_difference(
     let model = reference();
     let h = settings.integration.load_advance / settings.moving.speed;
     let system = beam_system(&model);
-    let integration = Integration { theta: settings.integration.theta, step: h };
+    let integration = Integration::theta(settings.integration.theta, h);
     let set = interactions.interactions();
     let checking = InteractionProblem::new(&system, set.clone(), integration).unwrap();
     let whole = SolverSettings { moving_window: false, ..settings.integration.solver };
@@ -187,7 +187,7 @@ fn truncated_impulse_responses_match_the_solve() {
     let model = reference();
     let h = 0.1 / 200.0;
     let system = beam_system(&model);
-    let integration = Integration { theta: 0.5, step: h };
+    let integration = Integration::theta(0.5, h);
     let placed = Devices::uniform(31, 100e3).interactions(&model).unwrap();
     let devices = placed.interactions();
     let problem = InteractionProblem::new(&system, devices.clone(), integration).unwrap();

@@ -85,7 +85,7 @@ fn rayleigh_damping_decays_each_mode_at_its_ratio() {
         }
         let q0 = model.dofs().reduce(&full);
         let period = 2.0 * std::f64::consts::PI / omega;
-        let integration = nscd::Integration { theta: 0.5, step: period / 400.0 };
+        let integration = nscd::Integration::theta(0.5, period / 400.0);
         let mut stepper = MoreauJean::build(
             &system,
             friction::InteractionSet::new(),

@@ -22,7 +22,7 @@ fn transmissibility(r: f64, zeta: f64) -> f64 {
 fn stepper(vehicle: &Vehicle, wheel: WheelOnGround, step: f64, (q0, v0): (Vec<f64>, Vec<f64>)) -> MoreauJean {
     let interactions = Interactions { fixed: friction::InteractionSet::new(), moving: vec![Box::new(wheel)] };
     let settings = SolverSettings { kind: SolverKind::Projection, tolerance: 1e-12, ..SolverSettings::default() };
-    MoreauJean::build(&vehicle.system(), interactions, Integration { theta: 0.5, step }, &settings, q0, v0).unwrap()
+    MoreauJean::build(&vehicle.system(), interactions, Integration::theta(0.5, step), &settings, q0, v0).unwrap()
 }
 
 /// What a run over the profile shows after its transient: the body's amplitude, the smallest contact impulse per

@@ -339,7 +339,7 @@ mod tests {
                 interactions.push(row, law, kind);
             }
         }
-        let integration = crate::Integration { theta: 0.5, step: 1.0 };
+        let integration = crate::Integration::theta(0.5, 1.0);
         InteractionProblem::with_matrix(interactions, IterationMatrix::of(m_hat, integration).expect("M̂ is SPD"))
             .expect("M̂ is SPD")
     }

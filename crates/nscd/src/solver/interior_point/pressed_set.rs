@@ -221,7 +221,7 @@ mod tests {
                 interactions.push(row, Law::Compliant { gap, stiffness: 50.0 }, InteractionKind::Support);
             }
         }
-        let integration = crate::Integration { theta: 0.5, step: 1e-2 };
+        let integration = crate::Integration::theta(0.5, 1e-2);
         let matrix = IterationMatrix::of(m_hat, integration).expect("M̂ is SPD");
         let mut problem = InteractionProblem::with_matrix(interactions, matrix).expect("M̂ is SPD");
         problem.update(0.0, &vec![0.0; n], &vec![0.0; n]);
