@@ -102,7 +102,7 @@ pub const OVERRIDES: [OverrideSpec; 17] = [
         name: "spectral_radius",
         flag: "spectral-radius",
         kind: OverrideKind::Number { unit: "" },
-        placeholder: "RHO",
+        placeholder: "SPECTRAL_RADIUS",
         help: "Integrate with the generalized-α of spectral radius ρ∞ in [0, 1] (damps unresolved modes; θ stays 0.5)",
     },
     OverrideSpec {

@@ -4,6 +4,7 @@
 
 use crate::error::{Result, Setting, invalid, invalid_choice, invalid_count};
 use crate::vehicle::consist::{MAX_CONTACT_STEP, VehicleSettings};
+use crate::vehicle::wheel_rail::WheelRail;
 use fem_beam::{BeamModel, Train};
 use nscd::integrator::Scheme;
 use nscd::solver::{SolverKind, SolverSettings};
@@ -294,6 +295,18 @@ impl RunSettings {
             nscd::NscdError::InvalidField { value, allowed, .. } => invalid(Setting::LoadAdvance, value, allowed),
             other => other.into(),
         })?;
+        if let (Some(vehicles), Some(rho)) = (self.moving.load.vehicles(), self.integration.spectral_radius)
+            && vehicles.vehicles.iter().any(|p| matches!(vehicles.contact_of(p), WheelRail::Rigid { .. }))
+        {
+            // The generalized-α's laws see a start velocity that averages the rates (docs/theory.md §5.4): a rigid
+            // contact's Newton impact law needs the velocity just before the impact, which only the θ-method keeps.
+            return Err(invalid(
+                Setting::SpectralRadius,
+                rho,
+                "is not taken with a rigid wheel–rail contact (its impact law needs the θ-method): use \
+                 vehicle.contact = \"hertz\" or \"linear\", or leave integration.spectral_radius out",
+            ));
+        }
         if let Some(vehicles) = self.moving.load.vehicles() {
             let omega = vehicles.contact_frequency()?;
             let largest = MAX_CONTACT_STEP / omega * self.moving.speed;
