@@ -27,13 +27,15 @@ use crate::problem::StepLaw;
 use crate::solver::{InteractionProblem, InteractionSolver, SolverKind, SolverSettings, StepReport, build_solver};
 use crate::system::LinearSystem;
 use banded::BandDiagonals;
+use friction::Law;
 use friction::hertz::NEWTON_ITERATIONS;
-use friction::{InteractionKind, InteractionSet, Law};
 
 mod rates;
 mod shift;
+mod terms;
 use rates::{RateStep, Rates};
 pub use shift::{ShiftedBlock, WindowShift};
+use terms::{energies, interaction_work, spring_energy, start_residual};
 
 /// The state and scratch of a Moreau–Jean integration; nothing allocates inside [`MoreauJean::step`].
 pub struct MoreauJean {
@@ -475,88 +477,4 @@ impl MoreauJean {
         e.max_step_residual = e.max_step_residual.max(step_residual.abs());
         Ok(())
     }
-}
-
-/// The work U_θᵀp of one step's impulses, by kind of interaction (J).
-struct InteractionWork {
-    friction: f64,
-    contact: f64,
-    support: f64,
-}
-
-impl InteractionWork {
-    fn total(&self) -> f64 {
-        self.friction + self.contact + self.support
-    }
-}
-
-/// Σ_j (H_j v_θ) p_j by kind, each sum in interaction order; and the compliant springs' energy is not here (see
-/// [`EnergyLedger::spring_energy`]). `friction_only`: every interaction is friction (one sum, no kind to read).
-fn interaction_work(interactions: &InteractionSet, friction_only: bool, p: &[f64], v_theta: &[f64]) -> InteractionWork {
-    let mut work = InteractionWork { friction: 0.0, contact: 0.0, support: 0.0 };
-    if friction_only {
-        for (row, &pj) in interactions.rows().iter().zip(p) {
-            work.friction += row.dot(v_theta) * pj;
-        }
-        return work;
-    }
-    for ((row, &pj), kind) in interactions.rows().iter().zip(p).zip(interactions.kinds()) {
-        let term = row.dot(v_theta) * pj;
-        match kind {
-            InteractionKind::Friction => work.friction += term,
-            InteractionKind::Contact => work.contact += term,
-            InteractionKind::Support => work.support += term,
-        }
-    }
-    work
-}
-
-/// The energy in the springs of the compliant interactions at displacement q (J): ½k⟨δ⟩₊² of a stop, ½kδ² of a
-/// bilateral spring. A fixed interaction's penetration is δ = −(g₀ + Hq); a moving one's gap depends on where it is
-/// and on the rail's profile, so after a step (`impulses` p) its energy is read from its law
-/// ([`InteractionProblem::moving_spring_energy`]). Before the first step moving interactions count 0.
-fn spring_energy(problem: &InteractionProblem, q: &[f64], impulses: Option<&[f64]>) -> f64 {
-    let interactions = &problem.interactions;
-    let mut energy = 0.0;
-    for (j, (row, law)) in interactions.rows().iter().zip(interactions.laws()).enumerate() {
-        if j >= problem.fixed_len() {
-            energy += impulses.and_then(|p| problem.moving_spring_energy(j, p[j])).unwrap_or(0.0);
-            continue;
-        }
-        // A fixed interaction with a spring is a linear one (Hertz is refused there).
-        if let (Some(gap), true) = (law.gap(), law.has_spring()) {
-            energy += law.stored_energy(-(gap + row.dot(q))).unwrap_or(0.0);
-        }
-    }
-    energy
-}
-
-/// The generalized-α's start: M A₀ = F(t₀) − C v₀ − K q₀ + Σ_j H_jᵀ r_j into `out`, r_j the force each fixed linear
-/// spring law holds at q₀ (k⟨δ⟩₊ of a stop or the soil, kδ of a bilateral spring; friction, rigid and moving
-/// contacts hold none at the start), from the products K q₀ and C v₀.
-fn start_residual(
-    problem: &InteractionProblem,
-    forcing: &dyn Forcing,
-    t0: f64,
-    state: (&[f64], &[f64], &[f64]),
-    out: &mut [f64],
-) {
-    let (q, kq, cv) = state;
-    for ((o, kq), cv) in out.iter_mut().zip(kq).zip(cv) {
-        *o = -(kq + cv);
-    }
-    forcing.add_to(t0, 1.0, out);
-    let interactions = &problem.interactions;
-    for (row, law) in interactions.rows().iter().zip(interactions.laws()).take(problem.fixed_len()) {
-        if let (Some((stiffness, pulls)), Some(gap)) = (law.linear_spring(), law.gap()) {
-            let penetration = -(gap + row.dot(q));
-            let force = if pulls { stiffness * penetration } else { stiffness * penetration.max(0.0) };
-            row.add_transpose(force, out);
-        }
-    }
-}
-
-/// Kinetic ½vᵀMv and strain ½qᵀKq energy (J), from the products M v and K q.
-fn energies(v: &[f64], mv: &[f64], q: &[f64], kq: &[f64]) -> (f64, f64) {
-    (0.5 * dot(v, mv), 0.5 * dot(q, kq))
 }

@@ -6,7 +6,8 @@
 //! new one brings none: E after − E before is booked as [`crate::EnergyLedger::transported`], so the identity
 //! closes with it.
 
-use super::{MoreauJean, energies, spring_energy};
+use super::MoreauJean;
+use super::terms::{energies, spring_energy};
 use crate::error::{NscdError, Result};
 use crate::solver::SolverKind;
 

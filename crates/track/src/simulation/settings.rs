@@ -131,9 +131,8 @@ impl Default for MovingLoadSettings {
 pub struct IntegrationSettings {
     /// θ ∈ [½, 1] of the θ-method. Default ½.
     pub theta: f64,
-    /// ρ∞ ∈ [0, 1]: integrate with the generalized-α of this spectral radius instead of the θ-method (θ then stays
-    /// ½). Default None. What a Timoshenko rail needs: its shear modes sit far above any step, and θ = ½ keeps their
-    /// energy as a step-to-step sawtooth of the velocities (docs/theory.md §5.4).
+    /// ρ∞ ∈ [0, 1]: the generalized-α of this spectral radius instead of the θ-method (θ stays ½). Default None.
+    /// What a Timoshenko rail needs: θ = ½ keeps its shear modes as a sawtooth (docs/theory.md §5.4).
     pub spectral_radius: Option<f64>,
     /// Load advance per step Δx (m) > 0, so h = Δx/v. Default 0.1 m; must not exceed one element.
     pub load_advance: f64,
@@ -298,8 +297,8 @@ impl RunSettings {
         if let (Some(vehicles), Some(rho)) = (self.moving.load.vehicles(), self.integration.spectral_radius)
             && vehicles.vehicles.iter().any(|p| matches!(vehicles.contact_of(p), WheelRail::Rigid { .. }))
         {
-            // The generalized-α's laws see a start velocity that averages the rates (docs/theory.md §5.4): a rigid
-            // contact's Newton impact law needs the velocity just before the impact, which only the θ-method keeps.
+            // A rigid contact's impact law needs the velocity before the impact; the generalized-α's laws see the
+            // rates' average (docs/theory.md §5.4).
             return Err(invalid(
                 Setting::SpectralRadius,
                 rho,
