@@ -8,6 +8,7 @@
 //!
 //! Memory of a run is O(DOFs + sections) plus O(steps) per recorded section history.
 
+mod integration_settings;
 mod lift_off;
 mod observers;
 mod records;
