@@ -66,6 +66,7 @@ def run(
     distributed_friction: float = ...,
     damping_ratio: float = ...,
     theta: float = ...,
+    spectral_radius: float = ...,
     elements: int = ...,
     load_advance: float = ...,
     max_step: float = ...,
