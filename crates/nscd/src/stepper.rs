@@ -221,7 +221,7 @@ impl MoreauJean {
 
     /// The free velocity v_free of the next step (no friction impulse), without advancing:
     /// v_free = v_k + M̂⁻¹ h [θF_{k+1} + (1−θ)F_k − C v_k − K(q_k + hθ v_k)] for the θ-method (the generalized-α's
-    /// in [`rates`]).
+    /// in docs/theory.md §5.4).
     pub fn free_velocity(&mut self, forcing: &dyn Forcing) -> &[f64] {
         let (h, theta) = (self.h, self.theta);
         let (t0, t1) = (self.time, self.time + h);

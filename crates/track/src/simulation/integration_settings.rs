@@ -14,7 +14,7 @@ pub struct IntegrationSettings {
     pub spectral_radius: Option<f64>,
     /// Load advance per step Δx (m) > 0, so h = Δx/v. Default 0.1 m; must not exceed one element.
     pub load_advance: f64,
-    /// Longest time step h_max (s) > 0: h = min(Δx/v, h_max) (see [`RunSettings::time_step`]). Default None (h =
+    /// Longest time step h_max (s) > 0: h = min(Δx/v, h_max) (see [`crate::RunSettings::time_step`]). Default None (h =
     /// Δx/v). What a sweep over a wide speed range gives its slow speeds — a vehicle's contact mode or a deck's
     /// accelerations need a step in seconds, not a distance — without shortening the step at every speed.
     pub max_step: Option<f64>,
