@@ -285,9 +285,10 @@ impl Scenario {
         Ok(interactions)
     }
 
-    /// What the beam carries of a train's axles ([`crate::LoadSection::share_on`] for this scenario's foundation).
+    /// What the beam carries of a train's axles ([`crate::LoadSection::share_on`] for this scenario's foundation and
+    /// sleepers: a rail on either is a track, one rail carrying half of each axle).
     pub fn axle_share(&self) -> crate::AxleShare {
-        self.load.share_on(self.foundation.stiffness)
+        self.load.share_on(self.foundation.stiffness, self.sleepers.is_some())
     }
 
     /// `train` as the beam carries it: its axle loads times the [`Scenario::axle_share`] factor (the catalogue's

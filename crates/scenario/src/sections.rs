@@ -179,9 +179,11 @@ impl AxleShare {
 
 impl LoadSection {
     /// What the beam carries of the axles: `carries` if given, else by the model — a rail (one rail's half) on a
-    /// foundation of stiffness `foundation_stiffness` > 0, a deck (whole axles) without one.
-    pub fn share_on(&self, foundation_stiffness: f64) -> AxleShare {
-        self.carries.unwrap_or(if foundation_stiffness > 0.0 { AxleShare::OneRail } else { AxleShare::WholeAxle })
+    /// foundation of stiffness `foundation_stiffness` > 0 or on sleepers (`on_sleepers`), a deck (whole axles) on
+    /// neither.
+    pub fn share_on(&self, foundation_stiffness: f64, on_sleepers: bool) -> AxleShare {
+        let track = foundation_stiffness > 0.0 || on_sleepers;
+        self.carries.unwrap_or(if track { AxleShare::OneRail } else { AxleShare::WholeAxle })
     }
 }
 

@@ -1,5 +1,5 @@
-//! What the beam carries of a train's axles (`[load] carries`): one rail's half on a foundation, whole axles on a
-//! span, as given otherwise; the single load is the beam's own.
+//! What the beam carries of a train's axles (`[load] carries`): one rail's half on a foundation or on sleepers,
+//! whole axles on a span, as given otherwise; the single load is the beam's own.
 
 use scenario::AxleShare;
 use scenario::Scenario;
@@ -24,6 +24,12 @@ fn a_rail_carries_half_of_each_axle_and_a_deck_all_of_it() {
     let deck = scenario("[load]\ntrain = \"hslm-a1\"\n[foundation]\nstiffness = 0.0\n");
     assert_eq!(deck.axle_share(), AxleShare::WholeAxle);
     assert_eq!(train_forces(&deck), (170e3, 8500e3));
+    // A rail on sleepers (no soil) is a track too: one rail's half (it put whole axles on the rail before).
+    let sleepers = scenario(
+        "[load]\ntrain = \"hslm-a1\"\n[foundation]\nstiffness = 0.0\n[mesh]\nlength = 199.8\nelements = 1332\n[sleepers]\n",
+    );
+    assert_eq!(sleepers.axle_share(), AxleShare::OneRail);
+    assert_eq!(train_forces(&sleepers), (85e3, 4250e3));
     let whole = scenario("[load]\ntrain = \"hslm-a1\"\ncarries = \"whole-axle\"\n");
     assert_eq!(train_forces(&whole), (170e3, 8500e3));
     let half_deck = scenario("[load]\ntrain = \"hslm-a1\"\ncarries = \"one-rail\"\n[foundation]\nstiffness = 0.0\n");
