@@ -96,6 +96,9 @@ pub fn run(args: &AnalyticArgs) -> Result<()> {
         None => None,
     };
     let response = SteadyResponse::of(&scenario, args.damping_ratio, train, &speeds)?;
+    if let (_, Some(note)) = scenario.uniform_support("the closed form")? {
+        eprintln!("note: {note}");
+    }
     for warning in response.warnings() {
         eprintln!("warning: {warning}");
     }

@@ -80,6 +80,9 @@ pub fn run(args: &StationaryArgs) -> Result<()> {
         }
     }
     let first = scenario.stationary_problem(speeds.first().copied().unwrap_or(0.0), domain)?;
+    if let (_, Some(note)) = scenario.uniform_support("the stationary wave")? {
+        eprintln!("note: {note}");
+    }
     crate::progress::announce("stationary", &runner::cost::Estimate::stationary(&first, &speeds, true));
     let stop = Some(crate::interrupt::stop_flag());
     let bar = crate::progress::bar("stationary", Some(speeds.len() as u64), args.format != TableFormat::Text);

@@ -20,6 +20,7 @@ pub mod contact;
 mod deck;
 pub mod diagnostics;
 pub mod error;
+mod long_wave_twin;
 pub mod number;
 pub mod overrides;
 mod parse;

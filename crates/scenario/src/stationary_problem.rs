@@ -7,10 +7,12 @@ use stationary::{Domain, StationaryProblem};
 
 impl Scenario {
     /// The stationary problem of this scenario at `speed` (m/s) on `domain`: its beam, its soil (stiffness, damping
-    /// and law; absorbing zones do not apply on an infinite track), its single load, its self-weight. Refused, by
-    /// key, for what the infinite track cannot take: devices, Simpson sections, trains, vehicles.
+    /// and law; absorbing zones do not apply on an infinite track), its single load, its self-weight; on sleepers
+    /// their long-wave continuous twin ([`Scenario::uniform_support`]). Refused, by key, for what the infinite track
+    /// cannot take: devices, Simpson sections, trains, vehicles, sleepers with exceptions.
     pub fn stationary_problem(&self, speed: f64, domain: Domain) -> Result<StationaryProblem> {
-        let scenario = self;
+        let (twin, _) = self.uniform_support("the stationary wave")?;
+        let scenario = &twin;
         if scenario.friction.devices.is_some() {
             return Err(invalid(
                 "friction.devices",

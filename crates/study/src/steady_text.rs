@@ -22,14 +22,16 @@ impl Output for SteadyReport<'_> {
         let (points, train, inf, foundation) =
             (&response.points, &response.train, &response.beam, &response.foundation);
         let w0 = response.static_deflection;
+        // On sleepers the closed form's beam is their long-wave twin's, carrying the sleepers' moving mass.
+        let beam = scenario.uniform_support("the closed form").map_or(scenario.beam, |(twin, _)| twin.beam);
         writeln!(
             f,
             "infinite {}{}, EI = {:.4} MN·m², ρA = {:.3} kg/m, k_f = {:.1} kN/m², {}, ζ = {:.4}, \
              v_cr = {:.2} m/s, static w₀ = {:.2} mm",
             scenario.beam.theory.unless_default().map_or("beam".to_string(), |t| format!("{t} beam")),
             if scenario.title.is_empty() { String::new() } else { format!(" ({})", scenario.title) },
-            scenario.beam.bending_stiffness() / 1e6,
-            scenario.beam.mass_per_length(),
+            beam.bending_stiffness() / 1e6,
+            beam.mass_per_length(),
             foundation.stiffness / 1e3,
             match &train {
                 Some(t) => format!(

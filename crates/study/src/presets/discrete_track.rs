@@ -51,24 +51,6 @@ pub(super) fn fit_mesh(s: &mut Scenario, per_bay: usize, notes: &mut Vec<String>
     ));
 }
 
-/// The continuous track that `s` on sleepers stands for in the long wave (`fem_beam::Sleepers::equivalent_track`):
-/// its soil plus the pads and ballast (and subgrade) in series spread over a spacing, k_eq, their dashpots in series
-/// to first order in frequency, c_eq (`fem_beam::Sleepers::equivalent_damping`), and the sleepers' (and ballast
-/// bodies') mass spread on the rail as the long wave moves it.
-pub(super) fn continuous_twin(s: &Scenario) -> scenario::error::Result<Scenario> {
-    let mut twin = s.clone();
-    let Some(section) = twin.sleepers.take() else { return Ok(twin) };
-    let sleepers = section.sleepers()?;
-    let (beam, stiffness) = sleepers.equivalent_track(&s.beam, s.foundation.stiffness);
-    let damping = sleepers.equivalent_damping();
-    let soil = s.model()?.foundation().damping;
-    twin.beam = beam;
-    twin.foundation.stiffness = stiffness;
-    twin.foundation.damping = Some(soil + damping);
-    twin.foundation.damping_ratio = None;
-    Ok(twin)
-}
-
 /// Sleepers every 0.6 m holding `s`'s soil in their stead: pad and ballast k = 2k_f a, c = 2c_f a each (in series,
 /// the soil's spring and dashpot per sleeper), a light sleeper of a tenth of the rail's mass over a bay.
 pub(super) fn sleepers_for_soil(s: &Scenario) -> scenario::error::Result<SleepersSection> {

@@ -1,14 +1,14 @@
 //! Study 11: friction at the sleepers against the thesis's friction distributed in the ballast (docs/theory.md §7,
 //! §18). The base track on sleepers — the scenario's `[sleepers]`, else light sleepers every 0.6 m holding its soil
 //! ([`super::discrete_track::sleepers_for_soil`]) — and its continuous twin (the same long-wave support and mass,
-//! [`super::discrete_track::continuous_twin`]), each without friction and with f_u ∈ {2, 5} kN/m: distributed on
+//! [`Scenario::continuous_twin`]), each without friction and with f_u ∈ {2, 5} kN/m: distributed on
 //! the continuous track (the thesis's ballast friction on the rail), a Coulomb slider of F = f_u·a between each
 //! sleeper and the ballast on the discrete one — the same force per metre. Max deflection, dissipated energy and the
 //! refined critical speed of each curve: how much of the thesis's friction the sleepers keep, and the discrete
 //! track's critical speed against the continuous one's.
 
 use super::curves::{Curves, curves_study};
-use super::discrete_track::{continuous_twin, fit_mesh, sleepers_for_soil, sleepers_unless_given};
+use super::discrete_track::{fit_mesh, sleepers_for_soil, sleepers_unless_given};
 use super::{Resolution, StudyData, with_distributed};
 use report::plot::PlotSpec;
 use runner::Runner;
@@ -69,7 +69,7 @@ pub(super) fn overrides(base: &Scenario) -> Vec<String> {
 
 pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) -> Result<StudyData> {
     let (discrete, _) = discrete(base)?;
-    let continuous = continuous_twin(&discrete)?;
+    let continuous = discrete.continuous_twin()?;
     let model = discrete.model()?;
     let (sleepers, nodes) = model.sleepers().expect("on sleepers");
     let spacing = sleepers.spacing;

@@ -5,7 +5,7 @@
 //! equivalent continuous support (the continuous twin: k_eq, c_eq and the sleepers' long-wave mass): |α| and phase
 //! over 10 Hz – 2 kHz, log-spaced, the resonances refined and named.
 
-use super::discrete_track::{TYPICAL, continuous_twin, fit_mesh, sleepers_unless_given};
+use super::discrete_track::{TYPICAL, fit_mesh, sleepers_unless_given};
 use super::{Resolution, StudyData, StudySummary, blank};
 use crate::receptance::{ReceptanceRequest, ReceptanceStudy};
 use crate::receptance_peaks::Resonance;
@@ -97,7 +97,7 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
     for (rail, theory) in [("Euler–Bernoulli", BeamTheory::EulerBernoulli), ("Timoshenko", timoshenko(base))] {
         let mut on_sleepers = discrete.clone();
         on_sleepers.beam.theory = theory;
-        let twin = continuous_twin(&on_sleepers)?;
+        let twin = on_sleepers.continuous_twin()?;
         let cases: [(&'static str, &'static str, &Scenario, f64); 3] = [
             ("sleepers", "mid-span", &on_sleepers, mid_span),
             ("sleepers", "above a sleeper", &on_sleepers, above),
