@@ -117,6 +117,7 @@ impl Scenario {
     /// window of the track, or the beam), settled together under the track's weight where it is kept
     /// (`foundation.self_weight`, `sleepers.self_weight`).
     pub fn placed_on(&self, model: &BeamModel) -> Result<PlacedInteractions> {
+        self.refuse_rail_rows_on_sleepers(model)?;
         let mut interactions = self.interactions(model)?;
         let mut springs = self.foundation_sections(model)?;
         springs.extend(track::sleeper_layout::sleeper_interactions(model));
@@ -125,6 +126,42 @@ impl Scenario {
         }
         interactions.extend(springs);
         Ok(interactions)
+    }
+
+    /// Refuse, by key, ballast friction on the rail and a nonlinear soil beside sleepers under the solvers that do not
+    /// take them: their sections sit on the rail's elements, whose rows span the sleeper's DOF between two rail nodes
+    /// (w_i, θ_i, z_i, w_{i+1}, θ_{i+1}: four entries over five DOFs), and the interior point (what `auto` picks for
+    /// sections this dense) and the homotopy take rows of four consecutive DOFs only. Projection and Clarabel take
+    /// them, slowly (minutes for 200 m where the interior point's runs take seconds): chosen, they run.
+    fn refuse_rail_rows_on_sleepers(&self, model: &BeamModel) -> Result<()> {
+        use nscd::SolverKind;
+        if model.sleepers().is_none()
+            || matches!(self.integration.solver, SolverKind::Projection | SolverKind::Clarabel)
+        {
+            return Ok(());
+        }
+        let (key, value, instead) = match (&self.friction.distributed, self.foundation.law) {
+            (Some(d), _) => (
+                "friction.distributed.force_per_length",
+                format!("{}", d.force_per_length),
+                "put the friction at the sleepers ([[sleepers.exceptions]] friction = f_u·spacing)",
+            ),
+            (None, FoundationLawKind::Linear) => return Ok(()),
+            (None, law) => (
+                "foundation.law",
+                format!("{law:?}").to_lowercase(),
+                "let the ballast lift off instead ([[sleepers.exceptions]] law = \"tensionless\")",
+            ),
+        };
+        Err(invalid(
+            key,
+            value,
+            format!(
+                "on sleepers its sections act on the rail between the sleepers, rows the interior point does not \
+                 take yet (they span a sleeper's DOF); {instead}, or choose integration.solver = \"clarabel\" or \
+                 \"projection\" (slow: minutes for 200 m of track)"
+            ),
+        ))
     }
 
     /// Whether the track's weight rests on unilateral supports before the load comes: a nonlinear soil's

@@ -162,3 +162,28 @@ fn check_takes_several_files() {
     check(&["check", &files[0], bad.to_str().unwrap()], 2, "did you mean `interior-point`?");
     check(&["check", &files[0], bad.to_str().unwrap()], 2, "scenario files = 1 of 2");
 }
+
+/// Ballast friction on the rail and a tensionless soil beside sleepers stopped with exit 1 under the default solver
+/// ("solver interior-point cannot solve this problem", a solver the user never chose): they are refused by key before
+/// the run, saying what to do instead; chosen explicitly, projection and Clarabel still take them.
+#[test]
+fn rail_sections_on_sleepers_are_refused_by_key_under_the_default_solver() {
+    let folder = temporary_folder("rail-rows-on-sleepers");
+    let track =
+        "[mesh]\nlength = 30.0\nelements = 200\n[foundation]\nstiffness = 250e3\n[sleepers]\n[load]\nspeed = 50.0\n";
+    for (extra, key, args) in [
+        ("", "friction.distributed.force_per_length", vec!["--distributed-friction", "2000"]),
+        ("law = \"tensionless\"\n", "foundation.law", vec![]),
+    ] {
+        let file = folder.join("track.toml");
+        std::fs::write(&file, track.replace("stiffness = 250e3\n", &format!("stiffness = 250e3\n{extra}"))).unwrap();
+        let path = file.to_str().unwrap();
+        let out = frictrack(&[&["run", path][..], &args[..]].concat());
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{key}: {stderr}");
+        assert!(stderr.contains(key) && stderr.contains("sleepers.exceptions"), "{stderr}");
+        let chosen =
+            frictrack(&[&["run", path, "--solver", "clarabel", "--load-advance", "0.15"][..], &args[..]].concat());
+        assert!(chosen.status.success(), "{key}: {}", String::from_utf8_lossy(&chosen.stderr));
+    }
+}
