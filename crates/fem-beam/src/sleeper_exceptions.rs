@@ -9,6 +9,10 @@
 
 use crate::error::{FemError, Result};
 
+/// The largest friction force a sleeper's exception takes (N): a hundred times any wheel load, where a slider is
+/// locked whatever the track does; above it a value is a slip of units (1e12 N ran silently).
+pub const MAX_SLEEPER_FRICTION: f64 = 1e7;
+
 /// How the ballast holds a sleeper.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub enum BallastContact {
@@ -62,7 +66,12 @@ impl SleeperException {
         let checks = [
             ("pad_scale", self.pad_scale, self.pad_scale > 0.0, "must be finite and > 0 (the pad's stiffness × it)"),
             ("ballast_scale", self.ballast_scale, self.ballast_scale >= 0.0, "must be finite and ≥ 0 (0: no ballast)"),
-            ("friction", self.friction, self.friction >= 0.0, "must be finite and ≥ 0 (N)"),
+            (
+                "friction",
+                self.friction,
+                (0.0..=MAX_SLEEPER_FRICTION).contains(&self.friction),
+                "must lie in [0, 1e7] N: a sleeper's ballast friction is a few kN, and 10 MN already locks it",
+            ),
         ];
         for (key, value, ok, allowed) in checks {
             if !(value.is_finite() && ok) {

@@ -105,7 +105,13 @@ impl Sleepers {
         for (layer, [stiffness, damping, loss]) in layers.iter().map(|(l, keys)| (**l, *keys)).chain(subgrade) {
             positive(stiffness, layer.stiffness)?;
             non_negative(damping, layer.damping)?;
-            non_negative(loss, layer.loss_factor)?;
+            if !(layer.loss_factor.is_finite() && (0.0..=1.0).contains(&layer.loss_factor)) {
+                return Err(FemError::InvalidField {
+                    field: loss,
+                    value: layer.loss_factor,
+                    allowed: "must lie in [0, 1]: rail pads and ballast have η of 0.1–0.5, and no solid damps above 1",
+                });
+            }
         }
         if let Some(body) = self.ballast_body {
             positive("sleepers.ballast.mass", body.mass)?;
@@ -218,23 +224,19 @@ impl Sleepers {
         for (index, exception) in self.exceptions.iter().enumerate() {
             exception.validate(index, count)?;
         }
-        (0..count)
-            .map(|i| {
-                let x = self.first + i as f64 * self.spacing;
-                let node = (x / l).round();
-                if (x / l - node).abs() > 1e-9 * (1.0 + node) {
-                    let field = if i == 0 { "sleepers.first" } else { "sleepers.spacing" };
-                    let value = if i == 0 { self.first } else { self.spacing };
-                    return Err(FemError::InvalidField {
-                        field,
-                        value,
-                        allowed: "must put every sleeper on a mesh node: first and spacing multiples of the element \
-                                  length (mesh.length / mesh.elements)",
-                    });
-                }
-                Ok(node as usize)
-            })
-            .collect()
+        // The spacing first: a first sleeper off the nodes is often the default spacing/2 of a misfit spacing.
+        let off_node = |x: f64| (x / l - (x / l).round()).abs() > 1e-9 * (1.0 + (x / l).round());
+        for (field, value) in [("sleepers.spacing", self.spacing), ("sleepers.first", self.first)] {
+            if off_node(value) {
+                return Err(FemError::InvalidField {
+                    field,
+                    value,
+                    allowed: "must be a multiple of the element length (mesh.length / mesh.elements), so that every \
+                              sleeper sits on a mesh node",
+                });
+            }
+        }
+        (0..count).map(|i| ((self.first + i as f64 * self.spacing) / l).round() as usize).map(Ok).collect()
     }
 }
 

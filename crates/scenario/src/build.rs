@@ -78,7 +78,7 @@ impl Scenario {
         };
         let mut model = BeamModel::with_element_damping(beam, foundation, mesh, supports, damping)?;
         if let Some(sleepers) = &self.sleepers {
-            model = model.with_sleepers(sleepers.sleepers()?)?;
+            model = model.with_sleepers(sleepers.sleepers()?).map_err(|e| sleepers.misfit(e, &self.mesh))?;
         }
         if let Some(rayleigh) = &self.damping.rayleigh {
             model = model.with_rayleigh(rayleigh.rayleigh()?)?;

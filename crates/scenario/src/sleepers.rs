@@ -37,7 +37,7 @@ pub struct SleepersSection {
 
 /// Which sleepers an exception names: one index, or the first and last of a range (inclusive).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(untagged)]
+#[serde(untagged, expecting = "must be one sleeper's index (a whole number from 0) or [first, last]")]
 pub enum SleeperIndex {
     /// `index = 12`.
     One(usize),
@@ -85,6 +85,14 @@ impl ExceptionSection {
             SleeperIndex::One(i) => (i, i),
             SleeperIndex::Range([a, b]) => (a, b),
         };
+        let changes = [self.gap, self.friction, self.pad_scale, self.ballast_scale];
+        if self.law.is_none() && changes.iter().all(Option::is_none) {
+            return Err(invalid(
+                &format!("sleepers.exceptions[{position}]"),
+                "an index alone",
+                "names sleepers but changes nothing: give gap, law, friction, pad_scale or ballast_scale",
+            ));
+        }
         let contact = match (self.law, self.gap) {
             (Some(BallastLawKind::Linear), Some(gap)) => {
                 return Err(invalid(
@@ -176,6 +184,26 @@ impl Default for SleepersSection {
 }
 
 impl SleepersSection {
+    /// A sleeper off the mesh's nodes named by the key the user wrote: the first sleeper's default (spacing/2) off a
+    /// node means a bay of an odd number of elements, which `mesh.elements` sets.
+    pub(crate) fn misfit(&self, error: fem_beam::FemError, mesh: &fem_beam::Mesh) -> crate::StudyError {
+        match error {
+            fem_beam::FemError::InvalidField { field: "sleepers.first", .. } if self.first.is_none() => {
+                let per_bay = self.spacing / (mesh.length / mesh.elements as f64);
+                invalid(
+                    "mesh.elements",
+                    mesh.elements,
+                    format!(
+                        "puts {per_bay:.3} elements in a sleeper bay of {} m: the first sleeper, at spacing/2 by \
+                         default, falls between nodes; give an even number of elements a bay, or sleepers.first",
+                        self.spacing
+                    ),
+                )
+            }
+            other => other.into(),
+        }
+    }
+
     /// The sleepers, their values checked (the exceptions' indices are, once the model places them on its mesh).
     pub fn sleepers(&self) -> Result<Sleepers> {
         let typical = Sleepers::default();
@@ -258,6 +286,34 @@ mod tests {
         // Written back as read.
         let back: SleepersSection = toml::from_str(&toml::to_string(&section).unwrap()).unwrap();
         assert_eq!(back, section);
+    }
+
+    /// What a new user wrote wrong, named as written: an index that is not one whole number or a pair, an exception
+    /// that changes nothing, a loss factor no solid has, a friction force of a unit slip, a mesh whose bays put the
+    /// default first sleeper between nodes (it named `sleepers.first = 0.3`, a default the user never wrote).
+    #[test]
+    fn bad_sleeper_keys_are_named_as_written() {
+        for index in ["-1", "1.5", "[50]", "[40, 45, 50]"] {
+            let error = toml::from_str::<SleepersSection>(&format!("[[exceptions]]\nindex = {index}\ngap = 0.001\n"))
+                .unwrap_err()
+                .to_string();
+            assert!(error.contains("one sleeper's index") && error.contains("[first, last]"), "{index}: {error}");
+        }
+        let error = |text: &str| toml::from_str::<SleepersSection>(text).unwrap().sleepers().unwrap_err().to_string();
+        assert!(error("[[exceptions]]\nindex = 3\n").contains("sleepers.exceptions[0] = an index alone"));
+        assert!(error("[pad]\nloss_factor = 5.0\n").contains("sleepers.pad.loss_factor = 5"));
+        let model = |text: &str| crate::Scenario::from_toml(text, "t.toml").unwrap().model().map(|_| ());
+        let friction = model(
+            "[foundation]\nstiffness = 0.0\n[mesh]\nlength = 6.0\nelements = 40\n[sleepers]\n\
+             [[sleepers.exceptions]]\nindex = 2\nfriction = 1e12\n",
+        );
+        assert!(friction.unwrap_err().to_string().contains("sleepers.exceptions[0].friction = 1000000000000"));
+        let odd = model("[foundation]\nstiffness = 0.0\n[mesh]\nlength = 6.0\nelements = 30\n[sleepers]\n");
+        let odd = odd.unwrap_err().to_string();
+        assert!(odd.contains("mesh.elements = 30") && odd.contains("3.000 elements in a sleeper bay"), "{odd}");
+        let misfit =
+            model("[foundation]\nstiffness = 0.0\n[mesh]\nlength = 6.0\nelements = 40\n[sleepers]\nspacing = 0.5\n");
+        assert!(misfit.unwrap_err().to_string().contains("sleepers.spacing = 0.5"));
     }
 
     /// The track has one weight: a tensionless soil and tensionless sleepers must agree on keeping it.
