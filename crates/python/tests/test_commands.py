@@ -92,6 +92,19 @@ def test_receptance_is_the_command_lines(tmp_path):
         frictrack.receptance(None, [5.0, 10.0, 20.0])
     with pytest.raises(frictrack.InputError, match="at = 500"):
         frictrack.receptance(None, [10.0], at=500.0)
+    # A new user's arguments (they raised TypeError, ValueError, OverflowError or went unused): each names itself.
+    for arguments, named in [
+        (dict(frequencies="10:100:1"), "frequencies"),
+        (dict(frequencies=None), "frequencies"),
+        (dict(frequencies=[10.0], at="middle"), "at"),
+        (dict(frequencies=[10.0], excite=[1, 2]), "excite"),
+        (dict(frequencies=[10.0], jobs=-1), "jobs"),
+        (dict(frequencies=[10.0], speed=100), "speed"),
+    ]:
+        with pytest.raises(frictrack.InputError, match=f"invalid {named} = "):
+            frictrack.receptance(None, **arguments)
+    # One frequency, as the command line takes A:A:STEP.
+    assert len(frictrack.receptance(None, 50.0).table) == 1
 
 
 def test_a_timoshenko_rail_in_the_stationary_wave_and_the_closed_form():

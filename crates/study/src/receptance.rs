@@ -163,8 +163,15 @@ impl ReceptanceStudy {
             request.frequencies.iter().zip(&values).map(|(&f, &a)| ReceptancePoint::of(f, a)).collect();
         let curve: Vec<(f64, f64)> = points.iter().map(|p| (p.frequency, p.magnitude)).collect();
         let mut resonances = resonances(&curve, |f| alpha(f).map(|a| a.norm()))?;
+        let unresolved = crate::receptance_peaks::keep_resolved(&model, &mut resonances);
         crate::receptance_peaks::name_resonances(&model, &mut resonances);
-        let warnings = warnings(&model, &request.frequencies, request.excite);
+        let mut warnings = warnings(&model, &request.frequencies, request.excite);
+        if unresolved > 0 {
+            warnings.push(format!(
+                "{unresolved} peak(s) of |α| above the frequencies the mesh resolves are not listed as resonances: \
+                 there the curve is the mesh's, not the track's"
+            ));
+        }
         Ok(Self {
             title: scenario.title.clone(),
             excite: request.excite,

@@ -123,23 +123,45 @@ fn sleepers_per_metre(model: &BeamModel, omega: f64) -> Complex64 {
     pad * below / (pad + below) / s.spacing
 }
 
+/// The wavenumbers (rad/m) of the track of `model` at `f` (Hz): the rail on its soil and sleepers' dynamic stiffness.
+fn track_waves(model: &BeamModel, f: f64) -> [Complex64; 2] {
+    let (beam, foundation) = (model.beam(), model.foundation());
+    let omega = TAU * f;
+    let soil = Complex64::new(
+        foundation.stiffness,
+        foundation.stiffness * foundation.loss_factor + omega * foundation.damping,
+    );
+    wavenumbers(beam, soil + sleepers_per_metre(model, omega), beam.loss_factor, omega)
+}
+
+/// The shortest bending wavelength (m) of the track of `model` at `f` (Hz).
+fn shortest_wavelength(model: &BeamModel, f: f64) -> f64 {
+    TAU / track_waves(model, f).iter().map(|k| k.re.abs()).fold(0.0, f64::max)
+}
+
+/// Whether the mesh of `model` resolves the track's bending waves at `f` (Hz): [`ELEMENTS_PER_WAVELENGTH`] elements
+/// a wavelength or more. A peak above the highest such frequency is the mesh's, not the track's.
+pub fn resolves(model: &BeamModel, f: f64) -> bool {
+    shortest_wavelength(model, f) / model.mesh().element_length() >= ELEMENTS_PER_WAVELENGTH
+}
+
+/// Drop the `resonances` the mesh of `model` does not resolve ([`resolves`]), returning how many went.
+pub fn keep_resolved(model: &BeamModel, resonances: &mut Vec<Resonance>) -> usize {
+    let before = resonances.len();
+    resonances.retain(|r| resolves(model, r.frequency));
+    before - resonances.len()
+}
+
 /// The doubts about a receptance of `model` at `frequencies` (Hz, increasing) for a force at `excite` (m):
 /// elements too long for the bending waves at the top frequencies, and waves from the force that come back from the
 /// ends (on a track without absorbing zones).
 pub fn warnings(model: &BeamModel, frequencies: &[f64], excite: f64) -> Vec<String> {
-    let (beam, foundation, mesh) = (model.beam(), model.foundation(), model.mesh());
+    let (foundation, mesh) = (model.foundation(), model.mesh());
     let l = mesh.element_length();
-    let waves = |f: f64| {
-        let omega = TAU * f;
-        let soil = Complex64::new(
-            foundation.stiffness,
-            foundation.stiffness * foundation.loss_factor + omega * foundation.damping,
-        );
-        wavenumbers(beam, soil + sleepers_per_metre(model, omega), beam.loss_factor, omega)
-    };
-    let shortest = |f: f64| TAU / waves(f).iter().map(|k| k.re.abs()).fold(0.0, f64::max);
+    let waves = |f: f64| track_waves(model, f);
+    let shortest = |f: f64| shortest_wavelength(model, f);
     let mut out = Vec::new();
-    let resolved = |f: &&f64| shortest(**f) / l >= ELEMENTS_PER_WAVELENGTH;
+    let resolved = |f: &&f64| resolves(model, **f);
     let top = *frequencies.last().expect("validated: at least one");
     if !resolved(&&top) {
         let needed = shortest(top) / ELEMENTS_PER_WAVELENGTH;

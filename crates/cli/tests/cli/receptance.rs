@@ -103,3 +103,18 @@ fn bad_receptance_flags_are_named() {
         assert!(stderr.contains(named), "{args:?}: {stderr}");
     }
 }
+
+/// Frequencies far beyond what the mesh resolves (examples/receptance.toml: 0.0625 m elements, good to 2720 Hz with
+/// ten a wavelength) gave a "resonance" of the mesh at 17.8 kHz: peaks above the resolved band are not listed, and a
+/// warning says how many were left out.
+#[test]
+fn only_resonances_the_mesh_resolves_are_listed() {
+    let example = concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/receptance.toml");
+    let out = frictrack(&["receptance", example, "--frequencies", "100:20000:20", "--format", "json"]);
+    let v = json(&out);
+    let listed: Vec<f64> =
+        v["resonances"].as_array().unwrap().iter().map(|r| r["frequency"].as_f64().unwrap()).collect();
+    assert!(listed.iter().all(|&f| f < 2720.0), "{listed:?}");
+    let warnings = v["warnings"].to_string();
+    assert!(warnings.contains("up to 2720 Hz") && warnings.contains("1 peak(s)"), "{warnings}");
+}

@@ -53,18 +53,45 @@ def _source(scenario: ScenarioLike) -> "tuple[str, Optional[str]]":
     raise TypeError(f"scenario must be None, a path, a TOML string or a dict, not {type(scenario).__name__}")
 
 
+def _numbers(name: str, values: Any, what: str, example: str) -> "list[float]":
+    """``values`` as a list of floats: one number or any iterable of numbers; anything else (text, None, a bool) is an
+    InputError naming the argument ``name``, what it takes (``what``) and an ``example``."""
+    if isinstance(values, (int, float)) and not isinstance(values, bool):
+        return [float(values)]
+    try:
+        if values is None or isinstance(values, (str, bytes, bool)):
+            raise TypeError
+        return [float(v) for v in values]
+    except (TypeError, ValueError):
+        raise InputError(f"invalid {name} = {values!r}: must be {what} or a sequence of them, e.g. {example}") from None
+
+
 def _speeds(speeds: "Union[float, Sequence[float]]") -> "list[float]":
     """Speeds (m/s) as a list: one number or any iterable of numbers; anything else is an InputError naming it."""
-    if isinstance(speeds, (int, float)) and not isinstance(speeds, bool):
-        return [float(speeds)]
-    try:
-        if isinstance(speeds, (str, bytes, bool)):
-            raise TypeError
-        return [float(v) for v in speeds]
-    except (TypeError, ValueError):
-        raise InputError(
-            f"invalid speeds = {speeds!r}: must be a speed in m/s or a sequence of them, e.g. 200.0 or [100.0, 200.0]"
-        ) from None
+    return _numbers("speeds", speeds, "a speed in m/s", "200.0 or [100.0, 200.0]")
+
+
+def _place(name: str, value: Any) -> Optional[float]:
+    """A position along the track (m) or None; anything else is an InputError naming the argument."""
+    if value is None:
+        return None
+    if isinstance(value, (int, float)) and not isinstance(value, bool):
+        return float(value)
+    raise InputError(f"invalid {name} = {value!r}: must be a position along the track in m (a number), or None")
+
+
+def _jobs(jobs: Optional[int]) -> int:
+    """Worker threads: None or 0 for every core, else a whole number ≥ 1; anything else is an InputError."""
+    if jobs is None:
+        return 0
+    if isinstance(jobs, int) and not isinstance(jobs, bool) and jobs >= 0:
+        return jobs
+    raise InputError(f"invalid jobs = {jobs!r}: must be a whole number ≥ 1 of threads, or 0 or None for every core")
+
+
+# The overrides a receptance uses: the track's damping, mesh and absorbing zones; a load's (speed, train, friction,
+# the time step and solver) do nothing for it and are refused rather than ignored.
+_RECEPTANCE_OVERRIDES = ("damping_ratio", "elements", "absorbing_zones")
 
 
 ProgressLike = Union[None, bool, Callable[[float], Any]]
@@ -199,7 +226,7 @@ def sweep(scenario: ScenarioLike = None, speeds: Sequence[float] = (), jobs: Opt
     kind, text = _source(scenario)
     with _Reporter(progress, "sweep") as report:
         csv, failures, warnings = _native.sweep(
-            kind, text, _speeds(speeds), int(jobs or 0), list(overrides.items()), report
+            kind, text, _speeds(speeds), _jobs(jobs), list(overrides.items()), report
         )
     return Sweep(parse_csv(csv, dict(_native.sweep_columns())), [(float(v), str(e)) for v, e in failures],
                  list(warnings))
@@ -284,7 +311,7 @@ def study(name: str, scenario: ScenarioLike = None, resolution: str = "coarse", 
     peak ``peak_max_acceleration`` (m/s²) at ``peak_acceleration_speed`` (m/s), and ``acceleration_over_limit``."""
     kind, text = _source(scenario)
     summary, table, headline, lines, columns = _native.study(
-        name, kind, text, resolution, int(jobs or 0), deck_track, list(overrides.items())
+        name, kind, text, resolution, _jobs(jobs), deck_track, list(overrides.items())
     )
     return Study(name, json.loads(summary), parse_csv(table, dict(columns)), list(headline), list(lines))
 
@@ -314,12 +341,19 @@ def receptance(scenario: ScenarioLike = None, frequencies: Sequence[float] = (),
     ``at``, the point receptance; ``at`` defaults to mid-track) at each of ``frequencies`` (Hz, > 0, increasing),
     from the same model as a run — Euler–Bernoulli or Timoshenko rail, viscous damping and the loss factors of
     ``[beam]`` and ``[foundation]`` — one complex banded solve per frequency on ``jobs`` threads. A linear
-    foundation only. ``out`` (a folder) receives receptance.csv, receptance.json and the figure. Overrides as for
-    :func:`run`."""
+    foundation only. ``out`` (a folder) receives receptance.csv, receptance.json and the figure. ``frequencies`` may
+    be one frequency. Overrides of the track only: ``damping_ratio``, ``elements``, ``absorbing_zones`` (as for
+    :func:`run`); a load's are refused."""
+    frequencies = _numbers("frequencies", frequencies, "a frequency in Hz", "50.0 or range(10, 1001, 5)")
+    for name in overrides:
+        if name not in _RECEPTANCE_OVERRIDES:
+            raise InputError(
+                f"invalid {name} = {overrides[name]!r}: does nothing for a receptance, a property of the track alone; "
+                f"it takes {', '.join(_RECEPTANCE_OVERRIDES)}"
+            )
     kind, text = _source(scenario)
     summary, table, report, warnings = _native.receptance(
-        kind, text, [float(f) for f in frequencies], None if at is None else float(at),
-        None if excite is None else float(excite), int(jobs or 0), list(overrides.items()),
+        kind, text, frequencies, _place("at", at), _place("excite", excite), _jobs(jobs), list(overrides.items()),
         None if out is None else os.fspath(out),
     )
     for warning in warnings:
