@@ -80,7 +80,7 @@ pub fn run(args: &RunArgs) -> Result<()> {
     let ran = report::run_output::run_with_snapshots(&case, &requests, stop, &progress);
     bar.finish_and_clear();
     let (result, snapshots) = crate::interrupt::explain(ran, None)?;
-    let report = RunSummary::of(&scenario, &case, &result, start.elapsed().as_secs_f64())?;
+    let report = RunSummary::of(&scenario, &case, &result, start)?;
     for warning in report::result_warnings::result_warnings(&case, &report) {
         eprintln!("warning: {warning}");
     }

@@ -29,6 +29,7 @@ pub(crate) fn run(
     progress: Option<Bound<'_, PyAny>>,
     out: Option<std::path::PathBuf>,
 ) -> PyResult<RunTexts> {
+    let started = std::time::Instant::now();
     let scenario = Source::of(kind, text)?.read()?;
     let overrides = overrides(&keywords)?;
     let scenario = recording(overrides.apply(scenario));
@@ -38,12 +39,11 @@ pub(crate) fn run(
     }
     let mut warnings: Vec<String> =
         scenario::diagnostics::warnings(&scenario, &case).iter().map(ToString::to_string).collect();
-    let started = std::time::Instant::now();
     let outcome = interruptible::run_reporting(py, progress, move |stop, told| {
         told.announce("frictrack.run", &runner::cost::Estimate::run(runner::cost::RunCost::of(&case)));
         let requests = snapshot_requests(&scenario, &case);
         let (result, snapshots) = run_with_snapshots(&case, &requests, Some(stop), &|f| told.set(f))?;
-        let summary = RunSummary::of(&scenario, &case, &result, started.elapsed().as_secs_f64())?;
+        let summary = RunSummary::of(&scenario, &case, &result, started)?;
         let after: Vec<String> =
             report::result_warnings::result_warnings(&case, &summary).iter().map(ToString::to_string).collect();
         let json = summary

@@ -61,8 +61,10 @@ pub struct RunSummary {
     /// How the steps were solved.
     #[serde(flatten)]
     pub stepping: SteppingSummary,
-    /// Wall time of the run (s).
+    /// Wall time of the whole run (s): the scenario's build with its statics, the time loop, the static envelope.
     pub wall_time: f64,
+    /// Wall time of the time loop alone (s).
+    pub time_loop: f64,
     /// The vehicles' wheels and bodies, with vehicles.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub vehicles: Option<crate::vehicle_output::VehicleReport>,
@@ -219,10 +221,12 @@ impl RunSummary {
 }
 
 impl RunSummary {
-    /// The summary of `result`, a run of `case` built from `scenario`, whose loop took `wall_time` (s): what ran,
-    /// the extremes, the static envelope of the same loads and the dynamic amplification over it, the energy
-    /// ledger, the solver's statistics and, with vehicles, theirs.
-    pub fn of(scenario: &Scenario, case: &Case, result: &RunResult, wall_time: f64) -> Result<Self> {
+    /// The summary of `result`, a run of `case` built from `scenario` from `started` on (the scenario's build — the
+    /// settled statics — included): what ran, the extremes, the static envelope of the same loads and the dynamic
+    /// amplification over it, the energy ledger, the solver's statistics and, with vehicles, theirs. Its wall time
+    /// is the whole cost up to now: set-up, statics, stepping and the static envelope (the time loop's own is
+    /// `stepping.statistics`'s).
+    pub fn of(scenario: &Scenario, case: &Case, result: &RunResult, started: std::time::Instant) -> Result<Self> {
         let settings = &case.settings;
         let placed = &case.interactions;
         // Where results are read: the extremes' nodes, else the extremes window.
@@ -255,7 +259,8 @@ impl RunSummary {
             extremes: ExtremesSummary::of(case, result)?,
             energy: result.energy.balance(),
             stepping: SteppingSummary::of(result),
-            wall_time,
+            wall_time: started.elapsed().as_secs_f64(),
+            time_loop: result.statistics.wall_time,
             vehicles: result.vehicles.as_ref().map(|v| {
                 let contact = settings.moving.load.vehicles().map_or("", VehicleSettings::contact_name);
                 crate::vehicle_output::VehicleReport::of(v, contact, Some((mesh.element_length(), read)))

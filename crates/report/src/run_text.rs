@@ -51,7 +51,11 @@ fn write_text(f: &mut Formatter<'_>, r: &RunSummary) -> fmt::Result {
     if let Some(v) = &r.vehicles {
         write_vehicles(f, v)?;
     }
-    writeln!(f, "  wall time {:.3} s", r.wall_time)
+    writeln!(
+        f,
+        "  wall time {:.3} s (the time loop {:.3} s; set-up, statics and the static envelope the rest)",
+        r.wall_time, r.time_loop
+    )
 }
 
 /// The soil's lines of the text report: its law, the settlement, where the rail lifted off and the soil's energy.
