@@ -90,6 +90,7 @@ fn run_prints_the_documented_json() {
         "/max_iterations",
         "/solver",
         "/wall_time",
+        "/time_loop",
     ] {
         assert!(v.pointer(key).is_some_and(|x| !x.is_null()), "missing {key}");
     }
@@ -103,6 +104,8 @@ fn run_prints_the_documented_json() {
     assert_eq!(f("/energy/friction_dissipation") + f("/energy/viscous_dissipation"), f("/energy/dissipated"));
     assert!(f("/energy/residual").abs() < 1e-9 * f("/energy/load_work"));
     assert_eq!(f("/energy/transported"), 0.0, "a fixed track carries nothing out");
+    // The whole run's time holds its time loop's (and the set-up and statics around it).
+    assert!(f("/wall_time") >= f("/time_loop") && f("/time_loop") > 0.0);
     assert_eq!(v["device_positions"].as_array().unwrap().len(), 31);
     // Friction cuts the peak of the friction-free run.
     let free = json(&frictrack(&["run", "--speed", "180", "--format", "json"]));
