@@ -168,8 +168,9 @@ impl ReceptanceStudy {
         let mut warnings = warnings(&model, &request.frequencies, request.excite);
         if unresolved > 0 {
             warnings.push(format!(
-                "{unresolved} peak(s) of |α| above the frequencies the mesh resolves are not listed as resonances: \
-                 there the curve is the mesh's, not the track's"
+                "{unresolved} peak(s) of |α| where the mesh has fewer than {} elements a bending wavelength are not \
+                 listed as resonances: there the curve is the mesh's, not the track's",
+                crate::receptance_peaks::LISTED_ELEMENTS_PER_WAVELENGTH
             ));
         }
         Ok(Self {
