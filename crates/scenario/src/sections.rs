@@ -120,9 +120,8 @@ pub struct LoadSection {
     /// `[[load.patches]]`: uniform load patches of the train.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub patches: Vec<PatchSection>,
-    /// What the beam carries of a train's axle loads (and patches): one rail half of each, a deck all of it.
-    /// Default by the model ([`LoadSection::share_on`]): a beam on a foundation is a rail, one without a deck.
-    /// The single load `force` is the beam's own and never scaled.
+    /// What the beam carries of a train's axle loads (and patches), by default [`LoadSection::share_on`]; the single
+    /// load `force` is the beam's own and never scaled.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub carries: Option<AxleShare>,
 }
@@ -178,9 +177,8 @@ impl AxleShare {
 }
 
 impl LoadSection {
-    /// What the beam carries of the axles: `carries` if given, else by the model — a rail (one rail's half) on a
-    /// foundation of stiffness `foundation_stiffness` > 0 or on sleepers (`on_sleepers`), a deck (whole axles) on
-    /// neither.
+    /// What the beam carries of the axles: `carries` if given, else a rail's half on a soil of stiffness
+    /// `foundation_stiffness` > 0 or on sleepers, whole axles on neither (a deck).
     pub fn share_on(&self, foundation_stiffness: f64, on_sleepers: bool) -> AxleShare {
         let track = foundation_stiffness > 0.0 || on_sleepers;
         self.carries.unwrap_or(if track { AxleShare::OneRail } else { AxleShare::WholeAxle })
