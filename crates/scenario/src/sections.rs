@@ -128,14 +128,8 @@ pub struct LoadSection {
 
 impl Default for LoadSection {
     fn default() -> Self {
-        Self {
-            force: uic60_on_soft_soil().load,
-            speed: 200.0,
-            train: None,
-            axles: Vec::new(),
-            patches: Vec::new(),
-            carries: None,
-        }
+        let (axles, patches) = (Vec::new(), Vec::new());
+        Self { force: uic60_on_soft_soil().load, speed: 200.0, train: None, axles, patches, carries: None }
     }
 }
 
