@@ -96,9 +96,7 @@ pub fn run(args: &AnalyticArgs) -> Result<()> {
         None => None,
     };
     let response = SteadyResponse::of(&scenario, args.damping_ratio, train, &speeds)?;
-    if let (_, Some(note)) = scenario.uniform_support("the closed form")? {
-        eprintln!("note: {note}");
-    }
+    crate::scenario_args::print_uniform_support_note(&scenario, "the closed form")?;
     for warning in response.warnings() {
         eprintln!("warning: {warning}");
     }

@@ -37,9 +37,7 @@ pub fn run(args: &ReferenceArgs) -> Result<()> {
     if let Some(elements) = args.elements {
         scenario.mesh.elements = elements;
     }
-    if let (_, Some(note)) = scenario.uniform_support("the closed form")? {
-        eprintln!("note: {note}");
-    }
+    crate::scenario_args::print_uniform_support_note(&scenario, "the closed form")?;
     // The option is `--modes` here; the library names its parameter `modes`.
     let check = ReferenceCheck::of(&scenario, args.modes).map_err(|e| match e {
         StudyError::InvalidField { path, value, allowed } if path == "modes" => {

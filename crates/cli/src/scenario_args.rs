@@ -97,6 +97,15 @@ pub fn print_warnings(scenario: &Scenario, case: &scenario::Case) {
     }
 }
 
+/// Say, on standard error, that a model of a uniform support (`what`: "the closed form", "the stationary wave") takes
+/// `scenario`'s sleepers as their long-wave twin ([`Scenario::uniform_support`]); nothing without sleepers.
+pub fn print_uniform_support_note(scenario: &Scenario, what: &str) -> scenario::error::Result<()> {
+    if let (_, Some(note)) = scenario.uniform_support(what)? {
+        eprintln!("note: {note}");
+    }
+    Ok(())
+}
+
 impl ScenarioArgs {
     /// The scenario file (or the reference case) with the flags applied.
     pub fn load(&self) -> Result<Scenario> {

@@ -80,9 +80,7 @@ pub fn run(args: &StationaryArgs) -> Result<()> {
         }
     }
     let first = scenario.stationary_problem(speeds.first().copied().unwrap_or(0.0), domain)?;
-    if let (_, Some(note)) = scenario.uniform_support("the stationary wave")? {
-        eprintln!("note: {note}");
-    }
+    crate::scenario_args::print_uniform_support_note(&scenario, "the stationary wave")?;
     crate::progress::announce("stationary", &runner::cost::Estimate::stationary(&first, &speeds, true));
     let stop = Some(crate::interrupt::stop_flag());
     let bar = crate::progress::bar("stationary", Some(speeds.len() as u64), args.format != TableFormat::Text);

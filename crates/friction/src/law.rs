@@ -197,6 +197,13 @@ impl Law {
         }
     }
 
+    /// The force (N, pushing positive) a linear spring law holds at penetration δ (m): k⟨δ⟩₊ for a stop or the soil,
+    /// kδ for a bilateral spring; None for friction, rigid contact and Hertz.
+    pub fn linear_spring_force(&self, penetration: f64) -> Option<f64> {
+        let (stiffness, pulls) = self.linear_spring()?;
+        Some(if pulls { stiffness * penetration } else { stiffness * penetration.max(0.0) })
+    }
+
     /// The penetration δ_{k+1} (m) a linear spring law holds for the step's impulse `p` (N·s) with step h (s):
     /// p/(hk); a stop without force ends open (0 stands for any δ ≤ 0). None for other laws (Hertz's follows from
     /// its linearisation, [`crate::hertz::HertzStep::end_penetration`]).

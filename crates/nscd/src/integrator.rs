@@ -133,23 +133,14 @@ impl Integration {
 /// M̂ = M + hθC + h²θ²K for the θ-method; (αm/γ)(M + hθ_eC + h²θ_e²K) for the generalized-α, so that a step's
 /// impulse is p = h·r in both (docs/theory.md §5).
 pub fn iteration_matrix(system: &LinearSystem, integration: Integration) -> SymmetricBanded {
-    let h = integration.step;
-    match integration.scheme {
-        Scheme::Theta(theta) => SymmetricBanded::linear_combination(&[
-            (1.0, &system.mass),
-            (h * theta, &system.damping),
-            (h * h * theta * theta, &system.stiffness),
-        ]),
-        Scheme::GeneralizedAlpha { .. } => {
-            let c = integration.coefficients();
-            let (scale, theta) = (c.mass_scale(), c.position_weight());
-            SymmetricBanded::linear_combination(&[
-                (scale, &system.mass),
-                (scale * h * theta, &system.damping),
-                (scale * h * h * theta * theta, &system.stiffness),
-            ])
-        }
-    }
+    // The θ-method's scale is exactly 1 and θ_e = 1·θ/1 exactly θ: the same bits as M + hθC + h²θ²K.
+    let (h, c) = (integration.step, integration.coefficients());
+    let (scale, theta) = (c.mass_scale(), c.position_weight());
+    SymmetricBanded::linear_combination(&[
+        (scale, &system.mass),
+        (scale * h * theta, &system.damping),
+        (scale * h * h * theta * theta, &system.stiffness),
+    ])
 }
 
 /// The one-step integrator's matrix: M̂ for one [`Integration`] and its LDLᵀ factors, made together so that they

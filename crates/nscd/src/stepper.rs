@@ -247,17 +247,19 @@ impl MoreauJean {
     pub fn step(&mut self, forcing: &dyn Forcing) -> Result<StepReport> {
         let (h, theta) = (self.h, self.theta);
         let (t0, t1) = (self.time, self.time + h);
-        if let Some(rates) = self.rates.as_mut() {
-            if rates.needs_start() {
-                start_residual(&self.problem, forcing, t0, (&self.q, &self.kq, &self.cv), &mut self.work);
-                rates.start(&self.work)?;
-            }
-            rates.set_start_velocity(&self.v);
+        if let Some(rates) = self.rates.as_mut()
+            && rates.needs_start()
+        {
+            start_residual(&self.problem, forcing, t0, (&self.q, &self.kq, &self.cv), &mut self.work);
+            rates.start(&self.work)?;
         }
         if self.problem.is_varying() {
             // The update phase: moving rows and the step's law from (t_k, q_k, v_k), the warm start brought into
             // the new bounds, the solver told of the new rows. The generalized-α's laws see its start velocity.
-            let v = self.rates.as_ref().map_or(&self.v[..], |r| &r.start_velocity[..]);
+            let v = match self.rates.as_mut() {
+                Some(rates) => rates.start_velocity(&self.v),
+                None => &self.v[..],
+            };
             self.problem.update(self.time, &self.q, v);
             self.problem.clamp_to_bounds(&mut self.p);
             if self.problem.has_moving() {
@@ -294,16 +296,14 @@ impl MoreauJean {
             }
             report
         };
-        if let Some(rates) = self.rates.as_mut() {
-            // work = v_{n+αf}, where the forces act; q_{n+1} = q_n + h[(1−γ)Q_n + γQ_{n+1}].
-            rates.force_point_velocity(&self.v_prev, &self.v, &mut self.work);
-            rates.advance_position(h, &self.work, &mut self.q);
-        } else {
-            // work = v_θ, the velocity of the step: q_{k+1} = q_k + h v_θ.
-            for (((w, q), v), v_prev) in self.work.iter_mut().zip(self.q.iter_mut()).zip(&self.v).zip(&self.v_prev) {
-                *w = theta * v + (1.0 - theta) * v_prev;
-                *q += h * *w;
-            }
+        // work = v_θ, where the forces act (θ is the generalized-α's αf). The θ-method's step moves q by h v_θ; the
+        // generalized-α's by h[(1−γ)Q_n + γQ_{n+1}].
+        for ((w, v), v_prev) in self.work.iter_mut().zip(&self.v).zip(&self.v_prev) {
+            *w = theta * v + (1.0 - theta) * v_prev;
+        }
+        match self.rates.as_mut() {
+            Some(rates) => rates.advance_position(h, &self.work, &mut self.q),
+            None => self.q.iter_mut().zip(&self.work).for_each(|(q, w)| *q += h * w),
         }
         let projection = if self.problem.has_projection() {
             let projection = self.problem.project_positions(t1, (&self.q, &self.v), &self.p, &mut self.dq);

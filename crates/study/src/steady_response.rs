@@ -32,6 +32,9 @@ pub struct SteadyResponse {
     pub foundation: Foundation,
     /// The infinite track of the scenario's beam (either rail theory) on that foundation.
     pub beam: InfiniteTrack,
+    /// The rail the closed form took: the scenario's, on sleepers their long-wave twin's (the sleepers' moving mass
+    /// on it, [`Scenario::uniform_support`]).
+    pub rail: fem_beam::Beam,
     /// The train, as the beam carries it; None for the single load.
     pub train: Option<Train>,
     /// The single load F (N), used without a train.
@@ -97,7 +100,7 @@ impl SteadyResponse {
                 })
             })
             .collect::<Result<Vec<_>>>()?;
-        Ok(Self { foundation, beam, train, load: case.load, static_deflection: w0, points })
+        Ok(Self { foundation, beam, rail: case.beam, train, load: case.load, static_deflection: w0, points })
     }
 
     /// Warnings for the reader: undamped within [`RESONANCE_BAND`] of the critical speed the closed form is the

@@ -22,8 +22,7 @@ impl Output for SteadyReport<'_> {
         let (points, train, inf, foundation) =
             (&response.points, &response.train, &response.beam, &response.foundation);
         let w0 = response.static_deflection;
-        // On sleepers the closed form's beam is their long-wave twin's, carrying the sleepers' moving mass.
-        let beam = scenario.uniform_support("the closed form").map_or(scenario.beam, |(twin, _)| twin.beam);
+        let beam = &response.rail;
         writeln!(
             f,
             "infinite {}{}, EI = {:.4} MN·m², ρA = {:.3} kg/m, k_f = {:.1} kN/m², {}, ζ = {:.4}, \

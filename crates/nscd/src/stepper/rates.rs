@@ -28,8 +28,8 @@ pub(crate) struct Rates {
     /// A_n (m/s²), M A_n (N).
     pub(crate) acceleration: Vec<f64>,
     pub(crate) m_acceleration: Vec<f64>,
-    /// The laws' start velocity d_n/(1 − θ_e) (m/s).
-    pub(crate) start_velocity: Vec<f64>,
+    /// The laws' start velocity d_n/(1 − θ_e) (m/s; [`Rates::start_velocity`]).
+    start_velocity: Vec<f64>,
     /// M until the first step sets A₀ = M⁻¹(F₀ − C v₀ − K q₀ + Hᵀr₀); None after.
     mass: Option<SymmetricBanded>,
     /// Scratch: Q_{n+1}, K Q_{n+1}, Δq.
@@ -85,13 +85,14 @@ impl Rates {
         Ok(())
     }
 
-    /// Set the laws' start velocity d_n/(1 − θ_e) from v_n, with d_n = c_A Q_n + (γ(1 − αf)/αm) v_n.
-    pub(crate) fn set_start_velocity(&mut self, v: &[f64]) {
+    /// The laws' start velocity d_n/(1 − θ_e) from v_n, with d_n = c_A Q_n + (γ(1 − αf)/αm) v_n.
+    pub(crate) fn start_velocity(&mut self, v: &[f64]) -> &[f64] {
         let Coefficients { alpha_m, alpha_f, gamma } = self.c;
         let (a, b) = (self.carry / (1.0 - self.theta), gamma * (1.0 - alpha_f) / alpha_m / (1.0 - self.theta));
         for ((s, q), v) in self.start_velocity.iter_mut().zip(&self.q_rate).zip(v) {
             *s = a * q + b * v;
         }
+        &self.start_velocity
     }
 
     /// −h[C v + K q + αf h K e_n] + h c_A (αm/γ) M A_n into `out` (the free velocity's right side without the load),
@@ -140,13 +141,5 @@ impl Rates {
         std::mem::swap(&mut self.q_rate, &mut self.q_rate_next);
         std::mem::swap(&mut self.kq_rate, &mut self.kq_rate_next);
         (alpha_f - 0.5) * (kinetic + strain) - h * (gamma - alpha_m) * rates
-    }
-
-    /// Power-weighted velocity v_{n+αf} = (1−αf)v_n + αf v_{n+1} into `out`.
-    pub(crate) fn force_point_velocity(&self, v_prev: &[f64], v: &[f64], out: &mut [f64]) {
-        let alpha_f = self.c.alpha_f;
-        for ((o, a), b) in out.iter_mut().zip(v_prev).zip(v) {
-            *o = (1.0 - alpha_f) * a + alpha_f * b;
-        }
     }
 }

@@ -82,9 +82,7 @@ pub(super) fn start_residual(
     forcing.add_to(t0, 1.0, out);
     let interactions = &problem.interactions;
     for (row, law) in interactions.rows().iter().zip(interactions.laws()).take(problem.fixed_len()) {
-        if let (Some((stiffness, pulls)), Some(gap)) = (law.linear_spring(), law.gap()) {
-            let penetration = -(gap + row.dot(q));
-            let force = if pulls { stiffness * penetration } else { stiffness * penetration.max(0.0) };
+        if let Some(force) = law.gap().and_then(|gap| law.linear_spring_force(-(gap + row.dot(q)))) {
             row.add_transpose(force, out);
         }
     }
