@@ -124,7 +124,7 @@ impl BeamModel {
             entries(&mut mass, |_| [0.0; 3], |m| m);
             entries(
                 &mut damping,
-                |s| [s.pad.damping, s.ballast.damping, s.subgrade.unwrap_or_default().damping],
+                |s| [s.pad.damping, s.bonded_damping(), s.subgrade.unwrap_or_default().damping],
                 |_| 0.0,
             );
             entries(

@@ -35,7 +35,7 @@ pub struct SleeperException {
     pub last: usize,
     /// The pad's stiffness times this (> 0). Default 1.
     pub pad_scale: f64,
-    /// The ballast's stiffness times this (≥ 0; 0: the sleeper hangs from the rail). Default 1.
+    /// The ballast's stiffness and dashpot times this (≥ 0; 0: no ballast, the sleeper hangs from the rail). Default 1.
     pub ballast_scale: f64,
     /// How the ballast holds these sleepers. Default bonded.
     pub contact: BallastContact,

@@ -286,13 +286,13 @@ impl Sleepers {
     }
 }
 
-/// What holds one sleeper, the exceptions applied: its pad and ballast layers (stiffnesses scaled), how the ballast
-/// holds it, its friction force (N).
+/// What holds one sleeper, the exceptions applied: its pad (stiffness scaled) and ballast (stiffness and dashpot
+/// scaled) layers, how the ballast holds it, its friction force (N).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SleeperSupport {
     /// The pad (stiffness scaled).
     pub pad: Layer,
-    /// The ballast (stiffness scaled).
+    /// The ballast (stiffness and dashpot scaled).
     pub ballast: Layer,
     /// The subgrade under a ballast body ([`BallastBody`]), or None.
     pub subgrade: Option<Layer>,
@@ -307,6 +307,15 @@ impl SleeperSupport {
     pub fn bonded_stiffness(&self) -> f64 {
         match self.contact {
             BallastContact::Bonded => self.ballast.stiffness,
+            BallastContact::Unilateral { .. } => 0.0,
+        }
+    }
+
+    /// The ballast's dashpot C holds (N·s/m): all of it where bonded, none where unilateral — there the law carries
+    /// it in contact only (a dashpot does not pull a hanging sleeper nor act across an open gap).
+    pub fn bonded_damping(&self) -> f64 {
+        match self.contact {
+            BallastContact::Bonded => self.ballast.damping,
             BallastContact::Unilateral { .. } => 0.0,
         }
     }
@@ -331,7 +340,11 @@ impl Sleepers {
             None => typical,
             Some(e) => SleeperSupport {
                 pad: Layer { stiffness: self.pad.stiffness * e.pad_scale, ..self.pad },
-                ballast: Layer { stiffness: self.ballast.stiffness * e.ballast_scale, ..self.ballast },
+                ballast: Layer {
+                    stiffness: self.ballast.stiffness * e.ballast_scale,
+                    damping: self.ballast.damping * e.ballast_scale,
+                    ..self.ballast
+                },
                 contact: e.contact,
                 friction: e.friction,
                 ..typical

@@ -28,6 +28,22 @@ pub struct StepWeights {
     pub force: f64,
 }
 
+/// Where an interaction's row stands at a step's start (docs/theory.md §9): the gap g_k (m), the scheme's start
+/// velocity U_k (m/s) from which the step's displacement HΔq = h[(1−θ)U_k + θU_{k+1}] runs, the row's velocity Hv_k
+/// at t_k (m/s; the same as U_k for the θ-method, not for the generalized-α), where a dashpot's velocity
+/// wU_{k+1} + (1−w)Hv_k starts as the structure's C v does, and the rheonomic velocity b_r (m/s, U = Hq̇ + b_r).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct RowStart {
+    /// g_k (m).
+    pub gap: f64,
+    /// U_k (m/s).
+    pub velocity: f64,
+    /// Hv_k (m/s).
+    pub current: f64,
+    /// b_r (m/s).
+    pub rheonomic: f64,
+}
+
 /// The law of an interaction (docs/theory.md §9). The gap of a unilateral law is g = `gap` + H_α q (m, positive
 /// open), so U_α = ġ.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -52,15 +68,19 @@ pub enum Law {
         /// k_c > 0 (N/m).
         stiffness: f64,
     },
-    /// A unilateral Winkler spring of a soil that pushes but cannot pull: force k⟨δ_θ⟩₊ at the θ-point penetration
-    /// δ_θ = θδ_{k+1} + (1−θ)δ_k, where the structure's stiffness K acts too, so that while it presses it is that
-    /// linear spring step for step (energy-conserving at θ = ½) — the compliant stop, which takes its force at the
-    /// step's end, damps a distributed soil numerically (docs/theory.md §13). Fixed interactions only.
+    /// A unilateral Kelvin–Voigt support that pushes but cannot pull — a soil's Winkler spring, a voided sleeper's
+    /// ballast: force ⟨kδ_w + cδ̇_w⟩₊ with the penetration δ_w and its rate taken where the scheme's forces act
+    /// (t_k + wh, where the structure's K and C act too), so that while it presses it is that linear spring and
+    /// dashpot step for step (the spring energy-conserving at θ = ½) — the compliant stop, which takes its force at
+    /// the step's end, damps a distributed soil numerically (docs/theory.md §13). The dashpot acts in contact only:
+    /// it neither pulls a separating body nor acts across an open gap. Fixed interactions only.
     Soil {
         /// g₀: the gap at q = 0 (m).
         gap: f64,
         /// k > 0 (N/m).
         stiffness: f64,
+        /// c ≥ 0 (N·s/m), acting only in contact.
+        damping: f64,
     },
     /// A linear spring that also pulls: force k·(−g) of either sign, integrated implicitly — a glued (bilateral)
     /// contact, the reference a unilateral one equals while it presses.
@@ -144,8 +164,8 @@ impl Law {
         matches!(self, Law::Signorini { .. })
     }
 
-    /// The step's impulse bounds and drift (lo, hi, b) from the gap g_k (m), the relative velocity U_k (m/s), the
-    /// rheonomic velocity b_r (m/s, U = Hq̇ + b_r) and the scheme's [`StepWeights`] (docs/theory.md §9):
+    /// The step's impulse bounds and drift (lo, hi, b) from the row's [`RowStart`] and the scheme's [`StepWeights`]
+    /// (docs/theory.md §9):
     ///
     /// - Coulomb of capacity F: [−hF, hF], b = b_r;
     /// - Signorini: [0, +∞), b = b_r + e·U_k when the predicted gap g_k + γhU_k ≤ 0 ([`PREDICTION_WEIGHT`]) or
@@ -153,8 +173,9 @@ impl Law {
     /// - compliant stop and Hertz: [0, +∞), a bilateral spring (−∞, +∞), each with the drift of
     ///   [`compliant_drift`] from the penetration δ_k = −g_k. Their compliance is [`Law::run_compliance`]
     ///   (Hertz: its linearisation's, [`crate::hertz::HertzStep::law`]).
-    pub fn step_bounds(&self, gap: f64, u: f64, rheonomic: f64, weights: StepWeights, closed: bool) -> (f64, f64, f64) {
-        let StepWeights { step: h, theta, force } = weights;
+    pub fn step_bounds(&self, start: RowStart, weights: StepWeights, closed: bool) -> (f64, f64, f64) {
+        let StepWeights { step: h, theta, .. } = weights;
+        let RowStart { gap, velocity: u, rheonomic, .. } = start;
         let spring = || compliant_drift(-gap, u, rheonomic, h, theta);
         match *self {
             Law::Coulomb { capacity } => (-h * capacity, h * capacity, rheonomic),
@@ -166,20 +187,22 @@ impl Law {
                 }
             }
             Law::Compliant { .. } | Law::Hertz { .. } => (0.0, f64::INFINITY, spring()),
-            Law::Soil { .. } => (0.0, f64::INFINITY, soil_drift(-gap, u, rheonomic, h, theta, force)),
+            Law::Soil { stiffness, damping, .. } => {
+                (0.0, f64::INFINITY, soil_drift(start, weights, stiffness, damping))
+            }
             Law::Spring { .. } => (f64::NEG_INFINITY, f64::INFINITY, spring()),
         }
     }
 
     /// The compliance d (m/s per N·s) the law keeps for a whole run of the step's `weights`: 1/(h²θk) for a linear
-    /// spring of stiffness k (so that a positive impulse is p = h·k·δ_{k+1}), 1/(h²wθk) for the soil (p = hkδ_w,
-    /// [`soil_drift`]), 0 for friction and rigid contact, and 0 for Hertz, whose compliance follows its
-    /// linearisation step by step.
+    /// spring of stiffness k (so that a positive impulse is p = h·k·δ_{k+1}), 1/(hw(hθk + c)) for the soil
+    /// (p = h(kδ_w + cδ̇_w), [`soil_drift`]), 0 for friction and rigid contact, and 0 for Hertz, whose compliance
+    /// follows its linearisation step by step.
     pub fn run_compliance(&self, weights: StepWeights) -> f64 {
         let StepWeights { step: h, theta, force } = weights;
         match *self {
             Law::Compliant { stiffness, .. } | Law::Spring { stiffness, .. } => 1.0 / (h * h * theta * stiffness),
-            Law::Soil { stiffness, .. } => 1.0 / (h * h * force * theta * stiffness),
+            Law::Soil { stiffness, damping, .. } => 1.0 / (h * force * (h * theta * stiffness + damping)),
             Law::Coulomb { .. } | Law::Signorini { .. } | Law::Hertz { .. } => 0.0,
         }
     }
@@ -197,11 +220,16 @@ impl Law {
         }
     }
 
-    /// The force (N, pushing positive) a linear spring law holds at penetration δ (m): k⟨δ⟩₊ for a stop or the soil,
-    /// kδ for a bilateral spring; None for friction, rigid contact and Hertz.
-    pub fn linear_spring_force(&self, penetration: f64) -> Option<f64> {
+    /// The force (N, pushing positive) a linear law holds at penetration δ (m) and penetration rate δ̇ (m/s): k⟨δ⟩₊
+    /// for a stop, kδ for a bilateral spring, ⟨kδ + cδ̇⟩₊ for the soil in contact (δ ≥ 0; nothing across a gap);
+    /// None for friction, rigid contact and Hertz.
+    pub fn linear_force(&self, penetration: f64, rate: f64) -> Option<f64> {
         let (stiffness, pulls) = self.linear_spring()?;
-        Some(if pulls { stiffness * penetration } else { stiffness * penetration.max(0.0) })
+        Some(match *self {
+            Law::Soil { damping, .. } if penetration >= 0.0 => (stiffness * penetration + damping * rate).max(0.0),
+            _ if pulls => stiffness * penetration,
+            _ => stiffness * penetration.max(0.0),
+        })
     }
 
     /// The penetration δ_{k+1} (m) a linear spring law holds for the step's impulse `p` (N·s) with step h (s):

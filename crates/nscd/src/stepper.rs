@@ -250,17 +250,16 @@ impl MoreauJean {
         if let Some(rates) = self.rates.as_mut()
             && rates.needs_start()
         {
-            start_residual(&self.problem, forcing, t0, (&self.q, &self.kq, &self.cv), &mut self.work);
+            start_residual(&self.problem, forcing, t0, (&self.q, &self.v, &self.kq, &self.cv), &mut self.work);
             rates.start(&self.work)?;
         }
         if self.problem.is_varying() {
             // The update phase: moving rows and the step's law from (t_k, q_k, v_k), the warm start brought into
             // the new bounds, the solver told of the new rows. The generalized-α's laws see its start velocity.
-            let v = match self.rates.as_mut() {
-                Some(rates) => rates.start_velocity(&self.v),
-                None => &self.v[..],
-            };
-            self.problem.update(self.time, &self.q, v);
+            match self.rates.as_mut() {
+                Some(rates) => self.problem.update_from(self.time, &self.q, rates.start_velocity(&self.v), &self.v),
+                None => self.problem.update(self.time, &self.q, &self.v),
+            }
             self.problem.clamp_to_bounds(&mut self.p);
             if self.problem.has_moving() {
                 self.solver.refresh(&self.problem)?;

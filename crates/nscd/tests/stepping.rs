@@ -4,6 +4,7 @@
 
 mod stepping {
     mod contact;
+    mod damped_contact;
     mod generalized_alpha;
     mod moving;
     mod oscillator;

@@ -54,7 +54,12 @@ impl FoundationSections {
         for QuadratureSection { row, weight, x } in
             section_quadrature::sections(model, self.subdivisions, self.quadrature)
         {
-            untouched.push(row, Law::Soil { gap: 0.0, stiffness: unilateral * weight }, x, SectionKind::Foundation);
+            untouched.push(
+                row,
+                Law::Soil { gap: 0.0, stiffness: unilateral * weight, damping: 0.0 },
+                x,
+                SectionKind::Foundation,
+            );
         }
         if !self.self_weight {
             return Ok(untouched);

@@ -30,7 +30,7 @@ use crate::position::{CLOSED_GAP, PositionProjection, ProjectionReport};
 use crate::system::LinearSystem;
 use dof_responses::DofResponses;
 use friction::hertz::{HertzStep, NEWTON_TOLERANCE, PENETRATION_FLOOR};
-use friction::law::natural_residual;
+use friction::law::{RowStart, natural_residual};
 use friction::{InteractionSet, Law};
 use responses::ImpulseResponses;
 use std::sync::Arc;
@@ -144,7 +144,7 @@ impl InteractionProblem {
             law.compliance[j] = l.run_compliance(weights);
             // Friction's bounds are fixed for the run: set here, by the one mapping from law to bounds.
             if !l.depends_on_state() {
-                (law.lower[j], law.upper[j], law.drift[j]) = l.step_bounds(0.0, 0.0, 0.0, weights, false);
+                (law.lower[j], law.upper[j], law.drift[j]) = l.step_bounds(RowStart::default(), weights, false);
             }
         }
         for (w, d) in delassus_diagonal.iter_mut().zip(&law.compliance) {
@@ -176,6 +176,12 @@ impl InteractionProblem {
     /// The update phase (docs/theory.md §9): rebuild the moving interactions' rows, responses and W_jj at (t_k, q_k),
     /// then set the law of the step from the state (q_k, v_k). Nothing to do for fixed friction alone.
     pub fn update(&mut self, time: f64, q: &[f64], v: &[f64]) {
+        self.update_from(time, q, v, v);
+    }
+
+    /// The same for a scheme whose laws start from a velocity `start` other than v_k (the generalized-α's,
+    /// [`friction::law::RowStart`]): the step's displacement runs from `start`, a dashpot's velocity from `v` = v_k.
+    pub fn update_from(&mut self, time: f64, q: &[f64], start: &[f64], v: &[f64]) {
         if !self.varying {
             return;
         }
@@ -186,7 +192,7 @@ impl InteractionProblem {
         for (k, interaction) in self.moving.iter_mut().enumerate() {
             let j = self.fixed + k;
             let row = self.interactions.row_mut(j);
-            let state = interaction.update(time, self.matrix.integration.step, q, v, row);
+            let state = interaction.update(time, self.matrix.integration.step, q, start, row);
             // G = Σ_i H_i r_i from the kept single-DOF responses, over the range the last G left non-zero.
             let column = &mut self.moving_responses[k * n..(k + 1) * n];
             let (lo, hi) = self.moving_support[k];
@@ -204,13 +210,24 @@ impl InteractionProblem {
         let (h, theta) = (weights.step, weights.theta);
         let rows = self.interactions.rows();
         for (j, law) in self.interactions.laws().iter().enumerate() {
-            let (gap, u, rheonomic) = if j >= self.fixed {
+            let row_start = if j >= self.fixed {
                 let state = self.moving_states[j - self.fixed];
-                (state.gap, state.velocity, state.rheonomic)
+                RowStart {
+                    gap: state.gap,
+                    velocity: state.velocity,
+                    current: state.velocity,
+                    rheonomic: state.rheonomic,
+                }
             } else {
                 let Some(gap) = law.gap() else { continue };
-                (gap + rows[j].dot(q), rows[j].dot(v), 0.0)
+                RowStart {
+                    gap: gap + rows[j].dot(q),
+                    velocity: rows[j].dot(start),
+                    current: rows[j].dot(v),
+                    rheonomic: 0.0,
+                }
             };
+            let RowStart { gap, velocity: u, rheonomic, .. } = row_start;
             if let Some(hertz) = self.hertz[j].as_mut() {
                 hertz.start(-gap, u, rheonomic, h);
                 Self::set_hertz_law(&mut self.law, &mut self.delassus_diagonal, j, hertz, (h, theta));
@@ -218,7 +235,7 @@ impl InteractionProblem {
             }
             // A moving rigid contact's positions are projected: closed, it stays in the step's index set.
             let closed = j >= self.fixed && gap <= CLOSED_GAP;
-            let (lower, upper, drift) = law.step_bounds(gap, u, rheonomic, weights, closed);
+            let (lower, upper, drift) = law.step_bounds(row_start, weights, closed);
             self.law.lower[j] = lower;
             self.law.upper[j] = upper;
             self.law.drift[j] = drift;

@@ -66,23 +66,23 @@ pub(super) fn spring_energy(problem: &InteractionProblem, q: &[f64], impulses: O
 }
 
 /// The generalized-α's start: M A₀ = F(t₀) − C v₀ − K q₀ + Σ_j H_jᵀ r_j into `out`, r_j the force each fixed linear
-/// spring law holds at q₀ (k⟨δ⟩₊ of a stop or the soil, kδ of a bilateral spring; friction, rigid and moving
-/// contacts hold none at the start), from the products K q₀ and C v₀.
+/// law holds at (q₀, v₀) ([`friction::Law::linear_force`]; friction, rigid and moving contacts hold none at the
+/// start), from the products K q₀ and C v₀.
 pub(super) fn start_residual(
     problem: &InteractionProblem,
     forcing: &dyn Forcing,
     t0: f64,
-    state: (&[f64], &[f64], &[f64]),
+    state: (&[f64], &[f64], &[f64], &[f64]),
     out: &mut [f64],
 ) {
-    let (q, kq, cv) = state;
+    let (q, v, kq, cv) = state;
     for ((o, kq), cv) in out.iter_mut().zip(kq).zip(cv) {
         *o = -(kq + cv);
     }
     forcing.add_to(t0, 1.0, out);
     let interactions = &problem.interactions;
     for (row, law) in interactions.rows().iter().zip(interactions.laws()).take(problem.fixed_len()) {
-        if let Some(force) = law.gap().and_then(|gap| law.linear_spring_force(-(gap + row.dot(q)))) {
+        if let Some(force) = law.gap().and_then(|gap| law.linear_force(-(gap + row.dot(q)), -row.dot(v))) {
             row.add_transpose(force, out);
         }
     }

@@ -225,7 +225,7 @@ fn stiff_compliant_stop_tends_to_the_rigid_stop() {
 fn the_soil_spring_is_the_structures_spring_while_it_presses() {
     let (m, k, x0, h) = (1.0, 100.0, 0.01, 2e-3);
     let weight = DofForce { dof: 0, force: |_| -100.0 };
-    let mut soil = stepper(m, 0.0, Law::Soil { gap: -1.0, stiffness: k }, x0, h, SolverKind::Projection);
+    let mut soil = stepper(m, 0.0, Law::Soil { gap: -1.0, stiffness: k, damping: 0.0 }, x0, h, SolverKind::Projection);
     let mut compliant = stepper(m, 0.0, Law::Compliant { gap: -1.0, stiffness: k }, x0, h, SolverKind::Projection);
     let mut reference = stepper(m, k, Law::Coulomb { capacity: 0.0 }, x0, h, SolverKind::Projection);
     let energy = |s: &MoreauJean| {

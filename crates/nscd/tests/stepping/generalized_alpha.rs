@@ -42,7 +42,7 @@ fn laws() -> InteractionSet {
     let mut set = InteractionSet::new();
     let row = |d: usize| InteractionRow::from_entries([(d, 1.0)]);
     set.push(row(1), Law::Coulomb { capacity: 3.0 }, InteractionKind::Friction);
-    set.push(row(3), Law::Soil { gap: -0.05, stiffness: 400.0 }, InteractionKind::Support);
+    set.push(row(3), Law::Soil { gap: -0.05, stiffness: 400.0, damping: 20.0 }, InteractionKind::Support);
     set.push(row(5), Law::Compliant { gap: 0.01, stiffness: 5e3 }, InteractionKind::Support);
     set
 }

@@ -3,9 +3,10 @@
 //! largest gap that opened under it; and the rail's deflection under the first load at every step, from which the
 //! report reads its variation over a bay (above a sleeper against mid-span).
 //!
-//! Pad P = k_p(z − w) + c_p(ż − ẇ), ballast B = k_b·(−u) − c_b u̇ where bonded, k_b⟨−(u + g)⟩₊ − k_b⟨−g⟩₊ − c_b u̇
-//! where unilateral with the law's gap g (the void, or under the track's weight the gap in the settled state, negative
-//! where the weight presses the sleeper on), u = z − y the sleeper's place over the ballast (y = 0 on rigidly founded
+//! Pad P = k_p(z − w) + c_p(ż − ẇ), ballast B = k_b·(−u) − c_b u̇ where bonded; where unilateral the force its law
+//! carried in the step (its impulse over h: ⟨−k_b(u + g) − c_b u̇⟩₊ where it presses, nothing across an open gap)
+//! less the weight's share k_b⟨−g⟩₊, with the law's gap g (the void, or under the track's weight the gap in the
+//! settled state, negative where the weight presses the sleeper on), u = z − y the sleeper's place over the ballast (y = 0 on rigidly founded
 //! ballast, the ballast body's DOF in Zhai's two layers), subgrade G = −k_g y − c_g ẏ; w the rail's deflection over
 //! the sleeper, z the sleeper's (m, upward). Like the deflections, the forces are counted from the settled state:
 //! the weight's share is not in them.
@@ -23,8 +24,9 @@ struct Followed {
     /// The ballast body's DOF, if any.
     y: Option<usize>,
     support: SleeperSupport,
-    /// Unilateral ballast: its law's gap (m), the void or the settled state's.
+    /// Unilateral ballast: its law's gap (m), the void or the settled state's, and its interaction's index.
     gap: f64,
+    law: Option<usize>,
     peaks: SleeperPeaks,
 }
 
@@ -44,16 +46,17 @@ impl<'m> SleeperRecord<'m> {
         if let Some((s, nodes)) = model.sleepers() {
             let (mesh, dofs) = (model.mesh(), model.dofs());
             (results.spacing, results.first) = (s.spacing, s.first);
-            let law_gap = |x: f64| {
-                let laws = placed.interactions().laws();
+            let law_at = |x: f64| {
                 let mut at = placed.positions().iter().zip(placed.kinds());
-                let j = at.position(|(&p, &k)| k == SectionKind::SleeperBallast && p == x)?;
-                laws[j].gap()
+                at.position(|(&p, &k)| k == SectionKind::SleeperBallast && p == x)
             };
             for (i, &node) in nodes.iter().enumerate() {
                 let support = s.support(i);
+                let law = law_at(mesh.node_x(node));
                 let gap = match support.contact {
-                    BallastContact::Unilateral { gap } => law_gap(mesh.node_x(node)).unwrap_or(gap),
+                    BallastContact::Unilateral { gap } => {
+                        law.and_then(|j| placed.interactions().laws()[j].gap()).unwrap_or(gap)
+                    }
                     BallastContact::Bonded => 0.0,
                 };
                 let unilateral = matches!(support.contact, BallastContact::Unilateral { .. });
@@ -63,6 +66,7 @@ impl<'m> SleeperRecord<'m> {
                     y: dofs.ballast_body(i),
                     support,
                     gap,
+                    law,
                     peaks: SleeperPeaks {
                         x: mesh.node_x(node),
                         pad_force: (0.0, f64::NAN),
@@ -109,8 +113,8 @@ impl Record for SleeperRecord<'_> {
             let (u, du) = (z - y, dz - dy);
             let pad = f.support.pad.stiffness * (z - w) + f.support.pad.damping * (dz - dw);
             let (k, c) = (f.support.ballast.stiffness, f.support.ballast.damping);
-            let spring = match f.support.contact {
-                BallastContact::Bonded => -k * u,
+            let ballast = match f.support.contact {
+                BallastContact::Bonded => -k * u - c * du,
                 BallastContact::Unilateral { .. } => {
                     let opening = u + f.gap;
                     if opening <= 0.0 && f.peaks.first_contact.is_none() {
@@ -119,10 +123,10 @@ impl Record for SleeperRecord<'_> {
                     if let Some(largest) = f.peaks.largest_gap.as_mut() {
                         *largest = largest.max(opening);
                     }
-                    k * ((-opening).max(0.0) - (-f.gap).max(0.0))
+                    let carried = f.law.map_or(0.0, |j| s.impulses[j] / s.h);
+                    carried - k * (-f.gap).max(0.0)
                 }
             };
-            let ballast = spring - c * du;
             let p = &mut f.peaks;
             if let (Some(subgrade), Some(peak)) = (f.support.subgrade, p.subgrade_force.as_mut()) {
                 let force = -subgrade.stiffness * y - subgrade.damping * dy;

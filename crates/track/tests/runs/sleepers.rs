@@ -204,3 +204,30 @@ fn sleepers_ever_closer_are_the_winkler_track() {
     assert!(errors.windows(2).all(|e| e[1].0 <= 0.1 * e[0].0 && e[1].1 <= 0.1 * e[0].1), "{errors:?}");
     assert!(errors[2].0 <= 1e-8 && errors[2].1 <= 1e-7, "{errors:?}");
 }
+
+/// A sleeper hanging over a void its rail never closes (2 and 10 mm under a 50 m/s load that bends the rail ~1 mm)
+/// carries no ballast force at all — the ballast's dashpot acts in contact only, as its spring does (it reported
+/// 3.1 kN before, the dashpot pulling across the open gap) — and never touches; a void that does close (0.1 mm)
+/// carries a force from its first contact on. The hanging sleepers move the same for either void (to the
+/// solver's tolerance: nothing under them acts).
+#[test]
+fn a_void_that_never_closes_carries_no_ballast_force() {
+    let voids = |gap| Sleepers { exceptions: vec![voided(49, 50, gap)], ..Sleepers::default() };
+    let set = settings(50.0, 0.5, 0.075);
+    let mut finals = Vec::new();
+    for gap in [2e-3, 10e-3] {
+        let r = run(&on_sleepers(60.0, 400, voids(gap)), &set);
+        let sleepers = &r.sleepers.as_ref().unwrap().sleepers;
+        for s in &sleepers[49..=50] {
+            assert_eq!(s.first_contact, None, "gap {gap}: {s:?}");
+            assert_eq!(s.ballast_force.0, 0.0, "gap {gap}: {s:?}");
+            assert!(s.largest_gap.unwrap() > 0.5 * gap, "gap {gap}: {s:?}");
+        }
+        assert!(sleepers[48].ballast_force.0 > 1e3, "{:?}", sleepers[48]);
+        finals.push(r.final_displacement);
+    }
+    assert!(super::common::relative_difference(&finals[0], &finals[1]) <= 1e-6);
+    let closing = run(&on_sleepers(60.0, 400, voids(0.1e-3)), &set);
+    let s = closing.sleepers.as_ref().unwrap().sleepers[49];
+    assert!(s.first_contact.is_some() && s.ballast_force.0 > 1e3, "{s:?}");
+}
