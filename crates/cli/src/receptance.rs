@@ -16,7 +16,7 @@ pub struct ReceptanceArgs {
     /// factors, mesh and supports); without it, the reference case.
     scenario: Option<PathBuf>,
     /// Frequencies A:B:STEP (Hz), A > 0.
-    #[arg(long, value_name = "A:B:STEP")]
+    #[arg(long, value_name = "A:B:STEP", allow_hyphen_values = true)]
     frequencies: String,
     /// Where the response is read (m). Default mid-track.
     #[arg(long, allow_negative_numbers = true)]

@@ -25,7 +25,7 @@ pub struct SweepArgs {
     #[command(flatten)]
     scenario: ScenarioArgs,
     /// Speeds A:B:STEP (m/s); default: the scenario's `[sweep]` section (10:300:10 for the reference case).
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     speeds: Option<String>,
     /// Write the CSV here (atomically) instead of standard output; finished points are kept in OUT.journal.
     #[arg(long)]

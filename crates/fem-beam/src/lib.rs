@@ -16,6 +16,7 @@
 //! - [`distributed`]: the sections of a law distributed along the beam, and ballast friction's description.
 //! - [`extreme`]: the [`Extreme`] and [`LiftOffZone`] every response is reported in.
 //! - [`statics`], [`modal`]: K q = f and K φ = ω² M φ.
+//! - [`motion`]: how the loads move — constant speed or a speed profile over position ([`Motion`]).
 //! - [`reference`](mod@reference): the reference case and closed-form results (β, w₀, M₀, v_cr, ω_n, moving-load steady state).
 
 pub mod absorbing;
@@ -33,6 +34,7 @@ pub mod infinite_track;
 pub mod load;
 pub mod mesh;
 pub mod modal;
+pub mod motion;
 pub mod moving_timoshenko;
 pub mod properties;
 pub mod receptance;
@@ -56,6 +58,7 @@ pub use error::{FemError, Result};
 pub use extreme::{Extreme, LiftOffZone};
 pub use load::LoadVector;
 pub use mesh::Mesh;
+pub use motion::Motion;
 pub use properties::{Beam, BeamTheory, Foundation, FoundationLaw, Rayleigh};
 pub use sleeper_exceptions::{BallastContact, SleeperException};
 pub use sleepers::{BallastBody, BayResonances, Layer, SleeperSupport, Sleepers};

@@ -58,8 +58,9 @@ def same_table(table, csv_path):
         ([str(EXAMPLES / "quarter-car-wheel-flat.toml")], {}),
         ([str(EXAMPLES / "timoshenko-rail.toml"), "--elements", "400"], {"elements": 400}),
         ([str(EXAMPLES / "voided-sleeper.toml")], {}),
+        (["--speed", "240", "--acceleration", "-60"], {"speed": 240.0, "acceleration": -60.0}),
     ],
-    ids=["reference", "train", "friction", "km/h", "vehicle", "timoshenko", "voided-sleepers"],
+    ids=["reference", "train", "friction", "km/h", "vehicle", "timoshenko", "voided-sleepers", "braking"],
 )
 def test_a_run_is_the_command_lines_to_the_bit(args, kwargs):
     scenario = args[0] if args and args[0].endswith(".toml") else None
@@ -78,6 +79,8 @@ def test_a_run_is_the_command_lines_to_the_bit(args, kwargs):
         assert run.wheels is None and run.losses is None
     if "timoshenko" in (scenario or ""):
         assert run.summary["rail_theory"].startswith("Timoshenko")
+    if "acceleration" in kwargs:
+        assert run.summary["speed_change"]["end_speed"] < run.summary["speed_change"]["start_speed"] == 240.0
     if "voided" in (scenario or ""):
         voided = run.summary["sleepers"]["exceptions"]
         assert [e["index"] for e in voided] == [49, 50, 51] and all(e["first_contact"] > 0 for e in voided)

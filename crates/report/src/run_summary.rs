@@ -20,6 +20,25 @@ pub struct WindowExtreme {
     pub extreme: Extreme,
     /// Where the load was then (m); None if the extreme never happened.
     pub load_position: Option<f64>,
+    /// The load's speed then (m/s), where the speed changes during the run.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub load_speed: Option<f64>,
+}
+
+/// A run whose load changes speed (`[load] acceleration` or `speed_profile`): how (m/s, m/s²).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SpeedChange {
+    /// The constant acceleration (m/s², negative brakes), if given as one.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub acceleration: Option<f64>,
+    /// The speed at the start, t = 0 (m/s).
+    pub start_speed: f64,
+    /// The speed where the run ends: the first axle where the last leaves the beam (m/s).
+    pub end_speed: f64,
+    /// The smallest speed on the way (m/s).
+    pub slowest: f64,
+    /// The largest speed on the way (m/s); it sets the time step.
+    pub fastest: f64,
 }
 
 /// One run, summarised. Deflections are positive magnitudes (m), relative to the self-weight state.
@@ -27,8 +46,11 @@ pub struct WindowExtreme {
 pub struct RunSummary {
     /// The scenario's title.
     pub title: String,
-    /// Load speed v (m/s).
+    /// Load speed v (m/s); where it changes, the speed at x = 0.
     pub speed: f64,
+    /// How the speed changes, where it does.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub speed_change: Option<SpeedChange>,
     /// The scenario's single load F (N).
     pub load: f64,
     /// The train of axles that crossed (as forces, or carrying the vehicles).
@@ -210,13 +232,22 @@ impl RunSummary {
 
     /// The subtitle of the run's figures: what ran, at which speed, with which friction.
     pub fn figure_subtitle(&self) -> String {
-        format!(
-            "{} at {:.2} m/s ({:.0} km/h); friction: {}",
-            self.load_description(),
-            self.speed,
-            self.speed * 3.6,
-            self.friction_description()
-        )
+        format!("{} {}; friction: {}", self.load_description(), self.speed_description(), self.friction_description())
+    }
+
+    /// "at 100.00 m/s (360 km/h)", or where the speed changes "from 100.00 to 80.00 m/s (braking at 2 m/s²)".
+    pub fn speed_description(&self) -> String {
+        match &self.speed_change {
+            None => format!("at {:.2} m/s ({:.0} km/h)", self.speed, self.speed * 3.6),
+            Some(c) => {
+                let how = match c.acceleration {
+                    Some(a) if a < 0.0 => format!("braking at {} m/s²", scenario::number::significant(-a, 6)),
+                    Some(a) => format!("accelerating at {} m/s²", scenario::number::significant(a, 6)),
+                    None => format!("speed profile, {:.2}–{:.2} m/s on the way", c.slowest, c.fastest),
+                };
+                format!("from {:.2} to {:.2} m/s ({how})", c.start_speed, c.end_speed)
+            }
+        }
     }
 }
 
@@ -241,6 +272,13 @@ impl RunSummary {
         Ok(Self {
             title: scenario.title.clone(),
             speed: settings.moving.speed,
+            speed_change: settings.moving.changes_speed().then(|| {
+                let motion = settings.motion();
+                let end = mesh.length + settings.moving.load.length();
+                let (fastest, slowest) = motion.speed_range(end);
+                let (start_speed, end_speed) = (motion.speed(0.0), motion.speed_at(end));
+                SpeedChange { acceleration: scenario.load.acceleration, start_speed, end_speed, slowest, fastest }
+            }),
             load: scenario.load.force,
             train: settings.moving.load.axles().map(scenario::trains::TrainSummary::of),
             axle_share: settings
@@ -284,9 +322,13 @@ impl ExtremesSummary {
     pub fn of(case: &Case, result: &RunResult) -> Result<Self> {
         let settings = &case.settings;
         let window = result.window.unwrap_or_default();
-        let x0 = settings.start_position();
-        let in_window =
-            |x: Extreme| WindowExtreme { extreme: x, load_position: x.time.map(|t| x0 + settings.moving.speed * t) };
+        let motion = settings.motion();
+        let changes = settings.moving.changes_speed();
+        let in_window = |x: Extreme| WindowExtreme {
+            extreme: x,
+            load_position: x.time.map(|t| motion.position(t)),
+            load_speed: x.time.filter(|_| changes).map(|t| motion.speed(t)),
+        };
         let statics = track::statics::static_envelope(
             &case.model,
             &case.interactions,

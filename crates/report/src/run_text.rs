@@ -24,7 +24,7 @@ fn section_count(r: &RunSummary) -> String {
 fn write_text(f: &mut Formatter<'_>, r: &RunSummary) -> fmt::Result {
     let title = if r.title.is_empty() { String::new() } else { format!(" — {}", r.title) };
     let load = r.load_description();
-    writeln!(f, "frictrack run{title}: {load} at {:.2} m/s ({:.0} km/h)", r.speed, r.speed * 3.6)?;
+    writeln!(f, "frictrack run{title}: {load} {}", r.speed_description())?;
     if let Some(theory) = &r.rail_theory {
         writeln!(f, "  rail: {theory} beam, shear deformation and rotary inertia included")?;
     }
@@ -247,13 +247,17 @@ fn write_friction(f: &mut Formatter<'_>, r: &RunSummary) -> fmt::Result {
 /// The deflection extremes: over the whole run, and while the load was in the extremes window.
 fn write_extremes(f: &mut Formatter<'_>, r: &RunSummary) -> fmt::Result {
     let load = r.window.load;
-    let line = |f: &mut Formatter<'_>, what: &str, d: f64, place: Option<(f64, f64)>, x_load: Option<f64>| match place {
-        Some((x, t)) => {
-            let load = x_load.map_or(String::new(), |x| format!(", {load} at {x:.1} m"));
-            writeln!(f, "    max {what:<8} deflection {:>9.3} mm at x = {x:.1} m, t = {t:.4} s{load}", d * 1e3)
-        }
-        None => writeln!(f, "    max {what:<8} deflection      none"),
-    };
+    let line =
+        |f: &mut Formatter<'_>, what: &str, d: f64, place: Option<(f64, f64)>, at: (Option<f64>, Option<f64>)| {
+            match place {
+                Some((x, t)) => {
+                    let speed = at.1.map_or(String::new(), |v| format!(" at {v:.2} m/s"));
+                    let load = at.0.map_or(String::new(), |x| format!(", {load} at {x:.1} m{speed}"));
+                    writeln!(f, "    max {what:<8} deflection {:>9.3} mm at x = {x:.1} m, t = {t:.4} s{load}", d * 1e3)
+                }
+                None => writeln!(f, "    max {what:<8} deflection      none"),
+            }
+        };
     match r.extremes.extremes_nodes {
         Some((a, b)) => {
             writeln!(f, "  extremes over the nodes at {a:.1}–{b:.1} m ([output] extremes_nodes); whole run:")?
@@ -262,7 +266,7 @@ fn write_extremes(f: &mut Formatter<'_>, r: &RunSummary) -> fmt::Result {
     }
     let whole = [("downward", r.extremes.max_downward_deflection), ("upward", r.extremes.max_upward_deflection)];
     for (what, e) in whole {
-        line(f, what, e.value, e.place(), None)?;
+        line(f, what, e.value, e.place(), (None, None))?;
     }
     let (a, b) = r.extremes.extremes_window;
     let why = r.window.why;
@@ -274,7 +278,7 @@ fn write_extremes(f: &mut Formatter<'_>, r: &RunSummary) -> fmt::Result {
         true => writeln!(f, "    none: the {load} never was in that range during the run")?,
         false => {
             for (what, e) in window {
-                line(f, what, e.extreme.value, e.extreme.place(), e.load_position)?;
+                line(f, what, e.extreme.value, e.extreme.place(), (e.load_position, e.load_speed))?;
             }
         }
     }

@@ -156,7 +156,7 @@ pub fn run_point(case: &Case, speed: f64) -> Result<SweepPoint> {
 /// One run of `case` at `speed`, abandoned at the first step after `stop` is raised.
 fn point_until(case: &Case, speed: f64, stop: Option<&AtomicBool>) -> Result<SweepPoint> {
     let mut settings = case.settings.clone();
-    settings.moving.speed = speed;
+    settings.moving = settings.moving.at_speed(speed)?;
     settings.record.sections.clear();
     let r = simulate_until(case, &settings, stop)?;
     let window = r.window.unwrap_or_default();

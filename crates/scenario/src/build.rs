@@ -378,8 +378,10 @@ impl Scenario {
             (None, Some(train)) => Load::Train(train),
             (None, None) => Load::Force(self.load.force),
         };
+        let travel = (initial.load_position(), reach + load.length());
+        let moving = MovingLoadSettings { speed, profile: Vec::new(), acceleration: None, load, initial };
         Ok(RunSettings {
-            moving: MovingLoadSettings { speed, load, initial },
+            moving: self.load.speed_change(moving, travel)?,
             integration: IntegrationSettings {
                 theta: i.theta,
                 spectral_radius: i.spectral_radius,

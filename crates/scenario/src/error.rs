@@ -101,6 +101,8 @@ pub fn path(setting: track::Setting) -> String {
     use track::Setting as S;
     match setting {
         S::Speed => "load.speed".into(),
+        S::SpeedProfile => "load.speed_profile".into(),
+        S::Acceleration => "load.acceleration".into(),
         S::Load => "load.force".into(),
         S::LoadAdvance => "integration.load_advance".into(),
         S::MaxStep => "integration.max_step".into(),

@@ -20,6 +20,7 @@ pub mod contact;
 mod deck;
 pub mod diagnostics;
 pub mod error;
+pub mod load_section;
 mod long_wave_twin;
 pub mod number;
 pub mod overrides;

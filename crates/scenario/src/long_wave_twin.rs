@@ -27,8 +27,10 @@ impl Scenario {
 
     /// What a model of a uniform support (`what`: "the stationary wave", "the closed form") takes of this scenario:
     /// itself without sleepers, or on sleepers their [`Scenario::continuous_twin`] with a note saying so. Refused, by
-    /// key, for sleepers a uniform support cannot hold — exceptions, or a soil beside them that is not linear.
+    /// key, for sleepers a uniform support cannot hold — exceptions, or a soil beside them that is not linear — and
+    /// for a changing speed (these are steady states at one speed).
     pub fn uniform_support(&self, what: &str) -> Result<(Scenario, Option<String>)> {
+        self.load.refuse_changing_speed(what)?;
         let Some(section) = &self.sleepers else { return Ok((self.clone(), None)) };
         if !section.exceptions.is_empty() {
             return Err(invalid(

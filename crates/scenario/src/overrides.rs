@@ -47,13 +47,20 @@ pub struct OverrideSpec {
 }
 
 /// Every override, in the order the help lists them.
-pub const OVERRIDES: [OverrideSpec; 17] = [
+pub const OVERRIDES: [OverrideSpec; 18] = [
     OverrideSpec {
         name: "speed",
         flag: "speed",
         kind: OverrideKind::Speed,
         placeholder: "SPEED",
         help: "Load speed: m/s (`100`), or with a unit (`100m/s`, `360km/h`)",
+    },
+    OverrideSpec {
+        name: "acceleration",
+        flag: "acceleration",
+        kind: OverrideKind::Number { unit: "m/s²" },
+        placeholder: "ACCELERATION",
+        help: "The load's acceleration (m/s², negative brakes), the speed being its speed at x = 0",
     },
     OverrideSpec {
         name: "train",
@@ -245,6 +252,8 @@ impl OverrideSpec {
 pub struct Overrides {
     /// Load speed (m/s).
     pub speed: Option<f64>,
+    /// The load's acceleration (m/s²).
+    pub acceleration: Option<f64>,
     /// A train: a catalogue name or a CSV file of offset,force lines.
     pub train: Option<String>,
     /// Number of evenly spaced friction devices.
@@ -312,6 +321,7 @@ impl Overrides {
         let count = || spec.count(&value);
         match spec.name {
             "speed" => self.speed = Some(number()?),
+            "acceleration" => self.acceleration = Some(number()?),
             "train" => self.train = Some(spec.text(&value)?),
             "devices" => self.devices = Some(count()?),
             "device_force" => self.device_force = Some(number()?),
@@ -337,6 +347,9 @@ impl Overrides {
     pub fn apply(&self, mut s: Scenario) -> Scenario {
         if let Some(v) = self.speed {
             s.load.speed = v;
+        }
+        if let Some(a) = self.acceleration {
+            s.load.acceleration = Some(a);
         }
         if let Some(train) = &self.train {
             s.load.train = Some(train.clone());
@@ -407,6 +420,7 @@ impl Overrides {
         let number = |flag: &str, v: Option<f64>| v.map(|v| format!("{flag} {v}"));
         [
             number("--speed", self.speed),
+            number("--acceleration", self.acceleration),
             self.train.as_ref().map(|t| format!("--train {t}")),
             self.devices.map(|n| format!("--devices {n}")),
             number("--device-force", self.device_force),

@@ -2,9 +2,9 @@
 //! (docs/theory.md §2), unknown keys refused.
 
 pub use super::deck::DeckTrack;
+pub use super::load_section::{AxleShare, LoadSection};
 use crate::error::{Result, invalid};
 use fem_beam::Foundation;
-use fem_beam::reference::uic60_on_soft_soil;
 use nscd::SolverKind;
 use serde::{Deserialize, Serialize};
 use track::RunSettings;
@@ -99,83 +99,6 @@ pub struct AbsorbingZonesSection {
 impl Default for AbsorbingZonesSection {
     fn default() -> Self {
         Self { length: 40.0, peak_ratio: 1.0 }
-    }
-}
-
-/// `[load]`.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(default, deny_unknown_fields)]
-pub struct LoadSection {
-    /// Magnitude F (N), acting downward, of the single load (when no train is given).
-    pub force: f64,
-    /// Speed v (m/s) of a single run.
-    pub speed: f64,
-    /// A train instead of the single load: a catalogue name (`single`, `hslm-a1` … `hslm-a10`) or a CSV file of
-    /// `offset,force` lines.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub train: Option<String>,
-    /// `[[load.axles]]`: a train given axle by axle.
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub axles: Vec<AxleSection>,
-    /// `[[load.patches]]`: uniform load patches of the train.
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub patches: Vec<PatchSection>,
-    /// What the beam carries of a train's axle loads (and patches), by default [`LoadSection::share_on`]; the single
-    /// load `force` is the beam's own and never scaled.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub carries: Option<AxleShare>,
-}
-
-impl Default for LoadSection {
-    fn default() -> Self {
-        let (axles, patches) = (Vec::new(), Vec::new());
-        Self { force: uic60_on_soft_soil().load, speed: 200.0, train: None, axles, patches, carries: None }
-    }
-}
-
-/// What the modelled beam carries of a train's axle loads (docs/theory.md §10).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum AxleShare {
-    /// The beam is one rail of the track: half of each axle (the reference case's 83.4 kN is half of a 166.8 kN
-    /// axle).
-    OneRail,
-    /// The beam carries whole axles: a bridge deck, or a track modelled as one beam for both rails.
-    WholeAxle,
-}
-
-impl AxleShare {
-    /// The factor on the axle loads: ½ or 1.
-    pub fn factor(self) -> f64 {
-        match self {
-            AxleShare::OneRail => 0.5,
-            AxleShare::WholeAxle => 1.0,
-        }
-    }
-
-    /// The name in scenario files and reports: `one-rail` or `whole-axle`.
-    pub fn name(self) -> &'static str {
-        match self {
-            AxleShare::OneRail => "one-rail",
-            AxleShare::WholeAxle => "whole-axle",
-        }
-    }
-
-    /// What it means, for reports.
-    pub fn describe(self) -> &'static str {
-        match self {
-            AxleShare::OneRail => "one rail carries half of each axle",
-            AxleShare::WholeAxle => "the beam carries whole axles",
-        }
-    }
-}
-
-impl LoadSection {
-    /// What the beam carries of the axles: `carries` if given, else a rail's half on a soil of stiffness
-    /// `foundation_stiffness` > 0 or on sleepers, whole axles on neither (a deck).
-    pub fn share_on(&self, foundation_stiffness: f64, on_sleepers: bool) -> AxleShare {
-        let track = foundation_stiffness > 0.0 || on_sleepers;
-        self.carries.unwrap_or(if track { AxleShare::OneRail } else { AxleShare::WholeAxle })
     }
 }
 

@@ -166,6 +166,17 @@ impl ReceptanceStudy {
         let unresolved = crate::receptance_peaks::keep_resolved(&model, &mut resonances);
         crate::receptance_peaks::name_resonances(&model, &mut resonances);
         let mut warnings = warnings(&model, &request.frequencies, request.excite);
+        // A point on a held node: the rail's deflection is zero there, and with it α.
+        let mesh = model.mesh();
+        for (what, x) in [("the response is read", request.at), ("the force acts", request.excite)] {
+            let held = mesh.nearest_node(x).ok().filter(|&n| (mesh.node_x(n) - x).abs() <= 1e-9 * mesh.length);
+            if held.is_some_and(|n| model.dofs().free_index(2 * n).is_none()) {
+                warnings.push(format!(
+                    "{what} at x = {x} m, where a support holds the rail: its deflection there is zero, and so is \
+                     |α| — take a point away from the supports (--at, --excite)"
+                ));
+            }
+        }
         if unresolved > 0 {
             warnings.push(format!(
                 "{unresolved} peak(s) of |α| where the mesh has fewer than {} elements a bending wavelength are not \

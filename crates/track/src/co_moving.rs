@@ -146,6 +146,13 @@ fn check(model: &BeamModel, settings: &RunSettings, window: &CoMovingSettings) -
         let allowed = "a co-moving window has a free rear end and a clamped front end (the track ahead at rest)";
         return Err(invalid_choice(setting, support.name(), allowed));
     }
+    if settings.moving.changes_speed() {
+        let allowed = "a co-moving window follows a load at constant speed (its window moves one element per fixed \
+                       number of steps): leave the speed profile out, or run the whole track";
+        let setting =
+            if settings.moving.acceleration.is_some() { Setting::Acceleration } else { Setting::SpeedProfile };
+        return Err(invalid(setting, settings.moving.largest_speed(), allowed));
+    }
     let l = mesh.element_length();
     let advance = settings.integration.load_advance;
     if settings.step_is_capped() {

@@ -96,6 +96,10 @@ pub(crate) fn invalid_choice(setting: Setting, value: &'static str, allowed: imp
 pub enum Setting {
     /// The load's speed (m/s).
     Speed,
+    /// The load's speed profile (knots x m, v m/s).
+    SpeedProfile,
+    /// The load's constant acceleration (m/s²).
+    Acceleration,
     /// The load's force (N).
     Load,
     /// Δx, the load's advance per step (m).
@@ -147,6 +151,8 @@ impl Setting {
     pub fn name(self) -> &'static str {
         match self {
             Setting::Speed => "speed",
+            Setting::SpeedProfile => "speed_profile",
+            Setting::Acceleration => "acceleration",
             Setting::Load => "load",
             Setting::LoadAdvance => "load_advance",
             Setting::MaxStep => "max_step",

@@ -1,12 +1,12 @@
 //! The moving loads of docs/theory.md §3 and §10 as a [`Forcing`] of the beam's free DOFs: a train of axles and
-//! uniform patches at speed v (one axle: the reference case's single load).
+//! uniform patches moving along the beam at a constant or changing speed (one axle: the reference case's single load).
 
 use fem_beam::load::ElementLoad;
-use fem_beam::{BeamModel, Discretisation, Train};
+use fem_beam::{BeamModel, Discretisation, Motion, Train};
 use nscd::Forcing;
 use std::cell::RefCell;
 
-/// A train moving at constant speed, its first axle at x_c(t) = x₀ + v·t. Axle i (offset d_i) is at x_c − d_i and
+/// A train moving with its first axle at x_c(t) ([`Motion`]: x₀ + v·t at constant speed). Axle i (offset d_i) is at x_c − d_i and
 /// loads the beam with −P_i·Ψᵀ(x) while 0 ≤ x ≤ L (Ψ the shape functions of the beam's element containing it:
 /// consistent nodal forces *and* moments); a patch loads the part of it on the beam with −q∫Ψᵀdx. Each axle enters
 /// and leaves on its own.
@@ -17,10 +17,8 @@ pub struct MovingLoad {
     free: Vec<Option<usize>>,
     /// The train.
     pub train: Train,
-    /// Speed v (m/s).
-    pub speed: f64,
-    /// Position of the first axle at t = 0 (m).
-    pub start: f64,
+    /// How the first axle moves.
+    pub motion: Motion,
     /// The element loads at the last two times asked for: a step asks for t_{k+1} and t_k (the force, then its power
     /// for the ledger) and the next step's t_k is this step's t_{k+1}, so each time's loads are assembled once (the
     /// same values in the same order: the same bits). A new time replaces the earlier of the two.
@@ -35,6 +33,11 @@ impl MovingLoad {
 
     /// `train` on `model` with its first axle at `start` (m) at t = 0, moving at `speed` (m/s).
     pub fn train(model: &BeamModel, train: Train, speed: f64, start: f64) -> Self {
+        Self::moving(model, train, Motion::constant(start, speed))
+    }
+
+    /// `train` on `model`, its first axle following `motion`.
+    pub fn moving(model: &BeamModel, train: Train, motion: Motion) -> Self {
         let (beam, dofs) = (model.discretisation(), model.dofs());
         let mesh = *beam.mesh();
         let free = (0..dofs.full_len()).map(|d| dofs.free_index(d)).collect();
@@ -44,13 +47,13 @@ impl MovingLoad {
         let room = train.axles.len()
             + train.patches.iter().map(|p| ((p.length / l).ceil() as usize + 2).min(mesh.elements)).sum::<usize>();
         let cache = RefCell::new([(f64::NAN, Vec::with_capacity(room)), (f64::NAN, Vec::with_capacity(room))]);
-        Self { beam, free, train, speed, start, cache }
+        Self { beam, free, train, motion, cache }
     }
 
     /// Move the train back by `distance` (m) at every time: the co-moving window's shift, after which the load stands
     /// an element further back in the shifted window. The cached loads are of the old positions and are dropped.
     pub fn step_back(&mut self, distance: f64) {
-        self.start -= distance;
+        self.motion.shift_back(distance);
         for (t, loads) in self.cache.get_mut().iter_mut() {
             *t = f64::NAN;
             loads.clear();
@@ -59,7 +62,7 @@ impl MovingLoad {
 
     /// Position of the first axle at time t (m), whether or not it is on the beam.
     pub fn position(&self, time: f64) -> f64 {
-        self.start + self.speed * time
+        self.motion.position(time)
     }
 
     /// The consistent element loads of everything on the beam at time t ([`Train::element_loads`]).

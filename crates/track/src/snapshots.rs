@@ -84,7 +84,7 @@ impl<'a> SnapshotTaker<'a> {
                         let allowed = format!("a snapshot load (first axle) position must lie in [{start}, {last}] m");
                         return Err(invalid(Setting::Snapshots, x, allowed));
                     }
-                    (x - start) / settings.moving.speed
+                    settings.motion().time_at(x)
                 }
             };
             pending.push((trigger, request));

@@ -21,6 +21,7 @@ mod runs {
     mod time_step;
     mod timoshenko_rail;
     mod trains;
+    mod variable_speed;
     mod vehicles_in_runs;
     mod vehicles_in_trains;
     mod vehicles_on_beam;

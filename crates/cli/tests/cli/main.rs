@@ -15,6 +15,7 @@ mod timoshenko;
 mod track_profile;
 mod trains;
 mod trust;
+mod variable_speed;
 mod vehicles;
 
 use std::process::{Command, Output};

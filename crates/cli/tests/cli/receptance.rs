@@ -118,3 +118,21 @@ fn only_resonances_the_mesh_resolves_are_listed() {
     let warnings = v["warnings"].to_string();
     assert!(warnings.contains("up to 2720 Hz") && warnings.contains("1 peak(s)"), "{warnings}");
 }
+
+/// A negative range is the user's number, refused by key (clap took `-10:100:1` for a flag); a point on a pinned
+/// end is warned about (|α| = 0 there by the support, not by the track).
+#[test]
+fn a_negative_range_is_named_and_a_held_point_is_warned_about() {
+    let out = super::frictrack(&["receptance", "--frequencies", "-10:100:1"]);
+    assert_eq!(out.status.code(), Some(2));
+    let error = String::from_utf8_lossy(&out.stderr);
+    assert!(error.contains("invalid --frequencies = -10"), "{error}");
+    let out = super::frictrack(&["sweep", "--speeds", "-10:100:10"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--speeds"));
+    let out = super::frictrack(&["receptance", "--frequencies", "10:20:5", "--at", "0", "--excite", "50"]);
+    assert!(out.status.success());
+    let warnings = String::from_utf8_lossy(&out.stderr);
+    assert!(warnings.contains("the response is read at x = 0 m, where a support holds the rail"), "{warnings}");
+    assert!(!warnings.contains("the force acts at x = 50"), "{warnings}");
+}

@@ -179,7 +179,8 @@ def run(
 ) -> Run:
     """Run ``scenario`` (a TOML file path, a TOML string, a dict with the file's keys, or ``None`` for the reference
     case) with keyword ``overrides`` named as the command line's flags: ``speed`` (m/s, or text with its unit such as
-    ``"360km/h"``), ``train`` (a catalogue name or a CSV file), ``devices``, ``device_force`` (N),
+    ``"360km/h"``), ``acceleration`` (m/s², negative brakes; ``speed`` is then the speed at x = 0), ``train`` (a
+    catalogue name or a CSV file), ``devices``, ``device_force`` (N),
     ``distributed_friction`` (N/m), ``damping_ratio``, ``theta``, ``spectral_radius``, ``elements``, ``load_advance`` (m), ``max_step``
     (s), ``solver``, ``tolerance``, ``steady_start`` (m), ``static_start`` (m), ``absorbing_zones`` (m), ``extremes_window``
     ([A, B] m). :func:`override_table` says what each sets.

@@ -60,6 +60,7 @@ def run(
     scenario: ScenarioLike = None,
     *,
     speed: Union[float, str] = ...,
+    acceleration: float = ...,
     train: str = ...,
     devices: int = ...,
     device_force: float = ...,

@@ -10,6 +10,7 @@
 
 mod integration_settings;
 mod lift_off;
+mod moving_settings;
 mod observers;
 mod records;
 mod results;
@@ -107,7 +108,7 @@ impl<'a> Simulation<'a> {
                 } else {
                     self.model.stiffness().factor()?.solve_in_place(&mut q);
                 }
-                let v = convected_velocity(self.model, &q, self.settings.moving.speed);
+                let v = convected_velocity(self.model, &q, self.settings.motion().speed(0.0));
                 Ok((q, v))
             }
             InitialState::SteadyState { position } => {
@@ -126,7 +127,7 @@ impl<'a> Simulation<'a> {
                 let mut q = vec![0.0; dofs.full_len()];
                 let mut v = vec![0.0; dofs.full_len()];
                 for axle in &train.axles {
-                    let state = infinite.steady_state(self.settings.moving.speed, axle.force)?;
+                    let state = infinite.steady_state(self.settings.motion().speed(0.0), axle.force)?;
                     for i in 0..mesh.nodes() {
                         let s = mesh.node_x(i) - (position - axle.offset);
                         q[2 * i] += state.deflection(s);

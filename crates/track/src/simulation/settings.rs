@@ -3,10 +3,11 @@
 //! anything is allocated.
 
 pub use super::integration_settings::IntegrationSettings;
+pub use super::moving_settings::MovingLoadSettings;
 use crate::error::{Result, Setting, invalid, invalid_choice, invalid_count};
 use crate::vehicle::consist::{MAX_CONTACT_STEP, VehicleSettings};
 use crate::vehicle::wheel_rail::WheelRail;
-use fem_beam::{BeamModel, Train};
+use fem_beam::{BeamModel, Motion, Train};
 use nscd::solver::SolverKind;
 use nscd::stepper::Integration;
 
@@ -30,6 +31,16 @@ pub enum InitialState {
         /// Load position at t = 0 (m).
         position: f64,
     },
+}
+
+impl InitialState {
+    /// The first axle's position at t = 0 (m): 0 from rest (the load entering), else the position given.
+    pub fn load_position(&self) -> f64 {
+        match *self {
+            InitialState::Rest => 0.0,
+            InitialState::SteadyState { position } | InitialState::Static { position } => position,
+        }
+    }
 }
 
 /// What crosses the beam: one force, a train of moving forces, or vehicles.
@@ -108,23 +119,6 @@ impl Default for Load {
     }
 }
 
-/// What moves on the beam: the load, its speed and where it starts.
-#[derive(Debug, Clone, PartialEq)]
-pub struct MovingLoadSettings {
-    /// Load speed v (m/s) > 0. Default 200.
-    pub speed: f64,
-    /// What crosses. Default one force of 83.4 kN.
-    pub load: Load,
-    /// Initial state (and with it the first axle's start position). Default rest, the load entering at x = 0.
-    pub initial: InitialState,
-}
-
-impl Default for MovingLoadSettings {
-    fn default() -> Self {
-        Self { speed: 200.0, load: Load::default(), initial: InitialState::Rest }
-    }
-}
-
 /// What a run records besides its whole-run extremes, energy and W̄.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct RecordSettings {
@@ -176,14 +170,15 @@ impl RunSettings {
         if !(self.moving.speed.is_finite() && self.moving.speed > 0.0) {
             return Err(invalid(Setting::Speed, self.moving.speed, "must be finite and > 0 (m/s)"));
         }
+        self.moving.validate_profile()?;
         // Faster than the beam's bar wave speed √(E/ρ) (5.2 km/s in steel, 3.7 km/s in concrete) no beam theory holds,
         // and the step h = Δx/v would shrink towards round-off: refused, not answered.
         let beam = model.beam();
         let bar_wave = (beam.youngs_modulus / beam.density).sqrt();
-        if self.moving.speed >= bar_wave {
+        if self.moving.largest_speed() >= bar_wave {
             return Err(invalid(
-                Setting::Speed,
-                self.moving.speed,
+                if self.moving.profile.is_empty() { Setting::Speed } else { Setting::SpeedProfile },
+                self.moving.largest_speed(),
                 format!(
                     "must be below the beam's bar wave speed √(E/ρ) = {bar_wave:.0} m/s: beyond it no beam theory \
                      holds (railway speeds are below 200 m/s)"
@@ -264,16 +259,16 @@ impl RunSettings {
         }
         if let Some(vehicles) = self.moving.load.vehicles() {
             let omega = vehicles.contact_frequency()?;
-            let largest = MAX_CONTACT_STEP / omega * self.moving.speed;
+            let largest = MAX_CONTACT_STEP / omega * self.moving.largest_speed();
             if omega * self.time_step() > MAX_CONTACT_STEP {
                 return Err(invalid(
                     Setting::LoadAdvance,
                     self.integration.load_advance,
                     format!(
-                        "must be ≤ {largest:.4e} m at {} m/s with these vehicles: the wheel–rail contact mode at \
+                        "must be ≤ {largest:.4e} m at {} m/s (the largest speed) with these vehicles: the wheel–rail contact mode at \
                          {:.4e} Hz needs at least π steps per period (a stiffer contact needs a shorter step; check \
                          vehicle.contact_stiffness or hertz_coefficient; or give integration.max_step ≤ {:.4e} s)",
-                        self.moving.speed,
+                        self.moving.largest_speed(),
                         omega / std::f64::consts::TAU,
                         MAX_CONTACT_STEP / omega
                     ),
@@ -381,7 +376,7 @@ impl RunSettings {
         let steps = self.step_count(length);
         if steps > Self::MAX_STEPS as f64 {
             let h = self.time_step();
-            let travel = self.crossing_time(length) * self.moving.speed;
+            let travel = length + self.moving.load.length() - self.start_position();
             let allowed = format!(
                 "gives {steps:.3e} time steps of {h:.3e} s over the {travel:.4e} m the load travels (beam length \
                  {length:.4e} m plus the train); at most {} are allowed: shorten the beam (mesh.length) or the run, \
@@ -429,14 +424,11 @@ impl RunSettings {
 
     /// Load position at t = 0 (m).
     pub fn start_position(&self) -> f64 {
-        match self.moving.initial {
-            InitialState::Rest => 0.0,
-            InitialState::SteadyState { position } | InitialState::Static { position } => position,
-        }
+        self.moving.initial.load_position()
     }
 
-    /// The time step h = min(Δx/v, h_max) (s): the load advance Δx at the speed v, shortened to the longest step
-    /// h_max where one is given.
+    /// The time step h = min(Δx/v, h_max) (s): the load advance Δx at the speed v (the largest a speed profile
+    /// reaches), shortened to the longest step h_max where one is given.
     pub fn time_step(&self) -> f64 {
         let h = self.advance_step();
         self.integration.max_step.map_or(h, |h_max| h.min(h_max))
@@ -449,11 +441,16 @@ impl RunSettings {
 
     /// Δx/v (s): the step the load advance gives at this speed, before any longest step.
     fn advance_step(&self) -> f64 {
-        self.integration.load_advance / self.moving.speed
+        self.integration.load_advance / self.moving.largest_speed()
     }
 
     /// Time for the load — the last axle of a train — to reach x = L (s).
     pub fn crossing_time(&self, length: f64) -> f64 {
-        (length + self.moving.load.length() - self.start_position()) / self.moving.speed
+        self.motion().time_at(length + self.moving.load.length())
+    }
+
+    /// How the first axle moves from its start ([`MovingLoadSettings::motion`]).
+    pub fn motion(&self) -> Motion {
+        self.moving.motion(self.start_position())
     }
 }

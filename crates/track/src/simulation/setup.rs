@@ -43,11 +43,11 @@ impl Simulation<'_> {
         let theta = integration.coefficients().position_weight();
         let start = settings.start_position();
         let (q0, v0) = self.initial_state()?;
+        let motion = settings.motion();
         let coupling = match settings.moving.load.vehicles() {
             Some(vehicles) => {
-                let motion = (start, settings.moving.speed);
                 let beam = (q0.as_slice(), v0.as_slice());
-                Some(Coupling::new(model, vehicles, beam, motion, theta, settings.record.extremes_nodes)?)
+                Some(Coupling::new(model, vehicles, beam, &motion, theta, settings.record.extremes_nodes)?)
             }
             None => None,
         };
@@ -59,7 +59,7 @@ impl Simulation<'_> {
         } else {
             settings.moving.load.train()
         };
-        let load = MovingLoad::train(model, train, settings.moving.speed, start);
+        let load = MovingLoad::moving(model, train, motion);
         let solver = SolverSettings { kind, ..settings.integration.solver };
         let fixed = self.interactions.interactions().clone();
         let (stepper, weights, vehicles) = match coupling {

@@ -10,7 +10,7 @@ use crate::error::Result;
 use crate::system::beam_system;
 use crate::vehicle::consist::{RunWheel, VehicleSettings};
 use crate::vehicle::rail::{RailPoints, WheelOnBeam};
-use fem_beam::BeamModel;
+use fem_beam::{BeamModel, Motion};
 use nscd::forcing::Constant;
 use nscd::{LinearSystem, MovingInteraction};
 
@@ -39,8 +39,8 @@ pub(super) struct Coupling {
 }
 
 impl Coupling {
-    /// Couple `vehicles` to the beam of `model`, whose free DOFs start at `beam_q0`: the first wheel at `start` (m)
-    /// at t = 0, every wheel rolling at `speed` (m/s), integrated with `theta`. The vehicles start in static
+    /// Couple `vehicles` to the beam of `model`, whose free DOFs start at `beam_q0`: the first wheel moving as
+    /// `motion` says, every other at its offset behind it, integrated with `theta`. The vehicles start in static
     /// equilibrium with each wheel on the rail under it (its profile plus the beam's deflection there, 0 off the
     /// beam), pressed into the contact by its static load (two passes: the heights less the penetrations of the first
     /// pass's loads; exact for vehicles whose wheel loads do not depend on the wheels' heights, such as every vehicle
@@ -49,7 +49,7 @@ impl Coupling {
         model: &BeamModel,
         vehicles: &VehicleSettings,
         (beam_q0, beam_v0): (&[f64], &[f64]),
-        (start, speed): (f64, f64),
+        motion: &Motion,
         theta: f64,
         region: Option<(f64, f64)>,
     ) -> Result<Self> {
@@ -60,8 +60,17 @@ impl Coupling {
         let n = system.dofs();
         let lead = vehicles.lead();
         let wheels: Vec<RunWheel> = vehicles.wheels().collect();
+        // How each wheel moves: the first wheel's motion, its offset further back.
+        let motions: Vec<Motion> = wheels
+            .iter()
+            .map(|w| {
+                let mut m = motion.clone();
+                m.shift_back(w.offset - lead);
+                m
+            })
+            .collect();
         // Where each wheel is at t = 0 (m).
-        let starts: Vec<f64> = wheels.iter().map(|w| start - (w.offset - lead)).collect();
+        let starts: Vec<f64> = motions.iter().map(|m| m.position(0.0)).collect();
         let (mut q0, mut weight) = (vec![0.0; n], vec![0.0; n]);
         let mut static_forces = vec![0.0; wheels.len()];
         q0[..beam_q0.len()].copy_from_slice(beam_q0);
@@ -95,14 +104,14 @@ impl Coupling {
             let dof = layout.dof(w.vehicle + 1, w.dof);
             let track = vehicles.track(i);
             let law = vehicles.contact_of(&vehicles.vehicles[w.vehicle]);
-            let contact = WheelOnBeam::new(model, (0, dof), (starts[i], speed), track, law, theta)?;
+            let contact = WheelOnBeam::new(model, (0, dof), motions[i].clone(), track, law, theta)?;
             contacts.push(Box::new(contact));
         }
         let observer = VehicleObserver::new(
             vehicles,
             &wheels,
             static_forces,
-            (starts, speed, lead),
+            (motions, lead),
             bodies,
             (rail, model.beam().bending_stiffness()),
             (region, model.mesh().length),
@@ -118,9 +127,8 @@ impl Coupling {
 /// Per wheel and per body, what every step adds.
 pub(crate) struct VehicleObserver {
     wheels: Vec<WheelResult>,
-    /// Where each wheel is at t = 0 (m).
-    starts: Vec<f64>,
-    speed: f64,
+    /// How each wheel moves along the track.
+    motions: Vec<Motion>,
     /// How far a co-moving window has shifted back under the wheels (m): their places on the beam are their places
     /// on the track less this.
     shifted: f64,
@@ -148,7 +156,7 @@ impl VehicleObserver {
         vehicles: &VehicleSettings,
         wheels: &[RunWheel],
         static_forces: Vec<f64>,
-        (starts, speed, lead): (Vec<f64>, f64, f64),
+        (motions, lead): (Vec<Motion>, f64),
         bodies: Vec<(usize, std::ops::Range<usize>)>,
         (rail, bending_stiffness): (RailPoints, f64),
         region: (Option<(f64, f64)>, f64),
@@ -173,8 +181,7 @@ impl VehicleObserver {
             .collect();
         Self {
             wheels: results,
-            starts,
-            speed,
+            motions,
             shifted: 0.0,
             body_square_integral: vec![0.0; bodies.len()],
             bodies,
@@ -199,7 +206,7 @@ impl VehicleObserver {
 
     /// Where wheel `i` is on the beam at `time` (m).
     pub(super) fn position(&self, i: usize, time: f64) -> f64 {
-        self.starts[i] + self.speed * time - self.shifted
+        self.motions[i].position(time) - self.shifted
     }
 
     /// A co-moving window shifted `distance` (m) back under the wheels.
@@ -264,7 +271,7 @@ impl VehicleObserver {
                 (None, false) => {
                     if let Some(loss) = w.losses.last_mut()
                         && let Some(landing) = loss.landing_position
-                        && (x - landing) <= IMPACT_WINDOW * self.speed
+                        && (x - landing) <= IMPACT_WINDOW * self.motions[i].speed(time)
                     {
                         loss.impact_force = loss.impact_force.max(force);
                     }

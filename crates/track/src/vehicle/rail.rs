@@ -1,4 +1,4 @@
-//! A wheel rolling at constant speed along the beam (docs/theory.md §9, §12): the moving interaction between a wheel
+//! A wheel rolling along the beam at a constant or changing speed (docs/theory.md §9, §12): the moving interaction between a wheel
 //! DOF z_w and the rail. At the wheel's place x_c(t) = x₀ + v t, on element e with shape functions Ψ(ξ):
 //!
 //!   gap g = z_w − Ψ(x_c)ᵀq − r(x_c),   U = ż_w − Ψ(x_c)ᵀq̇ − v·Ψ′(x_c)ᵀq − v·r′(x_c),
@@ -18,7 +18,7 @@
 //! positions projected after each step ([`nscd::position`]), whose strain-energy change — the drift's spurious work,
 //! O(h) over a run — the energy ledger books apart.
 
-use fem_beam::{BeamModel, Discretisation};
+use fem_beam::{BeamModel, Discretisation, Motion};
 use friction::{InteractionKind, InteractionRow, Law};
 use irregularity::WheelTrack;
 use nscd::{MovingInteraction, MovingState};
@@ -35,8 +35,8 @@ pub struct WheelOnBeam {
     rail: RailPoints,
     /// Where the wheel is at t = 0 (m).
     start: f64,
-    /// Speed (m/s).
-    speed: f64,
+    /// How it moves along the track.
+    motion: Motion,
     /// The rail's profile and the wheel's flat.
     track: WheelTrack,
     /// The contact law (its gap field is not used).
@@ -98,25 +98,25 @@ fn combine(dofs: &[Option<usize>; 4], n: &[f64; 4], y: &[f64]) -> f64 {
 }
 
 impl WheelOnBeam {
-    /// A wheel on system DOF `wheel`, over the beam of `model` whose DOFs start at system DOF `beam_offset`, starting
-    /// at `start` (m) and rolling at `speed` (m/s) over `track` with the contact law `contact`, integrated with
-    /// `theta`.
+    /// A wheel on system DOF `wheel`, over the beam of `model` whose DOFs start at system DOF `beam_offset`, rolling
+    /// along the track as `motion` says over `track` with the contact law `contact`, integrated with `theta`.
     pub fn new(
         model: &BeamModel,
         (beam_offset, wheel): (usize, usize),
-        (start, speed): (f64, f64),
+        motion: Motion,
         track: WheelTrack,
         contact: WheelRail,
         theta: f64,
     ) -> Result<Self> {
         contact.validate()?;
         let law = contact.law();
-        Ok(Self { wheel, rail: RailPoints::new(model, beam_offset), start, speed, track, law, theta, shifted: 0.0 })
+        let rail = RailPoints::new(model, beam_offset);
+        Ok(Self { wheel, rail, start: motion.position(0.0), motion, track, law, theta, shifted: 0.0 })
     }
 
     /// Where the wheel is on the track at `time` (m).
     pub fn position(&self, time: f64) -> f64 {
-        self.start + self.speed * time
+        self.motion.position(time)
     }
 
     /// Where the wheel is on the beam at `time` (m): on the track less what a co-moving window shifted.
@@ -155,17 +155,19 @@ impl MovingInteraction for WheelOnBeam {
 
     fn update(&mut self, time: f64, step: f64, q: &[f64], v: &[f64], row: &mut InteractionRow) -> MovingState {
         let (x, next) = (self.position(time), self.position(time + self.theta * step));
+        // The wheel's speed along the track now and where the row is written (equal at constant speed).
+        let (speed, next_speed) = (self.motion.speed(time), self.motion.speed(time + self.theta * step));
         let (r, slope) = self.profile_at(x);
-        let (mut gap, mut velocity) = (q[self.wheel] - r, v[self.wheel] - self.speed * slope);
+        let (mut gap, mut velocity) = (q[self.wheel] - r, v[self.wheel] - speed * slope);
         if let Some((dofs, n, dn)) = self.rail.under(x - self.shifted) {
             gap -= combine(&dofs, &n, q);
-            velocity -= combine(&dofs, &n, v) + self.speed * combine(&dofs, &dn, q);
+            velocity -= combine(&dofs, &n, v) + speed * combine(&dofs, &dn, q);
         }
-        let mut rheonomic = -self.speed * self.profile_at(next).1;
+        let mut rheonomic = -next_speed * self.profile_at(next).1;
         if let Some((dofs, _, dn)) = self.write_row(next - self.shifted, row) {
             // −v·Ψ′(x_{k+θ})ᵀq_{k+θ} with q_{k+θ} ≈ q_k + θh v_k: second order, as the row.
             let slope = combine(&dofs, &dn, q) + self.theta * step * combine(&dofs, &dn, v);
-            rheonomic -= self.speed * slope;
+            rheonomic -= next_speed * slope;
         }
         MovingState { gap, velocity, rheonomic }
     }

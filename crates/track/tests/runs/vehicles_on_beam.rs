@@ -122,7 +122,8 @@ fn a_bad_contact_is_refused_naming_its_field() {
         (WheelRail::Rigid { restitution: 1.5 }, "vehicle.restitution"),
     ] {
         let track = WheelTrack::rail(Profile::Smooth);
-        let error = WheelOnBeam::new(&model, (0, 122), (0.0, 100.0), track, contact, 0.5).unwrap_err();
+        let error = WheelOnBeam::new(&model, (0, 122), fem_beam::Motion::constant(0.0, 100.0), track, contact, 0.5)
+            .unwrap_err();
         assert!(error.to_string().contains(field), "{error}");
     }
 }
