@@ -2,7 +2,7 @@
 //! penetration at the step's end is the complementarity 0 ≤ p ⊥ p/c + U_{k+1} + b ≥ 0, b carrying the penetration
 //! it starts from. Velocities in m/s, penetrations in m, h in s.
 
-use crate::law::{RowStart, StepWeights};
+use crate::step::{RowStart, StepWeights};
 
 /// The drift of a spring law whose force is implicit in the penetration at the step's end (docs/theory.md §9):
 /// b = b_r − (δ_k − h(1−θ)U_k)/(hθ) for the penetration δ_k (m) its spring starts from, U_k (m/s) and b_r (m/s).

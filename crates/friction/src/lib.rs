@@ -8,7 +8,8 @@
 //!
 //! - [`law`]: the laws, each with its behaviour in the step, and the one form they all take (an impulse in
 //!   [lo, hi] against its velocity) as a projection, and its natural residual.
-//! - `drift`: the drift of the compliant laws' rows (re-exported by [`law`]).
+//! - `drift`: the drift of the compliant laws' rows; `step`: what a law reads of the step — the scheme's weights,
+//!   the row's start (both re-exported by [`law`]).
 //! - [`hertz`]: Hertz's law linearised within the step (its Newton iterations' state).
 //! - [`interaction`]: interaction sets, their sparse rows, laws and kinds.
 //!
@@ -18,6 +19,7 @@ mod drift;
 pub mod hertz;
 pub mod interaction;
 pub mod law;
+mod step;
 
 pub use interaction::{InteractionKind, InteractionRow, InteractionSet};
 pub use law::Law;
