@@ -104,3 +104,14 @@ fn the_receptance_study_names_the_resonances_of_the_literature() {
         assert_eq!(twin[0]["name"], "rail on its foundation");
     }
 }
+
+/// A bad sleeper spacing is named as written (`sleepers.spacing = -0.6`) by every preset — the Python entry reached
+/// the preset unchecked and named the mesh the preset derives from it (`mesh.elements = 0`).
+#[test]
+fn a_bad_spacing_is_named_as_written() {
+    let base = Scenario::from_toml("[sleepers]\nspacing = -0.6\n", "bad.toml").unwrap();
+    for preset in [Preset::VoidedSleepers, Preset::SleeperFriction] {
+        let error = run_preset(preset, Resolution::Coarse, &base, &Runner::new(1).unwrap()).unwrap_err().to_string();
+        assert!(error.contains("sleepers.spacing = -0.6"), "{preset:?}: {error}");
+    }
+}

@@ -401,8 +401,10 @@ fn column_unit(column: &str) -> &'static str {
     unit_of(column).unwrap_or("unknown")
 }
 
-/// Run `preset` on top of `base` (normally the reference case).
+/// Run `preset` on top of `base` (normally the reference case), checked first: a bad key is named as the user wrote
+/// it (`sleepers.spacing`), not as what a preset derives from it (`mesh.elements`).
 pub fn run_preset(preset: Preset, resolution: Resolution, base: &Scenario, runner: &Runner) -> Result<StudyData> {
+    base.validate()?;
     let mut data = (preset.entry().run)(resolution, base, runner)?;
     name_the_rail(preset, base, &mut data.plots);
     let header = data.csv.lines().next().unwrap_or_default();
