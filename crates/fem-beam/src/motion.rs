@@ -132,11 +132,6 @@ impl Motion {
             piece.position -= distance;
         }
     }
-
-    /// Whether the speed never changes.
-    pub fn is_constant(&self) -> bool {
-        self.pieces.iter().all(|p| p.acceleration == 0.0 && p.speed == self.pieces[0].speed)
-    }
 }
 
 /// The knots of a speed profile: at least one, positions finite and strictly increasing, speeds finite and > 0.
@@ -175,7 +170,6 @@ mod tests {
             let x = -3.7 + 61.3 * t;
             assert_eq!(m.time_at(x), (x - -3.7) / 61.3);
         }
-        assert!(m.is_constant());
     }
 
     /// Uniform acceleration from 20 to 40 m/s over 0 … 300 m (a = 2 m/s²) started 10 m before the first knot: the

@@ -274,7 +274,7 @@ impl RunSummary {
             speed: settings.moving.speed,
             speed_change: settings.moving.changes_speed().then(|| {
                 let motion = settings.motion();
-                let end = mesh.length + settings.moving.load.length();
+                let end = settings.travel_end(mesh.length);
                 let (fastest, slowest) = motion.speed_range(end);
                 let (start_speed, end_speed) = (motion.speed(0.0), motion.speed_at(end));
                 SpeedChange { acceleration: scenario.load.acceleration, start_speed, end_speed, slowest, fastest }

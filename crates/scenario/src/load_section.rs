@@ -116,8 +116,8 @@ impl LoadSection {
 
     /// `moving` (at the run's speed, `moving.speed`) with this section's change of speed over the first axle's
     /// travel `(start, end)` (m): none at constant speed; the `speed_profile` as given; a constant `acceleration`
-    /// ([`MovingLoadSettings::with_acceleration`]). Refused by key: both given, an empty profile, a profile
-    /// beside another speed (a sweep's or `--speed`), a load that would stop on the way.
+    /// ([`MovingLoadSettings::with_acceleration`]). Refused by key: both given, a bad profile (its knots checked by
+    /// [`MovingLoadSettings::with_profile`]), a profile beside another speed (a sweep's or `--speed`), a load that would stop on the way.
     pub fn speed_change(&self, moving: MovingLoadSettings, travel: (f64, f64)) -> Result<MovingLoadSettings> {
         if let (Some(a), Some(_)) = (self.acceleration, &self.speed_profile) {
             return Err(invalid("load.acceleration", a, "give acceleration or speed_profile, not both"));
@@ -133,9 +133,6 @@ impl LoadSection {
                         moving.speed
                     ),
                 ));
-            }
-            if knots.is_empty() {
-                return Err(invalid("load.speed_profile", "[]", "needs one [x, v] knot at least (m, m/s)"));
             }
             return Ok(moving.with_profile(knots.iter().map(|&[x, v]| (x, v)).collect())?);
         }

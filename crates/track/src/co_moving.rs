@@ -149,9 +149,7 @@ fn check(model: &BeamModel, settings: &RunSettings, window: &CoMovingSettings) -
     if settings.moving.changes_speed() {
         let allowed = "a co-moving window follows a load at constant speed (its window moves one element per fixed \
                        number of steps): leave the speed profile out, or run the whole track";
-        let setting =
-            if settings.moving.acceleration.is_some() { Setting::Acceleration } else { Setting::SpeedProfile };
-        return Err(invalid(setting, settings.moving.largest_speed(), allowed));
+        return Err(invalid(settings.moving.speed_setting(), settings.moving.largest_speed(), allowed));
     }
     let l = mesh.element_length();
     let advance = settings.integration.load_advance;

@@ -79,7 +79,7 @@ impl<'a> SnapshotTaker<'a> {
                 }
                 SnapshotAt::LoadPosition(x) => {
                     // The first axle's position: up to L plus the train's length (the last axle then leaves).
-                    let last = length + settings.moving.load.length();
+                    let last = settings.travel_end(length);
                     if !(x.is_finite() && (start..=last).contains(&x)) {
                         let allowed = format!("a snapshot load (first axle) position must lie in [{start}, {last}] m");
                         return Err(invalid(Setting::Snapshots, x, allowed));

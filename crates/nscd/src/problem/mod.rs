@@ -209,6 +209,8 @@ impl InteractionProblem {
         let weights = self.matrix.integration.weights();
         let (h, theta) = (weights.step, weights.theta);
         let rows = self.interactions.rows();
+        // The θ-method's laws start from v_k itself: one product a row, not two.
+        let same = std::ptr::eq(start, v);
         for (j, law) in self.interactions.laws().iter().enumerate() {
             let row_start = if j >= self.fixed {
                 let state = self.moving_states[j - self.fixed];
@@ -220,12 +222,9 @@ impl InteractionProblem {
                 }
             } else {
                 let Some(gap) = law.gap() else { continue };
-                RowStart {
-                    gap: gap + rows[j].dot(q),
-                    velocity: rows[j].dot(start),
-                    current: rows[j].dot(v),
-                    rheonomic: 0.0,
-                }
+                let velocity = rows[j].dot(start);
+                let current = if same { velocity } else { rows[j].dot(v) };
+                RowStart { gap: gap + rows[j].dot(q), velocity, current, rheonomic: 0.0 }
             };
             let RowStart { gap, velocity: u, rheonomic, .. } = row_start;
             if let Some(hertz) = self.hertz[j].as_mut() {

@@ -79,20 +79,16 @@ impl MovingLoadSettings {
     /// The same run at `speed` (m/s): its constant speed, or with a constant acceleration the speed at x = 0 over the
     /// same travel; refused by key for a given speed profile, which sets the speeds itself.
     pub fn at_speed(&self, speed: f64) -> Result<Self> {
-        let mut moved = Self { speed, profile: Vec::new(), acceleration: None, ..self.clone() };
-        match (self.acceleration, self.profile.first(), self.profile.last()) {
-            (_, None, _) => Ok(moved),
-            (Some(a), Some(&(start, _)), Some(&(end, _))) => {
-                moved.speed = speed;
-                moved.with_acceleration(a, (start, end))
-            }
-            (None, Some(_), _) => Err(invalid(
+        let moved = Self { speed, profile: Vec::new(), acceleration: None, ..self.clone() };
+        match (self.acceleration, self.profile.first().zip(self.profile.last())) {
+            (_, None) => Ok(moved),
+            (Some(a), Some((&(start, _), &(end, _)))) => moved.with_acceleration(a, (start, end)),
+            (None, Some(_)) => Err(invalid(
                 Setting::SpeedProfile,
                 speed,
                 "a speed profile sets the speeds itself: a run at another speed (a sweep's) does not take it; leave \
                  the profile out to sweep speeds, or give a constant acceleration",
             )),
-            (Some(_), Some(_), None) => unreachable!("a profile with a first knot has a last"),
         }
     }
 
@@ -109,6 +105,15 @@ impl MovingLoadSettings {
     /// The largest speed (m/s) the load reaches: `speed`, or the profile's fastest knot.
     pub fn largest_speed(&self) -> f64 {
         self.profile.iter().fold(self.speed, |v, &(_, knot)| v.max(knot))
+    }
+
+    /// The key that sets the speed, for an error about it: the acceleration, the profile or the constant speed.
+    pub fn speed_setting(&self) -> Setting {
+        match (self.acceleration, self.profile.is_empty()) {
+            (Some(_), _) => Setting::Acceleration,
+            (None, false) => Setting::SpeedProfile,
+            (None, true) => Setting::Speed,
+        }
     }
 
     /// Whether the speed changes during the run.

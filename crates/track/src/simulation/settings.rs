@@ -177,7 +177,7 @@ impl RunSettings {
         let bar_wave = (beam.youngs_modulus / beam.density).sqrt();
         if self.moving.largest_speed() >= bar_wave {
             return Err(invalid(
-                if self.moving.profile.is_empty() { Setting::Speed } else { Setting::SpeedProfile },
+                self.moving.speed_setting(),
                 self.moving.largest_speed(),
                 format!(
                     "must be below the beam's bar wave speed √(E/ρ) = {bar_wave:.0} m/s: beyond it no beam theory \
@@ -376,7 +376,7 @@ impl RunSettings {
         let steps = self.step_count(length);
         if steps > Self::MAX_STEPS as f64 {
             let h = self.time_step();
-            let travel = length + self.moving.load.length() - self.start_position();
+            let travel = self.travel_end(length) - self.start_position();
             let allowed = format!(
                 "gives {steps:.3e} time steps of {h:.3e} s over the {travel:.4e} m the load travels (beam length \
                  {length:.4e} m plus the train); at most {} are allowed: shorten the beam (mesh.length) or the run, \
@@ -446,7 +446,12 @@ impl RunSettings {
 
     /// Time for the load — the last axle of a train — to reach x = L (s).
     pub fn crossing_time(&self, length: f64) -> f64 {
-        self.motion().time_at(length + self.moving.load.length())
+        self.motion().time_at(self.travel_end(length))
+    }
+
+    /// Where the first axle is when the last leaves a beam of `length` (m): L plus the train's length.
+    pub fn travel_end(&self, length: f64) -> f64 {
+        length + self.moving.load.length()
     }
 
     /// How the first axle moves from its start ([`MovingLoadSettings::motion`]).
