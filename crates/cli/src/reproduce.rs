@@ -99,7 +99,7 @@ fn report_header(base: &scenario::Scenario, options: &crate::study_cmd::StudyOpt
     let _ = writeln!(
         report,
         "{}: EI = {:.4} MN·m², ρA = {:.3} kg/m on a Winkler soil of k_f = {:.1} kN/m² (v_cr = {}), {} m beam of {} \
-         Hermite elements ({:?}/{:?} ends), load F = {:.1} kN, θ = {}, load advance {} m per step. Resolution: {}. \
+         Hermite elements ({:?}/{:?} ends), load F = {:.1} kN, integrated by the {}, load advance {} m per step. Resolution: {}. \
          Every figure has its data beside it (`<study>.csv`, SI units) and its metadata (`<study>.json`: the scenario, \
          what the study set itself, the CSV's units).\n",
         if base.title.is_empty() { "The reference case (UIC60 rail on soft soil)" } else { base.title.as_str() },
@@ -112,7 +112,7 @@ fn report_header(base: &scenario::Scenario, options: &crate::study_cmd::StudyOpt
         model.supports().left,
         model.supports().right,
         base.load.force / 1e3,
-        base.integration.theta,
+        base.scheme_used(),
         base.integration.load_advance,
         options.resolution.name()
     );

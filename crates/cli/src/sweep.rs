@@ -114,8 +114,7 @@ pub fn run(args: &SweepArgs) -> Result<()> {
             for f in &failed {
                 println!("# failed_run {}", serde_json::to_string(f)?);
             }
-            let units = runner::csv_columns(scenario.vehicle.is_some(), scenario.sleepers.is_some())
-                .map(|(name, unit, _)| (*name, *unit));
+            let units = runner::csv_columns_of(&scenario).map(|(name, unit, _)| (*name, *unit));
             println!("# {}", report::columns::units_line(units));
         }
     }

@@ -57,6 +57,14 @@ pub enum FemError {
         /// What is allowed, in words.
         allowed: String,
     },
+    /// The frequency band of a band-limited response (`output.acceleration_band`, Hz) is not usable.
+    #[error("invalid output.acceleration_band = {value}: {allowed}")]
+    InvalidBand {
+        /// The band as given ([`crate::modal_band::BandLimit`]'s words).
+        value: String,
+        /// What is allowed, in words.
+        allowed: String,
+    },
     /// A vector does not have the length the model expects.
     #[error("{what} has length {actual}, expected {expected}")]
     LengthMismatch {

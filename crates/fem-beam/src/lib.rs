@@ -15,7 +15,7 @@
 //! - [`load`]: consistent point forces/moments and uniform loads; [`section`]: w, θ, M from a DOF vector.
 //! - [`distributed`]: the sections of a law distributed along the beam, and ballast friction's description.
 //! - [`extreme`]: the [`Extreme`] and [`LiftOffZone`] every response is reported in.
-//! - [`statics`], [`modal`]: K q = f and K φ = ω² M φ.
+//! - [`statics`], [`modal`]: K q = f and K φ = ω² M φ; [`modal_band`]: a field's part in the modes below a frequency.
 //! - [`motion`]: how the loads move — constant speed or a speed profile over position ([`Motion`]).
 //! - [`reference`](mod@reference): the reference case and closed-form results (β, w₀, M₀, v_cr, ω_n, moving-load steady state).
 
@@ -34,6 +34,7 @@ pub mod infinite_track;
 pub mod load;
 pub mod mesh;
 pub mod modal;
+pub mod modal_band;
 pub mod motion;
 pub mod moving_timoshenko;
 pub mod properties;

@@ -7,6 +7,7 @@
 
 use crate::assembly::BeamModel;
 use crate::error::{FemError, Result};
+use nalgebra::DMatrix;
 
 impl BeamModel {
     /// The largest eigenproblem solved densely: 2000 free DOFs (1000 elements; 32 MB per dense matrix, a few
@@ -16,7 +17,16 @@ impl BeamModel {
     /// All eigenvalues ω² (rad²/s²) in ascending order. Zero (rigid-body) modes give values at round-off level,
     /// possibly slightly negative. Errors for more than [`BeamModel::MAX_MODAL_DOFS`] free DOFs.
     pub fn eigenvalues(&self) -> Result<Vec<f64>> {
-        let n = self.dofs().free_len();
+        let (_, a) = self.standard_eigenproblem()?;
+        let mut values: Vec<f64> = a.symmetric_eigenvalues().iter().copied().collect();
+        values.sort_by(f64::total_cmp);
+        Ok(values)
+    }
+
+    /// M = L Lᵀ and the symmetric standard form A = L⁻¹ K L⁻ᵀ of K φ = ω² M φ (A y = ω² y, φ = L⁻ᵀ y), dense over
+    /// the free DOFs; refused beyond [`BeamModel::MAX_MODAL_DOFS`] before any dense matrix is allocated.
+    pub(crate) fn standard_eigenproblem(&self) -> Result<(DMatrix<f64>, DMatrix<f64>)> {
+        let n = self.mass().order();
         if n > Self::MAX_MODAL_DOFS {
             return Err(FemError::InvalidCount {
                 field: "mesh.elements",
@@ -32,9 +42,7 @@ impl BeamModel {
         let x = l.solve_lower_triangular(&k).ok_or(FemError::NonPositivePivot { index: 0, pivot: 0.0 })?;
         let a = l.solve_lower_triangular(&x.transpose()).ok_or(FemError::NonPositivePivot { index: 0, pivot: 0.0 })?;
         let a = (&a + a.transpose()) * 0.5;
-        let mut values: Vec<f64> = a.symmetric_eigenvalues().iter().copied().collect();
-        values.sort_by(f64::total_cmp);
-        Ok(values)
+        Ok((l, a))
     }
 
     /// The lowest `count` natural circular frequencies ω (rad/s), ascending; zero modes give 0.

@@ -56,6 +56,15 @@ impl BeamTheory {
         }
     }
 
+    /// Whether a point force moving along the beam leaves it a bounded acceleration, so that the largest nodal
+    /// acceleration of a run converges under refinement. Euler–Bernoulli: yes (the deflection is C² across the
+    /// force). Timoshenko: no — the slope w′ has a kink F/(κGA − ρAv²) under the force, so a point's velocity jumps
+    /// as the force passes and its acceleration there is a Dirac: the largest nodal acceleration grows as the step
+    /// shrinks (docs/theory.md §10.4). A band-limited acceleration is defined on both.
+    pub fn bounds_point_load_acceleration(&self) -> bool {
+        matches!(self, BeamTheory::EulerBernoulli)
+    }
+
     /// The theory in words where a report must name it: None for Euler–Bernoulli, the default.
     pub fn unless_default(&self) -> Option<String> {
         (*self != BeamTheory::EulerBernoulli).then(|| self.describe())

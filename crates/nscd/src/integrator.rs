@@ -74,6 +74,16 @@ impl Scheme {
     }
 }
 
+impl std::fmt::Display for Scheme {
+    /// The scheme as a report names it: "θ-method (θ = 0.5)" or "generalized-α (ρ∞ = 0.5)".
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Scheme::Theta(theta) => write!(f, "θ-method (θ = {theta})"),
+            Scheme::GeneralizedAlpha { spectral_radius } => write!(f, "generalized-α (ρ∞ = {spectral_radius})"),
+        }
+    }
+}
+
 /// Integration settings.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Integration {

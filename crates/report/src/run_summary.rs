@@ -109,8 +109,12 @@ pub struct ExtremesSummary {
     pub max_downward_deflection: Extreme,
     /// Largest upward deflection (m), its node and time.
     pub max_upward_deflection: Extreme,
-    /// Largest nodal acceleration, the step's mean (m/s²), its node and time.
-    pub max_acceleration: Extreme,
+    /// Largest nodal acceleration, the step's mean (m/s²), its node and time; null where undefined (a Timoshenko
+    /// rail: its nodal acceleration under a passing point force grows without bound under refinement).
+    pub max_acceleration: Option<Extreme>,
+    /// Largest acceleration in the beam's modes up to a band (EN 1990 A2's deck check on a span), where computed.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub band_acceleration: Option<BandAccelerationSummary>,
     /// Largest downward deflection of the same loads standing at every position (m).
     pub static_max_downward_deflection: f64,
     /// max downward deflection over its static value.
@@ -127,6 +131,18 @@ pub struct ExtremesSummary {
     pub global_norm: f64,
 }
 
+/// The largest band-limited acceleration of a run (docs/theory.md §10.4).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct BandAccelerationSummary {
+    /// Its magnitude (m/s²), node and time.
+    #[serde(flatten)]
+    pub extreme: Extreme,
+    /// The band's upper limit f_max (Hz).
+    pub band: f64,
+    /// The natural frequencies of the modes in the band (Hz).
+    pub mode_frequencies: Vec<f64>,
+}
+
 /// How the steps of one run were solved.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct SteppingSummary {
@@ -134,6 +150,8 @@ pub struct SteppingSummary {
     pub steps: usize,
     /// The step h (s).
     pub time_step: f64,
+    /// The scheme, e.g. "generalized-α (ρ∞ = 0.5)" or "θ-method (θ = 0.5)".
+    pub scheme: String,
     /// Friction sections.
     pub sections: usize,
     /// Mean solver iterations per step.
@@ -296,7 +314,7 @@ impl RunSummary {
             distributed_friction: scenario.friction.distributed.as_ref().map_or(0.0, |d| d.force_per_length),
             extremes: ExtremesSummary::of(case, result)?,
             energy: result.energy.balance(),
-            stepping: SteppingSummary::of(result),
+            stepping: SteppingSummary::of(result, settings),
             wall_time: started.elapsed().as_secs_f64(),
             time_loop: result.statistics.wall_time,
             vehicles: result.vehicles.as_ref().map(|v| {
@@ -340,6 +358,11 @@ impl ExtremesSummary {
             max_downward_deflection: result.max_downward,
             max_upward_deflection: result.max_upward,
             max_acceleration: result.max_acceleration,
+            band_acceleration: result.band_acceleration.as_ref().map(|b| BandAccelerationSummary {
+                extreme: b.extreme,
+                band: b.limit,
+                mode_frequencies: b.frequencies.clone(),
+            }),
             static_max_downward_deflection: statics.max_downward,
             dynamic_amplification: if statics.max_downward > 0.0 {
                 result.max_downward.value / statics.max_downward
@@ -356,12 +379,13 @@ impl ExtremesSummary {
 }
 
 impl SteppingSummary {
-    /// The solver statistics of `result`.
-    pub fn of(result: &RunResult) -> Self {
+    /// The solver statistics of `result`, run under `settings`.
+    pub fn of(result: &RunResult, settings: &track::RunSettings) -> Self {
         let s = &result.statistics;
         Self {
             steps: s.steps,
             time_step: result.step,
+            scheme: settings.integration.scheme().to_string(),
             sections: s.sections,
             mean_iterations: s.mean_iterations,
             max_iterations: s.max_iterations,

@@ -294,13 +294,32 @@ fn write_numbers(f: &mut Formatter<'_>, r: &RunSummary) -> fmt::Result {
         r.extremes.static_max_downward_deflection * 1e3,
         r.extremes.dynamic_amplification
     )?;
-    match r.extremes.max_acceleration.place() {
-        Some((x, t)) => writeln!(
+    match r.extremes.max_acceleration.map(|a| (a, a.place())) {
+        Some((a, Some((x, t)))) => writeln!(
             f,
-            "  max acceleration {:.3} m/s² at x = {x:.1} m, t = {t:.4} s (the step's mean; a bridge deck's check value)",
-            r.extremes.max_acceleration.value
+            "  max acceleration {:.3} m/s² at x = {x:.1} m, t = {t:.4} s (at the nodes, the step's mean)",
+            a.value
         )?,
-        None => writeln!(f, "  max acceleration none (the beam never moved)")?,
+        Some((_, None)) => writeln!(f, "  max acceleration none (the beam never moved)")?,
+        None => writeln!(
+            f,
+            "  max acceleration undefined at the nodes: a Timoshenko rail's acceleration under a passing point force \
+             grows without bound as the step shrinks{}",
+            if r.extremes.band_acceleration.is_some() { " (the band-limited one below is defined)" } else { "" }
+        )?,
+    }
+    if let Some(b) = &r.extremes.band_acceleration {
+        let place = b.extreme.place().map_or(String::new(), |(x, t)| format!(" at x = {x:.1} m, t = {t:.4} s"));
+        writeln!(
+            f,
+            "  band-limited acceleration {:.3} m/s²{place} (the {} mode{} up to {:.1} Hz: {} Hz; a deck's EN 1990 \
+             check value)",
+            b.extreme.value,
+            b.mode_frequencies.len(),
+            if b.mode_frequencies.len() == 1 { "" } else { "s" },
+            b.band,
+            b.mode_frequencies.iter().map(|f| format!("{f:.2}")).collect::<Vec<_>>().join(", ")
+        )?;
     }
     writeln!(f, "  global norm W̄          {:>9.4} m²", r.extremes.global_norm)?;
     writeln!(
@@ -315,10 +334,11 @@ fn write_numbers(f: &mut Formatter<'_>, r: &RunSummary) -> fmt::Result {
     )?;
     writeln!(
         f,
-        "  {} steps of {:.3e} s, {} ({:.0} re-solved per step), solver {}: {:.2} iterations/step \
+        "  {} steps of {:.3e} s by the {}, {} ({:.0} re-solved per step), solver {}: {:.2} iterations/step \
          (max {}), max residual {:.2e} m/s",
         r.stepping.steps,
         r.stepping.time_step,
+        r.stepping.scheme,
         section_count(r),
         r.stepping.mean_sections_solved,
         r.stepping.solver,

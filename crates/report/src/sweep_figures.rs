@@ -54,12 +54,30 @@ pub fn sweep_plots(
     let markers = points.len() <= crate::plot::MAX_MARKED_POINTS;
     let sheet = Sheet { points, stem, title, case: scenario.map(case_line), markers };
     let mut plots = vec![sheet.deflection(critical)];
-    plots.push(sheet.quantity(
-        "acceleration",
-        "max acceleration",
-        "max vertical acceleration (m/s²)",
-        vec![("over all nodes".into(), 0, sheet.series(&|p| p.max_acceleration.value))],
-    ));
+    let mut accelerations = Vec::new();
+    if points.iter().any(|p| p.max_acceleration.is_some()) {
+        accelerations.push((
+            "at the nodes".into(),
+            0,
+            sheet.series(&|p| p.max_acceleration.map_or(f64::NAN, |a| a.value)),
+        ));
+    }
+    if points.iter().any(|p| p.band_acceleration.is_some()) {
+        let band = scenario.and_then(|s| s.acceleration_band().ok().flatten());
+        let name = match band {
+            Some(fem_beam::modal_band::BandLimit::Frequency(f)) => format!("in the modes up to {f} Hz"),
+            _ => "in the deck's EN 1990 band".to_string(),
+        };
+        accelerations.push((name, 1, sheet.series(&|p| p.band_acceleration.map_or(f64::NAN, |a| a.value))));
+    }
+    if !accelerations.is_empty() {
+        plots.push(sheet.quantity(
+            "acceleration",
+            "max acceleration",
+            "max vertical acceleration (m/s²)",
+            accelerations,
+        ));
+    }
     if points.iter().any(|p| p.energy.dissipated > 0.0) {
         plots.push(sheet.quantity(
             "energy",
@@ -179,6 +197,7 @@ pub fn read_sweep_csv(text: &str, source: &str) -> Result<Vec<SweepPoint>> {
     let base: Vec<usize> = CSV_COLUMNS.iter().map(|(n, _, _)| index(n)).collect::<Result<_>>()?;
     let vehicles: Option<Vec<usize>> = VEHICLE_CSV_COLUMNS.iter().map(|(n, _, _)| index(n).ok()).collect();
     let sleepers: Option<Vec<usize>> = runner::SLEEPER_CSV_COLUMNS.iter().map(|(n, _, _)| index(n).ok()).collect();
+    let band = index(runner::BAND_CSV_COLUMNS[0].0).ok();
     Ok(table
         .rows
         .iter()
@@ -194,7 +213,8 @@ pub fn read_sweep_csv(text: &str, source: &str) -> Result<Vec<SweepPoint>> {
                 max_upward_deflection: extreme(v[2], f64::NAN, f64::NAN),
                 window_max_downward_deflection: extreme(v[10], v[11], v[12]),
                 window_max_upward_deflection: extreme(v[13], v[14], v[15]),
-                max_acceleration: extreme(v[16], f64::NAN, f64::NAN),
+                max_acceleration: place(v[16]).map(|a| extreme(a, f64::NAN, f64::NAN)),
+                band_acceleration: band.and_then(|c| place(r[c])).map(|a| extreme(a, f64::NAN, f64::NAN)),
                 global_norm: v[4],
                 // The CSV holds three of the balance's terms; the others are not known from it.
                 energy: EnergyBalance { load_work: v[7], dissipated: v[3], residual: v[8], ..EnergyBalance::unknown() },
@@ -238,7 +258,8 @@ mod tests {
             max_upward_deflection: Extreme { value: 0.05, position: None, time: None },
             window_max_downward_deflection: Extreme::at(0.09, 99.0, 0.45),
             window_max_upward_deflection: Extreme::at(0.04, 98.0, 0.44),
-            max_acceleration: Extreme { value: 12.0, position: None, time: None },
+            max_acceleration: Some(Extreme { value: 12.0, position: None, time: None }),
+            band_acceleration: Some(Extreme { value: 3.0 + speed * 1e-2, position: None, time: None }),
             global_norm: 0.3,
             energy: EnergyBalance { load_work: 1e3, dissipated: 12.5, residual: 1e-12, ..EnergyBalance::unknown() },
             mean_iterations: 3.0,

@@ -45,7 +45,7 @@ impl SweepFile {
         critical: Option<&CriticalSpeed>,
         failed: &[FailedRun],
     ) -> Self {
-        let columns = runner::csv_columns(scenario.vehicle.is_some(), scenario.sleepers.is_some())
+        let columns = runner::csv_columns_of(scenario)
             .map(|(name, unit, meaning)| ColumnMeta {
                 name: name.to_string(),
                 unit: unit.to_string(),

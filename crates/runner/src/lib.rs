@@ -31,9 +31,9 @@ pub use sleeper_columns::{SLEEPER_CSV_COLUMNS, SleeperColumns};
 
 use fem_beam::Extreme;
 use nscd::EnergyBalance;
-use scenario::Case;
 use scenario::error::{Result, StudyError};
 use scenario::number::row_with_gaps;
+use scenario::{Case, Scenario};
 use serde::{Deserialize, Serialize};
 use std::io::Write;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -54,8 +54,14 @@ pub struct SweepPoint {
     pub window_max_downward_deflection: Extreme,
     /// Max upward deflection while the load was inside the extremes window (m, magnitude).
     pub window_max_upward_deflection: Extreme,
-    /// Largest vertical acceleration over nodes and steps (m/s², magnitude): a bridge deck's check value.
-    pub max_acceleration: Extreme,
+    /// Largest vertical acceleration over nodes and steps (m/s², magnitude); None where undefined (a Timoshenko rail:
+    /// [`track::RunResult::max_acceleration`]).
+    #[serde(default)]
+    pub max_acceleration: Option<Extreme>,
+    /// Largest band-limited acceleration (m/s², magnitude), where the run asked for one: a bridge deck's check value
+    /// ([`track::RunResult::band_acceleration`]).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub band_acceleration: Option<Extreme>,
     /// W̄ (m²).
     pub global_norm: f64,
     /// The energy balance (J).
@@ -68,6 +74,14 @@ pub struct SweepPoint {
     /// The sleepers' columns, in a run on sleepers.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub sleepers: Option<SleeperColumns>,
+}
+
+impl SweepPoint {
+    /// The acceleration a deck check reads (m/s²): the band-limited one where the run computed it (a span: EN 1990
+    /// A2's modes up to f_max), else the nodal one; NaN where neither is defined.
+    pub fn deck_acceleration(&self) -> f64 {
+        self.band_acceleration.or(self.max_acceleration).map_or(f64::NAN, |a| a.value)
+    }
 }
 
 /// What a sweep point reports of the vehicles (docs/theory.md §12), over the wheels and bodies of the run.
@@ -167,6 +181,7 @@ fn point_until(case: &Case, speed: f64, stop: Option<&AtomicBool>) -> Result<Swe
         window_max_downward_deflection: window.max_downward,
         window_max_upward_deflection: window.max_upward,
         max_acceleration: r.max_acceleration,
+        band_acceleration: r.band_acceleration.as_ref().map(|b| b.extreme),
         global_norm: r.global_norm,
         energy: r.energy.balance(),
         mean_iterations: r.statistics.mean_iterations,
@@ -216,16 +231,34 @@ pub const CSV_COLUMNS: [(&str, &str, &str); 17] = [
     ("max_acceleration", "m/s²", "largest vertical acceleration over all nodes and steps (magnitude; bridge decks)"),
 ];
 
+/// The band-limited acceleration's column of sweep output, last, when the sweep's runs compute one.
+pub const BAND_CSV_COLUMNS: [(&str, &str, &str); 1] = [(
+    "band_acceleration",
+    "m/s²",
+    "largest acceleration in the beam's modes up to output.acceleration_band (a span's EN 1990 A2 check value)",
+)];
+
+/// The columns of a sweep's CSV of `scenario` (name, unit, meaning), as [`write_csv_rows`] writes them for its runs.
+pub fn csv_columns_of(
+    scenario: &Scenario,
+) -> impl Iterator<Item = &'static (&'static str, &'static str, &'static str)> {
+    let band = scenario.acceleration_band().is_ok_and(|b| b.is_some());
+    csv_columns(scenario.vehicle.is_some(), scenario.sleepers.is_some(), band)
+}
+
 /// The columns of a sweep's CSV (name, unit, meaning): [`CSV_COLUMNS`], then [`VEHICLE_CSV_COLUMNS`] for a sweep of
-/// vehicles, then [`SLEEPER_CSV_COLUMNS`] for a sweep on sleepers.
-pub fn csv_columns(
+/// vehicles, [`SLEEPER_CSV_COLUMNS`] for a sweep on sleepers, [`BAND_CSV_COLUMNS`] for runs with an acceleration
+/// band.
+fn csv_columns(
     vehicles: bool,
     sleepers: bool,
+    band: bool,
 ) -> impl Iterator<Item = &'static (&'static str, &'static str, &'static str)> {
     CSV_COLUMNS
         .iter()
         .chain(VEHICLE_CSV_COLUMNS.iter().filter(move |_| vehicles))
         .chain(SLEEPER_CSV_COLUMNS.iter().filter(move |_| sleepers))
+        .chain(BAND_CSV_COLUMNS.iter().filter(move |_| band))
 }
 
 /// The CSV header line of sweep output (no newline).
@@ -251,7 +284,8 @@ fn missing(value: Option<f64>) -> f64 {
 pub fn write_csv_rows(rows: &[SweepRow], out: &mut dyn Write) -> std::io::Result<()> {
     let vehicles = rows.iter().any(|r| r.as_ref().is_ok_and(|p| p.vehicles.is_some()));
     let sleepers = rows.iter().any(|r| r.as_ref().is_ok_and(|p| p.sleepers.is_some()));
-    let names: Vec<&str> = csv_columns(vehicles, sleepers).map(|(name, _, _)| *name).collect();
+    let band = rows.iter().any(|r| r.as_ref().is_ok_and(|p| p.band_acceleration.is_some()));
+    let names: Vec<&str> = csv_columns(vehicles, sleepers, band).map(|(name, _, _)| *name).collect();
     writeln!(out, "{}", names.join(","))?;
     let columns = names.len();
     for line in rows {
@@ -282,7 +316,7 @@ pub fn write_csv_rows(rows: &[SweepRow], out: &mut dyn Write) -> std::io::Result
                 p.window_max_upward_deflection.value,
                 missing(p.window_max_upward_deflection.position),
                 missing(p.window_max_upward_deflection.time),
-                p.max_acceleration.value,
+                p.max_acceleration.map_or(f64::NAN, |a| a.value),
             ])
         )?;
         if vehicles {
@@ -290,6 +324,9 @@ pub fn write_csv_rows(rows: &[SweepRow], out: &mut dyn Write) -> std::io::Result
         }
         if sleepers {
             write!(out, ",{}", row_with_gaps(&p.sleepers.map_or([f64::NAN; 5], |s| s.values())))?;
+        }
+        if band {
+            write!(out, ",{}", row_with_gaps(&[p.band_acceleration.map_or(f64::NAN, |a| a.value)]))?;
         }
         writeln!(out)?;
     }

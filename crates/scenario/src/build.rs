@@ -1,9 +1,12 @@
 //! From a scenario's sections to what the stepper runs: the beam model, the friction sections and the run
 //! settings, every value checked on the way and errors renamed to their dotted path in the file.
 
-use super::{Case, DistributedSection, FoundationLawKind, QuadratureKind, Scenario, SweepSection, fnv1a};
+use super::{
+    Case, DistributedSection, FoundationLawKind, QuadratureKind, Scenario, SweepSection, VehicleSection, fnv1a,
+};
 use crate::error::{Result, StudyError, invalid};
 use crate::number::number;
+use fem_beam::modal_band::BandLimit;
 use fem_beam::{AbsorbingZones, BeamModel, Foundation, FoundationLaw, Mesh};
 use nscd::SolverSettings;
 use track::PlacedInteractions;
@@ -335,6 +338,34 @@ impl Scenario {
         if train.name == "single" { train } else { train.scaled(self.axle_share().factor()) }
     }
 
+    /// The scheme `(θ, ρ∞)` this scenario's runs are integrated with ([`crate::IntegrationSection::scheme`] for its
+    /// rail and its wheels).
+    pub fn scheme(&self) -> (f64, Option<f64>) {
+        let timoshenko = matches!(self.beam.theory, fem_beam::BeamTheory::Timoshenko { .. });
+        let rigid_contact = self.vehicle.as_ref().is_some_and(VehicleSection::has_rigid_contact);
+        self.integration.scheme(timoshenko, rigid_contact)
+    }
+
+    /// The engine's scheme of [`Self::scheme`], as a report names it.
+    pub fn scheme_used(&self) -> nscd::integrator::Scheme {
+        let (theta, spectral_radius) = self.scheme();
+        IntegrationSettings { theta, spectral_radius, ..IntegrationSettings::default() }.scheme()
+    }
+
+    /// The band of the band-limited acceleration its runs report ([`crate::OutputSection::acceleration_band`]): the
+    /// frequency given (finite and > 0), else on a span EN 1990's deck band of its own modes, else none.
+    pub fn acceleration_band(&self) -> Result<Option<BandLimit>> {
+        if let Some(limit) = self.output.acceleration_band {
+            if !(limit.is_finite() && limit > 0.0) {
+                return Err(invalid("output.acceleration_band", limit, "must be finite and > 0 (Hz)"));
+            }
+            return Ok(Some(BandLimit::Frequency(limit)));
+        }
+        let (k_f, sleepers) = (self.foundation.stiffness, self.sleepers.is_some());
+        let span = crate::diagnostics::span_of(&self.beam, &self.supports, k_f, sleepers, self.mesh.length);
+        Ok(span.map(|_| BandLimit::Deck))
+    }
+
     /// Run settings for a load speed `speed` (m/s), with the train resolved ([`crate::trains::resolve`]) but not yet
     /// validated (see [`Scenario::build`]).
     pub fn run_settings(&self, speed: f64) -> Result<RunSettings> {
@@ -346,6 +377,7 @@ impl Scenario {
     pub fn run_settings_reaching(&self, speed: f64, reach: f64) -> Result<RunSettings> {
         let train = crate::trains::resolve(&self.load)?.map(|t| self.on_the_beam(t));
         let i = &self.integration;
+        let (theta, spectral_radius) = self.scheme();
         let initial = match (i.steady_start, i.static_start) {
             (Some(_), Some(x)) => {
                 return Err(invalid("integration.static_start", x, "give steady_start or static_start, not both"));
@@ -383,8 +415,8 @@ impl Scenario {
         Ok(RunSettings {
             moving: self.load.speed_change(moving, travel)?,
             integration: IntegrationSettings {
-                theta: i.theta,
-                spectral_radius: i.spectral_radius,
+                theta,
+                spectral_radius,
                 load_advance: i.load_advance,
                 max_step: i.max_step,
                 end_time: i.end_time,
@@ -394,6 +426,7 @@ impl Scenario {
                 sections: self.output.sections.clone(),
                 extremes_window: Some(self.output.extremes_window(self.mesh.length)),
                 extremes_nodes: self.output.extremes_nodes.map(|[a, b]| (a, b)),
+                acceleration_band: self.acceleration_band()?,
             },
         })
     }

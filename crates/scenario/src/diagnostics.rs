@@ -14,6 +14,7 @@ use crate::error::{Result, invalid};
 pub use crate::warning::Warning;
 use crate::{Case, Scenario};
 use fem_beam::reference::InfiniteBeam;
+use fem_beam::span::SimplySupportedSpan;
 use fem_beam::{BeamModel, Support};
 use track::SectionKind;
 use track::vehicle::wheel_rail::WheelRail;
@@ -182,14 +183,31 @@ fn timoshenko_sawtooth(case: &Case) -> Vec<Warning> {
 
 /// The highest frequency a deck-acceleration check needs, f_max = max(30 Hz, 1.5 f₁, f₃) (EN 1990 A2, docs/theory.md
 /// §10), with the span it was taken from; None unless the model is a span (no foundation, both ends pinned).
-pub fn deck_frequency(model: &BeamModel) -> Option<(f64, fem_beam::span::SimplySupportedSpan)> {
-    let supports = model.supports();
+pub fn deck_frequency(model: &BeamModel) -> Option<(f64, SimplySupportedSpan)> {
+    let sleepers = model.sleepers().is_some();
+    let span = span_of(model.beam(), &model.supports(), model.foundation().stiffness, sleepers, model.mesh().length)?;
+    Some((deck_band(&span), span))
+}
+
+/// The simply supported span a beam of `length` (m) is — None unless both ends are pinned, without a foundation
+/// (`foundation_stiffness` 0) and without `sleepers`: a bridge deck, whose accelerations EN 1990 A2 checks.
+pub fn span_of(
+    beam: &fem_beam::Beam,
+    supports: &fem_beam::Supports,
+    foundation_stiffness: f64,
+    sleepers: bool,
+    length: f64,
+) -> Option<SimplySupportedSpan> {
     let pinned = supports.left == Support::Pinned && supports.right == Support::Pinned;
-    if !(pinned && model.foundation().stiffness == 0.0 && model.sleepers().is_none()) {
+    if !(pinned && foundation_stiffness == 0.0 && !sleepers) {
         return None;
     }
-    let span = fem_beam::span::SimplySupportedSpan::new(model.beam(), 0.0, model.mesh().length).ok()?;
-    Some((30f64.max(1.5 * span.frequency(1)).max(span.frequency(3)), span))
+    SimplySupportedSpan::new(beam, 0.0, length).ok()
+}
+
+/// f_max = max(30 Hz, 1.5 f₁, f₃) of `span` (Hz): the band of its deck-acceleration check (EN 1990 A2.4.4.2.1(4)).
+pub fn deck_band(span: &SimplySupportedSpan) -> f64 {
+    fem_beam::modal_band::deck_band(span.frequency(1), span.frequency(3))
 }
 
 /// The longest step h (s) that resolves `frequency` (Hz) with 20 steps per period: θ = ½ then has a phase error

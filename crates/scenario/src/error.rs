@@ -108,6 +108,7 @@ pub fn path(setting: track::Setting) -> String {
         S::MaxStep => "integration.max_step".into(),
         S::Theta => "integration.theta".into(),
         S::SpectralRadius => "integration.spectral_radius".into(),
+        S::AccelerationBand => "output.acceleration_band".into(),
         S::EndTime => "integration.end_time".into(),
         S::Tolerance => "integration.tolerance".into(),
         S::MaxIterations => "integration.max_iterations".into(),

@@ -374,7 +374,7 @@ impl Overrides {
             s.foundation.damping_ratio = Some(ratio);
         }
         if let Some(theta) = self.theta {
-            s.integration.theta = theta;
+            s.integration.theta = Some(theta);
         }
         if let Some(rho) = self.spectral_radius {
             s.integration.spectral_radius = Some(rho);

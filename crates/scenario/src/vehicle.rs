@@ -125,6 +125,13 @@ impl Default for VehicleSection {
     }
 }
 
+impl VehicleSection {
+    /// Whether this group or one behind it meets the rail through a rigid (Signorini + impact) contact.
+    pub fn has_rigid_contact(&self) -> bool {
+        self.contact == WheelRailKind::Rigid || self.behind.iter().any(Self::has_rigid_contact)
+    }
+}
+
 /// `[vehicle.matrices]`: M, C, K (rows of n numbers each), the weights and the wheels.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
 #[serde(default, deny_unknown_fields)]

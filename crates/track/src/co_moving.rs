@@ -151,6 +151,11 @@ fn check(model: &BeamModel, settings: &RunSettings, window: &CoMovingSettings) -
                        number of steps): leave the speed profile out, or run the whole track";
         return Err(invalid(settings.moving.speed_setting(), settings.moving.largest_speed(), allowed));
     }
+    if settings.record.acceleration_band.is_some() {
+        let allowed = "a co-moving window has no modes of its own to project onto (its mesh moves with the load): \
+                       leave the band out, or run the whole track";
+        return Err(invalid_choice(Setting::AccelerationBand, "given", allowed));
+    }
     let l = mesh.element_length();
     let advance = settings.integration.load_advance;
     if settings.step_is_capped() {

@@ -110,6 +110,8 @@ pub enum Setting {
     Theta,
     /// ρ∞ of the generalized-α.
     SpectralRadius,
+    /// `output.acceleration_band`.
+    AccelerationBand,
     /// The run's end time (s).
     EndTime,
     /// The step solver's tolerance.
@@ -158,6 +160,7 @@ impl Setting {
             Setting::MaxStep => "max_step",
             Setting::Theta => "integration.theta",
             Setting::SpectralRadius => "integration.spectral_radius",
+            Setting::AccelerationBand => "output.acceleration_band",
             Setting::EndTime => "end_time",
             Setting::Tolerance => "solver.tolerance",
             Setting::MaxIterations => "solver.max_iterations",

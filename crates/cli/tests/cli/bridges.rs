@@ -70,6 +70,13 @@ fn a_deck_reports_amplification_and_acceleration_and_warns_when_unresolved() {
     assert!((v["dynamic_amplification"].as_f64().unwrap() - dynamic / statics).abs() < 1e-12);
     assert!(statics > 5e-4 && statics < 2e-3, "static {statics} m");
     assert!(v["max_acceleration"]["value"].as_f64().unwrap() > 0.0);
+    // A span reports the EN 1990 band-limited acceleration by default: its band is max(30 Hz, 1.5 f₁, f₃) of the
+    // mesh's own modes — f₃ here, so the third mode is in it (the closed-form f₃ fell just below the mesh's).
+    let band = &v["band_acceleration"];
+    let modes: Vec<f64> = band["mode_frequencies"].as_array().unwrap().iter().map(|f| f.as_f64().unwrap()).collect();
+    assert_eq!(modes.len(), 3, "{band}");
+    assert_eq!(band["band"].as_f64().unwrap(), modes[2], "{band}");
+    assert!(band["value"].as_f64().unwrap() > 0.0, "{band}");
     let coarse = write("coarse.toml", 10, 0.1);
     let stderr = String::from_utf8_lossy(&frictrack(&["run", coarse.to_str().unwrap()]).stderr).into_owned();
     // f₃ = 93.5 Hz is the highest needed: mode 3, 4 elements per half-wave, 12 elements.

@@ -21,7 +21,7 @@ use fem_beam::train::HSLM_A;
 use runner::{Metric, RefinedPeak, Runner, SweepPoint, finished, refine_maximum, unrefined};
 use scenario::diagnostics::{deck_frequency, resolving_advance};
 use scenario::error::{Result, StudyError};
-use scenario::number::row;
+use scenario::number::row_with_gaps;
 use scenario::{Case, Scenario, devices_text};
 use std::fmt::Write as _;
 
@@ -107,7 +107,7 @@ impl Results {
         let mut out = String::from(
             "train,friction,speed,max_downward_deflection,max_upward_deflection,max_acceleration,\
              dynamic_amplification,static_max_downward_deflection,dissipated_energy,window_max_downward_deflection,\
-             window_max_upward_deflection\n",
+             window_max_upward_deflection,deck_acceleration\n",
         );
         for c in &self.curves {
             for p in &c.points {
@@ -115,14 +115,15 @@ impl Results {
                     p.speed,
                     p.max_downward_deflection.value,
                     p.max_upward_deflection.value,
-                    p.max_acceleration.value,
+                    p.max_acceleration.map_or(f64::NAN, |a| a.value),
                     p.max_downward_deflection.value / c.static_max,
                     c.static_max,
                     p.energy.dissipated,
                     p.window_max_downward_deflection.value,
                     p.window_max_upward_deflection.value,
+                    p.deck_acceleration(),
                 ];
-                let _ = writeln!(out, "hslm-a{},{},{}", c.train, friction_name(c.friction), row(&values));
+                let _ = writeln!(out, "hslm-a{},{},{}", c.train, friction_name(c.friction), row_with_gaps(&values));
             }
         }
         out
@@ -269,9 +270,9 @@ fn refine_peaks(
         let refine =
             |metric, sweep: &[SweepPoint]| refine_maximum(&cases[c], sweep, metric, (tolerance, PEAK_SCAN), runner);
         let deflection = refine(Metric::MaxDownwardDeflection, &points[c])?;
-        let mut acceleration = refine(Metric::MaxAcceleration, &points[c])?;
+        let mut acceleration = refine(Metric::DeckAcceleration, &points[c])?;
         for i in limit.map_or_else(Vec::new, |l| near_limit_peaks(&points[c], &acceleration, l)) {
-            acceleration = larger(acceleration, refine(Metric::MaxAcceleration, &points[c][i - 1..=i + 1])?);
+            acceleration = larger(acceleration, refine(Metric::DeckAcceleration, &points[c][i - 1..=i + 1])?);
         }
         Ok((deflection, acceleration))
     })?;
@@ -279,7 +280,7 @@ fn refine_peaks(
         result.unwrap_or_else(|e| {
             failed(c, e);
             let sweep = |metric| unrefined(&points[c], metric).expect("a finished run");
-            (sweep(Metric::MaxDownwardDeflection), sweep(Metric::MaxAcceleration))
+            (sweep(Metric::MaxDownwardDeflection), sweep(Metric::DeckAcceleration))
         })
     });
     Ok(peaks.collect())

@@ -18,7 +18,7 @@ fn deflection_mm(p: &SweepPoint) -> f64 {
 }
 
 fn acceleration(p: &SweepPoint) -> f64 {
-    p.max_acceleration.value
+    p.deck_acceleration()
 }
 
 /// The colour index of HSLM-A`k` in [`Palette::Ten`]: ten trains, ten hues, all solid.
@@ -42,6 +42,24 @@ impl Results {
         }
     }
 
+    /// The acceleration axis: on a span, the deck acceleration in its EN 1990 band of modes (what the runs report
+    /// there, docs/theory.md §10.4); on a track, the nodal one.
+    fn acceleration_axis(&self) -> String {
+        match (&self.frequencies, self.acceleration_limit) {
+            (Some(f), Some(_)) if f.len() >= 3 => {
+                let band = fem_beam::modal_band::deck_band(f[0], f[2]);
+                self.axis(&format!("deck acceleration, modes ≤ {band:.1} Hz"), "m/s²")
+            }
+            _ => self.axis(ACCELERATION_AXIS, "m/s²"),
+        }
+    }
+
+    /// On a span, the EN 1990 limit of the deck's track as a line across the speed range.
+    fn limit_line(&self) -> Option<Series> {
+        self.acceleration_limit
+            .map(|limit| level(self, format!("EN 1990 limit {} m/s², {}", limit.value, limit.track.name()), limit.value))
+    }
+
     /// Every figure of the study.
     pub(super) fn figures(&self) -> Vec<PlotSpec> {
         let mut plots = Vec::new();
@@ -55,13 +73,15 @@ impl Results {
                 friction,
                 deflection_mm,
             ));
-            plots.push(self.trains_figure(
+            let mut trains = self.trains_figure(
                 &format!("hslm-acceleration{suffix}"),
                 &format!("HSLM-A1 … A10, {label}: max acceleration vs speed"),
-                &self.axis(ACCELERATION_AXIS, "m/s²"),
+                &self.acceleration_axis(),
                 friction,
                 acceleration,
-            ));
+            );
+            trains.series.extend(self.limit_line());
+            plots.push(trains);
         }
         plots.push(self.deflection_envelope());
         plots.push(self.acceleration_envelope());
@@ -154,7 +174,7 @@ impl Results {
     /// Envelopes of the max acceleration over the ten trains, the largest refined peak marked, and on a span the
     /// EN 1990 limit of the deck's track.
     fn acceleration_envelope(&self) -> PlotSpec {
-        let axis = self.axis(ACCELERATION_AXIS, "m/s²");
+        let axis = self.acceleration_axis();
         let titles = ("hslm-envelope-acceleration", "HSLM-A1 … A10: envelope of the max acceleration", axis.as_str());
         let critical = |friction: usize| {
             let c = self.acceleration_critical(friction);
@@ -173,10 +193,7 @@ impl Results {
         let bounded = (0..2).any(|f| !self.acceleration_critical(f).acceleration.is_interior());
         let label = if bounded { "largest (≥: range end)" } else { "refined peak" };
         let mut spec = self.envelope_figure(titles, acceleration, &critical, label);
-        if let Some(limit) = self.acceleration_limit {
-            let label = format!("EN 1990 limit {} m/s², {}", limit.value, limit.track.name());
-            spec.series.push(level(self, label, limit.value));
-        }
+        spec.series.extend(self.limit_line());
         spec
     }
 }

@@ -375,7 +375,7 @@ fn unit_of(column: &str) -> Option<&'static str> {
         "voided" | "sleepers" => "1",
         "gap" | "exception_lowest" => "m",
         "max_pad_force" | "max_ballast_force" | "exception_ballast_force" | "neighbour_ballast_force" => "N",
-        "max_acceleration" | "max_body_acceleration" | "rms_body_acceleration" => "m/s²",
+        "max_acceleration" | "deck_acceleration" | "max_body_acceleration" | "rms_body_acceleration" => "m/s²",
         "min_wheel_force" | "max_wheel_force" => "N",
         "devices"
         | "tau"

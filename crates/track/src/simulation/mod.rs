@@ -8,6 +8,7 @@
 //!
 //! Memory of a run is O(DOFs + sections) plus O(steps) per recorded section history.
 
+mod band_record;
 mod integration_settings;
 mod lift_off;
 mod moving_settings;
@@ -22,8 +23,9 @@ mod vehicles;
 
 pub use lift_off::LIFT_OFF_GAP;
 pub use results::{
-    BodyResult, FallbackCount, LiftOff, LossOfContact, RunResult, SectionHistory, SleeperPeaks, SleeperResults,
-    SolverStatistics, StepView, VehicleResults, WheelHistory, WheelResult, WindowExtremes, WorkStatistics,
+    BandAcceleration, BodyResult, FallbackCount, LiftOff, LossOfContact, RunResult, SectionHistory, SleeperPeaks,
+    SleeperResults, SolverStatistics, StepView, VehicleResults, WheelHistory, WheelResult, WindowExtremes,
+    WorkStatistics,
 };
 pub(crate) use settings::counts_for_extremes;
 pub use settings::{InitialState, IntegrationSettings, Load, MovingLoadSettings, RecordSettings, RunSettings};
@@ -160,14 +162,18 @@ impl<'a> Simulation<'a> {
         let mut lift_off = lift_off::LiftOffRecord::new(self.interactions);
         let mut sleepers = sleeper_record::SleeperRecord::new(self.model, self.interactions);
         sections.start((q0, v0), &run.setup.load, start)?;
+        let mut band = record
+            .acceleration_band
+            .map(|limit| band_record::BandRecord::new(self.model, limit, record.extremes_nodes))
+            .transpose()?;
         let mut tally = SolverTally::default();
         let clock = Instant::now();
-        run.run(
-            total_steps,
-            &mut [&mut tally, &mut deflections, &mut sections, &mut lift_off, &mut sleepers],
-            observer,
-            &mut |_, _| Ok(()),
-        )?;
+        let mut records: Vec<&mut dyn Record> =
+            vec![&mut tally, &mut deflections, &mut sections, &mut lift_off, &mut sleepers];
+        if let Some(band) = band.as_mut() {
+            records.push(band);
+        }
+        run.run(total_steps, &mut records, observer, &mut |_, _| Ok(()))?;
         let wall_time = clock.elapsed().as_secs_f64();
         let Setup { stepper, vehicles, .. } = run.setup;
         let (fixed, nb) = (self.interactions.len(), self.model.dofs().free_len());
@@ -176,7 +182,13 @@ impl<'a> Simulation<'a> {
         Ok(RunResult {
             max_downward: deflections.extremes.0,
             max_upward: deflections.extremes.1,
-            max_acceleration: deflections.acceleration,
+            max_acceleration: self
+                .model
+                .beam()
+                .theory
+                .bounds_point_load_acceleration()
+                .then_some(deflections.acceleration),
+            band_acceleration: band.map(band_record::BandRecord::finish),
             window: deflections.window,
             energy: stepper.energy,
             global_norm: if t_on > 0.0 { deflections.norm_integral / t_on } else { 0.0 },

@@ -50,9 +50,14 @@ impl NodalDeflections {
 
     /// The largest |(v − v_prev)/h| (m/s²) over the nodes and its node x.
     pub(super) fn largest_acceleration(&self, v: &[f64], v_prev: &[f64], h: f64) -> (f64, f64) {
+        self.largest(|d| (v[d] - v_prev[d]) / h)
+    }
+
+    /// The largest |value(d)| over the deflection DOFs d of the nodes that count for the extremes, and its node x.
+    pub(super) fn largest(&self, value: impl Fn(usize) -> f64) -> (f64, f64) {
         let mut largest = (0.0, 0.0);
         for &(d, x, _, _) in self.nodes.iter().filter(|n| n.3) {
-            let a = ((v[d] - v_prev[d]) / h).abs();
+            let a = value(d).abs();
             if a > largest.0 {
                 largest = (a, x);
             }

@@ -140,6 +140,19 @@ impl SolverStatistics {
     }
 }
 
+/// The largest band-limited acceleration over the nodes and steps: the step's mean nodal acceleration in the beam's
+/// modes at or below `limit` (docs/theory.md §10.4) — EN 1990 A2's deck acceleration, and a defined number where the
+/// nodal one is not (a point load on a Timoshenko rail).
+#[derive(Debug, Clone, PartialEq)]
+pub struct BandAcceleration {
+    /// Its magnitude (m/s²), node and time.
+    pub extreme: Extreme,
+    /// The band's upper limit f_max (Hz).
+    pub limit: f64,
+    /// The natural frequencies of the modes kept (Hz), ascending.
+    pub frequencies: Vec<f64>,
+}
+
 /// What a run reports (docs/theory.md §6).
 #[derive(Debug, Clone, PartialEq)]
 pub struct RunResult {
@@ -148,8 +161,12 @@ pub struct RunResult {
     /// Largest upward deflection over nodes and steps.
     pub max_upward: Extreme,
     /// Largest vertical acceleration magnitude over nodes and steps (m/s², the step's mean (v_{k+1} − v_k)/h, at the
-    /// end of the step): the deck acceleration of a bridge (docs/theory.md §10).
-    pub max_acceleration: Extreme,
+    /// end of the step): the deck acceleration of a bridge (docs/theory.md §10). None where it is undefined — on a
+    /// Timoshenko rail, whose nodal acceleration under a passing point force grows without bound under refinement
+    /// ([`fem_beam::BeamTheory::bounds_point_load_acceleration`]); [`RunResult::band_acceleration`] is defined there.
+    pub max_acceleration: Option<Extreme>,
+    /// The largest band-limited acceleration, where [`crate::simulation::RecordSettings::acceleration_band`] asks.
+    pub band_acceleration: Option<BandAcceleration>,
     /// The extremes while the load was inside [`crate::simulation::RecordSettings::extremes_window`], if one was set.
     pub window: Option<WindowExtremes>,
     /// Energy terms.

@@ -133,6 +133,10 @@ pub struct RecordSettings {
     /// set off transients (a train longer than the beam is always crossing one). W̄ stays a whole-beam norm.
     /// Default: every node.
     pub extremes_nodes: Option<(f64, f64)>,
+    /// Also the largest band-limited acceleration over those nodes: the part of the nodal accelerations in the
+    /// beam's modes within this band, EN 1990 A2's deck check ([`fem_beam::modal_band`]; the beam's free DOFs
+    /// within [`fem_beam::BeamModel::MAX_MODAL_DOFS`]). Default: none.
+    pub acceleration_band: Option<fem_beam::modal_band::BandLimit>,
 }
 
 /// Whether a node at `x` (m) counts for the extremes of `nodes` ([`RecordSettings::extremes_nodes`]) on a beam of
