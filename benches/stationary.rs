@@ -64,7 +64,7 @@ fn sweeps(c: &mut Criterion) {
                 for i in 1..=100 {
                     let p = StationaryProblem { speed: 3.0 * i as f64, ..base };
                     let wave = solve_from(&p, &mut guess).unwrap();
-                    black_box(stationary::solve_halved(&p, &wave).unwrap());
+                    black_box(stationary::solve_halved(&p, &wave, &stationary::Control::new(None)).unwrap());
                 }
             })
         });

@@ -122,7 +122,7 @@ impl ModalBand {
         }
     }
 
-    /// The band-limited field at free DOF `dof` from its modal coordinates: Σⱼ φⱼ[dof] ηⱼ.
+    /// The band-limited field at free DOF `dof` from its modal coordinates: Σⱼ φⱼ(dof) ηⱼ.
     pub fn at(&self, eta: &[f64], dof: usize) -> f64 {
         self.shapes.iter().zip(eta).map(|(phi, e)| phi[dof] * e).sum()
     }

@@ -62,7 +62,7 @@ pub enum StudyError {
     Stepping(#[from] nscd::NscdError),
     /// An error of the stationary solver (a speed without a stationary wave, a singular operator).
     #[error(transparent)]
-    Stationary(#[from] stationary::StationaryError),
+    Stationary(stationary::StationaryError),
 }
 
 impl From<irregularity::IrregularityError> for StudyError {
@@ -91,6 +91,16 @@ impl From<track::TrackError> for StudyError {
                 value: "(no static equilibrium)".into(),
                 allowed: reason,
             },
+        }
+    }
+}
+
+impl From<stationary::StationaryError> for StudyError {
+    /// A stationary solve stopped by Ctrl-C is the study's interruption (exit 130, finished work kept).
+    fn from(e: stationary::StationaryError) -> Self {
+        match e {
+            stationary::StationaryError::Interrupted => StudyError::Interrupted,
+            other => StudyError::Stationary(other),
         }
     }
 }

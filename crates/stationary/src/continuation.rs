@@ -11,6 +11,7 @@
 //!   the last one's wave. Measured: undamped at 210 and 250 m/s with 2 and 10 kN/m, the peaks move smoothly with ζ
 //!   (2 kN/m at 250 m/s: 90.1 mm at ζ = 5 %, 99.5 at 0.1 %, 99.7 undamped).
 
+use crate::control::Control;
 use crate::error::Result;
 use crate::newton::{MAX_ITERATIONS, frictionless, iterate};
 use crate::operator::MovingFrame;
@@ -39,13 +40,14 @@ pub(crate) fn friction_wave(
     problem: &StationaryProblem,
     frame: &MovingFrame,
     guess: &mut ContactGuess,
+    control: &Control<'_>,
 ) -> Result<(Vec<f64>, Convergence)> {
     let speed = problem.speed;
     let mut spent = 0;
     if let Some(warm) = guess.wave(frame.rhs.len()).map(<[f64]>::to_vec) {
         // The same speed's wave on another mesh (an error estimate's halving) starts at the full stiffness.
         let from = if guess.is_same_speed() { 1.0 } else { WARM_STAGE };
-        match stages(frame, speed, warm, from, guess)? {
+        match stages(frame, speed, warm, from, (guess, control))? {
             (w, Convergence::Converged { iterations, residual }) => {
                 return Ok((w, Convergence::Converged { iterations: spent + iterations, residual }));
             }
@@ -53,11 +55,11 @@ pub(crate) fn friction_wave(
         }
     }
     let cold = frictionless(frame, speed, guess)?;
-    let (w, status) = stages(frame, speed, cold, FIRST_STAGE, guess)?;
+    let (w, status) = stages(frame, speed, cold, FIRST_STAGE, (guess, control))?;
     spent += status.iterations();
     let critical = problem.foundation.critical_damping(&problem.beam);
     let own = problem.foundation.damping / critical;
-    if status.is_converged() || own >= DAMPED_START {
+    if status.is_converged() || own >= DAMPED_START || control.exhausted() {
         return Ok((w, with_iterations(status, spent)));
     }
     // From ζ = DAMPED_START down to the track's own, each stage from the last one's wave.
@@ -69,8 +71,11 @@ pub(crate) fn friction_wave(
         };
         let frame = MovingFrame::new(&damped)?;
         let (next, status) = match wave.take() {
-            Some(w) => stages(&frame, speed, w, WARM_STAGE, guess)?,
-            None => stages(&frame, speed, frictionless(&frame, speed, guess)?, FIRST_STAGE, guess)?,
+            Some(w) => stages(&frame, speed, w, WARM_STAGE, (guess, control))?,
+            None => {
+                let start = frictionless(&frame, speed, guess)?;
+                stages(&frame, speed, start, FIRST_STAGE, (guess, control))?
+            }
         };
         spent += status.iterations();
         if !status.is_converged() {
@@ -95,7 +100,7 @@ fn stages(
     speed: f64,
     mut w: Vec<f64>,
     from: f64,
-    guess: &mut ContactGuess,
+    (guess, control): (&mut ContactGuess, &Control<'_>),
 ) -> Result<(Vec<f64>, Convergence)> {
     let target = frame.friction.as_ref().map_or(0.0, |f| f.stiffness);
     let mut stage = frame.clone();
@@ -109,12 +114,12 @@ fn stages(
         let stiffness = (reached * factor).min(target);
         let last = w.clone();
         set_stiffness(&mut stage, stiffness);
-        let (next, status) = iterate(&stage, speed, w, guess, MAX_ITERATIONS)?;
+        let (next, status) = iterate(&stage, speed, w, (&mut *guess, control), MAX_ITERATIONS)?;
         spent += status.iterations();
         match status {
             Convergence::Converged { .. } if stiffness >= target => return Ok((next, with_iterations(status, spent))),
             Convergence::Converged { .. } => (w, reached) = (next, stiffness),
-            _ if factor.sqrt() >= SMALLEST_FACTOR => (w, factor) = (last, factor.sqrt()),
+            _ if factor.sqrt() >= SMALLEST_FACTOR && !control.exhausted() => (w, factor) = (last, factor.sqrt()),
             other => return Ok((next, with_iterations(other, spent))),
         }
     }

@@ -36,6 +36,9 @@ pub enum StationaryError {
         /// v (m/s).
         speed: f64,
     },
+    /// The solve was stopped (Ctrl-C, SIGTERM) between two Newton iterations.
+    #[error("interrupted")]
+    Interrupted,
     /// An error of the beam layer.
     #[error(transparent)]
     Beam(#[from] fem_beam::FemError),
@@ -57,7 +60,7 @@ impl StationaryError {
             | StationaryError::InvalidChoice { .. }
             | StationaryError::NoRadiationCondition { .. } => true,
             StationaryError::Beam(e) => e.is_invalid_input(),
-            StationaryError::Singular { .. } => false,
+            StationaryError::Singular { .. } | StationaryError::Interrupted => false,
         }
     }
 }

@@ -8,6 +8,7 @@
 //! Continuation in speed ([`solve::solve_from`]) starts each speed from the last one's contact set.
 
 pub mod continuation;
+pub mod control;
 pub mod error;
 pub mod far_field;
 pub mod friction;
@@ -21,8 +22,9 @@ pub mod solve;
 mod status;
 pub mod wave;
 
+pub use control::Control;
 pub use error::{Result, StationaryError};
 pub use problem::{Domain, StationaryProblem};
 pub use refine::solve_halved;
-pub use solve::{ContactGuess, Convergence, solve, solve_from};
+pub use solve::{ContactGuess, Convergence, solve, solve_from, solve_within};
 pub use wave::{PowerBalance, SlipZone, StationaryWave};

@@ -6,6 +6,7 @@
 //! *is* the solution, to the round-off of its solve).
 //! With friction the start matters: [`crate::continuation`] leads the iteration there.
 
+use crate::control::Control;
 use crate::error::Result;
 use crate::friction::{AnchorCoupling, FrictionState};
 use crate::operator::{MovingFrame, factor};
@@ -100,12 +101,15 @@ pub(crate) fn iterate(
     frame: &MovingFrame,
     speed: f64,
     mut w: Vec<f64>,
-    guess: &mut ContactGuess,
+    (guess, control): (&mut ContactGuess, &Control<'_>),
     limit: usize,
 ) -> Result<(Vec<f64>, Convergence)> {
     let Evaluation { mut norm, mut relative, mut sets } = evaluate(frame, &w);
     let tolerance = if frame.friction.is_some() { ROUND_OFF } else { TOLERANCE };
     for iteration in 1..=limit {
+        if !control.next_iteration(w.len())? {
+            return Ok((w, Convergence::NotConverged { iterations: iteration - 1, residual: relative }));
+        }
         // The residual decides: after a damped step the iterate is not its sets' Newton point, so repeated sets
         // alone prove nothing (the next step takes that point).
         if relative <= tolerance {
@@ -125,6 +129,9 @@ pub(crate) fn iterate(
                 let (trial, at_trial) = trial_point;
                 (w, norm, relative, sets) = (trial, at_trial.norm, at_trial.relative, at_trial.sets);
                 break;
+            }
+            if !control.next_iteration(w.len())? {
+                return Ok((w, Convergence::NotConverged { iterations: iteration, residual: relative }));
             }
             t *= 0.5;
             let trial: Vec<f64> = w.iter().zip(&trial_point.0).map(|(a, b)| a + 0.5 * (b - a)).collect();

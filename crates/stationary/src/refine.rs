@@ -4,9 +4,10 @@
 //! |P_h − P_{h/2}|·2ᵖ/(2ᵖ − 1); [`ERROR_FACTOR`] takes p = 1, an upper estimate for the peaks' orders measured here
 //! (moment 2, deflection 4 on a linear soil; lift-off and slip edges inside elements lower them towards 2).
 
+use crate::control::Control;
 use crate::error::Result;
 use crate::problem::{Domain, StationaryProblem};
-use crate::solve::solve_from;
+use crate::solve::solve_within;
 use crate::status::ContactGuess;
 use crate::wave::StationaryWave;
 
@@ -14,8 +15,12 @@ use crate::wave::StationaryWave;
 pub const ERROR_FACTOR: f64 = 2.0;
 
 /// The wave of `problem` on the domain `wave` ended on (its length grown, if it grew), in elements half as long,
-/// started from `wave`.
-pub fn solve_halved(problem: &StationaryProblem, wave: &StationaryWave) -> Result<StationaryWave> {
+/// started from `wave`, within `control` ([`crate::solve_within`]).
+pub fn solve_halved(
+    problem: &StationaryProblem,
+    wave: &StationaryWave,
+    control: &Control<'_>,
+) -> Result<StationaryWave> {
     let l = wave.element_length();
     // The same nodes and one between each two: a quarter element short of each end, so that the element counts,
     // rounded up (Domain::elements), are exactly twice the wave's whatever the round-off of its s.
@@ -36,5 +41,5 @@ pub fn solve_halved(problem: &StationaryProblem, wave: &StationaryWave) -> Resul
             w.extend([at(&middle), at(&middle_rotation)]);
         }
     }
-    solve_from(&halved, &mut ContactGuess::started_at(&halved, w)?)
+    solve_within(&halved, &mut ContactGuess::started_at(&halved, w)?, control)
 }

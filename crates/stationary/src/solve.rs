@@ -6,6 +6,7 @@
 //! lift-off says so — never a silent wrong wave.
 
 use crate::continuation;
+use crate::control::Control;
 use crate::error::Result;
 use crate::newton::{MAX_ITERATIONS, frictionless, iterate};
 use crate::operator::MovingFrame;
@@ -24,18 +25,28 @@ pub fn solve(problem: &StationaryProblem) -> Result<StationaryWave> {
 
 /// As [`solve`], starting from `guess` (the previous speed's pressed set, if it fits) and leaving this one there.
 pub fn solve_from(problem: &StationaryProblem, guess: &mut ContactGuess) -> Result<StationaryWave> {
+    solve_within(problem, guess, &Control::new(None))
+}
+
+/// As [`solve_from`], within `control`: [`crate::StationaryError::Interrupted`] at the first Newton iteration after
+/// its stop flag is raised; a wave that did not converge (said so) once its budget of Newton iterations is spent.
+pub fn solve_within(
+    problem: &StationaryProblem,
+    guess: &mut ContactGuess,
+    control: &Control<'_>,
+) -> Result<StationaryWave> {
     problem.validate()?;
     problem.check_resolution()?;
     let mut problem = *problem;
     let mut extensions = 0;
     loop {
         let frame = MovingFrame::new(&problem)?;
-        let (mut w, mut convergence) = nonlinear_solve(&problem, &frame, guess)?;
-        if !convergence.is_converged() && !guess.is_empty() && frame.friction.is_none() {
+        let (mut w, mut convergence) = nonlinear_solve(&problem, &frame, (guess, control))?;
+        if !convergence.is_converged() && !guess.is_empty() && frame.friction.is_none() && !control.exhausted() {
             // The last speed's set led astray: start again from the soil pressed everywhere (with friction the
             // continuation has started cold itself).
             guess.forget();
-            let (cold, status) = nonlinear_solve(&problem, &frame, guess)?;
+            let (cold, status) = nonlinear_solve(&problem, &frame, (guess, control))?;
             let taken = match (convergence, status) {
                 (
                     Convergence::NotConverged { iterations, .. },
@@ -55,7 +66,7 @@ pub fn solve_from(problem: &StationaryProblem, guess: &mut ContactGuess) -> Resu
         let (mut behind, mut ahead) = (lifted.0 || unsettled.0, lifted.1 || unsettled.1);
         if !convergence.is_converged() {
             // With friction and free ends a domain too short for the wave may hold no consistent one: try a longer.
-            if frame.friction.is_none() {
+            if frame.friction.is_none() || control.exhausted() {
                 return Ok(wave);
             }
             (behind, ahead) = (true, true);
@@ -98,10 +109,13 @@ fn continued(w: &[f64], behind: usize, ahead: usize) -> Vec<f64> {
 fn nonlinear_solve(
     problem: &StationaryProblem,
     frame: &MovingFrame,
-    guess: &mut ContactGuess,
+    (guess, control): (&mut ContactGuess, &Control<'_>),
 ) -> Result<(Vec<f64>, Convergence)> {
     match frame.friction {
-        None => iterate(frame, problem.speed, frictionless(frame, problem.speed, guess)?, guess, MAX_ITERATIONS),
-        Some(_) => continuation::friction_wave(problem, frame, guess),
+        None => {
+            let start = frictionless(frame, problem.speed, guess)?;
+            iterate(frame, problem.speed, start, (guess, control), MAX_ITERATIONS)
+        }
+        Some(_) => continuation::friction_wave(problem, frame, guess, control),
     }
 }

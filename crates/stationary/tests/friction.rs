@@ -152,3 +152,24 @@ fn undamped_friction_bounds_the_wave_above_the_critical_speed() {
         assert!(wave.behind().abs() <= f / 250e3, "f_u {f} v {v}: {} m behind", wave.behind());
     }
 }
+
+/// A solve is bounded: within a budget of work (here 5 iterations over the domain's ~960 unknowns) it ends as not converged (said so, with the iterations
+/// it took) instead of continuing through its stages, damping steps and domain extensions; with its stop flag
+/// raised it ends with `Interrupted` at its first Newton iteration. The same problem converges unbounded (2 kN/m at
+/// 100 m/s, ζ = 5 %).
+#[test]
+fn a_solve_ends_within_its_budget_and_on_its_stop_flag() {
+    use stationary::{Control, Convergence, StationaryError, solve_within};
+    use std::sync::atomic::AtomicBool;
+    let p = problem(2000.0, 100.0);
+    let whole = converged(&p);
+    assert!(whole.convergence.iterations() > 5, "{:?}", whole.convergence);
+    let bounded = solve_within(&p, &mut ContactGuess::default(), &Control::new(None).with_budget(5 * 960)).unwrap();
+    match bounded.convergence {
+        Convergence::NotConverged { iterations, .. } => assert!(iterations <= 5, "{iterations}"),
+        other => panic!("a budget of 5 iterations gave {other:?}"),
+    }
+    let stop = AtomicBool::new(true);
+    let stopped = solve_within(&p, &mut ContactGuess::default(), &Control::new(Some(&stop)));
+    assert_eq!(stopped.unwrap_err(), StationaryError::Interrupted);
+}

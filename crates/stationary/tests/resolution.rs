@@ -51,7 +51,7 @@ fn one_halving_bounds_the_discretisation_error_of_the_peaks() {
         [(100.0, 1.0, 0.0, 0.03125), (100.0, 0.5, 0.0, 0.03125), (150.0, 0.25, 5e3, 0.0625)]
     {
         let wave = solve(&problem(speed, l, friction)).unwrap();
-        let halved = solve_halved(&problem(speed, l, friction), &wave).unwrap();
+        let halved = solve_halved(&problem(speed, l, friction), &wave, &stationary::Control::new(None)).unwrap();
         let reference = solve(&problem(speed, fine, friction)).unwrap();
         assert!(
             wave.convergence.is_converged()

@@ -11,7 +11,9 @@ use scenario::Scenario;
 use scenario::error::Result;
 use serde::Serialize;
 use stationary::refine::ERROR_FACTOR;
-use stationary::{ContactGuess, Convergence, Domain, PowerBalance, StationaryError, StationaryProblem, StationaryWave};
+use stationary::{
+    ContactGuess, Control, Convergence, Domain, PowerBalance, StationaryError, StationaryProblem, StationaryWave,
+};
 
 /// One slip zone of a wave: where the rail slides over the ballast.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -154,14 +156,14 @@ impl StationaryStudy {
                 return Err(scenario::StudyError::Interrupted);
             }
             let problem = StationaryProblem { speed, domain, ..first };
-            match stationary::solve_from(&problem, &mut guess) {
+            match stationary::solve_within(&problem, &mut guess, &Control::new(stop)) {
                 Ok(wave) => {
                     if wave.convergence.is_converged() {
                         (domain.behind, domain.ahead) = (-wave.s[0], *wave.s.last().unwrap_or(&domain.ahead));
                     }
                     let mut point = StationaryPoint::of(&wave);
                     if estimate == ErrorEstimate::Halving && wave.convergence.is_converged() && !stopped() {
-                        point.discretisation_error = peak_errors(&problem, &wave)?;
+                        point.discretisation_error = peak_errors(&problem, &wave, &Control::new(stop))?;
                     }
                     points.push(point);
                     waves.push(Some(wave));
@@ -231,8 +233,8 @@ impl StationaryStudy {
 
 /// The peaks' discretisation errors of `wave` (of `problem`) from its solution on halved elements; None where that
 /// solve finds no wave.
-fn peak_errors(problem: &StationaryProblem, wave: &StationaryWave) -> Result<Option<PeakErrors>> {
-    let halved = stationary::solve_halved(problem, wave)?;
+fn peak_errors(problem: &StationaryProblem, wave: &StationaryWave, control: &Control) -> Result<Option<PeakErrors>> {
+    let halved = stationary::solve_halved(problem, wave, control)?;
     Ok(halved.convergence.is_converged().then(|| PeakErrors {
         max_downward_deflection: ERROR_FACTOR * (wave.max_downward().value - halved.max_downward().value).abs(),
         max_moment: ERROR_FACTOR * (wave.max_moment().value - halved.max_moment().value).abs(),

@@ -486,3 +486,23 @@ fn study_help_names_every_preset() {
         assert!(help.contains(name), "study --help does not name {name}: {help}");
     }
 }
+
+/// The README shows the main job's output on the reference case (`cargo run --release -- run`): every line of it but
+/// the wall time (a clock) is what `frictrack run` prints today.
+#[test]
+fn the_readme_shows_what_the_reference_run_prints() {
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../README.md")).unwrap();
+    let shown: Vec<&str> = readme
+        .split("$ cargo run --release -- run\n")
+        .nth(1)
+        .and_then(|rest| rest.split("```").next())
+        .unwrap()
+        .lines()
+        .filter(|l| !l.trim_start().starts_with("wall time"))
+        .collect();
+    let out = frictrack(&["run"]);
+    assert!(out.status.success());
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let printed: Vec<&str> = stdout.lines().filter(|l| !l.trim_start().starts_with("wall time")).collect();
+    assert_eq!(shown, printed);
+}

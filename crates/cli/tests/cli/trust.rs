@@ -68,3 +68,32 @@ fn sigterm_stops_a_sweep_within_seconds() {
     assert!(String::from_utf8_lossy(&output.stderr).contains("--resume"));
     assert!(stopped < Duration::from_secs(10), "took {stopped:?}");
 }
+
+/// SIGTERM stops one long stationary solve (2 kN/m of ballast friction on 0.03 m elements at 100 m/s: it once ran
+/// past 600 s and ignored SIGTERM until its speed ended) at its next Newton iteration: exit 130, "interrupted". The
+/// bound, 3 s, is for this debug build (an iteration on the grown domain takes up to ~0.1 s in release).
+#[test]
+fn sigterm_stops_a_stationary_solve_at_its_next_iteration() {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_frictrack"))
+        .args(["stationary", "--speed", "100", "--distributed-friction", "2000", "--element-length", "0.03"])
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    std::thread::sleep(Duration::from_millis(1500));
+    assert!(child.try_wait().unwrap().is_none(), "the solve ended before the signal: choose a longer one");
+    let sent = Instant::now();
+    assert!(Command::new("kill").args(["-TERM", &child.id().to_string()]).status().unwrap().success());
+    let output = loop {
+        if child.try_wait().unwrap().is_some() {
+            break child.wait_with_output().unwrap();
+        }
+        assert!(sent.elapsed() < Duration::from_secs(20), "still running 20 s after SIGTERM");
+        std::thread::sleep(Duration::from_millis(20));
+    };
+    let stopped = sent.elapsed();
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(130), "{stderr}");
+    assert!(stderr.contains("interrupted"), "{stderr}");
+    assert!(stopped < Duration::from_secs(3), "took {stopped:?}");
+}

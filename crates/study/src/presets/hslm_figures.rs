@@ -56,8 +56,9 @@ impl Results {
 
     /// On a span, the EN 1990 limit of the deck's track as a line across the speed range.
     fn limit_line(&self) -> Option<Series> {
-        self.acceleration_limit
-            .map(|limit| level(self, format!("EN 1990 limit {} m/s², {}", limit.value, limit.track.name()), limit.value))
+        self.acceleration_limit.map(|limit| {
+            level(self, format!("EN 1990 limit {} m/s², {}", limit.value, limit.track.name()), limit.value)
+        })
     }
 
     /// Every figure of the study.

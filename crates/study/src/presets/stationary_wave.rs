@@ -35,8 +35,10 @@ pub(super) fn study(resolution: super::Resolution, base: &Scenario, runner: &Run
     runner.announce(Estimate::together(solves, runner.threads()));
     let infinite = runner.silent().map(&soils, |soil| {
         let scenario = soil.scenario(base);
-        let study = StationaryStudy::of(&scenario, &speeds, Domain::default(), ErrorEstimate::Skip)?;
-        let (critical, refinement) = refine(&scenario, &study, v_cr)?;
+        let stop = runner.stop;
+        let study =
+            StationaryStudy::of_until(&scenario, &speeds, Domain::default(), ErrorEstimate::Skip, stop, &|_| {})?;
+        let (critical, refinement) = refine(&scenario, &study, (v_cr, stop))?;
         let shapes = shape_speeds
             .iter()
             .map(|v| {
@@ -65,7 +67,7 @@ pub(super) fn study(resolution: super::Resolution, base: &Scenario, runner: &Run
 fn refine(
     scenario: &Scenario,
     study: &StationaryStudy,
-    v_cr: Option<f64>,
+    (v_cr, stop): (Option<f64>, Option<&std::sync::atomic::AtomicBool>),
 ) -> Result<(InfiniteCritical, Vec<(f64, f64)>)> {
     let points = &study.points;
     let found = |p: &StationaryPoint| p.max_downward_deflection.map(|e| e.value);
@@ -92,7 +94,8 @@ fn refine(
     let mut guess = ContactGuess::default();
     let mut evaluated = Vec::new();
     let mut deflection = |v: f64| -> Result<f64> {
-        let wave = stationary::solve_from(&scenario.stationary_problem(v, domain)?, &mut guess)?;
+        let problem = scenario.stationary_problem(v, domain)?;
+        let wave = stationary::solve_within(&problem, &mut guess, &stationary::Control::new(stop))?;
         // A speed without a wave inside the bracket cannot be the peak.
         if !wave.convergence.is_converged() {
             return Ok(f64::NEG_INFINITY);
