@@ -58,19 +58,20 @@ impl ModalBand {
         {
             return Err(FemError::InvalidBand { value: band.to_string(), allowed: "must be finite and > 0".into() });
         }
-        let dofs = model.mass().order();
-        if dofs > BeamModel::MAX_MODAL_DOFS {
-            return Err(FemError::InvalidBand {
+        // The eigenproblem's own size check (before any dense matrix), said as the band's.
+        let (l, standard) = model.standard_eigenproblem().map_err(|e| match e {
+            FemError::InvalidCount { .. } => FemError::InvalidBand {
                 value: band.to_string(),
                 allowed: format!(
-                    "its modes are solved densely, for at most {} free DOFs, and this model has {dofs} (mesh.elements \
+                    "its modes are solved densely, for at most {} free DOFs, and this model has {} (mesh.elements \
                      = {}): use fewer elements or leave the band out",
                     BeamModel::MAX_MODAL_DOFS,
+                    model.mass().order(),
                     model.mesh().elements
                 ),
-            });
-        }
-        let (l, standard) = model.standard_eigenproblem()?;
+            },
+            other => other,
+        })?;
         let eigen = standard.symmetric_eigen();
         let mut order: Vec<usize> = (0..eigen.eigenvalues.len()).collect();
         order.sort_by(|&a, &b| eigen.eigenvalues[a].total_cmp(&eigen.eigenvalues[b]));

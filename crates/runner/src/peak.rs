@@ -32,8 +32,6 @@ pub enum PeakLocation {
 pub enum Metric {
     /// The max downward deflection (m).
     MaxDownwardDeflection,
-    /// The max vertical acceleration over the nodes (m/s²); NaN where undefined.
-    MaxAcceleration,
     /// The acceleration a deck check reads ([`SweepPoint::deck_acceleration`], m/s²).
     DeckAcceleration,
 }
@@ -43,7 +41,6 @@ impl Metric {
     pub fn of(self, point: &SweepPoint) -> f64 {
         match self {
             Metric::MaxDownwardDeflection => point.max_downward_deflection.value,
-            Metric::MaxAcceleration => point.max_acceleration.map_or(f64::NAN, |a| a.value),
             Metric::DeckAcceleration => point.deck_acceleration(),
         }
     }

@@ -310,20 +310,19 @@ impl Default for IntegrationSection {
 /// (docs/theory.md §5.4); ρ∞ = 0.8 sat between the two.
 pub const TIMOSHENKO_SPECTRAL_RADIUS: f64 = 0.5;
 
-/// θ of the θ-method where the scenario names none: the trapezoidal rule, no numerical dissipation.
-pub const DEFAULT_THETA: f64 = 0.5;
-
 impl IntegrationSection {
     /// The scheme `(θ, ρ∞)` this section chooses for a rail of shear flexibility `timoshenko` carrying (or not) a
     /// `rigid_contact` wheel: what the scenario names wins (ρ∞ with θ left at ½, or θ alone); without either, a
     /// Timoshenko rail takes the generalized-α of [`TIMOSHENKO_SPECTRAL_RADIUS`] — except under a rigid wheel–rail
-    /// contact, whose impact law needs the θ-method — and everything else θ = [`DEFAULT_THETA`].
+    /// contact, whose impact law needs the θ-method — and everything else the run's default θ (½, the trapezoidal
+    /// rule: [`track::simulation::IntegrationSettings`]).
     pub fn scheme(&self, timoshenko: bool, rigid_contact: bool) -> (f64, Option<f64>) {
+        let default_theta = RunSettings::default().integration.theta;
         match (self.theta, self.spectral_radius) {
-            (theta, Some(rho)) => (theta.unwrap_or(DEFAULT_THETA), Some(rho)),
+            (theta, Some(rho)) => (theta.unwrap_or(default_theta), Some(rho)),
             (Some(theta), None) => (theta, None),
-            (None, None) if timoshenko && !rigid_contact => (DEFAULT_THETA, Some(TIMOSHENKO_SPECTRAL_RADIUS)),
-            (None, None) => (DEFAULT_THETA, None),
+            (None, None) if timoshenko && !rigid_contact => (default_theta, Some(TIMOSHENKO_SPECTRAL_RADIUS)),
+            (None, None) => (default_theta, None),
         }
     }
 }

@@ -49,14 +49,4 @@ impl<'a> Control<'a> {
     pub fn exhausted(&self) -> bool {
         self.spent.get() >= self.budget
     }
-
-    /// The work spent so far (Newton iterations and line-search trials times their unknowns).
-    pub fn spent(&self) -> usize {
-        self.spent.get()
-    }
-
-    /// The budget.
-    pub fn budget(&self) -> usize {
-        self.budget
-    }
 }

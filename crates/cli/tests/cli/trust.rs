@@ -46,7 +46,7 @@ fn jobs_beyond_the_cores_are_capped() {
 fn sigterm_stops_a_sweep_within_seconds() {
     let dir = temporary_folder("sigterm");
     let out = dir.join("s.csv");
-    let mut child = Command::new(env!("CARGO_BIN_EXE_frictrack"))
+    let child = Command::new(env!("CARGO_BIN_EXE_frictrack"))
         .args(["sweep", "--distributed-friction", "5000", "--speeds", "10:300:1", "--jobs", "100000"])
         .args(["--out", out.to_str().unwrap()])
         .stdout(Stdio::null())
@@ -54,16 +54,7 @@ fn sigterm_stops_a_sweep_within_seconds() {
         .spawn()
         .unwrap();
     std::thread::sleep(Duration::from_millis(1500));
-    let sent = Instant::now();
-    assert!(Command::new("kill").args(["-TERM", &child.id().to_string()]).status().unwrap().success());
-    let output = loop {
-        if child.try_wait().unwrap().is_some() {
-            break child.wait_with_output().unwrap();
-        }
-        assert!(sent.elapsed() < Duration::from_secs(20), "still running 20 s after SIGTERM");
-        std::thread::sleep(Duration::from_millis(50));
-    };
-    let stopped = sent.elapsed();
+    let (output, stopped) = terminate(child);
     assert_eq!(output.status.code(), Some(130), "{}", String::from_utf8_lossy(&output.stderr));
     assert!(String::from_utf8_lossy(&output.stderr).contains("--resume"));
     assert!(stopped < Duration::from_secs(10), "took {stopped:?}");
@@ -82,18 +73,23 @@ fn sigterm_stops_a_stationary_solve_at_its_next_iteration() {
         .unwrap();
     std::thread::sleep(Duration::from_millis(1500));
     assert!(child.try_wait().unwrap().is_none(), "the solve ended before the signal: choose a longer one");
-    let sent = Instant::now();
-    assert!(Command::new("kill").args(["-TERM", &child.id().to_string()]).status().unwrap().success());
-    let output = loop {
-        if child.try_wait().unwrap().is_some() {
-            break child.wait_with_output().unwrap();
-        }
-        assert!(sent.elapsed() < Duration::from_secs(20), "still running 20 s after SIGTERM");
-        std::thread::sleep(Duration::from_millis(20));
-    };
-    let stopped = sent.elapsed();
+    let (output, stopped) = terminate(child);
     let stderr = String::from_utf8_lossy(&output.stderr);
     assert_eq!(output.status.code(), Some(130), "{stderr}");
     assert!(stderr.contains("interrupted"), "{stderr}");
     assert!(stopped < Duration::from_secs(3), "took {stopped:?}");
+}
+
+/// Send SIGTERM to `child` and wait for it to end (failing after 20 s): its output and how long it took to stop,
+/// polled every 20 ms.
+fn terminate(mut child: std::process::Child) -> (std::process::Output, Duration) {
+    let sent = Instant::now();
+    assert!(Command::new("kill").args(["-TERM", &child.id().to_string()]).status().unwrap().success());
+    loop {
+        if child.try_wait().unwrap().is_some() {
+            return (child.wait_with_output().unwrap(), sent.elapsed());
+        }
+        assert!(sent.elapsed() < Duration::from_secs(20), "still running 20 s after SIGTERM");
+        std::thread::sleep(Duration::from_millis(20));
+    }
 }
