@@ -12,10 +12,15 @@
 //! four slots are the columns f + a − 3 … f + a. The terms and their order are those of an entry-by-entry scatter
 //! (row after row, each entry computed as (d·h_a)·h_c), so the results are the same to the bit; the slots a scatter
 //! would skip receive exact zeros.
+//!
+//! A row may also skip columns ([`BlockRows::push_entries`]: up to four entries within the band — a rail element's
+//! four DOFs with its sleeper's DOF numbered between them). Once one such row is there, the three products take
+//! each row's columns one by one (the Gram sum through [`SymmetricBanded::add_outer`]).
 
 use crate::symmetric::SymmetricBanded;
 
-/// Rows of H, each with up to four nonzeros in consecutive columns.
+/// Rows of H, each with up to four nonzeros, in consecutive columns or (see [`BlockRows::push_entries`]) spread
+/// within the band.
 #[derive(Debug, Clone, Default)]
 pub struct BlockRows {
     /// First column of each row.
@@ -24,12 +29,25 @@ pub struct BlockRows {
     padded: Vec<[f64; 7]>,
     /// Number of entries of each row.
     lens: Vec<usize>,
+    /// Column of each entry after the row's first (0, 1, 2, 3 for a consecutive row).
+    offsets: Vec<[usize; 4]>,
+    /// Whether some row skips a column (the products then go entry by entry).
+    spread: bool,
 }
+
+/// The offsets of a consecutive row.
+const CONSECUTIVE: [usize; 4] = [0, 1, 2, 3];
 
 impl BlockRows {
     /// Room for `rows` rows, so that refilling allocates nothing.
     pub fn with_capacity(rows: usize) -> Self {
-        Self { first: Vec::with_capacity(rows), padded: Vec::with_capacity(rows), lens: Vec::with_capacity(rows) }
+        Self {
+            first: Vec::with_capacity(rows),
+            padded: Vec::with_capacity(rows),
+            lens: Vec::with_capacity(rows),
+            offsets: Vec::with_capacity(rows),
+            spread: false,
+        }
     }
 
     /// Remove every row.
@@ -37,6 +55,8 @@ impl BlockRows {
         self.first.clear();
         self.padded.clear();
         self.lens.clear();
+        self.offsets.clear();
+        self.spread = false;
     }
 
     /// Append a row whose entries `values` (at most four) sit in columns first, first + 1, ….
@@ -47,12 +67,42 @@ impl BlockRows {
         self.first.push(first);
         self.padded.push(padded);
         self.lens.push(values.len());
+        self.offsets.push(CONSECUTIVE);
+    }
+
+    /// Append a row with entries `values` (at most four) in the ascending `columns`, which may skip columns; it must
+    /// lie within the band of the matrices [`BlockRows::weighted_gram_into`] is given.
+    pub fn push_entries(&mut self, columns: &[usize], values: &[f64]) {
+        assert_eq!(columns.len(), values.len(), "BlockRows::push_entries: one column per entry");
+        let Some(&first) = columns.first() else {
+            return self.push(0, &[]);
+        };
+        self.push(first, values);
+        let mut offsets = CONSECUTIVE;
+        for (offset, &column) in offsets.iter_mut().zip(columns) {
+            assert!(column >= first, "BlockRows::push_entries: columns ascend");
+            *offset = column - first;
+        }
+        self.spread |= offsets[..columns.len()] != CONSECUTIVE[..columns.len()];
+        *self.offsets.last_mut().expect("the row just pushed") = offsets;
+    }
+
+    /// The columns and entries of row k, one by one.
+    fn entries(&self, k: usize) -> impl Iterator<Item = (usize, f64)> + '_ {
+        let (first, h) = (self.first[k], &self.padded[k]);
+        self.offsets[k][..self.lens[k]].iter().zip(&h[3..]).map(move |(&offset, &h)| (first + offset, h))
     }
 
     /// out_k = H_k·x = h₀x_f + h₁x_{f+1} + h₂x_{f+2} + h₃x_{f+3} (f = first_k, summed left to right). `x` needs
     /// three entries past the last column a row can start in (zeros where a row has fewer than four entries).
     #[inline(always)]
     pub fn mul(&self, x: &[f64], out: &mut [f64]) {
+        if self.spread {
+            for (k, o) in out.iter_mut().enumerate().take(self.first.len()) {
+                *o = self.entries(k).fold(0.0, |sum, (column, h)| sum + h * x[column]);
+            }
+            return;
+        }
         for ((o, &first), h) in out.iter_mut().zip(&self.first).zip(&self.padded) {
             let x: &[f64; 4] = x[first..first + 4].try_into().expect("four entries");
             *o = h[3] * x[0] + h[4] * x[1] + h[5] * x[2] + h[6] * x[3];
@@ -64,6 +114,12 @@ impl BlockRows {
     #[inline(always)]
     pub fn transpose_mul(&self, s: &[f64], out: &mut [f64]) {
         out.iter_mut().for_each(|x| *x = 0.0);
+        if self.spread {
+            for (k, &s) in s.iter().enumerate() {
+                self.entries(k).for_each(|(column, h)| out[column] += s * h);
+            }
+            return;
+        }
         for ((&s, &first), h) in s.iter().zip(&self.first).zip(&self.padded) {
             // Entry by entry: rows of neighbouring elements overlap by two entries, and a packed store followed by
             // a packed load that overlaps it only in part stalls store-to-load forwarding (measured: those two
@@ -82,11 +138,12 @@ impl BlockRows {
     #[inline(always)]
     pub fn weighted_gram_into(&self, base: &SymmetricBanded, d: &[f64], out: &mut SymmetricBanded) {
         out.copy_from(base);
-        if base.bandwidth() != 3 {
+        if base.bandwidth() != 3 || self.spread {
             let mut dofs = [0; 4];
-            for (((&d, &first), h), &len) in d.iter().zip(&self.first).zip(&self.padded).zip(&self.lens) {
-                for (a, dof) in dofs.iter_mut().enumerate() {
-                    *dof = first + a;
+            for (k, (&d, h)) in d.iter().zip(&self.padded).enumerate() {
+                let len = self.lens[k];
+                for (dof, (column, _)) in dofs.iter_mut().zip(self.entries(k)) {
+                    *dof = column;
                 }
                 out.add_outer(&dofs[..len], &h[3..3 + len], d);
             }
@@ -190,5 +247,43 @@ mod tests {
             }
         }
         assert!(hts[n..].iter().all(|&x| x == 0.0), "padding past the columns stays zero");
+    }
+
+    /// Rows skipping a column (a rail element's four DOFs with a sleeper's between them, half-bandwidth 4) beside
+    /// consecutive ones: the three products are those of an entry-by-entry scatter, to the bit.
+    #[test]
+    fn rows_that_skip_a_column_take_the_entry_by_entry_products() {
+        let n = 16;
+        let mut block = BlockRows::with_capacity(8);
+        let mut list: Vec<(Vec<usize>, Vec<f64>)> = Vec::new();
+        for (k, first) in [0, 3, 3, 6, 9, 11].into_iter().enumerate() {
+            let t = 0.7 * k as f64;
+            let columns =
+                if k == 1 { vec![first, first + 1, first + 2] } else { vec![first, first + 1, first + 3, first + 4] };
+            let values: Vec<f64> = (0..columns.len()).map(|a| (t + a as f64).sin()).collect();
+            block.push_entries(&columns, &values);
+            list.push((columns, values));
+        }
+        let mut base = SymmetricBanded::zeros(n, 4);
+        (0..n).for_each(|i| base.add(i, i, 3.0 + i as f64));
+        let x: Vec<f64> = (0..n + 3).map(|i| if i < n { (0.37 * i as f64).cos() } else { 0.0 }).collect();
+        let s: Vec<f64> = (0..list.len()).map(|k| 1.0 + k as f64).collect();
+        let (mut hx, mut hts, mut gram) = (vec![0.0; list.len()], vec![0.0; n + 3], SymmetricBanded::zeros(n, 4));
+        block.mul(&x, &mut hx);
+        block.transpose_mul(&s, &mut hts);
+        block.weighted_gram_into(&base, &s, &mut gram);
+        let (mut scattered_hts, mut scattered_gram) = (vec![0.0; n + 3], base.clone());
+        for (k, (columns, values)) in list.iter().enumerate() {
+            let expected = columns.iter().zip(values).fold(0.0, |sum, (&c, h)| sum + h * x[c]);
+            assert_eq!(hx[k].to_bits(), expected.to_bits(), "H x, row {k}");
+            columns.iter().zip(values).for_each(|(&c, h)| scattered_hts[c] += s[k] * h);
+            scattered_gram.add_outer(columns, values, s[k]);
+        }
+        assert_eq!(hts, scattered_hts);
+        for i in 0..n {
+            for j in i.saturating_sub(4)..=i {
+                assert_eq!(gram.get(i, j).to_bits(), scattered_gram.get(i, j).to_bits(), "gram ({i}, {j})");
+            }
+        }
     }
 }

@@ -13,7 +13,7 @@
 //! - [`general`]: [`GeneralBanded`] non-symmetric banded matrices and their LU with partial pivoting
 //!   ([`GeneralLu`]), for the moving-frame operator of the stationary wave.
 //! - [`diagonals`]: [`BandDiagonals`], the band as diagonals for fast products.
-//! - [`block_rows`]: [`BlockRows`], rows of at most four consecutive nonzeros and the products H x, Hᵀs and
+//! - [`block_rows`]: [`BlockRows`], rows of at most four nonzeros (consecutive, or spread within the band) and the products H x, Hᵀs and
 //!   A + Hᵀ diag(d) H, four entries at a time.
 
 pub mod block_rows;

@@ -123,6 +123,13 @@ impl InteractionRow {
         self.contiguous
     }
 
+    /// Whether the row has at most four entries within `bandwidth` of each other (what the interior point's banded
+    /// Newton matrices of that half-bandwidth take: a local row, or a rail element's four DOFs with a sleeper's
+    /// numbered between them).
+    pub fn lies_in_band(&self, bandwidth: usize) -> bool {
+        self.is_short() && self.dof_span().is_none_or(|(first, last)| last - first <= bandwidth)
+    }
+
     /// The (free DOF, value) entries.
     pub fn entries(&self) -> impl Iterator<Item = (usize, f64)> + '_ {
         self.dofs().iter().copied().zip(self.values().iter().copied())

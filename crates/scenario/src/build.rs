@@ -131,39 +131,24 @@ impl Scenario {
         Ok(interactions)
     }
 
-    /// Refuse, by key, ballast friction on the rail and a nonlinear soil beside sleepers under the solvers that do not
-    /// take them: their sections sit on the rail's elements, whose rows span the sleeper's DOF between two rail nodes
-    /// (w_i, θ_i, z_i, w_{i+1}, θ_{i+1}: four entries over five DOFs), and the interior point (what `auto` picks for
-    /// sections this dense) and the homotopy take rows of four consecutive DOFs only. Projection and Clarabel take
-    /// them, slowly (minutes for 200 m where the interior point's runs take seconds): chosen, they run.
+    /// Refuse, by key, the homotopy on a track of sleepers with sections on its rail (ballast friction, a nonlinear
+    /// soil): their rows span the sleeper's DOF between two rail nodes (w_i, θ_i, z_i, w_{i+1}, θ_{i+1}: four entries
+    /// over five DOFs), which the homotopy's banded matrices do not take; the interior point (what `auto` picks),
+    /// projection and Clarabel do.
     fn refuse_rail_rows_on_sleepers(&self, model: &BeamModel) -> Result<()> {
-        use nscd::SolverKind;
-        if model.sleepers().is_none()
-            || matches!(self.integration.solver, SolverKind::Projection | SolverKind::Clarabel)
-        {
+        if model.sleepers().is_none() || self.integration.solver != nscd::SolverKind::Homotopy {
             return Ok(());
         }
-        let (key, value, instead) = match (&self.friction.distributed, self.foundation.law) {
-            (Some(d), _) => (
-                "friction.distributed.force_per_length",
-                format!("{}", d.force_per_length),
-                "put the friction at the sleepers ([[sleepers.exceptions]] friction = f_u·spacing)",
-            ),
+        let (key, value) = match (&self.friction.distributed, self.foundation.law) {
+            (Some(d), _) => ("friction.distributed.force_per_length", format!("{}", d.force_per_length)),
             (None, FoundationLawKind::Linear) => return Ok(()),
-            (None, law) => (
-                "foundation.law",
-                format!("{law:?}").to_lowercase(),
-                "let the ballast lift off instead ([[sleepers.exceptions]] law = \"tensionless\")",
-            ),
+            (None, law) => ("foundation.law", format!("{law:?}").to_lowercase()),
         };
         Err(invalid(
             key,
             value,
-            format!(
-                "on sleepers its sections act on the rail between the sleepers, rows the interior point does not \
-                 take yet (they span a sleeper's DOF); {instead}, or choose integration.solver = \"clarabel\" or \
-                 \"projection\" (slow: minutes for 200 m of track)"
-            ),
+            "on sleepers its sections act on the rail between the sleepers, rows that span a sleeper's DOF, which \
+             integration.solver = \"homotopy\" does not take; choose \"auto\" (the interior point takes them)",
         ))
     }
 

@@ -12,6 +12,7 @@ mod runs {
     mod homotopy;
     mod linear;
     mod nonlinear_foundation;
+    mod rail_sections_on_sleepers;
     mod sleeper_weight;
     mod sleepers;
     mod solver_fallback;

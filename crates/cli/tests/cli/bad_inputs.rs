@@ -164,10 +164,11 @@ fn check_takes_several_files() {
 }
 
 /// Ballast friction on the rail and a tensionless soil beside sleepers stopped with exit 1 under the default solver
-/// ("solver interior-point cannot solve this problem", a solver the user never chose): they are refused by key before
-/// the run, saying what to do instead; chosen explicitly, projection and Clarabel still take them.
+/// ("solver interior-point cannot solve this problem", a solver the user never chose): the interior point now takes
+/// their rows, so `auto` runs them (and says it used the interior point); the homotopy, which does not, is refused by
+/// key before the run.
 #[test]
-fn rail_sections_on_sleepers_are_refused_by_key_under_the_default_solver() {
+fn rail_sections_on_sleepers_run_under_the_default_solver() {
     let folder = temporary_folder("rail-rows-on-sleepers");
     let track =
         "[mesh]\nlength = 30.0\nelements = 200\n[foundation]\nstiffness = 250e3\n[sleepers]\n[load]\nspeed = 50.0\n";
@@ -178,12 +179,13 @@ fn rail_sections_on_sleepers_are_refused_by_key_under_the_default_solver() {
         let file = folder.join("track.toml");
         std::fs::write(&file, track.replace("stiffness = 250e3\n", &format!("stiffness = 250e3\n{extra}"))).unwrap();
         let path = file.to_str().unwrap();
-        let out = frictrack(&[&["run", path][..], &args[..]].concat());
-        let stderr = String::from_utf8_lossy(&out.stderr);
-        assert_eq!(out.status.code(), Some(2), "{key}: {stderr}");
-        assert!(stderr.contains(key) && stderr.contains("sleepers.exceptions"), "{stderr}");
-        let chosen =
-            frictrack(&[&["run", path, "--solver", "clarabel", "--load-advance", "0.15"][..], &args[..]].concat());
-        assert!(chosen.status.success(), "{key}: {}", String::from_utf8_lossy(&chosen.stderr));
+        let out = frictrack(&[&["run", path, "--load-advance", "0.15", "--format", "json"][..], &args[..]].concat());
+        assert!(out.status.success(), "{key}: {}", String::from_utf8_lossy(&out.stderr));
+        let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        assert_eq!(json["solver"], "interior-point", "{key}");
+        let homotopy = frictrack(&[&["run", path, "--solver", "homotopy"][..], &args[..]].concat());
+        let stderr = String::from_utf8_lossy(&homotopy.stderr);
+        assert_eq!(homotopy.status.code(), Some(2), "{key}: {stderr}");
+        assert!(stderr.contains(key) && stderr.contains("homotopy"), "{stderr}");
     }
 }

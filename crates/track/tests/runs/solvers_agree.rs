@@ -1,6 +1,7 @@
 //! Independent solvers agree on v_{k+1} (docs/theory.md §5: p need not be unique, v is).
 
 use super::common::{reference, relative_difference};
+use fem_beam::BeamModel;
 use nscd::solver::{InteractionProblem, SolverSettings, build_solver};
 use nscd::stepper::Integration;
 use nscd::{MoreauJean, SolverKind};
@@ -23,24 +24,24 @@ fn tight(speed: f64) -> RunSettings {
 /// stick–slip history (1e-8 after ~1500 steps for two exact solvers), which says nothing about a step. Steps where
 /// `b`'s own law residual exceeds 1e-8 of the velocity scale (Clarabel's stopping rule, on degenerate steps) cannot
 /// be held to 1e-8 and are not compared; they are counted and must stay below 5 % of the steps.
-fn same_state_difference(
+pub(super) fn same_state_difference(
+    model: &BeamModel,
     interactions: &PlacedInteractions,
     a: SolverKind,
     b: SolverKind,
     settings: &RunSettings,
     (steps, bound): (usize, f64),
 ) -> f64 {
-    let model = reference();
     let h = settings.integration.load_advance / settings.moving.speed;
-    let system = beam_system(&model);
+    let system = beam_system(model);
     let integration = Integration::theta(settings.integration.theta, h);
     let set = interactions.interactions();
     let checking = InteractionProblem::new(&system, set.clone(), integration).unwrap();
     let whole = SolverSettings { moving_window: false, ..settings.integration.solver };
     let mut solver_b = build_solver(b, &checking, &whole).unwrap();
-    let (q0, v0) = Simulation::new(&model, interactions, settings).unwrap().initial_state().unwrap();
+    let (q0, v0) = Simulation::new(model, interactions, settings).unwrap().initial_state().unwrap();
     let start = settings.start_position();
-    let load = MovingLoad::new(&model, settings.moving.load.train().axles[0].force, settings.moving.speed, start);
+    let load = MovingLoad::new(model, settings.moving.load.train().axles[0].force, settings.moving.speed, start);
     let n = system.dofs();
     let stepping = SolverSettings { kind: a, ..settings.integration.solver };
     let mut stepper = MoreauJean::build(&system, set.clone(), integration, &stepping, q0, v0).unwrap();
@@ -101,8 +102,15 @@ fn clarabel_agrees_with_projection_for_devices() {
     let model = reference();
     let interactions = Devices::uniform(31, 100e3).interactions(&model).unwrap();
     let settings = tight(200.0);
-    same_state_difference(&interactions, SolverKind::Projection, SolverKind::Clarabel, &settings, (400, 1e-8));
-    same_state_difference(&interactions, SolverKind::Projection, SolverKind::InteriorPoint, &settings, (400, 1e-8));
+    same_state_difference(&model, &interactions, SolverKind::Projection, SolverKind::Clarabel, &settings, (400, 1e-8));
+    same_state_difference(
+        &model,
+        &interactions,
+        SolverKind::Projection,
+        SolverKind::InteriorPoint,
+        &settings,
+        (400, 1e-8),
+    );
 }
 
 #[test]
@@ -116,7 +124,14 @@ fn clarabel_agrees_with_interior_point_for_distributed_friction() {
         s.moving.initial = InitialState::SteadyState { position: 95.0 };
         s
     };
-    same_state_difference(&interactions, SolverKind::InteriorPoint, SolverKind::Clarabel, &settings, (30, 1e-8));
+    same_state_difference(
+        &model,
+        &interactions,
+        SolverKind::InteriorPoint,
+        SolverKind::Clarabel,
+        &settings,
+        (30, 1e-8),
+    );
 }
 
 /// The homotopy, step by step against Clarabel from the same states (the per-step cross-check of a fourth solver),
@@ -135,7 +150,7 @@ fn clarabel_agrees_with_the_homotopy_for_distributed_friction() {
         s.moving.initial = InitialState::SteadyState { position: 95.0 };
         s
     };
-    same_state_difference(&interactions, SolverKind::Homotopy, SolverKind::Clarabel, &settings, (60, 1e-5));
+    same_state_difference(&model, &interactions, SolverKind::Homotopy, SolverKind::Clarabel, &settings, (60, 1e-5));
 }
 
 /// The moving window re-solves only part of the beam but checks every section: from the same state, each step
@@ -146,6 +161,7 @@ fn moving_window_agrees_with_whole_beam_solve_every_step() {
     let interactions = DistributedFriction::new(2e3).interactions(&model).unwrap();
     let settings = tight(150.0);
     let worst = same_state_difference(
+        &model,
         &interactions,
         SolverKind::InteriorPoint,
         SolverKind::InteriorPoint,
@@ -163,7 +179,14 @@ fn whole_runs_agree() {
     let model = reference();
     let settings = tight(200.0);
     let devices = Devices::uniform(31, 100e3).interactions(&model).unwrap();
-    same_state_difference(&devices, SolverKind::Projection, SolverKind::Clarabel, &settings, (usize::MAX, 1e-8));
+    same_state_difference(
+        &model,
+        &devices,
+        SolverKind::Projection,
+        SolverKind::Clarabel,
+        &settings,
+        (usize::MAX, 1e-8),
+    );
     same_max_deflection(&devices, SolverKind::Projection, SolverKind::Clarabel, &settings, 1e-6);
     let distributed = DistributedFriction::new(5e3).interactions(&model).unwrap();
     let steady = {
@@ -171,7 +194,14 @@ fn whole_runs_agree() {
         s.moving.initial = InitialState::SteadyState { position: 5.0 };
         s
     };
-    same_state_difference(&distributed, SolverKind::InteriorPoint, SolverKind::Clarabel, &steady, (usize::MAX, 1e-8));
+    same_state_difference(
+        &model,
+        &distributed,
+        SolverKind::InteriorPoint,
+        SolverKind::Clarabel,
+        &steady,
+        (usize::MAX, 1e-8),
+    );
     // With 799 sections the run's max deflection is itself only defined to ~1e-6: the interior point alone gives
     // 0.17768265, 0.17768305, 0.17768295, 0.17768316 m at tolerances 1e-8, 1e-9, 1e-10, 1e-11 (stick–slip
     // transitions shift by a step under 1e-10 perturbations). Clarabel lands 1.5e-6 from the 1e-10 run, inside

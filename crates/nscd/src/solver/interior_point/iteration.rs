@@ -224,12 +224,19 @@ impl Work {
         q.rows.clear();
         q.extra.clear();
         let mut open_count = 0;
+        let bandwidth = base.bandwidth();
         for k in 0..q.index.len() {
             let j = q.index[k];
             let row = &rows[j];
             debug_assert!(law.lower[j].is_finite(), "lower bounds are finite");
             if row.is_local() {
                 q.rows.push(subproblem.local(row.dofs()[0]), row.values());
+            } else if row.lies_in_band(bandwidth) {
+                let mut columns = [0; 4];
+                for (column, &dof) in columns.iter_mut().zip(row.dofs()) {
+                    *column = subproblem.local(dof);
+                }
+                q.rows.push_entries(&columns[..row.len()], row.values());
             } else {
                 // Empty in the band; the bordered solve takes it.
                 q.rows.push(0, &[]);

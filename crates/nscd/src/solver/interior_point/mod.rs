@@ -106,17 +106,18 @@ impl BandedInteriorPoint {
         moving_window: bool,
     ) -> crate::Result<Self> {
         let (n, m) = (problem.matrix.m_hat.order(), problem.len());
-        if !problem.interactions.rows()[..problem.fixed_len()].iter().all(|r| r.is_local()) {
+        let bandwidth = problem.matrix.m_hat.bandwidth();
+        if !problem.interactions.rows()[..problem.fixed_len()].iter().all(|r| r.lies_in_band(bandwidth)) {
             return Err(crate::NscdError::Unsupported {
                 solver: SolverKind::InteriorPoint,
-                reason: "its banded Newton matrices take fixed rows of at most four consecutive DOFs; \
+                reason: "its banded Newton matrices take fixed rows of at most four DOFs within the band; \
                          longer fixed rows need projection or clarabel",
             });
         }
         // Moving rows that reach outside the band (a wheel's DOF) need that DOF's block decoupled from the beam for a
         // window to hold it; otherwise the whole problem every step.
         let tail = window::decoupled_tail(problem);
-        let long_moving = problem.interactions.rows()[problem.fixed_len()..].iter().any(|r| !r.is_local());
+        let long_moving = problem.interactions.rows()[problem.fixed_len()..].iter().any(|r| !r.lies_in_band(bandwidth));
         let moving_window = moving_window && (tail.is_some() || !long_moving);
         let backward = match moving_window {
             true => Some(problem.matrix.m_hat.reversed().factor()?),

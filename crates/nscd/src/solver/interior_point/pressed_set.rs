@@ -59,12 +59,13 @@ impl PressedSet {
     /// DOF, which B cannot hold).
     pub(super) fn new(problem: &InteractionProblem) -> Option<Self> {
         let rows = problem.interactions.rows();
-        if problem.fixed_len() != rows.len() || !rows.iter().all(|r| r.is_local()) {
+        let bandwidth = problem.matrix.m_hat.bandwidth();
+        if problem.fixed_len() != rows.len() || !rows.iter().all(|r| r.lies_in_band(bandwidth)) {
             return None;
         }
         let mut block_rows = BlockRows::with_capacity(rows.len());
         for row in rows {
-            block_rows.push(row.dofs()[0], row.values());
+            block_rows.push_entries(row.dofs(), row.values());
         }
         let (n, m) = (problem.matrix.m_hat.order(), rows.len());
         Some(Self {

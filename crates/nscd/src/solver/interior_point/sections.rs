@@ -12,7 +12,7 @@ use friction::law::project;
 pub(super) struct Sections {
     /// Section index j of each active section.
     pub(super) index: Vec<usize>,
-    /// The local rows H_k over the subproblem's DOFs (at most four consecutive DOFs; a non-local row is empty here).
+    /// The local rows H_k over the subproblem's DOFs (at most four DOFs within the band; a row beyond the band is empty here).
     pub(super) rows: BlockRows,
     /// The non-local rows (a wheel's contact), by the low-rank correction of the Newton systems.
     pub(super) extra: ExtraRows,

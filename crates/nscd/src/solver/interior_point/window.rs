@@ -37,9 +37,9 @@ pub(super) fn coupling_reach(factor: &BandedLdlt) -> usize {
 /// most the smallest such far DOF with M̂_ij = 0 for every j < t ≤ i. None without such rows or such a block.
 pub(super) fn decoupled_tail(problem: &InteractionProblem) -> Option<usize> {
     let moving = &problem.interactions.rows()[problem.fixed_len()..];
-    let far = moving.iter().filter(|r| !r.is_local()).filter_map(|r| r.dof_span()).map(|(_, last)| last).min()?;
     let m_hat = &problem.matrix.m_hat;
     let (n, b) = (m_hat.order(), m_hat.bandwidth());
+    let far = moving.iter().filter(|r| !r.lies_in_band(b)).filter_map(|r| r.dof_span()).map(|(_, last)| last).min()?;
     let decoupled = |t: usize| (t..(t + b).min(n)).all(|i| (i.saturating_sub(b)..t).all(|j| m_hat.get(i, j) == 0.0));
     (1..=far).rev().find(|&t| decoupled(t))
 }
