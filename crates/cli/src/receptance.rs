@@ -74,7 +74,10 @@ pub fn run(args: &ReceptanceArgs) -> Result<()> {
         check_folder(folder, "--out")?;
     }
     let runner = crate::jobs::runner(args.jobs, args.format != TableFormat::Text)?;
-    let study = ReceptanceStudy::of(&scenario, &request, &runner).map_err(|e| rename(e, "--frequencies"))?;
+    let announce = |estimate: &runner::cost::Estimate| crate::progress::announce("receptance", estimate);
+    let runner = runner.with_estimate(&announce).with_stop(crate::interrupt::stop_flag());
+    let study = ReceptanceStudy::of(&scenario, &request, &runner).map_err(|e| rename(e, "--frequencies"));
+    let study = crate::interrupt::explain(study, None)?;
     for warning in &study.warnings {
         eprintln!("warning: {warning}");
     }

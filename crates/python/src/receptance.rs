@@ -36,8 +36,9 @@ pub(crate) fn receptance(
         study::receptance_text::check_folder(folder, "out").map_err(to_python)?;
     }
     let runner = Runner::new(jobs).map_err(to_python)?;
-    let work = move |stop: &_, _: &interruptible::Progress| {
-        let study = ReceptanceStudy::of(&scenario, &request, &runner.with_stop(stop))?;
+    let work = move |stop: &_, told: &interruptible::Progress| {
+        let announce = |estimate: &runner::cost::Estimate| told.announce("frictrack.receptance", estimate);
+        let study = ReceptanceStudy::of(&scenario, &request, &runner.with_stop(stop).with_estimate(&announce))?;
         if let Some(folder) = &out {
             study.write_folder(folder, "out")?;
         }

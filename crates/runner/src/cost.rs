@@ -4,6 +4,7 @@
 //! build, one run on one core; BENCHMARKS.md). An estimate to within a factor of about 2–3, for deciding whether
 //! to wait — the one rule every entry point (runs, sweeps, studies, stationary sweeps) announces long work by.
 
+use nscd::SolverKind;
 use scenario::Case;
 use stationary::StationaryProblem;
 
@@ -11,11 +12,21 @@ use stationary::StationaryProblem;
 /// observers (measured 7.9e-9 s with 40 002 DOFs × 20 000 steps, 1.4e-8 s on the 402-DOF reference case, where the
 /// fixed costs weigh more).
 const PER_DOF_STEP: f64 = 1.0e-8;
-/// Seconds per friction section and step: distributed friction on the reference track 0.25–0.3 s for 799 sections
-/// × 2000 steps beyond the friction-free run (1.7e-7); on 0.15 m elements near the critical speed, 5327 sections of
-/// 2–5 kN/m with 10–13 interior-point iterations a step, 3.3–4.3 s for 1998 steps (3.1e-7–4.0e-7, the
-/// sleeper-friction study's continuous twin); devices cost about the same per section. Between the two.
+/// Seconds per friction section and step under the interior point (what `auto` picks for many sections; the
+/// homotopy costs about the same): distributed friction on the reference track 0.25–0.3 s for 799 sections × 2000
+/// steps beyond the friction-free run (1.7e-7); on 0.15 m elements near the critical speed, 5327 sections of 2–5 kN/m
+/// with 10–13 iterations a step, 3.3–4.3 s for 1998 steps (3.1e-7–4.0e-7, the sleeper-friction study's continuous
+/// twin); devices cost about the same per section. Between the two. (On sleepers, whose band is wider, 2 kN/m along
+/// 30 m of rail took 1.43 s for 799 sections × 1000 steps, 1.8e-6, the window then covering nearly every section.)
 const PER_SECTION_STEP: f64 = 3.0e-7;
+/// Seconds per friction section and step under Clarabel, a general conic solver re-factoring a sparse KKT system each
+/// iteration: 2 kN/m along 30 m, 799 sections × 1000 steps, 12.2 s on a soil and 17.7 s on sleepers
+/// (1.5e-5–2.2e-5; the interior point took 0.63 and 1.43 s).
+const CLARABEL_PER_SECTION_STEP: f64 = 2.0e-5;
+/// Seconds per friction section and step under projection (Gauss–Seidel on the dense W, handing the steps it stalls
+/// on to the fallback): the same 30 m, 3.4 s on a soil and 1.55 s on sleepers (4.3e-6, 1.9e-6); the reference track
+/// with 5 kN/m, 4.9 s for 799 × 2000 (3.1e-6).
+const PROJECTION_PER_SECTION_STEP: f64 = 3.0e-6;
 /// Seconds per wheel and step (a quarter car with Hertz contact on the reference track: 20 ms against 11 ms for the
 /// moving force over 2000 steps).
 const PER_WHEEL_STEP: f64 = 5.0e-6;
@@ -31,6 +42,8 @@ pub struct RunCost {
     pub sections: usize,
     /// Wheels.
     pub wheels: usize,
+    /// The friction solver asked for (its sections' rate).
+    pub solver: SolverKind,
     /// Estimated wall time (s).
     pub seconds: f64,
 }
@@ -42,8 +55,14 @@ impl RunCost {
         let dofs = case.model.dofs().free_len();
         let sections = case.interactions.len();
         let wheels = case.settings.moving.load.vehicles().map_or(0, |v| v.wheels().count());
-        let per_step = PER_DOF_STEP * dofs as f64 + PER_SECTION_STEP * sections as f64 + PER_WHEEL_STEP * wheels as f64;
-        Self { steps, dofs, sections, wheels, seconds: steps * per_step }
+        let solver = case.settings.integration.solver.kind;
+        let per_section = match solver {
+            SolverKind::Clarabel => CLARABEL_PER_SECTION_STEP,
+            SolverKind::Projection => PROJECTION_PER_SECTION_STEP,
+            SolverKind::Auto | SolverKind::InteriorPoint | SolverKind::Homotopy => PER_SECTION_STEP,
+        };
+        let per_step = PER_DOF_STEP * dofs as f64 + per_section * sections as f64 + PER_WHEEL_STEP * wheels as f64;
+        Self { steps, dofs, sections, wheels, solver, seconds: steps * per_step }
     }
 }
 
@@ -65,6 +84,11 @@ const DAMPED: f64 = 0.02;
 /// The share of a stationary solve's cost left without the halved-element error estimate (measured 2.41 s of 4.21 s
 /// on the friction sweep of BENCHMARKS.md).
 const WITHOUT_ERROR_ESTIMATE: f64 = 0.6;
+
+/// Seconds per free DOF and frequency of a receptance: one complex banded factorisation and solve, its resonances'
+/// refinement included (20 001 frequencies on one thread: 1.36 s over the reference track's 400 DOFs, 1.7e-7;
+/// 11.4 s over examples/discrete-track.toml's 2997, 1.9e-7).
+const RECEPTANCE_PER_DOF_FREQUENCY: f64 = 2e-7;
 
 /// Work estimated to take longer than this (s) is announced with its size and estimate before it starts (by every
 /// entry point: the command line on standard error, Python on its standard error).
@@ -92,6 +116,13 @@ pub struct Estimate {
 pub enum Size {
     /// A time-domain run.
     Run(RunCost),
+    /// Frequencies of a receptance, each one complex banded factorisation and solve.
+    Receptance {
+        /// Frequencies.
+        frequencies: usize,
+        /// Free DOFs of the track.
+        dofs: usize,
+    },
     /// A stationary solve on the moving domain.
     Stationary {
         /// Nodes of the moving domain.
@@ -139,18 +170,26 @@ impl Estimate {
     /// 2 threads: estimated 3 min (within a factor of 2–3)".
     pub fn describe(&self) -> String {
         let size = match self.size {
-            Size::Run(cost) => format!(
-                "{:.0} steps over {} DOFs, {} friction sections, {} wheels",
-                cost.steps, cost.dofs, cost.sections, cost.wheels
-            ),
+            Size::Run(cost) => {
+                let solver = match (cost.sections, cost.solver) {
+                    (0, _) | (_, SolverKind::Auto) => String::new(),
+                    (_, kind) => format!(" (by {kind})"),
+                };
+                format!(
+                    "{:.0} steps over {} DOFs, {} friction sections{solver}, {} wheels",
+                    cost.steps, cost.dofs, cost.sections, cost.wheels
+                )
+            }
             Size::Stationary { nodes, nonsmooth } => {
                 format!("{nodes} nodes{}", if nonsmooth { ", nonsmooth (Newton on the contact set)" } else { "" })
             }
+            Size::Receptance { frequencies, dofs } => format!("{frequencies} frequencies over {dofs} DOFs"),
         };
         let items = match self.size {
             Size::Run(_) if self.runs == 1 => size,
-            Size::Run(_) => format!("{} runs, the largest of {size}, on {} threads", self.runs, self.threads),
+            Size::Run(_) => format!("{} runs, the largest of {size}, on {}", self.runs, threads(self.threads)),
             Size::Stationary { .. } => format!("{} stationary solves of {size}", self.runs),
+            Size::Receptance { .. } => format!("a receptance of {size}, on {}", threads(self.threads)),
         };
         match self.lower_bound {
             false => format!("{items}: estimated {} (within a factor of 2–3)", duration(self.seconds)),
@@ -160,6 +199,13 @@ impl Estimate {
                 duration(self.seconds)
             ),
         }
+    }
+
+    /// A receptance of a track of `dofs` free DOFs at `frequencies` frequencies, shared by `threads` threads.
+    pub fn receptance(dofs: usize, frequencies: usize, threads: usize) -> Self {
+        let threads = threads.clamp(1, frequencies.max(1));
+        let seconds = RECEPTANCE_PER_DOF_FREQUENCY * (dofs * frequencies) as f64 / threads as f64;
+        Self { runs: 1, threads, size: Size::Receptance { frequencies, dofs }, seconds, lower_bound: false }
     }
 
     /// Stationary solves of `problem` at `speeds` in continuation (one after another), with or without the
@@ -185,6 +231,11 @@ impl Estimate {
     }
 }
 
+/// "1 thread", "2 threads".
+fn threads(count: usize) -> String {
+    format!("{count} thread{}", if count == 1 { "" } else { "s" })
+}
+
 /// A duration in the unit a reader wants: s, min or h.
 fn duration(seconds: f64) -> String {
     if seconds < 120.0 {
@@ -199,6 +250,7 @@ fn duration(seconds: f64) -> String {
 #[cfg(test)]
 mod tests {
     use super::{Estimate, RunCost, Size};
+    use nscd::SolverKind;
     use scenario::Scenario;
 
     /// The reference case is instant; 20 000 elements with a 0.01 m load advance take seconds (measured 6.4 s); a
@@ -218,6 +270,37 @@ mod tests {
             Some(scenario::DistributedSection { force_per_length: 1e3, ..Default::default() });
         let distributed = RunCost::of(&distributed.build().unwrap());
         assert!(distributed.sections > 700 && (0.1..1.0).contains(&distributed.seconds), "{distributed:?}");
+    }
+
+    /// The solver sets a run's rate per section: 2 kN/m of ballast friction on the reference track is half a
+    /// second by the interior point (measured 0.49 s) and announced as long by Clarabel (measured 22.8 s, estimated
+    /// 32 s; it ran unannounced when every solver was costed at the interior point's rate).
+    #[test]
+    fn a_run_is_costed_at_its_solvers_rate() {
+        let mut scenario = Scenario::default();
+        scenario.friction.distributed =
+            Some(scenario::DistributedSection { force_per_length: 2e3, ..Default::default() });
+        let interior_point = RunCost::of(&scenario.build().unwrap());
+        scenario.integration.solver = SolverKind::Clarabel;
+        let clarabel = RunCost::of(&scenario.build().unwrap());
+        assert!(interior_point.seconds < 1.0 && !Estimate::run(interior_point).is_long(), "{interior_point:?}");
+        assert!((15.0..60.0).contains(&clarabel.seconds) && Estimate::run(clarabel).is_long(), "{clarabel:?}");
+        assert!(Estimate::run(clarabel).describe().contains("799 friction sections (by clarabel)"));
+    }
+
+    /// A receptance costs one banded factorisation per frequency: 201 frequencies of the reference track are
+    /// instant, 100 000 over a 2997-DOF sleeper track a minute on one thread (measured 11.4 s for 20 001), half on two.
+    #[test]
+    fn a_receptance_is_costed_by_its_dofs_and_frequencies() {
+        let small = Estimate::receptance(400, 201, 2);
+        assert!(small.seconds < 0.1 && !small.is_long(), "{small:?}");
+        let large = Estimate::receptance(2997, 100_000, 1);
+        assert!((40.0..80.0).contains(&large.seconds) && large.is_long(), "{large:?}");
+        assert_eq!(Estimate::receptance(2997, 100_000, 2).seconds, 0.5 * large.seconds);
+        assert_eq!(
+            large.describe(),
+            "a receptance of 100000 frequencies over 2997 DOFs, on 1 thread: estimated 60 s (within a factor of 2–3)"
+        );
     }
 
     /// A batch's wall time is its summed cost over the threads it keeps busy; its size is its largest run.

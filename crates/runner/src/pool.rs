@@ -137,12 +137,17 @@ impl<'a> Runner<'a> {
         simulate_until(case, settings, self.stop)
     }
 
+    /// Whether the stop flag is raised (work not yet started should then end with [`StudyError::Interrupted`]).
+    pub fn is_stopped(&self) -> bool {
+        self.stop.is_some_and(|s| s.load(Ordering::Relaxed))
+    }
+
     /// `run` unless the journal already holds the result under `key`; a fresh result is journaled at once.
     pub fn cached<R: Serialize + DeserializeOwned>(&self, key: &str, run: impl FnOnce() -> Result<R>) -> Result<R> {
         if let Some(done) = self.journal.and_then(|j| j.get(key)) {
             return Ok(done);
         }
-        if self.stop.is_some_and(|s| s.load(Ordering::Relaxed)) {
+        if self.is_stopped() {
             return Err(StudyError::Interrupted);
         }
         let result = run()?;

@@ -158,7 +158,12 @@ impl ReceptanceStudy {
         let alpha = |f: f64| -> Result<Complex64> {
             Ok(response.receptance(TAU * f, request.excite, &[request.at]).map_err(StudyError::from)?[0])
         };
-        let values = runner.map(&request.frequencies, |&f| alpha(f))?;
+        let (dofs, count) = (model.dofs().free_len(), request.frequencies.len());
+        runner.announce(runner::cost::Estimate::receptance(dofs, count, runner.threads()));
+        let values = runner.map(&request.frequencies, |&f| match runner.is_stopped() {
+            true => Err(StudyError::Interrupted),
+            false => alpha(f),
+        })?;
         let points: Vec<ReceptancePoint> =
             request.frequencies.iter().zip(&values).map(|(&f, &a)| ReceptancePoint::of(f, a)).collect();
         let curve: Vec<(f64, f64)> = points.iter().map(|p| (p.frequency, p.magnitude)).collect();
