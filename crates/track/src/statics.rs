@@ -5,7 +5,7 @@ use crate::error::Result;
 use crate::error::{Setting, invalid};
 use crate::placed::PlacedInteractions;
 use crate::simulation::counts_for_extremes;
-use crate::unilateral_statics::static_deflection;
+use crate::unilateral_statics::StaticSolver;
 use fem_beam::{BeamModel, Train};
 
 /// The largest static downward deflection of the train over its crossing, where and with the first axle where.
@@ -24,8 +24,9 @@ pub const MAX_POSITIONS: usize = 1_000_000;
 
 /// The static envelope of `train` with its first axle at 0, `advance`, 2·`advance`, … up to L + its length (m):
 /// K factored once, one banded solve per position — or, with unilateral springs (a nonlinear soil's sections, a
-/// sleeper's tensionless or voided ballast, in `placed`), its
-/// static deflection per position ([`crate::unilateral_statics::static_deflection`]). Deflections are from the
+/// sleeper's tensionless or voided ballast, in `placed`), its static deflection per position by one
+/// [`crate::unilateral_statics::StaticSolver`], each position starting from the last one's contact set and
+/// refactoring only when the set changes. Deflections are from the
 /// self-weight state, as a run's. The largest deflection is taken over the nodes in `nodes` (m, as
 /// [`crate::simulation::RecordSettings::extremes_nodes`]), or over every node.
 pub fn static_envelope(
@@ -51,6 +52,7 @@ pub fn static_envelope(
         false => Some(model.stiffness().factor()?),
         true => None,
     };
+    let mut unilateral = StaticSolver::new(model, placed);
     let dofs = model.dofs();
     let counted: Vec<(usize, f64)> = (0..mesh.nodes())
         .filter_map(|node| Some((dofs.free_index(2 * node)?, mesh.node_x(node))))
@@ -62,7 +64,7 @@ pub fn static_envelope(
         let mut q = train.load_vector(&beam, head).to_free(mesh, dofs);
         match &factor {
             Some(factor) => factor.solve_in_place(&mut q),
-            None => q = static_deflection(model, placed, &q)?,
+            None => q = unilateral.solve(&q)?,
         }
         for &(d, x) in &counted {
             if -q[d] > envelope.max_downward {

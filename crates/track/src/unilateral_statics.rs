@@ -21,45 +21,92 @@ pub const MAX_ITERATIONS: usize = 200;
 /// The static deflection q (free DOFs of the beam, m) under `load` (N, free DOFs) and the preload of `placed`, with
 /// its spring laws (compliant stops and glued springs) at their gaps.
 pub fn static_deflection(model: &fem_beam::BeamModel, placed: &PlacedInteractions, load: &[f64]) -> Result<Vec<f64>> {
-    let n = model.dofs().free_len();
-    let springs: Vec<(usize, f64, f64, bool)> = placed
-        .interactions()
-        .laws()
-        .iter()
-        .enumerate()
-        .filter_map(|(j, law)| {
-            let (stiffness, glued) = law.linear_spring()?;
-            Some((j, stiffness, law.gap()?, glued))
-        })
-        .collect();
-    let rows = placed.interactions().rows();
-    let mut pressed: Vec<bool> = vec![true; springs.len()];
-    let mut q = vec![0.0; n];
-    for _ in 0..MAX_ITERATIONS {
-        let mut matrix = model.stiffness().clone();
-        q.copy_from_slice(load);
-        for (p, f) in q.iter_mut().zip(placed.preload()) {
-            *p += f;
-        }
-        for (&(j, k, gap, _), _) in springs.iter().zip(&pressed).filter(|(_, on)| **on) {
-            let row = &rows[j];
-            matrix.add_outer(row.dofs(), row.values(), k);
-            row.add_transpose(-k * gap, &mut q);
-        }
-        matrix.factor().map_err(|_| unheld())?.solve_in_place(&mut q);
-        let mut changed = false;
-        for (&(j, _, gap, glued), on) in springs.iter().zip(pressed.iter_mut()) {
-            let now = glued || gap + rows[j].dot(&q) < 0.0;
-            changed |= now != *on;
-            *on = now;
-        }
-        if !changed {
-            return Ok(q);
-        }
+    StaticSolver::new(model, placed).solve(load)
+}
+
+/// The active-set iteration of [`static_deflection`] for one model and set of springs under many loads (a train at
+/// every position of its crossing): each load starts from the set the last one ended with, and the matrix
+/// K + Σ_A k_s H_sᵀH_s is factored only when the set differs from the one last factored — a load that moves the
+/// contact set little costs one or two banded solves instead of a factorisation per iteration.
+pub struct StaticSolver<'a> {
+    model: &'a fem_beam::BeamModel,
+    placed: &'a PlacedInteractions,
+    /// (section j, stiffness k_s, gap g₀ₛ, glued) of every spring law.
+    springs: Vec<(usize, f64, f64, bool)>,
+    /// The set A the next iteration takes (all pressed at first).
+    pressed: Vec<bool>,
+    /// The set last factored, and its factor.
+    factored: Option<(Vec<bool>, banded::BandedLdlt)>,
+    /// Factorisations so far.
+    factorisations: usize,
+}
+
+impl<'a> StaticSolver<'a> {
+    /// The solver of `model` with the springs of `placed`.
+    pub fn new(model: &'a fem_beam::BeamModel, placed: &'a PlacedInteractions) -> Self {
+        let springs: Vec<(usize, f64, f64, bool)> = placed
+            .interactions()
+            .laws()
+            .iter()
+            .enumerate()
+            .filter_map(|(j, law)| {
+                let (stiffness, glued) = law.linear_spring()?;
+                Some((j, stiffness, law.gap()?, glued))
+            })
+            .collect();
+        let pressed = vec![true; springs.len()];
+        Self { model, placed, springs, pressed, factored: None, factorisations: 0 }
     }
-    Err(TrackError::NoStaticEquilibrium {
-        reason: format!("the set of sections pressed into the soil still changed after {MAX_ITERATIONS} iterations"),
-    })
+
+    /// The static deflection under `load` (N, free DOFs), from the set the last load ended with.
+    pub fn solve(&mut self, load: &[f64]) -> Result<Vec<f64>> {
+        let rows = self.placed.interactions().rows();
+        let mut q = vec![0.0; load.len()];
+        for _ in 0..MAX_ITERATIONS {
+            q.copy_from_slice(load);
+            for (p, f) in q.iter_mut().zip(self.placed.preload()) {
+                *p += f;
+            }
+            for (&(j, k, gap, _), _) in self.springs.iter().zip(&self.pressed).filter(|(_, on)| **on) {
+                rows[j].add_transpose(-k * gap, &mut q);
+            }
+            self.factor()?.solve_in_place(&mut q);
+            let mut changed = false;
+            for (&(j, _, gap, glued), on) in self.springs.iter().zip(self.pressed.iter_mut()) {
+                let now = glued || gap + rows[j].dot(&q) < 0.0;
+                changed |= now != *on;
+                *on = now;
+            }
+            if !changed {
+                return Ok(q);
+            }
+        }
+        Err(TrackError::NoStaticEquilibrium {
+            reason: format!(
+                "the set of sections pressed into the soil still changed after {MAX_ITERATIONS} iterations"
+            ),
+        })
+    }
+
+    /// The banded factorisations the loads so far took.
+    pub fn factorisations(&self) -> usize {
+        self.factorisations
+    }
+
+    /// The factor of K + Σ_A k_s H_sᵀH_s for the current set A, factored only when A is not the set last factored.
+    fn factor(&mut self) -> Result<&banded::BandedLdlt> {
+        if self.factored.as_ref().is_none_or(|(set, _)| *set != self.pressed) {
+            let rows = self.placed.interactions().rows();
+            let mut matrix = self.model.stiffness().clone();
+            for (&(j, k, _, _), _) in self.springs.iter().zip(&self.pressed).filter(|(_, on)| **on) {
+                matrix.add_outer(rows[j].dofs(), rows[j].values(), k);
+            }
+            let factor = matrix.factor().map_err(|_| unheld())?;
+            self.factored = Some((self.pressed.clone(), factor));
+            self.factorisations += 1;
+        }
+        Ok(&self.factored.as_ref().expect("factored just now").1)
+    }
 }
 
 fn unheld() -> TrackError {
