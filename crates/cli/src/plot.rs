@@ -67,7 +67,11 @@ fn run_folder(folder: &Path) -> Result<Vec<String>> {
         subtitle: String::new(),
         title: title_in(&summary).unwrap_or_default(),
     });
-    let mut plots = report::run_output::run_plots(&curves, &figures.title, &figures.positions_of);
+    // The sleepers of the exceptions, drawn across the snapshots as the run drew them.
+    let listed = summary["report"]["sleepers"]["exceptions"].as_array().cloned().unwrap_or_default();
+    let exceptions: Vec<(f64, String)> =
+        listed.iter().filter_map(|e| Some((e["x"].as_f64()?, e["what"].as_str()?.to_string()))).collect();
+    let mut plots = report::run_output::run_plots(&curves, &figures.title, &figures.positions_of, &exceptions);
     for spec in &mut plots {
         spec.subtitle.clone_from(&figures.subtitle);
     }

@@ -30,7 +30,14 @@ pub fn deflection_figure(
     let mm = |p: &[(f64, f64)]| p.iter().map(|&(x, w)| (x, w * 1e3)).collect();
     for c in curves {
         let (label, color) = (Some(c.label), c.color);
-        spec.series.push(Series { label, color, stroke: Stroke::Solid, markers: true, points: mm(&c.downward) });
+        // The refined optimum is a run of its own: the curve passes through it (drawn from the grid alone, it ran
+        // under its triangle, 100–200 mm below a resonance the grid steps over).
+        let mut downward = c.downward.clone();
+        if let Some(optimum) = c.optimum.filter(|&(x, _)| downward.iter().all(|&(s, _)| s != x)) {
+            let at = downward.partition_point(|&(s, _)| s < optimum.0);
+            downward.insert(at, optimum);
+        }
+        spec.series.push(Series { label, color, stroke: Stroke::Solid, markers: true, points: mm(&downward) });
         spec.series.push(Series { label: None, color, stroke: Stroke::Dashed, markers: true, points: mm(&c.upward) });
         if let Some((x, w)) = c.optimum {
             spec.marks.push(Mark { color, point: (x, w * 1e3) });

@@ -41,8 +41,9 @@ pub struct Series {
     pub points: Vec<(f64, f64)>,
 }
 
-/// Grey in the categorical palette ([`color`]): reference lines, not configurations.
-pub const GREY: usize = 7;
+/// The colour index of reference lines, not configurations: grey in the categorical palette, black in
+/// [`Palette::Ten`] (whose index 7 is a train's grey, HSLM-A8, which a grey limit line could not be told from).
+pub const GREY: usize = usize::MAX;
 
 impl Series {
     /// A reference line (a limit, a threshold, a speed where a curve ends) from `from` to `to`, dashed grey.
@@ -128,6 +129,8 @@ impl Palette {
     /// The colour of index `i`.
     pub fn color(self, i: usize) -> RGBColor {
         match self {
+            Palette::Categorical if i == GREY => color(7),
+            Palette::Ten if i == GREY => BLACK,
             Palette::Categorical => color(i),
             Palette::Ten if i < TEN.len() => {
                 let (r, g, b) = TEN[i];
@@ -323,20 +326,64 @@ fn fitting_size<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, text: &str, s
     }
 }
 
+/// Font size of subtitles (px), and the most lines one takes before its last line shrinks to fit.
+const SUBTITLE_SIZE: f64 = 17.0;
+const SUBTITLE_LINES: usize = 3;
+
+/// The subtitle's lines and their font sizes: wrapped at spaces into lines of at most `width` px at
+/// [`SUBTITLE_SIZE`] (measured with 5 % to spare: the drawn text runs a little wider than its estimate), at most
+/// [`SUBTITLE_LINES`], the last one shrinking to fit what remains.
+fn subtitle_lines<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, text: &str, width: f64) -> Vec<(String, f64)> {
+    let room = 0.95 * width;
+    let fits = |line: &str| {
+        area.estimate_text_size(line, &("sans-serif", SUBTITLE_SIZE).into_font().into())
+            .is_ok_and(|(w, _)| f64::from(w) <= room)
+    };
+    let mut lines: Vec<String> = Vec::new();
+    let mut words = text.split(' ').filter(|w| !w.is_empty()).peekable();
+    while words.peek().is_some() {
+        let mut line = String::new();
+        if lines.len() + 1 == SUBTITLE_LINES {
+            line = words.by_ref().collect::<Vec<_>>().join(" ");
+        } else {
+            while let Some(word) = words.peek() {
+                let longer = if line.is_empty() { (*word).to_string() } else { format!("{line} {word}") };
+                if !line.is_empty() && !fits(&longer) {
+                    break;
+                }
+                line = longer;
+                words.next();
+            }
+        }
+        lines.push(line);
+    }
+    lines
+        .into_iter()
+        .map(|line| {
+            let size = fitting_size(area, &line, SUBTITLE_SIZE, room);
+            (line, size)
+        })
+        .collect()
+}
+
 fn draw<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, spec: &PlotSpec) -> std::result::Result<Layout, String> {
     let err = |e: &dyn std::fmt::Display| e.to_string();
     root.fill(&WHITE).map_err(|e| err(&e))?;
-    let (titled, body) = root.split_vertically(if spec.subtitle.is_empty() { 50 } else { 80 });
-    // Titles and subtitles shrink to fit the width (20 px margins) rather than run off the image.
+    // Titles shrink to fit the width (20 px margins) rather than run off the image; subtitles wrap onto lines.
     let width = f64::from(SIZE.0 - 40);
+    let subtitle = subtitle_lines(root, &spec.subtitle, width);
+    let height = match subtitle.len() {
+        0 => 50,
+        n => 56 + 22 * n as u32,
+    };
+    let (titled, body) = root.split_vertically(height);
     let title_size = fitting_size(&titled, &spec.title, 28.0, width);
     titled
         .draw(&Text::new(spec.title.as_str(), (20, 12), ("sans-serif", title_size).into_font()))
         .map_err(|e| err(&e))?;
-    if !spec.subtitle.is_empty() {
-        let size = fitting_size(&titled, &spec.subtitle, 19.0, width);
-        let style = ("sans-serif", size).into_font().color(&RGBColor(60, 60, 60));
-        titled.draw(&Text::new(spec.subtitle.as_str(), (20, 48), style)).map_err(|e| err(&e))?;
+    for (k, (line, size)) in subtitle.iter().enumerate() {
+        let style = ("sans-serif", *size).into_font().color(&RGBColor(60, 60, 60));
+        titled.draw(&Text::new(line.as_str(), (20, 48 + 22 * k as i32), style)).map_err(|e| err(&e))?;
     }
     let (w, h) = root.dim_in_pixel();
     let image = (0, 0, w as i32, h as i32);
@@ -404,7 +451,11 @@ fn draw_panel<DB: DrawingBackend>(
         .map_err(|e| err(&e))?;
     // The plot's own width in pixels (inside the axes' labels and margins).
     let columns = chart.plotting_area().dim_in_pixel().0 as usize;
-    for s in &spec.series {
+    // Colour 0, "no friction" in every study, is drawn last: the reference stays visible where the curves with
+    // friction coincide with it or cross it.
+    let reference = |s: &&Series| spec.palette == Palette::Categorical && s.color == 0;
+    let order = spec.series.iter().filter(|s| !reference(s)).chain(spec.series.iter().filter(reference));
+    for s in order {
         // Segments of 2 px or less: a 1 px stroke. plotters' bitmap backend widens a thicker stroke segment by
         // segment, and on dense zig-zags (a friction force chattering every step, a wheel force ringing after a
         // dipped joint: 900 points over 750 px) the widened segments shoot out of the frame.

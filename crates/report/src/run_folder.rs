@@ -136,7 +136,9 @@ pub fn write(
     write_atomically(&folder.join("summary.json"), text.as_bytes())?;
     write_atomically(&folder.join("histories.csv"), histories_csv(result).as_bytes())?;
     write_atomically(&folder.join("snapshots.csv"), snapshots_csv(snapshots).as_bytes())?;
-    for mut spec in run_plots(&RunCurves::of(result, snapshots), &title, load) {
+    let exceptions: Vec<(f64, String)> =
+        report.sleepers.iter().flat_map(|s| &s.exceptions).map(|e| (e.x, e.what.clone())).collect();
+    for mut spec in run_plots(&RunCurves::of(result, snapshots), &title, load, &exceptions) {
         spec.subtitle.clone_from(&subtitle);
         crate::plot::render(&spec, folder)?;
     }
@@ -150,7 +152,7 @@ pub fn write(
     }
     if let Some(sleepers) = &report.sleepers {
         let mut spec = crate::sleeper_output::bay_plot(sleepers, &title);
-        spec.subtitle = format!("{subtitle}; {}", sleepers.track);
+        spec.subtitle = format!("{subtitle}; {}; {}", sleepers.track, spec.subtitle);
         crate::plot::render(&spec, folder)?;
     }
     Ok(())

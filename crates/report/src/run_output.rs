@@ -11,7 +11,7 @@
 
 use crate::columns::{Column, header};
 use crate::figures::{Curves, quantity_figure};
-use crate::plot::{Mark, PlotSpec};
+use crate::plot::{Mark, PlotSpec, Series};
 use scenario::error::Result;
 use scenario::number::row;
 use scenario::{Case, Scenario};
@@ -59,7 +59,49 @@ pub fn snapshot_requests(scenario: &Scenario, case: &Case) -> Vec<SnapshotAt> {
     // single load, a train longer than the beam) the whole travel, from the start to the last axle's exit.
     let on = start.max(train);
     let travel = if train > 0.0 && on < length { (on, length) } else { (start, length + train) };
-    scenario.output.snapshots(travel)
+    let mut requests = scenario.output.snapshots(travel);
+    // By default also the first axle over the first sleeper of the exceptions (a void, a tensionless or softer
+    // sleeper): the quarters of the travel pass it by.
+    let asked = !scenario.output.snapshot_times.is_empty() || !scenario.output.snapshot_load_positions.is_empty();
+    if let Some(x) = first_exceptional_sleeper(case).filter(|x| !asked && travel.0 < *x) {
+        let at = requests.partition_point(|r| matches!(r, SnapshotAt::LoadPosition(p) if *p < x));
+        requests.insert(at, SnapshotAt::LoadPosition(x));
+    }
+    requests
+}
+
+/// Where the first sleeper of the exceptions of `case` sits (m).
+fn first_exceptional_sleeper(case: &Case) -> Option<f64> {
+    let (sleepers, nodes) = case.model.sleepers()?;
+    let first = nodes.iter().enumerate().find(|&(i, _)| sleepers.differs(i))?;
+    Some(case.model.mesh().node_x(*first.1))
+}
+
+/// At most this many sleepers of the exceptions are drawn as lines across the snapshots (beyond, the lines would
+/// hide the curves: tensionless ballast under every sleeper is an exception too).
+const MARKED_SLEEPERS: usize = 20;
+
+/// Vertical reference lines across `spec`'s curves at the sleepers `exceptions` ((x m, what in words), in order):
+/// one legend entry per kind ("sleeper: void 1.5 mm"), none when there are more than [`MARKED_SLEEPERS`].
+fn mark_sleepers(spec: &mut PlotSpec, exceptions: &[(f64, String)]) {
+    if exceptions.is_empty() || exceptions.len() > MARKED_SLEEPERS {
+        return;
+    }
+    let ys = spec.series.iter().flat_map(|s| s.points.iter().map(|p| p.1));
+    let (low, high) = ys.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), y| (a.min(y), b.max(y)));
+    if low.partial_cmp(&high) != Some(std::cmp::Ordering::Less) {
+        return;
+    }
+    let mut named: Vec<&str> = Vec::new();
+    for (x, what) in exceptions {
+        let mut line = Series::reference(format!("sleeper: {what}"), (*x, low), (*x, high));
+        if named.contains(&what.as_str()) {
+            line.label = None;
+        } else {
+            named.push(what);
+        }
+        spec.series.push(line);
+    }
 }
 
 /// One run with histories (the case's recorded sections) and the requested snapshots, reporting the finished
@@ -193,7 +235,7 @@ pub fn position_noun(load: &track::Load) -> &'static str {
 /// Figures of the histories (deflection and moment against the load position, one curve per section) and of the
 /// snapshots (deflected shape and moment along the beam, one curve per instant). `load` names what the positions are
 /// of ([`position_noun`]).
-pub fn run_plots(curves: &RunCurves, title: &str, load: &str) -> Vec<PlotSpec> {
+pub fn run_plots(curves: &RunCurves, title: &str, load: &str, exceptions: &[(f64, String)]) -> Vec<PlotSpec> {
     let by_section = |value: usize, scale: f64| -> Curves {
         let curve = |(i, (x, points)): (usize, &(f64, Vec<[f64; 3]>))| {
             (format!("x = {x} m"), 1 + i, points.iter().map(|p| (p[0], p[value] * scale)).collect())
@@ -242,6 +284,7 @@ pub fn run_plots(curves: &RunCurves, title: &str, load: &str) -> Vec<PlotSpec> {
                 }
             }
             spec.mark_label = format!("{load} position");
+            mark_sleepers(spec, exceptions);
         }
     }
     plots

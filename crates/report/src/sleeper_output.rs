@@ -13,16 +13,19 @@ pub const BAY_BINS: usize = 20;
 
 /// The sleepers in words (MN/m, kN·s/m: the units the literature quotes pads and ballast in), `count` of them.
 pub fn sleepers_in_words(s: &Sleepers, count: usize) -> String {
+    // Four significant digits: a sleeper derived from a soil (a tenth of the rail's mass over a bay) reads 3.596 kg,
+    // not 3.596112.
+    let n = |x: f64| scenario::number::significant(x, 4);
     let layer = |name: &str, l: &Layer| {
-        format!("{name} {} MN/m, {} kN·s/m, η {}", l.stiffness / 1e6, l.damping / 1e3, l.loss_factor)
+        format!("{name} {} MN/m, {} kN·s/m, η {}", n(l.stiffness / 1e6), n(l.damping / 1e3), n(l.loss_factor))
     };
     let body = s.ballast_body.map_or(String::new(), |b| {
-        format!("; a ballast body of {} kg on the {}", b.mass, layer("subgrade", &b.subgrade))
+        format!("; a ballast body of {} kg on the {}", n(b.mass), layer("subgrade", &b.subgrade))
     });
     format!(
         "{count} sleepers every {} m ({} kg; {}; {}{body})",
-        s.spacing,
-        s.mass,
+        n(s.spacing),
+        n(s.mass),
         layer("pads", &s.pad),
         layer("ballast", &s.ballast)
     )
@@ -61,6 +64,10 @@ pub struct BayProfile {
     pub above_sleeper: Option<f64>,
     /// See `above_sleeper`.
     pub mid_span: Option<f64>,
+    /// Whether the bays beside the sleepers of the exceptions (within a spacing of one) were left out of the means:
+    /// a void or a softer ballast there is not the track's bay. False when there are none, or when no other bay is
+    /// read (then every bay is averaged).
+    pub exceptions_left_out: bool,
 }
 
 /// The sleepers under one run.
@@ -143,8 +150,8 @@ impl SleepersSummary {
             max_pad_force: largest(|p| Some(p.pad_force)),
             max_ballast_force: largest(|p| Some(p.ballast_force)),
             max_subgrade_force: s.ballast_body.map(|_| largest(|p| p.subgrade_force)),
+            bay: BayProfile::of(results, read, &exceptional(s, results).iter().map(|e| e.x).collect::<Vec<_>>()),
             exceptions: exceptional(s, results),
-            bay: BayProfile::of(results, read),
             element_length: model.mesh().element_length(),
             read_region: read,
         })
@@ -190,10 +197,15 @@ fn exceptional(s: &Sleepers, results: &SleeperResults) -> Vec<ExceptionalSleeper
 
 impl BayProfile {
     /// The mean downward deflection under the load in each of [`BAY_BINS`] bins of the bay, over the load's positions
-    /// in `read` (m).
-    fn of(results: &SleeperResults, read: [f64; 2]) -> Self {
+    /// in `read` (m) outside the bays beside the sleepers at `exceptions` (m), where any remain.
+    fn of(results: &SleeperResults, read: [f64; 2], exceptions: &[f64]) -> Self {
+        let inside = |x: f64| (read[0]..=read[1]).contains(&x);
+        let regular = |x: f64| exceptions.iter().all(|e| (x - e).abs() >= results.spacing);
+        let left_out = !exceptions.is_empty()
+            && results.under_load.iter().any(|&(x, _)| inside(x) && regular(x))
+            && results.under_load.iter().any(|&(x, _)| inside(x) && !regular(x));
         let mut sums = [(0.0, 0usize); BAY_BINS];
-        for &(x, w) in results.under_load.iter().filter(|(x, _)| (read[0]..=read[1]).contains(x)) {
+        for &(x, w) in results.under_load.iter().filter(|&&(x, _)| inside(x) && (!left_out || regular(x))) {
             let xi = ((x - results.first) / results.spacing).rem_euclid(1.0);
             let bin = (xi * BAY_BINS as f64).round() as usize % BAY_BINS;
             sums[bin].0 -= w;
@@ -202,7 +214,7 @@ impl BayProfile {
         let bins: Vec<(f64, Option<f64>)> = (0..BAY_BINS)
             .map(|j| (j as f64 / BAY_BINS as f64, (sums[j].1 > 0).then(|| sums[j].0 / sums[j].1 as f64)))
             .collect();
-        Self { above_sleeper: bins[0].1, mid_span: bins[BAY_BINS / 2].1, bins }
+        Self { above_sleeper: bins[0].1, mid_span: bins[BAY_BINS / 2].1, bins, exceptions_left_out: left_out }
     }
 }
 
@@ -234,8 +246,9 @@ pub(crate) fn write_sleepers(f: &mut std::fmt::Formatter<'_>, s: &SleepersSummar
     if let (Some(above), Some(mid)) = (s.bay.above_sleeper, s.bay.mid_span) {
         writeln!(
             f,
-            "    deflection under the load (mean over the bays there): {:.4} mm above a sleeper, {:.4} mm at mid-span \
+            "    deflection under the load (mean over the bays there{}): {:.4} mm above a sleeper, {:.4} mm at mid-span \
              ({:+.2} %)",
+            if s.bay.exceptions_left_out { ", those beside the exceptions left out" } else { "" },
             above * 1e3,
             mid * 1e3,
             (mid / above - 1.0) * 100.0
@@ -293,9 +306,11 @@ pub fn bay_plot(s: &SleepersSummary, title: &str) -> crate::plot::PlotSpec {
         spec.mark_label = "above a sleeper".into();
     }
     let [a, b] = s.read_region;
-    let label = format!(
-        "load at x = {a:.1}–{b:.1} m, on the nodes (every {} m)",
-        scenario::number::significant(s.element_length, 6)
+    let label = format!("on the nodes (every {} m)", scenario::number::significant(s.element_length, 6));
+    // What the means are over, for the subtitle (its caller puts the run's line before it).
+    spec.subtitle = format!(
+        "mean over the load at x = {a:.1}–{b:.1} m{}",
+        if s.bay.exceptions_left_out { " but the bays beside the exceptional sleepers" } else { "" }
     );
     spec.series.push(Series { label: Some(label), color: 0, stroke: Stroke::Solid, markers: true, points });
     spec

@@ -74,6 +74,9 @@ pub struct ReceptanceStudy {
     pub loss_factors: [f64; 2],
     /// What carries the rail, in words: the continuous foundation and/or the sleepers with their pads and ballast.
     pub support: String,
+    /// Where the response is read among the sleepers ("above sleeper 166", "mid-span between sleepers 166 and
+    /// 167", "0.15 m past sleeper 166"); empty without sleepers.
+    pub place: String,
     /// One point per frequency.
     pub points: Vec<ReceptancePoint>,
     /// The peaks of |α|.
@@ -197,9 +200,29 @@ impl ReceptanceStudy {
             rail: model.beam().theory.describe(),
             loss_factors: [model.beam().loss_factor, model.foundation().loss_factor],
             support: support(&model),
+            place: place_among_sleepers(&model, request.at),
             points,
             resonances,
             warnings,
         })
+    }
+}
+
+/// Where `x` (m) lies among the sleepers of `model`, in words (to 1 mm): "above sleeper 166", "mid-span between
+/// sleepers 166 and 167", "0.15 m past sleeper 166"; empty without sleepers. A receptance above a sleeper and one at
+/// mid-span differ most at the pinned–pinned frequency.
+fn place_among_sleepers(model: &fem_beam::BeamModel, x: f64) -> String {
+    let Some((_, nodes)) = model.sleepers() else { return String::new() };
+    let xs: Vec<f64> = nodes.iter().map(|&n| model.mesh().node_x(n)).collect();
+    let close = |a: f64, b: f64| (a - b).abs() <= 1e-3;
+    let Some(behind) = xs.partition_point(|&s| s <= x + 1e-3).checked_sub(1) else {
+        return format!("{:.3} m before sleeper 0", xs[0] - x);
+    };
+    match xs.get(behind + 1) {
+        _ if close(xs[behind], x) => format!("above sleeper {behind}"),
+        Some(&next) if close(0.5 * (xs[behind] + next), x) => {
+            format!("mid-span between sleepers {behind} and {}", behind + 1)
+        }
+        _ => format!("{:.3} m past sleeper {behind}", x - xs[behind]),
     }
 }

@@ -56,9 +56,10 @@ impl ReceptanceStudy {
 
     /// What was computed: where, the rail as `rail` names it, what carries it.
     fn describe(&self, rail: &str) -> String {
+        let among = if self.place.is_empty() { String::new() } else { format!(" ({})", self.place) };
         let place = match self.kind {
-            "point" => format!("point receptance at x = {} m", self.at),
-            _ => format!("transfer receptance at x = {} m, force at {} m", self.at, self.excite),
+            "point" => format!("point receptance at x = {} m{among}", self.at),
+            _ => format!("transfer receptance at x = {} m{among}, force at {} m", self.at, self.excite),
         };
         format!("{place}; {rail} rail, η {}; {}", self.loss_factors[0], self.support)
     }
@@ -76,9 +77,24 @@ impl ReceptanceStudy {
             markers: false,
             points,
         };
-        let mut magnitude = PlotSpec::new("", "magnitude", "frequency f (Hz)", "|α| (m/N)");
+        // The resonances named in the panel's title: the triangles say where, the title what.
+        let named: Vec<String> = self
+            .resonances
+            .iter()
+            .map(|r| format!("{:.0} Hz{}", r.frequency, r.name.map_or(String::new(), |n| format!(" {n}"))))
+            .collect();
+        let heading = match named.is_empty() {
+            true => "magnitude".to_string(),
+            false => format!("magnitude; resonances (▲, refined): {}", named.join(", ")),
+        };
+        let mut magnitude = PlotSpec::new("", heading, "frequency f (Hz)", "|α| (m/N)");
         (magnitude.log_x, magnitude.log_y) = (true, true);
-        magnitude.series.push(curve("|α|", self.points.iter().map(|p| (p.frequency, p.magnitude)).collect()));
+        // The refined resonances are points of the curve: a peak between the grid's frequencies stands on it.
+        let mut points: Vec<(f64, f64)> = self.points.iter().map(|p| (p.frequency, p.magnitude)).collect();
+        for r in &self.resonances {
+            points.insert(points.partition_point(|p| p.0 < r.frequency), (r.frequency, r.magnitude));
+        }
+        magnitude.series.push(curve("|α|", points));
         magnitude.marks = self
             .resonances
             .iter()

@@ -149,18 +149,21 @@ impl Curves {
         deflection_figure(stem, title, "load speed v (m/s)", curves, "refined critical speed")
     }
 
-    /// One quantity vs speed for every curve.
+    /// One quantity vs speed for the curves `members`.
+    #[allow(clippy::too_many_arguments)] // A figure's words, its curves and their look, one each.
     pub(super) fn quantity_plot(
         &self,
         stem: &str,
         title: &str,
         y_label: &str,
         value: fn(&SweepPoint) -> f64,
+        members: &[usize],
         legend: &dyn Fn(usize) -> String,
         color: &dyn Fn(usize) -> usize,
     ) -> PlotSpec {
-        let curves = (0..self.points.len())
-            .map(|c| (legend(c), color(c), self.points[c].iter().map(|q| (q.speed, value(q))).collect()))
+        let curves = members
+            .iter()
+            .map(|&c| (legend(c), color(c), self.points[c].iter().map(|q| (q.speed, value(q))).collect()))
             .collect();
         quantity_figure(stem, title, "load speed v (m/s)", y_label, curves, true)
     }

@@ -23,11 +23,12 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
             };
             // f_u = 0 is "no friction", black as in every study; 1–10 kN/m take the next colours in order.
             let color = |c: usize| c;
+            let all: Vec<usize> = (0..curves.len()).collect();
             vec![
                 curves.deflection_plot(
                     "distributed-speed-deflection",
                     "Distributed friction: max deflection vs speed",
-                    &(0..5).collect::<Vec<_>>(),
+                    &all,
                     &legend,
                     &color,
                 ),
@@ -36,6 +37,7 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
                     "Distributed friction: global norm vs speed",
                     "global norm (1/t_on)∫∫|w| dx dt (m²)",
                     |q| q.global_norm,
+                    &all,
                     &legend,
                     &color,
                 ),
@@ -44,6 +46,7 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
                     "Distributed friction: dissipated energy vs speed",
                     "energy dissipated by friction and damping (kJ)",
                     |q| q.energy.dissipated / 1e3,
+                    &all,
                     &legend,
                     &color,
                 ),

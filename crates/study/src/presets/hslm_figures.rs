@@ -102,7 +102,10 @@ impl Results {
         let mut spec = PlotSpec::new(stem, title, SPEED_AXIS, y_label);
         spec.palette = Palette::Ten;
         for c in self.set(friction) {
-            let (color, stroke) = (train_colour(c.train), Stroke::Solid);
+            // Neighbouring trains (A9 and A10: coaches of 26 and 27 m) can trace nearly the same curve: the even
+            // ones dashed, so that the one drawn first shows through the other.
+            let stroke = if c.train % 2 == 0 { Stroke::Dashed } else { Stroke::Solid };
+            let color = train_colour(c.train);
             let points: Vec<(f64, f64)> = c.drawn.iter().map(|p| (p.speed * KMH, value(p))).collect();
             spec.series.push(Series {
                 label: Some(format!("HSLM-A{} (D = {} m)", c.train, coach_length(c.train))),

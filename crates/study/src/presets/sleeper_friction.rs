@@ -97,30 +97,42 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
                     (0, false) => "continuous, no friction".to_string(),
                     (0, true) => format!("continuous, {} kN/m in ballast", f / 1e3),
                     (_, false) => "sleepers, no friction".to_string(),
-                    (_, true) => format!("sleepers, {} kN each", f * spacing / 1e3),
+                    (_, true) => format!("sleepers, {} kN each (≙ {} kN/m)", f * spacing / 1e3, f / 1e3),
                 }
             };
-            // One colour per friction force, the continuous track solid, the discrete one its own colour range.
-            let color = |c: usize| c;
-            let all: Vec<usize> = (0..curves.len()).collect();
+            // Two panels, the continuous track above and the sleepers below on a shared y range; within each one
+            // colour per friction level, the same for the equal friction per metre in both (one colour per curve
+            // in one panel left near hues side by side: orange beside vermillion, sky blue beside blue).
+            let color = |c: usize| [0, 1, 4][c % FORCES.len()];
+            let tracks: [(&str, Vec<usize>); 2] = [
+                ("continuous track: friction in the ballast", (0..FORCES.len()).collect()),
+                ("on sleepers: a slider at each sleeper", (FORCES.len()..2 * FORCES.len()).collect()),
+            ];
+            let deflection = |members: &[usize]| curves.deflection_plot("", "", members, &legend, &color);
+            let dissipated = |members: &[usize]| {
+                let y = "energy dissipated by friction and damping (kJ)";
+                curves.quantity_plot("", "", y, |q| q.energy.dissipated / 1e3, members, &legend, &color)
+            };
+            let paneled = |stem: &str, title: &str, panel: &dyn Fn(&[usize]) -> PlotSpec| {
+                let mut spec = panel(&[]);
+                (spec.stem, spec.title, spec.subtitle) = (stem.into(), title.into(), subtitle.clone());
+                spec.panels =
+                    tracks.iter().map(|(name, members)| PlotSpec { title: (*name).into(), ..panel(members) }).collect();
+                spec
+            };
             let plots = vec![
-                curves.deflection_plot(
+                paneled(
                     "sleeper-friction-deflection",
                     "Friction at the sleepers vs in the ballast: max deflection vs speed",
-                    &all,
-                    &legend,
-                    &color,
+                    &deflection,
                 ),
-                curves.quantity_plot(
+                paneled(
                     "sleeper-friction-dissipated",
                     "Friction at the sleepers vs in the ballast: dissipated energy vs speed",
-                    "energy dissipated by friction and damping (kJ)",
-                    |q| q.energy.dissipated / 1e3,
-                    &legend,
-                    &color,
+                    &dissipated,
                 ),
             ];
-            plots.into_iter().map(|p| PlotSpec { subtitle: subtitle.clone(), ..p }).collect()
+            plots
         },
         headline,
     )
