@@ -459,7 +459,11 @@ fn draw_panel<DB: DrawingBackend>(
         // Segments of 2 px or less: a 1 px stroke. plotters' bitmap backend widens a thicker stroke segment by
         // segment, and on dense zig-zags (a friction force chattering every step, a wheel force ringing after a
         // dipped joint: 900 points over 750 px) the widened segments shoot out of the frame.
-        let width = if 2 * s.points.len() > columns { 1 } else { 2 };
+        // Otherwise 3: plotters draws a stroke wider than 1 px as a polygon whose corners it offsets by ±width/2
+        // across the segment, truncated to whole pixels — at width 2 the offsets of a steep or diagonal segment
+        // (|±1·sin| < 1) truncate to 0 and it came out 1 px thin beside its 2 px neighbours; at 3 every direction
+        // keeps 2 px or more.
+        let width = if 2 * s.points.len() > columns { 1 } else { 3 };
         let style = spec.palette.color(s.color).stroke_width(width);
         let line: Vec<(f64, f64)> =
             s.points.iter().map(|&(x, y)| (tx(x), ty(y))).filter(|(x, y)| x.is_finite() && y.is_finite()).collect();
