@@ -27,6 +27,7 @@ pub mod run_output;
 pub mod run_summary;
 pub mod run_text;
 pub mod sleeper_output;
+pub mod snapshot_zoom;
 pub mod soil_output;
 pub mod sweep_figures;
 pub mod sweep_file;

@@ -286,6 +286,16 @@ pub fn run_plots(curves: &RunCurves, title: &str, load: &str, exceptions: &[(f64
             spec.mark_label = format!("{load} position");
             mark_sleepers(spec, exceptions);
         }
+        // On a long beam each instant gets a panel around its load (a bowl of metres over hundreds is a needle).
+        let shapes: Vec<(f64, &[[f64; 3]])> = curves.instants.iter().map(|(_, at, p)| (*at, p.as_slice())).collect();
+        let extent =
+            shapes.first().map_or(0.0, |(_, p)| p.last().map_or(0.0, |l| l[0]) - p.first().map_or(0.0, |f| f[0]));
+        if let Some(half) = crate::snapshot_zoom::zoom_half_width(&shapes, extent) {
+            let loads: Vec<f64> = shapes.iter().map(|(at, _)| *at).collect();
+            for spec in &mut plots[drawn - 2..] {
+                *spec = crate::snapshot_zoom::zoomed(spec.clone(), &loads, half);
+            }
+        }
     }
     plots
 }
