@@ -70,9 +70,13 @@ pub fn snapshot_requests(scenario: &Scenario, case: &Case) -> Vec<SnapshotAt> {
     requests
 }
 
-/// Where the first sleeper of the exceptions of `case` sits (m).
+/// Where the first sleeper of the exceptions of `case` sits (m); None when every sleeper is one (tensionless
+/// ballast throughout: no sleeper stands out to be looked at).
 fn first_exceptional_sleeper(case: &Case) -> Option<f64> {
     let (sleepers, nodes) = case.model.sleepers()?;
+    if (0..nodes.len()).all(|i| sleepers.differs(i)) {
+        return None;
+    }
     let first = nodes.iter().enumerate().find(|&(i, _)| sleepers.differs(i))?;
     Some(case.model.mesh().node_x(*first.1))
 }

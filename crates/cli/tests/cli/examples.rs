@@ -176,3 +176,30 @@ fn the_ballast_body_example_reports_the_subgrade() {
     let voided = &s["exceptions"][0];
     assert!(voided["first_contact"].as_f64().is_some() && voided["lowest"].as_f64().unwrap() > 1e-3, "{voided}");
 }
+
+/// The voided-sleeper example's figures show its voids: a default snapshot with the wheel over the first voided
+/// sleeper (the quarters of the travel passed them by), the voided sleepers drawn across the snapshots, the bay's
+/// means without the bays beside them (said in the JSON and the figure); the discrete track's 200 m snapshots get a
+/// panel per instant around the load (its 3 m bowls were needles).
+#[test]
+fn the_voided_and_discrete_examples_draw_what_a_reader_needs() {
+    let folder = temporary_folder("example-voided-figures");
+    let voided = run_elsewhere("voided-sleeper.toml", &["--out", folder.to_str().unwrap()]);
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(folder.join("summary.json")).unwrap()).unwrap();
+    let requested = summary["files"]["snapshots.csv"]["requested"].as_array().unwrap();
+    let first_void = voided["sleepers"]["exceptions"][0]["x"].as_f64().unwrap();
+    assert!(requested.iter().any(|r| r.as_str().unwrap().contains(&format!("at {first_void} m"))), "{requested:?}");
+    let svg = std::fs::read_to_string(folder.join("snapshots-deflection.svg")).unwrap();
+    assert!(svg.contains("sleeper: void 1.5 mm"), "the voids are not drawn");
+    assert_eq!(voided["sleepers"]["bay"]["exceptions_left_out"], true);
+    let bay = std::fs::read_to_string(folder.join("bay.svg")).unwrap();
+    assert!(bay.contains("but the bays beside the exceptional sleepers"), "the bay figure does not say it");
+    let discrete = temporary_folder("example-discrete-figures");
+    run_elsewhere("discrete-track.toml", &["--out", discrete.to_str().unwrap()]);
+    let svg = std::fs::read_to_string(discrete.join("snapshots-deflection.svg")).unwrap();
+    // One panel per instant, each with its own x axis (one panel would name the axis once).
+    assert_eq!(svg.matches("position along the beam x (m)").count(), 3, "three panels");
+    let voided_svg = std::fs::read_to_string(folder.join("snapshots-deflection.svg")).unwrap();
+    assert_eq!(voided_svg.matches("position along the beam x (m)").count(), 1, "60 m of waves: one panel");
+}
