@@ -33,9 +33,8 @@ pub fn deflection_figure(
         // The refined optimum is a run of its own: the curve passes through it (drawn from the grid alone, it ran
         // under its triangle, 100–200 mm below a resonance the grid steps over).
         let mut downward = c.downward.clone();
-        if let Some(optimum) = c.optimum.filter(|&(x, _)| downward.iter().all(|&(s, _)| s != x)) {
-            let at = downward.partition_point(|&(s, _)| s < optimum.0);
-            downward.insert(at, optimum);
+        if let Some(optimum) = c.optimum {
+            insert_refined(&mut downward, optimum);
         }
         spec.series.push(Series { label, color, stroke: Stroke::Solid, markers: true, points: mm(&downward) });
         spec.series.push(Series { label: None, color, stroke: Stroke::Dashed, markers: true, points: mm(&c.upward) });
@@ -46,6 +45,14 @@ pub fn deflection_figure(
     spec.key = vec![(Stroke::Solid, "downward".into()), (Stroke::Dashed, "upward".into())];
     spec.mark_label = mark_label.into();
     spec
+}
+
+/// Put a refined point (a peak found between the grid's samples, a run or evaluation of its own) into the sampled
+/// curve `points` (increasing x), so that the curve passes through it; nothing where a sample already sits at its x.
+pub fn insert_refined(points: &mut Vec<(f64, f64)>, refined: (f64, f64)) {
+    if points.iter().all(|&(x, _)| x != refined.0) {
+        points.insert(points.partition_point(|&(x, _)| x < refined.0), refined);
+    }
 }
 
 /// Curves of one quantity: (legend text, colour index, points).

@@ -135,6 +135,7 @@ impl SleepersSummary {
             })
         };
         let lumped = s.bay_resonances(model.beam().mass_per_length());
+        let exceptions = exceptional(s, results);
         Some(Self {
             track: sleepers_in_words(s, nodes.len()),
             count: nodes.len(),
@@ -150,8 +151,8 @@ impl SleepersSummary {
             max_pad_force: largest(|p| Some(p.pad_force)),
             max_ballast_force: largest(|p| Some(p.ballast_force)),
             max_subgrade_force: s.ballast_body.map(|_| largest(|p| p.subgrade_force)),
-            bay: BayProfile::of(results, read, &exceptional(s, results).iter().map(|e| e.x).collect::<Vec<_>>()),
-            exceptions: exceptional(s, results),
+            bay: BayProfile::of(results, read, &exceptions.iter().map(|e| e.x).collect::<Vec<_>>()),
+            exceptions,
             element_length: model.mesh().element_length(),
             read_region: read,
         })

@@ -92,7 +92,7 @@ impl ReceptanceStudy {
         // The refined resonances are points of the curve: a peak between the grid's frequencies stands on it.
         let mut points: Vec<(f64, f64)> = self.points.iter().map(|p| (p.frequency, p.magnitude)).collect();
         for r in &self.resonances {
-            points.insert(points.partition_point(|p| p.0 < r.frequency), (r.frequency, r.magnitude));
+            report::figures::insert_refined(&mut points, (r.frequency, r.magnitude));
         }
         magnitude.series.push(curve("|α|", points));
         magnitude.marks = self

@@ -46,15 +46,8 @@ fn jobs_beyond_the_cores_are_capped() {
 fn sigterm_stops_a_sweep_within_seconds() {
     let dir = temporary_folder("sigterm");
     let out = dir.join("s.csv");
-    let child = Command::new(env!("CARGO_BIN_EXE_frictrack"))
-        .args(["sweep", "--distributed-friction", "5000", "--speeds", "10:300:1", "--jobs", "100000"])
-        .args(["--out", out.to_str().unwrap()])
-        .stdout(Stdio::null())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
-    std::thread::sleep(Duration::from_millis(1500));
-    let (output, stopped) = terminate(child);
+    let sweep = ["sweep", "--distributed-friction", "5000", "--speeds", "10:300:1", "--jobs", "100000"];
+    let (output, stopped) = terminated_while_running(&[&sweep[..], &["--out", out.to_str().unwrap()]].concat());
     assert_eq!(output.status.code(), Some(130), "{}", String::from_utf8_lossy(&output.stderr));
     assert!(String::from_utf8_lossy(&output.stderr).contains("--resume"));
     assert!(stopped < Duration::from_secs(10), "took {stopped:?}");
@@ -65,19 +58,26 @@ fn sigterm_stops_a_sweep_within_seconds() {
 /// bound, 3 s, is for this debug build (an iteration on the grown domain takes up to ~0.1 s in release).
 #[test]
 fn sigterm_stops_a_stationary_solve_at_its_next_iteration() {
+    let stationary = ["stationary", "--speed", "100", "--distributed-friction", "2000", "--element-length", "0.03"];
+    let (output, stopped) = terminated_while_running(&stationary);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(130), "{stderr}");
+    assert!(stderr.contains("interrupted"), "{stderr}");
+    assert!(stopped < Duration::from_secs(3), "took {stopped:?}");
+}
+
+/// `frictrack args`, standard output discarded, sent SIGTERM 1.5 s after it started — failing if it had already
+/// ended (then the command tests nothing: choose a longer one): its output and how long it took to stop.
+fn terminated_while_running(args: &[&str]) -> (std::process::Output, Duration) {
     let mut child = Command::new(env!("CARGO_BIN_EXE_frictrack"))
-        .args(["stationary", "--speed", "100", "--distributed-friction", "2000", "--element-length", "0.03"])
+        .args(args)
         .stdout(Stdio::null())
         .stderr(Stdio::piped())
         .spawn()
         .unwrap();
     std::thread::sleep(Duration::from_millis(1500));
-    assert!(child.try_wait().unwrap().is_none(), "the solve ended before the signal: choose a longer one");
-    let (output, stopped) = terminate(child);
-    let stderr = String::from_utf8_lossy(&output.stderr);
-    assert_eq!(output.status.code(), Some(130), "{stderr}");
-    assert!(stderr.contains("interrupted"), "{stderr}");
-    assert!(stopped < Duration::from_secs(3), "took {stopped:?}");
+    assert!(child.try_wait().unwrap().is_none(), "{args:?} ended before the signal: choose a longer one");
+    terminate(child)
 }
 
 /// Send SIGTERM to `child` and wait for it to end (failing after 20 s): its output and how long it took to stop,
@@ -113,14 +113,7 @@ fn clarabel_runs_and_large_receptances_are_announced_before_they_start() {
         ),
     ];
     for (args, said) in commands {
-        let child = Command::new(env!("CARGO_BIN_EXE_frictrack"))
-            .args(args)
-            .stdout(Stdio::null())
-            .stderr(Stdio::piped())
-            .spawn()
-            .unwrap();
-        std::thread::sleep(Duration::from_millis(1500));
-        let (output, _) = terminate(child);
+        let (output, _) = terminated_while_running(args);
         let stderr = String::from_utf8_lossy(&output.stderr);
         assert!(stderr.contains(said), "{args:?}: {stderr}");
         assert_eq!(output.status.code(), Some(130), "{args:?}: {stderr}");

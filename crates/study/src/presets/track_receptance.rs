@@ -243,7 +243,7 @@ fn figures(curves: &[Curve], subtitle: &str) -> Vec<PlotSpec> {
         // frequencies: drawn from the grid alone it stood 8–10× below its refined height), each marked.
         let mut curve = points(|p| p.magnitude);
         for r in &c.study.resonances {
-            curve.insert(curve.partition_point(|p| p.0 < r.frequency), (r.frequency, r.magnitude));
+            report::figures::insert_refined(&mut curve, (r.frequency, r.magnitude));
             magnitude.marks.push(Mark { color: color(c), point: (r.frequency, r.magnitude) });
         }
         magnitude.series.push(Series {
