@@ -4,9 +4,9 @@
 //! Cholesky, on the reference beam (pinned, h = 0.1 m / 200 m/s, θ = ½) with 200 and 2000 elements
 //! (400 and 4000 free DOFs). Run with `cargo bench -p frictrack-benches --bench linear_solve`.
 
+use analytic::reference::uic60_on_soft_soil;
 use banded::{BandDiagonals, SymmetricBanded};
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
-use fem_beam::reference::uic60_on_soft_soil;
 use fem_beam::{BeamModel, Mesh};
 use nalgebra::DVector;
 use nalgebra_sparse::{CscMatrix, factorization::CscCholesky};

@@ -3,9 +3,9 @@
 //! Run with `cargo bench -p frictrack-benches --bench runs`. Set-up (assembly, contact sets) is outside the timed part;
 //! a whole run includes factoring M̂ and building the friction solver, as every run does.
 
+use analytic::reference::uic60_on_soft_soil;
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use fem_beam::BeamModel;
-use fem_beam::reference::uic60_on_soft_soil;
 use std::hint::black_box;
 use std::time::Duration;
 use track::Load;

@@ -4,8 +4,8 @@
 //!
 //! Run with `cargo bench -p frictrack-benches --bench stationary` (`-- co_moving_window/quarter_car` for the vehicle).
 
+use analytic::reference::uic60_on_soft_soil;
 use criterion::{Criterion, criterion_group, criterion_main};
-use fem_beam::reference::uic60_on_soft_soil;
 use fem_beam::{BeamModel, Foundation, FoundationLaw};
 use stationary::{ContactGuess, Domain, StationaryProblem, solve_from};
 use std::hint::black_box;

@@ -76,7 +76,7 @@ fn the_stationary_wave_is_what_a_long_track_carries_around_the_load() {
 /// soil is settled against its clamped front and its absorbing zones damp more than c_f, both far from the load).
 #[test]
 fn a_co_moving_window_carries_the_stationary_wave_of_a_tensionless_soil() {
-    use fem_beam::reference::uic60_on_soft_soil;
+    use analytic::reference::uic60_on_soft_soil;
     use fem_beam::{AbsorbingZones, BeamModel, Foundation, FoundationLaw, Mesh, Support, Supports};
     use track::co_moving::{CoMovingSettings, run_co_moving};
     let case = uic60_on_soft_soil();

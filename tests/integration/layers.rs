@@ -1,12 +1,14 @@
 //! The crates form layers and every dependency points down (docs/architecture.md): a regression here is a lower
 //! crate that started to use a higher one. Read from each crate's Cargo.toml (normal, dev and build dependencies).
 
-/// The layers, bottom first: (package name, folder). The Python bindings stand beside the command line: both on the
+/// The layers, bottom first: (package name, folder). The closed forms stand on the finite elements' words, never the
+/// reverse. The Python bindings stand beside the command line: both on the
 /// scenario, runner, report and study libraries, neither on the other.
-const LAYERS: [(&str, &str); 13] = [
+const LAYERS: [(&str, &str); 14] = [
     ("banded", "crates/banded"),
     ("irregularity", "crates/irregularity"),
     ("fem-beam", "crates/fem-beam"),
+    ("analytic", "crates/analytic"),
     ("friction", "crates/friction"),
     ("nscd", "crates/nscd"),
     ("track", "crates/track"),

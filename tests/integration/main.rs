@@ -3,6 +3,7 @@
 mod figures;
 mod infinite_track;
 mod layers;
+mod limits;
 mod receptance_in_time;
 mod recipes;
 mod references;

@@ -1,8 +1,8 @@
 //! The whole static deflection line of the reference beam against the closed-form infinite-beam shape
 //! w(x) = −w₀·e^{−β|x−x₀|}(cos β(x−x₀) + sin β|x−x₀|), not only its peak.
 
+use analytic::reference::uic60_on_soft_soil;
 use fem_beam::LoadVector;
-use fem_beam::reference::uic60_on_soft_soil;
 
 #[test]
 fn static_deflection_line_matches_infinite_beam_everywhere() {

@@ -18,7 +18,7 @@ pub struct TrainsArgs {
 
 /// Execute `frictrack trains`.
 pub fn run(args: &TrainsArgs) -> Result<()> {
-    let single_force = fem_beam::reference::uic60_on_soft_soil().load;
+    let single_force = scenario::load_section::LoadSection::default().force;
     let Some(name) = &args.name else {
         let trains = Train::catalogue()
             .iter()

@@ -131,7 +131,7 @@ impl From<banded::BandedError> for FemError {
 pub type Result<T, E = FemError> = std::result::Result<T, E>;
 
 /// Check that `value` is finite and strictly positive.
-pub(crate) fn positive(field: &'static str, value: f64) -> Result<f64> {
+pub fn positive(field: &'static str, value: f64) -> Result<f64> {
     if value.is_finite() && value > 0.0 {
         Ok(value)
     } else {
@@ -140,7 +140,7 @@ pub(crate) fn positive(field: &'static str, value: f64) -> Result<f64> {
 }
 
 /// Check that `value` is finite and non-negative.
-pub(crate) fn non_negative(field: &'static str, value: f64) -> Result<f64> {
+pub fn non_negative(field: &'static str, value: f64) -> Result<f64> {
     if value.is_finite() && value >= 0.0 {
         Ok(value)
     } else {

@@ -17,38 +17,30 @@
 //! - [`extreme`]: the [`Extreme`] and [`LiftOffZone`] every response is reported in.
 //! - [`statics`], [`modal`]: K q = f and K φ = ω² M φ; [`modal_band`]: a field's part in the modes below a frequency.
 //! - [`motion`]: how the loads move — constant speed or a speed profile over position ([`Motion`]).
-//! - [`reference`](mod@reference): the reference case and closed-form results (β, w₀, M₀, v_cr, ω_n, moving-load steady state).
+//!
+//! The closed forms these elements are checked against live one floor up, in the `analytic` crate.
 
 pub mod absorbing;
 pub mod assembly;
 #[cfg(feature = "serde")]
 pub mod beam_keys;
 pub mod discretisation;
-pub mod dispersion;
 pub mod distributed;
 pub mod element;
 pub mod error;
 pub mod extreme;
-pub mod golden;
-pub mod infinite_track;
 pub mod load;
 pub mod mesh;
 pub mod modal;
 pub mod modal_band;
 pub mod motion;
-pub mod moving_timoshenko;
 pub mod properties;
 pub mod receptance;
-pub mod reference;
 pub mod section;
 pub mod sleeper_exceptions;
 pub mod sleepers;
-pub mod span;
-pub mod span_oscillator;
 pub mod statics;
-pub mod steady_train;
 pub mod supports;
-pub mod tensionless;
 pub mod train;
 
 pub use absorbing::AbsorbingZones;

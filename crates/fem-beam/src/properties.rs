@@ -105,6 +105,19 @@ impl Beam {
         Ok(())
     }
 
+    /// The bar wave speed √(E/ρ) (m/s; 5.2 km/s in steel, 3.7 km/s in concrete): no beam theory holds for a load
+    /// moving faster.
+    pub fn bar_wave_speed(&self) -> f64 {
+        (self.youngs_modulus / self.density).sqrt()
+    }
+
+    /// The speed (m/s) a load moving along this beam must stay below for its moving-frame equations to keep their
+    /// type: the bar wave √(E/ρ) for Euler–Bernoulli, the (slower) shear wave √(κGA/ρA) for Timoshenko (≈ 2 km/s
+    /// for a rail).
+    pub fn wave_speed_limit(&self) -> f64 {
+        self.shear_stiffness().map_or(self.bar_wave_speed(), |g| (g / self.mass_per_length()).sqrt())
+    }
+
     /// Shear stiffness κGA (N) of a Timoshenko beam; None for Euler–Bernoulli (infinite).
     pub fn shear_stiffness(&self) -> Option<f64> {
         match self.theory {

@@ -247,54 +247,12 @@ impl MoreauJean {
     pub fn step(&mut self, forcing: &dyn Forcing) -> Result<StepReport> {
         let (h, theta) = (self.h, self.theta);
         let (t0, t1) = (self.time, self.time + h);
-        if let Some(rates) = self.rates.as_mut()
-            && rates.needs_start()
-        {
-            start_residual(&self.problem, forcing, t0, (&self.q, &self.v, &self.kq, &self.cv), &mut self.work);
-            rates.start(&self.work)?;
-        }
-        if self.problem.is_varying() {
-            // The update phase: moving rows and the step's law from (t_k, q_k, v_k), the warm start brought into
-            // the new bounds, the solver told of the new rows. The generalized-α's laws see its start velocity.
-            match self.rates.as_mut() {
-                Some(rates) => self.problem.update_from(self.time, &self.q, rates.start_velocity(&self.v), &self.v),
-                None => self.problem.update(self.time, &self.q, &self.v),
-            }
-            self.problem.clamp_to_bounds(&mut self.p);
-            if self.problem.has_moving() {
-                self.solver.refresh(&self.problem)?;
-            }
-        }
+        self.update_phase(forcing, t0)?;
         self.free_velocity(forcing);
         // v_prev ← v_k, v ← v_free; the stale vector left in v_free is overwritten by the next free velocity.
         std::mem::swap(&mut self.v_prev, &mut self.v);
         std::mem::swap(&mut self.v, &mut self.v_free);
-        let report = if self.problem.interactions.is_empty() {
-            StepReport::default()
-        } else {
-            self.problem.interactions.velocities(&self.v, &mut self.u_free);
-            let mut report = self.solve_interactions(t1)?;
-            // Hertz contacts: Newton on their tangent, one more solve per update (docs/theory.md §9).
-            let mut newton = 0;
-            while newton < NEWTON_ITERATIONS && self.problem.newton_step(&self.p) {
-                self.solver.refresh(&self.problem)?;
-                let (iterations, fallback) = (report.iterations, report.fallback);
-                report = self.solve_interactions(t1)?;
-                report.iterations += iterations;
-                report.fallback = report.fallback.or(fallback);
-                newton += 1;
-            }
-            // Write back the solver's v when it formed it, else v = v_free + M̂⁻¹Hᵀp here.
-            let formed = match (&self.fallbacks, report.fallback) {
-                (Some(fallbacks), Some(_)) => fallbacks.velocity(&report),
-                _ => self.solver.velocity(),
-            };
-            match formed {
-                Some(v) => self.v.copy_from_slice(v),
-                None => self.problem.add_response(&self.p, &mut self.v, &mut self.work),
-            }
-            report
-        };
+        let report = self.impulse_phase(t1)?;
         // work = v_θ, where the forces act (θ is the generalized-α's αf). The θ-method's step moves q by h v_θ; the
         // generalized-α's by h[(1−γ)Q_n + γQ_{n+1}].
         for ((w, v), v_prev) in self.work.iter_mut().zip(&self.v).zip(&self.v_prev) {
@@ -330,6 +288,59 @@ impl MoreauJean {
         self.steps += 1;
         self.last_report = report;
         self.last_projection = projection;
+        Ok(report)
+    }
+
+    /// The step's start: the generalized-α's rates at the first step, and the update phase of a varying problem.
+    fn update_phase(&mut self, forcing: &dyn Forcing, t0: f64) -> Result<()> {
+        if let Some(rates) = self.rates.as_mut()
+            && rates.needs_start()
+        {
+            start_residual(&self.problem, forcing, t0, (&self.q, &self.v, &self.kq, &self.cv), &mut self.work);
+            rates.start(&self.work)?;
+        }
+        if self.problem.is_varying() {
+            // The update phase: moving rows and the step's law from (t_k, q_k, v_k), the warm start brought into
+            // the new bounds, the solver told of the new rows. The generalized-α's laws see its start velocity.
+            match self.rates.as_mut() {
+                Some(rates) => self.problem.update_from(self.time, &self.q, rates.start_velocity(&self.v), &self.v),
+                None => self.problem.update(self.time, &self.q, &self.v),
+            }
+            self.problem.clamp_to_bounds(&mut self.p);
+            if self.problem.has_moving() {
+                self.solver.refresh(&self.problem)?;
+            }
+        }
+        Ok(())
+    }
+
+    /// The impulse phase: the interaction problem at the free velocity solved (with Hertz contacts' Newton updates),
+    /// then v = v_free + M̂⁻¹Hᵀp written back; nothing to solve without interactions.
+    fn impulse_phase(&mut self, t1: f64) -> Result<StepReport> {
+        if self.problem.interactions.is_empty() {
+            return Ok(StepReport::default());
+        }
+        self.problem.interactions.velocities(&self.v, &mut self.u_free);
+        let mut report = self.solve_interactions(t1)?;
+        // Hertz contacts: Newton on their tangent, one more solve per update (docs/theory.md §9).
+        let mut newton = 0;
+        while newton < NEWTON_ITERATIONS && self.problem.newton_step(&self.p) {
+            self.solver.refresh(&self.problem)?;
+            let (iterations, fallback) = (report.iterations, report.fallback);
+            report = self.solve_interactions(t1)?;
+            report.iterations += iterations;
+            report.fallback = report.fallback.or(fallback);
+            newton += 1;
+        }
+        // Write back the solver's v when it formed it, else v = v_free + M̂⁻¹Hᵀp here.
+        let formed = match (&self.fallbacks, report.fallback) {
+            (Some(fallbacks), Some(_)) => fallbacks.velocity(&report),
+            _ => self.solver.velocity(),
+        };
+        match formed {
+            Some(v) => self.v.copy_from_slice(v),
+            None => self.problem.add_response(&self.p, &mut self.v, &mut self.work),
+        }
         Ok(report)
     }
 

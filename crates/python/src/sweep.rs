@@ -46,8 +46,8 @@ pub(crate) fn sweep(
     Ok((String::from_utf8_lossy(&csv).into_owned(), failed, warnings))
 }
 
-/// The sweep CSV's columns with their units: every sweep's, then those of a sweep with vehicles.
+/// The sweep CSV's columns with their units: every column a sweep may write ([`runner::every_csv_column`]).
 #[pyfunction]
 pub(crate) fn sweep_columns() -> Vec<(&'static str, &'static str)> {
-    runner::CSV_COLUMNS.iter().chain(&runner::VEHICLE_CSV_COLUMNS).map(|(n, u, _)| (*n, *u)).collect()
+    runner::every_csv_column().map(|(n, u, _)| (*n, *u)).collect()
 }

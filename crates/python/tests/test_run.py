@@ -272,6 +272,16 @@ def test_a_sweep_warns_what_a_run_at_its_speeds_warns():
     assert coarse and coarse[0] in sweep.warnings, (run.warnings, sweep.warnings)
 
 
+def test_every_sweep_column_has_its_unit_on_sleepers_too():
+    """The sleepers' columns (pad and ballast forces, the voided sleeper's lowest point) came without units: the
+    Python sweep listed only the base and vehicle columns."""
+    sweep = frictrack.sweep(EXAMPLES / "voided-sleeper.toml", [40.0], jobs=1)
+    assert {"max_pad_force", "max_ballast_force", "exception_lowest"} <= set(sweep.columns), sweep.columns
+    assert (sweep.units["max_pad_force"], sweep.units["max_ballast_force"]) == ("N", "N"), sweep.units
+    assert sweep.units["exception_lowest"] == "m", sweep.units
+    assert all(sweep.units[c] for c in sweep.columns), sweep.units
+
+
 def test_speeds_may_be_one_number_and_bad_speeds_name_themselves():
     """`stationary(speeds=200)` raised a bare TypeError ('int' object is not iterable)."""
     one = frictrack.stationary(None, speeds=200)

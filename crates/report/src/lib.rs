@@ -12,7 +12,7 @@
 //!   [`columns`]: one convention for the units of every column.
 //! - [`track_profile`]: a sample of a random rail profile with its periodogram against the target spectrum.
 //! - [`plot`] (with [`axis_grid`], [`typeset`] and the common figure shapes of [`figures`]): line plots as PNG and
-//!   SVG, drawn with plotters and a bundled DejaVu font.
+//!   SVG, drawn with plotters and a bundled DejaVu font. Colours by configuration in [`palette`].
 
 pub mod axis_grid;
 pub mod columns;
@@ -20,6 +20,7 @@ pub mod figures;
 pub mod files;
 pub mod mesh_ripple;
 pub mod output;
+pub mod palette;
 pub mod plot;
 pub mod result_warnings;
 pub mod run_folder;

@@ -256,7 +256,7 @@ impl RunSummary {
     /// "at 100.00 m/s (360 km/h)", or where the speed changes "from 100.00 to 80.00 m/s (braking at 2 m/s²)".
     pub fn speed_description(&self) -> String {
         match &self.speed_change {
-            None => format!("at {:.2} m/s ({:.0} km/h)", self.speed, self.speed * 3.6),
+            None => format!("at {:.2} m/s ({:.0} km/h)", self.speed, self.speed * scenario::units::KMH),
             Some(c) => {
                 let how = match c.acceleration {
                     Some(a) if a < 0.0 => format!("braking at {} m/s²", scenario::number::significant(-a, 6)),

@@ -138,35 +138,7 @@ fn write_vehicles(f: &mut Formatter<'_>, v: &crate::vehicle_output::VehicleRepor
         v.max_wheel_force / 1e3,
         v.max_dynamic_increment
     )?;
-    for w in v.wheels.iter().take(8) {
-        // A glued contact pulls instead of letting go: its negative force is tension, never a loss of contact.
-        let tension = if w.min_force < 0.0 {
-            format!(
-                " (in tension down to {:.1} kN: the glued contact pulls the wheel onto the rail)",
-                w.min_force / 1e3
-            )
-        } else {
-            String::new()
-        };
-        writeln!(
-            f,
-            "    wheel {:>2} (vehicle {}, {:.2} m behind): Q₀ {:.1} kN, Q {:.1} … {:.1} kN{tension}, rail under it \
-             {:.3} mm, {:.1} kN·m; {} {} of contact",
-            w.wheel,
-            w.vehicle,
-            w.offset,
-            w.static_force / 1e3,
-            w.min_force / 1e3,
-            w.max_force / 1e3,
-            w.max_rail_deflection * 1e3,
-            w.max_moment / 1e3,
-            w.losses_of_contact,
-            if w.losses_of_contact == 1 { "loss" } else { "losses" }
-        )?;
-    }
-    if v.wheels.len() > 8 {
-        writeln!(f, "    … {} more wheels in the JSON report and wheels.csv", v.wheels.len() - 8)?;
-    }
+    write_wheels(f, &v.wheels)?;
     for l in v.losses.iter().take(5) {
         let landing = l.landing_position.map_or("still flying at the end".to_string(), |x| {
             format!("landed at {x:.3} m after {:.2} ms, impact {:.1} kN", l.duration * 1e3, l.impact_force / 1e3)
@@ -206,6 +178,40 @@ fn write_vehicles(f: &mut Formatter<'_>, v: &crate::vehicle_output::VehicleRepor
              O(h))",
             v.projection_work
         )?;
+    }
+    Ok(())
+}
+
+/// The first eight wheels' lines: static and dynamic forces, the rail under each, its losses of contact.
+fn write_wheels(f: &mut Formatter<'_>, wheels: &[crate::vehicle_output::WheelReport]) -> fmt::Result {
+    for w in wheels.iter().take(8) {
+        // A glued contact pulls instead of letting go: its negative force is tension, never a loss of contact.
+        let tension = if w.min_force < 0.0 {
+            format!(
+                " (in tension down to {:.1} kN: the glued contact pulls the wheel onto the rail)",
+                w.min_force / 1e3
+            )
+        } else {
+            String::new()
+        };
+        writeln!(
+            f,
+            "    wheel {:>2} (vehicle {}, {:.2} m behind): Q₀ {:.1} kN, Q {:.1} … {:.1} kN{tension}, rail under it \
+             {:.3} mm, {:.1} kN·m; {} {} of contact",
+            w.wheel,
+            w.vehicle,
+            w.offset,
+            w.static_force / 1e3,
+            w.min_force / 1e3,
+            w.max_force / 1e3,
+            w.max_rail_deflection * 1e3,
+            w.max_moment / 1e3,
+            w.losses_of_contact,
+            if w.losses_of_contact == 1 { "loss" } else { "losses" }
+        )?;
+    }
+    if wheels.len() > 8 {
+        writeln!(f, "    … {} more wheels in the JSON report and wheels.csv", wheels.len() - 8)?;
     }
     Ok(())
 }
@@ -294,33 +300,7 @@ fn write_numbers(f: &mut Formatter<'_>, r: &RunSummary) -> fmt::Result {
         r.extremes.static_max_downward_deflection * 1e3,
         r.extremes.dynamic_amplification
     )?;
-    match r.extremes.max_acceleration.map(|a| (a, a.place())) {
-        Some((a, Some((x, t)))) => writeln!(
-            f,
-            "  max acceleration {:.3} m/s² at x = {x:.1} m, t = {t:.4} s (at the nodes, the step's mean)",
-            a.value
-        )?,
-        Some((_, None)) => writeln!(f, "  max acceleration none (the beam never moved)")?,
-        None => writeln!(
-            f,
-            "  max acceleration undefined at the nodes: a Timoshenko rail's acceleration under a passing point force \
-             grows without bound as the step shrinks{}",
-            if r.extremes.band_acceleration.is_some() { " (the band-limited one below is defined)" } else { "" }
-        )?,
-    }
-    if let Some(b) = &r.extremes.band_acceleration {
-        let place = b.extreme.place().map_or(String::new(), |(x, t)| format!(" at x = {x:.1} m, t = {t:.4} s"));
-        writeln!(
-            f,
-            "  band-limited acceleration {:.3} m/s²{place} (the {} mode{} up to {:.1} Hz: {} Hz; a deck's EN 1990 \
-             check value)",
-            b.extreme.value,
-            b.mode_frequencies.len(),
-            if b.mode_frequencies.len() == 1 { "" } else { "s" },
-            b.band,
-            b.mode_frequencies.iter().map(|f| format!("{f:.2}")).collect::<Vec<_>>().join(", ")
-        )?;
-    }
+    write_accelerations(f, r)?;
     writeln!(f, "  global norm W̄          {:>9.4} m²", r.extremes.global_norm)?;
     writeln!(
         f,
@@ -370,6 +350,39 @@ fn write_numbers(f: &mut Formatter<'_>, r: &RunSummary) -> fmt::Result {
             r.stepping.fallback_steps,
             r.stepping.steps,
             by.join(", ")
+        )?;
+    }
+    Ok(())
+}
+
+/// The largest acceleration at the nodes (undefined for a Timoshenko rail under a point force) and the
+/// band-limited one.
+fn write_accelerations(f: &mut Formatter<'_>, r: &RunSummary) -> fmt::Result {
+    match r.extremes.max_acceleration.map(|a| (a, a.place())) {
+        Some((a, Some((x, t)))) => writeln!(
+            f,
+            "  max acceleration {:.3} m/s² at x = {x:.1} m, t = {t:.4} s (at the nodes, the step's mean)",
+            a.value
+        )?,
+        Some((_, None)) => writeln!(f, "  max acceleration none (the beam never moved)")?,
+        None => writeln!(
+            f,
+            "  max acceleration undefined at the nodes: a Timoshenko rail's acceleration under a passing point force \
+             grows without bound as the step shrinks{}",
+            if r.extremes.band_acceleration.is_some() { " (the band-limited one below is defined)" } else { "" }
+        )?,
+    }
+    if let Some(b) = &r.extremes.band_acceleration {
+        let place = b.extreme.place().map_or(String::new(), |(x, t)| format!(" at x = {x:.1} m, t = {t:.4} s"));
+        writeln!(
+            f,
+            "  band-limited acceleration {:.3} m/s²{place} (the {} mode{} up to {:.1} Hz: {} Hz; a deck's EN 1990 \
+             check value)",
+            b.extreme.value,
+            b.mode_frequencies.len(),
+            if b.mode_frequencies.len() == 1 { "" } else { "s" },
+            b.band,
+            b.mode_frequencies.iter().map(|f| format!("{f:.2}")).collect::<Vec<_>>().join(", ")
         )?;
     }
     Ok(())

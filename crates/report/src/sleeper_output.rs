@@ -144,7 +144,7 @@ impl SleepersSummary {
             track_resonance: lumped.track,
             sleeper_on_ballast_resonance: lumped.sleeper_on_ballast,
             rail_on_pads_resonance: lumped.rail_on_pads,
-            pinned_pinned: fem_beam::dispersion::pinned_pinned(model.beam(), s.spacing),
+            pinned_pinned: analytic::dispersion::pinned_pinned(model.beam(), s.spacing),
             unilateral: placed.count(SectionKind::SleeperBallast),
             sliders: placed.count(SectionKind::SleeperFriction),
             slider_force: (0..nodes.len()).map(|i| s.support(i).friction).sum(),

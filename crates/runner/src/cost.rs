@@ -217,8 +217,9 @@ impl Estimate {
         let nonsmooth =
             problem.friction.force_per_length > 0.0 || problem.foundation.law == fem_beam::FoundationLaw::Tensionless;
         let (beam, foundation) = (&problem.beam, &problem.foundation);
-        // v_cr of the closed form; 0 without a soil (every speed supercritical), as the formula gives.
-        let critical = fem_beam::reference::InfiniteBeam::new(beam, foundation).map_or(0.0, |b| b.critical_speed());
+        // v_cr of the rail as it is (Timoshenko's below Euler–Bernoulli's); 0 without a soil (every speed
+        // supercritical), as the formula gives.
+        let critical = analytic::MovingBeam::new(beam, foundation).map_or(0.0, |b| b.critical_speed());
         let per_node = |v: f64| match (nonsmooth, v >= critical) {
             (false, _) => STATIONARY_SMOOTH_PER_NODE,
             (true, false) => STATIONARY_NONSMOOTH_PER_NODE,

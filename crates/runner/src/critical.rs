@@ -42,7 +42,7 @@ impl CriticalSpeed {
             PeakLocation::Interior => format!(
                 "critical speed {:.2} m/s ({:.0} km/h): {peak} (sweep maximum {:.2} mm at {} m/s, {} refinement runs)",
                 self.speed,
-                self.speed * 3.6,
+                self.speed * scenario::units::KMH,
                 self.sweep_maximum.1 * 1e3,
                 self.sweep_maximum.0,
                 self.evaluations.len()

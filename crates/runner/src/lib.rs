@@ -22,7 +22,6 @@ pub mod shard;
 pub mod sleeper_columns;
 
 pub use critical::{CriticalSpeed, critical_speed};
-pub use fem_beam::golden::golden_section;
 pub use journal::Journal;
 pub use optimal_force::{OptimalForce, log_spaced, optimal_device_force, refine_device_force, refine_from_scan};
 pub use peak::{Metric, PeakLocation, RefinedPeak, refine_maximum, refinement_runs, unrefined};
@@ -244,6 +243,11 @@ pub fn csv_columns_of(
 ) -> impl Iterator<Item = &'static (&'static str, &'static str, &'static str)> {
     let band = scenario.acceleration_band().is_ok_and(|b| b.is_some());
     csv_columns(scenario.vehicle.is_some(), scenario.sleepers.is_some(), band)
+}
+
+/// Every column a sweep's CSV may hold (name, unit, meaning), whatever the scenario: the units of any sweep's file.
+pub fn every_csv_column() -> impl Iterator<Item = &'static (&'static str, &'static str, &'static str)> {
+    csv_columns(true, true, true)
 }
 
 /// The columns of a sweep's CSV (name, unit, meaning): [`CSV_COLUMNS`], then [`VEHICLE_CSV_COLUMNS`] for a sweep of

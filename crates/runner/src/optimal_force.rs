@@ -2,7 +2,7 @@
 //! section in log F_u around the best scanned force (docs/theory.md §7).
 
 use super::Runner;
-use fem_beam::golden::golden_section;
+use analytic::golden::golden_section;
 use scenario::Scenario;
 use scenario::error::{Result, invalid};
 use serde::Serialize;

@@ -10,7 +10,7 @@
 //! whole bracket. A maximum at the first or last speed is no interior peak: it is returned unrefined, as a bound.
 
 use super::{Runner, SweepPoint};
-use fem_beam::golden::golden_section;
+use analytic::golden::refine_peak;
 use scenario::Case;
 use scenario::error::{Result, invalid};
 use serde::Serialize;
@@ -107,7 +107,7 @@ pub fn unrefined(sweep: &[SweepPoint], metric: Metric) -> Option<RefinedPeak> {
 pub fn refinement_runs(step: f64, tolerance: f64, scan: usize) -> usize {
     let bracket = 2.0 * step;
     let golden = if scan > 0 { 2.0 * bracket / (scan + 1) as f64 } else { bracket };
-    scan + fem_beam::golden::golden_section_evaluations(golden, tolerance)
+    scan + analytic::golden::golden_section_evaluations(golden, tolerance)
 }
 
 /// Refine the sweep's maximum of `metric` to `tolerance` (m/s) on fresh runs of `case` (see the module
@@ -161,9 +161,9 @@ pub fn refine_maximum(
         hi = samples[(top + 1).min(samples.len() - 1)].0;
     }
     let resolution = tolerance.min(hi - lo);
-    let (speed, value) = golden_section(&mut run, lo, hi, tolerance, true)?;
-    // The refinement never reports less than it has seen, sweep and scan included.
-    let seen = evaluations.iter().map(|p| (p.speed, metric.of(p))).chain(std::iter::once(sweep_maximum));
-    let (speed, value) = seen.fold((speed, value), |best, s| if s.1 > best.1 { s } else { best });
+    let refined = refine_peak(&mut run, (lo, hi), sweep_maximum, tolerance)?;
+    // The refinement never reports less than it has seen, the scan included.
+    let seen = evaluations.iter().map(|p| (p.speed, metric.of(p)));
+    let (speed, value) = seen.fold(refined, |best, s| if s.1 > best.1 { s } else { best });
     Ok(RefinedPeak { location: PeakLocation::Interior, range, speed, value, sweep_maximum, evaluations, resolution })
 }

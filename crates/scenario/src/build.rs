@@ -254,10 +254,10 @@ impl Scenario {
     /// The scenario's beam, foundation (with its damping), mesh, supports and load force as the closed-form
     /// reference case (`frictrack reference` and `analytic` on a scenario); on sleepers their long-wave continuous
     /// twin ([`Scenario::uniform_support`]).
-    pub fn reference_case(&self) -> Result<fem_beam::reference::ReferenceCase> {
+    pub fn reference_case(&self) -> Result<analytic::reference::ReferenceCase> {
         finite_non_negative("load.force", self.load.force, "N")?;
         let model = self.uniform_support("the closed form")?.0.model()?;
-        Ok(fem_beam::reference::ReferenceCase {
+        Ok(analytic::reference::ReferenceCase {
             beam: *model.beam(),
             foundation: *model.foundation(),
             mesh: *model.mesh(),

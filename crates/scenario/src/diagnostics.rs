@@ -13,8 +13,8 @@
 use crate::error::{Result, invalid};
 pub use crate::warning::Warning;
 use crate::{Case, Scenario};
-use fem_beam::reference::InfiniteBeam;
-use fem_beam::span::SimplySupportedSpan;
+use analytic::reference::InfiniteBeam;
+use analytic::span::SimplySupportedSpan;
 use fem_beam::{BeamModel, Support};
 use track::SectionKind;
 use track::vehicle::wheel_rail::WheelRail;
@@ -273,7 +273,7 @@ pub const ELEMENTS_PER_BAY: usize = 4;
 pub const PINNED_PINNED_TOLERANCE: f64 = 0.01;
 
 /// The pinned–pinned resonance as `per_bay` elements of `beam` give it — the first mode of one bay `spacing` m long
-/// pinned at both ends, against the rail's own ([`fem_beam::dispersion::pinned_pinned`]) — warned about beyond
+/// pinned at both ends, against the rail's own ([`analytic::dispersion::pinned_pinned`]) — warned about beyond
 /// [`PINNED_PINNED_TOLERANCE`]. Hermite elements converge as O(h⁴) (UIC60 at a = 0.6 m: +0.39 % at two a bay, +0.03 %
 /// at four); the Timoshenko element as O(h²) (κ = 0.4: +4.1 % at two, +1.0 % at four, +0.25 % at eight), so the
 /// elements it needs are estimated as per_bay·√(error/tolerance).
@@ -282,7 +282,7 @@ fn meshed_pinned_pinned(beam: &fem_beam::Beam, spacing: f64, per_bay: usize, mes
     let bay = Mesh::new(spacing, per_bay.max(1)).ok()?;
     let model = BeamModel::new(*beam, Foundation::linear(0.0, 0.0), bay, Supports::both(Support::Pinned)).ok()?;
     let meshed = model.natural_frequencies(1).ok()?.first()? / std::f64::consts::TAU;
-    let exact = fem_beam::dispersion::pinned_pinned(beam, spacing);
+    let exact = analytic::dispersion::pinned_pinned(beam, spacing);
     let error = meshed / exact - 1.0;
     if error.abs() <= PINNED_PINNED_TOLERANCE {
         return None;
@@ -333,7 +333,7 @@ pub fn sleeper_resolution(case: &Case) -> Vec<Warning> {
     let frequencies: Vec<(&str, f64)> = [
         ("the sleeper passing frequency v/a", speed / sleepers.spacing),
         ("the rail on its pads (a bay lumped)", lumped.rail_on_pads),
-        ("the pinned–pinned resonance", fem_beam::dispersion::pinned_pinned(model.beam(), sleepers.spacing)),
+        ("the pinned–pinned resonance", analytic::dispersion::pinned_pinned(model.beam(), sleepers.spacing)),
     ]
     .into_iter()
     .chain(body)

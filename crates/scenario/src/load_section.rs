@@ -3,7 +3,7 @@
 
 use super::sections::{AxleSection, PatchSection};
 use crate::error::{Result, invalid};
-use fem_beam::reference::uic60_on_soft_soil;
+use analytic::reference::uic60_on_soft_soil;
 use serde::{Deserialize, Serialize};
 use track::simulation::MovingLoadSettings;
 

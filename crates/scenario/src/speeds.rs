@@ -11,6 +11,7 @@
 
 use crate::error::Result;
 use crate::{Scenario, SweepSection};
+use analytic::MovingBeam;
 
 /// The most speeds one sweep, stationary solve or closed-form table takes, from the command line, a scenario's
 /// `[sweep]` or Python: a million runs of even a 10 ms case are ~3 h on all cores of a workstation.
@@ -40,20 +41,15 @@ const STEPS_TO_CRITICAL: f64 = 20.557;
 const TOP_OVER_CRITICAL: f64 = 1.46;
 
 impl SpeedScale {
-    /// The scale of `scenario` (its beam and foundation stiffness).
-    /// On sleepers, the equivalent continuous track's ([`fem_beam::Sleepers::equivalent_track`]: the sleepers' mass
-    /// on the rail, pads and ballast in series spread over a spacing, beside the soil).
+    /// The scale of `scenario`: the critical speed of its track ([`MovingBeam::of_track`]: the rail as it is, on
+    /// sleepers their long-wave twin), none on a beam without any support (k_f = 0, no sleepers).
     pub fn of(scenario: &Scenario) -> Result<Self> {
-        let (beam, stiffness) = match &scenario.sleepers {
-            Some(s) => s.sleepers()?.equivalent_track(&scenario.beam, scenario.foundation.stiffness),
-            None => (scenario.beam, scenario.foundation.stiffness),
-        };
-        if stiffness <= 0.0 {
+        if scenario.sleepers.is_none() && scenario.foundation.stiffness <= 0.0 {
             return Ok(Self { critical_speed: None, step: 10.0 });
         }
-        let foundation = fem_beam::Foundation::linear(stiffness, 0.0);
-        // The closed form for Euler–Bernoulli, the least phase velocity of the bending waves for Timoshenko.
-        let critical = fem_beam::dispersion::critical_speed(&beam, &foundation)?;
+        let sleepers = scenario.sleepers.as_ref().map(|s| s.sleepers()).transpose()?;
+        let foundation = fem_beam::Foundation::linear(scenario.foundation.stiffness, 0.0);
+        let critical = MovingBeam::of_track(&scenario.beam, &foundation, sleepers.as_ref())?.critical_speed();
         Ok(Self { critical_speed: Some(critical), step: nice(critical / STEPS_TO_CRITICAL) })
     }
 

@@ -5,7 +5,7 @@
 //! EI r⁴ + ρA v² r² − c_f v r + k = 0,
 //! ```
 //!
-//! or the Timoshenko beam's (`fem_beam::moving_timoshenko`) — and only the decaying ones may appear: Re r < 0 ahead
+//! or the Timoshenko beam's (`analytic::moving_timoshenko`) — and only the decaying ones may appear: Re r < 0 ahead
 //! of the load (s → +∞), Re r > 0 behind it. Each mode carries the rotation DOF θ = β(r) W (β = r, the slope, for
 //! Euler–Bernoulli; the cross-section's Ψ = κGA r/(κGA + D r²) W for Timoshenko, D = ρIv² − EI), so the two kept
 //! modes' amplitudes follow from an end's values U = W − W_far and θ, and with them what the end's boundary terms
@@ -21,8 +21,7 @@
 //! wave — refused.
 
 use crate::error::{Result, StationaryError};
-use fem_beam::moving_timoshenko::MovingTimoshenko;
-use fem_beam::reference::InfiniteBeam;
+use analytic::MovingBeam;
 use fem_beam::{Beam, FemError, Foundation};
 use num_complex::Complex64;
 
@@ -130,8 +129,8 @@ pub struct FarField {
 
 impl FarField {
     /// The relations for `beam` on a far-field soil of damping `damping` (N·s/m²) and stiffness `stiffness` (N/m², > 0)
-    /// at speed `speed` (m/s): the decaying roots of the infinite beam's quartic — Euler–Bernoulli's
-    /// ([`InfiniteBeam::steady_state`]) or Timoshenko's ([`MovingTimoshenko::decaying_wavenumbers`]).
+    /// at speed `speed` (m/s): the decaying roots of the moving-frame beam and the rotation each carries
+    /// ([`MovingBeam::decaying_wavenumbers`], [`MovingBeam::rotation_per_deflection`]).
     pub fn new(beam: &Beam, damping: f64, stiffness: f64, speed: f64) -> Result<Self> {
         let foundation = Foundation::linear(stiffness, damping);
         let no_condition = |e: FemError| match e {
@@ -140,29 +139,11 @@ impl FarField {
         };
         let rho_v2 = beam.mass_per_length() * speed * speed;
         let d = beam.rotary_inertia() * speed * speed - beam.bending_stiffness();
-        let end = |roots: [Complex64; 4], i: usize, beta: &dyn Fn(Complex64) -> (Complex64, Complex64)| {
-            EndRelation::new([roots[i], roots[i + 1]], beta, rho_v2, d)
-        };
-        let (ahead, behind) = match beam.shear_stiffness() {
-            None => {
-                // The roots are the infinite beam's (fem_beam::reference), in ξ = βs: r_s = β r_ξ; θ = W′.
-                let infinite = InfiniteBeam::new(beam, &foundation)?;
-                let state = infinite.steady_state(speed, 1.0).map_err(no_condition)?;
-                let roots = state.roots().map(|r| r * infinite.beta());
-                let slope = |r: Complex64| (r, Complex64::new(1.0, 0.0));
-                (end(roots, 0, &slope), end(roots, 2, &slope))
-            }
-            Some(g) => {
-                let moving = MovingTimoshenko::new(beam, &foundation)?;
-                let roots = moving.decaying_wavenumbers(speed).map_err(no_condition)?;
-                // β = G r/(G + D r²), dβ/dr = G (G − D r²)/(G + D r²)².
-                let rotation = |r: Complex64| {
-                    let denominator = r * r * d + g;
-                    (moving.rotation_per_deflection(r, speed), (-(r * r * d) + g) * g / (denominator * denominator))
-                };
-                (end(roots, 0, &rotation), end(roots, 2, &rotation))
-            }
-        };
+        let moving = MovingBeam::new(beam, &foundation)?;
+        let roots = moving.decaying_wavenumbers(speed).map_err(no_condition)?;
+        let rotation = |r: Complex64| moving.rotation_per_deflection(r, speed);
+        let end = |i: usize| EndRelation::new([roots[i], roots[i + 1]], rotation, rho_v2, d);
+        let (ahead, behind) = (end(0), end(2));
         Ok(Self { ahead, behind })
     }
 }
@@ -208,7 +189,8 @@ mod tests {
             theory: fem_beam::BeamTheory::Timoshenko { shear_modulus: 81e9, shear_coefficient: 0.4 },
             ..Beam::default()
         };
-        let moving = MovingTimoshenko::new(&beam, &Foundation::linear(250e3, 774.0)).unwrap();
+        let moving =
+            analytic::moving_timoshenko::MovingTimoshenko::new(&beam, &Foundation::linear(250e3, 774.0)).unwrap();
         for v in [0.0, 50.0, 200.0, 400.0] {
             let far = FarField::new(&beam, 774.0, 250e3, v).unwrap();
             let p = moving.characteristic(v);

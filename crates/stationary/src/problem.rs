@@ -1,9 +1,8 @@
 //! What a stationary wave is asked of: the track (beam and soil), the load and its speed, and the moving domain.
 
 use crate::error::{Result, StationaryError, invalid};
+use analytic::MovingBeam;
 use fem_beam::distributed::Quadrature;
-use fem_beam::moving_timoshenko::MovingTimoshenko;
-use fem_beam::reference::InfiniteBeam;
 use fem_beam::{Beam, DistributedFriction, Foundation, GRAVITY};
 
 /// The domain in moving coordinates s = x − vt (m): from `behind` m behind the load to `ahead` m ahead, in
@@ -100,10 +99,8 @@ impl StationaryProblem {
         if !(self.load.is_finite() && self.load >= 0.0) {
             return Err(invalid("load", self.load, "must be finite and ≥ 0 (N, downward)"));
         }
-        // Euler–Bernoulli's bar wave, a Timoshenko rail's shear wave √(κGA/ρA) (slower): the moving-frame
-        // equations change type at it.
-        let bar_wave = (self.beam.youngs_modulus / self.beam.density).sqrt();
-        let limit = self.beam.shear_stiffness().map_or(bar_wave, |g| (g / self.beam.mass_per_length()).sqrt());
+        // The moving-frame equations change type at the bar wave (Euler–Bernoulli) or the shear wave (Timoshenko).
+        let limit = self.beam.wave_speed_limit();
         if !(self.speed.is_finite() && self.speed >= 0.0 && self.speed < limit) {
             return Err(invalid("speed", self.speed, format!("must lie in [0, {limit:.0}) m/s")));
         }
@@ -119,17 +116,14 @@ impl StationaryProblem {
     }
 
     /// The shortest length (m) the track's waves vary on at this speed: 1/|r|ₘₐₓ over the wavenumbers r of the
-    /// moving-frame equation EI r⁴ + ρA v² r² − c_f v r + k = 0 ([`InfiniteBeam::wavenumbers`]) of the soil pressed
+    /// moving-frame equation EI r⁴ + ρA v² r² − c_f v r + k = 0 ([`MovingBeam::wavenumbers`]) of the soil pressed
     /// (k = k_c) and, on a nonlinear soil, where the rail lifts (k = k_t; on a tensionless soil the free rail's
     /// r = ±i v√(ρA/EI)). 2.25 m for the reference track at rest (√2 β = 0.444 m⁻¹).
     pub fn shortest_length(&self) -> Result<f64> {
         let f = &self.foundation;
         let largest = |stiffness: f64| -> Result<f64> {
             let soil = Foundation::linear(stiffness, f.damping);
-            let r = match self.beam.shear_stiffness() {
-                None => InfiniteBeam::new(&self.beam, &soil)?.wavenumbers(self.speed),
-                Some(_) => MovingTimoshenko::new(&self.beam, &soil)?.wavenumbers(self.speed),
-            };
+            let r = MovingBeam::new(&self.beam, &soil)?.wavenumbers(self.speed);
             Ok(r.iter().map(|r| r.norm()).fold(0.0, f64::max))
         };
         let mut fastest = largest(f.stiffness)?;

@@ -2,9 +2,9 @@
 //! wave, huge friction holds the rail still, the power balance closes, friction holds at most f_u/k behind the load,
 //! and continuation in speed converges at every speed of a sweep through the critical speed.
 
+use analytic::reference::uic60_on_soft_soil;
 use fem_beam::DistributedFriction;
 use fem_beam::distributed::Quadrature;
-use fem_beam::reference::uic60_on_soft_soil;
 use fem_beam::{Foundation, FoundationLaw};
 use stationary::{ContactGuess, Domain, StationaryProblem, StationaryWave, solve, solve_from};
 

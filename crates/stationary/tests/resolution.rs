@@ -1,8 +1,8 @@
 //! The stationary solver's mesh: elements that cannot resolve the wave are refused with the limit, and the peaks'
 //! discretisation error estimated from one halving of the elements bounds the true error (docs/theory.md §14).
 
+use analytic::reference::uic60_on_soft_soil;
 use fem_beam::DistributedFriction;
-use fem_beam::reference::uic60_on_soft_soil;
 use fem_beam::{Foundation, FoundationLaw};
 use stationary::{Domain, StationaryError, StationaryProblem, solve, solve_halved};
 

@@ -1,8 +1,8 @@
 //! The stationary solver against the closed forms and its own limits (docs/theory.md §14).
 
+use analytic::reference::{InfiniteBeam, uic60_on_soft_soil};
+use analytic::tensionless::TensionlessPointLoad;
 use fem_beam::DistributedFriction;
-use fem_beam::reference::{InfiniteBeam, uic60_on_soft_soil};
-use fem_beam::tensionless::TensionlessPointLoad;
 use fem_beam::{Foundation, FoundationLaw};
 use stationary::{ContactGuess, Convergence, Domain, StationaryProblem, solve, solve_from};
 
@@ -73,7 +73,7 @@ fn a_soil_the_rail_never_leaves_is_the_linear_soil() {
 }
 
 /// The static tensionless case without self-weight (v = 0): contact over π/β, the peak deflection and moment
-/// coth(π/2) times the linear beam's — the closed form of fem_beam::tensionless.
+/// coth(π/2) times the linear beam's — the closed form of analytic::tensionless.
 #[test]
 fn at_rest_without_weight_the_tensionless_wave_is_the_closed_form() {
     let case = uic60_on_soft_soil();

@@ -1,10 +1,10 @@
 //! The stationary wave of a Timoshenko rail (docs/theory.md §14, §16) against the residues of its own quartic
-//! (`fem_beam::moving_timoshenko`), an independent closed form: on a stiff soil, where shear and rotary inertia move
+//! (`analytic::moving_timoshenko`), an independent closed form: on a stiff soil, where shear and rotary inertia move
 //! the wave by a per cent or more from Euler–Bernoulli's, and on the reference soil's nonlinear and frictional
 //! variants, whose power balance must close.
 
-use fem_beam::moving_timoshenko::MovingTimoshenko;
-use fem_beam::reference::{InfiniteBeam, uic60_on_soft_soil};
+use analytic::moving_timoshenko::MovingTimoshenko;
+use analytic::reference::{InfiniteBeam, uic60_on_soft_soil};
 use fem_beam::{Beam, BeamTheory, DistributedFriction, Foundation, FoundationLaw};
 use stationary::{Domain, StationaryProblem, StationaryWave, solve};
 

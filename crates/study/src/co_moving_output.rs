@@ -3,7 +3,7 @@
 //! summarised. Deflections (m, from the settled rail, magnitudes for peaks), positions s = x − x_load (m), energies
 //! (J).
 
-use fem_beam::reference::InfiniteBeam;
+use analytic::MovingBeam;
 use fem_beam::{AbsorbingZones, BeamModel, Extreme, Foundation, Mesh, Support, Supports};
 use nscd::EnergyBalance;
 use scenario::error::{Result, invalid};
@@ -85,7 +85,7 @@ pub fn window(scenario: &Scenario, section: &CoMovingSection) -> Result<(BeamMod
     // The 1 % decay lengths of the linear wave behind and ahead of the load (None where no linear wave decays:
     // undamped at or above v_cr, or without a foundation).
     let reach = (foundation.stiffness > 0.0)
-        .then(|| InfiniteBeam::new(model.beam(), &foundation).and_then(|i| i.steady_state(scenario.load.speed, 1.0)))
+        .then(|| MovingBeam::new(model.beam(), &foundation).and_then(|i| i.steady_state(scenario.load.speed, 1.0)))
         .and_then(std::result::Result::ok)
         .map(|state| {
             let (rate_ahead, rate_behind) = state.decay_rates();

@@ -2,9 +2,9 @@
 //! between the grid's frequencies; a mesh that does not resolve the bending waves at the top frequency; waves that
 //! reach the track's ends and come back.
 
+use analytic::dispersion::wavenumbers;
+use analytic::golden::refine_peak;
 use fem_beam::BeamModel;
-use fem_beam::dispersion::wavenumbers;
-use fem_beam::golden::golden_section;
 use num_complex::Complex64;
 use scenario::error::Result;
 use serde::Serialize;
@@ -58,7 +58,7 @@ pub fn resonances(points: &[(f64, f64)], magnitude: impl Fn(f64) -> Result<f64>)
             continue;
         }
         let (a, b) = (points[i - 1].0, points[i + 1].0);
-        let (frequency, magnitude) = golden_section(&mut |f| magnitude(f), a, b, 1e-6 * b, true)?;
+        let (frequency, magnitude) = refine_peak(&mut |f| magnitude(f), (a, b), points[i], 1e-6 * b)?;
         out.push(Resonance { frequency, magnitude, prominence: magnitude / floor, name: None });
     }
     Ok(out)
@@ -68,7 +68,7 @@ pub fn resonances(points: &[(f64, f64)], magnitude: impl Fn(f64) -> Result<f64>)
 /// from the estimate to take its name: the rail bouncing on a continuous foundation, √(k_f/ρA)/2π; on sleepers the
 /// bay's lumped resonances ([`fem_beam::Sleepers::bay_resonances`]: the track on the ballast (on the subgrade, with
 /// the sleeper on the ballast above it, where the ballast is a body), the rail on its pads — lumped, they miss the rail's bending by up to ~20 %: a factor 1.5) and the pinned–pinned one
-/// ([`fem_beam::dispersion::pinned_pinned`], within 1 % at mid-span: 10 %, so that the peak beside the dip above a
+/// ([`analytic::dispersion::pinned_pinned`], within 1 % at mid-span: 10 %, so that the peak beside the dip above a
 /// sleeper, ~20 % higher, is not taken for it).
 pub fn known_resonances(model: &BeamModel) -> Vec<(&'static str, f64, f64)> {
     let rho_a = model.beam().mass_per_length();
@@ -87,7 +87,7 @@ pub fn known_resonances(model: &BeamModel) -> Vec<(&'static str, f64, f64)> {
             }
         }
         out.push(("rail on its pads", bay.rail_on_pads, 1.5));
-        out.push(("pinned–pinned", fem_beam::dispersion::pinned_pinned(model.beam(), s.spacing), 1.1));
+        out.push(("pinned–pinned", analytic::dispersion::pinned_pinned(model.beam(), s.spacing), 1.1));
     }
     out
 }

@@ -74,7 +74,7 @@ impl ReferenceCheck {
         }
         let case = scenario.reference_case()?;
         let model = case.model()?;
-        let inf = fem_beam::infinite_track::InfiniteTrack::new(&case.beam, &case.foundation)?;
+        let inf = analytic::moving_beam::MovingBeam::new(&case.beam, &case.foundation)?;
         let mid = case.mesh.length / 2.0;
         let load = LoadVector::point_force(&model.discretisation(), mid, -case.load)?;
         let q = model.static_solve(&load)?;
@@ -111,7 +111,7 @@ impl ReferenceCheck {
                 .map(|(i, &w)| ModeCheck {
                     n: i + 1,
                     omega: w,
-                    omega_closed_form: fem_beam::dispersion::pinned_natural_frequency(
+                    omega_closed_form: analytic::dispersion::pinned_natural_frequency(
                         &case.beam,
                         case.foundation.stiffness,
                         case.mesh.length,

@@ -46,7 +46,12 @@ impl Output for ReferenceReport {
             r.midspan_moment / 1e3,
             r.midspan_moment_closed_form / 1e3
         )?;
-        writeln!(f, "critical speed v_cr = {:.2} m/s ({:.0} km/h)", r.critical_speed, r.critical_speed * 3.6)?;
+        writeln!(
+            f,
+            "critical speed v_cr = {:.2} m/s ({:.0} km/h)",
+            r.critical_speed,
+            r.critical_speed * scenario::units::KMH
+        )?;
         writeln!(f, "natural circular frequencies (pinned beam)     FE            closed form")?;
         for m in &r.modes {
             writeln!(

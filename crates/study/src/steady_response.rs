@@ -2,8 +2,8 @@
 //! loads (docs/theory.md §8, §10): at each speed the largest downward and upward deflections and where they sit in
 //! the moving frame, and their amplification over the static response of the same loads.
 
-use fem_beam::infinite_track::InfiniteTrack;
-use fem_beam::reference::SteadyExtremes;
+use analytic::moving_beam::MovingBeam;
+use analytic::reference::SteadyExtremes;
 use fem_beam::{Extreme, Foundation, Train};
 use scenario::Scenario;
 use scenario::error::{Result, invalid};
@@ -31,7 +31,7 @@ pub struct SteadyResponse {
     /// The foundation used (its damping from the given ratio, if one was given).
     pub foundation: Foundation,
     /// The infinite track of the scenario's beam (either rail theory) on that foundation.
-    pub beam: InfiniteTrack,
+    pub beam: MovingBeam,
     /// The rail the closed form took: the scenario's, on sleepers their long-wave twin's (the sleepers' moving mass
     /// on it, [`Scenario::uniform_support`]).
     pub rail: fem_beam::Beam,
@@ -55,7 +55,7 @@ impl SteadyResponse {
             Some(ratio) => case.foundation.with_damping_ratio(ratio, &case.beam)?,
             None => case.foundation,
         };
-        let beam = InfiniteTrack::new(&case.beam, &foundation)?;
+        let beam = MovingBeam::new(&case.beam, &foundation)?;
         if scenario.vehicle.is_some() {
             return Err(invalid(
                 "vehicle",

@@ -29,7 +29,7 @@ fn on_a_span_the_critical_speeds_are_the_resonance_speeds() {
     // The structure's f₁ (FE eigenproblem, 40 cubic elements) against the closed form of the span: the FE error
     // of mode 1 is O((L/N)⁴), about 1e-7 here; 1e-5 leaves room for the dense eigensolver's round-off.
     let model = base.model().unwrap();
-    let span = fem_beam::span::SimplySupportedSpan::new(model.beam(), 0.0, 20.0).unwrap();
+    let span = analytic::span::SimplySupportedSpan::new(model.beam(), 0.0, 20.0).unwrap();
     let f1 = number(&summary["natural_frequencies"][0]);
     assert!((f1 / span.frequency(1) - 1.0).abs() < 1e-5, "f1 = {f1} vs {}", span.frequency(1));
 
@@ -58,6 +58,15 @@ fn on_a_span_the_critical_speeds_are_the_resonance_speeds() {
         assert!(daf > 1.5, "HSLM-A{} at resonance: DAF {daf}", k + 1);
     }
 
+    the_envelopes_and_verdicts_hold(&data, summary);
+    the_train_figures_are_told_apart(&data);
+    // A deck carries whole axles, and the study says so.
+    assert_eq!(summary["axle_share"]["carries"], "whole-axle");
+}
+
+/// The envelope and the critical train against the CSV and the per-train summaries; the deck check's verdicts.
+fn the_envelopes_and_verdicts_hold(data: &study::presets::StudyData, summary: &serde_json::Value) {
+    let curves = summary["curves"].as_array().unwrap();
     // The envelope and the critical train, recomputed from the CSV and the per-train summaries. Each train runs the
     // 15 common speeds and its resonance speeds f₁·D/i inside the range.
     let rows: Vec<Vec<String>> = data.csv.lines().skip(1).map(|l| l.split(',').map(str::to_string).collect()).collect();
@@ -105,6 +114,10 @@ fn on_a_span_the_critical_speeds_are_the_resonance_speeds() {
     assert!(data.lines.iter().any(|l| l.starts_with("HSLM-A2 ") && l.contains("deck check FAILS")));
     assert!(data.headline[0].contains("7 of the ten trains fail"), "{}", data.headline[0]);
     assert_eq!(data.plots.len(), 6);
+}
+
+/// The HSLM figures' trains in ten hues, the even ones dashed, the acceleration figures with their limit.
+fn the_train_figures_are_told_apart(data: &study::presets::StudyData) {
     // The per-train figures draw the ten trains in ten hues, the even ones dashed (A9 no longer hidden under A10);
     // the acceleration ones the EN 1990 limit beside them, and their axis names the band the deck acceleration is
     // taken in (max(30, 1.5 f₁, f₃) = f₃ = 93.5 Hz).
@@ -121,8 +134,6 @@ fn on_a_span_the_critical_speeds_are_the_resonance_speeds() {
             assert!(limit && spec.y_label.contains("modes ≤ 93.5 Hz"), "{}: {}", spec.stem, spec.y_label);
         }
     }
-    // A deck carries whole axles, and the study says so.
-    assert_eq!(summary["axle_share"]["carries"], "whole-axle");
 }
 
 /// Every reported maximum is refined to its true peak at the default (coarse) resolution: the study's critical

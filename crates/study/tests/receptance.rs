@@ -1,7 +1,7 @@
 //! The track's receptance from a scenario: its resonance against the infinite beam's (an independent method: the
 //! residues of its Fourier integral), the doubts it warns about, bad requests named.
 
-use fem_beam::dispersion::point_receptance;
+use analytic::dispersion::point_receptance;
 use num_complex::Complex64;
 use runner::Runner;
 use scenario::Scenario;
@@ -137,7 +137,7 @@ fn a_ballast_body_adds_the_sleeper_on_the_ballast() {
         ("track on the subgrade", lumped.track, 0.15),
         ("sleeper on the ballast", lumped.sleeper_on_ballast.unwrap(), 0.15),
         ("rail on its pads", lumped.rail_on_pads, 0.15),
-        ("pinned–pinned", fem_beam::dispersion::pinned_pinned(model.beam(), 0.6), 0.01),
+        ("pinned–pinned", analytic::dispersion::pinned_pinned(model.beam(), 0.6), 0.01),
     ];
     for (name, estimate, tolerance) in expected {
         let found = result.resonances.iter().find(|r| r.name == Some(name));

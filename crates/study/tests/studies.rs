@@ -111,7 +111,7 @@ fn refined_linear_critical_speed() {
     let speeds: Vec<f64> = (0..=11).map(|i| 150.0 + 10.0 * i as f64).collect();
     let sweep = Runner::new(0).unwrap().speed_sweep(&case, &speeds).unwrap();
     let critical = critical_speed(&case, &sweep, 0.05, &Runner::new(0).unwrap()).unwrap();
-    let v_cr = fem_beam::reference::uic60_on_soft_soil().infinite_beam().unwrap().critical_speed();
+    let v_cr = analytic::reference::uic60_on_soft_soil().infinite_beam().unwrap().critical_speed();
     eprintln!(
         "critical speed {:.2} m/s, peak {:.4} m (sweep max at {:?}), {} refinement runs",
         critical.speed,

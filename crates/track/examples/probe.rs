@@ -4,7 +4,7 @@
 //! an element count (200 m beam; default 200) and a speed (m/s; default 200). Prints the wall time of the time
 //! loop, the solver statistics and the peak resident memory of the process (VmHWM, Linux).
 
-use fem_beam::reference::uic60_on_soft_soil;
+use analytic::reference::uic60_on_soft_soil;
 use track::PlacedInteractions;
 use track::{BallastOnBeam, Devices, DistributedFriction};
 use track::{RunSettings, Simulation};

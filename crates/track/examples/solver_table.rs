@@ -4,7 +4,7 @@
 //! `cargo run --release -p track --example solver_table -- [steps]` (default: the whole 2000-step run). A solver
 //! that fails a step (unconverged within its iteration cap) is reported with the step where it stopped.
 
-use fem_beam::reference::uic60_on_soft_soil;
+use analytic::reference::uic60_on_soft_soil;
 use nscd::SolverKind;
 use track::PlacedInteractions;
 use track::{BallastOnBeam, Devices, DistributedFriction};

@@ -4,7 +4,7 @@
 //! allocator sees nothing else.
 #![allow(unsafe_code)]
 
-use fem_beam::reference::uic60_on_soft_soil;
+use analytic::reference::uic60_on_soft_soil;
 use nscd::MoreauJean;
 use nscd::solver::{SolverKind, SolverSettings};
 use nscd::stepper::Integration;

@@ -1,7 +1,7 @@
 //! Friction placed on a beam mesh: devices snapping and merging, distributed capacities (exact), rows that
 //! interpolate the deflection.
 
-use fem_beam::reference::uic60_on_soft_soil;
+use analytic::reference::uic60_on_soft_soil;
 use fem_beam::{BeamModel, Support, Supports};
 use friction::InteractionKind;
 use track::{

@@ -63,7 +63,7 @@ pub(super) fn study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
     let headline = headline(&maxima);
     Ok(StudyData {
         csv,
-        summary: StudySummary::Amplification(AmplificationSummary { curves: items }),
+        summary: StudySummary::of(AmplificationSummary { curves: items }),
         lines,
         headline,
         plots,

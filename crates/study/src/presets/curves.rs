@@ -219,7 +219,7 @@ impl Curves {
                 Some(k) if k.is_interior() => format!(
                     "critical speed {:.1} m/s ({:.0} km/h), peak max downward deflection {:.1} mm",
                     k.speed,
-                    k.speed * 3.6,
+                    k.speed * scenario::units::KMH,
                     k.max_downward_deflection * 1e3
                 ),
                 Some(k) => k.describe(),
@@ -269,7 +269,7 @@ pub(super) fn curves_study(
     let (summary, lines) = curves.summary();
     Ok(StudyData {
         csv: curves.csv(),
-        summary: StudySummary::Curves(summary),
+        summary: StudySummary::of(summary),
         lines,
         headline: headline(&curves),
         plots: plots(&curves),

@@ -65,7 +65,7 @@ pub(super) fn study(base: &Scenario, runner: &Runner) -> Result<StudyData> {
         ),
         format!("They dissipate {:.0} J and {:.0} J.", dissipated(0).unwrap_or(nan), dissipated(1).unwrap_or(nan)),
     ];
-    let summary = StudySummary::DiscreteVsDistributed(ComparisonSummary {
+    let summary = StudySummary::of(ComparisonSummary {
         speed,
         max_history_gap: comparison.map(|c| c.0),
         peak_midspan_deflection: comparison.map(|c| c.1),

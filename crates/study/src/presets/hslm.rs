@@ -193,7 +193,7 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
     let (summary, lines) = results.summary();
     Ok(StudyData {
         csv: results.csv(),
-        summary: super::StudySummary::Hslm(summary),
+        summary: super::StudySummary::of(summary),
         lines,
         headline: results.headline(),
         plots: results.figures(),

@@ -80,7 +80,7 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
     plot.log_x = true;
     Ok(StudyData {
         csv,
-        summary: StudySummary::OptimalForce(OptimaSummary { speed, optima: items }),
+        summary: StudySummary::of(OptimaSummary { speed, optima: items }),
         headline: headline(speed, &optima),
         lines,
         plots: vec![plot],

@@ -9,6 +9,7 @@ use super::stationary_wave_curves::{FRICTION, InfiniteCritical, InfiniteCurve, S
 use super::stationary_wave_figures as figures;
 use super::{StudyData, StudySummary, blank, mean_iterations, with_distributed};
 use crate::stationary_output::{ErrorEstimate, StationaryPoint, StationaryStudy};
+use analytic::golden::refine_peak;
 use runner::Runner;
 use runner::cost::Estimate;
 use scenario::error::Result;
@@ -51,7 +52,7 @@ pub(super) fn study(resolution: super::Resolution, base: &Scenario, runner: &Run
     let (summary, lines) = summary(&infinite, &finite, v_cr);
     Ok(StudyData {
         csv: csv(&infinite, &finite),
-        summary: StudySummary::StationaryWave(summary),
+        summary: StudySummary::of(summary),
         lines,
         headline: headline(&infinite, &finite),
         plots: figures::plots(&infinite, &finite, &shape_speeds, base),
@@ -105,12 +106,9 @@ fn refine(
         Ok(peak)
     };
     let tolerance = 0.02 * (after.speed - before.speed) / 2.0;
-    let (speed, refined) = runner::golden_section(&mut deflection, before.speed, after.speed, tolerance, true)?;
-    let critical = match refined >= peak {
-        true => InfiniteCritical::Interior { speed, peak: refined },
-        false => InfiniteCritical::Interior { speed: points[i].speed, peak },
-    };
-    Ok((critical, evaluated))
+    let bracket = (before.speed, after.speed);
+    let (speed, peak) = refine_peak(&mut deflection, bracket, (points[i].speed, peak), tolerance)?;
+    Ok((InfiniteCritical::Interior { speed, peak }, evaluated))
 }
 
 /// Long format: one row per curve and speed, infinite track first. Text cells: model ("infinite", "finite"),

@@ -116,7 +116,7 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
     let (summary, lines) = summary(&curves);
     Ok(StudyData {
         csv: csv(&curves),
-        summary: StudySummary::Receptance(summary),
+        summary: StudySummary::of(summary),
         lines,
         headline: headline(&curves),
         plots: figures(&curves, &subtitle),

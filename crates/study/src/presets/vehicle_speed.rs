@@ -217,7 +217,7 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
     let (summary, lines) = summary(&curves, force, &friction, &base.integration);
     Ok(StudyData {
         csv: csv(&curves, force),
-        summary: StudySummary::VehicleSpeed(summary),
+        summary: StudySummary::of(summary),
         lines,
         headline: headline(&curves, force),
         plots: figures(&curves, force, &friction),

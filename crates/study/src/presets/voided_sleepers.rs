@@ -159,7 +159,7 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
     );
     Ok(StudyData {
         csv: csv(&curves),
-        summary: StudySummary::VoidedSleepers(summary),
+        summary: StudySummary::of(summary),
         lines,
         headline: headline(&curves),
         plots: figures(&curves, &subtitle),

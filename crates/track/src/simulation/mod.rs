@@ -34,8 +34,8 @@ pub use vehicles::{IMPACT_WINDOW, LOSS_OF_CONTACT};
 use crate::error::Result;
 use crate::error::Setting;
 use crate::placed::PlacedInteractions;
+use analytic::moving_beam::MovingBeam;
 use fem_beam::BeamModel;
-use fem_beam::infinite_track::InfiniteTrack;
 use nscd::solver::SolverKind;
 use records::{DeflectionRecord, SectionRecords, SolverTally};
 pub(crate) use records::{Record, StepState};
@@ -124,7 +124,7 @@ impl<'a> Simulation<'a> {
                         "the steady-state start takes trains of axles only (no load patches)",
                     ));
                 }
-                let infinite = InfiniteTrack::new(self.model.beam(), self.model.foundation())?;
+                let infinite = MovingBeam::new(self.model.beam(), self.model.foundation())?;
                 let mesh = self.model.mesh();
                 let mut q = vec![0.0; dofs.full_len()];
                 let mut v = vec![0.0; dofs.full_len()];

@@ -178,7 +178,7 @@ impl RunSettings {
         // Faster than the beam's bar wave speed √(E/ρ) (5.2 km/s in steel, 3.7 km/s in concrete) no beam theory holds,
         // and the step h = Δx/v would shrink towards round-off: refused, not answered.
         let beam = model.beam();
-        let bar_wave = (beam.youngs_modulus / beam.density).sqrt();
+        let bar_wave = beam.bar_wave_speed();
         if self.moving.largest_speed() >= bar_wave {
             return Err(invalid(
                 self.moving.speed_setting(),
@@ -249,6 +249,13 @@ impl RunSettings {
             nscd::NscdError::InvalidField { value, allowed, .. } => invalid(Setting::LoadAdvance, value, allowed),
             other => other.into(),
         })?;
+        self.validate_vehicle_steps()?;
+        self.validate_solver()
+    }
+
+    /// With vehicles: a scheme their contact's impact law takes, and a step short enough for the wheel–rail contact
+    /// mode.
+    fn validate_vehicle_steps(&self) -> Result<()> {
         if let (Some(vehicles), Some(rho)) = (self.moving.load.vehicles(), self.integration.spectral_radius)
             && vehicles.vehicles.iter().any(|p| matches!(vehicles.contact_of(p), WheelRail::Rigid { .. }))
         {
@@ -279,6 +286,11 @@ impl RunSettings {
                 ));
             }
         }
+        Ok(())
+    }
+
+    /// The solver's tolerance (the homotopy's floor among it) and iterations.
+    fn validate_solver(&self) -> Result<()> {
         if !(self.integration.solver.tolerance.is_finite()
             && self.integration.solver.tolerance > 0.0
             && self.integration.solver.tolerance <= 1e-2)

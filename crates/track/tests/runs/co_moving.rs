@@ -1,7 +1,7 @@
 //! The co-moving window (docs/theory.md §15): the load crosses an endless track through a short window that shifts
 //! with it; its wave against the closed form, the stationary solve and the energy identity.
 
-use fem_beam::reference::{InfiniteBeam, SteadyState, uic60_on_soft_soil};
+use analytic::reference::{InfiniteBeam, SteadyState, uic60_on_soft_soil};
 use fem_beam::{AbsorbingZones, BeamModel, Foundation, FoundationLaw, Mesh, Supports};
 use track::co_moving::{CoMovingResult, CoMovingSettings, run_co_moving};
 use track::{BallastOnBeam, DistributedFriction, PlacedInteractions, RunSettings};

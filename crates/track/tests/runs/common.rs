@@ -1,6 +1,6 @@
 //! Shared set-ups.
 
-use fem_beam::reference::uic60_on_soft_soil;
+use analytic::reference::uic60_on_soft_soil;
 use fem_beam::{BeamModel, Mesh};
 
 /// The reference beam with `elements` elements on `length` m (pinned ends).

@@ -8,7 +8,7 @@ use track::{RunSettings, Simulation};
 fn largest_deflection_is_near_the_critical_speed() {
     let model = reference();
     let interactions = PlacedInteractions::new();
-    let v_cr = fem_beam::reference::uic60_on_soft_soil().infinite_beam().unwrap().critical_speed();
+    let v_cr = analytic::reference::uic60_on_soft_soil().infinite_beam().unwrap().critical_speed();
     let sweep: Vec<(f64, f64)> = (0..=22)
         .map(|i| {
             let speed = 150.0 + 5.0 * i as f64;

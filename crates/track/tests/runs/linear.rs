@@ -39,7 +39,7 @@ fn friction_free_run_is_the_linear_theta_method() {
     let mut model = beam(40.0, 40);
     for theta in [0.5, 0.7] {
         for damping in [0.0, 0.1] {
-            let case = fem_beam::reference::uic60_on_soft_soil();
+            let case = analytic::reference::uic60_on_soft_soil();
             let foundation = case.foundation.with_damping_ratio(damping, &case.beam).unwrap();
             model = fem_beam::BeamModel::new(case.beam, foundation, *model.mesh(), case.supports).unwrap();
             let settings = {

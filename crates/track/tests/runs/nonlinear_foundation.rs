@@ -2,8 +2,8 @@
 //! the linear part in K, with the rail's self-weight; the static tensionless closed form, the glued and linear
 //! limits, lift-off and the energy identity.
 
-use fem_beam::reference::{InfiniteBeam, uic60_on_soft_soil};
-use fem_beam::tensionless::TensionlessPointLoad;
+use analytic::reference::{InfiniteBeam, uic60_on_soft_soil};
+use analytic::tensionless::TensionlessPointLoad;
 use fem_beam::{BeamModel, Foundation, FoundationLaw, LoadVector, Mesh, Support, Supports};
 use track::unilateral_statics::{StaticSolver, static_deflection};
 use track::{FoundationSections, PlacedInteractions, RunResult, RunSettings, Simulation};
@@ -97,7 +97,7 @@ fn the_rail_lifts_off_where_the_linear_wave_rises_above_the_settlement() {
     assert!(downward.windows(2).all(|w| w[0] < w[1]), "downward {downward:?}");
 }
 
-/// The static tensionless case without self-weight against its closed form (fem_beam::tensionless): a free beam of
+/// The static tensionless case without self-weight against its closed form (analytic::tensionless): a free beam of
 /// 100 m with the 83.4 kN load in the middle rests on the soil over π/β and is straight beyond; the peak deflection
 /// is coth(π/2) = 1.0903 times the linear beam's.
 #[test]

@@ -5,7 +5,7 @@
 
 use super::sleepers::{on_sleepers, settings};
 use super::solvers_agree::same_state_difference;
-use fem_beam::reference::uic60_on_soft_soil;
+use analytic::reference::uic60_on_soft_soil;
 use fem_beam::{BeamModel, Foundation, FoundationLaw, Mesh, Sleepers};
 use nscd::solver::SolverKind;
 use track::sleeper_layout::sleeper_interactions;

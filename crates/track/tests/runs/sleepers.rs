@@ -2,7 +2,7 @@
 //! vehicle; the limits — a tensionless sleeper that keeps pressing is the bonded one, a void that never closes is no
 //! ballast, sleepers ever closer with k per metre held are the Winkler track —; the interior point against Clarabel.
 
-use fem_beam::reference::uic60_on_soft_soil;
+use analytic::reference::uic60_on_soft_soil;
 use fem_beam::{BallastContact, BeamModel, Foundation, Layer, Mesh, SleeperException, Sleepers};
 use nscd::solver::{SolverKind, SolverSettings};
 use track::sleeper_layout::sleeper_interactions;

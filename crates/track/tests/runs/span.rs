@@ -1,8 +1,8 @@
 //! A force crossing a simply supported span without foundation (the railway bridge of docs/theory.md §10) against
-//! the independent modal series of Frýba (`fem_beam::span`): the mid-span dynamic amplification over
+//! the independent modal series of Frýba (`analytic::span`): the mid-span dynamic amplification over
 //! α = v/(2 f₁ L) ∈ [0.1, 1].
 
-use fem_beam::span::SimplySupportedSpan;
+use analytic::span::SimplySupportedSpan;
 use fem_beam::{Beam, BeamModel, Foundation, Mesh, Support, Supports};
 use track::Load;
 use track::PlacedInteractions;
@@ -118,7 +118,7 @@ fn rayleigh_damping_decays_each_mode_at_its_ratio() {
 
 /// Resonance of a span under equal axles at spacing D, at v = f₁·D (each axle arrives one first-mode period after
 /// the one before). One force crossing in T = L/v leaves mode 1 ringing with q(T) ∝ sin ω₁T and q̇(T) ∝ 1 + cos ω₁T
-/// (`fem_beam::span`, Ω₁T = π): both vanish when ω₁T = (2k + 1)π, k ≥ 1, and with ω₁ = 2πv/D that is
+/// (`analytic::span`, Ω₁T = π): both vanish when ω₁T = (2k + 1)π, k ≥ 1, and with ω₁ = 2πv/D that is
 /// L/D = (2k + 1)/2 = 1.5, 2.5, … — there the axles' contributions cancel and nothing builds up, while at L/D = 2
 /// each axle adds its ringing to the last. Checked on the series (the ringing after one axle: 2e-12, 2e-11 and 0.53
 /// of FL³/48EI for L/D = 1.5, 2.5, 2) and on FE runs of 5 and 10 axles (the largest mid-span deflection, the train on

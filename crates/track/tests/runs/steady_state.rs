@@ -1,6 +1,6 @@
 //! Started from the analytic steady state, the FE response matches the closed form (docs/theory.md §8).
 
-use fem_beam::reference::{InfiniteBeam, uic60_on_soft_soil};
+use analytic::reference::{InfiniteBeam, uic60_on_soft_soil};
 use fem_beam::{AbsorbingZones, BeamModel};
 use track::Load;
 use track::PlacedInteractions;
@@ -84,14 +84,14 @@ fn recorded_histories_match_steady_state_under_the_load() {
 
 /// A train started from its steady state (the sum of its axles', docs/theory.md §10) keeps it: the deflection
 /// history at x = 100 m while the power car (4 axles over 17 m) passes equals the closed form w(x − x_head) of
-/// `InfiniteTrack::train_steady_state`, to the accuracy of the single-load case above.
+/// `MovingBeam::train_steady_state`, to the accuracy of the single-load case above.
 #[test]
 fn a_train_started_from_its_steady_state_keeps_it() {
     use fem_beam::{Axle, Train};
     let case = uic60_on_soft_soil();
     let foundation = case.foundation.with_damping_ratio(0.05, &case.beam).unwrap();
     let model = BeamModel::new(case.beam, foundation, case.mesh, case.supports).unwrap();
-    let infinite = fem_beam::infinite_track::InfiniteTrack::new(&case.beam, &foundation).unwrap();
+    let infinite = analytic::moving_beam::MovingBeam::new(&case.beam, &foundation).unwrap();
     let train = Train {
         name: "power car".into(),
         axles: [0.0, 3.0, 14.0, 17.0].iter().map(|&offset| Axle { offset, force: 170e3 }).collect(),
@@ -120,7 +120,7 @@ fn a_train_started_from_its_steady_state_keeps_it() {
 }
 
 /// A Timoshenko rail (κ = 0.4, G = 81 GPa) started from its own steady state (the residues of its quartic,
-/// `fem_beam::moving_timoshenko`: W, the cross-section's Ψ and their rates −vW′, −vΨ′ at the nodes) keeps it: the
+/// `analytic::moving_timoshenko`: W, the cross-section's Ψ and their rates −vW′, −vΨ′ at the nodes) keeps it: the
 /// peaks 40 m on match the closed form to 0.5 %, the bound of the Euler–Bernoulli test above (0.5 m elements,
 /// absorbing zones; measured 1.7e-4 and 3.9e-4 down, 2.8e-5 and 8.3e-4 up at 100 and 200 m/s).
 #[test]
@@ -132,7 +132,7 @@ fn a_timoshenko_rail_started_from_its_steady_state_keeps_it() {
     let zones = AbsorbingZones { length: 40.0, peak_damping: foundation.critical_damping(&case.beam) };
     let damping = zones.element_damping(&case.mesh, foundation.damping).unwrap();
     let model = BeamModel::with_element_damping(case.beam, foundation, case.mesh, case.supports, damping).unwrap();
-    let infinite = fem_beam::infinite_track::InfiniteTrack::new(&case.beam, &foundation).unwrap();
+    let infinite = analytic::moving_beam::MovingBeam::new(&case.beam, &foundation).unwrap();
     for speed in [100.0, 200.0] {
         let mut settings = RunSettings::default();
         settings.moving.speed = speed;

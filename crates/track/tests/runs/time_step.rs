@@ -57,7 +57,7 @@ fn a_longest_step_must_be_a_positive_time_that_a_window_can_take() {
     window.moving.speed = 100.0;
     window.integration.load_advance = 0.05;
     window.integration.max_step = Some(1e-4);
-    let case = fem_beam::reference::uic60_on_soft_soil();
+    let case = analytic::reference::uic60_on_soft_soil();
     let free_clamped = fem_beam::Supports { left: fem_beam::Support::Free, right: fem_beam::Support::Clamped };
     let mesh = fem_beam::Mesh::new(60.0, 240).unwrap();
     let model = fem_beam::BeamModel::new(case.beam, case.foundation, mesh, free_clamped).unwrap();

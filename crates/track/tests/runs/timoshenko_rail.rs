@@ -1,7 +1,7 @@
 //! Runs on a Timoshenko rail (docs/theory.md §15): the energy identity at round-off with friction and with a vehicle
 //! (its wheel's contact row is the element's own N_w), and the limit G → ∞.
 
-use fem_beam::reference::uic60_on_soft_soil;
+use analytic::reference::uic60_on_soft_soil;
 use fem_beam::{Beam, BeamModel, BeamTheory, Mesh};
 use nscd::solver::{SolverKind, SolverSettings};
 use track::vehicle::builtin::QuarterCar;

@@ -3,8 +3,8 @@
 //! stepping), converging under refinement; a slow acceleration on the reference track is the steady state at each
 //! instant's speed; passing the critical speed with damping peaks below the steady state there; the energy identity.
 
-use fem_beam::reference::{InfiniteBeam, uic60_on_soft_soil};
-use fem_beam::span::SimplySupportedSpan;
+use analytic::reference::{InfiniteBeam, uic60_on_soft_soil};
+use analytic::span::SimplySupportedSpan;
 use fem_beam::{AbsorbingZones, Beam, BeamModel, Foundation, Mesh, Motion, Support, Supports};
 use track::{InitialState, Load, PlacedInteractions, RunSettings, Simulation};
 

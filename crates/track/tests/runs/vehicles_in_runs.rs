@@ -280,7 +280,7 @@ fn vehicle_runs_converge_as_the_step_shrinks() {
 fn a_static_start_stands_the_vehicle_on_the_loaded_track() {
     use track::InitialState;
     use track::vehicle::builtin::MovingMass;
-    let model = fem_beam::reference::uic60_on_soft_soil().model().unwrap();
+    let model = analytic::reference::uic60_on_soft_soil().model().unwrap();
     let run = |initial| {
         let mut settings = RunSettings::default();
         settings.moving.speed = 30.0;

@@ -11,7 +11,7 @@ use track::{RunSettings, Simulation};
 /// The reference rail on firm ballast (k = 100 MN/m², 400 × the soft soil's 250 kN/m²), damping ratio 10 %, 120 m
 /// in 0.5 m elements.
 fn firm_track() -> BeamModel {
-    let case = fem_beam::reference::uic60_on_soft_soil();
+    let case = analytic::reference::uic60_on_soft_soil();
     let foundation = fem_beam::Foundation::linear(1e8, 0.0).with_damping_ratio(0.1, &case.beam).unwrap();
     let mesh = fem_beam::Mesh::new(120.0, 240).unwrap();
     BeamModel::new(case.beam, foundation, mesh, case.supports).unwrap()

@@ -1,9 +1,9 @@
 //! Vehicles on a simply supported span against the independent modal reference (docs/theory.md §12): the modal
-//! Galerkin solution of a glued oscillator with the moving-mass convective terms (`fem_beam::span_oscillator`), which
+//! Galerkin solution of a glued oscillator with the moving-mass convective terms (`analytic::span_oscillator`), which
 //! shares nothing with the finite elements, the nonsmooth step or the contact laws.
 
-use fem_beam::span::SimplySupportedSpan;
-use fem_beam::span_oscillator::Oscillator;
+use analytic::span::SimplySupportedSpan;
+use analytic::span_oscillator::Oscillator;
 use fem_beam::{Beam, BeamModel, Foundation, Mesh, Supports};
 use track::Load;
 use track::PlacedInteractions;

@@ -13,9 +13,9 @@
 //! and free vibration from (q_n, q̇_n)(L/v) once the force has left. Undamped: the reference for the FE run without
 //! damping. The static mid-span deflection under F at mid-span is FL³/(48EI) without foundation.
 
-use crate::error::{FemError, Result, non_negative, positive};
-use crate::motion::Motion;
-use crate::properties::Beam;
+use fem_beam::error::{FemError, Result, non_negative, positive};
+use fem_beam::motion::Motion;
+use fem_beam::properties::Beam;
 use std::f64::consts::PI;
 
 /// A pinned–pinned span of length L on an optional Winkler foundation k_f, for modal-series references.
@@ -144,7 +144,7 @@ impl SimplySupportedSpan {
                     let width = (to - reached) / count as f64;
                     for p in 0..count {
                         let start = reached + p as f64 * width;
-                        for &(xi, weight) in &crate::element::hermite::GAUSS_4 {
+                        for &(xi, weight) in &fem_beam::element::hermite::GAUSS_4 {
                             let tau = start + xi * width;
                             let f = weight * width * (k * motion.position(tau)).sin();
                             let (s, c) = (omega * tau).sin_cos();

@@ -19,9 +19,9 @@
 //! (φ = 0: the beam at rest, the body at its static sag M_s g/k_s below the wheel) and the solution runs until it
 //! leaves at x = L.
 
-use crate::GRAVITY;
-use crate::error::{FemError, Result, non_negative, positive};
 use crate::span::SimplySupportedSpan;
+use fem_beam::GRAVITY;
+use fem_beam::error::{FemError, Result, non_negative, positive};
 use std::f64::consts::PI;
 
 /// The oscillator: a wheel m_u glued to the beam, and optionally a body M_s on k_s, c_s above it.
@@ -229,7 +229,7 @@ impl ModalMotion {
 #[cfg(test)]
 mod tests {
     use super::{Oscillator, SimplySupportedSpan};
-    use crate::properties::Beam;
+    use fem_beam::properties::Beam;
 
     /// A light mass is the moving force of its weight, as O(m): masses of 1 and 0.1 kg crossing the reference rail as
     /// a 10 m span (600 kg) at 5 m/s deflect the mid-span like the force m g of Frýba's series (the same 10 modes) up
@@ -241,11 +241,11 @@ mod tests {
         let difference = |mass: f64| {
             let oscillator = Oscillator { wheel_mass: mass, body_mass: 0.0, stiffness: 0.0, damping: 0.0 };
             let crossing = span.oscillator_crossing(&oscillator, 5.0, 10, 1e-3).unwrap();
-            assert!((crossing.contact_force[0] / (mass * crate::GRAVITY) - 1.0).abs() < 1e-12);
+            assert!((crossing.contact_force[0] / (mass * fem_beam::GRAVITY) - 1.0).abs() < 1e-12);
             let peak = crossing.midspan.iter().fold(0.0f64, |m, w| m.max(w.abs()));
             let mut worst = 0.0f64;
             for (t, w) in crossing.time.iter().zip(&crossing.midspan) {
-                let force = span.moving_force_deflection(5.0, *t, mass * crate::GRAVITY, 5.0, 10).unwrap();
+                let force = span.moving_force_deflection(5.0, *t, mass * fem_beam::GRAVITY, 5.0, 10).unwrap();
                 worst = worst.max((w - force).abs());
             }
             worst / peak

@@ -3,11 +3,11 @@
 //! frame s = x − x_head (m; positive ahead of the first axle, axle i at s = −d_i):
 //! w(s) = Σ_i (P_i/P)·w_P(s + d_i).
 
-use crate::error::{FemError, Result};
-use crate::extreme::Extreme;
-use crate::infinite_track::{InfiniteTrack, SteadyWave};
+use crate::moving_beam::{MovingBeam, SteadyWave};
 use crate::reference::{SteadyExtremes, scan_extremes};
-use crate::train::Train;
+use fem_beam::error::{FemError, Result};
+use fem_beam::extreme::Extreme;
+use fem_beam::train::Train;
 
 /// A train's steady state: the unit-load state and the axles (offset, force).
 #[derive(Debug, Clone)]
@@ -20,7 +20,7 @@ pub struct TrainSteadyState {
     reach: f64,
 }
 
-impl InfiniteTrack {
+impl MovingBeam {
     /// The steady state of `train` (axles only) at `speed` (m/s).
     pub fn train_steady_state(&self, speed: f64, train: &Train) -> Result<TrainSteadyState> {
         train.validate()?;
@@ -66,20 +66,22 @@ impl TrainSteadyState {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::properties::BeamTheory;
     use crate::reference::uic60_on_soft_soil;
-    use crate::train::Axle;
+    use fem_beam::properties::BeamTheory;
+    use fem_beam::train::Axle;
 
     /// One axle is the single-load state; two far-apart axles each give their own peak; axles closer than the
     /// decay length add up (at rest: the superposed static shapes) — on an Euler–Bernoulli and a Timoshenko rail.
     #[test]
     fn a_train_superposes_its_axles() {
         let case = uic60_on_soft_soil();
-        let timoshenko =
-            crate::Beam { theory: BeamTheory::Timoshenko { shear_modulus: 81e9, shear_coefficient: 0.4 }, ..case.beam };
+        let timoshenko = fem_beam::Beam {
+            theory: BeamTheory::Timoshenko { shear_modulus: 81e9, shear_coefficient: 0.4 },
+            ..case.beam
+        };
         for beam in [case.beam, timoshenko] {
             let foundation = case.foundation.with_damping_ratio(0.05, &beam).unwrap();
-            let infinite = InfiniteTrack::new(&beam, &foundation).unwrap();
+            let infinite = MovingBeam::new(&beam, &foundation).unwrap();
             let single = infinite.steady_state(150.0, 100e3).unwrap().extremes();
             let one = infinite.train_steady_state(150.0, &Train::single(100e3)).unwrap().extremes();
             assert!((one.max_downward.value - single.max_downward.value).abs() <= 1e-12 * single.max_downward.value);

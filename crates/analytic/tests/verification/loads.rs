@@ -1,7 +1,7 @@
 //! Load vectors and element matrices: totals, symmetry, definiteness, no double counting.
 
+use analytic::reference::uic60_on_soft_soil;
 use fem_beam::element::hermite;
-use fem_beam::reference::uic60_on_soft_soil;
 use fem_beam::{Beam, BeamModel, Discretisation, Foundation, LoadVector, Mesh, Support, Supports};
 
 #[test]

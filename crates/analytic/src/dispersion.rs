@@ -12,10 +12,10 @@
 //! Euler–Bernoulli beam (κGA → ∞, ρI = 0) the branch is ρA ω² = EI k⁴ + k_f and the minimum is the closed form
 //! v_cr = (4 k_f EI/(ρA)²)^{1/4} ([`crate::reference::InfiniteBeam::critical_speed`]).
 
-use crate::error::Result;
 use crate::golden::golden_section;
-use crate::properties::{Beam, Foundation};
 use crate::reference::InfiniteBeam;
+use fem_beam::error::Result;
+use fem_beam::properties::{Beam, Foundation};
 use num_complex::Complex64;
 
 /// The bending branch ω(k) (rad/s) of `beam` on a foundation of stiffness `k_f` (N/m²) at wavenumber k (rad/m).
@@ -104,7 +104,7 @@ pub fn static_deflection(beam: &Beam, k_f: f64, force: f64) -> f64 {
     let width = std::f64::consts::FRAC_PI_2 / panels as f64;
     let mut sum = 0.0;
     for p in 0..panels {
-        for &(xi, w) in &crate::element::hermite::GAUSS_4 {
+        for &(xi, w) in &fem_beam::element::hermite::GAUSS_4 {
             let t = (p as f64 + xi) * width;
             let k = c * t.tan();
             sum += w * width * compliance(k) * c / (t.cos() * t.cos());
@@ -185,7 +185,16 @@ impl Waves {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::properties::BeamTheory;
+    use fem_beam::properties::BeamTheory;
+
+    #[test]
+    fn the_pinned_pinned_frequency_of_uic60_on_sleepers_0_6_m_apart_is_1428_hz() {
+        // Euler–Bernoulli: π/(2a²)·√(EI/ρA).
+        let beam = Beam::default();
+        let closed = std::f64::consts::PI / (2.0 * 0.36) * (beam.bending_stiffness() / beam.mass_per_length()).sqrt();
+        assert!((pinned_pinned(&beam, 0.6) / closed - 1.0).abs() < 1e-12);
+        assert!((closed - 1428.0).abs() < 1.0, "{closed} Hz");
+    }
 
     fn timoshenko(shear_modulus: f64) -> Beam {
         Beam { theory: BeamTheory::Timoshenko { shear_modulus, shear_coefficient: 0.4 }, ..Beam::default() }

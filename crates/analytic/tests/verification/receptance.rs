@@ -1,8 +1,8 @@
 //! The track's receptance from the finite elements against the infinite beam's (residues of its Fourier integral,
-//! `fem_beam::dispersion::point_receptance`), Euler–Bernoulli and Timoshenko, with loss factors heavy enough that
+//! `analytic::dispersion::point_receptance`), Euler–Bernoulli and Timoshenko, with loss factors heavy enough that
 //! the waves die before the ends of a 200 m track: what is left is the element's error.
 
-use fem_beam::dispersion::point_receptance;
+use analytic::dispersion::point_receptance;
 use fem_beam::receptance::FrequencyResponse;
 use fem_beam::{Beam, BeamModel, BeamTheory, Foundation, Mesh, Support, Supports};
 use num_complex::Complex64;

@@ -115,7 +115,7 @@ fn bad_shear_parameters_are_named() {
 }
 
 /// A Timoshenko rail's static deflection under a load at mid-track (200 m, clamped far from it) converges to the
-/// infinite beam's Fourier integral ([`fem_beam::dispersion::static_deflection`]) at second order in the element
+/// infinite beam's Fourier integral ([`analytic::dispersion::static_deflection`]) at second order in the element
 /// length (each halving divides the error by 4 ± 0.5; measured 1.8e-5, 4.1e-6, 9.9e-7 on the reference soil from
 /// 0.5 m elements, 6.9e-3 … 3.8e-4 on a stiff one, k_f = 100 MN/m², whose waves are 20 times shorter) — the O(h²) of
 /// this element with a distributed soil, where Hermite's is O(h⁴). Shear adds 0.38 % to Euler–Bernoulli's Fβ/2k_f on
@@ -124,7 +124,7 @@ fn bad_shear_parameters_are_named() {
 fn static_deflection_on_a_soil_converges_to_the_fourier_integral() {
     let beam = uic60_timoshenko();
     for (k_f, shear) in [(2.5e5, 3.81e-3), (1e8, 7.47e-2)] {
-        let integral = fem_beam::dispersion::static_deflection(&beam, k_f, 83.4e3);
+        let integral = analytic::dispersion::static_deflection(&beam, k_f, 83.4e3);
         let errors: Vec<f64> = [400, 800, 1600]
             .into_iter()
             .map(|elements| {
@@ -140,7 +140,7 @@ fn static_deflection_on_a_soil_converges_to_the_fourier_integral() {
             let ratio = pair[0] / pair[1];
             assert!((3.5..4.5).contains(&ratio), "k_f = {k_f}: errors {errors:?}");
         }
-        let euler = fem_beam::dispersion::static_deflection(&Beam::default(), k_f, 83.4e3);
+        let euler = analytic::dispersion::static_deflection(&Beam::default(), k_f, 83.4e3);
         assert!(rel(integral / euler - 1.0, shear) < 1e-2, "k_f = {k_f}: {}", integral / euler - 1.0);
     }
 }

@@ -1,7 +1,7 @@
 //! Static response against closed forms: infinite-beam w₀ and M₀, exact cantilever nodal values, and mesh
 //! convergence under a non-nodal load.
 
-use fem_beam::reference::uic60_on_soft_soil;
+use analytic::reference::uic60_on_soft_soil;
 use fem_beam::section::Motion;
 use fem_beam::{Beam, BeamModel, Foundation, LoadVector, Mesh, Support, Supports};
 

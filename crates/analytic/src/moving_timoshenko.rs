@@ -26,10 +26,10 @@
 //! shear wave's, √(G/ρA) (≈ 2 km/s for a rail), where a and D keep their sign.
 
 use crate::dispersion::critical_speed;
-use crate::error::{FemError, Result};
-use crate::extreme::Extreme;
-use crate::properties::{Beam, Foundation};
 use crate::reference::{SteadyExtremes, monic_quartic_roots, scan_extremes};
+use fem_beam::error::{FemError, Result};
+use fem_beam::extreme::Extreme;
+use fem_beam::properties::{Beam, Foundation};
 use num_complex::Complex64;
 
 /// A Timoshenko beam on a linear viscoelastic foundation, seen from a load moving along it.
@@ -52,13 +52,18 @@ impl MovingTimoshenko {
         Ok(Self { beam: *beam, foundation: *foundation, shear })
     }
 
-    /// The shear wave's speed √(κGA/ρA) (m/s): moving loads must stay below it.
+    /// The shear wave's speed √(κGA/ρA) (m/s): moving loads must stay below it ([`Beam::wave_speed_limit`]).
     pub fn shear_wave_speed(&self) -> f64 {
-        (self.shear / self.beam.mass_per_length()).sqrt()
+        self.beam.wave_speed_limit()
+    }
+
+    /// G = κGA (N).
+    pub fn shear_stiffness(&self) -> f64 {
+        self.shear
     }
 
     /// D = ρIv² − EI (N·m²) at `speed`.
-    fn d(&self, speed: f64) -> f64 {
+    pub fn d(&self, speed: f64) -> f64 {
         self.beam.rotary_inertia() * speed * speed - self.beam.bending_stiffness()
     }
 
@@ -138,6 +143,12 @@ pub struct TimoshenkoSteadyState {
 }
 
 impl TimoshenkoSteadyState {
+    /// The slowest decay rates of the wave ahead of and behind the load (1/m): min |Re r| over each pair of roots.
+    pub fn decay_rates(&self) -> (f64, f64) {
+        let slowest = |pair: &[(Complex64, Complex64, Complex64); 2]| pair[0].0.re.abs().min(pair[1].0.re.abs());
+        (slowest(&self.ahead), slowest(&self.behind))
+    }
+
     fn sum(&self, s: f64, factor: impl Fn(Complex64, Complex64) -> Complex64) -> f64 {
         let terms = if s >= 0.0 { &self.ahead } else { &self.behind };
         terms.iter().map(|&(r, c, beta)| (c * factor(r, beta) * (r * s).exp()).re).sum()
@@ -204,8 +215,8 @@ impl TimoshenkoSteadyState {
 mod tests {
     use super::*;
     use crate::dispersion::static_deflection;
-    use crate::properties::BeamTheory;
     use crate::reference::InfiniteBeam;
+    use fem_beam::properties::BeamTheory;
 
     fn rail(shear_modulus: f64) -> Beam {
         Beam { theory: BeamTheory::Timoshenko { shear_modulus, shear_coefficient: 0.4 }, ..Beam::default() }

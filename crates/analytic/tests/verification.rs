@@ -1,4 +1,4 @@
-//! Verification of the fem-beam layer against closed-form results (docs/theory.md §2, §8).
+//! Verification of the finite elements of `fem-beam` against the closed forms of this crate (docs/theory.md §2, §8).
 //! One test binary; each module checks one family of results with stated tolerances.
 
 mod verification {

@@ -1,6 +1,6 @@
 //! Closed-form reference values and the moving-load steady state.
 
-use fem_beam::reference::uic60_on_soft_soil;
+use analytic::reference::uic60_on_soft_soil;
 use num_complex::Complex64;
 
 fn rel(a: f64, b: f64) -> f64 {
@@ -71,7 +71,7 @@ fn steady_state_agrees_with_fourier_integral() {
     let case = uic60_on_soft_soil();
     let beam = case.beam;
     let foundation = case.foundation.with_damping_ratio(0.05, &beam).unwrap();
-    let inf = fem_beam::reference::InfiniteBeam::new(&beam, &foundation).unwrap();
+    let inf = analytic::reference::InfiniteBeam::new(&beam, &foundation).unwrap();
     let amplitude = 4.0 * case.load * inf.beta() / foundation.stiffness;
     for speed in [100.0, 200.0] {
         let alpha = speed / inf.critical_speed();
@@ -90,7 +90,7 @@ fn steady_state_agrees_with_fourier_integral() {
 fn steady_state_derivatives_match_finite_differences() {
     let case = uic60_on_soft_soil();
     let foundation = case.foundation.with_damping_ratio(0.1, &case.beam).unwrap();
-    let inf = fem_beam::reference::InfiniteBeam::new(&case.beam, &foundation).unwrap();
+    let inf = analytic::reference::InfiniteBeam::new(&case.beam, &foundation).unwrap();
     let state = inf.steady_state(180.0, case.load).unwrap();
     let d = 1e-4;
     for s in [-12.0, -3.0, -0.5, 0.7, 4.0, 15.0] {
@@ -105,7 +105,7 @@ fn steady_state_derivatives_match_finite_differences() {
 fn damped_amplification_peaks_near_critical_speed() {
     let case = uic60_on_soft_soil();
     let foundation = case.foundation.with_damping_ratio(0.05, &case.beam).unwrap();
-    let inf = fem_beam::reference::InfiniteBeam::new(&case.beam, &foundation).unwrap();
+    let inf = analytic::reference::InfiniteBeam::new(&case.beam, &foundation).unwrap();
     let w0 = inf.static_deflection(case.load);
     let daf = |v: f64| inf.steady_state(v, case.load).unwrap().extremes().max_downward.value / w0;
     assert!(daf(100.0) > 1.0 && daf(100.0) < daf(150.0) && daf(150.0) < daf(200.0));
@@ -116,7 +116,7 @@ fn damped_amplification_peaks_near_critical_speed() {
     // oscillator): check the scaling between ζ = 0.05 and ζ = 0.0125 (ratio 2 expected, to leading order).
     let at_critical = daf(inf.critical_speed());
     let soft = fem_beam::Foundation { damping: foundation.damping / 4.0, ..foundation };
-    let inf_soft = fem_beam::reference::InfiniteBeam::new(&case.beam, &soft).unwrap();
+    let inf_soft = analytic::reference::InfiniteBeam::new(&case.beam, &soft).unwrap();
     let at_critical_soft =
         inf_soft.steady_state(inf.critical_speed(), case.load).unwrap().extremes().max_downward.value / w0;
     let ratio = at_critical_soft / at_critical;

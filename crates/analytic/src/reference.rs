@@ -16,12 +16,13 @@
 //!
 //! Results are returned in frictrack's convention: deflection positive **upward**, so the load's own dip is negative.
 
-use crate::assembly::BeamModel;
-use crate::error::{FemError, Result, non_negative, positive};
-use crate::extreme::Extreme;
-use crate::mesh::Mesh;
-use crate::properties::{Beam, Foundation};
-use crate::supports::Supports;
+use crate::golden::golden_bracket;
+use fem_beam::assembly::BeamModel;
+use fem_beam::error::{FemError, Result, non_negative, positive};
+use fem_beam::extreme::Extreme;
+use fem_beam::mesh::Mesh;
+use fem_beam::properties::{Beam, Foundation};
+use fem_beam::supports::Supports;
 use nalgebra::{Matrix4, Vector4};
 use num_complex::Complex64;
 use std::f64::consts::PI;
@@ -326,30 +327,12 @@ pub(crate) fn scan_extremes(
             best_up = (x, -value);
         }
     }
-    let refine = |centre: f64, sign: f64| golden_max(|x| sign * f(x), centre - step, centre + step);
+    // The bracket's midpoint, to 1e-12 m.
+    let refine = |centre: f64, sign: f64| {
+        let mut signed = |x: f64| Ok::<_, std::convert::Infallible>(sign * f(x));
+        let Ok(bracket) = golden_bracket(&mut signed, centre - step, centre + step, 1e-12, true);
+        let x = 0.5 * (bracket.lower + bracket.upper);
+        (x, sign * f(x))
+    };
     (refine(best_down.0, 1.0), refine(best_up.0, -1.0))
-}
-
-fn golden_max(f: impl Fn(f64) -> f64, mut a: f64, mut b: f64) -> (f64, f64) {
-    let ratio = (5f64.sqrt() - 1.0) / 2.0;
-    let mut c = b - ratio * (b - a);
-    let mut d = a + ratio * (b - a);
-    let (mut fc, mut fd) = (f(c), f(d));
-    while (b - a).abs() > 1e-12 {
-        if fc > fd {
-            b = d;
-            d = c;
-            fd = fc;
-            c = b - ratio * (b - a);
-            fc = f(c);
-        } else {
-            a = c;
-            c = d;
-            fc = fd;
-            d = a + ratio * (b - a);
-            fd = f(d);
-        }
-    }
-    let x = 0.5 * (a + b);
-    (x, f(x))
 }

@@ -19,8 +19,8 @@
 //! so the peak deflection and the peak moment are both **coth(π/2) = 1.0903** times the linear beam's w₀ and
 //! M₀ = P/(4β).
 
-use crate::error::Result;
 use crate::reference::InfiniteBeam;
+use fem_beam::error::Result;
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI, SQRT_2};
 
 /// A point load P on an infinite beam on a tensionless Winkler foundation, without self-weight, at rest.
@@ -39,7 +39,7 @@ pub struct TensionlessPointLoad {
 impl TensionlessPointLoad {
     /// The load `load` (N, downward, > 0) on `beam` (its EI and k_f; mass and damping play no part at rest).
     pub fn new(beam: &InfiniteBeam, load: f64) -> Result<Self> {
-        crate::error::positive("load", load)?;
+        fem_beam::error::positive("load", load)?;
         let beta = beam.beta();
         let foundation_stiffness = beam.foundation_stiffness;
         Ok(Self { beta, linear_peak: load * beta / (2.0 * foundation_stiffness), load, foundation_stiffness })

@@ -1,6 +1,6 @@
 //! Bad input returns a typed error naming the field — never a panic.
 
-use fem_beam::reference::uic60_on_soft_soil;
+use analytic::reference::uic60_on_soft_soil;
 use fem_beam::{Beam, BeamModel, Discretisation, FemError, Foundation, LoadVector, Mesh};
 
 fn field_of(err: FemError) -> &'static str {
@@ -61,7 +61,7 @@ fn bad_requests_on_a_valid_model_are_errors() {
     assert_eq!(field_of(inf.steady_state(f64::NAN, case.load).unwrap_err()), "speed");
     let no_soil = Foundation::linear(0.0, 0.0);
     assert_eq!(
-        field_of(fem_beam::reference::InfiniteBeam::new(&case.beam, &no_soil).unwrap_err()),
+        field_of(analytic::reference::InfiniteBeam::new(&case.beam, &no_soil).unwrap_err()),
         "foundation.stiffness"
     );
 }

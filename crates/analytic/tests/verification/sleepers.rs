@@ -2,7 +2,7 @@
 //! two-degree-of-freedom system; sleepers closer and closer with the support per metre held are the Winkler track;
 //! the pinned–pinned resonance of the rail between sleepers is the simply supported span's.
 
-use fem_beam::dispersion::static_deflection;
+use analytic::dispersion::static_deflection;
 use fem_beam::receptance::FrequencyResponse;
 use fem_beam::{
     BallastBody, Beam, BeamModel, BeamTheory, Foundation, Layer, LoadVector, Mesh, Sleepers, Support, Supports,

@@ -1,0 +1,131 @@
+//! The named studies (docs/theory.md §7, §10, §12, §14, §17, §18): which exist, what each is called and sets, and
+//! the speeds it sweeps; what each runs is its row of the registry ([`super::table`]).
+
+use super::resolution::Resolution;
+use super::table::Sampling;
+use scenario::Scenario;
+use scenario::error::{Result, invalid};
+
+/// The studies of docs/theory.md §7.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Preset {
+    /// 1. Critical speed with discrete devices: N ∈ {3, 7, 15, 31}, F_u ∈ {10, 50, 100} kN, and no friction.
+    DiscreteSpeed,
+    /// 2. Equal-cost solutions: N·F_u ∈ {3100, 1550, 310} kN for N ∈ {31, 15, 7, 3}.
+    EqualCost,
+    /// 3. Optimal device force near v_cr (206 m/s for the reference case) for N ∈ {3, 7, 15, 31}.
+    OptimalForce,
+    /// 4. Critical speed with distributed friction f_u ∈ {0, 1, 2, 5, 10} kN/m.
+    DistributedSpeed,
+    /// 5. Dynamic amplification at mid-span for v ∈ {50, 100, 150, 200} m/s, f_u ∈ {1, 2} kN/m.
+    Amplification,
+    /// 6. 199 devices of 1 kN against f_u = 0.995 kN/m at 150 m/s: mid-span histories.
+    DiscreteVsDistributed,
+    /// 7. Eurocode HSLM-A1 … A10 (docs/theory.md §10): max deflection and deck acceleration vs speed.
+    Hslm,
+    /// 8. Vehicles against the moving force (docs/theory.md §12): deflection, wheel force, body acceleration vs speed.
+    VehicleSpeed,
+    /// 9. The stationary wave on the infinite track (docs/theory.md §14): peak deflection vs speed, finite beam beside.
+    StationaryWave,
+    /// 10. Voided sleepers under a quarter car (docs/theory.md §18): 0–3 hanging sleepers, voids 0–3 mm, 20–100 m/s.
+    VoidedSleepers,
+    /// Study 11: friction at the sleepers against friction in the ballast, and the discrete track's critical speed
+    /// (docs/theory.md §18).
+    SleeperFriction,
+    /// Study 12: the track's receptance (docs/theory.md §17, §18): Euler–Bernoulli and Timoshenko rails on sleepers
+    /// (mid-span, above a sleeper) and on the equivalent continuous support.
+    Receptance,
+}
+
+impl Preset {
+    /// The nine studies `frictrack reproduce` runs: the thesis's (§7), the trains' (§10), the vehicles' (§12) and the
+    /// stationary wave's (§14). The discrete track's studies (§18) are run on their own (`frictrack study`).
+    pub const REPRODUCED: [Preset; 9] = [
+        Preset::DiscreteSpeed,
+        Preset::EqualCost,
+        Preset::OptimalForce,
+        Preset::DistributedSpeed,
+        Preset::Amplification,
+        Preset::DiscreteVsDistributed,
+        Preset::Hslm,
+        Preset::VehicleSpeed,
+        Preset::StationaryWave,
+    ];
+
+    /// All twelve, in docs/theory.md order: the reproduced nine, then the discrete track's three.
+    pub const ALL: [Preset; 12] = {
+        let mut all = [Preset::Receptance; 12];
+        let mut i = 0;
+        while i < Self::REPRODUCED.len() {
+            all[i] = Self::REPRODUCED[i];
+            i += 1;
+        }
+        all[9] = Preset::VoidedSleepers;
+        all[10] = Preset::SleeperFriction;
+        all
+    };
+
+    /// Name on the command line and of the output files.
+    pub fn name(self) -> &'static str {
+        self.entry().name
+    }
+
+    /// The preset called `name`.
+    pub fn from_name(name: &str) -> Result<Self> {
+        Self::ALL.into_iter().find(|p| p.name() == name).ok_or_else(|| {
+            let names: Vec<&str> = Self::ALL.iter().map(|p| p.name()).collect();
+            invalid("preset", name, format!("must be one of {}", names.join(", ")))
+        })
+    }
+
+    /// What the study sets itself on top of the base scenario (the friction set-ups it compares, the speeds of
+    /// fixed-speed studies, the recorded section).
+    pub fn sets(self) -> &'static [&'static str] {
+        self.entry().sets
+    }
+
+    /// The parts of `base` that this study replaces with its own (see [`Preset::sets`]), one sentence each; empty
+    /// when the base scenario leaves them at their defaults.
+    pub fn overrides(self, base: &Scenario) -> Vec<String> {
+        match self.entry().overrides {
+            Some(overrides) => overrides(base),
+            None => self.common_overrides(base),
+        }
+    }
+
+    /// The common rule of [`Preset::overrides`]: the scenario's friction, where the study compares set-ups of its
+    /// own (named by the first line of [`Preset::sets`]), and its `[sweep]` in a study at fixed speeds.
+    pub(super) fn common_overrides(self, base: &Scenario) -> Vec<String> {
+        let mut notes = Vec::new();
+        let f = &base.friction;
+        if f.devices.is_some() || f.distributed.is_some() {
+            notes.push(format!(
+                "the scenario's [friction] is not used: the study compares its own set-ups ({})",
+                self.sets()[0].trim_start_matches("friction: ")
+            ));
+        }
+        if !self.sweeps_speed() && base.sweep.is_some() {
+            notes.push("the scenario's [sweep] is not used: this study runs at fixed speeds".into());
+        }
+        notes
+    }
+
+    /// Whether the study sweeps the load speed (the others run at fixed speeds).
+    pub fn sweeps_speed(self) -> bool {
+        self.entry().sampling != Sampling::Fixed
+    }
+
+    /// The speeds (m/s) the study sweeps on `base`, None for the studies at fixed speeds.
+    pub fn speeds(self, resolution: Resolution, base: &Scenario) -> Result<Option<Vec<f64>>> {
+        Ok(match self.entry().sampling {
+            Sampling::TrainSpeeds => Some(resolution.train_speeds(base)),
+            Sampling::Speeds => Some(resolution.speeds(base)?),
+            Sampling::Fixed => None,
+        })
+    }
+
+    /// A one-line title.
+    pub fn title(self) -> &'static str {
+        self.entry().title
+    }
+}
