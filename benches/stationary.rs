@@ -142,7 +142,7 @@ fn co_moving_vehicle(c: &mut Criterion) {
         let s = scenario(track);
         let section = s.co_moving.clone().unwrap();
         group.bench_function(format!("quarter_car_{track}m"), |b| {
-            b.iter(|| study::co_moving_output::run(black_box(&s), &section).unwrap())
+            b.iter(|| study::co_moving::output::run(black_box(&s), &section).unwrap())
         });
     }
     group.finish();

@@ -133,7 +133,7 @@ fn friction_on_a_co_moving_window_and_on_a_long_track() {
     let finite =
         finite(&toml.replace("[co_moving]\nwindow = 120.0\ntrack_length = 600.0\nzones = 30.0\n", ""), 100.0, 140.0);
     let section = scenario.co_moving.clone().unwrap();
-    let (_, run) = study::co_moving_output::run(&scenario, &section).unwrap();
+    let (_, run) = study::co_moving::output::run(&scenario, &section).unwrap();
     let peak = run.wave.iter().fold(0.0f64, |m, (_, w)| m.max(w.abs()));
     let mut worst: f64 = 0.0;
     for (x, w) in finite.iter().filter(|(x, _)| (x - 140.0).abs() <= 20.0) {
@@ -155,7 +155,7 @@ fn friction_on_a_co_moving_window_and_on_a_long_track() {
         worst / wave.max_downward().value
     };
     let fine = Scenario::from_toml(&toml.replace("load_advance = 0.05", "load_advance = 0.0125"), "case.toml").unwrap();
-    let (_, fine_run) = study::co_moving_output::run(&fine, &section).unwrap();
+    let (_, fine_run) = study::co_moving::output::run(&fine, &section).unwrap();
     let (coarse, fine) = (apart(&run), apart(&fine_run));
     assert!(coarse <= 3e-3 && fine <= 0.6 * coarse, "stationary vs co-moving: {coarse:e} (Δx 0.05), {fine:e} (0.0125)");
     assert!(run.energy.friction_work < 0.0 && run.energy.residual().abs() <= 1e-9 * run.energy.load_work);
@@ -180,7 +180,7 @@ fn a_vehicle_rides_a_co_moving_window_over_an_irregular_rail() {
     // The window: the wheel starts 60 m into it, so the dip 80 m ahead is at 140 m of track.
     let window = format!("{common}{}[co_moving]\nwindow = 240.0\ntrack_length = 110.0\nzones = 80.0\n", dip(200.0));
     let scenario = Scenario::from_toml(&window, "window.toml").unwrap();
-    let (summary, run) = study::co_moving_output::run(&scenario, scenario.co_moving.as_ref().unwrap()).unwrap();
+    let (summary, run) = study::co_moving::output::run(&scenario, scenario.co_moving.as_ref().unwrap()).unwrap();
     let riding = &run.vehicles.as_ref().expect("the vehicle's results").wheels[0];
     assert!(run.energy.residual().abs() <= 1e-9 * run.energy.viscous_dissipation, "{:e}", run.energy.residual());
     // The finite track: a static start at 30 m, the dip at 110 m.

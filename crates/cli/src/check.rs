@@ -39,7 +39,7 @@ fn check(path: &std::path::Path) -> Result<()> {
     let case = scenario.build()?;
     if let Some(section) = &scenario.co_moving {
         // The window is checked as `run` would build it (too short for the wave, the load between its zones).
-        study::co_moving_output::window(&scenario, section)?;
+        study::co_moving::output::window(&scenario, section)?;
     }
     crate::scenario_args::print_warnings(&scenario, &case);
     let range = scenario.speed_range()?;

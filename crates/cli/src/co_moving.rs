@@ -20,13 +20,13 @@ pub fn run(
             check_output_file("--out", &folder.join(name))?;
         }
     }
-    let (summary, result) = study::co_moving_output::run(scenario, section)?;
+    let (summary, result) = study::co_moving::output::run(scenario, section)?;
     crate::print_output(&summary, format)?;
     if let Some(folder) = out {
         let metadata = summary.file("wave.csv");
         write_atomically(&folder.join("co-moving.json"), serde_json::to_string_pretty(&metadata)?.as_bytes())?;
-        write_atomically(&folder.join("wave.csv"), study::co_moving_output::wave_csv(&result).as_bytes())?;
-        let drawn = write_figures("--out", &study::co_moving_figures::figures(&summary, &result), folder)?;
+        write_atomically(&folder.join("wave.csv"), study::co_moving::output::wave_csv(&result).as_bytes())?;
+        let drawn = write_figures("--out", &study::co_moving::figures::figures(&summary, &result), folder)?;
         if format == Format::Text {
             println!("  wrote {}/co-moving.json, wave.csv and {}", folder.display(), drawn.join(", "));
         }

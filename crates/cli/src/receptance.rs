@@ -6,8 +6,8 @@ use anyhow::Result;
 use clap::Args;
 use scenario::Scenario;
 use std::path::PathBuf;
+use study::receptance::text::check_folder;
 use study::receptance::{ReceptanceRequest, ReceptanceStudy, frequency_range};
-use study::receptance_text::check_folder;
 
 /// Options of `frictrack receptance`.
 #[derive(Debug, Args)]

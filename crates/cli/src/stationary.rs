@@ -8,8 +8,8 @@ use clap::Args;
 use scenario::Scenario;
 use stationary::Domain;
 use std::path::PathBuf;
-use study::stationary_output::{ErrorEstimate, StationaryStudy};
-use study::stationary_text::StationaryReport;
+use study::stationary::output::{ErrorEstimate, StationaryStudy};
+use study::stationary::text::StationaryReport;
 
 /// Options of `frictrack stationary`.
 #[derive(Debug, Args)]

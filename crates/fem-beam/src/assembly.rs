@@ -6,6 +6,7 @@
 
 use crate::discretisation::Discretisation;
 use crate::element::{Element, ElementMatrix, hermite};
+use crate::element_loop::add_elements;
 use crate::error::{FemError, Result};
 use crate::mesh::Mesh;
 use crate::properties::{Beam, Foundation, Rayleigh};
@@ -101,19 +102,10 @@ impl BeamModel {
         let n = dofs.free_len();
         let (mut mass, mut stiffness, mut damping) =
             (SymmetricBanded::zeros(n, band), SymmetricBanded::zeros(n, band), SymmetricBanded::zeros(n, band));
-        for e in 0..mesh.elements {
-            let ce = element.distributed(element_damping[e]);
-            let free = dofs.element_free(e);
-            for a in 0..4 {
-                for b in 0..=a {
-                    if let (Some(i), Some(j)) = (free[a], free[b]) {
-                        mass.add(i, j, me[a][b]);
-                        stiffness.add(i, j, ke[a][b]);
-                        damping.add(i, j, ce[a][b]);
-                    }
-                }
-            }
-        }
+        let free = |e: usize| dofs.element_free(e);
+        add_elements(&mut mass, mesh.elements, free, |_| me);
+        add_elements(&mut stiffness, mesh.elements, free, |_| ke);
+        add_elements(&mut damping, mesh.elements, free, |e| element.distributed(element_damping[e]));
         if let Some((layers, nodes)) = &sleepers {
             type Layers = fn(&crate::SleeperSupport) -> [f64; 3];
             let entries = |matrix: &mut SymmetricBanded, layers_of: Layers, mass: fn(f64) -> f64| {

@@ -8,7 +8,8 @@
 //!
 //! - [`properties`]: [`Beam`] (E, I, A, ρ) and [`Foundation`] (k_f, c_f) with UIC60 / soft-soil defaults.
 //! - [`mesh`], [`supports`]: the uniform mesh, end supports and the full ↔ free DOF map.
-//! - [`element`]: Hermite and Timoshenko shape functions and element matrices; [`assembly`]: the global
+//! - [`element`]: Hermite and Timoshenko shape functions and element matrices; [`element_loop`]: the one loop
+//!   that adds elements into a global matrix (real, complex, symmetric or not); [`assembly`]: the global
 //!   [`BeamModel`]; [`discretisation`]: its mesh paired with its element, where loads and contacts act.
 //! - Matrices are the `banded` crate's [`banded::SymmetricBanded`] (storage, LDLᵀ, Schur condensation), the layer
 //!   below this one.
@@ -27,6 +28,7 @@ pub mod beam_keys;
 pub mod discretisation;
 pub mod distributed;
 pub mod element;
+pub mod element_loop;
 pub mod error;
 pub mod extreme;
 pub mod load;

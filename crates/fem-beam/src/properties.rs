@@ -265,6 +265,19 @@ impl Foundation {
         0.5 * self.tension_stiffness() * w * w + 0.5 * self.unilateral_stiffness() * w.min(0.0).powi(2)
     }
 
+    /// The rail's settlement under its own weight far from supports, ρA·g/k_f (m, downward); 0 without a soil.
+    pub fn settlement(&self, beam: &Beam) -> f64 {
+        match self.stiffness > 0.0 {
+            true => beam.mass_per_length() * crate::GRAVITY / self.stiffness,
+            false => 0.0,
+        }
+    }
+
+    /// The soil's dynamic stiffness at circular frequency `omega` (rad/s): k_f(1 + iη_f) + iωc_f (N/m²).
+    pub fn dynamic_stiffness(&self, omega: f64) -> num_complex::Complex64 {
+        num_complex::Complex64::new(self.stiffness, self.stiffness * self.loss_factor + omega * self.damping)
+    }
+
     /// Critical damping c_cr = 2√(k_f ρA) (N·s/m²); ≈ 7742 N·s/m² for the reference case.
     pub fn critical_damping(&self, beam: &Beam) -> f64 {
         2.0 * (self.stiffness * beam.mass_per_length()).sqrt()

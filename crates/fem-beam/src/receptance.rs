@@ -15,6 +15,7 @@
 
 use crate::assembly::BeamModel;
 use crate::element::ElementMatrix;
+use crate::element_loop::add_elements;
 use crate::error::{FemError, Result};
 use banded::general::GeneralBanded;
 use num_complex::Complex64;
@@ -69,27 +70,26 @@ impl<'a> FrequencyResponse<'a> {
         let mut out = GeneralBanded::zeros(dofs.free_len(), band, band);
         let (rail_factor, soil_factor) =
             (Complex64::new(1.0, model.beam().loss_factor), Complex64::new(1.0, model.foundation().loss_factor));
-        for e in 0..model.mesh().elements {
-            let damping: ElementMatrix = model.element_damping_matrix(e);
-            let free = dofs.element_free(e);
-            for a in 0..4 {
-                for b in 0..4 {
-                    if let (Some(i), Some(j)) = (free[a], free[b]) {
-                        let value = rail_factor * rail[a][b]
+        add_elements(
+            &mut out,
+            model.mesh().elements,
+            |e| dofs.element_free(e),
+            |e| {
+                let damping: ElementMatrix = model.element_damping_matrix(e);
+                std::array::from_fn(|a| {
+                    std::array::from_fn(|b| {
+                        rail_factor * rail[a][b]
                             + soil_factor * soil[a][b]
-                            + Complex64::new(-omega * omega * mass[a][b], omega * damping[a][b]);
-                        out.add(i, j, value);
-                    }
-                }
-            }
-        }
+                            + Complex64::new(-omega * omega * mass[a][b], omega * damping[a][b])
+                    })
+                })
+            },
+        );
         if let Some((sleepers, nodes)) = model.sleepers() {
             // Each layer's spring with its own loss factor and its dashpot; the masses' inertia −ω²m.
-            let layer = |l: &crate::sleepers::Layer| {
-                Complex64::new(l.stiffness, l.stiffness * l.loss_factor + omega * l.damping)
+            let layers = |s: &crate::SleeperSupport| {
+                [s.pad, s.ballast, s.subgrade.unwrap_or_default()].map(|l| l.dynamic_stiffness(omega))
             };
-            let layers =
-                |s: &crate::SleeperSupport| [layer(&s.pad), layer(&s.ballast), layer(&s.subgrade.unwrap_or_default())];
             let inertia = |m: f64| Complex64::new(-omega * omega * m, 0.0);
             for (i, j, value) in sleepers.entries(dofs, nodes, layers, inertia) {
                 out.add(i, j, value);

@@ -23,6 +23,13 @@ pub struct Layer {
     pub loss_factor: f64,
 }
 
+impl Layer {
+    /// Its dynamic stiffness at circular frequency `omega` (rad/s): k(1 + iη) + iωc (N/m).
+    pub fn dynamic_stiffness(&self, omega: f64) -> num_complex::Complex64 {
+        num_complex::Complex64::new(self.stiffness, self.stiffness * self.loss_factor + omega * self.damping)
+    }
+}
+
 /// The ballast as a body of its own under each sleeper (Zhai's two-layer model; Zhai, Wang & Lin 2004): the
 /// vibrating ballast under a rail seat lumped as a mass on a subgrade spring–dashpot. The ballast layer then joins
 /// sleeper and ballast mass; a voided or tensionless sleeper's law and its friction act between the two.
@@ -149,6 +156,15 @@ impl Sleepers {
     /// The sleepers' mass spread over their spacing, m_s/a (kg/m).
     pub fn mass_per_length(&self) -> f64 {
         self.mass / self.spacing
+    }
+
+    /// The long-wave twin in the frequency domain: the sleepers' dynamic stiffness spread over their spacing
+    /// (N/m²) at circular frequency `omega` — the pad in series with the sleeper's mass on the ballast,
+    /// k̃_p(k̃_b − ω²m_s)/(k̃_p + k̃_b − ω²m_s)/a with k̃ = k(1 + iη) + iωc ([`Layer::dynamic_stiffness`]).
+    pub fn dynamic_stiffness_per_metre(&self, omega: f64) -> num_complex::Complex64 {
+        let (pad, below) =
+            (self.pad.dynamic_stiffness(omega), self.ballast.dynamic_stiffness(omega) - omega * omega * self.mass);
+        pad * below / (pad + below) / self.spacing
     }
 
     /// The equivalent continuous track of `beam` on these sleepers and a soil `k_f` (N/m²): the beam carrying the

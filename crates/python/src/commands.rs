@@ -11,8 +11,8 @@ use report::output::Output;
 use runner::Runner;
 use scenario::error::StudyError;
 use study::presets::{Preset, Resolution, run_preset};
-use study::stationary_output::{ErrorEstimate, StationaryStudy, wave_csv};
-use study::stationary_text::StationaryReport;
+use study::stationary::output::{ErrorEstimate, StationaryStudy, wave_csv};
+use study::stationary::text::StationaryReport;
 use study::steady_response::SteadyResponse;
 
 fn json<T: serde::Serialize>(value: &T) -> PyResult<String> {

@@ -33,7 +33,7 @@ pub(crate) fn receptance(
     let at = at.unwrap_or(0.5 * scenario.mesh.length);
     let request = ReceptanceRequest { frequencies, excite: excite.unwrap_or(at), at };
     if let Some(folder) = &out {
-        study::receptance_text::check_folder(folder, "out").map_err(to_python)?;
+        study::receptance::text::check_folder(folder, "out").map_err(to_python)?;
     }
     let runner = Runner::new(jobs).map_err(to_python)?;
     let work = move |stop: &_, told: &interruptible::Progress| {

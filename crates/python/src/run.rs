@@ -101,7 +101,7 @@ pub(crate) fn columns() -> Vec<(&'static str, Vec<(&'static str, &'static str)>)
         ("histories", report::run_output::HISTORY_COLUMNS.to_vec()),
         ("snapshots", report::run_output::SNAPSHOT_COLUMNS.to_vec()),
         ("wheels", report::vehicle_output::WHEEL_COLUMNS.to_vec()),
-        ("stationary_wave", study::stationary_output::WAVE_COLUMNS.to_vec()),
-        ("receptance", study::receptance_text::RECEPTANCE_COLUMNS.to_vec()),
+        ("stationary_wave", study::stationary::output::WAVE_COLUMNS.to_vec()),
+        ("receptance", study::receptance::text::RECEPTANCE_COLUMNS.to_vec()),
     ]
 }

@@ -305,7 +305,7 @@ impl RunSummary {
                 .axles()
                 .filter(|t| t.name != "single")
                 .map(|_| AxleShareSummary::of(scenario.axle_share())),
-            critical_speed: scenario::speeds::SpeedScale::of(scenario)?.critical_speed,
+            critical_speed: case.critical_speed,
             rail_theory: scenario.beam.theory.unless_default(),
             damping_ratio: case.model.foundation().damping_ratio(case.model.beam()),
             devices: device_positions.len(),

@@ -51,8 +51,8 @@ impl SoilSummary {
         let (zones, ends): (Vec<LiftOffZone>, Vec<LiftOffZone>) =
             lift.zones.iter().cloned().partition(|z| z.to >= read[0] && z.from <= read[1]);
         let largest_gap = largest_zone(&zones).map_or(Extreme::default(), |z| z.largest_gap);
-        let settlement = match self_weight && foundation.stiffness > 0.0 {
-            true => model.beam().mass_per_length() * fem_beam::GRAVITY / foundation.stiffness,
+        let settlement = match self_weight {
+            true => foundation.settlement(model.beam()),
             false => 0.0,
         };
         Some(Self {

@@ -233,7 +233,8 @@ impl Scenario {
         if let Some(sweep) = &self.sweep {
             sweep.validate("sweep")?;
         }
-        Ok(Case { model, interactions, settings, fingerprint: self.fingerprint() })
+        let critical_speed = crate::speeds::SpeedScale::of(self)?.critical_speed;
+        Ok(Case { model, interactions, settings, critical_speed, fingerprint: self.fingerprint() })
     }
 
     /// See [`Case::fingerprint`].

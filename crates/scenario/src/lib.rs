@@ -101,6 +101,9 @@ pub struct Case {
     pub interactions: PlacedInteractions,
     /// Run settings (speed from `[load]`).
     pub settings: RunSettings,
+    /// v_cr of this track (m/s; [`speeds::SpeedScale::of`]: the rail as it is, on sleepers their long-wave twin);
+    /// `None` for a beam without any support.
+    pub critical_speed: Option<f64>,
     /// Identifies what a run of this case at a given speed computes: a hash (64-bit FNV-1a) of the frictrack version
     /// and the scenario without its title, load speed, recorded sections and sweep range. Keys journal entries.
     pub fingerprint: u64,

@@ -32,6 +32,7 @@ use crate::rows::{add_spring, row_dot};
 use banded::general::{GeneralBanded, GeneralLu};
 use fem_beam::GRAVITY;
 use fem_beam::element::{Element, ElementMatrix, hermite};
+use fem_beam::element_loop::{add_elements, consecutive_dofs};
 
 /// One soil section: its element, its row Ψ(ξ) over the element's four DOFs, its spring (N/m) and place s (m).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -98,13 +99,7 @@ impl MovingFrame {
         let convective = Convective { rho_a: rho_a * v * v, rho_i: beam.rotary_inertia() * v * v, damping: c * v };
         let matrix_e = element_matrix(&element, ei, convective, k_t);
         let mut matrix = GeneralBanded::zeros(n, BAND, BAND);
-        for e in 0..elements {
-            for (a, row) in matrix_e.iter().enumerate() {
-                for (b, value) in row.iter().enumerate() {
-                    matrix.add(2 * e + a, 2 * e + b, *value);
-                }
-            }
-        }
+        add_elements(&mut matrix, elements, consecutive_dofs, |_| matrix_e);
         let mut rhs = vec![0.0; n];
         rhs[2 * behind] -= problem.load;
         let level = problem.far_level();

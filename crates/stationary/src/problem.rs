@@ -3,7 +3,7 @@
 use crate::error::{Result, StationaryError, invalid};
 use analytic::MovingBeam;
 use fem_beam::distributed::Quadrature;
-use fem_beam::{Beam, DistributedFriction, Foundation, GRAVITY};
+use fem_beam::{Beam, DistributedFriction, Foundation};
 
 /// The domain in moving coordinates s = x − vt (m): from `behind` m behind the load to `ahead` m ahead, in
 /// elements of `element_length` m.
@@ -186,7 +186,7 @@ impl StationaryProblem {
     /// else 0 (deflections from the settled state).
     pub fn far_level(&self) -> f64 {
         match self.is_nonlinear() && self.self_weight {
-            true => -self.beam.mass_per_length() * GRAVITY / self.foundation.stiffness,
+            true => -self.foundation.settlement(&self.beam),
             false => 0.0,
         }
     }

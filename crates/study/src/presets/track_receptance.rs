@@ -7,8 +7,8 @@
 
 use super::discrete_track::{TYPICAL, fit_mesh, sleepers_unless_given};
 use super::{Resolution, StudyData, StudySummary, blank};
+use crate::receptance::peaks::Resonance;
 use crate::receptance::{ReceptanceRequest, ReceptanceStudy};
-use crate::receptance_peaks::Resonance;
 use fem_beam::BeamTheory;
 use report::plot::{Mark, PlotSpec, Series, Stroke};
 use runner::Runner;

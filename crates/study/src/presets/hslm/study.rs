@@ -12,10 +12,12 @@
 //! fastening), a verdict per train and set-up ([`super::hslm_verdict`]); on a track the "deck" is the rail and nothing
 //! is checked.
 
-use super::hslm_resonances::{Resonance, natural_frequencies, resonances};
-use super::hslm_results::{Results, TrainCurve, coach_length, friction_name};
-use super::hslm_verdict::{DeckLimit, larger, near_limit_peaks};
-use super::{Resolution, StudyData, StudyFailure, blank, failed_runs, mean_iterations, nothing_finished, with_devices};
+use super::resonances::{Resonance, natural_frequencies, resonances};
+use super::results::{Results, TrainCurve, coach_length, friction_name};
+use super::verdict::{DeckLimit, larger, near_limit_peaks};
+use crate::presets::{
+    Resolution, StudyData, StudyFailure, blank, failed_runs, mean_iterations, nothing_finished, with_devices,
+};
 use fem_beam::Train;
 use fem_beam::train::HSLM_A;
 use runner::{Metric, RefinedPeak, Runner, SweepPoint, finished, refine_maximum, unrefined};
@@ -30,15 +32,15 @@ use std::fmt::Write as _;
 /// density of its strongest set, 31 on the 200 m reference track ([`fallback_devices`]).
 const FALLBACK_FORCE: f64 = 50e3;
 /// The trains: HSLM-A1 … A10.
-pub(super) const TRAINS: usize = HSLM_A.len();
+pub(in crate::presets) const TRAINS: usize = HSLM_A.len();
 /// Samples of the bracket around each sampled maximum before golden section ([`refine_maximum`]): the largest
 /// acceleration over the nodes has two peaks 0.7 m/s apart at HSLM-A3's resonance on the example deck, which
 /// golden section alone may tell apart wrongly (7.76 instead of 7.91 m/s²).
-pub(super) const PEAK_SCAN: usize = 7;
+pub(in crate::presets) const PEAK_SCAN: usize = 7;
 
 /// The devices the study compares when `base` has no `[friction]`: N = round(31·L/200 m), at least 1 (3 on a 20 m
 /// span), of 50 kN; None when the scenario gives its own friction.
-pub(super) fn fallback_devices(base: &Scenario) -> Option<(usize, f64)> {
+pub(in crate::presets) fn fallback_devices(base: &Scenario) -> Option<(usize, f64)> {
     let f = &base.friction;
     (f.devices.is_none() && f.distributed.is_none())
         .then(|| (((31.0 * base.mesh.length / 200.0).round() as usize).max(1), FALLBACK_FORCE))
@@ -46,7 +48,7 @@ pub(super) fn fallback_devices(base: &Scenario) -> Option<(usize, f64)> {
 
 /// The study's two set-ups on `base`: without any friction, and with the scenario's `[friction]` (else the fallback
 /// devices) and its description.
-pub(super) fn friction_setups(base: &Scenario) -> (Scenario, Scenario, String) {
+pub(in crate::presets) fn friction_setups(base: &Scenario) -> (Scenario, Scenario, String) {
     let none = with_devices(base, 0, 0.0);
     if let Some((count, force)) = fallback_devices(base) {
         return (none, with_devices(base, count, force), devices_text(count, force));
@@ -76,13 +78,13 @@ fn prepared(base: &Scenario, speeds: &[f64]) -> Result<(Scenario, Vec<String>)> 
                 s.integration.load_advance = needed;
             }
         }
-        None => super::as_long_track(&mut s, &mut notes, "the trains"),
+        None => crate::presets::as_long_track(&mut s, &mut notes, "the trains"),
     }
     Ok((s, notes))
 }
 
 /// The parts of `base` the study replaces or adds, one sentence each.
-pub(super) fn overrides(base: &Scenario) -> Vec<String> {
+pub(in crate::presets) fn overrides(base: &Scenario) -> Vec<String> {
     let mut notes = Vec::new();
     let load = &base.load;
     if load.train.is_some() || !load.axles.is_empty() || !load.patches.is_empty() {
@@ -130,7 +132,7 @@ impl Results {
     }
 }
 
-pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) -> Result<StudyData> {
+pub(in crate::presets) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) -> Result<StudyData> {
     let speeds = resolution.train_speeds(base);
     let (base, _) = prepared(base, &speeds)?;
     let (none, with, friction) = friction_setups(&base);
@@ -193,7 +195,7 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
     let (summary, lines) = results.summary();
     Ok(StudyData {
         csv: results.csv(),
-        summary: super::StudySummary::of(summary),
+        summary: crate::presets::StudySummary::of(summary),
         lines,
         headline: results.headline(),
         plots: results.figures(),
@@ -287,5 +289,5 @@ fn refine_peaks(
 }
 
 #[cfg(test)]
-#[path = "hslm_tests.rs"]
+#[path = "tests.rs"]
 mod tests;

@@ -2,9 +2,9 @@
 //! train's refined peaks and deck verdict, the envelope over the ten trains per friction set-up. Speeds in m/s,
 //! deflections in m, accelerations in m/s², frequencies in Hz.
 
-use super::hslm::PEAK_SCAN;
-use super::hslm_resonances::Resonance;
-use super::hslm_results::{Results, TrainCurve, coach_length, friction_name, millimetres};
+use super::resonances::Resonance;
+use super::results::{Results, TrainCurve, coach_length, friction_name, millimetres};
+use super::study::PEAK_SCAN;
 use report::run_summary::AxleShareSummary;
 use runner::PeakLocation;
 use scenario::units::KMH;
@@ -196,7 +196,7 @@ impl Results {
         }
     }
 
-    pub(super) fn summary(&self) -> (HslmSummary, Vec<String>) {
+    pub(in crate::presets) fn summary(&self) -> (HslmSummary, Vec<String>) {
         let mut lines = Vec::new();
         let curves = self.curves.iter().map(|c| self.curve_summary(c, &mut lines)).collect();
         let envelopes = (0..2).map(|friction| self.envelope_summary(friction, &mut lines)).collect();

@@ -120,7 +120,7 @@ impl DeckVerdict {
 /// Local maxima of the sampled acceleration, other than the one `main` refined, that reach [`NEAR_LIMIT`] of the
 /// limit: each may refine above it (sampling missed HSLM-A2's peak by 16 %, 3.30 against 3.93 m/s²). Indices of
 /// interior sweep points, in order.
-pub(super) fn near_limit_peaks(points: &[SweepPoint], main: &RefinedPeak, limit: f64) -> Vec<usize> {
+pub(in crate::presets) fn near_limit_peaks(points: &[SweepPoint], main: &RefinedPeak, limit: f64) -> Vec<usize> {
     let a = |i: usize| points[i].deck_acceleration();
     (1..points.len().saturating_sub(1))
         .filter(|&i| a(i) >= a(i - 1) && a(i) >= a(i + 1) && a(i) >= NEAR_LIMIT * limit)
@@ -133,7 +133,7 @@ pub const NEAR_LIMIT: f64 = 0.7;
 
 /// `main` with `other` (a secondary peak refined on its own bracket) taken in: the larger value stands, over
 /// `main`'s range, and the runs of both are kept (to draw and count).
-pub(super) fn larger(main: RefinedPeak, other: RefinedPeak) -> RefinedPeak {
+pub(in crate::presets) fn larger(main: RefinedPeak, other: RefinedPeak) -> RefinedPeak {
     let mut evaluations = main.evaluations.clone();
     evaluations.extend(other.evaluations.iter().cloned());
     let best = if other.value > main.value { other } else { main.clone() };

@@ -1,7 +1,7 @@
 //! The figures of a co-moving run (docs/theory.md §15): the wave in the load's frame at the end, and how much it
 //! changed over each window length travelled. Deflections in mm, s and distances in m.
 
-use crate::co_moving_output::{CoMovingSummary, STATIONARY_CHANGE};
+use crate::co_moving::output::{CoMovingSummary, STATIONARY_CHANGE};
 use report::plot::{PlotSpec, Series, Stroke};
 use track::co_moving::CoMovingResult;
 

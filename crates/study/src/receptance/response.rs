@@ -4,7 +4,7 @@
 //! (local peaks of |α|) refined between the grid's frequencies; and what makes the numbers doubtful — a mesh too
 //! coarse for the top frequency, waves that reach the ends and come back.
 
-use crate::receptance_peaks::{Resonance, resonances, warnings};
+use crate::receptance::peaks::{Resonance, resonances, warnings};
 use fem_beam::receptance::FrequencyResponse;
 use num_complex::Complex64;
 use runner::Runner;
@@ -171,8 +171,8 @@ impl ReceptanceStudy {
             request.frequencies.iter().zip(&values).map(|(&f, &a)| ReceptancePoint::of(f, a)).collect();
         let curve: Vec<(f64, f64)> = points.iter().map(|p| (p.frequency, p.magnitude)).collect();
         let mut resonances = resonances(&curve, |f| alpha(f).map(|a| a.norm()))?;
-        let unresolved = crate::receptance_peaks::keep_resolved(&model, &mut resonances);
-        crate::receptance_peaks::name_resonances(&model, &mut resonances);
+        let unresolved = crate::receptance::peaks::keep_resolved(&model, &mut resonances);
+        crate::receptance::peaks::name_resonances(&model, &mut resonances);
         let mut warnings = warnings(&model, &request.frequencies, request.excite);
         // A point on a held node: the rail's deflection is zero there, and with it α.
         let mesh = model.mesh();
@@ -189,7 +189,7 @@ impl ReceptanceStudy {
             warnings.push(format!(
                 "{unresolved} peak(s) of |α| where the mesh has fewer than {} elements a bending wavelength are not \
                  listed as resonances: there the curve is the mesh's, not the track's",
-                crate::receptance_peaks::LISTED_ELEMENTS_PER_WAVELENGTH
+                crate::receptance::peaks::LISTED_ELEMENTS_PER_WAVELENGTH
             ));
         }
         Ok(Self {

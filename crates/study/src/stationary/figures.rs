@@ -2,7 +2,7 @@
 //! with ballast friction, the ballast's force along s — or several speeds' peaks against the speed. Deflections in
 //! mm, moments in kN·m, forces in kN/m, s in m.
 
-use crate::stationary_output::{StationaryPoint, StationaryStudy};
+use crate::stationary::output::{StationaryPoint, StationaryStudy};
 use report::plot::{PlotSpec, Series, Stroke};
 
 impl StationaryStudy {

@@ -4,11 +4,11 @@
 //! the deflection friction leaves behind the load, the waves' shapes at three speeds, and the critical-speed shift
 //! and peak reduction on the infinite track.
 
-use super::curves::{Curves, CurvesSummary, sweep_curves};
-use super::stationary_wave_curves::{FRICTION, InfiniteCritical, InfiniteCurve, Soil, TENSION_RATIO};
-use super::stationary_wave_figures as figures;
-use super::{StudyData, StudySummary, blank, mean_iterations, with_distributed};
-use crate::stationary_output::{ErrorEstimate, StationaryPoint, StationaryStudy};
+use super::curves::{FRICTION, InfiniteCritical, InfiniteCurve, Soil, TENSION_RATIO};
+use super::figures;
+use crate::presets::curves::{Curves, CurvesSummary, sweep_curves};
+use crate::presets::{StudyData, StudySummary, blank, mean_iterations, with_distributed};
+use crate::stationary::output::{ErrorEstimate, StationaryPoint, StationaryStudy};
 use analytic::golden::refine_peak;
 use runner::Runner;
 use runner::cost::Estimate;
@@ -19,7 +19,11 @@ use serde::Serialize;
 use stationary::{ContactGuess, Domain};
 use std::fmt::Write as _;
 
-pub(super) fn study(resolution: super::Resolution, base: &Scenario, runner: &Runner) -> Result<StudyData> {
+pub(in crate::presets) fn study(
+    resolution: crate::presets::Resolution,
+    base: &Scenario,
+    runner: &Runner,
+) -> Result<StudyData> {
     let speeds = resolution.speeds(base)?;
     let scale = SpeedScale::of(base)?;
     let v_cr = scale.critical_speed;
@@ -165,7 +169,7 @@ fn summary(infinite: &[InfiniteCurve], finite: &Curves, v_cr: Option<f64>) -> (S
         });
         lines.push(format!("infinite track, {}: {}", curve.soil.label(), critical_text(&curve.critical)));
     }
-    lines.extend(crate::stationary_output::branch_note("tensionless").map(|n| format!("infinite track: {n}")));
+    lines.extend(crate::stationary::output::branch_note("tensionless").map(|n| format!("infinite track: {n}")));
     let (finite_summary, finite_lines) = finite.summary();
     lines.extend(finite_lines.into_iter().map(|l| format!("finite beam, {l}")));
     let summary =
@@ -200,7 +204,7 @@ pub struct InfiniteSummary {
 }
 
 /// A curve's peak in words: "at … m/s (peak … mm)" and what bounds it.
-pub(super) fn critical_text(critical: &InfiniteCritical) -> String {
+pub(in crate::presets) fn critical_text(critical: &InfiniteCritical) -> String {
     match *critical {
         InfiniteCritical::Interior { speed, peak } => format!("at {speed:.1} m/s (peak {:.0} mm)", peak * 1e3),
         InfiniteCritical::AtEnd { speed, peak } => {
@@ -255,8 +259,8 @@ fn headline(infinite: &[InfiniteCurve], finite: &Curves) -> Vec<String> {
 
 /// What of `base` the study replaces: the common rule (its friction: the study sets its own per curve), and its
 /// soil's law (the study sets linear, tensionless and bilinear itself).
-pub(super) fn overrides(base: &Scenario) -> Vec<String> {
-    let mut notes = super::Preset::StationaryWave.common_overrides(base);
+pub(in crate::presets) fn overrides(base: &Scenario) -> Vec<String> {
+    let mut notes = crate::presets::Preset::StationaryWave.common_overrides(base);
     if base.foundation.law != FoundationLawKind::Linear {
         notes.push(
             "the scenario's [foundation] law is not used: the study sets linear, tensionless and bilinear (α = ½) \

@@ -1,9 +1,9 @@
 //! The figures of the stationary-wave study: peaks against speed on the infinite track beside the finite beam, the
 //! three soils, the deflection friction leaves behind the load, and the waves' shapes at three speeds.
 
-use super::curves::Curves;
-use super::stationary_wave_curves::{FRICTION, InfiniteCritical, InfiniteCurve};
-use crate::stationary_output::StationaryPoint;
+use super::curves::{FRICTION, InfiniteCritical, InfiniteCurve};
+use crate::presets::curves::Curves;
+use crate::stationary::output::StationaryPoint;
 use report::figures::{DeflectionCurve, deflection_figure};
 use report::plot::{Mark, PanelY, PlotSpec, Series, Stroke};
 use scenario::Scenario;
@@ -11,7 +11,7 @@ use scenario::Scenario;
 const SPEED: &str = "load speed v (m/s)";
 
 /// The four figures.
-pub(super) fn plots(
+pub(in crate::presets) fn plots(
     infinite: &[InfiniteCurve],
     finite: &Curves,
     shape_speeds: &[f64],

@@ -24,7 +24,7 @@ pub struct Resonance {
 /// The resonance speeds of coach length `d` (m) for `frequencies` (Hz, ascending) inside [from, to] (m/s). A
 /// frequency within 1 % of a lower one gives the same speeds and is left out (modes that crowd, as the lowest ones
 /// of a beam on a foundation do; the study lists resonances of spans only, whose frequencies grow as n²).
-pub(super) fn resonances(frequencies: &[f64], d: f64, (from, to): (f64, f64)) -> Vec<Resonance> {
+pub(in crate::presets) fn resonances(frequencies: &[f64], d: f64, (from, to): (f64, f64)) -> Vec<Resonance> {
     let mut out = Vec::new();
     for (j, &frequency) in frequencies.iter().enumerate() {
         if frequencies[..j].iter().any(|&f| (frequency - f).abs() <= 0.01 * f) {
@@ -42,7 +42,7 @@ pub(super) fn resonances(frequencies: &[f64], d: f64, (from, to): (f64, f64)) ->
 
 /// f₁ … f₃ (Hz) of `model`, None where its dense eigenproblem is refused (over 2000 free DOFs: a span of more than
 /// 1000 elements, then without resonance speeds).
-pub(super) fn natural_frequencies(model: &BeamModel) -> Option<Vec<f64>> {
+pub(in crate::presets) fn natural_frequencies(model: &BeamModel) -> Option<Vec<f64>> {
     let count = MODES.min(model.dofs().free_len());
     let omegas = model.natural_frequencies(count).ok()?;
     Some(omegas.into_iter().map(|w| w / std::f64::consts::TAU).collect())

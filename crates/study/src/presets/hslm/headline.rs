@@ -1,14 +1,14 @@
 //! The two sentences of the train study's report section: the critical train without and with friction, and by how
 //! much friction moves the peak.
 
-use super::hslm_results::{Results, TrainCurve, millimetres};
+use super::results::{Results, TrainCurve, millimetres};
 use runner::PeakLocation;
 use scenario::units::KMH;
 
 impl Results {
     /// Without friction the critical train, its speed, peak, amplification and the largest acceleration; with
     /// friction the same and the change of the peak.
-    pub(super) fn headline(&self) -> Vec<String> {
+    pub(in crate::presets) fn headline(&self) -> Vec<String> {
         let (none, with) = (self.envelope_text(0), self.envelope_text(1));
         let peak = |friction| self.critical(friction).critical.max_downward_deflection;
         let cut = 1.0 - peak(1) / peak(0);

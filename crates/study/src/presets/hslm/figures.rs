@@ -4,7 +4,7 @@
 //! friction, the critical train and speed marked, the static envelope and — on a span — the EN 1990 acceleration
 //! limit drawn for reference.
 
-use super::hslm_results::{Results, TrainCurve, coach_length, interpolate, millimetres};
+use super::results::{Results, TrainCurve, coach_length, interpolate, millimetres};
 use report::plot::{Mark, Palette, PlotSpec, Series, Stroke};
 use runner::SweepPoint;
 use scenario::units::KMH;
@@ -62,7 +62,7 @@ impl Results {
     }
 
     /// Every figure of the study.
-    pub(super) fn figures(&self) -> Vec<PlotSpec> {
+    pub(in crate::presets) fn figures(&self) -> Vec<PlotSpec> {
         let mut plots = Vec::new();
         for friction in 0..2 {
             let suffix = if friction == 0 { "" } else { "-friction" };

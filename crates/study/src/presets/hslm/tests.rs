@@ -1,6 +1,6 @@
 //! Tests of the HSLM study's set-up: what it changes in the scenario, its friction set-ups, resonance speeds.
-use super::super::hslm_resonances::resonances;
-use super::super::hslm_results::millimetres;
+use super::super::resonances::resonances;
+use super::super::results::millimetres;
 use super::{friction_setups, prepared};
 use scenario::{AbsorbingZonesSection, DevicesSection, DistributedSection, Scenario};
 

@@ -2,7 +2,7 @@
 //! per speed with where they are, what lies behind the load, the zones and each speed's status; one speed's JSON
 //! is its point, several speeds' the list; the CSV is one speed's wave or the points over speeds.
 
-use crate::stationary_output::{POINT_COLUMNS, StationaryStudy, WAVE_COLUMNS, points_csv, wave_csv};
+use crate::stationary::output::{POINT_COLUMNS, StationaryStudy, WAVE_COLUMNS, points_csv, wave_csv};
 use report::columns::{Column, units_line};
 use report::output::{Output, pretty};
 use std::fmt::{self, Formatter};
@@ -93,7 +93,7 @@ impl Output for StationaryReport<'_> {
             "  (s = x − vt: positive ahead of the load; deflections from the settled rail, signed behind: what is left \
              there)"
         )?;
-        if let Some(note) = crate::stationary_output::branch_note(study.law) {
+        if let Some(note) = crate::stationary::output::branch_note(study.law) {
             writeln!(f, "  {note}")?;
         }
         if let Some((point, error)) = study.largest_error() {

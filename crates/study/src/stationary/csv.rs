@@ -2,7 +2,7 @@
 //! moving coordinate, and the points of a speed sweep (one row per speed, the JSON keys of
 //! [`StationaryPoint`] as column names).
 
-use crate::stationary_output::StationaryPoint;
+use crate::stationary::output::StationaryPoint;
 use fem_beam::Extreme;
 use report::columns::{Column, header};
 use stationary::StationaryWave;

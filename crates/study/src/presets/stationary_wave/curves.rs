@@ -2,37 +2,37 @@
 //! (linear at each ballast friction level, tensionless, bilinear), one curve of waves over speed per soil, and where
 //! each curve peaks. Speeds in m/s, deflections in m, friction in N/m.
 
-use super::with_distributed;
-use crate::stationary_output::StationaryStudy;
+use crate::presets::with_distributed;
+use crate::stationary::output::StationaryStudy;
 use scenario::{FoundationLawKind, Scenario};
 use serde::Serialize;
 use stationary::StationaryWave;
 
 /// The ballast friction levels (N/m), as in the distributed-speed study.
-pub(super) const FRICTION: [f64; 5] = [0.0, 1e3, 2e3, 5e3, 10e3];
+pub(in crate::presets) const FRICTION: [f64; 5] = [0.0, 1e3, 2e3, 5e3, 10e3];
 
 /// The bilinear soil's tension ratio α = k_t/k_c.
-pub(super) const TENSION_RATIO: f64 = 0.5;
+pub(in crate::presets) const TENSION_RATIO: f64 = 0.5;
 
 /// One soil of the infinite track.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub(super) struct Soil {
+pub(in crate::presets) struct Soil {
     /// "linear", "tensionless" or "bilinear".
-    pub(super) foundation: &'static str,
+    pub(in crate::presets) foundation: &'static str,
     /// f_u (N/m).
-    pub(super) force_per_length: f64,
+    pub(in crate::presets) force_per_length: f64,
 }
 
 impl Soil {
     /// The curves of the study: the linear soil at every friction level, then the nonlinear ones without friction.
-    pub(super) fn all() -> Vec<Soil> {
+    pub(in crate::presets) fn all() -> Vec<Soil> {
         let linear = FRICTION.iter().map(|&f| Soil { foundation: "linear", force_per_length: f });
         let nonlinear = ["tensionless", "bilinear"].map(|foundation| Soil { foundation, force_per_length: 0.0 });
         linear.chain(nonlinear).collect()
     }
 
     /// Legend text.
-    pub(super) fn label(&self) -> String {
+    pub(in crate::presets) fn label(&self) -> String {
         match (self.foundation, self.force_per_length) {
             ("linear", 0.0) => "no friction".into(),
             ("linear", f) => format!("f_u = {} kN/m", f / 1e3),
@@ -42,7 +42,7 @@ impl Soil {
     }
 
     /// `base` with this soil: its law (with the rail's weight on a nonlinear one) and its ballast friction.
-    pub(super) fn scenario(&self, base: &Scenario) -> Scenario {
+    pub(in crate::presets) fn scenario(&self, base: &Scenario) -> Scenario {
         let mut s = with_distributed(base, self.force_per_length);
         let f = &mut s.foundation;
         (f.law, f.tension_ratio, f.self_weight) = match self.foundation {
@@ -84,13 +84,13 @@ pub enum InfiniteCritical {
 }
 
 /// One curve of the infinite track: its soil, its waves, where it peaks.
-pub(super) struct InfiniteCurve {
-    pub(super) soil: Soil,
-    pub(super) study: StationaryStudy,
-    pub(super) critical: InfiniteCritical,
+pub(in crate::presets) struct InfiniteCurve {
+    pub(in crate::presets) soil: Soil,
+    pub(in crate::presets) study: StationaryStudy,
+    pub(in crate::presets) critical: InfiniteCritical,
     /// The refinement's waves: (speed m/s, max downward deflection m), drawn with the sweep so that the refined peak
     /// lies on its curve (near an undamped resonance the sampled speeds miss it by a factor of three).
-    pub(super) refinement: Vec<(f64, f64)>,
+    pub(in crate::presets) refinement: Vec<(f64, f64)>,
     /// The waves at the shape speeds (None where none was found).
-    pub(super) shapes: Vec<Option<StationaryWave>>,
+    pub(in crate::presets) shapes: Vec<Option<StationaryWave>>,
 }

@@ -4,7 +4,7 @@
 //! that is not one. Deflections (m, from the settled rail, upward positive; peaks as magnitudes), moments (N·m,
 //! sagging positive), positions s = x − vt (m, positive ahead of the load), powers (W).
 
-pub use crate::stationary_csv::{POINT_COLUMNS, WAVE_COLUMNS, points_csv, wave_csv};
+pub use crate::stationary::csv::{POINT_COLUMNS, WAVE_COLUMNS, points_csv, wave_csv};
 
 use fem_beam::{Extreme, LiftOffZone};
 use scenario::Scenario;

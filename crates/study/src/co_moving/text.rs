@@ -1,7 +1,7 @@
 //! The text report of a run through a co-moving window (`frictrack run --co-moving`'s text): the window, the wave
 //! in the frame at the end, how it settled, the energy carried out behind, the vehicles and the solver.
 
-use crate::co_moving_output::{CoMovingSummary, Settling};
+use crate::co_moving::output::{CoMovingSummary, Settling};
 use report::output::{Output, pretty};
 use std::fmt::{self, Formatter};
 

@@ -120,24 +120,13 @@ fn lowest_after(points: &[(f64, f64)], i: usize) -> f64 {
     points[i + 1..].iter().map(|p| p.1).take_while(|&m| m <= peak).fold(peak, f64::min)
 }
 
-/// The sleepers' dynamic stiffness spread over their spacing (N/m², 0 without): the pad in series with the sleeper's
-/// mass on the ballast, k̃_p(k̃_b − ω²m_s)/(k̃_p + k̃_b − ω²m_s)/a with k̃ = k(1 + iη) + iωc — the long waves' view of them.
-fn sleepers_per_metre(model: &BeamModel, omega: f64) -> Complex64 {
-    let Some((s, _)) = model.sleepers() else { return Complex64::new(0.0, 0.0) };
-    let layer = |l: &fem_beam::Layer| Complex64::new(l.stiffness, l.stiffness * l.loss_factor + omega * l.damping);
-    let (pad, below) = (layer(&s.pad), layer(&s.ballast) - omega * omega * s.mass);
-    pad * below / (pad + below) / s.spacing
-}
-
-/// The wavenumbers (rad/m) of the track of `model` at `f` (Hz): the rail on its soil and sleepers' dynamic stiffness.
+/// The wavenumbers (rad/m) of the track of `model` at `f` (Hz): the rail on its soil and the sleepers' dynamic
+/// stiffness spread over their spacing (the long waves' view of them, [`fem_beam::Sleepers::dynamic_stiffness_per_metre`]).
 fn track_waves(model: &BeamModel, f: f64) -> [Complex64; 2] {
     let (beam, foundation) = (model.beam(), model.foundation());
     let omega = TAU * f;
-    let soil = Complex64::new(
-        foundation.stiffness,
-        foundation.stiffness * foundation.loss_factor + omega * foundation.damping,
-    );
-    wavenumbers(beam, soil + sleepers_per_metre(model, omega), beam.loss_factor, omega)
+    let sleepers = model.sleepers().map_or(Complex64::new(0.0, 0.0), |(s, _)| s.dynamic_stiffness_per_metre(omega));
+    wavenumbers(beam, foundation.dynamic_stiffness(omega) + sleepers, beam.loss_factor, omega)
 }
 
 /// The shortest bending wavelength (m) of the track of `model` at `f` (Hz).
