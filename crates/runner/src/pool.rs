@@ -1,9 +1,10 @@
 //! How the runs of sweeps and studies are carried out: one thread pool, progress, a journal of finished runs, a stop
 //! flag, and an estimate of each batch's cost before it starts.
 
-use super::{FailedRun, SweepPoint, SweepRow, point_until, simulate_until};
 use crate::cost::{Estimate, RunCost};
 use crate::journal::Journal;
+use crate::run_point::{point_until, simulate_until};
+use crate::sweep_point::{FailedRun, SweepPoint, SweepRow};
 use rayon::prelude::*;
 use scenario::Case;
 use scenario::error::{Result, StudyError, invalid};

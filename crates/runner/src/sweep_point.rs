@@ -1,0 +1,129 @@
+//! One point of a sweep: a run's results at one speed (extremes, energy, solver work; the vehicles' and sleepers'
+//! columns where it has them), or why it failed.
+
+use crate::sleeper_columns::SleeperColumns;
+use fem_beam::Extreme;
+use nscd::EnergyBalance;
+use serde::{Deserialize, Serialize};
+
+/// What one run of a sweep reports: extremes as [`Extreme`]s (magnitudes with node and time), the energy balance.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct SweepPoint {
+    /// Load speed (m/s).
+    pub speed: f64,
+    /// Max downward deflection over nodes and steps (m, magnitude), its node and time.
+    pub max_downward_deflection: Extreme,
+    /// Max upward deflection (m, magnitude).
+    pub max_upward_deflection: Extreme,
+    /// Max downward deflection while the load was inside the extremes window (m, magnitude).
+    pub window_max_downward_deflection: Extreme,
+    /// Max upward deflection while the load was inside the extremes window (m, magnitude).
+    pub window_max_upward_deflection: Extreme,
+    /// Largest vertical acceleration over nodes and steps (m/s², magnitude); None where undefined (a Timoshenko rail:
+    /// [`track::RunResult::max_acceleration`]).
+    #[serde(default)]
+    pub max_acceleration: Option<Extreme>,
+    /// Largest band-limited acceleration (m/s², magnitude), where the run asked for one: a bridge deck's check value
+    /// ([`track::RunResult::band_acceleration`]).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub band_acceleration: Option<Extreme>,
+    /// W̄ (m²).
+    pub global_norm: f64,
+    /// The energy balance (J).
+    pub energy: EnergyBalance,
+    /// Mean friction-solver iterations per step.
+    pub mean_iterations: f64,
+    /// The vehicles' columns, in a run with vehicles.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub vehicles: Option<VehicleColumns>,
+    /// The sleepers' columns, in a run on sleepers.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub sleepers: Option<SleeperColumns>,
+}
+
+impl SweepPoint {
+    /// The acceleration a deck check reads (m/s²): the band-limited one where the run computed it (a span: EN 1990
+    /// A2's modes up to f_max), else the nodal one; NaN where neither is defined.
+    pub fn deck_acceleration(&self) -> f64 {
+        self.band_acceleration.or(self.max_acceleration).map_or(f64::NAN, |a| a.value)
+    }
+}
+
+/// What a sweep point reports of the vehicles (docs/theory.md §12), over the wheels and bodies of the run.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct VehicleColumns {
+    /// Smallest wheel–rail force of any wheel (N).
+    pub min_wheel_force: f64,
+    /// Largest wheel–rail force (N).
+    pub max_wheel_force: f64,
+    /// Largest ΔQ/Q₀ of any wheel.
+    pub max_dynamic_increment: f64,
+    /// Losses of contact over all wheels.
+    pub losses_of_contact: usize,
+    /// Largest body acceleration of any vehicle (m/s²).
+    pub max_body_acceleration: f64,
+    /// Largest body RMS acceleration (m/s²).
+    pub rms_body_acceleration: f64,
+}
+
+impl VehicleColumns {
+    /// The columns of a run's vehicle results.
+    pub fn of(results: &track::simulation::VehicleResults) -> Self {
+        let wheels = &results.wheels;
+        let largest = |values: &mut dyn Iterator<Item = f64>| values.fold(0.0, f64::max);
+        Self {
+            min_wheel_force: wheels.iter().map(|w| w.min_force).fold(f64::INFINITY, f64::min),
+            max_wheel_force: largest(&mut wheels.iter().map(|w| w.max_force)),
+            max_dynamic_increment: largest(&mut wheels.iter().map(|w| w.dynamic_increment())),
+            losses_of_contact: wheels.iter().map(|w| w.losses.len()).sum(),
+            max_body_acceleration: largest(&mut results.bodies.iter().map(|b| b.max_acceleration)),
+            rms_body_acceleration: largest(&mut results.bodies.iter().map(|b| b.rms_acceleration)),
+        }
+    }
+
+    /// The values in the order of [`VEHICLE_CSV_COLUMNS`].
+    pub fn values(&self) -> [f64; 6] {
+        [
+            self.min_wheel_force,
+            self.max_wheel_force,
+            self.max_dynamic_increment,
+            self.losses_of_contact as f64,
+            self.max_body_acceleration,
+            self.rms_body_acceleration,
+        ]
+    }
+}
+
+/// The vehicles' columns of sweep output, after [`CSV_COLUMNS`] when a sweep runs vehicles: name, unit, meaning.
+pub const VEHICLE_CSV_COLUMNS: [(&str, &str, &str); 6] = [
+    ("min_wheel_force", "N", "smallest wheel–rail contact force of any wheel (0: contact lost)"),
+    ("max_wheel_force", "N", "largest wheel–rail contact force"),
+    ("max_dynamic_increment", "1", "largest |Q − Q₀|/Q₀ of any wheel"),
+    ("losses_of_contact", "1", "losses of contact over all wheels"),
+    ("max_body_acceleration", "m/s²", "largest body acceleration of any vehicle"),
+    ("rms_body_acceleration", "m/s²", "largest RMS body acceleration of any vehicle"),
+];
+
+/// A run of a sweep that failed: its speed and why. The sweep keeps every other run (see
+/// [`Runner::speed_sweep_keeping`]); its CSV row has the speed and empty values.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct FailedRun {
+    /// Load speed (m/s).
+    pub speed: f64,
+    /// The run's error, as text.
+    pub error: String,
+}
+
+/// One speed of a sweep: its finished point, or why it failed.
+pub type SweepRow = std::result::Result<SweepPoint, FailedRun>;
+
+/// The finished points of sweep rows, in order (the failed runs left out).
+pub fn finished(rows: &[SweepRow]) -> Vec<SweepPoint> {
+    rows.iter().filter_map(|r| r.as_ref().ok().cloned()).collect()
+}
+
+/// The failed runs of sweep rows, in order.
+pub fn failures(rows: &[SweepRow]) -> Vec<FailedRun> {
+    rows.iter().filter_map(|r| r.as_ref().err().cloned()).collect()
+}
