@@ -350,4 +350,20 @@ mod tests {
         );
         assert!(Estimate::stationary(&friction, &speeds(10.0, 200.0, 100), false).seconds < sweep.seconds);
     }
+
+    /// A Timoshenko rail's wave turns supercritical at its own v_cr, below Euler–Bernoulli's (shear and rotary
+    /// inertia soften it): between the two an undamped friction sweep is said to be a lower bound — the Euler–Bernoulli
+    /// formula, used before, called it subcritical.
+    #[test]
+    fn a_timoshenko_rail_turns_supercritical_at_its_own_critical_speed() {
+        let mut problem = Scenario::default().stationary_problem(100.0, stationary::Domain::default()).unwrap();
+        problem.friction.force_per_length = 5e3;
+        let euler = analytic::MovingBeam::new(&problem.beam, &problem.foundation).unwrap().critical_speed();
+        problem.beam.theory = fem_beam::BeamTheory::Timoshenko { shear_modulus: 81e9, shear_coefficient: 0.4 };
+        let shear = analytic::MovingBeam::new(&problem.beam, &problem.foundation).unwrap().critical_speed();
+        assert!(shear < euler, "{shear} vs {euler}");
+        let between = [0.5 * (shear + euler)];
+        assert!(Estimate::stationary(&problem, &between, true).lower_bound);
+        assert!(!Estimate::stationary(&problem, &[0.99 * shear], true).lower_bound);
+    }
 }
