@@ -14,6 +14,7 @@ use crate::figures::{Curves, quantity_figure};
 use crate::plot::{Mark, PlotSpec, Series};
 use scenario::error::Result;
 use scenario::number::row;
+use scenario::quantities::unit;
 use scenario::{Case, Scenario};
 use std::fmt::Write as _;
 use std::sync::atomic::AtomicBool;
@@ -25,19 +26,24 @@ pub const FIGURE_STEMS: [&str; 4] =
 
 /// Columns of `histories.csv`: name and unit.
 pub const HISTORY_COLUMNS: [Column; 8] = [
-    ("section", "m"),
-    ("time", "s"),
-    ("load_position", "m"),
-    ("deflection", "m"),
-    ("velocity", "m/s"),
-    ("acceleration", "m/s²"),
-    ("moment", "N·m"),
-    ("friction_force", "N"),
+    ("section", unit("section")),
+    ("time", unit("time")),
+    ("load_position", unit("load_position")),
+    ("deflection", unit("deflection")),
+    ("velocity", unit("velocity")),
+    ("acceleration", unit("acceleration")),
+    ("moment", unit("moment")),
+    ("friction_force", unit("friction_force")),
 ];
 
 /// Columns of `snapshots.csv`: name and unit.
-pub const SNAPSHOT_COLUMNS: [Column; 5] =
-    [("time", "s"), ("load_position", "m"), ("x", "m"), ("deflection", "m"), ("moment", "N·m")];
+pub const SNAPSHOT_COLUMNS: [Column; 5] = [
+    ("time", unit("time")),
+    ("load_position", unit("load_position")),
+    ("x", unit("x")),
+    ("deflection", unit("deflection")),
+    ("moment", unit("moment")),
+];
 
 /// A recorded run's scenario: `scenario` with mid-span as its recorded section when it names none (a run that writes
 /// its histories records at least there).

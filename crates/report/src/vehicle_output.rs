@@ -10,6 +10,7 @@ use crate::figures::{Curves, quantity_figure};
 use crate::mesh_ripple::element_ripple;
 use crate::plot::PlotSpec;
 use scenario::number::row;
+use scenario::quantities::unit;
 use serde::Serialize;
 use std::fmt::Write as _;
 use track::simulation::VehicleResults;
@@ -22,13 +23,13 @@ pub const MAX_VEHICLES_DRAWN: usize = 4;
 
 /// Columns of `wheels.csv`: name and unit.
 pub const WHEEL_COLUMNS: [crate::columns::Column; 7] = [
-    ("vehicle", "1"),
-    ("wheel", "1"),
-    ("time", "s"),
-    ("position", "m"),
-    ("force", "N"),
-    ("rail_deflection", "m"),
-    ("moment", "N·m"),
+    ("vehicle", unit("vehicle")),
+    ("wheel", unit("wheel")),
+    ("time", unit("time")),
+    ("position", unit("position")),
+    ("force", unit("force")),
+    ("rail_deflection", unit("rail_deflection")),
+    ("moment", unit("moment")),
 ];
 
 /// One wheel. Wheels and vehicles are numbered from 1 in every output (text, JSON, CSV, figures): `wheel` is the

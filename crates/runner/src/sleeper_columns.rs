@@ -3,6 +3,7 @@
 //! them and under their neighbours — the sleepers beside a voided one carry what it does not — and how low they went.
 
 use fem_beam::BeamModel;
+use scenario::quantities::unit;
 use serde::{Deserialize, Serialize};
 use track::simulation::SleeperResults;
 
@@ -24,11 +25,23 @@ pub struct SleeperColumns {
 
 /// The sleepers' columns of sweep output, after the vehicles' (when a sweep runs on sleepers): name, unit, meaning.
 pub const SLEEPER_CSV_COLUMNS: [(&str, &str, &str); 5] = [
-    ("max_pad_force", "N", "largest rail-pad force where the results are read (compression)"),
-    ("max_ballast_force", "N", "largest ballast force under a sleeper where the results are read"),
-    ("exception_ballast_force", "N", "largest ballast force under a sleeper of [[sleepers.exceptions]]"),
-    ("neighbour_ballast_force", "N", "largest ballast force under a sleeper next to the exceptions"),
-    ("exception_lowest", "m", "the lowest a sleeper of the exceptions went (downward)"),
+    ("max_pad_force", unit("max_pad_force"), "largest rail-pad force where the results are read (compression)"),
+    (
+        "max_ballast_force",
+        unit("max_ballast_force"),
+        "largest ballast force under a sleeper where the results are read",
+    ),
+    (
+        "exception_ballast_force",
+        unit("exception_ballast_force"),
+        "largest ballast force under a sleeper of [[sleepers.exceptions]]",
+    ),
+    (
+        "neighbour_ballast_force",
+        unit("neighbour_ballast_force"),
+        "largest ballast force under a sleeper next to the exceptions",
+    ),
+    ("exception_lowest", unit("exception_lowest"), "the lowest a sleeper of the exceptions went (downward)"),
 ];
 
 impl SleeperColumns {

@@ -5,34 +5,59 @@ use crate::sleeper_columns::SLEEPER_CSV_COLUMNS;
 use crate::sweep_point::{SweepPoint, SweepRow, VEHICLE_CSV_COLUMNS};
 use scenario::Scenario;
 use scenario::number::row_with_gaps;
+use scenario::quantities::unit;
 use std::io::Write;
 
 /// The columns of sweep output: name, unit, meaning (in this order; the user guide and the JSON beside a sweep's CSV
 /// list them).
 pub const CSV_COLUMNS: [(&str, &str, &str); 17] = [
-    ("speed", "m/s", "load speed"),
-    ("max_downward_deflection", "m", "largest downward deflection over all nodes and steps (magnitude)"),
-    ("max_upward_deflection", "m", "largest upward deflection over all nodes and steps (magnitude)"),
-    ("dissipated_energy", "J", "energy removed by friction and viscous damping"),
-    ("global_norm", "m²", "W̄ = (1/t_on)∫∫|w| dx dt over the crossing"),
-    ("max_downward_deflection_position", "m", "node of the largest downward deflection"),
-    ("max_downward_deflection_time", "s", "time of the largest downward deflection"),
-    ("load_work", "J", "work of the moving load"),
-    ("energy_residual", "J", "residual of the discrete energy balance"),
-    ("mean_iterations", "1", "mean friction-solver iterations per step"),
-    ("window_max_downward_deflection", "m", "largest downward deflection while the load is in the extremes window"),
-    ("window_max_downward_deflection_position", "m", "its node"),
-    ("window_max_downward_deflection_time", "s", "its time"),
-    ("window_max_upward_deflection", "m", "largest upward deflection while the load is in the extremes window"),
-    ("window_max_upward_deflection_position", "m", "its node"),
-    ("window_max_upward_deflection_time", "s", "its time"),
-    ("max_acceleration", "m/s²", "largest vertical acceleration over all nodes and steps (magnitude; bridge decks)"),
+    ("speed", unit("speed"), "load speed"),
+    (
+        "max_downward_deflection",
+        unit("max_downward_deflection"),
+        "largest downward deflection over all nodes and steps (magnitude)",
+    ),
+    (
+        "max_upward_deflection",
+        unit("max_upward_deflection"),
+        "largest upward deflection over all nodes and steps (magnitude)",
+    ),
+    ("dissipated_energy", unit("dissipated_energy"), "energy removed by friction and viscous damping"),
+    ("global_norm", unit("global_norm"), "W̄ = (1/t_on)∫∫|w| dx dt over the crossing"),
+    (
+        "max_downward_deflection_position",
+        unit("max_downward_deflection_position"),
+        "node of the largest downward deflection",
+    ),
+    ("max_downward_deflection_time", unit("max_downward_deflection_time"), "time of the largest downward deflection"),
+    ("load_work", unit("load_work"), "work of the moving load"),
+    ("energy_residual", unit("energy_residual"), "residual of the discrete energy balance"),
+    ("mean_iterations", unit("mean_iterations"), "mean friction-solver iterations per step"),
+    (
+        "window_max_downward_deflection",
+        unit("window_max_downward_deflection"),
+        "largest downward deflection while the load is in the extremes window",
+    ),
+    ("window_max_downward_deflection_position", unit("window_max_downward_deflection_position"), "its node"),
+    ("window_max_downward_deflection_time", unit("window_max_downward_deflection_time"), "its time"),
+    (
+        "window_max_upward_deflection",
+        unit("window_max_upward_deflection"),
+        "largest upward deflection while the load is in the extremes window",
+    ),
+    ("window_max_upward_deflection_position", unit("window_max_upward_deflection_position"), "its node"),
+    ("window_max_upward_deflection_time", unit("window_max_upward_deflection_time"), "its time"),
+    (
+        "max_acceleration",
+        unit("max_acceleration"),
+        "largest vertical acceleration over all nodes and steps (magnitude; bridge decks)",
+    ),
 ];
 
 /// The band-limited acceleration's column of sweep output, last, when the sweep's runs compute one.
 pub const BAND_CSV_COLUMNS: [(&str, &str, &str); 1] = [(
     "band_acceleration",
-    "m/s²",
+    unit("band_acceleration"),
     "largest acceleration in the beam's modes up to output.acceleration_band (a span's EN 1990 A2 check value)",
 )];
 

@@ -4,6 +4,7 @@
 use crate::sleeper_columns::SleeperColumns;
 use fem_beam::Extreme;
 use nscd::EnergyBalance;
+use scenario::quantities::unit;
 use serde::{Deserialize, Serialize};
 
 /// What one run of a sweep reports: extremes as [`Extreme`]s (magnitudes with node and time), the energy balance.
@@ -97,12 +98,12 @@ impl VehicleColumns {
 
 /// The vehicles' columns of sweep output, after [`CSV_COLUMNS`] when a sweep runs vehicles: name, unit, meaning.
 pub const VEHICLE_CSV_COLUMNS: [(&str, &str, &str); 6] = [
-    ("min_wheel_force", "N", "smallest wheel–rail contact force of any wheel (0: contact lost)"),
-    ("max_wheel_force", "N", "largest wheel–rail contact force"),
-    ("max_dynamic_increment", "1", "largest |Q − Q₀|/Q₀ of any wheel"),
-    ("losses_of_contact", "1", "losses of contact over all wheels"),
-    ("max_body_acceleration", "m/s²", "largest body acceleration of any vehicle"),
-    ("rms_body_acceleration", "m/s²", "largest RMS body acceleration of any vehicle"),
+    ("min_wheel_force", unit("min_wheel_force"), "smallest wheel–rail contact force of any wheel (0: contact lost)"),
+    ("max_wheel_force", unit("max_wheel_force"), "largest wheel–rail contact force"),
+    ("max_dynamic_increment", unit("max_dynamic_increment"), "largest |Q − Q₀|/Q₀ of any wheel"),
+    ("losses_of_contact", unit("losses_of_contact"), "losses of contact over all wheels"),
+    ("max_body_acceleration", unit("max_body_acceleration"), "largest body acceleration of any vehicle"),
+    ("rms_body_acceleration", unit("rms_body_acceleration"), "largest RMS body acceleration of any vehicle"),
 ];
 
 /// A run of a sweep that failed: its speed and why. The sweep keeps every other run (see

@@ -9,7 +9,8 @@
 //!   by its dotted path ([`Scenario::build`], [`Scenario::model`], [`Scenario::run_settings`]).
 //! - `parse`: TOML errors with file, line, column, the key's path and a "did you mean".
 //! - [`overrides`]: the one table of the command-line flags and Python keywords that override a scenario's values;
-//!   [`units`]: speeds in m/s or km/h.
+//!   [`units`]: speeds in m/s or km/h; [`quantities`]: every output quantity with its SI unit, the one list every
+//!   table's columns take their units from.
 //! - [`diagnostics`] and [`plausibility`]: refusals and warnings about a scenario before any run.
 //! - [`speeds`] and [`trains`]: the speed scale of a case (v_cr, default sweeps) and the train catalogue.
 //! - [`error`]: the error type of the crates above this one, every message naming the field, its value and what is
@@ -26,6 +27,7 @@ pub mod number;
 pub mod overrides;
 mod parse;
 pub mod plausibility;
+pub mod quantities;
 pub mod rail;
 pub mod sections;
 pub mod sleepers;

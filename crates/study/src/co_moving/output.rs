@@ -7,6 +7,7 @@ use analytic::MovingBeam;
 use fem_beam::{AbsorbingZones, BeamModel, Extreme, Foundation, Mesh, Support, Supports};
 use nscd::EnergyBalance;
 use scenario::error::{Result, invalid};
+use scenario::quantities::unit;
 use scenario::{CoMovingSection, Scenario};
 use serde::Serialize;
 use track::co_moving::{CoMovingResult, CoMovingSettings, run_co_moving};
@@ -223,7 +224,7 @@ impl CoMovingSummary {
 }
 
 /// Columns of the window's last wave (`wave.csv`): s = x − vt (m) and the deflection (m, upward).
-pub const WAVE_COLUMNS: [report::columns::Column; 2] = [("s", "m"), ("deflection", "m")];
+pub const WAVE_COLUMNS: [report::columns::Column; 2] = [("s", unit("s")), ("deflection", unit("deflection"))];
 
 /// The window's last wave as CSV ([`WAVE_COLUMNS`]).
 pub fn wave_csv(result: &track::co_moving::CoMovingResult) -> String {

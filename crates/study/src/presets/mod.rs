@@ -24,7 +24,6 @@ mod track_receptance;
 mod vehicle_speed;
 mod voided_sleepers;
 
-mod columns;
 mod preset;
 mod resolution;
 mod run;

@@ -1,7 +1,6 @@
 //! Running a study: the preset's own run on the checked base scenario, its figures naming a rail other than the
 //! default, and the set-ups studies share (friction by devices or distributed, a long track, a blank result).
 
-use super::columns::column_unit;
 use super::preset::Preset;
 use super::resolution::Resolution;
 use super::study_data::{StudyData, StudySummary};
@@ -19,6 +18,12 @@ pub fn run_preset(preset: Preset, resolution: Resolution, base: &Scenario, runne
     let header = data.csv.lines().next().unwrap_or_default();
     let columns = header.split(',').map(|c| (c.to_string(), column_unit(c))).collect();
     Ok(StudyData { columns, name: preset.name(), title: preset.title(), resolution: resolution.name(), ..data })
+}
+
+/// The unit the study's files give a column: its quantity's ([`scenario::quantities`]), or "unknown" (never a
+/// guess; `study/tests/studies.rs` runs every study and fails on a column without a listed quantity).
+fn column_unit(column: &str) -> &'static str {
+    scenario::quantities::unit_of(column).unwrap_or("unknown")
 }
 
 /// A figure pasted alone into a report names a rail that is not the default Euler–Bernoulli one, first in its

@@ -7,16 +7,17 @@ use report::columns::{Column, header, units_line};
 use report::output::{Output, pretty};
 use report::plot::{PanelY, PlotSpec, Series, Stroke};
 use scenario::number::row;
+use scenario::quantities::unit;
 use std::fmt::{self, Formatter};
 
 /// The CSV's columns.
 pub const RECEPTANCE_COLUMNS: [Column; 6] = [
-    ("frequency", "Hz"),
-    ("real", "m/N"),
-    ("imaginary", "m/N"),
-    ("magnitude", "m/N"),
-    ("phase", "deg"),
-    ("mobility", "m/(s·N)"),
+    ("frequency", unit("frequency")),
+    ("real", unit("real")),
+    ("imaginary", unit("imaginary")),
+    ("magnitude", unit("magnitude")),
+    ("phase", unit("phase")),
+    ("mobility", unit("mobility")),
 ];
 
 /// The files a receptance writes into its folder.

@@ -5,38 +5,39 @@
 use crate::stationary::output::StationaryPoint;
 use fem_beam::Extreme;
 use report::columns::{Column, header};
+use scenario::quantities::unit;
 use stationary::StationaryWave;
 
 /// Columns of a wave's shape: s = x − vt, deflection (upward), slope, sagging moment, the soil's reaction and the
 /// ballast's friction force (the resistance r: the rail feels −r).
 pub const WAVE_COLUMNS: [Column; 6] = [
-    ("s", "m"),
-    ("deflection", "m"),
-    ("slope", "rad"),
-    ("moment", "N·m"),
-    ("soil_reaction", "N/m"),
-    ("friction_force", "N/m"),
+    ("s", unit("s")),
+    ("deflection", unit("deflection")),
+    ("slope", unit("slope")),
+    ("moment", unit("moment")),
+    ("soil_reaction", unit("soil_reaction")),
+    ("friction_force", unit("force_per_length")),
 ];
 
 /// Columns of a sweep's points: the [`StationaryPoint`] fields of the same names; `lift_off_zones` and
 /// `slip_zones` counted, `largest_gap` the largest of the lift-off zones'.
 pub const POINT_COLUMNS: [Column; 16] = [
-    ("speed", "m/s"),
-    ("status", "text"),
-    ("iterations", "1"),
-    ("residual", "1"),
-    ("max_downward_deflection", "m"),
-    ("max_downward_deflection_position", "m"),
-    ("max_upward_deflection", "m"),
-    ("max_upward_deflection_position", "m"),
-    ("max_moment", "N·m"),
-    ("max_hogging_moment", "N·m"),
-    ("deflection_behind", "m"),
-    ("lift_off_zones", "1"),
-    ("largest_gap", "m"),
-    ("slip_zones", "1"),
-    ("friction_power", "W"),
-    ("power_imbalance", "1"),
+    ("speed", unit("speed")),
+    ("status", unit("status")),
+    ("iterations", unit("iterations")),
+    ("residual", unit("residual")),
+    ("max_downward_deflection", unit("max_downward_deflection")),
+    ("max_downward_deflection_position", unit("max_downward_deflection_position")),
+    ("max_upward_deflection", unit("max_upward_deflection")),
+    ("max_upward_deflection_position", unit("max_upward_deflection_position")),
+    ("max_moment", unit("max_moment")),
+    ("max_hogging_moment", unit("max_hogging_moment")),
+    ("deflection_behind", unit("deflection_behind")),
+    ("lift_off_zones", unit("lift_off_zones")),
+    ("largest_gap", unit("largest_gap")),
+    ("slip_zones", unit("slip_zones")),
+    ("friction_power", unit("friction_power")),
+    ("power_imbalance", unit("power_imbalance")),
 ];
 
 /// The wave's shape as CSV ([`WAVE_COLUMNS`]).
