@@ -11,7 +11,8 @@
 
 use crate::dispersion::critical_speed;
 use crate::moving_timoshenko::{MovingTimoshenko, TimoshenkoSteadyState};
-use crate::reference::{InfiniteBeam, SteadyExtremes, SteadyState};
+use crate::reference::{InfiniteBeam, SteadyState};
+use fem_beam::DeflectionExtremes;
 use fem_beam::error::Result;
 use fem_beam::properties::{Beam, Foundation};
 use fem_beam::sleepers::Sleepers;
@@ -112,7 +113,7 @@ impl MovingBeam {
     }
 
     /// The roots that decay away from the load at `speed`: two ahead (Re r < 0), then two behind (Re r > 0);
-    /// [`FemError::NoSteadyState`] where a root lies on the imaginary axis (undamped at or above v_cr).
+    /// [`fem_beam::FemError::NoSteadyState`] where a root lies on the imaginary axis (undamped at or above v_cr).
     pub fn decaying_wavenumbers(&self, speed: f64) -> Result<[Complex64; 4]> {
         match &self.rail {
             Rail::EulerBernoulli(b) => Ok(b.steady_state(speed, 1.0)?.roots().map(|r| r * b.beta())),
@@ -202,7 +203,7 @@ impl SteadyWave {
     }
 
     /// The largest downward and upward deflections and where.
-    pub fn extremes(&self) -> SteadyExtremes {
+    pub fn extremes(&self) -> DeflectionExtremes {
         match self {
             Self::EulerBernoulli(w) => w.extremes(),
             Self::Timoshenko(w) => w.extremes(),

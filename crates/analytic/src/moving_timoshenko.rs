@@ -26,7 +26,8 @@
 //! shear wave's, √(G/ρA) (≈ 2 km/s for a rail), where a and D keep their sign.
 
 use crate::dispersion::critical_speed;
-use crate::reference::{SteadyExtremes, monic_quartic_roots, scan_extremes};
+use crate::reference::{monic_quartic_roots, scan_extremes};
+use fem_beam::DeflectionExtremes;
 use fem_beam::error::{FemError, Result};
 use fem_beam::extreme::Extreme;
 use fem_beam::properties::{Beam, Foundation};
@@ -200,11 +201,11 @@ impl TimoshenkoSteadyState {
 
     /// Largest downward and upward deflections and where (s, m): sampled over the region where the wave is above
     /// ~e⁻⁴⁰ of its size, refined by golden section.
-    pub fn extremes(&self) -> SteadyExtremes {
+    pub fn extremes(&self) -> DeflectionExtremes {
         let (step, reach) = self.sampling();
         let count = (reach / step).ceil() as i64;
         let (down, up) = scan_extremes(|s| -self.deflection(s), (-count..=count).map(|i| i as f64 * step), step);
-        SteadyExtremes {
+        DeflectionExtremes {
             max_downward: Extreme::in_frame(down.1.max(0.0), down.0),
             max_upward: Extreme::in_frame(up.1.max(0.0), up.0),
         }

@@ -19,7 +19,7 @@
 use crate::golden::golden_bracket;
 use fem_beam::assembly::BeamModel;
 use fem_beam::error::{FemError, Result, non_negative, positive};
-use fem_beam::extreme::Extreme;
+use fem_beam::extreme::{DeflectionExtremes, Extreme};
 use fem_beam::mesh::Mesh;
 use fem_beam::properties::{Beam, Foundation};
 use fem_beam::supports::Supports;
@@ -211,15 +211,6 @@ pub(crate) fn monic_quartic_roots(c: [f64; 4]) -> [Complex64; 4] {
     z
 }
 
-/// Max downward and upward steady-state deflections.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct SteadyExtremes {
-    /// Largest downward deflection (magnitude) and its position.
-    pub max_downward: Extreme,
-    /// Largest upward deflection (magnitude, 0 if the beam never rises) and its position.
-    pub max_upward: Extreme,
-}
-
 /// The steady-state deflection of an infinite beam under a moving load, as a function of s = x − vt.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SteadyState {
@@ -281,11 +272,11 @@ impl SteadyState {
 
     /// Largest downward and upward deflections and their positions: dense sampling over the region where the
     /// response is above ~e⁻⁴⁰ of its scale, then golden-section refinement to 1e-12 in ξ.
-    pub fn extremes(&self) -> SteadyExtremes {
+    pub fn extremes(&self) -> DeflectionExtremes {
         let (step, reach) = self.sampling_in_xi();
         let count = (reach / step).ceil() as i64;
         let (down, up) = scan_extremes(|xi| self.g(xi, 0), (-count..=count).map(|i| i as f64 * step), step);
-        SteadyExtremes {
+        DeflectionExtremes {
             max_downward: Extreme::in_frame(self.amplitude * down.1.max(0.0), down.0 / self.beta),
             max_upward: Extreme::in_frame(self.amplitude * up.1.max(0.0), up.0 / self.beta),
         }

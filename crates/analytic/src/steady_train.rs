@@ -4,7 +4,8 @@
 //! w(s) = Σ_i (P_i/P)·w_P(s + d_i).
 
 use crate::moving_beam::{MovingBeam, SteadyWave};
-use crate::reference::{SteadyExtremes, scan_extremes};
+use crate::reference::scan_extremes;
+use fem_beam::DeflectionExtremes;
 use fem_beam::error::{FemError, Result};
 use fem_beam::extreme::Extreme;
 use fem_beam::train::Train;
@@ -51,12 +52,12 @@ impl TrainSteadyState {
 
     /// Largest downward and upward deflections and where they are in the train's frame (s = x − x_head): dense
     /// sampling from `reach` behind the last axle to `reach` ahead of the first, then golden-section refinement.
-    pub fn extremes(&self) -> SteadyExtremes {
+    pub fn extremes(&self) -> DeflectionExtremes {
         let (from, to) = (-self.length - self.reach, self.reach);
         let count = ((to - from) / self.step).ceil() as usize;
         let samples = (0..=count).map(|i| from + i as f64 * self.step);
         let (down, up) = scan_extremes(|s| -self.deflection(s), samples, self.step);
-        SteadyExtremes {
+        DeflectionExtremes {
             max_downward: Extreme::in_frame(down.1.max(0.0), down.0),
             max_upward: Extreme::in_frame(up.1.max(0.0), up.0),
         }

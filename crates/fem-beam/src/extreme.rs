@@ -1,5 +1,5 @@
 //! The words every response is reported in (docs/theory.md §6, §13, §14): an [`Extreme`] — a value, where and when
-//! — and a [`LiftOffZone`] — neighbouring sections where the beam left a unilateral soil. A time-domain run, a sweep
+//! — its downward and upward pair ([`DeflectionExtremes`]) and a [`LiftOffZone`] — neighbouring sections where the beam left a unilateral soil. A time-domain run, a sweep
 //! of runs, the co-moving window and the stationary wave all report through these two types, so that a deflection's
 //! peak has one shape in every JSON file: `{"value": …, "position": …, "time": …}`.
 //!
@@ -47,6 +47,16 @@ impl Extreme {
     pub fn happened(&self) -> Option<&Extreme> {
         (self.value > 0.0).then_some(self)
     }
+}
+
+/// The largest downward and upward deflections of a response (magnitudes, with where and when): a run's over its
+/// nodes and steps, a window's while the load was inside it, a steady wave's over s.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct DeflectionExtremes {
+    /// Largest downward deflection (m, magnitude), where and when.
+    pub max_downward: Extreme,
+    /// Largest upward deflection (m, magnitude; 0 if the beam never rose), where and when.
+    pub max_upward: Extreme,
 }
 
 /// Neighbouring sections of a unilateral soil where the beam was above the soil's undeformed surface: in a run, at

@@ -50,7 +50,7 @@ pub use assembly::BeamModel;
 pub use discretisation::Discretisation;
 pub use distributed::DistributedFriction;
 pub use error::{FemError, Result};
-pub use extreme::{Extreme, LiftOffZone};
+pub use extreme::{DeflectionExtremes, Extreme, LiftOffZone};
 pub use load::LoadVector;
 pub use mesh::Mesh;
 pub use motion::Motion;

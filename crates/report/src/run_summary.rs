@@ -355,8 +355,8 @@ impl ExtremesSummary {
             settings.record.extremes_nodes,
         )?;
         Ok(Self {
-            max_downward_deflection: result.max_downward,
-            max_upward_deflection: result.max_upward,
+            max_downward_deflection: result.deflection.max_downward,
+            max_upward_deflection: result.deflection.max_upward,
             max_acceleration: result.max_acceleration,
             band_acceleration: result.band_acceleration.as_ref().map(|b| BandAccelerationSummary {
                 extreme: b.extreme,
@@ -365,14 +365,14 @@ impl ExtremesSummary {
             }),
             static_max_downward_deflection: statics.max_downward,
             dynamic_amplification: if statics.max_downward > 0.0 {
-                result.max_downward.value / statics.max_downward
+                result.deflection.max_downward.value / statics.max_downward
             } else {
                 0.0
             },
             extremes_window: window.load_range,
             extremes_nodes: settings.record.extremes_nodes,
-            window_max_downward_deflection: in_window(window.max_downward),
-            window_max_upward_deflection: in_window(window.max_upward),
+            window_max_downward_deflection: in_window(window.deflection.max_downward),
+            window_max_upward_deflection: in_window(window.deflection.max_upward),
             global_norm: result.global_norm,
         })
     }

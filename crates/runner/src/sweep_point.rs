@@ -96,7 +96,7 @@ impl VehicleColumns {
     }
 }
 
-/// The vehicles' columns of sweep output, after [`CSV_COLUMNS`] when a sweep runs vehicles: name, unit, meaning.
+/// The vehicles' columns of sweep output, after [`crate::CSV_COLUMNS`] when a sweep runs vehicles: name, unit, meaning.
 pub const VEHICLE_CSV_COLUMNS: [(&str, &str, &str); 6] = [
     ("min_wheel_force", unit("min_wheel_force"), "smallest wheel–rail contact force of any wheel (0: contact lost)"),
     ("max_wheel_force", unit("max_wheel_force"), "largest wheel–rail contact force"),
@@ -107,7 +107,7 @@ pub const VEHICLE_CSV_COLUMNS: [(&str, &str, &str); 6] = [
 ];
 
 /// A run of a sweep that failed: its speed and why. The sweep keeps every other run (see
-/// [`Runner::speed_sweep_keeping`]); its CSV row has the speed and empty values.
+/// [`crate::Runner::speed_sweep_keeping`]); its CSV row has the speed and empty values.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct FailedRun {
     /// Load speed (m/s).

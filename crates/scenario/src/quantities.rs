@@ -1,5 +1,5 @@
 //! Every quantity frictrack writes into a table, with its SI unit — the one list the columns of every CSV, the JSON
-//! written beside them and Python's `units` take their units from. A column's unit is [`unit`] of its quantity, at
+//! written beside them and Python's `units` take their units from. A column's unit is [`unit()`] of its quantity, at
 //! compile time: a column whose quantity is not listed here does not build. Names are snake_case quantities without
 //! units; "1" marks counts and ratios, "text" words.
 

@@ -3,7 +3,7 @@
 //! the moving frame, and their amplification over the static response of the same loads.
 
 use analytic::moving_beam::MovingBeam;
-use analytic::reference::SteadyExtremes;
+use fem_beam::DeflectionExtremes;
 use fem_beam::{Extreme, Foundation, Train};
 use scenario::Scenario;
 use scenario::error::{Result, invalid};
@@ -76,7 +76,7 @@ impl SteadyResponse {
                 "the closed-form steady state takes axles only: give the train as axles, or use `frictrack run`",
             ));
         }
-        let extremes = |v: f64| -> Result<SteadyExtremes> {
+        let extremes = |v: f64| -> Result<DeflectionExtremes> {
             Ok(match &train {
                 Some(t) => beam.train_steady_state(v, t)?.extremes(),
                 None => beam.steady_state(v, case.load)?.extremes(),

@@ -42,7 +42,7 @@ fn main() {
     let s = &result.statistics;
     println!(
         "{case}: max down {:.6} m, solver {}, {:.2} iterations/step (max {}), {:.0} of {} sections re-solved per step, loop {:.3} s",
-        result.max_downward.value,
+        result.deflection.max_downward.value,
         s.solver_name(),
         s.mean_iterations,
         s.max_iterations,
@@ -52,7 +52,7 @@ fn main() {
     );
     println!(
         "bits: max down {:.17e}, max up {:.17e}, friction work {:.17e} J",
-        result.max_downward.value, result.max_upward.value, result.energy.friction_work
+        result.deflection.max_downward.value, result.deflection.max_upward.value, result.energy.friction_work
     );
     let peak = std::fs::read_to_string("/proc/self/status")
         .ok()

@@ -17,7 +17,7 @@ use crate::error::{Result, Setting, invalid, invalid_choice};
 use crate::placed::{PlacedInteractions, SectionKind};
 use crate::simulation::setup::Setup;
 use crate::simulation::{InitialState, Record, RunSettings, Simulation, StepState, Stepping};
-use fem_beam::{BeamModel, Extreme, Support};
+use fem_beam::{BeamModel, DeflectionExtremes, Support};
 use nscd::stepper::{ShiftedBlock, WindowShift};
 use nscd::{EnergyLedger, SolverKind};
 use std::time::Instant;
@@ -44,11 +44,9 @@ pub struct CoMovingResult {
     /// After each window length travelled: (distance travelled, max |W − W a window length earlier| over the
     /// middle's nodes relative to the wave's peak there) — the stationary state's convergence measure.
     pub changes: Vec<(f64, f64)>,
-    /// Largest downward deflection over the middle's nodes and the whole run (m, magnitude), where on the track (m
-    /// from where the window started) and when (s).
-    pub max_downward: Extreme,
-    /// Largest upward deflection (m), where and when.
-    pub max_upward: Extreme,
+    /// Largest downward and upward deflections over the middle's nodes and the whole run (m, magnitudes), where on
+    /// the track (m from where the window started) and when (s).
+    pub deflection: DeflectionExtremes,
     /// The energy ledger, with the energy carried out of the window as `transported`.
     pub energy: EnergyLedger,
     /// Steps taken, shifts made.
@@ -121,8 +119,7 @@ pub fn run_co_moving(
     Ok(CoMovingResult {
         wave,
         changes: shifter.changes,
-        max_downward: middle.max_downward,
-        max_upward: middle.max_upward,
+        deflection: middle.deflection,
         vehicles: vehicles.map(|o| o.finish(&stepper.energy)),
         energy: stepper.energy,
         steps: stepper.steps,
@@ -200,8 +197,7 @@ struct Middle {
     middle: Vec<(usize, f64)>,
     element_length: f64,
     per_element: usize,
-    max_downward: Extreme,
-    max_upward: Extreme,
+    deflection: DeflectionExtremes,
 }
 
 impl Middle {
@@ -210,8 +206,13 @@ impl Middle {
         let all: Vec<(usize, f64)> =
             (0..mesh.nodes()).filter_map(|i| Some((dofs.free_index(2 * i)?, mesh.node_x(i)))).collect();
         let middle = all.iter().copied().filter(|(_, x)| (window.middle.0..=window.middle.1).contains(x)).collect();
-        let (max_downward, max_upward) = (Extreme::default(), Extreme::default());
-        Self { all, middle, element_length: mesh.element_length(), per_element, max_downward, max_upward }
+        Self {
+            all,
+            middle,
+            element_length: mesh.element_length(),
+            per_element,
+            deflection: DeflectionExtremes::default(),
+        }
     }
 }
 
@@ -226,8 +227,8 @@ impl Record for Middle {
         let travelled = ((s.step - 1) / self.per_element) as f64 * self.element_length;
         for &(d, x) in &self.middle {
             let w = s.q[d];
-            self.max_downward.raise(-w, x + travelled, s.time);
-            self.max_upward.raise(w, x + travelled, s.time);
+            self.deflection.max_downward.raise(-w, x + travelled, s.time);
+            self.deflection.max_upward.raise(w, x + travelled, s.time);
         }
         Ok(())
     }

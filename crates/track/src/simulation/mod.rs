@@ -180,8 +180,7 @@ impl<'a> Simulation<'a> {
         let t_on = self.settings.crossing_time(self.model.mesh().length);
         let solver = (!self.interactions.is_empty() || vehicles.is_some()).then(|| stepper.solver_kind());
         Ok(RunResult {
-            max_downward: deflections.extremes.0,
-            max_upward: deflections.extremes.1,
+            deflection: deflections.extremes,
             max_acceleration: self
                 .model
                 .beam()

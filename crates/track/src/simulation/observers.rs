@@ -5,7 +5,7 @@ use super::results::{SectionHistory, WindowExtremes};
 use super::settings::counts_for_extremes;
 use crate::error::Result;
 use fem_beam::BeamModel;
-use fem_beam::Extreme;
+use fem_beam::DeflectionExtremes;
 
 pub(super) struct Recorder {
     pub(super) position: f64,
@@ -83,16 +83,14 @@ impl NodalDeflections {
 
 impl DeflectionScan {
     /// Keep the record extremes (downward, upward) up to date at `time`.
-    pub(super) fn update(&self, extremes: &mut (Extreme, Extreme), time: f64) {
-        extremes.0.raise(-self.lowest.0, self.lowest.1, time);
-        extremes.1.raise(self.highest.0, self.highest.1, time);
+    pub(super) fn update(&self, extremes: &mut DeflectionExtremes, time: f64) {
+        extremes.max_downward.raise(-self.lowest.0, self.lowest.1, time);
+        extremes.max_upward.raise(self.highest.0, self.highest.1, time);
     }
 
     /// The same for the extremes of a load-position window.
     pub(super) fn update_window(&self, window: &mut WindowExtremes, time: f64) {
-        let mut pair = (window.max_downward, window.max_upward);
-        self.update(&mut pair, time);
-        (window.max_downward, window.max_upward) = pair;
+        self.update(&mut window.deflection, time);
     }
 }
 

@@ -9,8 +9,8 @@ use crate::error::Result;
 use crate::moving_load::MovingLoad;
 use crate::placed::PlacedInteractions;
 use fem_beam::BeamModel;
-use fem_beam::Extreme;
 use fem_beam::section::Motion;
+use fem_beam::{DeflectionExtremes, Extreme};
 use nscd::solver::StepReport;
 
 /// The state after step k, as every record reads it.
@@ -47,7 +47,7 @@ pub(crate) trait Record {
 /// acceleration and W̄'s integral over the crossing.
 pub(super) struct DeflectionRecord {
     deflections: NodalDeflections,
-    pub(super) extremes: (Extreme, Extreme),
+    pub(super) extremes: DeflectionExtremes,
     pub(super) acceleration: Extreme,
     /// The extremes while the load is in the window of load positions, if one is set (its range with them).
     pub(super) window: Option<WindowExtremes>,
@@ -68,7 +68,7 @@ impl DeflectionRecord {
     ) -> Self {
         let deflections = NodalDeflections::new(model.mesh(), model.dofs(), record.extremes_nodes);
         let mut this = Self {
-            extremes: (Extreme::default(), Extreme::default()),
+            extremes: DeflectionExtremes::default(),
             acceleration: Extreme::default(),
             window: record.extremes_window.map(|load_range| WindowExtremes { load_range, ..Default::default() }),
             norm_integral: 0.0,

@@ -1,7 +1,7 @@
 //! What a run reports (docs/theory.md §6): extremes over the whole run and over a window of load positions,
 //! histories at sections, solver statistics, and the state lent to observers after each step.
 
-use fem_beam::{Extreme, LiftOffZone};
+use fem_beam::{DeflectionExtremes, Extreme, LiftOffZone};
 use nscd::stepper::EnergyLedger;
 
 /// The extremes while the load was inside a range of positions (docs/theory.md §8: away from the entry and exit
@@ -10,10 +10,8 @@ use nscd::stepper::EnergyLedger;
 pub struct WindowExtremes {
     /// The range of load positions [A, B] (m).
     pub load_range: (f64, f64),
-    /// Largest downward deflection over nodes and the steps with the load inside the range.
-    pub max_downward: Extreme,
-    /// Largest upward deflection over the same steps.
-    pub max_upward: Extreme,
+    /// Largest downward and upward deflections over nodes and the steps with the load inside the range.
+    pub deflection: DeflectionExtremes,
 }
 
 /// Histories at one section.
@@ -156,10 +154,8 @@ pub struct BandAcceleration {
 /// What a run reports (docs/theory.md §6).
 #[derive(Debug, Clone, PartialEq)]
 pub struct RunResult {
-    /// Largest downward deflection over nodes and steps.
-    pub max_downward: Extreme,
-    /// Largest upward deflection over nodes and steps.
-    pub max_upward: Extreme,
+    /// Largest downward and upward deflections over nodes and steps.
+    pub deflection: DeflectionExtremes,
     /// Largest vertical acceleration magnitude over nodes and steps (m/s², the step's mean (v_{k+1} − v_k)/h, at the
     /// end of the step): the deck acceleration of a bridge (docs/theory.md §10). None where it is undefined — on a
     /// Timoshenko rail, whose nodal acceleration under a passing point force grows without bound under refinement

@@ -66,9 +66,13 @@ fn the_co_moving_wave_is_the_closed_form() {
     // load (x_load = 60 m + v t on the track) and sits within an element or two of it (the closed form's trough at
     // 100 m/s is 0.07 m behind the load; 0.5 m elements). Over the whole run it is the start's transient (the load
     // set moving from its static bowl: at t = 0.08 s), at least the steady trough.
-    let (x, t) = r.max_downward.place().unwrap();
+    let (x, t) = r.deflection.max_downward.place().unwrap();
     assert!((x - (60.0 + 100.0 * t)).abs() <= 1.0, "at x = {x} m, t = {t} s");
-    assert!(r.max_downward.value >= (1.0 - 1e-4) * peak, "{} against {peak}", r.max_downward.value);
+    assert!(
+        r.deflection.max_downward.value >= (1.0 - 1e-4) * peak,
+        "{} against {peak}",
+        r.deflection.max_downward.value
+    );
 }
 
 /// Cost per step does not depend on the length of track: the window is all that is ever stored or stepped.
@@ -118,7 +122,7 @@ fn above_the_critical_speed_a_long_enough_window_carries_the_closed_form() {
     settings.integration.load_advance = 0.0125;
     let at = CoMovingSettings { load_at: 240.0, track_length: 1500.0, middle: (120.0, 360.0) };
     let r = run_co_moving(&model, &PlacedInteractions::new(), &settings, &at).unwrap();
-    let peak = r.max_downward.value;
+    let peak = r.deflection.max_downward.value;
     let error = error_within_30_m(&r, &steady_state(&model, 250.0));
     assert!(error <= 1e-4 * peak, "{:e} of the peak", error / peak);
 }

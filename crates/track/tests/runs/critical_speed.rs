@@ -17,7 +17,10 @@ fn largest_deflection_is_near_the_critical_speed() {
                 s.moving.speed = speed;
                 s
             };
-            (speed, Simulation::new(&model, &interactions, &settings).unwrap().run().unwrap().max_downward.value)
+            (
+                speed,
+                Simulation::new(&model, &interactions, &settings).unwrap().run().unwrap().deflection.max_downward.value,
+            )
         })
         .collect();
     let (v_peak, w_peak) = sweep.iter().copied().fold((0.0, 0.0), |best, p| if p.1 > best.1 { p } else { best });

@@ -76,10 +76,10 @@ fn vanishing_friction_converges_to_the_linear_response() {
         s
     };
     let linear = Simulation::new(&model, &PlacedInteractions::new(), &settings).unwrap().run().unwrap();
-    let w_lin = linear.max_downward.value;
+    let w_lin = linear.deflection.max_downward.value;
     let gap = |interactions: PlacedInteractions| {
         let r = Simulation::new(&model, &interactions, &settings).unwrap().run().unwrap();
-        (w_lin - r.max_downward.value).abs() / w_lin
+        (w_lin - r.deflection.max_downward.value).abs() / w_lin
     };
     let dist: Vec<f64> =
         [1000.0, 100.0, 10.0].iter().map(|&f| gap(DistributedFriction::new(f).interactions(&model).unwrap())).collect();

@@ -40,7 +40,7 @@ fn a_soil_the_rail_never_leaves_is_the_linear_foundation() {
     let mut reference = load.clone();
     linear.stiffness().factor().unwrap().solve_in_place(&mut reference);
     let light = run(&linear, &PlacedInteractions::new(), 5e3, 100.0);
-    assert!(light.max_upward.value < 0.5 * settlement(), "{} m", light.max_upward.value);
+    assert!(light.deflection.max_upward.value < 0.5 * settlement(), "{} m", light.deflection.max_upward.value);
     for law in laws {
         let m = model(law, 200.0, 200, Supports::default());
         let sections = FoundationSections::default().interactions(&m).unwrap();
@@ -54,8 +54,9 @@ fn a_soil_the_rail_never_leaves_is_the_linear_foundation() {
         assert_eq!(lift.sections, 800);
         let moving =
             r.final_displacement.iter().zip(&light.final_displacement).fold(0.0f64, |m, (a, b)| m.max((a - b).abs()))
-                / light.max_downward.value;
-        let peak = (r.max_downward.value - light.max_downward.value).abs() / light.max_downward.value;
+                / light.deflection.max_downward.value;
+        let peak = (r.deflection.max_downward.value - light.deflection.max_downward.value).abs()
+            / light.deflection.max_downward.value;
         // The interior point stops at a law residual of 1e-8 of the velocity scale per step: the deflections carry
         // that error, measured 3e-8 on the peak; 1e-6 of the peak leaves a margin and catches any modelling
         // difference (the compliant stop's end-of-step force differed by 1.6 %).
@@ -70,9 +71,9 @@ fn a_soil_the_rail_never_leaves_is_the_linear_foundation() {
 fn the_rail_lifts_off_where_the_linear_wave_rises_above_the_settlement() {
     let linear =
         run(&model(FoundationLaw::Linear, 200.0, 200, Supports::default()), &PlacedInteractions::new(), 20e3, 100.0);
-    assert!(linear.max_upward.value > settlement());
-    let mut upward = vec![linear.max_upward.value];
-    let mut downward = vec![linear.max_downward.value];
+    assert!(linear.deflection.max_upward.value > settlement());
+    let mut upward = vec![linear.deflection.max_upward.value];
+    let mut downward = vec![linear.deflection.max_downward.value];
     for law in [FoundationLaw::Bilinear { tension_ratio: 0.5 }, FoundationLaw::Tensionless] {
         let m = model(law, 200.0, 200, Supports::default());
         let sections = FoundationSections::default().interactions(&m).unwrap();
@@ -88,9 +89,9 @@ fn the_rail_lifts_off_where_the_linear_wave_rises_above_the_settlement() {
         assert!(zone.first_time.unwrap() <= when && when <= zone.last_time.unwrap());
         // The gap is the rail's rise above its settled state less the local settlement (≥ 0; less than q/k_c near a
         // pinned end): at most the largest rise, which between nodes exceeds the nodal one by far less than 1 %.
-        assert!(zone.largest_gap.value <= 1.01 * r.max_upward.value, "{law:?}: {zone:?}");
-        upward.push(r.max_upward.value);
-        downward.push(r.max_downward.value);
+        assert!(zone.largest_gap.value <= 1.01 * r.deflection.max_upward.value, "{law:?}: {zone:?}");
+        upward.push(r.deflection.max_upward.value);
+        downward.push(r.deflection.max_downward.value);
     }
     assert!(upward.windows(2).all(|w| w[0] < w[1]), "upward {upward:?}");
     // Less soil in tension is a softer rail: it also deflects further down (as at rest, by coth(π/2) without weight).

@@ -71,23 +71,23 @@ fn a_tensionless_soil_beside_the_sleepers() {
     let auto = run(&model, &interactions, SolverKind::Auto, 1e-10);
     let projection = run(&model, &interactions, SolverKind::Projection, 1e-10);
     assert_eq!(auto.statistics.solver, Some(SolverKind::InteriorPoint));
-    let peak = auto.max_downward.value;
+    let peak = auto.deflection.max_downward.value;
     let state = auto
         .final_displacement
         .iter()
         .zip(&projection.final_displacement)
         .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
-    let (lift, lift_p) = (auto.max_upward.value, projection.max_upward.value);
+    let (lift, lift_p) = (auto.deflection.max_upward.value, projection.deflection.max_upward.value);
     eprintln!(
         "peak {:e} lift {:e} state {:e}",
-        (projection.max_downward.value - peak).abs() / peak,
+        (projection.deflection.max_downward.value - peak).abs() / peak,
         (lift - lift_p).abs() / peak,
         state / peak
     );
     assert!(
-        (projection.max_downward.value - peak).abs() <= 1e-10 * peak,
+        (projection.deflection.max_downward.value - peak).abs() <= 1e-10 * peak,
         "{} vs {peak}",
-        projection.max_downward.value
+        projection.deflection.max_downward.value
     );
     assert!((lift - lift_p).abs() <= 1e-10 * peak, "lift {lift} vs {lift_p}");
     assert!(state <= 1e-10 * peak, "final state {:e}", state / peak);

@@ -80,8 +80,8 @@ fn every_step_the_solver_cannot_solve_falls_back_and_is_counted() {
     assert_eq!(s.fallbacks, vec![track::simulation::FallbackCount { solver: SolverKind::Clarabel, steps: 400 }]);
     let (_, clarabel, none) = short_run(SolverKind::Clarabel, 20_000);
     assert_eq!(none, 0);
-    assert_eq!(helped.max_downward, clarabel.max_downward);
-    assert_eq!(helped.max_upward, clarabel.max_upward);
+    assert_eq!(helped.deflection.max_downward, clarabel.deflection.max_downward);
+    assert_eq!(helped.deflection.max_upward, clarabel.deflection.max_upward);
     assert_eq!(helped.final_displacement, clarabel.final_displacement);
 }
 
@@ -102,8 +102,8 @@ fn some_steps_fall_back_and_the_run_stays_within_the_solvers_spread() {
     assert_eq!(steps, observed);
     assert!(steps > 40 && steps < 360, "{steps} of 400 steps fell back: a mix is what this test is for");
     for (a, b) in [
-        (helped.max_downward.value, alone.max_downward.value),
-        (helped.max_upward.value, alone.max_upward.value),
+        (helped.deflection.max_downward.value, alone.deflection.max_downward.value),
+        (helped.deflection.max_upward.value, alone.deflection.max_upward.value),
         (helped.energy.friction_work, alone.energy.friction_work),
     ] {
         eprintln!("with fallback {a:.9e}, alone {b:.9e}: {:.2e}", (a - b).abs() / b.abs());

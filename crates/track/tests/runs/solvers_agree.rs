@@ -91,7 +91,10 @@ fn same_max_deflection(
         Simulation::new(&model, interactions, &s).unwrap().run().unwrap()
     };
     let (ra, rb) = (run(a), run(b));
-    for (x, y) in [(ra.max_downward.value, rb.max_downward.value), (ra.max_upward.value, rb.max_upward.value)] {
+    for (x, y) in [
+        (ra.deflection.max_downward.value, rb.deflection.max_downward.value),
+        (ra.deflection.max_upward.value, rb.deflection.max_upward.value),
+    ] {
         eprintln!("{a:?} vs {b:?}: max deflection {x:.9} vs {y:.9} m ({:.2e})", (x - y).abs() / y);
         assert!((x - y).abs() <= bound * y, "{a:?} vs {b:?}: {x} vs {y}");
     }

@@ -30,14 +30,14 @@ fn fe_response_matches_infinite_beam_steady_state() {
         let run = Simulation::new(&model, &interactions, &settings).unwrap().run().unwrap();
         let r = run.window.unwrap();
         let exact = infinite.steady_state(speed, case.load).unwrap().extremes();
-        let down = (r.max_downward.value - exact.max_downward.value) / exact.max_downward.value;
-        let up = (r.max_upward.value - exact.max_upward.value) / exact.max_upward.value;
+        let down = (r.deflection.max_downward.value - exact.max_downward.value) / exact.max_downward.value;
+        let up = (r.deflection.max_upward.value - exact.max_upward.value) / exact.max_upward.value;
         eprintln!(
             "v = {speed}: down {:.5} vs {:.5} ({:+.3} %), up {:.5} vs {:.5} ({:+.3} %)",
-            r.max_downward.value,
+            r.deflection.max_downward.value,
             exact.max_downward.value,
             100.0 * down,
-            r.max_upward.value,
+            r.deflection.max_upward.value,
             exact.max_upward.value,
             100.0 * up
         );
@@ -141,8 +141,8 @@ fn a_timoshenko_rail_started_from_its_steady_state_keeps_it() {
         let run = Simulation::new(&model, &PlacedInteractions::new(), &settings).unwrap().run().unwrap();
         let r = run.window.unwrap();
         let exact = infinite.steady_state(speed, case.load).unwrap().extremes();
-        let down = (r.max_downward.value - exact.max_downward.value) / exact.max_downward.value;
-        let up = (r.max_upward.value - exact.max_upward.value) / exact.max_upward.value;
+        let down = (r.deflection.max_downward.value - exact.max_downward.value) / exact.max_downward.value;
+        let up = (r.deflection.max_upward.value - exact.max_upward.value) / exact.max_upward.value;
         eprintln!("Timoshenko v = {speed}: down {down:+e}, up {up:+e}");
         assert!(down.abs() < 0.005 && up.abs() < 0.005, "v = {speed}: down {down:+e}, up {up:+e}");
     }

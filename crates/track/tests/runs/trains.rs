@@ -66,7 +66,7 @@ fn a_train_is_the_sum_of_time_shifted_single_axle_runs() {
             }
         }
         assert_eq!(whole.histories.len(), 3);
-        assert!(whole.max_downward.value > 0.0);
+        assert!(whole.deflection.max_downward.value > 0.0);
     }
 }
 
@@ -108,21 +108,21 @@ fn extremes_over_a_range_of_nodes() {
     let whole = Simulation::new(&model, &none, &settings).unwrap().run().unwrap();
     settings.record.extremes_nodes = Some((0.0, 60.0));
     let all = Simulation::new(&model, &none, &settings).unwrap().run().unwrap();
-    assert_eq!(all.max_downward, whole.max_downward);
+    assert_eq!(all.deflection.max_downward, whole.deflection.max_downward);
     assert_eq!(all.max_acceleration, whole.max_acceleration);
     settings.record.extremes_nodes = Some((20.0, 40.0));
     let middle = Simulation::new(&model, &none, &settings).unwrap().run().unwrap();
-    for e in [middle.max_downward, middle.max_upward, middle.max_acceleration.unwrap()] {
+    for e in [middle.deflection.max_downward, middle.deflection.max_upward, middle.max_acceleration.unwrap()] {
         assert!(e.position.is_some_and(|x| (20.0..=40.0).contains(&x)), "{e:?}");
     }
-    assert!(middle.max_downward.value <= whole.max_downward.value);
+    assert!(middle.deflection.max_downward.value <= whole.deflection.max_downward.value);
     assert!(middle.max_acceleration.unwrap().value <= whole.max_acceleration.unwrap().value);
     assert_eq!(middle.global_norm, whole.global_norm, "W̄ stays a whole-beam norm");
     let statics =
         track::statics::static_envelope(&model, &track::PlacedInteractions::new(), &train, 0.1, Some((20.0, 40.0)))
             .unwrap();
     assert!((20.0..=40.0).contains(&statics.position));
-    let daf = middle.max_downward.value / statics.max_downward;
+    let daf = middle.deflection.max_downward.value / statics.max_downward;
     assert!(daf > 1.0 && daf < 1.5, "amplification {daf} at 100 m/s, well below v_cr = 206 m/s");
     settings.record.extremes_nodes = Some((20.2, 20.8));
     assert!(Simulation::new(&model, &none, &settings).is_err(), "no node between 20.2 and 20.8 m");

@@ -23,7 +23,7 @@ fn a_profile_that_keeps_the_speed_is_the_constant_speed_run_to_the_bit() {
     profiled.moving = profiled.moving.with_profile(vec![(50.0, 100.0), (80.0, 100.0)]).unwrap();
     let (a, b) = (run(&model, &constant), run(&model, &profiled));
     assert_eq!(a.final_displacement, b.final_displacement);
-    assert_eq!(a.max_downward, b.max_downward);
+    assert_eq!(a.deflection.max_downward, b.deflection.max_downward);
     assert_eq!(a.energy, b.energy);
 }
 
@@ -148,7 +148,7 @@ fn passing_the_critical_speed_peaks_below_the_steady_state_there() {
         s.record.extremes_window = Some((100.0, 300.0));
         let r = run(&model, &s);
         assert!(r.energy.residual().abs() <= 1e-9 * r.energy.load_work.abs(), "{:?}", r.energy);
-        peaks.push(r.window.unwrap().max_downward.value);
+        peaks.push(r.window.unwrap().deflection.max_downward.value);
     }
     eprintln!("steady at v_cr {steady}, peaks {peaks:?}");
     let changes = [(peaks[1] - peaks[0]).abs(), (peaks[2] - peaks[1]).abs()];

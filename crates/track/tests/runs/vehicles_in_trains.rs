@@ -51,7 +51,7 @@ fn a_train_populated_with_quarter_cars_carries_its_axle_loads() {
     for w in wheels {
         assert!(w.min_force > 0.99 * w.static_force && w.max_force < 1.01 * w.static_force, "{w:?}");
     }
-    let ratio = cars.max_downward.value / forces.max_downward.value;
+    let ratio = cars.deflection.max_downward.value / forces.deflection.max_downward.value;
     eprintln!("max deflection: cars / forces = {ratio:.5}");
     assert!((ratio - 1.0).abs() < 2e-3);
 }
@@ -83,7 +83,7 @@ fn rail_cars_carry_their_weight_on_four_wheels() {
     let wheels = &cars.vehicles.as_ref().unwrap().wheels;
     assert_eq!(wheels.len(), 8);
     let worst = wheels.iter().map(|w| w.dynamic_increment()).fold(0.0, f64::max);
-    let ratio = cars.max_downward.value / forces.max_downward.value;
+    let ratio = cars.deflection.max_downward.value / forces.deflection.max_downward.value;
     eprintln!("largest ΔQ/Q₀ {worst:.4}, deflection cars/forces {ratio:.5}");
     assert!(wheels.iter().all(|w| (w.static_force / quarter - 1.0).abs() < 1e-12));
     assert!(worst < 0.02 && (ratio - 1.0).abs() < 1.5e-2);
@@ -135,7 +135,7 @@ fn a_train_populated_with_rail_cars_takes_its_geometry_from_the_axles() {
         assert!((wheel.static_force / force - 1.0).abs() < 1e-12 && (wheel.offset - offset).abs() < 1e-12, "{wheel:?}");
     }
     let worst = wheels.iter().map(|w| w.dynamic_increment()).fold(0.0, f64::max);
-    let ratio = cars.max_downward.value / forces.max_downward.value;
+    let ratio = cars.deflection.max_downward.value / forces.deflection.max_downward.value;
     eprintln!("largest ΔQ/Q₀ {worst:.4}, deflection cars/forces {ratio:.5}");
     assert!(worst < 0.03 && (ratio - 1.0).abs() < 2e-2);
     for (bad, field) in [
