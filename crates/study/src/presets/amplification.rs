@@ -1,7 +1,8 @@
 //! Study 5: dynamic amplification at mid-span, φ_w(τ) = w/w_sta and φ_M(τ) = M/M_sta, at ¼, ½, ¾ and 1 × v_cr for
 //! f_u ∈ {1, 2} kN/m (docs/theory.md §6–§7).
 
-use super::{StudyData, StudySummary, blank, keep_finished, nothing_finished, with_distributed};
+use super::setups::{blank, with_distributed};
+use super::study_data::{StudyData, StudySummary, keep_finished, nothing_finished};
 use crate::metrics::{amplification, static_midspan};
 use report::figures::quantity_figure;
 use runner::Runner;

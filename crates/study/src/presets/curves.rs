@@ -1,7 +1,8 @@
 //! A labelled family of speed sweeps with the refined critical speed of each curve: the data, figures and summary
 //! of the three speed studies (devices, equal cost, distributed friction).
 
-use super::{StudyData, StudyFailure, StudySummary, blank, failed_runs, mean_iterations};
+use super::setups::{blank, mean_iterations};
+use super::study_data::{StudyData, StudyFailure, StudySummary, failed_runs};
 use report::figures::{DeflectionCurve, deflection_figure, quantity_figure};
 use report::plot::PlotSpec;
 use runner::{CriticalSpeed, PeakLocation, Runner, SweepPoint, SweepRow, critical_speed, finished};

@@ -1,9 +1,8 @@
 //! Study 6: 199 devices of 1 kN against f_u = 0.995 kN/m, equal capacity, at ¾ v_cr: mid-span deflection and
 //! the friction mobilised (force over capacity) side by side (docs/theory.md §7).
 
-use super::{
-    StudyData, StudyFailure, StudySummary, blank, keep_finished, nothing_finished, with_devices, with_distributed,
-};
+use super::setups::{blank, with_devices, with_distributed};
+use super::study_data::{StudyData, StudyFailure, StudySummary, keep_finished, nothing_finished};
 use report::figures::quantity_figure;
 use report::plot::PlotSpec;
 use runner::Runner;

@@ -2,7 +2,9 @@
 //! dissipated energy vs speed (docs/theory.md §7).
 
 use super::curves::{Curves, curves_study};
-use super::{Resolution, StudyData, with_distributed};
+use super::resolution::Resolution;
+use super::setups::with_distributed;
+use super::study_data::StudyData;
 use runner::Runner;
 use scenario::Scenario;
 use scenario::error::Result;

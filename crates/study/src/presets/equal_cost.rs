@@ -2,7 +2,9 @@
 //! (docs/theory.md §7).
 
 use super::curves::{Curves, curves_study};
-use super::{Resolution, StudyData, with_devices};
+use super::resolution::Resolution;
+use super::setups::with_devices;
+use super::study_data::StudyData;
 use report::figures::device_color;
 use runner::Runner;
 use scenario::Scenario;

@@ -1,11 +1,15 @@
-//! The six studies of docs/theory.md §7, the train study of §10, the vehicle study of §12 and the infinite track's
-//! stationary wave of §14 as named presets. Each returns its data as CSV
-//! (long format, one row per point, SI units), a JSON summary (critical speeds, peaks, optimal forces) and a few
-//! human-readable summary lines.
-//! All runs of a study share one rayon pool; results do not depend on the thread count.
+//! The twelve studies of the theory manual as named presets: the thesis's six (docs/theory.md §7), the trains' (§10),
+//! the vehicles' (§12), the stationary wave's (§14) and the discrete track's three (§17, §18). Each returns its data
+//! as CSV (long format, one row per point, SI units), a typed JSON summary and a few human-readable lines; all runs
+//! of a study share one rayon pool, and results do not depend on the thread count.
 //!
-//! One file per study, each with the two sentences of its report section (its headline) written from its own typed
-//! results; `curves` holds the families of speed sweeps that three of them share.
+//! - One file (or folder: `hslm`, `stationary_wave`) per study, each with the two sentences of its report section
+//!   written from its own typed results; `curves` holds the families of speed sweeps three of them share,
+//!   `discrete_track` the discrete track's set-up.
+//! - The registry: [`Preset`] (`preset`) names the studies in order; `table` holds each one's row — name, title,
+//!   what it sets, how it samples speeds, its run — and the accessors that read it; [`run_preset`] (`run`) runs one.
+//! - What the studies share: [`StudyData`] and its typed [`StudySummary`] (`study_data`), the set-ups (`setups`),
+//!   [`Resolution`] (`resolution`), the JSON beside the CSV ([`StudyFile`], `study_file`).
 
 mod amplification;
 mod curves;
@@ -27,6 +31,7 @@ mod voided_sleepers;
 mod preset;
 mod resolution;
 mod run;
+mod setups;
 mod study_data;
 
 pub use preset::Preset;
@@ -34,6 +39,3 @@ pub use resolution::Resolution;
 pub use run::run_preset;
 pub use study_data::{StudyData, StudyFailure, StudySummary};
 pub use study_file::{SolverStatisticsNote, StudyFile};
-
-use run::{as_long_track, blank, mean_iterations, with_devices, with_distributed};
-use study_data::{failed_runs, keep_finished, nothing_finished};

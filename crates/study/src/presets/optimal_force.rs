@@ -1,9 +1,9 @@
 //! Study 3: the optimal device force at the critical speed for N ∈ {3, 7, 15, 31}: a log scan of F_u over
 //! 1 kN–10 MN, then golden section around the best (docs/theory.md §7).
 
-use super::{
-    Resolution, StudyData, StudyFailure, StudySummary, blank, mean_iterations, nothing_finished, with_devices,
-};
+use super::resolution::Resolution;
+use super::setups::{blank, mean_iterations, with_devices};
+use super::study_data::{StudyData, StudyFailure, StudySummary, nothing_finished};
 use report::figures::{DeflectionCurve, deflection_figure, device_color};
 use runner::{OptimalForce, Runner, SweepPoint, log_spaced, refine_from_scan};
 use scenario::Scenario;

@@ -1,10 +1,5 @@
-//! The named studies (docs/theory.md §7, §10, §12, §14, §17, §18): which exist, what each is called and sets, and
-//! the speeds it sweeps; what each runs is its row of the registry ([`super::table`]).
-
-use super::resolution::Resolution;
-use super::table::Sampling;
-use scenario::Scenario;
-use scenario::error::{Result, invalid};
+//! The named studies (docs/theory.md §7, §10, §12, §14, §17, §18): which exist and in which order; what each is
+//! called, sets, sweeps and runs is its row of the registry (`table`).
 
 /// The studies of docs/theory.md §7.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -64,68 +59,4 @@ impl Preset {
         all[10] = Preset::SleeperFriction;
         all
     };
-
-    /// Name on the command line and of the output files.
-    pub fn name(self) -> &'static str {
-        self.entry().name
-    }
-
-    /// The preset called `name`.
-    pub fn from_name(name: &str) -> Result<Self> {
-        Self::ALL.into_iter().find(|p| p.name() == name).ok_or_else(|| {
-            let names: Vec<&str> = Self::ALL.iter().map(|p| p.name()).collect();
-            invalid("preset", name, format!("must be one of {}", names.join(", ")))
-        })
-    }
-
-    /// What the study sets itself on top of the base scenario (the friction set-ups it compares, the speeds of
-    /// fixed-speed studies, the recorded section).
-    pub fn sets(self) -> &'static [&'static str] {
-        self.entry().sets
-    }
-
-    /// The parts of `base` that this study replaces with its own (see [`Preset::sets`]), one sentence each; empty
-    /// when the base scenario leaves them at their defaults.
-    pub fn overrides(self, base: &Scenario) -> Vec<String> {
-        match self.entry().overrides {
-            Some(overrides) => overrides(base),
-            None => self.common_overrides(base),
-        }
-    }
-
-    /// The common rule of [`Preset::overrides`]: the scenario's friction, where the study compares set-ups of its
-    /// own (named by the first line of [`Preset::sets`]), and its `[sweep]` in a study at fixed speeds.
-    pub(super) fn common_overrides(self, base: &Scenario) -> Vec<String> {
-        let mut notes = Vec::new();
-        let f = &base.friction;
-        if f.devices.is_some() || f.distributed.is_some() {
-            notes.push(format!(
-                "the scenario's [friction] is not used: the study compares its own set-ups ({})",
-                self.sets()[0].trim_start_matches("friction: ")
-            ));
-        }
-        if !self.sweeps_speed() && base.sweep.is_some() {
-            notes.push("the scenario's [sweep] is not used: this study runs at fixed speeds".into());
-        }
-        notes
-    }
-
-    /// Whether the study sweeps the load speed (the others run at fixed speeds).
-    pub fn sweeps_speed(self) -> bool {
-        self.entry().sampling != Sampling::Fixed
-    }
-
-    /// The speeds (m/s) the study sweeps on `base`, None for the studies at fixed speeds.
-    pub fn speeds(self, resolution: Resolution, base: &Scenario) -> Result<Option<Vec<f64>>> {
-        Ok(match self.entry().sampling {
-            Sampling::TrainSpeeds => Some(resolution.train_speeds(base)),
-            Sampling::Speeds => Some(resolution.speeds(base)?),
-            Sampling::Fixed => None,
-        })
-    }
-
-    /// A one-line title.
-    pub fn title(self) -> &'static str {
-        self.entry().title
-    }
 }

@@ -9,7 +9,9 @@
 
 use super::curves::{Curves, curves_study};
 use super::discrete_track::{fit_mesh, sleepers_for_soil, sleepers_unless_given};
-use super::{Resolution, StudyData, with_distributed};
+use super::resolution::Resolution;
+use super::setups::with_distributed;
+use super::study_data::StudyData;
 use report::plot::PlotSpec;
 use runner::Runner;
 use scenario::Scenario;

@@ -1,6 +1,8 @@
 //! The JSON a study writes beside its CSV (`study NAME --out DIR` writes `DIR/NAME.json`).
 
-use super::{Preset, Resolution, StudyData, StudyFailure, StudySummary};
+use super::preset::Preset;
+use super::resolution::Resolution;
+use super::study_data::{StudyData, StudyFailure, StudySummary};
 use scenario::Scenario;
 use scenario::error::Result;
 use serde::Serialize;

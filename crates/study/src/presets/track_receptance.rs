@@ -6,7 +6,9 @@
 //! over 10 Hz – 2 kHz, log-spaced, the resonances refined and named.
 
 use super::discrete_track::{TYPICAL, fit_mesh, sleepers_unless_given};
-use super::{Resolution, StudyData, StudySummary, blank};
+use super::resolution::Resolution;
+use super::setups::blank;
+use super::study_data::{StudyData, StudySummary};
 use crate::receptance::peaks::Resonance;
 use crate::receptance::{ReceptanceRequest, ReceptanceStudy};
 use fem_beam::BeamTheory;

@@ -13,7 +13,9 @@
 //! dropped into the soft reference track's 52 mm trough and still bounced ±37 % in the middle third at 30 m/s.
 
 use super::hslm::friction_setups;
-use super::{Resolution, StudyData, StudySummary, as_long_track, blank, failed_runs, mean_iterations};
+use super::resolution::Resolution;
+use super::setups::{as_long_track, blank, mean_iterations};
+use super::study_data::{StudyData, StudySummary, failed_runs};
 use report::plot::{PlotSpec, Series, Stroke};
 use runner::{Runner, SweepPoint, SweepRow, finished};
 use scenario::error::Result;

@@ -6,8 +6,10 @@
 //! and the largest pad force, how low the voided sleepers go, and the wheel–rail force and losses of contact.
 
 use super::discrete_track::{ELEMENTS_PER_BAY, TYPICAL, fit_mesh, sleepers_unless_given};
+use super::resolution::Resolution;
+use super::setups::{as_long_track, blank, mean_iterations};
+use super::study_data::{StudyData, StudySummary, failed_runs};
 use super::vehicle_speed::{SINGLE, cap_contact_step};
-use super::{Resolution, StudyData, StudySummary, as_long_track, blank, failed_runs, mean_iterations};
 use report::plot::{PlotSpec, Series, Stroke};
 use runner::{Runner, SweepPoint, SweepRow, finished};
 use scenario::error::Result;

@@ -15,9 +15,9 @@
 use super::resonances::{Resonance, natural_frequencies, resonances};
 use super::results::{Results, TrainCurve, coach_length, friction_name};
 use super::verdict::{DeckLimit, larger, near_limit_peaks};
-use crate::presets::{
-    Resolution, StudyData, StudyFailure, blank, failed_runs, mean_iterations, nothing_finished, with_devices,
-};
+use crate::presets::resolution::Resolution;
+use crate::presets::setups::{blank, mean_iterations, with_devices};
+use crate::presets::study_data::{StudyData, StudyFailure, failed_runs, nothing_finished};
 use fem_beam::Train;
 use fem_beam::train::HSLM_A;
 use runner::{Metric, RefinedPeak, Runner, SweepPoint, finished, refine_maximum, unrefined};
@@ -78,7 +78,7 @@ fn prepared(base: &Scenario, speeds: &[f64]) -> Result<(Scenario, Vec<String>)> 
                 s.integration.load_advance = needed;
             }
         }
-        None => crate::presets::as_long_track(&mut s, &mut notes, "the trains"),
+        None => crate::presets::setups::as_long_track(&mut s, &mut notes, "the trains"),
     }
     Ok((s, notes))
 }
@@ -195,7 +195,7 @@ pub(in crate::presets) fn study(resolution: Resolution, base: &Scenario, runner:
     let (summary, lines) = results.summary();
     Ok(StudyData {
         csv: results.csv(),
-        summary: crate::presets::StudySummary::of(summary),
+        summary: crate::presets::study_data::StudySummary::of(summary),
         lines,
         headline: results.headline(),
         plots: results.figures(),

@@ -2,7 +2,7 @@
 //! (linear at each ballast friction level, tensionless, bilinear), one curve of waves over speed per soil, and where
 //! each curve peaks. Speeds in m/s, deflections in m, friction in N/m.
 
-use crate::presets::with_distributed;
+use crate::presets::setups::with_distributed;
 use crate::stationary::output::StationaryStudy;
 use scenario::{FoundationLawKind, Scenario};
 use serde::Serialize;

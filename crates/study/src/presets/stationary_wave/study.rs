@@ -7,7 +7,8 @@
 use super::curves::{FRICTION, InfiniteCritical, InfiniteCurve, Soil, TENSION_RATIO};
 use super::figures;
 use crate::presets::curves::{Curves, CurvesSummary, sweep_curves};
-use crate::presets::{StudyData, StudySummary, blank, mean_iterations, with_distributed};
+use crate::presets::setups::{blank, mean_iterations, with_distributed};
+use crate::presets::study_data::{StudyData, StudySummary};
 use crate::stationary::output::{ErrorEstimate, StationaryPoint, StationaryStudy};
 use analytic::golden::refine_peak;
 use runner::Runner;
@@ -20,7 +21,7 @@ use stationary::{ContactGuess, Domain};
 use std::fmt::Write as _;
 
 pub(in crate::presets) fn study(
-    resolution: crate::presets::Resolution,
+    resolution: crate::presets::resolution::Resolution,
     base: &Scenario,
     runner: &Runner,
 ) -> Result<StudyData> {
@@ -260,7 +261,7 @@ fn headline(infinite: &[InfiniteCurve], finite: &Curves) -> Vec<String> {
 /// What of `base` the study replaces: the common rule (its friction: the study sets its own per curve), and its
 /// soil's law (the study sets linear, tensionless and bilinear itself).
 pub(in crate::presets) fn overrides(base: &Scenario) -> Vec<String> {
-    let mut notes = crate::presets::Preset::StationaryWave.common_overrides(base);
+    let mut notes = crate::presets::preset::Preset::StationaryWave.common_overrides(base);
     if base.foundation.law != FoundationLawKind::Linear {
         notes.push(
             "the scenario's [foundation] law is not used: the study sets linear, tensionless and bilinear (α = ½) \
