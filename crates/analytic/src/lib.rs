@@ -15,11 +15,14 @@
 //! - [`tensionless`]: a point load on a tensionless Winkler soil (Weitsman's lift-off).
 //! - [`span`], [`span_oscillator`]: the simply supported span under a moving force or a moving oscillator.
 //! - [`golden`]: the golden-section search every peak and minimum is refined with.
+//! - [`ground`]: a layered visco-elastic half-space and its surface flexibility F_zz(k, ω) (the first part of the
+//!   ground under the track).
 //!
 //! Units are SI; deflections are positive upward unless a module says otherwise.
 
 pub mod dispersion;
 pub mod golden;
+pub mod ground;
 pub mod moving_beam;
 pub mod moving_timoshenko;
 pub mod reference;

@@ -27,6 +27,16 @@ pub enum FemError {
         /// What is allowed, in words.
         allowed: &'static str,
     },
+    /// A value of the ground's profile is out of range; `path` names it, e.g. `ground.layers[2].thickness`.
+    #[error("invalid {path} = {value}: {allowed}")]
+    InvalidGround {
+        /// Which value, e.g. `ground.layers[2].thickness`.
+        path: String,
+        /// The offending value.
+        value: f64,
+        /// What is allowed, in words.
+        allowed: String,
+    },
     /// No train of the catalogue has this name.
     #[error("unknown train `{name}`, expected one of {known}")]
     UnknownTrain {
@@ -112,6 +122,7 @@ impl FemError {
                 | FemError::InvalidSleeper { .. }
                 | FemError::NoSteadyState { .. }
                 | FemError::InvalidTrain { .. }
+                | FemError::InvalidGround { .. }
                 | FemError::UnknownTrain { .. }
         )
     }

@@ -1,0 +1,134 @@
+//! A layered visco-elastic ground: layers from the surface down over a half-space, each an isotropic material with
+//! shear- and compression-wave speeds C_s, C_p (m/s), density ρ (kg/m³) and hysteretic damping ξ, whose complex
+//! moduli are μ* = ρC_s²(1 + 2iξ) and λ* + 2μ* = ρC_p²(1 + 2iξ) for ω > 0 (docs/theory.md §19).
+
+use fem_beam::FemError;
+use fem_beam::error::Result;
+use num_complex::Complex64;
+
+/// The most layers a profile may have: a site's profile has a few to a few tens; thousands are a mistake.
+pub const MAX_LAYERS: usize = 200;
+
+/// An isotropic visco-elastic material.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SoilMaterial {
+    /// C_s (m/s), > 0.
+    pub shear_wave_speed: f64,
+    /// C_p (m/s), > C_s·√(4/3): the Poisson ratio ([`SoilMaterial::poisson_ratio`]) then lies in (−1, ½), reaching
+    /// ½ only as C_p → ∞.
+    pub compression_wave_speed: f64,
+    /// ρ (kg/m³), > 0.
+    pub density: f64,
+    /// ξ ≥ 0, the hysteretic damping ratio.
+    pub damping_ratio: f64,
+}
+
+/// One layer: a material and its thickness.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SoilLayer {
+    /// h (m), > 0.
+    pub thickness: f64,
+    /// Its material.
+    pub material: SoilMaterial,
+}
+
+/// The half-space under the last layer.
+pub type HalfSpace = SoilMaterial;
+
+/// Layers from the surface down over a half-space.
+#[derive(Debug, Clone, PartialEq)]
+pub struct GroundProfile {
+    /// The layers, from the surface down (may be empty: a homogeneous half-space).
+    pub layers: Vec<SoilLayer>,
+    /// What lies below them.
+    pub half_space: HalfSpace,
+}
+
+impl SoilMaterial {
+    /// ν = (C_p² − 2C_s²)/(2(C_p² − C_s²)).
+    pub fn poisson_ratio(&self) -> f64 {
+        let (p2, s2) = (self.compression_wave_speed.powi(2), self.shear_wave_speed.powi(2));
+        (p2 - 2.0 * s2) / (2.0 * (p2 - s2))
+    }
+
+    /// The complex shear modulus μ* = ρC_s²(1 + 2iξ) (Pa), for ω > 0.
+    pub fn shear_modulus(&self) -> Complex64 {
+        self.density * self.shear_wave_speed.powi(2) * self.damping()
+    }
+
+    /// The complex P-wave modulus λ* + 2μ* = ρC_p²(1 + 2iξ) (Pa), for ω > 0.
+    pub fn p_wave_modulus(&self) -> Complex64 {
+        self.density * self.compression_wave_speed.powi(2) * self.damping()
+    }
+
+    /// The complex wave speeds squared (C_s*², C_p*²) = (μ*/ρ, (λ* + 2μ*)/ρ) (m²/s²).
+    pub fn wave_speeds_squared(&self) -> (Complex64, Complex64) {
+        (self.shear_modulus() / self.density, self.p_wave_modulus() / self.density)
+    }
+
+    fn damping(&self) -> Complex64 {
+        Complex64::new(1.0, 2.0 * self.damping_ratio)
+    }
+
+    /// Each value in range, named under `path` (e.g. `ground.layers[2]`).
+    pub fn validate(&self, path: &str) -> Result<()> {
+        let bad = |key: &str, value: f64, allowed: &str| FemError::InvalidGround {
+            path: format!("{path}.{key}"),
+            value,
+            allowed: allowed.to_string(),
+        };
+        let (cs, cp) = (self.shear_wave_speed, self.compression_wave_speed);
+        if !(cs.is_finite() && cs > 0.0) {
+            return Err(bad("shear_wave_speed", cs, "must be finite and > 0 (m/s)"));
+        }
+        // ν = (C_p² − 2C_s²)/(2(C_p² − C_s²)) is −1 at C_p² = (4/3)C_s² and tends to ½ as C_p → ∞.
+        if !(cp.is_finite() && cp * cp > 4.0 / 3.0 * cs * cs) {
+            return Err(bad(
+                "compression_wave_speed",
+                cp,
+                &format!(
+                    "must be finite and above C_s·√(4/3) = {:.1} m/s (a Poisson ratio above −1)",
+                    cs * (4.0f64 / 3.0).sqrt()
+                ),
+            ));
+        }
+        if !(self.density.is_finite() && self.density > 0.0) {
+            return Err(bad("density", self.density, "must be finite and > 0 (kg/m³)"));
+        }
+        if !(self.damping_ratio.is_finite() && (0.0..0.5).contains(&self.damping_ratio)) {
+            return Err(bad("damping_ratio", self.damping_ratio, "must lie in [0, 0.5) (hysteretic ξ)"));
+        }
+        Ok(())
+    }
+}
+
+impl GroundProfile {
+    /// A homogeneous half-space of `material`.
+    pub fn half_space(material: SoilMaterial) -> Self {
+        Self { layers: Vec::new(), half_space: material }
+    }
+
+    /// Every layer and the half-space in range, each named by its key (`ground.layers[i].…`,
+    /// `ground.half_space.…`); at most [`MAX_LAYERS`] layers.
+    pub fn validate(&self) -> Result<()> {
+        if self.layers.len() > MAX_LAYERS {
+            return Err(FemError::InvalidGround {
+                path: "ground.layers".into(),
+                value: self.layers.len() as f64,
+                allowed: format!("at most {MAX_LAYERS} layers (a site's profile has a few to a few tens)"),
+            });
+        }
+        for (i, layer) in self.layers.iter().enumerate() {
+            let h = layer.thickness;
+            if !(h.is_finite() && h > 0.0) {
+                return Err(FemError::InvalidGround {
+                    path: format!("ground.layers[{i}].thickness"),
+                    value: h,
+                    allowed: "must be finite and > 0 (m)".into(),
+                });
+            }
+            layer.material.validate(&format!("ground.layers[{i}]"))?;
+        }
+        self.half_space.validate("ground.half_space")
+    }
+}
