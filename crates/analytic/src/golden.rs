@@ -15,17 +15,17 @@ pub fn golden_section_evaluations(width: f64, tolerance: f64) -> usize {
 /// two interior points (argument, value).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct GoldenBracket {
-    /// The interval's ends.
+    /// The interval's lower end.
     pub lower: f64,
-    /// The interval's ends.
+    /// The interval's upper end.
     pub upper: f64,
     /// The best evaluated interior point (argument, value of f).
     pub best: (f64, f64),
 }
 
 /// Golden-section search for the maximum (`maximise`) or minimum of f on [a, b] down to an interval of width
-/// `tolerance`: the interval it ended on and its best point (on equal values it keeps the upper point). An error of f ends the
-/// search with it.
+/// `tolerance`: the interval it ended on and its best point (on equal values it keeps the upper point). An error of f
+/// ends the search with it.
 pub fn golden_bracket<E>(
     f: &mut dyn FnMut(f64) -> Result<f64, E>,
     mut a: f64,
