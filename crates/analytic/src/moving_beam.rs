@@ -127,11 +127,7 @@ impl MovingBeam {
     pub fn rotation_per_deflection(&self, r: Complex64, speed: f64) -> (Complex64, Complex64) {
         match &self.rail {
             Rail::EulerBernoulli(_) => (r, Complex64::new(1.0, 0.0)),
-            Rail::Timoshenko(t) => {
-                let (g, d) = (t.shear_stiffness(), t.d(speed));
-                let denominator = r * r * d + g;
-                (t.rotation_per_deflection(r, speed), (-(r * r * d) + g) * g / (denominator * denominator))
-            }
+            Rail::Timoshenko(t) => (t.rotation_per_deflection(r, speed), t.rotation_slope(r, speed)),
         }
     }
 

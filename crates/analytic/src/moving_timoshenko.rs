@@ -58,13 +58,8 @@ impl MovingTimoshenko {
         self.beam.wave_speed_limit()
     }
 
-    /// G = κGA (N).
-    pub fn shear_stiffness(&self) -> f64 {
-        self.shear
-    }
-
     /// D = ρIv² − EI (N·m²) at `speed`.
-    pub fn d(&self, speed: f64) -> f64 {
+    fn d(&self, speed: f64) -> f64 {
         self.beam.rotary_inertia() * speed * speed - self.beam.bending_stiffness()
     }
 
@@ -85,6 +80,13 @@ impl MovingTimoshenko {
     /// Ψ/W of the mode e^{rs} at `speed`: β(r) = G r/(G + D r²).
     pub fn rotation_per_deflection(&self, r: Complex64, speed: f64) -> Complex64 {
         r * self.shear / (r * r * self.d(speed) + self.shear)
+    }
+
+    /// dβ/dr at `speed`: G(G − D r²)/(G + D r²)² (the far field's traction needs it).
+    pub fn rotation_slope(&self, r: Complex64, speed: f64) -> Complex64 {
+        let (g, d) = (self.shear, self.d(speed));
+        let denominator = r * r * d + g;
+        (-(r * r * d) + g) * g / (denominator * denominator)
     }
 
     /// The wavenumbers split into the two that decay ahead of the load (Re r < 0) and the two behind (Re r > 0),

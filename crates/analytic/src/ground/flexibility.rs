@@ -3,9 +3,8 @@
 //! the half-space's 2 × 2 stiffness condensed up through each (sub)layer, K ← K₁₁ − K₁₂(K₂₂ + K)⁻¹K₂₁, and F = K⁻¹.
 
 use super::half_space::half_space_stiffness;
-use super::layer::{layer_stiffness, sublayers};
+use super::layer::{blocks, inverse_or_nan, layer_stiffness, sublayers};
 use super::profile::GroundProfile;
-use nalgebra::Matrix2;
 use num_complex::Complex64;
 
 /// F_zz(k, ω) of `profile` at wavenumber `k` (rad/m, ≠ 0) and circular frequency `omega` (rad/s, ≥ 0): downward
@@ -15,13 +14,10 @@ pub fn surface_flexibility(profile: &GroundProfile, k: f64, omega: f64) -> Compl
     for layer in profile.layers.iter().rev() {
         let n = sublayers(&layer.material, layer.thickness, k, omega);
         let stiffness = layer_stiffness(&layer.material, layer.thickness / n as f64, k, omega);
-        let block = |r: usize, c: usize| stiffness.fixed_view::<2, 2>(r, c).into_owned();
-        let (k11, k12, k21, k22) = (block(0, 0), block(0, 2), block(2, 0), block(2, 2));
+        let [k11, k12, k21, k22] = blocks(&stiffness);
         for _ in 0..n {
-            let inverse =
-                (k22 + below).try_inverse().unwrap_or_else(|| Matrix2::from_element(Complex64::new(f64::NAN, 0.0)));
-            below = k11 - k12 * inverse * k21;
+            below = k11 - k12 * inverse_or_nan(k22 + below) * k21;
         }
     }
-    below.try_inverse().map_or(Complex64::new(f64::NAN, 0.0), |f| f[(1, 1)])
+    inverse_or_nan(below)[(1, 1)]
 }

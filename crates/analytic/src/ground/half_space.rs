@@ -20,7 +20,7 @@ use nalgebra::Matrix2;
 use num_complex::Complex64;
 
 /// The root of 1 − x with a non-negative real part (the wave decays downward or, damped, radiates away).
-pub(super) fn decaying_root(x: Complex64) -> Complex64 {
+fn decaying_root(x: Complex64) -> Complex64 {
     let r = (Complex64::new(1.0, 0.0) - x).sqrt();
     if r.re < 0.0 { -r } else { r }
 }

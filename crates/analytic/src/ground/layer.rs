@@ -27,9 +27,8 @@ use num_complex::Complex64;
 /// ωh/|C_s| up to about 1 (the surface flexibility cuts layers into such sublayers).
 pub fn layer_stiffness(material: &SoilMaterial, thickness: f64, k: f64, omega: f64) -> Matrix4<Complex64> {
     let transfer = (system(material, k, omega) * Complex64::new(thickness, 0.0)).exp();
-    let block = |r: usize, c: usize| transfer.fixed_view::<2, 2>(r, c).into_owned();
-    let (t11, t12, t21, t22) = (block(0, 0), block(0, 2), block(2, 0), block(2, 2));
-    let t12_inverse = t12.try_inverse().unwrap_or_else(|| Matrix2::from_element(Complex64::new(f64::NAN, 0.0)));
+    let [t11, t12, t21, t22] = blocks(&transfer);
+    let t12_inverse = inverse_or_nan(t12);
     let top = t12_inverse * t11;
     let mut out = Matrix4::zeros();
     out.fixed_view_mut::<2, 2>(0, 0).copy_from(&top);
@@ -37,6 +36,16 @@ pub fn layer_stiffness(material: &SoilMaterial, thickness: f64, k: f64, omega: f
     out.fixed_view_mut::<2, 2>(2, 0).copy_from(&(t21 - t22 * top));
     out.fixed_view_mut::<2, 2>(2, 2).copy_from(&(t22 * t12_inverse));
     out
+}
+
+/// The 2 × 2 blocks [top-left, top-right, bottom-left, bottom-right] of a 4 × 4 matrix.
+pub(super) fn blocks(m: &Matrix4<Complex64>) -> [Matrix2<Complex64>; 4] {
+    [(0, 0), (0, 2), (2, 0), (2, 2)].map(|(r, c)| m.fixed_view::<2, 2>(r, c).into_owned())
+}
+
+/// The inverse of `m`, or NaN everywhere where it is singular (a result that says it has none, never a panic).
+pub(super) fn inverse_or_nan(m: Matrix2<Complex64>) -> Matrix2<Complex64> {
+    m.try_inverse().unwrap_or_else(|| Matrix2::from_element(Complex64::new(f64::NAN, 0.0)))
 }
 
 /// A of y′ = A y, y = (u, w, τ, σ).
