@@ -25,6 +25,7 @@ pub mod golden;
 pub mod ground;
 pub mod moving_beam;
 pub mod moving_timoshenko;
+pub mod quadrature;
 pub mod reference;
 pub mod span;
 pub mod span_oscillator;

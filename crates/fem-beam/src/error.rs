@@ -37,6 +37,17 @@ pub enum FemError {
         /// What is allowed, in words.
         allowed: String,
     },
+    /// An integral or a series did not reach its tolerance within its budget: the number it would give is not
+    /// trusted and is not returned.
+    #[error("{what} did not converge: error estimate {reached:e} against the tolerance {asked:e}")]
+    NotConverged {
+        /// What was computed, with where (e.g. `the ground's strip integral at k_x = 0.3 rad/m, ω = 12 rad/s`).
+        what: String,
+        /// The error estimate reached (relative).
+        reached: f64,
+        /// The tolerance asked for (relative).
+        asked: f64,
+    },
     /// No train of the catalogue has this name.
     #[error("unknown train `{name}`, expected one of {known}")]
     UnknownTrain {

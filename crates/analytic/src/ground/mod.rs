@@ -7,14 +7,23 @@
 //! - `half_space`: the half-space's stiffness, in a closed form that stays finite as ω/k → 0.
 //! - `layer`: a layer's stiffness from the transfer matrix exp(A h) of its first-order system, on sublayers thin
 //!   enough (|k|h, ωh/|C_s| ≤ 1) that neither the static limit nor thick layers lose digits.
-//! - `flexibility`: the surface flexibility F_zz(k, ω) of the profile.
+//! - `flexibility`: the surface flexibility F_zz(k, ω) of the profile, to the depth a wave reaches.
+//! - `rayleigh_modes`: the trapped Rayleigh modes' phase velocities at a frequency (det K = 0 of the free surface).
+//! - `thin_layer`: the same modes by the thin-layer method (finite elements in depth), the independent check.
+//! - `strip`: [`StripGround`] — the track's strip on the ground and its equivalent stiffness k_eq(k_x, ω).
 
 mod flexibility;
 mod half_space;
 mod layer;
 mod profile;
+mod rayleigh_modes;
+mod strip;
+mod thin_layer;
 
-pub use flexibility::surface_flexibility;
+pub use flexibility::{surface_flexibility, surface_stiffness};
 pub use half_space::half_space_stiffness;
 pub use layer::layer_stiffness;
 pub use profile::{GroundProfile, HalfSpace, MAX_LAYERS, SoilLayer, SoilMaterial};
+pub use rayleigh_modes::rayleigh_phase_velocities;
+pub use strip::{STRIP_TOLERANCE, StripGround};
+pub use thin_layer::{ThinLayerMesh, thin_layer_phase_velocity};

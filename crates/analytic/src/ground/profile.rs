@@ -1,6 +1,6 @@
 //! A layered visco-elastic ground: layers from the surface down over a half-space, each an isotropic material with
 //! shear- and compression-wave speeds C_s, C_p (m/s), density ρ (kg/m³) and hysteretic damping ξ, whose complex
-//! moduli are μ* = ρC_s²(1 + 2iξ) and λ* + 2μ* = ρC_p²(1 + 2iξ) for ω > 0 (docs/theory.md §19).
+//! moduli are μ* = ρC_s²(1 + 2iξ sgn ω) and λ* + 2μ* = ρC_p²(1 + 2iξ sgn ω) (docs/theory.md §19).
 
 use fem_beam::FemError;
 use fem_beam::error::Result;
@@ -51,23 +51,25 @@ impl SoilMaterial {
         (p2 - 2.0 * s2) / (2.0 * (p2 - s2))
     }
 
-    /// The complex shear modulus μ* = ρC_s²(1 + 2iξ) (Pa), for ω > 0.
-    pub fn shear_modulus(&self) -> Complex64 {
-        self.density * self.shear_wave_speed.powi(2) * self.damping()
+    /// The complex shear modulus μ* = ρC_s²(1 + 2iξ sgn ω) (Pa) at circular frequency `omega` (rad/s).
+    pub fn shear_modulus(&self, omega: f64) -> Complex64 {
+        self.density * self.shear_wave_speed.powi(2) * self.damping(omega)
     }
 
-    /// The complex P-wave modulus λ* + 2μ* = ρC_p²(1 + 2iξ) (Pa), for ω > 0.
-    pub fn p_wave_modulus(&self) -> Complex64 {
-        self.density * self.compression_wave_speed.powi(2) * self.damping()
+    /// The complex P-wave modulus λ* + 2μ* = ρC_p²(1 + 2iξ sgn ω) (Pa) at circular frequency `omega` (rad/s).
+    pub fn p_wave_modulus(&self, omega: f64) -> Complex64 {
+        self.density * self.compression_wave_speed.powi(2) * self.damping(omega)
     }
 
-    /// The complex wave speeds squared (C_s*², C_p*²) = (μ*/ρ, (λ* + 2μ*)/ρ) (m²/s²).
-    pub fn wave_speeds_squared(&self) -> (Complex64, Complex64) {
-        (self.shear_modulus() / self.density, self.p_wave_modulus() / self.density)
+    /// The complex wave speeds squared (C_s*², C_p*²) = (μ*/ρ, (λ* + 2μ*)/ρ) (m²/s²) at `omega` (rad/s).
+    pub fn wave_speeds_squared(&self, omega: f64) -> (Complex64, Complex64) {
+        (self.shear_modulus(omega) / self.density, self.p_wave_modulus(omega) / self.density)
     }
 
-    fn damping(&self) -> Complex64 {
-        Complex64::new(1.0, 2.0 * self.damping_ratio)
+    /// 1 + 2iξ sgn ω: hysteretic damping, real at rest.
+    fn damping(&self, omega: f64) -> Complex64 {
+        let sign = if omega == 0.0 { 0.0 } else { omega.signum() };
+        Complex64::new(1.0, 2.0 * self.damping_ratio * sign)
     }
 
     /// Each value in range, named under `path` (e.g. `ground.layers[2]`).
@@ -106,6 +108,31 @@ impl GroundProfile {
     /// A homogeneous half-space of `material`.
     pub fn half_space(material: SoilMaterial) -> Self {
         Self { layers: Vec::new(), half_space: material }
+    }
+
+    /// Every material, from the surface down, the half-space's last.
+    pub fn materials(&self) -> impl Iterator<Item = &SoilMaterial> {
+        self.layers.iter().map(|layer| &layer.material).chain(std::iter::once(&self.half_space))
+    }
+
+    /// The material at the surface: the first layer's, or the half-space's if there is none.
+    pub fn top(&self) -> &SoilMaterial {
+        self.layers.first().map_or(&self.half_space, |layer| &layer.material)
+    }
+
+    /// The least shear-wave speed C_s of any material (m/s).
+    pub fn slowest_shear_wave_speed(&self) -> f64 {
+        self.materials().map(|m| m.shear_wave_speed).fold(f64::INFINITY, f64::min)
+    }
+
+    /// The same profile without damping (ξ = 0 everywhere): the elastic ground whose dispersion curves are drawn.
+    pub fn undamped(&self) -> Self {
+        let mut elastic = self.clone();
+        for layer in &mut elastic.layers {
+            layer.material.damping_ratio = 0.0;
+        }
+        elastic.half_space.damping_ratio = 0.0;
+        elastic
     }
 
     /// Every layer and the half-space in range, each named by its key (`ground.layers[i].…`,
