@@ -9,12 +9,17 @@
 //!   enough (|k|h, ωh/|C_s| ≤ 1) that neither the static limit nor thick layers lose digits.
 //! - `flexibility`: the surface flexibility F_zz(k, ω) of the profile, to the depth a wave reaches.
 //! - `rayleigh_modes`: the trapped Rayleigh modes' phase velocities at a frequency (det K = 0 of the free surface).
+//! - `line_support`: [`LineSupport`], a beam's support per wave: a Winkler foundation or the strip's k_eq.
+//! - `moving_load`: [`GroundedBeam`] — a beam on a line support under a moving force, its steady wave by one
+//!   Fourier integral over an adaptively sampled spectrum.
 //! - `thin_layer`: the same modes by the thin-layer method (finite elements in depth), the independent check.
 //! - `strip`: [`StripGround`] — the track's strip on the ground and its equivalent stiffness k_eq(k_x, ω).
 
 mod flexibility;
 mod half_space;
 mod layer;
+mod line_support;
+mod moving_load;
 mod profile;
 mod rayleigh_modes;
 mod strip;
@@ -23,6 +28,8 @@ mod thin_layer;
 pub use flexibility::{surface_flexibility, surface_stiffness};
 pub use half_space::half_space_stiffness;
 pub use layer::layer_stiffness;
+pub use line_support::LineSupport;
+pub use moving_load::{GroundedBeam, MovingSpectrum, SPECTRUM_TOLERANCE};
 pub use profile::{GroundProfile, HalfSpace, MAX_LAYERS, SoilLayer, SoilMaterial};
 pub use rayleigh_modes::rayleigh_phase_velocities;
 pub use strip::{STRIP_TOLERANCE, StripGround};

@@ -16,7 +16,7 @@
 //!
 //! ~5e-7 of the whole at Kb = 100, its neglected terms ~1e-10 of it (so are F_∞'s own, O((ω/(KC_s))²) of the tail).
 //! Before K, adaptive Gauss–Kronrod with breakpoints where k crosses ω/C of a layer's shear or compression wave (the
-//! kinks of F_zz).
+//! kinks of F_zz) and at k_x·10ʲ (a long wave's peak at k_y ≲ k_x).
 
 use super::flexibility::surface_flexibility;
 use super::profile::{GroundProfile, SoilMaterial};
@@ -28,7 +28,8 @@ use std::f64::consts::PI;
 
 /// The relative tolerance of the strip integral: k_eq to ~1e-9 (the tail's neglected terms are ~1e-10 of it).
 pub const STRIP_TOLERANCE: f64 = 1e-9;
-/// The most Gauss–Kronrod intervals one strip integral may use (a few hundred do at the sites tried).
+/// The most Gauss–Kronrod intervals one strip integral may use, beyond four per half-period of sinc(k_y b) up to
+/// the cut (a few hundred in all do at the sites tried).
 const MAX_INTERVALS: usize = 4000;
 
 /// A strip of width 2b (the track's footprint) on a layered ground.
@@ -77,8 +78,11 @@ impl StripGround {
                     .into(),
             });
         }
-        let tolerance = Tolerance { relative: STRIP_TOLERANCE, absolute: 0.0, max_intervals: MAX_INTERVALS };
-        let integral = self.integral_to(self.cut(kx, omega), kx, omega, tolerance);
+        let cut = self.cut(kx, omega);
+        let half_periods = (cut * 0.5 * self.width / PI) as usize;
+        let tolerance =
+            Tolerance { relative: STRIP_TOLERANCE, absolute: 0.0, max_intervals: MAX_INTERVALS + 4 * half_periods };
+        let integral = self.integral_to(cut, kx, omega, tolerance);
         if !integral.converged {
             return Err(FemError::NotConverged {
                 what: format!("the ground's strip integral at k_x = {kx} rad/m, ω = {omega} rad/s"),
@@ -97,7 +101,7 @@ impl StripGround {
             let sinc = if x.abs() < 1e-4 { 1.0 - x * x / 6.0 } else { x.sin() / x };
             surface_flexibility(&self.profile, kx.hypot(ky), omega) * sinc
         };
-        let head = integrate(integrand, 0.0, cut, &self.kinks(kx, omega), tolerance);
+        let head = integrate(integrand, 0.0, cut, &self.breakpoints(kx, omega, cut), tolerance);
         let series = 2.0 / (b * b * cut.powi(3)) - (24.0 / b.powi(4) + 2.0 * kx * kx / (b * b)) / cut.powi(5);
         let tail = static_coefficient(self.profile.top(), omega) * (cut * b).sin() / (PI * b) * series;
         Integral { value: head.value / PI + tail, error: head.error / PI, ..head }
@@ -113,15 +117,18 @@ impl StripGround {
         (n + 0.5) * PI / b
     }
 
-    /// The k_y where k = √(k_x² + k_y²) crosses ω/C_s or ω/C_p of a material.
-    fn kinks(&self, kx: f64, omega: f64) -> Vec<f64> {
-        self.profile
+    /// Where the partition starts: the k_y where k = √(k_x² + k_y²) crosses ω/C_s or ω/C_p of a material (kinks of
+    /// F_zz), and k_x·10ʲ, graded toward k_y = 0 where a long wave's static F_zz ~ 1/√(k_x² + k_y²) peaks within k_x.
+    fn breakpoints(&self, kx: f64, omega: f64, cut: f64) -> Vec<f64> {
+        let kinks = self
+            .profile
             .materials()
             .flat_map(|m| [m.shear_wave_speed, m.compression_wave_speed])
             .map(|c| omega / c)
             .filter(|&k| k > kx)
-            .map(|k| (k * k - kx * kx).sqrt())
-            .collect()
+            .map(|k| (k * k - kx * kx).sqrt());
+        let graded = (0..).map(|j| kx * 10f64.powi(j)).take_while(|&k| k > 0.0 && k < cut);
+        kinks.chain(graded).collect()
     }
 }
 

@@ -1,0 +1,213 @@
+//! A beam on a line support (a Winkler foundation or the ground's strip) under a force moving at speed v, in the
+//! steady state of the moving frame s = x − vt (docs/theory.md §19). A wave e^{iks} of s has the circular frequency
+//! ω = −kv at a fixed point, so with the ground's convention e^{i(ωt − k_x x)} (k_x = −k) and real responses
+//! (negative ω the conjugate), for k > 0
+//!
+//! ```text
+//! D(k) = EI(1 − iη)k⁴ − ρA v²k² + conj(k_support(k, kv)),      W(s) = (1/π) Re ∫₀^∞ −P/D(k) · e^{iks} dk
+//! ```
+//!
+//! (W upward, P downward). The spectrum G = −1/D is sampled adaptively in ln k — from 1e-5 of the beam's
+//! characteristic wavenumber k_c (the head below it linear in ln k, as a long wave on the ground is) up to where
+//! EI k⁴ is 1e10 times the support at k_c and 100 times the inertia (the tail beyond is ≲ 3e-8 of W) — each
+//! interval bisected until a cubic through its neighbours predicts the midpoint to [`SPECTRUM_TOLERANCE`] of
+//! max|G|; the Fourier integral of that cubic is Gauss–Legendre on each interval with enough points for its phase.
+//! One spectrum serves every s and, shifted, every axle of a train.
+
+use super::line_support::LineSupport;
+use fem_beam::FemError;
+use fem_beam::error::Result;
+use fem_beam::properties::Beam;
+use num_complex::Complex64;
+use rayon::prelude::*;
+use std::f64::consts::PI;
+
+/// How closely the sampled spectrum's cubic must predict each new sample, relative to max|G|.
+pub const SPECTRUM_TOLERANCE: f64 = 1e-7;
+/// The most samples of one spectrum (each may cost a strip integral).
+const MAX_SAMPLES: usize = 20_000;
+/// Initial samples per decade of k.
+const PER_DECADE: f64 = 8.0;
+
+/// An Euler–Bernoulli beam (EI, ρA, loss factor) on a line support, in the moving frame.
+#[derive(Debug, Clone, Copy)]
+pub struct GroundedBeam<'a, S: LineSupport + ?Sized> {
+    /// EI (N·m²).
+    pub bending_stiffness: f64,
+    /// ρA (kg/m).
+    pub mass_per_length: f64,
+    /// η ≥ 0: EI → EI(1 + iη sgn ω).
+    pub loss_factor: f64,
+    /// What carries it.
+    pub support: &'a S,
+}
+
+/// The sampled spectrum G(k) = −1/D(k) (m/N per rad/m) of a unit downward force at one speed.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MovingSpectrum {
+    /// ln k of the samples, ascending.
+    log_k: Vec<f64>,
+    /// G at each.
+    response: Vec<Complex64>,
+}
+
+impl<'a, S: LineSupport + ?Sized> GroundedBeam<'a, S> {
+    /// `beam` (Euler–Bernoulli: a Timoshenko composite beam is refused by key) on `support`.
+    pub fn new(beam: &Beam, support: &'a S) -> Result<Self> {
+        if beam.shear_stiffness().is_some() {
+            return Err(FemError::InvalidField {
+                field: "beam.theory",
+                value: f64::NAN,
+                allowed: "must be euler-bernoulli for a beam on the ground (the composite track-and-embankment beam)",
+            });
+        }
+        Ok(Self {
+            bending_stiffness: beam.bending_stiffness(),
+            mass_per_length: beam.mass_per_length(),
+            loss_factor: beam.loss_factor,
+            support,
+        })
+    }
+
+    /// G(k) = −1/D(k) at k > 0 and `speed` (m/s), the support left out where EI k⁴ is 1e4 times its bound (G is
+    /// then ≲ 1e-4 of the support's compliance there, and changes by ≲ 1e-4 of itself: ≲ 1e-8 of max|G|).
+    pub fn response(&self, k: f64, speed: f64) -> Result<Complex64> {
+        let omega = k * speed;
+        let bending = self.bending_stiffness * k.powi(4);
+        let beam = Complex64::new(bending - self.mass_per_length * (speed * k).powi(2), -self.loss_factor * bending);
+        let support = match bending > 1e4 * self.support.stiffness_bound(k, omega) {
+            true => Complex64::new(0.0, 0.0),
+            false => self.support.line_stiffness(k, omega)?.conj(),
+        };
+        Ok(-1.0 / (beam + support))
+    }
+
+    /// The spectrum of a unit downward force at `speed` (m/s, ≥ 0), sampled to [`SPECTRUM_TOLERANCE`].
+    pub fn spectrum(&self, speed: f64) -> Result<MovingSpectrum> {
+        let (low, high) = self.range(speed);
+        let count = ((high / low).log10() * PER_DECADE).ceil() as usize + 1;
+        let mut log_k: Vec<f64> =
+            (0..count).map(|i| low.ln() + (high / low).ln() * i as f64 / (count - 1) as f64).collect();
+        let mut response = self.responses(&log_k, speed)?;
+        let mut unsettled: Vec<bool> = vec![true; count - 1];
+        while unsettled.iter().any(|&u| u) {
+            if log_k.len() > MAX_SAMPLES {
+                return Err(FemError::NotConverged {
+                    what: format!("the moving-load spectrum at {speed} m/s ({MAX_SAMPLES} samples)"),
+                    reached: f64::NAN,
+                    asked: SPECTRUM_TOLERANCE,
+                });
+            }
+            let intervals: Vec<usize> = (0..unsettled.len()).filter(|&i| unsettled[i]).collect();
+            let middles: Vec<f64> = intervals.iter().map(|&i| 0.5 * (log_k[i] + log_k[i + 1])).collect();
+            let values = self.responses(&middles, speed)?;
+            let scale = response.iter().chain(&values).map(|g| g.norm()).fold(0.0, f64::max);
+            let predicted: Vec<Complex64> =
+                intervals.iter().zip(&middles).map(|(&i, &u)| cubic(&log_k, &response, i, u)).collect();
+            let (mut next_k, mut next_g, mut next_unsettled) = (Vec::new(), Vec::new(), Vec::new());
+            let mut j = 0;
+            for i in 0..log_k.len() {
+                next_k.push(log_k[i]);
+                next_g.push(response[i]);
+                if i + 1 == log_k.len() {
+                    break;
+                }
+                if j < intervals.len() && intervals[j] == i {
+                    let fine = (values[j] - predicted[j]).norm() <= SPECTRUM_TOLERANCE * scale;
+                    next_k.push(middles[j]);
+                    next_g.push(values[j]);
+                    next_unsettled.extend([!fine, !fine]);
+                    j += 1;
+                } else {
+                    next_unsettled.push(false);
+                }
+            }
+            (log_k, response, unsettled) = (next_k, next_g, next_unsettled);
+        }
+        Ok(MovingSpectrum { log_k, response })
+    }
+
+    /// G at each ln k of `log_k`, in parallel.
+    fn responses(&self, log_k: &[f64], speed: f64) -> Result<Vec<Complex64>> {
+        log_k.par_iter().map(|&u| self.response(u.exp(), speed)).collect()
+    }
+
+    /// [k_low, k_high] (rad/m) around the characteristic wavenumber k_c where EI k⁴ meets the support's bound and
+    /// the inertia: 1e-5·k_c, and where EI k⁴ is both 1e10 times the support's bound at k_c (≳ 300·k_c: the tail
+    /// beyond, ∫|G| ~ 1/(3EI k³), is ≲ 3e-8 of the whole) and 100 times the inertia ρA v²k².
+    fn range(&self, speed: f64) -> (f64, f64) {
+        let inertia = |k: f64| self.mass_per_length * (speed * k).powi(2);
+        let first_above = |above: &dyn Fn(f64) -> f64| {
+            let mut k: f64 = 1e-3;
+            while self.bending_stiffness * k.powi(4) < above(k) {
+                k *= 2.0;
+            }
+            k
+        };
+        let characteristic = first_above(&|k| self.support.stiffness_bound(k, k * speed) + inertia(k));
+        let at_characteristic = self.support.stiffness_bound(characteristic, characteristic * speed);
+        let high = first_above(&|_| 1e10 * at_characteristic).max(first_above(&|k| 100.0 * inertia(k)));
+        (1e-5 * characteristic, high)
+    }
+}
+
+impl MovingSpectrum {
+    /// How many samples the spectrum took.
+    pub fn samples(&self) -> usize {
+        self.log_k.len()
+    }
+
+    /// W(s) (m, upward) per newton of the downward force, at s = x − vt (m; s > 0 ahead of the load).
+    pub fn deflection(&self, s: f64) -> f64 {
+        // Below the first sample G = G₀ + b·ln(k/k₀) (a long wave's ln on the ground, b = 0 on a spring) and
+        // e^{iks} = 1 + iks (k₀|s| ≲ 1e-2 for |s| ≲ 1 km): ∫₀^{k₀} = k₀(G₀ − b) + is·k₀²/2·(G₀ − b/2).
+        let low = self.log_k[0].exp();
+        let (g0, slope) = (self.response[0], (self.response[1] - self.response[0]) / (self.log_k[1] - self.log_k[0]));
+        let head = (g0 - slope) * low + Complex64::new(0.0, s * low * low / 2.0) * (g0 - slope / 2.0);
+        let body: Complex64 = (0..self.log_k.len() - 1).map(|i| self.interval_integral(i, s)).sum();
+        (head + body).re / PI
+    }
+
+    /// ∫ G(k) e^{iks} dk over interval i, G the cubic in ln k, by Gauss–Legendre with ≥ 2 points per radian.
+    fn interval_integral(&self, i: usize, s: f64) -> Complex64 {
+        let (u0, u1) = (self.log_k[i], self.log_k[i + 1]);
+        let phase = s.abs() * (u1.exp() - u0.exp());
+        let panels = (phase / 3.0).ceil().max(1.0) as usize;
+        let width = (u1 - u0) / panels as f64;
+        let mut sum = Complex64::new(0.0, 0.0);
+        for p in 0..panels {
+            let centre = u0 + (p as f64 + 0.5) * width;
+            for (x, w) in GAUSS_8 {
+                let u = centre + 0.5 * width * x;
+                let k = u.exp();
+                sum +=
+                    cubic(&self.log_k, &self.response, i, u) * Complex64::new(0.0, k * s).exp() * (k * w * 0.5 * width);
+            }
+        }
+        sum
+    }
+}
+
+/// The cubic through the samples i − 1 … i + 2 (clamped at the ends) at u, inside interval i.
+fn cubic(x: &[f64], y: &[Complex64], i: usize, u: f64) -> Complex64 {
+    let first = i.saturating_sub(1).min(x.len().saturating_sub(4));
+    let nodes = first..(first + 4).min(x.len());
+    let mut value = Complex64::new(0.0, 0.0);
+    for a in nodes.clone() {
+        let weight: f64 = nodes.clone().filter(|&b| b != a).map(|b| (u - x[b]) / (x[a] - x[b])).product();
+        value += y[a] * weight;
+    }
+    value
+}
+
+/// 8-point Gauss–Legendre nodes and weights on [−1, 1].
+const GAUSS_8: [(f64, f64); 8] = [
+    (-0.960_289_856_497_536_3, 0.101_228_536_290_376_26),
+    (-0.796_666_477_413_626_7, 0.222_381_034_453_374_47),
+    (-0.525_532_409_916_329, 0.313_706_645_877_887_3),
+    (-0.183_434_642_495_649_8, 0.362_683_783_378_362),
+    (0.183_434_642_495_649_8, 0.362_683_783_378_362),
+    (0.525_532_409_916_329, 0.313_706_645_877_887_3),
+    (0.796_666_477_413_626_7, 0.222_381_034_453_374_47),
+    (0.960_289_856_497_536_3, 0.101_228_536_290_376_26),
+];
