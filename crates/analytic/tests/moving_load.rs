@@ -7,9 +7,9 @@ use analytic::reference::uic60_on_soft_soil;
 use fem_beam::properties::Foundation;
 
 /// On a Winkler foundation the Fourier integral is the closed-form steady wave (`MovingBeam`, Frýba's residues), to
-/// 1e-6 of the static deflection at every s from 12 m behind to 12 m ahead: at rest, below, near and above the
-/// critical speed (damped 10 %). The spectrum's cubic predicts each sample to 1e-7 of max|G|; the Fourier
-/// integral of that cubic is then good to ~1e-7 of the static deflection.
+/// 1e-5 of the static deflection at every s from 12 m behind to 12 m ahead: at rest, below, near and above the
+/// critical speed (damped 10 %). The spectrum's cubic predicts each sample to 1e-6 of max|G| (its error between
+/// samples is smaller still, O(h⁴)); observed 7e-7.
 #[test]
 fn on_a_winkler_foundation_it_is_the_closed_form() {
     let case = uic60_on_soft_soil();
@@ -17,19 +17,16 @@ fn on_a_winkler_foundation_it_is_the_closed_form() {
     let closed = MovingBeam::new(&case.beam, &foundation).unwrap();
     let grounded = GroundedBeam::new(&case.beam, &foundation).unwrap();
     let w0 = closed.static_deflection(1.0).unwrap();
+    let mut worst = 0.0f64;
     for fraction in [0.0, 0.5, 0.95, 1.3] {
         let speed = fraction * closed.critical_speed();
         let exact = closed.steady_state(speed, 1.0).unwrap();
         let spectrum = grounded.spectrum(speed).unwrap();
         for s in [-12.0, -4.0, -1.0, -0.3, 0.0, 0.3, 1.0, 4.0, 12.0] {
-            let (a, b) = (spectrum.deflection(s), exact.deflection(s));
-            assert!(
-                (a - b).abs() < 1e-6 * w0,
-                "v = {speed:.1} m/s, s = {s}: {a:e} vs {b:e} ({} samples)",
-                spectrum.samples()
-            );
+            worst = worst.max((spectrum.deflection(s) - exact.deflection(s)).abs() / w0);
         }
     }
+    assert!(worst < 1e-5, "worst difference {worst:.1e} of w₀");
 }
 
 mod on_the_ground {
@@ -62,7 +59,7 @@ mod on_the_ground {
     /// At rest the deflection under the load is (1/π)∫₀^∞ dk/(EIk⁴ + k_eq(k, 0)): the same integral by adaptive
     /// Gauss–Kronrod directly over k ∈ [1e-7, 1e3] (breakpoints at decades, no sampled spectrum; below 1e-7 rad/m the
     /// stiffness method's F_zz loses digits as 1e-16/(k·depth), and the piece is ~1e-7 of the whole) agrees to 1e-6
-    /// (the spectrum's cubic is good to 1e-7 of max|G|; its head below 1e-5·k_c and its tail add ≲ 1e-6).
+    /// (the spectrum's cubic is good to 1e-6 of max|G| at its samples; its head and its tail add ≲ 1e-6).
     #[test]
     fn at_rest_the_deflection_is_the_direct_integral() {
         let ground = site();

@@ -23,7 +23,7 @@ use rayon::prelude::*;
 use std::f64::consts::PI;
 
 /// How closely the sampled spectrum's cubic must predict each new sample, relative to max|G|.
-pub const SPECTRUM_TOLERANCE: f64 = 1e-7;
+pub const SPECTRUM_TOLERANCE: f64 = 1e-6;
 /// The most samples of one spectrum (each may cost a strip integral).
 const MAX_SAMPLES: usize = 20_000;
 /// Initial samples per decade of k.

@@ -7,14 +7,14 @@
 //! ```
 //!
 //! The integral runs to K = (n + ½)π/b, a zero of cos(k_y b), far enough that the surface sees only its top material
-//! statically there, F_zz ≈ F_∞ = c/k with c = (1 − ν₁)/μ₁* (K ≥ 30·max(k_x, ω/C_s, 1/h₁) and K b ≥ 100); the rest
+//! statically there, F_zz ≈ F_∞ = c/k with c = (1 − ν₁)/μ₁* (K ≥ 30·max(k_x, ω/C_s, 1/h₁) and K b ≥ 40); the rest
 //! is the asymptotic tail, by parts with 1/(y√(y² + k_x²)) = 1/y² − k_x²/(2y⁴) + … and cos(Kb) = 0,
 //!
 //! ```text
 //! (1/π)∫_K^∞ F_∞ sin(k_y b)/(k_y b) dk_y = c sin(Kb)/(πb) · [2/(b²K³) − (24/b⁴ + 2k_x²/b²)/K⁵ + O(K⁻⁷)],
 //! ```
 //!
-//! ~5e-7 of the whole at Kb = 100, its neglected terms ~1e-10 of it (so are F_∞'s own, O((ω/(KC_s))²) of the tail).
+//! ~1e-5 of the whole at Kb = 40, its neglected terms ~1e-9 of it and F_∞'s own, O((ω/(KC_s))²) of the tail, ~1e-8.
 //! Before K, adaptive Gauss–Kronrod with breakpoints where k crosses ω/C of a layer's shear or compression wave (the
 //! kinks of F_zz) and at k_x·10ʲ (a long wave's peak at k_y ≲ k_x).
 
@@ -107,12 +107,12 @@ impl StripGround {
         Integral { value: head.value / PI + tail, error: head.error / PI, ..head }
     }
 
-    /// K = (n + ½)π/b ≥ 30·max(k_x, ω/C_s,min, 1/h₁) and ≥ 100/b (module documentation).
+    /// K = (n + ½)π/b ≥ 30·max(k_x, ω/C_s,min, 1/h₁) and ≥ 40/b (module documentation).
     fn cut(&self, kx: f64, omega: f64) -> f64 {
         let b = 0.5 * self.width;
         let slowest = self.profile.slowest_shear_wave_speed();
         let thinnest_top = self.profile.layers.first().map_or(0.0, |layer| 1.0 / layer.thickness);
-        let least = (30.0 * kx.max(omega / slowest).max(thinnest_top)).max(100.0 / b);
+        let least = (30.0 * kx.max(omega / slowest).max(thinnest_top)).max(40.0 / b);
         let n = (least * b / PI - 0.5).ceil().max(0.0);
         (n + 0.5) * PI / b
     }
