@@ -109,11 +109,9 @@ fn kronrod(f: &impl Fn(f64) -> Complex64, from: f64, to: f64) -> Piece {
     }
     let weight = |i: usize| KRONROD_WEIGHTS[i.min(14 - i)];
     let kronrod: Complex64 = (0..15).map(|i| values[i] * weight(i)).sum();
-    let gauss: Complex64 = (1..7)
-        .step_by(2)
-        .map(|j| (values[j] + values[14 - j]) * GAUSS_WEIGHTS[j / 2])
-        .sum::<Complex64>()
-        + values[7] * GAUSS_WEIGHTS[3];
+    let gauss: Complex64 =
+        (1..7).step_by(2).map(|j| (values[j] + values[14 - j]) * GAUSS_WEIGHTS[j / 2]).sum::<Complex64>()
+            + values[7] * GAUSS_WEIGHTS[3];
     let mean = kronrod * 0.5;
     let absolute: f64 = (0..15).map(|i| values[i].norm() * weight(i)).sum::<f64>() * half;
     let spread: f64 = (0..15).map(|i| (values[i] - mean).norm() * weight(i)).sum::<f64>() * half;

@@ -105,3 +105,25 @@ mod on_the_ground {
         }
     }
 }
+
+/// A light beam on a homogeneous half-space resonates at the half-space's Rayleigh speed (Dieterman & Metrikine
+/// 1996: as the beam's EI and mass vanish the critical speed tends to c_R; a finite beam lowers it slightly, damping
+/// broadens the peak): the largest downward deflection at 0.99 c_R exceeds those at 0.95 and 1.03 c_R, which brackets
+/// the critical speed within [0.95, 1.03]·c_R.
+#[test]
+fn a_light_beam_on_a_half_space_resonates_at_the_rayleigh_speed() {
+    use analytic::ground::{GroundProfile, SoilMaterial, StripGround, rayleigh_phase_velocities};
+    use fem_beam::properties::Beam;
+    let soil =
+        SoilMaterial { shear_wave_speed: 100.0, compression_wave_speed: 200.0, density: 1800.0, damping_ratio: 0.02 };
+    let ground = StripGround { width: 3.0, profile: GroundProfile::half_space(soil) };
+    let c_r = rayleigh_phase_velocities(&ground.profile, 10.0)[0];
+    let beam = Beam { youngs_modulus: 1e7, second_moment: 1.0, area: 1.0, density: 1e3, ..Beam::default() };
+    let grounded = GroundedBeam::new(&beam, &ground).unwrap();
+    let peak = |share: f64| {
+        let spectrum = grounded.spectrum(share * c_r).unwrap();
+        (-300..=40).map(|j| -spectrum.deflection(j as f64 * 0.05)).fold(0.0, f64::max)
+    };
+    let (below, at, above) = (peak(0.95), peak(0.99), peak(1.03));
+    assert!(at > below && at > above, "{below:e} {at:e} {above:e}");
+}

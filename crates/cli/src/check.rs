@@ -36,6 +36,9 @@ pub fn run(args: &CheckArgs) -> Result<()> {
 
 fn check(path: &std::path::Path) -> Result<()> {
     let scenario = Scenario::from_path(path)?;
+    if scenario.ground.is_some() {
+        return check_on_the_ground(path, &scenario);
+    }
     let case = scenario.build()?;
     if let Some(section) = &scenario.co_moving {
         // The window is checked as `run` would build it (too short for the wave, the load between its zones).
@@ -102,6 +105,24 @@ fn check(path: &std::path::Path) -> Result<()> {
         range.from,
         range.to,
         range.step
+    );
+    Ok(())
+}
+
+/// A scenario on a `[ground]`: its beam and strip checked, described in one line (what `frictrack ground` takes).
+fn check_on_the_ground(path: &std::path::Path, scenario: &Scenario) -> Result<()> {
+    let (beam, strip) = scenario.track_on_the_ground()?;
+    let title = if scenario.title.is_empty() { String::new() } else { format!(" \"{}\"", scenario.title) };
+    let layers = strip.profile.layers.len();
+    println!(
+        "{}{title}: ok — composite beam EI = {:.3e} N·m², {:.0} kg/m on a {} m strip of a layered ground ({layers} \
+         layer{} on a half-space of C_s {} m/s); `frictrack ground` computes it",
+        path.display(),
+        beam.bending_stiffness(),
+        beam.mass_per_length(),
+        strip.width,
+        if layers == 1 { "" } else { "s" },
+        strip.profile.half_space.shear_wave_speed
     );
     Ok(())
 }

@@ -4,6 +4,7 @@ mod analytic;
 mod check;
 mod co_moving;
 mod files;
+mod ground;
 mod init;
 mod interrupt;
 mod jobs;
@@ -67,6 +68,9 @@ enum Command {
     /// The track's receptance (m/N) and mobility over frequency — point or transfer, Euler–Bernoulli or Timoshenko
     /// rail, viscous damping and loss factors — from the scenario's own model, with its resonances and a figure.
     Receptance(receptance::ReceptanceArgs),
+    /// The composite track on a layered `[ground]`: the soil's Rayleigh modes and least phase velocity, the static
+    /// strip stiffness and the Winkler control, the critical speed of the track on the ground, with figures.
+    Ground(ground::GroundArgs),
 }
 
 /// Output format of a command.
@@ -157,6 +161,7 @@ fn main() -> ExitCode {
         Command::Analytic(args) => analytic::run(&args),
         Command::Stationary(args) => stationary::run(&args),
         Command::Receptance(args) => receptance::run(&args),
+        Command::Ground(args) => ground::run(&args),
         Command::Trains(args) => trains::run(&args),
         Command::TrackProfile(args) => track_profile::run(&args),
     };

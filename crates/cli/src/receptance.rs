@@ -35,8 +35,8 @@ pub struct ReceptanceArgs {
     jobs: usize,
 }
 
-/// Parse `A:B:STEP` (Hz).
-fn parse_frequencies(text: &str) -> Result<Vec<f64>> {
+/// Parse `A:B:STEP` (Hz), errors naming `--frequencies` (`frictrack receptance` and `frictrack ground`).
+pub(crate) fn parse_frequencies(text: &str) -> Result<Vec<f64>> {
     let bad = |allowed: &str| scenario::error::invalid("--frequencies", text, allowed);
     let parts: Vec<&str> = text.split(':').collect();
     let [a, b, step] = parts.as_slice() else {

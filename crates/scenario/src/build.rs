@@ -33,12 +33,23 @@ fn finite_non_negative(path: &str, value: f64, unit: &str) -> Result<()> {
 impl Scenario {
     /// Check every value that the lower layers do not already name by its path.
     pub fn validate(&self) -> Result<()> {
-        self.build().map(|_| ())
+        match &self.ground {
+            Some(_) => self.track_on_the_ground().map(|_| ()),
+            None => self.build().map(|_| ()),
+        }
     }
 
     /// The assembled beam model (beam, mesh, foundation with its damping and absorbing zones, supports), checked;
     /// refuses degenerate meshes and mechanisms ([`crate::diagnostics::refuse_degenerate`]).
     pub fn model(&self) -> Result<BeamModel> {
+        if self.ground.is_some() {
+            return Err(invalid(
+                "ground",
+                "given",
+                "a finite-element model on a [ground] needs an equivalent foundation fitted to its k_eq, not built \
+                 yet: `frictrack ground` computes this track on this ground",
+            ));
+        }
         let beam = self.beam;
         beam.validate()?;
         let mesh = Mesh::new(self.mesh.length, self.mesh.elements)?;

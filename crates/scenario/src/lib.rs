@@ -12,6 +12,7 @@
 //!   [`units`]: speeds in m/s or km/h; [`quantities`]: every output quantity with its SI unit, the one list every
 //!   table's columns take their units from.
 //! - [`diagnostics`] and [`plausibility`]: refusals and warnings about a scenario before any run.
+//! - [`ground`]: `[ground]`, the layered ground under the track and its checks.
 //! - [`speeds`] and [`trains`]: the speed scale of a case (v_cr, default sweeps) and the train catalogue.
 //! - [`error`]: the error type of the crates above this one, every message naming the field, its value and what is
 //!   allowed; [`number`]: numbers as result files and messages print them.
@@ -21,6 +22,7 @@ pub mod contact;
 mod deck;
 pub mod diagnostics;
 pub mod error;
+pub mod ground;
 pub mod load_section;
 mod long_wave_twin;
 pub mod number;
@@ -65,6 +67,10 @@ pub struct Scenario {
     pub supports: Supports,
     /// The soil.
     pub foundation: FoundationSection,
+    /// A layered visco-elastic ground under the track, in place of the Winkler `[foundation]`
+    /// (docs/theory.md §19).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub ground: Option<ground::GroundSection>,
     /// Discrete supports — rail pads on sleepers on ballast — beside (or instead of) the soil.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub sleepers: Option<sleepers::SleepersSection>,

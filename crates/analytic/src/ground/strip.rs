@@ -7,14 +7,17 @@
 //! ```
 //!
 //! The integral runs to K = (n + ½)π/b, a zero of cos(k_y b), far enough that the surface sees only its top material
-//! statically there, F_zz ≈ F_∞ = c/k with c = (1 − ν₁)/μ₁* (K ≥ 30·max(k_x, ω/C_s, 1/h₁) and K b ≥ 40); the rest
+//! statically there, F_zz ≈ F_∞ = c/k with c = (1 − ν₁)/μ₁* (K ≥ 10·max(k_x, ω/C_s, 1/h₁) and K b ≥ 40); the rest
 //! is the asymptotic tail, by parts with 1/(y√(y² + k_x²)) = 1/y² − k_x²/(2y⁴) + … and cos(Kb) = 0,
 //!
 //! ```text
-//! (1/π)∫_K^∞ F_∞ sin(k_y b)/(k_y b) dk_y = c sin(Kb)/(πb) · [2/(b²K³) − (24/b⁴ + 2k_x²/b²)/K⁵ + O(K⁻⁷)],
+//! (1/π)∫_K^∞ F_∞ sin(k_y b)/(k_y b) dk_y = c sin(Kb)/(πb) · [2/(b²K³) − (24/b⁴ + 2k_x²/b²)/K⁵
+//!                                          + (720/b⁶ + 60k_x²/b⁴ + 9k_x⁴/(4b²))/K⁷ + O(K⁻⁹)],
 //! ```
 //!
-//! ~1e-5 of the whole at Kb = 40, its neglected terms ~1e-9 of it and F_∞'s own, O((ω/(KC_s))²) of the tail, ~1e-8.
+//! ~1e-5 of the whole at Kb = 40, its neglected terms ~1e-11 of it; F_zz's own departure from F_∞ past the cut, the
+//! inertia's O(ω²/k²) and what remains of the layering, is taken as α/k² relative, α measured at the cut, and adds
+//! c sin(Kb)/(πb)·4α/(b²K⁵).
 //! Before K, adaptive Gauss–Kronrod with breakpoints where k crosses ω/C of a layer's shear or compression wave (the
 //! kinks of F_zz) and at k_x·10ʲ (a long wave's peak at k_y ≲ k_x).
 
@@ -102,17 +105,24 @@ impl StripGround {
             surface_flexibility(&self.profile, kx.hypot(ky), omega) * sinc
         };
         let head = integrate(integrand, 0.0, cut, &self.breakpoints(kx, omega, cut), tolerance);
-        let series = 2.0 / (b * b * cut.powi(3)) - (24.0 / b.powi(4) + 2.0 * kx * kx / (b * b)) / cut.powi(5);
-        let tail = static_coefficient(self.profile.top(), omega) * (cut * b).sin() / (PI * b) * series;
+        // F_zz = (c/k)(1 + α/k²) past the cut, α measured there: the inertia's O(ω²/k²) and what is left of the
+        // layering; its tail (1/π)∫ cα sin(k_y b)/(k_y⁴ b) = cα sin(Kb)/(πb)·4/(b²K⁵).
+        let c = static_coefficient(self.profile.top(), omega);
+        let k_cut = kx.hypot(cut);
+        let alpha = (surface_flexibility(&self.profile, k_cut, omega) * k_cut / c - 1.0) * (k_cut * k_cut);
+        let (b2, a2) = (b * b, kx * kx);
+        let series = 2.0 / (b2 * cut.powi(3)) - (24.0 / (b2 * b2) + 2.0 * a2 / b2) / cut.powi(5)
+            + (720.0 / (b2 * b2 * b2) + 60.0 * a2 / (b2 * b2) + 2.25 * a2 * a2 / b2) / cut.powi(7);
+        let tail = c * (cut * b).sin() / (PI * b) * (series + alpha * 4.0 / (b * b * cut.powi(5)));
         Integral { value: head.value / PI + tail, error: head.error / PI, ..head }
     }
 
-    /// K = (n + ½)π/b ≥ 30·max(k_x, ω/C_s,min, 1/h₁) and ≥ 40/b (module documentation).
+    /// K = (n + ½)π/b ≥ 10·max(k_x, ω/C_s,min, 1/h₁) and ≥ 40/b (module documentation).
     fn cut(&self, kx: f64, omega: f64) -> f64 {
         let b = 0.5 * self.width;
         let slowest = self.profile.slowest_shear_wave_speed();
         let thinnest_top = self.profile.layers.first().map_or(0.0, |layer| 1.0 / layer.thickness);
-        let least = (30.0 * kx.max(omega / slowest).max(thinnest_top)).max(40.0 / b);
+        let least = (10.0 * kx.max(omega / slowest).max(thinnest_top)).max(40.0 / b);
         let n = (least * b / PI - 0.5).ceil().max(0.0);
         (n + 0.5) * PI / b
     }

@@ -7,6 +7,7 @@ mod co_moving;
 mod examples;
 mod failures;
 mod figures;
+mod ground;
 mod receptance;
 mod run_out;
 mod soil;

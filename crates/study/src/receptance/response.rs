@@ -104,19 +104,25 @@ pub fn frequency_range(from: f64, to: f64, step: f64) -> Result<Vec<f64>> {
     Ok((0..count as usize).map(|i| from + i as f64 * step).collect())
 }
 
+/// A list of frequencies (Hz) checked: 1 … [`MAX_FREQUENCIES`] of them, finite, > 0, increasing (`frequencies`).
+pub fn check_frequencies(frequencies: &[f64]) -> Result<()> {
+    let count = frequencies.len();
+    if count == 0 || count > MAX_FREQUENCIES {
+        return Err(invalid("frequencies", count, format!("must be 1 … {MAX_FREQUENCIES} frequencies")));
+    }
+    if let Some(f) = frequencies.iter().find(|f| !(f.is_finite() && **f > 0.0)) {
+        return Err(invalid("frequencies", f, "must be finite and > 0 (Hz)"));
+    }
+    if frequencies.windows(2).any(|w| w[1] <= w[0]) {
+        return Err(invalid("frequencies", "not increasing", "must increase"));
+    }
+    Ok(())
+}
+
 impl ReceptanceRequest {
     /// Check the frequencies (count, > 0, finite, increasing) and the places (on the beam of length `length`).
     pub fn validate(&self, length: f64) -> Result<()> {
-        let count = self.frequencies.len();
-        if count == 0 || count > MAX_FREQUENCIES {
-            return Err(invalid("frequencies", count, format!("must be 1 … {MAX_FREQUENCIES} frequencies")));
-        }
-        if let Some(f) = self.frequencies.iter().find(|f| !(f.is_finite() && **f > 0.0)) {
-            return Err(invalid("frequencies", f, "must be finite and > 0 (Hz)"));
-        }
-        if self.frequencies.windows(2).any(|w| w[1] <= w[0]) {
-            return Err(invalid("frequencies", "not increasing", "must increase"));
-        }
+        check_frequencies(&self.frequencies)?;
         for (name, x) in [("at", self.at), ("excite", self.excite)] {
             if !(x.is_finite() && (0.0..=length).contains(&x)) {
                 return Err(invalid(name, x, format!("must lie on the beam, in [0, {length}] m")));

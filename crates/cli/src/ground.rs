@@ -1,0 +1,58 @@
+//! `frictrack ground`: the scenario's composite beam on its `[ground]` (docs/theory.md §19) — the soil's Rayleigh
+//! modes and their least phase velocity, the static strip stiffness and the Winkler control, where the beam's and
+//! the soil's dispersion curves meet, and the critical speed of the track on the ground, with three figures.
+
+use crate::TableFormat;
+use anyhow::Result;
+use clap::Args;
+use scenario::Scenario;
+use std::path::PathBuf;
+use study::ground::text::check_folder;
+use study::ground::{GroundRequest, GroundStudy};
+
+/// Options of `frictrack ground`.
+#[derive(Debug, Args)]
+pub struct GroundArgs {
+    /// Scenario file with a `[ground]` section (its beam is the composite track-and-embankment beam).
+    scenario: PathBuf,
+    /// Frequencies A:B:STEP (Hz) of the dispersion curves, A > 0. Default 1:50:1.
+    #[arg(long, value_name = "A:B:STEP", allow_hyphen_values = true)]
+    frequencies: Option<String>,
+    /// Output format on standard output (csv: the fundamental mode, one row per frequency).
+    #[arg(long, value_enum, default_value_t = TableFormat::Text)]
+    format: TableFormat,
+    /// Folder for ground.json, the tables (CSV) and the figures.
+    #[arg(long, value_name = "DIR")]
+    out: Option<PathBuf>,
+    /// Worker threads (0 = all cores).
+    #[arg(long, default_value_t = 0)]
+    jobs: usize,
+}
+
+/// Execute `frictrack ground`.
+pub fn run(args: &GroundArgs) -> Result<()> {
+    let scenario = Scenario::from_path(&args.scenario)?;
+    let request = match &args.frequencies {
+        Some(text) => GroundRequest { frequencies: crate::receptance::parse_frequencies(text)? },
+        None => GroundRequest::default(),
+    };
+    if let Some(folder) = &args.out {
+        check_folder(folder, "--out")?;
+    }
+    let runner = crate::jobs::runner(args.jobs, args.format != TableFormat::Text)?;
+    let runner = runner.with_stop(crate::interrupt::stop_flag());
+    let study = crate::interrupt::explain(GroundStudy::of(&scenario, &request, &runner), None)?;
+    for warning in &study.warnings {
+        eprintln!("warning: {warning}");
+    }
+    crate::print_output(&study, args.format)?;
+    if let Some(folder) = &args.out {
+        let drawn = study.write_folder(folder, "--out")?;
+        eprintln!(
+            "wrote {} (ground.json, dispersion.csv, modes.csv, speeds.csv, equivalent_stiffness.csv, {})",
+            folder.display(),
+            drawn.join(", ")
+        );
+    }
+    Ok(())
+}

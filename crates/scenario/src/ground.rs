@@ -1,0 +1,233 @@
+//! `[ground]`: a layered visco-elastic half-space under the track, in place of the Winkler `[foundation]`
+//! (docs/theory.md §19). The track above it is the scenario's `[beam]`, a composite track-and-embankment beam.
+//!
+//! ```toml
+//! [ground]
+//! width = 3.0                      # 2b (m): the strip the track loads
+//! [[ground.layers]]                # from the surface down
+//! thickness = 1.1                  # m
+//! shear_wave_speed = 72.0          # C_s (m/s)
+//! compression_wave_speed = 500.0   # C_p (m/s), or poisson_ratio (not both)
+//! density = 1500.0                 # kg/m³
+//! damping_ratio = 0.04             # hysteretic ξ
+//! [ground.half_space]              # required
+//! shear_wave_speed = 100.0
+//! poisson_ratio = 0.49
+//! density = 1475.0
+//! damping_ratio = 0.05
+//! ```
+
+use crate::error::{Result, invalid};
+use analytic::ground::{GroundProfile, SoilLayer, SoilMaterial, StripGround};
+use serde::{Deserialize, Serialize};
+
+/// `[ground]`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct GroundSection {
+    /// 2b (m): the width of the strip the track loads (required).
+    pub width: Option<f64>,
+    /// The layers from the surface down (none: a homogeneous half-space).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub layers: Vec<SoilSection>,
+    /// What lies below the layers (required).
+    pub half_space: Option<SoilSection>,
+}
+
+/// One `[[ground.layers]]` entry or `[ground.half_space]`: a material, and a layer's thickness.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SoilSection {
+    /// h (m): a layer's (required there), never the half-space's.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub thickness: Option<f64>,
+    /// C_s (m/s), required.
+    pub shear_wave_speed: Option<f64>,
+    /// C_p (m/s), or `poisson_ratio` (one of them).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub compression_wave_speed: Option<f64>,
+    /// ν ∈ (−1, ½), or `compression_wave_speed` (one of them).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub poisson_ratio: Option<f64>,
+    /// ρ (kg/m³), required.
+    pub density: Option<f64>,
+    /// ξ ∈ [0, ½): hysteretic damping, μ* = ρC_s²(1 + 2iξ sgn ω). Default 0.
+    #[serde(default)]
+    pub damping_ratio: f64,
+}
+
+impl GroundSection {
+    /// The strip on its layered ground, every value checked and named by its key.
+    pub fn strip(&self) -> Result<StripGround> {
+        let width =
+            self.width.ok_or_else(|| missing("ground.width", "the width 2b of the strip the track loads (m)"))?;
+        let layers = self
+            .layers
+            .iter()
+            .enumerate()
+            .map(|(i, layer)| {
+                let path = format!("ground.layers[{i}]");
+                let thickness = layer
+                    .thickness
+                    .ok_or_else(|| missing(&format!("{path}.thickness"), "every layer needs its thickness (m)"))?;
+                Ok(SoilLayer { thickness, material: layer.material(&path)? })
+            })
+            .collect::<Result<Vec<_>>>()?;
+        let below = self.half_space.as_ref().ok_or_else(|| {
+            missing("ground.half_space", "a [ground.half_space] table: what lies below the last layer")
+        })?;
+        if let Some(h) = below.thickness {
+            return Err(invalid("ground.half_space.thickness", h, "a half-space has no thickness: remove the key"));
+        }
+        let half_space = below.material("ground.half_space")?;
+        let strip = StripGround { width, profile: GroundProfile { layers, half_space } };
+        strip.validate()?;
+        Ok(strip)
+    }
+}
+
+impl SoilSection {
+    /// The material, C_p from ν where ν is given: C_p = C_s·√(2(1 − ν)/(1 − 2ν)).
+    fn material(&self, path: &str) -> Result<SoilMaterial> {
+        let shear_wave_speed = self
+            .shear_wave_speed
+            .ok_or_else(|| missing(&format!("{path}.shear_wave_speed"), "C_s (m/s) of every material"))?;
+        let density = self.density.ok_or_else(|| missing(&format!("{path}.density"), "ρ (kg/m³) of every material"))?;
+        let compression_wave_speed = match (self.compression_wave_speed, self.poisson_ratio) {
+            (Some(_), Some(nu)) => {
+                return Err(invalid(
+                    &format!("{path}.poisson_ratio"),
+                    nu,
+                    "give compression_wave_speed or poisson_ratio, not both",
+                ));
+            }
+            (Some(cp), None) => cp,
+            (None, Some(nu)) => {
+                if !(nu.is_finite() && nu > -1.0 && nu < 0.5) {
+                    return Err(invalid(&format!("{path}.poisson_ratio"), nu, "must lie in (−1, 0.5)"));
+                }
+                shear_wave_speed * (2.0 * (1.0 - nu) / (1.0 - 2.0 * nu)).sqrt()
+            }
+            (None, None) => {
+                return Err(missing(
+                    &format!("{path}.compression_wave_speed"),
+                    "C_p (m/s) or poisson_ratio of every material",
+                ));
+            }
+        };
+        Ok(SoilMaterial { shear_wave_speed, compression_wave_speed, density, damping_ratio: self.damping_ratio })
+    }
+}
+
+impl crate::Scenario {
+    /// The scenario's beam and its `[ground]`'s strip, checked: an Euler–Bernoulli beam (the composite
+    /// track-and-embankment beam), the ground in place of a `[foundation]` and without `[sleepers]` (the two-beam
+    /// track on an embankment is not built yet).
+    pub fn track_on_the_ground(&self) -> Result<(fem_beam::Beam, analytic::ground::StripGround)> {
+        let Some(ground) = &self.ground else {
+            return Err(missing("ground", "a [ground] section: the layered ground under the track"));
+        };
+        if self.foundation != crate::FoundationSection::default() {
+            return Err(invalid(
+                "foundation",
+                "given",
+                "a [ground] replaces the Winkler [foundation]: remove one of the two tables",
+            ));
+        }
+        if self.sleepers.is_some() {
+            return Err(invalid(
+                "sleepers",
+                "given",
+                "on a [ground] the track is one composite beam ([beam]); rail, sleepers and ballast on an embankment \
+                 beam are not built yet",
+            ));
+        }
+        self.beam.validate()?;
+        if self.beam.shear_stiffness().is_some() {
+            return Err(invalid(
+                "beam.theory",
+                "timoshenko",
+                "must be euler-bernoulli on a [ground]: the composite track-and-embankment beam",
+            ));
+        }
+        Ok((self.beam, ground.strip()?))
+    }
+}
+
+/// A required key that is not there.
+fn missing(path: &str, what: &str) -> crate::StudyError {
+    invalid(path, "missing", format!("required: {what}"))
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::Scenario;
+
+    const SITE: &str = r#"
+[ground]
+width = 3.0
+[[ground.layers]]
+thickness = 1.1
+shear_wave_speed = 72.0
+compression_wave_speed = 500.0
+density = 1500.0
+damping_ratio = 0.04
+[ground.half_space]
+shear_wave_speed = 100.0
+poisson_ratio = 0.4
+density = 1475.0
+damping_ratio = 0.05
+"#;
+
+    fn refused(text: &str) -> String {
+        let scenario = Scenario::from_toml(text, "site.toml").unwrap();
+        scenario.ground.as_ref().unwrap().strip().unwrap_err().to_string()
+    }
+
+    /// A site reads into its strip; ν = 0.4 gives C_p = C_s·√6.
+    #[test]
+    fn a_site_reads_into_its_strip() {
+        let scenario = Scenario::from_toml(SITE, "site.toml").unwrap();
+        let strip = scenario.ground.unwrap().strip().unwrap();
+        assert_eq!((strip.width, strip.profile.layers.len()), (3.0, 1));
+        let cp = strip.profile.half_space.compression_wave_speed;
+        assert!((cp - 100.0 * 6f64.sqrt()).abs() < 1e-12, "{cp}");
+    }
+
+    /// Bad profiles are refused by key: a layer without thickness, C_p ≤ C_s, a Poisson ratio ≥ ½, ξ < 0, no
+    /// half-space, both C_p and ν, a thickness under the half-space, no width, thousands of layers.
+    #[test]
+    fn bad_profiles_are_refused_by_key() {
+        let cases = [
+            ("thickness = 1.1\n", "", "ground.layers[0].thickness = missing"),
+            (
+                "compression_wave_speed = 500.0",
+                "compression_wave_speed = 60.0",
+                "ground.layers[0].compression_wave_speed = 60",
+            ),
+            ("poisson_ratio = 0.4", "poisson_ratio = 0.5", "ground.half_space.poisson_ratio = 0.5"),
+            ("damping_ratio = 0.04", "damping_ratio = -0.01", "ground.layers[0].damping_ratio = -0.01"),
+            ("[ground.half_space]", "[ground.not_half_space]", "unknown field `not_half_space`"),
+            ("poisson_ratio = 0.4", "poisson_ratio = 0.4\ncompression_wave_speed = 300.0", "not both"),
+            ("poisson_ratio = 0.4", "poisson_ratio = 0.4\nthickness = 3.0", "ground.half_space.thickness = 3"),
+            ("width = 3.0", "", "ground.width = missing"),
+        ];
+        for (from, to, expected) in cases {
+            let text = SITE.replacen(from, to, 1);
+            let message = match Scenario::from_toml(&text, "site.toml") {
+                Ok(scenario) => scenario.ground.as_ref().unwrap().strip().unwrap_err().to_string(),
+                Err(e) => e.to_string(),
+            };
+            assert!(message.contains(expected), "{from} → {to}: {message}");
+        }
+        let no_half_space = SITE.split("[ground.half_space]").next().unwrap();
+        assert!(refused(no_half_space).contains("ground.half_space = missing"));
+        let layer =
+            "[[ground.layers]]\nthickness = 0.1\nshear_wave_speed = 80.0\npoisson_ratio = 0.3\ndensity = 1800.0\n";
+        let many = format!(
+            "[ground]\nwidth = 3.0\n{}[ground.half_space]\nshear_wave_speed = 90.0\npoisson_ratio = 0.3\ndensity = 1800.0\n",
+            layer.repeat(3000)
+        );
+        assert!(refused(&many).contains("at most 200 layers"), "{}", refused(&many));
+    }
+}

@@ -1,0 +1,12 @@
+//! The ground under the track (`frictrack ground`, `frictrack.ground` in Python; docs/theory.md §19): the
+//! scenario's composite beam on its `[ground]` — the soil's Rayleigh modes and their least phase velocity, the static
+//! strip stiffness and the Winkler control, the crossing of the beam's and the soil's dispersion curves, the critical
+//! speed of the track on the ground ([`numbers`]); the steady response over speeds and its peak ([`speeds`]); the
+//! report, tables and figures ([`text`]).
+
+pub mod numbers;
+pub mod speeds;
+pub mod text;
+
+pub use numbers::{DispersionPoint, GroundRequest, GroundStudy, ModesPoint, StiffnessPoint};
+pub use speeds::SpeedPoint;

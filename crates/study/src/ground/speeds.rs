@@ -1,0 +1,63 @@
+//! The steady response of the beam on the ground over speeds (docs/theory.md §19): at each speed the moving-load
+//! spectrum of one force, its largest downward and upward deflections along the beam (sampled, then refined by
+//! golden section), and the speed of the largest downward one — the critical speed of the track on the ground.
+
+use analytic::golden::refine_peak;
+use analytic::ground::{GroundedBeam, MovingSpectrum, StripGround};
+use scenario::error::{Result, StudyError};
+use serde::Serialize;
+
+/// The steady wave's extremes at one speed, for the scenario's force.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct SpeedPoint {
+    /// v (m/s).
+    pub speed: f64,
+    /// The largest downward deflection (m, positive down).
+    pub max_downward_deflection: f64,
+    /// The largest upward deflection (m), the wake behind the load above the ground's waves.
+    pub max_upward_deflection: f64,
+}
+
+/// Where along the beam the extremes are sought: from `BEHIND` m behind the load to `AHEAD` m ahead, every `STEP`.
+const BEHIND: f64 = 60.0;
+const AHEAD: f64 = 20.0;
+const STEP: f64 = 0.5;
+/// How finely the peak's position and the critical speed are refined (m, m/s).
+const POSITION_TOLERANCE: f64 = 1e-3;
+const SPEED_TOLERANCE: f64 = 0.05;
+
+/// The extremes of the wave of `force` (N, downward) whose spectrum is `spectrum`, at `speed`.
+pub fn extremes(spectrum: &MovingSpectrum, speed: f64, force: f64) -> SpeedPoint {
+    let samples: Vec<(f64, f64)> = (0..=((BEHIND + AHEAD) / STEP) as usize)
+        .map(|i| -BEHIND + i as f64 * STEP)
+        .map(|s| (s, spectrum.deflection(s) * force))
+        .collect();
+    let refined = |sign: f64| {
+        let best = (0..samples.len()).max_by(|&i, &j| (sign * samples[i].1).total_cmp(&(sign * samples[j].1)));
+        let i = best.unwrap_or(0);
+        let bracket = (samples[i.saturating_sub(1)].0, samples[(i + 1).min(samples.len() - 1)].0);
+        let mut f = |s: f64| -> std::result::Result<f64, ()> { Ok(sign * spectrum.deflection(s) * force) };
+        refine_peak(&mut f, bracket, (samples[i].0, sign * samples[i].1), POSITION_TOLERANCE).map_or(0.0, |p| p.1)
+    };
+    SpeedPoint { speed, max_downward_deflection: refined(-1.0), max_upward_deflection: refined(1.0).max(0.0) }
+}
+
+/// The extremes at `speed` of the beam on `strip`.
+pub fn point(grounded: &GroundedBeam<'_, StripGround>, speed: f64, force: f64) -> Result<SpeedPoint> {
+    Ok(extremes(&grounded.spectrum(speed).map_err(StudyError::from)?, speed, force))
+}
+
+/// The critical speed from the sampled curve `points` (ascending speeds): the largest downward deflection refined
+/// between its neighbours by golden section; `None` where it lies at either end of the range (the curve still
+/// rising: the peak is not inside it).
+pub fn critical_speed(
+    points: &[SpeedPoint],
+    evaluate: &mut dyn FnMut(f64) -> Result<f64>,
+) -> Result<Option<(f64, f64)>> {
+    let best = (0..points.len())
+        .max_by(|&i, &j| points[i].max_downward_deflection.total_cmp(&points[j].max_downward_deflection));
+    let Some(i) = best.filter(|&i| i > 0 && i + 1 < points.len()) else { return Ok(None) };
+    let bracket = (points[i - 1].speed, points[i + 1].speed);
+    let sample = (points[i].speed, points[i].max_downward_deflection);
+    refine_peak(evaluate, bracket, sample, SPEED_TOLERANCE).map(Some)
+}
