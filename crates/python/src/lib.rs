@@ -16,6 +16,7 @@
 
 mod commands;
 mod errors;
+mod ground;
 mod interruptible;
 mod receptance;
 mod run;
@@ -41,6 +42,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(commands::train, m)?)?;
     m.add_function(wrap_pyfunction!(commands::track_profile, m)?)?;
     m.add_function(wrap_pyfunction!(receptance::receptance, m)?)?;
+    m.add_function(wrap_pyfunction!(ground::ground, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

@@ -23,8 +23,8 @@ from . import _native
 from ._tables import Table, parse_csv
 
 __all__ = [
-    "COLUMNS", "InputError", "Receptance", "Run", "Stationary", "Study", "Sweep", "Table", "analytic",
-    "override_names", "override_table", "receptance", "run", "stationary", "study", "sweep", "track_profile", "train",
+    "COLUMNS", "Ground", "InputError", "Receptance", "Run", "Stationary", "Study", "Sweep", "Table", "analytic",
+    "ground", "override_names", "override_table", "receptance", "run", "stationary", "study", "sweep", "track_profile", "train",
     "trains", "__version__",
 ]
 
@@ -360,6 +360,56 @@ def receptance(scenario: ScenarioLike = None, frequencies: Sequence[float] = (),
     for warning in warnings:
         _warnings.warn(warning, stacklevel=2)
     return Receptance(json.loads(summary), parse_csv(table, COLUMNS["receptance"]), report, list(warnings))
+
+
+class Ground:
+    """The scenario's composite beam on its ``[ground]`` (``frictrack ground``): ``dispersion`` the soil's fundamental
+    Rayleigh mode (frequency Hz, phase_velocity m/s), ``speeds`` the steady deflection over speed (speed m/s,
+    max_downward_deflection and max_upward_deflection m), ``stiffness`` k_eq along the load's line (speed m/s,
+    wavenumber rad/m, frequency Hz, stiffness_real and stiffness_imaginary N/m²), ``critical_speed``,
+    ``winkler_critical_speed`` and ``minimum_phase_velocity`` (m/s; None where undefined, with a warning),
+    ``summary`` the whole JSON (every number's unit in ``summary["units"]``), ``warnings`` and ``report`` (the text
+    of the command line; also ``str()``)."""
+
+    def __init__(self, summary: Dict[str, Any], report: str, warnings: "list[str]") -> None:
+        self.summary = summary
+        units = {u["name"]: u["unit"] for u in summary["units"]}
+
+        def pick(rows: "list[Dict[str, Any]]", names: "tuple[str, ...]") -> Table:
+            return Table.from_records(rows, {n: units[n] for n in names})
+
+        self.dispersion = pick(summary["dispersion"], ("frequency", "phase_velocity"))
+        self.speeds = pick(summary["speeds"], ("speed", "max_downward_deflection", "max_upward_deflection"))
+        self.stiffness = pick(
+            summary["equivalent_stiffness"],
+            ("speed", "wavenumber", "frequency", "stiffness_real", "stiffness_imaginary"),
+        )
+        self.critical_speed: Optional[float] = summary["critical_speed"]
+        self.winkler_critical_speed: float = summary["winkler_critical_speed"]
+        self.minimum_phase_velocity: Optional[float] = summary["minimum_phase_velocity"]
+        self.report = report
+        self.warnings = warnings
+
+    def __str__(self) -> str:
+        return self.report
+
+
+def ground(scenario: ScenarioLike, frequencies: Optional[Sequence[float]] = None, jobs: Optional[int] = None,
+           out: "str | os.PathLike[str] | None" = None) -> Ground:
+    """The scenario's composite beam (``[beam]``) on its layered ``[ground]``: the soil's Rayleigh modes at
+    ``frequencies`` (Hz, > 0, increasing; default 1 to 50 by 1) and the fundamental's least phase velocity, the static
+    strip stiffness and the Winkler control, where the beam's dispersion meets the soil's, and the critical speed on
+    the ground (the speed of the largest steady deflection under ``[load] force``), on ``jobs`` threads. ``out`` (a
+    folder) receives ground.json, the tables (CSV) and the figures. Warnings as UserWarning."""
+    if frequencies is not None:
+        frequencies = _numbers("frequencies", frequencies, "a frequency in Hz", "range(1, 51)")
+    kind, text = _source(scenario)
+    summary, _table, report, warnings = _native.ground(
+        kind, text, frequencies, _jobs(jobs), None if out is None else os.fspath(out)
+    )
+    for warning in warnings:
+        _warnings.warn(warning, stacklevel=2)
+    return Ground(json.loads(summary), report, list(warnings))
 
 
 def train(name: str) -> Dict[str, Any]:

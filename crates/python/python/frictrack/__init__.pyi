@@ -186,3 +186,27 @@ def receptance(
 ) -> Receptance:
     """`frictrack receptance`: α = w(at)/F (m/N) at each frequency (Hz) for a force at `excite` (default `at`, the
     point receptance; `at` defaults to mid-track), from the scenario's own model; warnings as UserWarning."""
+
+class Ground:
+    """`frictrack ground`: `dispersion` (frequency Hz, phase_velocity m/s), `speeds` (speed m/s, max_downward_deflection
+    and max_upward_deflection m), `stiffness` (k_eq along the load's line, N/m²), the critical speeds (m/s; None where
+    undefined), `summary` (the JSON, units in `summary["units"]`), `warnings`, `report` (also `str()`)."""
+
+    summary: Dict[str, Any]
+    dispersion: Table
+    speeds: Table
+    stiffness: Table
+    critical_speed: Optional[float]
+    winkler_critical_speed: float
+    minimum_phase_velocity: Optional[float]
+    report: str
+    warnings: List[str]
+
+def ground(
+    scenario: ScenarioLike,
+    frequencies: Optional[Sequence[float]] = None,
+    jobs: Optional[int] = None,
+    out: Union[str, os.PathLike[str], None] = None,
+) -> Ground:
+    """`frictrack ground`: the composite beam on the scenario's `[ground]` — Rayleigh modes, the Winkler control, the
+    critical speed on the ground; warnings as UserWarning."""

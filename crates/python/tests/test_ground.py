@@ -1,0 +1,62 @@
+"""frictrack.ground: the composite beam on a layered ground from Python — the critical speeds with their units, the
+tables, the files it writes (the same numbers as its JSON), and a bad profile refused by key."""
+
+import json
+
+import pytest
+
+import frictrack
+
+SITE = """title = "soft site"
+[beam]
+youngs_modulus = 2.0e8
+second_moment = 1.0
+area = 1.0
+density = 10000.0
+loss_factor = 0.1
+[load]
+force = 100000.0
+[ground]
+width = 3.0
+[[ground.layers]]
+thickness = 1.5
+shear_wave_speed = 70.0
+poisson_ratio = 0.45
+density = 1500.0
+damping_ratio = 0.04
+[[ground.layers]]
+thickness = 4.0
+shear_wave_speed = 45.0
+poisson_ratio = 0.48
+density = 1300.0
+damping_ratio = 0.03
+[ground.half_space]
+shear_wave_speed = 110.0
+poisson_ratio = 0.45
+density = 1700.0
+damping_ratio = 0.05
+"""
+
+
+def test_the_ground_from_python(tmp_path):
+    site = tmp_path / "site.toml"
+    site.write_text(SITE)
+    out = tmp_path / "out"
+    with pytest.warns(UserWarning):  # this site's fundamental mode falls to the end of the range: no least value
+        ground = frictrack.ground(site, frequencies=range(1, 31), out=out)
+    assert ground.critical_speed < ground.winkler_critical_speed
+    assert ground.dispersion.units == {"frequency": "Hz", "phase_velocity": "m/s"}
+    assert len(ground.dispersion["frequency"]) == 30
+    assert ground.stiffness.units["stiffness_real"] == "N/m²"
+    # The critical speed is refined between the sampled peak's neighbours, never below the sample.
+    speeds, down = ground.speeds["speed"], ground.speeds["max_downward_deflection"]
+    best, step = int(down.argmax()), speeds[1] - speeds[0]
+    assert down[best] <= ground.summary["critical_deflection"]
+    assert abs(ground.critical_speed - speeds[best]) <= step
+    written = json.loads((out / "ground.json").read_text())
+    assert written["critical_speed"] == ground.critical_speed
+    assert (out / "ground-dispersion.svg").stat().st_size > 10_000
+    assert "critical speed on the ground" in str(ground)
+    bad = SITE.replace("thickness = 4.0", "thickness = -4.0")
+    with pytest.raises(frictrack.InputError, match=r"ground.layers\[1\].thickness = -4"):
+        frictrack.ground(bad)
