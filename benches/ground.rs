@@ -1,0 +1,52 @@
+//! The ground under the track (docs/theory.md §19): one speed point of the linear moving-frame solution on a soft
+//! layered site — the spectrum of a composite beam on the strip's k_eq(k_x, k_x v) and its wave's extremes — at a
+//! subcritical, the critical and a supercritical speed, as `frictrack ground` computes each point of its speed curve
+//! (the target: ≤ 0.5 s a speed on 2 cores); and one strip integral k_eq alone.
+//!
+//! Run with `cargo bench -p frictrack-benches --bench ground`.
+
+use analytic::ground::{GroundProfile, GroundedBeam, SoilLayer, SoilMaterial, StripGround};
+use criterion::{Criterion, criterion_group, criterion_main};
+use fem_beam::properties::Beam;
+use std::hint::black_box;
+use std::time::Duration;
+
+/// The soft trial site of the CLI's tests: a crust over soft clay on a stiffer half-space.
+fn site() -> StripGround {
+    let soil = |shear_wave_speed: f64, density: f64, damping_ratio: f64| SoilMaterial {
+        shear_wave_speed,
+        compression_wave_speed: shear_wave_speed * (2.0 * 0.55 / 0.1f64).sqrt(),
+        density,
+        damping_ratio,
+    };
+    let layers = vec![
+        SoilLayer { thickness: 1.5, material: soil(70.0, 1500.0, 0.04) },
+        SoilLayer { thickness: 4.0, material: soil(45.0, 1300.0, 0.03) },
+    ];
+    StripGround { width: 3.0, profile: GroundProfile { layers, half_space: soil(110.0, 1700.0, 0.05) } }
+}
+
+fn ground(c: &mut Criterion) {
+    let strip = site();
+    let beam =
+        Beam { youngs_modulus: 2e8, second_moment: 1.0, area: 1.0, density: 1e4, loss_factor: 0.1, ..Beam::default() };
+    let grounded = GroundedBeam::new(&beam, &strip).unwrap();
+    rayon::ThreadPoolBuilder::new().num_threads(2).build_global().ok();
+    let mut group = c.benchmark_group("ground");
+    group.sample_size(10).warm_up_time(Duration::from_secs(1)).measurement_time(Duration::from_secs(20));
+    for speed in [40.0, 65.0, 100.0] {
+        group.bench_function(format!("speed_point_{speed:.0}_m_per_s_2_threads"), |b| {
+            b.iter(|| {
+                let spectrum = grounded.spectrum(speed).unwrap();
+                black_box(study::ground::speeds::extremes(&spectrum, speed, 1e5))
+            })
+        });
+    }
+    group.bench_function("strip_integral_kx_0.5_at_65_m_per_s", |b| {
+        b.iter(|| black_box(strip.equivalent_stiffness(0.5, 0.5 * 65.0).unwrap()))
+    });
+    group.finish();
+}
+
+criterion_group!(benches, ground);
+criterion_main!(benches);
