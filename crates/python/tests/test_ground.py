@@ -1,41 +1,15 @@
-"""frictrack.ground: the composite beam on a layered ground from Python — the critical speeds with their units, the
-tables, the files it writes (the same numbers as its JSON), and a bad profile refused by key."""
+"""frictrack.ground on examples/soft-ground.toml: the composite beam on a layered ground from Python — the critical
+speeds with their units, the tables, the files it writes (the same numbers as its JSON), and a bad profile refused
+by key."""
 
 import json
 
 import pytest
 
 import frictrack
+from test_run import ROOT
 
-SITE = """title = "soft site"
-[beam]
-youngs_modulus = 2.0e8
-second_moment = 1.0
-area = 1.0
-density = 10000.0
-loss_factor = 0.1
-[load]
-force = 100000.0
-[ground]
-width = 3.0
-[[ground.layers]]
-thickness = 1.5
-shear_wave_speed = 70.0
-poisson_ratio = 0.45
-density = 1500.0
-damping_ratio = 0.04
-[[ground.layers]]
-thickness = 4.0
-shear_wave_speed = 45.0
-poisson_ratio = 0.48
-density = 1300.0
-damping_ratio = 0.03
-[ground.half_space]
-shear_wave_speed = 110.0
-poisson_ratio = 0.45
-density = 1700.0
-damping_ratio = 0.05
-"""
+SITE = (ROOT / "examples" / "soft-ground.toml").read_text()
 
 
 def test_the_ground_from_python(tmp_path):

@@ -3,45 +3,21 @@
 
 use super::{frictrack, json, temporary_folder, write_file};
 
-/// A crust over soft clay on a stiffer half-space, under a track-and-embankment beam.
-const SITE: &str = r#"title = "soft site"
-[beam]
-youngs_modulus = 2.0e8
-second_moment = 1.0
-area = 1.0
-density = 10000.0
-loss_factor = 0.1
-[load]
-force = 100000.0
-[ground]
-width = 3.0
-[[ground.layers]]
-thickness = 1.5
-shear_wave_speed = 70.0
-poisson_ratio = 0.45
-density = 1500.0
-damping_ratio = 0.04
-[[ground.layers]]
-thickness = 4.0
-shear_wave_speed = 45.0
-poisson_ratio = 0.48
-density = 1300.0
-damping_ratio = 0.03
-[ground.half_space]
-shear_wave_speed = 110.0
-poisson_ratio = 0.45
-density = 1700.0
-damping_ratio = 0.05
-"#;
+/// The soft-ground example: a crust over soft clay on a stiffer half-space, under a track-and-embankment beam.
+fn example_site() -> String {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/soft-ground.toml");
+    std::fs::read_to_string(path).unwrap()
+}
 
-/// The numbers the issue names, each with its unit; the files; the table on standard output; on this soft site the
-/// critical speed on the ground lies below both the Winkler control (a spring fitted to the site's static
-/// deflection) and the half-space's shear wave, and the free beam's bending waves meet the soil's fundamental mode
-/// within 15 % of it.
+/// The numbers the issue names, each with its unit; the files. On the soft-ground example the critical speed on the
+/// ground, 61.37 m/s, lies 1.64× below the Winkler control (100.80 m/s: a spring fitted to the site's static
+/// deflection) and below the half-space's shear wave, and the free beam's bending waves meet the soil's fundamental
+/// mode at 60.05 m/s, 2 % below it — the numbers the example's README line quotes (to their printed 0.01 m/s; the
+/// critical speed is refined to 0.05 m/s, deterministically).
 #[test]
 fn ground_reports_the_critical_speeds_and_writes_its_files() {
     let folder = temporary_folder("ground");
-    let site = write_file(&folder, "site.toml", SITE);
+    let site = write_file(&folder, "site.toml", &example_site());
     let checked = frictrack(&["check", &site]);
     assert!(checked.status.success() && String::from_utf8_lossy(&checked.stdout).contains("ok — composite beam"));
     let out = folder.join("out");
@@ -69,11 +45,13 @@ fn ground_reports_the_critical_speeds_and_writes_its_files() {
     ] {
         assert_eq!(unit_of(name), Some(serde_json::json!(unit)), "{name}");
     }
-    let critical = v["critical_speed"].as_f64().unwrap();
-    let winkler = v["winkler_critical_speed"].as_f64().unwrap();
-    assert!(critical < winkler && critical < 110.0, "{critical} vs {winkler}");
-    let free = v["free_beam_crossing_speed"].as_f64().unwrap();
-    assert!((free / critical - 1.0).abs() < 0.15, "{free} vs {critical}");
+    let speed = |name: &str| v[name].as_f64().unwrap();
+    let (critical, winkler, free) =
+        (speed("critical_speed"), speed("winkler_critical_speed"), speed("free_beam_crossing_speed"));
+    for (value, quoted) in [(critical, 61.37), (winkler, 100.80), (free, 60.05)] {
+        assert!((value - quoted).abs() < 0.01, "{value} vs the quoted {quoted}");
+    }
+    assert!(critical < 110.0);
     for name in ["ground.json", "dispersion.csv", "modes.csv", "speeds.csv", "equivalent_stiffness.csv"] {
         assert!(out.join(name).is_file(), "{name}");
     }
@@ -88,7 +66,7 @@ fn ground_reports_the_critical_speeds_and_writes_its_files() {
 #[test]
 fn ground_refuses_by_key() {
     let folder = temporary_folder("ground-refusals");
-    let site = write_file(&folder, "site.toml", SITE);
+    let site = write_file(&folder, "site.toml", &example_site());
     let refused = |args: &[&str], key: &str| {
         let out = frictrack(args);
         let stderr = String::from_utf8_lossy(&out.stderr);
@@ -98,14 +76,14 @@ fn ground_refuses_by_key() {
     refused(&["ground", &site, "--frequencies", "0:10:1"], "--frequencies = 0");
     let winkler = write_file(&folder, "winkler.toml", "[foundation]\nstiffness = 1e7\n");
     refused(&["ground", &winkler], "ground = missing");
-    let both = write_file(&folder, "both.toml", &format!("{SITE}[foundation]\nstiffness = 1e7\n"));
+    let both = write_file(&folder, "both.toml", &format!("{}[foundation]\nstiffness = 1e7\n", example_site()));
     refused(&["ground", &both], "foundation = given");
-    let timoshenko = SITE.replace(
+    let timoshenko = example_site().replace(
         "loss_factor = 0.1",
         "loss_factor = 0.1\ntheory = \"timoshenko\"\nshear_modulus = 8e7\nshear_coefficient = 0.8",
     );
     refused(&["ground", &write_file(&folder, "timoshenko.toml", &timoshenko)], "beam.theory = timoshenko");
     refused(&["run", &site], "ground = given");
-    let flat = SITE.replace("thickness = 4.0", "thickness = 0.0");
+    let flat = example_site().replace("thickness = 4.0", "thickness = 0.0");
     refused(&["ground", &write_file(&folder, "flat.toml", &flat)], "ground.layers[1].thickness = 0");
 }
