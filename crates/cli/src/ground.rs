@@ -40,8 +40,13 @@ pub fn run(args: &GroundArgs) -> Result<()> {
         check_folder(folder, "--out")?;
     }
     let runner = crate::jobs::runner(args.jobs, args.format != TableFormat::Text)?;
-    let runner = runner.with_stop(crate::interrupt::stop_flag());
+    let quiet = args.format != TableFormat::Text;
+    let bar = crate::progress::bar("ground", None, quiet);
+    let progress = |done: usize| bar.set_position(done as u64);
+    let announce = |estimate: &runner::cost::Estimate| crate::progress::announce("ground", estimate);
+    let runner = runner.with_progress(&progress).with_estimate(&announce).with_stop(crate::interrupt::stop_flag());
     let study = crate::interrupt::explain(GroundStudy::of(&scenario, &request, &runner), None)?;
+    bar.finish_and_clear();
     for warning in &study.warnings {
         eprintln!("warning: {warning}");
     }

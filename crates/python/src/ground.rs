@@ -31,8 +31,9 @@ pub(crate) fn ground(
         study::ground::text::check_folder(folder, "out").map_err(to_python)?;
     }
     let runner = Runner::new(jobs).map_err(to_python)?;
-    let work = move |stop: &_, _told: &interruptible::Progress| {
-        let study = GroundStudy::of(&scenario, &request, &runner.with_stop(stop))?;
+    let work = move |stop: &_, told: &interruptible::Progress| {
+        let announce = |estimate: &runner::cost::Estimate| told.announce("frictrack.ground", estimate);
+        let study = GroundStudy::of(&scenario, &request, &runner.with_stop(stop).with_estimate(&announce))?;
         if let Some(folder) = &out {
             study.write_folder(folder, "out")?;
         }

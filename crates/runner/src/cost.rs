@@ -90,6 +90,10 @@ const WITHOUT_ERROR_ESTIMATE: f64 = 0.6;
 /// 11.4 s over examples/discrete-track.toml's 2997, 1.9e-7).
 const RECEPTANCE_PER_DOF_FREQUENCY: f64 = 2e-7;
 
+/// Seconds per moving-load spectrum of a beam on a layered ground on one thread (each spectrum a few hundred strip
+/// integrals: 0.54–0.90 s on 2 threads on a soft two-layer site, BENCHMARKS.md; ~1.4 s on one).
+const GROUND_SPECTRUM: f64 = 1.4;
+
 /// Work estimated to take longer than this (s) is announced with its size and estimate before it starts (by every
 /// entry point: the command line on standard error, Python on its standard error).
 pub const ANNOUNCE_ABOVE: f64 = 10.0;
@@ -122,6 +126,11 @@ pub enum Size {
         frequencies: usize,
         /// Free DOFs of the track.
         dofs: usize,
+    },
+    /// Moving-load spectra of a beam on a layered ground (a few hundred strip integrals each).
+    Ground {
+        /// Spectra (speeds).
+        spectra: usize,
     },
     /// A stationary solve on the moving domain.
     Stationary {
@@ -184,12 +193,14 @@ impl Estimate {
                 format!("{nodes} nodes{}", if nonsmooth { ", nonsmooth (Newton on the contact set)" } else { "" })
             }
             Size::Receptance { frequencies, dofs } => format!("{frequencies} frequencies over {dofs} DOFs"),
+            Size::Ground { spectra } => format!("{spectra} moving-load spectra on a layered ground"),
         };
         let items = match self.size {
             Size::Run(_) if self.runs == 1 => size,
             Size::Run(_) => format!("{} runs, the largest of {size}, on {}", self.runs, threads(self.threads)),
             Size::Stationary { .. } => format!("{} stationary solves of {size}", self.runs),
             Size::Receptance { .. } => format!("a receptance of {size}, on {}", threads(self.threads)),
+            Size::Ground { .. } => format!("{size}, on {}", threads(self.threads)),
         };
         match self.lower_bound {
             false => format!("{items}: estimated {} (within a factor of 2–3)", duration(self.seconds)),
@@ -206,6 +217,13 @@ impl Estimate {
         let threads = threads.clamp(1, frequencies.max(1));
         let seconds = RECEPTANCE_PER_DOF_FREQUENCY * (dofs * frequencies) as f64 / threads as f64;
         Self { runs: 1, threads, size: Size::Receptance { frequencies, dofs }, seconds, lower_bound: false }
+    }
+
+    /// `spectra` moving-load spectra of a beam on a layered ground, each shared by `threads` threads.
+    pub fn ground(spectra: usize, threads: usize) -> Self {
+        let threads = threads.max(1);
+        let seconds = GROUND_SPECTRUM * spectra as f64 / threads as f64;
+        Self { runs: 1, threads, size: Size::Ground { spectra }, seconds, lower_bound: false }
     }
 
     /// Stationary solves of `problem` at `speeds` in continuation (one after another), with or without the
@@ -302,6 +320,15 @@ mod tests {
             large.describe(),
             "a receptance of 100000 frequencies over 2997 DOFs, on 1 thread: estimated 60 s (within a factor of 2–3)"
         );
+    }
+
+    /// The ground's study is costed by its spectra: `frictrack ground`'s 37 on 2 threads are ~26 s (measured 25–34 s
+    /// on the soft-ground example), long enough to be announced.
+    #[test]
+    fn the_ground_is_costed_by_its_spectra() {
+        let ground = Estimate::ground(37, 2);
+        assert!((15.0..40.0).contains(&ground.seconds) && ground.is_long(), "{ground:?}");
+        assert!(ground.describe().starts_with("37 moving-load spectra on a layered ground, on 2 threads"));
     }
 
     /// A batch's wall time is its summed cost over the threads it keeps busy; its size is its largest run.

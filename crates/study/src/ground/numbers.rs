@@ -81,7 +81,7 @@ pub struct GroundStudy {
     pub title: String,
     /// The force the beam carries (N, downward).
     pub force: f64,
-    /// EI (N·m²), ρA (kg/m), η of the composite beam.
+    /// EI (N·m²) of the composite beam.
     pub bending_stiffness: f64,
     /// ρA (kg/m).
     pub mass_per_length: f64,
@@ -145,6 +145,8 @@ impl GroundStudy {
             })
             .collect();
         let minimum = least_phase_velocity(&strip, &dispersion, &mut warnings)?;
+        // The static case, the curve, ~12 to refine its peak.
+        runner.announce(runner::cost::Estimate::ground(1 + SPEEDS + 12, runner.threads()));
         let grounded = GroundedBeam::new(&beam, &strip)?;
         let (ei, m) = (beam.bending_stiffness(), beam.mass_per_length());
         let static_deflection = -grounded.spectrum(0.0)?.deflection(0.0) * force;
