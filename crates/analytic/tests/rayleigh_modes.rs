@@ -1,6 +1,7 @@
 //! The Rayleigh modes of a layered ground (docs/theory.md §19) by two independent methods: the roots of the exact
 //! layered system's determinant (`rayleigh_phase_velocities`) and the thin-layer method's eigenproblem
-//! (`thin_layer_phase_velocity`, finite elements in depth).
+//! (`thin_layer_phase_velocity`, finite elements in depth); and against an independent code's (TrainCritSpeed's
+//! Fast Delta Matrix, `tests/data/traincritspeed/`).
 
 use analytic::ground::{
     GroundProfile, SoilLayer, SoilMaterial, ThinLayerMesh, rayleigh_phase_velocities, thin_layer_phase_velocity,
@@ -96,4 +97,62 @@ fn the_fundamental_mode_runs_between_its_limits() {
     let site = crust_over_soft_clay();
     let c = rayleigh_phase_velocities(&site, 2.0 * PI * 60.0)[0];
     assert!(c > 41.0 * 0.9 && c < 41.0 * 1.03, "{c}");
+}
+
+/// The rows of a reference file: ω (rad/s), then the modes' phase velocities (m/s).
+fn reference(name: &str) -> Vec<(f64, Vec<f64>)> {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/traincritspeed").join(name);
+    std::fs::read_to_string(path)
+        .unwrap()
+        .lines()
+        .map(|line| {
+            let values: Vec<f64> = line.split_whitespace().map(|v| v.parse().unwrap()).collect();
+            (values[0], values[1..].to_vec())
+        })
+        .collect()
+}
+
+/// Every mode the independent code found (up to ten, Fast Delta Matrix, Buchen & Ben-Hador 1996) is ours to 1e-9 —
+/// both are root searches to round-off, so they agree to ~1e-14 — on Foti et al.'s four-layer profile (1 to 10 modes
+/// from 10 to 300 rad/s) and Mezher et al.'s soft three-layer one; we find no mode they did not below their tenth.
+#[test]
+fn the_modes_are_an_independent_codes() {
+    let soil = |cs: f64, cp: f64, density: f64| SoilMaterial {
+        shear_wave_speed: cs,
+        compression_wave_speed: cp,
+        density,
+        damping_ratio: 0.0,
+    };
+    let foti = GroundProfile {
+        layers: [(5.0, 100.0), (10.0, 200.0), (15.0, 300.0)]
+            .map(|(thickness, cs)| SoilLayer { thickness, material: soil(cs, 2.0 * cs, 1900.0) })
+            .to_vec(),
+        half_space: soil(400.0, 800.0, 1900.0),
+    };
+    // E and ν as the source gives them: C_s = √(E/(2(1 + ν)ρ)), C_p = C_s√(2(1 − ν)/(1 − 2ν)).
+    let of = |e: f64, nu: f64| {
+        let cs = (e / (2.0 * (1.0 + nu) * 2000.0)).sqrt();
+        soil(cs, cs * (2.0 * (1.0 - nu) / (1.0 - 2.0 * nu)).sqrt(), 2000.0)
+    };
+    let mezher = GroundProfile {
+        layers: vec![
+            SoilLayer { thickness: 2.0, material: of(30e6, 0.35) },
+            SoilLayer { thickness: 4.0, material: of(40e6, 0.35) },
+        ],
+        half_space: of(75e6, 0.40),
+    };
+    for (profile, file) in [(&foti, "foti.csv"), (&mezher, "mezher.csv")] {
+        for (omega, expected) in reference(file) {
+            let ours = rayleigh_phase_velocities(profile, omega);
+            // The source lists at most ten modes (and only the fundamental for Mezher's profile).
+            let listed_all = file == "foti.csv" && expected.len() < 10;
+            assert!(
+                ours.len() >= expected.len() && (!listed_all || ours.len() == expected.len()),
+                "{file}, ω {omega}: {ours:?} vs {expected:?}"
+            );
+            for (a, b) in ours.iter().zip(&expected) {
+                assert!((a / b - 1.0).abs() < 1e-9, "{file}, ω {omega}: {a} vs {b}");
+            }
+        }
+    }
 }
