@@ -12,6 +12,7 @@
 //! - `line_support`: [`LineSupport`], a beam's support per wave: a Winkler foundation or the strip's k_eq.
 //! - `moving_load`: [`GroundedBeam`] — a beam on a line support under a moving force, its steady wave by one
 //!   Fourier integral over an adaptively sampled spectrum.
+//! - `receptance`: the beam's point receptance α(ω) on a line support (the ground's strip, or a spring).
 //! - `thin_layer`: the same modes by the thin-layer method (finite elements in depth), the independent check.
 //! - `strip`: [`StripGround`] — the track's strip on the ground and its equivalent stiffness k_eq(k_x, ω).
 
@@ -22,6 +23,7 @@ mod line_support;
 mod moving_load;
 mod profile;
 mod rayleigh_modes;
+mod receptance;
 mod strip;
 mod thin_layer;
 
@@ -32,5 +34,6 @@ pub use line_support::LineSupport;
 pub use moving_load::{GroundedBeam, MovingSpectrum, SPECTRUM_TOLERANCE};
 pub use profile::{GroundProfile, HalfSpace, MAX_LAYERS, SoilLayer, SoilMaterial};
 pub use rayleigh_modes::rayleigh_phase_velocities;
+pub use receptance::RECEPTANCE_TOLERANCE;
 pub use strip::{STRIP_TOLERANCE, StripGround};
 pub use thin_layer::{ThinLayerMesh, thin_layer_phase_velocity};
