@@ -93,6 +93,9 @@ const RECEPTANCE_PER_DOF_FREQUENCY: f64 = 2e-7;
 /// Seconds per moving-load spectrum of a beam on a layered ground on one thread (each spectrum a few hundred strip
 /// integrals: 0.54–0.90 s on 2 threads on a soft two-layer site, BENCHMARKS.md; ~1.4 s on one).
 const GROUND_SPECTRUM: f64 = 1.4;
+/// Seconds per frequency of a point receptance on a layered ground on one thread (an integral over k of strip
+/// integrals: 30 frequencies of examples/soft-ground.toml took 104 s on 2 threads).
+const GROUND_RECEPTANCE: f64 = 7.0;
 
 /// Work estimated to take longer than this (s) is announced with its size and estimate before it starts (by every
 /// entry point: the command line on standard error, Python on its standard error).
@@ -127,10 +130,12 @@ pub enum Size {
         /// Free DOFs of the track.
         dofs: usize,
     },
-    /// Moving-load spectra of a beam on a layered ground (a few hundred strip integrals each).
+    /// Integrals over the wavenumber of a beam on a layered ground (each a few hundred strip integrals).
     Ground {
-        /// Spectra (speeds).
-        spectra: usize,
+        /// How many.
+        integrals: usize,
+        /// What they are: "moving-load spectra", "point receptances".
+        what: &'static str,
     },
     /// A stationary solve on the moving domain.
     Stationary {
@@ -193,7 +198,7 @@ impl Estimate {
                 format!("{nodes} nodes{}", if nonsmooth { ", nonsmooth (Newton on the contact set)" } else { "" })
             }
             Size::Receptance { frequencies, dofs } => format!("{frequencies} frequencies over {dofs} DOFs"),
-            Size::Ground { spectra } => format!("{spectra} moving-load spectra on a layered ground"),
+            Size::Ground { integrals, what } => format!("{integrals} {what} on a layered ground"),
         };
         let items = match self.size {
             Size::Run(_) if self.runs == 1 => size,
@@ -223,7 +228,16 @@ impl Estimate {
     pub fn ground(spectra: usize, threads: usize) -> Self {
         let threads = threads.max(1);
         let seconds = GROUND_SPECTRUM * spectra as f64 / threads as f64;
-        Self { runs: 1, threads, size: Size::Ground { spectra }, seconds, lower_bound: false }
+        let size = Size::Ground { integrals: spectra, what: "moving-load spectra" };
+        Self { runs: 1, threads, size, seconds, lower_bound: false }
+    }
+
+    /// A point receptance of a beam on a layered ground at `frequencies` frequencies, shared by `threads` threads.
+    pub fn ground_receptance(frequencies: usize, threads: usize) -> Self {
+        let threads = threads.clamp(1, frequencies.max(1));
+        let seconds = GROUND_RECEPTANCE * frequencies as f64 / threads as f64;
+        let size = Size::Ground { integrals: frequencies, what: "point receptances" };
+        Self { runs: 1, threads, size, seconds, lower_bound: false }
     }
 
     /// Stationary solves of `problem` at `speeds` in continuation (one after another), with or without the
@@ -329,6 +343,9 @@ mod tests {
         let ground = Estimate::ground(37, 2);
         assert!((15.0..40.0).contains(&ground.seconds) && ground.is_long(), "{ground:?}");
         assert!(ground.describe().starts_with("37 moving-load spectra on a layered ground, on 2 threads"));
+        let receptance = Estimate::ground_receptance(30, 2);
+        assert!((50.0..200.0).contains(&receptance.seconds), "{receptance:?}");
+        assert!(receptance.describe().starts_with("30 point receptances on a layered ground"));
     }
 
     /// A batch's wall time is its summed cost over the threads it keeps busy; its size is its largest run.

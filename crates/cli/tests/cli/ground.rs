@@ -87,3 +87,23 @@ fn ground_refuses_by_key() {
     let flat = example_site().replace("thickness = 4.0", "thickness = 0.0");
     refused(&["ground", &write_file(&folder, "flat.toml", &flat)], "ground.layers[1].thickness = 0");
 }
+
+/// `frictrack receptance` on a `[ground]`: the infinite composite beam's point receptance on the strip's k_eq(k, ω),
+/// its resonance — the beam bouncing on the ground, near 3.25 Hz on the soft-ground example (below √(k_w/m)/2π =
+/// 5.7 Hz: the ground's mass moves with it) — refined, its phase that of a passive track; a transfer receptance is
+/// refused by key.
+#[test]
+fn the_receptance_on_the_ground() {
+    let folder = temporary_folder("ground-receptance");
+    let site = write_file(&folder, "site.toml", &example_site());
+    let v = json(&frictrack(&["receptance", &site, "--frequencies", "2:5:1", "--format", "json"]));
+    assert_eq!((v["kind"].as_str(), v["place"].as_str()), (Some("point"), Some("on the infinite beam")));
+    let resonance = v["resonances"][0]["frequency"].as_f64().unwrap();
+    assert!((3.0..3.5).contains(&resonance), "{resonance}");
+    for point in v["points"].as_array().unwrap() {
+        assert!(point["imaginary"].as_f64().unwrap() < 0.0, "{point}");
+    }
+    let out = frictrack(&["receptance", &site, "--frequencies", "2:3:1", "--at", "10", "--excite", "20"]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.code() == Some(2) && stderr.contains("--at = 10"), "{stderr}");
+}

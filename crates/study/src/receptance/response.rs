@@ -45,7 +45,7 @@ pub struct ReceptancePoint {
 }
 
 impl ReceptancePoint {
-    fn of(frequency: f64, alpha: Complex64) -> Self {
+    pub(crate) fn of(frequency: f64, alpha: Complex64) -> Self {
         Self {
             frequency,
             real: alpha.re,
@@ -144,6 +144,9 @@ fn support(model: &fem_beam::BeamModel) -> String {
 impl ReceptanceStudy {
     /// The receptance of `scenario`'s track (a linear foundation) for `request`, on `runner`'s threads.
     pub fn of(scenario: &Scenario, request: &ReceptanceRequest, runner: &Runner<'_>) -> Result<Self> {
+        if scenario.ground.is_some() {
+            return Self::on_the_ground(scenario, request, runner);
+        }
         let model = scenario.model()?;
         if !model.foundation().law.is_linear() {
             return Err(invalid(

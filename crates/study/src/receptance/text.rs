@@ -20,6 +20,9 @@ pub const RECEPTANCE_COLUMNS: [Column; 6] = [
     ("mobility", unit("mobility")),
 ];
 
+/// The place of a receptance on the ground: under the force on the infinite beam.
+pub const ON_THE_INFINITE_BEAM: &str = "on the infinite beam";
+
 /// The files a receptance writes into its folder.
 const FILES: [&str; 4] = ["receptance.csv", "receptance.json", "receptance.png", "receptance.svg"];
 
@@ -59,6 +62,7 @@ impl ReceptanceStudy {
     fn describe(&self, rail: &str) -> String {
         let among = if self.place.is_empty() { String::new() } else { format!(" ({})", self.place) };
         let place = match self.kind {
+            "point" if self.place == ON_THE_INFINITE_BEAM => "point receptance of the infinite beam".to_string(),
             "point" => format!("point receptance at x = {} m{among}", self.at),
             _ => format!("transfer receptance at x = {} m{among}, force at {} m", self.at, self.excite),
         };

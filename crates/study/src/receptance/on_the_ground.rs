@@ -1,0 +1,56 @@
+//! The receptance of the composite beam on a `[ground]` (`frictrack receptance` on a ground scenario, docs/theory.md
+//! §19): the infinite beam's point receptance α(ω) on the strip's k_eq(k, ω), one integral over k per frequency, its
+//! resonances refined as the finite track's are.
+
+use crate::receptance::peaks::resonances;
+use crate::receptance::{ReceptancePoint, ReceptanceRequest, ReceptanceStudy};
+use analytic::ground::GroundedBeam;
+use num_complex::Complex64;
+use runner::Runner;
+use scenario::Scenario;
+use scenario::error::{Result, StudyError, invalid};
+use std::f64::consts::TAU;
+
+impl ReceptanceStudy {
+    /// The point receptance of `scenario`'s composite beam on its `[ground]` at `request`'s frequencies, on
+    /// `runner`'s threads. The beam is infinite: the response is read under the force (`at` and `excite` are
+    /// refused where they differ — a transfer receptance on the ground is not built).
+    pub fn on_the_ground(scenario: &Scenario, request: &ReceptanceRequest, runner: &Runner<'_>) -> Result<Self> {
+        let (beam, strip) = scenario.track_on_the_ground()?;
+        crate::receptance::response::check_frequencies(&request.frequencies)?;
+        if request.at != request.excite {
+            return Err(invalid(
+                "at",
+                request.at,
+                "on a [ground] the receptance is the point receptance of the infinite beam: give no place, or the \
+                 same for at and excite",
+            ));
+        }
+        let grounded = GroundedBeam::new(&beam, &strip)?;
+        let speeds: Vec<f64> =
+            strip.profile.materials().flat_map(|m| [m.shear_wave_speed, m.compression_wave_speed]).collect();
+        let alpha = |f: f64| -> Result<Complex64> { Ok(grounded.point_receptance(TAU * f, &speeds)?) };
+        runner.announce(runner::cost::Estimate::ground_receptance(request.frequencies.len(), runner.threads()));
+        let values = runner.map(&request.frequencies, |&f| match runner.is_stopped() {
+            true => Err(StudyError::Interrupted),
+            false => alpha(f),
+        })?;
+        let points: Vec<ReceptancePoint> =
+            request.frequencies.iter().zip(&values).map(|(&f, &a)| ReceptancePoint::of(f, a)).collect();
+        let curve: Vec<(f64, f64)> = points.iter().map(|p| (p.frequency, p.magnitude)).collect();
+        let resonances = resonances(&curve, |f| alpha(f).map(|a| a.norm()))?;
+        Ok(Self {
+            title: scenario.title.clone(),
+            excite: request.excite,
+            at: request.at,
+            kind: "point",
+            rail: "Euler–Bernoulli composite beam".into(),
+            loss_factors: [beam.loss_factor, 0.0],
+            support: format!("a {} m strip of a layered ground (theory §19)", strip.width),
+            place: crate::receptance::text::ON_THE_INFINITE_BEAM.into(),
+            points,
+            resonances,
+            warnings: Vec::new(),
+        })
+    }
+}
