@@ -168,13 +168,7 @@ impl GroundStudy {
             );
         }
         let top = 1.2 * winkler_critical_speed.max(strip.profile.half_space.shear_wave_speed);
-        let speeds: Vec<f64> = (1..=SPEEDS).map(|i| top * i as f64 / SPEEDS as f64).collect();
-        let curve = runner.map(&speeds, |&v| match runner.is_stopped() {
-            true => Err(StudyError::Interrupted),
-            false => point(&grounded, v, force),
-        })?;
-        let mut evaluate = |v: f64| point(&grounded, v, force).map(|p| p.max_downward_deflection);
-        let critical = critical_speed(&curve, &mut evaluate)?;
+        let (curve, critical) = speed_curve(&grounded, top, force, runner)?;
         if critical.is_none() {
             warnings.push(format!(
                 "the largest deflection lies at an end of the speeds computed (up to {top:.1} m/s): no critical \
@@ -208,6 +202,24 @@ impl GroundStudy {
             warnings,
         })
     }
+}
+
+/// The steady extremes at [`SPEEDS`] speeds up to `top` (m/s) under `force` (N), and the critical speed refined
+/// from them (speed, deflection), `None` at an end of the range.
+fn speed_curve(
+    grounded: &GroundedBeam<'_, StripGround>,
+    top: f64,
+    force: f64,
+    runner: &Runner<'_>,
+) -> Result<(Vec<SpeedPoint>, Option<(f64, f64)>)> {
+    let speeds: Vec<f64> = (1..=SPEEDS).map(|i| top * i as f64 / SPEEDS as f64).collect();
+    let curve = runner.map(&speeds, |&v| match runner.is_stopped() {
+        true => Err(StudyError::Interrupted),
+        false => point(grounded, v, force),
+    })?;
+    let mut evaluate = |v: f64| point(grounded, v, force).map(|p| p.max_downward_deflection);
+    let critical = critical_speed(&curve, &mut evaluate)?;
+    Ok((curve, critical))
 }
 
 /// The fundamental mode's phase velocity at `frequency` (Hz), or +∞ where it is not trapped.
