@@ -204,6 +204,9 @@ impl GroundStudy {
     }
 }
 
+/// A refined peak: (speed m/s, deflection m).
+type Peak = (f64, f64);
+
 /// The steady extremes at [`SPEEDS`] speeds up to `top` (m/s) under `force` (N), and the critical speed refined
 /// from them (speed, deflection), `None` at an end of the range.
 fn speed_curve(
@@ -211,7 +214,7 @@ fn speed_curve(
     top: f64,
     force: f64,
     runner: &Runner<'_>,
-) -> Result<(Vec<SpeedPoint>, Option<(f64, f64)>)> {
+) -> Result<(Vec<SpeedPoint>, Option<Peak>)> {
     let speeds: Vec<f64> = (1..=SPEEDS).map(|i| top * i as f64 / SPEEDS as f64).collect();
     let curve = runner.map(&speeds, |&v| match runner.is_stopped() {
         true => Err(StudyError::Interrupted),
