@@ -66,7 +66,10 @@ impl ReceptanceStudy {
             "point" => format!("point receptance at x = {} m{among}", self.at),
             _ => format!("transfer receptance at x = {} m{among}, force at {} m", self.at, self.excite),
         };
-        format!("{place}; {rail} rail, η {}; {}", self.loss_factors[0], self.support)
+        match self.place == ON_THE_INFINITE_BEAM {
+            true => format!("{place}; {rail}, η {}; on {}", self.loss_factors[0], self.support),
+            false => format!("{place}; {rail} rail, η {}; {}", self.loss_factors[0], self.support),
+        }
     }
 
     /// The figure: magnitude over frequency (both logarithmic) above the phase, the resonances marked.
