@@ -121,8 +121,8 @@ impl StripGround {
     fn cut(&self, kx: f64, omega: f64) -> f64 {
         let b = 0.5 * self.width;
         let slowest = self.profile.slowest_shear_wave_speed();
-        let thinnest_top = self.profile.layers.first().map_or(0.0, |layer| 1.0 / layer.thickness);
-        let least = (10.0 * kx.max(omega / slowest).max(thinnest_top)).max(40.0 / b);
+        let inverse_top_thickness = self.profile.layers.first().map_or(0.0, |layer| 1.0 / layer.thickness);
+        let least = (10.0 * kx.max(omega / slowest).max(inverse_top_thickness)).max(40.0 / b);
         let n = (least * b / PI - 0.5).ceil().max(0.0);
         (n + 0.5) * PI / b
     }
