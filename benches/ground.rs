@@ -33,7 +33,7 @@ fn ground(c: &mut Criterion) {
     let grounded = GroundedBeam::new(&beam, &strip).unwrap();
     rayon::ThreadPoolBuilder::new().num_threads(2).build_global().ok();
     let mut group = c.benchmark_group("ground");
-    group.sample_size(10).warm_up_time(Duration::from_secs(1)).measurement_time(Duration::from_secs(20));
+    group.sample_size(10).warm_up_time(Duration::from_secs(1)).measurement_time(Duration::from_secs(10));
     for speed in [40.0, 65.0, 100.0] {
         group.bench_function(format!("speed_point_{speed:.0}_m_per_s_2_threads"), |b| {
             b.iter(|| {

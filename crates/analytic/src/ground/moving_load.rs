@@ -49,7 +49,14 @@ pub struct MovingSpectrum {
     log_k: Vec<f64>,
     /// G at each.
     response: Vec<Complex64>,
+    /// How many intervals a deflection sums: past them ∫|G| dk (trapezoid over the samples), which bounds what they
+    /// add to any W(s), is below [`NEGLIGIBLE`] of the whole (the far tail of short waves, many radians of e^{iks}
+    /// each).
+    intervals: usize,
 }
+
+/// The share of ∫|G| dk whose intervals a deflection leaves out (their contribution to W(s) is at most that).
+const NEGLIGIBLE: f64 = 1e-10;
 
 impl<'a, S: LineSupport + ?Sized> GroundedBeam<'a, S> {
     /// `beam` (Euler–Bernoulli: a Timoshenko composite beam is refused by key) on `support`.
@@ -124,7 +131,8 @@ impl<'a, S: LineSupport + ?Sized> GroundedBeam<'a, S> {
             }
             (log_k, response, unsettled) = (next_k, next_g, next_unsettled);
         }
-        Ok(MovingSpectrum { log_k, response })
+        let intervals = significant_intervals(&log_k, &response);
+        Ok(MovingSpectrum { log_k, response, intervals })
     }
 
     /// G at each ln k of `log_k`, in parallel.
@@ -164,7 +172,7 @@ impl MovingSpectrum {
         let low = self.log_k[0].exp();
         let (g0, slope) = (self.response[0], (self.response[1] - self.response[0]) / (self.log_k[1] - self.log_k[0]));
         let head = (g0 - slope) * low + Complex64::new(0.0, s * low * low / 2.0) * (g0 - slope / 2.0);
-        let body: Complex64 = (0..self.log_k.len() - 1).map(|i| self.interval_integral(i, s)).sum();
+        let body: Complex64 = (0..self.intervals).map(|i| self.interval_integral(i, s)).sum();
         (head + body).re / PI
     }
 
@@ -186,6 +194,22 @@ impl MovingSpectrum {
         }
         sum
     }
+}
+
+/// How many leading intervals hold all but [`NEGLIGIBLE`] of ∫|G| dk (trapezoid in k over the samples).
+fn significant_intervals(log_k: &[f64], response: &[Complex64]) -> usize {
+    let pieces: Vec<f64> = (0..log_k.len() - 1)
+        .map(|i| 0.5 * (response[i].norm() + response[i + 1].norm()) * (log_k[i + 1].exp() - log_k[i].exp()))
+        .collect();
+    let total: f64 = pieces.iter().sum();
+    let mut left = total;
+    for (i, piece) in pieces.iter().enumerate() {
+        left -= piece;
+        if left < NEGLIGIBLE * total {
+            return i + 1;
+        }
+    }
+    pieces.len()
 }
 
 /// The cubic through the samples i − 1 … i + 2 (clamped at the ends) at u, inside interval i.
