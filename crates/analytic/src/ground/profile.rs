@@ -120,6 +120,11 @@ impl GroundProfile {
         self.layers.first().map_or(&self.half_space, |layer| &layer.material)
     }
 
+    /// Every material's C_s and C_p (m/s), top down: where k = ω/C the ground's response has a kink.
+    pub fn wave_speeds(&self) -> Vec<f64> {
+        self.materials().flat_map(|m| [m.shear_wave_speed, m.compression_wave_speed]).collect()
+    }
+
     /// The least shear-wave speed C_s of any material (m/s).
     pub fn slowest_shear_wave_speed(&self) -> f64 {
         self.materials().map(|m| m.shear_wave_speed).fold(f64::INFINITY, f64::min)

@@ -133,8 +133,8 @@ impl StripGround {
     fn breakpoints(&self, kx: f64, omega: f64, cut: f64) -> Vec<f64> {
         let kinks = self
             .profile
-            .materials()
-            .flat_map(|m| [m.shear_wave_speed, m.compression_wave_speed])
+            .wave_speeds()
+            .into_iter()
             .map(|c| omega / c)
             .filter(|&k| k > kx)
             .map(|k| (k * k - kx * kx).sqrt());

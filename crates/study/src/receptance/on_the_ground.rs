@@ -2,13 +2,13 @@
 //! §19): the infinite beam's point receptance α(ω) on the strip's k_eq(k, ω), one integral over k per frequency, its
 //! resonances refined as the finite track's are.
 
-use crate::receptance::peaks::resonances;
-use crate::receptance::{ReceptancePoint, ReceptanceRequest, ReceptanceStudy};
+use crate::receptance::response::sampled;
+use crate::receptance::{ReceptanceRequest, ReceptanceStudy};
 use analytic::ground::GroundedBeam;
 use num_complex::Complex64;
 use runner::Runner;
 use scenario::Scenario;
-use scenario::error::{Result, StudyError, invalid};
+use scenario::error::{Result, invalid};
 use std::f64::consts::TAU;
 
 impl ReceptanceStudy {
@@ -27,18 +27,10 @@ impl ReceptanceStudy {
             ));
         }
         let grounded = GroundedBeam::new(&beam, &strip)?;
-        let speeds: Vec<f64> =
-            strip.profile.materials().flat_map(|m| [m.shear_wave_speed, m.compression_wave_speed]).collect();
+        let speeds = strip.profile.wave_speeds();
         let alpha = |f: f64| -> Result<Complex64> { Ok(grounded.point_receptance(TAU * f, &speeds)?) };
         runner.announce(runner::cost::Estimate::ground_receptance(request.frequencies.len(), runner.threads()));
-        let values = runner.map(&request.frequencies, |&f| match runner.is_stopped() {
-            true => Err(StudyError::Interrupted),
-            false => alpha(f),
-        })?;
-        let points: Vec<ReceptancePoint> =
-            request.frequencies.iter().zip(&values).map(|(&f, &a)| ReceptancePoint::of(f, a)).collect();
-        let curve: Vec<(f64, f64)> = points.iter().map(|p| (p.frequency, p.magnitude)).collect();
-        let resonances = resonances(&curve, |f| alpha(f).map(|a| a.norm()))?;
+        let (points, resonances) = sampled(&request.frequencies, runner, &alpha)?;
         Ok(Self {
             title: scenario.title.clone(),
             excite: request.excite,

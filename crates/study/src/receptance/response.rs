@@ -45,7 +45,7 @@ pub struct ReceptancePoint {
 }
 
 impl ReceptancePoint {
-    pub(crate) fn of(frequency: f64, alpha: Complex64) -> Self {
+    fn of(frequency: f64, alpha: Complex64) -> Self {
         Self {
             frequency,
             real: alpha.re,
@@ -172,14 +172,7 @@ impl ReceptanceStudy {
         };
         let (dofs, count) = (model.dofs().free_len(), request.frequencies.len());
         runner.announce(runner::cost::Estimate::receptance(dofs, count, runner.threads()));
-        let values = runner.map(&request.frequencies, |&f| match runner.is_stopped() {
-            true => Err(StudyError::Interrupted),
-            false => alpha(f),
-        })?;
-        let points: Vec<ReceptancePoint> =
-            request.frequencies.iter().zip(&values).map(|(&f, &a)| ReceptancePoint::of(f, a)).collect();
-        let curve: Vec<(f64, f64)> = points.iter().map(|p| (p.frequency, p.magnitude)).collect();
-        let mut resonances = resonances(&curve, |f| alpha(f).map(|a| a.norm()))?;
+        let (points, mut resonances) = sampled(&request.frequencies, runner, &alpha)?;
         let unresolved = crate::receptance::peaks::keep_resolved(&model, &mut resonances);
         crate::receptance::peaks::name_resonances(&model, &mut resonances);
         let mut warnings = warnings(&model, &request.frequencies, request.excite);
@@ -215,6 +208,24 @@ impl ReceptanceStudy {
             warnings,
         })
     }
+}
+
+/// α at each of `frequencies` (Hz) on `runner`'s threads, stopping when asked, and the peaks of |α| refined between
+/// them: what every receptance does with its α(f), the finite track's and the ground's.
+pub(crate) fn sampled(
+    frequencies: &[f64],
+    runner: &Runner<'_>,
+    alpha: &(dyn Fn(f64) -> Result<Complex64> + Sync),
+) -> Result<(Vec<ReceptancePoint>, Vec<Resonance>)> {
+    let values = runner.map(frequencies, |&f| match runner.is_stopped() {
+        true => Err(StudyError::Interrupted),
+        false => alpha(f),
+    })?;
+    let points: Vec<ReceptancePoint> =
+        frequencies.iter().zip(&values).map(|(&f, &a)| ReceptancePoint::of(f, a)).collect();
+    let curve: Vec<(f64, f64)> = points.iter().map(|p| (p.frequency, p.magnitude)).collect();
+    let resonances = resonances(&curve, |f| alpha(f).map(|a| a.norm()))?;
+    Ok((points, resonances))
 }
 
 /// Where `x` (m) lies among the sleepers of `model`, in words (to 1 mm): "above sleeper 166", "mid-span between
