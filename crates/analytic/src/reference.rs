@@ -299,7 +299,6 @@ impl SteadyState {
     }
 }
 
-/// Maximise a unimodal f on [a, b] by golden-section search; returns (argmax, max).
 /// The largest values of f (downward) and of −f (upward) over `samples` (spaced `step`), each refined by golden
 /// section within a step of its best sample: ((x, f), (x, −f)) at the maxima. One scan for a single load and for a
 /// train ([`crate::steady_train`]).

@@ -8,6 +8,7 @@ use clap::Args;
 use scenario::Scenario;
 use stationary::Domain;
 use std::path::PathBuf;
+use study::ground::measured::MeasuredRecord;
 use study::stationary::output::{ErrorEstimate, StationaryStudy};
 use study::stationary::text::StationaryReport;
 
@@ -34,6 +35,10 @@ pub struct StationaryArgs {
     /// Ballast friction f_u (N/m) along the track, in place of the scenario's (as `run --distributed-friction`).
     #[arg(long, allow_negative_numbers = true)]
     distributed_friction: Option<f64>,
+    /// On a `[ground]`: a measured record (CSV `x_m,displacement_mm`, or x and deflection in m; upward positive) set
+    /// beside the wave at one speed, aligned by the best-fitting shift — peaks and RMS misfit, drawn in the figure.
+    #[arg(long, value_name = "FILE.csv")]
+    measured: Option<PathBuf>,
     /// Output format on standard output (csv: one speed's wave, or the points over several speeds).
     #[arg(long, value_enum, default_value_t = TableFormat::Text)]
     format: TableFormat,
@@ -42,13 +47,69 @@ pub struct StationaryArgs {
     out: Option<PathBuf>,
 }
 
+/// The steady wave of the scenario's axles on its `[ground]` (docs/theory.md §19): a Fourier integral per speed, no
+/// mesh — `--element-length` and the Winkler soil's and the ballast's options are refused by name.
+fn on_the_ground(args: &StationaryArgs, scenario: &Scenario, speeds: &[f64]) -> Result<()> {
+    let why = "on a [ground] the wave is a Fourier integral of the composite beam on the strip, with no mesh, no \
+               Winkler damping and (not yet) no ballast friction";
+    for (name, given) in [
+        ("--element-length", args.element_length),
+        ("--damping-ratio", args.damping_ratio),
+        ("--distributed-friction", args.distributed_friction),
+    ] {
+        if let Some(value) = given {
+            return Err(scenario::error::invalid(name, value, format!("leave it out: {why}")).into());
+        }
+    }
+    if scenario.friction.distributed.is_some() {
+        return Err(scenario::error::invalid("friction.distributed", "given", format!("leave it out: {why}")).into());
+    }
+    let mut window = study::ground::WaveWindow::default();
+    if let Some(text) = &args.domain {
+        (window.behind, window.ahead) = behind_ahead(text)?;
+    }
+    let record = args.measured.as_deref().map(|path| MeasuredRecord::read(path, "--measured")).transpose()?;
+    if let Some(record) = &record {
+        window = record.widened(window);
+    }
+    if let Some(folder) = &args.out {
+        prepare_output_folder("--out", folder)?;
+        for name in ["stationary.json", "wave.csv", "speeds.csv", "ground-wave.png", "ground-wave.svg"] {
+            check_output_file("--out", &folder.join(name))?;
+        }
+    }
+    let threads = std::thread::available_parallelism().map_or(1, usize::from);
+    crate::progress::announce("stationary", &runner::cost::Estimate::ground(speeds.len(), threads));
+    let stop = Some(crate::interrupt::stop_flag());
+    let bar = crate::progress::bar("stationary", Some(speeds.len() as u64), args.format != TableFormat::Text);
+    let progress = |done: usize| bar.set_position(done as u64);
+    let mut study = study::ground::GroundWaveStudy::of(scenario, speeds, window, stop, &progress)?;
+    bar.finish_and_clear();
+    if let Some(record) = &record {
+        study.compare_with(record, "--measured")?;
+    }
+    crate::print_output(&study, args.format)?;
+    if let Some(folder) = &args.out {
+        let (name, _, csv) = study.table();
+        write_atomically(&folder.join("stationary.json"), serde_json::to_string_pretty(&study.file())?.as_bytes())?;
+        write_atomically(&folder.join(name), csv.as_bytes())?;
+        let drawn = write_figures("--out", &[study.figure(record.as_ref())], folder)?;
+        eprintln!("wrote {} (stationary.json, {name}, {})", folder.display(), drawn.join(", "));
+    }
+    Ok(())
+}
+
+/// `--domain BEHIND:AHEAD` (m) as two numbers.
+fn behind_ahead(text: &str) -> Result<(f64, f64)> {
+    let bad = || scenario::error::invalid("--domain", text, "expected BEHIND:AHEAD in metres, e.g. 60:60");
+    let (behind, ahead) = text.split_once(':').ok_or_else(bad)?;
+    Ok((behind.trim().parse().map_err(|_| bad())?, ahead.trim().parse().map_err(|_| bad())?))
+}
+
 fn domain(args: &StationaryArgs) -> Result<Domain> {
     let mut domain = Domain::default();
     if let Some(text) = &args.domain {
-        let bad = || scenario::error::invalid("--domain", text, "expected BEHIND:AHEAD in metres, e.g. 60:60");
-        let (behind, ahead) = text.split_once(':').ok_or_else(bad)?;
-        domain.behind = behind.trim().parse().map_err(|_| bad())?;
-        domain.ahead = ahead.trim().parse().map_err(|_| bad())?;
+        (domain.behind, domain.ahead) = behind_ahead(text)?;
     }
     if let Some(l) = args.element_length {
         domain.element_length = l;
@@ -68,9 +129,16 @@ pub fn run(args: &StationaryArgs) -> Result<()> {
         ..Default::default()
     };
     let scenario = overrides.apply(scenario);
+    if let (Some(path), None) = (&args.measured, &scenario.ground) {
+        let why = "a measured record is compared with the steady wave on a [ground] only";
+        return Err(scenario::error::invalid("--measured", path.display(), why).into());
+    }
     let speeds = args.speed.speeds()?;
     if let Some(&v) = speeds.iter().find(|v| !(v.is_finite() && **v >= 0.0)) {
         return Err(scenario::error::invalid("--speed", v, "must be finite and ≥ 0 (m/s)").into());
+    }
+    if scenario.ground.is_some() {
+        return on_the_ground(args, &scenario, &speeds);
     }
     let domain = domain(args)?;
     if let Some(folder) = &args.out {

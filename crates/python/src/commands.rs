@@ -56,6 +56,9 @@ pub(crate) fn stationary_wave(
 ) -> PyResult<StationaryTexts> {
     scenario::speeds::check_count("speeds", speeds.len()).map_err(to_python)?;
     let scenario = overrides(&keywords)?.apply(Source::of(kind, text)?.read()?);
+    if scenario.ground.is_some() {
+        return on_the_ground(py, &scenario, speeds, domain, progress);
+    }
     let title = scenario.title.clone();
     // What Python leaves out is the library's default domain, not a copy of it.
     let default = stationary::Domain::default();
@@ -74,12 +77,43 @@ pub(crate) fn stationary_wave(
     let study = interruptible::run_reporting(py, progress, solve)?.map_err(to_python)?;
     let waves = study.waves.iter().flatten().map(|w| (w.speed, wave_csv(w))).collect();
     let text = StationaryReport { title: &title, study: &study }.text();
-    Ok((json(&study.points)?, text, waves, study.warnings()))
+    Ok((json(&study.points)?, text, waves, study.warnings(), "stationary_wave"))
 }
 
-/// The stationary points (JSON, a list even for one speed), the text report, each found wave's CSV by speed, and
-/// the warnings.
-type StationaryTexts = (String, String, Vec<(f64, String)>, Vec<String>);
+/// `frictrack stationary` on a `[ground]`: the train's steady wave at `speeds` on the window `domain` (behind the
+/// last axle, ahead of the first; an element length is refused: the wave has no mesh).
+fn on_the_ground(
+    py: Python<'_>,
+    scenario: &scenario::Scenario,
+    speeds: Vec<f64>,
+    domain: (Option<f64>, Option<f64>, Option<f64>),
+    progress: Option<Bound<'_, PyAny>>,
+) -> PyResult<StationaryTexts> {
+    if let Some(length) = domain.2 {
+        let why = "leave it out: on a [ground] the wave is a Fourier integral, with no mesh";
+        return Err(to_python(scenario::error::invalid("element_length", length, why)));
+    }
+    let default = study::ground::WaveWindow::default();
+    let window = study::ground::WaveWindow {
+        behind: domain.0.unwrap_or(default.behind),
+        ahead: domain.1.unwrap_or(default.ahead),
+    };
+    let total = speeds.len() as f64;
+    let scenario = scenario.clone();
+    let solve = move |stop: &_, told: &interruptible::Progress| {
+        let threads = std::thread::available_parallelism().map_or(1, usize::from);
+        told.announce("frictrack.stationary", &runner::cost::Estimate::ground(speeds.len(), threads));
+        let done = |n: usize| told.set(n as f64 / total);
+        study::ground::GroundWaveStudy::of(&scenario, &speeds, window, Some(stop), &done)
+    };
+    let study = interruptible::run_reporting(py, progress, solve)?.map_err(to_python)?;
+    let waves = study.waves.iter().map(|w| (w.speed, w.csv())).collect();
+    Ok((json(&study.points)?, report::output::Output::text(&study), waves, Vec::new(), "ground_wave"))
+}
+
+/// The stationary points (JSON, a list even for one speed), the text report, each found wave's CSV by speed, the
+/// warnings and the name of the waves' columns in `columns()`.
+type StationaryTexts = (String, String, Vec<(f64, String)>, Vec<String>, &'static str);
 
 /// A study's summary (JSON), CSV, headline, lines and CSV columns with their units.
 type StudyTexts = (String, String, Vec<String>, Vec<String>, Vec<(String, String)>);

@@ -94,7 +94,7 @@ pub(crate) fn trains() -> Vec<String> {
 }
 
 /// The columns of the tables with their units, as the library writes them: a run's "histories", "snapshots" and
-/// "wheels", a stationary wave's "stationary_wave", a receptance's "receptance" and the ground's "dispersion",
+/// "wheels", a stationary wave's "stationary_wave" (on a ground "ground_wave"), a receptance's "receptance" and the ground's "dispersion",
 /// "ground_speeds" and "equivalent_stiffness" (name, unit) lists.
 #[pyfunction]
 pub(crate) fn columns() -> Vec<(&'static str, Vec<(&'static str, &'static str)>)> {
@@ -103,6 +103,7 @@ pub(crate) fn columns() -> Vec<(&'static str, Vec<(&'static str, &'static str)>)
         ("snapshots", report::run_output::SNAPSHOT_COLUMNS.to_vec()),
         ("wheels", report::vehicle_output::WHEEL_COLUMNS.to_vec()),
         ("stationary_wave", study::stationary::output::WAVE_COLUMNS.to_vec()),
+        ("ground_wave", study::ground::wave_text::WAVE_COLUMNS.to_vec()),
         ("receptance", study::receptance::text::RECEPTANCE_COLUMNS.to_vec()),
         ("dispersion", study::ground::text::DISPERSION_COLUMNS.to_vec()),
         ("ground_speeds", study::ground::text::SPEED_COLUMNS.to_vec()),

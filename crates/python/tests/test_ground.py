@@ -34,3 +34,21 @@ def test_the_ground_from_python(tmp_path):
     bad = SITE.replace("thickness = 4.0", "thickness = -4.0")
     with pytest.raises(frictrack.InputError, match=r"ground.layers\[1\].thickness = -4"):
         frictrack.ground(bad)
+
+
+def test_a_train_on_the_ground_from_python():
+    """The X2000 at Ledsgård at 70 km/h: `frictrack.stationary` on a `[ground]` gives the command line's wave — its
+    points (the deepest 6.09 mm, 12.17 m behind the first axle) and the wave as a table with its units; an element
+    length (a mesh) is refused by name."""
+    site = ROOT / "examples" / "ledsgard" / "ledsgard.toml"
+    result = frictrack.stationary(site, speeds=[70 / 3.6])
+    point = result.points[0]
+    assert point["status"] == "converged"
+    assert abs(point["max_downward_deflection"]["value"] - 6.089e-3) < 1e-6
+    assert abs(point["max_downward_deflection"]["position"] + 12.17) < 0.01
+    wave = result.waves[70 / 3.6]
+    assert wave.units == {"s": "m", "deflection": "m"}
+    assert abs(wave["deflection"].min() + 6.089e-3) < 2e-5  # the points 0.25 m apart, the peak refined between
+    assert "stationary on the ground" in str(result)
+    with pytest.raises(frictrack.InputError, match="element_length = 0.1"):
+        frictrack.stationary(site, speeds=[20.0], element_length=0.1)

@@ -32,6 +32,17 @@ pub fn listed<'a>(columns: impl IntoIterator<Item = (&'a str, &'a str)>) -> Vec<
     columns.into_iter().map(|(name, unit)| ColumnMeta { name: name.into(), unit: unit.into(), meaning: None }).collect()
 }
 
+/// `columns` as [`listed`], each name once (the first of its kind kept): the units list of a JSON whose tables
+/// share columns.
+pub fn listed_once<'a>(columns: impl IntoIterator<Item = (&'a str, &'a str)>) -> Vec<ColumnMeta> {
+    let mut seen: Vec<&str> = Vec::new();
+    listed(columns.into_iter().filter(|(name, _)| {
+        let new = !seen.contains(name);
+        seen.push(name);
+        new
+    }))
+}
+
 /// The units of `columns` in one line, for a CSV printed on standard output (after a `#`): "units (SI): speed m/s,
 /// status text, …".
 pub fn units_line<'a>(columns: impl IntoIterator<Item = (&'a str, &'a str)>) -> String {

@@ -154,6 +154,36 @@ impl crate::Scenario {
     }
 }
 
+impl crate::Scenario {
+    /// The axles the composite beam on the `[ground]` carries, a train in its frame (offsets behind the first axle,
+    /// forces downward, N): the `[load]` train, whole axles unless `load.carries` says otherwise (the composite beam
+    /// is the whole track, both rails), or the single `load.force` at the head. Refused by key: load patches, a
+    /// `[vehicle]` and a changing speed (the moving frame's steady state holds for axles at one constant speed).
+    pub fn axles_on_the_ground(&self) -> Result<fem_beam::Train> {
+        self.load.refuse_changing_speed("the steady wave on the ground")?;
+        if self.vehicle.is_some() {
+            return Err(invalid(
+                "vehicle",
+                "given",
+                "on a [ground] the steady wave takes moving forces: drop [vehicle] (the train's axles, or the single \
+                 load, are used)",
+            ));
+        }
+        let Some(train) = crate::trains::resolve(&self.load)? else {
+            return Ok(fem_beam::Train::single(self.load.force));
+        };
+        if !train.patches.is_empty() {
+            return Err(invalid(
+                "load.patches",
+                train.patches.len(),
+                "on a [ground] the steady wave takes axles only: give the train as axles",
+            ));
+        }
+        let share = self.load.carries.unwrap_or(crate::AxleShare::WholeAxle);
+        Ok(if train.name == "single" { train } else { train.scaled(share.factor()) })
+    }
+}
+
 /// A required key that is not there.
 fn missing(path: &str, what: &str) -> crate::StudyError {
     invalid(path, "missing", format!("required: {what}"))

@@ -149,8 +149,12 @@ fn optimal_device_force_is_interior() {
 fn example_scenarios_are_valid() {
     let folder = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples");
     let mut count = 0;
-    for entry in std::fs::read_dir(&folder).unwrap() {
-        let path = entry.unwrap().path();
+    // The examples and those in a folder of their own (a case with its data: examples/ledsgard).
+    let files = std::fs::read_dir(&folder).unwrap().map(|e| e.unwrap().path()).flat_map(|path| match path.is_dir() {
+        true => std::fs::read_dir(&path).unwrap().map(|e| e.unwrap().path()).collect(),
+        false => vec![path],
+    });
+    for path in files {
         if path.extension().is_some_and(|e| e == "toml") {
             let scenario = Scenario::from_path(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
             scenario.validate().unwrap_or_else(|e| panic!("{}: {e}", path.display()));
@@ -161,8 +165,8 @@ fn example_scenarios_are_valid() {
     // One per study, the HSLM bridge, the rail cars, and one per further feature (flat, random rail, measured rail,
     // matrices vehicle, vehicle groups, CSV train, axles and patches, a vehicle on ballast friction, a tensionless
     // soil, vehicles through a co-moving window, a Timoshenko rail, a receptance, a track on sleepers, voided
-    // sleepers, ballast bodies on the subgrade, a track on a layered ground).
-    assert_eq!(count, 24, "one example per study and per feature");
+    // sleepers, ballast bodies on the subgrade, a track on a layered ground, Ledsgård's X2000 on its site).
+    assert_eq!(count, 25, "one example per study and per feature");
 }
 
 fn small_case() -> scenario::Case {

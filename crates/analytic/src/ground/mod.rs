@@ -7,6 +7,7 @@
 //! - `half_space`: the half-space's stiffness, in a closed form that stays finite as ω/k → 0.
 //! - `layer`: a layer's stiffness from the transfer matrix exp(A h) of its first-order system, on sublayers thin
 //!   enough (|k|h, ωh/|C_s| ≤ 1) that neither the static limit nor thick layers lose digits.
+//! - `filon`: the Fourier integral of a piecewise cubic, exact at any s (the moving wave's last step).
 //! - `flexibility`: the surface flexibility F_zz(k, ω) of the profile, to the depth a wave reaches.
 //! - `rayleigh_modes`: the trapped Rayleigh modes' phase velocities at a frequency (det K = 0 of the free surface).
 //! - `line_support`: [`LineSupport`], a beam's support per wave: a Winkler foundation or the strip's k_eq.
@@ -16,6 +17,7 @@
 //! - `thin_layer`: the same modes by the thin-layer method (finite elements in depth), the independent check.
 //! - `strip`: [`StripGround`] — the track's strip on the ground and its equivalent stiffness k_eq(k_x, ω).
 
+mod filon;
 mod flexibility;
 mod half_space;
 mod layer;

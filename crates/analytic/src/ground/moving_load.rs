@@ -11,13 +11,15 @@
 //! characteristic wavenumber k_c (the head below it linear in ln k, as a long wave on the ground is) up to where
 //! EI k⁴ is 1e10 times the support at k_c and 100 times the inertia (the tail beyond is ≲ 3e-8 of W) — each
 //! interval bisected until a cubic through its neighbours predicts the midpoint to [`SPECTRUM_TOLERANCE`] of
-//! max|G|; the Fourier integral of that cubic is Gauss–Legendre on each interval with enough points for its phase.
-//! One spectrum serves every s and, shifted, every axle of a train.
+//! max|G|; that cubic, redrawn as cubics in k on panels at most 0.05 wide in ln k, is integrated against e^{iks}
+//! exactly (`filon`), so a deflection costs the same at any s. One spectrum serves every s and, shifted, every axle
+//! of a train: W(s) = Σ_j P_j W₁(s + d_j).
 
+use super::filon::PiecewiseCubic;
 use super::line_support::LineSupport;
-use fem_beam::FemError;
 use fem_beam::error::Result;
 use fem_beam::properties::Beam;
+use fem_beam::{Axle, FemError};
 use num_complex::Complex64;
 use rayon::prelude::*;
 use std::f64::consts::PI;
@@ -49,11 +51,16 @@ pub struct MovingSpectrum {
     log_k: Vec<f64>,
     /// G at each.
     response: Vec<Complex64>,
-    /// How many intervals a deflection sums: past them ∫|G| dk (trapezoid over the samples), which bounds what they
-    /// add to any W(s), is below [`NEGLIGIBLE`] of the whole (the far tail of short waves, many radians of e^{iks}
-    /// each).
-    intervals: usize,
+    /// G between the first sample and the last significant one (past it ∫|G| dk, trapezoid over the samples, which
+    /// bounds what the rest adds to any W(s), is below [`NEGLIGIBLE`] of the whole: the far tail of short waves) as
+    /// cubics in k on panels at most [`PANEL_LOG_WIDTH`] wide in ln k, each through four points of the cubic in ln k:
+    /// their Fourier integral is exact at any s.
+    body: PiecewiseCubic,
 }
+
+/// The widest panel (in ln k) on which the cubic in ln k is redrawn as a cubic in k: ln k departs from a cubic in k
+/// there by ~(Δ ln k)⁴/100 ≈ 6e-8 of the panel's change in ln k.
+const PANEL_LOG_WIDTH: f64 = 0.05;
 
 /// The share of ∫|G| dk whose intervals a deflection leaves out (their contribution to W(s) is at most that).
 const NEGLIGIBLE: f64 = 1e-10;
@@ -131,8 +138,8 @@ impl<'a, S: LineSupport + ?Sized> GroundedBeam<'a, S> {
             }
             (log_k, response, unsettled) = (next_k, next_g, next_unsettled);
         }
-        let intervals = significant_intervals(&log_k, &response);
-        Ok(MovingSpectrum { log_k, response, intervals })
+        let body = in_k(&log_k, &response, significant_intervals(&log_k, &response));
+        Ok(MovingSpectrum { log_k, response, body })
     }
 
     /// G at each ln k of `log_k`, in parallel.
@@ -172,28 +179,35 @@ impl MovingSpectrum {
         let low = self.log_k[0].exp();
         let (g0, slope) = (self.response[0], (self.response[1] - self.response[0]) / (self.log_k[1] - self.log_k[0]));
         let head = (g0 - slope) * low + Complex64::new(0.0, s * low * low / 2.0) * (g0 - slope / 2.0);
-        let body: Complex64 = (0..self.intervals).map(|i| self.interval_integral(i, s)).sum();
-        (head + body).re / PI
+        (head + self.body.fourier(s)).re / PI
     }
 
-    /// ∫ G(k) e^{iks} dk over interval i, G the cubic in ln k, by Gauss–Legendre with ≥ 2 points per radian.
-    fn interval_integral(&self, i: usize, s: f64) -> Complex64 {
-        let (u0, u1) = (self.log_k[i], self.log_k[i + 1]);
-        let phase = s.abs() * (u1.exp() - u0.exp());
-        let panels = (phase / 3.0).ceil().max(1.0) as usize;
-        let width = (u1 - u0) / panels as f64;
-        let mut sum = Complex64::new(0.0, 0.0);
-        for p in 0..panels {
-            let centre = u0 + (p as f64 + 0.5) * width;
-            for (x, w) in GAUSS_8 {
-                let u = centre + 0.5 * width * x;
-                let k = u.exp();
-                sum +=
-                    cubic(&self.log_k, &self.response, i, u) * Complex64::new(0.0, k * s).exp() * (k * w * 0.5 * width);
-            }
-        }
-        sum
+    /// W(s) (m, upward) under a train of `axles` (offsets d_j ≥ 0 behind the first axle, which is at s = 0; forces
+    /// P_j downward, N) at the spectrum's speed: Σ_j P_j W₁(s + d_j), the moving frame's superposition.
+    pub fn deflection_under(&self, axles: &[Axle], s: f64) -> f64 {
+        axles.iter().map(|axle| axle.force * self.deflection(s + axle.offset)).sum()
     }
+
+    /// [`Self::deflection_under`] at each of `positions` (m), in parallel.
+    pub fn wave_under(&self, axles: &[Axle], positions: &[f64]) -> Vec<f64> {
+        positions.par_iter().map(|&s| self.deflection_under(axles, s)).collect()
+    }
+}
+
+/// G on the first `intervals` intervals of the samples as cubics in k (see [`MovingSpectrum`]'s `body`).
+fn in_k(log_k: &[f64], response: &[Complex64], intervals: usize) -> PiecewiseCubic {
+    let mut body = PiecewiseCubic::default();
+    for i in 0..intervals {
+        let (u0, u1) = (log_k[i], log_k[i + 1]);
+        let panels = ((u1 - u0) / PANEL_LOG_WIDTH).ceil().max(1.0) as usize;
+        let width = (u1 - u0) / panels as f64;
+        for p in 0..panels {
+            let (start, end) = ((u0 + p as f64 * width).exp(), (u0 + (p + 1) as f64 * width).exp());
+            let at = |t: f64| cubic(log_k, response, i, (start + t * (end - start)).ln());
+            body.push(start, end, [at(0.0), at(1.0 / 3.0), at(2.0 / 3.0), at(1.0)]);
+        }
+    }
+    body
 }
 
 /// How many leading intervals hold all but [`NEGLIGIBLE`] of ∫|G| dk (trapezoid in k over the samples).
@@ -223,15 +237,3 @@ fn cubic(x: &[f64], y: &[Complex64], i: usize, u: f64) -> Complex64 {
     }
     value
 }
-
-/// 8-point Gauss–Legendre nodes and weights on [−1, 1].
-const GAUSS_8: [(f64, f64); 8] = [
-    (-0.960_289_856_497_536_3, 0.101_228_536_290_376_26),
-    (-0.796_666_477_413_626_7, 0.222_381_034_453_374_47),
-    (-0.525_532_409_916_329, 0.313_706_645_877_887_3),
-    (-0.183_434_642_495_649_8, 0.362_683_783_378_362),
-    (0.183_434_642_495_649_8, 0.362_683_783_378_362),
-    (0.525_532_409_916_329, 0.313_706_645_877_887_3),
-    (0.796_666_477_413_626_7, 0.222_381_034_453_374_47),
-    (0.960_289_856_497_536_3, 0.101_228_536_290_376_26),
-];

@@ -251,7 +251,8 @@ class Stationary:
     speed (its ``status``: "converged", "not converged", "domain too short", "no stationary wave"; peaks m, moments
     N·m, powers W; ``discretisation_error`` of the peaks from one halving of the elements), ``waves`` each found
     wave's shape by speed (m/s) as a :class:`Table` (s, deflection, slope, moment, soil_reaction, friction_force, with
-    their units), ``warnings`` what the command line warns
+    their units; on a ``[ground]`` s and deflection along the train, s = 0 at its first axle), ``warnings`` what the
+    command line warns
     (peaks resolved to worse than 1 %), ``report`` the table ``frictrack stationary`` prints (also ``str()``)."""
 
     def __init__(self, points: "list[Dict[str, Any]]", waves: Dict[float, Table], warnings: "list[str]",
@@ -271,16 +272,18 @@ def stationary(scenario: ScenarioLike = None, speeds: Sequence[float] = (),
     """The stationary wave of the scenario's load on the infinite track at ``speeds`` (m/s, by continuation in
     order) on a moving domain ``domain`` = (behind, ahead) m of ``element_length`` m elements (grown where needed;
     by default those of ``frictrack stationary``: 60 m each way, 0.25 m elements);
-    linear, tensionless and bilinear soils, ballast friction. Overrides and ``progress`` (the fraction of speeds
+    linear, tensionless and bilinear soils, ballast friction. On a ``[ground]`` the composite beam's steady wave under
+    the scenario's train (or load), a Fourier integral with no mesh: ``domain`` = (behind the last axle, ahead of the
+    first) m, 60 m each way by default, ``element_length`` refused. Overrides and ``progress`` (the fraction of speeds
     done) as for :func:`run`; Ctrl-C stops it before its next speed."""
     kind, text = _source(scenario)
     behind, ahead = (None, None) if domain is None else (float(x) for x in domain)
     length = None if element_length is None else float(element_length)
     with _Reporter(progress, "stationary") as report:
-        points, lines, waves, warnings = _native.stationary(
+        points, lines, waves, warnings, columns = _native.stationary(
             kind, text, _speeds(speeds), (behind, ahead, length), list(overrides.items()), report
         )
-    return Stationary(json.loads(points), {float(v): parse_csv(csv, COLUMNS["stationary_wave"]) for v, csv in waves},
+    return Stationary(json.loads(points), {float(v): parse_csv(csv, COLUMNS[columns]) for v, csv in waves},
                       list(warnings), lines)
 
 

@@ -103,7 +103,8 @@ def analytic(
 
 class Stationary:
     """The stationary wave per speed: `points` (dicts, as `frictrack stationary --format json`), `waves` (speed m/s →
-    the wave's shape: s, deflection, slope, moment, soil_reaction, friction_force, with their units),
+    the wave's shape: s, deflection, slope, moment, soil_reaction, friction_force, with their units; on a `[ground]`
+    s and deflection along the train),
     `warnings` (peaks resolved to worse than 1 %), `report` (the table `frictrack stationary` prints; also
     `str(result)`)."""
 
@@ -121,7 +122,8 @@ def stationary(
     **overrides: Any,
 ) -> Stationary:
     """The stationary wave on the infinite track at `speeds` (m/s) on the moving domain (behind, ahead) m (None: the
-    command line's default domain)."""
+    command line's default domain); on a `[ground]` the train's steady wave (domain behind its last axle and ahead of
+    its first; no element length)."""
 
 class Study:
     """A study preset's results: `summary`, `table` (its CSV with units), `headline`, `lines`."""

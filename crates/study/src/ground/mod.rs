@@ -2,11 +2,16 @@
 //! scenario's composite beam on its `[ground]` — the soil's Rayleigh modes and their least phase velocity, the static
 //! strip stiffness and the Winkler control, the crossing of the beam's and the soil's dispersion curves, the critical
 //! speed of the track on the ground ([`numbers`]); the steady response over speeds and its peak ([`speeds`]); the
-//! report, tables and figures ([`text`]).
+//! report, tables and figures ([`text`]); a train's steady wave on the ground (`frictrack stationary`, [`wave`]) and
+//! its report, tables and figures ([`wave_text`]); a measured record set beside it ([`measured`]).
 
+pub mod measured;
 pub mod numbers;
 pub mod speeds;
 pub mod text;
+pub mod wave;
+pub mod wave_text;
 
 pub use numbers::{DispersionPoint, GroundRequest, GroundStudy, ModesPoint, StiffnessPoint};
 pub use speeds::SpeedPoint;
+pub use wave::{GroundWave, GroundWavePoint, GroundWaveStudy, WaveWindow};

@@ -309,7 +309,7 @@ fn stiffness_curves(strip: &StripGround, reference: f64, runner: &Runner<'_>) ->
 }
 
 /// The profile in words: "2 layers (1.1 m C_s 72 m/s, 3 m C_s 41 m/s) on a half-space of C_s 100 m/s".
-fn describe(strip: &StripGround) -> String {
+pub(crate) fn describe(strip: &StripGround) -> String {
     let layers: Vec<String> = strip
         .profile
         .layers

@@ -4,6 +4,7 @@
 
 use analytic::golden::refine_peak;
 use analytic::ground::{GroundedBeam, MovingSpectrum, StripGround};
+use fem_beam::{DeflectionExtremes, Extreme};
 use scenario::error::{Result, StudyError};
 use serde::Serialize;
 
@@ -32,14 +33,28 @@ pub fn extremes(spectrum: &MovingSpectrum, speed: f64, force: f64) -> SpeedPoint
         .map(|i| -BEHIND + i as f64 * STEP)
         .map(|s| (s, spectrum.deflection(s) * force))
         .collect();
+    let extremes = refined_extremes(&samples, &|s| spectrum.deflection(s) * force);
+    SpeedPoint {
+        speed,
+        max_downward_deflection: extremes.max_downward.value,
+        max_upward_deflection: extremes.max_upward.value,
+    }
+}
+
+/// The largest downward and upward deflections (magnitudes, m; the upward one 0 where the wave never rises) of the
+/// wave `deflection` (m, upward) sampled at `samples` (s, W), each refined by golden section between the
+/// neighbours of its best sample to [`POSITION_TOLERANCE`], with where they are (s, m).
+pub fn refined_extremes(samples: &[(f64, f64)], deflection: &dyn Fn(f64) -> f64) -> DeflectionExtremes {
     let refined = |sign: f64| {
         let best = (0..samples.len()).max_by(|&i, &j| (sign * samples[i].1).total_cmp(&(sign * samples[j].1)));
         let i = best.unwrap_or(0);
         let bracket = (samples[i.saturating_sub(1)].0, samples[(i + 1).min(samples.len() - 1)].0);
-        let mut f = |s: f64| -> std::result::Result<f64, ()> { Ok(sign * spectrum.deflection(s) * force) };
-        refine_peak(&mut f, bracket, (samples[i].0, sign * samples[i].1), POSITION_TOLERANCE).map_or(0.0, |p| p.1)
+        let mut f = |s: f64| -> std::result::Result<f64, ()> { Ok(sign * deflection(s)) };
+        let (s, value) =
+            refine_peak(&mut f, bracket, (samples[i].0, sign * samples[i].1), POSITION_TOLERANCE).unwrap_or((0.0, 0.0));
+        Extreme::in_frame(value.max(0.0), s)
     };
-    SpeedPoint { speed, max_downward_deflection: refined(-1.0), max_upward_deflection: refined(1.0).max(0.0) }
+    DeflectionExtremes { max_downward: refined(-1.0), max_upward: refined(1.0) }
 }
 
 /// The extremes at `speed` of the beam on `strip`.

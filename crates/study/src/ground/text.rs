@@ -5,7 +5,7 @@
 
 use crate::ground::GroundStudy;
 use crate::ground::numbers::beam_phase_velocity;
-use report::columns::{Column, ColumnMeta, header, listed, units_line};
+use report::columns::{Column, ColumnMeta, header, listed_once, units_line};
 use report::output::{Output, pretty};
 use report::plot::{Mark, PlotSpec, Series, Stroke};
 use scenario::number::row;
@@ -70,18 +70,13 @@ pub fn check_folder(folder: &std::path::Path, what: &str) -> scenario::error::Re
 
 /// Every number's unit in the JSON: the tables' columns and the single numbers.
 fn units() -> Vec<ColumnMeta> {
-    let mut all: Vec<Column> = Vec::new();
     let singles = NUMBERS.iter().map(|&name| (name, unit(name)));
     let columns = DISPERSION_COLUMNS.into_iter().chain(SPEED_COLUMNS).chain(STIFFNESS_COLUMNS);
-    for column in singles.chain(columns).chain([("phase_velocities", unit("phase_velocities"))]) {
-        if !all.iter().any(|c| c.0 == column.0) {
-            all.push(column);
-        }
-    }
-    listed(all)
+    listed_once(singles.chain(columns).chain([("phase_velocities", unit("phase_velocities"))]))
 }
 
-fn table<T>(columns: &[Column], rows: &[T], values: impl Fn(&T) -> Vec<f64>) -> String {
+/// `rows` as CSV under the header of `columns`, each row's numbers from `values`.
+pub(crate) fn table<T>(columns: &[Column], rows: &[T], values: impl Fn(&T) -> Vec<f64>) -> String {
     let mut csv = header(columns) + "\n";
     for r in rows {
         csv.push_str(&row(&values(r)));

@@ -1,0 +1,296 @@
+//! The report of a train's steady wave on the ground (`frictrack stationary` on a `[ground]`): the text, the JSON
+//! (`stationary.json`: the points, the beam, the ground and the axles, every number's unit in `units`), the CSV
+//! (`wave.csv` for one speed, `speeds.csv` for several) and the figure — the wave along the train with its axles
+//! marked, or the peaks over speed.
+
+use crate::ground::measured::{Comparison, MeasuredRecord};
+use crate::ground::numbers::describe;
+use crate::ground::text::table;
+use crate::ground::wave::{GroundWave, GroundWavePoint, GroundWaveStudy};
+use report::columns::{Column, ColumnMeta, listed_once, units_line};
+use report::output::{Output, pretty};
+use report::plot::{Mark, PlotSpec, Series, Stroke};
+use scenario::quantities::unit;
+use serde::Serialize;
+use std::fmt::{self, Formatter};
+
+/// The columns of one speed's wave.
+pub const WAVE_COLUMNS: [Column; 2] = [("s", unit("s")), ("deflection", unit("deflection"))];
+/// The columns of the points over speeds (the JSON keys of [`GroundWavePoint`], the extremes' positions beside them).
+pub const POINT_COLUMNS: [Column; 8] = [
+    ("speed", unit("speed")),
+    ("max_downward_deflection", unit("max_downward_deflection")),
+    ("max_downward_deflection_position", unit("max_downward_deflection_position")),
+    ("max_upward_deflection", unit("max_upward_deflection")),
+    ("max_upward_deflection_position", unit("max_upward_deflection_position")),
+    ("deflection_under_load", unit("deflection_under_load")),
+    ("deflection_behind", unit("deflection_behind")),
+    ("spectrum_samples", unit("spectrum_samples")),
+];
+/// The numbers of the JSON outside its tables, with their units.
+const NUMBERS: [&str; 13] = [
+    "bending_stiffness",
+    "mass_per_length",
+    "width",
+    "force",
+    "offset",
+    "direction",
+    "shift",
+    "rms_misfit",
+    "rms_measured",
+    "measured_max_downward",
+    "measured_max_upward",
+    "computed_max_downward",
+    "computed_max_upward",
+];
+/// How far the figure reaches beyond a compared record and the train (m).
+const MARGIN: f64 = 20.0;
+/// The most waves one figure draws (more speeds: the peaks over speed).
+const MOST_WAVES: usize = 4;
+
+/// What `stationary.json` holds on a `[ground]`.
+#[derive(Debug, Serialize)]
+pub struct GroundWaveFile<'a> {
+    /// "wave.csv" (one speed's wave) or "speeds.csv" (the points).
+    pub csv: &'static str,
+    /// The scenario's title.
+    pub title: &'a str,
+    /// EI (N·m²) of the composite beam.
+    pub bending_stiffness: f64,
+    /// ρA (kg/m) of the composite beam.
+    pub mass_per_length: f64,
+    /// 2b (m).
+    pub width: f64,
+    /// The profile in words.
+    pub ground: String,
+    /// The train's name ("single" for one load).
+    pub train: &'a str,
+    /// The axles as the beam carries them: offset behind the first (m) and force (N, downward).
+    pub axles: Vec<AxleRow>,
+    /// One point per speed.
+    pub points: &'a [GroundWavePoint],
+    /// The measured record beside the wave, where one was given.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub measured: Option<&'a Comparison>,
+    /// Every number's unit.
+    pub units: Vec<ColumnMeta>,
+    /// The version that wrote it.
+    pub frictrack_version: &'static str,
+}
+
+/// One axle in the JSON.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct AxleRow {
+    /// m behind the first axle.
+    pub offset: f64,
+    /// N, downward.
+    pub force: f64,
+}
+
+/// Every number's unit in the JSON: the single numbers, the points' and the wave's columns.
+fn units() -> Vec<ColumnMeta> {
+    listed_once(NUMBERS.iter().map(|&name| (name, unit(name))).chain(POINT_COLUMNS).chain(WAVE_COLUMNS))
+}
+
+impl GroundWave {
+    /// The wave as CSV ([`WAVE_COLUMNS`]).
+    pub fn csv(&self) -> String {
+        let points: Vec<(f64, f64)> = self.s.iter().copied().zip(self.deflection.iter().copied()).collect();
+        table(&WAVE_COLUMNS, &points, |&(s, w)| vec![s, w])
+    }
+}
+
+impl GroundWaveStudy {
+    /// The wave at one speed as CSV (`wave.csv`), or the points over several (`speeds.csv`).
+    pub fn table(&self) -> (&'static str, &'static [Column], String) {
+        match self.waves.as_slice() {
+            [wave] => ("wave.csv", &WAVE_COLUMNS, wave.csv()),
+            _ => {
+                let position = |e: fem_beam::Extreme| e.position.unwrap_or(f64::NAN);
+                let csv = table(&POINT_COLUMNS, &self.points, |p| {
+                    vec![
+                        p.speed,
+                        p.max_downward_deflection.value,
+                        position(p.max_downward_deflection),
+                        p.max_upward_deflection.value,
+                        position(p.max_upward_deflection),
+                        p.deflection_under_load,
+                        p.deflection_behind,
+                        p.spectrum_samples as f64,
+                    ]
+                });
+                ("speeds.csv", &POINT_COLUMNS, csv)
+            }
+        }
+    }
+
+    /// The JSON file beside the CSV.
+    pub fn file(&self) -> GroundWaveFile<'_> {
+        GroundWaveFile {
+            csv: self.table().0,
+            title: &self.title,
+            bending_stiffness: self.beam.0,
+            mass_per_length: self.beam.1,
+            width: self.strip.width,
+            ground: describe(&self.strip),
+            train: &self.train.name,
+            axles: self.train.axles.iter().map(|a| AxleRow { offset: a.offset, force: a.force }).collect(),
+            points: &self.points,
+            measured: self.comparison.as_ref(),
+            units: units(),
+            frictrack_version: env!("CARGO_PKG_VERSION"),
+        }
+    }
+
+    /// The beam, the ground and the load in one line.
+    fn subtitle(&self) -> String {
+        let load = match self.train.axles.as_slice() {
+            [axle] => format!("one force of {:.0} kN", axle.force / 1e3),
+            axles => {
+                format!("{} ({} axles, {:.0} kN in all)", self.train.name, axles.len(), self.train.total_force() / 1e3)
+            }
+        };
+        format!(
+            "{load}; beam EI = {:.3e} N·m², {:.0} kg/m on a {} m strip of {}",
+            self.beam.0,
+            self.beam.1,
+            self.strip.width,
+            describe(&self.strip)
+        )
+    }
+
+    /// The figure: the waves along the train (up to four speeds; deflection in mm, the axles marked on the axis,
+    /// `record` drawn where it was compared), or the peaks over speed where more were asked.
+    pub fn figure(&self, record: Option<&MeasuredRecord>) -> PlotSpec {
+        let title = match self.title.is_empty() {
+            true => "Steady wave on the ground".to_string(),
+            false => format!("Steady wave on the ground — {}", self.title),
+        };
+        let title = title.as_str();
+        if self.waves.len() > MOST_WAVES {
+            let mut peaks = PlotSpec::new("ground-wave-peaks", title, "speed v (m/s)", "peak deflection (mm)");
+            peaks.subtitle = self.subtitle();
+            for (label, color, value) in [
+                ("largest downward deflection", 1, &|p: &GroundWavePoint| p.max_downward_deflection.value),
+                ("largest upward deflection", 2, &|p: &GroundWavePoint| p.max_upward_deflection.value),
+            ] as [(&str, usize, &dyn Fn(&GroundWavePoint) -> f64); 2]
+            {
+                let points = self.points.iter().map(|p| (p.speed, value(p) * 1e3)).collect();
+                peaks.series.push(Series {
+                    label: Some(label.into()),
+                    color,
+                    stroke: Stroke::Solid,
+                    markers: true,
+                    points,
+                });
+            }
+            return peaks;
+        }
+        let mut figure = PlotSpec::new(
+            "ground-wave",
+            title,
+            "s = x − x_head (m, positive ahead of the first axle)",
+            "deflection w (mm, upward positive)",
+        );
+        figure.subtitle = self.subtitle();
+        let placed: Vec<(f64, f64)> = match (&self.comparison, record) {
+            (Some(c), Some(record)) => {
+                record.x.iter().zip(&record.deflection).map(|(x, w)| (c.direction * x + c.shift, w * 1e3)).collect()
+            }
+            _ => Vec::new(),
+        };
+        // The train with its bow wave and wake (the window's), or, with a record, the record's span and the train.
+        let (from, to) = match placed.is_empty() {
+            true => (f64::NEG_INFINITY, f64::INFINITY),
+            false => placed.iter().fold((-self.train.length() - MARGIN, MARGIN), |(a, b), p| (a.min(p.0), b.max(p.0))),
+        };
+        for (i, wave) in self.waves.iter().enumerate() {
+            let inside =
+                wave.s.iter().zip(&wave.deflection).filter(|(s, _)| (from - MARGIN..=to + MARGIN).contains(*s));
+            let points = inside.map(|(s, w)| (*s, w * 1e3)).collect();
+            let label = format!("v = {:.1} m/s ({:.0} km/h)", wave.speed, wave.speed * scenario::units::KMH);
+            figure.series.push(Series {
+                label: Some(label),
+                color: i + 1,
+                stroke: Stroke::Solid,
+                markers: false,
+                points,
+            });
+        }
+        if let Some(c) = &self.comparison {
+            let name =
+                std::path::Path::new(&c.record).file_name().map_or(c.record.clone(), |n| n.to_string_lossy().into());
+            let label = format!("measured ({name}; placed at {})", placement(c));
+            figure.series.push(Series {
+                label: Some(label),
+                color: 0,
+                stroke: Stroke::Dashed,
+                markers: false,
+                points: placed,
+            });
+        }
+        figure.marks = self.train.axles.iter().map(|a| Mark { color: 0, point: (-a.offset, 0.0) }).collect();
+        figure.mark_label = "axles".into();
+        figure
+    }
+}
+
+/// Where the record was placed: "s = −x − 1.33 m".
+fn placement(c: &Comparison) -> String {
+    let x = if c.direction > 0.0 { "x" } else { "−x" };
+    let sign = if c.shift < 0.0 { "−" } else { "+" };
+    format!("s = {x} {sign} {:.2} m", c.shift.abs())
+}
+
+impl Output for GroundWaveStudy {
+    fn write_text(&self, f: &mut Formatter<'_>) -> fmt::Result {
+        let title = if self.title.is_empty() { String::new() } else { format!(" — {}", self.title) };
+        writeln!(f, "frictrack stationary on the ground{title}: {}", self.subtitle())?;
+        writeln!(
+            f,
+            "  speed (m/s)  (km/h)   max down (mm) at s (m)   max up (mm) at s (m)   down under the first axle (mm)"
+        )?;
+        for p in &self.points {
+            let at = |e: fem_beam::Extreme| e.position.map_or("—".into(), |s| format!("{s:.2}"));
+            writeln!(
+                f,
+                "  {:>11.2}  {:>6.0}   {:>13.3} {:>8}   {:>11.3} {:>8}   {:>30.3}",
+                p.speed,
+                p.speed * scenario::units::KMH,
+                p.max_downward_deflection.value * 1e3,
+                at(p.max_downward_deflection),
+                p.max_upward_deflection.value * 1e3,
+                at(p.max_upward_deflection),
+                -p.deflection_under_load * 1e3
+            )?;
+        }
+        if let Some(c) = &self.comparison {
+            writeln!(
+                f,
+                "  measured ({}): peaks {:.2} mm down, {:.2} mm up; computed at its points {:.2} down, {:.2} up",
+                c.record,
+                c.measured_max_downward * 1e3,
+                c.measured_max_upward * 1e3,
+                c.computed_max_downward * 1e3,
+                c.computed_max_upward * 1e3
+            )?;
+            writeln!(
+                f,
+                "    RMS misfit {:.2} mm against the record's RMS {:.2} mm (placed at {}, the best fit)",
+                c.rms_misfit * 1e3,
+                c.rms_measured * 1e3,
+                placement(c)
+            )?;
+        }
+        Ok(())
+    }
+
+    fn json(&self) -> serde_json::Result<String> {
+        pretty(&serde_json::to_value(self.file())?)
+    }
+
+    fn csv(&self) -> Option<String> {
+        let (_, columns, csv) = self.table();
+        Some(format!("{csv}# {}\n", units_line(columns.iter().copied())))
+    }
+}
