@@ -42,6 +42,16 @@ fn ground(c: &mut Criterion) {
             })
         });
     }
+    // The X2000 (20 axles) at 185 km/h at Ledsgård: its spectrum and its wave at the 1 105 points of the default
+    // window, as `frictrack stationary` computes a speed on a [ground].
+    let ledsgard = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/ledsgard/ledsgard.toml");
+    let ledsgard = scenario::Scenario::from_path(&ledsgard).unwrap();
+    let window = study::ground::WaveWindow::default();
+    group.bench_function("x2000_wave_at_ledsgard_185_km_per_h_2_threads", |b| {
+        b.iter(|| {
+            black_box(study::ground::GroundWaveStudy::of(&ledsgard, &[185.0 / 3.6], window, None, &|_| {}).unwrap())
+        })
+    });
     group.bench_function("strip_integral_kx_0.5_at_65_m_per_s", |b| {
         b.iter(|| black_box(strip.equivalent_stiffness(0.5, 0.5 * 65.0).unwrap()))
     });

@@ -10,6 +10,7 @@ use pyo3::prelude::*;
 use report::output::Output;
 use runner::Runner;
 use scenario::error::StudyError;
+use study::ground::measured::MeasuredRecord;
 use study::presets::{Preset, Resolution, run_preset};
 use study::stationary::output::{ErrorEstimate, StationaryStudy, wave_csv};
 use study::stationary::text::StationaryReport;
@@ -44,20 +45,26 @@ pub(crate) fn analytic(
 /// of `element_length` (m): the points as JSON, each found wave's CSV (speed, text) and the warnings; `progress`, if
 /// given, is called with the fraction of speeds done.
 #[pyfunction]
-#[pyo3(name = "stationary", signature = (kind, text, speeds, domain, keywords, progress=None))]
+#[pyo3(name = "stationary", signature = (kind, text, speeds, domain, keywords, progress=None, measured=None))]
+#[allow(clippy::too_many_arguments)]
 pub(crate) fn stationary_wave(
     py: Python<'_>,
     kind: &str,
     text: Option<String>,
     speeds: Vec<f64>,
-    domain: (Option<f64>, Option<f64>, Option<f64>),
+    domain: DomainArgument,
     keywords: Vec<(String, Bound<'_, PyAny>)>,
     progress: Option<Bound<'_, PyAny>>,
+    measured: Option<std::path::PathBuf>,
 ) -> PyResult<StationaryTexts> {
     scenario::speeds::check_count("speeds", speeds.len()).map_err(to_python)?;
     let scenario = overrides(&keywords)?.apply(Source::of(kind, text)?.read()?);
     if scenario.ground.is_some() {
-        return on_the_ground(py, &scenario, speeds, domain, progress);
+        return on_the_ground(py, &scenario, speeds, domain, progress, measured);
+    }
+    if let Some(path) = measured {
+        let why = "a measured record is compared with the steady wave on a [ground] only";
+        return Err(to_python(scenario::error::invalid("measured", path.display(), why)));
     }
     let title = scenario.title.clone();
     // What Python leaves out is the library's default domain, not a copy of it.
@@ -77,27 +84,33 @@ pub(crate) fn stationary_wave(
     let study = interruptible::run_reporting(py, progress, solve)?.map_err(to_python)?;
     let waves = study.waves.iter().flatten().map(|w| (w.speed, wave_csv(w))).collect();
     let text = StationaryReport { title: &title, study: &study }.text();
-    Ok((json(&study.points)?, text, waves, study.warnings(), "stationary_wave"))
+    Ok((json(&study.points)?, text, waves, study.warnings(), "stationary_wave", None))
 }
 
 /// `frictrack stationary` on a `[ground]`: the train's steady wave at `speeds` on the window `domain` (behind the
-/// last axle, ahead of the first; an element length is refused: the wave has no mesh).
+/// last axle, ahead of the first; an element length is refused: the wave has no mesh), with the `measured` record
+/// beside it where given.
 fn on_the_ground(
     py: Python<'_>,
     scenario: &scenario::Scenario,
     speeds: Vec<f64>,
-    domain: (Option<f64>, Option<f64>, Option<f64>),
+    domain: DomainArgument,
     progress: Option<Bound<'_, PyAny>>,
+    measured: Option<std::path::PathBuf>,
 ) -> PyResult<StationaryTexts> {
     if let Some(length) = domain.2 {
         let why = "leave it out: on a [ground] the wave is a Fourier integral, with no mesh";
         return Err(to_python(scenario::error::invalid("element_length", length, why)));
     }
     let default = study::ground::WaveWindow::default();
-    let window = study::ground::WaveWindow {
+    let mut window = study::ground::WaveWindow {
         behind: domain.0.unwrap_or(default.behind),
         ahead: domain.1.unwrap_or(default.ahead),
     };
+    let record = measured.map(|path| MeasuredRecord::read(&path, "measured")).transpose().map_err(to_python)?;
+    if let Some(record) = &record {
+        window = record.widened(window);
+    }
     let total = speeds.len() as f64;
     let scenario = scenario.clone();
     let solve = move |stop: &_, told: &interruptible::Progress| {
@@ -106,14 +119,21 @@ fn on_the_ground(
         let done = |n: usize| told.set(n as f64 / total);
         study::ground::GroundWaveStudy::of(&scenario, &speeds, window, Some(stop), &done)
     };
-    let study = interruptible::run_reporting(py, progress, solve)?.map_err(to_python)?;
+    let mut study = interruptible::run_reporting(py, progress, solve)?.map_err(to_python)?;
+    if let Some(record) = &record {
+        study.compare_with(record, "measured").map_err(to_python)?;
+    }
     let waves = study.waves.iter().map(|w| (w.speed, w.csv())).collect();
-    Ok((json(&study.points)?, report::output::Output::text(&study), waves, Vec::new(), "ground_wave"))
+    let comparison = study.comparison.as_ref().map(json).transpose()?;
+    Ok((json(&study.points)?, report::output::Output::text(&study), waves, Vec::new(), "ground_wave", comparison))
 }
 
+/// `domain` as Python gives it: behind, ahead (m) and the element length (m), each None for the default.
+type DomainArgument = (Option<f64>, Option<f64>, Option<f64>);
+
 /// The stationary points (JSON, a list even for one speed), the text report, each found wave's CSV by speed, the
-/// warnings and the name of the waves' columns in `columns()`.
-type StationaryTexts = (String, String, Vec<(f64, String)>, Vec<String>, &'static str);
+/// warnings, the name of the waves' columns in `columns()` and, on a ground, the measured record's comparison (JSON).
+type StationaryTexts = (String, String, Vec<(f64, String)>, Vec<String>, &'static str, Option<String>);
 
 /// A study's summary (JSON), CSV, headline, lines and CSV columns with their units.
 type StudyTexts = (String, String, Vec<String>, Vec<String>, Vec<(String, String)>);

@@ -38,10 +38,13 @@ def test_the_ground_from_python(tmp_path):
 
 def test_a_train_on_the_ground_from_python():
     """The X2000 at Ledsgård at 70 km/h: `frictrack.stationary` on a `[ground]` gives the command line's wave — its
-    points (the deepest 6.09 mm, 12.17 m behind the first axle) and the wave as a table with its units; an element
-    length (a mesh) is refused by name."""
+    points (the deepest 6.09 mm, 12.17 m behind the first axle), the wave as a table with its units and the measured
+    record beside it (RMS misfit 0.62 mm, as `--measured`); an element length (a mesh) is refused by name."""
     site = ROOT / "examples" / "ledsgard" / "ledsgard.toml"
-    result = frictrack.stationary(site, speeds=[70 / 3.6])
+    record = ROOT / "examples" / "ledsgard" / "x2000_70kmh.csv"
+    result = frictrack.stationary(site, speeds=[70 / 3.6], measured=record)
+    assert result.measured["direction"] == -1.0
+    assert abs(result.measured["rms_misfit"] - 0.62e-3) < 5e-6
     point = result.points[0]
     assert point["status"] == "converged"
     assert abs(point["max_downward_deflection"]["value"] - 6.089e-3) < 1e-6

@@ -102,24 +102,9 @@ mod tests {
         for theta in [0.0, 0.3, -0.999, 1.001, 2.5, -7.0, 40.0] {
             let exact = moments(theta);
             for (m, value) in exact.iter().enumerate() {
-                let f = |t: f64| Complex64::from_polar(t.powi(m as i32), theta * t);
-                let n = 2000;
-                let h = 1.0 / n as f64;
-                let simpson: Complex64 = (0..=n)
-                    .map(|i| {
-                        let weight = if i == 0 || i == n {
-                            1.0
-                        } else if i % 2 == 1 {
-                            4.0
-                        } else {
-                            2.0
-                        };
-                        f(i as f64 * h) * weight
-                    })
-                    .sum::<Complex64>()
-                    * (h / 3.0);
+                let reference = simpson(|t| Complex64::from_polar(t.powi(m as i32), theta * t), 0.0, 1.0, 2000);
                 // Simpson's error h⁴|f⁗|/180 ≤ 1e-13·θ⁴ here.
-                assert!((simpson - value).norm() < 1e-12 * (1.0 + theta.powi(4)), "μ_{m}({theta})");
+                assert!((reference - value).norm() < 1e-12 * (1.0 + theta.powi(4)), "μ_{m}({theta})");
             }
         }
     }
@@ -132,23 +117,8 @@ mod tests {
         p.push(1.0, 2.0, values);
         for s in [0.0, 0.5, 3.0, -20.0] {
             // ∫₁² k³ e^{iks} dk by 20 000 Simpson panels (error ≤ 1e-12 for |s| ≤ 20).
-            let n = 20_000;
-            let h = 1.0 / n as f64;
-            let simpson: Complex64 = (0..=n)
-                .map(|i| {
-                    let k = 1.0 + i as f64 * h;
-                    let weight = if i == 0 || i == n {
-                        1.0
-                    } else if i % 2 == 1 {
-                        4.0
-                    } else {
-                        2.0
-                    };
-                    Complex64::from_polar(k.powi(3), k * s) * weight
-                })
-                .sum::<Complex64>()
-                * (h / 3.0);
-            assert!((p.fourier(s) - simpson).norm() < 1e-10, "s = {s}");
+            let reference = simpson(|k| Complex64::from_polar(k.powi(3), k * s), 1.0, 2.0, 20_000);
+            assert!((p.fourier(s) - reference).norm() < 1e-10, "s = {s}");
         }
     }
 }

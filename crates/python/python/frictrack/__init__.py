@@ -253,14 +253,17 @@ class Stationary:
     wave's shape by speed (m/s) as a :class:`Table` (s, deflection, slope, moment, soil_reaction, friction_force, with
     their units; on a ``[ground]`` s and deflection along the train, s = 0 at its first axle), ``warnings`` what the
     command line warns
-    (peaks resolved to worse than 1 %), ``report`` the table ``frictrack stationary`` prints (also ``str()``)."""
+    (peaks resolved to worse than 1 %), ``report`` the table ``frictrack stationary`` prints (also ``str()``),
+    ``measured`` the comparison with a measured record where one was given (on a ``[ground]``: ``direction``,
+    ``shift`` m, ``rms_misfit`` and ``rms_measured`` m, the peaks of both in m), else None."""
 
     def __init__(self, points: "list[Dict[str, Any]]", waves: Dict[float, Table], warnings: "list[str]",
-                 report: str = "") -> None:
+                 report: str = "", measured: Optional[Dict[str, Any]] = None) -> None:
         self.points = points
         self.waves = waves
         self.warnings = warnings
         self.report = report
+        self.measured = measured
 
     def __str__(self) -> str:
         return self.report
@@ -268,23 +271,26 @@ class Stationary:
 
 def stationary(scenario: ScenarioLike = None, speeds: Sequence[float] = (),
                domain: Optional[Sequence[float]] = None, element_length: Optional[float] = None,
-               progress: ProgressLike = None, **overrides: Any) -> Stationary:
+               progress: ProgressLike = None, measured: "str | os.PathLike[str] | None" = None,
+               **overrides: Any) -> Stationary:
     """The stationary wave of the scenario's load on the infinite track at ``speeds`` (m/s, by continuation in
     order) on a moving domain ``domain`` = (behind, ahead) m of ``element_length`` m elements (grown where needed;
     by default those of ``frictrack stationary``: 60 m each way, 0.25 m elements);
     linear, tensionless and bilinear soils, ballast friction. On a ``[ground]`` the composite beam's steady wave under
     the scenario's train (or load), a Fourier integral with no mesh: ``domain`` = (behind the last axle, ahead of the
-    first) m, 60 m each way by default, ``element_length`` refused. Overrides and ``progress`` (the fraction of speeds
-    done) as for :func:`run`; Ctrl-C stops it before its next speed."""
+    first) m, 60 m each way by default, ``element_length`` refused; ``measured`` (a CSV of ``x_m,displacement_mm``,
+    upward positive) sets a record beside the wave at one speed, as ``--measured`` does. Overrides and ``progress``
+    (the fraction of speeds done) as for :func:`run`; Ctrl-C stops it before its next speed."""
     kind, text = _source(scenario)
     behind, ahead = (None, None) if domain is None else (float(x) for x in domain)
     length = None if element_length is None else float(element_length)
     with _Reporter(progress, "stationary") as report:
-        points, lines, waves, warnings, columns = _native.stationary(
-            kind, text, _speeds(speeds), (behind, ahead, length), list(overrides.items()), report
+        record = None if measured is None else os.fspath(measured)
+        points, lines, waves, warnings, columns, compared = _native.stationary(
+            kind, text, _speeds(speeds), (behind, ahead, length), list(overrides.items()), report, record
         )
     return Stationary(json.loads(points), {float(v): parse_csv(csv, COLUMNS[columns]) for v, csv in waves},
-                      list(warnings), lines)
+                      list(warnings), lines, None if compared is None else json.loads(compared))
 
 
 class Study:

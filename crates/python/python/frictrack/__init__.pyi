@@ -112,6 +112,7 @@ class Stationary:
     report: str
     waves: Dict[float, Table]
     warnings: List[str]
+    measured: Optional[Dict[str, Any]]
 
 def stationary(
     scenario: ScenarioLike = None,
@@ -119,11 +120,12 @@ def stationary(
     domain: Optional[Sequence[float]] = None,
     element_length: Optional[float] = None,
     progress: ProgressLike = None,
+    measured: Union[str, "os.PathLike[str]", None] = None,
     **overrides: Any,
 ) -> Stationary:
     """The stationary wave on the infinite track at `speeds` (m/s) on the moving domain (behind, ahead) m (None: the
     command line's default domain); on a `[ground]` the train's steady wave (domain behind its last axle and ahead of
-    its first; no element length)."""
+    its first; no element length; `measured` a record set beside the wave at one speed)."""
 
 class Study:
     """A study preset's results: `summary`, `table` (its CSV with units), `headline`, `lines`."""
