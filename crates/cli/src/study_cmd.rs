@@ -126,6 +126,7 @@ pub fn run_study(
     borrowed: &[std::path::PathBuf],
 ) -> Result<(StudyData, runner::Journal)> {
     let (out, quiet) = (options.out.as_path(), options.quiet);
+    base.refuse_sweep_on_the_ground()?;
     let case = base.build()?;
     crate::scenario_args::print_warnings(base, &case);
     prepare_output_folder("--out", out)?;

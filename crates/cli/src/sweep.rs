@@ -53,6 +53,7 @@ pub fn run(args: &SweepArgs) -> Result<()> {
         return Err(invalid("--speed", speed, "sweep runs many speeds: give --speeds A:B:STEP").into());
     }
     let scenario = args.scenario.load()?;
+    scenario.refuse_sweep_on_the_ground()?;
     let case = scenario.build()?;
     let all_speeds = match &args.speeds {
         Some(range) => parse_range(range)?,

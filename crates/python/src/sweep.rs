@@ -29,6 +29,7 @@ pub(crate) fn sweep(
     if speeds.is_empty() {
         return Err(to_python(scenario::error::invalid("speeds", "[]", "give at least one speed (m/s)")));
     }
+    scenario.refuse_sweep_on_the_ground().map_err(to_python)?;
     let case = scenario.build().map_err(to_python)?;
     let warnings = scenario::diagnostics::sweep_warnings(&scenario, &speeds).map_err(to_python)?;
     let warnings = warnings.iter().map(ToString::to_string).collect();

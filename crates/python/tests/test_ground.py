@@ -55,3 +55,14 @@ def test_a_train_on_the_ground_from_python():
     assert "stationary on the ground" in str(result)
     with pytest.raises(frictrack.InputError, match="element_length = 0.1"):
         frictrack.stationary(site, speeds=[20.0], element_length=0.1)
+
+
+def test_a_run_in_time_on_the_ground_from_python():
+    """`frictrack.run` on a `[ground]` takes the foundation fitted at its speed, as the command line does: the fit and
+    its wave error in the summary, and at the ground's critical speed the warning the command line prints."""
+    run = frictrack.run(SITE, speed=40.0)
+    fit = run.summary["ground_fit"]
+    assert fit["speed"] == 40.0 and fit["wave_error"] < 0.06
+    assert run.summary["critical_speed"] is None
+    near = frictrack.run(SITE, speed=61.4)
+    assert any(w.startswith("ground = fitted at 61.4 m/s") for w in near.warnings), near.warnings

@@ -60,8 +60,11 @@ pub struct RunSummary {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub axle_share: Option<AxleShareSummary>,
     /// The infinite beam's critical speed v_cr (m/s) — on sleepers the equivalent continuous track's; None without a
-    /// foundation.
+    /// foundation, and on a `[ground]` (the fitted foundation's is not the ground's: `frictrack ground` gives it).
     pub critical_speed: Option<f64>,
+    /// On a `[ground]`: the foundation fitted to it at the run's speed and its wave's error.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub ground_fit: Option<analytic::ground::FittedFoundation>,
     /// A Timoshenko rail in words ("Timoshenko (G = 81 GPa, κ = 0.4)"); absent for Euler–Bernoulli.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub rail_theory: Option<String>,
@@ -305,7 +308,8 @@ impl RunSummary {
                 .axles()
                 .filter(|t| t.name != "single")
                 .map(|_| AxleShareSummary::of(scenario.axle_share())),
-            critical_speed: case.critical_speed,
+            critical_speed: case.critical_speed.filter(|_| case.ground_fit.is_none()),
+            ground_fit: case.ground_fit,
             rail_theory: scenario.beam.theory.unless_default(),
             damping_ratio: case.model.foundation().damping_ratio(case.model.beam()),
             devices: device_positions.len(),

@@ -39,6 +39,20 @@ fn write_text(f: &mut Formatter<'_>, r: &RunSummary) -> fmt::Result {
             scenario::number::significant(r.damping_ratio, 12)
         )?;
     }
+    if let Some(fit) = &r.ground_fit {
+        writeln!(
+            f,
+            "  ground: a foundation fitted to it at {:.2} m/s — k_f = {:.4e} N/m², c = {:.4e} N·s/m², {:.0} kg/m of \
+             ground moving with the beam; its steady wave is the exact one on the ground to {:.1} % (deepest point \
+             {:+.1} %)",
+            fit.speed,
+            fit.stiffness,
+            fit.damping,
+            fit.co_vibrating_mass,
+            100.0 * fit.wave_error,
+            100.0 * fit.peak_error
+        )?;
+    }
     write_friction(f, r)?;
     if let Some(soil) = &r.soil {
         write_soil(f, soil)?;

@@ -224,6 +224,7 @@ impl<'a> Runner<'a> {
     /// a failed run: per case, one row per speed of its grid, in its order (an interruption is still an error).
     pub fn sweep_grids_keeping(&self, cases: &[Case], grids: &[Vec<f64>]) -> Result<Vec<Vec<SweepRow>>> {
         grids.iter().try_for_each(|g| check_speeds(g))?;
+        cases.iter().zip(grids).try_for_each(|(case, g)| check_fitted(case, g))?;
         let pairs: Vec<(usize, f64)> =
             grids.iter().enumerate().flat_map(|(c, g)| g.iter().map(move |&v| (c, v))).collect();
         self.announce_points(cases, &pairs);
@@ -244,6 +245,7 @@ impl<'a> Runner<'a> {
     /// `speeds`, identical for any thread count.
     pub fn sweep_many(&self, cases: &[Case], speeds: &[f64]) -> Result<Vec<Vec<SweepPoint>>> {
         check_speeds(speeds)?;
+        cases.iter().try_for_each(|case| check_fitted(case, speeds))?;
         let pairs = case_speed_pairs(cases.len(), speeds);
         self.announce_points(cases, &pairs);
         let mut points = self.map(&pairs, |&(c, speed)| self.point(&cases[c], speed))?.into_iter();
@@ -259,6 +261,17 @@ fn point_key(case: &Case, speed: f64) -> String {
 /// Every (case index, speed) of `cases` cases swept over `speeds`, case by case: one pool runs them all.
 fn case_speed_pairs(cases: usize, speeds: &[f64]) -> Vec<(usize, f64)> {
     (0..cases).flat_map(|c| speeds.iter().map(move |&v| (c, v))).collect()
+}
+
+/// A case on a foundation fitted to the ground runs at the speed it was fitted at only: a sweep over others is refused
+/// before any run (each would fail alone).
+fn check_fitted(case: &Case, speeds: &[f64]) -> Result<()> {
+    match case.ground_fit {
+        Some(fit) if speeds.iter().any(|&v| v != fit.speed) => {
+            Err(scenario::Scenario::sweep_on_the_ground(format!("fitted at {} m/s", fit.speed)))
+        }
+        _ => Ok(()),
+    }
 }
 
 /// Every speed of a sweep must be finite and positive.

@@ -42,13 +42,27 @@ pub(crate) fn simulate_until(case: &Case, settings: &RunSettings, stop: Option<&
     simulate_observed(case, settings, stop, &mut |_| true)
 }
 
-/// The same, with `observer` called after every step (it may stop the run early by returning false).
+/// The same, with `observer` called after every step (it may stop the run early by returning false). A case on a
+/// foundation fitted to the ground runs at the speed it was fitted at only.
 pub fn simulate_observed(
     case: &Case,
     settings: &RunSettings,
     stop: Option<&AtomicBool>,
     observer: &mut dyn FnMut(&StepView<'_>) -> bool,
 ) -> Result<RunResult> {
+    if let Some(fit) = &case.ground_fit {
+        let speed = settings.moving.speed;
+        if (speed - fit.speed).abs() > 1e-9 * fit.speed.max(1.0) || !settings.moving.profile.is_empty() {
+            return Err(scenario::error::invalid(
+                "ground",
+                format!("fitted at {} m/s", fit.speed),
+                format!(
+                    "a run at {speed} m/s needs the foundation fitted at its own speed: set load.speed (or --speed) \
+                     and run each speed alone; `frictrack stationary --speeds` gives the exact linear wave over speeds"
+                ),
+            ));
+        }
+    }
     let simulation = Simulation::new(&case.model, &case.interactions, settings)?;
     let stopped = || stop.is_some_and(|s| s.load(Ordering::Relaxed));
     let result = simulation.run_observed(&mut |view| observer(view) && !stopped())?;

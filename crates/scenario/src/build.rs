@@ -40,15 +40,11 @@ impl Scenario {
     }
 
     /// The assembled beam model (beam, mesh, foundation with its damping and absorbing zones, supports), checked;
-    /// refuses degenerate meshes and mechanisms ([`crate::diagnostics::refuse_degenerate`]).
+    /// refuses degenerate meshes and mechanisms ([`crate::diagnostics::refuse_degenerate`]). On a `[ground]`, the
+    /// model on the foundation fitted to it at `load.speed` ([`Scenario::on_fitted_foundation`]).
     pub fn model(&self) -> Result<BeamModel> {
         if self.ground.is_some() {
-            return Err(invalid(
-                "ground",
-                "given",
-                "a finite-element model on a [ground] needs an equivalent foundation fitted to its k_eq, not built \
-                 yet: `frictrack ground` computes this track on this ground",
-            ));
+            return self.on_fitted_foundation()?.0.model();
         }
         let beam = self.beam;
         beam.validate()?;
@@ -222,8 +218,13 @@ impl Scenario {
         Ok(sections.interactions(model)?)
     }
 
-    /// Build the model, contact set and run settings, checking every value on the way.
+    /// Build the model, contact set and run settings, checking every value on the way; on a `[ground]`, on the
+    /// foundation fitted to it at `load.speed`, the fit kept in [`Case::ground_fit`].
     pub fn build(&self) -> Result<Case> {
+        if self.ground.is_some() {
+            let (fitted, fit) = self.on_fitted_foundation()?;
+            return Ok(Case { ground_fit: Some(fit), ..fitted.build()? });
+        }
         let model = self.model()?;
         self.refuse_a_lever(&model)?;
         let interactions = self.placed_on(&model)?;
@@ -245,7 +246,7 @@ impl Scenario {
             sweep.validate("sweep")?;
         }
         let critical_speed = crate::speeds::SpeedScale::of(self)?.critical_speed;
-        Ok(Case { model, interactions, settings, critical_speed, fingerprint: self.fingerprint() })
+        Ok(Case { model, interactions, settings, critical_speed, fingerprint: self.fingerprint(), ground_fit: None })
     }
 
     /// See [`Case::fingerprint`].
@@ -324,9 +325,13 @@ impl Scenario {
     }
 
     /// What the beam carries of a train's axles ([`crate::LoadSection::share_on`] for this scenario's foundation and
-    /// sleepers: a rail on either is a track, one rail carrying half of each axle).
+    /// sleepers: a rail on either is a track, one rail carrying half of each axle; on a `[ground]` the composite beam
+    /// is the whole track and carries whole axles, unless `load.carries` says otherwise).
     pub fn axle_share(&self) -> crate::AxleShare {
-        self.load.share_on(self.foundation.stiffness, self.sleepers.is_some())
+        match self.ground {
+            Some(_) => self.load.carries.unwrap_or(crate::AxleShare::WholeAxle),
+            None => self.load.share_on(self.foundation.stiffness, self.sleepers.is_some()),
+        }
     }
 
     /// `train` as the beam carries it: its axle loads times the [`Scenario::axle_share`] factor (the catalogue's

@@ -46,10 +46,28 @@ pub fn refuse_degenerate(model: &BeamModel) -> Result<()> {
     Ok(())
 }
 
+/// The wave error of a foundation fitted to the ground above which a run is warned about: 10 % of the peak, the
+/// accuracy the published models of a soft site reach against measurements.
+pub const GROUND_FIT_TOLERANCE: f64 = 0.1;
+
 /// Warnings for `scenario` built into `case`.
 pub fn warnings(scenario: &Scenario, case: &Case) -> Vec<Warning> {
     let mut out = Vec::new();
     let model = &case.model;
+    if let Some(fit) = case.ground_fit.filter(|fit| fit.wave_error > GROUND_FIT_TOLERANCE) {
+        out.push(Warning {
+            field: "ground".into(),
+            value: format!("fitted at {} m/s", fit.speed),
+            message: format!(
+                "the foundation fitted to the ground gives a steady wave {:.0} % off the exact one at this speed (its \
+                 deepest point {:+.0} %): near and above the ground's critical speed no local spring, dashpot and \
+                 mass represents the ground, so this run's numbers are the fitted foundation's; `frictrack \
+                 stationary` gives the exact linear wave on the ground",
+                100.0 * fit.wave_error,
+                100.0 * fit.peak_error
+            ),
+        });
+    }
     // β of the infinite beam on this foundation (none without one: k_f = 0 has no deflection bowl).
     if let Ok(infinite) = InfiniteBeam::new(model.beam(), model.foundation()) {
         let bowl = std::f64::consts::PI / infinite.beta();

@@ -179,8 +179,50 @@ impl crate::Scenario {
                 "on a [ground] the steady wave takes axles only: give the train as axles",
             ));
         }
-        let share = self.load.carries.unwrap_or(crate::AxleShare::WholeAxle);
-        Ok(if train.name == "single" { train } else { train.scaled(share.factor()) })
+        Ok(self.on_the_beam(train))
+    }
+}
+
+impl crate::Scenario {
+    /// The refusal of a sweep on a `[ground]` (key `ground`): a run in time takes a foundation fitted at one speed.
+    pub fn sweep_on_the_ground(value: impl std::fmt::Display) -> crate::StudyError {
+        invalid(
+            "ground",
+            value,
+            "a sweep over speeds on a [ground] would run every speed on one speed's fitted foundation: run each speed \
+             alone (`frictrack run --speed V`), or take the exact linear wave over speeds (`frictrack stationary \
+             --speeds A:B:STEP`) and the critical speed (`frictrack ground`)",
+        )
+    }
+
+    /// Refuse a sweep of this scenario where it has a `[ground]` (see [`Self::sweep_on_the_ground`]).
+    pub fn refuse_sweep_on_the_ground(&self) -> Result<()> {
+        match self.ground {
+            Some(_) => Err(Self::sweep_on_the_ground("given")),
+            None => Ok(()),
+        }
+    }
+
+    /// This scenario for a run in time: its `[ground]` replaced by a foundation fitted to the strip's k_eq along the
+    /// load's line ω = kv at `load.speed` (`GroundedBeam::fitted_foundation`: a spring and a dashpot under the beam,
+    /// the ground's co-vibrating mass added to the beam's), and the fit with its wave's error against the exact
+    /// moving-frame solution. The train is carried as on the ground (whole axles unless `load.carries` says
+    /// otherwise); a changing speed is refused (the fit holds at one speed).
+    pub fn on_fitted_foundation(&self) -> Result<(Self, analytic::ground::FittedFoundation)> {
+        let (beam, strip) = self.track_on_the_ground()?;
+        self.load.refuse_changing_speed("a foundation fitted to the ground")?;
+        let speed = self.load.speed;
+        if !(speed.is_finite() && speed >= 0.0) {
+            return Err(invalid("load.speed", speed, "must be finite and ≥ 0 (m/s)"));
+        }
+        let fit = analytic::ground::GroundedBeam::new(&beam, &strip)?.fitted_foundation(speed)?;
+        let mut fitted = self.clone();
+        fitted.ground = None;
+        fitted.foundation.stiffness = fit.stiffness;
+        fitted.foundation.damping = Some(fit.damping);
+        fitted.beam.density += fit.co_vibrating_mass / beam.area;
+        fitted.load.carries = Some(self.axle_share());
+        Ok((fitted, fit))
     }
 }
 

@@ -115,6 +115,9 @@ pub struct Case {
     /// Identifies what a run of this case at a given speed computes: a hash (64-bit FNV-1a) of the frictrack version
     /// and the scenario without its title, load speed, recorded sections and sweep range. Keys journal entries.
     pub fingerprint: u64,
+    /// On a `[ground]`: the foundation the model takes for it, fitted at one speed, and its wave's error against the
+    /// exact moving-frame solution ([`Scenario::on_fitted_foundation`]); a run at another speed is refused.
+    pub ground_fit: Option<analytic::ground::FittedFoundation>,
 }
 
 impl Scenario {

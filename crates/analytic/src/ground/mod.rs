@@ -8,6 +8,8 @@
 //! - `layer`: a layer's stiffness from the transfer matrix exp(A h) of its first-order system, on sublayers thin
 //!   enough (|k|h, ωh/|C_s| ≤ 1) that neither the static limit nor thick layers lose digits.
 //! - `filon`: the Fourier integral of a piecewise cubic, exact at any s (the moving wave's last step).
+//! - `fitted`: [`FittedFoundation`] — a spring, dashpot and co-vibrating mass fitted to a line support along a
+//!   moving load's line ω = kv, with its wave's error: what a run in time takes for the ground.
 //! - `flexibility`: the surface flexibility F_zz(k, ω) of the profile, to the depth a wave reaches.
 //! - `rayleigh_modes`: the trapped Rayleigh modes' phase velocities at a frequency (det K = 0 of the free surface).
 //! - `line_support`: [`LineSupport`], a beam's support per wave: a Winkler foundation or the strip's k_eq.
@@ -18,6 +20,7 @@
 //! - `strip`: [`StripGround`] — the track's strip on the ground and its equivalent stiffness k_eq(k_x, ω).
 
 mod filon;
+mod fitted;
 mod flexibility;
 mod half_space;
 mod layer;
@@ -29,6 +32,7 @@ mod receptance;
 mod strip;
 mod thin_layer;
 
+pub use fitted::FittedFoundation;
 pub use flexibility::{surface_flexibility, surface_stiffness};
 pub use half_space::half_space_stiffness;
 pub use layer::layer_stiffness;

@@ -172,6 +172,17 @@ impl MovingSpectrum {
         self.log_k.len()
     }
 
+    /// The samples as (k (rad/m), G, dk): each with its share of ∫ dk by the trapezoid rule in k.
+    pub fn samples_in_k(&self) -> Vec<(f64, Complex64, f64)> {
+        let k: Vec<f64> = self.log_k.iter().map(|u| u.exp()).collect();
+        (0..k.len())
+            .map(|i| {
+                let (before, after) = (k[i.saturating_sub(1)], k[(i + 1).min(k.len() - 1)]);
+                (k[i], self.response[i], 0.5 * (after - before))
+            })
+            .collect()
+    }
+
     /// W(s) (m, upward) per newton of the downward force, at s = x − vt (m; s > 0 ahead of the load).
     pub fn deflection(&self, s: f64) -> f64 {
         // Below the first sample G = G₀ + b·ln(k/k₀) (a long wave's ln on the ground, b = 0 on a spring) and

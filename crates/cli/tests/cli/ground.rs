@@ -61,8 +61,8 @@ fn ground_reports_the_critical_speeds_and_writes_its_files() {
 }
 
 /// What the command and the runs refuse, by key, with exit code 2: frequencies at 0, no `[ground]`, a `[ground]`
-/// beside a `[foundation]`, a Timoshenko composite beam, a run in time on the ground (its fitted foundation is not
-/// built yet), a bad profile.
+/// beside a `[foundation]`, a Timoshenko composite beam, a sweep or a study on the ground (a run in time takes a
+/// foundation fitted at one speed), a changing speed on it, a bad profile.
 #[test]
 fn ground_refuses_by_key() {
     let folder = temporary_folder("ground-refusals");
@@ -83,7 +83,10 @@ fn ground_refuses_by_key() {
         "loss_factor = 0.1\ntheory = \"timoshenko\"\nshear_modulus = 8e7\nshear_coefficient = 0.8",
     );
     refused(&["ground", &write_file(&folder, "timoshenko.toml", &timoshenko)], "beam.theory = timoshenko");
-    refused(&["run", &site], "ground = given");
+    refused(&["sweep", &site, "--speeds", "20:40:10"], "ground = given");
+    refused(&["study", "discrete-speed", "--scenario", &site], "ground = given");
+    let braking = example_site().replace("force = 100000.0", "force = 100000.0\nacceleration = -1.0");
+    refused(&["run", &write_file(&folder, "braking.toml", &braking), "--speed", "40"], "load.acceleration = -1");
     let flat = example_site().replace("thickness = 4.0", "thickness = 0.0");
     refused(&["ground", &write_file(&folder, "flat.toml", &flat)], "ground.layers[1].thickness = 0");
 }
@@ -106,4 +109,29 @@ fn the_receptance_on_the_ground() {
     let out = frictrack(&["receptance", &site, "--frequencies", "2:3:1", "--at", "10", "--excite", "20"]);
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(out.status.code() == Some(2) && stderr.contains("--at = 10"), "{stderr}");
+}
+
+/// A run in time on a `[ground]` takes the foundation fitted to it at its speed, and says so: at 40 m/s the run's
+/// deepest point while the load is in the middle third is the exact steady wave's (`frictrack stationary`) to within
+/// the fit's own reported wave error and 2 % more (the mesh, the time step and a finite track); the JSON carries the
+/// fit and no infinite-track critical speed (the fitted spring's is not the ground's). At the ground's critical speed
+/// the fit is off by over 10 % and the run warns, by key.
+#[test]
+fn a_run_in_time_on_the_ground_takes_a_fitted_foundation() {
+    let folder = temporary_folder("ground-run");
+    let site = write_file(&folder, "site.toml", &example_site());
+    let run = json(&frictrack(&["run", &site, "--speed", "40", "--format", "json"]));
+    let fit = &run["ground_fit"];
+    assert_eq!(fit["speed"], 40.0);
+    assert!(run["critical_speed"].is_null(), "{run}");
+    let error = fit["wave_error"].as_f64().unwrap();
+    assert!(error < 0.06, "{fit}");
+    let exact = json(&frictrack(&["stationary", &site, "--speed", "40", "--format", "json"]));
+    let exact = exact["points"][0]["max_downward_deflection"]["value"].as_f64().unwrap();
+    let window = run["window_max_downward_deflection"]["value"].as_f64().unwrap();
+    assert!((window - exact).abs() <= (error + 0.02) * exact, "run {window} vs exact {exact}, fit {fit}");
+    let near = frictrack(&["run", &site, "--speed", "61.4"]);
+    let stderr = String::from_utf8_lossy(&near.stderr);
+    assert!(near.status.success() && stderr.contains("warning: ground = fitted at 61.4 m/s"), "{stderr}");
+    assert!(String::from_utf8_lossy(&near.stdout).contains("ground: a foundation fitted to it at 61.40 m/s"));
 }

@@ -43,7 +43,7 @@ pub fn extremes(spectrum: &MovingSpectrum, speed: f64, force: f64) -> SpeedPoint
 
 /// The largest downward and upward deflections (magnitudes, m; the upward one 0 where the wave never rises) of the
 /// wave `deflection` (m, upward) sampled at `samples` (s, W), each refined by golden section between the
-/// neighbours of its best sample to [`POSITION_TOLERANCE`], with where they are (s, m).
+/// neighbours of its best sample to 1 mm in s, with where they are (s, m).
 pub fn refined_extremes(samples: &[(f64, f64)], deflection: &dyn Fn(f64) -> f64) -> DeflectionExtremes {
     let refined = |sign: f64| {
         let best = (0..samples.len()).max_by(|&i, &j| (sign * samples[i].1).total_cmp(&(sign * samples[j].1)));

@@ -13,6 +13,7 @@ use scenario::error::Result;
 /// it (`sleepers.spacing`), not as what a preset derives from it (`mesh.elements`).
 pub fn run_preset(preset: Preset, resolution: Resolution, base: &Scenario, runner: &Runner) -> Result<StudyData> {
     base.validate()?;
+    base.refuse_sweep_on_the_ground()?;
     let mut data = (preset.entry().run)(resolution, base, runner)?;
     name_the_rail(preset, base, &mut data.plots);
     let header = data.csv.lines().next().unwrap_or_default();
