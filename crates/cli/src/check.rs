@@ -109,17 +109,30 @@ fn check(path: &std::path::Path) -> Result<()> {
     Ok(())
 }
 
-/// A scenario on a `[ground]`: its beam and strip checked, described in one line (what `frictrack ground` takes).
+/// A scenario on a `[ground]`: its track and strip checked, described in one line with the commands that take it.
 fn check_on_the_ground(path: &std::path::Path, scenario: &Scenario) -> Result<()> {
-    let (beam, strip) = scenario.track_on_the_ground()?;
+    let (beam, strip, track) = scenario.ground_track()?;
     let title = if scenario.title.is_empty() { String::new() } else { format!(" \"{}\"", scenario.title) };
     let layers = strip.profile.layers.len();
+    let (what, commands) = match track {
+        scenario::ground::GroundTrack::Composite => (
+            format!("composite beam EI = {:.3e} N·m², {:.0} kg/m", beam.bending_stiffness(), beam.mass_per_length()),
+            "`frictrack ground`, `stationary`, `receptance` and `run` (on a fitted foundation) compute it",
+        ),
+        scenario::ground::GroundTrack::RailOnEmbankment { sleepers, embankment } => (
+            format!(
+                "rail EI = {:.3e} N·m² on sleepers every {} m over an embankment of EI = {:.3e} N·m²",
+                beam.bending_stiffness(),
+                sleepers.spacing,
+                embankment.bending_stiffness
+            ),
+            "`frictrack stationary` computes its steady wave",
+        ),
+    };
     println!(
-        "{}{title}: ok — composite beam EI = {:.3e} N·m², {:.0} kg/m on a {} m strip of a layered ground ({layers} \
-         layer{} on a half-space of C_s {} m/s); `frictrack ground` computes it",
+        "{}{title}: ok — {what} on a {} m strip of a layered ground ({layers} layer{} on a half-space of C_s {} m/s); \
+         {commands}",
         path.display(),
-        beam.bending_stiffness(),
-        beam.mass_per_length(),
         strip.width,
         if layers == 1 { "" } else { "s" },
         strip.profile.half_space.shear_wave_speed

@@ -34,7 +34,7 @@ impl Scenario {
     /// Check every value that the lower layers do not already name by its path.
     pub fn validate(&self) -> Result<()> {
         match &self.ground {
-            Some(_) => self.track_on_the_ground().map(|_| ()),
+            Some(_) => self.ground_track().map(|_| ()),
             None => self.build().map(|_| ()),
         }
     }
@@ -45,6 +45,13 @@ impl Scenario {
     pub fn model(&self) -> Result<BeamModel> {
         if self.ground.is_some() {
             return self.on_fitted_foundation()?.0.model();
+        }
+        if self.embankment.is_some() {
+            return Err(invalid(
+                "embankment",
+                "given",
+                "an [embankment] stands on a [ground]: give the ground under it",
+            ));
         }
         let beam = self.beam;
         beam.validate()?;
@@ -326,11 +333,12 @@ impl Scenario {
 
     /// What the beam carries of a train's axles ([`crate::LoadSection::share_on`] for this scenario's foundation and
     /// sleepers: a rail on either is a track, one rail carrying half of each axle; on a `[ground]` the composite beam
-    /// is the whole track and carries whole axles, unless `load.carries` says otherwise).
+    /// is the whole track and carries whole axles, a rail on sleepers half, unless `load.carries` says otherwise).
     pub fn axle_share(&self) -> crate::AxleShare {
-        match self.ground {
-            Some(_) => self.load.carries.unwrap_or(crate::AxleShare::WholeAxle),
-            None => self.load.share_on(self.foundation.stiffness, self.sleepers.is_some()),
+        match (&self.ground, &self.sleepers) {
+            (Some(_), None) => self.load.carries.unwrap_or(crate::AxleShare::WholeAxle),
+            (Some(_), Some(_)) => self.load.carries.unwrap_or(crate::AxleShare::OneRail),
+            (None, _) => self.load.share_on(self.foundation.stiffness, self.sleepers.is_some()),
         }
     }
 

@@ -119,11 +119,27 @@ impl SoilSection {
     }
 }
 
+/// What stands on a `[ground]`.
+#[derive(Debug, Clone, PartialEq)]
+pub enum GroundTrack {
+    /// The `[beam]` is the composite track-and-embankment beam (whole axles by default).
+    Composite,
+    /// The `[beam]` is one rail on its pads, sleepers and ballast (per rail seat) over an embankment under both rails
+    /// (half an axle by default).
+    RailOnEmbankment {
+        /// Pads, sleepers and ballast.
+        sleepers: fem_beam::Sleepers,
+        /// The embankment beam.
+        embankment: analytic::ground::Embankment,
+    },
+}
+
 impl crate::Scenario {
-    /// The scenario's beam and its `[ground]`'s strip, checked: an Euler–Bernoulli beam (the composite
-    /// track-and-embankment beam), the ground in place of a `[foundation]` and without `[sleepers]` (the two-beam
-    /// track on an embankment is not built yet).
-    pub fn track_on_the_ground(&self) -> Result<(fem_beam::Beam, analytic::ground::StripGround)> {
+    /// The scenario's beam, its `[ground]`'s strip and what the beam is, checked: an Euler–Bernoulli beam, the ground
+    /// in place of a `[foundation]`; the beam the composite track-and-embankment beam, or one rail on `[sleepers]`
+    /// over an `[embankment]` (the two-beam track; the sleepers spread as their long-wave twin, so without
+    /// exceptions).
+    pub fn ground_track(&self) -> Result<(fem_beam::Beam, analytic::ground::StripGround, GroundTrack)> {
         let Some(ground) = &self.ground else {
             return Err(missing("ground", "a [ground] section: the layered ground under the track"));
         };
@@ -134,23 +150,58 @@ impl crate::Scenario {
                 "a [ground] replaces the Winkler [foundation]: remove one of the two tables",
             ));
         }
-        if self.sleepers.is_some() {
-            return Err(invalid(
-                "sleepers",
-                "given",
-                "on a [ground] the track is one composite beam ([beam]); rail, sleepers and ballast on an embankment \
-                 beam are not built yet",
-            ));
-        }
         self.beam.validate()?;
         if self.beam.shear_stiffness().is_some() {
             return Err(invalid(
                 "beam.theory",
                 "timoshenko",
-                "must be euler-bernoulli on a [ground]: the composite track-and-embankment beam",
+                "must be euler-bernoulli on a [ground]: the composite track-and-embankment beam, or the rail",
             ));
         }
-        Ok((self.beam, ground.strip()?))
+        let track = match (&self.sleepers, &self.embankment) {
+            (None, None) => GroundTrack::Composite,
+            (Some(section), Some(embankment)) => {
+                if !section.exceptions.is_empty() {
+                    return Err(invalid(
+                        "sleepers.exceptions",
+                        format!("{} given", section.exceptions.len()),
+                        "on a [ground] the sleepers are spread as their long-wave twin, which has no voided, \
+                         tensionless, frictional or rescaled sleeper",
+                    ));
+                }
+                GroundTrack::RailOnEmbankment { sleepers: section.sleepers()?, embankment: embankment.embankment()? }
+            }
+            (Some(_), None) => {
+                return Err(missing(
+                    "embankment",
+                    "the embankment beam the sleepers' ballast rests on, under both rails: bending_stiffness (N·m²), \
+                     mass_per_length (kg/m)",
+                ));
+            }
+            (None, Some(_)) => {
+                return Err(invalid(
+                    "embankment",
+                    "given",
+                    "an [embankment] carries a rail on [sleepers]: give them, or fold the embankment into the \
+                     composite [beam]",
+                ));
+            }
+        };
+        Ok((self.beam, ground.strip()?, track))
+    }
+
+    /// [`Self::ground_track`] where it is the composite beam — what `frictrack ground`, the receptance and a run in
+    /// time on the ground take; the two-beam track is refused by key (`embankment`).
+    pub fn track_on_the_ground(&self) -> Result<(fem_beam::Beam, analytic::ground::StripGround)> {
+        match self.ground_track()? {
+            (beam, strip, GroundTrack::Composite) => Ok((beam, strip)),
+            (_, _, GroundTrack::RailOnEmbankment { .. }) => Err(invalid(
+                "embankment",
+                "given",
+                "this takes the composite track-and-embankment beam on the ground; the rail on sleepers over an \
+                 embankment is computed by `frictrack stationary` (its steady wave) only, so far",
+            )),
+        }
     }
 }
 

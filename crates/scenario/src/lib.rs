@@ -21,6 +21,7 @@ mod build;
 pub mod contact;
 mod deck;
 pub mod diagnostics;
+pub mod embankment;
 pub mod error;
 pub mod ground;
 pub mod load_section;
@@ -71,6 +72,10 @@ pub struct Scenario {
     /// (docs/theory.md §19).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub ground: Option<ground::GroundSection>,
+    /// The embankment beam under the whole track, on a `[ground]`, carrying the rail on `[sleepers]` (the two-beam
+    /// track, docs/theory.md §19).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub embankment: Option<embankment::EmbankmentSection>,
     /// Discrete supports — rail pads on sleepers on ballast — beside (or instead of) the soil.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub sleepers: Option<sleepers::SleepersSection>,

@@ -165,8 +165,9 @@ fn example_scenarios_are_valid() {
     // One per study, the HSLM bridge, the rail cars, and one per further feature (flat, random rail, measured rail,
     // matrices vehicle, vehicle groups, CSV train, axles and patches, a vehicle on ballast friction, a tensionless
     // soil, vehicles through a co-moving window, a Timoshenko rail, a receptance, a track on sleepers, voided
-    // sleepers, ballast bodies on the subgrade, a track on a layered ground, Ledsgård's X2000 on its site).
-    assert_eq!(count, 25, "one example per study and per feature");
+    // sleepers, ballast bodies on the subgrade, a track on a layered ground, Ledsgård's X2000 on its site as a
+    // composite beam and as a rail on sleepers over the embankment).
+    assert_eq!(count, 26, "one example per study and per feature");
 }
 
 fn small_case() -> scenario::Case {

@@ -17,6 +17,8 @@
 //!   Fourier integral over an adaptively sampled spectrum.
 //! - `receptance`: the beam's point receptance α(ω) on a line support (the ground's strip, or a spring).
 //! - `thin_layer`: the same modes by the thin-layer method (finite elements in depth), the independent check.
+//! - `track_on_embankment`: [`TrackOnEmbankment`] — a rail on pads, sleepers and ballast over an embankment beam on
+//!   a support (the two-beam track), as the rail's line support.
 //! - `strip`: [`StripGround`] — the track's strip on the ground and its equivalent stiffness k_eq(k_x, ω).
 
 mod filon;
@@ -31,6 +33,7 @@ mod rayleigh_modes;
 mod receptance;
 mod strip;
 mod thin_layer;
+mod track_on_embankment;
 
 pub use fitted::FittedFoundation;
 pub use flexibility::{surface_flexibility, surface_stiffness};
@@ -43,3 +46,4 @@ pub use rayleigh_modes::rayleigh_phase_velocities;
 pub use receptance::RECEPTANCE_TOLERANCE;
 pub use strip::{STRIP_TOLERANCE, StripGround};
 pub use thin_layer::{ThinLayerMesh, thin_layer_phase_velocity};
+pub use track_on_embankment::{Embankment, TrackOnEmbankment};

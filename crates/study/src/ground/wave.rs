@@ -6,10 +6,11 @@
 
 use crate::ground::measured::{Comparison, MeasuredRecord};
 use crate::ground::speeds::refined_extremes;
-use analytic::ground::{GroundedBeam, MovingSpectrum, StripGround};
+use analytic::ground::{GroundedBeam, LineSupport, MovingSpectrum, StripGround, TrackOnEmbankment};
 use fem_beam::{Extreme, Train};
 use scenario::Scenario;
 use scenario::error::{Result, StudyError, invalid};
+use scenario::ground::GroundTrack;
 use serde::Serialize;
 
 /// Spacing of the wave's points (m): a tenth of the shortest wave a composite beam on soft ground carries (its
@@ -95,10 +96,12 @@ pub struct GroundWavePoint {
 pub struct GroundWaveStudy {
     /// The scenario's title.
     pub title: String,
-    /// The composite beam's EI (N·m²) and ρA (kg/m).
+    /// The beam's EI (N·m²) and ρA (kg/m): the composite beam's, or the rail's.
     pub beam: (f64, f64),
     /// The strip of ground under it.
     pub strip: StripGround,
+    /// The composite beam, or one rail on sleepers over an embankment.
+    pub track: GroundTrack,
     /// The axles as the beam carries them.
     pub train: Train,
     /// One point per speed.
@@ -121,10 +124,18 @@ impl GroundWaveStudy {
         stop: Option<&std::sync::atomic::AtomicBool>,
         progress: &dyn Fn(usize),
     ) -> Result<Self> {
-        let (beam, strip) = scenario.track_on_the_ground()?;
+        let (beam, strip, track) = scenario.ground_track()?;
         let train = scenario.axles_on_the_ground()?;
         let positions = window.positions(train.length())?;
-        let grounded = GroundedBeam::new(&beam, &strip).map_err(StudyError::from)?;
+        let on_embankment;
+        let support: &dyn LineSupport = match &track {
+            GroundTrack::Composite => &strip,
+            GroundTrack::RailOnEmbankment { sleepers, embankment } => {
+                on_embankment = TrackOnEmbankment { sleepers, embankment: *embankment, ground: &strip };
+                &on_embankment
+            }
+        };
+        let grounded = GroundedBeam::new(&beam, support).map_err(StudyError::from)?;
         let (mut points, mut waves) = (Vec::with_capacity(speeds.len()), Vec::with_capacity(speeds.len()));
         for &speed in speeds {
             if stop.is_some_and(|s| s.load(std::sync::atomic::Ordering::Relaxed)) {
@@ -137,7 +148,8 @@ impl GroundWaveStudy {
             progress(points.len());
         }
         let beam = (beam.bending_stiffness(), beam.mass_per_length());
-        Ok(Self { title: scenario.title.clone(), beam, strip, train, points, waves, comparison: None })
+        let title = scenario.title.clone();
+        Ok(Self { title, beam, strip: strip.clone(), track: track.clone(), train, points, waves, comparison: None })
     }
 
     /// Set `record` beside the wave ([`MeasuredRecord::compare`]); `field` (the option that gave it) names the

@@ -10,6 +10,7 @@ use crate::ground::wave::{GroundWave, GroundWavePoint, GroundWaveStudy};
 use report::columns::{Column, ColumnMeta, listed_once, units_line};
 use report::output::{Output, pretty};
 use report::plot::{Mark, PlotSpec, Series, Stroke};
+use scenario::ground::GroundTrack;
 use scenario::quantities::unit;
 use serde::Serialize;
 use std::fmt::{self, Formatter};
@@ -150,13 +151,15 @@ impl GroundWaveStudy {
                 format!("{} ({} axles, {:.0} kN in all)", self.train.name, axles.len(), self.train.total_force() / 1e3)
             }
         };
-        format!(
-            "{load}; beam EI = {:.3e} N·m², {:.0} kg/m on a {} m strip of {}",
-            self.beam.0,
-            self.beam.1,
-            self.strip.width,
-            describe(&self.strip)
-        )
+        let track = match &self.track {
+            GroundTrack::Composite => format!("beam EI = {:.3e} N·m², {:.0} kg/m", self.beam.0, self.beam.1),
+            GroundTrack::RailOnEmbankment { sleepers, embankment } => format!(
+                "rail EI = {:.3e} N·m² on pads, {:.0} kg sleepers every {} m and ballast over an embankment of EI = \
+                 {:.3e} N·m², {:.0} kg/m",
+                self.beam.0, sleepers.mass, sleepers.spacing, embankment.bending_stiffness, embankment.mass_per_length
+            ),
+        };
+        format!("{load}; {track} on a {} m strip of {}", self.strip.width, describe(&self.strip))
     }
 
     /// The figure: the waves along the train (up to four speeds; deflection in mm, the axles marked on the axis,

@@ -1,0 +1,72 @@
+//! The rail's support when it rests on pads, sleepers and ballast over an embankment beam on the ground — the
+//! two-beam track (docs/theory.md §19). Per rail and per metre, for a wave e^{i(ωt − k_x x)} (the sleepers spread
+//! over their spacing a, their long-wave twin):
+//!
+//! ```text
+//! k_rail = k̃_p/a ∥ (−ω²m_s/a + k̃_b/a ∥ Z/2),      Z = EI_e(1 + iη_e)k_x⁴ − ρA_e ω² + k_ground(k_x, ω),
+//! ```
+//!
+//! a ∥ b = ab/(a + b) (springs in series), k̃ = k(1 + iη) + iωc each layer's dynamic stiffness per rail seat, and Z
+//! the whole embankment on the whole strip, of which each rail carries half. Rigid pads and ballast make the rail,
+//! the sleepers and the embankment one beam; a rigid embankment leaves the sleepers' twin on rigid ground.
+
+use super::line_support::LineSupport;
+use fem_beam::error::Result;
+use fem_beam::sleepers::Sleepers;
+use num_complex::Complex64;
+
+/// The embankment as a beam under the whole track.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Embankment {
+    /// EI_e (N·m²).
+    pub bending_stiffness: f64,
+    /// ρA_e (kg/m).
+    pub mass_per_length: f64,
+    /// η_e ≥ 0: EI_e → EI_e(1 + iη_e) (ω ≥ 0, as the moving load asks; at rest too, as the rail's own η).
+    pub loss_factor: f64,
+}
+
+/// One rail's support: its pads, sleepers and ballast (per rail seat) on half the embankment on half the ground.
+#[derive(Debug, Clone, Copy)]
+pub struct TrackOnEmbankment<'a, S: LineSupport + ?Sized> {
+    /// Pads, sleeper mass and ballast per rail seat, and their spacing.
+    pub sleepers: &'a Sleepers,
+    /// The embankment under both rails.
+    pub embankment: Embankment,
+    /// What carries the embankment (the ground's strip).
+    pub ground: &'a S,
+}
+
+impl<S: LineSupport + ?Sized> TrackOnEmbankment<'_, S> {
+    /// Z/2 (N/m²): half the embankment on half the ground.
+    fn half_embankment(&self, kx: f64, omega: f64) -> Result<Complex64> {
+        let e = &self.embankment;
+        let bending = e.bending_stiffness * kx.powi(4);
+        let beam = Complex64::new(bending - e.mass_per_length * omega * omega, e.loss_factor * bending);
+        Ok(0.5 * (beam + self.ground.line_stiffness(kx, omega)?))
+    }
+}
+
+/// a ∥ b = ab/(a + b).
+fn series(a: Complex64, b: Complex64) -> Complex64 {
+    a * b / (a + b)
+}
+
+impl<S: LineSupport + ?Sized> LineSupport for TrackOnEmbankment<'_, S> {
+    fn line_stiffness(&self, kx: f64, omega: f64) -> Result<Complex64> {
+        let a = self.sleepers.spacing;
+        let pad = self.sleepers.pad.dynamic_stiffness(omega) / a;
+        let ballast = self.sleepers.ballast.dynamic_stiffness(omega) / a;
+        let sleeper = Complex64::new(-omega * omega * self.sleepers.mass / a, 0.0);
+        Ok(series(pad, sleeper + series(ballast, self.half_embankment(kx, omega)?)))
+    }
+
+    /// Ten times the pad's |k̃_p|/a, and the sleepers' inertia ω²m_s/a: the series never exceeds |k̃_p|/a at rest,
+    /// and where the sleeper's mass resonates between the pad and what is below it reaches |k̃_p|²/Im k̃_p — within
+    /// ten times |k̃_p| for pads damped by 10 % or more at that frequency (the typical pad's 30 kN·s/m is 25 % at
+    /// the rail-on-pad resonance near 400 Hz). The embankment and the ground below never raise it.
+    fn stiffness_bound(&self, _kx: f64, omega: f64) -> f64 {
+        let a = self.sleepers.spacing;
+        10.0 * self.sleepers.pad.dynamic_stiffness(omega).norm() / a + omega * omega * self.sleepers.mass / a
+    }
+}

@@ -1,0 +1,90 @@
+//! The two-beam track as the rail's line support (`TrackOnEmbankment`, docs/theory.md §19): its two limits — rigid
+//! pads and ballast make one composite beam; a rigid embankment leaves the sleepers' twin on rigid ground — and its
+//! passivity.
+
+use analytic::ground::{Embankment, GroundedBeam, LineSupport, TrackOnEmbankment};
+use fem_beam::error::Result;
+use fem_beam::properties::{Beam, Foundation};
+use fem_beam::sleepers::{Layer, Sleepers};
+use num_complex::Complex64;
+
+/// Half of a support: what one rail of two stands on.
+struct Half<'a>(&'a dyn LineSupport);
+
+impl LineSupport for Half<'_> {
+    fn line_stiffness(&self, kx: f64, omega: f64) -> Result<Complex64> {
+        Ok(0.5 * self.0.line_stiffness(kx, omega)?)
+    }
+    fn stiffness_bound(&self, kx: f64, omega: f64) -> f64 {
+        0.5 * self.0.stiffness_bound(kx, omega)
+    }
+}
+
+const EMBANKMENT: Embankment = Embankment { bending_stiffness: 2e8, mass_per_length: 7560.0, loss_factor: 0.1 };
+
+/// A UIC60 rail with the embankment's loss factor.
+fn rail() -> Beam {
+    Beam { loss_factor: 0.1, ..Beam::default() }
+}
+
+/// With pads and ballast of 1e14 N/m (1e6 times the typical) and massless sleepers the rail moves with the
+/// embankment: the rail on the two-beam track is one beam of EI_r + EI_e/2 and ρA_r + ρA_e/2 on half the support,
+/// to 1e-5 of the largest deflection at rest, 30 and 60 m/s (the layers' compliance against half an embankment of
+/// 20 MN·m², 1e7·k⁴ N/m², is 1e-7 at k = 1 rad/m and 1e-3 at 10 rad/m, where little of the wave is).
+#[test]
+fn rigid_layers_make_one_beam() {
+    let ground = Foundation::linear(2e7, 3e5);
+    let rigid = Layer { stiffness: 1e14, damping: 0.0, loss_factor: 0.0 };
+    let sleepers = Sleepers { mass: 0.0, pad: rigid, ballast: rigid, ..Sleepers::default() };
+    let embankment = Embankment { bending_stiffness: 2e7, ..EMBANKMENT };
+    let track = TrackOnEmbankment { sleepers: &sleepers, embankment, ground: &ground };
+    let rail = rail();
+    let composite = Beam {
+        youngs_modulus: 1.0,
+        second_moment: rail.bending_stiffness() + 0.5 * embankment.bending_stiffness,
+        area: 1.0,
+        density: rail.mass_per_length() + 0.5 * embankment.mass_per_length,
+        ..rail
+    };
+    let half = Half(&ground);
+    for speed in [0.0, 30.0, 60.0] {
+        let two_beams = GroundedBeam::new(&rail, &track).unwrap().spectrum(speed).unwrap();
+        let one_beam = GroundedBeam::new(&composite, &half).unwrap().spectrum(speed).unwrap();
+        let largest = one_beam.deflection(0.0).abs();
+        for s in [-20.0, -5.0, -1.0, 0.0, 1.0, 5.0, 20.0] {
+            let difference = (two_beams.deflection(s) - one_beam.deflection(s)).abs();
+            assert!(difference < 1e-5 * largest, "{speed} m/s, s = {s}: {difference:e} of {largest:e}");
+        }
+    }
+}
+
+/// On an embankment 1e12 times stiffer than the track the rail's support is the sleepers' long-wave twin on rigid
+/// ground (`Sleepers::dynamic_stiffness_per_metre`, written independently) to 1e-9, at any wavenumber and frequency.
+#[test]
+fn a_rigid_embankment_leaves_the_sleepers_twin() {
+    let rigid = Foundation::linear(1e22, 0.0);
+    let sleepers = Sleepers::default();
+    let track = TrackOnEmbankment { sleepers: &sleepers, embankment: EMBANKMENT, ground: &rigid };
+    for (kx, omega) in [(0.01, 0.0), (0.5, 30.0), (2.0, 600.0), (10.0, 3000.0)] {
+        let expected = sleepers.dynamic_stiffness_per_metre(omega);
+        let got = track.line_stiffness(kx, omega).unwrap();
+        assert!((got - expected).norm() < 1e-9 * expected.norm(), "({kx}, {omega}): {got} vs {expected}");
+    }
+}
+
+/// A damped track is passive: Im k_rail > 0 at every ω > 0 (it takes energy from a wave), and real at rest but for
+/// the embankment's loss factor; its bound holds (|k_rail| ≤ the bound) with the typical pads' damping.
+#[test]
+fn the_two_beam_track_is_passive() {
+    let ground = Foundation::linear(2e7, 3e5);
+    let sleepers = Sleepers::default();
+    let track = TrackOnEmbankment { sleepers: &sleepers, embankment: EMBANKMENT, ground: &ground };
+    for i in 0..40 {
+        let kx = 0.01 * 1.3f64.powi(i);
+        for omega in [1.0, 50.0, 400.0, 2000.0] {
+            let k = track.line_stiffness(kx, omega).unwrap();
+            assert!(k.im > 0.0, "({kx}, {omega}): {k}");
+            assert!(k.norm() <= track.stiffness_bound(kx, omega), "({kx}, {omega}): {k}");
+        }
+    }
+}
