@@ -169,6 +169,14 @@ impl crate::Scenario {
                          tensionless, frictional or rescaled sleeper",
                     ));
                 }
+                if let Some(mass) = section.ballast.mass {
+                    return Err(invalid(
+                        "sleepers.ballast.mass",
+                        mass,
+                        "on a [ground] the ballast is the layer between the sleepers and the [embankment] (which is \
+                         the mass below it): leave the ballast body out",
+                    ));
+                }
                 GroundTrack::RailOnEmbankment { sleepers: section.sleepers()?, embankment: embankment.embankment()? }
             }
             (Some(_), None) => {
@@ -203,9 +211,7 @@ impl crate::Scenario {
             )),
         }
     }
-}
 
-impl crate::Scenario {
     /// The axles the composite beam on the `[ground]` carries, a train in its frame (offsets behind the first axle,
     /// forces downward, N): the `[load]` train, whole axles unless `load.carries` says otherwise (the composite beam
     /// is the whole track, both rails), or the single `load.force` at the head. Refused by key: load patches, a
@@ -232,9 +238,7 @@ impl crate::Scenario {
         }
         Ok(self.on_the_beam(train))
     }
-}
 
-impl crate::Scenario {
     /// The refusal of a sweep on a `[ground]` (key `ground`): a run in time takes a foundation fitted at one speed.
     pub fn sweep_on_the_ground(value: impl std::fmt::Display) -> crate::StudyError {
         invalid(

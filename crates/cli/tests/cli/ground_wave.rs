@@ -86,7 +86,7 @@ fn the_x2000_at_ledsgard_beside_the_measurements() {
 /// ballast over the embankment beam on the same site) beside the records: at 70 km/h the rail goes 6.63 mm down
 /// against the measured 6.37 (the composite beam's 6.04: the pads and ballast add their compression), RMS misfit
 /// 0.68 mm; at 185 km/h 9.21 mm, misfit 2.21 mm — the numbers examples/ledsgard/README.md quotes, to 0.01 mm. `check` describes it; the commands that take only the
-/// composite beam refuse it by key; sleepers and an embankment come together, on a ground.
+/// composite beam refuse it by key; sleepers and an embankment come together, on a ground, without a ballast body.
 #[test]
 fn the_two_beam_track_at_ledsgard() {
     let site = example("ledsgard/ledsgard-two-beam.toml");
@@ -115,6 +115,8 @@ fn the_two_beam_track_at_ledsgard() {
     let end = text.find("[load]").unwrap();
     let without = format!("{}{}", &text[..start], &text[end..]);
     refused(&["check", &write_file(&folder, "no-embankment.toml", &without)], "embankment = missing");
+    let body = text.replace("stiffness = 1.4e8", "stiffness = 1.4e8\nmass = 500.0");
+    refused(&["check", &write_file(&folder, "body.toml", &body)], "sleepers.ballast.mass = 500");
     let no_ground = text[..text.find("[ground]").unwrap()].to_string();
     refused(&["check", &write_file(&folder, "no-ground.toml", &no_ground)], "embankment = given");
 }
