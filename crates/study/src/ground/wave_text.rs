@@ -165,12 +165,15 @@ impl GroundWaveStudy {
     /// The figure: the waves along the train (up to four speeds; deflection in mm, the axles marked on the axis,
     /// `record` drawn where it was compared), or the peaks over speed where more were asked.
     pub fn figure(&self, record: Option<&MeasuredRecord>) -> PlotSpec {
+        let over_speeds = self.waves.len() > MOST_WAVES;
+        let what =
+            if over_speeds { "Peak steady deflections over speed, on the ground" } else { "Steady wave on the ground" };
         let title = match self.title.is_empty() {
-            true => "Steady wave on the ground".to_string(),
-            false => format!("Steady wave on the ground — {}", self.title),
+            true => what.to_string(),
+            false => format!("{what} — {}", self.title),
         };
         let title = title.as_str();
-        if self.waves.len() > MOST_WAVES {
+        if over_speeds {
             let mut peaks = PlotSpec::new("ground-wave-peaks", title, "speed v (m/s)", "peak deflection (mm)");
             peaks.subtitle = self.subtitle();
             for (label, color, value) in [
