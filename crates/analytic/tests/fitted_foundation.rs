@@ -72,6 +72,9 @@ fn the_fit_on_the_ground_and_its_error() {
             assert!(fit.wave_error > 0.2, "at the critical speed: {fit:?}");
         }
         assert!(fit.stiffness > 0.0 && fit.damping >= 0.0 && fit.co_vibrating_mass >= 0.0);
+        // The wavenumbers carrying the response: around the beam's on the ground, (k_w/4EI)^¼ ≈ 0.5 rad/m here.
+        assert!(0.0 < fit.wavenumbers.0 && fit.wavenumbers.0 < 0.5 && 0.3 < fit.wavenumbers.1, "{fit:?}");
+        assert!(fit.wavenumbers.1 < 3.0, "{fit:?}");
         assert!(speed > 0.0 || (fit.damping == 0.0 && fit.co_vibrating_mass == 0.0));
     }
 }

@@ -42,10 +42,12 @@ fn write_text(f: &mut Formatter<'_>, r: &RunSummary) -> fmt::Result {
     if let Some(fit) = &r.ground_fit {
         writeln!(
             f,
-            "  ground: a foundation fitted to it at {:.2} m/s — k_f = {:.4e} N/m², c = {:.4e} N·s/m², {:.0} kg/m of \
-             ground moving with the beam; its steady wave is the exact one on the ground to {:.1} % (deepest point \
-             {:+.1} %)",
+            "  ground: a foundation fitted to it at {:.2} m/s over k = {:.3}–{:.3} rad/m — k_f = {:.4e} N/m², c = \
+             {:.4e} N·s/m², {:.0} kg/m of ground moving with the beam; its steady wave is the exact one on the ground \
+             to {:.1} % (deepest point {:+.1} %)",
             fit.speed,
+            fit.wavenumbers.0,
+            fit.wavenumbers.1,
             fit.stiffness,
             fit.damping,
             fit.co_vibrating_mass,

@@ -43,6 +43,8 @@ pub struct FittedFoundation {
     pub damping: f64,
     /// m (kg/m): the support's mass that moves with the beam.
     pub co_vibrating_mass: f64,
+    /// The wavenumbers it is fitted over (rad/m): the range holding all but 1 % of the final weights at each end.
+    pub wavenumbers: (f64, f64),
     /// max|W_fit − W| / max|W| of one load's steady wave (1).
     pub wave_error: f64,
     /// (max downward of W_fit − max downward of W) / max downward of W (1, signed).
@@ -92,6 +94,7 @@ impl<S: LineSupport + ?Sized> GroundedBeam<'_, S> {
             stiffness: fit.stiffness,
             damping: fit.damping,
             co_vibrating_mass: fit.mass,
+            wavenumbers: central_range(&kept, &rows),
             wave_error,
             peak_error,
         })
@@ -135,6 +138,24 @@ impl Fit {
             && near(self.damping, other.damping, 1.0)
             && near(self.mass, other.mass, 1.0)
     }
+}
+
+/// The wavenumbers of `samples` (ascending k) between which all but 1 % of the `rows`' weight at either end lies.
+fn central_range(samples: &[(f64, Complex64, f64)], rows: &[Row]) -> (f64, f64) {
+    let total: f64 = rows.iter().map(|r| r.weight).sum();
+    let mut running = 0.0;
+    let (mut from, mut to) = (samples.first().map_or(0.0, |s| s.0), samples.last().map_or(0.0, |s| s.0));
+    for (sample, row) in samples.iter().zip(rows) {
+        let before = running;
+        running += row.weight;
+        if before <= 0.01 * total && running > 0.01 * total {
+            from = sample.0;
+        }
+        if before < 0.99 * total && running >= 0.99 * total {
+            to = sample.0;
+        }
+    }
+    (from, to)
 }
 
 /// One sample of the fit: its weight, ω = kv, and the targets Re k_s and Im k_s + ηEIk⁴.
