@@ -57,13 +57,17 @@ impl PiecewiseCubic {
 fn moments(theta: f64) -> [Complex64; 4] {
     let mut mu = [Complex64::new(0.0, 0.0); 4];
     if theta.abs() <= 1.0 {
-        // (iθ)^j / j! falls below 1e-17 by j = 19 at |θ| = 1.
+        // (iθ)^j / j! falls below 1e-17 by j = 19 at |θ| = 1, sooner for smaller θ (a few terms for the long
+        // waves' narrow panels).
         let mut term = Complex64::new(1.0, 0.0);
         for j in 0..20 {
             for (m, value) in mu.iter_mut().enumerate() {
                 *value += term / (m + j + 1) as f64;
             }
             term *= Complex64::new(0.0, theta) / (j + 1) as f64;
+            if term.norm_sqr() < 1e-34 {
+                break;
+            }
         }
     } else {
         let (edge, i_theta) = (Complex64::from_polar(1.0, theta), Complex64::new(0.0, theta));

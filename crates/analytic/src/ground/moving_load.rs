@@ -58,6 +58,9 @@ pub struct MovingSpectrum {
     body: PiecewiseCubic,
 }
 
+/// The spacing (m) of a single load's wave read by a train's ([`MovingSpectrum::wave_under`]).
+const GRID_STEP: f64 = 0.05;
+
 /// The widest panel (in ln k) on which the cubic in ln k is redrawn as a cubic in k: ln k departs from a cubic in k
 /// there by ~(Δ ln k)⁴/100 ≈ 6e-8 of the panel's change in ln k.
 const PANEL_LOG_WIDTH: f64 = 0.05;
@@ -199,9 +202,30 @@ impl MovingSpectrum {
         axles.iter().map(|axle| axle.force * self.deflection(s + axle.offset)).sum()
     }
 
-    /// [`Self::deflection_under`] at each of `positions` (m), in parallel.
+    /// [`Self::deflection_under`] at each of `positions` (m), in parallel. Where the train has more axles than a
+    /// single load's wave needs points to cover it, that wave is computed once every 5 cm over the reach
+    /// of every axle and read between its points by the cubic through the four nearest: its error, ~h⁴|W⁗|/40 and
+    /// h³/(20 EI) per newton beside the load's kink in W‴, is ≲ 1e-6 of the wave on a track's ≳ 5 m bowls.
     pub fn wave_under(&self, axles: &[Axle], positions: &[f64]) -> Vec<f64> {
-        positions.par_iter().map(|&s| self.deflection_under(axles, s)).collect()
+        let offsets = axles.iter().map(|a| a.offset);
+        let (first, last) = offsets.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), d| (a.min(d), b.max(d)));
+        let (low, high) = positions.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &s| (a.min(s), b.max(s)));
+        let (from, to) = (low + first - 2.0 * GRID_STEP, high + last + 2.0 * GRID_STEP);
+        let count = ((to - from) / GRID_STEP).ceil() as usize + 1;
+        if axles.is_empty() || positions.is_empty() || count >= positions.len() * axles.len() {
+            return positions.par_iter().map(|&s| self.deflection_under(axles, s)).collect();
+        }
+        let grid: Vec<f64> = (0..count).into_par_iter().map(|i| self.deflection(from + i as f64 * GRID_STEP)).collect();
+        let read = |s: f64| {
+            let x = (s - from) / GRID_STEP;
+            let i = (x.floor() as usize).clamp(1, count - 3);
+            let t = x - i as f64;
+            let (a, b, c, d) = (grid[i - 1], grid[i], grid[i + 1], grid[i + 2]);
+            let (before, after, two_after) = (t + 1.0, t - 1.0, t - 2.0);
+            (-a * t * after * two_after + d * before * t * after) / 6.0
+                + (b * before * after * two_after - c * before * t * two_after) / 2.0
+        };
+        positions.par_iter().map(|&s| axles.iter().map(|a| a.force * read(s + a.offset)).sum()).collect()
     }
 }
 
