@@ -20,6 +20,13 @@ pub fn run(
             check_output_file("--out", &folder.join(name))?;
         }
     }
+    if scenario.ground.is_some() {
+        let (_, fit) = scenario.on_fitted_foundation()?;
+        eprintln!("note: {}", report::run_text::ground_fit_line(&fit));
+        if let Some(warning) = scenario::diagnostics::ground_fit_warning(&fit) {
+            eprintln!("warning: {warning}");
+        }
+    }
     let (summary, result) = study::co_moving::output::run(scenario, section)?;
     crate::print_output(&summary, format)?;
     if let Some(folder) = out {

@@ -20,6 +20,23 @@ fn section_count(r: &RunSummary) -> String {
     format!("{} sections ({friction} friction{named})", r.stepping.sections)
 }
 
+/// The foundation a run takes for the ground, in one line: "ground: a foundation fitted to it at … m/s over k = …".
+pub fn ground_fit_line(fit: &analytic::ground::FittedFoundation) -> String {
+    format!(
+        "ground: a foundation fitted to it at {:.2} m/s over k = {:.3}–{:.3} rad/m — k_f = {:.4e} N/m², c = {:.4e} \
+         N·s/m², {:.0} kg/m of ground moving with the beam; its steady wave is the exact one on the ground to {:.1} % \
+         (deepest point {:+.1} %)",
+        fit.speed,
+        fit.wavenumbers.0,
+        fit.wavenumbers.1,
+        fit.stiffness,
+        fit.damping,
+        fit.co_vibrating_mass,
+        100.0 * fit.wave_error,
+        100.0 * fit.peak_error
+    )
+}
+
 /// The whole report.
 fn write_text(f: &mut Formatter<'_>, r: &RunSummary) -> fmt::Result {
     let title = if r.title.is_empty() { String::new() } else { format!(" — {}", r.title) };
@@ -40,20 +57,7 @@ fn write_text(f: &mut Formatter<'_>, r: &RunSummary) -> fmt::Result {
         )?;
     }
     if let Some(fit) = &r.ground_fit {
-        writeln!(
-            f,
-            "  ground: a foundation fitted to it at {:.2} m/s over k = {:.3}–{:.3} rad/m — k_f = {:.4e} N/m², c = \
-             {:.4e} N·s/m², {:.0} kg/m of ground moving with the beam; its steady wave is the exact one on the ground \
-             to {:.1} % (deepest point {:+.1} %)",
-            fit.speed,
-            fit.wavenumbers.0,
-            fit.wavenumbers.1,
-            fit.stiffness,
-            fit.damping,
-            fit.co_vibrating_mass,
-            100.0 * fit.wave_error,
-            100.0 * fit.peak_error
-        )?;
+        writeln!(f, "  {}", ground_fit_line(fit))?;
     }
     write_friction(f, r)?;
     if let Some(soil) = &r.soil {

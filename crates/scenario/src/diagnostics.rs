@@ -50,24 +50,28 @@ pub fn refuse_degenerate(model: &BeamModel) -> Result<()> {
 /// accuracy the published models of a soft site reach against measurements.
 pub const GROUND_FIT_TOLERANCE: f64 = 0.1;
 
+/// The warning a foundation fitted to the ground earns where its wave is off the exact one by more than
+/// [`GROUND_FIT_TOLERANCE`].
+pub fn ground_fit_warning(fit: &analytic::ground::FittedFoundation) -> Option<Warning> {
+    (fit.wave_error > GROUND_FIT_TOLERANCE).then(|| Warning {
+        field: "ground".into(),
+        value: format!("fitted at {} m/s", fit.speed),
+        message: format!(
+            "the foundation fitted to the ground gives a steady wave {:.0} % off the exact one at this speed (its \
+             deepest point {:+.0} %): near and above the ground's critical speed no local spring, dashpot and mass \
+             represents the ground, so this run's numbers are the fitted foundation's; `frictrack stationary` gives \
+             the exact linear wave on the ground",
+            100.0 * fit.wave_error,
+            100.0 * fit.peak_error
+        ),
+    })
+}
+
 /// Warnings for `scenario` built into `case`.
 pub fn warnings(scenario: &Scenario, case: &Case) -> Vec<Warning> {
     let mut out = Vec::new();
     let model = &case.model;
-    if let Some(fit) = case.ground_fit.filter(|fit| fit.wave_error > GROUND_FIT_TOLERANCE) {
-        out.push(Warning {
-            field: "ground".into(),
-            value: format!("fitted at {} m/s", fit.speed),
-            message: format!(
-                "the foundation fitted to the ground gives a steady wave {:.0} % off the exact one at this speed (its \
-                 deepest point {:+.0} %): near and above the ground's critical speed no local spring, dashpot and \
-                 mass represents the ground, so this run's numbers are the fitted foundation's; `frictrack \
-                 stationary` gives the exact linear wave on the ground",
-                100.0 * fit.wave_error,
-                100.0 * fit.peak_error
-            ),
-        });
-    }
+    out.extend(case.ground_fit.as_ref().and_then(ground_fit_warning));
     // β of the infinite beam on this foundation (none without one: k_f = 0 has no deflection bowl).
     if let Ok(infinite) = InfiniteBeam::new(model.beam(), model.foundation()) {
         let bowl = std::f64::consts::PI / infinite.beta();

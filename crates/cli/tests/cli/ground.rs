@@ -115,7 +115,7 @@ fn the_receptance_on_the_ground() {
 /// deepest point while the load is in the middle third is the exact steady wave's (`frictrack stationary`) to within
 /// the fit's own reported wave error and 2 % more (the mesh, the time step and a finite track); the JSON carries the
 /// fit and no infinite-track critical speed (the fitted spring's is not the ground's). At the ground's critical speed
-/// the fit is off by over 10 % and the run warns, by key.
+/// the fit is off by over 10 % and the run warns, by key. A run through a co-moving window says which fit it takes.
 #[test]
 fn a_run_in_time_on_the_ground_takes_a_fitted_foundation() {
     let folder = temporary_folder("ground-run");
@@ -134,4 +134,10 @@ fn a_run_in_time_on_the_ground_takes_a_fitted_foundation() {
     let stderr = String::from_utf8_lossy(&near.stderr);
     assert!(near.status.success() && stderr.contains("warning: ground = fitted at 61.4 m/s"), "{stderr}");
     assert!(String::from_utf8_lossy(&near.stdout).contains("ground: a foundation fitted to it at 61.40 m/s"));
+    let window = frictrack(&["run", "--co-moving", &site, "--speed", "40"]);
+    let stderr = String::from_utf8_lossy(&window.stderr);
+    assert!(
+        window.status.success() && stderr.contains("note: ground: a foundation fitted to it at 40.00 m/s"),
+        "{stderr}"
+    );
 }
