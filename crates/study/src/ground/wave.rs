@@ -1,6 +1,7 @@
 //! The steady wave of a train (or one load) on the ground (`frictrack stationary` on a `[ground]`; docs/theory.md
-//! §19): at each speed the composite beam's moving-load spectrum, once, and the wave along the train's frame as the
-//! superposition of its axles' shifted single-load waves, W(s) = Σ_j P_j W₁(s + d_j) — under and behind the train,
+//! §19): at each speed the moving-load spectrum of the composite beam (or of the rail on sleepers over the
+//! embankment), once, and the wave along the train's frame as the superposition of its axles' shifted single-load
+//! waves, W(s) = Σ_j P_j W₁(s + d_j) — under and behind the train,
 //! its peaks (refined by golden section) and the upward wake behind it above the ground's wave speeds. Deflections in
 //! m (upward positive, peaks as magnitudes), positions s = x − x_head in m (positive ahead of the first axle).
 
@@ -13,8 +14,9 @@ use scenario::error::{Result, StudyError, invalid};
 use scenario::ground::GroundTrack;
 use serde::Serialize;
 
-/// Spacing of the wave's points (m): a tenth of the shortest wave a composite beam on soft ground carries (its
-/// bowl under a load is ≳ 5 m long); the peaks are refined between points, never read off them.
+/// Spacing of the wave's points (m): a tenth of the shortest bowl a track on the ground carries (≳ 5 m for a
+/// composite beam on soft ground, ~3 m for a rail on sleepers); the peaks are refined between points, never read off
+/// them.
 pub const WAVE_STEP: f64 = 0.25;
 /// The most points one wave may have (the window's length over [`WAVE_STEP`]).
 const MAX_POINTS: usize = 200_000;
@@ -115,8 +117,8 @@ pub struct GroundWaveStudy {
 impl GroundWaveStudy {
     /// The waves at `speeds` (m/s, each ≥ 0) of the scenario's axles ([`Scenario::axles_on_the_ground`]) on
     /// `window`; stops with [`StudyError::Interrupted`] before the next speed once `stop` is raised, telling
-    /// `progress` the speeds done. A speed costs a spectrum (0.1–0.3 s on a soft site, 2 threads) and the wave's
-    /// points (~60 µs per point and axle).
+    /// `progress` the speeds done. A speed costs a spectrum (0.1–0.5 s on a soft site, 2 threads) and the wave's
+    /// points (a train's read from one load's wave every 5 cm: 0.5 s for the X2000 at Ledsgård in all).
     pub fn of(
         scenario: &Scenario,
         speeds: &[f64],
