@@ -148,7 +148,12 @@ impl GroundWaveStudy {
         let load = match self.train.axles.as_slice() {
             [axle] => format!("one force of {:.0} kN", axle.force / 1e3),
             axles => {
-                format!("{} ({} axles, {:.0} kN in all)", self.train.name, axles.len(), self.train.total_force() / 1e3)
+                format!(
+                    "{} ({} axles, {:.0} kN on the beam)",
+                    self.train.name,
+                    axles.len(),
+                    self.train.total_force() / 1e3
+                )
             }
         };
         let track = match &self.track {
