@@ -45,8 +45,8 @@ fn a_spring_and_a_dashpot_are_fitted_exactly() {
 /// The error the fit reports is the waves' own: the fitted beam's wave by Frýba's closed form (`MovingBeam`, an
 /// independent method) against the exact one on the ground, on the same points, agrees with the reported error to
 /// 1e-4 of it (the Fourier integral's 1e-6 of w₀ on each wave). Below the ground's critical speed (61.37 m/s on this
-/// site) the fit is good — within 6 % of the peak at rest, 20 and 40 m/s (observed 5.2, 4.5 and 2.7 %; at rest the beam's loss
-/// factor, which a run in time has not, is part of it) — and at it, it is not:
+/// site) the fit is good — within 6 % of the peak at rest, 20 and 40 m/s (observed 5.0, 4.5 and 2.7 %; at rest one
+/// spring cannot follow the static strip's stiffness, which grows with k_x) — and at it, it is not:
 /// over 20 % (observed 32 %), the ground's waves being no spring's; the run warns above 10 %.
 #[test]
 fn the_fit_on_the_ground_and_its_error() {

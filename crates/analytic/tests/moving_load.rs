@@ -94,6 +94,14 @@ mod on_the_ground {
         let direct = integrate(integrand, 1e-7, 1e3, &decades, tolerance);
         let (a, b) = (-spectrum.deflection(0.0), direct.value.re / PI);
         assert!(direct.converged && (a / b - 1.0).abs() < 1e-6, "{a:e} vs {b:e}");
+        // Hysteretic damping, the beam's η as the ground's ξ, is iη sgn ω: at rest the beam and the ground are
+        // elastic, G is real and the deflection symmetric (to the sampled spectrum's 1e-6).
+        for k in [1e-3, 0.1, 0.5, 3.0] {
+            assert_eq!(grounded.response(k, 0.0).unwrap().im, 0.0, "k = {k}");
+        }
+        for s in [0.5, 3.0, 10.0] {
+            assert!((spectrum.deflection(s) - spectrum.deflection(-s)).abs() < 1e-6 * a, "s = {s}");
+        }
     }
 
     /// The power the moving force puts in, P v W′(0) from the deflection's slope under the load (a central

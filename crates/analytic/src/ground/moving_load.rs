@@ -91,7 +91,9 @@ impl<'a, S: LineSupport + ?Sized> GroundedBeam<'a, S> {
     pub fn response(&self, k: f64, speed: f64) -> Result<Complex64> {
         let omega = k * speed;
         let bending = self.bending_stiffness * k.powi(4);
-        let beam = Complex64::new(bending - self.mass_per_length * (speed * k).powi(2), -self.loss_factor * bending);
+        // Hysteretic damping is iη sgn ω: none at rest, where a load deflects the beam elastically.
+        let loss = if omega > 0.0 { self.loss_factor } else { 0.0 };
+        let beam = Complex64::new(bending - self.mass_per_length * (speed * k).powi(2), -loss * bending);
         let support = match bending > 1e4 * self.support.stiffness_bound(k, omega) {
             true => Complex64::new(0.0, 0.0),
             false => self.support.line_stiffness(k, omega)?.conj(),

@@ -6,7 +6,7 @@
 //! k_rail = k̃_p/a ∥ (−ω²m_s/a + k̃_b/a ∥ Z/2),      Z = EI_e(1 + iη_e)k_x⁴ − ρA_e ω² + k_ground(k_x, ω),
 //! ```
 //!
-//! a ∥ b = ab/(a + b) (springs in series), k̃ = k(1 + iη) + iωc each layer's dynamic stiffness per rail seat, and Z
+//! a ∥ b = ab/(a + b) (springs in series), k̃ = k(1 + iη sgn ω) + iωc each layer's dynamic stiffness per rail seat, and Z
 //! the whole embankment on the whole strip, of which each rail carries half. Rigid pads and ballast make the rail,
 //! the sleepers and the embankment one beam; a rigid embankment leaves the sleepers' twin on rigid ground.
 
@@ -22,7 +22,7 @@ pub struct Embankment {
     pub bending_stiffness: f64,
     /// ρA_e (kg/m).
     pub mass_per_length: f64,
-    /// η_e ≥ 0: EI_e → EI_e(1 + iη_e) (ω ≥ 0, as the moving load asks; at rest too, as the rail's own η).
+    /// η_e ≥ 0: EI_e → EI_e(1 + iη_e sgn ω) (ω ≥ 0, as the moving load asks: elastic at rest).
     pub loss_factor: f64,
 }
 
@@ -42,8 +42,18 @@ impl<S: LineSupport + ?Sized> TrackOnEmbankment<'_, S> {
     fn half_embankment(&self, kx: f64, omega: f64) -> Result<Complex64> {
         let e = &self.embankment;
         let bending = e.bending_stiffness * kx.powi(4);
-        let beam = Complex64::new(bending - e.mass_per_length * omega * omega, e.loss_factor * bending);
+        let loss = if omega > 0.0 { e.loss_factor } else { 0.0 };
+        let beam = Complex64::new(bending - e.mass_per_length * omega * omega, loss * bending);
         Ok(0.5 * (beam + self.ground.line_stiffness(kx, omega)?))
+    }
+}
+
+/// A layer's k(1 + iη sgn ω) + iωc: elastic at rest, as the ground is (`Layer::dynamic_stiffness` keeps iη at ω = 0,
+/// the receptance's convention, where ω > 0).
+fn hysteretic(layer: &fem_beam::sleepers::Layer, omega: f64) -> Complex64 {
+    match omega > 0.0 {
+        true => layer.dynamic_stiffness(omega),
+        false => Complex64::new(layer.stiffness, 0.0),
     }
 }
 
@@ -55,8 +65,8 @@ fn series(a: Complex64, b: Complex64) -> Complex64 {
 impl<S: LineSupport + ?Sized> LineSupport for TrackOnEmbankment<'_, S> {
     fn line_stiffness(&self, kx: f64, omega: f64) -> Result<Complex64> {
         let a = self.sleepers.spacing;
-        let pad = self.sleepers.pad.dynamic_stiffness(omega) / a;
-        let ballast = self.sleepers.ballast.dynamic_stiffness(omega) / a;
+        let pad = hysteretic(&self.sleepers.pad, omega) / a;
+        let ballast = hysteretic(&self.sleepers.ballast, omega) / a;
         let sleeper = Complex64::new(-omega * omega * self.sleepers.mass / a, 0.0);
         Ok(series(pad, sleeper + series(ballast, self.half_embankment(kx, omega)?)))
     }
