@@ -8,10 +8,10 @@
 //! its points (0.25 m apart) linearly: that reading errs by ≤ h²/8·|W″| ≈ 3e-4 of the peak for the ≳ 5 m bowls of a
 //! track on soft ground, far inside a digitised record's ±0.2 mm.
 
-use crate::ground::wave::{GroundWave, WaveWindow};
+pub use crate::ground::comparison::Comparison;
+use crate::ground::wave::{GroundWave, GroundWaveStudy, WaveWindow};
 use analytic::golden::golden_section;
 use scenario::error::{Result, invalid};
-use serde::Serialize;
 
 /// The most rows a record may have.
 const MAX_ROWS: usize = 1_000_000;
@@ -30,29 +30,6 @@ pub struct MeasuredRecord {
     pub x: Vec<f64>,
     /// W (m, upward positive).
     pub deflection: Vec<f64>,
-}
-
-/// The measured record against the computed wave.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct Comparison {
-    /// The record's file.
-    pub record: String,
-    /// d: +1 where the record's x runs the way s does (forward along the train), −1 where it runs backward.
-    pub direction: f64,
-    /// c (m): s = d·x + c.
-    pub shift: f64,
-    /// √(mean (W_computed − W_measured)²) over the record (m).
-    pub rms_misfit: f64,
-    /// √(mean W_measured²) (m): the scale the misfit is read against.
-    pub rms_measured: f64,
-    /// The record's largest downward and upward deflections (m, magnitudes).
-    pub measured_max_downward: f64,
-    /// See `measured_max_downward`.
-    pub measured_max_upward: f64,
-    /// The computed wave's at the record's points (m, magnitudes): sampled as the record is.
-    pub computed_max_downward: f64,
-    /// See `computed_max_downward`.
-    pub computed_max_upward: f64,
 }
 
 impl MeasuredRecord {
@@ -169,4 +146,20 @@ fn read(wave: &GroundWave, s: f64) -> Option<f64> {
     let i = (((s - first) / step) as usize).min(wave.s.len() - 2);
     let t = (s - wave.s[i]) / step;
     Some(wave.deflection[i] * (1.0 - t) + wave.deflection[i + 1] * t)
+}
+
+impl GroundWaveStudy {
+    /// Set `record` beside the wave ([`MeasuredRecord::compare`]); `field` (the option that gave it) names the
+    /// refusal where the study has more than one speed (a record is one train's passage at one speed).
+    pub fn compare_with(&mut self, record: &MeasuredRecord, field: &str) -> Result<()> {
+        let [wave] = self.waves.as_slice() else {
+            return Err(invalid(
+                field,
+                &record.name,
+                format!("a record is one passage at one speed: give one speed, not {}", self.waves.len()),
+            ));
+        };
+        self.comparison = Some(record.compare(wave, self.train.length(), field)?);
+        Ok(())
+    }
 }

@@ -5,7 +5,7 @@
 //! its peaks (refined by golden section) and the upward wake behind it above the ground's wave speeds. Deflections in
 //! m (upward positive, peaks as magnitudes), positions s = x − x_head in m (positive ahead of the first axle).
 
-use crate::ground::measured::{Comparison, MeasuredRecord};
+use crate::ground::comparison::Comparison;
 use crate::ground::speeds::refined_extremes;
 use analytic::ground::{GroundedBeam, LineSupport, MovingSpectrum, StripGround, TrackOnEmbankment};
 use fem_beam::{Extreme, Train};
@@ -152,20 +152,6 @@ impl GroundWaveStudy {
         let beam = (beam.bending_stiffness(), beam.mass_per_length());
         let title = scenario.title.clone();
         Ok(Self { title, beam, strip: strip.clone(), track: track.clone(), train, points, waves, comparison: None })
-    }
-
-    /// Set `record` beside the wave ([`MeasuredRecord::compare`]); `field` (the option that gave it) names the
-    /// refusal where the study has more than one speed (a record is one train's passage at one speed).
-    pub fn compare_with(&mut self, record: &MeasuredRecord, field: &str) -> Result<()> {
-        let [wave] = self.waves.as_slice() else {
-            return Err(invalid(
-                field,
-                &record.name,
-                format!("a record is one passage at one speed: give one speed, not {}", self.waves.len()),
-            ));
-        };
-        self.comparison = Some(record.compare(wave, self.train.length(), field)?);
-        Ok(())
     }
 }
 

@@ -3,7 +3,8 @@
 //! (`wave.csv` for one speed, `speeds.csv` for several) and the figure — the wave along the train with its axles
 //! marked, or the peaks over speed.
 
-use crate::ground::measured::{Comparison, MeasuredRecord};
+use crate::ground::comparison::Comparison;
+use crate::ground::measured::MeasuredRecord;
 use crate::ground::numbers::describe;
 use crate::ground::text::table;
 use crate::ground::wave::{GroundWave, GroundWavePoint, GroundWaveStudy};
