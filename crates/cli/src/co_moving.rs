@@ -20,13 +20,20 @@ pub fn run(
             check_output_file("--out", &folder.join(name))?;
         }
     }
-    if scenario.ground.is_some() {
-        let (_, fit) = scenario.on_fitted_foundation()?;
-        eprintln!("note: {}", report::run_text::ground_fit_line(&fit));
-        if let Some(warning) = scenario::diagnostics::ground_fit_warning(&fit) {
-            eprintln!("warning: {warning}");
+    // On a [ground], the window runs on the foundation fitted to it, fitted once here and said.
+    let fitted;
+    let scenario = match &scenario.ground {
+        Some(_) => {
+            let fit;
+            (fitted, fit) = scenario.on_fitted_foundation()?;
+            eprintln!("note: {}", report::run_text::ground_fit_line(&fit));
+            if let Some(warning) = scenario::diagnostics::ground_fit_warning(&fit) {
+                eprintln!("warning: {warning}");
+            }
+            &fitted
         }
-    }
+        None => scenario,
+    };
     let (summary, result) = study::co_moving::output::run(scenario, section)?;
     crate::print_output(&summary, format)?;
     if let Some(folder) = out {

@@ -57,9 +57,9 @@ pub struct GroundWaveFile<'a> {
     pub csv: &'static str,
     /// The scenario's title.
     pub title: &'a str,
-    /// EI (N·m²) of the composite beam.
+    /// EI (N·m²) of the beam: the composite beam, or the rail on the two-beam track.
     pub bending_stiffness: f64,
-    /// ρA (kg/m) of the composite beam.
+    /// ρA (kg/m) of the beam.
     pub mass_per_length: f64,
     /// 2b (m).
     pub width: f64,
