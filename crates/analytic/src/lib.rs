@@ -14,7 +14,8 @@
 //! - [`dispersion`]: free waves, their least phase velocity (the critical speed), the point receptance.
 //! - [`tensionless`]: a point load on a tensionless Winkler soil (Weitsman's lift-off).
 //! - [`span`], [`span_oscillator`]: the simply supported span under a moving force or a moving oscillator.
-//! - [`golden`]: the golden-section search every peak and minimum is refined with.
+//! - [`golden`]: the golden-section search every peak and minimum is refined with; [`interpolation`]: the cubic
+//!   through four equally spaced samples every wave is read between its points with.
 //! - [`ground`]: a layered visco-elastic half-space and its surface flexibility F_zz(k, ω) (the first part of the
 //!   ground under the track).
 //!
@@ -23,6 +24,7 @@
 pub mod dispersion;
 pub mod golden;
 pub mod ground;
+pub mod interpolation;
 pub mod moving_beam;
 pub mod moving_timoshenko;
 pub mod quadrature;

@@ -50,19 +50,12 @@ pub struct StationaryArgs {
 /// The steady wave of the scenario's axles on its `[ground]` (docs/theory.md §19): a Fourier integral per speed, no
 /// mesh — `--element-length` and the Winkler soil's and the ballast's options are refused by name.
 fn on_the_ground(args: &StationaryArgs, scenario: &Scenario, speeds: &[f64]) -> Result<()> {
-    let why = "on a [ground] the wave is a Fourier integral of the composite beam on the strip, with no mesh, no \
-               Winkler damping and (not yet) no ballast friction";
-    for (name, given) in [
-        ("--element-length", args.element_length),
-        ("--damping-ratio", args.damping_ratio),
-        ("--distributed-friction", args.distributed_friction),
-    ] {
+    let why = "on a [ground] the wave is a Fourier integral of the track on the strip, with no mesh and no Winkler \
+               damping";
+    for (name, given) in [("--element-length", args.element_length), ("--damping-ratio", args.damping_ratio)] {
         if let Some(value) = given {
             return Err(scenario::error::invalid(name, value, format!("leave it out: {why}")).into());
         }
-    }
-    if scenario.friction.distributed.is_some() {
-        return Err(scenario::error::invalid("friction.distributed", "given", format!("leave it out: {why}")).into());
     }
     let mut window = study::ground::WaveWindow::default();
     if let Some(text) = &args.domain {

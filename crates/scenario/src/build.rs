@@ -460,7 +460,7 @@ fn under(section: &str, error: StudyError) -> StudyError {
 impl DistributedSection {
     /// The ballast friction this section describes, checked and its errors named by their path in the file: the one
     /// check that a run and the stationary solver share, so that both refuse the same value in the same words.
-    pub(crate) fn friction(&self) -> Result<DistributedFriction> {
+    pub fn friction(&self) -> Result<DistributedFriction> {
         let quadrature = match self.quadrature {
             QuadratureKind::Trapezoid => Quadrature::Trapezoid,
             QuadratureKind::Simpson => Quadrature::Simpson,

@@ -13,7 +13,7 @@
 
 use crate::control::Control;
 use crate::error::Result;
-use crate::newton::{MAX_ITERATIONS, frictionless, iterate};
+use crate::newton::{MAX_ITERATIONS, SetProblem, frictionless, iterate};
 use crate::operator::MovingFrame;
 use crate::problem::StationaryProblem;
 use crate::status::{ContactGuess, Convergence};
@@ -86,7 +86,7 @@ pub(crate) fn friction_wave(
     Ok((wave.unwrap_or(w), with_iterations(last, spent)))
 }
 
-fn with_iterations(status: Convergence, iterations: usize) -> Convergence {
+pub(crate) fn with_iterations(status: Convergence, iterations: usize) -> Convergence {
     match status {
         Convergence::Converged { residual, .. } => Convergence::Converged { iterations, residual },
         Convergence::NotConverged { residual, .. } => Convergence::NotConverged { iterations, residual },
@@ -95,17 +95,17 @@ fn with_iterations(status: Convergence, iterations: usize) -> Convergence {
 }
 
 /// The κ continuation from `w`, starting at `from`·κ.
-fn stages(
-    frame: &MovingFrame,
+pub(crate) fn stages<P: SetProblem>(
+    frame: &P,
     speed: f64,
     mut w: Vec<f64>,
     from: f64,
     (guess, control): (&mut ContactGuess, &Control<'_>),
 ) -> Result<(Vec<f64>, Convergence)> {
-    let target = frame.friction.as_ref().map_or(0.0, |f| f.stiffness);
     let mut stage = frame.clone();
-    let set_stiffness = |stage: &mut MovingFrame, k: f64| {
-        if let Some(f) = stage.friction.as_mut() {
+    let target = stage.friction_mut().map_or(0.0, |f| f.stiffness);
+    let set_stiffness = |stage: &mut P, k: f64| {
+        if let Some(f) = stage.friction_mut() {
             f.stiffness = k;
         }
     };

@@ -164,31 +164,47 @@ impl FrictionSections {
         let mut couplings: Vec<AnchorCoupling> = Vec::new();
         for (i, section) in self.sections.iter().enumerate() {
             let (row, weight) = (section.row, section.weight);
-            // The part of r_i that does not depend on W (N/m).
-            let constant = match state.states[i] {
-                SectionState::Slipping { sign } => sign * self.capacity,
-                SectionState::Stuck { anchor } => {
-                    let spring = self.stiffness * weight;
-                    add_spring(matrix, section.element, &row, spring);
-                    match anchor {
-                        None => -self.stiffness * self.rest,
-                        Some(a) => {
-                            let coupling = match couplings.last_mut().filter(|c| c.anchor == a) {
-                                Some(c) => c,
-                                None => {
-                                    couplings.push(AnchorCoupling { column: vec![0.0; rhs.len()], anchor: a });
-                                    couplings.last_mut().expect("just pushed")
-                                }
-                            };
-                            row_add(section.element, &row, spring, &mut coupling.column);
-                            state.force[a]
+            if let SectionState::Stuck { anchor } = state.states[i] {
+                let spring = self.stiffness * weight;
+                add_spring(matrix, section.element, &row, spring);
+                if let Some(a) = anchor {
+                    let coupling = match couplings.last_mut().filter(|c| c.anchor == a) {
+                        Some(c) => c,
+                        None => {
+                            couplings.push(AnchorCoupling { column: vec![0.0; rhs.len()], anchor: a });
+                            couplings.last_mut().expect("just pushed")
                         }
-                    }
+                    };
+                    row_add(section.element, &row, spring, &mut coupling.column);
                 }
-            };
-            row_add(section.element, &row, -weight * constant, rhs);
+            }
+            row_add(section.element, &row, -weight * self.constant_force(state, i), rhs);
         }
         couplings
+    }
+
+    /// The part of section i's force r_i (N/m) that does not depend on W in `state`: ±f_u where it slips, the
+    /// anchor's force less κW_far where it sticks ([`SectionState::Stuck`]).
+    pub fn constant_force(&self, state: &FrictionState, i: usize) -> f64 {
+        match state.states[i] {
+            SectionState::Slipping { sign } => sign * self.capacity,
+            SectionState::Stuck { anchor: None } => -self.stiffness * self.rest,
+            SectionState::Stuck { anchor: Some(a) } => state.force[a],
+        }
+    }
+
+    /// The part of each section's force r_i (N/m) that is linear in W in `state`: κ (W_i − W_a) where it sticks
+    /// behind the slipping section a (κ W_i before any), 0 where it slips; with [`Self::constant_force`] the affine
+    /// force of `state`, and its derivative with respect to W.
+    pub fn stuck_forces(&self, state: &FrictionState, w: &[f64]) -> Vec<f64> {
+        let deflections: Vec<f64> = self.sections.iter().map(|s| s.deflection(w)).collect();
+        (0..self.sections.len())
+            .map(|i| match state.states[i] {
+                SectionState::Slipping { .. } => 0.0,
+                SectionState::Stuck { anchor: None } => self.stiffness * deflections[i],
+                SectionState::Stuck { anchor: Some(a) } => self.stiffness * (deflections[i] - deflections[a]),
+            })
+            .collect()
     }
 
     /// f_u v Σ_slipping weight_i |W′_i| (W): the power the slipping ballast dissipates at speed `speed`.

@@ -8,11 +8,11 @@
 
 use crate::control::Control;
 use crate::error::Result;
-use crate::friction::{AnchorCoupling, FrictionState};
+use crate::friction::{AnchorCoupling, FrictionSection, FrictionSections, FrictionState};
 use crate::operator::{MovingFrame, factor};
 use crate::rows::row_add;
 use crate::status::{ContactGuess, Convergence};
-use banded::general::GeneralBanded;
+use banded::general::{GeneralBanded, GeneralLu};
 
 /// Most Newton iterations of one stage (each changes the sets; measured 2–6 from the previous speed's soil set, up
 /// to 60 for a friction stage).
@@ -30,9 +30,9 @@ pub const ROUND_OFF: f64 = 1e-8;
 
 /// The sets that make the soil's and the ballast's forces affine near W: the soil sections pressed into it, and
 /// each friction section slipping or stuck (and to which anchor).
-struct Sets {
-    pressed: Vec<bool>,
-    friction: Option<FrictionState>,
+pub(crate) struct Sets {
+    pub(crate) pressed: Vec<bool>,
+    pub(crate) friction: Option<FrictionState>,
 }
 
 impl Sets {
@@ -50,62 +50,113 @@ impl Sets {
     }
 }
 
-/// The solution of the equations made affine by `sets` (the Newton point of every W with these sets): the banded
-/// matrix with the pressed springs and stuck Jenkins springs, less each stick segment's rank-one coupling to its
-/// anchor, by Sherman–Morrison–Woodbury: W = y + Z (I − VᵀZ)⁻¹ Vᵀy with y = B⁻¹g, Z = B⁻¹U, V the anchors' rows.
-fn newton_point(frame: &MovingFrame, sets: &Sets, speed: f64) -> Result<Vec<f64>> {
-    let mut matrix = frame.with_pressed(&sets.pressed);
-    let mut y = frame.rhs.clone();
-    let (couplings, sections) = match (&frame.friction, &sets.friction) {
-        (Some(friction), Some(state)) => (friction.linearise(state, &mut matrix, &mut y), &friction.sections[..]),
-        _ => (Vec::new(), &[][..]),
-    };
-    let lu = factor(matrix, speed)?;
-    lu.solve_in_place(&mut y);
-    if couplings.is_empty() {
-        return Ok(y);
+/// What the Newton iteration needs of a problem whose forces are piecewise affine in W: the track on a Winkler soil
+/// ([`MovingFrame`]) or on the ground (`crate::ground`).
+pub(crate) trait SetProblem: Clone {
+    /// The residual of `w` and the sets it lies in.
+    fn evaluate(&self, w: &[f64]) -> Evaluation;
+    /// The solution of the equations made affine by `sets`.
+    fn newton_point(&self, sets: &Sets, speed: f64) -> Result<Vec<f64>>;
+    /// The ballast's sections, if it has friction (their Jenkins stiffness is what the continuation raises).
+    fn friction_mut(&mut self) -> Option<&mut FrictionSections>;
+    /// Whether the ballast has friction.
+    fn has_friction(&self) -> bool;
+}
+
+impl SetProblem for MovingFrame {
+    fn evaluate(&self, w: &[f64]) -> Evaluation {
+        evaluate(self, w)
     }
-    let k = couplings.len();
-    let mut z = Vec::with_capacity(k);
-    let mut anchors = Vec::with_capacity(k);
-    for AnchorCoupling { mut column, anchor } in couplings {
-        lu.solve_in_place(&mut column);
-        z.push(column);
-        anchors.push(sections[anchor]);
+
+    fn newton_point(&self, sets: &Sets, speed: f64) -> Result<Vec<f64>> {
+        let system = SetSystem::new(self, sets, speed)?;
+        let mut w = system.rhs.clone();
+        system.solve_in_place(&mut w);
+        Ok(w)
     }
-    let mut small = GeneralBanded::zeros(k, k - 1, k - 1);
-    for (j, anchor) in anchors.iter().enumerate() {
-        for (m, column) in z.iter().enumerate() {
-            small.add(j, m, if j == m { 1.0 } else { 0.0 } - anchor.deflection(column));
+
+    fn friction_mut(&mut self) -> Option<&mut FrictionSections> {
+        self.friction.as_mut()
+    }
+
+    fn has_friction(&self) -> bool {
+        self.friction.is_some()
+    }
+}
+
+/// The equations of a [`MovingFrame`] made affine by `sets`, factored: the banded matrix with the pressed springs and
+/// stuck Jenkins springs, less each stick segment's rank-one coupling to its anchor, solved by
+/// Sherman–Morrison–Woodbury: W = y + Z (I − VᵀZ)⁻¹ Vᵀy with y = B⁻¹g, Z = B⁻¹U, V the anchors' rows.
+pub(crate) struct SetSystem {
+    lu: GeneralLu,
+    /// Z's columns and the anchors' sections, with (I − VᵀZ) factored; none without couplings.
+    couplings: Option<(Vec<Vec<f64>>, Vec<FrictionSection>, GeneralLu)>,
+    /// The right-hand side of the sets' equations: the loads less the friction forces that do not depend on W (N).
+    pub(crate) rhs: Vec<f64>,
+}
+
+impl SetSystem {
+    pub(crate) fn new(frame: &MovingFrame, sets: &Sets, speed: f64) -> Result<Self> {
+        let mut matrix = frame.with_pressed(&sets.pressed);
+        let mut rhs = frame.rhs.clone();
+        let (couplings, sections) = match (&frame.friction, &sets.friction) {
+            (Some(friction), Some(state)) => (friction.linearise(state, &mut matrix, &mut rhs), &friction.sections[..]),
+            _ => (Vec::new(), &[][..]),
+        };
+        let lu = factor(matrix, speed)?;
+        if couplings.is_empty() {
+            return Ok(Self { lu, couplings: None, rhs });
+        }
+        let k = couplings.len();
+        let mut z = Vec::with_capacity(k);
+        let mut anchors = Vec::with_capacity(k);
+        for AnchorCoupling { mut column, anchor } in couplings {
+            lu.solve_in_place(&mut column);
+            z.push(column);
+            anchors.push(sections[anchor]);
+        }
+        let mut small = GeneralBanded::zeros(k, k - 1, k - 1);
+        for (j, anchor) in anchors.iter().enumerate() {
+            for (m, column) in z.iter().enumerate() {
+                small.add(j, m, if j == m { 1.0 } else { 0.0 } - anchor.deflection(column));
+            }
+        }
+        let small = factor(small, speed)?;
+        Ok(Self { lu, couplings: Some((z, anchors, small)), rhs })
+    }
+
+    /// `b` replaced by the solution of the sets' equations with right-hand side `b`.
+    pub(crate) fn solve_in_place(&self, b: &mut [f64]) {
+        self.lu.solve_in_place(b);
+        if let Some((z, anchors, small)) = &self.couplings {
+            let mut c: Vec<f64> = anchors.iter().map(|a| a.deflection(b)).collect();
+            small.solve_in_place(&mut c);
+            for (column, c) in z.iter().zip(&c) {
+                b.iter_mut().zip(column).for_each(|(y, z)| *y += c * z);
+            }
         }
     }
-    let mut c: Vec<f64> = anchors.iter().map(|a| a.deflection(&y)).collect();
-    factor(small, speed)?.solve_in_place(&mut c);
-    for (column, c) in z.iter().zip(&c) {
-        y.iter_mut().zip(column).for_each(|(y, z)| *y += c * z);
-    }
-    Ok(y)
 }
 
 /// The wave without friction for the guess's pressed set (all pressed if it does not fit): one solve.
 pub(crate) fn frictionless(frame: &MovingFrame, speed: f64, guess: &ContactGuess) -> Result<Vec<f64>> {
     let sections = frame.sections.len();
     let pressed = guess.pressed(sections).map_or_else(|| vec![true; sections], <[bool]>::to_vec);
-    newton_point(frame, &Sets { pressed, friction: None }, speed)
+    frame.newton_point(&Sets { pressed, friction: None }, speed)
 }
 
 /// One stage: the iteration from `w`, globalised by backtracking on ‖r‖₂ (the plain iteration cycles between sets
 /// that differ in a section at a zone's edge): the Newton point W_N of the sets of W, then W + t(W_N − W) with t
 /// halved until the residual falls by 1e-4·t of itself.
-pub(crate) fn iterate(
-    frame: &MovingFrame,
+pub(crate) fn iterate<P: SetProblem>(
+    frame: &P,
     speed: f64,
     mut w: Vec<f64>,
     (guess, control): (&mut ContactGuess, &Control<'_>),
     limit: usize,
 ) -> Result<(Vec<f64>, Convergence)> {
-    let Evaluation { mut norm, mut relative, mut sets } = evaluate(frame, &w);
-    let tolerance = if frame.friction.is_some() { ROUND_OFF } else { TOLERANCE };
+    let Evaluation { mut norm, mut relative, mut sets } = frame.evaluate(&w);
+    let tolerance = if frame.has_friction() { ROUND_OFF } else { TOLERANCE };
     for iteration in 1..=limit {
         if !control.next_iteration(w.len())? {
             return Ok((w, Convergence::NotConverged { iterations: iteration - 1, residual: relative }));
@@ -116,8 +167,8 @@ pub(crate) fn iterate(
             guess.remember(sets.pressed, &w);
             return Ok((w, Convergence::Converged { iterations: iteration, residual: relative }));
         }
-        let target = newton_point(frame, &sets, speed)?;
-        let at_target = evaluate(frame, &target);
+        let target = frame.newton_point(&sets, speed)?;
+        let at_target = frame.evaluate(&target);
         if at_target.relative <= ROUND_OFF && at_target.sets.same_as(&sets) {
             guess.remember(at_target.sets.pressed, &target);
             return Ok((target, Convergence::Converged { iterations: iteration, residual: at_target.relative }));
@@ -135,7 +186,7 @@ pub(crate) fn iterate(
             }
             t *= 0.5;
             let trial: Vec<f64> = w.iter().zip(&trial_point.0).map(|(a, b)| a + 0.5 * (b - a)).collect();
-            let at_trial = evaluate(frame, &trial);
+            let at_trial = frame.evaluate(&trial);
             trial_point = (trial, at_trial);
         }
     }
@@ -143,13 +194,13 @@ pub(crate) fn iterate(
 }
 
 /// The residual of a W and the sets it lies in, from one pass over the soil's and the ballast's sections.
-struct Evaluation {
-    /// ‖r‖₂ of r = A W − Σ H_sᵀ k_s⟨−H_s W⟩₊ + Σ_i weight_i H_iᵀ r_i(W) − f (N).
-    norm: f64,
+pub(crate) struct Evaluation {
+    /// ‖r‖₂ of r = A W − Σ H_sᵀ k_s⟨−H_s W⟩₊ + Σ_i weight_i H_iᵀ r_i(W) − f (N), or the problem's own residual.
+    pub(crate) norm: f64,
     /// ‖r‖∞/‖f‖∞.
-    relative: f64,
+    pub(crate) relative: f64,
     /// The sets of W (the friction march's forces with them).
-    sets: Sets,
+    pub(crate) sets: Sets,
 }
 
 fn evaluate(frame: &MovingFrame, w: &[f64]) -> Evaluation {

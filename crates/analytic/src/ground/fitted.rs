@@ -52,9 +52,32 @@ pub struct FittedFoundation {
 }
 
 impl<S: LineSupport + ?Sized> GroundedBeam<'_, S> {
-    /// The foundation fitted at `speed` (m/s), as the module says.
+    /// The foundation fitted at `speed` (m/s), as the module says, with its error.
     pub fn fitted_foundation(&self, speed: f64) -> Result<FittedFoundation> {
         let exact = self.spectrum(speed)?;
+        let (fit, wavenumbers) = self.fit(&exact, speed)?;
+        let (wave_error, peak_error) = self.error_of(&exact, &fit, speed)?;
+        Ok(FittedFoundation {
+            speed,
+            stiffness: fit.stiffness,
+            damping: fit.damping,
+            co_vibrating_mass: fit.mass,
+            wavenumbers,
+            wave_error,
+            peak_error,
+        })
+    }
+
+    /// The foundation fitted to `exact`, this beam's spectrum at `speed`, without measuring its error: its spring,
+    /// dashpot and co-vibrating mass as a Winkler foundation and the mass per length that goes with it,
+    /// (Foundation::linear(k_f, c), ρA + m) — a local operator near the exact one.
+    pub fn local_fit(&self, exact: &MovingSpectrum, speed: f64) -> Result<(Foundation, f64)> {
+        let (fit, _) = self.fit(exact, speed)?;
+        Ok((Foundation::linear(fit.stiffness, fit.damping), self.mass_per_length + fit.mass))
+    }
+
+    /// The fit to `exact` at `speed` and the wavenumbers it is fitted over.
+    fn fit(&self, exact: &MovingSpectrum, speed: f64) -> Result<(Fit, (f64, f64))> {
         let samples = exact.samples_in_k();
         let heaviest = samples.iter().map(|(_, g, dk)| g.norm().powi(4) * dk).fold(0.0, f64::max);
         let kept: Vec<(f64, Complex64, f64)> =
@@ -88,16 +111,7 @@ impl<S: LineSupport + ?Sized> GroundedBeam<'_, S> {
                 break;
             }
         }
-        let (wave_error, peak_error) = self.error_of(&exact, &fit, speed)?;
-        Ok(FittedFoundation {
-            speed,
-            stiffness: fit.stiffness,
-            damping: fit.damping,
-            co_vibrating_mass: fit.mass,
-            wavenumbers: central_range(&kept, &rows),
-            wave_error,
-            peak_error,
-        })
+        Ok((fit, central_range(&kept, &rows)))
     }
 
     /// The fitted beam's wave against `exact` at `speed`: (max|W_fit − W| / max|W|, the peaks' signed difference over

@@ -17,6 +17,7 @@
 
 use super::filon::PiecewiseCubic;
 use super::line_support::LineSupport;
+use crate::interpolation::read_equally_spaced;
 use fem_beam::error::Result;
 use fem_beam::properties::Beam;
 use fem_beam::{Axle, FemError};
@@ -218,15 +219,7 @@ impl MovingSpectrum {
             return positions.par_iter().map(|&s| self.deflection_under(axles, s)).collect();
         }
         let grid: Vec<f64> = (0..count).into_par_iter().map(|i| self.deflection(from + i as f64 * GRID_STEP)).collect();
-        let read = |s: f64| {
-            let x = (s - from) / GRID_STEP;
-            let i = (x.floor() as usize).clamp(1, count - 3);
-            let t = x - i as f64;
-            let (a, b, c, d) = (grid[i - 1], grid[i], grid[i + 1], grid[i + 2]);
-            let (before, after, two_after) = (t + 1.0, t - 1.0, t - 2.0);
-            (-a * t * after * two_after + d * before * t * after) / 6.0
-                + (b * before * after * two_after - c * before * t * two_after) / 2.0
-        };
+        let read = |s: f64| read_equally_spaced(&grid, from, GRID_STEP, s);
         positions.par_iter().map(|&s| axles.iter().map(|a| a.force * read(s + a.offset)).sum()).collect()
     }
 }

@@ -8,6 +8,7 @@ mod examples;
 mod failures;
 mod figures;
 mod ground;
+mod ground_friction;
 mod ground_wave;
 mod receptance;
 mod run_out;

@@ -91,6 +91,24 @@ pub struct GroundWavePoint {
     pub deflection_behind: f64,
     /// The window: m behind the last axle, m ahead of the first, spacing of its points (m).
     pub domain: (f64, f64, f64),
+    /// With ballast friction: how its wave was found and what it dissipates.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub friction: Option<FrictionPoint>,
+}
+
+/// The ballast friction's part of a speed's wave on the ground.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FrictionPoint {
+    /// Newton iterations over the continuation's stages.
+    pub newton_iterations: usize,
+    /// GMRES steps over them.
+    pub krylov_iterations: usize,
+    /// f_u v Σ h|W′| over the slipping points (W): the power the ballast takes from the train.
+    pub dissipated_power: f64,
+    /// Length of track where the rail slides over the ballast (m).
+    pub slipping_length: f64,
+    /// The largest |r|/f_u over the window's last tenth behind the train (1): what its rear end still holds.
+    pub rear_force_ratio: f64,
 }
 
 /// The steady waves of the scenario's axles on its ground over speeds.
@@ -112,6 +130,8 @@ pub struct GroundWaveStudy {
     pub waves: Vec<GroundWave>,
     /// A measured record beside the wave (one speed only), where one was given.
     pub comparison: Option<Comparison>,
+    /// The ballast's friction f_u (N/m) under the composite beam, where it has any.
+    pub friction: Option<f64>,
 }
 
 impl GroundWaveStudy {
@@ -138,20 +158,103 @@ impl GroundWaveStudy {
             }
         };
         let grounded = GroundedBeam::new(&beam, support).map_err(StudyError::from)?;
+        let friction = friction_on(scenario, &track)?;
         let (mut points, mut waves) = (Vec::with_capacity(speeds.len()), Vec::with_capacity(speeds.len()));
+        let mut guess = stationary::ContactGuess::default();
         for &speed in speeds {
             if stop.is_some_and(|s| s.load(std::sync::atomic::Ordering::Relaxed)) {
                 return Err(StudyError::Interrupted);
             }
             let spectrum = grounded.spectrum(speed).map_err(StudyError::from)?;
-            let wave = wave_of(&spectrum, &train, speed, &positions);
-            points.push(summary(&spectrum, &train, &wave, window));
+            let (wave, point) = match friction {
+                None => {
+                    let wave = wave_of(&spectrum, &train, speed, &positions);
+                    let point = summary(&spectrum, &train, &wave, window, &|_| 0.0);
+                    (wave, point)
+                }
+                Some(force) => {
+                    let on = Friction { grounded: &grounded, beam: &beam, force, stop };
+                    on.wave(&spectrum, &train, speed, &positions, window, &mut guess)?
+                }
+            };
+            points.push(point);
             waves.push(wave);
             progress(points.len());
         }
         let beam = (beam.bending_stiffness(), beam.mass_per_length());
         let title = scenario.title.clone();
-        Ok(Self { title, beam, strip: strip.clone(), track: track.clone(), train, points, waves, comparison: None })
+        let strip = strip.clone();
+        Ok(Self { title, beam, strip, track: track.clone(), train, points, waves, comparison: None, friction })
+    }
+}
+
+/// The ballast's f_u (N/m) of `scenario` on `track`, if it has any: on the composite beam only (the two-beam track's
+/// ballast friction, between the sleepers and the embankment, is refused by key).
+fn friction_on(scenario: &Scenario, track: &GroundTrack) -> Result<Option<f64>> {
+    let Some(distributed) = &scenario.friction.distributed else { return Ok(None) };
+    let force = distributed.friction()?.force_per_length;
+    if force > 0.0 && matches!(track, GroundTrack::RailOnEmbankment { .. }) {
+        return Err(invalid(
+            "friction.distributed",
+            "given",
+            "ballast friction on the ground is solved under the composite beam; on the rail-on-embankment track \
+             (an [embankment]) it is not built yet: leave it out, or model the track as one composite beam",
+        ));
+    }
+    Ok((force > 0.0).then_some(force))
+}
+
+/// The wave with ballast friction of strength `force` (N/m) under the composite beam on the ground.
+struct Friction<'a> {
+    grounded: &'a GroundedBeam<'a, dyn LineSupport + 'a>,
+    beam: &'a fem_beam::Beam,
+    force: f64,
+    stop: Option<&'a std::sync::atomic::AtomicBool>,
+}
+
+impl Friction<'_> {
+    /// The wave at `speed` on the window's points (`positions`, spaced [`WAVE_STEP`]), from `guess` (the last
+    /// speed's) and leaving this one there; a wave whose iteration did not converge is an error naming the speed.
+    fn wave(
+        &self,
+        spectrum: &MovingSpectrum,
+        train: &Train,
+        speed: f64,
+        positions: &[f64],
+        window: WaveWindow,
+        guess: &mut stationary::ContactGuess,
+    ) -> Result<(GroundWave, GroundWavePoint)> {
+        let (foundation, mass) = self.grounded.local_fit(spectrum, speed).map_err(StudyError::from)?;
+        let mut local = *self.beam;
+        local.density = mass / local.area;
+        let problem = stationary::GroundFrictionProblem {
+            spectrum,
+            axles: &train.axles,
+            speed,
+            window: stationary::GroundWindow { first: positions[0], step: WAVE_STEP, count: positions.len() },
+            friction_force: self.force,
+            local: (local, foundation),
+        };
+        let control = stationary::Control::new(self.stop);
+        let solved = stationary::solve_on_ground(&problem, guess, &control).map_err(StudyError::from)?;
+        if let stationary::Convergence::NotConverged { iterations, residual } = solved.convergence {
+            return Err(StudyError::Beam(fem_beam::FemError::NotConverged {
+                what: format!("the wave with ballast friction at {speed} m/s ({iterations} Newton iterations)"),
+                reached: residual,
+                asked: stationary::newton::ROUND_OFF,
+            }));
+        }
+        let wave = GroundWave { speed, s: positions.to_vec(), deflection: solved.deflection.clone() };
+        let mut point = summary(spectrum, train, &wave, window, &|s| solved.carried(s));
+        let slipping_length = solved.slipping.iter().zip(&solved.weights).filter(|(s, _)| **s).map(|(_, h)| h).sum();
+        point.friction = Some(FrictionPoint {
+            newton_iterations: solved.convergence.iterations(),
+            krylov_iterations: solved.krylov_iterations,
+            dissipated_power: solved.dissipated_power(self.force, speed),
+            slipping_length,
+            rear_force_ratio: solved.end_forces(self.force).0,
+        });
+        Ok((wave, point))
     }
 }
 
@@ -160,18 +263,27 @@ fn wave_of(spectrum: &MovingSpectrum, train: &Train, speed: f64, positions: &[f6
     GroundWave { speed, s: positions.to_vec(), deflection: spectrum.wave_under(&train.axles, positions) }
 }
 
-/// The point of `wave`: its peaks refined between its points, the deflection under the first axle and at the rear.
-fn summary(spectrum: &MovingSpectrum, train: &Train, wave: &GroundWave, window: WaveWindow) -> GroundWavePoint {
+/// The point of `wave`: its peaks refined between its points, the deflection under the first axle and at the rear;
+/// `carried` is what friction adds to the axles' linear wave at any s (m).
+fn summary(
+    spectrum: &MovingSpectrum,
+    train: &Train,
+    wave: &GroundWave,
+    window: WaveWindow,
+    carried: &dyn Fn(f64) -> f64,
+) -> GroundWavePoint {
     let samples: Vec<(f64, f64)> = wave.s.iter().copied().zip(wave.deflection.iter().copied()).collect();
-    let extremes = refined_extremes(&samples, &|s| spectrum.deflection_under(&train.axles, s));
+    let at = |s: f64| spectrum.deflection_under(&train.axles, s) + carried(s);
+    let extremes = refined_extremes(&samples, &at);
     GroundWavePoint {
         speed: wave.speed,
         status: "converged",
         spectrum_samples: spectrum.samples(),
         max_downward_deflection: extremes.max_downward,
         max_upward_deflection: extremes.max_upward,
-        deflection_under_load: spectrum.deflection_under(&train.axles, 0.0),
+        deflection_under_load: at(0.0),
         deflection_behind: wave.deflection.first().copied().unwrap_or(0.0),
         domain: (window.behind, window.ahead, WAVE_STEP),
+        friction: None,
     }
 }
