@@ -57,6 +57,20 @@ def test_a_train_on_the_ground_from_python():
         frictrack.stationary(site, speeds=[20.0], element_length=0.1)
 
 
+def test_ballast_friction_on_the_ground_from_python():
+    """The X2000 at Ledsgård at 185 km/h with ballast friction of 2 kN/m under the composite beam: the command line's
+    8.54 mm (8.78 without friction), the friction's own numbers with the point; on the two-beam track refused by
+    name."""
+    site = ROOT / "examples" / "ledsgard" / "ledsgard.toml"
+    point = frictrack.stationary(site, speeds=[185 / 3.6], distributed_friction=2000.0).points[0]
+    assert point["status"] == "converged"
+    assert abs(point["max_downward_deflection"]["value"] - 8.543e-3) < 1e-6
+    assert point["friction"]["slipping_length"] > 100.0 and point["friction"]["friction_power"] > 0.0
+    two_beam = ROOT / "examples" / "ledsgard" / "ledsgard-two-beam.toml"
+    with pytest.raises(frictrack.InputError, match="friction.distributed"):
+        frictrack.stationary(two_beam, speeds=[20.0], distributed_friction=2000.0)
+
+
 def test_a_run_in_time_on_the_ground_from_python():
     """`frictrack.run` on a `[ground]` takes the foundation fitted at its speed, as the command line does: the fit and
     its wave error in the summary, and at the ground's critical speed the warning the command line prints."""

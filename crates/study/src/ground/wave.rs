@@ -104,7 +104,7 @@ pub struct FrictionPoint {
     /// GMRES steps over them.
     pub krylov_iterations: usize,
     /// f_u v Σ h|W′| over the slipping points (W): the power the ballast takes from the train.
-    pub dissipated_power: f64,
+    pub friction_power: f64,
     /// Length of track where the rail slides over the ballast (m).
     pub slipping_length: f64,
     /// The largest |r|/f_u over the window's last tenth behind the train (1): what its rear end still holds.
@@ -250,7 +250,7 @@ impl Friction<'_> {
         point.friction = Some(FrictionPoint {
             newton_iterations: solved.convergence.iterations(),
             krylov_iterations: solved.krylov_iterations,
-            dissipated_power: solved.dissipated_power(self.force, speed),
+            friction_power: solved.dissipated_power(self.force, speed),
             slipping_length,
             rear_force_ratio: solved.end_forces(self.force).0,
         });

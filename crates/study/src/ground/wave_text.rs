@@ -30,7 +30,13 @@ pub const POINT_COLUMNS: [Column; 8] = [
     ("spectrum_samples", unit("spectrum_samples")),
 ];
 /// The numbers of the JSON outside its tables, with their units.
-const NUMBERS: [&str; 13] = [
+const NUMBERS: [&str; 19] = [
+    "force_per_length",
+    "newton_iterations",
+    "krylov_iterations",
+    "friction_power",
+    "slipping_length",
+    "rear_force_ratio",
     "bending_stiffness",
     "mass_per_length",
     "width",
@@ -69,6 +75,10 @@ pub struct GroundWaveFile<'a> {
     pub train: &'a str,
     /// The axles as the beam carries them: offset behind the first (m) and force (N, downward).
     pub axles: Vec<AxleRow>,
+    /// The ballast's friction f_u (N/m) under the composite beam, where it has any (each point then says how its
+    /// wave was found and what the ballast takes, under `friction`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub force_per_length: Option<f64>,
     /// One point per speed.
     pub points: &'a [GroundWavePoint],
     /// The measured record beside the wave, where one was given.
@@ -137,6 +147,7 @@ impl GroundWaveStudy {
             ground: describe(&self.strip),
             train: &self.train.name,
             axles: self.train.axles.iter().map(|a| AxleRow { offset: a.offset, force: a.force }).collect(),
+            force_per_length: self.friction,
             points: &self.points,
             measured: self.comparison.as_ref(),
             units: units(),
@@ -165,7 +176,8 @@ impl GroundWaveStudy {
                 self.beam.0, sleepers.mass, sleepers.spacing, embankment.bending_stiffness, embankment.mass_per_length
             ),
         };
-        format!("{load}; {track} on a {} m strip of {}", self.strip.width, describe(&self.strip))
+        let friction = self.friction.map_or(String::new(), |f| format!(", ballast friction f_u = {} kN/m", f / 1e3));
+        format!("{load}; {track}{friction} on a {} m strip of {}", self.strip.width, describe(&self.strip))
     }
 
     /// The figure: the waves along the train (up to four speeds; deflection in mm, the axles marked on the axis,
@@ -275,6 +287,18 @@ impl Output for GroundWaveStudy {
                 at(p.max_upward_deflection),
                 -p.deflection_under_load * 1e3
             )?;
+            if let Some(friction) = &p.friction {
+                writeln!(
+                    f,
+                    "               the rail slips over {:.1} m and the ballast takes {:.2} kW; the window's last tenth \
+                     behind holds {:.2} f_u ({} Newton iterations, {} GMRES steps)",
+                    friction.slipping_length,
+                    friction.friction_power / 1e3,
+                    friction.rear_force_ratio,
+                    friction.newton_iterations,
+                    friction.krylov_iterations
+                )?;
+            }
         }
         if let Some(c) = &self.comparison {
             writeln!(
