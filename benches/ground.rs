@@ -1,7 +1,8 @@
 //! The ground under the track (docs/theory.md §19): one speed point of the linear moving-frame solution on a soft
 //! layered site — the spectrum of a composite beam on the strip's k_eq(k_x, k_x v) and its wave's extremes — at a
 //! subcritical, the critical and a supercritical speed, as `frictrack ground` computes each point of its speed curve
-//! (the target: ≤ 0.5 s a speed on 2 cores); and one strip integral k_eq alone.
+//! (the target: ≤ 0.5 s a speed on 2 cores); the X2000 at Ledsgård without and with ballast friction (≤ 5×
+//! the linear wave); and one strip integral k_eq alone.
 //!
 //! Run with `cargo bench -p frictrack-benches --bench ground`.
 
@@ -52,6 +53,19 @@ fn ground(c: &mut Criterion) {
             black_box(study::ground::GroundWaveStudy::of(&ledsgard, &[185.0 / 3.6], window, None, &|_| {}).unwrap())
         })
     });
+    // The same with ballast friction of 1, 2 and 5 kN/m under the composite beam: the nonlinear wave on the ground
+    // (the target: ≤ 5× the linear one), each from cold (no previous speed's wave).
+    for friction in [1000.0, 2000.0, 5000.0] {
+        let mut with_friction = ledsgard.clone();
+        with_friction.friction.distributed =
+            Some(scenario::DistributedSection { force_per_length: friction, ..Default::default() });
+        group.bench_function(format!("x2000_wave_with_{friction:.0}_n_per_m_friction_185_km_per_h_2_threads"), |b| {
+            b.iter(|| {
+                let study = study::ground::GroundWaveStudy::of(&with_friction, &[185.0 / 3.6], window, None, &|_| {});
+                black_box(study.unwrap())
+            })
+        });
+    }
     group.bench_function("strip_integral_kx_0.5_at_65_m_per_s", |b| {
         b.iter(|| black_box(strip.equivalent_stiffness(0.5, 0.5 * 65.0).unwrap()))
     });

@@ -40,7 +40,7 @@ enum Command {
     Run(run::RunArgs),
     /// Run a scenario at many speeds in parallel; CSV of max deflections, dissipated energy and W̄ per speed.
     Sweep(sweep::SweepArgs),
-    /// Run one of the twelve studies (docs/theory.md §7, §10, §12, §14, §17, §18): CSV, JSON and figures in a folder.
+    /// Run one of the thirteen studies (docs/theory.md §7, §10, §12, §14, §17–§19): CSV, JSON and figures in a folder.
     Study(study_cmd::StudyArgs),
     /// Run the nine studies of the thesis (§7, §10, §12, §14) and write their data, figures and report.md.
     Reproduce(reproduce::ReproduceArgs),

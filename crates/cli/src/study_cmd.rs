@@ -1,4 +1,4 @@
-//! `frictrack study <preset>`: run one of the twelve studies (docs/theory.md §7, §10, §12, §14, §17 and §18) and write
+//! `frictrack study <preset>`: run one of the thirteen studies (docs/theory.md §7, §10, §12, §14, §17–§19) and write
 //! `<preset>.csv` (the data), `<preset>.json` (scenario, version, git revision, resolution, summary, wall time) and
 //! its figures (PNG and SVG) into the output folder.
 
@@ -70,7 +70,7 @@ impl StudyOptions {
 #[derive(Debug, Args)]
 pub struct StudyArgs {
     /// discrete-speed, equal-cost, optimal-force, distributed-speed, amplification, discrete-vs-distributed, hslm,
-    /// vehicle-speed, stationary-wave (the nine `reproduce` runs), voided-sleepers, sleeper-friction or receptance.
+    /// vehicle-speed, stationary-wave (the nine `reproduce` runs), voided-sleepers, sleeper-friction, receptance or ledsgard.
     preset: String,
     #[command(flatten)]
     options: StudyOptions,

@@ -115,7 +115,11 @@ fn on_the_ground(
     let scenario = scenario.clone();
     let solve = move |stop: &_, told: &interruptible::Progress| {
         let threads = std::thread::available_parallelism().map_or(1, usize::from);
-        told.announce("frictrack.stationary", &runner::cost::Estimate::ground(speeds.len(), threads));
+        let mut estimate = runner::cost::Estimate::ground(speeds.len(), threads);
+        if scenario.friction.distributed.as_ref().is_some_and(|d| d.force_per_length > 0.0) {
+            estimate = estimate.with_ground_friction();
+        }
+        told.announce("frictrack.stationary", &estimate);
         let done = |n: usize| told.set(n as f64 / total);
         study::ground::GroundWaveStudy::of(&scenario, &speeds, window, Some(stop), &done)
     };

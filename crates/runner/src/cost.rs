@@ -93,6 +93,10 @@ const RECEPTANCE_PER_DOF_FREQUENCY: f64 = 2e-7;
 /// Seconds per moving-load spectrum of a beam on a layered ground on one thread (each spectrum a few hundred strip
 /// integrals: 0.54–0.90 s on 2 threads on a soft two-layer site, BENCHMARKS.md; ~1.4 s on one).
 const GROUND_SPECTRUM: f64 = 1.4;
+
+/// A speed's wave with ballast friction on the ground over its linear wave: 2.2–3.0 at Ledsgård (1.15–1.57 s against
+/// 0.53 s, BENCHMARKS.md).
+pub const GROUND_FRICTION_FACTOR: f64 = 2.5;
 /// Seconds per frequency of a point receptance on a layered ground on one thread (an integral over k of strip
 /// integrals: 30 frequencies of examples/soft-ground.toml took 104 s on 2 threads).
 const GROUND_RECEPTANCE: f64 = 7.0;
@@ -230,6 +234,11 @@ impl Estimate {
         let seconds = GROUND_SPECTRUM * spectra as f64 / threads as f64;
         let size = Size::Ground { integrals: spectra, what: "moving-load spectra" };
         Self { runs: 1, threads, size, seconds, lower_bound: false }
+    }
+
+    /// The same with ballast friction on the ground: [`GROUND_FRICTION_FACTOR`] times the linear wave's time.
+    pub fn with_ground_friction(self) -> Self {
+        Self { seconds: self.seconds * GROUND_FRICTION_FACTOR, ..self }
     }
 
     /// A point receptance of a beam on a layered ground at `frequencies` frequencies, shared by `threads` threads.

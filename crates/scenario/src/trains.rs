@@ -65,8 +65,14 @@ pub fn read_csv(path: &std::path::Path) -> Result<Train> {
         return Err(invalid("load.train", path.display(), "train files are at most 4 MiB"));
     }
     let text = std::fs::read_to_string(path).map_err(io)?;
+    let name = path.file_stem().map_or_else(|| "file".into(), |s| s.to_string_lossy().into_owned());
+    parse_csv(&name, &text, &path.display().to_string())
+}
+
+/// The train `name` from the text of a train file (`offset,force` rows, `#` comments); `source` names it in errors.
+pub fn parse_csv(name: &str, text: &str, source: &str) -> Result<Train> {
     // Spreadsheets write a UTF-8 byte-order mark first: it is no part of the header.
-    let text = text.strip_prefix('\u{feff}').unwrap_or(&text);
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let mut axles = Vec::new();
     for (number, line) in text.lines().enumerate() {
         let line = line.split('#').next().unwrap_or("").trim();
@@ -75,7 +81,7 @@ pub fn read_csv(path: &std::path::Path) -> Result<Train> {
         }
         let bad = || {
             invalid(
-                &format!("{} line {}", path.display(), number + 1),
+                &format!("{source} line {}", number + 1),
                 line,
                 "expected `offset,force` (m behind the first axle, N downward)",
             )
@@ -85,8 +91,7 @@ pub fn read_csv(path: &std::path::Path) -> Result<Train> {
         let force = force.trim().parse::<f64>().map_err(|_| bad())?;
         axles.push(Axle { offset, force });
     }
-    let name = path.file_stem().map_or_else(|| "file".into(), |s| s.to_string_lossy().into_owned());
-    Ok(Train { name, axles, patches: Vec::new() })
+    Ok(Train { name: name.into(), axles, patches: Vec::new() })
 }
 
 /// What a report says of a train: name, counts, length (m) and whole weight (N).

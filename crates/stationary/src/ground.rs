@@ -1,4 +1,4 @@
-//! Ballast friction under a train on the ground (docs/theory.md §19.9). The ground is linear but non-local: the wave
+//! Ballast friction under a train on the ground (docs/theory.md §19, "Ballast friction on the ground"). The ground is linear but non-local: the wave
 //! of a unit downward force is W₁(s) (the moving-load Fourier integral of `analytic::ground`, exact through the
 //! ln k head of a strip whose static line stiffness vanishes at k = 0). The friction forces act at the points
 //! s_i = s₀ + i h of a window around the train, each a Jenkins section of the play operator marched from the front

@@ -3,7 +3,7 @@
 //! The scenario and its checks are `scenario`'s; sweeps, journals, shards and cost are `runner`'s; typed run
 //! summaries, files and figures are `report`'s. Here:
 //!
-//! - [`presets`]: the twelve studies of the theory manual, with their figures and summaries.
+//! - [`presets`]: the thirteen studies of the theory manual, with their figures and summaries.
 //! - [`stationary`]: the stationary wave on the infinite track over speeds (continuation, error estimate, typed
 //!   points, CSV, figures); [`co_moving`]: a run in a window that moves with the load.
 //! - [`reference_check`]: the FE model against closed forms; [`steady_response`]: the infinite beam's steady state

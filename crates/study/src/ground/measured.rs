@@ -44,6 +44,13 @@ impl MeasuredRecord {
             return Err(bad("records are at most 64 MiB".into()));
         }
         let text = std::fs::read_to_string(path).map_err(|e| bad(format!("cannot read the record: {e}")))?;
+        Self::parse(&name, &text, field)
+    }
+
+    /// The record `name` from the text of a record file (as [`Self::read`] takes it).
+    pub fn parse(name: &str, text: &str, field: &str) -> Result<Self> {
+        let name = name.to_string();
+        let bad = |why: String| invalid(field, &name, why);
         let mut lines = text.lines().map(|l| l.split('#').next().unwrap_or("").trim()).filter(|l| !l.is_empty());
         let header = lines.next().unwrap_or("").trim_start_matches('\u{feff}').to_ascii_lowercase();
         let scale = match header.replace(' ', "").as_str() {

@@ -156,7 +156,7 @@ impl GroundWaveStudy {
     }
 
     /// The beam, the ground and the load in one line.
-    fn subtitle(&self) -> String {
+    pub fn subtitle(&self) -> String {
         let load = match self.train.axles.as_slice() {
             [axle] => format!("one force of {:.0} kN", axle.force / 1e3),
             axles => {

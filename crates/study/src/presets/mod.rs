@@ -1,5 +1,6 @@
-//! The twelve studies of the theory manual as named presets: the thesis's six (docs/theory.md §7), the trains' (§10),
-//! the vehicles' (§12), the stationary wave's (§14) and the discrete track's three (§17, §18). Each returns its data
+//! The thirteen studies of the theory manual as named presets: the thesis's six (docs/theory.md §7), the trains'
+//! (§10), the vehicles' (§12), the stationary wave's (§14), the discrete track's three (§17, §18) and Ledsgård's on
+//! the ground (§19). Each returns its data
 //! as CSV (long format, one row per point, SI units), a typed JSON summary and a few human-readable lines; all runs
 //! of a study share one rayon pool, and results do not depend on the thread count.
 //!
@@ -19,6 +20,7 @@ mod discrete_vs_distributed;
 mod distributed_speed;
 mod equal_cost;
 pub mod hslm;
+pub mod ledsgard;
 mod optimal_force;
 mod sleeper_friction;
 mod stationary_wave;

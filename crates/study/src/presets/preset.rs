@@ -30,6 +30,8 @@ pub enum Preset {
     /// Study 12: the track's receptance (docs/theory.md §17, §18): Euler–Bernoulli and Timoshenko rails on sleepers
     /// (mid-span, above a sleeper) and on the equivalent continuous support.
     Receptance,
+    /// Ledsgård: the X2000 on the soft site beside the measurements, with ballast friction (docs/theory.md §19).
+    Ledsgard,
 }
 
 impl Preset {
@@ -47,9 +49,9 @@ impl Preset {
         Preset::StationaryWave,
     ];
 
-    /// All twelve, in docs/theory.md order: the reproduced nine, then the discrete track's three.
-    pub const ALL: [Preset; 12] = {
-        let mut all = [Preset::Receptance; 12];
+    /// All thirteen, in docs/theory.md order: the reproduced nine, then the discrete track's three and Ledsgård.
+    pub const ALL: [Preset; 13] = {
+        let mut all = [Preset::Receptance; 13];
         let mut i = 0;
         while i < Self::REPRODUCED.len() {
             all[i] = Self::REPRODUCED[i];
@@ -57,6 +59,7 @@ impl Preset {
         }
         all[9] = Preset::VoidedSleepers;
         all[10] = Preset::SleeperFriction;
+        all[12] = Preset::Ledsgard;
         all
     };
 }

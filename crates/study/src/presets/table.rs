@@ -5,8 +5,8 @@ use super::preset::Preset;
 use super::resolution::Resolution;
 use super::study_data::StudyData;
 use super::{
-    amplification, discrete_speed, discrete_vs_distributed, distributed_speed, equal_cost, hslm, optimal_force,
-    sleeper_friction, stationary_wave, track_receptance, vehicle_speed, voided_sleepers,
+    amplification, discrete_speed, discrete_vs_distributed, distributed_speed, equal_cost, hslm, ledsgard,
+    optimal_force, sleeper_friction, stationary_wave, track_receptance, vehicle_speed, voided_sleepers,
 };
 use runner::Runner;
 use scenario::Scenario;
@@ -41,7 +41,7 @@ pub(super) struct PresetEntry {
 }
 
 /// The presets, in the order of [`Preset::ALL`] (a test checks it).
-pub(super) const TABLE: [PresetEntry; 12] = [
+pub(super) const TABLE: [PresetEntry; 13] = [
     // 1. Preset::DiscreteSpeed
     PresetEntry {
         name: "discrete-speed",
@@ -204,6 +204,19 @@ pub(super) const TABLE: [PresetEntry; 12] = [
         sampling: Sampling::Fixed,
         run: track_receptance::study,
         overrides: Some(track_receptance::overrides),
+    },
+    // 13. Preset::Ledsgard
+    PresetEntry {
+        name: "ledsgard",
+        title: "Ledsgård: the X2000 on soft ground beside the measurements, with ballast friction",
+        sets: &[
+            "site: examples/ledsgard built in — the composite beam on the site's layered ground, the X2000",
+            "speeds: 100–280 km/h every 20 (coarse) or 5 (paper); ballast friction f_u ∈ {0, 1, 2, 5} kN/m under the \
+             composite beam; the measured records at 70 and 185 km/h beside the computed waves",
+        ],
+        sampling: Sampling::Fixed,
+        run: ledsgard::study,
+        overrides: Some(ledsgard::overrides),
     },
 ];
 

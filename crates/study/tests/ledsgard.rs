@@ -1,0 +1,44 @@
+//! The `ledsgard` study (docs/theory.md §19): the built-in site's curves with and without ballast friction, the
+//! critical speeds, the measured records beside the computed waves, its files' columns and figures.
+
+use runner::Runner;
+use scenario::Scenario;
+use study::presets::{Preset, Resolution, run_preset};
+
+/// Coarse: four curves (f_u = 0, 1, 2, 5 kN/m) of eleven speeds, 100–280 km/h by 20 and 185 km/h. Friction lowers the deepest deflection
+/// at every speed (its force only resists the track's motion), the more the stronger; the curves at 185 km/h are the
+/// command line's (8.78, 8.67, 8.54, 8.10 mm: `cli/tests/cli/ground_friction.rs`) to 1e-6 of the peak (the same
+/// solve); the comparisons are `--measured`'s (RMS misfit 0.62 and 2.23 mm); the ground's critical speed for one
+/// load is `frictrack ground`'s 56.5 m/s and the Winkler control lies far above it; every CSV column has a unit.
+#[test]
+fn ledsgard_with_and_without_ballast_friction() {
+    let data =
+        run_preset(Preset::Ledsgard, Resolution::Coarse, &Scenario::default(), &Runner::new(0).unwrap()).unwrap();
+    assert!(data.columns.iter().all(|(_, unit)| *unit != "unknown"), "{:?}", data.columns);
+    let summary = serde_json::to_value(&data.summary).unwrap();
+    let curves = summary["curves"].as_array().unwrap();
+    let at_185: Vec<f64> = curves.iter().map(|c| 1e3 * c["at_185_km_per_h"].as_f64().unwrap()).collect();
+    for (got, quoted) in at_185.iter().zip([8.78, 8.67, 8.54, 8.10]) {
+        assert!((got - quoted).abs() < 0.005, "{at_185:?}");
+    }
+    let rows: Vec<Vec<f64>> =
+        data.csv.lines().skip(1).map(|l| l.split(',').map(|x| x.parse().unwrap()).collect()).collect();
+    assert_eq!(rows.len(), 44);
+    for speed in 0..11 {
+        let down: Vec<f64> = (0..4).map(|curve| rows[curve * 11 + speed][2]).collect();
+        assert!(down.windows(2).all(|w| w[1] < w[0]), "at {} m/s: {down:?}", rows[speed][1]);
+    }
+    let critical = summary["critical_speed"].as_f64().unwrap();
+    assert!((critical - 56.5).abs() < 0.05, "{critical}");
+    assert!(summary["winkler_critical_speed"].as_f64().unwrap() > 1.2 * critical);
+    let misfits: Vec<f64> = summary["measured"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|m| 1e3 * m["comparison"]["rms_misfit"].as_f64().unwrap())
+        .collect();
+    assert!((misfits[0] - 0.62).abs() < 0.005 && (misfits[1] - 2.23).abs() < 0.005, "{misfits:?}");
+    let stems: Vec<&str> = data.plots.iter().map(|p| p.stem.as_str()).collect();
+    assert_eq!(stems, ["ledsgard-speeds", "ledsgard-70-kmh", "ledsgard-185-kmh"]);
+    assert_eq!(data.headline.len(), 2);
+}
