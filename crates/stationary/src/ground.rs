@@ -12,7 +12,7 @@
 //! For the sets of W (each section slipping or stuck, to which anchor) the equations are linear,
 //! (I − W₁ H K) W = W_lin + W₁ H c, solved by GMRES ([`crate::krylov`]) preconditioned with the same equations on a
 //! local operator: the beam on a Winkler foundation fitted to the ground at this speed, one banded factorisation with
-//! the stuck springs and the anchors' couplings ([`crate::newton::SetSystem`]): its inverse is
+//! the stuck springs and the anchors' couplings (`newton::SetSystem`): its inverse is
 //! I − Eᵀ(A + E H K Eᵀ)⁻¹ E H K (E the points' deflection DOFs of the local mesh). The sets are found by the Newton
 //! iteration and the continuation in the Jenkins stiffness of the Winkler solver, shared.
 //!
@@ -45,7 +45,7 @@ const KRYLOV_TOLERANCE: f64 = 1e-12;
 /// a run's rigid Coulomb law, which gives ~1e-8 here at twice the Newton iterations). Measured at Ledsgård, 185 km/h:
 /// the deepest point moves by 8e-7 (1 kN/m) to 6.5e-6 (5 kN/m) of itself against 1e-8.
 pub const JENKINS_GIVE: f64 = 1e-6;
-/// The most points of a window (checked before anything is allocated): GMRES keeps up to [`KRYLOV_LIMIT`] vectors
+/// The most points of a window (checked before anything is allocated): GMRES keeps up to 400 vectors
 /// of them, 64 MB at this size.
 pub const MAX_POINTS: usize = 20_000;
 /// The most GMRES steps of one Newton step (measured 10–40 on the Ledsgård site).
