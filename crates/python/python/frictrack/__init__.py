@@ -313,8 +313,8 @@ class Study:
 def study(name: str, scenario: ScenarioLike = None, resolution: str = "coarse", jobs: Optional[int] = None,
           deck_track: Optional[str] = None, **overrides: Any) -> Study:
     """Run the study preset ``name`` (``discrete-speed``, ``hslm``, ``stationary-wave``, ``voided-sleepers``,
-    ``receptance``, …) on ``scenario`` (the reference case by default) at ``resolution`` ("coarse" or "paper") on
-    ``jobs`` threads.
+    ``receptance``, ``ledsgard`` — its own built-in site —, …) on ``scenario`` (the reference case by default) at
+    ``resolution`` ("coarse" or "paper") on ``jobs`` threads.
 
     ``deck_track`` ("ballasted", 3.5 m/s², or "direct-fastening", 5 m/s²; default the scenario's ``[output]
     deck_track``) sets the EN 1990 deck-acceleration limit the ``hslm`` study checks a span against: each curve of
