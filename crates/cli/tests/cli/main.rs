@@ -369,7 +369,7 @@ fn study_help_names_every_preset() {
     assert_eq!(unknown.status.code(), Some(2), "{stderr}");
     let list = stderr.split("must be one of ").nth(1).unwrap_or_else(|| panic!("{stderr}"));
     let names: Vec<&str> = list.trim().split(", ").collect();
-    assert_eq!(names.len(), 12, "{names:?}");
+    assert_eq!(names.len(), 13, "{names:?}");
     let help = String::from_utf8_lossy(&frictrack(&["study", "--help"]).stdout).replace('\n', " ");
     for name in names {
         assert!(help.contains(name), "study --help does not name {name}: {help}");

@@ -9,6 +9,7 @@ use crate::ground::comparison::Comparison;
 use crate::ground::speeds::refined_extremes;
 use analytic::ground::{GroundedBeam, LineSupport, MovingSpectrum, StripGround, TrackOnEmbankment};
 use fem_beam::{Extreme, Train};
+use rayon::prelude::*;
 use scenario::Scenario;
 use scenario::error::{Result, StudyError, invalid};
 use scenario::ground::GroundTrack;
@@ -160,26 +161,47 @@ impl GroundWaveStudy {
         let grounded = GroundedBeam::new(&beam, support).map_err(StudyError::from)?;
         let friction = friction_on(scenario, &track)?;
         let (mut points, mut waves) = (Vec::with_capacity(speeds.len()), Vec::with_capacity(speeds.len()));
-        let mut guess = stationary::ContactGuess::default();
-        for &speed in speeds {
-            if stop.is_some_and(|s| s.load(std::sync::atomic::Ordering::Relaxed)) {
-                return Err(StudyError::Interrupted);
+        let interrupted = || stop.is_some_and(|s| s.load(std::sync::atomic::Ordering::Relaxed));
+        match friction {
+            // Linear: the speeds are independent, so as many run at once as there are threads (a spectrum's last
+            // rounds of sampling leave threads idle that a second speed takes up).
+            None => {
+                for group in speeds.chunks(rayon::current_num_threads().max(1)) {
+                    if interrupted() {
+                        return Err(StudyError::Interrupted);
+                    }
+                    let done: Vec<Result<(GroundWave, GroundWavePoint)>> = group
+                        .par_iter()
+                        .map(|&speed| {
+                            let spectrum = grounded.spectrum(speed).map_err(StudyError::from)?;
+                            let wave = wave_of(&spectrum, &train, speed, &positions);
+                            let point = summary(&spectrum, &train, &wave, window, &|_| 0.0);
+                            Ok((wave, point))
+                        })
+                        .collect();
+                    for result in done {
+                        let (wave, point) = result?;
+                        points.push(point);
+                        waves.push(wave);
+                        progress(points.len());
+                    }
+                }
             }
-            let spectrum = grounded.spectrum(speed).map_err(StudyError::from)?;
-            let (wave, point) = match friction {
-                None => {
-                    let wave = wave_of(&spectrum, &train, speed, &positions);
-                    let point = summary(&spectrum, &train, &wave, window, &|_| 0.0);
-                    (wave, point)
+            // With friction each speed starts from the last one's wave.
+            Some(force) => {
+                let mut guess = stationary::ContactGuess::default();
+                let on = Friction { grounded: &grounded, beam: &beam, force, stop };
+                for &speed in speeds {
+                    if interrupted() {
+                        return Err(StudyError::Interrupted);
+                    }
+                    let spectrum = grounded.spectrum(speed).map_err(StudyError::from)?;
+                    let (wave, point) = on.wave(&spectrum, &train, speed, &positions, window, &mut guess)?;
+                    points.push(point);
+                    waves.push(wave);
+                    progress(points.len());
                 }
-                Some(force) => {
-                    let on = Friction { grounded: &grounded, beam: &beam, force, stop };
-                    on.wave(&spectrum, &train, speed, &positions, window, &mut guess)?
-                }
-            };
-            points.push(point);
-            waves.push(wave);
-            progress(points.len());
+            }
         }
         let beam = (beam.bending_stiffness(), beam.mass_per_length());
         let title = scenario.title.clone();
