@@ -1,8 +1,9 @@
-//! Ballast friction under a train on the ground (docs/theory.md §19, "Ballast friction on the ground"). The ground is linear but non-local: the wave
-//! of a unit downward force is W₁(s) (the moving-load Fourier integral of `analytic::ground`, exact through the
-//! ln k head of a strip whose static line stiffness vanishes at k = 0). The friction forces act at the points
-//! s_i = s₀ + i h of a window around the train, each a Jenkins section of the play operator marched from the front
-//! ([`crate::friction`], trapezoid weights h, h/2 at the ends), so the deflection at the points is
+//! Ballast friction under a train on the ground (docs/theory.md §19, "Ballast friction on the ground"). The ground
+//! is linear but non-local: the wave of a unit downward force is W₁(s) (the moving-load Fourier integral of
+//! `analytic::ground`, exact through the ln k head of a strip whose static line stiffness vanishes at k = 0). The
+//! friction forces act at the points s_i = s₀ + i h of a window around the train, each a Jenkins section of the play
+//! operator marched from the front ([`crate::friction`], trapezoid weights h, h/2 at the ends), so the deflection at
+//! the points is
 //!
 //! ```text
 //! W_i = W_lin(s_i) + Σ_j W₁(s_i − s_j) h_j r_j(W)       (r_j upward on the ballast, so downward on the track)
@@ -16,8 +17,10 @@
 //! I − Eᵀ(A + E H K Eᵀ)⁻¹ E H K (E the points' deflection DOFs of the local mesh). The sets are found by the Newton
 //! iteration and the continuation in the Jenkins stiffness of the Winkler solver, shared.
 //!
-//! Beyond the window the ballast is taken to hold no force: ahead the rail rests, and behind it the friction forces
-//! die out as the rail settles; [`GroundFrictionWave::end_forces`] says what the window's ends still hold.
+//! Beyond the window the ballast is taken to hold no force. Ahead the rail rests; behind the train the rail creeps
+//! back up as the ground recovers and slips at f_u along the whole window, a tail whose weight grows like ln L on a
+//! ground whose long waves are ln-soft (at Ledsgård the peak deepens by 0.02–0.03 % a doubling of the window
+//! behind); [`GroundFrictionWave::end_forces`] says what the window's ends still hold.
 
 use crate::continuation::{self, with_iterations};
 use crate::control::Control;
