@@ -23,6 +23,8 @@ use std::f64::consts::TAU;
 /// Speeds of the curve the critical speed is found on, evenly up to 1.2 times the larger of the Winkler control and
 /// the half-space's shear-wave speed (on a soft site the critical speed on the ground lies below both).
 const SPEEDS: usize = 24;
+/// The moving-load spectra [`GroundStudy::of`] samples: the static case, its speeds and ~12 to refine the peak.
+pub const SPECTRA: usize = 1 + SPEEDS + 12;
 /// Wavenumbers of each k_eq curve, log-spaced over [`WAVENUMBERS`] (rad/m).
 const STIFFNESS_POINTS: usize = 81;
 const WAVENUMBERS: (f64, f64) = (0.01, 2.0);
@@ -146,7 +148,7 @@ impl GroundStudy {
             .collect();
         let minimum = least_phase_velocity(&strip, &dispersion, &mut warnings)?;
         // The static case, the curve, ~12 to refine its peak.
-        runner.announce(runner::cost::Estimate::ground(1 + SPEEDS + 12, runner.threads()));
+        runner.announce(runner::cost::Estimate::ground(SPECTRA, runner.threads()));
         let grounded = GroundedBeam::new(&beam, &strip)?;
         let (ei, m) = (beam.bending_stiffness(), beam.mass_per_length());
         let static_deflection = -grounded.spectrum(0.0)?.deflection(0.0) * force;

@@ -87,7 +87,13 @@ pub struct LedsgardSummary {
 
 pub(super) fn study(resolution: Resolution, _base: &Scenario, runner: &Runner) -> Result<StudyData> {
     let site = site::site()?;
-    let ground = GroundStudy::of(&site, &GroundRequest { frequencies: vec![5.0] }, runner)?;
+    let speeds: Vec<f64> = speeds(resolution).iter().map(|v| v / KMH).collect();
+    // One estimate for the whole study: the ground's numbers, the two records and the curves (those with friction
+    // at their measured cost over a linear wave's).
+    let linear = crate::ground::numbers::SPECTRA + 2 + speeds.len();
+    let with_friction = (FRICTIONS.len() - 1) * speeds.len();
+    runner.announce(runner::cost::Estimate::ground_waves(linear, with_friction, runner.threads()));
+    let ground = GroundStudy::of(&site, &GroundRequest { frequencies: vec![5.0] }, &runner.silent())?;
     let mut measured = Vec::new();
     let mut compared_waves = Vec::new();
     for (speed_kmh, record) in site::records()? {
@@ -100,7 +106,6 @@ pub(super) fn study(resolution: Resolution, _base: &Scenario, runner: &Runner) -
         measured.push(LedsgardComparison { speed, comparison });
         compared_waves.push((speed_kmh, study, record));
     }
-    let speeds: Vec<f64> = speeds(resolution).iter().map(|v| v / KMH).collect();
     let mut curves = Vec::new();
     for friction in FRICTIONS {
         let mut case = site.clone();
