@@ -99,7 +99,8 @@ pub(super) fn study(resolution: Resolution, _base: &Scenario, runner: &Runner) -
     for (speed_kmh, record) in site::records()? {
         let speed = speed_kmh / KMH;
         let window = record.widened(WaveWindow::default());
-        let mut study = GroundWaveStudy::of(&site, &[speed], window, runner.stop, &|_| {})?;
+        let before = measured.len();
+        let mut study = GroundWaveStudy::of(&site, &[speed], window, runner.stop, &|n| (runner.progress)(before + n))?;
         study.compare_with(&record, "ledsgard")?;
         study.train.name = "X2000".into();
         let comparison = study.comparison.clone().expect("just compared");
@@ -107,13 +108,15 @@ pub(super) fn study(resolution: Resolution, _base: &Scenario, runner: &Runner) -
         compared_waves.push((speed_kmh, study, record));
     }
     let mut curves = Vec::new();
-    for friction in FRICTIONS {
+    for (i, friction) in FRICTIONS.into_iter().enumerate() {
+        let before = measured.len() + i * speeds.len();
         let mut case = site.clone();
         if friction > 0.0 {
             case.friction.distributed =
                 Some(scenario::DistributedSection { force_per_length: friction, ..Default::default() });
         }
-        let mut study = GroundWaveStudy::of(&case, &speeds, WaveWindow::default(), runner.stop, &|_| {})?;
+        let progress = |n: usize| (runner.progress)(before + n);
+        let mut study = GroundWaveStudy::of(&case, &speeds, WaveWindow::default(), runner.stop, &progress)?;
         study.train.name = "X2000".into();
         curves.push((friction, study));
     }
