@@ -198,8 +198,8 @@ impl crate::Scenario {
         Ok((self.beam, ground.strip()?, track))
     }
 
-    /// [`Self::ground_track`] where it is the composite beam — what `frictrack ground`, the receptance and a run in
-    /// time on the ground take; the two-beam track is refused by key (`embankment`).
+    /// [`Self::ground_track`] where it is the composite beam — what `frictrack ground` and a run in time on the ground
+    /// take; the two-beam track is refused by key (`embankment`).
     pub fn track_on_the_ground(&self) -> Result<(fem_beam::Beam, analytic::ground::StripGround)> {
         match self.ground_track()? {
             (beam, strip, GroundTrack::Composite) => Ok((beam, strip)),
@@ -207,7 +207,8 @@ impl crate::Scenario {
                 "embankment",
                 "given",
                 "this takes the composite track-and-embankment beam on the ground; the rail on sleepers over an \
-                 embankment is computed by `frictrack stationary` (its steady wave) only, so far",
+                 embankment is computed by `frictrack stationary` (its steady wave) and `frictrack receptance` only, \
+                 so far",
             )),
         }
     }

@@ -86,7 +86,8 @@ fn the_x2000_at_ledsgard_beside_the_measurements() {
 /// ballast over the embankment beam on the same site) beside the records: at 70 km/h the rail goes 6.63 mm down
 /// against the measured 6.37 (the composite beam's 6.04: the pads and ballast add their compression), RMS misfit
 /// 0.68 mm; at 185 km/h 9.21 mm, misfit 2.21 mm — the numbers examples/ledsgard/README.md quotes, to 0.01 mm. `check` describes it; the commands that take only the
-/// composite beam refuse it by key; sleepers and an embankment come together, on a ground, without a ballast body.
+/// composite beam refuse it by key (the receptance takes it: the rail's); sleepers and an embankment come together, on a
+/// ground, without a ballast body.
 #[test]
 fn the_two_beam_track_at_ledsgard() {
     let site = example("ledsgard/ledsgard-two-beam.toml");
@@ -101,6 +102,11 @@ fn the_two_beam_track_at_ledsgard() {
     }
     let checked = frictrack(&["check", site]);
     assert!(String::from_utf8_lossy(&checked.stdout).contains("ok — rail EI"), "{checked:?}");
+    // The rail's point receptance on the two-beam track (analytic/tests/track_on_embankment.rs checks the integral).
+    let receptance = frictrack(&["receptance", site, "--frequencies", "20:40:20"]);
+    let text = String::from_utf8_lossy(&receptance.stdout);
+    assert!(receptance.status.success(), "{receptance:?}");
+    assert!(text.contains("Euler–Bernoulli rail") && text.contains("sleepers every 0.65 m"), "{text}");
     let folder = temporary_folder("two-beam-refusals");
     let refused = |args: &[&str], key: &str| {
         let out = frictrack(args);

@@ -3,12 +3,14 @@
 //! strip stiffness and the Winkler control, the crossing of the beam's and the soil's dispersion curves, the critical
 //! speed of the track on the ground ([`numbers`]); the steady response over speeds and its peak ([`speeds`]); the
 //! report, tables and figures ([`text`]); a train's steady wave on the ground (`frictrack stationary`, [`wave`]) and
-//! its report, tables and figures ([`wave_text`]); a measured record set beside it ([`measured`], its numbers in [`comparison`]).
+//! its report, tables and figures ([`wave_text`]); what the beam stands on, the strip or the two-beam track
+//! ([`support`]); a measured record set beside it ([`measured`], its numbers in [`comparison`]).
 
 pub mod comparison;
 pub mod measured;
 pub mod numbers;
 pub mod speeds;
+pub mod support;
 pub mod text;
 pub mod wave;
 pub mod wave_text;

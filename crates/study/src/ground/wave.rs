@@ -7,7 +7,8 @@
 
 use crate::ground::comparison::Comparison;
 use crate::ground::speeds::refined_extremes;
-use analytic::ground::{GroundedBeam, LineSupport, MovingSpectrum, StripGround, TrackOnEmbankment};
+use crate::ground::support::Support;
+use analytic::ground::{GroundedBeam, LineSupport, MovingSpectrum, StripGround};
 use fem_beam::{Extreme, Train};
 use rayon::prelude::*;
 use scenario::Scenario;
@@ -150,15 +151,8 @@ impl GroundWaveStudy {
         let (beam, strip, track) = scenario.ground_track()?;
         let train = scenario.axles_on_the_ground()?;
         let positions = window.positions(train.length())?;
-        let on_embankment;
-        let support: &dyn LineSupport = match &track {
-            GroundTrack::Composite => &strip,
-            GroundTrack::RailOnEmbankment { sleepers, embankment } => {
-                on_embankment = TrackOnEmbankment { sleepers, embankment: *embankment, ground: &strip };
-                &on_embankment
-            }
-        };
-        let grounded = GroundedBeam::new(&beam, support).map_err(StudyError::from)?;
+        let support = Support::of(&track, &strip);
+        let grounded = GroundedBeam::new(&beam, support.line()).map_err(StudyError::from)?;
         let friction = friction_on(scenario, &track)?;
         let (mut points, mut waves) = (Vec::with_capacity(speeds.len()), Vec::with_capacity(speeds.len()));
         let interrupted = || stop.is_some_and(|s| s.load(std::sync::atomic::Ordering::Relaxed));

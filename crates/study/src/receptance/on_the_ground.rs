@@ -1,7 +1,9 @@
-//! The receptance of the composite beam on a `[ground]` (`frictrack receptance` on a ground scenario, docs/theory.md
-//! §19): the infinite beam's point receptance α(ω) on the strip's k_eq(k, ω), one integral over k per frequency, its
-//! resonances refined as the finite track's are.
+//! The receptance of the track on a `[ground]` (`frictrack receptance` on a ground scenario, docs/theory.md §19): the
+//! infinite beam's point receptance α(ω) on the strip's k_eq(k, ω) — the composite beam's, or the rail's on pads,
+//! sleepers and ballast over the embankment beam — one integral over k per frequency, its resonances refined as the
+//! finite track's are.
 
+use crate::ground::support::{Support, track_in_words};
 use crate::receptance::response::sampled;
 use crate::receptance::{ReceptanceRequest, ReceptanceStudy};
 use analytic::ground::GroundedBeam;
@@ -12,11 +14,11 @@ use scenario::error::{Result, invalid};
 use std::f64::consts::TAU;
 
 impl ReceptanceStudy {
-    /// The point receptance of `scenario`'s composite beam on its `[ground]` at `request`'s frequencies, on
-    /// `runner`'s threads. The beam is infinite: the response is read under the force (`at` and `excite` are
+    /// The point receptance of `scenario`'s composite beam (or rail, on the two-beam track) on its `[ground]` at
+    /// `request`'s frequencies, on `runner`'s threads. The beam is infinite: the response is read under the force (`at` and `excite` are
     /// refused where they differ — a transfer receptance on the ground is not built).
     pub fn on_the_ground(scenario: &Scenario, request: &ReceptanceRequest, runner: &Runner<'_>) -> Result<Self> {
-        let (beam, strip) = scenario.track_on_the_ground()?;
+        let (beam, strip, track) = scenario.ground_track()?;
         crate::receptance::response::check_frequencies(&request.frequencies)?;
         if request.at != request.excite {
             return Err(invalid(
@@ -26,19 +28,21 @@ impl ReceptanceStudy {
                  same for at and excite",
             ));
         }
-        let grounded = GroundedBeam::new(&beam, &strip)?;
+        let support = Support::of(&track, &strip);
+        let grounded = GroundedBeam::new(&beam, support.line())?;
         let speeds = strip.profile.wave_speeds();
         let alpha = |f: f64| -> Result<Complex64> { Ok(grounded.point_receptance(TAU * f, &speeds)?) };
         runner.announce(runner::cost::Estimate::ground_receptance(request.frequencies.len(), runner.threads()));
         let (points, resonances) = sampled(&request.frequencies, runner, &alpha)?;
+        let (rail, on) = track_in_words(&track, strip.width);
         Ok(Self {
             title: scenario.title.clone(),
             excite: request.excite,
             at: request.at,
             kind: "point",
-            rail: "Euler–Bernoulli composite beam".into(),
+            rail: rail.into(),
             loss_factors: [beam.loss_factor, 0.0],
-            support: format!("a {} m strip of a layered ground (theory §19)", strip.width),
+            support: on,
             place: crate::receptance::text::ON_THE_INFINITE_BEAM.into(),
             points,
             resonances,
