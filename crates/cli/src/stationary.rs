@@ -72,11 +72,7 @@ fn on_the_ground(args: &StationaryArgs, scenario: &Scenario, speeds: &[f64]) -> 
         }
     }
     let threads = std::thread::available_parallelism().map_or(1, usize::from);
-    let mut estimate = runner::cost::Estimate::ground(speeds.len(), threads);
-    if scenario.friction.distributed.as_ref().is_some_and(|d| d.force_per_length > 0.0) {
-        estimate = estimate.with_ground_friction();
-    }
-    crate::progress::announce("stationary", &estimate);
+    crate::progress::announce("stationary", &study::ground::wave::cost(scenario, speeds.len(), threads));
     let stop = Some(crate::interrupt::stop_flag());
     let bar = crate::progress::bar("stationary", Some(speeds.len() as u64), args.format != TableFormat::Text);
     let progress = |done: usize| bar.set_position(done as u64);

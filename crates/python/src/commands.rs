@@ -115,11 +115,7 @@ fn on_the_ground(
     let scenario = scenario.clone();
     let solve = move |stop: &_, told: &interruptible::Progress| {
         let threads = std::thread::available_parallelism().map_or(1, usize::from);
-        let mut estimate = runner::cost::Estimate::ground(speeds.len(), threads);
-        if scenario.friction.distributed.as_ref().is_some_and(|d| d.force_per_length > 0.0) {
-            estimate = estimate.with_ground_friction();
-        }
-        told.announce("frictrack.stationary", &estimate);
+        told.announce("frictrack.stationary", &study::ground::wave::cost(&scenario, speeds.len(), threads));
         let done = |n: usize| told.set(n as f64 / total);
         study::ground::GroundWaveStudy::of(&scenario, &speeds, window, Some(stop), &done)
     };

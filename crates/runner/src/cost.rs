@@ -240,15 +240,9 @@ impl Estimate {
     /// [`GROUND_FRICTION_FACTOR`] times a linear one), shared by `threads` threads.
     pub fn ground_waves(linear: usize, with_friction: usize, threads: usize) -> Self {
         let spectra = linear + with_friction;
-        let seconds = Self::ground(spectra, threads).seconds
-            * (linear as f64 + GROUND_FRICTION_FACTOR * with_friction as f64)
-            / spectra.max(1) as f64;
-        Self { seconds, ..Self::ground(spectra, threads) }
-    }
-
-    /// The same with ballast friction on the ground: [`GROUND_FRICTION_FACTOR`] times the linear wave's time.
-    pub fn with_ground_friction(self) -> Self {
-        Self { seconds: self.seconds * GROUND_FRICTION_FACTOR, ..self }
+        let all_linear = Self::ground(spectra, threads);
+        let share = (linear as f64 + GROUND_FRICTION_FACTOR * with_friction as f64) / spectra.max(1) as f64;
+        Self { seconds: all_linear.seconds * share, ..all_linear }
     }
 
     /// A point receptance of a beam on a layered ground at `frequencies` frequencies, shared by `threads` threads.

@@ -69,8 +69,8 @@ impl SetProblem for MovingFrame {
     }
 
     fn newton_point(&self, sets: &Sets, speed: f64) -> Result<Vec<f64>> {
-        let system = SetSystem::new(self, sets, speed)?;
-        let mut w = system.rhs.clone();
+        let mut system = SetSystem::new(self, sets, speed)?;
+        let mut w = std::mem::take(&mut system.rhs);
         system.solve_in_place(&mut w);
         Ok(w)
     }

@@ -204,6 +204,14 @@ impl GroundWaveStudy {
     }
 }
 
+/// What [`GroundWaveStudy::of`] costs `scenario` at `speeds` speeds on `threads` threads: a spectrum a speed, and with
+/// ballast friction the Newton iteration on top ([`runner::cost::Estimate::ground_waves`]).
+pub fn cost(scenario: &Scenario, speeds: usize, threads: usize) -> runner::cost::Estimate {
+    let friction = scenario.friction.distributed.as_ref().is_some_and(|d| d.force_per_length > 0.0);
+    let (linear, with_friction) = if friction { (0, speeds) } else { (speeds, 0) };
+    runner::cost::Estimate::ground_waves(linear, with_friction, threads)
+}
+
 /// The ballast's f_u (N/m) of `scenario` on `track`, if it has any: on the composite beam only (the two-beam track's
 /// ballast friction, between the sleepers and the embankment, is refused by key).
 fn friction_on(scenario: &Scenario, track: &GroundTrack) -> Result<Option<f64>> {
