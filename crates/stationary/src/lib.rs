@@ -5,6 +5,8 @@
 //! reflections. This crate solves for it directly on a finite domain closed by exact transparent ends
 //! ([`far_field`]): the moving-frame operator ([`operator`]), a semismooth Newton iteration on the soil's contact for
 //! tensionless and bilinear soils ([`solve()`]), and the wave's peaks, lift-off zones and power balance ([`wave`]).
+//! On the ground ([`ground`], [`ground_contact`]) the ground is a non-local linear operator applied by FFT and the
+//! ballast's friction or its lift-off stays local.
 //! Continuation in speed ([`solve::solve_from`]) starts each speed from the last one's contact set.
 
 pub mod continuation;
@@ -13,6 +15,7 @@ pub mod error;
 pub mod far_field;
 pub mod friction;
 pub mod ground;
+pub mod ground_contact;
 pub mod krylov;
 pub mod newton;
 pub mod operator;
@@ -28,6 +31,7 @@ pub mod wave;
 pub use control::Control;
 pub use error::{Result, StationaryError};
 pub use ground::{GroundFrictionProblem, GroundFrictionWave, GroundWindow, solve_on_ground};
+pub use ground_contact::{GroundContactProblem, GroundContactWave, solve_with_lift_off};
 pub use problem::{Domain, StationaryProblem};
 pub use refine::solve_halved;
 pub use solve::{ContactGuess, Convergence, solve, solve_from, solve_within};

@@ -19,6 +19,8 @@
 //! - `thin_layer`: the same modes by the thin-layer method (finite elements in depth), the independent check.
 //! - `track_on_embankment`: [`TrackOnEmbankment`] — a rail on pads, sleepers and ballast over an embankment beam on
 //!   a support (the two-beam track), as the rail's line support.
+//! - `track_interface`: [`InterfaceSpectra`] — the two-beam track's sleepers-less-embankment deflection and the
+//!   waves of a pair of forces across the ballast: what a tensionless ballast on the ground needs.
 //! - `strip`: [`StripGround`] — the track's strip on the ground and its equivalent stiffness k_eq(k_x, ω).
 
 mod filon;
@@ -33,6 +35,7 @@ mod rayleigh_modes;
 mod receptance;
 mod strip;
 mod thin_layer;
+mod track_interface;
 mod track_on_embankment;
 
 pub use fitted::FittedFoundation;
@@ -46,4 +49,5 @@ pub use rayleigh_modes::rayleigh_phase_velocities;
 pub use receptance::RECEPTANCE_TOLERANCE;
 pub use strip::{STRIP_TOLERANCE, StripGround};
 pub use thin_layer::{ThinLayerMesh, thin_layer_phase_velocity};
+pub use track_interface::InterfaceSpectra;
 pub use track_on_embankment::{Embankment, TrackOnEmbankment};

@@ -104,59 +104,14 @@ impl<'a, S: LineSupport + ?Sized> GroundedBeam<'a, S> {
 
     /// The spectrum of a unit downward force at `speed` (m/s, ≥ 0), sampled to [`SPECTRUM_TOLERANCE`].
     pub fn spectrum(&self, speed: f64) -> Result<MovingSpectrum> {
-        let (low, high) = self.range(speed);
-        let count = ((high / low).log10() * PER_DECADE).ceil() as usize + 1;
-        let mut log_k: Vec<f64> =
-            (0..count).map(|i| low.ln() + (high / low).ln() * i as f64 / (count - 1) as f64).collect();
-        let mut response = self.responses(&log_k, speed)?;
-        let mut unsettled: Vec<bool> = vec![true; count - 1];
-        while unsettled.iter().any(|&u| u) {
-            if log_k.len() > MAX_SAMPLES {
-                return Err(FemError::NotConverged {
-                    what: format!("the moving-load spectrum at {speed} m/s ({MAX_SAMPLES} samples)"),
-                    reached: f64::NAN,
-                    asked: SPECTRUM_TOLERANCE,
-                });
-            }
-            let intervals: Vec<usize> = (0..unsettled.len()).filter(|&i| unsettled[i]).collect();
-            let middles: Vec<f64> = intervals.iter().map(|&i| 0.5 * (log_k[i] + log_k[i + 1])).collect();
-            let values = self.responses(&middles, speed)?;
-            let scale = response.iter().chain(&values).map(|g| g.norm()).fold(0.0, f64::max);
-            let predicted: Vec<Complex64> =
-                intervals.iter().zip(&middles).map(|(&i, &u)| cubic(&log_k, &response, i, u)).collect();
-            let (mut next_k, mut next_g, mut next_unsettled) = (Vec::new(), Vec::new(), Vec::new());
-            let mut j = 0;
-            for i in 0..log_k.len() {
-                next_k.push(log_k[i]);
-                next_g.push(response[i]);
-                if i + 1 == log_k.len() {
-                    break;
-                }
-                if j < intervals.len() && intervals[j] == i {
-                    let fine = (values[j] - predicted[j]).norm() <= SPECTRUM_TOLERANCE * scale;
-                    next_k.push(middles[j]);
-                    next_g.push(values[j]);
-                    next_unsettled.extend([!fine, !fine]);
-                    j += 1;
-                } else {
-                    next_unsettled.push(false);
-                }
-            }
-            (log_k, response, unsettled) = (next_k, next_g, next_unsettled);
-        }
-        let body = in_k(&log_k, &response, significant_intervals(&log_k, &response));
-        Ok(MovingSpectrum { log_k, response, body })
-    }
-
-    /// G at each ln k of `log_k`, in parallel.
-    fn responses(&self, log_k: &[f64], speed: f64) -> Result<Vec<Complex64>> {
-        log_k.par_iter().map(|&u| self.response(u.exp(), speed)).collect()
+        let [single] = sample_channels(self.range(speed), speed, &|k| Ok([self.response(k, speed)?]))?;
+        Ok(single)
     }
 
     /// [k_low, k_high] (rad/m) around the characteristic wavenumber k_c where EI k⁴ meets the support's bound and
     /// the inertia: 1e-5·k_c, and where EI k⁴ is both 1e10 times the support's bound at k_c (≳ 300·k_c: the tail
     /// beyond, ∫|G| ~ 1/(3EI k³), is ≲ 3e-8 of the whole) and 100 times the inertia ρA v²k².
-    fn range(&self, speed: f64) -> (f64, f64) {
+    pub(crate) fn range(&self, speed: f64) -> (f64, f64) {
         let inertia = |k: f64| self.mass_per_length * (speed * k).powi(2);
         let first_above = |above: &dyn Fn(f64) -> f64| {
             let mut k: f64 = 1e-3;
@@ -222,6 +177,66 @@ impl MovingSpectrum {
         let read = |s: f64| read_equally_spaced(&grid, from, GRID_STEP, s);
         positions.par_iter().map(|&s| axles.iter().map(|a| a.force * read(s + a.offset)).sum()).collect()
     }
+}
+
+/// The spectra of N responses at the same wavenumbers in [`range`](GroundedBeam::range), sampled together from 8
+/// per decade of k, each interval bisected until a cubic through its neighbours predicts every channel's midpoint
+/// to [`SPECTRUM_TOLERANCE`] of that channel's max|G| (at `speed`, m/s, for the error message).
+pub(crate) fn sample_channels<const N: usize>(
+    (low, high): (f64, f64),
+    speed: f64,
+    response: &(dyn Fn(f64) -> Result<[Complex64; N]> + Sync),
+) -> Result<[MovingSpectrum; N]> {
+    let count = ((high / low).log10() * PER_DECADE).ceil() as usize + 1;
+    let mut log_k: Vec<f64> =
+        (0..count).map(|i| low.ln() + (high / low).ln() * i as f64 / (count - 1) as f64).collect();
+    let at = |log_k: &[f64]| -> Result<Vec<[Complex64; N]>> { log_k.par_iter().map(|&u| response(u.exp())).collect() };
+    let mut values = at(&log_k)?;
+    let mut unsettled: Vec<bool> = vec![true; count - 1];
+    while unsettled.iter().any(|&u| u) {
+        if log_k.len() > MAX_SAMPLES {
+            return Err(FemError::NotConverged {
+                what: format!("the moving-load spectrum at {speed} m/s ({MAX_SAMPLES} samples)"),
+                reached: f64::NAN,
+                asked: SPECTRUM_TOLERANCE,
+            });
+        }
+        let intervals: Vec<usize> = (0..unsettled.len()).filter(|&i| unsettled[i]).collect();
+        let middles: Vec<f64> = intervals.iter().map(|&i| 0.5 * (log_k[i] + log_k[i + 1])).collect();
+        let fresh = at(&middles)?;
+        let mut fine = vec![true; intervals.len()];
+        for c in 0..N {
+            let channel: Vec<Complex64> = values.iter().map(|v| v[c]).collect();
+            let scale = channel.iter().chain(fresh.iter().map(|v| &v[c])).map(|g| g.norm()).fold(0.0, f64::max);
+            for (j, fine) in fine.iter_mut().enumerate() {
+                let predicted = cubic(&log_k, &channel, intervals[j], middles[j]);
+                *fine &= (fresh[j][c] - predicted).norm() <= SPECTRUM_TOLERANCE * scale;
+            }
+        }
+        let (mut next_k, mut next_v, mut next_unsettled) = (Vec::new(), Vec::new(), Vec::new());
+        let mut j = 0;
+        for i in 0..log_k.len() {
+            next_k.push(log_k[i]);
+            next_v.push(values[i]);
+            if i + 1 == log_k.len() {
+                break;
+            }
+            if j < intervals.len() && intervals[j] == i {
+                next_k.push(middles[j]);
+                next_v.push(fresh[j]);
+                next_unsettled.extend([!fine[j], !fine[j]]);
+                j += 1;
+            } else {
+                next_unsettled.push(false);
+            }
+        }
+        (log_k, values, unsettled) = (next_k, next_v, next_unsettled);
+    }
+    Ok(std::array::from_fn(|c| {
+        let response: Vec<Complex64> = values.iter().map(|v| v[c]).collect();
+        let body = in_k(&log_k, &response, significant_intervals(&log_k, &response));
+        MovingSpectrum { log_k: log_k.clone(), response, body }
+    }))
 }
 
 /// G on the first `intervals` intervals of the samples as cubics in k (see [`MovingSpectrum`]'s `body`).

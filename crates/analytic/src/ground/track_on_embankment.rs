@@ -39,7 +39,7 @@ pub struct TrackOnEmbankment<'a, S: LineSupport + ?Sized> {
 
 impl<S: LineSupport + ?Sized> TrackOnEmbankment<'_, S> {
     /// Z/2 (N/m²): half the embankment on half the ground.
-    fn half_embankment(&self, kx: f64, omega: f64) -> Result<Complex64> {
+    pub(super) fn half_embankment(&self, kx: f64, omega: f64) -> Result<Complex64> {
         let e = &self.embankment;
         let bending = e.bending_stiffness * kx.powi(4);
         let loss = if omega > 0.0 { e.loss_factor } else { 0.0 };
@@ -50,7 +50,7 @@ impl<S: LineSupport + ?Sized> TrackOnEmbankment<'_, S> {
 
 /// A layer's k(1 + iη sgn ω) + iωc: elastic at rest, as the ground is (`Layer::dynamic_stiffness` keeps iη at ω = 0,
 /// the receptance's convention, where ω > 0).
-fn hysteretic(layer: &fem_beam::sleepers::Layer, omega: f64) -> Complex64 {
+pub(super) fn hysteretic(layer: &fem_beam::sleepers::Layer, omega: f64) -> Complex64 {
     match omega > 0.0 {
         true => layer.dynamic_stiffness(omega),
         false => Complex64::new(layer.stiffness, 0.0),
