@@ -119,7 +119,7 @@ fn check_on_the_ground(path: &std::path::Path, scenario: &Scenario) -> Result<()
             format!("composite beam EI = {:.3e} N·m², {:.0} kg/m", beam.bending_stiffness(), beam.mass_per_length()),
             "`frictrack ground`, `stationary`, `receptance` and `run` (on a fitted foundation) compute it",
         ),
-        scenario::ground::GroundTrack::RailOnEmbankment { sleepers, embankment } => (
+        scenario::ground::GroundTrack::RailOnEmbankment { sleepers, embankment, .. } => (
             format!(
                 "rail EI = {:.3e} N·m² on sleepers every {} m over an embankment of EI = {:.3e} N·m²",
                 beam.bending_stiffness(),

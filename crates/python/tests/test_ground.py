@@ -71,6 +71,23 @@ def test_ballast_friction_on_the_ground_from_python():
         frictrack.stationary(two_beam, speeds=[20.0], distributed_friction=2000.0)
 
 
+def test_sleepers_lifting_off_the_ballast_from_python(tmp_path):
+    """The two-beam track at Ledsgård with a ballast that cannot pull (`[embankment] interface = "tensionless"`): at
+    185 km/h the command line's lift between the locomotive and the first car, 3.58 µm against the weight's 11.49 µm
+    compression, with its unit."""
+    folder = ROOT / "examples" / "ledsgard"
+    (tmp_path / "x2000.csv").write_text((folder / "x2000.csv").read_text())
+    text = (folder / "ledsgard-two-beam.toml").read_text()
+    site = tmp_path / "site.toml"
+    site.write_text(text.replace("[embankment]", '[embankment]\ninterface = "tensionless"', 1))
+    result = frictrack.stationary(site, speeds=[185 / 3.6])
+    lift = result.points[0]["lift_off"]
+    assert abs(lift["largest_gap"]["value"] - 3.58e-6) < 1e-8
+    assert -16.5 < lift["largest_gap"]["position"] < -12.4
+    assert abs(lift["preload"] + 11.49e-6) < 1e-8
+    assert "lift off the ballast" in str(result)
+
+
 def test_a_run_in_time_on_the_ground_from_python():
     """`frictrack.run` on a `[ground]` takes the foundation fitted at its speed, as the command line does: the fit and
     its wave error in the summary, and at the ground's critical speed the warning the command line prints."""

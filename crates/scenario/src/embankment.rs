@@ -1,6 +1,7 @@
 //! `[embankment]`: the embankment beam under the whole track, between the sleepers' ballast and the `[ground]` — the
 //! two-beam track on the ground (docs/theory.md §19): `[beam]` is one rail, `[sleepers]` its pads, sleepers and
-//! ballast per rail seat, and each rail rests on half the embankment on half the strip.
+//! ballast per rail seat, and each rail rests on half the embankment on half the strip. `interface = "tensionless"`
+//! lets the sleepers lift off the ballast where it would pull them down (default `"bonded"`).
 
 use crate::error::{Result, invalid};
 use serde::{Deserialize, Serialize};
@@ -16,6 +17,21 @@ pub struct EmbankmentSection {
     /// η_e ≥ 0, the fill's hysteretic damping (2ξ). Default 0.
     #[serde(default)]
     pub loss_factor: f64,
+    /// How the ballast holds the sleepers on the embankment. Default bonded.
+    #[serde(default)]
+    pub interface: InterfaceKind,
+}
+
+/// `[embankment] interface`: the ballast between the sleepers and the embankment pulls as it pushes (`"bonded"`), or
+/// only pushes (`"tensionless"`: the sleepers lift off where the track's weight no longer holds them down).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum InterfaceKind {
+    /// Pushes and pulls: the linear track.
+    #[default]
+    Bonded,
+    /// Pushes only.
+    Tensionless,
 }
 
 impl EmbankmentSection {

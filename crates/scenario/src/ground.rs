@@ -131,6 +131,21 @@ pub enum GroundTrack {
         sleepers: fem_beam::Sleepers,
         /// The embankment beam.
         embankment: analytic::ground::Embankment,
+        /// How the ballast holds the sleepers on it.
+        interface: Interface,
+    },
+}
+
+/// The ballast between the sleepers and the embankment of the two-beam track.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Interface {
+    /// It pulls as it pushes: the track is linear.
+    Bonded,
+    /// It only pushes (docs/theory.md §19, "Lift-off on the ground").
+    Tensionless {
+        /// d₀ = −(ρA_r a + m_s) g / k_b ≤ 0: the sleepers' deflection less the embankment's under the rail's and the
+        /// sleepers' weight (m; 0 where `[sleepers] self_weight = false`).
+        preload: f64,
     },
 }
 
@@ -177,7 +192,20 @@ impl crate::Scenario {
                          the mass below it): leave the ballast body out",
                     ));
                 }
-                GroundTrack::RailOnEmbankment { sleepers: section.sleepers()?, embankment: embankment.embankment()? }
+                let sleepers = section.sleepers()?;
+                let interface = match embankment.interface {
+                    crate::embankment::InterfaceKind::Bonded => Interface::Bonded,
+                    crate::embankment::InterfaceKind::Tensionless => {
+                        let weight = self.beam.mass_per_length() * sleepers.spacing + sleepers.mass;
+                        let preload = if section.self_weight {
+                            -weight * fem_beam::GRAVITY / sleepers.ballast.stiffness
+                        } else {
+                            0.0
+                        };
+                        Interface::Tensionless { preload }
+                    }
+                };
+                GroundTrack::RailOnEmbankment { sleepers, embankment: embankment.embankment()?, interface }
             }
             (Some(_), None) => {
                 return Err(missing(

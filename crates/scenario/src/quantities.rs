@@ -112,6 +112,8 @@ pub const QUANTITIES: &[(&str, &str)] = &[
     ("sleepers", "1"),
     ("gap", "m"),
     ("largest_gap", "m"),
+    ("lifted_length", "m"),
+    ("preload", "m"),
     // The solvers and the study's set-ups.
     ("status", "text"),
     ("iterations", "1"),

@@ -72,17 +72,29 @@ pub struct GroundContactWave {
     pairs: Vec<f64>,
     /// P_r(d·h) (m per N/m) for d = −(n − 1) … n − 1: a hat pair's rail wave at the points' spacings.
     pair_rail: Vec<f64>,
+    /// P(d·h): its d.
+    pair_relative: Vec<f64>,
 }
 
 impl GroundContactWave {
     /// What the pairs add to the rail's linear wave at any s of the window (m), P_r read between its values at the
     /// points' spacings by the cubic through the four nearest.
     pub fn carried(&self, s: f64) -> f64 {
-        let n = self.s.len();
+        self.by_pairs(&self.pair_rail, s)
+    }
+
+    /// What the pairs add to d's linear wave at any s of the window (m), read as [`Self::carried`].
+    pub fn carried_relative(&self, s: f64) -> f64 {
+        self.by_pairs(&self.pair_relative, s)
+    }
+
+    /// Σ_j K(s − s_j) p_j with K given at the points' spacings (`kernel`) and read between them by the cubic through
+    /// the four nearest.
+    fn by_pairs(&self, kernel: &[f64], s: f64) -> f64 {
         let step = self.s[1] - self.s[0];
-        let reach = -((n - 1) as f64) * step;
+        let reach = -((self.s.len() - 1) as f64) * step;
         let pairs = self.s.iter().zip(&self.pairs).filter(|(_, p)| **p != 0.0);
-        pairs.map(|(sj, p)| read_equally_spaced(&self.pair_rail, reach, step, s - sj) * p).sum()
+        pairs.map(|(sj, p)| read_equally_spaced(kernel, reach, step, s - sj) * p).sum()
     }
 
     /// The length of track over which the sleepers have lifted (m).
@@ -253,5 +265,6 @@ pub fn solve_with_lift_off(
         preload: frame.preload,
         pairs,
         pair_rail,
+        pair_relative: frame.diagonals,
     })
 }

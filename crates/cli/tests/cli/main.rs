@@ -9,6 +9,7 @@ mod failures;
 mod figures;
 mod ground;
 mod ground_friction;
+mod ground_lift_off;
 mod ground_wave;
 mod receptance;
 mod run_out;

@@ -2,17 +2,19 @@
 //! scenario's composite beam on its `[ground]` — the soil's Rayleigh modes and their least phase velocity, the static
 //! strip stiffness and the Winkler control, the crossing of the beam's and the soil's dispersion curves, the critical
 //! speed of the track on the ground ([`numbers`]); the steady response over speeds and its peak ([`speeds`]); the
-//! report, tables and figures ([`text`]); a train's steady wave on the ground (`frictrack stationary`, [`wave`]) and
+//! report, tables and figures ([`text`]); a train's steady wave on the ground (`frictrack stationary`, [`wave`]; one speed's in [`wave_point`]) and
 //! its report, tables and figures ([`wave_text`]); what the beam stands on, the strip or the two-beam track
-//! ([`support`]); a measured record set beside it ([`measured`], its numbers in [`comparison`]).
+//! ([`support`]); the sleepers lifting off the ballast of the two-beam track ([`lift_off`]); a measured record set beside it ([`measured`], its numbers in [`comparison`]).
 
 pub mod comparison;
+pub mod lift_off;
 pub mod measured;
 pub mod numbers;
 pub mod speeds;
 pub mod support;
 pub mod text;
 pub mod wave;
+pub mod wave_point;
 pub mod wave_text;
 
 pub use numbers::{DispersionPoint, GroundRequest, GroundStudy, ModesPoint, StiffnessPoint};

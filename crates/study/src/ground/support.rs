@@ -18,7 +18,7 @@ impl<'a> Support<'a> {
     pub fn of(track: &'a GroundTrack, strip: &'a StripGround) -> Self {
         match track {
             GroundTrack::Composite => Support::Strip(strip),
-            GroundTrack::RailOnEmbankment { sleepers, embankment } => {
+            GroundTrack::RailOnEmbankment { sleepers, embankment, .. } => {
                 Support::OnEmbankment(TrackOnEmbankment { sleepers, embankment: *embankment, ground: strip })
             }
         }
@@ -39,7 +39,7 @@ pub fn track_in_words(track: &GroundTrack, width: f64) -> (&'static str, String)
         GroundTrack::Composite => {
             ("Euler–Bernoulli composite beam", format!("a {width} m strip of a layered ground (theory §19)"))
         }
-        GroundTrack::RailOnEmbankment { sleepers, embankment } => (
+        GroundTrack::RailOnEmbankment { sleepers, embankment, .. } => (
             "Euler–Bernoulli rail",
             format!(
                 "pads, {:.0} kg sleepers every {} m and ballast over an embankment beam of EI = {:.3e} N·m², {:.0} \

@@ -3,115 +3,21 @@
 //! embankment), once, and the wave along the train's frame as the superposition of its axles' shifted single-load
 //! waves, W(s) = Σ_j P_j W₁(s + d_j) — under and behind the train,
 //! its peaks (refined by golden section) and the upward wake behind it above the ground's wave speeds. Deflections in
-//! m (upward positive, peaks as magnitudes), positions s = x − x_head in m (positive ahead of the first axle).
+//! m (upward positive, peaks as magnitudes), positions s = x − x_head in m (positive ahead of the first axle). With
+//! ballast friction under the composite beam each speed's wave is a Newton iteration from the last speed's; with a
+//! tensionless ballast on the two-beam track the sleepers' lift-off is solved at each speed ([`crate::ground::lift_off`]).
 
 use crate::ground::comparison::Comparison;
-use crate::ground::speeds::refined_extremes;
+use crate::ground::lift_off::LiftOff;
 use crate::ground::support::Support;
-use analytic::ground::{GroundedBeam, LineSupport, MovingSpectrum, StripGround};
-use fem_beam::{Extreme, Train};
+pub use crate::ground::wave_point::{FrictionPoint, GroundWave, GroundWavePoint, LiftOffPoint, WAVE_STEP, WaveWindow};
+use crate::ground::wave_point::{summary, wave_of};
+use analytic::ground::{GroundedBeam, LineSupport, MovingSpectrum, StripGround, TrackOnEmbankment};
+use fem_beam::Train;
 use rayon::prelude::*;
 use scenario::Scenario;
 use scenario::error::{Result, StudyError, invalid};
-use scenario::ground::GroundTrack;
-use serde::Serialize;
-
-/// Spacing of the wave's points (m): a tenth of the shortest bowl a track on the ground carries (≳ 5 m for a
-/// composite beam on soft ground, ~3 m for a rail on sleepers); the peaks are refined between points, never read off
-/// them.
-pub const WAVE_STEP: f64 = 0.25;
-/// The most points one wave may have (the window's length over [`WAVE_STEP`]).
-const MAX_POINTS: usize = 200_000;
-
-/// Where the wave is drawn: from `behind` m behind the last axle to `ahead` m ahead of the first.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct WaveWindow {
-    /// m behind the last axle, ≥ 0.
-    pub behind: f64,
-    /// m ahead of the first axle, ≥ 0.
-    pub ahead: f64,
-}
-
-impl Default for WaveWindow {
-    /// 60 m each way: the wake of a soft site's Rayleigh waves behind a train and the bow wave ahead of it.
-    fn default() -> Self {
-        Self { behind: 60.0, ahead: 60.0 }
-    }
-}
-
-impl WaveWindow {
-    /// The positions s (m, ascending, spaced [`WAVE_STEP`]) for a train `length` m long; refused by key (`domain`)
-    /// where a side is negative or not finite, or the window would hold more than 200 000 points.
-    pub fn positions(&self, length: f64) -> Result<Vec<f64>> {
-        for (side, value) in [("behind", self.behind), ("ahead", self.ahead)] {
-            if !(value.is_finite() && value >= 0.0) {
-                return Err(invalid(&format!("domain.{side}"), value, "must be finite and ≥ 0 (m)"));
-            }
-        }
-        let span = length + self.behind + self.ahead;
-        let count = (span / WAVE_STEP).ceil() as usize + 1;
-        if count > MAX_POINTS {
-            return Err(invalid(
-                "domain",
-                format!("{}:{}", self.behind, self.ahead),
-                format!(
-                    "the window behind the train and ahead of it spans {span:.0} m: at most 50 km (200 000 points)"
-                ),
-            ));
-        }
-        Ok((0..count).map(|i| -(length + self.behind) + i as f64 * WAVE_STEP).collect())
-    }
-}
-
-/// The steady wave at one speed along the train's frame.
-#[derive(Debug, Clone, PartialEq)]
-pub struct GroundWave {
-    /// v (m/s).
-    pub speed: f64,
-    /// s = x − x_head (m), ascending.
-    pub s: Vec<f64>,
-    /// W(s) (m, upward positive).
-    pub deflection: Vec<f64>,
-}
-
-/// The wave at one speed, summarised (the JSON keys of `frictrack stationary`'s points where they mean the same).
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct GroundWavePoint {
-    /// v (m/s).
-    pub speed: f64,
-    /// "converged": the spectrum met its tolerance (a speed where it did not is an error, never a number).
-    pub status: &'static str,
-    /// How many wavenumbers the spectrum sampled (each a strip integral over the ground).
-    pub spectrum_samples: usize,
-    /// Largest downward deflection (m, magnitude) and where (s, m).
-    pub max_downward_deflection: Extreme,
-    /// Largest upward deflection (m) and where (s, m): ahead of the train, between its axles or in its wake.
-    pub max_upward_deflection: Extreme,
-    /// W under the first axle, s = 0 (m, signed).
-    pub deflection_under_load: f64,
-    /// W at the window's rear end (m, signed): what the wake still holds there.
-    pub deflection_behind: f64,
-    /// The window: m behind the last axle, m ahead of the first, spacing of its points (m).
-    pub domain: (f64, f64, f64),
-    /// With ballast friction: how its wave was found and what it dissipates.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub friction: Option<FrictionPoint>,
-}
-
-/// The ballast friction's part of a speed's wave on the ground.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct FrictionPoint {
-    /// Newton iterations over the continuation's stages.
-    pub newton_iterations: usize,
-    /// GMRES steps over them.
-    pub krylov_iterations: usize,
-    /// f_u v Σ h|W′| over the slipping points (W): the power the ballast takes from the train.
-    pub friction_power: f64,
-    /// Length of track where the rail slides over the ballast (m).
-    pub slipping_length: f64,
-    /// The largest |r|/f_u over the window's last tenth behind the train (1): what its rear end still holds.
-    pub rear_force_ratio: f64,
-}
+use scenario::ground::{GroundTrack, Interface};
 
 /// The steady waves of the scenario's axles on its ground over speeds.
 #[derive(Debug, Clone)]
@@ -156,23 +62,38 @@ impl GroundWaveStudy {
         let friction = friction_on(scenario, &track)?;
         let (mut points, mut waves) = (Vec::with_capacity(speeds.len()), Vec::with_capacity(speeds.len()));
         let interrupted = || stop.is_some_and(|s| s.load(std::sync::atomic::Ordering::Relaxed));
-        match friction {
-            // Linear: the speeds are independent, so as many run at once as there are threads (a spectrum's last
-            // rounds of sampling leave threads idle that a second speed takes up).
-            None => {
+        let lifting = match &track {
+            GroundTrack::RailOnEmbankment { sleepers, embankment, interface: Interface::Tensionless { preload } } => {
+                Some((TrackOnEmbankment { sleepers, embankment: *embankment, ground: &strip }, *preload))
+            }
+            _ => None,
+        };
+        match (friction, &lifting) {
+            // Linear, or lifting from the linear wave: the speeds are independent, so as many run at once as there
+            // are threads (a spectrum's last rounds of sampling leave threads idle that a second speed takes up).
+            (None, _) => {
+                let lift_off = match &lifting {
+                    Some((on, preload)) => Some(LiftOff {
+                        grounded: GroundedBeam::new(&beam, on).map_err(StudyError::from)?,
+                        preload: *preload,
+                        stop,
+                    }),
+                    None => None,
+                };
+                let at = |speed: f64| -> Result<(GroundWave, GroundWavePoint)> {
+                    if let Some(lift_off) = &lift_off {
+                        return lift_off.wave(&train, speed, &positions, window);
+                    }
+                    let spectrum = grounded.spectrum(speed).map_err(StudyError::from)?;
+                    let wave = wave_of(&spectrum, &train, speed, &positions);
+                    let point = summary(&spectrum, &train, &wave, window, &|_| 0.0);
+                    Ok((wave, point))
+                };
                 for group in speeds.chunks(rayon::current_num_threads().max(1)) {
                     if interrupted() {
                         return Err(StudyError::Interrupted);
                     }
-                    let done: Vec<Result<(GroundWave, GroundWavePoint)>> = group
-                        .par_iter()
-                        .map(|&speed| {
-                            let spectrum = grounded.spectrum(speed).map_err(StudyError::from)?;
-                            let wave = wave_of(&spectrum, &train, speed, &positions);
-                            let point = summary(&spectrum, &train, &wave, window, &|_| 0.0);
-                            Ok((wave, point))
-                        })
-                        .collect();
+                    let done: Vec<Result<(GroundWave, GroundWavePoint)>> = group.par_iter().map(|&v| at(v)).collect();
                     for result in done {
                         let (wave, point) = result?;
                         points.push(point);
@@ -182,7 +103,7 @@ impl GroundWaveStudy {
                 }
             }
             // With friction each speed starts from the last one's wave.
-            Some(force) => {
+            (Some(force), _) => {
                 let mut guess = stationary::ContactGuess::default();
                 let on = Friction { grounded: &grounded, beam: &beam, force, stop };
                 for &speed in speeds {
@@ -279,35 +200,5 @@ impl Friction<'_> {
             rear_force_ratio: solved.end_forces(self.force).0,
         });
         Ok((wave, point))
-    }
-}
-
-/// The wave of `train` at `speed` from its spectrum, at `positions` (in parallel).
-fn wave_of(spectrum: &MovingSpectrum, train: &Train, speed: f64, positions: &[f64]) -> GroundWave {
-    GroundWave { speed, s: positions.to_vec(), deflection: spectrum.wave_under(&train.axles, positions) }
-}
-
-/// The point of `wave`: its peaks refined between its points, the deflection under the first axle and at the rear;
-/// `carried` is what friction adds to the axles' linear wave at any s (m).
-fn summary(
-    spectrum: &MovingSpectrum,
-    train: &Train,
-    wave: &GroundWave,
-    window: WaveWindow,
-    carried: &dyn Fn(f64) -> f64,
-) -> GroundWavePoint {
-    let samples: Vec<(f64, f64)> = wave.s.iter().copied().zip(wave.deflection.iter().copied()).collect();
-    let at = |s: f64| spectrum.deflection_under(&train.axles, s) + carried(s);
-    let extremes = refined_extremes(&samples, &at);
-    GroundWavePoint {
-        speed: wave.speed,
-        status: "converged",
-        spectrum_samples: spectrum.samples(),
-        max_downward_deflection: extremes.max_downward,
-        max_upward_deflection: extremes.max_upward,
-        deflection_under_load: at(0.0),
-        deflection_behind: wave.deflection.first().copied().unwrap_or(0.0),
-        domain: (window.behind, window.ahead, WAVE_STEP),
-        friction: None,
     }
 }

@@ -8,10 +8,11 @@ use crate::ground::measured::MeasuredRecord;
 use crate::ground::numbers::describe;
 use crate::ground::text::table;
 use crate::ground::wave::{GroundWave, GroundWavePoint, GroundWaveStudy};
+use crate::ground::wave_point::LiftOffPoint;
 use report::columns::{Column, ColumnMeta, listed_once, units_line};
 use report::output::{Output, pretty};
 use report::plot::{Mark, PlotSpec, Series, Stroke};
-use scenario::ground::GroundTrack;
+use scenario::ground::{GroundTrack, Interface};
 use scenario::quantities::unit;
 use serde::Serialize;
 use std::fmt::{self, Formatter};
@@ -30,8 +31,12 @@ pub const POINT_COLUMNS: [Column; 8] = [
     ("spectrum_samples", unit("spectrum_samples")),
 ];
 /// The numbers of the JSON outside its tables, with their units.
-const NUMBERS: [&str; 19] = [
+const NUMBERS: [&str; 23] = [
     "force_per_length",
+    "lift_off_zones",
+    "lifted_length",
+    "largest_gap",
+    "preload",
     "newton_iterations",
     "krylov_iterations",
     "friction_power",
@@ -170,10 +175,18 @@ impl GroundWaveStudy {
         };
         let track = match &self.track {
             GroundTrack::Composite => format!("beam EI = {:.3e} N·m², {:.0} kg/m", self.beam.0, self.beam.1),
-            GroundTrack::RailOnEmbankment { sleepers, embankment } => format!(
-                "rail EI = {:.3e} N·m² on pads, {:.0} kg sleepers every {} m and ballast over an embankment of EI = \
+            GroundTrack::RailOnEmbankment { sleepers, embankment, interface } => format!(
+                "rail EI = {:.3e} N·m² on pads, {:.0} kg sleepers every {} m and {}ballast over an embankment of EI = \
                  {:.3e} N·m², {:.0} kg/m",
-                self.beam.0, sleepers.mass, sleepers.spacing, embankment.bending_stiffness, embankment.mass_per_length
+                self.beam.0,
+                sleepers.mass,
+                sleepers.spacing,
+                match interface {
+                    Interface::Bonded => "",
+                    Interface::Tensionless { .. } => "tensionless ",
+                },
+                embankment.bending_stiffness,
+                embankment.mass_per_length
             ),
         };
         let friction = self.friction.map_or(String::new(), |f| format!(", ballast friction f_u = {} kN/m", f / 1e3));
@@ -259,6 +272,29 @@ impl GroundWaveStudy {
     }
 }
 
+/// A speed's line on the sleepers' lift-off.
+fn lift_off_line(f: &mut Formatter<'_>, lift: &LiftOffPoint) -> fmt::Result {
+    let held = match lift.preload < 0.0 {
+        true => format!("the weight's compression {:.1} µm", -lift.preload * 1e6),
+        false => "a weightless track".to_string(),
+    };
+    let iterations = lift.newton_iterations;
+    match lift.lift_off_zones {
+        0 => writeln!(
+            f,
+            "               the sleepers stay on the ballast ({held} is never undone; {iterations} Newton iteration(s))"
+        ),
+        zones => writeln!(
+            f,
+            "               the sleepers lift off the ballast over {:.2} m in {zones} stretch(es), by up to {:.1} µm at \
+             s = {:.2} m ({held}; {iterations} Newton iterations)",
+            lift.lifted_length,
+            lift.largest_gap.value * 1e6,
+            lift.largest_gap.position.unwrap_or(f64::NAN),
+        ),
+    }
+}
+
 /// Where the record was placed: "s = −x − 1.33 m".
 fn placement(c: &Comparison) -> String {
     let x = if c.direction > 0.0 { "x" } else { "−x" };
@@ -298,6 +334,9 @@ impl Output for GroundWaveStudy {
                     friction.newton_iterations,
                     friction.krylov_iterations
                 )?;
+            }
+            if let Some(lift) = &p.lift_off {
+                lift_off_line(f, lift)?;
             }
         }
         if let Some(c) = &self.comparison {
