@@ -2,7 +2,8 @@
 //! layered site — the spectrum of a composite beam on the strip's k_eq(k_x, k_x v) and its wave's extremes — at a
 //! subcritical, the critical and a supercritical speed, as `frictrack ground` computes each point of its speed curve
 //! (the target: ≤ 0.5 s a speed on 2 cores); the X2000 at Ledsgård without and with ballast friction (≤ 5×
-//! the linear wave); and one strip integral k_eq alone.
+//! the linear wave); the two-beam track there, bonded and with the sleepers lifting off a tensionless ballast; and one
+//! strip integral k_eq alone.
 //!
 //! Run with `cargo bench -p frictrack-benches --bench ground`.
 
@@ -63,6 +64,19 @@ fn ground(c: &mut Criterion) {
             b.iter(|| {
                 let study = study::ground::GroundWaveStudy::of(&with_friction, &[185.0 / 3.6], window, None, &|_| {});
                 black_box(study.unwrap())
+            })
+        });
+    }
+    // The two-beam track there (the rail on pads, sleepers and ballast over the embankment beam), bonded and with a
+    // tensionless ballast: the interface's four spectra and the lift-off's Newton iteration against the rail's wave.
+    let two_beam = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/ledsgard/ledsgard-two-beam.toml");
+    let bonded = scenario::Scenario::from_path(&two_beam).unwrap();
+    let mut tensionless = bonded.clone();
+    tensionless.embankment.as_mut().unwrap().interface = scenario::embankment::InterfaceKind::Tensionless;
+    for (name, case) in [("bonded", &bonded), ("tensionless", &tensionless)] {
+        group.bench_function(format!("x2000_two_beam_{name}_185_km_per_h_2_threads"), |b| {
+            b.iter(|| {
+                black_box(study::ground::GroundWaveStudy::of(case, &[185.0 / 3.6], window, None, &|_| {}).unwrap())
             })
         });
     }
