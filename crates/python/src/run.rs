@@ -103,7 +103,7 @@ pub(crate) fn columns() -> Vec<(&'static str, Vec<(&'static str, &'static str)>)
         ("snapshots", report::run_output::SNAPSHOT_COLUMNS.to_vec()),
         ("wheels", report::vehicle_output::WHEEL_COLUMNS.to_vec()),
         ("stationary_wave", study::stationary::output::WAVE_COLUMNS.to_vec()),
-        ("ground_wave", study::ground::wave_text::WAVE_COLUMNS.to_vec()),
+        ("ground_wave", study::ground::wave_text::LIFT_OFF_WAVE_COLUMNS.to_vec()),
         ("receptance", study::receptance::text::RECEPTANCE_COLUMNS.to_vec()),
         ("dispersion", study::ground::text::DISPERSION_COLUMNS.to_vec()),
         ("ground_speeds", study::ground::text::SPEED_COLUMNS.to_vec()),

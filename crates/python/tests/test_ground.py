@@ -74,7 +74,7 @@ def test_ballast_friction_on_the_ground_from_python():
 def test_sleepers_lifting_off_the_ballast_from_python(tmp_path):
     """The two-beam track at Ledsgård with a ballast that cannot pull (`[embankment] interface = "tensionless"`): at
     185 km/h the command line's lift between the locomotive and the first car, 3.58 µm against the weight's 11.49 µm
-    compression, with its unit."""
+    compression, with its unit, and the opening and the ballast's push along the wave."""
     folder = ROOT / "examples" / "ledsgard"
     (tmp_path / "x2000.csv").write_text((folder / "x2000.csv").read_text())
     text = (folder / "ledsgard-two-beam.toml").read_text()
@@ -85,6 +85,9 @@ def test_sleepers_lifting_off_the_ballast_from_python(tmp_path):
     assert abs(lift["largest_gap"]["value"] - 3.58e-6) < 1e-8
     assert -16.5 < lift["largest_gap"]["position"] < -12.4
     assert abs(lift["preload"] + 11.49e-6) < 1e-8
+    wave = result.waves[185 / 3.6]
+    assert wave.units == {"s": "m", "deflection": "m", "gap": "m", "ballast_force": "N/m"}
+    assert 0.0 < wave["gap"].max() <= lift["largest_gap"]["value"]
     assert "lift off the ballast" in str(result)
 
 

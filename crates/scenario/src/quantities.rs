@@ -114,6 +114,7 @@ pub const QUANTITIES: &[(&str, &str)] = &[
     ("largest_gap", "m"),
     ("lifted_length", "m"),
     ("preload", "m"),
+    ("ballast_force", "N/m"),
     // The solvers and the study's set-ups.
     ("status", "text"),
     ("iterations", "1"),

@@ -37,6 +37,21 @@ fn the_x2000_lifts_the_sleepers_between_the_locomotive_and_the_car() {
     assert!((lift["preload"].as_f64().unwrap() + 11.49e-6).abs() < 0.01e-6, "{lift}");
     assert_eq!(lift["lift_off_zones"], 1, "{lift}");
     assert!(lift["lifted_length"].as_f64().unwrap() <= 0.5, "{lift}");
+    // The wave's CSV carries the opening and the ballast's push at each point: open where it pushes nothing, the
+    // widest opening at the points no wider than the refined one.
+    let site = two_beam(&folder, "interface = \"tensionless\"", "");
+    let out = frictrack(&["stationary", &site, "--speed", "185km/h", "--format", "csv"]);
+    let csv = String::from_utf8(out.stdout).unwrap();
+    assert!(csv.starts_with("s,deflection,gap,ballast_force\n"), "{}", &csv[..80.min(csv.len())]);
+    let rows: Vec<Vec<f64>> = csv
+        .lines()
+        .skip(1)
+        .filter(|l| !l.starts_with('#'))
+        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+        .collect();
+    let widest = rows.iter().fold(0.0f64, |m, r| m.max(r[2]));
+    assert!(widest > 0.0 && widest <= gap, "{widest} at the points, {gap} refined");
+    assert!(rows.iter().all(|r| r[3] >= 0.0 && (r[2] == 0.0 || r[3] == 0.0)));
     let deepest = |p: &serde_json::Value| p["max_downward_deflection"]["value"].as_f64().unwrap();
     assert!((deepest(&lifting) - deepest(&bonded)).abs() <= 1e-8 * deepest(&bonded));
     let weightless = point("interface = \"tensionless\"", "self_weight = false");

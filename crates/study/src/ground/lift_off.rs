@@ -4,7 +4,9 @@
 //! change, where the sleepers leave the ballast and how far.
 
 use crate::ground::speeds::refined_extremes;
-use crate::ground::wave_point::{GroundWave, GroundWavePoint, LiftOffPoint, WAVE_STEP, WaveWindow, summary};
+use crate::ground::wave_point::{
+    BallastAlong, GroundWave, GroundWavePoint, LiftOffPoint, WAVE_STEP, WaveWindow, summary,
+};
 use analytic::ground::{GroundedBeam, StripGround, TrackOnEmbankment};
 use fem_beam::{Extreme, Train};
 use scenario::error::{Result, StudyError};
@@ -46,7 +48,9 @@ impl LiftOff<'_> {
                 asked: stationary::newton::TOLERANCE,
             }));
         }
-        let wave = GroundWave { speed, s: positions.to_vec(), deflection: solved.deflection.clone() };
+        let gap = solved.relative.iter().map(|d| (self.preload + d).max(0.0)).collect();
+        let ballast = Some(BallastAlong { gap, ballast_force: solved.ballast_force.clone() });
+        let wave = GroundWave { speed, s: positions.to_vec(), deflection: solved.deflection.clone(), ballast };
         let mut point = summary(&spectra.rail, train, &wave, window, &|s| solved.carried(s));
         let relative: Vec<(f64, f64)> = solved.s.iter().copied().zip(solved.relative.iter().copied()).collect();
         let at = |s: f64| spectra.relative.deflection_under(&train.axles, s) + solved.carried_relative(s);

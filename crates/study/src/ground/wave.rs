@@ -10,7 +10,9 @@
 use crate::ground::comparison::Comparison;
 use crate::ground::lift_off::LiftOff;
 use crate::ground::support::Support;
-pub use crate::ground::wave_point::{FrictionPoint, GroundWave, GroundWavePoint, LiftOffPoint, WAVE_STEP, WaveWindow};
+pub use crate::ground::wave_point::{
+    BallastAlong, FrictionPoint, GroundWave, GroundWavePoint, LiftOffPoint, WAVE_STEP, WaveWindow,
+};
 use crate::ground::wave_point::{summary, wave_of};
 use analytic::ground::{GroundedBeam, LineSupport, MovingSpectrum, StripGround, TrackOnEmbankment};
 use fem_beam::Train;
@@ -189,7 +191,7 @@ impl Friction<'_> {
                 asked: stationary::newton::ROUND_OFF,
             }));
         }
-        let wave = GroundWave { speed, s: positions.to_vec(), deflection: solved.deflection.clone() };
+        let wave = GroundWave { speed, s: positions.to_vec(), deflection: solved.deflection.clone(), ballast: None };
         let mut point = summary(spectrum, train, &wave, window, &|s| solved.carried(s));
         let slipping_length = solved.slipping.iter().zip(&solved.weights).filter(|(s, _)| **s).map(|(_, h)| h).sum();
         point.friction = Some(FrictionPoint {

@@ -64,6 +64,17 @@ pub struct GroundWave {
     pub s: Vec<f64>,
     /// W(s) (m, upward positive).
     pub deflection: Vec<f64>,
+    /// With a tensionless ballast on the two-beam track: the sleepers' opening and the ballast's push at each s.
+    pub ballast: Option<BallastAlong>,
+}
+
+/// The ballast under a wave with lift-off, at the wave's points.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BallastAlong {
+    /// ⟨d₀ + d⟩₊: how far the sleepers have lifted off it (m, ≥ 0).
+    pub gap: Vec<f64>,
+    /// (k_b/a)⟨−d₀ − d⟩₊: its push per metre of rail, the weight's included (N/m, ≥ 0).
+    pub ballast_force: Vec<f64>,
 }
 
 /// The wave at one speed, summarised (the JSON keys of `frictrack stationary`'s points where they mean the same).
@@ -126,7 +137,7 @@ pub struct LiftOffPoint {
 
 /// The wave of `train` at `speed` from its spectrum, at `positions` (in parallel).
 pub(crate) fn wave_of(spectrum: &MovingSpectrum, train: &Train, speed: f64, positions: &[f64]) -> GroundWave {
-    GroundWave { speed, s: positions.to_vec(), deflection: spectrum.wave_under(&train.axles, positions) }
+    GroundWave { speed, s: positions.to_vec(), deflection: spectrum.wave_under(&train.axles, positions), ballast: None }
 }
 
 /// The point of `wave`: its peaks refined between its points, the deflection under the first axle and at the rear;

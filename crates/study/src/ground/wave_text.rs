@@ -19,6 +19,14 @@ use std::fmt::{self, Formatter};
 
 /// The columns of one speed's wave.
 pub const WAVE_COLUMNS: [Column; 2] = [("s", unit("s")), ("deflection", unit("deflection"))];
+/// The columns of one speed's wave where the sleepers may lift off a tensionless ballast: the opening and the
+/// ballast's push beside the rail's deflection.
+pub const LIFT_OFF_WAVE_COLUMNS: [Column; 4] = [
+    ("s", unit("s")),
+    ("deflection", unit("deflection")),
+    ("gap", unit("gap")),
+    ("ballast_force", unit("ballast_force")),
+];
 /// The columns of the points over speeds (the JSON keys of [`GroundWavePoint`], the extremes' positions beside them).
 pub const POINT_COLUMNS: [Column; 8] = [
     ("speed", unit("speed")),
@@ -106,14 +114,25 @@ pub struct AxleRow {
 
 /// Every number's unit in the JSON: the single numbers, the points' and the wave's columns.
 fn units() -> Vec<ColumnMeta> {
-    listed_once(NUMBERS.iter().map(|&name| (name, unit(name))).chain(POINT_COLUMNS).chain(WAVE_COLUMNS))
+    listed_once(NUMBERS.iter().map(|&name| (name, unit(name))).chain(POINT_COLUMNS).chain(LIFT_OFF_WAVE_COLUMNS))
 }
 
 impl GroundWave {
-    /// The wave as CSV ([`WAVE_COLUMNS`]).
+    /// The wave as CSV ([`WAVE_COLUMNS`], or [`LIFT_OFF_WAVE_COLUMNS`] with the ballast beside it).
     pub fn csv(&self) -> String {
-        let points: Vec<(f64, f64)> = self.s.iter().copied().zip(self.deflection.iter().copied()).collect();
-        table(&WAVE_COLUMNS, &points, |&(s, w)| vec![s, w])
+        self.columns_and_csv().1
+    }
+
+    /// Its columns and its CSV.
+    fn columns_and_csv(&self) -> (&'static [Column], String) {
+        let rows: Vec<usize> = (0..self.s.len()).collect();
+        match &self.ballast {
+            None => (&WAVE_COLUMNS, table(&WAVE_COLUMNS, &rows, |&i| vec![self.s[i], self.deflection[i]])),
+            Some(b) => {
+                let values = |&i: &usize| vec![self.s[i], self.deflection[i], b.gap[i], b.ballast_force[i]];
+                (&LIFT_OFF_WAVE_COLUMNS, table(&LIFT_OFF_WAVE_COLUMNS, &rows, values))
+            }
+        }
     }
 }
 
@@ -121,7 +140,10 @@ impl GroundWaveStudy {
     /// The wave at one speed as CSV (`wave.csv`), or the points over several (`speeds.csv`).
     pub fn table(&self) -> (&'static str, &'static [Column], String) {
         match self.waves.as_slice() {
-            [wave] => ("wave.csv", &WAVE_COLUMNS, wave.csv()),
+            [wave] => {
+                let (columns, csv) = wave.columns_and_csv();
+                ("wave.csv", columns, csv)
+            }
             _ => {
                 let position = |e: fem_beam::Extreme| e.position.unwrap_or(f64::NAN);
                 let csv = table(&POINT_COLUMNS, &self.points, |p| {
