@@ -119,14 +119,24 @@ fn check_on_the_ground(path: &std::path::Path, scenario: &Scenario) -> Result<()
             format!("composite beam EI = {:.3e} N·m², {:.0} kg/m", beam.bending_stiffness(), beam.mass_per_length()),
             "`frictrack ground`, `stationary`, `receptance` and `run` (on a fitted foundation) compute it",
         ),
-        scenario::ground::GroundTrack::RailOnEmbankment { sleepers, embankment, .. } => (
+        scenario::ground::GroundTrack::RailOnEmbankment { sleepers, embankment, interface } => (
             format!(
-                "rail EI = {:.3e} N·m² on sleepers every {} m over an embankment of EI = {:.3e} N·m²",
+                "rail EI = {:.3e} N·m² on sleepers every {} m over an embankment of EI = {:.3e} N·m²{}",
                 beam.bending_stiffness(),
                 sleepers.spacing,
-                embankment.bending_stiffness
+                embankment.bending_stiffness,
+                match interface {
+                    scenario::ground::Interface::Bonded => "",
+                    scenario::ground::Interface::Tensionless { .. } => ", the ballast tensionless",
+                }
             ),
-            "`frictrack stationary` computes its steady wave",
+            match interface {
+                scenario::ground::Interface::Bonded => "`frictrack stationary` and `receptance` compute it",
+                scenario::ground::Interface::Tensionless { .. } => {
+                    "`frictrack stationary` computes its steady wave with the sleepers' lift-off, `receptance` its \
+                     small vibrations about the weight's contact"
+                }
+            },
         ),
     };
     println!(
