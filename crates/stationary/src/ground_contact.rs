@@ -103,7 +103,7 @@ impl GroundContactWave {
         self.lifted.iter().filter(|&&l| l).count() as f64 * step
     }
 
-    /// The widest opening between the sleepers and the ballast, max⟨d₀ + d⟩₊ (m).
+    /// The widest opening between the sleepers and the ballast at the points, max⟨d₀ + d_i⟩₊ (m).
     pub fn largest_gap(&self) -> f64 {
         self.relative.iter().fold(0.0f64, |m, d| m.max(self.preload + d))
     }
@@ -138,9 +138,9 @@ impl ContactFrame {
         }
         if !(problem.ballast_stiffness.is_finite() && problem.ballast_stiffness > 0.0) {
             return Err(invalid(
-                "sleepers.ballast.stiffness",
+                "ballast_stiffness",
                 problem.ballast_stiffness,
-                "must be finite and > 0 (N/m)",
+                "must be finite and > 0 (N/m² of rail: k_b/a)",
             ));
         }
         if !(problem.preload.is_finite() && problem.preload <= 0.0) {

@@ -11,7 +11,8 @@ use analytic::ground::{GroundedBeam, StripGround, TrackOnEmbankment};
 use fem_beam::{Extreme, Train};
 use scenario::error::{Result, StudyError};
 
-/// The wave with lift-off of the rail on `track` (EI, ρA, loss of `beam`).
+/// The rail's wave with lift-off: `grounded` the rail on its pads, sleepers and ballast over the embankment on the
+/// strip, the ballast pressed `preload` (m, ≤ 0) by the track's weight; `stop` ends the Newton iteration.
 pub(crate) struct LiftOff<'a> {
     pub(crate) grounded: GroundedBeam<'a, TrackOnEmbankment<'a, StripGround>>,
     pub(crate) preload: f64,

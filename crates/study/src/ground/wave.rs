@@ -128,11 +128,14 @@ impl GroundWaveStudy {
 }
 
 /// What [`GroundWaveStudy::of`] costs `scenario` at `speeds` speeds on `threads` threads: a spectrum a speed, and with
-/// ballast friction the Newton iteration on top ([`runner::cost::Estimate::ground_waves`]).
+/// ballast friction the Newton iteration on top ([`runner::cost::Estimate::ground_waves`]); a speed with the sleepers'
+/// lift-off (four spectra and the pair kernels, 2.1× a bonded one at Ledsgård) counts as one with friction.
 pub fn cost(scenario: &Scenario, speeds: usize, threads: usize) -> runner::cost::Estimate {
     let friction = scenario.friction.distributed.as_ref().is_some_and(|d| d.force_per_length > 0.0);
-    let (linear, with_friction) = if friction { (0, speeds) } else { (speeds, 0) };
-    runner::cost::Estimate::ground_waves(linear, with_friction, threads)
+    let lifting =
+        matches!(&scenario.embankment, Some(e) if e.interface == scenario::embankment::InterfaceKind::Tensionless);
+    let (linear, nonlinear) = if friction || lifting { (0, speeds) } else { (speeds, 0) };
+    runner::cost::Estimate::ground_waves(linear, nonlinear, threads)
 }
 
 /// The ballast's f_u (N/m) of `scenario` on `track`, if it has any: on the composite beam only (the two-beam track's
