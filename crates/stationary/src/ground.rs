@@ -36,7 +36,6 @@ use analytic::ground::MovingSpectrum;
 use analytic::interpolation::read_equally_spaced;
 use fem_beam::distributed::Quadrature;
 use fem_beam::{Axle, Beam, DistributedFriction, Foundation};
-use rayon::prelude::*;
 use std::cell::Cell;
 use std::rc::Rc;
 
@@ -69,6 +68,13 @@ impl GroundWindow {
     /// The positions s_i (m).
     pub fn positions(&self) -> Vec<f64> {
         (0..self.count).map(|i| self.first + i as f64 * self.step).collect()
+    }
+
+    /// `spectrum`'s wave at the points' spacings, W(d·h) for d = −(n − 1) … n − 1: the diagonals of the Toeplitz
+    /// influence between the points.
+    pub fn at_spacings(&self, spectrum: &MovingSpectrum) -> Vec<f64> {
+        let reach = (self.count - 1) as f64 * self.step;
+        spectrum.deflections_on_grid(-reach, self.step, 2 * self.count - 1)
     }
 }
 
@@ -206,10 +212,7 @@ impl GroundFrame {
         let mut local = MovingFrame::new(&local)?;
         let positions = problem.window.positions();
         let linear = problem.spectrum.wave_under(problem.axles, &positions);
-        let diagonals: Vec<f64> = (0..2 * count - 1)
-            .into_par_iter()
-            .map(|d| problem.spectrum.deflection((d as f64 - (count - 1) as f64) * step))
-            .collect();
+        let diagonals = problem.window.at_spacings(problem.spectrum);
         let scale = linear.iter().fold(0.0f64, |m, w| m.max(w.abs())).max(f64::MIN_POSITIVE);
         if let Some(sections) = local.friction.as_mut() {
             sections.stiffness = sections.stiffness.min(problem.friction_force / (JENKINS_GIVE * scale));

@@ -28,7 +28,6 @@ use analytic::ground::InterfaceSpectra;
 use analytic::interpolation::read_equally_spaced;
 use banded::general::GeneralBanded;
 use fem_beam::Axle;
-use rayon::prelude::*;
 
 /// The most points that may lift at once (each Newton step solves over them densely: 2000 points, 96 MB): 500 m of
 /// track at 0.25 m, far beyond a train's lift-off zones.
@@ -152,11 +151,7 @@ impl ContactFrame {
         }
         let positions = problem.window.positions();
         let linear = problem.spectra.relative.wave_under(problem.axles, &positions);
-        let pair = &problem.spectra.pair_relative;
-        let diagonals: Vec<f64> = (0..2 * count - 1)
-            .into_par_iter()
-            .map(|d| pair.deflection((d as f64 - (count - 1) as f64) * step))
-            .collect();
+        let diagonals = problem.window.at_spacings(&problem.spectra.pair_relative);
         let scale = linear.iter().fold(0.0f64, |m, d| m.max(d.abs())).max(f64::MIN_POSITIVE);
         Ok(Self {
             influence: Toeplitz::new(&diagonals),
@@ -247,12 +242,7 @@ pub fn solve_with_lift_off(
     let pairs = frame.pairs(&d, &lifted);
     let positions = problem.window.positions();
     let rail_linear = problem.spectra.rail.wave_under(problem.axles, &positions);
-    let GroundWindow { step, count, .. } = problem.window;
-    let rail_pair = &problem.spectra.pair_rail;
-    let pair_rail: Vec<f64> = (0..2 * count - 1)
-        .into_par_iter()
-        .map(|k| rail_pair.deflection((k as f64 - (count - 1) as f64) * step))
-        .collect();
+    let pair_rail = problem.window.at_spacings(&problem.spectra.pair_rail);
     let carried = Toeplitz::new(&pair_rail).apply(&pairs);
     let ballast_force = d.iter().map(|d| frame.stiffness * (-(frame.preload + d)).max(0.0)).collect();
     Ok(GroundContactWave {

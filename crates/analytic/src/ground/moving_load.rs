@@ -146,12 +146,23 @@ impl MovingSpectrum {
 
     /// W(s) (m, upward) per newton of the downward force, at s = x − vt (m; s > 0 ahead of the load).
     pub fn deflection(&self, s: f64) -> f64 {
-        // Below the first sample G = G₀ + b·ln(k/k₀) (a long wave's ln on the ground, b = 0 on a spring) and
-        // e^{iks} = 1 + iks (k₀|s| ≲ 1e-2 for |s| ≲ 1 km): ∫₀^{k₀} = k₀(G₀ − b) + is·k₀²/2·(G₀ − b/2).
+        (self.head(s) + self.body.fourier(s)).re / PI
+    }
+
+    /// [`Self::deflection`] at s_m = `first` + m·`step`, m < `count`: the same sums, each panel's phases carried along
+    /// the grid by products instead of a sine and a cosine each (the same values to ~1e-14; the 60-speed Ledsgård
+    /// curve, ~10 400 grid points a speed, 10 % faster).
+    pub fn deflections_on_grid(&self, first: f64, step: f64, count: usize) -> Vec<f64> {
+        let body = self.body.fourier_on_grid(first, step, count);
+        body.iter().enumerate().map(|(m, b)| (self.head(first + m as f64 * step) + b).re / PI).collect()
+    }
+
+    /// The spectrum below its first sample: G = G₀ + b·ln(k/k₀) (a long wave's ln on the ground, b = 0 on a spring)
+    /// and e^{iks} = 1 + iks (k₀|s| ≲ 1e-2 for |s| ≲ 1 km): ∫₀^{k₀} = k₀(G₀ − b) + is·k₀²/2·(G₀ − b/2).
+    fn head(&self, s: f64) -> Complex64 {
         let low = self.log_k[0].exp();
         let (g0, slope) = (self.response[0], (self.response[1] - self.response[0]) / (self.log_k[1] - self.log_k[0]));
-        let head = (g0 - slope) * low + Complex64::new(0.0, s * low * low / 2.0) * (g0 - slope / 2.0);
-        (head + self.body.fourier(s)).re / PI
+        (g0 - slope) * low + Complex64::new(0.0, s * low * low / 2.0) * (g0 - slope / 2.0)
     }
 
     /// W(s) (m, upward) under a train of `axles` (offsets d_j ≥ 0 behind the first axle, which is at s = 0; forces
@@ -173,7 +184,7 @@ impl MovingSpectrum {
         if axles.is_empty() || positions.is_empty() || count >= positions.len() * axles.len() {
             return positions.par_iter().map(|&s| self.deflection_under(axles, s)).collect();
         }
-        let grid: Vec<f64> = (0..count).into_par_iter().map(|i| self.deflection(from + i as f64 * GRID_STEP)).collect();
+        let grid = self.deflections_on_grid(from, GRID_STEP, count);
         let read = |s: f64| read_equally_spaced(&grid, from, GRID_STEP, s);
         positions.par_iter().map(|&s| axles.iter().map(|a| a.force * read(s + a.offset)).sum()).collect()
     }
