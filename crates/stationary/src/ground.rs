@@ -70,6 +70,31 @@ impl GroundWindow {
         (0..self.count).map(|i| self.first + i as f64 * self.step).collect()
     }
 
+    /// The step finite and > 0 (`domain.element_length`), 3 to [`MAX_POINTS`] points from a finite s₀ (`domain`):
+    /// checked before anything is allocated.
+    pub fn validate(&self) -> Result<()> {
+        if !(self.step.is_finite() && self.step > 0.0) {
+            return Err(invalid("domain.element_length", self.step, "must be finite and > 0 (m)"));
+        }
+        if !(3..=MAX_POINTS).contains(&self.count) || !self.first.is_finite() {
+            let allowed = format!("must hold 3 to {MAX_POINTS} points (5 km at 0.25 m) from a finite s₀");
+            return Err(invalid("domain", self.count as f64, allowed));
+        }
+        Ok(())
+    }
+
+    /// Σ_j K(s − s_j) a_j over the points for the amplitudes `amplitude(j)` (skipping zeros), with K given at the
+    /// points' spacings (`kernel`, from [`Self::at_spacings`]) and read between them by the cubic through the four
+    /// nearest (the points' own values exact).
+    pub(crate) fn superposed(&self, kernel: &[f64], amplitude: impl Fn(usize) -> f64, s: f64) -> f64 {
+        let reach = -((self.count - 1) as f64) * self.step;
+        (0..self.count)
+            .map(|j| (j, amplitude(j)))
+            .filter(|&(_, a)| a != 0.0)
+            .map(|(j, a)| read_equally_spaced(kernel, reach, self.step, s - (self.first + j as f64 * self.step)) * a)
+            .sum()
+    }
+
     /// `spectrum`'s wave at the points' spacings, W(d·h) for d = −(n − 1) … n − 1: the diagonals of the Toeplitz
     /// influence between the points.
     pub fn at_spacings(&self, spectrum: &MovingSpectrum) -> Vec<f64> {
@@ -113,6 +138,8 @@ pub struct GroundFrictionWave {
     pub convergence: Convergence,
     /// GMRES steps over all Newton steps.
     pub krylov_iterations: usize,
+    /// The points.
+    window: GroundWindow,
     /// W₁(d·h) (m/N) for d = −(n − 1) … n − 1: the single load's wave at the points' spacings.
     influence: Vec<f64>,
 }
@@ -143,14 +170,7 @@ impl GroundFrictionWave {
     /// read between its values at the points' spacings by the cubic through the four nearest (the points' own
     /// values exact; between them ~h⁴|W₁⁗|/40, and h³/(20 EI) per newton beside s_j, where W₁‴ jumps).
     pub fn carried(&self, s: f64) -> f64 {
-        let n = self.s.len();
-        let step = self.s[1] - self.s[0];
-        let reach = (n - 1) as f64;
-        let single = |x: f64| read_equally_spaced(&self.influence, -reach * step, step, x);
-        (0..n)
-            .filter(|&j| self.friction_force[j] != 0.0)
-            .map(|j| single(s - self.s[j]) * self.weights[j] * self.friction_force[j])
-            .sum()
+        self.window.superposed(&self.influence, |j| self.weights[j] * self.friction_force[j], s)
     }
 
     /// The largest |r| over the last tenth of the window behind and the first tenth ahead, over f_u: near 0 where the
@@ -182,14 +202,8 @@ struct GroundFrame {
 
 impl GroundFrame {
     fn new(problem: &GroundFrictionProblem<'_>) -> Result<Self> {
-        let GroundWindow { first, step, count } = problem.window;
-        if !(step.is_finite() && step > 0.0) {
-            return Err(invalid("domain.element_length", step, "must be finite and > 0 (m)"));
-        }
-        if !(3..=MAX_POINTS).contains(&count) || !first.is_finite() {
-            let allowed = format!("must hold 3 to {MAX_POINTS} points (5 km at 0.25 m) from a finite s₀");
-            return Err(invalid("domain", count as f64, allowed));
-        }
+        problem.window.validate()?;
+        let GroundWindow { step, count, .. } = problem.window;
         if problem.friction_force.is_nan() || problem.friction_force <= 0.0 {
             return Err(invalid("friction.distributed.force_per_length", problem.friction_force, "must be > 0 (N/m)"));
         }
@@ -327,6 +341,7 @@ pub fn solve_on_ground(
         deflection: w,
         convergence: with_iterations(status, spent),
         krylov_iterations: frame.krylov.get(),
+        window: problem.window,
         influence: frame.diagonals,
     })
 }

@@ -25,7 +25,6 @@ use crate::operator::factor;
 use crate::status::{ContactGuess, Convergence};
 use crate::toeplitz::Toeplitz;
 use analytic::ground::InterfaceSpectra;
-use analytic::interpolation::read_equally_spaced;
 use banded::general::GeneralBanded;
 use fem_beam::Axle;
 
@@ -67,6 +66,8 @@ pub struct GroundContactWave {
     pub convergence: Convergence,
     /// d₀ (m).
     pub preload: f64,
+    /// The points.
+    window: GroundWindow,
     /// The pairs p_j (N/m, positive pressing).
     pairs: Vec<f64>,
     /// P_r(d·h) (m per N/m) for d = −(n − 1) … n − 1: a hat pair's rail wave at the points' spacings.
@@ -87,13 +88,9 @@ impl GroundContactWave {
         self.by_pairs(&self.pair_relative, s)
     }
 
-    /// Σ_j K(s − s_j) p_j with K given at the points' spacings (`kernel`) and read between them by the cubic through
-    /// the four nearest.
+    /// Σ_j K(s − s_j) p_j with K given at the points' spacings (`kernel`).
     fn by_pairs(&self, kernel: &[f64], s: f64) -> f64 {
-        let step = self.s[1] - self.s[0];
-        let reach = -((self.s.len() - 1) as f64) * step;
-        let pairs = self.s.iter().zip(&self.pairs).filter(|(_, p)| **p != 0.0);
-        pairs.map(|(sj, p)| read_equally_spaced(kernel, reach, step, s - sj) * p).sum()
+        self.window.superposed(kernel, |j| self.pairs[j], s)
     }
 
     /// The length of track over which the sleepers have lifted (m).
@@ -123,11 +120,8 @@ struct ContactFrame {
 
 impl ContactFrame {
     fn new(problem: &GroundContactProblem<'_>) -> Result<Self> {
-        let GroundWindow { first, step, count } = problem.window;
-        if !(3..=crate::ground::MAX_POINTS).contains(&count) || !first.is_finite() {
-            let allowed = format!("must hold 3 to {} points from a finite s₀", crate::ground::MAX_POINTS);
-            return Err(invalid("domain", count as f64, allowed));
-        }
+        problem.window.validate()?;
+        let step = problem.window.step;
         if (step - problem.spectra.spacing).abs() > 1e-12 * step {
             return Err(invalid(
                 "domain.element_length",
@@ -253,6 +247,7 @@ pub fn solve_with_lift_off(
         lifted,
         convergence,
         preload: frame.preload,
+        window: problem.window,
         pairs,
         pair_rail,
         pair_relative: frame.diagonals,

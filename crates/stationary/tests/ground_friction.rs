@@ -3,6 +3,8 @@
 //! independent method: a banded Hermite mesh with free ends, against the exact Fourier-integral kernel applied by FFT
 //! with GMRES), and its limits — friction too weak to matter, friction too strong to let the rail move.
 
+mod common;
+
 use analytic::ground::GroundedBeam;
 use fem_beam::{Axle, Beam, DistributedFriction, Foundation};
 use stationary::{
@@ -118,21 +120,9 @@ fn weak_friction_leaves_the_linear_wave_and_strong_friction_holds_the_rail() {
 
 /// The soft trial site of the CLI's tests (a crust over soft clay on a stiffer half-space) under a composite beam.
 fn soft_site() -> (Beam, analytic::ground::StripGround) {
-    use analytic::ground::{GroundProfile, SoilLayer, SoilMaterial, StripGround};
-    let soil = |shear_wave_speed: f64, density: f64, damping_ratio: f64| SoilMaterial {
-        shear_wave_speed,
-        compression_wave_speed: shear_wave_speed * (2.0 * 0.55 / 0.1f64).sqrt(),
-        density,
-        damping_ratio,
-    };
-    let layers = vec![
-        SoilLayer { thickness: 1.5, material: soil(70.0, 1500.0, 0.04) },
-        SoilLayer { thickness: 4.0, material: soil(45.0, 1300.0, 0.03) },
-    ];
-    let strip = StripGround { width: 3.0, profile: GroundProfile { layers, half_space: soil(110.0, 1700.0, 0.05) } };
     let beam =
         Beam { youngs_modulus: 2e8, second_moment: 1.0, area: 1.0, density: 1e4, loss_factor: 0.1, ..Beam::default() };
-    (beam, strip)
+    (beam, common::soft_strip())
 }
 
 /// On a layered ground (the soft site at 50 m/s, a 100 kN load, 2 kN/m) the wave converges as the friction's points

@@ -4,9 +4,9 @@
 //! a layered ground the ballast's push balances the axles, the wave converges as the points are refined, and a track
 //! too heavy to lift is the linear one.
 
-use analytic::ground::{
-    Embankment, GroundProfile, GroundedBeam, InterfaceSpectra, SoilLayer, SoilMaterial, StripGround, TrackOnEmbankment,
-};
+mod common;
+
+use analytic::ground::{Embankment, GroundedBeam, InterfaceSpectra, StripGround, TrackOnEmbankment};
 use fem_beam::sleepers::{Layer, Sleepers};
 use fem_beam::{Axle, Beam, DistributedFriction, Foundation, FoundationLaw, GRAVITY};
 use stationary::{
@@ -117,18 +117,7 @@ fn zones(wave: &GroundContactWave) -> Vec<(f64, f64)> {
 /// The soft trial site (a crust over soft clay on a stiffer half-space) under a rail on the typical pads, sleepers
 /// and ballast over an embankment beam.
 fn soft_site() -> (StripGround, Embankment) {
-    let soil = |shear_wave_speed: f64, density: f64, damping_ratio: f64| SoilMaterial {
-        shear_wave_speed,
-        compression_wave_speed: shear_wave_speed * (2.0 * 0.55 / 0.1f64).sqrt(),
-        density,
-        damping_ratio,
-    };
-    let layers = vec![
-        SoilLayer { thickness: 1.5, material: soil(70.0, 1500.0, 0.04) },
-        SoilLayer { thickness: 4.0, material: soil(45.0, 1300.0, 0.03) },
-    ];
-    let strip = StripGround { width: 3.0, profile: GroundProfile { layers, half_space: soil(110.0, 1700.0, 0.05) } };
-    (strip, Embankment { bending_stiffness: 2e8, mass_per_length: 1e4, loss_factor: 0.1 })
+    (common::soft_strip(), Embankment { bending_stiffness: 2e8, mass_per_length: 1e4, loss_factor: 0.1 })
 }
 
 /// A bogie (two 80 kN axles 2.9 m apart on one rail) at 60 m/s on the soft site, the track's weight a tenth of the

@@ -71,11 +71,7 @@ impl<S: LineSupport + ?Sized> GroundedBeam<'_, TrackOnEmbankment<'_, S>> {
         let sleeper = -omega * omega * track.sleepers.mass / a;
         let embankment = track.embankment.bending_stiffness * k.powi(4);
         let half = match embankment > 1e4 * track.ground.stiffness_bound(k, omega) {
-            true => {
-                let e = &track.embankment;
-                let loss = if omega > 0.0 { e.loss_factor } else { 0.0 };
-                0.5 * Complex64::new(embankment - e.mass_per_length * omega * omega, loss * embankment)
-            }
+            true => 0.5 * track.embankment_beam(k, omega),
             false => track.half_embankment(k, omega)?,
         };
         let zero = Complex64::new(0.0, 0.0);

@@ -40,11 +40,15 @@ pub struct TrackOnEmbankment<'a, S: LineSupport + ?Sized> {
 impl<S: LineSupport + ?Sized> TrackOnEmbankment<'_, S> {
     /// Z/2 (N/m²): half the embankment on half the ground.
     pub(super) fn half_embankment(&self, kx: f64, omega: f64) -> Result<Complex64> {
+        Ok(0.5 * (self.embankment_beam(kx, omega) + self.ground.line_stiffness(kx, omega)?))
+    }
+
+    /// EI_e(1 + iη_e sgn ω)k_x⁴ − ρA_e ω² (N/m²): the whole embankment as a beam, without the ground.
+    pub(super) fn embankment_beam(&self, kx: f64, omega: f64) -> Complex64 {
         let e = &self.embankment;
         let bending = e.bending_stiffness * kx.powi(4);
         let loss = if omega > 0.0 { e.loss_factor } else { 0.0 };
-        let beam = Complex64::new(bending - e.mass_per_length * omega * omega, loss * bending);
-        Ok(0.5 * (beam + self.ground.line_stiffness(kx, omega)?))
+        Complex64::new(bending - e.mass_per_length * omega * omega, loss * bending)
     }
 }
 
