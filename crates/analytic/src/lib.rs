@@ -8,9 +8,10 @@
 //!
 //! - [`moving_beam`]: **the moving-frame beam** — either rail on its foundation, as the run's scenario gives it:
 //!   the steady wave of a moving force with its decay rates, the static limit, the critical speed.
+//!   Euler–Bernoulli is the κGA → ∞ case of the Timoshenko quartic; [`steady_wave`]: the wave it gives.
 //! - [`reference`](mod@reference): the reference case and Frýba's closed form of the Euler–Bernoulli beam (β, w₀,
-//!   M₀, v_cr, the moving-load steady state); [`moving_timoshenko`]: the Timoshenko beam's, by the residues of its
-//!   quartic; [`steady_train`]: a train's axles superposed.
+//!   M₀, v_cr, the moving-load steady state: the independent check of the moving-frame beam, and the static
+//!   closed forms); [`steady_train`]: a train's axles superposed.
 //! - [`dispersion`]: free waves, their least phase velocity (the critical speed), the point receptance.
 //! - [`tensionless`]: a point load on a tensionless Winkler soil (Weitsman's lift-off).
 //! - [`span`], [`span_oscillator`]: the simply supported span under a moving force or a moving oscillator.
@@ -26,12 +27,13 @@ pub mod golden;
 pub mod ground;
 pub mod interpolation;
 pub mod moving_beam;
-pub mod moving_timoshenko;
 pub mod quadrature;
 pub mod reference;
 pub mod span;
 pub mod span_oscillator;
 pub mod steady_train;
+pub mod steady_wave;
 pub mod tensionless;
 
-pub use moving_beam::{MovingBeam, SteadyWave};
+pub use moving_beam::MovingBeam;
+pub use steady_wave::SteadyWave;

@@ -5,23 +5,55 @@
 //! ahead of and behind the load, the steady wave of a moving force with its decay rates, its static limit, the
 //! critical speed, critical damping and the speed beyond which the moving-frame equations change type.
 //!
-//! Euler–Bernoulli is the κGA → ∞, ρI → 0 limit of the Timoshenko quartic, evaluated in Frýba's scaled variable
-//! ξ = βs ([`crate::reference::InfiniteBeam`]); a Timoshenko rail by the residues of its own quartic
-//! ([`crate::moving_timoshenko::MovingTimoshenko`]). The tests check each against the other at large κGA.
+//! With W(s) the deflection and Ψ(s) the cross-section's rotation (upward / anticlockwise positive), G = κGA,
+//! a = ρAv² − G and D = ρIv² − EI, the Timoshenko beam's two equations in s are
+//!
+//! ```text
+//! a W″ + G Ψ′ − c v W′ + k W = f(s),        −G W′ + D Ψ″ + G Ψ = 0.
+//! ```
+//!
+//! For W = e^{rs}: Ψ = β(r) W with β = r/(1 + q D r²), q = 1/G the shear compliance, and r is a root of the quartic
+//! (the characteristic polynomial divided by G)
+//!
+//! ```text
+//! P(r) = (ρAv² q − 1) D r⁴ − c v D q r³ + (ρAv² + k D q) r² − c v r + k.
+//! ```
+//!
+//! **Euler–Bernoulli is its q = 0, ρI = 0 case**, evaluated by the same lines: P = EI r⁴ + ρAv² r² − cv r + k and
+//! β = r (the rotation DOF is the slope W′). Frýba's closed form in ξ = βs ([`crate::reference::InfiniteBeam`]) is
+//! kept as the independent reference the tests hold this type to, not as a second way in. A point force −F
+//! (downward) at s = 0 gives, by the residues of W(s) = (1/2πi) ∫ f̂ (1 + q D r²)/P(r) e^{rs} dr,
+//!
+//! ```text
+//! W(s) = −F Σ_{Re r<0} (1 + q D r²)/P′(r) e^{rs}  (s ≥ 0),     W(s) = F Σ_{Re r>0} (1 + q D r²)/P′(r) e^{rs}  (s ≤ 0),
+//! ```
+//!
+//! a wave that decays both ways where two roots lie each side of the imaginary axis (below the critical speed, or
+//! damped); a root on the axis (undamped at or above it) leaves no bounded steady state. Speeds must stay below the
+//! [`Beam::wave_speed_limit`] (the shear wave √(G/ρA) ≈ 2 km/s of a Timoshenko rail, the bar wave of an
+//! Euler–Bernoulli one), where a and D keep their sign.
 
 use crate::dispersion::critical_speed;
-use crate::moving_timoshenko::{MovingTimoshenko, TimoshenkoSteadyState};
-use crate::reference::{InfiniteBeam, SteadyState};
-use fem_beam::DeflectionExtremes;
-use fem_beam::error::Result;
+use crate::reference::monic_quartic_roots;
+use crate::steady_wave::SteadyWave;
+use fem_beam::error::{FemError, Result, non_negative};
 use fem_beam::properties::{Beam, Foundation};
 use fem_beam::sleepers::Sleepers;
 use num_complex::Complex64;
 
-/// The infinite beam on its viscoelastic foundation in the frame of a moving load, by rail theory.
+/// The infinite beam on its viscoelastic foundation in the frame of a moving load, either rail theory.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct MovingBeam {
-    rail: Rail,
+    /// EI (N·m²).
+    bending_stiffness: f64,
+    /// ρA (kg/m).
+    mass_per_length: f64,
+    /// ρI (kg·m): 0 for Euler–Bernoulli.
+    rotary_inertia: f64,
+    /// q = 1/κGA (1/N): 0 for Euler–Bernoulli.
+    shear_compliance: f64,
+    /// k_f (N/m²) and c_f (N·s/m²).
+    foundation: Foundation,
     /// v_cr (m/s).
     critical_speed: f64,
     /// c_cr = 2√(k_f ρA) (N·s/m²).
@@ -30,46 +62,27 @@ pub struct MovingBeam {
     wave_speed_limit: f64,
 }
 
-/// The closed form behind a [`MovingBeam`].
-#[derive(Debug, Clone, Copy, PartialEq)]
-enum Rail {
-    EulerBernoulli(InfiniteBeam),
-    Timoshenko(MovingTimoshenko),
-}
-
-/// The steady wave of a moving force, by rail theory.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum SteadyWave {
-    /// Euler–Bernoulli's.
-    EulerBernoulli(SteadyState),
-    /// Timoshenko's.
-    Timoshenko(TimoshenkoSteadyState),
-}
-
 impl MovingBeam {
-    /// The moving frame of `beam` on `foundation` (its linear stiffness k_f and damping c_f ≥ 0). An Euler–Bernoulli
-    /// rail needs k_f > 0 (β = (k_f/4EI)^¼ scales its closed form); a Timoshenko rail takes k_f = 0 too (the free
-    /// rail, critical speed 0).
+    /// The moving frame of `beam` on `foundation` (its linear stiffness k_f ≥ 0 and damping c_f ≥ 0); on k_f = 0
+    /// (the free rail) the critical speed is 0.
     pub fn new(beam: &Beam, foundation: &Foundation) -> Result<Self> {
-        let critical_damping = foundation.critical_damping(beam);
-        let wave_speed_limit = beam.wave_speed_limit();
-        let (rail, critical_speed) = match beam.shear_stiffness() {
-            None => {
-                let euler = InfiniteBeam::new(beam, foundation)?;
-                (Rail::EulerBernoulli(euler), euler.critical_speed())
-            }
-            Some(_) => {
-                beam.validate()?;
-                fem_beam::error::non_negative("foundation.stiffness", foundation.stiffness)?;
-                fem_beam::error::non_negative("foundation.damping", foundation.damping)?;
-                let critical = match foundation.stiffness > 0.0 {
-                    true => critical_speed(beam, foundation)?,
-                    false => 0.0,
-                };
-                (Rail::Timoshenko(MovingTimoshenko::new(beam, foundation)?), critical)
-            }
+        beam.validate()?;
+        non_negative("foundation.stiffness", foundation.stiffness)?;
+        non_negative("foundation.damping", foundation.damping)?;
+        let critical_speed = match foundation.stiffness > 0.0 {
+            true => critical_speed(beam, foundation)?,
+            false => 0.0,
         };
-        Ok(Self { rail, critical_speed, critical_damping, wave_speed_limit })
+        Ok(Self {
+            bending_stiffness: beam.bending_stiffness(),
+            mass_per_length: beam.mass_per_length(),
+            rotary_inertia: beam.rotary_inertia(),
+            shear_compliance: beam.shear_stiffness().map_or(0.0, |g| 1.0 / g),
+            foundation: *foundation,
+            critical_speed,
+            critical_damping: foundation.critical_damping(beam),
+            wave_speed_limit: beam.wave_speed_limit(),
+        })
     }
 
     /// The moving frame of the track a scenario describes: `beam` on a foundation `foundation`, or — on `sleepers` —
@@ -102,116 +115,91 @@ impl MovingBeam {
         self.wave_speed_limit
     }
 
+    /// q D = q(ρIv² − EI) (m²) at `speed`: 0 for Euler–Bernoulli.
+    fn shear_term(&self, speed: f64) -> f64 {
+        self.shear_compliance * (self.rotary_inertia * speed * speed - self.bending_stiffness)
+    }
+
+    /// P's coefficients [p₄, p₃, p₂, p₁, p₀] at `speed` (m/s) (N/m², per the module's scaling).
+    pub fn characteristic(&self, speed: f64) -> [f64; 5] {
+        let v = speed;
+        let d = self.rotary_inertia * v * v - self.bending_stiffness;
+        let (q, qd) = (self.shear_compliance, self.shear_term(speed));
+        let (k, c, rho_a) = (self.foundation.stiffness, self.foundation.damping, self.mass_per_length);
+        [(rho_a * v * v * q - 1.0) * d, -c * v * qd, rho_a * v * v + k * qd, -c * v, k]
+    }
+
     /// The four roots r (1/m) of the characteristic polynomial at `speed` (m/s), unordered: every solution of the
     /// unloaded track in s = x − vt is a sum of e^{rs}. They exist at every speed; undamped above v_cr some lie on
     /// the imaginary axis. Their largest modulus sets the shortest length a mesh must resolve.
     pub fn wavenumbers(&self, speed: f64) -> [Complex64; 4] {
-        match &self.rail {
-            Rail::EulerBernoulli(b) => b.wavenumbers(speed),
-            Rail::Timoshenko(t) => t.wavenumbers(speed),
-        }
+        let [p4, p3, p2, p1, p0] = self.characteristic(speed);
+        monic_quartic_roots([p3 / p4, p2 / p4, p1 / p4, p0 / p4])
+    }
+
+    /// The rotation DOF each mode e^{rs} carries at `speed`, with its derivative in r: β = r/(1 + qD r²) and
+    /// dβ/dr = (1 − qD r²)/(1 + qD r²)² — the cross-section's Ψ/W of a Timoshenko rail, Euler–Bernoulli's slope
+    /// (β = r, dβ/dr = 1) at q = 0.
+    pub fn rotation_per_deflection(&self, r: Complex64, speed: f64) -> (Complex64, Complex64) {
+        let qd_r2 = r * r * self.shear_term(speed);
+        let denominator = qd_r2 + 1.0;
+        (r / denominator, (-qd_r2 + 1.0) / (denominator * denominator))
     }
 
     /// The roots that decay away from the load at `speed`: two ahead (Re r < 0), then two behind (Re r > 0);
-    /// [`fem_beam::FemError::NoSteadyState`] where a root lies on the imaginary axis (undamped at or above v_cr).
+    /// [`FemError::NoSteadyState`] where a root lies on the imaginary axis (to 1e-9 of the largest; undamped at or
+    /// above v_cr) or the speed reaches the [wave speed limit](Self::wave_speed_limit).
     pub fn decaying_wavenumbers(&self, speed: f64) -> Result<[Complex64; 4]> {
-        match &self.rail {
-            Rail::EulerBernoulli(b) => Ok(b.steady_state(speed, 1.0)?.roots().map(|r| r * b.beta())),
-            Rail::Timoshenko(t) => t.decaying_wavenumbers(speed),
+        let no_state = || {
+            let damping_ratio = self.foundation.damping / self.critical_damping;
+            FemError::NoSteadyState { speed, damping_ratio, critical_speed: self.critical_speed }
+        };
+        if !(speed.is_finite() && speed >= 0.0) || speed >= self.wave_speed_limit {
+            return Err(no_state());
+        }
+        let roots = self.wavenumbers(speed);
+        let scale = roots.iter().map(|r| r.norm()).fold(0.0, f64::max);
+        if roots.iter().any(|r| r.re.abs() <= 1e-9 * scale) {
+            return Err(no_state());
+        }
+        let mut ahead = roots.iter().copied().filter(|r| r.re < 0.0);
+        let mut behind = roots.iter().copied().filter(|r| r.re > 0.0);
+        match (ahead.next(), ahead.next(), ahead.next(), behind.next(), behind.next()) {
+            (Some(a0), Some(a1), None, Some(b0), Some(b1)) => Ok([a0, a1, b0, b1]),
+            _ => Err(no_state()),
         }
     }
 
-    /// The rotation DOF each mode e^{rs} carries at `speed`, with its derivative in r: Euler–Bernoulli's θ = W′
-    /// (β = r, dβ/dr = 1); Timoshenko's cross-section Ψ = β(r) W with β = G r/(G + D r²) and
-    /// dβ/dr = G(G − D r²)/(G + D r²)², G = κGA, D = ρIv² − EI.
-    pub fn rotation_per_deflection(&self, r: Complex64, speed: f64) -> (Complex64, Complex64) {
-        match &self.rail {
-            Rail::EulerBernoulli(_) => (r, Complex64::new(1.0, 0.0)),
-            Rail::Timoshenko(t) => (t.rotation_per_deflection(r, speed), t.rotation_slope(r, speed)),
-        }
-    }
-
-    /// The steady wave of a force `force` (N, downward) at `speed` (m/s).
+    /// The steady wave of a force `force` (N, downward) moving at `speed` (m/s, ≥ 0), by the residues above.
     pub fn steady_state(&self, speed: f64, force: f64) -> Result<SteadyWave> {
-        Ok(match &self.rail {
-            Rail::EulerBernoulli(b) => SteadyWave::EulerBernoulli(b.steady_state(speed, force)?),
-            Rail::Timoshenko(t) => SteadyWave::Timoshenko(t.steady_state(speed, force)?),
-        })
+        non_negative("speed", speed)?;
+        if !force.is_finite() {
+            return Err(FemError::InvalidField { field: "force", value: force, allowed: "must be finite" });
+        }
+        let roots = self.decaying_wavenumbers(speed)?;
+        let [p4, p3, p2, p1, _] = self.characteristic(speed);
+        let qd = self.shear_term(speed);
+        let residue = |r: Complex64| {
+            let derivative = ((r * (4.0 * p4) + 3.0 * p3) * r + 2.0 * p2) * r + p1;
+            (r * r * qd + 1.0) / derivative
+        };
+        let term = |r: Complex64, sign: f64| (r, residue(r) * (sign * force), self.rotation_per_deflection(r, speed).0);
+        Ok(SteadyWave::new(
+            [term(roots[0], -1.0), term(roots[1], -1.0)],
+            [term(roots[2], 1.0), term(roots[3], 1.0)],
+            self.bending_stiffness,
+            speed,
+        ))
     }
 
-    /// The static deflection under `force` (m, magnitude): Fβ/2k_f, or the Timoshenko wave at rest.
+    /// The static deflection under `force` (m, magnitude): the wave at rest under the load (Euler–Bernoulli's
+    /// Fβ/2k_f).
     pub fn static_deflection(&self, force: f64) -> Result<f64> {
-        match &self.rail {
-            Rail::EulerBernoulli(b) => Ok(b.static_deflection(force)),
-            Rail::Timoshenko(t) => Ok(-t.steady_state(0.0, force)?.deflection(0.0)),
-        }
+        Ok(-self.steady_state(0.0, force)?.deflection(0.0))
     }
 
-    /// The static bending moment under `force` (N·m, sagging): F/4β, or the Timoshenko wave's at rest.
+    /// The static bending moment under `force` (N·m, sagging): the wave's at rest (Euler–Bernoulli's F/4β).
     pub fn static_moment(&self, force: f64) -> Result<f64> {
-        match &self.rail {
-            Rail::EulerBernoulli(b) => Ok(b.static_moment(force)),
-            Rail::Timoshenko(t) => Ok(t.steady_state(0.0, force)?.moment(0.0)),
-        }
-    }
-}
-
-impl SteadyWave {
-    /// The slowest decay rates of the wave ahead of and behind the load (1/m): it falls to a fraction ε of its size
-    /// within ln(1/ε)/rate of the load.
-    pub fn decay_rates(&self) -> (f64, f64) {
-        match self {
-            Self::EulerBernoulli(w) => w.decay_rates(),
-            Self::Timoshenko(w) => w.decay_rates(),
-        }
-    }
-
-    /// W (m, upward) at s = x − vt (m).
-    pub fn deflection(&self, s: f64) -> f64 {
-        match self {
-            Self::EulerBernoulli(w) => w.deflection(s),
-            Self::Timoshenko(w) => w.deflection(s),
-        }
-    }
-
-    /// The rotation DOF θ at s (rad): W′ for Euler–Bernoulli, the cross-section's Ψ for Timoshenko.
-    pub fn rotation(&self, s: f64) -> f64 {
-        match self {
-            Self::EulerBernoulli(w) => w.slope(s),
-            Self::Timoshenko(w) => w.rotation(s),
-        }
-    }
-
-    /// ∂w/∂t = −v W′ (m/s) at s.
-    pub fn velocity(&self, s: f64) -> f64 {
-        match self {
-            Self::EulerBernoulli(w) => w.velocity(s),
-            Self::Timoshenko(w) => w.velocity(s),
-        }
-    }
-
-    /// ∂θ/∂t = −v θ′ (rad/s) at s.
-    pub fn rotation_rate(&self, s: f64) -> f64 {
-        match self {
-            Self::EulerBernoulli(w) => w.rotation_rate(s),
-            Self::Timoshenko(w) => w.rotation_rate(s),
-        }
-    }
-
-    /// The largest downward and upward deflections and where.
-    pub fn extremes(&self) -> DeflectionExtremes {
-        match self {
-            Self::EulerBernoulli(w) => w.extremes(),
-            Self::Timoshenko(w) => w.extremes(),
-        }
-    }
-
-    /// How to sample the wave for its extremes (m): a step that resolves its shortest wave, and the reach beyond
-    /// which it is below e⁻⁴⁰ of its size.
-    pub fn sampling(&self) -> (f64, f64) {
-        match self {
-            Self::EulerBernoulli(w) => w.sampling(),
-            Self::Timoshenko(w) => w.sampling(),
-        }
+        Ok(self.steady_state(0.0, force)?.moment(0.0))
     }
 }

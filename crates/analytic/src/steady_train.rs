@@ -3,8 +3,8 @@
 //! frame s = x − x_head (m; positive ahead of the first axle, axle i at s = −d_i):
 //! w(s) = Σ_i (P_i/P)·w_P(s + d_i).
 
-use crate::moving_beam::{MovingBeam, SteadyWave};
 use crate::reference::scan_extremes;
+use crate::{MovingBeam, SteadyWave};
 use fem_beam::DeflectionExtremes;
 use fem_beam::error::{FemError, Result};
 use fem_beam::extreme::Extreme;

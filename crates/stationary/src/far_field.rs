@@ -5,7 +5,7 @@
 //! EI r⁴ + ρA v² r² − c_f v r + k = 0,
 //! ```
 //!
-//! or the Timoshenko beam's (`analytic::moving_timoshenko`) — and only the decaying ones may appear: Re r < 0 ahead
+//! or the Timoshenko beam's (`analytic::MovingBeam`, whose κGA → ∞ case is the first) — and only the decaying ones may appear: Re r < 0 ahead
 //! of the load (s → +∞), Re r > 0 behind it. Each mode carries the rotation DOF θ = β(r) W (β = r, the slope, for
 //! Euler–Bernoulli; the cross-section's Ψ = κGA r/(κGA + D r²) W for Timoshenko, D = ρIv² − EI), so the two kept
 //! modes' amplitudes follow from an end's values U = W − W_far and θ, and with them what the end's boundary terms
@@ -189,8 +189,7 @@ mod tests {
             theory: fem_beam::BeamTheory::Timoshenko { shear_modulus: 81e9, shear_coefficient: 0.4 },
             ..Beam::default()
         };
-        let moving =
-            analytic::moving_timoshenko::MovingTimoshenko::new(&beam, &Foundation::linear(250e3, 774.0)).unwrap();
+        let moving = analytic::MovingBeam::new(&beam, &Foundation::linear(250e3, 774.0)).unwrap();
         for v in [0.0, 50.0, 200.0, 400.0] {
             let far = FarField::new(&beam, 774.0, 250e3, v).unwrap();
             let p = moving.characteristic(v);

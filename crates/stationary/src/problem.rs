@@ -117,8 +117,8 @@ impl StationaryProblem {
 
     /// The shortest length (m) the track's waves vary on at this speed: 1/|r|ₘₐₓ over the wavenumbers r of the
     /// moving-frame equation EI r⁴ + ρA v² r² − c_f v r + k = 0 ([`MovingBeam::wavenumbers`]) of the soil pressed
-    /// (k = k_c) and, on a nonlinear soil, where the rail lifts (k = k_t; on a tensionless soil the free rail's
-    /// r = ±i v√(ρA/EI)). 2.25 m for the reference track at rest (√2 β = 0.444 m⁻¹).
+    /// (k = k_c) and, on a nonlinear soil, where the rail lifts (k = k_t; on a tensionless soil the free rail's,
+    /// whose fastest modes are r ≈ ±i v√(ρA/EI)). 2.25 m for the reference track at rest (√2 β = 0.444 m⁻¹).
     pub fn shortest_length(&self) -> Result<f64> {
         let f = &self.foundation;
         let largest = |stiffness: f64| -> Result<f64> {
@@ -128,11 +128,7 @@ impl StationaryProblem {
         };
         let mut fastest = largest(f.stiffness)?;
         if self.is_nonlinear() {
-            let lifted = match f.tension_stiffness() {
-                k if k > 0.0 || self.beam.shear_stiffness().is_some() => largest(k)?,
-                _ => self.speed * (self.beam.mass_per_length() / self.beam.bending_stiffness()).sqrt(),
-            };
-            fastest = fastest.max(lifted);
+            fastest = fastest.max(largest(f.tension_stiffness())?);
         }
         Ok(1.0 / fastest)
     }

@@ -1,9 +1,9 @@
 //! The stationary wave of a Timoshenko rail (docs/theory.md §14, §16) against the residues of its own quartic
-//! (`analytic::moving_timoshenko`), an independent closed form: on a stiff soil, where shear and rotary inertia move
+//! (`analytic::MovingBeam`), an independent closed form: on a stiff soil, where shear and rotary inertia move
 //! the wave by a per cent or more from Euler–Bernoulli's, and on the reference soil's nonlinear and frictional
 //! variants, whose power balance must close.
 
-use analytic::moving_timoshenko::MovingTimoshenko;
+use analytic::MovingBeam;
 use analytic::reference::{InfiniteBeam, uic60_on_soft_soil};
 use fem_beam::{Beam, BeamTheory, DistributedFriction, Foundation, FoundationLaw};
 use stationary::{Domain, StationaryProblem, StationaryWave, solve};
@@ -45,7 +45,7 @@ fn the_linear_wave_converges_to_the_timoshenko_closed_form() {
         let errors = [0.1, 0.05].map(|element_length| {
             let p = problem(timoshenko(), 100e6, zeta, v, Domain { behind: 20.0, ahead: 20.0, element_length });
             let wave = converged(&p);
-            let closed = MovingTimoshenko::new(&p.beam, &p.foundation).unwrap().steady_state(v, 83.4e3).unwrap();
+            let closed = MovingBeam::new(&p.beam, &p.foundation).unwrap().steady_state(v, 83.4e3).unwrap();
             let peak = wave.max_downward().value;
             let error = wave.s.iter().zip(&wave.deflection).map(|(s, w)| (w - closed.deflection(*s)).abs());
             let moment = wave.moment[wave.s.iter().position(|s| *s == 0.0).unwrap()] / closed.moment(0.0) - 1.0;

@@ -120,7 +120,7 @@ fn a_train_started_from_its_steady_state_keeps_it() {
 }
 
 /// A Timoshenko rail (κ = 0.4, G = 81 GPa) started from its own steady state (the residues of its quartic,
-/// `analytic::moving_timoshenko`: W, the cross-section's Ψ and their rates −vW′, −vΨ′ at the nodes) keeps it: the
+/// `analytic::MovingBeam`: W, the cross-section's Ψ and their rates −vW′, −vΨ′ at the nodes) keeps it: the
 /// peaks 40 m on match the closed form to 0.5 %, the bound of the Euler–Bernoulli test above (0.5 m elements,
 /// absorbing zones; measured 1.7e-4 and 3.9e-4 down, 2.8e-5 and 8.3e-4 up at 100 and 200 m/s).
 #[test]
