@@ -5,6 +5,7 @@
 //! plotting area must stay white.
 
 use report::plot::{Layout, PlotSpec, render};
+use scenario::axis::{Axis, Shown};
 
 /// Numbers of an attribute `name="…"` of an SVG element.
 fn attribute(element: &str, name: &str) -> Option<String> {
@@ -118,7 +119,8 @@ pub fn assert_drawn_inside(plots: &[PlotSpec], name: &str) {
 #[test]
 fn a_curve_out_of_its_frame_is_caught() {
     // A layout whose plotting area misses the data: the checker must report the curve.
-    let mut spec = PlotSpec::new("probe", "probe", "x", "y");
+    let mut spec =
+        PlotSpec::new("probe", "probe", &Axis::new("x", "x", Shown::Si), &Axis::new("y", "deflection", Shown::Si));
     spec.series.push(report::plot::Series {
         label: Some("probe".into()),
         color: 1,
@@ -166,7 +168,12 @@ fn wheel_forces_are_drawn_a_panel_per_vehicle() {
 /// rightmost 4 px (a label running off the image paints there — the 11 px single line this replaced did).
 #[test]
 fn long_legend_labels_wrap_instead_of_running_off_the_image() {
-    let mut spec = PlotSpec::new("long-legend", "long legend", "x", "y");
+    let mut spec = PlotSpec::new(
+        "long-legend",
+        "long legend",
+        &Axis::new("x", "x", Shown::Si),
+        &Axis::new("w", "deflection", Shown::Milli),
+    );
     for (i, label) in ["wheel 1 (vehicle 1, Q₀ = 61.7 kN) over the dipped joint at 100 m", "short"].iter().enumerate()
     {
         spec.series.push(report::plot::Series {

@@ -50,13 +50,60 @@ impl Extreme {
 }
 
 /// The largest downward and upward deflections of a response (magnitudes, with where and when): a run's over its
-/// nodes and steps, a window's while the load was inside it, a steady wave's over s.
+/// nodes and steps, a window's while the load was inside it, a steady wave's over s. `T` is how each is told: an
+/// [`Extreme`] (the default), a bare magnitude (m), or a wrapper that adds what a report needs (an `Option` where it
+/// may be undefined). Every (downward, upward) pair frictrack reports is this type; in JSON it is written flat into
+/// its holder (`#[serde(flatten)]`) as `max_downward_deflection` and `max_upward_deflection`, or — through
+/// [`in_window`] — as `window_max_downward_deflection` and `window_max_upward_deflection`.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct DeflectionExtremes {
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct DeflectionExtremes<T = Extreme> {
     /// Largest downward deflection (m, magnitude), where and when.
-    pub max_downward: Extreme,
+    #[cfg_attr(feature = "serde", serde(rename = "max_downward_deflection"))]
+    pub max_downward: T,
     /// Largest upward deflection (m, magnitude; 0 if the beam never rose), where and when.
-    pub max_upward: Extreme,
+    #[cfg_attr(feature = "serde", serde(rename = "max_upward_deflection"))]
+    pub max_upward: T,
+}
+
+impl<T> DeflectionExtremes<T> {
+    /// Each of the pair told another way: `tell(max_downward)`, `tell(max_upward)`.
+    pub fn map<U>(self, mut tell: impl FnMut(T) -> U) -> DeflectionExtremes<U> {
+        DeflectionExtremes { max_downward: tell(self.max_downward), max_upward: tell(self.max_upward) }
+    }
+}
+
+/// The JSON names of a window's pair, `window_max_downward_deflection` and `window_max_upward_deflection`: a serde
+/// `with` module for a flattened [`DeflectionExtremes`] (`#[serde(flatten, with = "fem_beam::extreme::in_window")]`).
+#[cfg(feature = "serde")]
+pub mod in_window {
+    use super::DeflectionExtremes;
+    use serde::ser::SerializeMap;
+    use serde::{Deserialize, Deserializer, Serialize, Serializer};
+
+    /// The pair's two entries under their window names.
+    pub fn serialize<T: Serialize, S: Serializer>(pair: &DeflectionExtremes<T>, to: S) -> Result<S::Ok, S::Error> {
+        let mut map = to.serialize_map(Some(2))?;
+        map.serialize_entry("window_max_downward_deflection", &pair.max_downward)?;
+        map.serialize_entry("window_max_upward_deflection", &pair.max_upward)?;
+        map.end()
+    }
+
+    /// The pair read back from its window names.
+    pub fn deserialize<'de, T: Deserialize<'de>, D: Deserializer<'de>>(
+        from: D,
+    ) -> Result<DeflectionExtremes<T>, D::Error> {
+        #[derive(Deserialize)]
+        struct Window<T> {
+            window_max_downward_deflection: T,
+            window_max_upward_deflection: T,
+        }
+        let window = Window::deserialize(from)?;
+        Ok(DeflectionExtremes {
+            max_downward: window.window_max_downward_deflection,
+            max_upward: window.window_max_upward_deflection,
+        })
+    }
 }
 
 /// Neighbouring sections of a unilateral soil where the beam was above the soil's undeformed surface: in a run, at

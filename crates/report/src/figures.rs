@@ -3,6 +3,7 @@
 //! forces in kN.
 
 use crate::plot::{Mark, PlotSpec, Series, Stroke};
+use scenario::axis::{Axis, Shown};
 
 /// One configuration's curve pair: downward and upward deflection magnitudes (m) against x.
 pub struct DeflectionCurve {
@@ -18,16 +19,17 @@ pub struct DeflectionCurve {
     pub optimum: Option<(f64, f64)>,
 }
 
-/// Max downward (solid) and upward (dashed) deflection magnitudes in mm against `x_label`, one colour per curve.
+/// Max downward (solid) and upward (dashed) deflection magnitudes in mm against `x`, one colour per curve.
 pub fn deflection_figure(
     stem: &str,
     title: &str,
-    x_label: &str,
+    x: &Axis,
     curves: Vec<DeflectionCurve>,
     mark_label: &str,
 ) -> PlotSpec {
-    let mut spec = PlotSpec::new(stem, title, x_label, "max deflection magnitude (mm)");
-    let mm = |p: &[(f64, f64)]| p.iter().map(|&(x, w)| (x, w * 1e3)).collect();
+    let y = Axis::new("max deflection magnitude", "deflection", Shown::Milli);
+    let mut spec = PlotSpec::new(stem, title, x, &y);
+    let mm = |p: &[(f64, f64)]| p.iter().map(|&(x, w)| (x, w * y.factor())).collect();
     for c in curves {
         let (label, color) = (Some(c.label), c.color);
         // The refined optimum is a run of its own: the curve passes through it (drawn from the grid alone, it ran
@@ -39,12 +41,22 @@ pub fn deflection_figure(
         spec.series.push(Series { label, color, stroke: Stroke::Solid, markers: true, points: mm(&downward) });
         spec.series.push(Series { label: None, color, stroke: Stroke::Dashed, markers: true, points: mm(&c.upward) });
         if let Some((x, w)) = c.optimum {
-            spec.marks.push(Mark { color, point: (x, w * 1e3) });
+            spec.marks.push(Mark { color, point: (x, w * y.factor()) });
         }
     }
     spec.key = vec![(Stroke::Solid, "downward".into()), (Stroke::Dashed, "upward".into())];
     spec.mark_label = mark_label.into();
     spec
+}
+
+/// The speed axis of a sweep: "load speed v (m/s)".
+pub fn load_speed_axis() -> Axis {
+    Axis::new("load speed v", "speed", Shown::Si)
+}
+
+/// The axis of the energy a sweep's runs dissipated: "energy dissipated by friction and damping (kJ)".
+pub fn dissipated_energy_axis() -> Axis {
+    Axis::new("energy dissipated by friction and damping", "dissipated_energy", Shown::Kilo)
 }
 
 /// Put a refined point (a peak found between the grid's samples, a run or evaluation of its own) into the sampled
@@ -59,15 +71,8 @@ pub fn insert_refined(points: &mut Vec<(f64, f64)>, refined: (f64, f64)) {
 pub type Curves = Vec<(String, usize, Vec<(f64, f64)>)>;
 
 /// One quantity against x for several configurations, solid, with markers if asked.
-pub fn quantity_figure(
-    stem: &str,
-    title: &str,
-    x_label: &str,
-    y_label: &str,
-    curves: Curves,
-    markers: bool,
-) -> PlotSpec {
-    let mut spec = PlotSpec::new(stem, title, x_label, y_label);
+pub fn quantity_figure(stem: &str, title: &str, x: &Axis, y: &Axis, curves: Curves, markers: bool) -> PlotSpec {
+    let mut spec = PlotSpec::new(stem, title, x, y);
     for (label, color, points) in curves {
         spec.series.push(Series { label: Some(label), color, stroke: Stroke::Solid, markers, points });
     }

@@ -12,6 +12,7 @@ use crate::axis_grid::{self, GridAxis};
 pub use crate::palette::{GREY, Palette, color};
 use plotters::coord::Shift;
 use plotters::prelude::*;
+use scenario::axis::Axis;
 use scenario::error::{Result, StudyError};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
@@ -111,14 +112,14 @@ pub enum PanelY {
 }
 
 impl PlotSpec {
-    /// A figure with no curves yet.
-    pub fn new(stem: impl Into<String>, title: impl Into<String>, x_label: &str, y_label: &str) -> Self {
+    /// A figure with no curves yet, its axes labelled from the quantities they show ([`Axis`]).
+    pub fn new(stem: impl Into<String>, title: impl Into<String>, x: &Axis, y: &Axis) -> Self {
         Self {
             stem: stem.into(),
             title: title.into(),
             subtitle: String::new(),
-            x_label: x_label.into(),
-            y_label: y_label.into(),
+            x_label: x.label().into(),
+            y_label: y.label().into(),
             log_x: false,
             log_y: false,
             series: Vec::new(),

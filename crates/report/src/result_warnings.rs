@@ -34,7 +34,7 @@ pub fn result_warnings(case: &Case, summary: &RunSummary) -> Vec<Warning> {
     }
     out.extend(ripple_warning(case, summary));
     let length = case.model.mesh().length;
-    let largest = summary.extremes.max_downward_deflection.value.max(summary.extremes.max_upward_deflection.value);
+    let largest = summary.extremes.deflection.max_downward.value.max(summary.extremes.deflection.max_upward.value);
     if largest > DEFLECTION_LIMIT * length {
         out.push(Warning {
             field: "result".into(),

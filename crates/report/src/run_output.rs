@@ -12,6 +12,7 @@
 use crate::columns::{Column, header};
 use crate::figures::{Curves, quantity_figure};
 use crate::plot::{Mark, PlotSpec, Series};
+use scenario::axis::{Axis, Shown};
 use scenario::error::Result;
 use scenario::number::row;
 use scenario::quantities::unit;
@@ -259,30 +260,32 @@ pub fn run_plots(curves: &RunCurves, title: &str, load: &str, exceptions: &[(f64
         };
         curves.instants.iter().enumerate().map(curve).collect()
     };
-    let figure = |stem: &str, what: &str, x_label: &str, y_label: &str, curves: Curves| {
-        quantity_figure(stem, &format!("{title}: {what}"), x_label, y_label, curves, false)
+    let figure = |stem: &str, what: &str, x: &Axis, y: &Axis, curves: Curves| {
+        quantity_figure(stem, &format!("{title}: {what}"), x, y, curves, false)
     };
-    let (deflection, moment) = ("deflection w (mm, upward > 0)", "bending moment M (kN·m, sagging > 0)");
+    let deflection = Axis::noted("deflection w", "deflection", Shown::Milli, "upward > 0");
+    let moment = Axis::noted("bending moment M", "moment", Shown::Kilo, "sagging > 0");
+    let (w_scale, m_scale) = (deflection.factor(), moment.factor());
     let mut plots = Vec::new();
-    // Each family as a deflection figure and a moment figure: (stem prefix, x label, the two titles, the curves).
-    let mut pair = |[stem_w, stem_m]: [&str; 2], x: &str, (what_w, what_m): (&str, &str), (w, m): (Curves, Curves)| {
-        plots.push(figure(stem_w, what_w, x, deflection, w));
-        plots.push(figure(stem_m, what_m, x, moment, m));
+    // Each family as a deflection figure and a moment figure: (stem prefix, x axis, the two titles, the curves).
+    let mut pair = |[stem_w, stem_m]: [&str; 2], x: &Axis, (what_w, what_m): (&str, &str), (w, m): (Curves, Curves)| {
+        plots.push(figure(stem_w, what_w, x, &deflection, w));
+        plots.push(figure(stem_m, what_m, x, &moment, m));
     };
     if !curves.sections.is_empty() {
         pair(
             [FIGURE_STEMS[0], FIGURE_STEMS[1]],
-            &format!("{load} position x (m)"),
+            &Axis::new(format!("{load} position x"), "load_position", Shown::Si),
             ("deflection at the recorded sections", "bending moment at the recorded sections"),
-            (by_section(1, 1e3), by_section(2, 1e-3)),
+            (by_section(1, w_scale), by_section(2, m_scale)),
         );
     }
     if !curves.instants.is_empty() {
         pair(
             [FIGURE_STEMS[2], FIGURE_STEMS[3]],
-            "position along the beam x (m)",
+            &Axis::new("position along the beam x", "x", Shown::Si),
             ("deflected shape", "bending moment along the beam"),
-            (by_instant(1, 1e3), by_instant(2, 1e-3)),
+            (by_instant(1, w_scale), by_instant(2, m_scale)),
         );
         // Where the load is in each snapshot, a triangle on its curve (where it is on the beam).
         let drawn = plots.len();

@@ -3,7 +3,7 @@
 //! None (null), not a placeholder 0 at x = 0, t = 0. Deflections (m) are magnitudes, positions (m), times (s),
 //! energies (J), forces (N), accelerations (m/s²).
 
-use fem_beam::Extreme;
+use fem_beam::{DeflectionExtremes, Extreme};
 use nscd::EnergyBalance;
 use scenario::error::Result;
 use scenario::{Case, Scenario};
@@ -108,10 +108,9 @@ pub struct RunSummary {
 /// static envelope of the same loads and the dynamic amplification over it, and W̄.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ExtremesSummary {
-    /// Largest downward deflection (m, magnitude), its node and time.
-    pub max_downward_deflection: Extreme,
-    /// Largest upward deflection (m), its node and time.
-    pub max_upward_deflection: Extreme,
+    /// Largest downward and upward deflections (m, magnitudes), their nodes and times.
+    #[serde(flatten)]
+    pub deflection: DeflectionExtremes,
     /// Largest nodal acceleration, the step's mean (m/s²), its node and time; null where undefined (a Timoshenko
     /// rail: its nodal acceleration under a passing point force grows without bound under refinement).
     pub max_acceleration: Option<Extreme>,
@@ -126,10 +125,9 @@ pub struct ExtremesSummary {
     pub extremes_window: (f64, f64),
     /// The nodes [a, b] (m) the extremes are taken over; None: every node.
     pub extremes_nodes: Option<(f64, f64)>,
-    /// Largest downward deflection while the load was in the window.
-    pub window_max_downward_deflection: WindowExtreme,
-    /// Largest upward deflection while the load was in the window.
-    pub window_max_upward_deflection: WindowExtreme,
+    /// Largest downward and upward deflections while the load was in the window.
+    #[serde(flatten, with = "fem_beam::extreme::in_window")]
+    pub window_deflection: DeflectionExtremes<WindowExtreme>,
     /// W̄, the time mean of ∫|w| dx over the crossing (m²).
     pub global_norm: f64,
 }
@@ -359,8 +357,7 @@ impl ExtremesSummary {
             settings.record.extremes_nodes,
         )?;
         Ok(Self {
-            max_downward_deflection: result.deflection.max_downward,
-            max_upward_deflection: result.deflection.max_upward,
+            deflection: result.deflection,
             max_acceleration: result.max_acceleration,
             band_acceleration: result.band_acceleration.as_ref().map(|b| BandAccelerationSummary {
                 extreme: b.extreme,
@@ -375,8 +372,7 @@ impl ExtremesSummary {
             },
             extremes_window: window.load_range,
             extremes_nodes: settings.record.extremes_nodes,
-            window_max_downward_deflection: in_window(window.deflection.max_downward),
-            window_max_upward_deflection: in_window(window.deflection.max_upward),
+            window_deflection: window.deflection.map(in_window),
             global_norm: result.global_norm,
         })
     }

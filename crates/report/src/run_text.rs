@@ -290,7 +290,7 @@ fn write_extremes(f: &mut Formatter<'_>, r: &RunSummary) -> fmt::Result {
         }
         None => writeln!(f, "  whole run (includes the entry transient from rest and the exit near x = L):")?,
     }
-    let whole = [("downward", r.extremes.max_downward_deflection), ("upward", r.extremes.max_upward_deflection)];
+    let whole = [("downward", r.extremes.deflection.max_downward), ("upward", r.extremes.deflection.max_upward)];
     for (what, e) in whole {
         line(f, what, e.value, e.place(), (None, None))?;
     }
@@ -299,7 +299,7 @@ fn write_extremes(f: &mut Formatter<'_>, r: &RunSummary) -> fmt::Result {
     let nodes = if r.extremes.extremes_nodes.is_some() { "the nodes above" } else { "every node" };
     writeln!(f, "  while the {load} is at {a:.1}–{b:.1} m ({why}), over {nodes}:")?;
     let window =
-        [("downward", r.extremes.window_max_downward_deflection), ("upward", r.extremes.window_max_upward_deflection)];
+        [("downward", r.extremes.window_deflection.max_downward), ("upward", r.extremes.window_deflection.max_upward)];
     match window.iter().all(|(_, e)| e.extreme.happened().is_none()) {
         true => writeln!(f, "    none: the {load} never was in that range during the run")?,
         false => {

@@ -4,6 +4,7 @@
 //! Forces in N (compression positive), lengths in m, times in s, frequencies in Hz.
 
 use fem_beam::{BallastContact, BeamModel, Extreme, Layer, Sleepers};
+use scenario::axis::{Axis, Shown};
 use serde::Serialize;
 use track::simulation::{SleeperPeaks, SleeperResults};
 use track::{PlacedInteractions, SectionKind};
@@ -286,8 +287,8 @@ pub fn bay_plot(s: &SleepersSummary, title: &str) -> crate::plot::PlotSpec {
     let mut spec = PlotSpec::new(
         "bay",
         format!("{title}: deflection under the load over a bay (v/a = {:.1} Hz)", s.passing_frequency),
-        "load's distance from the sleeper behind it (m)",
-        "mean downward deflection under the load (mm)",
+        &Axis::new("load's distance from the sleeper behind it", "position", Shown::Si),
+        &Axis::new("mean downward deflection under the load", "deflection_under_load", Shown::Milli),
     );
     // The bins centred on a node (within half a bin): between nodes a point load's deflection is under-read by the
     // cubic element, a ripple of the mesh, not of the track.

@@ -2,6 +2,7 @@
 //! deflection is confined to a small part of the beam each instant gets a panel of its own around its load.
 
 use crate::plot::{PanelY, PlotSpec, Series};
+use scenario::axis::Axis;
 
 /// A snapshot's deflection counts as significant where it reaches this fraction of its own largest magnitude.
 const SIGNIFICANT: f64 = 0.01;
@@ -33,7 +34,10 @@ pub fn zoomed(spec: PlotSpec, loads: &[f64], half: f64) -> PlotSpec {
         .filter_map(|(i, &at)| {
             let (lo, hi) = (at - half, at + half);
             let curve = spec.series.get(i)?;
-            let mut panel = PlotSpec::new("", curve.label.clone().unwrap_or_default(), &spec.x_label, &spec.y_label);
+            let title = curve.label.clone().unwrap_or_default();
+            let mut panel =
+                PlotSpec { x_label: spec.x_label.clone(), ..PlotSpec::new("", title, &Axis::none(), &Axis::none()) };
+            panel.y_label.clone_from(&spec.y_label);
             let points: Vec<(f64, f64)> = curve.points.iter().copied().filter(inside(lo, hi)).collect();
             panel.series.push(Series { label: None, points, ..curve.clone() });
             for reference in references.iter().filter(|r| r.points.iter().all(inside(lo, hi))) {
@@ -51,6 +55,7 @@ pub fn zoomed(spec: PlotSpec, loads: &[f64], half: f64) -> PlotSpec {
 mod tests {
     use super::{zoom_half_width, zoomed};
     use crate::plot::{Mark, PanelY, PlotSpec, Series, Stroke};
+    use scenario::axis::{Axis, Shown};
 
     /// A bowl of `width` m at `at` on a 200 m beam, sampled every 0.25 m: w = −exp(−((x − at)/width)²).
     fn bowl(at: f64, width: f64) -> Vec<[f64; 3]> {
@@ -72,7 +77,8 @@ mod tests {
         let long: Vec<(f64, &[[f64; 3]])> = [50.0, 100.0].iter().zip(&wide).map(|(&a, s)| (a, s.as_slice())).collect();
         assert_eq!(zoom_half_width(&long, 200.0), None);
 
-        let mut spec = PlotSpec::new("snapshots-deflection", "shape", "x (m)", "w (mm)");
+        let (x, w) = (Axis::new("x", "x", Shown::Si), Axis::new("w", "deflection", Shown::Milli));
+        let mut spec = PlotSpec::new("snapshots-deflection", "shape", &x, &w);
         for (i, (at, s)) in instants.iter().enumerate() {
             let points = s.iter().map(|p| (p[0], p[1])).collect();
             let label = Some(format!("load at {at} m"));

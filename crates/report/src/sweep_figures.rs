@@ -3,20 +3,20 @@
 //! acceleration, the dissipated energy when there is friction or damping, and with vehicles the wheel forces and
 //! the bodies' accelerations.
 
-use crate::figures::{Curves, DeflectionCurve, deflection_figure, quantity_figure};
+use crate::figures::{
+    Curves, DeflectionCurve, deflection_figure, dissipated_energy_axis, load_speed_axis, quantity_figure,
+};
 use crate::plot::PlotSpec;
 use crate::tables::Table;
-use fem_beam::Extreme;
+use fem_beam::{DeflectionExtremes, Extreme};
 use nscd::EnergyBalance;
 use runner::{CSV_COLUMNS, CriticalSpeed, SweepPoint, VEHICLE_CSV_COLUMNS, VehicleColumns};
 use scenario::Scenario;
+use scenario::axis::{Axis, Shown};
 use scenario::error::Result;
 
 /// The figures' names after the sweep's stem: `{stem}-{suffix}` (each only when it has something to draw).
 pub const FIGURE_SUFFIXES: [&str; 5] = ["deflection", "acceleration", "energy", "wheel-forces", "body-acceleration"];
-
-/// The x-axis of every sweep figure.
-const SPEED_AXIS: &str = "load speed v (m/s)";
 
 /// What a sweep figure says of its case under the title, so that it reads alone in a report: the load, the soil
 /// with its damping, the friction — "F = 83.4 kN; k_f = 250 kN/m², undamped; friction: 31 devices × 50 kN".
@@ -74,16 +74,18 @@ pub fn sweep_plots(
         plots.push(sheet.quantity(
             "acceleration",
             "max acceleration",
-            "max vertical acceleration (m/s²)",
+            &Axis::new("max vertical acceleration", "max_acceleration", Shown::Si),
             accelerations,
         ));
     }
     if points.iter().any(|p| p.energy.dissipated > 0.0) {
+        let kilojoules = dissipated_energy_axis();
+        let kj = kilojoules.factor();
         plots.push(sheet.quantity(
             "energy",
             "dissipated energy",
-            "energy dissipated by friction and damping (kJ)",
-            vec![("dissipated".into(), 0, sheet.series(&|p| p.energy.dissipated / 1e3))],
+            &kilojoules,
+            vec![("dissipated".into(), 0, sheet.series(&|p| p.energy.dissipated * kj))],
         ));
     }
     if points.iter().all(|p| p.vehicles.is_some()) && !points.is_empty() {
@@ -110,26 +112,26 @@ impl Sheet<'_> {
     /// The deflections over speed, whole run and load in the window, with the refined critical speed's runs drawn
     /// on the curve so that the refined peak lies on it.
     fn deflection(&self, critical: Option<&CriticalSpeed>) -> PlotSpec {
-        let mut downward = self.series(&|p| p.max_downward_deflection.value);
+        let mut downward = self.series(&|p| p.deflection.max_downward.value);
         downward.extend(critical.iter().flat_map(|c| c.evaluations.iter().copied()));
         downward.sort_by(|a, b| a.0.total_cmp(&b.0));
         let mut deflection = deflection_figure(
             &format!("{}-deflection", self.stem),
             &format!("{}: max deflection vs speed", self.title),
-            SPEED_AXIS,
+            &load_speed_axis(),
             vec![
                 DeflectionCurve {
                     label: "whole run".into(),
                     color: 0,
                     downward,
-                    upward: self.series(&|p| p.max_upward_deflection.value),
+                    upward: self.series(&|p| p.deflection.max_upward.value),
                     optimum: critical.filter(|c| c.is_interior()).map(|c| (c.speed, c.max_downward_deflection)),
                 },
                 DeflectionCurve {
                     label: "load in the window".into(),
                     color: 1,
-                    downward: self.series(&|p| p.window_max_downward_deflection.value),
-                    upward: self.series(&|p| p.window_max_upward_deflection.value),
+                    downward: self.series(&|p| p.window_deflection.max_downward.value),
+                    upward: self.series(&|p| p.window_deflection.max_upward.value),
                     optimum: None,
                 },
             ],
@@ -146,9 +148,10 @@ impl Sheet<'_> {
     }
 
     /// A quantity over speed, in figure `<stem>-<name>`.
-    fn quantity(&self, name: &str, what: &str, y: &str, curves: Curves) -> PlotSpec {
+    fn quantity(&self, name: &str, what: &str, y: &Axis, curves: Curves) -> PlotSpec {
         let title = format!("{}: {what} vs speed", self.title);
-        let mut spec = quantity_figure(&format!("{}-{name}", self.stem), &title, SPEED_AXIS, y, curves, self.markers);
+        let stem = format!("{}-{name}", self.stem);
+        let mut spec = quantity_figure(&stem, &title, &load_speed_axis(), y, curves, self.markers);
         if let Some(c) = &self.case {
             spec.subtitle = c.clone();
         }
@@ -157,24 +160,31 @@ impl Sheet<'_> {
 
     /// The vehicles' wheel forces and body accelerations over speed.
     fn vehicles(&self) -> [PlotSpec; 2] {
-        let wheel = |f: fn(&VehicleColumns) -> f64| self.series(&|p| p.vehicles.map_or(f64::NAN, |v| f(&v)));
+        let wheel =
+            |f: &dyn Fn(&VehicleColumns) -> f64| self.series(&|p: &SweepPoint| p.vehicles.map_or(f64::NAN, |v| f(&v)));
+        let kilonewtons = Axis::noted("contact force Q", "max_wheel_force", Shown::Kilo, "compressive > 0");
+        let kn = kilonewtons.factor();
         [
             self.quantity(
                 "wheel-forces",
                 "wheel–rail contact forces",
-                "contact force Q (kN, compressive > 0)",
+                &kilonewtons,
                 vec![
-                    ("largest of any wheel".into(), 0, wheel(|v| v.max_wheel_force / 1e3)),
-                    ("smallest of any wheel (0: contact lost)".into(), 1, wheel(|v| v.min_wheel_force / 1e3)),
+                    ("largest of any wheel".into(), 0, wheel(&|v: &VehicleColumns| v.max_wheel_force * kn)),
+                    (
+                        "smallest of any wheel (0: contact lost)".into(),
+                        1,
+                        wheel(&|v: &VehicleColumns| v.min_wheel_force * kn),
+                    ),
                 ],
             ),
             self.quantity(
                 "body-acceleration",
                 "body accelerations",
-                "body acceleration (m/s²)",
+                &Axis::new("body acceleration", "max_body_acceleration", Shown::Si),
                 vec![
-                    ("largest of any body".into(), 0, wheel(|v| v.max_body_acceleration)),
-                    ("largest RMS".into(), 1, wheel(|v| v.rms_body_acceleration)),
+                    ("largest of any body".into(), 0, wheel(&|v: &VehicleColumns| v.max_body_acceleration)),
+                    ("largest RMS".into(), 1, wheel(&|v: &VehicleColumns| v.rms_body_acceleration)),
                 ],
             ),
         ]
@@ -209,10 +219,14 @@ pub fn read_sweep_csv(text: &str, source: &str) -> Result<Vec<SweepPoint>> {
                 |value: f64, position: f64, time: f64| Extreme { value, position: place(position), time: place(time) };
             SweepPoint {
                 speed: v[0],
-                max_downward_deflection: extreme(v[1], v[5], v[6]),
-                max_upward_deflection: extreme(v[2], f64::NAN, f64::NAN),
-                window_max_downward_deflection: extreme(v[10], v[11], v[12]),
-                window_max_upward_deflection: extreme(v[13], v[14], v[15]),
+                deflection: DeflectionExtremes {
+                    max_downward: extreme(v[1], v[5], v[6]),
+                    max_upward: extreme(v[2], f64::NAN, f64::NAN),
+                },
+                window_deflection: DeflectionExtremes {
+                    max_downward: extreme(v[10], v[11], v[12]),
+                    max_upward: extreme(v[13], v[14], v[15]),
+                },
                 max_acceleration: place(v[16]).map(|a| extreme(a, f64::NAN, f64::NAN)),
                 band_acceleration: band.and_then(|c| place(r[c])).map(|a| extreme(a, f64::NAN, f64::NAN)),
                 global_norm: v[4],
@@ -245,7 +259,7 @@ pub fn read_sweep_csv(text: &str, source: &str) -> Result<Vec<SweepPoint>> {
 #[cfg(test)]
 mod tests {
     use super::read_sweep_csv;
-    use fem_beam::Extreme;
+    use fem_beam::{DeflectionExtremes, Extreme};
     use nscd::EnergyBalance;
     use runner::{SweepPoint, write_csv};
 
@@ -254,10 +268,14 @@ mod tests {
     fn a_sweep_csv_reads_back() {
         let point = |speed: f64| SweepPoint {
             speed,
-            max_downward_deflection: Extreme::at(0.1 + speed * 1e-3, 100.0, 0.5),
-            max_upward_deflection: Extreme { value: 0.05, position: None, time: None },
-            window_max_downward_deflection: Extreme::at(0.09, 99.0, 0.45),
-            window_max_upward_deflection: Extreme::at(0.04, 98.0, 0.44),
+            deflection: DeflectionExtremes {
+                max_downward: Extreme::at(0.1 + speed * 1e-3, 100.0, 0.5),
+                max_upward: Extreme { value: 0.05, position: None, time: None },
+            },
+            window_deflection: DeflectionExtremes {
+                max_downward: Extreme::at(0.09, 99.0, 0.45),
+                max_upward: Extreme::at(0.04, 98.0, 0.44),
+            },
             max_acceleration: Some(Extreme { value: 12.0, position: None, time: None }),
             band_acceleration: Some(Extreme { value: 3.0 + speed * 1e-2, position: None, time: None }),
             global_norm: 0.3,
@@ -280,13 +298,14 @@ mod tests {
         let same = |a: &[SweepPoint], b: &[SweepPoint]| assert_eq!(format!("{a:?}"), format!("{b:?}"));
         same(&read_sweep_csv(&text, "sweep.csv").unwrap(), &points);
         // An extreme that never happened (no upward deflection in the window) has no place nor time: empty fields.
-        let still = SweepPoint { window_max_upward_deflection: Extreme::default(), ..point(40.0) };
+        let mut still = point(40.0);
+        still.window_deflection.max_upward = Extreme::default();
         let mut csv = Vec::new();
         write_csv(std::slice::from_ref(&still), &mut csv).unwrap();
         let text = String::from_utf8(csv).unwrap();
         assert!(text.lines().nth(1).unwrap().contains(",0,,,"), "{text}");
         let back = &read_sweep_csv(&text, "sweep.csv").unwrap()[0];
-        assert_eq!(back.window_max_upward_deflection, Extreme::default());
+        assert_eq!(back.window_deflection.max_upward, Extreme::default());
         // A file of the earlier format (`max_downward_position`, …) reads back the same.
         let mut csv = Vec::new();
         write_csv(&points, &mut csv).unwrap();

@@ -4,6 +4,7 @@
 use crate::plot::{PlotSpec, Series, Stroke};
 use irregularity::periodogram::{log_bins, periodogram};
 use irregularity::{Profile, RandomProfile, RandomSettings};
+use scenario::axis::{Axis, Shown};
 use scenario::error::{Result, invalid};
 use scenario::number::row;
 use serde::Serialize;
@@ -166,7 +167,8 @@ impl ProfileSample {
     pub fn figures(&self, stem: &str) -> Vec<PlotSpec> {
         let s = &self.request.settings;
         let name = s.spectrum.name();
-        let mut profile = PlotSpec::new(stem, format!("Rail profile, {name} spectrum"), "x (m)", "r (mm)");
+        let (x, r) = (Axis::new("x", "x", Shown::Si), Axis::new("r", "irregularity", Shown::Milli));
+        let mut profile = PlotSpec::new(stem, format!("Rail profile, {name} spectrum"), &x, &r);
         profile.subtitle = format!(
             "wavelengths {}–{} m, seed {}, σ = {:.3} mm (target {:.3} mm)",
             s.band.0,
@@ -180,13 +182,13 @@ impl ProfileSample {
             color: 4,
             stroke: Stroke::Solid,
             markers: false,
-            points: self.samples.iter().map(|&(x, r)| (x, 1e3 * r)).collect(),
+            points: self.samples.iter().map(|&(x, value)| (x, r.factor() * value)).collect(),
         });
         let mut psd = PlotSpec::new(
             format!("{stem}-psd"),
             format!("Rail profile PSD, {name} spectrum"),
-            "wavenumber Ω = 2π/λ (rad/m)",
-            "S (m²/(rad/m))",
+            &Axis::new("wavenumber Ω = 2π/λ", "wavenumber", Shown::Si),
+            &Axis::new("S", "psd", Shown::Si),
         );
         psd.log_x = true;
         psd.log_y = true;

@@ -9,6 +9,7 @@
 use crate::figures::{Curves, quantity_figure};
 use crate::mesh_ripple::element_ripple;
 use crate::plot::PlotSpec;
+use scenario::axis::{Axis, Shown};
 use scenario::number::row;
 use scenario::quantities::unit;
 use serde::Serialize;
@@ -262,12 +263,12 @@ pub fn wheel_plot(results: &VehicleResults, title: &str, range: (f64, f64)) -> P
             (Some(a), _) => format!(", wheel {}", a + 1),
             _ => String::new(),
         };
-        let y_label = if groups.len() <= 1 { "contact force Q (kN)" } else { "Q (kN)" };
+        let caption = if groups.len() <= 1 { "contact force Q" } else { "Q" };
         quantity_figure(
             WHEEL_FIGURE,
             &format!("vehicle {}{name}{which}", vehicle + 1),
-            "wheel position x (m)",
-            y_label,
+            &Axis::new("wheel position x", "position", Shown::Si),
+            &Axis::new(caption, "force", Shown::Kilo),
             curves,
             false,
         )
@@ -283,7 +284,7 @@ pub fn wheel_plot(results: &VehicleResults, title: &str, range: (f64, f64)) -> P
     let mut spec = match groups.as_slice() {
         [one] => panel(one),
         _ => {
-            let mut spec = PlotSpec::new(WHEEL_FIGURE, "", "", "");
+            let mut spec = PlotSpec::new(WHEEL_FIGURE, "", &Axis::none(), &Axis::none());
             spec.panels = groups.iter().map(panel).collect();
             spec
         }

@@ -76,7 +76,7 @@ impl From<RefinedPeak> for CriticalSpeed {
             speed: peak.speed,
             max_downward_deflection: peak.value,
             sweep_maximum: peak.sweep_maximum,
-            evaluations: peak.evaluations.iter().map(|p| (p.speed, p.max_downward_deflection.value)).collect(),
+            evaluations: peak.evaluations.iter().map(|p| (p.speed, p.deflection.max_downward.value)).collect(),
         }
     }
 }

@@ -39,7 +39,7 @@ pub fn optimal_device_force(
     }
     let forces = log_spaced(lower, upper, scan);
     let values = runner.map(&forces, |&force| {
-        Ok(runner.point(&with_device_force(scenario, force).build()?, speed)?.max_downward_deflection.value)
+        Ok(runner.point(&with_device_force(scenario, force).build()?, speed)?.deflection.max_downward.value)
     })?;
     let mut explored: Vec<(f64, f64)> = forces.iter().copied().zip(values.iter().copied()).collect();
     let mut refined = refine_from_scan(scenario, speed, &forces, &values, tolerance, runner)?;
@@ -94,7 +94,7 @@ pub fn refine_device_force(
     let mut explored = Vec::new();
     let mut f = |log_force: f64| -> Result<f64> {
         let force = log_force.exp();
-        let w = runner.point(&with_device_force(scenario, force).build()?, speed)?.max_downward_deflection.value;
+        let w = runner.point(&with_device_force(scenario, force).build()?, speed)?.deflection.max_downward.value;
         explored.push((force, w));
         Ok(-w)
     };

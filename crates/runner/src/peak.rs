@@ -40,7 +40,7 @@ impl Metric {
     /// Its value at `point`.
     pub fn of(self, point: &SweepPoint) -> f64 {
         match self {
-            Metric::MaxDownwardDeflection => point.max_downward_deflection.value,
+            Metric::MaxDownwardDeflection => point.deflection.max_downward.value,
             Metric::DeckAcceleration => point.deck_acceleration(),
         }
     }

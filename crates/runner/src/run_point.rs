@@ -22,10 +22,8 @@ pub(crate) fn point_until(case: &Case, speed: f64, stop: Option<&AtomicBool>) ->
     let window = r.window.unwrap_or_default();
     Ok(SweepPoint {
         speed,
-        max_downward_deflection: r.deflection.max_downward,
-        max_upward_deflection: r.deflection.max_upward,
-        window_max_downward_deflection: window.deflection.max_downward,
-        window_max_upward_deflection: window.deflection.max_upward,
+        deflection: r.deflection,
+        window_deflection: window.deflection,
         max_acceleration: r.max_acceleration,
         band_acceleration: r.band_acceleration.as_ref().map(|b| b.extreme),
         global_norm: r.global_norm,

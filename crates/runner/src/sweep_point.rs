@@ -2,25 +2,23 @@
 //! columns where it has them), or why it failed.
 
 use crate::sleeper_columns::SleeperColumns;
-use fem_beam::Extreme;
+use fem_beam::{DeflectionExtremes, Extreme};
 use nscd::EnergyBalance;
 use scenario::quantities::unit;
 use serde::{Deserialize, Serialize};
 
 /// What one run of a sweep reports: extremes as [`Extreme`]s (magnitudes with node and time), the energy balance.
+/// A journal of another version's points is refused by its format line ([`crate::journal`]), not by their fields.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
-#[serde(deny_unknown_fields)]
 pub struct SweepPoint {
     /// Load speed (m/s).
     pub speed: f64,
-    /// Max downward deflection over nodes and steps (m, magnitude), its node and time.
-    pub max_downward_deflection: Extreme,
-    /// Max upward deflection (m, magnitude).
-    pub max_upward_deflection: Extreme,
-    /// Max downward deflection while the load was inside the extremes window (m, magnitude).
-    pub window_max_downward_deflection: Extreme,
-    /// Max upward deflection while the load was inside the extremes window (m, magnitude).
-    pub window_max_upward_deflection: Extreme,
+    /// Max downward and upward deflections over nodes and steps (m, magnitudes), their nodes and times.
+    #[serde(flatten)]
+    pub deflection: DeflectionExtremes,
+    /// The same while the load was inside the extremes window.
+    #[serde(flatten, with = "fem_beam::extreme::in_window")]
+    pub window_deflection: DeflectionExtremes,
     /// Largest vertical acceleration over nodes and steps (m/s², magnitude); None where undefined (a Timoshenko rail:
     /// [`track::RunResult::max_acceleration`]).
     #[serde(default)]
@@ -127,4 +125,45 @@ pub fn finished(rows: &[SweepRow]) -> Vec<SweepPoint> {
 /// The failed runs of sweep rows, in order.
 pub fn failures(rows: &[SweepRow]) -> Vec<FailedRun> {
     rows.iter().filter_map(|r| r.as_ref().err().cloned()).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The pairs are written flat under the names every JSON file and Python use — `max_downward_deflection`,
+    /// `max_upward_deflection` and their `window_` twins — and a point reads back from them to the bit (a journal);
+    /// a point missing one of them is refused.
+    #[test]
+    fn a_point_keeps_its_flat_names_and_reads_back() {
+        let point = SweepPoint {
+            speed: 50.0,
+            deflection: DeflectionExtremes {
+                max_downward: Extreme::at(0.01, 100.0, 0.5),
+                max_upward: Extreme::default(),
+            },
+            window_deflection: DeflectionExtremes {
+                max_downward: Extreme::at(0.009, 99.0, 0.45),
+                max_upward: Extreme::at(1e-4, 98.0, 0.44),
+            },
+            max_acceleration: Some(Extreme::at(3.0, 101.0, 0.6)),
+            ..SweepPoint::default()
+        };
+        let json = serde_json::to_value(&point).unwrap();
+        let keys: Vec<&str> = json.as_object().unwrap().keys().map(String::as_str).collect();
+        for name in [
+            "max_downward_deflection",
+            "max_upward_deflection",
+            "window_max_downward_deflection",
+            "window_max_upward_deflection",
+        ] {
+            assert!(keys.contains(&name), "{name} not in {keys:?}");
+        }
+        assert!(!keys.iter().any(|k| k.contains("window_deflection") || *k == "deflection"), "{keys:?}");
+        assert_eq!(json["window_max_upward_deflection"]["position"], 98.0);
+        assert_eq!(serde_json::from_value::<SweepPoint>(json.clone()).unwrap(), point);
+        let mut partial = json;
+        partial.as_object_mut().unwrap().remove("window_max_upward_deflection");
+        assert!(serde_json::from_value::<SweepPoint>(partial).is_err());
+    }
 }

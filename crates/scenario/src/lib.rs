@@ -10,13 +10,14 @@
 //! - `parse`: TOML errors with file, line, column, the key's path and a "did you mean".
 //! - [`overrides`]: the one table of the command-line flags and Python keywords that override a scenario's values;
 //!   [`units`]: speeds in m/s or km/h; [`quantities`]: every output quantity with its SI unit, the one list every
-//!   table's columns take their units from.
+//!   table's columns take their units from, and every figure's axis its label ([`axis`]).
 //! - [`diagnostics`] and [`plausibility`]: refusals and warnings about a scenario before any run.
 //! - [`ground`]: `[ground]`, the layered ground under the track and its checks.
 //! - [`speeds`] and [`trains`]: the speed scale of a case (v_cr, default sweeps) and the train catalogue.
 //! - [`error`]: the error type of the crates above this one, every message naming the field, its value and what is
 //!   allowed; [`number`]: numbers as result files and messages print them.
 
+pub mod axis;
 mod build;
 pub mod contact;
 mod deck;

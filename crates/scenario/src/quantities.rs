@@ -44,6 +44,7 @@ pub const QUANTITIES: &[(&str, &str)] = &[
     ("dynamic_amplification", "1"),
     ("phi_w", "1"),
     ("phi_m", "1"),
+    ("wave_change", "1"),
     // Forces and energy.
     ("force", "N"),
     ("force_per_length", "N/m"),
@@ -57,6 +58,7 @@ pub const QUANTITIES: &[(&str, &str)] = &[
     ("energy_residual", "J"),
     ("friction_power", "W"),
     ("power_imbalance", "1"),
+    ("mobilised_friction", "1"),
     // The track's receptance.
     ("real", "m/N"),
     ("imaginary", "m/N"),
@@ -71,6 +73,7 @@ pub const QUANTITIES: &[(&str, &str)] = &[
     ("wavenumber", "rad/m"),
     ("stiffness_real", "N/m²"),
     ("stiffness_imaginary", "N/m²"),
+    ("equivalent_stiffness", "N/m²"),
     ("static_strip_stiffness", "N/m²"),
     ("static_deflection", "m"),
     ("critical_speed", "m/s"),
@@ -93,6 +96,9 @@ pub const QUANTITIES: &[(&str, &str)] = &[
     ("measured_max_upward", "m"),
     ("computed_max_downward", "m"),
     ("computed_max_upward", "m"),
+    // The rail's profile.
+    ("irregularity", "m"),
+    ("psd", "m²/(rad/m)"),
     // Vehicles.
     ("vehicle", "1"),
     ("wheel", "1"),

@@ -4,7 +4,7 @@
 
 use analytic::moving_beam::MovingBeam;
 use fem_beam::DeflectionExtremes;
-use fem_beam::{Extreme, Foundation, Train};
+use fem_beam::{Foundation, Train};
 use scenario::Scenario;
 use scenario::error::{Result, invalid};
 use serde::Serialize;
@@ -14,11 +14,10 @@ use serde::Serialize;
 pub struct SteadyPoint {
     /// Load speed v (m/s).
     pub speed: f64,
-    /// Largest downward deflection (m, magnitude) and where, in the moving frame s (m; s = x − vt for one load,
-    /// x − x_head for a train).
-    pub max_downward_deflection: Extreme,
-    /// Largest upward deflection (m) and where.
-    pub max_upward_deflection: Extreme,
+    /// Largest downward deflection (m, magnitude) and largest upward one (m), each where in the moving frame s (m;
+    /// s = x − vt for one load, x − x_head for a train).
+    #[serde(flatten)]
+    pub deflection: DeflectionExtremes,
     /// Downward deflection over the static one w₀.
     pub amplification_downward: f64,
     /// Upward deflection over w₀.
@@ -93,8 +92,7 @@ impl SteadyResponse {
                 let e = extremes(v)?;
                 Ok(SteadyPoint {
                     speed: v,
-                    max_downward_deflection: e.max_downward,
-                    max_upward_deflection: e.max_upward,
+                    deflection: e,
                     amplification_downward: e.max_downward.value / w0,
                     amplification_upward: e.max_upward.value / w0,
                 })

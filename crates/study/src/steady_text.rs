@@ -53,10 +53,10 @@ impl Output for SteadyReport<'_> {
                 f,
                 "  {:>10.2}  {:>13.3}  {:>8.2}  {:>11.3}  {:>8.2}  {:>8.3}  {:>6.3}",
                 p.speed,
-                p.max_downward_deflection.value * 1e3,
-                p.max_downward_deflection.position.unwrap_or(f64::NAN),
-                p.max_upward_deflection.value * 1e3,
-                p.max_upward_deflection.position.unwrap_or(f64::NAN),
+                p.deflection.max_downward.value * 1e3,
+                p.deflection.max_downward.position.unwrap_or(f64::NAN),
+                p.deflection.max_upward.value * 1e3,
+                p.deflection.max_upward.position.unwrap_or(f64::NAN),
                 p.amplification_downward,
                 p.amplification_upward
             )?;

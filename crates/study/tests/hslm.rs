@@ -164,8 +164,8 @@ fn the_default_study_finds_the_peaks_of_a_fine_search() {
             if p.deck_acceleration() > acceleration.0 {
                 acceleration = (p.deck_acceleration(), p.speed, k);
             }
-            if p.max_downward_deflection.value > deflection.0 {
-                deflection = (p.max_downward_deflection.value, p.speed, k);
+            if p.deflection.max_downward.value > deflection.0 {
+                deflection = (p.deflection.max_downward.value, p.speed, k);
             }
         }
     }

@@ -3,6 +3,7 @@
 
 use crate::co_moving::output::{CoMovingSummary, STATIONARY_CHANGE};
 use report::plot::{PlotSpec, Series, Stroke};
+use scenario::axis::{Axis, Shown};
 use track::co_moving::CoMovingResult;
 
 /// The figures of a co-moving run: the wave in the frame at the end, and its change per window length travelled
@@ -29,15 +30,20 @@ pub fn figures(summary: &CoMovingSummary, result: &CoMovingResult) -> Vec<PlotSp
         markers: false,
         points,
     };
-    let mut wave = PlotSpec::new("co-moving-wave", title, "s = x − x_load (m)", "w (mm)");
+    let mut wave = PlotSpec::new(
+        "co-moving-wave",
+        title,
+        &Axis::new("s = x − x_load", "s", Shown::Si),
+        &Axis::new("w", "deflection", Shown::Milli),
+    );
     wave.subtitle = format!("{subtitle}; the wave in the frame at the end");
     wave.series.push(line("W(s)", result.wave.iter().map(|(s, w)| (*s, w * 1e3)).collect()));
-    let y = "max |ΔW| per window length / peak";
+    let y = Axis::new("max |ΔW| per window length / peak", "wave_change", Shown::Si);
     let mut change = PlotSpec::new(
         "co-moving-convergence",
         format!("{title}: approach to the stationary wave"),
-        "track travelled (m)",
-        y,
+        &Axis::new("track travelled", "position", Shown::Si),
+        &y,
     );
     change.subtitle = subtitle;
     change.log_y = true;

@@ -4,7 +4,7 @@
 //! (J).
 
 use analytic::MovingBeam;
-use fem_beam::{AbsorbingZones, BeamModel, Extreme, Foundation, Mesh, Support, Supports};
+use fem_beam::{AbsorbingZones, BeamModel, DeflectionExtremes, Extreme, Foundation, Mesh, Support, Supports};
 use nscd::EnergyBalance;
 use scenario::error::{Result, invalid};
 use scenario::quantities::unit;
@@ -42,11 +42,10 @@ pub struct CoMovingSummary {
     pub steps: usize,
     /// Shifts of the window.
     pub shifts: usize,
-    /// Largest downward deflection between the absorbing zones over the run (m, magnitude), where on the track (m
-    /// from where the window started) and when (s).
-    pub max_downward_deflection: Extreme,
-    /// Largest upward deflection (m), where and when.
-    pub max_upward_deflection: Extreme,
+    /// Largest downward and upward deflections between the absorbing zones over the run (m, magnitudes), where on
+    /// the track (m from where the window started) and when (s).
+    #[serde(flatten)]
+    pub deflection: DeflectionExtremes,
     /// The wave in the frame at the end: its largest downward deflection (m) and where (s, m).
     pub wave_max_downward_deflection: Extreme,
     /// After each window length: (distance travelled m, max change of the wave / its peak).
@@ -186,8 +185,7 @@ pub fn run(scenario: &Scenario, section: &CoMovingSection) -> Result<(CoMovingSu
         element_length: model.mesh().element_length(),
         steps: result.steps,
         shifts: result.shifts,
-        max_downward_deflection: result.deflection.max_downward,
-        max_upward_deflection: result.deflection.max_upward,
+        deflection: result.deflection,
         wave_max_downward_deflection: wave_peak,
         changes: result.changes.clone(),
         energy: result.energy.balance(),

@@ -35,8 +35,8 @@ impl Output for CoMovingSummary {
         writeln!(
             f,
             "  over the run between the zones: max downward {:.3} mm, max upward {:.3} mm",
-            s.max_downward_deflection.value * 1e3,
-            s.max_upward_deflection.value * 1e3
+            s.deflection.max_downward.value * 1e3,
+            s.deflection.max_upward.value * 1e3
         )?;
         if let (Some(&(distance, change)), Some(settling)) = (s.changes.last(), s.settling()) {
             let first = s.changes.first().map_or(change, |c| c.1);

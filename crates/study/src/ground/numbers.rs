@@ -222,7 +222,7 @@ fn speed_curve(
         true => Err(StudyError::Interrupted),
         false => point(grounded, v, force),
     })?;
-    let mut evaluate = |v: f64| point(grounded, v, force).map(|p| p.max_downward_deflection);
+    let mut evaluate = |v: f64| point(grounded, v, force).map(|p| p.deflection.max_downward);
     let critical = critical_speed(&curve, &mut evaluate)?;
     Ok((curve, critical))
 }

@@ -13,10 +13,10 @@ use serde::Serialize;
 pub struct SpeedPoint {
     /// v (m/s).
     pub speed: f64,
-    /// The largest downward deflection (m, positive down).
-    pub max_downward_deflection: f64,
-    /// The largest upward deflection (m), the wake behind the load above the ground's waves.
-    pub max_upward_deflection: f64,
+    /// The largest downward deflection (m, positive down) and the largest upward one (m), the wake behind the load
+    /// above the ground's waves.
+    #[serde(flatten)]
+    pub deflection: DeflectionExtremes<f64>,
 }
 
 /// Where along the beam the extremes are sought: from `BEHIND` m behind the load to `AHEAD` m ahead, every `STEP`.
@@ -34,11 +34,7 @@ pub fn extremes(spectrum: &MovingSpectrum, speed: f64, force: f64) -> SpeedPoint
         .map(|s| (s, spectrum.deflection(s) * force))
         .collect();
     let extremes = refined_extremes(&samples, &|s| spectrum.deflection(s) * force);
-    SpeedPoint {
-        speed,
-        max_downward_deflection: extremes.max_downward.value,
-        max_upward_deflection: extremes.max_upward.value,
-    }
+    SpeedPoint { speed, deflection: extremes.map(|e| e.value) }
 }
 
 /// The largest downward and upward deflections (magnitudes, m; the upward one 0 where the wave never rises) of the
@@ -70,9 +66,9 @@ pub fn critical_speed(
     evaluate: &mut dyn FnMut(f64) -> Result<f64>,
 ) -> Result<Option<(f64, f64)>> {
     let best = (0..points.len())
-        .max_by(|&i, &j| points[i].max_downward_deflection.total_cmp(&points[j].max_downward_deflection));
+        .max_by(|&i, &j| points[i].deflection.max_downward.total_cmp(&points[j].deflection.max_downward));
     let Some(i) = best.filter(|&i| i > 0 && i + 1 < points.len()) else { return Ok(None) };
     let bracket = (points[i - 1].speed, points[i + 1].speed);
-    let sample = (points[i].speed, points[i].max_downward_deflection);
+    let sample = (points[i].speed, points[i].deflection.max_downward);
     refine_peak(evaluate, bracket, sample, SPEED_TOLERANCE).map(Some)
 }

@@ -8,6 +8,7 @@ use crate::ground::numbers::beam_phase_velocity;
 use report::columns::{Column, ColumnMeta, header, listed_once, units_line};
 use report::output::{Output, pretty};
 use report::plot::{Mark, PlotSpec, Series, Stroke};
+use scenario::axis::{Axis, Shown};
 use scenario::number::row;
 use scenario::quantities::unit;
 use std::fmt::{self, Formatter};
@@ -123,7 +124,7 @@ impl GroundStudy {
         write_atomically(&folder.join("dispersion.csv"), self.dispersion_csv().as_bytes())?;
         write_atomically(&folder.join("modes.csv"), self.modes_csv().as_bytes())?;
         let speeds =
-            table(&SPEED_COLUMNS, &self.speeds, |p| vec![p.speed, p.max_downward_deflection, p.max_upward_deflection]);
+            table(&SPEED_COLUMNS, &self.speeds, |p| vec![p.speed, p.deflection.max_downward, p.deflection.max_upward]);
         write_atomically(&folder.join("speeds.csv"), speeds.as_bytes())?;
         let stiffness = table(&STIFFNESS_COLUMNS, &self.equivalent_stiffness, |p| {
             vec![p.speed, p.wavenumber, p.frequency, p.stiffness_real, p.stiffness_imaginary]
@@ -163,8 +164,8 @@ impl GroundStudy {
         let mut figure = PlotSpec::new(
             "ground-dispersion",
             self.heading("Dispersion of the ground and the track"),
-            "frequency f (Hz)",
-            "phase velocity c (m/s)",
+            &Axis::new("frequency f", "frequency", Shown::Si),
+            &Axis::new("phase velocity c", "phase_velocity", Shown::Si),
         );
         figure.subtitle = self.subtitle();
         let fundamental = self.dispersion.iter().map(|p| (p.frequency, p.phase_velocity)).collect();
@@ -244,8 +245,8 @@ impl GroundStudy {
         let mut figure = PlotSpec::new(
             "ground-speeds",
             self.heading("Steady deflection over speed, on the ground"),
-            "speed v (m/s)",
-            "deflection (mm)",
+            &Axis::new("speed v", "speed", Shown::Si),
+            &Axis::new("deflection", "deflection", Shown::Milli),
         );
         figure.subtitle = format!("one force of {:.0} kN; {}", self.force / 1e3, self.subtitle());
         let curve = |label: &str, color, values: Vec<(f64, f64)>| Series {
@@ -255,8 +256,8 @@ impl GroundStudy {
             markers: true,
             points: values,
         };
-        let down: Vec<(f64, f64)> = self.speeds.iter().map(|p| (p.speed, p.max_downward_deflection * 1e3)).collect();
-        let up: Vec<(f64, f64)> = self.speeds.iter().map(|p| (p.speed, p.max_upward_deflection * 1e3)).collect();
+        let down: Vec<(f64, f64)> = self.speeds.iter().map(|p| (p.speed, p.deflection.max_downward * 1e3)).collect();
+        let up: Vec<(f64, f64)> = self.speeds.iter().map(|p| (p.speed, p.deflection.max_upward * 1e3)).collect();
         let top = down.iter().map(|p| p.1).fold(0.0, f64::max);
         figure.series.push(curve("largest downward deflection", 1, down));
         figure.series.push(curve("largest upward deflection (the wake)", 2, up));
@@ -276,8 +277,8 @@ impl GroundStudy {
         let mut figure = PlotSpec::new(
             "ground-stiffness",
             self.heading("The ground's stiffness under the track"),
-            "wavenumber k_x (rad/m)",
-            "|k_eq(k_x, k_x v)| (N/m²)",
+            &Axis::new("wavenumber k_x", "wavenumber", Shown::Si),
+            &Axis::new("|k_eq(k_x, k_x v)|", "equivalent_stiffness", Shown::Si),
         );
         figure.subtitle = self.subtitle();
         (figure.log_x, figure.log_y) = (true, true);

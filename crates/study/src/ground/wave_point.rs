@@ -4,7 +4,7 @@
 
 use crate::ground::speeds::refined_extremes;
 use analytic::ground::MovingSpectrum;
-use fem_beam::{Extreme, Train};
+use fem_beam::{DeflectionExtremes, Extreme, Train};
 use scenario::error::{Result, invalid};
 use serde::Serialize;
 
@@ -86,10 +86,10 @@ pub struct GroundWavePoint {
     pub status: &'static str,
     /// How many wavenumbers the spectrum sampled (each a strip integral over the ground).
     pub spectrum_samples: usize,
-    /// Largest downward deflection (m, magnitude) and where (s, m).
-    pub max_downward_deflection: Extreme,
-    /// Largest upward deflection (m) and where (s, m): ahead of the train, between its axles or in its wake.
-    pub max_upward_deflection: Extreme,
+    /// Largest downward deflection (m, magnitude) and largest upward one (m), each where (s, m): the upward one
+    /// ahead of the train, between its axles or in its wake.
+    #[serde(flatten)]
+    pub deflection: DeflectionExtremes,
     /// W under the first axle, s = 0 (m, signed).
     pub deflection_under_load: f64,
     /// W at the window's rear end (m, signed): what the wake still holds there.
@@ -156,8 +156,7 @@ pub(crate) fn summary(
         speed: wave.speed,
         status: "converged",
         spectrum_samples: spectrum.samples(),
-        max_downward_deflection: extremes.max_downward,
-        max_upward_deflection: extremes.max_upward,
+        deflection: extremes,
         deflection_under_load: at(0.0),
         deflection_behind: wave.deflection.first().copied().unwrap_or(0.0),
         domain: (window.behind, window.ahead, WAVE_STEP),

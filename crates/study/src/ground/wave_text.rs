@@ -12,6 +12,7 @@ use crate::ground::wave_point::LiftOffPoint;
 use report::columns::{Column, ColumnMeta, listed_once, units_line};
 use report::output::{Output, pretty};
 use report::plot::{Mark, PlotSpec, Series, Stroke};
+use scenario::axis::{Axis, Shown};
 use scenario::ground::{GroundTrack, Interface};
 use scenario::quantities::unit;
 use serde::Serialize;
@@ -149,10 +150,10 @@ impl GroundWaveStudy {
                 let csv = table(&POINT_COLUMNS, &self.points, |p| {
                     vec![
                         p.speed,
-                        p.max_downward_deflection.value,
-                        position(p.max_downward_deflection),
-                        p.max_upward_deflection.value,
-                        position(p.max_upward_deflection),
+                        p.deflection.max_downward.value,
+                        position(p.deflection.max_downward),
+                        p.deflection.max_upward.value,
+                        position(p.deflection.max_upward),
                         p.deflection_under_load,
                         p.deflection_behind,
                         p.spectrum_samples as f64,
@@ -227,11 +228,16 @@ impl GroundWaveStudy {
         };
         let title = title.as_str();
         if over_speeds {
-            let mut peaks = PlotSpec::new("ground-wave-peaks", title, "speed v (m/s)", "peak deflection (mm)");
+            let mut peaks = PlotSpec::new(
+                "ground-wave-peaks",
+                title,
+                &Axis::new("speed v", "speed", Shown::Si),
+                &Axis::new("peak deflection", "deflection", Shown::Milli),
+            );
             peaks.subtitle = self.subtitle();
             for (label, color, value) in [
-                ("largest downward deflection", 1, &|p: &GroundWavePoint| p.max_downward_deflection.value),
-                ("largest upward deflection", 2, &|p: &GroundWavePoint| p.max_upward_deflection.value),
+                ("largest downward deflection", 1, &|p: &GroundWavePoint| p.deflection.max_downward.value),
+                ("largest upward deflection", 2, &|p: &GroundWavePoint| p.deflection.max_upward.value),
             ] as [(&str, usize, &dyn Fn(&GroundWavePoint) -> f64); 2]
             {
                 let points = self.points.iter().map(|p| (p.speed, value(p) * 1e3)).collect();
@@ -248,8 +254,8 @@ impl GroundWaveStudy {
         let mut figure = PlotSpec::new(
             "ground-wave",
             title,
-            "s = x − x_head (m, positive ahead of the first axle)",
-            "deflection w (mm, upward positive)",
+            &Axis::noted("s = x − x_head", "s", Shown::Si, "positive ahead of the first axle"),
+            &Axis::noted("deflection w", "deflection", Shown::Milli, "upward positive"),
         );
         figure.subtitle = self.subtitle();
         let placed: Vec<(f64, f64)> = match (&self.comparison, record) {
@@ -339,10 +345,10 @@ impl Output for GroundWaveStudy {
                 "  {:>11.2}  {:>6.0}   {:>13.3} {:>8}   {:>11.3} {:>8}   {:>30.3}",
                 p.speed,
                 p.speed * scenario::units::KMH,
-                p.max_downward_deflection.value * 1e3,
-                at(p.max_downward_deflection),
-                p.max_upward_deflection.value * 1e3,
-                at(p.max_upward_deflection),
+                p.deflection.max_downward.value * 1e3,
+                at(p.deflection.max_downward),
+                p.deflection.max_upward.value * 1e3,
+                at(p.deflection.max_upward),
                 -p.deflection_under_load * 1e3
             )?;
             if let Some(friction) = &p.friction {

@@ -7,6 +7,7 @@ use crate::metrics::{amplification, static_midspan};
 use report::figures::quantity_figure;
 use runner::Runner;
 use scenario::Scenario;
+use scenario::axis::{Axis, Shown};
 use scenario::error::Result;
 use scenario::number::row;
 use scenario::speeds::SpeedScale;
@@ -142,8 +143,8 @@ fn figures(
             let mut plot = quantity_figure(
                 &format!("amplification-{which}-{kn}kN"),
                 &format!("Mid-span {which} amplification, f_u = {kn} kN/m"),
-                "load position over length τ = x/L (-)",
-                &format!("{symbol} (-)"),
+                &Axis::new("load position over length τ = x/L", "tau", Shown::Si),
+                &Axis::new(symbol, "dynamic_amplification", Shown::Si),
                 curves,
                 false,
             );

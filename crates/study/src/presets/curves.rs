@@ -3,10 +3,11 @@
 
 use super::setups::{blank, mean_iterations};
 use super::study_data::{StudyData, StudyFailure, StudySummary, failed_runs};
-use report::figures::{DeflectionCurve, deflection_figure, quantity_figure};
+use report::figures::{DeflectionCurve, deflection_figure, load_speed_axis, quantity_figure};
 use report::plot::PlotSpec;
 use runner::{CriticalSpeed, PeakLocation, Runner, SweepPoint, SweepRow, critical_speed, finished};
 use scenario::Scenario;
+use scenario::axis::Axis;
 use scenario::error::{Result, invalid};
 use scenario::number::{row, row_with_gaps};
 use serde::Serialize;
@@ -139,15 +140,15 @@ impl Curves {
             .map(|&c| DeflectionCurve {
                 label: legend(c),
                 color: color(c),
-                downward: self.points[c].iter().map(|q| (q.speed, q.max_downward_deflection.value)).collect(),
-                upward: self.points[c].iter().map(|q| (q.speed, q.max_upward_deflection.value)).collect(),
+                downward: self.points[c].iter().map(|q| (q.speed, q.deflection.max_downward.value)).collect(),
+                upward: self.points[c].iter().map(|q| (q.speed, q.deflection.max_upward.value)).collect(),
                 optimum: self.critical[c]
                     .as_ref()
                     .filter(|k| k.is_interior())
                     .map(|k| (k.speed, k.max_downward_deflection)),
             })
             .collect();
-        deflection_figure(stem, title, "load speed v (m/s)", curves, "refined critical speed")
+        deflection_figure(stem, title, &load_speed_axis(), curves, "refined critical speed")
     }
 
     /// One quantity vs speed for the curves `members`.
@@ -156,7 +157,7 @@ impl Curves {
         &self,
         stem: &str,
         title: &str,
-        y_label: &str,
+        y: &Axis,
         value: fn(&SweepPoint) -> f64,
         members: &[usize],
         legend: &dyn Fn(usize) -> String,
@@ -166,7 +167,7 @@ impl Curves {
             .iter()
             .map(|&c| (legend(c), color(c), self.points[c].iter().map(|q| (q.speed, value(q))).collect()))
             .collect();
-        quantity_figure(stem, title, "load speed v (m/s)", y_label, curves, true)
+        quantity_figure(stem, title, &load_speed_axis(), y, curves, true)
     }
 
     fn csv(&self) -> String {
@@ -185,12 +186,12 @@ impl Curves {
                 let values = match r {
                     Ok(p) => [
                         p.speed,
-                        p.max_downward_deflection.value,
-                        p.max_upward_deflection.value,
+                        p.deflection.max_downward.value,
+                        p.deflection.max_upward.value,
                         p.energy.dissipated,
                         p.global_norm,
-                        p.window_max_downward_deflection.value,
-                        p.window_max_upward_deflection.value,
+                        p.window_deflection.max_downward.value,
+                        p.window_deflection.max_upward.value,
                     ],
                     Err(f) => [f.speed, f64::NAN, f64::NAN, f64::NAN, f64::NAN, f64::NAN, f64::NAN],
                 };
@@ -211,10 +212,10 @@ impl Curves {
                 peak_max_downward_deflection: critical.as_ref().map(|k| k.max_downward_deflection),
                 peak_max_upward_deflection_sampled: points
                     .iter()
-                    .fold(0.0, |m, p| m.max(p.max_upward_deflection.value)),
+                    .fold(0.0, |m, p| m.max(p.deflection.max_upward.value)),
                 peak_window_max_downward_deflection_sampled: points
                     .iter()
-                    .fold(0.0, |m, p| m.max(p.window_max_downward_deflection.value)),
+                    .fold(0.0, |m, p| m.max(p.window_deflection.max_downward.value)),
             });
             let text = match critical {
                 Some(k) if k.is_interior() => format!(

@@ -7,6 +7,7 @@ use report::figures::quantity_figure;
 use report::plot::PlotSpec;
 use runner::Runner;
 use scenario::Scenario;
+use scenario::axis::{Axis, Shown};
 use scenario::error::Result;
 use scenario::number::row;
 use scenario::speeds::SpeedScale;
@@ -151,8 +152,8 @@ fn figures(runs: &[ModelRun], speed: f64) -> Vec<PlotSpec> {
             let mut plot = quantity_figure(
                 "discrete-vs-distributed-deflection",
                 &format!("Mid-span deflection at {speed} m/s, equal friction capacity"),
-                "time t (s)",
-                "mid-span deflection w (mm, upward > 0)",
+                &Axis::new("time t", "time", Shown::Si),
+                &Axis::noted("mid-span deflection w", "deflection", Shown::Milli, "upward > 0"),
                 deflection.collect(),
                 false,
             );
@@ -167,8 +168,8 @@ fn figures(runs: &[ModelRun], speed: f64) -> Vec<PlotSpec> {
             let mut plot = quantity_figure(
                 "discrete-vs-distributed-mobilised",
                 &format!("Friction mobilised at mid-span, {speed} m/s"),
-                "time t (s)",
-                "friction force / capacity of the section (-1 … 1)",
+                &Axis::new("time t", "time", Shown::Si),
+                &Axis::noted("friction force / capacity of the section", "mobilised_friction", Shown::Si, "−1 … 1"),
                 mobilised.collect(),
                 false,
             );

@@ -5,8 +5,10 @@ use super::curves::{Curves, curves_study};
 use super::resolution::Resolution;
 use super::setups::with_distributed;
 use super::study_data::StudyData;
+use report::figures::dissipated_energy_axis;
 use runner::Runner;
 use scenario::Scenario;
+use scenario::axis::{Axis, Shown};
 use scenario::error::Result;
 
 pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) -> Result<StudyData> {
@@ -37,7 +39,7 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
                 curves.quantity_plot(
                     "distributed-speed-global-norm",
                     "Distributed friction: global norm vs speed",
-                    "global norm (1/t_on)∫∫|w| dx dt (m²)",
+                    &Axis::new("global norm (1/t_on)∫∫|w| dx dt", "global_norm", Shown::Si),
                     |q| q.global_norm,
                     &all,
                     &legend,
@@ -46,7 +48,7 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
                 curves.quantity_plot(
                     "distributed-speed-dissipated",
                     "Distributed friction: dissipated energy vs speed",
-                    "energy dissipated by friction and damping (kJ)",
+                    &dissipated_energy_axis(),
                     |q| q.energy.dissipated / 1e3,
                     &all,
                     &legend,

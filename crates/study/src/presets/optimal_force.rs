@@ -7,6 +7,7 @@ use super::study_data::{StudyData, StudyFailure, StudySummary, nothing_finished}
 use report::figures::{DeflectionCurve, deflection_figure, device_color};
 use runner::{OptimalForce, Runner, SweepPoint, log_spaced, refine_from_scan};
 use scenario::Scenario;
+use scenario::axis::{Axis, Shown};
 use scenario::error::{Result, invalid};
 use scenario::number::row_with_gaps;
 use scenario::speeds::SpeedScale;
@@ -60,8 +61,8 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
         figure_curves.push(DeflectionCurve {
             label: format!("N = {n}"),
             color: device_color(n),
-            downward: curve.iter().map(|(f, p)| (kn(*f), p.max_downward_deflection.value)).collect(),
-            upward: curve.iter().map(|(f, p)| (kn(*f), p.max_upward_deflection.value)).collect(),
+            downward: curve.iter().map(|(f, p)| (kn(*f), p.deflection.max_downward.value)).collect(),
+            upward: curve.iter().map(|(f, p)| (kn(*f), p.deflection.max_upward.value)).collect(),
             optimum: optimum.as_ref().map(|o| (kn(o.force), o.max_downward_deflection)),
         });
         refinement_runs += optimum.map_or(0, |o| o.explored.len());
@@ -73,7 +74,7 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
     let mut plot = deflection_figure(
         "optimal-force",
         &format!("Max deflection vs device force at {speed} m/s"),
-        "device force F_u (kN, log scale)",
+        &Axis::noted("device force F_u", "device_force", Shown::Kilo, "log scale"),
         figure_curves,
         "refined optimal force",
     );
@@ -117,7 +118,7 @@ fn optimum(scenario: &Scenario, speed: f64, curve: &[(f64, SweepPoint)], runner:
         return Err(invalid("device forces", format!("{} finished", curve.len()), "at least 3 to bracket an optimum"));
     }
     let forces: Vec<f64> = curve.iter().map(|(f, _)| *f).collect();
-    let values: Vec<f64> = curve.iter().map(|(_, p)| p.max_downward_deflection.value).collect();
+    let values: Vec<f64> = curve.iter().map(|(_, p)| p.deflection.max_downward.value).collect();
     refine_from_scan(scenario, speed, &forces, &values, 0.02, runner)
 }
 
@@ -154,8 +155,8 @@ fn scan(
                     n as f64,
                     f,
                     speed,
-                    p.max_downward_deflection.value,
-                    p.max_upward_deflection.value,
+                    p.deflection.max_downward.value,
+                    p.deflection.max_upward.value,
                     p.energy.dissipated,
                 ]
             }

@@ -43,7 +43,10 @@ mod tests {
 
     #[test]
     fn a_timoshenko_rail_is_named_on_every_figure_but_the_receptance_studys() {
-        let plot = |subtitle: &str| PlotSpec { subtitle: subtitle.into(), ..PlotSpec::new("p", "t", "x", "y") };
+        let plot = |subtitle: &str| PlotSpec {
+            subtitle: subtitle.into(),
+            ..PlotSpec::new("p", "t", &scenario::axis::Axis::none(), &scenario::axis::Axis::none())
+        };
         let timoshenko = Scenario::from_toml(
             "[beam]\ntheory = \"timoshenko\"\nshear_modulus = 81e9\nshear_coefficient = 0.4\n",
             "t.toml",

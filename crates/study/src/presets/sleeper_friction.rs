@@ -12,6 +12,7 @@ use super::discrete_track::{fit_mesh, sleepers_for_soil, sleepers_unless_given};
 use super::resolution::Resolution;
 use super::setups::with_distributed;
 use super::study_data::StudyData;
+use report::figures::dissipated_energy_axis;
 use report::plot::PlotSpec;
 use runner::Runner;
 use scenario::Scenario;
@@ -112,8 +113,8 @@ pub(super) fn study(resolution: Resolution, base: &Scenario, runner: &Runner) ->
             ];
             let deflection = |members: &[usize]| curves.deflection_plot("", "", members, &legend, &color);
             let dissipated = |members: &[usize]| {
-                let y = "energy dissipated by friction and damping (kJ)";
-                curves.quantity_plot("", "", y, |q| q.energy.dissipated / 1e3, members, &legend, &color)
+                let y = dissipated_energy_axis();
+                curves.quantity_plot("", "", &y, |q| q.energy.dissipated / 1e3, members, &legend, &color)
             };
             let paneled = |stem: &str, title: &str, panel: &dyn Fn(&[usize]) -> PlotSpec| {
                 let mut spec = panel(&[]);

@@ -14,6 +14,7 @@ use crate::receptance::{ReceptanceRequest, ReceptanceStudy};
 use fem_beam::BeamTheory;
 use report::plot::{Mark, PlotSpec, Series, Stroke};
 use runner::Runner;
+use scenario::axis::{Axis, Shown};
 use scenario::error::Result;
 use scenario::number::row;
 use scenario::sleepers::SleepersSection;
@@ -223,8 +224,8 @@ fn figures(curves: &[Curve], subtitle: &str) -> Vec<PlotSpec> {
     let mut magnitude = PlotSpec::new(
         "receptance-magnitude",
         "The track's point receptance: Euler–Bernoulli (dashed) and Timoshenko (solid) rails",
-        "frequency (Hz)",
-        "receptance |α| (m/N)",
+        &Axis::new("frequency", "frequency", Shown::Si),
+        &Axis::new("receptance |α|", "magnitude", Shown::Si),
     );
     magnitude.log_x = true;
     magnitude.log_y = true;
@@ -232,8 +233,8 @@ fn figures(curves: &[Curve], subtitle: &str) -> Vec<PlotSpec> {
     let mut phase = PlotSpec::new(
         "receptance-phase",
         "The track's point receptance, Timoshenko rail: phase",
-        "frequency (Hz)",
-        "phase of α (degrees)",
+        &Axis::new("frequency", "frequency", Shown::Si),
+        &Axis::new("phase of α", "phase", Shown::Si),
     );
     phase.log_x = true;
     phase.subtitle = subtitle.to_string();

@@ -18,6 +18,7 @@ use super::setups::{as_long_track, blank, mean_iterations};
 use super::study_data::{StudyData, StudySummary, failed_runs};
 use report::plot::{PlotSpec, Series, Stroke};
 use runner::{Runner, SweepPoint, SweepRow, finished};
+use scenario::axis::{Axis, Shown};
 use scenario::error::Result;
 use scenario::number::row_with_gaps;
 use scenario::rail::IrregularitySection;
@@ -243,7 +244,7 @@ fn csv(curves: &[Curve], force: f64) -> String {
             let values = match r {
                 Ok(p) => {
                     let vehicle = p.vehicles.map_or([force, force, 0.0, 0.0, f64::NAN, f64::NAN], |v| v.values());
-                    let mut values = vec![p.speed, p.max_downward_deflection.value];
+                    let mut values = vec![p.speed, p.deflection.max_downward.value];
                     values.extend(vehicle);
                     values
                 }
@@ -275,13 +276,13 @@ impl Curve {
         let peak = self
             .points
             .iter()
-            .max_by(|a, b| a.max_downward_deflection.value.total_cmp(&b.max_downward_deflection.value))?;
+            .max_by(|a, b| a.deflection.max_downward.value.total_cmp(&b.deflection.max_downward.value))?;
         let weakest =
             self.points.iter().min_by(|a, b| self.min_force(a, force).total_cmp(&self.min_force(b, force)))?;
         let lifts = self.points.iter().find(|p| p.vehicles.is_some_and(|v| v.losses_of_contact > 0)).map(|p| p.speed);
         let body = self.points.iter().filter_map(|p| self.body_acceleration(p).map(|a| (p.speed, a)));
         Some(Findings {
-            peak: (peak.speed, peak.max_downward_deflection.value),
+            peak: (peak.speed, peak.deflection.max_downward.value),
             weakest: (weakest.speed, self.min_force(weakest, force)),
             lifts,
             body: body.max_by(|a, b| a.1.total_cmp(&b.1)),
@@ -418,26 +419,23 @@ fn figures(curves: &[Curve], force: f64, friction: &str) -> Vec<PlotSpec> {
     for (r, rail) in RAILS.iter().enumerate() {
         // Each title names what the figure compares: only the quarter car has a body, so its figure compares the
         // car without and with friction, not the loads.
-        let quantities: [(&str, &str, &str, &Quantity<'_>); 3] = [
-            ("deflection", "Vehicles vs moving force", "max downward rail deflection (mm)", &|_, p| {
-                Some(p.max_downward_deflection.value * 1e3)
-            }),
-            (
-                "wheel-force",
-                "Vehicles vs moving force",
-                "smallest wheel–rail force (kN; 0: contact lost)",
-                &|c, p| Some(c.min_force(p, force) / 1e3),
-            ),
+        let deflection = Axis::new("max downward rail deflection", "deflection", Shown::Milli);
+        let wheel = Axis::noted("smallest wheel–rail force", "min_wheel_force", Shown::Kilo, "0: contact lost");
+        let (mm, kn) = (deflection.factor(), wheel.factor());
+        let quantities: [(&str, &str, Axis, &Quantity<'_>); 3] = [
+            ("deflection", "Vehicles vs moving force", deflection, &|_, p| Some(p.deflection.max_downward.value * mm)),
+            ("wheel-force", "Vehicles vs moving force", wheel, &|c, p| Some(c.min_force(p, force) * kn)),
             (
                 "body-acceleration",
                 "Quarter car without and with friction",
-                "largest body acceleration (m/s²)",
+                Axis::new("largest body acceleration", "max_body_acceleration", Shown::Si),
                 &|c, p| c.body_acceleration(p),
             ),
         ];
-        for (stem, compared, y_label, value) in quantities {
-            let title = format!("{compared}, {rail} rail: {}", y_label.split(" (").next().unwrap_or(""));
-            let mut spec = PlotSpec::new(format!("vehicle-speed-{stem}-{rail}"), &title, "speed v (m/s)", y_label);
+        let speed = Axis::new("speed v", "speed", Shown::Si);
+        for (stem, compared, y, value) in quantities {
+            let title = format!("{compared}, {rail} rail: {}", y.caption());
+            let mut spec = PlotSpec::new(format!("vehicle-speed-{stem}-{rail}"), &title, &speed, &y);
             for c in curves.iter().filter(|c| c.rail == r) {
                 let points: Vec<(f64, f64)> =
                     c.points.iter().filter_map(|p| value(c, p).map(|y| (p.speed, y))).collect();

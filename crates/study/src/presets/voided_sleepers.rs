@@ -12,6 +12,7 @@ use super::study_data::{StudyData, StudySummary, failed_runs};
 use super::vehicle_speed::{SINGLE, cap_contact_step};
 use report::plot::{PlotSpec, Series, Stroke};
 use runner::{Runner, SweepPoint, SweepRow, finished};
+use scenario::axis::{Axis, Shown};
 use scenario::error::Result;
 use scenario::number::row_with_gaps;
 use scenario::sleepers::{ExceptionSection, SleeperIndex, SleepersSection};
@@ -184,7 +185,7 @@ fn csv(curves: &[Curve]) -> String {
             let mut values = vec![c.voided as f64, c.gap];
             match r {
                 Ok(p) => {
-                    values.extend([p.speed, p.max_downward_deflection.value]);
+                    values.extend([p.speed, p.deflection.max_downward.value]);
                     values.extend(p.sleepers.map_or([f64::NAN; 5], |s| s.values()));
                     let v = p
                         .vehicles
@@ -244,7 +245,7 @@ fn summary(curves: &[Curve], base: &Scenario, first: usize) -> (VoidedSummary, V
     let mut lines = Vec::new();
     for c in curves {
         let (Some(peak), Some(neighbour), Some(pad), Some(weakest)) = (
-            c.largest(|p| Some(p.max_downward_deflection.value)),
+            c.largest(|p| Some(p.deflection.max_downward.value)),
             c.largest(neighbour_force),
             c.largest(|p| p.sleepers.map(|s| s.max_pad_force)),
             c.largest(|p| min_wheel_force(p).map(|f| -f)),
@@ -290,7 +291,7 @@ fn headline(curves: &[Curve]) -> Vec<String> {
     let value = |c: Option<&Curve>, f: &dyn Fn(&SweepPoint) -> Option<f64>| {
         c.and_then(|c| c.largest(f)).map_or(f64::NAN, |v| v.1)
     };
-    let deflection = |c| value(c, &|p| Some(p.max_downward_deflection.value)) * 1e3;
+    let deflection = |c| value(c, &|p| Some(p.deflection.max_downward.value)) * 1e3;
     let force = |c| value(c, &neighbour_force) / 1e3;
     let weakest = |c| -value(c, &|p| min_wheel_force(p).map(|f| -f)) / 1e3;
     vec![
@@ -315,20 +316,28 @@ fn headline(curves: &[Curve]) -> Vec<String> {
 /// void; and the peak deflection against the void for 1–3 sleepers.
 fn figures(curves: &[Curve], subtitle: &str) -> Vec<PlotSpec> {
     type Value = fn(&SweepPoint) -> Option<f64>;
-    let quantities: [(&str, &str, Value); 3] = [
-        ("deflection", "largest downward rail deflection (mm)", |p| Some(p.max_downward_deflection.value * 1e3)),
-        ("neighbour-force", "largest ballast force beside the voids (kN)", |p| neighbour_force(p).map(|f| f / 1e3)),
-        ("wheel-force", "smallest wheel–rail force (kN; 0: contact lost)", |p| min_wheel_force(p).map(|f| f / 1e3)),
+    // Deflections in mm, forces in kN (the axes' factors).
+    let quantities: [(&str, Axis, Value); 3] = [
+        ("deflection", Axis::new("largest downward rail deflection", "deflection", Shown::Milli), |p| {
+            Some(p.deflection.max_downward.value * 1e3)
+        }),
+        (
+            "neighbour-force",
+            Axis::new("largest ballast force beside the voids", "neighbour_ballast_force", Shown::Kilo),
+            |p| neighbour_force(p).map(|f| f / 1e3),
+        ),
+        (
+            "wheel-force",
+            Axis::noted("smallest wheel–rail force", "min_wheel_force", Shown::Kilo, "0: contact lost"),
+            |p| min_wheel_force(p).map(|f| f / 1e3),
+        ),
     ];
+    let speed = Axis::new("speed v", "speed", Shown::Si);
     let mut plots = Vec::new();
     let shown: Vec<&Curve> = curves.iter().filter(|c| c.voided == 0 || c.gap == GAPS[3]).collect();
-    for (stem, y_label, value) in quantities {
-        let title = format!(
-            "Voided sleepers ({} mm) under a quarter car: {}",
-            GAPS[3] * 1e3,
-            y_label.split(" (").next().unwrap_or("")
-        );
-        let mut spec = PlotSpec::new(format!("voided-sleepers-{stem}"), &title, "speed v (m/s)", y_label);
+    for (stem, y, value) in quantities {
+        let title = format!("Voided sleepers ({} mm) under a quarter car: {}", GAPS[3] * 1e3, y.caption());
+        let mut spec = PlotSpec::new(format!("voided-sleepers-{stem}"), &title, &speed, &y);
         spec.subtitle = subtitle.to_string();
         for c in &shown {
             let points: Vec<(f64, f64)> = c.points.iter().filter_map(|p| Some((p.speed, value(p)?))).collect();
@@ -345,15 +354,15 @@ fn figures(curves: &[Curve], subtitle: &str) -> Vec<PlotSpec> {
     let mut spec = PlotSpec::new(
         "voided-sleepers-gap",
         "Voided sleepers: the largest rail deflection over 20–100 m/s against the void",
-        "void under the sleepers (mm)",
-        "largest downward rail deflection (mm)",
+        &Axis::new("void under the sleepers", "gap", Shown::Milli),
+        &Axis::new("largest downward rail deflection", "deflection", Shown::Milli),
     );
     spec.subtitle = subtitle.to_string();
     for voided in 1..VOIDED.len() {
         let points: Vec<(f64, f64)> = curves
             .iter()
             .filter(|c| c.voided == voided)
-            .filter_map(|c| Some((c.gap * 1e3, c.largest(|p| Some(p.max_downward_deflection.value))?.1 * 1e3)))
+            .filter_map(|c| Some((c.gap * 1e3, c.largest(|p| Some(p.deflection.max_downward.value))?.1 * 1e3)))
             .collect();
         let label = format!("{voided} sleeper{}", if voided == 1 { "" } else { "s" });
         spec.series.push(Series { label: Some(label), color: voided, stroke: Stroke::Solid, markers: true, points });

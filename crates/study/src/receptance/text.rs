@@ -6,6 +6,7 @@ use crate::receptance::ReceptanceStudy;
 use report::columns::{Column, header, units_line};
 use report::output::{Output, pretty};
 use report::plot::{PanelY, PlotSpec, Series, Stroke};
+use scenario::axis::{Axis, Shown};
 use scenario::number::row;
 use scenario::quantities::unit;
 use std::fmt::{self, Formatter};
@@ -75,7 +76,8 @@ impl ReceptanceStudy {
     /// The figure: magnitude over frequency (both logarithmic) above the phase, the resonances marked.
     pub fn figure(&self) -> PlotSpec {
         let title = if self.title.is_empty() { "Track receptance" } else { self.title.as_str() };
-        let mut figure = PlotSpec::new("receptance", title, "frequency f (Hz)", "");
+        let mut figure =
+            PlotSpec::new("receptance", title, &Axis::new("frequency f", "frequency", Shown::Si), &Axis::none());
         // The rail's theory without its parameters: the subtitle must stay one readable line.
         figure.subtitle = self.describe(self.rail.split(" (").next().unwrap_or(&self.rail));
         let curve = |label: &str, points: Vec<(f64, f64)>| Series {
@@ -95,7 +97,12 @@ impl ReceptanceStudy {
             true => "magnitude".to_string(),
             false => format!("magnitude; resonances (▲, refined): {}", named.join(", ")),
         };
-        let mut magnitude = PlotSpec::new("", heading, "frequency f (Hz)", "|α| (m/N)");
+        let mut magnitude = PlotSpec::new(
+            "",
+            heading,
+            &Axis::new("frequency f", "frequency", Shown::Si),
+            &Axis::new("|α|", "magnitude", Shown::Si),
+        );
         (magnitude.log_x, magnitude.log_y) = (true, true);
         // The refined resonances are points of the curve: a peak between the grid's frequencies stands on it.
         let mut points: Vec<(f64, f64)> = self.points.iter().map(|p| (p.frequency, p.magnitude)).collect();
@@ -111,8 +118,12 @@ impl ReceptanceStudy {
         if !magnitude.marks.is_empty() {
             magnitude.mark_label = "resonance (refined)".into();
         }
-        let mut phase =
-            PlotSpec::new("", "phase (−90° and below: the rail lags the force)", "frequency f (Hz)", "arg α (°)");
+        let mut phase = PlotSpec::new(
+            "",
+            "phase (−90° and below: the rail lags the force)",
+            &Axis::new("frequency f", "frequency", Shown::Si),
+            &Axis::new("arg α", "phase", Shown::Si),
+        );
         phase.log_x = true;
         phase.series.push(curve("arg α", self.points.iter().map(|p| (p.frequency, p.phase)).collect()));
         figure.panels = vec![magnitude, phase];

@@ -4,6 +4,7 @@
 
 use crate::stationary::output::{StationaryPoint, StationaryStudy};
 use report::plot::{PlotSpec, Series, Stroke};
+use scenario::axis::{Axis, Shown};
 
 impl StationaryStudy {
     /// The figures: with one speed the wave's deflection and moment along s; with several the peak deflections
@@ -19,7 +20,8 @@ impl StationaryStudy {
             self.load / 1e3
         );
         if let [Some(wave)] = self.waves.as_slice() {
-            let mut shape = PlotSpec::new("stationary-wave", title, "s = x − vt (m)", "");
+            let mut shape =
+                PlotSpec::new("stationary-wave", title, &Axis::new("s = x − vt", "s", Shown::Si), &Axis::none());
             shape.subtitle = format!("{subtitle}, v = {:.1} m/s", wave.speed);
             let line = |label: &str, color: usize, values: Vec<(f64, f64)>| Series {
                 label: Some(label.into()),
@@ -28,13 +30,23 @@ impl StationaryStudy {
                 markers: false,
                 points: values,
             };
-            let mut deflection = PlotSpec::new("", "deflection from the settled rail", "s = x − vt (m)", "w (mm)");
+            let mut deflection = PlotSpec::new(
+                "",
+                "deflection from the settled rail",
+                &Axis::new("s = x − vt", "s", Shown::Si),
+                &Axis::new("w", "deflection", Shown::Milli),
+            );
             deflection.series.push(line(
                 "W(s)",
                 1,
                 wave.s.iter().zip(&wave.deflection).map(|(s, w)| (*s, w * 1e3)).collect(),
             ));
-            let mut moment = PlotSpec::new("", "bending moment", "s = x − vt (m)", "M (kN·m)");
+            let mut moment = PlotSpec::new(
+                "",
+                "bending moment",
+                &Axis::new("s = x − vt", "s", Shown::Si),
+                &Axis::new("M", "moment", Shown::Kilo),
+            );
             moment.series.push(line(
                 "EI W″(s)",
                 2,
@@ -45,8 +57,8 @@ impl StationaryStudy {
                 let mut resistance = PlotSpec::new(
                     "",
                     "ballast friction (flat at ±f_u where the rail slides)",
-                    "s = x − vt (m)",
-                    "r (kN/m)",
+                    &Axis::new("s = x − vt", "s", Shown::Si),
+                    &Axis::new("r", "force_per_length", Shown::Kilo),
                 );
                 resistance.series.push(line(
                     "r(s)",
@@ -57,7 +69,12 @@ impl StationaryStudy {
             }
             return vec![shape];
         }
-        let mut peaks = PlotSpec::new("stationary-peaks", title, "speed v (m/s)", "peak deflection (mm)");
+        let mut peaks = PlotSpec::new(
+            "stationary-peaks",
+            title,
+            &Axis::new("speed v", "speed", Shown::Si),
+            &Axis::new("peak deflection", "deflection", Shown::Milli),
+        );
         let missing: Vec<f64> = self.points.iter().filter(|p| p.status != "converged").map(|p| p.speed).collect();
         peaks.subtitle = match (missing.first(), missing.last()) {
             (Some(a), Some(b)) => format!(
@@ -72,12 +89,12 @@ impl StationaryStudy {
             (
                 "downward",
                 Stroke::Solid,
-                converged.iter().filter_map(|p| Some((p.speed, p.max_downward_deflection?.value * 1e3))).collect(),
+                converged.iter().filter_map(|p| Some((p.speed, p.deflection.max_downward?.value * 1e3))).collect(),
             ),
             (
                 "upward",
                 Stroke::Dashed,
-                converged.iter().filter_map(|p| Some((p.speed, p.max_upward_deflection?.value * 1e3))).collect(),
+                converged.iter().filter_map(|p| Some((p.speed, p.deflection.max_upward?.value * 1e3))).collect(),
             ),
         ] {
             peaks.series.push(Series { label: Some(label.into()), color: 1, stroke, markers: true, points: values });

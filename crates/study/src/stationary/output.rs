@@ -6,7 +6,7 @@
 
 pub use crate::stationary::csv::{POINT_COLUMNS, WAVE_COLUMNS, points_csv, wave_csv};
 
-use fem_beam::{Extreme, LiftOffZone};
+use fem_beam::{DeflectionExtremes, Extreme, LiftOffZone};
 use scenario::Scenario;
 use scenario::error::Result;
 use serde::Serialize;
@@ -37,10 +37,10 @@ pub struct StationaryPoint {
     pub iterations: usize,
     /// The relative residual of the last iterate (0 where no wave exists).
     pub residual: f64,
-    /// Largest downward deflection (m, magnitude) and where (s, m); None unless converged.
-    pub max_downward_deflection: Option<Extreme>,
-    /// Largest upward deflection (m) and where.
-    pub max_upward_deflection: Option<Extreme>,
+    /// Largest downward deflection (m, magnitude) and largest upward one (m), each where (s, m); None unless
+    /// converged.
+    #[serde(flatten)]
+    pub deflection: DeflectionExtremes<Option<Extreme>>,
     /// Largest sagging moment (N·m) and where.
     pub max_moment: Option<Extreme>,
     /// Largest hogging moment (N·m, magnitude) and where.
@@ -77,7 +77,7 @@ impl PeakErrors {
     pub fn relative(&self, point: &StationaryPoint) -> f64 {
         let share = |e: f64, p: Option<f64>| p.map_or(0.0, |p| e / p.abs().max(f64::MIN_POSITIVE));
         let value = |e: Option<Extreme>| e.map(|e| e.value);
-        share(self.max_downward_deflection, value(point.max_downward_deflection))
+        share(self.max_downward_deflection, value(point.deflection.max_downward))
             .max(share(self.max_moment, value(point.max_moment)))
     }
 }
@@ -256,8 +256,8 @@ impl StationaryPoint {
             status,
             iterations,
             residual,
-            max_downward_deflection: peak(wave.max_downward()),
-            max_upward_deflection: peak(wave.max_upward()),
+            deflection: DeflectionExtremes { max_downward: wave.max_downward(), max_upward: wave.max_upward() }
+                .map(peak),
             max_moment: peak(wave.max_moment()),
             max_hogging_moment: peak(wave.min_moment()),
             deflection_under_load: some(wave.under_load()),
@@ -290,8 +290,7 @@ impl StationaryPoint {
             status: "no stationary wave",
             iterations: 0,
             residual: 0.0,
-            max_downward_deflection: None,
-            max_upward_deflection: None,
+            deflection: DeflectionExtremes::default(),
             max_moment: None,
             max_hogging_moment: None,
             deflection_under_load: None,

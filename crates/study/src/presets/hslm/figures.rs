@@ -7,14 +7,19 @@
 use super::results::{Results, TrainCurve, coach_length, interpolate, millimetres};
 use report::plot::{Mark, Palette, PlotSpec, Series, Stroke};
 use runner::SweepPoint;
+use scenario::axis::{Axis, Shown};
 use scenario::units::KMH;
 
-const SPEED_AXIS: &str = "train speed v (km/h)";
 const DEFLECTION_AXIS: &str = "max downward deflection";
 const ACCELERATION_AXIS: &str = "max vertical acceleration";
 
+/// The speed axis of every HSLM figure: "train speed v (km/h)".
+fn speed_axis() -> Axis {
+    Axis::new("train speed v", "speed", Shown::KilometresPerHour)
+}
+
 fn deflection_mm(p: &SweepPoint) -> f64 {
-    p.max_downward_deflection.value * 1e3
+    p.deflection.max_downward.value * 1e3
 }
 
 fn acceleration(p: &SweepPoint) -> f64 {
@@ -35,22 +40,22 @@ fn level(results: &Results, label: String, y: f64) -> Series {
 
 impl Results {
     /// The y-axis label of `quantity` with its unit, naming the nodes it is taken over when not all.
-    fn axis(&self, quantity: &str, unit: &str) -> String {
+    fn axis(&self, caption: &str, quantity: &str, shown: Shown) -> Axis {
         match self.extremes_nodes {
-            Some([a, b]) => format!("{quantity} at {a:.0}–{b:.0} m ({unit})"),
-            None => format!("{quantity} ({unit})"),
+            Some([a, b]) => Axis::new(format!("{caption} at {a:.0}–{b:.0} m"), quantity, shown),
+            None => Axis::new(caption, quantity, shown),
         }
     }
 
     /// The acceleration axis: on a span, the deck acceleration in its EN 1990 band of modes (what the runs report
     /// there, docs/theory.md §10.4); on a track, the nodal one.
-    fn acceleration_axis(&self) -> String {
+    fn acceleration_axis(&self) -> Axis {
         match (&self.frequencies, self.acceleration_limit) {
             (Some(f), Some(_)) if f.len() >= 3 => {
                 let band = fem_beam::modal_band::deck_band(f[0], f[2]);
-                self.axis(&format!("deck acceleration, modes ≤ {band:.1} Hz"), "m/s²")
+                self.axis(&format!("deck acceleration, modes ≤ {band:.1} Hz"), "deck_acceleration", Shown::Si)
             }
-            _ => self.axis(ACCELERATION_AXIS, "m/s²"),
+            _ => self.axis(ACCELERATION_AXIS, "max_acceleration", Shown::Si),
         }
     }
 
@@ -70,7 +75,7 @@ impl Results {
             plots.push(self.trains_figure(
                 &format!("hslm-deflection{suffix}"),
                 &format!("HSLM-A1 … A10, {label}: max deflection vs speed"),
-                &self.axis(DEFLECTION_AXIS, "mm"),
+                &self.axis(DEFLECTION_AXIS, "max_downward_deflection", Shown::Milli),
                 friction,
                 deflection_mm,
             ));
@@ -95,11 +100,11 @@ impl Results {
         &self,
         stem: &str,
         title: &str,
-        y_label: &str,
+        y: &Axis,
         friction: usize,
         value: fn(&SweepPoint) -> f64,
     ) -> PlotSpec {
-        let mut spec = PlotSpec::new(stem, title, SPEED_AXIS, y_label);
+        let mut spec = PlotSpec::new(stem, title, &speed_axis(), y);
         spec.palette = Palette::Ten;
         for c in self.set(friction) {
             // Neighbouring trains (A9 and A10: coaches of 26 and 27 m) can trace nearly the same curve: the even
@@ -134,12 +139,12 @@ impl Results {
     /// The two envelopes of `value` (no friction, friction), each with its critical point marked and described.
     fn envelope_figure(
         &self,
-        (stem, title, y_label): (&str, &str, &str),
+        (stem, title, y): (&str, &str, &Axis),
         value: fn(&SweepPoint) -> f64,
         critical: &dyn Fn(usize) -> ((f64, f64), String),
         mark_label: &str,
     ) -> PlotSpec {
-        let mut spec = PlotSpec::new(stem, title, SPEED_AXIS, y_label);
+        let mut spec = PlotSpec::new(stem, title, &speed_axis(), y);
         let mut described = Vec::new();
         for friction in 0..2 {
             spec.series.push(Series {
@@ -162,8 +167,8 @@ impl Results {
     /// Envelopes of the max downward deflection over the ten trains, the critical (refined) train and speed marked,
     /// and the static envelope of the heaviest train.
     fn deflection_envelope(&self) -> PlotSpec {
-        let axis = self.axis(DEFLECTION_AXIS, "mm");
-        let titles = ("hslm-envelope-deflection", "HSLM-A1 … A10: envelope of the max deflection", axis.as_str());
+        let axis = self.axis(DEFLECTION_AXIS, "max_downward_deflection", Shown::Milli);
+        let titles = ("hslm-envelope-deflection", "HSLM-A1 … A10: envelope of the max deflection", &axis);
         let critical = |friction: usize| {
             let c = self.critical(friction);
             let point = (c.critical.speed * KMH, c.critical.max_downward_deflection * 1e3);
@@ -179,7 +184,7 @@ impl Results {
     /// EN 1990 limit of the deck's track.
     fn acceleration_envelope(&self) -> PlotSpec {
         let axis = self.acceleration_axis();
-        let titles = ("hslm-envelope-acceleration", "HSLM-A1 … A10: envelope of the max acceleration", axis.as_str());
+        let titles = ("hslm-envelope-acceleration", "HSLM-A1 … A10: envelope of the max acceleration", &axis);
         let critical = |friction: usize| {
             let c = self.acceleration_critical(friction);
             let p = &c.acceleration;

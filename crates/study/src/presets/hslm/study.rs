@@ -115,14 +115,14 @@ impl Results {
             for p in &c.points {
                 let values = [
                     p.speed,
-                    p.max_downward_deflection.value,
-                    p.max_upward_deflection.value,
+                    p.deflection.max_downward.value,
+                    p.deflection.max_upward.value,
                     p.max_acceleration.map_or(f64::NAN, |a| a.value),
-                    p.max_downward_deflection.value / c.static_max,
+                    p.deflection.max_downward.value / c.static_max,
                     c.static_max,
                     p.energy.dissipated,
-                    p.window_max_downward_deflection.value,
-                    p.window_max_upward_deflection.value,
+                    p.window_deflection.max_downward.value,
+                    p.window_deflection.max_upward.value,
                     p.deck_acceleration(),
                 ];
                 let _ = writeln!(out, "hslm-a{},{},{}", c.train, friction_name(c.friction), row_with_gaps(&values));

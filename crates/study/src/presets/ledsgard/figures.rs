@@ -5,6 +5,7 @@ use crate::ground::measured::MeasuredRecord;
 use crate::ground::numbers::GroundStudy;
 use crate::ground::wave::GroundWaveStudy;
 use report::plot::{Mark, PlotSpec, Series, Stroke};
+use scenario::axis::{Axis, Shown};
 use scenario::units::KMH;
 
 /// The figures: `ledsgard-speeds`, then `ledsgard-70-kmh` and `ledsgard-185-kmh`.
@@ -31,15 +32,15 @@ fn speeds_figure(
     let mut figure = PlotSpec::new(
         "ledsgard-speeds",
         "Ledsgård: the X2000's deepest deflection over speed, with ballast friction",
-        "train speed (km/h)",
-        "deepest deflection (mm)",
+        &Axis::new("train speed", "speed", Shown::KilometresPerHour),
+        &Axis::new("deepest deflection", "deflection", Shown::Milli),
     );
     let subtitle = curves.first().map(|(_, s)| s.subtitle()).unwrap_or_default();
     figure.subtitle = format!("{subtitle}; linear small-strain soil; the curves sampled, not refined");
     let mut top: f64 = 0.0;
     for (i, (friction, study)) in curves.iter().enumerate() {
         let points: Vec<(f64, f64)> =
-            study.points.iter().map(|p| (p.speed * KMH, p.max_downward_deflection.value * 1e3)).collect();
+            study.points.iter().map(|p| (p.speed * KMH, p.deflection.max_downward.value * 1e3)).collect();
         top = points.iter().map(|p| p.1).fold(top, f64::max);
         let label = match *friction {
             0.0 => "no ballast friction".to_string(),

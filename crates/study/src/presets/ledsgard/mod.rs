@@ -143,16 +143,16 @@ fn summarise(
             let deepest = study
                 .points
                 .iter()
-                .max_by(|a, b| a.max_downward_deflection.value.total_cmp(&b.max_downward_deflection.value))
+                .max_by(|a, b| a.deflection.max_downward.value.total_cmp(&b.deflection.max_downward.value))
                 .expect("speeds");
             let at_185 = study
                 .points
                 .iter()
                 .find(|p| (p.speed * KMH - RECORD_SPEED).abs() < 1e-6)
-                .map_or(f64::NAN, |p| p.max_downward_deflection.value);
+                .map_or(f64::NAN, |p| p.deflection.max_downward.value);
             LedsgardCurve {
                 force_per_length: *friction,
-                max_downward_deflection: deepest.max_downward_deflection.value,
+                max_downward_deflection: deepest.deflection.max_downward.value,
                 speed: deepest.speed,
                 at_185_km_per_h: at_185,
             }
@@ -174,7 +174,7 @@ fn csv(curves: &[(f64, GroundWaveStudy)]) -> String {
         for p in &study.points {
             let power = p.friction.as_ref().map_or(0.0, |f| f.friction_power);
             let values =
-                row(&[*friction, p.speed, p.max_downward_deflection.value, p.max_upward_deflection.value, power]);
+                row(&[*friction, p.speed, p.deflection.max_downward.value, p.deflection.max_upward.value, power]);
             let _ = writeln!(out, "{values}");
         }
     }

@@ -4,11 +4,10 @@
 use super::curves::{FRICTION, InfiniteCritical, InfiniteCurve};
 use crate::presets::curves::Curves;
 use crate::stationary::output::StationaryPoint;
-use report::figures::{DeflectionCurve, deflection_figure};
+use report::figures::{DeflectionCurve, deflection_figure, load_speed_axis};
 use report::plot::{Mark, PanelY, PlotSpec, Series, Stroke};
 use scenario::Scenario;
-
-const SPEED: &str = "load speed v (m/s)";
+use scenario::axis::{Axis, Shown};
 
 /// The four figures.
 pub(in crate::presets) fn plots(
@@ -26,14 +25,14 @@ fn friction(infinite: &[InfiniteCurve], finite: &Curves) -> PlotSpec {
     let mut spec = PlotSpec::new(
         "stationary-wave-friction",
         "Infinite track and finite beam: max downward deflection vs speed",
-        SPEED,
-        "max downward deflection (mm)",
+        &load_speed_axis(),
+        &Axis::new("max downward deflection", "deflection", Shown::Milli),
     );
     spec.subtitle =
         "solid: stationary wave, infinite track; dashed: finite beam (distributed-speed study); gap: no wave".into();
     for (c, curve) in infinite.iter().enumerate().filter(|(_, c)| c.soil.foundation == "linear") {
         // The refinement's waves with the sweep's, so that each refined peak sits on its curve.
-        let mut series = sampled(curve, c, |p| p.max_downward_deflection.map(|e| e.value));
+        let mut series = sampled(curve, c, |p| p.deflection.max_downward.map(|e| e.value));
         series.points.extend(curve.refinement.iter().map(|&(v, w)| (v, w * 1e3)));
         series.points.sort_by(|a, b| a.0.total_cmp(&b.0));
         series.markers = false;
@@ -49,7 +48,7 @@ fn friction(infinite: &[InfiniteCurve], finite: &Curves) -> PlotSpec {
     for (c, &f) in FRICTION.iter().enumerate() {
         let Some(k) = finite.find("force_per_length", f) else { continue };
         let mut points: Vec<(f64, f64)> =
-            finite.points[k].iter().map(|p| (p.speed, p.max_downward_deflection.value * 1e3)).collect();
+            finite.points[k].iter().map(|p| (p.speed, p.deflection.max_downward.value * 1e3)).collect();
         // The refinement's runs too, so that the finite beam's refined peak sits on its curve.
         let refined = finite.critical[k].iter().flat_map(|c| c.evaluations.iter().map(|&(v, w)| (v, w * 1e3)));
         points.extend(refined);
@@ -87,8 +86,8 @@ fn soils(infinite: &[InfiniteCurve]) -> PlotSpec {
             DeflectionCurve {
                 label: curve.soil.label().replace("no friction", "linear soil"),
                 color: c,
-                downward: points.iter().filter_map(|p| Some((p.speed, p.max_downward_deflection?.value))).collect(),
-                upward: points.iter().filter_map(|p| Some((p.speed, p.max_upward_deflection?.value))).collect(),
+                downward: points.iter().filter_map(|p| Some((p.speed, p.deflection.max_downward?.value))).collect(),
+                upward: points.iter().filter_map(|p| Some((p.speed, p.deflection.max_upward?.value))).collect(),
                 optimum: None,
             }
         })
@@ -96,7 +95,7 @@ fn soils(infinite: &[InfiniteCurve]) -> PlotSpec {
     let mut spec = deflection_figure(
         "stationary-wave-soils",
         "Infinite track without friction: linear, tensionless and bilinear soils",
-        SPEED,
+        &load_speed_axis(),
         curves,
         "",
     );
@@ -109,8 +108,8 @@ fn behind(infinite: &[InfiniteCurve], base: &Scenario) -> PlotSpec {
     let mut spec = PlotSpec::new(
         "stationary-wave-behind",
         "Infinite track: the deflection ballast friction leaves behind the load",
-        SPEED,
-        "residual deflection (mm, + above the rail's level)",
+        &load_speed_axis(),
+        &Axis::noted("residual deflection", "deflection", Shown::Milli, "+ above the rail's level"),
     );
     spec.subtitle = format!(
         "solid: what the wave leaves behind; dashed: the bound ±f_u/k (k = {:.0} kN/m²) of each f_u",
@@ -138,15 +137,24 @@ fn sampled(curve: &InfiniteCurve, color: usize, value: fn(&StationaryPoint) -> O
 
 /// W(s) at each shape speed, one panel per speed, every soil that has a wave there.
 fn shapes(infinite: &[InfiniteCurve], speeds: &[f64]) -> PlotSpec {
-    let mut spec =
-        PlotSpec::new("stationary-wave-shapes", "The stationary wave at three speeds", "s = x − vt (m)", "W (mm)");
+    let mut spec = PlotSpec::new(
+        "stationary-wave-shapes",
+        "The stationary wave at three speeds",
+        &Axis::new("s = x − vt", "s", Shown::Si),
+        &Axis::new("W", "deflection", Shown::Milli),
+    );
     spec.subtitle =
         "from the settled rail, s > 0 ahead of the load, each panel on its own scales (its waves' domain); absent: \
          no wave"
             .into();
     spec.panel_y = PanelY::EachOwn;
     for (k, &speed) in speeds.iter().enumerate() {
-        let mut panel = PlotSpec::new("", format!("v = {speed:.0} m/s"), "s = x − vt (m)", "W (mm)");
+        let mut panel = PlotSpec::new(
+            "",
+            format!("v = {speed:.0} m/s"),
+            &Axis::new("s = x − vt", "s", Shown::Si),
+            &Axis::new("W", "deflection", Shown::Milli),
+        );
         for (c, curve) in infinite.iter().enumerate() {
             let Some(wave) = curve.shapes.get(k).and_then(Option::as_ref) else { continue };
             let points = wave.s.iter().zip(&wave.deflection).map(|(s, w)| (*s, w * 1e3)).collect();

@@ -76,7 +76,7 @@ fn refine(
     (v_cr, stop): (Option<f64>, Option<&std::sync::atomic::AtomicBool>),
 ) -> Result<(InfiniteCritical, Vec<(f64, f64)>)> {
     let points = &study.points;
-    let found = |p: &StationaryPoint| p.max_downward_deflection.map(|e| e.value);
+    let found = |p: &StationaryPoint| p.deflection.max_downward.map(|e| e.value);
     let Some((i, peak)) =
         points.iter().enumerate().filter_map(|(i, p)| found(p).map(|w| (i, w))).max_by(|a, b| a.1.total_cmp(&b.1))
     else {
@@ -133,8 +133,8 @@ fn csv(infinite: &[InfiniteCurve], finite: &Curves) -> String {
                 curve.soil.force_per_length,
                 p.speed,
                 p.status,
-                cell(p.max_downward_deflection.map(|e| e.value)),
-                cell(p.max_upward_deflection.map(|e| e.value)),
+                cell(p.deflection.max_downward.map(|e| e.value)),
+                cell(p.deflection.max_upward.map(|e| e.value)),
                 cell(p.deflection_behind)
             );
         }
@@ -142,7 +142,7 @@ fn csv(infinite: &[InfiniteCurve], finite: &Curves) -> String {
     for (c, &f) in FRICTION.iter().enumerate() {
         for point in finite.speed_rows(c) {
             let (status, down, up) = match point {
-                Ok(p) => ("finished", Some(p.max_downward_deflection.value), Some(p.max_upward_deflection.value)),
+                Ok(p) => ("finished", Some(p.deflection.max_downward.value), Some(p.deflection.max_upward.value)),
                 Err(_) => ("failed", None, None),
             };
             let speed = point.as_ref().map_or_else(|f| f.speed, |p| p.speed);
