@@ -37,7 +37,8 @@ impl Axis {
         Self::noted(caption, quantity, shown, "")
     }
 
-    /// The same with a note after the unit inside the brackets, e.g. "(mm, upward positive)".
+    /// The same with a note after the unit inside the brackets, e.g. "(mm, upward positive)"; a ratio's note in
+    /// place of its "-", e.g. "(−1 … 1)".
     pub fn noted(caption: impl Into<String>, quantity: &str, shown: Shown, note: &str) -> Self {
         let si = unit(quantity);
         let (unit, factor) = match (shown, si) {
@@ -50,8 +51,14 @@ impl Axis {
             (Shown::KilometresPerHour, "m/s") => ("km/h".to_string(), KMH),
             (Shown::KilometresPerHour, other) => panic!("{quantity} is not a speed ({other}): no km/h"),
         };
-        let (caption, note) = (caption.into(), if note.is_empty() { String::new() } else { format!(", {note}") });
-        Self { label: format!("{caption} ({unit}{note})"), caption, factor }
+        let caption = caption.into();
+        // A ratio's note is its unit's place: "(−1 … 1)", not "(-, −1 … 1)".
+        let inside = match (unit.as_str(), note) {
+            (_, "") => unit,
+            ("-", note) => note.to_string(),
+            (unit, note) => format!("{unit}, {note}"),
+        };
+        Self { label: format!("{caption} ({inside})"), caption, factor }
     }
 
     /// No axis label (a figure whose panels carry theirs).
@@ -90,6 +97,7 @@ mod tests {
             (Axis::new("arg α", "phase", Shown::Si), "arg α (°)", 1.0),
             (Axis::new("τ = x/L", "tau", Shown::Si), "τ = x/L (-)", 1.0),
             (Axis::noted("w", "deflection", Shown::Milli, "upward positive"), "w (mm, upward positive)", 1e3),
+            (Axis::noted("f/f_u", "mobilised_friction", Shown::Si, "−1 … 1"), "f/f_u (−1 … 1)", 1.0),
         ];
         for (axis, label, factor) in cases {
             assert_eq!((axis.label(), axis.factor()), (label, factor));

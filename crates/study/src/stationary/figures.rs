@@ -5,6 +5,7 @@
 use crate::stationary::output::{StationaryPoint, StationaryStudy};
 use report::plot::{PlotSpec, Series, Stroke};
 use scenario::axis::{Axis, Shown};
+use stationary::StationaryWave;
 
 impl StationaryStudy {
     /// The figures: with one speed the wave's deflection and moment along s; with several the peak deflections
@@ -19,62 +20,56 @@ impl StationaryStudy {
             self.law,
             self.load / 1e3
         );
-        if let [Some(wave)] = self.waves.as_slice() {
-            let mut shape =
-                PlotSpec::new("stationary-wave", title, &Axis::new("s = x − vt", "s", Shown::Si), &Axis::none());
-            shape.subtitle = format!("{subtitle}, v = {:.1} m/s", wave.speed);
-            let line = |label: &str, color: usize, values: Vec<(f64, f64)>| Series {
+        match self.waves.as_slice() {
+            [Some(wave)] => vec![self.wave_figure(wave, title, subtitle)],
+            _ => vec![self.peaks_figure(title, subtitle)],
+        }
+    }
+
+    /// One speed's wave: deflection, moment and — with ballast friction — the ballast's force along s, a panel each.
+    fn wave_figure(&self, wave: &StationaryWave, title: &str, subtitle: String) -> PlotSpec {
+        let s_axis = Axis::new("s = x − vt", "s", Shown::Si);
+        let mut shape = PlotSpec::new("stationary-wave", title, &s_axis, &Axis::none());
+        shape.subtitle = format!("{subtitle}, v = {:.1} m/s", wave.speed);
+        let panel = |heading: &str, y: Axis, label: &str, color: usize, values: &[f64]| {
+            let mut panel = PlotSpec::new("", heading, &s_axis, &y);
+            let points = wave.s.iter().zip(values).map(|(s, v)| (*s, v * y.factor())).collect();
+            panel.series.push(Series {
                 label: Some(label.into()),
                 color,
                 stroke: Stroke::Solid,
                 markers: false,
-                points: values,
-            };
-            let mut deflection = PlotSpec::new(
-                "",
+                points,
+            });
+            panel
+        };
+        shape.panels = vec![
+            panel(
                 "deflection from the settled rail",
-                &Axis::new("s = x − vt", "s", Shown::Si),
-                &Axis::new("w", "deflection", Shown::Milli),
-            );
-            deflection.series.push(line(
+                Axis::new("w", "deflection", Shown::Milli),
                 "W(s)",
                 1,
-                wave.s.iter().zip(&wave.deflection).map(|(s, w)| (*s, w * 1e3)).collect(),
+                &wave.deflection,
+            ),
+            panel("bending moment", Axis::new("M", "moment", Shown::Kilo), "EI W″(s)", 2, &wave.moment),
+        ];
+        if self.friction > 0.0 {
+            shape.panels.push(panel(
+                "ballast friction (flat at ±f_u where the rail slides)",
+                Axis::new("r", "force_per_length", Shown::Kilo),
+                "r(s)",
+                3,
+                &wave.friction_force,
             ));
-            let mut moment = PlotSpec::new(
-                "",
-                "bending moment",
-                &Axis::new("s = x − vt", "s", Shown::Si),
-                &Axis::new("M", "moment", Shown::Kilo),
-            );
-            moment.series.push(line(
-                "EI W″(s)",
-                2,
-                wave.s.iter().zip(&wave.moment).map(|(s, m)| (*s, m / 1e3)).collect(),
-            ));
-            shape.panels = vec![deflection, moment];
-            if self.friction > 0.0 {
-                let mut resistance = PlotSpec::new(
-                    "",
-                    "ballast friction (flat at ±f_u where the rail slides)",
-                    &Axis::new("s = x − vt", "s", Shown::Si),
-                    &Axis::new("r", "force_per_length", Shown::Kilo),
-                );
-                resistance.series.push(line(
-                    "r(s)",
-                    3,
-                    wave.s.iter().zip(&wave.friction_force).map(|(s, r)| (*s, r / 1e3)).collect(),
-                ));
-                shape.panels.push(resistance);
-            }
-            return vec![shape];
         }
-        let mut peaks = PlotSpec::new(
-            "stationary-peaks",
-            title,
-            &Axis::new("speed v", "speed", Shown::Si),
-            &Axis::new("peak deflection", "deflection", Shown::Milli),
-        );
+        shape
+    }
+
+    /// The peak deflections against speed, downward solid and upward dashed (converged speeds only).
+    fn peaks_figure(&self, title: &str, subtitle: String) -> PlotSpec {
+        let (speed, peak) =
+            (Axis::new("speed v", "speed", Shown::Si), Axis::new("peak deflection", "deflection", Shown::Milli));
+        let mut peaks = PlotSpec::new("stationary-peaks", title, &speed, &peak);
         let missing: Vec<f64> = self.points.iter().filter(|p| p.status != "converged").map(|p| p.speed).collect();
         peaks.subtitle = match (missing.first(), missing.last()) {
             (Some(a), Some(b)) => format!(
@@ -85,20 +80,21 @@ impl StationaryStudy {
             _ => subtitle,
         };
         let converged: Vec<&StationaryPoint> = self.points.iter().filter(|p| p.status == "converged").collect();
+        let mm = peak.factor();
         for (label, stroke, values) in [
             (
                 "downward",
                 Stroke::Solid,
-                converged.iter().filter_map(|p| Some((p.speed, p.deflection.max_downward?.value * 1e3))).collect(),
+                converged.iter().filter_map(|p| Some((p.speed, p.deflection.max_downward?.value * mm))).collect(),
             ),
             (
                 "upward",
                 Stroke::Dashed,
-                converged.iter().filter_map(|p| Some((p.speed, p.deflection.max_upward?.value * 1e3))).collect(),
+                converged.iter().filter_map(|p| Some((p.speed, p.deflection.max_upward?.value * mm))).collect(),
             ),
         ] {
             peaks.series.push(Series { label: Some(label.into()), color: 1, stroke, markers: true, points: values });
         }
-        vec![peaks]
+        peaks
     }
 }
