@@ -57,18 +57,22 @@ def test_a_train_on_the_ground_from_python():
         frictrack.stationary(site, speeds=[20.0], element_length=0.1)
 
 
-def test_ballast_friction_on_the_ground_from_python():
+def test_ballast_friction_on_the_ground_from_python(tmp_path):
     """The X2000 at Ledsgård at 185 km/h with ballast friction of 2 kN/m under the composite beam: the command line's
-    8.54 mm (8.78 without friction), the friction's own numbers with the point; on the two-beam track refused by
-    name."""
+    8.54 mm (8.78 without friction), the friction's own numbers with the point; on the two-beam track with a
+    tensionless ballast (friction and lift-off at one interface) refused by name."""
     site = ROOT / "examples" / "ledsgard" / "ledsgard.toml"
     point = frictrack.stationary(site, speeds=[185 / 3.6], distributed_friction=2000.0).points[0]
     assert point["status"] == "converged"
     assert abs(point["max_downward_deflection"]["value"] - 8.543e-3) < 1e-6
     assert point["friction"]["slipping_length"] > 100.0 and point["friction"]["friction_power"] > 0.0
-    two_beam = ROOT / "examples" / "ledsgard" / "ledsgard-two-beam.toml"
-    with pytest.raises(frictrack.InputError, match="friction.distributed"):
-        frictrack.stationary(two_beam, speeds=[20.0], distributed_friction=2000.0)
+    folder = ROOT / "examples" / "ledsgard"
+    (tmp_path / "x2000.csv").write_text((folder / "x2000.csv").read_text())
+    text = (folder / "ledsgard-two-beam.toml").read_text()
+    lifting = tmp_path / "lifting.toml"
+    lifting.write_text(text.replace("[embankment]", '[embankment]\ninterface = "tensionless"', 1))
+    with pytest.raises(frictrack.InputError, match="embankment.interface"):
+        frictrack.stationary(lifting, speeds=[20.0], distributed_friction=2000.0)
 
 
 def test_sleepers_lifting_off_the_ballast_from_python(tmp_path):

@@ -17,6 +17,12 @@
 //! I − Eᵀ(A + E H K Eᵀ)⁻¹ E H K (E the points' deflection DOFs of the local mesh). The sets are found by the Newton
 //! iteration and the continuation in the Jenkins stiffness of the Winkler solver, shared.
 //!
+//! On the two-beam track ([`FrictionTrack::RailOnEmbankment`]) the friction acts between the sleepers and the
+//! embankment, on d = u_s − u_e in place of W: its forces are pairs across the ballast (downward on the sleepers,
+//! upward on the embankment), each section's spread as a hat over the points' spacing, so W₁ becomes P/h (P the
+//! spectra's wave in d of a hat pair pressing the sleepers down, per N/m) and the rail's wave gains
+//! Σ_j P_r(s − s_j) h_j r_j / h (P_r its wave in the rail); the local operator is the rail with the sleepers' mass on the ballast's spring k_b/a.
+//!
 //! Beyond the window the ballast is taken to hold no force. Ahead the rail rests; behind the train the rail creeps
 //! back up as the ground recovers and slips at f_u along the whole window, a tail whose weight grows like ln L on a
 //! ground whose long waves are ln-soft (at Ledsgård the peak deepens by 0.02–0.03 % a doubling of the window
@@ -32,7 +38,7 @@ use crate::operator::MovingFrame;
 use crate::problem::{Domain, StationaryProblem};
 use crate::status::{ContactGuess, Convergence};
 use crate::toeplitz::Toeplitz;
-use analytic::ground::MovingSpectrum;
+use analytic::ground::{InterfaceSpectra, MovingSpectrum};
 use analytic::interpolation::read_equally_spaced;
 use fem_beam::distributed::Quadrature;
 use fem_beam::{Axle, Beam, DistributedFriction, Foundation};
@@ -103,11 +109,49 @@ impl GroundWindow {
     }
 }
 
+/// The track the ballast's friction acts in, and on what.
+#[derive(Debug, Clone, Copy)]
+pub enum FrictionTrack<'a> {
+    /// The composite beam: the friction acts on its deflection W against the ground beneath; one unit downward
+    /// force's spectrum at the speed (its wave W₁, m/N).
+    Composite(&'a MovingSpectrum),
+    /// The rail on sleepers over the embankment: the friction acts on d = u_s − u_e across the ballast; the track's
+    /// spectra at the speed, their pairs spread over the window's spacing.
+    RailOnEmbankment(&'a InterfaceSpectra),
+}
+
+impl FrictionTrack<'_> {
+    /// The friction's field at the points under the axles alone (W or d, m) and its wave per newton of friction
+    /// force at the points' spacings (m/N: W₁, or P/h for a hat pair of 1/h N/m pressing the sleepers down).
+    fn field(&self, axles: &[Axle], window: &GroundWindow) -> Result<(Vec<f64>, Vec<f64>)> {
+        let positions = window.positions();
+        match self {
+            Self::Composite(spectrum) => Ok((spectrum.wave_under(axles, &positions), window.at_spacings(spectrum))),
+            Self::RailOnEmbankment(spectra) => {
+                if (window.step - spectra.spacing).abs() > 1e-12 * window.step {
+                    let allowed = "must be the spacing the spectra's pairs are spread over";
+                    return Err(invalid("domain.element_length", window.step, allowed));
+                }
+                let per_newton = window.at_spacings(&spectra.pair_relative).iter().map(|p| p / window.step).collect();
+                Ok((spectra.relative.wave_under(axles, &positions), per_newton))
+            }
+        }
+    }
+
+    /// The rail's wave at the points under the axles alone (m) and per newton of friction force at the points'
+    /// spacings (m/N); None on the composite beam, whose rail is the field.
+    fn rail(&self, axles: &[Axle], window: &GroundWindow) -> Option<(Vec<f64>, Vec<f64>)> {
+        let Self::RailOnEmbankment(spectra) = self else { return None };
+        let per_newton = window.at_spacings(&spectra.pair_rail).iter().map(|p| p / window.step).collect();
+        Some((spectra.rail.wave_under(axles, &window.positions()), per_newton))
+    }
+}
+
 /// A train moving on a track on the ground with ballast friction.
 #[derive(Debug, Clone, Copy)]
 pub struct GroundFrictionProblem<'a> {
-    /// One unit downward force's spectrum on the ground at `speed` (its wave W₁, m/N).
-    pub spectrum: &'a MovingSpectrum,
+    /// The track and what the friction acts on.
+    pub track: FrictionTrack<'a>,
     /// The axles (offsets behind the first, m; forces downward, N).
     pub axles: &'a [Axle],
     /// v (m/s).
@@ -117,7 +161,8 @@ pub struct GroundFrictionProblem<'a> {
     /// f_u (N/m) > 0 (its sections are the window's points; `subdivisions` and `quadrature` are not used).
     pub friction_force: f64,
     /// The local operator's beam (the track's EI; its mass with the fitted co-vibrating mass) and Winkler
-    /// foundation: the Newton steps' preconditioner only — the wave does not depend on it.
+    /// foundation — on the two-beam track the rail with the sleepers' mass on the ballast's k_b/a: the Newton steps'
+    /// preconditioner only, the wave does not depend on it.
     pub local: (Beam, Foundation),
 }
 
@@ -126,9 +171,11 @@ pub struct GroundFrictionProblem<'a> {
 pub struct GroundFrictionWave {
     /// s_i (m).
     pub s: Vec<f64>,
-    /// W(s_i) (m, upward).
+    /// The rail's W(s_i) (m, upward).
     pub deflection: Vec<f64>,
-    /// r_i (N/m, upward on the ballast: the track feels −r_i).
+    /// On the two-beam track d(s_i) = u_s − u_e, what the friction acts on (m); None on the composite beam (W).
+    pub relative: Option<Vec<f64>>,
+    /// r_i (N/m, upward on the ballast: the track — the sleepers — feels −r_i).
     pub friction_force: Vec<f64>,
     /// The ballast length each point stands for (m).
     pub weights: Vec<f64>,
@@ -140,7 +187,7 @@ pub struct GroundFrictionWave {
     pub krylov_iterations: usize,
     /// The points.
     window: GroundWindow,
-    /// W₁(d·h) (m/N) for d = −(n − 1) … n − 1: the single load's wave at the points' spacings.
+    /// The rail's wave per newton of friction force at the points' spacings (m/N), d·h for d = −(n − 1) … n − 1.
     influence: Vec<f64>,
 }
 
@@ -152,23 +199,25 @@ impl GroundFrictionWave {
         forces.filter(|(_, r)| **r != 0.0).map(|((s, h), r)| Axle { offset: -s, force: h * r }).collect()
     }
 
-    /// The power the slipping ballast dissipates, f_u v Σ_slipping h_i |W′(s_i)| (W per rail line), W′ by central
-    /// differences between the points.
+    /// The power the slipping ballast dissipates, f_u v Σ_slipping h_i |W′(s_i)| (W per rail line; d′ on the
+    /// two-beam track), the slope by central differences between the points.
     pub fn dissipated_power(&self, friction_force: f64, speed: f64) -> f64 {
         let n = self.s.len();
+        let field = self.relative.as_ref().unwrap_or(&self.deflection);
         (0..n)
             .filter(|&i| self.slipping[i])
             .map(|i| {
                 let (a, b) = (i.saturating_sub(1), (i + 1).min(n - 1));
-                let slope = (self.deflection[b] - self.deflection[a]) / (self.s[b] - self.s[a]);
+                let slope = (field[b] - field[a]) / (self.s[b] - self.s[a]);
                 friction_force * speed * self.weights[i] * slope.abs()
             })
             .sum()
     }
 
-    /// W(s) − W_lin(s) (m): what the friction forces carry at any s of the window, Σ_j W₁(s − s_j) h_j r_j with W₁
-    /// read between its values at the points' spacings by the cubic through the four nearest (the points' own
-    /// values exact; between them ~h⁴|W₁⁗|/40, and h³/(20 EI) per newton beside s_j, where W₁‴ jumps).
+    /// W(s) − W_lin(s) (m): what the friction forces carry into the rail at any s of the window, Σ_j W₁(s − s_j) h_j
+    /// r_j (P_r/h in place of W₁ on the two-beam track) read between its values at the points' spacings by the cubic
+    /// through the four nearest (the points' own values exact; between them ~h⁴|W₁⁗|/40, and h³/(20 EI) per newton
+    /// beside s_j, where W₁‴ jumps).
     pub fn carried(&self, s: f64) -> f64 {
         self.window.superposed(&self.influence, |j| self.weights[j] * self.friction_force[j], s)
     }
@@ -224,10 +273,12 @@ impl GroundFrame {
             domain,
         };
         let mut local = MovingFrame::new(&local)?;
-        let positions = problem.window.positions();
-        let linear = problem.spectrum.wave_under(problem.axles, &positions);
-        let diagonals = problem.window.at_spacings(problem.spectrum);
-        let scale = linear.iter().fold(0.0f64, |m, w| m.max(w.abs())).max(f64::MIN_POSITIVE);
+        let (linear, diagonals) = problem.track.field(problem.axles, &problem.window)?;
+        // The rail's peak sets the Jenkins give and the residual's scale: on the two-beam track d is ~30× smaller
+        // than the rail's deflection it changes, and holding it to 1e-6 of itself cost 5× the Newton steps.
+        let peak = |values: &[f64]| values.iter().fold(0.0f64, |m, w| m.max(w.abs()));
+        let rail = problem.track.rail(problem.axles, &problem.window);
+        let scale = rail.map_or_else(|| peak(&linear), |(w, _)| peak(&w)).max(f64::MIN_POSITIVE);
         if let Some(sections) = local.friction.as_mut() {
             sections.stiffness = sections.stiffness.min(problem.friction_force / (JENKINS_GIVE * scale));
         }
@@ -333,15 +384,25 @@ pub fn solve_on_ground(
     };
     let state = frame.sections().march(&GroundFrame::dofs(&w));
     let sections = &frame.sections().sections;
+    let weights: Vec<f64> = sections.iter().map(|s| s.weight).collect();
+    let (deflection, relative, influence) = match problem.track.rail(problem.axles, &problem.window) {
+        None => (w, None, frame.diagonals),
+        Some((linear, per_newton)) => {
+            let weighted: Vec<f64> = weights.iter().zip(&state.force).map(|(h, r)| h * r).collect();
+            let carried = Toeplitz::new(&per_newton).apply(&weighted);
+            (linear.iter().zip(&carried).map(|(l, c)| l + c).collect(), Some(w), per_newton)
+        }
+    };
     Ok(GroundFrictionWave {
         s: problem.window.positions(),
-        weights: sections.iter().map(|s| s.weight).collect(),
+        weights,
         slipping: state.states.iter().map(|s| matches!(s, crate::friction::SectionState::Slipping { .. })).collect(),
         friction_force: state.force,
-        deflection: w,
+        deflection,
+        relative,
         convergence: with_iterations(status, spent),
         krylov_iterations: frame.krylov.get(),
         window: problem.window,
-        influence: frame.diagonals,
+        influence,
     })
 }

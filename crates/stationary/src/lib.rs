@@ -30,7 +30,7 @@ pub mod wave;
 
 pub use control::Control;
 pub use error::{Result, StationaryError};
-pub use ground::{GroundFrictionProblem, GroundFrictionWave, GroundWindow, solve_on_ground};
+pub use ground::{FrictionTrack, GroundFrictionProblem, GroundFrictionWave, GroundWindow, solve_on_ground};
 pub use ground_contact::{GroundContactProblem, GroundContactWave, solve_with_lift_off};
 pub use problem::{Domain, StationaryProblem};
 pub use refine::solve_halved;

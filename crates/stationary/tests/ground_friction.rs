@@ -8,8 +8,8 @@ mod common;
 use analytic::ground::GroundedBeam;
 use fem_beam::{Axle, Beam, DistributedFriction, Foundation};
 use stationary::{
-    ContactGuess, Control, Domain, GroundFrictionProblem, GroundFrictionWave, GroundWindow, StationaryProblem, solve,
-    solve_on_ground,
+    ContactGuess, Control, Domain, FrictionTrack, GroundFrictionProblem, GroundFrictionWave, GroundWindow,
+    StationaryProblem, solve, solve_on_ground,
 };
 
 /// The reference rail on its Winkler soil with 5 % of critical damping.
@@ -27,7 +27,7 @@ fn on_line_support(beam: &Beam, foundation: &Foundation, speed: f64, force: f64,
     let spectrum = grounded.spectrum(speed).unwrap();
     let axles = [Axle { offset: 0.0, force }];
     let problem = GroundFrictionProblem {
-        spectrum: &spectrum,
+        track: FrictionTrack::Composite(&spectrum),
         axles: &axles,
         speed,
         window: GroundWindow { first: -60.0, step: 0.25, count: 481 },
@@ -143,7 +143,7 @@ fn on_the_ground_the_wave_converges_as_the_points_are_refined() {
     let deepest = |step: f64| {
         let count = (160.0 / step).round() as usize + 1;
         let problem = GroundFrictionProblem {
-            spectrum: &spectrum,
+            track: FrictionTrack::Composite(&spectrum),
             axles: &axles,
             speed,
             window: GroundWindow { first: -100.0, step, count },

@@ -7,7 +7,7 @@
 mod common;
 
 use analytic::ground::{Embankment, GroundedBeam, InterfaceSpectra, StripGround, TrackOnEmbankment};
-use fem_beam::sleepers::{Layer, Sleepers};
+use fem_beam::sleepers::Sleepers;
 use fem_beam::{Axle, Beam, DistributedFriction, Foundation, FoundationLaw, GRAVITY};
 use stationary::{
     ContactGuess, Control, Domain, GroundContactProblem, GroundContactWave, GroundWindow, StationaryProblem, solve,
@@ -47,27 +47,9 @@ fn lift_off<S: analytic::ground::LineSupport + ?Sized>(
 /// zone's first and last points to one spacing (the mesh places an edge between its sections, the points at one).
 #[test]
 fn over_a_rigid_embankment_it_is_the_tensionless_winkler_wave() {
-    let beam = Beam::default();
-    let mut foundation = Foundation { law: FoundationLaw::Tensionless, ..Foundation::default() };
-    foundation.damping = 0.05 * foundation.critical_damping(&beam);
-    let spacing = 0.6;
-    let sleepers = Sleepers {
-        spacing,
-        mass: 0.0,
-        pad: Layer { stiffness: 1e14, damping: 0.0, loss_factor: 0.0 },
-        ballast: Layer {
-            stiffness: foundation.stiffness * spacing,
-            damping: foundation.damping * spacing,
-            loss_factor: 0.0,
-        },
-        ..Sleepers::default()
-    };
-    let rigid = Foundation::linear(1e13, 0.0);
-    let track = TrackOnEmbankment {
-        sleepers: &sleepers,
-        embankment: Embankment { bending_stiffness: 1.0, mass_per_length: 0.0, loss_factor: 0.0 },
-        ground: &rigid,
-    };
+    let tensionless = Foundation { law: FoundationLaw::Tensionless, ..Foundation::default() };
+    let (beam, foundation, sleepers, embankment, rigid) = common::rail_on_rigid_embankment(tensionless);
+    let track = TrackOnEmbankment { sleepers: &sleepers, embankment, ground: &rigid };
     let force = 80e3;
     let preload = -beam.mass_per_length() * GRAVITY / foundation.stiffness;
     let mut lifted_somewhere = false;

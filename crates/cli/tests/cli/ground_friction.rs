@@ -58,16 +58,11 @@ fn a_curve_with_friction_is_its_speeds_one_by_one() {
     assert!((last - alone).abs() <= 1e-5 * alone, "{last} mm in the curve, {alone} mm alone");
 }
 
-/// Ballast friction on the two-beam track (its ballast sits between the sleepers and the embankment) is refused by
-/// key, exit code 2: built under the composite beam only.
+/// A negative friction on the ground is refused by key, exit code 2 (on the two-beam track friction is built:
+/// `ground_two_beam_friction.rs`).
 #[test]
-fn friction_on_the_two_beam_track_is_refused() {
+fn a_negative_friction_on_the_ground_is_refused() {
     let folder = temporary_folder("ground-friction-refusals");
-    let site = ledsgard("ledsgard-two-beam.toml");
-    let out = frictrack(&["stationary", &site, "--speed", "70km/h", "--distributed-friction", "2000"]);
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(2), "{stderr}");
-    assert!(stderr.contains("friction.distributed"), "{stderr}");
     let text = std::fs::read_to_string(ledsgard("ledsgard.toml"))
         .unwrap()
         .replace("\"x2000.csv\"", &format!("{:?}", ledsgard("x2000.csv")));

@@ -6,7 +6,7 @@ use super::{frictrack, json, temporary_folder, write_file};
 
 /// The Ledsgård two-beam scenario with `extra` lines after `[embankment]`'s and `[sleepers]`'s, written beside its
 /// train.
-fn two_beam(folder: &std::path::Path, embankment: &str, sleepers: &str) -> String {
+pub(super) fn two_beam(folder: &std::path::Path, embankment: &str, sleepers: &str) -> String {
     let examples = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/ledsgard");
     std::fs::copy(examples.join("x2000.csv"), folder.join("x2000.csv")).unwrap();
     let text = std::fs::read_to_string(examples.join("ledsgard-two-beam.toml")).unwrap();

@@ -10,6 +10,7 @@ mod figures;
 mod ground;
 mod ground_friction;
 mod ground_lift_off;
+mod ground_two_beam_friction;
 mod ground_wave;
 mod receptance;
 mod run_out;

@@ -4,9 +4,11 @@
 //! speed of the track on the ground ([`numbers`]); the steady response over speeds and its peak ([`speeds`]); the
 //! report, tables and figures ([`text`]); a train's steady wave on the ground (`frictrack stationary`, [`wave`]; one speed's in [`wave_point`]) and
 //! its report, tables and figures ([`wave_text`]); what the beam stands on, the strip or the two-beam track
-//! ([`support`]); the sleepers lifting off the ballast of the two-beam track ([`lift_off`]); a measured record set beside it ([`measured`], its numbers in [`comparison`]).
+//! ([`support`]); ballast friction under the composite beam or between the sleepers and the embankment
+//! (`friction`); the sleepers lifting off the ballast of the two-beam track ([`lift_off`]); a measured record set beside it ([`measured`], its numbers in [`comparison`]).
 
 pub mod comparison;
+pub(crate) mod friction;
 pub mod lift_off;
 pub mod measured;
 pub mod numbers;

@@ -8,13 +8,14 @@
 //! tensionless ballast on the two-beam track the sleepers' lift-off is solved at each speed ([`crate::ground::lift_off`]).
 
 use crate::ground::comparison::Comparison;
+use crate::ground::friction::{Friction, FrictionOn};
 use crate::ground::lift_off::LiftOff;
 use crate::ground::support::Support;
 pub use crate::ground::wave_point::{
     BallastAlong, FrictionPoint, GroundWave, GroundWavePoint, LiftOffPoint, WAVE_STEP, WaveWindow,
 };
 use crate::ground::wave_point::{summary, wave_of};
-use analytic::ground::{GroundedBeam, LineSupport, MovingSpectrum, StripGround, TrackOnEmbankment};
+use analytic::ground::{GroundedBeam, StripGround, TrackOnEmbankment};
 use fem_beam::Train;
 use rayon::prelude::*;
 use scenario::Scenario;
@@ -64,24 +65,23 @@ impl GroundWaveStudy {
         let friction = friction_on(scenario, &track)?;
         let (mut points, mut waves) = (Vec::with_capacity(speeds.len()), Vec::with_capacity(speeds.len()));
         let interrupted = || stop.is_some_and(|s| s.load(std::sync::atomic::Ordering::Relaxed));
-        let lifting = match &track {
-            GroundTrack::RailOnEmbankment { sleepers, embankment, interface: Interface::Tensionless { preload } } => {
-                Some((TrackOnEmbankment { sleepers, embankment: *embankment, ground: &strip }, *preload))
+        let on_embankment = match &track {
+            GroundTrack::RailOnEmbankment { sleepers, embankment, .. } => {
+                Some(TrackOnEmbankment { sleepers, embankment: *embankment, ground: &strip })
+            }
+            GroundTrack::Composite => None,
+        };
+        let lift_off = match (&track, &on_embankment) {
+            (GroundTrack::RailOnEmbankment { interface: Interface::Tensionless { preload }, .. }, Some(on)) => {
+                let grounded = GroundedBeam::new(&beam, on).map_err(StudyError::from)?;
+                Some(LiftOff { grounded, preload: *preload, stop })
             }
             _ => None,
         };
-        match (friction, &lifting) {
+        match friction {
             // Linear, or lifting from the linear wave: the speeds are independent, so as many run at once as there
             // are threads (a spectrum's last rounds of sampling leave threads idle that a second speed takes up).
-            (None, _) => {
-                let lift_off = match &lifting {
-                    Some((on, preload)) => Some(LiftOff {
-                        grounded: GroundedBeam::new(&beam, on).map_err(StudyError::from)?,
-                        preload: *preload,
-                        stop,
-                    }),
-                    None => None,
-                };
+            None => {
                 let at = |speed: f64| -> Result<(GroundWave, GroundWavePoint)> {
                     if let Some(lift_off) = &lift_off {
                         return lift_off.wave(&train, speed, &positions, window);
@@ -105,15 +105,18 @@ impl GroundWaveStudy {
                 }
             }
             // With friction each speed starts from the last one's wave.
-            (Some(force), _) => {
+            Some(force) => {
                 let mut guess = stationary::ContactGuess::default();
-                let on = Friction { grounded: &grounded, beam: &beam, force, stop };
+                let track = match &on_embankment {
+                    Some(on) => FrictionOn::RailOnEmbankment(GroundedBeam::new(&beam, on).map_err(StudyError::from)?),
+                    None => FrictionOn::Composite(&grounded),
+                };
+                let on = Friction { track, beam: &beam, force, stop };
                 for &speed in speeds {
                     if interrupted() {
                         return Err(StudyError::Interrupted);
                     }
-                    let spectrum = grounded.spectrum(speed).map_err(StudyError::from)?;
-                    let (wave, point) = on.wave(&spectrum, &train, speed, &positions, window, &mut guess)?;
+                    let (wave, point) = on.wave(&train, speed, &positions, window, &mut guess)?;
                     points.push(point);
                     waves.push(wave);
                     progress(points.len());
@@ -138,72 +141,19 @@ pub fn cost(scenario: &Scenario, speeds: usize, threads: usize) -> runner::cost:
     runner::cost::Estimate::ground_waves(linear, nonlinear, threads)
 }
 
-/// The ballast's f_u (N/m) of `scenario` on `track`, if it has any: on the composite beam only (the two-beam track's
-/// ballast friction, between the sleepers and the embankment, is refused by key).
+/// The ballast's f_u (N/m) of `scenario` on `track`, if it has any: under the composite beam, or between the
+/// sleepers and the embankment of the two-beam track — there not together with a tensionless ballast (refused by
+/// key: the two laws at one interface are not built).
 fn friction_on(scenario: &Scenario, track: &GroundTrack) -> Result<Option<f64>> {
     let Some(distributed) = &scenario.friction.distributed else { return Ok(None) };
     let force = distributed.friction()?.force_per_length;
-    if force > 0.0 && matches!(track, GroundTrack::RailOnEmbankment { .. }) {
+    if force > 0.0 && matches!(track, GroundTrack::RailOnEmbankment { interface: Interface::Tensionless { .. }, .. }) {
         return Err(invalid(
-            "friction.distributed",
-            "given",
-            "ballast friction on the ground is solved under the composite beam; on the rail-on-embankment track \
-             (an [embankment]) it is not built yet: leave it out, or model the track as one composite beam",
+            "embankment.interface",
+            "tensionless",
+            "is solved without ballast friction (friction.distributed): friction and lift-off at one interface are \
+             not built yet — leave one of them out",
         ));
     }
     Ok((force > 0.0).then_some(force))
-}
-
-/// The wave with ballast friction of strength `force` (N/m) under the composite beam on the ground.
-struct Friction<'a> {
-    grounded: &'a GroundedBeam<'a, dyn LineSupport + 'a>,
-    beam: &'a fem_beam::Beam,
-    force: f64,
-    stop: Option<&'a std::sync::atomic::AtomicBool>,
-}
-
-impl Friction<'_> {
-    /// The wave at `speed` on the window's points (`positions`, spaced [`WAVE_STEP`]), from `guess` (the last
-    /// speed's) and leaving this one there; a wave whose iteration did not converge is an error naming the speed.
-    fn wave(
-        &self,
-        spectrum: &MovingSpectrum,
-        train: &Train,
-        speed: f64,
-        positions: &[f64],
-        window: WaveWindow,
-        guess: &mut stationary::ContactGuess,
-    ) -> Result<(GroundWave, GroundWavePoint)> {
-        let (foundation, mass) = self.grounded.local_fit(spectrum, speed).map_err(StudyError::from)?;
-        let mut local = *self.beam;
-        local.density = mass / local.area;
-        let problem = stationary::GroundFrictionProblem {
-            spectrum,
-            axles: &train.axles,
-            speed,
-            window: stationary::GroundWindow { first: positions[0], step: WAVE_STEP, count: positions.len() },
-            friction_force: self.force,
-            local: (local, foundation),
-        };
-        let control = stationary::Control::new(self.stop);
-        let solved = stationary::solve_on_ground(&problem, guess, &control).map_err(StudyError::from)?;
-        if let stationary::Convergence::NotConverged { iterations, residual } = solved.convergence {
-            return Err(StudyError::Beam(fem_beam::FemError::NotConverged {
-                what: format!("the wave with ballast friction at {speed} m/s ({iterations} Newton iterations)"),
-                reached: residual,
-                asked: stationary::newton::ROUND_OFF,
-            }));
-        }
-        let wave = GroundWave { speed, s: positions.to_vec(), deflection: solved.deflection.clone(), ballast: None };
-        let mut point = summary(spectrum, train, &wave, window, &|s| solved.carried(s));
-        let slipping_length = solved.slipping.iter().zip(&solved.weights).filter(|(s, _)| **s).map(|(_, h)| h).sum();
-        point.friction = Some(FrictionPoint {
-            newton_iterations: solved.convergence.iterations(),
-            krylov_iterations: solved.krylov_iterations,
-            friction_power: solved.dissipated_power(self.force, speed),
-            slipping_length,
-            rear_force_ratio: solved.end_forces(self.force).0,
-        });
-        Ok((wave, point))
-    }
 }
