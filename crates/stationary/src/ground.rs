@@ -21,7 +21,8 @@
 //! embankment, on d = u_s − u_e in place of W: its forces are pairs across the ballast (downward on the sleepers,
 //! upward on the embankment), each section's spread as a hat over the points' spacing, so W₁ becomes P/h (P the
 //! spectra's wave in d of a hat pair pressing the sleepers down, per N/m) and the rail's wave gains
-//! Σ_j P_r(s − s_j) h_j r_j / h (P_r its wave in the rail); the local operator is the rail with the sleepers' mass on the ballast's spring k_b/a.
+//! Σ_j P_r(s − s_j) h_j r_j / h (P_r its wave in the rail); the local operator is the rail with the sleepers' mass
+//! on the ballast's spring k_b/a.
 //!
 //! Beyond the window the ballast is taken to hold no force. Ahead the rail rests; behind the train the rail creeps
 //! back up as the ground recovers and slips at f_u along the whole window, a tail whose weight grows like ln L on a
@@ -138,12 +139,16 @@ impl FrictionTrack<'_> {
         }
     }
 
-    /// The rail's wave at the points under the axles alone (m) and per newton of friction force at the points'
-    /// spacings (m/N); None on the composite beam, whose rail is the field.
-    fn rail(&self, axles: &[Axle], window: &GroundWindow) -> Option<(Vec<f64>, Vec<f64>)> {
+    /// The rail's wave at the points under the axles alone (m); None on the composite beam, whose rail is the field.
+    fn rail_under(&self, axles: &[Axle], window: &GroundWindow) -> Option<Vec<f64>> {
         let Self::RailOnEmbankment(spectra) = self else { return None };
-        let per_newton = window.at_spacings(&spectra.pair_rail).iter().map(|p| p / window.step).collect();
-        Some((spectra.rail.wave_under(axles, &window.positions()), per_newton))
+        Some(spectra.rail.wave_under(axles, &window.positions()))
+    }
+
+    /// The rail's wave per newton of friction force at the points' spacings (m/N: P_r/h); None on the composite beam.
+    fn rail_per_newton(&self, window: &GroundWindow) -> Option<Vec<f64>> {
+        let Self::RailOnEmbankment(spectra) = self else { return None };
+        Some(window.at_spacings(&spectra.pair_rail).iter().map(|p| p / window.step).collect())
     }
 }
 
@@ -277,8 +282,8 @@ impl GroundFrame {
         // The rail's peak sets the Jenkins give and the residual's scale: on the two-beam track d is ~30× smaller
         // than the rail's deflection it changes, and holding it to 1e-6 of itself cost 5× the Newton steps.
         let peak = |values: &[f64]| values.iter().fold(0.0f64, |m, w| m.max(w.abs()));
-        let rail = problem.track.rail(problem.axles, &problem.window);
-        let scale = rail.map_or_else(|| peak(&linear), |(w, _)| peak(&w)).max(f64::MIN_POSITIVE);
+        let rail = problem.track.rail_under(problem.axles, &problem.window);
+        let scale = peak(rail.as_deref().unwrap_or(&linear)).max(f64::MIN_POSITIVE);
         if let Some(sections) = local.friction.as_mut() {
             sections.stiffness = sections.stiffness.min(problem.friction_force / (JENKINS_GIVE * scale));
         }
@@ -385,7 +390,9 @@ pub fn solve_on_ground(
     let state = frame.sections().march(&GroundFrame::dofs(&w));
     let sections = &frame.sections().sections;
     let weights: Vec<f64> = sections.iter().map(|s| s.weight).collect();
-    let (deflection, relative, influence) = match problem.track.rail(problem.axles, &problem.window) {
+    let rail =
+        problem.track.rail_under(problem.axles, &problem.window).zip(problem.track.rail_per_newton(&problem.window));
+    let (deflection, relative, influence) = match rail {
         None => (w, None, frame.diagonals),
         Some((linear, per_newton)) => {
             let weighted: Vec<f64> = weights.iter().zip(&state.force).map(|(h, r)| h * r).collect();
