@@ -114,6 +114,13 @@ fn check_on_the_ground(path: &std::path::Path, scenario: &Scenario) -> Result<()
     let (beam, strip, track) = scenario.ground_track()?;
     let title = if scenario.title.is_empty() { String::new() } else { format!(" \"{}\"", scenario.title) };
     let layers = strip.profile.layers.len();
+    let friction = match study::ground::wave::friction_on(scenario, &track)? {
+        Some(force) => match track {
+            scenario::ground::GroundTrack::Composite => format!("; ballast friction {:.1} kN/m", force / 1e3),
+            _ => format!("; ballast friction {:.1} kN/m between the sleepers and the embankment", force / 1e3),
+        },
+        None => String::new(),
+    };
     let (what, commands) = match track {
         scenario::ground::GroundTrack::Composite => (
             format!("composite beam EI = {:.3e} N·m², {:.0} kg/m", beam.bending_stiffness(), beam.mass_per_length()),
@@ -140,8 +147,8 @@ fn check_on_the_ground(path: &std::path::Path, scenario: &Scenario) -> Result<()
         ),
     };
     println!(
-        "{}{title}: ok — {what} on a {} m strip of a layered ground ({layers} layer{} on a half-space of C_s {} m/s); \
-         {commands}",
+        "{}{title}: ok — {what} on a {} m strip of a layered ground ({layers} layer{} on a half-space of C_s {} m/s)\
+         {friction}; {commands}",
         path.display(),
         strip.width,
         if layers == 1 { "" } else { "s" },

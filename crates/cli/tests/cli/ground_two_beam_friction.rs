@@ -49,9 +49,16 @@ fn friction_between_the_sleepers_and_the_embankment_barely_moves_the_rail() {
 fn friction_with_a_tensionless_ballast_is_refused_by_key() {
     let folder = temporary_folder("ground-two-beam-friction-bad");
     let site = one_load(&folder, "interface = \"tensionless\"", 2000.0);
-    let out = frictrack(&["stationary", &site, "--speed", "185km/h"]);
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(2), "{stderr}");
-    assert!(stderr.contains("embankment.interface") && stderr.contains("friction"), "{stderr}");
+    for args in [vec!["stationary", &site, "--speed", "185km/h"], vec!["check", &site]] {
+        let out = frictrack(&args);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
+        assert!(stderr.contains("embankment.interface") && stderr.contains("friction"), "{stderr}");
+    }
+    // Without lift-off `check` names the friction and where it acts.
+    let site = one_load(&folder, "", 2000.0);
+    let out = frictrack(&["check", &site]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(stdout.contains("ballast friction 2.0 kN/m between the sleepers and the embankment"), "{stdout}");
     let _ = std::fs::remove_dir_all(&folder);
 }

@@ -144,7 +144,7 @@ pub fn cost(scenario: &Scenario, speeds: usize, threads: usize) -> runner::cost:
 /// The ballast's f_u (N/m) of `scenario` on `track`, if it has any: under the composite beam, or between the
 /// sleepers and the embankment of the two-beam track — there not together with a tensionless ballast (refused by
 /// key: the two laws at one interface are not built).
-fn friction_on(scenario: &Scenario, track: &GroundTrack) -> Result<Option<f64>> {
+pub fn friction_on(scenario: &Scenario, track: &GroundTrack) -> Result<Option<f64>> {
     let Some(distributed) = &scenario.friction.distributed else { return Ok(None) };
     let force = distributed.friction()?.force_per_length;
     if force > 0.0 && matches!(track, GroundTrack::RailOnEmbankment { interface: Interface::Tensionless { .. }, .. }) {
