@@ -276,10 +276,11 @@ def stationary(scenario: ScenarioLike = None, speeds: Sequence[float] = (),
     """The stationary wave of the scenario's load on the infinite track at ``speeds`` (m/s, by continuation in
     order) on a moving domain ``domain`` = (behind, ahead) m of ``element_length`` m elements (grown where needed;
     by default those of ``frictrack stationary``: 60 m each way, 0.25 m elements);
-    linear, tensionless and bilinear soils, ballast friction. On a ``[ground]`` the composite beam's steady wave under
+    linear, tensionless and bilinear soils, ballast friction. On a ``[ground]`` the track's steady wave under
     the scenario's train (or load), a Fourier integral with no mesh: ``domain`` = (behind the last axle, ahead of the
     first) m, 60 m each way by default, ``element_length`` refused, ballast friction (``distributed_friction``, N/m)
-    under the composite beam solved with the ground as a non-local operator; ``measured`` (a CSV of ``x_m,displacement_mm``,
+    under the composite beam or between the two-beam track's sleepers and embankment, solved with the ground as a
+    non-local operator; ``measured`` (a CSV of ``x_m,displacement_mm``,
     upward positive) sets a record beside the wave at one speed, as ``--measured`` does. Overrides and ``progress``
     (the fraction of speeds done) as for :func:`run`; Ctrl-C stops it before its next speed."""
     kind, text = _source(scenario)

@@ -4,8 +4,9 @@
 //! waves, W(s) = Σ_j P_j W₁(s + d_j) — under and behind the train,
 //! its peaks (refined by golden section) and the upward wake behind it above the ground's wave speeds. Deflections in
 //! m (upward positive, peaks as magnitudes), positions s = x − x_head in m (positive ahead of the first axle). With
-//! ballast friction under the composite beam each speed's wave is a Newton iteration from the last speed's; with a
-//! tensionless ballast on the two-beam track the sleepers' lift-off is solved at each speed ([`crate::ground::lift_off`]).
+//! ballast friction (under the composite beam, or between the two-beam track's sleepers and embankment) each speed's
+//! wave is a Newton iteration from the last speed's (`friction`); with a tensionless ballast on the
+//! two-beam track the sleepers' lift-off is solved at each speed ([`crate::ground::lift_off`]).
 
 use crate::ground::comparison::Comparison;
 use crate::ground::friction::{Friction, FrictionOn};
@@ -41,7 +42,8 @@ pub struct GroundWaveStudy {
     pub waves: Vec<GroundWave>,
     /// A measured record beside the wave (one speed only), where one was given.
     pub comparison: Option<Comparison>,
-    /// The ballast's friction f_u (N/m) under the composite beam, where it has any.
+    /// The ballast's friction f_u (N/m), where it has any: under the composite beam, or between the sleepers and the
+    /// embankment.
     pub friction: Option<f64>,
 }
 

@@ -89,7 +89,8 @@ pub struct GroundWaveFile<'a> {
     pub train: &'a str,
     /// The axles as the beam carries them: offset behind the first (m) and force (N, downward).
     pub axles: Vec<AxleRow>,
-    /// The ballast's friction f_u (N/m) under the composite beam, where it has any (each point then says how its
+    /// The ballast's friction f_u (N/m), where it has any — under the composite beam, or between the two-beam track's
+    /// sleepers and embankment (each point then says how its
     /// wave was found and what the ballast takes, under `friction`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub force_per_length: Option<f64>,
