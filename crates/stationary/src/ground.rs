@@ -90,6 +90,15 @@ impl GroundWindow {
         Ok(())
     }
 
+    /// The step is the spacing `spectra`'s pairs are spread over (`domain.element_length`, to 1e-12 of itself).
+    pub(crate) fn check_pair_spacing(&self, spectra: &InterfaceSpectra) -> Result<()> {
+        if (self.step - spectra.spacing).abs() > 1e-12 * self.step {
+            let allowed = "must be the spacing the spectra's pairs are spread over";
+            return Err(invalid("domain.element_length", self.step, allowed));
+        }
+        Ok(())
+    }
+
     /// Σ_j K(s − s_j) a_j over the points for the amplitudes `amplitude(j)` (skipping zeros), with K given at the
     /// points' spacings (`kernel`, from [`Self::at_spacings`]) and read between them by the cubic through the four
     /// nearest (the points' own values exact).
@@ -129,10 +138,7 @@ impl FrictionTrack<'_> {
         match self {
             Self::Composite(spectrum) => Ok((spectrum.wave_under(axles, &positions), window.at_spacings(spectrum))),
             Self::RailOnEmbankment(spectra) => {
-                if (window.step - spectra.spacing).abs() > 1e-12 * window.step {
-                    let allowed = "must be the spacing the spectra's pairs are spread over";
-                    return Err(invalid("domain.element_length", window.step, allowed));
-                }
+                window.check_pair_spacing(spectra)?;
                 let per_newton = window.at_spacings(&spectra.pair_relative).iter().map(|p| p / window.step).collect();
                 Ok((spectra.relative.wave_under(axles, &positions), per_newton))
             }

@@ -121,14 +121,7 @@ struct ContactFrame {
 impl ContactFrame {
     fn new(problem: &GroundContactProblem<'_>) -> Result<Self> {
         problem.window.validate()?;
-        let step = problem.window.step;
-        if (step - problem.spectra.spacing).abs() > 1e-12 * step {
-            return Err(invalid(
-                "domain.element_length",
-                step,
-                "must be the spacing the spectra's pairs are spread over",
-            ));
-        }
+        problem.window.check_pair_spacing(problem.spectra)?;
         if !(problem.ballast_stiffness.is_finite() && problem.ballast_stiffness > 0.0) {
             return Err(invalid(
                 "ballast_stiffness",

@@ -6,10 +6,9 @@
 mod common;
 
 use analytic::ground::GroundedBeam;
-use fem_beam::{Axle, Beam, DistributedFriction, Foundation};
+use fem_beam::{Axle, Beam, Foundation};
 use stationary::{
-    ContactGuess, Control, Domain, FrictionTrack, GroundFrictionProblem, GroundFrictionWave, GroundWindow,
-    StationaryProblem, solve, solve_on_ground,
+    ContactGuess, Control, FrictionTrack, GroundFrictionProblem, GroundFrictionWave, GroundWindow, solve_on_ground,
 };
 
 /// The reference rail on its Winkler soil with 5 % of critical damping.
@@ -55,17 +54,7 @@ fn on_a_winkler_line_support_it_is_the_finite_element_wave() {
         let force = 80e3;
         let ground = on_line_support(&beam, &foundation, speed, force, friction);
         assert!(ground.convergence.is_converged(), "{:?}", ground.convergence);
-        let fe = solve(&StationaryProblem {
-            beam,
-            foundation,
-            load: force,
-            speed,
-            self_weight: false,
-            friction: DistributedFriction { force_per_length: friction, subdivisions: 1, ..Default::default() },
-            domain: Domain { behind: 60.0, ahead: 60.0, element_length: 0.25 },
-        })
-        .unwrap();
-        assert!(fe.convergence.is_converged(), "{:?}", fe.convergence);
+        let fe = common::fe_friction_wave((beam, foundation), (force, speed, friction), 0.25);
         let peak = largest(&fe.deflection);
         let mut compared = 0;
         for (s, w) in ground.s.iter().zip(&ground.deflection).filter(|(s, _)| **s >= -50.0) {

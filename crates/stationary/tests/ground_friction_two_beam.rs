@@ -7,11 +7,8 @@
 mod common;
 
 use analytic::ground::{GroundedBeam, TrackOnEmbankment};
-use fem_beam::{Axle, DistributedFriction, Foundation};
-use stationary::{
-    ContactGuess, Control, Domain, FrictionTrack, GroundFrictionProblem, GroundWindow, StationaryProblem, solve,
-    solve_on_ground,
-};
+use fem_beam::{Axle, Foundation};
+use stationary::{ContactGuess, Control, FrictionTrack, GroundFrictionProblem, GroundWindow, solve_on_ground};
 
 /// Below and above the critical speed (~170 m/s on this track), 2 and 5 kN/m, on 0.1 m points and elements: the
 /// rail's deflections agree with the finite elements' to 2e-4 of the peak (observed 1.5e-5 and 1.1e-4; the
@@ -41,17 +38,7 @@ fn over_a_rigid_embankment_it_is_the_finite_element_friction_wave() {
         };
         let ground = solve_on_ground(&problem, &mut ContactGuess::default(), &Control::new(None)).unwrap();
         assert!(ground.convergence.is_converged(), "{:?}", ground.convergence);
-        let fe = solve(&StationaryProblem {
-            beam,
-            foundation,
-            load: force,
-            speed,
-            self_weight: false,
-            friction: DistributedFriction { force_per_length: friction, subdivisions: 1, ..Default::default() },
-            domain: Domain { behind: 60.0, ahead: 60.0, element_length: step },
-        })
-        .unwrap();
-        assert!(fe.convergence.is_converged(), "{:?}", fe.convergence);
+        let fe = common::fe_friction_wave((beam, foundation), (force, speed, friction), step);
         let peak = fe.deflection.iter().fold(0.0f64, |m, w| m.max(w.abs()));
         let relative = ground.relative.as_ref().expect("the two-beam track's d");
         let (mut worst, mut worst_d) = (0.0f64, 0.0f64);

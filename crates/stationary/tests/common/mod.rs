@@ -4,7 +4,8 @@
 
 use analytic::ground::{Embankment, GroundProfile, SoilLayer, SoilMaterial, StripGround};
 use fem_beam::sleepers::{Layer, Sleepers};
-use fem_beam::{Beam, Foundation};
+use fem_beam::{Beam, DistributedFriction, Foundation};
+use stationary::{Domain, StationaryProblem, StationaryWave, solve};
 
 /// A 3 m strip on a crust (1.5 m, C_s 70 m/s) over soft clay (4 m, 45 m/s) on a stiffer half-space (110 m/s), ν
 /// 0.45, 3–5 % damping.
@@ -42,4 +43,26 @@ pub fn rail_on_rigid_embankment(mut foundation: Foundation) -> (Beam, Foundation
     };
     let embankment = Embankment { bending_stiffness: 1.0, mass_per_length: 0.0, loss_factor: 0.0 };
     (beam, foundation, sleepers, embankment, Foundation::linear(1e13, 0.0))
+}
+
+/// The finite-element stationary wave of `beam` on `foundation` under `force` (N) at `speed` with ballast friction
+/// `friction` (N/m, one section per node), 60 m each way on `element_length` m elements: the independent reference
+/// of the ground's friction solver. Its Newton iteration must have converged.
+pub fn fe_friction_wave(
+    (beam, foundation): (Beam, Foundation),
+    (force, speed, friction): (f64, f64, f64),
+    element_length: f64,
+) -> StationaryWave {
+    let fe = solve(&StationaryProblem {
+        beam,
+        foundation,
+        load: force,
+        speed,
+        self_weight: false,
+        friction: DistributedFriction { force_per_length: friction, subdivisions: 1, ..Default::default() },
+        domain: Domain { behind: 60.0, ahead: 60.0, element_length },
+    })
+    .unwrap();
+    assert!(fe.convergence.is_converged(), "{:?}", fe.convergence);
+    fe
 }
