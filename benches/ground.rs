@@ -2,8 +2,8 @@
 //! layered site — the spectrum of a composite beam on the strip's k_eq(k_x, k_x v) and its wave's extremes — at a
 //! subcritical, the critical and a supercritical speed, as `frictrack ground` computes each point of its speed curve
 //! (the target: ≤ 0.5 s a speed on 2 cores); the X2000 at Ledsgård without and with ballast friction (≤ 5×
-//! the linear wave); the two-beam track there, bonded and with the sleepers lifting off a tensionless ballast; and one
-//! strip integral k_eq alone.
+//! the linear wave); the two-beam track there, bonded, with the sleepers lifting off a tensionless ballast and with
+//! friction between the sleepers and the embankment; and one strip integral k_eq alone.
 //!
 //! Run with `cargo bench -p frictrack-benches --bench ground`.
 
@@ -67,13 +67,17 @@ fn ground(c: &mut Criterion) {
             })
         });
     }
-    // The two-beam track there (the rail on pads, sleepers and ballast over the embankment beam), bonded and with a
-    // tensionless ballast: the interface's four spectra and the lift-off's Newton iteration against the rail's wave.
+    // The two-beam track there (the rail on pads, sleepers and ballast over the embankment beam), bonded, with a
+    // tensionless ballast and with 2 kN/m of friction between the sleepers and the embankment (from cold): the
+    // interface's four spectra and the lift-off's or the friction's Newton iteration against the rail's wave.
     let two_beam = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/ledsgard/ledsgard-two-beam.toml");
     let bonded = scenario::Scenario::from_path(&two_beam).unwrap();
     let mut tensionless = bonded.clone();
     tensionless.embankment.as_mut().unwrap().interface = scenario::embankment::InterfaceKind::Tensionless;
-    for (name, case) in [("bonded", &bonded), ("tensionless", &tensionless)] {
+    let mut friction = bonded.clone();
+    friction.friction.distributed =
+        Some(scenario::DistributedSection { force_per_length: 2000.0, ..Default::default() });
+    for (name, case) in [("bonded", &bonded), ("tensionless", &tensionless), ("2000_n_per_m_friction", &friction)] {
         group.bench_function(format!("x2000_two_beam_{name}_185_km_per_h_2_threads"), |b| {
             b.iter(|| {
                 black_box(study::ground::GroundWaveStudy::of(case, &[185.0 / 3.6], window, None, &|_| {}).unwrap())

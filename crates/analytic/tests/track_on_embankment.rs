@@ -108,3 +108,37 @@ fn the_receptance_over_a_rigid_embankment_is_the_rail_on_the_sleepers_twin() {
         assert!((integral - closed).norm() < 1e-6 * closed.norm(), "{frequency} Hz: {integral} vs {closed}");
     }
 }
+
+/// The friction's preconditioner across the ballast (`local_across_ballast`) is built to equal what a pair across
+/// the ballast meets in the short waves, k_b/a + (k_p/a ∥ EI_r k_x⁴), at rest and at the points' Nyquist
+/// wavenumber π/h: k_l + EI_l k_x⁴ does at both to round-off (1e-12), for the typical pads (then φ = 0.2 % of the
+/// rail bends with the sleepers at h = 0.25 m) and for pads 5e11 times as stiff (the rail itself on the ballast: its
+/// EI_r, and its mass with the sleepers', to 1e-6 — φ = 1 − 4e-8 at h = 0.1 m).
+#[test]
+fn the_local_twin_across_the_ballast_meets_the_pairs_support_at_rest_and_at_nyquist() {
+    let ground = Foundation::linear(2e7, 3e5);
+    let typical = Sleepers::default();
+    let rigid_pads = Sleepers { pad: Layer { stiffness: 1e20, ..typical.pad }, ..Sleepers::default() };
+    let rail = rail();
+    for (sleepers, spacing) in [(&typical, 0.25), (&rigid_pads, 0.1)] {
+        let track = TrackOnEmbankment { sleepers, embankment: EMBANKMENT, ground: &ground };
+        let (beam, foundation) = track.local_across_ballast(&rail, spacing);
+        let a = sleepers.spacing;
+        let (pad, ballast) = (sleepers.pad.stiffness / a, sleepers.ballast.stiffness / a);
+        assert_eq!((foundation.stiffness, foundation.damping), (ballast, sleepers.ballast.damping / a));
+        let nyquist = std::f64::consts::PI / spacing;
+        let bending = rail.bending_stiffness() * nyquist.powi(4);
+        let support = ballast + pad * bending / (pad + bending);
+        let twin = foundation.stiffness + beam.bending_stiffness() * nyquist.powi(4);
+        assert!((twin - support).abs() <= 1e-12 * support, "h = {spacing}: {twin} vs {support}");
+        assert!(beam.wave_speed_limit() == rail.wave_speed_limit(), "the rail's material");
+        if sleepers.pad.stiffness > 1e19 {
+            assert!((beam.bending_stiffness() / rail.bending_stiffness() - 1.0).abs() < 1e-6);
+            let mass = sleepers.mass / a + rail.mass_per_length();
+            assert!((beam.mass_per_length() / mass - 1.0).abs() < 1e-6);
+        } else {
+            let share = beam.bending_stiffness() / rail.bending_stiffness();
+            assert!(share > 1e-3 && share < 3e-3, "φ = {share}");
+        }
+    }
+}

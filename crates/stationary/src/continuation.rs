@@ -2,7 +2,7 @@
 //! friction is not a convex minimisation, and at the full Jenkins stiffness κ a Newton point from wrong section
 //! states is wild (a stiff spring anchored where the rail does not stay). Two continuations lead there:
 //!
-//! - **in κ**: from the soil's own stiffness up by factors of ten, each stage from the last stage's wave, the
+//! - **in κ**: from the soil's own stiffness up by factors of ten (or the problem's own), each stage from the last stage's wave, the
 //!   factor shrinking to its square root where a stage fails; a warm start (the previous speed's wave) enters at
 //!   [`WARM_STAGE`];
 //! - **in damping**, where that fails on a lightly damped track (undamped above the critical speed the frictionless
@@ -25,6 +25,10 @@ pub const WARM_STAGE: f64 = 1e-4;
 
 /// From cold the κ stages start at this fraction (κ/10⁶ = k_c, the soil's own stiffness).
 pub const FIRST_STAGE: f64 = 1e-6;
+
+/// The factor between κ stages a continuation starts with (a problem may ask for its own: the friction across the
+/// two-beam track's ballast, [`crate::ground::BALLAST_STAGE_FACTOR`]).
+pub const STAGE_FACTOR: f64 = 10.0;
 
 /// The smallest factor between κ stages before a continuation gives up.
 pub const SMALLEST_FACTOR: f64 = 1.05;
@@ -109,7 +113,7 @@ pub(crate) fn stages<P: SetProblem>(
             f.stiffness = k;
         }
     };
-    let (mut reached, mut factor, mut spent) = (from * target, 10.0f64, 0);
+    let (mut reached, mut factor, mut spent) = (from * target, frame.stage_factor(), 0);
     loop {
         let stiffness = (reached * factor).min(target);
         let last = w.clone();

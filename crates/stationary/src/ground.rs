@@ -21,8 +21,9 @@
 //! embankment, on d = u_s − u_e in place of W: its forces are pairs across the ballast (downward on the sleepers,
 //! upward on the embankment), each section's spread as a hat over the points' spacing, so W₁ becomes P/h (P the
 //! spectra's wave in d of a hat pair pressing the sleepers down, per N/m) and the rail's wave gains
-//! Σ_j P_r(s − s_j) h_j r_j / h (P_r its wave in the rail); the local operator is the rail with the sleepers' mass
-//! on the ballast's spring k_b/a.
+//! Σ_j P_r(s − s_j) h_j r_j / h (P_r its wave in the rail); the local operator is what a pair meets in the short
+//! waves (`analytic::ground::TrackOnEmbankment::local_across_ballast`), and the κ continuation climbs by factors of
+//! [`BALLAST_STAGE_FACTOR`].
 //!
 //! Beyond the window the ballast is taken to hold no force. Ahead the rail rests; behind the train the rail creeps
 //! back up as the ground recovers and slips at f_u along the whole window, a tail whose weight grows like ln L on a
@@ -59,6 +60,12 @@ pub const JENKINS_GIVE: f64 = 1e-6;
 pub const MAX_POINTS: usize = 20_000;
 /// The most GMRES steps of one Newton step (measured 10–40 on the Ledsgård site).
 const KRYLOV_LIMIT: usize = 400;
+/// The factor between the κ stages of the friction across the ballast of the two-beam track: its stages at high κ
+/// take 20–30 Newton steps even a factor 1.5 apart, and a factor of ten fails twice on the way (100 steps each).
+/// Measured at Ledsgård (X2000, 185 km/h, 2 kN/m, from cold, with a near twin of today's preconditioner): 157 Newton
+/// steps at 2, 167 at 2.5, 176 at 1.7, 200 at 1.5, 339 at √10, 410 at 10 — where the composite beam takes 96 at 10
+/// and 126 at 2 (BENCHMARKS.md).
+pub const BALLAST_STAGE_FACTOR: f64 = 2.0;
 
 /// The points of the window: s_i = `first` + i·`step`, i < `count` (m).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -172,7 +179,7 @@ pub struct GroundFrictionProblem<'a> {
     /// f_u (N/m) > 0 (its sections are the window's points; `subdivisions` and `quadrature` are not used).
     pub friction_force: f64,
     /// The local operator's beam (the track's EI; its mass with the fitted co-vibrating mass) and Winkler
-    /// foundation — on the two-beam track the rail with the sleepers' mass on the ballast's k_b/a: the Newton steps'
+    /// foundation — on the two-beam track `TrackOnEmbankment::local_across_ballast`'s twin: the Newton steps'
     /// preconditioner only, the wave does not depend on it.
     pub local: (Beam, Foundation),
 }
@@ -258,6 +265,8 @@ struct GroundFrame {
     scale: f64,
     /// GMRES steps taken, shared by the continuation's copies.
     krylov: Rc<Cell<usize>>,
+    /// The factor between the κ continuation's first stages.
+    stage_factor: f64,
 }
 
 impl GroundFrame {
@@ -302,6 +311,10 @@ impl GroundFrame {
             influence,
             scale,
             krylov: Rc::new(Cell::new(0)),
+            stage_factor: match problem.track {
+                FrictionTrack::Composite(_) => continuation::STAGE_FACTOR,
+                FrictionTrack::RailOnEmbankment(_) => BALLAST_STAGE_FACTOR,
+            },
         })
     }
 
@@ -364,6 +377,10 @@ impl SetProblem for GroundFrame {
 
     fn has_friction(&self) -> bool {
         true
+    }
+
+    fn stage_factor(&self) -> f64 {
+        self.stage_factor
     }
 }
 

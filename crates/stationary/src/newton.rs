@@ -61,6 +61,10 @@ pub(crate) trait SetProblem: Clone {
     fn friction_mut(&mut self) -> Option<&mut FrictionSections>;
     /// Whether the ballast has friction.
     fn has_friction(&self) -> bool;
+    /// The factor between the κ continuation's first stages.
+    fn stage_factor(&self) -> f64 {
+        crate::continuation::STAGE_FACTOR
+    }
 }
 
 impl SetProblem for MovingFrame {

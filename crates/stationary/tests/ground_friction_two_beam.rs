@@ -34,7 +34,7 @@ fn over_a_rigid_embankment_it_is_the_finite_element_friction_wave() {
             speed,
             window: GroundWindow { first: -60.0, step, count },
             friction_force: friction,
-            local: (beam, foundation),
+            local: track.local_across_ballast(&beam, step),
         };
         let ground = solve_on_ground(&problem, &mut ContactGuess::default(), &Control::new(None)).unwrap();
         assert!(ground.convergence.is_converged(), "{:?}", ground.convergence);

@@ -21,7 +21,8 @@ fn one_load(folder: &std::path::Path, embankment: &str, friction: f64) -> String
 /// 2 kN/m between the sleepers and the embankment slips over ~4 m behind the load and takes ~56 W from it, yet moves
 /// the rail's deepest point by 1e-4 of itself at most (measured +9e-5: on this soft site the ballast's compression,
 /// which the friction acts on, is ~1/30 of the rail's deflection, the rest being the ground's) — against the
-/// X2000's 2.7 % on the composite beam, whose friction acts on the whole deflection. The wave converges.
+/// X2000's 2.7 % on the composite beam, whose friction acts on the whole deflection. The wave converges, in at most
+/// 150 Newton steps of at most 40 GMRES steps each.
 #[test]
 fn friction_between_the_sleepers_and_the_embankment_barely_moves_the_rail() {
     let folder = temporary_folder("ground-two-beam-friction");
@@ -37,7 +38,11 @@ fn friction_between_the_sleepers_and_the_embankment_barely_moves_the_rail() {
     let slipping = friction["slipping_length"].as_f64().unwrap();
     let power = friction["friction_power"].as_f64().unwrap();
     assert!((2.0..8.0).contains(&slipping) && (30.0..100.0).contains(&power), "{friction}");
-    assert!(friction["newton_iterations"].as_u64().unwrap() > 0, "{friction}");
+    // The iteration's cost (counts, not time): measured 66 Newton steps and 22 GMRES steps each with the pair's
+    // twin across the ballast and κ stages by 2; the rail on k_b/a with stages by 10 took 303 and 127.
+    let newton = friction["newton_iterations"].as_u64().unwrap();
+    let krylov = friction["krylov_iterations"].as_u64().unwrap();
+    assert!(newton > 0 && newton <= 150 && krylov <= 40 * newton, "{friction}");
     let deepest = |p: &serde_json::Value| p["max_downward_deflection"]["value"].as_f64().unwrap();
     let change = deepest(&rubbing) / deepest(&bare) - 1.0;
     assert!(change.abs() <= 1e-4 && change != 0.0, "{change:e}");

@@ -46,14 +46,7 @@ impl Friction<'_> {
             }
             FrictionOn::RailOnEmbankment(grounded) => {
                 let spectra = grounded.interface_spectra(speed, WAVE_STEP).map_err(StudyError::from)?;
-                // The preconditioner's local track: the rail with the sleepers' mass on the ballast's spring.
-                let sleepers = grounded.support.sleepers;
-                let mass = self.beam.mass_per_length() + sleepers.mass / sleepers.spacing;
-                let ballast = Foundation::linear(
-                    sleepers.ballast.stiffness / sleepers.spacing,
-                    sleepers.ballast.damping / sleepers.spacing,
-                );
-                let local = (Beam { density: mass / self.beam.area, ..*self.beam }, ballast);
+                let local = grounded.support.local_across_ballast(self.beam, WAVE_STEP);
                 let track = FrictionTrack::RailOnEmbankment(&spectra);
                 self.solved(track, &spectra.rail, local, (train, speed, positions, window), guess)
             }
