@@ -57,6 +57,9 @@ pub const QUANTITIES: &[(&str, &str)] = &[
     ("dissipated_energy", "J"),
     ("energy_residual", "J"),
     ("friction_power", "W"),
+    ("two_beam_max_downward_deflection", "m"),
+    ("two_beam_max_upward_deflection", "m"),
+    ("two_beam_friction_power", "W"),
     ("power_imbalance", "1"),
     ("mobilised_friction", "1"),
     // The track's receptance.

@@ -26,10 +26,6 @@ pub const WARM_STAGE: f64 = 1e-4;
 /// From cold the κ stages start at this fraction (κ/10⁶ = k_c, the soil's own stiffness).
 pub const FIRST_STAGE: f64 = 1e-6;
 
-/// The factor between κ stages a continuation starts with (a problem may ask for its own: the friction across the
-/// two-beam track's ballast, [`crate::ground::BALLAST_STAGE_FACTOR`]).
-pub const STAGE_FACTOR: f64 = 10.0;
-
 /// The smallest factor between κ stages before a continuation gives up.
 pub const SMALLEST_FACTOR: f64 = 1.05;
 

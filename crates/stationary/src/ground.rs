@@ -312,7 +312,7 @@ impl GroundFrame {
             scale,
             krylov: Rc::new(Cell::new(0)),
             stage_factor: match problem.track {
-                FrictionTrack::Composite(_) => continuation::STAGE_FACTOR,
+                FrictionTrack::Composite(_) => crate::newton::STAGE_FACTOR,
                 FrictionTrack::RailOnEmbankment(_) => BALLAST_STAGE_FACTOR,
             },
         })

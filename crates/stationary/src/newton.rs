@@ -18,6 +18,10 @@ use banded::general::{GeneralBanded, GeneralLu};
 /// to 60 for a friction stage).
 pub const MAX_ITERATIONS: usize = 100;
 
+/// The factor between the κ continuation's stages a problem starts with unless it asks for its own (the friction
+/// across the two-beam track's ballast, [`crate::ground::BALLAST_STAGE_FACTOR`]).
+pub const STAGE_FACTOR: f64 = 10.0;
+
 /// A relative residual at which the wave counts as solved when the pressed set has not repeated exactly (round-off
 /// of the LU is ~1e-15 of the load).
 pub const TOLERANCE: f64 = 1e-10;
@@ -63,7 +67,7 @@ pub(crate) trait SetProblem: Clone {
     fn has_friction(&self) -> bool;
     /// The factor between the κ continuation's first stages.
     fn stage_factor(&self) -> f64 {
-        crate::continuation::STAGE_FACTOR
+        STAGE_FACTOR
     }
 }
 

@@ -1,8 +1,9 @@
 //! Study 13: Ledsgård (docs/theory.md §19) — the X2000 on the soft site every ground-dynamics model is checked
 //! against, from the built-in `examples/ledsgard`: the computed wave beside the records measured at 70 and 185 km/h
 //! (one figure each), the deepest deflection over speed with the ground's critical speed and the Winkler control's,
-//! and the same curve with ballast friction of 1, 2 and 5 kN/m under the composite beam — how much friction cuts the
-//! response near the critical speed of a soft site.
+//! and the same curve with ballast friction of 1, 2 and 5 kN/m — under the composite beam (acting on its whole
+//! deflection against the ground beneath) and on the two-beam track (between the sleepers and the embankment, where
+//! the ballast is) — how much friction cuts the response near the critical speed of a soft site, and where.
 
 mod figures;
 mod site;
@@ -45,7 +46,8 @@ fn speeds(resolution: Resolution) -> Vec<f64> {
 /// What the study replaces: all of the base scenario (the site is built in).
 pub(super) fn overrides(_base: &Scenario) -> Vec<String> {
     vec![
-        "the site: examples/ledsgard built in (its profile, composite beam and X2000); the base scenario is not used"
+        "the site: examples/ledsgard built in (its profile, composite beam, two-beam track and X2000); the base \
+         scenario is not used"
             .into(),
     ]
 }
@@ -79,103 +81,120 @@ pub struct LedsgardSummary {
     pub critical_speed: Option<f64>,
     /// The same beam's on the static strip stiffness (m/s).
     pub winkler_critical_speed: f64,
-    /// One per friction.
+    /// One per friction, under the composite beam.
     pub curves: Vec<LedsgardCurve>,
+    /// One per friction, between the sleepers and the embankment of the two-beam track.
+    pub two_beam_curves: Vec<LedsgardCurve>,
     /// At 70 and 185 km/h.
     pub measured: Vec<LedsgardComparison>,
 }
 
 pub(super) fn study(resolution: Resolution, _base: &Scenario, runner: &Runner) -> Result<StudyData> {
-    let site = site::site()?;
+    let sites = [site::site()?, site::two_beam_site()?];
     let speeds: Vec<f64> = speeds(resolution).iter().map(|v| v / KMH).collect();
-    // One estimate for the whole study: the ground's numbers, the two records and the curves (those with friction
-    // at their measured cost over a linear wave's).
-    let linear = crate::ground::numbers::SPECTRA + 2 + speeds.len();
-    let with_friction = (FRICTIONS.len() - 1) * speeds.len();
+    // One estimate for the whole study: the ground's numbers, the two records and the curves on both tracks (those
+    // with friction at their measured cost over a linear wave's).
+    let linear = crate::ground::numbers::SPECTRA + 2 + sites.len() * speeds.len();
+    let with_friction = sites.len() * (FRICTIONS.len() - 1) * speeds.len();
     runner.announce(runner::cost::Estimate::ground_waves(linear, with_friction, runner.threads()));
-    let ground = GroundStudy::of(&site, &GroundRequest { frequencies: vec![5.0] }, &runner.silent())?;
+    let ground = GroundStudy::of(&sites[0], &GroundRequest { frequencies: vec![5.0] }, &runner.silent())?;
     let mut measured = Vec::new();
     let mut compared_waves = Vec::new();
     for (speed_kmh, record) in site::records()? {
         let speed = speed_kmh / KMH;
         let window = record.widened(WaveWindow::default());
         let before = measured.len();
-        let mut study = GroundWaveStudy::of(&site, &[speed], window, runner.stop, &|n| (runner.progress)(before + n))?;
+        let mut study =
+            GroundWaveStudy::of(&sites[0], &[speed], window, runner.stop, &|n| (runner.progress)(before + n))?;
         study.compare_with(&record, "ledsgard")?;
         study.train.name = "X2000".into();
         let comparison = study.comparison.clone().expect("just compared");
         measured.push(LedsgardComparison { speed, comparison });
         compared_waves.push((speed_kmh, study, record));
     }
+    let before = measured.len();
+    let composite = curves(&sites[0], &speeds, runner, before)?;
+    let two_beam = curves(&sites[1], &speeds, runner, before + FRICTIONS.len() * speeds.len())?;
+    let summary = summarise(&ground, [&composite, &two_beam], measured);
+    let plots = figures::figures(&ground, [&composite, &two_beam], &compared_waves);
+    Ok(StudyData {
+        csv: csv(&composite, &two_beam),
+        lines: lines(&summary),
+        headline: headline(&summary),
+        summary: StudySummary::of(summary),
+        plots,
+        ..blank(sites.len() * FRICTIONS.len() * speeds.len() + 2)
+    })
+}
+
+/// The curves over `speeds` on `site`, one per friction of [`FRICTIONS`], counting progress from `before`.
+fn curves(site: &Scenario, speeds: &[f64], runner: &Runner, before: usize) -> Result<Vec<(f64, GroundWaveStudy)>> {
     let mut curves = Vec::new();
     for (i, friction) in FRICTIONS.into_iter().enumerate() {
-        let before = measured.len() + i * speeds.len();
+        let before = before + i * speeds.len();
         let mut case = site.clone();
         if friction > 0.0 {
             case.friction.distributed =
                 Some(scenario::DistributedSection { force_per_length: friction, ..Default::default() });
         }
         let progress = |n: usize| (runner.progress)(before + n);
-        let mut study = GroundWaveStudy::of(&case, &speeds, WaveWindow::default(), runner.stop, &progress)?;
+        let mut study = GroundWaveStudy::of(&case, speeds, WaveWindow::default(), runner.stop, &progress)?;
         study.train.name = "X2000".into();
         curves.push((friction, study));
     }
-    let summary = summarise(&ground, &curves, measured);
-    let plots = figures::figures(&ground, &curves, &compared_waves);
-    Ok(StudyData {
-        csv: csv(&curves),
-        lines: lines(&summary),
-        headline: headline(&summary),
-        summary: StudySummary::of(summary),
-        plots,
-        ..blank(FRICTIONS.len() * speeds.len() + 2)
-    })
+    Ok(curves)
 }
 
 fn summarise(
     ground: &GroundStudy,
-    curves: &[(f64, GroundWaveStudy)],
+    [composite, two_beam]: [&[(f64, GroundWaveStudy)]; 2],
     measured: Vec<LedsgardComparison>,
 ) -> LedsgardSummary {
-    let curves = curves
-        .iter()
-        .map(|(friction, study)| {
-            let deepest = study
-                .points
-                .iter()
-                .max_by(|a, b| a.deflection.max_downward.value.total_cmp(&b.deflection.max_downward.value))
-                .expect("speeds");
-            let at_185 = study
-                .points
-                .iter()
-                .find(|p| (p.speed * KMH - RECORD_SPEED).abs() < 1e-6)
-                .map_or(f64::NAN, |p| p.deflection.max_downward.value);
-            LedsgardCurve {
-                force_per_length: *friction,
-                max_downward_deflection: deepest.deflection.max_downward.value,
-                speed: deepest.speed,
-                at_185_km_per_h: at_185,
-            }
-        })
-        .collect();
     LedsgardSummary {
         critical_speed: ground.critical_speed,
         winkler_critical_speed: ground.winkler_critical_speed,
-        curves,
+        curves: composite.iter().map(curve).collect(),
+        two_beam_curves: two_beam.iter().map(curve).collect(),
         measured,
     }
 }
 
-/// One row per friction and speed: `force_per_length,speed,max_downward_deflection,max_upward_deflection,
-/// friction_power` (N/m, m/s, m, m, W).
-fn csv(curves: &[(f64, GroundWaveStudy)]) -> String {
-    let mut out = String::from("force_per_length,speed,max_downward_deflection,max_upward_deflection,friction_power\n");
-    for (friction, study) in curves {
-        for p in &study.points {
-            let power = p.friction.as_ref().map_or(0.0, |f| f.friction_power);
-            let values =
-                row(&[*friction, p.speed, p.deflection.max_downward.value, p.deflection.max_upward.value, power]);
-            let _ = writeln!(out, "{values}");
+/// A curve's sampled deepest point and its value at [`RECORD_SPEED`].
+fn curve((friction, study): &(f64, GroundWaveStudy)) -> LedsgardCurve {
+    let deepest = study
+        .points
+        .iter()
+        .max_by(|a, b| a.deflection.max_downward.value.total_cmp(&b.deflection.max_downward.value))
+        .expect("speeds");
+    let at_185 = study
+        .points
+        .iter()
+        .find(|p| (p.speed * KMH - RECORD_SPEED).abs() < 1e-6)
+        .map_or(f64::NAN, |p| p.deflection.max_downward.value);
+    LedsgardCurve {
+        force_per_length: *friction,
+        max_downward_deflection: deepest.deflection.max_downward.value,
+        speed: deepest.speed,
+        at_185_km_per_h: at_185,
+    }
+}
+
+/// One row per friction and speed, the composite beam's then the two-beam track's: `force_per_length,speed,
+/// max_downward_deflection,max_upward_deflection,friction_power,two_beam_max_downward_deflection,
+/// two_beam_max_upward_deflection,two_beam_friction_power` (N/m, m/s, m, m, W, m, m, W).
+fn csv(composite: &[(f64, GroundWaveStudy)], two_beam: &[(f64, GroundWaveStudy)]) -> String {
+    let mut out = String::from(
+        "force_per_length,speed,max_downward_deflection,max_upward_deflection,friction_power,\
+         two_beam_max_downward_deflection,two_beam_max_upward_deflection,two_beam_friction_power\n",
+    );
+    let columns = |p: &crate::ground::wave_point::GroundWavePoint| {
+        let power = p.friction.as_ref().map_or(0.0, |f| f.friction_power);
+        [p.deflection.max_downward.value, p.deflection.max_upward.value, power]
+    };
+    for ((friction, study), (_, on_two_beams)) in composite.iter().zip(two_beam) {
+        for (p, q) in study.points.iter().zip(&on_two_beams.points) {
+            let values: Vec<f64> = [*friction, p.speed].into_iter().chain(columns(p)).chain(columns(q)).collect();
+            let _ = writeln!(out, "{}", row(&values));
         }
     }
     out
@@ -197,14 +216,16 @@ fn lines(summary: &LedsgardSummary) -> Vec<String> {
             )
         })
         .collect();
-    for c in &summary.curves {
-        lines.push(format!(
-            "f_u = {:.0} kN/m: deepest {:.2} mm at {:.0} km/h (sampled), {:.2} mm at 185 km/h",
-            c.force_per_length / 1e3,
-            c.max_downward_deflection * 1e3,
-            c.speed * KMH,
-            c.at_185_km_per_h * 1e3
-        ));
+    for (track, curves) in [("composite beam", &summary.curves), ("two-beam track", &summary.two_beam_curves)] {
+        for c in curves {
+            lines.push(format!(
+                "{track}, f_u = {:.0} kN/m: deepest {:.2} mm at {:.0} km/h (sampled), {:.2} mm at 185 km/h",
+                c.force_per_length / 1e3,
+                c.max_downward_deflection * 1e3,
+                c.speed * KMH,
+                c.at_185_km_per_h * 1e3
+            ));
+        }
     }
     lines
 }
@@ -224,6 +245,8 @@ fn headline(summary: &LedsgardSummary) -> Vec<String> {
         .collect::<Vec<_>>()
         .join(" and ");
     let (none, strongest) = (&summary.curves[0], &summary.curves[summary.curves.len() - 1]);
+    let two_beam = &summary.two_beam_curves;
+    let (bare, rubbing) = (two_beam[0].max_downward_deflection, two_beam[two_beam.len() - 1].max_downward_deflection);
     vec![
         format!(
             "On the linear small-strain site the computed deepest deflection under the X2000 differs from the measured \
@@ -231,12 +254,20 @@ fn headline(summary: &LedsgardSummary) -> Vec<String> {
              soil would carry."
         ),
         format!(
-            "Ballast friction of {:.0} kN/m under the track cuts the deepest deflection over speed from {:.2} to \
-             {:.2} mm ({:.0} %).",
+            "Ballast friction of {:.0} kN/m under the composite beam, against the ground beneath, cuts the deepest \
+             deflection over speed from {:.2} to {:.2} mm ({:.0} %).",
             strongest.force_per_length / 1e3,
             none.max_downward_deflection * 1e3,
             strongest.max_downward_deflection * 1e3,
             100.0 * (1.0 - strongest.max_downward_deflection / none.max_downward_deflection)
+        ),
+        format!(
+            "Between the sleepers and the embankment of the two-beam track, where the ballast is, the same friction \
+             moves the rail's deepest deflection over speed from {:.2} to {:.2} mm ({:.2} %): on a soft site the \
+             ballast's compression is a small part of the rail's deflection, the rest the embankment's and the ground's.",
+            bare * 1e3,
+            rubbing * 1e3,
+            100.0 * (1.0 - rubbing / bare)
         ),
     ]
 }
