@@ -2,9 +2,9 @@
 //! friction is not a convex minimisation, and at the full Jenkins stiffness κ a Newton point from wrong section
 //! states is wild (a stiff spring anchored where the rail does not stay). Two continuations lead there:
 //!
-//! - **in κ**: from the soil's own stiffness up by factors of ten (or the problem's own), each stage from the last stage's wave, the
-//!   factor shrinking to its square root where a stage fails; a warm start (the previous speed's wave) enters at
-//!   [`WARM_STAGE`];
+//! - **in κ**: from the soil's own stiffness up by factors of ten (or the problem's own), each stage from the last
+//!   stage's wave, the factor shrinking to its square root where a stage fails; a warm start (the previous speed's
+//!   wave) enters at [`WARM_STAGE`];
 //! - **in damping**, where that fails on a lightly damped track (undamped above the critical speed the frictionless
 //!   start is a resonance of the free-ended domain, not a wave): the whole κ continuation on the track with
 //!   ζ = [`DAMPED_START`], then the damping lowered step by step ([`DAMPING_STEPS`]) to the track's own, each from

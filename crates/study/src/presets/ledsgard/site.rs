@@ -1,6 +1,6 @@
 //! The built-in Ledsgård site: `examples/ledsgard` compiled in — the composite beam, and the two-beam track, on the
-//! site's profile, the X2000 and the records measured at 70 and 185 km/h (examples/ledsgard/README.md gives every number's source and where a
-//! choice was made).
+//! site's profile, the X2000 and the records measured at 70 and 185 km/h (examples/ledsgard/README.md gives every
+//! number's source and where a choice was made).
 
 use crate::ground::measured::MeasuredRecord;
 use scenario::Scenario;
