@@ -16,7 +16,8 @@ pub(super) fn figures(
     [composite, two_beam]: [&[(f64, GroundWaveStudy)]; 2],
     compared: &[(f64, GroundWaveStudy, MeasuredRecord)],
 ) -> Vec<PlotSpec> {
-    let composite_title = "Ledsgård: the X2000's deepest deflection over speed, with ballast friction";
+    let composite_title =
+        "Ledsgård, the composite beam: the X2000's deepest deflection over speed, with ballast friction";
     let two_beam_title =
         "Ledsgård, the two-beam track: the rail's deepest deflection over speed, with friction under the sleepers";
     let mut two_beam_figure = speeds_figure(
