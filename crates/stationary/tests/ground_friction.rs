@@ -125,9 +125,7 @@ fn on_the_ground_the_wave_converges_as_the_points_are_refined() {
     let grounded = GroundedBeam::new(&beam, &strip).unwrap();
     let speed = 50.0;
     let spectrum = grounded.spectrum(speed).unwrap();
-    let local = grounded.local_fit(&spectrum, speed).unwrap();
-    let mut local_beam = beam;
-    local_beam.density = local.1 / beam.area;
+    let local = grounded.local_fit(&beam, &spectrum, speed).unwrap();
     let axles = [Axle { offset: 0.0, force: 100e3 }];
     let deepest = |step: f64| {
         let count = (160.0 / step).round() as usize + 1;
@@ -137,7 +135,7 @@ fn on_the_ground_the_wave_converges_as_the_points_are_refined() {
             speed,
             window: GroundWindow { first: -100.0, step, count },
             friction_force: 2000.0,
-            local: (local_beam, local.0),
+            local,
         };
         let wave = solve_on_ground(&problem, &mut ContactGuess::default(), &Control::new(None)).unwrap();
         assert!(wave.convergence.is_converged(), "{step} m: {:?}", wave.convergence);

@@ -19,7 +19,7 @@
 use super::line_support::LineSupport;
 use super::moving_load::{GroundedBeam, MovingSpectrum};
 use fem_beam::error::Result;
-use fem_beam::properties::Foundation;
+use fem_beam::properties::{Beam, Foundation};
 use num_complex::Complex64;
 use rayon::prelude::*;
 
@@ -68,12 +68,13 @@ impl<S: LineSupport + ?Sized> GroundedBeam<'_, S> {
         })
     }
 
-    /// The foundation fitted to `exact`, this beam's spectrum at `speed`, without measuring its error: its spring,
-    /// dashpot and co-vibrating mass as a Winkler foundation and the mass per length that goes with it,
-    /// (Foundation::linear(k_f, c), ρA + m) — a local operator near the exact one.
-    pub fn local_fit(&self, exact: &MovingSpectrum, speed: f64) -> Result<(Foundation, f64)> {
+    /// The foundation fitted to `exact`, this beam's spectrum at `speed`, without measuring its error: `beam` (this
+    /// one's section) carrying its co-vibrating mass, ρA + m, on its spring and dashpot, Foundation::linear(k_f, c) —
+    /// a local operator near the exact one.
+    pub fn local_fit(&self, beam: &Beam, exact: &MovingSpectrum, speed: f64) -> Result<(Beam, Foundation)> {
         let (fit, _) = self.fit(exact, speed)?;
-        Ok((Foundation::linear(fit.stiffness, fit.damping), self.mass_per_length + fit.mass))
+        let carrying = Beam { density: (self.mass_per_length + fit.mass) / beam.area, ..*beam };
+        Ok((carrying, Foundation::linear(fit.stiffness, fit.damping)))
     }
 
     /// The fit to `exact` at `speed` and the wavenumbers it is fitted over.

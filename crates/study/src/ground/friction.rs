@@ -39,8 +39,7 @@ impl Friction<'_> {
         match &self.track {
             FrictionOn::Composite(grounded) => {
                 let spectrum = grounded.spectrum(speed).map_err(StudyError::from)?;
-                let (foundation, mass) = grounded.local_fit(&spectrum, speed).map_err(StudyError::from)?;
-                let local = (Beam { density: mass / self.beam.area, ..*self.beam }, foundation);
+                let local = grounded.local_fit(self.beam, &spectrum, speed).map_err(StudyError::from)?;
                 let track = FrictionTrack::Composite(&spectrum);
                 self.solved(track, &spectrum, local, (train, speed, positions, window), guess)
             }
