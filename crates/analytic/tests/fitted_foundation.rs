@@ -78,3 +78,76 @@ fn the_fit_on_the_ground_and_its_error() {
         assert!(speed > 0.0 || (fit.damping == 0.0 && fit.co_vibrating_mass == 0.0));
     }
 }
+
+/// Ledsgård's two-beam track per rail (examples/ledsgard/ledsgard-two-beam.toml): pads 120 MN/m, 20 kN·s/m; sleepers
+/// 125 kg every 0.65 m; ballast 140 MN/m, 80 kN·s/m; the embankment EI_e = 200 MN·m², 7.56 t/m, η_e = 0.1.
+fn two_beam_sleepers() -> fem_beam::sleepers::Sleepers {
+    use fem_beam::sleepers::{Layer, Sleepers};
+    Sleepers {
+        spacing: 0.65,
+        first: 0.325,
+        mass: 125.0,
+        pad: Layer { stiffness: 1.2e8, damping: 2.0e4, loss_factor: 0.0 },
+        ballast: Layer { stiffness: 1.4e8, damping: 8.0e4, loss_factor: 0.0 },
+        ..Sleepers::default()
+    }
+}
+
+/// The two-beam track's ground fitted to what the rail feels (`TrackOnEmbankment::fitted_ground`): on a spring and
+/// a dashpot under an elastic embankment it is that spring and dashpot with no mass (1e-9) and the rail's wave the
+/// exact one (1e-12, the same spectrum twice); an embankment's loss factor goes into the dashpot (the fitted c then
+/// exceeds the soil's).
+#[test]
+fn the_two_beam_tracks_ground_on_a_spring_is_that_spring() {
+    use analytic::ground::{Embankment, TrackOnEmbankment};
+    let sleepers = two_beam_sleepers();
+    let winkler = Foundation::linear(2.4e7, 2.0e5);
+    let elastic = Embankment { bending_stiffness: 2e8, mass_per_length: 7560.0, loss_factor: 0.0 };
+    let track = TrackOnEmbankment { sleepers: &sleepers, embankment: elastic, ground: &winkler };
+    for speed in [0.0, 30.0, 60.0] {
+        let fit = track.fitted_ground(&Beam::default(), speed).unwrap();
+        assert!((fit.stiffness / winkler.stiffness - 1.0).abs() < 1e-9, "{speed}: {fit:?}");
+        if speed > 0.0 {
+            assert!((fit.damping / winkler.damping - 1.0).abs() < 1e-9, "{speed}: {fit:?}");
+        }
+        assert!(fit.co_vibrating_mass < 1e-6, "{speed}: {fit:?}");
+        assert!(fit.wave_error < 1e-12 && fit.peak_error.abs() < 1e-12, "{speed}: {fit:?}");
+    }
+    let lossy = Embankment { loss_factor: 0.1, ..elastic };
+    let track = TrackOnEmbankment { sleepers: &sleepers, embankment: lossy, ground: &winkler };
+    let fit = track.fitted_ground(&Beam::default(), 30.0).unwrap();
+    assert!(fit.damping > 1.05 * winkler.damping, "{fit:?}");
+}
+
+/// On Ledsgård's layered site (ledsgard.toml's profile) the two-beam track's fitted ground at 70 and 185 km/h: its
+/// error measured, not assumed. Observed: the rail's wave within 3.7 % at 70 km/h (k_f = 8.6 MN/m², c = 172 kN·s/m²,
+/// no mass) and 6.3 % at 185 km/h (7.95 MN/m², 98.6 kN·s/m², 11.8 t/m), the peak 2.9 and 4.2 % deeper; bounded at
+/// 5 and 8 % (the observed values and a third), below the 10 % where a run warns.
+#[test]
+fn the_two_beam_tracks_ground_at_ledsgard() {
+    use analytic::ground::{Embankment, TrackOnEmbankment};
+    let soil =
+        |thickness: f64, shear_wave_speed: f64, compression_wave_speed: f64, density: f64, damping_ratio: f64| {
+            SoilLayer {
+                thickness,
+                material: SoilMaterial { shear_wave_speed, compression_wave_speed, density, damping_ratio },
+            }
+        };
+    let layers = vec![
+        soil(1.1, 72.0, 500.0, 1500.0, 0.04),
+        soil(3.0, 40.0, 500.0, 1260.0, 0.02),
+        soil(4.5, 53.0, 1500.0, 1475.0, 0.05),
+        soil(6.0, 82.0, 1500.0, 1475.0, 0.05),
+    ];
+    let half_space =
+        SoilMaterial { shear_wave_speed: 100.0, compression_wave_speed: 1500.0, density: 1475.0, damping_ratio: 0.05 };
+    let strip = StripGround { width: 3.0, profile: GroundProfile { layers, half_space } };
+    let sleepers = two_beam_sleepers();
+    let embankment = Embankment { bending_stiffness: 2e8, mass_per_length: 7560.0, loss_factor: 0.1 };
+    let track = TrackOnEmbankment { sleepers: &sleepers, embankment, ground: &strip };
+    for (speed, within) in [(70.0 / 3.6, 0.05), (185.0 / 3.6, 0.08)] {
+        let fit = track.fitted_ground(&Beam::default(), speed).unwrap();
+        assert!(fit.stiffness > 0.0 && fit.damping > 0.0 && fit.co_vibrating_mass >= 0.0, "{fit:?}");
+        assert!(fit.wave_error > 0.0 && fit.wave_error < within && fit.peak_error.abs() < within, "{fit:?}");
+    }
+}

@@ -51,10 +51,11 @@ fn check(path: &std::path::Path) -> Result<()> {
     let damping = match (foundation.stiffness > 0.0, case.model.sleepers()) {
         (true, _) => format!("ζ = {:.4}", foundation.damping_ratio(case.model.beam())),
         (false, None) => "no foundation".into(),
+        (false, Some(_)) if case.model.embankment().is_some() => "no soil under the rail".into(),
         (false, Some(_)) => "no soil".into(),
     };
-    let damping = match case.model.sleepers() {
-        Some((s, nodes)) => format!("{damping}, on {}", report::sleeper_output::sleepers_in_words(s, nodes.len())),
+    let damping = match report::sleeper_output::track_in_words(&case.model) {
+        Some(track) => format!("{damping}, on {track}"),
         None => damping,
     };
     let friction = match (&scenario.friction.devices, &scenario.friction.distributed) {

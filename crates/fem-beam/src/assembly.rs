@@ -7,6 +7,7 @@
 use crate::discretisation::Discretisation;
 use crate::element::{Element, ElementMatrix, hermite};
 use crate::element_loop::add_elements;
+use crate::embankment::EmbankmentBeam;
 use crate::error::{FemError, Result};
 use crate::mesh::Mesh;
 use crate::properties::{Beam, Foundation, Rayleigh};
@@ -15,7 +16,7 @@ use crate::supports::{DofMap, Supports};
 use banded::SymmetricBanded;
 
 /// Half-bandwidth of assembled beam matrices: 3; with sleepers 3 + their DOFs per sleeper (4, or 5 under ballast
-/// bodies: a sleeper's DOFs sit between its node's and the next's).
+/// bodies: a sleeper's DOFs sit between its node's and the next's), and 2 more over an embankment beam.
 pub const BANDWIDTH: usize = 3;
 
 /// The assembled beam on its foundation: parameters, DOF map and the banded M, C, K over the free DOFs.
@@ -32,6 +33,7 @@ pub struct BeamModel {
     damping: SymmetricBanded,
     rayleigh: Rayleigh,
     sleepers: Option<(Sleepers, Vec<usize>)>,
+    embankment: Option<EmbankmentBeam>,
 }
 
 impl BeamModel {
@@ -68,15 +70,41 @@ impl BeamModel {
                 allowed: "must be finite and ≥ 0",
             });
         }
-        Self::assemble(beam, foundation, mesh, supports, element_damping, None)
+        Self::assemble(beam, foundation, mesh, supports, element_damping, None, None)
     }
 
     /// The model with `sleepers` under the rail (docs/theory.md §18): a DOF per sleeper beside its node (two under
     /// a ballast body), the masses, pad, ballast and subgrade in M, C, K (Rayleigh damping, if any, applied again over them).
     pub fn with_sleepers(self, sleepers: Sleepers) -> Result<Self> {
+        self.with_track(sleepers, None)
+    }
+
+    /// The model with `sleepers` under the rail whose ballast rests on `embankment`, a second beam on the same nodes
+    /// (docs/theory.md §19): its w_e, θ_e beside each node's, its bending, mass, foundation and dashpots in K, M, C,
+    /// and the ballast between each sleeper's z and the w_e at its node. The ballast cannot then be a body of its own.
+    pub fn with_sleepers_on_embankment(self, sleepers: Sleepers, embankment: EmbankmentBeam) -> Result<Self> {
+        if let Some(body) = sleepers.ballast_body {
+            return Err(FemError::InvalidField {
+                field: "sleepers.ballast.mass",
+                value: body.mass,
+                allowed: "must be left out over an embankment: the ballast is the layer between the sleepers and it",
+            });
+        }
+        if embankment.element_damping.len() != self.mesh.elements {
+            return Err(FemError::LengthMismatch {
+                what: "embankment element damping",
+                actual: embankment.element_damping.len(),
+                expected: self.mesh.elements,
+            });
+        }
+        self.with_track(sleepers, Some(embankment))
+    }
+
+    fn with_track(self, sleepers: Sleepers, embankment: Option<EmbankmentBeam>) -> Result<Self> {
         let nodes = sleepers.nodes(&self.mesh)?;
         let Self { beam, foundation, mesh, supports, element_damping, rayleigh, .. } = self;
-        let model = Self::assemble(beam, foundation, mesh, supports, element_damping, Some((sleepers, nodes)))?;
+        let model =
+            Self::assemble(beam, foundation, mesh, supports, element_damping, Some((sleepers, nodes)), embankment)?;
         if rayleigh.is_zero() { Ok(model) } else { model.with_rayleigh(rayleigh) }
     }
 
@@ -87,12 +115,15 @@ impl BeamModel {
         supports: Supports,
         element_damping: Vec<f64>,
         sleepers: Option<(Sleepers, Vec<usize>)>,
+        embankment: Option<EmbankmentBeam>,
     ) -> Result<Self> {
         let (dofs, band) = match &sleepers {
             None => (DofMap::new(mesh.nodes(), supports), BANDWIDTH),
             Some((s, nodes)) => {
                 let per = s.dofs_per_sleeper();
-                (DofMap::with_sleepers(mesh.nodes(), supports, nodes, per), BANDWIDTH + per)
+                let below = embankment.is_some();
+                let band = BANDWIDTH + per + if below { 2 } else { 0 };
+                (DofMap::with_track(mesh.nodes(), supports, nodes, per, below), band)
             }
         };
         let l = mesh.element_length();
@@ -106,6 +137,13 @@ impl BeamModel {
         add_elements(&mut mass, mesh.elements, free, |_| me);
         add_elements(&mut stiffness, mesh.elements, free, |_| ke);
         add_elements(&mut damping, mesh.elements, free, |e| element.distributed(element_damping[e]));
+        if let Some(below) = &embankment {
+            let lower = |e: usize| dofs.embankment_element_free(e);
+            let (me, ke) = (below.element_mass(l), below.element_stiffness(l));
+            add_elements(&mut mass, mesh.elements, lower, |_| me);
+            add_elements(&mut stiffness, mesh.elements, lower, |_| ke);
+            add_elements(&mut damping, mesh.elements, lower, |e| below.element_damping_matrix(e, l));
+        }
         if let Some((layers, nodes)) = &sleepers {
             type Layers = fn(&crate::SleeperSupport) -> [f64; 3];
             let entries = |matrix: &mut SymmetricBanded, layers_of: Layers, mass: fn(f64) -> f64| {
@@ -138,6 +176,7 @@ impl BeamModel {
             damping,
             rayleigh,
             sleepers,
+            embankment,
         })
     }
 
@@ -174,6 +213,11 @@ impl BeamModel {
     /// The sleepers and the node under each, if the rail lies on discrete supports.
     pub fn sleepers(&self) -> Option<(&Sleepers, &[usize])> {
         self.sleepers.as_ref().map(|(s, nodes)| (s, nodes.as_slice()))
+    }
+
+    /// The embankment beam under the sleepers' ballast, if the track has one.
+    pub fn embankment(&self) -> Option<&EmbankmentBeam> {
+        self.embankment.as_ref()
     }
 
     /// The Rayleigh damping in C (zero unless [`BeamModel::with_rayleigh`]).

@@ -16,6 +16,7 @@
 //! - [`load`]: consistent point forces/moments and uniform loads; [`section`]: w, θ, M from a DOF vector.
 //! - [`distributed`]: the sections of a law distributed along the beam, and ballast friction's description.
 //! - [`extreme`]: the [`Extreme`] and [`LiftOffZone`] every response is reported in.
+//! - [`embankment`]: [`EmbankmentBeam`], a second beam under the sleepers' ballast (the two-beam track in time).
 //! - [`statics`], [`modal`]: K q = f and K φ = ω² M φ; [`modal_band`]: a field's part in the modes below a frequency.
 //! - [`motion`]: how the loads move — constant speed or a speed profile over position ([`Motion`]).
 //!
@@ -29,6 +30,7 @@ pub mod discretisation;
 pub mod distributed;
 pub mod element;
 pub mod element_loop;
+pub mod embankment;
 pub mod error;
 pub mod extreme;
 pub mod load;
@@ -49,6 +51,7 @@ pub use absorbing::AbsorbingZones;
 pub use assembly::BeamModel;
 pub use discretisation::Discretisation;
 pub use distributed::DistributedFriction;
+pub use embankment::EmbankmentBeam;
 pub use error::{FemError, Result};
 pub use extreme::{DeflectionExtremes, Extreme, LiftOffZone};
 pub use load::LoadVector;

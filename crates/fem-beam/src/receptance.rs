@@ -75,16 +75,15 @@ impl<'a> FrequencyResponse<'a> {
             model.mesh().elements,
             |e| dofs.element_free(e),
             |e| {
-                let damping: ElementMatrix = model.element_damping_matrix(e);
-                std::array::from_fn(|a| {
-                    std::array::from_fn(|b| {
-                        rail_factor * rail[a][b]
-                            + soil_factor * soil[a][b]
-                            + Complex64::new(-omega * omega * mass[a][b], omega * damping[a][b])
-                    })
-                })
+                dynamic_element(
+                    [(rail_factor, &rail), (soil_factor, &soil)],
+                    &mass,
+                    &model.element_damping_matrix(e),
+                    omega,
+                )
             },
         );
+        self.add_embankment(&mut out, omega);
         if let Some((sleepers, nodes)) = model.sleepers() {
             // Each layer's spring with its own loss factor and its dashpot; the masses' inertia −ω²m.
             let layers = |s: &crate::SleeperSupport| {
@@ -100,4 +99,43 @@ impl<'a> FrequencyResponse<'a> {
         }
         out
     }
+
+    /// The embankment's part of D(ω), if the track has one: its bending with its loss factor, its soil's spring with
+    /// the soil's, its dashpots, its mass.
+    fn add_embankment(&self, out: &mut GeneralBanded<Complex64>, omega: f64) {
+        let model = self.model;
+        let Some(below) = model.embankment() else { return };
+        let dofs = model.dofs();
+        let l = model.mesh().element_length();
+        let element = below.element(l);
+        let bending = element.stiffness(below.beam.bending_stiffness());
+        let soil = element.distributed(below.foundation.stiffness);
+        let mass = below.element_mass(l);
+        let (bending_factor, soil_factor) =
+            (Complex64::new(1.0, below.beam.loss_factor), Complex64::new(1.0, below.foundation.loss_factor));
+        add_elements(
+            out,
+            model.mesh().elements,
+            |e| dofs.embankment_element_free(e),
+            |e| {
+                let parts = [(bending_factor, &bending), (soil_factor, &soil)];
+                dynamic_element(parts, &mass, &below.element_damping_matrix(e, l), omega)
+            },
+        );
+    }
+}
+
+/// An element's dynamic stiffness Σ (1 + iη) K_part − ω²M + iωC: each stiffness with its hysteretic factor.
+fn dynamic_element(
+    parts: [(Complex64, &ElementMatrix); 2],
+    mass: &ElementMatrix,
+    damping: &ElementMatrix,
+    omega: f64,
+) -> [[Complex64; 4]; 4] {
+    std::array::from_fn(|a| {
+        std::array::from_fn(|b| {
+            parts.iter().map(|(factor, k)| factor * k[a][b]).sum::<Complex64>()
+                + Complex64::new(-omega * omega * mass[a][b], omega * damping[a][b])
+        })
+    })
 }

@@ -260,7 +260,8 @@ impl Sleepers {
     /// What the sleepers under `nodes` add to a matrix over the free DOFs of `dofs` (a map with their DOFs,
     /// [`crate::supports::DofMap::with_sleepers`]), as entries (i, j ≤ i) of its lower triangle: each layer a
     /// spring [[1, −1], [−1, 1]] between the DOFs it joins — the pad between w and z (on z alone where a support
-    /// holds w), the ballast between z and the ground or, under a ballast body, its y, the subgrade between y and
+    /// holds w), the ballast between z and what is under it ([`crate::supports::DofMap::under_ballast`]: the ground,
+    /// a ballast body's y or an embankment's w_e), the subgrade between a ballast body's y and
     /// the ground — and the masses on z and y. `layers` gives what a sleeper's pad, ballast and subgrade contribute,
     /// from its [`SleeperSupport`] — their k for K (the ballast's where bonded), c for C, k(1 + iη) + iωc for a
     /// dynamic stiffness — and `mass` what m_s and m_b do (m for M, −ω²m for a dynamic stiffness, 0 for K and C).
@@ -289,11 +290,11 @@ impl Sleepers {
         let mut out = Vec::with_capacity(5 * self.dofs_per_sleeper() * nodes.len());
         for (s, &node) in nodes.iter().enumerate() {
             let [pad, ballast, subgrade] = layers(&self.support(s));
-            let (z, y) = (dofs.sleeper(s), dofs.ballast_body(s));
+            let z = dofs.sleeper(s);
             out.push((z, z, mass(self.mass)));
             spring(&mut out, dofs.free_index(2 * node), Some(z), pad);
-            spring(&mut out, Some(z), y, ballast);
-            if let (Some(y), Some(body)) = (y, self.ballast_body) {
+            spring(&mut out, Some(z), dofs.under_ballast(s, node), ballast);
+            if let (Some(y), Some(body)) = (dofs.ballast_body(s), self.ballast_body) {
                 out.push((y, y, mass(body.mass)));
                 spring(&mut out, Some(y), None, subgrade);
             }

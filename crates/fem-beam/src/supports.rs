@@ -69,6 +69,8 @@ pub struct DofMap {
     rail: usize,
     /// DOFs per sleeper: 1 (z) or 2 (z, and y of a ballast body).
     per_sleeper: usize,
+    /// Where an embankment beam under the ballast has its full DOFs (w_e, θ_e per node, after the sleepers'), if any.
+    embankment: Option<usize>,
 }
 
 impl DofMap {
@@ -90,7 +92,7 @@ impl DofMap {
                 full_of_free.push(dof);
             }
         }
-        Self { free_of_full, full_of_free, rail: full, per_sleeper: 1 }
+        Self { free_of_full, full_of_free, rail: full, per_sleeper: 1, embankment: None }
     }
 
     /// The map with `per_sleeper` DOFs (1: the sleeper's z; 2: z and the ballast body's y under it) under each of
@@ -98,27 +100,43 @@ impl DofMap {
     /// DOFs numbered node by node — the rail's w, θ, then the sleeper's — so that a sleeper sits in the band beside
     /// its rail node (half-bandwidth 3 + per_sleeper).
     pub fn with_sleepers(nodes: usize, supports: Supports, sleeper_nodes: &[usize], per_sleeper: usize) -> Self {
+        Self::with_track(nodes, supports, sleeper_nodes, per_sleeper, false)
+    }
+
+    /// [`Self::with_sleepers`], and where `embankment` an embankment beam under the ballast (docs/theory.md §19):
+    /// its w_e, θ_e per node full DOFs after the sleepers', held at the ends as the rail is, numbered after each
+    /// node's rail and sleeper DOFs (half-bandwidth 5 + per_sleeper: a rail element spans its first node's block
+    /// and its second's θ).
+    pub fn with_track(
+        nodes: usize,
+        supports: Supports,
+        sleeper_nodes: &[usize],
+        per_sleeper: usize,
+        embankment: bool,
+    ) -> Self {
         let rail = Self::new(nodes, supports);
-        let full = 2 * nodes + per_sleeper * sleeper_nodes.len();
+        let below = rail.rail + per_sleeper * sleeper_nodes.len();
+        let full = below + if embankment { 2 * nodes } else { 0 };
         let mut free_of_full = vec![None; full];
         let mut full_of_free = Vec::with_capacity(full);
+        let mut number = |dof: usize| {
+            free_of_full[dof] = Some(full_of_free.len());
+            full_of_free.push(dof);
+        };
         let mut next_sleeper = 0;
         for node in 0..nodes {
-            for dof in [2 * node, 2 * node + 1] {
-                if rail.free_of_full[dof].is_some() {
-                    free_of_full[dof] = Some(full_of_free.len());
-                    full_of_free.push(dof);
-                }
-            }
+            let held = |dof: usize| rail.free_of_full[dof].is_none();
+            [2 * node, 2 * node + 1].into_iter().filter(|&d| !held(d)).for_each(&mut number);
             while next_sleeper < sleeper_nodes.len() && sleeper_nodes[next_sleeper] == node {
-                for dof in rail.rail + per_sleeper * next_sleeper..rail.rail + per_sleeper * (next_sleeper + 1) {
-                    free_of_full[dof] = Some(full_of_free.len());
-                    full_of_free.push(dof);
-                }
+                (rail.rail + per_sleeper * next_sleeper..rail.rail + per_sleeper * (next_sleeper + 1))
+                    .for_each(&mut number);
                 next_sleeper += 1;
             }
+            if embankment {
+                [0, 1].into_iter().filter(|&k| !held(2 * node + k)).for_each(|k| number(below + 2 * node + k));
+            }
         }
-        Self { free_of_full, full_of_free, rail: rail.rail, per_sleeper }
+        Self { free_of_full, full_of_free, rail: rail.rail, per_sleeper, embankment: embankment.then_some(below) }
     }
 
     /// The free DOF z of sleeper `s` of a map [`DofMap::with_sleepers`] made (a sleeper's DOF is never held).
@@ -131,7 +149,24 @@ impl DofMap {
         (self.per_sleeper == 2).then(|| self.free_of_full[self.rail + 2 * s + 1].expect("a ballast DOF is free"))
     }
 
-    /// Number of full DOFs: 2·(n_e + 1) of the rail, and those of the sleepers after them.
+    /// The free DOF under sleeper `s`'s ballast, on `node`: its ballast body's y, else the embankment's w_e at that
+    /// node (None where the ballast stands on rigid ground, or a support holds w_e).
+    pub fn under_ballast(&self, s: usize, node: usize) -> Option<usize> {
+        self.ballast_body(s).or_else(|| self.embankment.and_then(|below| self.free_of_full[below + 2 * node]))
+    }
+
+    /// Free index of each of the embankment's element `e`'s four DOFs (w_e,a, θ_e,a, w_e,b, θ_e,b), None where a
+    /// support holds it — or None throughout without an embankment.
+    pub fn embankment_element_free(&self, e: usize) -> [Option<usize>; 4] {
+        std::array::from_fn(|k| self.embankment.and_then(|below| self.free_of_full[below + 2 * e + k]))
+    }
+
+    /// The full index of the embankment's first DOF (w_e at node 0), if the map has an embankment.
+    pub fn embankment_start(&self) -> Option<usize> {
+        self.embankment
+    }
+
+    /// Number of full DOFs: 2·(n_e + 1) of the rail, and those of the sleepers (and embankment) after them.
     pub fn full_len(&self) -> usize {
         self.free_of_full.len()
     }

@@ -70,6 +70,10 @@ pub struct RunSummary {
     pub rail_theory: Option<String>,
     /// The foundation's damping ratio ζ = c_f / c_cr.
     pub damping_ratio: f64,
+    /// Whether the sleepers' ballast rests on an embankment beam (the two-beam track): v_cr is then that of the rail,
+    /// the sleepers and half the embankment as one beam on half the soil, ζ the embankment's soil's.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub over_embankment: bool,
     /// Friction devices placed (after merging on shared nodes).
     pub devices: usize,
     /// Force of one device F_u (N).
@@ -309,7 +313,11 @@ impl RunSummary {
             critical_speed: case.critical_speed.filter(|_| case.ground_fit.is_none()),
             ground_fit: case.ground_fit,
             rail_theory: scenario.beam.theory.unless_default(),
-            damping_ratio: case.model.foundation().damping_ratio(case.model.beam()),
+            damping_ratio: match case.model.embankment() {
+                Some(below) => below.foundation.damping_ratio(&below.beam),
+                None => case.model.foundation().damping_ratio(case.model.beam()),
+            },
+            over_embankment: case.model.embankment().is_some(),
             devices: device_positions.len(),
             device_force: scenario.friction.devices.as_ref().and_then(|d| d.force).unwrap_or(0.0),
             device_positions,

@@ -46,13 +46,14 @@ fn write_text(f: &mut Formatter<'_>, r: &RunSummary) -> fmt::Result {
         writeln!(f, "  rail: {theory} beam, shear deformation and rotary inertia included")?;
     }
     if let Some(v_cr) = r.critical_speed {
-        let track = match r.sleepers {
-            Some(_) => "the equivalent continuous track (sleepers' mass and support spread)",
-            None => "the infinite track",
+        let (track, soil) = match (&r.sleepers, r.over_embankment) {
+            (_, true) => ("the rail, sleepers and half the embankment as one beam on half the soil", "the soil's"),
+            (Some(_), false) => ("the equivalent continuous track (sleepers' mass and support spread)", "foundation"),
+            (None, false) => ("the infinite track", "foundation"),
         };
         writeln!(
             f,
-            "  critical speed of {track} v_cr = {v_cr:.2} m/s; foundation damping ζ = {}",
+            "  critical speed of {track} v_cr = {v_cr:.2} m/s; {soil} damping ζ = {}",
             scenario::number::significant(r.damping_ratio, 12)
         )?;
     }

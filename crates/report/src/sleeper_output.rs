@@ -32,6 +32,24 @@ pub fn sleepers_in_words(s: &Sleepers, count: usize) -> String {
     )
 }
 
+/// The sleepers of `model` in words ([`sleepers_in_words`]) and, where their ballast rests on an embankment beam,
+/// that beam and its soil (MN·m², t/m, MN/m², kN·s/m² for the whole track: the rail carries half); None on a
+/// continuous track.
+pub fn track_in_words(model: &BeamModel) -> Option<String> {
+    let (s, nodes) = model.sleepers()?;
+    let sleepers = sleepers_in_words(s, nodes.len());
+    let Some(below) = model.embankment() else { return Some(sleepers) };
+    let n = |x: f64| scenario::number::significant(x, 4);
+    let (beam, soil) = (&below.beam, &below.foundation);
+    Some(format!(
+        "{sleepers} over an embankment of EI {} MN·m², {} t/m (half under this rail), on k_f {} MN/m², c {} kN·s/m²",
+        n(2.0 * beam.bending_stiffness() / 1e6),
+        n(2.0 * beam.mass_per_length() / 1e3),
+        n(2.0 * soil.stiffness / 1e6),
+        n(2.0 * soil.damping / 1e3)
+    ))
+}
+
 /// A sleeper of an exception, over the run.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ExceptionalSleeper {
@@ -138,7 +156,7 @@ impl SleepersSummary {
         let lumped = s.bay_resonances(model.beam().mass_per_length());
         let exceptions = exceptional(s, results);
         Some(Self {
-            track: sleepers_in_words(s, nodes.len()),
+            track: track_in_words(model).unwrap_or_default(),
             count: nodes.len(),
             spacing: s.spacing,
             passing_frequency: speed / s.spacing,

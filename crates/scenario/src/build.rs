@@ -34,7 +34,7 @@ impl Scenario {
     /// Check every value that the lower layers do not already name by its path.
     pub fn validate(&self) -> Result<()> {
         match &self.ground {
-            Some(_) => self.ground_track().map(|_| ()),
+            Some(_) => self.track_and_ground().map(|_| ()),
             None => self.build().map(|_| ()),
         }
     }
@@ -46,16 +46,38 @@ impl Scenario {
         if self.ground.is_some() {
             return self.on_fitted_foundation()?.0.model();
         }
-        if self.embankment.is_some() {
-            return Err(invalid(
-                "embankment",
-                "given",
-                "an [embankment] stands on a [ground]: give the ground under it",
-            ));
+        if let Some(embankment) = &self.embankment {
+            return self.two_beam_model(embankment);
         }
         let beam = self.beam;
         beam.validate()?;
         let mesh = Mesh::new(self.mesh.length, self.mesh.elements)?;
+        let foundation = self.soil(&beam)?;
+        let supports = self.supports;
+        // On sleepers the zones' dashpots are scaled to the support the rail feels in the long wave: the soil plus
+        // the sleepers' equivalent k_eq (docs/theory.md §18).
+        let support = Foundation { stiffness: foundation.stiffness + self.sleepers_equivalent()?, ..foundation };
+        let damping = self.graded_damping(&mesh, foundation.damping, support.critical_damping(&beam))?;
+        let mut model = BeamModel::with_element_damping(beam, foundation, mesh, supports, damping)?;
+        if let Some(sleepers) = &self.sleepers {
+            model = model.with_sleepers(sleepers.sleepers()?).map_err(|e| sleepers.misfit(e, &self.mesh))?;
+        }
+        if let Some(rayleigh) = &self.damping.rayleigh {
+            model = model.with_rayleigh(rayleigh.rayleigh()?)?;
+        }
+        crate::diagnostics::refuse_degenerate(&model)?;
+        Ok(model)
+    }
+
+    /// The sleepers' equivalent continuous support k_eq (N/m², 0 without sleepers), their values checked.
+    fn sleepers_equivalent(&self) -> Result<f64> {
+        let Some(section) = &self.sleepers else { return Ok(0.0) };
+        Ok(section.sleepers()?.equivalent_stiffness())
+    }
+
+    /// The `[foundation]`'s soil, its values checked: its law, k_f, and c_f given or as a ratio of the critical
+    /// damping of `beam` on it.
+    pub(crate) fn soil(&self, beam: &fem_beam::Beam) -> Result<Foundation> {
         let f = &self.foundation;
         let law = self.foundation_law()?;
         let mut foundation = Foundation { stiffness: f.stiffness, damping: 0.0, law, loss_factor: f.loss_factor };
@@ -74,40 +96,21 @@ impl Scenario {
             }
             (None, Some(ratio)) => {
                 finite_non_negative("foundation.damping_ratio", ratio, "ratio of c_cr")?;
-                foundation = foundation.with_damping_ratio(ratio, &beam)?;
+                foundation = foundation.with_damping_ratio(ratio, beam)?;
             }
             (None, None) => {}
         }
-        let supports = self.supports;
-        let damping = match &f.absorbing_zones {
-            Some(z) => {
-                finite_positive("foundation.absorbing_zones.length", z.length, "m")?;
-                finite_non_negative("foundation.absorbing_zones.peak_ratio", z.peak_ratio, "ratio of c_cr")?;
-                // On sleepers the zones' dashpots are scaled to the support the rail feels in the long wave: the
-                // soil plus the sleepers' equivalent k_eq (docs/theory.md §18).
-                let support =
-                    Foundation { stiffness: foundation.stiffness + self.sleepers_equivalent()?, ..foundation };
-                let zones =
-                    AbsorbingZones { length: z.length, peak_damping: z.peak_ratio * support.critical_damping(&beam) };
-                zones.element_damping(&mesh, foundation.damping).map_err(|e| under("foundation", e.into()))?
-            }
-            None => vec![foundation.damping; mesh.elements],
-        };
-        let mut model = BeamModel::with_element_damping(beam, foundation, mesh, supports, damping)?;
-        if let Some(sleepers) = &self.sleepers {
-            model = model.with_sleepers(sleepers.sleepers()?).map_err(|e| sleepers.misfit(e, &self.mesh))?;
-        }
-        if let Some(rayleigh) = &self.damping.rayleigh {
-            model = model.with_rayleigh(rayleigh.rayleigh()?)?;
-        }
-        crate::diagnostics::refuse_degenerate(&model)?;
-        Ok(model)
+        Ok(foundation)
     }
 
-    /// The sleepers' equivalent continuous support k_eq (N/m², 0 without sleepers), their values checked.
-    fn sleepers_equivalent(&self) -> Result<f64> {
-        let Some(section) = &self.sleepers else { return Ok(0.0) };
-        Ok(section.sleepers()?.equivalent_stiffness())
+    /// The soil's dashpot per element (N·s/m²): `base` throughout, graded up to `foundation.absorbing_zones`'
+    /// `peak_ratio` × `critical` (N·s/m²) at the ends where it has them.
+    pub(crate) fn graded_damping(&self, mesh: &Mesh, base: f64, critical: f64) -> Result<Vec<f64>> {
+        let Some(z) = &self.foundation.absorbing_zones else { return Ok(vec![base; mesh.elements]) };
+        finite_positive("foundation.absorbing_zones.length", z.length, "m")?;
+        finite_non_negative("foundation.absorbing_zones.peak_ratio", z.peak_ratio, "ratio of c_cr")?;
+        let zones = AbsorbingZones { length: z.length, peak_damping: z.peak_ratio * critical };
+        zones.element_damping(mesh, base).map_err(|e| under("foundation", e.into()))
     }
 
     /// The soil's law from `foundation.law` and `tension_ratio` (given for a bilinear soil only).

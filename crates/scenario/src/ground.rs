@@ -155,6 +155,24 @@ impl crate::Scenario {
     /// over an `[embankment]` (the two-beam track; the sleepers spread as their long-wave twin, so without
     /// exceptions).
     pub fn ground_track(&self) -> Result<(fem_beam::Beam, analytic::ground::StripGround, GroundTrack)> {
+        if let Some(section) = &self.sleepers
+            && self.embankment.is_some()
+            && !section.exceptions.is_empty()
+        {
+            return Err(invalid(
+                "sleepers.exceptions",
+                format!("{} given", section.exceptions.len()),
+                "on a [ground] the steady wave and the receptance spread the sleepers as their long-wave twin, which \
+                 has no voided, tensionless, frictional or rescaled sleeper (a run in time, `frictrack run`, takes \
+                 them)",
+            ));
+        }
+        self.track_and_ground()
+    }
+
+    /// [`Self::ground_track`] with the sleepers' exceptions kept (a run in time takes them; the long-wave twin leaves
+    /// them out).
+    pub(crate) fn track_and_ground(&self) -> Result<(fem_beam::Beam, analytic::ground::StripGround, GroundTrack)> {
         let Some(ground) = &self.ground else {
             return Err(missing("ground", "a [ground] section: the layered ground under the track"));
         };
@@ -176,14 +194,6 @@ impl crate::Scenario {
         let track = match (&self.sleepers, &self.embankment) {
             (None, None) => GroundTrack::Composite,
             (Some(section), Some(embankment)) => {
-                if !section.exceptions.is_empty() {
-                    return Err(invalid(
-                        "sleepers.exceptions",
-                        format!("{} given", section.exceptions.len()),
-                        "on a [ground] the sleepers are spread as their long-wave twin, which has no voided, \
-                         tensionless, frictional or rescaled sleeper",
-                    ));
-                }
                 if let Some(mass) = section.ballast.mass {
                     return Err(invalid(
                         "sleepers.ballast.mass",
@@ -226,8 +236,8 @@ impl crate::Scenario {
         Ok((self.beam, ground.strip()?, track))
     }
 
-    /// [`Self::ground_track`] where it is the composite beam — what `frictrack ground` and a run in time on the ground
-    /// take; the two-beam track is refused by key (`embankment`).
+    /// [`Self::ground_track`] where it is the composite beam — what `frictrack ground` takes; the two-beam track is
+    /// refused by key (`embankment`).
     pub fn track_on_the_ground(&self) -> Result<(fem_beam::Beam, analytic::ground::StripGround)> {
         match self.ground_track()? {
             (beam, strip, GroundTrack::Composite) => Ok((beam, strip)),
@@ -235,8 +245,8 @@ impl crate::Scenario {
                 "embankment",
                 "given",
                 "this takes the composite track-and-embankment beam on the ground; the rail on sleepers over an \
-                 embankment is computed by `frictrack stationary` (its steady wave) and `frictrack receptance` only, \
-                 so far",
+                 embankment is computed by `frictrack stationary` (its steady wave), `frictrack receptance` and \
+                 `frictrack run` (in time, on a fitted ground)",
             )),
         }
     }
@@ -288,24 +298,45 @@ impl crate::Scenario {
     }
 
     /// This scenario for a run in time: its `[ground]` replaced by a foundation fitted to the strip's k_eq along the
-    /// load's line ω = kv at `load.speed` (`GroundedBeam::fitted_foundation`: a spring and a dashpot under the beam,
-    /// the ground's co-vibrating mass added to the beam's), and the fit with its wave's error against the exact
-    /// moving-frame solution. The train is carried as on the ground (whole axles unless `load.carries` says
-    /// otherwise); a changing speed is refused (the fit holds at one speed).
+    /// load's line ω = kv at `load.speed`, and the fit with its wave's error against the exact moving-frame solution.
+    /// Under the composite beam (`GroundedBeam::fitted_foundation`) a spring and a dashpot under the beam, the ground's
+    /// co-vibrating mass added to the beam's; under the two-beam track (`TrackOnEmbankment::fitted_ground`, fitted to
+    /// what the rail feels) the `[foundation]` under the `[embankment]`, the mass added to the embankment's, whose
+    /// loss factor the fitted dashpot takes over. The train is carried as on the ground (whole axles on the composite
+    /// beam, half on a rail, unless `load.carries` says otherwise); a changing speed is refused (the fit holds at one
+    /// speed).
     pub fn on_fitted_foundation(&self) -> Result<(Self, analytic::ground::FittedFoundation)> {
-        let (beam, strip) = self.track_on_the_ground()?;
+        let (beam, strip, track) = self.track_and_ground()?;
         self.load.refuse_changing_speed("a foundation fitted to the ground")?;
         let speed = self.load.speed;
         if !(speed.is_finite() && speed >= 0.0) {
             return Err(invalid("load.speed", speed, "must be finite and ≥ 0 (m/s)"));
         }
-        let fit = analytic::ground::GroundedBeam::new(&beam, &strip)?.fitted_foundation(speed)?;
         let mut fitted = self.clone();
         fitted.ground = None;
+        fitted.load.carries = Some(self.axle_share());
+        let fit = match track {
+            GroundTrack::Composite => {
+                let fit = analytic::ground::GroundedBeam::new(&beam, &strip)?.fitted_foundation(speed)?;
+                fitted.beam.density += fit.co_vibrating_mass / beam.area;
+                fit
+            }
+            GroundTrack::RailOnEmbankment { sleepers, embankment, interface } => {
+                if interface != Interface::Bonded {
+                    return Err(Self::tensionless_interface_in_time());
+                }
+                let twin = fem_beam::Sleepers { exceptions: Vec::new(), ..sleepers };
+                let track = analytic::ground::TrackOnEmbankment { sleepers: &twin, embankment, ground: &strip };
+                let fit = track.fitted_ground(&beam, speed)?;
+                if let Some(section) = fitted.embankment.as_mut() {
+                    section.mass_per_length += fit.co_vibrating_mass;
+                    section.loss_factor = 0.0;
+                }
+                fit
+            }
+        };
         fitted.foundation.stiffness = fit.stiffness;
         fitted.foundation.damping = Some(fit.damping);
-        fitted.beam.density += fit.co_vibrating_mass / beam.area;
-        fitted.load.carries = Some(self.axle_share());
         Ok((fitted, fit))
     }
 }

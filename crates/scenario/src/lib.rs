@@ -38,6 +38,7 @@ pub mod sleepers;
 pub mod speeds;
 mod stationary_problem;
 pub mod trains;
+mod two_beam;
 pub mod units;
 pub mod vehicle;
 mod warning;

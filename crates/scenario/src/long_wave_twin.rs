@@ -31,6 +31,16 @@ impl Scenario {
     /// for a changing speed (these are steady states at one speed).
     pub fn uniform_support(&self, what: &str) -> Result<(Scenario, Option<String>)> {
         self.load.refuse_changing_speed(what)?;
+        if self.embankment.is_some() && self.ground.is_none() {
+            return Err(invalid(
+                "embankment",
+                "given",
+                format!(
+                    "{what} takes the rail on sleepers over an [embankment] on a [ground] only (its exact line \
+                     support); on a Winkler [foundation] run the finite track (frictrack run)"
+                ),
+            ));
+        }
         let Some(section) = &self.sleepers else { return Ok((self.clone(), None)) };
         if !section.exceptions.is_empty() {
             return Err(invalid(

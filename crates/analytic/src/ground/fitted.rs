@@ -51,13 +51,10 @@ pub struct FittedFoundation {
     pub peak_error: f64,
 }
 
-impl<S: LineSupport + ?Sized> GroundedBeam<'_, S> {
-    /// The foundation fitted at `speed` (m/s), as the module says, with its error.
-    pub fn fitted_foundation(&self, speed: f64) -> Result<FittedFoundation> {
-        let exact = self.spectrum(speed)?;
-        let (fit, wavenumbers) = self.fit(&exact, speed)?;
-        let (wave_error, peak_error) = self.error_of(&exact, &fit, speed)?;
-        Ok(FittedFoundation {
+impl FittedFoundation {
+    /// `fit` at `speed` over `wavenumbers`, with its (wave, peak) `errors`.
+    pub(super) fn of(speed: f64, fit: &Fit, wavenumbers: (f64, f64), (wave_error, peak_error): (f64, f64)) -> Self {
+        Self {
             speed,
             stiffness: fit.stiffness,
             damping: fit.damping,
@@ -65,7 +62,17 @@ impl<S: LineSupport + ?Sized> GroundedBeam<'_, S> {
             wavenumbers,
             wave_error,
             peak_error,
-        })
+        }
+    }
+}
+
+impl<S: LineSupport + ?Sized> GroundedBeam<'_, S> {
+    /// The foundation fitted at `speed` (m/s), as the module says, with its error.
+    pub fn fitted_foundation(&self, speed: f64) -> Result<FittedFoundation> {
+        let exact = self.spectrum(speed)?;
+        let (fit, wavenumbers) = self.fit(&exact, speed)?;
+        let errors = self.error_of(&exact, &fit, speed)?;
+        Ok(FittedFoundation::of(speed, &fit, wavenumbers, errors))
     }
 
     /// The foundation fitted to `exact`, this beam's spectrum at `speed`, without measuring its error: `beam` (this
@@ -79,40 +86,16 @@ impl<S: LineSupport + ?Sized> GroundedBeam<'_, S> {
 
     /// The fit to `exact` at `speed` and the wavenumbers it is fitted over.
     fn fit(&self, exact: &MovingSpectrum, speed: f64) -> Result<(Fit, (f64, f64))> {
-        let samples = exact.samples_in_k();
-        let heaviest = samples.iter().map(|(_, g, dk)| g.norm().powi(4) * dk).fold(0.0, f64::max);
-        let kept: Vec<(f64, Complex64, f64)> =
-            samples.into_iter().filter(|(_, g, dk)| g.norm().powi(4) * dk > NEGLIGIBLE_WEIGHT * heaviest).collect();
-        let supports: Vec<Complex64> =
-            kept.par_iter().map(|&(k, _, _)| self.support.line_stiffness(k, k * speed)).collect::<Result<_>>()?;
-        let mut rows: Vec<Row> = kept
-            .iter()
-            .zip(&supports)
-            .map(|(&(k, g, dk), s)| Row {
-                weight: g.norm().powi(4) * dk,
-                omega: k * speed,
-                real: s.re,
-                imaginary: s.im + self.loss_factor * self.bending_stiffness * k.powi(4),
-            })
-            .collect();
-        let mut fit = least_squares(&rows);
-        // |G|⁴ is |G|²/|D|²: with the fitted D in place of the exact one the weights make ∫|G|²|G_fit|²|δD|² dk,
-        // the wave's squared error exactly (G_fit − G = G G_fit δD); the fixed point of this reweighting
-        // (Steiglitz & McBride's iteration) minimises it.
-        for _ in 0..REWEIGHTINGS {
-            for (row, &(k, g, dk)) in rows.iter_mut().zip(&kept) {
-                let beam = self.bending_stiffness * k.powi(4) - (self.mass_per_length + fit.mass) * row.omega.powi(2);
-                let fitted = Complex64::new(beam + fit.stiffness, -fit.damping * row.omega);
-                row.weight = (g.norm() / fitted.norm()).powi(2) * dk;
-            }
-            let next = least_squares(&rows);
-            let settled = next.close_to(&fit);
-            fit = next;
-            if settled {
-                break;
-            }
-        }
-        Ok((fit, central_range(&kept, &rows)))
+        let target = |k: f64| -> Result<(Complex64, f64)> {
+            let s = self.support.line_stiffness(k, k * speed)?;
+            Ok((s + Complex64::new(0.0, self.loss_factor * self.bending_stiffness * k.powi(4)), 1.0))
+        };
+        let fitted = |fit: &Fit, k: f64| {
+            let omega = k * speed;
+            let beam = self.bending_stiffness * k.powi(4) - (self.mass_per_length + fit.mass) * omega.powi(2);
+            Ok(-1.0 / Complex64::new(beam + fit.stiffness, -fit.damping * omega))
+        };
+        fit_along(exact, speed, target, fitted)
     }
 
     /// The fitted beam's wave against `exact` at `speed`: (max|W_fit − W| / max|W|, the peaks' signed difference over
@@ -126,23 +109,74 @@ impl<S: LineSupport + ?Sized> GroundedBeam<'_, S> {
             support: &foundation,
         }
         .spectrum(speed)?;
-        let count = (2.0 * ERROR_REACH / ERROR_STEP) as usize;
-        let positions: Vec<f64> = (0..=count).map(|i| -ERROR_REACH + i as f64 * ERROR_STEP).collect();
-        let (w, w_fit): (Vec<f64>, Vec<f64>) =
-            positions.par_iter().map(|&s| (exact.deflection(s), fitted.deflection(s))).unzip();
-        let largest = w.iter().fold(0.0f64, |a, x| a.max(x.abs()));
-        let difference = w.iter().zip(&w_fit).fold(0.0f64, |a, (x, y)| a.max((x - y).abs()));
-        let deepest = |values: &[f64]| values.iter().fold(0.0f64, |a, x| a.max(-x));
-        Ok((difference / largest, (deepest(&w_fit) - deepest(&w)) / deepest(&w)))
+        Ok(wave_error(exact, &fitted))
     }
+}
+
+/// The fit of a support along the load's line ω = kv to the samples of `exact`, a response's spectrum at `speed`,
+/// and the wavenumbers it is fitted over. `target(k)` gives what the fitted k_f − mω² + icω stands for there
+/// (the exact support, with any hysteretic loss the run in time lacks added to its imaginary part) and |σ|², with
+/// σ = ∂D/∂k_s how much the response's operator D moves with it; `fitted(fit, k)` the response G_fit of the
+/// operator with the fit in place. Weights |G|⁴|σ|² dk, then |G|²|G_fit|²|σ|² dk until the fit settles: a change
+/// δk_s moves the wave by δG = G G_fit σ δk_s.
+pub(super) fn fit_along(
+    exact: &MovingSpectrum,
+    speed: f64,
+    target: impl Fn(f64) -> Result<(Complex64, f64)> + Sync,
+    fitted: impl Fn(&Fit, f64) -> Result<Complex64>,
+) -> Result<(Fit, (f64, f64))> {
+    let samples = exact.samples_in_k();
+    let heaviest = samples.iter().map(|(_, g, dk)| g.norm().powi(4) * dk).fold(0.0, f64::max);
+    let kept: Vec<(f64, Complex64, f64)> =
+        samples.into_iter().filter(|(_, g, dk)| g.norm().powi(4) * dk > NEGLIGIBLE_WEIGHT * heaviest).collect();
+    let targets: Vec<(Complex64, f64)> = kept.par_iter().map(|&(k, _, _)| target(k)).collect::<Result<_>>()?;
+    let mut rows: Vec<Row> = kept
+        .iter()
+        .zip(&targets)
+        .map(|(&(k, g, dk), &(s, sensitivity))| Row {
+            weight: g.norm().powi(4) * sensitivity * dk,
+            omega: k * speed,
+            real: s.re,
+            imaginary: s.im,
+        })
+        .collect();
+    let mut fit = least_squares(&rows);
+    // |G|⁴ is |G|²/|D|²: with the fitted D in place of the exact one the weights make ∫|G|²|G_fit|²|σ δk_s|² dk,
+    // the wave's squared error to first order in δk_s (G_fit − G = G G_fit δD); the fixed point of this reweighting
+    // (Steiglitz & McBride's iteration) minimises it.
+    for _ in 0..REWEIGHTINGS {
+        for ((row, &(k, g, dk)), &(_, sensitivity)) in rows.iter_mut().zip(&kept).zip(&targets) {
+            row.weight = (g.norm() * fitted(&fit, k)?.norm()).powi(2) * sensitivity * dk;
+        }
+        let next = least_squares(&rows);
+        let settled = next.close_to(&fit);
+        fit = next;
+        if settled {
+            break;
+        }
+    }
+    Ok((fit, central_range(&kept, &rows)))
+}
+
+/// (max|W_fit − W| / max|W|, the peaks' signed difference over the exact peak) of two spectra's single-load waves,
+/// every [`ERROR_STEP`] m over ±[`ERROR_REACH`].
+pub(super) fn wave_error(exact: &MovingSpectrum, fitted: &MovingSpectrum) -> (f64, f64) {
+    let count = (2.0 * ERROR_REACH / ERROR_STEP) as usize;
+    let positions: Vec<f64> = (0..=count).map(|i| -ERROR_REACH + i as f64 * ERROR_STEP).collect();
+    let (w, w_fit): (Vec<f64>, Vec<f64>) =
+        positions.par_iter().map(|&s| (exact.deflection(s), fitted.deflection(s))).unzip();
+    let largest = w.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+    let difference = w.iter().zip(&w_fit).fold(0.0f64, |a, (x, y)| a.max((x - y).abs()));
+    let deepest = |values: &[f64]| values.iter().fold(0.0f64, |a, x| a.max(-x));
+    (difference / largest, (deepest(&w_fit) - deepest(&w)) / deepest(&w))
 }
 
 /// k_f (N/m²), c (N·s/m²), m (kg/m).
 #[derive(Debug, Clone, Copy, PartialEq)]
-struct Fit {
-    stiffness: f64,
-    damping: f64,
-    mass: f64,
+pub(super) struct Fit {
+    pub(super) stiffness: f64,
+    pub(super) damping: f64,
+    pub(super) mass: f64,
 }
 
 impl Fit {

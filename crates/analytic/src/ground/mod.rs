@@ -10,6 +10,7 @@
 //! - `filon`: the Fourier integral of a piecewise cubic, exact at any s (the moving wave's last step).
 //! - `fitted`: [`FittedFoundation`] — a spring, dashpot and co-vibrating mass fitted to a line support along a
 //!   moving load's line ω = kv, with its wave's error: what a run in time takes for the ground.
+//! - `fitted_embankment`: the same fit of the ground under the two-beam track's embankment, to what the rail feels.
 //! - `flexibility`: the surface flexibility F_zz(k, ω) of the profile, to the depth a wave reaches.
 //! - `rayleigh_modes`: the trapped Rayleigh modes' phase velocities at a frequency (det K = 0 of the free surface).
 //! - `line_support`: [`LineSupport`], a beam's support per wave: a Winkler foundation or the strip's k_eq.
@@ -25,6 +26,7 @@
 
 mod filon;
 mod fitted;
+mod fitted_embankment;
 mod flexibility;
 mod half_space;
 mod layer;

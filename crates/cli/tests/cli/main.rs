@@ -11,6 +11,7 @@ mod ground;
 mod ground_friction;
 mod ground_lift_off;
 mod ground_two_beam_friction;
+mod ground_two_beam_run;
 mod ground_wave;
 mod receptance;
 mod run_out;

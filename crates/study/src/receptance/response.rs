@@ -136,8 +136,7 @@ impl ReceptanceRequest {
 fn support(model: &fem_beam::BeamModel) -> String {
     let f = model.foundation();
     let soil = format!("a foundation of k_f = {:.4e} N/m² (η {})", f.stiffness, f.loss_factor);
-    let Some((s, nodes)) = model.sleepers() else { return soil };
-    let sleepers = report::sleeper_output::sleepers_in_words(s, nodes.len());
+    let Some(sleepers) = report::sleeper_output::track_in_words(model) else { return soil };
     if f.stiffness > 0.0 { format!("{sleepers}, on {soil}") } else { sleepers }
 }
 

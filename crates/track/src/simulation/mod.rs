@@ -213,17 +213,20 @@ fn convected_velocity(model: &BeamModel, q: &[f64], speed: f64) -> Vec<f64> {
     let mesh = model.mesh();
     let nodes = mesh.nodes();
     let value = |full: usize| dofs.free_index(full).map_or(0.0, |i| q[i]);
-    let rotation: Vec<f64> = (0..nodes).map(|i| value(2 * i + 1)).collect();
     let l = mesh.element_length();
     let mut v = vec![0.0; q.len()];
-    for i in 0..nodes {
-        let (a, b) = (i.saturating_sub(1), (i + 1).min(nodes - 1));
-        let curvature = (rotation[b] - rotation[a]) / ((b - a) as f64 * l);
-        if let Some(k) = dofs.free_index(2 * i) {
-            v[k] = -speed * rotation[i];
-        }
-        if let Some(k) = dofs.free_index(2 * i + 1) {
-            v[k] = -speed * curvature;
+    // The rail's (w, θ) from full DOF 0, and the embankment's under the ballast where the track has one.
+    for start in std::iter::once(0).chain(dofs.embankment_start()) {
+        let rotation: Vec<f64> = (0..nodes).map(|i| value(start + 2 * i + 1)).collect();
+        for i in 0..nodes {
+            let (a, b) = (i.saturating_sub(1), (i + 1).min(nodes - 1));
+            let curvature = (rotation[b] - rotation[a]) / ((b - a) as f64 * l);
+            if let Some(k) = dofs.free_index(start + 2 * i) {
+                v[k] = -speed * rotation[i];
+            }
+            if let Some(k) = dofs.free_index(start + 2 * i + 1) {
+                v[k] = -speed * curvature;
+            }
         }
     }
     // A sleeper (and the ballast body under it) follows its rail node in the same ratio as in the static state, z/w

@@ -21,7 +21,7 @@ use fem_beam::{BallastContact, BeamModel, Discretisation, SleeperSupport};
 struct Followed {
     w: Option<usize>,
     z: usize,
-    /// The ballast body's DOF, if any.
+    /// What is under the ballast: a ballast body's y or an embankment's w_e, if any.
     y: Option<usize>,
     support: SleeperSupport,
     /// Unilateral ballast: its law's gap (m), the void or the settled state's, and its interaction's index.
@@ -63,7 +63,7 @@ impl<'m> SleeperRecord<'m> {
                 sleepers.push(Followed {
                     w: dofs.free_index(2 * node),
                     z: dofs.sleeper(i),
-                    y: dofs.ballast_body(i),
+                    y: dofs.under_ballast(i, node),
                     support,
                     gap,
                     law,
