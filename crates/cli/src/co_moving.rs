@@ -26,7 +26,7 @@ pub fn run(
         Some(_) => {
             let fit;
             (fitted, fit) = scenario.on_fitted_foundation()?;
-            eprintln!("note: {}", report::run_text::ground_fit_line(&fit));
+            eprintln!("note: {}", report::run_text::ground_fit_line(&fit, false));
             if let Some(warning) = scenario::diagnostics::ground_fit_warning(&fit) {
                 eprintln!("warning: {warning}");
             }

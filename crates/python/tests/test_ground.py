@@ -104,3 +104,21 @@ def test_a_run_in_time_on_the_ground_from_python():
     assert run.summary["critical_speed"] is None
     near = frictrack.run(SITE, speed=61.4)
     assert any(w.startswith("ground = fitted at 61.4 m/s") for w in near.warnings), near.warnings
+
+
+def test_a_voided_sleeper_over_the_embankment_from_python(tmp_path):
+    """`frictrack.run` on the two-beam track at Ledsgård (one 90 kN wheel at 185 km/h) with sleeper 200 voided by
+    1.5 mm, as the command line runs it: the fit is the rail's (6.3 % from the exact wave), the void never closes on
+    this soft site (no first contact, no ballast force) and the sleeper's own numbers come with the run."""
+    text = (ROOT / "examples" / "ledsgard" / "ledsgard-two-beam.toml").read_text()
+    text = text.replace('train = "x2000.csv"', "force = 90000.0", 1)
+    text = text.replace("[mesh]", "[[sleepers.exceptions]]\nindex = 200\ngap = 0.0015\n\n[mesh]", 1)
+    site = tmp_path / "voided.toml"
+    site.write_text(text)
+    run = frictrack.run(site, speed="185km/h")
+    fit = run.summary["ground_fit"]
+    assert abs(fit["wave_error"] - 0.063) < 0.001
+    voided = run.summary["sleepers"]["exceptions"][0]
+    assert voided["what"] == "void 1.5 mm" and abs(voided["x"] - 130.325) < 1e-9
+    assert "first_contact" not in voided and voided["ballast_force"] == 0.0
+    assert voided["largest_gap"] > 1.5e-3

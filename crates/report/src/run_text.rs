@@ -20,11 +20,16 @@ fn section_count(r: &RunSummary) -> String {
     format!("{} sections ({friction} friction{named})", r.stepping.sections)
 }
 
-/// The foundation a run takes for the ground, in one line: "ground: a foundation fitted to it at … m/s over k = …".
-pub fn ground_fit_line(fit: &analytic::ground::FittedFoundation) -> String {
+/// The foundation a run takes for the ground, in one line: "ground: a foundation fitted to it at … m/s over k = …"
+/// (under the embankment of the two-beam track where `over_embankment`).
+pub fn ground_fit_line(fit: &analytic::ground::FittedFoundation, over_embankment: bool) -> String {
+    let (under, rail) = match over_embankment {
+        true => ("the embankment (whole track)", "the rail's "),
+        false => ("the beam", "its "),
+    };
     format!(
         "ground: a foundation fitted to it at {:.2} m/s over k = {:.3}–{:.3} rad/m — k_f = {:.4e} N/m², c = {:.4e} \
-         N·s/m², {:.0} kg/m of ground moving with the beam; its steady wave is the exact one on the ground to {:.1} % \
+         N·s/m², {:.0} kg/m of ground moving with {under}; {rail}steady wave is the exact one on the ground to {:.1} % \
          (deepest point {:+.1} %)",
         fit.speed,
         fit.wavenumbers.0,
@@ -58,7 +63,7 @@ fn write_text(f: &mut Formatter<'_>, r: &RunSummary) -> fmt::Result {
         )?;
     }
     if let Some(fit) = &r.ground_fit {
-        writeln!(f, "  {}", ground_fit_line(fit))?;
+        writeln!(f, "  {}", ground_fit_line(fit, r.over_embankment))?;
     }
     write_friction(f, r)?;
     if let Some(soil) = &r.soil {

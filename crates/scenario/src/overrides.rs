@@ -417,7 +417,8 @@ impl Overrides {
 
     /// The overrides given that change the loads, the speed, the friction or the damping, as `--flag value`.
     fn changes_of_the_case(&self) -> Vec<String> {
-        let number = |flag: &str, v: Option<f64>| v.map(|v| format!("{flag} {v}"));
+        // Six significant digits: `--speed 185km/h` is 51.3889 m/s in a title, not 51.38888888888889.
+        let number = |flag: &str, v: Option<f64>| v.map(|v| format!("{flag} {}", crate::number::significant(v, 6)));
         [
             number("--speed", self.speed),
             number("--acceleration", self.acceleration),
