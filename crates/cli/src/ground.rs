@@ -1,6 +1,7 @@
-//! `frictrack ground`: the scenario's composite beam on its `[ground]` (docs/theory.md §19) — the soil's Rayleigh
-//! modes and their least phase velocity, the static strip stiffness and the Winkler control, where the beam's and
-//! the soil's dispersion curves meet, and the critical speed of the track on the ground, with three figures.
+//! `frictrack ground`: the scenario's composite beam (or two-beam track) on its `[ground]` (docs/theory.md §19) — the
+//! soil's Rayleigh modes and their least phase velocity, the static strip stiffness and the Winkler control, where
+//! the beam's and the soil's dispersion curves meet, and the critical speed of the track on the ground, with three
+//! figures.
 
 use crate::TableFormat;
 use anyhow::Result;
@@ -13,7 +14,8 @@ use study::ground::{GroundRequest, GroundStudy};
 /// Options of `frictrack ground`.
 #[derive(Debug, Args)]
 pub struct GroundArgs {
-    /// Scenario file with a `[ground]` section (its beam is the composite track-and-embankment beam).
+    /// Scenario file with a `[ground]` section (its beam the composite track-and-embankment beam, or a rail on
+    /// `[sleepers]` over an `[embankment]`).
     scenario: PathBuf,
     /// Frequencies A:B:STEP (Hz) of the dispersion curves, A > 0. Default 1:50:1.
     #[arg(long, value_name = "A:B:STEP", allow_hyphen_values = true)]

@@ -236,21 +236,6 @@ impl crate::Scenario {
         Ok((self.beam, ground.strip()?, track))
     }
 
-    /// [`Self::ground_track`] where it is the composite beam — what `frictrack ground` takes; the two-beam track is
-    /// refused by key (`embankment`).
-    pub fn track_on_the_ground(&self) -> Result<(fem_beam::Beam, analytic::ground::StripGround)> {
-        match self.ground_track()? {
-            (beam, strip, GroundTrack::Composite) => Ok((beam, strip)),
-            (_, _, GroundTrack::RailOnEmbankment { .. }) => Err(invalid(
-                "embankment",
-                "given",
-                "this takes the composite track-and-embankment beam on the ground; the rail on sleepers over an \
-                 embankment is computed by `frictrack stationary` (its steady wave), `frictrack receptance` and \
-                 `frictrack run` (in time, on a fitted ground)",
-            )),
-        }
-    }
-
     /// The axles the composite beam on the `[ground]` carries, a train in its frame (offsets behind the first axle,
     /// forces downward, N): the `[load]` train, whole axles unless `load.carries` says otherwise (the composite beam
     /// is the whole track, both rails), or the single `load.force` at the head. Refused by key: load patches, a

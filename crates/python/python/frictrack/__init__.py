@@ -374,7 +374,7 @@ def receptance(scenario: ScenarioLike = None, frequencies: Sequence[float] = (),
 
 
 class Ground:
-    """The scenario's composite beam on its ``[ground]`` (``frictrack ground``): ``dispersion`` the soil's fundamental
+    """The scenario's composite beam (or two-beam track) on its ``[ground]`` (``frictrack ground``): ``dispersion`` the soil's fundamental
     Rayleigh mode (frequency Hz, phase_velocity m/s), ``speeds`` the steady deflection over speed (speed m/s,
     max_downward_deflection and max_upward_deflection m), ``stiffness`` k_eq along the load's line (speed m/s,
     wavenumber rad/m, frequency Hz, stiffness_real and stiffness_imaginary N/m²), ``critical_speed``,
@@ -407,7 +407,8 @@ class Ground:
 
 def ground(scenario: ScenarioLike, frequencies: Optional[Sequence[float]] = None, jobs: Optional[int] = None,
            out: "str | os.PathLike[str] | None" = None) -> Ground:
-    """The scenario's composite beam (``[beam]``) on its layered ``[ground]``: the soil's Rayleigh modes at
+    """The scenario's composite beam (``[beam]``), or its rail on ``[sleepers]`` over an ``[embankment]``, on its
+    layered ``[ground]``: the soil's Rayleigh modes at
     ``frequencies`` (Hz, > 0, increasing; default 1 to 50 by 1) and the fundamental's least phase velocity, the static
     strip stiffness and the Winkler control, where the beam's dispersion meets the soil's, and the critical speed on
     the ground (the speed of the largest steady deflection under ``[load] force``), on ``jobs`` threads. ``out`` (a

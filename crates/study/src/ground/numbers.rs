@@ -8,15 +8,18 @@
 //!   mode (Mezher et al. 2016): a quick estimate of the critical speed; and of the free beam's, k_w = 0 (on a soft
 //!   site the curve on k_w stays above the soil's: its least phase velocity is the Winkler control).
 //! - The critical speed of the track on the ground: the speed of the largest steady downward deflection under one
-//!   load, from a curve over speeds refined by golden section.
+//!   load, from a curve over speeds refined by golden section — of the composite beam, or of the rail on the two-beam
+//!   track (its linear, bonded track; the estimates above then take its whole-track twin, [`whole_track`]).
 //! - k_eq(k_x, k_x v) of the strip along the load's line at a few speeds.
 
 use crate::ground::speeds::{SpeedPoint, critical_speed, point};
+use crate::ground::support::Support;
 use analytic::golden::golden_section;
-use analytic::ground::{GroundedBeam, StripGround, rayleigh_phase_velocities};
+use analytic::ground::{GroundedBeam, LineSupport, StripGround, rayleigh_phase_velocities};
 use runner::Runner;
 use scenario::Scenario;
 use scenario::error::{Result, StudyError, invalid};
+use scenario::ground::GroundTrack;
 use serde::Serialize;
 use std::f64::consts::TAU;
 
@@ -81,11 +84,15 @@ pub struct StiffnessPoint {
 pub struct GroundStudy {
     /// The scenario's title.
     pub title: String,
-    /// The force the beam carries (N, downward).
+    /// What the critical speed is of: "composite beam", or "rail on sleepers over the embankment" (the two-beam
+    /// track, its rail's deflection under the force; the quick estimates then take its whole-track twin).
+    pub track: &'static str,
+    /// The force the beam carries (N, downward): on the two-beam track one rail's.
     pub force: f64,
-    /// EI (N·m²) of the composite beam.
+    /// EI (N·m²) of the beam the quick estimates take: the composite beam, or the two-beam track's whole-track twin
+    /// (2EI_r + EI_e).
     pub bending_stiffness: f64,
-    /// ρA (kg/m).
+    /// ρA (kg/m) of that beam (on the two-beam track 2(ρA_r + m_s/a) + ρA_e).
     pub mass_per_length: f64,
     /// 2b (m).
     pub width: f64,
@@ -101,7 +108,8 @@ pub struct GroundStudy {
     pub minimum_phase_velocity_frequency: Option<f64>,
     /// k_w (N/m²): the Winkler spring with the ground's static deflection under one load.
     pub static_strip_stiffness: f64,
-    /// The static deflection under the force (m, downward).
+    /// The static deflection under the force (m, downward): the composite beam's, or the rail's on the two-beam track
+    /// (k_w is then its whole-track twin's under the same force: a Winkler spring does not depend on the force).
     pub static_deflection: f64,
     /// The critical speed of the beam on k_w (m/s).
     pub winkler_critical_speed: f64,
@@ -129,30 +137,28 @@ pub struct GroundStudy {
 impl GroundStudy {
     /// The numbers of `scenario`'s beam on its `[ground]` for `request`, on `runner`'s threads.
     pub fn of(scenario: &Scenario, request: &GroundRequest, runner: &Runner<'_>) -> Result<Self> {
-        let (beam, strip) = scenario.track_on_the_ground()?;
+        let (rail_or_beam, strip, track) = scenario.ground_track()?;
+        let beam = whole_track(&rail_or_beam, &track);
+        let support = Support::of(&track, &strip);
         crate::receptance::response::check_frequencies(&request.frequencies)?;
         let force = scenario.load.force;
         if !(force.is_finite() && force > 0.0) {
             return Err(invalid("load.force", force, "must be finite and > 0 (N)"));
         }
         let mut warnings = Vec::new();
-        let modes: Vec<ModesPoint> = runner.map(&request.frequencies, |&frequency| {
-            let phase_velocities = rayleigh_phase_velocities(&strip.profile, TAU * frequency);
-            Ok(ModesPoint { frequency, phase_velocities })
-        })?;
-        let dispersion: Vec<DispersionPoint> = modes
-            .iter()
-            .filter_map(|m| {
-                m.phase_velocities.first().map(|&c| DispersionPoint { frequency: m.frequency, phase_velocity: c })
-            })
-            .collect();
+        let (modes, dispersion) = soil_modes(&strip, &request.frequencies, runner)?;
         let minimum = least_phase_velocity(&strip, &dispersion, &mut warnings)?;
         // The static case, the curve, ~12 to refine its peak.
         runner.announce(runner::cost::Estimate::ground(SPECTRA, runner.threads()));
         let grounded = GroundedBeam::new(&beam, &strip)?;
         let (ei, m) = (beam.bending_stiffness(), beam.mass_per_length());
-        let static_deflection = -grounded.spectrum(0.0)?.deflection(0.0) * force;
-        let spring = (force / (2.0 * static_deflection * (4.0 * ei).powf(0.25))).powf(4.0 / 3.0);
+        let twin_static = -grounded.spectrum(0.0)?.deflection(0.0) * force;
+        let spring = (force / (2.0 * twin_static * (4.0 * ei).powf(0.25))).powf(4.0 / 3.0);
+        let carried = GroundedBeam::new(&rail_or_beam, support.line())?;
+        let static_deflection = match track {
+            GroundTrack::Composite => twin_static,
+            GroundTrack::RailOnEmbankment { .. } => -carried.spectrum(0.0)?.deflection(0.0) * force,
+        };
         let winkler_critical_speed = (4.0 * spring * ei / (m * m)).powf(0.25);
         let crossing = dispersion_crossing(&strip, &dispersion, (ei, m, spring));
         if crossing.is_none() {
@@ -170,7 +176,7 @@ impl GroundStudy {
             );
         }
         let top = 1.2 * winkler_critical_speed.max(strip.profile.half_space.shear_wave_speed);
-        let (curve, critical) = speed_curve(&grounded, top, force, runner)?;
+        let (curve, critical) = speed_curve(&carried, top, force, runner)?;
         if critical.is_none() {
             warnings.push(format!(
                 "the largest deflection lies at an end of the speeds computed (up to {top:.1} m/s): no critical \
@@ -181,6 +187,10 @@ impl GroundStudy {
         let equivalent_stiffness = stiffness_curves(&strip, reference, runner)?;
         Ok(Self {
             title: scenario.title.clone(),
+            track: match track {
+                GroundTrack::Composite => "composite beam",
+                GroundTrack::RailOnEmbankment { .. } => "rail on sleepers over the embankment",
+            },
             force,
             bending_stiffness: ei,
             mass_per_length: m,
@@ -206,13 +216,31 @@ impl GroundStudy {
     }
 }
 
+/// The beam the quick estimates take (the static strip stiffness, the Winkler control, the dispersion crossings): the
+/// composite beam itself or, over the two-beam track, its long-wave twin for the whole track — both rails, their
+/// sleepers spread and the embankment moving as one beam, EI = 2EI_r + EI_e, ρA = 2(ρA_r + m_s/a) + ρA_e (the
+/// pads and ballast far stiffer than the ground).
+fn whole_track(rail_or_beam: &fem_beam::Beam, track: &GroundTrack) -> fem_beam::Beam {
+    match track {
+        GroundTrack::Composite => *rail_or_beam,
+        GroundTrack::RailOnEmbankment { sleepers, embankment, .. } => fem_beam::Beam {
+            youngs_modulus: 2.0 * rail_or_beam.bending_stiffness() + embankment.bending_stiffness,
+            second_moment: 1.0,
+            area: 1.0,
+            density: 2.0 * (rail_or_beam.mass_per_length() + sleepers.mass_per_length()) + embankment.mass_per_length,
+            loss_factor: embankment.loss_factor,
+            ..fem_beam::Beam::default()
+        },
+    }
+}
+
 /// A refined peak: (speed m/s, deflection m).
 type Peak = (f64, f64);
 
 /// The steady extremes at [`SPEEDS`] speeds up to `top` (m/s) under `force` (N), and the critical speed refined
 /// from them (speed, deflection), `None` at an end of the range.
 fn speed_curve(
-    grounded: &GroundedBeam<'_, StripGround>,
+    grounded: &GroundedBeam<'_, dyn LineSupport + '_>,
     top: f64,
     force: f64,
     runner: &Runner<'_>,
@@ -225,6 +253,25 @@ fn speed_curve(
     let mut evaluate = |v: f64| point(grounded, v, force).map(|p| p.deflection.max_downward);
     let critical = critical_speed(&curve, &mut evaluate)?;
     Ok((curve, critical))
+}
+
+/// The soil's trapped modes at each of `frequencies` (Hz), and the fundamental where it is trapped.
+fn soil_modes(
+    strip: &StripGround,
+    frequencies: &[f64],
+    runner: &Runner<'_>,
+) -> Result<(Vec<ModesPoint>, Vec<DispersionPoint>)> {
+    let modes: Vec<ModesPoint> = runner.map(frequencies, |&frequency| {
+        let phase_velocities = rayleigh_phase_velocities(&strip.profile, TAU * frequency);
+        Ok(ModesPoint { frequency, phase_velocities })
+    })?;
+    let dispersion = modes
+        .iter()
+        .filter_map(|m| {
+            m.phase_velocities.first().map(|&c| DispersionPoint { frequency: m.frequency, phase_velocity: c })
+        })
+        .collect();
+    Ok((modes, dispersion))
 }
 
 /// The fundamental mode's phase velocity at `frequency` (Hz), or +∞ where it is not trapped.

@@ -3,7 +3,7 @@
 //! golden section), and the speed of the largest downward one — the critical speed of the track on the ground.
 
 use analytic::golden::refine_peak;
-use analytic::ground::{GroundedBeam, MovingSpectrum, StripGround};
+use analytic::ground::{GroundedBeam, LineSupport, MovingSpectrum};
 use fem_beam::{DeflectionExtremes, Extreme};
 use scenario::error::{Result, StudyError};
 use serde::Serialize;
@@ -53,8 +53,8 @@ pub fn refined_extremes(samples: &[(f64, f64)], deflection: &dyn Fn(f64) -> f64)
     DeflectionExtremes { max_downward: refined(-1.0), max_upward: refined(1.0) }
 }
 
-/// The extremes at `speed` of the beam on `strip`.
-pub fn point(grounded: &GroundedBeam<'_, StripGround>, speed: f64, force: f64) -> Result<SpeedPoint> {
+/// The extremes at `speed` of the beam on its support.
+pub fn point<S: LineSupport + ?Sized>(grounded: &GroundedBeam<'_, S>, speed: f64, force: f64) -> Result<SpeedPoint> {
     Ok(extremes(&grounded.spectrum(speed).map_err(StudyError::from)?, speed, force))
 }
 

@@ -143,8 +143,12 @@ impl GroundStudy {
 
     /// The beam and the ground in one line, for the figures' subtitles.
     fn subtitle(&self) -> String {
+        let beam = match self.track {
+            "composite beam" => "beam".to_string(),
+            track => format!("{track} (estimates on its whole-track twin)"),
+        };
         format!(
-            "beam EI = {:.3e} N·m², {:.0} kg/m on a {} m strip; ground: {}",
+            "{beam} EI = {:.3e} N·m², {:.0} kg/m on a {} m strip; ground: {}",
             self.bending_stiffness, self.mass_per_length, self.width, self.profile
         )
     }
@@ -323,9 +327,13 @@ impl Output for GroundStudy {
             "  soil: fundamental Rayleigh mode over {} frequencies; least phase velocity {least}",
             self.modes.len()
         )?;
+        let (whose, spring) = match self.track {
+            "composite beam" => ("", "the Winkler spring with that deflection"),
+            _ => ("the rail ", "the Winkler spring under which the whole-track twin deflects as on the ground"),
+        };
         writeln!(
             f,
-            "  static: {:.3} mm under {:.0} kN; the Winkler spring with that deflection k_w = {:.4e} N/m²",
+            "  static: {whose}{:.3} mm under {:.0} kN; {spring} k_w = {:.4e} N/m²",
             self.static_deflection * 1e3,
             self.force / 1e3,
             self.static_strip_stiffness
