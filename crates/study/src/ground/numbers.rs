@@ -9,7 +9,7 @@
 //!   site the curve on k_w stays above the soil's: its least phase velocity is the Winkler control).
 //! - The critical speed of the track on the ground: the speed of the largest steady downward deflection under one
 //!   load, from a curve over speeds refined by golden section — of the composite beam, or of the rail on the two-beam
-//!   track (its linear, bonded track; the estimates above then take its whole-track twin, [`whole_track`]).
+//!   track (its linear, bonded track; the estimates above then take its whole-track twin, `whole_track`).
 //! - k_eq(k_x, k_x v) of the strip along the load's line at a few speeds.
 
 use crate::ground::speeds::{SpeedPoint, critical_speed, point};
