@@ -1,7 +1,7 @@
 //! The ground under the track (docs/theory.md §19): one speed point of the linear moving-frame solution on a soft
 //! layered site — the spectrum of a composite beam on the strip's k_eq(k_x, k_x v) and its wave's extremes — at a
 //! subcritical, the critical and a supercritical speed, as `frictrack ground` computes each point of its speed curve
-//! (the target: ≤ 0.5 s a speed on 2 cores); the X2000 at Ledsgård without and with ballast friction (≤ 5×
+//! (the target: ≤ 0.5 s a speed on 2 cores), and the same on Ledsgård's profile; the X2000 at Ledsgård without and with ballast friction (≤ 5×
 //! the linear wave); the two-beam track there, bonded, with the sleepers lifting off a tensionless ballast and with
 //! friction between the sleepers and the embankment; and one strip integral k_eq alone.
 //!
@@ -48,6 +48,18 @@ fn ground(c: &mut Criterion) {
     // window, as `frictrack stationary` computes a speed on a [ground].
     let ledsgard = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/ledsgard/ledsgard.toml");
     let ledsgard = scenario::Scenario::from_path(&ledsgard).unwrap();
+    // One speed point on the Ledsgård profile (the target, ≤ 0.5 s): the composite beam under one load at
+    // 70 km/h, at its critical speed for one load (56.5 m/s) and at 280 km/h, as `frictrack ground` computes them.
+    let (composite, ledsgard_strip, _) = ledsgard.ground_track().unwrap();
+    let on_ledsgard = GroundedBeam::new(&composite, &ledsgard_strip).unwrap();
+    for speed in [70.0 / 3.6, 56.5, 280.0 / 3.6] {
+        group.bench_function(format!("ledsgard_speed_point_{:.0}_km_per_h_2_threads", speed * 3.6), |b| {
+            b.iter(|| {
+                let spectrum = on_ledsgard.spectrum(speed).unwrap();
+                black_box(study::ground::speeds::extremes(&spectrum, speed, 1e5))
+            })
+        });
+    }
     let window = study::ground::WaveWindow::default();
     group.bench_function("x2000_wave_at_ledsgard_185_km_per_h_2_threads", |b| {
         b.iter(|| {
