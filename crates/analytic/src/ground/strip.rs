@@ -7,7 +7,8 @@
 //! ```
 //!
 //! The integral runs to K = (n + ½)π/b, a zero of cos(k_y b), far enough that the surface sees only its top material
-//! statically there, F_zz ≈ F_∞ = c/k with c = (1 − ν₁)/μ₁* (K ≥ 10·max(k_x, ω/C_s, 1/h₁) and K b ≥ 40); the rest
+//! statically there, F_zz ≈ F_∞ = c/k with c = (1 − ν₁)/μ₁* (K ≥ 10·max(k_x, ω/C_s,1, 1/h₁), K ≥ 2ω/C_s,min and
+//! K b ≥ 40); the rest
 //! is the asymptotic tail, by parts with 1/(y√(y² + k_x²)) = 1/y² − k_x²/(2y⁴) + … and cos(Kb) = 0,
 //!
 //! ```text
@@ -120,12 +121,16 @@ impl StripGround {
         Integral { value: head.value / PI + tail, error: head.error / PI, ..head }
     }
 
-    /// K = (n + ½)π/b ≥ 10·max(k_x, ω/C_s,min, 1/h₁) and ≥ 40/b (module documentation).
+    /// K = (n + ½)π/b ≥ 10·max(k_x, ω/C_s,top, 1/h₁), ≥ 2ω/C_s,min and ≥ 40/b (module documentation). Past 10/h₁ a
+    /// wave sees the top material alone (what lies below reaches it by e^{−2Kh₁} ≤ 2e-9), so it is the top
+    /// material's shear wave that the cut must pass ten times — not a slower buried layer's, whose waves live at
+    /// k < ω/C_s,min (passed twice over). On a soft layer under a crust at a supercritical speed this halves the cut.
     fn cut(&self, kx: f64, omega: f64) -> f64 {
         let b = 0.5 * self.width;
         let slowest = self.profile.slowest_shear_wave_speed();
+        let top = self.profile.top().shear_wave_speed;
         let inverse_top_thickness = self.profile.layers.first().map_or(0.0, |layer| 1.0 / layer.thickness);
-        let least = (10.0 * kx.max(omega / slowest).max(inverse_top_thickness)).max(40.0 / b);
+        let least = (10.0 * kx.max(omega / top).max(inverse_top_thickness)).max(2.0 * omega / slowest).max(40.0 / b);
         let n = (least * b / PI - 0.5).ceil().max(0.0);
         (n + 0.5) * PI / b
     }
@@ -170,13 +175,14 @@ mod tests {
     }
 
     /// The strip integral is converged in its cut and its tolerance: moving the cut ~3× further out and asking 100×
-    /// tighter changes k_eq by < 1e-8, below, near and above the site's wave speeds (v = 20, 50, 90 m/s along the
-    /// load's line ω = k_x v) and for long and short waves.
+    /// tighter changes k_eq by < 1e-8, below, near and above the site's wave speeds (v = 20, 50, 90 and 120 m/s along
+    /// the load's line ω = k_x v: above the buried clay's 41 m/s the cut follows the top layer's 72 m/s) and for long
+    /// and short waves.
     #[test]
     fn the_strip_integral_is_converged() {
         let strip = site();
         let tight = Tolerance { relative: 1e-11, absolute: 0.0, max_intervals: 20_000 };
-        for v in [20.0, 50.0, 90.0] {
+        for v in [20.0, 50.0, 90.0, 120.0] {
             for kx in [0.05, 0.8, 4.0] {
                 let omega = kx * v;
                 let cut = strip.cut(kx, omega);
