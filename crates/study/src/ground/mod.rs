@@ -19,6 +19,6 @@ pub mod wave;
 pub mod wave_point;
 pub mod wave_text;
 
-pub use numbers::{DispersionPoint, GroundRequest, GroundStudy, ModesPoint, StiffnessPoint};
+pub use numbers::{DispersionPoint, GroundRequest, GroundStudy, ModesPoint, StiffnessPoint, TrackKind};
 pub use speeds::SpeedPoint;
 pub use wave::{GroundWave, GroundWavePoint, GroundWaveStudy, WaveWindow};

@@ -79,14 +79,25 @@ pub struct StiffnessPoint {
     pub stiffness_imaginary: f64,
 }
 
+/// What stands on the ground, as the JSON's `track` names it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub enum TrackKind {
+    /// The composite track-and-embankment beam.
+    #[serde(rename = "composite beam")]
+    CompositeBeam,
+    /// One rail on sleepers over the embankment beam (the two-beam track): the critical speed is the rail's under the
+    /// force, the quick estimates its whole-track twin's.
+    #[serde(rename = "rail on sleepers over the embankment")]
+    RailOnEmbankment,
+}
+
 /// The ground's numbers and the track's critical speed on it.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct GroundStudy {
     /// The scenario's title.
     pub title: String,
-    /// What the critical speed is of: "composite beam", or "rail on sleepers over the embankment" (the two-beam
-    /// track, its rail's deflection under the force; the quick estimates then take its whole-track twin).
-    pub track: &'static str,
+    /// What the critical speed is of.
+    pub track: TrackKind,
     /// The force the beam carries (N, downward): on the two-beam track one rail's.
     pub force: f64,
     /// EI (N·m²) of the beam the quick estimates take: the composite beam, or the two-beam track's whole-track twin
@@ -188,8 +199,8 @@ impl GroundStudy {
         Ok(Self {
             title: scenario.title.clone(),
             track: match track {
-                GroundTrack::Composite => "composite beam",
-                GroundTrack::RailOnEmbankment { .. } => "rail on sleepers over the embankment",
+                GroundTrack::Composite => TrackKind::CompositeBeam,
+                GroundTrack::RailOnEmbankment { .. } => TrackKind::RailOnEmbankment,
             },
             force,
             bending_stiffness: ei,

@@ -4,7 +4,7 @@
 //! speeds, the deflection over speed, |k_eq| over k_x at a few speeds.
 
 use crate::ground::GroundStudy;
-use crate::ground::numbers::beam_phase_velocity;
+use crate::ground::numbers::{TrackKind, beam_phase_velocity};
 use report::columns::{Column, ColumnMeta, header, listed_once, units_line};
 use report::output::{Output, pretty};
 use report::plot::{Mark, PlotSpec, Series, Stroke};
@@ -144,8 +144,8 @@ impl GroundStudy {
     /// The beam and the ground in one line, for the figures' subtitles.
     fn subtitle(&self) -> String {
         let beam = match self.track {
-            "composite beam" => "beam".to_string(),
-            track => format!("{track} (estimates on its whole-track twin)"),
+            TrackKind::CompositeBeam => "beam",
+            TrackKind::RailOnEmbankment => "rail on sleepers over the embankment (estimates on its whole-track twin)",
         };
         format!(
             "{beam} EI = {:.3e} N·m², {:.0} kg/m on a {} m strip; ground: {}",
@@ -328,8 +328,10 @@ impl Output for GroundStudy {
             self.modes.len()
         )?;
         let (whose, spring) = match self.track {
-            "composite beam" => ("", "the Winkler spring with that deflection"),
-            _ => ("the rail ", "the Winkler spring under which the whole-track twin deflects as on the ground"),
+            TrackKind::CompositeBeam => ("", "the Winkler spring with that deflection"),
+            TrackKind::RailOnEmbankment => {
+                ("the rail ", "the Winkler spring under which the whole-track twin deflects as on the ground")
+            }
         };
         writeln!(
             f,
