@@ -5,9 +5,9 @@
 //! "nice" number (1, 2, 2.5 or 5 × 10ᵏ m/s: 10 m/s), from one step to 1.46·v_cr rounded to the step (10–300 m/s).
 //! A stiff soil, k_f = 10 MN/m² (v_cr ≈ 517 m/s), gets 25–750 m/s by 25. Without a foundation (k_f = 0, a bridge
 //! span) there is no v_cr and the reference range is kept; on sleepers the scale is the equivalent continuous
-//! track's; over an `[embankment]` that of the rail, sleepers and half the embankment as one beam on half the soil. Fixed-speed studies scale the same way: a fraction f of
-//! v_cr rounded to five steps (the reference's 50, 100, 150, 200 m/s), the optimal-force speed to a tenth of a step
-//! (206 m/s).
+//! track's; over an `[embankment]` that of both rails, their sleepers and the embankment as one beam on the soil (one
+//! rail's share on half of it moves alike). Fixed-speed studies scale the same way: a fraction f of v_cr rounded to
+//! five steps (the reference's 50, 100, 150, 200 m/s), the optimal-force speed to a tenth of a step (206 m/s).
 
 use crate::error::Result;
 use crate::{Scenario, SweepSection};
@@ -49,18 +49,9 @@ impl SpeedScale {
         }
         let sleepers = scenario.sleepers.as_ref().map(|s| s.sleepers()).transpose()?;
         if let (Some(embankment), Some(sleepers)) = (&scenario.embankment, &sleepers) {
-            // The two-beam track's long wave: the rail, the sleepers and half the embankment move as one beam on
-            // half the soil (its pads and ballast far stiffer than the soil).
-            let e = embankment.embankment()?;
-            let rail = &scenario.beam;
-            let one = fem_beam::Beam {
-                youngs_modulus: rail.bending_stiffness() + 0.5 * e.bending_stiffness,
-                second_moment: 1.0,
-                area: 1.0,
-                density: rail.mass_per_length() + sleepers.mass_per_length() + 0.5 * e.mass_per_length,
-                ..fem_beam::Beam::default()
-            };
-            let soil = fem_beam::Foundation::linear(0.5 * scenario.foundation.stiffness, 0.0);
+            // The two-beam track's long wave: both rails, their sleepers and the embankment as one beam on the soil.
+            let one = embankment.embankment()?.whole_track(&scenario.beam, sleepers);
+            let soil = fem_beam::Foundation::linear(scenario.foundation.stiffness, 0.0);
             let critical = MovingBeam::new(&one, &soil)?.critical_speed();
             return Ok(Self { critical_speed: Some(critical), step: nice(critical / STEPS_TO_CRITICAL) });
         }

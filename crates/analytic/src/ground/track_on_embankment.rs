@@ -27,6 +27,23 @@ pub struct Embankment {
     pub loss_factor: f64,
 }
 
+impl Embankment {
+    /// The whole track over this embankment in the long wave, as one beam: both rails (`rail` each) with their
+    /// `sleepers` spread and the embankment moving together, EI = 2EI_r + EI_e, ρA = 2(ρA_r + m_s/a) + ρA_e, the
+    /// embankment's loss factor — the pads and ballast far stiffer than the ground, as `rigid_layers_make_one_beam`
+    /// (tests) shows. Its critical speed on the whole soil k_f is one rail's share (half of each) on k_f/2.
+    pub fn whole_track(&self, rail: &Beam, sleepers: &Sleepers) -> Beam {
+        Beam {
+            youngs_modulus: 2.0 * rail.bending_stiffness() + self.bending_stiffness,
+            second_moment: 1.0,
+            area: 1.0,
+            density: 2.0 * (rail.mass_per_length() + sleepers.mass_per_length()) + self.mass_per_length,
+            theory: BeamTheory::EulerBernoulli,
+            loss_factor: self.loss_factor,
+        }
+    }
+}
+
 /// One rail's support: its pads, sleepers and ballast (per rail seat) on half the embankment on half the ground.
 #[derive(Debug, Clone, Copy)]
 pub struct TrackOnEmbankment<'a, S: LineSupport + ?Sized> {

@@ -228,20 +228,12 @@ impl GroundStudy {
 }
 
 /// The beam the quick estimates take (the static strip stiffness, the Winkler control, the dispersion crossings): the
-/// composite beam itself or, over the two-beam track, its long-wave twin for the whole track — both rails, their
-/// sleepers spread and the embankment moving as one beam, EI = 2EI_r + EI_e, ρA = 2(ρA_r + m_s/a) + ρA_e (the
-/// pads and ballast far stiffer than the ground).
+/// composite beam itself or, over the two-beam track, its long-wave twin for the whole track
+/// (`Embankment::whole_track`).
 fn whole_track(rail_or_beam: &fem_beam::Beam, track: &GroundTrack) -> fem_beam::Beam {
     match track {
         GroundTrack::Composite => *rail_or_beam,
-        GroundTrack::RailOnEmbankment { sleepers, embankment, .. } => fem_beam::Beam {
-            youngs_modulus: 2.0 * rail_or_beam.bending_stiffness() + embankment.bending_stiffness,
-            second_moment: 1.0,
-            area: 1.0,
-            density: 2.0 * (rail_or_beam.mass_per_length() + sleepers.mass_per_length()) + embankment.mass_per_length,
-            loss_factor: embankment.loss_factor,
-            ..fem_beam::Beam::default()
-        },
+        GroundTrack::RailOnEmbankment { sleepers, embankment, .. } => embankment.whole_track(rail_or_beam, sleepers),
     }
 }
 
