@@ -90,26 +90,26 @@ impl<S: LineSupport + ?Sized> GroundedBeam<'_, S> {
             let s = self.support.line_stiffness(k, k * speed)?;
             Ok((s + Complex64::new(0.0, self.loss_factor * self.bending_stiffness * k.powi(4)), 1.0))
         };
-        let fitted = |fit: &Fit, k: f64| {
-            let omega = k * speed;
-            let beam = self.bending_stiffness * k.powi(4) - (self.mass_per_length + fit.mass) * omega.powi(2);
-            Ok(-1.0 / Complex64::new(beam + fit.stiffness, -fit.damping * omega))
-        };
+        let fitted = |fit: &Fit, k: f64| self.on_fit(fit, |beam| beam.response(k, speed));
         fit_along(exact, speed, target, fitted)
     }
 
     /// The fitted beam's wave against `exact` at `speed`: (max|W_fit − W| / max|W|, the peaks' signed difference over
     /// the exact peak).
     fn error_of(&self, exact: &MovingSpectrum, fit: &Fit, speed: f64) -> Result<(f64, f64)> {
+        Ok(wave_error(exact, &self.on_fit(fit, |beam| beam.spectrum(speed))?))
+    }
+
+    /// `with` applied to the beam the run in time takes with `fit`: carrying the co-vibrating mass, without a loss
+    /// factor, on the fitted spring and dashpot.
+    fn on_fit<T>(&self, fit: &Fit, with: impl Fn(&GroundedBeam<'_, Foundation>) -> Result<T>) -> Result<T> {
         let foundation = Foundation::linear(fit.stiffness, fit.damping);
-        let fitted = GroundedBeam {
+        with(&GroundedBeam {
             bending_stiffness: self.bending_stiffness,
             mass_per_length: self.mass_per_length + fit.mass,
             loss_factor: 0.0,
             support: &foundation,
-        }
-        .spectrum(speed)?;
-        Ok(wave_error(exact, &fitted))
+        })
     }
 }
 
