@@ -44,7 +44,7 @@ fn check(path: &std::path::Path) -> Result<()> {
         // The window is checked as `run` would build it (too short for the wave, the load between its zones).
         study::co_moving::output::window(&scenario, section)?;
     }
-    crate::scenario_args::print_warnings(&scenario, &case);
+    let _ = crate::scenario_args::print_warnings(&scenario, &case);
     let range = scenario.speed_range()?;
     let mesh = case.model.mesh();
     let foundation = case.model.foundation();

@@ -62,7 +62,7 @@ pub fn run(args: &RunArgs) -> Result<()> {
         scenario = report::run_output::recording(scenario);
     }
     let case = scenario.build()?;
-    crate::scenario_args::print_warnings(&scenario, &case);
+    let mut warnings = crate::scenario_args::print_warnings(&scenario, &case);
     if let Some(out) = &args.out {
         report::run_folder::check("--out", out, &case)?;
     }
@@ -83,14 +83,16 @@ pub fn run(args: &RunArgs) -> Result<()> {
     let report = RunSummary::of(&scenario, &case, &result, start)?;
     for warning in report::result_warnings::result_warnings(&case, &report) {
         eprintln!("warning: {warning}");
+        warnings.push(warning.to_string());
     }
     crate::print_output(&report, args.format)?;
-    if let Some(fallback) = report.mostly_solved_by() {
-        let solver = &report.stepping.solver;
-        eprintln!("warning: --solver {solver} could not solve most steps of this run; --solver {fallback} solved them");
+    if let Some(warning) = report.fallback_warning() {
+        eprintln!("warning: {warning}");
+        warnings.push(warning);
     }
     if let Some(out) = &args.out {
-        report::run_folder::write(out, (&scenario, &case), &report, &result, &snapshots)?;
+        let record = report::run_folder::RunRecord { provenance: &crate::provenance(), warnings: &warnings };
+        report::run_folder::write(out, (&scenario, &case), (&report, record), &result, &snapshots)?;
         if args.format == Format::Text {
             let wheels = if result.vehicles.is_some() { ", wheels.csv" } else { "" };
             println!("  wrote {}/summary.json, histories.csv, snapshots.csv{wheels} and figures", out.display());

@@ -91,10 +91,13 @@ impl clap::FromArgMatches for OverrideFlags {
 }
 
 /// Print the warnings of a built scenario on stderr (always: they say a result may be wrong).
-pub fn print_warnings(scenario: &Scenario, case: &scenario::Case) {
-    for warning in scenario::diagnostics::warnings(scenario, case) {
+pub fn print_warnings(scenario: &Scenario, case: &scenario::Case) -> Vec<String> {
+    let warnings: Vec<String> =
+        scenario::diagnostics::warnings(scenario, case).iter().map(ToString::to_string).collect();
+    for warning in &warnings {
         eprintln!("warning: {warning}");
     }
+    warnings
 }
 
 /// Say, on standard error, that a model of a uniform support (`what`: "the closed form", "the stationary wave") takes

@@ -128,7 +128,7 @@ pub fn run_study(
     let (out, quiet) = (options.out.as_path(), options.quiet);
     base.refuse_sweep_on_the_ground()?;
     let case = base.build()?;
-    crate::scenario_args::print_warnings(base, &case);
+    let warnings = crate::scenario_args::print_warnings(base, &case);
     prepare_output_folder("--out", out)?;
     for extension in ["csv", "json"] {
         check_output_file("--out", &out.join(format!("{}.{extension}", preset.name())))?;
@@ -166,7 +166,8 @@ pub fn run_study(
     let wall_time = start.elapsed().as_secs_f64();
     bar.finish_and_clear();
     write_atomically(&out.join(format!("{}.csv", preset.name())), data.csv.as_bytes())?;
-    let metadata = data.file((preset, resolution, base), overrides, (wall_time, git_revision()))?;
+    let provenance = crate::provenance();
+    let metadata = data.file((preset, resolution, base), (overrides, &warnings), (wall_time, &provenance))?;
     write_atomically(
         &out.join(format!("{}.json", preset.name())),
         serde_json::to_string_pretty(&metadata)?.as_bytes(),
@@ -175,10 +176,4 @@ pub fn run_study(
         report::plot::render(spec, out)?;
     }
     Ok((data, journal))
-}
-
-/// The git revision of the working directory, if git and a repository are there.
-fn git_revision() -> Option<String> {
-    let out = std::process::Command::new("git").args(["rev-parse", "--short=12", "HEAD"]).output().ok()?;
-    out.status.success().then(|| String::from_utf8_lossy(&out.stdout).trim().to_string())
 }

@@ -11,14 +11,19 @@
 //! worker thread, the caller waits without the GIL and checks Python's signals every 50 ms. Errors the user can fix
 //! raise `frictrack.InputError` (a `ValueError`) with the field, its value and what is allowed; nothing panics
 //! across the boundary.
+//!
+//! The wheel's `frictrack` console script runs the command line itself in the Python process ([`command_line`]), so
+//! `pip install frictrack` gives the same command as the binary without a second executable in the wheel.
 
 #![allow(unsafe_code)] // PyO3's macros expand to the FFI's unsafe calls.
 
+mod command_line;
 mod commands;
 mod errors;
 mod ground;
 mod interruptible;
 mod receptance;
+mod report;
 mod run;
 mod scenario_input;
 mod sweep;
@@ -43,6 +48,9 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(commands::track_profile, m)?)?;
     m.add_function(wrap_pyfunction!(receptance::receptance, m)?)?;
     m.add_function(wrap_pyfunction!(ground::ground, m)?)?;
+    m.add_function(wrap_pyfunction!(command_line::command_line, m)?)?;
+    m.add_function(wrap_pyfunction!(report::report_html, m)?)?;
+    m.add_function(wrap_pyfunction!(report::write_report, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

@@ -18,9 +18,10 @@ type RunTexts = (String, String, String, String, Option<String>, Vec<String>);
 
 /// Run the scenario (`kind` "reference", "path", "toml" or "json" with its `text`) with the keyword `overrides`,
 /// telling `progress` (a callable of the fraction done), if given; with `out`, the run folder is written there as
-/// `frictrack run --out` writes it (its files checked before the run starts).
+/// `frictrack run --out` writes it (its files checked before the run starts), its `command` (the Python call, in
+/// words) recorded beside the build's commit and the date.
 #[pyfunction]
-#[pyo3(signature = (kind, text, keywords, progress=None, out=None))]
+#[pyo3(signature = (kind, text, keywords, progress=None, out=None, command=String::new()))]
 pub(crate) fn run(
     py: Python<'_>,
     kind: &str,
@@ -28,6 +29,7 @@ pub(crate) fn run(
     keywords: Vec<(String, Bound<'_, PyAny>)>,
     progress: Option<Bound<'_, PyAny>>,
     out: Option<std::path::PathBuf>,
+    command: String,
 ) -> PyResult<RunTexts> {
     let started = std::time::Instant::now();
     let scenario = Source::of(kind, text)?.read()?;
@@ -39,19 +41,24 @@ pub(crate) fn run(
     }
     let mut warnings: Vec<String> =
         scenario::diagnostics::warnings(&scenario, &case).iter().map(ToString::to_string).collect();
+    let before = warnings.clone();
+    let provenance = report::provenance::Provenance::now(command, frictrack_cli::COMMIT);
     let outcome = interruptible::run_reporting(py, progress, move |stop, told| {
         told.announce("frictrack.run", &runner::cost::Estimate::run(runner::cost::RunCost::of(&case)));
         let requests = snapshot_requests(&scenario, &case);
         let (result, snapshots) = run_with_snapshots(&case, &requests, Some(stop), &|f| told.set(f))?;
         let summary = RunSummary::of(&scenario, &case, &result, started)?;
-        let after: Vec<String> =
+        let mut after: Vec<String> =
             report::result_warnings::result_warnings(&case, &summary).iter().map(ToString::to_string).collect();
+        after.extend(summary.fallback_warning());
         let json = summary
             .json()
             .map_err(|e| scenario::error::StudyError::Io { path: "summary".into(), message: e.to_string() })?;
         let text = summary.text();
         if let Some(folder) = &out {
-            report::run_folder::write(folder, (&scenario, &case), &summary, &result, &snapshots)?;
+            let every: Vec<String> = before.iter().chain(&after).cloned().collect();
+            let record = report::run_folder::RunRecord { provenance: &provenance, warnings: &every };
+            report::run_folder::write(folder, (&scenario, &case), (&summary, record), &result, &snapshots)?;
         }
         let wheels = result.vehicles.as_ref().map(report::vehicle_output::wheels_csv);
         let tables = (histories_csv(&result), snapshots_csv(&snapshots), wheels);

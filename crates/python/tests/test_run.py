@@ -107,9 +107,16 @@ def test_the_run_folder_is_the_command_lines(tmp_path):
         if name.endswith(".csv"):
             assert (tmp_path / "py" / name).read_bytes() == (cli_folder / name).read_bytes(), name
     summaries = [json.loads((folder / "summary.json").read_text()) for folder in (tmp_path / "py", cli_folder)]
+    # Where each came from: the call, then the command line; both at this build's commit, today.
+    assert summaries[0]["command"] == f"frictrack.run({example!r}, out={str(tmp_path / 'py')!r}) (Python)"
+    assert summaries[1]["command"].split()[1:3] == ["run", example]
+    assert summaries[0]["git_revision"] == summaries[1]["git_revision"]
     for summary in summaries:
         summary["report"].pop("wall_time")
         summary["report"].pop("time_loop")
+        summary["text"] = summary["text"][: summary["text"].index("  wall time")]
+        assert summary.pop("date")[:10] == time.strftime("%Y-%m-%d", time.gmtime())
+        summary.pop("command")
     assert summaries[0] == summaries[1]
     (tmp_path / "file").write_text("")
     with pytest.raises(frictrack.InputError, match="out"):

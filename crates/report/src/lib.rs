@@ -10,6 +10,8 @@
 //! - [`files`]: result files checked before any work starts and written atomically, never over a link or device.
 //! - [`sweep_figures`]: the figures of a speed sweep, and its CSV read back; [`sweep_file`]: the JSON beside it; [`tables`]: reading CSV files back;
 //!   [`columns`]: one convention for the units of every column.
+//! - [`html`]: a run, study or `reproduce` folder as one self-contained HTML report; [`provenance`]: the command,
+//!   version, commit and date a result folder records.
 //! - [`track_profile`]: a sample of a random rail profile with its periodogram against the target spectrum.
 //! - [`plot`] (with [`axis_grid`], [`typeset`] and the common figure shapes of [`figures`]): line plots as PNG and
 //!   SVG, drawn with plotters and a bundled DejaVu font. Colours by configuration in [`palette`].
@@ -18,10 +20,12 @@ pub mod axis_grid;
 pub mod columns;
 pub mod figures;
 pub mod files;
+pub mod html;
 pub mod mesh_ripple;
 pub mod output;
 pub mod palette;
 pub mod plot;
+pub mod provenance;
 pub mod result_warnings;
 pub mod run_folder;
 pub mod run_output;

@@ -6,6 +6,7 @@
 
 use crate::columns::ColumnMeta;
 use crate::files::{check_output_file, prepare_output_folder, write_atomically};
+use crate::provenance::Provenance;
 use crate::run_output::{
     FIGURE_STEMS, HISTORY_COLUMNS, RunCurves, SNAPSHOT_COLUMNS, histories_csv, position_noun, run_plots, snapshots_csv,
 };
@@ -21,7 +22,8 @@ use track::{RunResult, Snapshot, SnapshotAt};
 /// How a run folder's numbers are signed.
 pub const CONVENTIONS: &str = "deflection positive upward; moment sagging-positive; extremes are magnitudes";
 
-/// A run folder's `summary.json`: the run's summary, its files' columns, the figures' titles and the scenario.
+/// A run folder's `summary.json`: the run's summary and its text report, its files' columns, the figures' titles, the
+/// scenario, every warning the run gave, and where it came from.
 #[derive(Debug, Clone, Serialize)]
 pub struct FolderSummary<'a> {
     /// [`CONVENTIONS`].
@@ -30,12 +32,26 @@ pub struct FolderSummary<'a> {
     pub figures: FigureTitles,
     /// Each CSV's columns and what it holds.
     pub files: BTreeMap<&'static str, FileMeta>,
-    /// The version that wrote it.
-    pub frictrack_version: &'static str,
+    /// The command, version, commit and date (flattened: `command`, `frictrack_version`, `git_revision`, `date`).
+    #[serde(flatten)]
+    pub provenance: &'a Provenance,
     /// The run's summary.
     pub report: &'a RunSummary,
     /// The scenario that ran.
     pub scenario: &'a Scenario,
+    /// The run's text report, as `frictrack run` prints it.
+    pub text: String,
+    /// Every warning the run gave (the scenario's, then the result's), as the command line prints them.
+    pub warnings: &'a [String],
+}
+
+/// Where a run came from and what it warned of, kept in its folder.
+#[derive(Debug, Clone, Copy)]
+pub struct RunRecord<'a> {
+    /// The command, version, commit and date.
+    pub provenance: &'a Provenance,
+    /// Every warning the run gave.
+    pub warnings: &'a [String],
 }
 
 /// The titles of a run folder's figures.
@@ -92,11 +108,12 @@ pub fn check(option: &str, folder: &Path, case: &Case) -> Result<()> {
     file_names(case).iter().try_for_each(|name| check_output_file(option, &folder.join(name)))
 }
 
-/// After the run: write the folder's files, each atomically.
+/// After the run: write the folder's files, each atomically; `record` says where the run came from and what it warned
+/// of.
 pub fn write(
     folder: &Path,
     (scenario, case): (&Scenario, &Case),
-    report: &RunSummary,
+    (report, record): (&RunSummary, RunRecord<'_>),
     result: &RunResult,
     snapshots: &[Snapshot],
 ) -> Result<()> {
@@ -125,9 +142,11 @@ pub fn write(
         conventions: CONVENTIONS,
         figures: FigureTitles { positions_of: load.to_string(), subtitle: subtitle.clone(), title: title.clone() },
         files,
-        frictrack_version: env!("CARGO_PKG_VERSION"),
+        provenance: record.provenance,
         report,
         scenario,
+        text: crate::output::Output::text(report),
+        warnings: record.warnings,
     };
     let text = serde_json::to_string_pretty(&summary).map_err(|e| scenario::error::StudyError::Io {
         path: folder.join("summary.json").display().to_string(),

@@ -215,6 +215,12 @@ impl RunSummary {
         (2 * s.fallback_steps > s.steps).then_some(most.solver)
     }
 
+    /// The warning a run gives when its own solver failed on most steps ([`Self::mostly_solved_by`]).
+    pub fn fallback_warning(&self) -> Option<String> {
+        let (solver, fallback) = (&self.stepping.solver, self.mostly_solved_by()?);
+        Some(format!("--solver {solver} could not solve most steps of this run; --solver {fallback} solved them"))
+    }
+
     /// What ran, in words: the load, train or vehicles.
     pub fn load_description(&self) -> String {
         match (&self.vehicles, &self.train) {

@@ -14,6 +14,7 @@ mod ground_two_beam_friction;
 mod ground_two_beam_run;
 mod ground_wave;
 mod receptance;
+mod report;
 mod run_out;
 mod soil;
 mod stationary;

@@ -17,14 +17,17 @@ import json
 import os
 import sys
 import warnings as _warnings
+from pathlib import Path
 from typing import Any, Callable, Dict, Mapping, Optional, Sequence, Union
 
 from . import _native
+from ._progress import ProgressLike, _Reporter
+from ._report import report
 from ._tables import Table, parse_csv
 
 __all__ = [
     "COLUMNS", "Ground", "InputError", "Receptance", "Run", "Stationary", "Study", "Sweep", "Table", "analytic",
-    "ground", "override_names", "override_table", "receptance", "run", "stationary", "study", "sweep", "track_profile", "train",
+    "ground", "override_names", "override_table", "receptance", "report", "run", "stationary", "study", "sweep", "track_profile", "train",
     "trains", "__version__",
 ]
 
@@ -94,45 +97,6 @@ def _jobs(jobs: Optional[int]) -> int:
 _RECEPTANCE_OVERRIDES = ("damping_ratio", "elements", "absorbing_zones")
 
 
-ProgressLike = Union[None, bool, Callable[[float], Any]]
-
-
-class _Reporter:
-    """What ``progress=`` asks for: a callable of the fraction done (0–1), a tqdm bar (``True``; by default when tqdm is
-    installed and standard error is a terminal, as the command line's bar), or nothing (``False``)."""
-
-    def __init__(self, progress: ProgressLike, what: str) -> None:
-        self.bar = None
-        self.callback: Optional[Callable[[float], Any]] = None
-        if callable(progress):
-            self.callback = progress
-            return
-        if progress is False:
-            return
-        if progress is None and not (hasattr(sys.stderr, "isatty") and sys.stderr.isatty()):
-            return
-        try:
-            from tqdm.auto import tqdm
-        except ImportError:
-            if progress is True:
-                raise InputError("invalid progress = True: needs tqdm (pip install tqdm), or pass a callable "
-                                 "f(fraction)") from None
-            return
-        self.bar = tqdm(total=1.0, desc=what, bar_format="{desc}: {percentage:3.0f}%|{bar}| {elapsed}<{remaining}")
-        self.callback = self._update
-
-    def _update(self, fraction: float) -> None:
-        self.bar.n = fraction
-        self.bar.refresh()
-
-    def __enter__(self) -> "Optional[Callable[[float], Any]]":
-        return self.callback
-
-    def __exit__(self, *_: Any) -> None:
-        if self.bar is not None:
-            self.bar.close()
-
-
 class Run:
     """One run's results.
 
@@ -143,11 +107,14 @@ class Run:
     ``losses``: each loss of wheel–rail contact (from ``summary["vehicles"]["losses"]``), or ``None``.
     ``warnings``: what the command line would print as warnings.
     ``report``: the text report ``frictrack run`` prints (also ``str(run)``).
+    ``folder``: the run folder, when the run was given ``out`` (else ``None``); :meth:`report_html` reports it.
     """
 
     def __init__(self, summary: Dict[str, Any], histories: Table, snapshots: Table,
-                 wheels: Optional[Table], warnings: "list[str]", report: str = "") -> None:
+                 wheels: Optional[Table], warnings: "list[str]", report: str = "",
+                 folder: "Optional[os.PathLike[str]]" = None) -> None:
         self.summary = summary
+        self.folder = folder
         self.report = report
         self.histories = histories
         self.snapshots = snapshots
@@ -164,6 +131,17 @@ class Run:
             {"wheel": "1", "lift_off_position": "m", "lift_off_time": "s", "landing_position": "m",
              "duration": "s", "impact_force": "N"},
         )
+
+    def report_html(self, out: "str | os.PathLike[str] | None" = None) -> str:
+        """This run's report as one self-contained HTML page (as ``frictrack report`` writes it: figures inline,
+        tables, warnings, scenario, command, version, commit, date), also written to ``out`` when given. Needs the
+        run folder: run with ``out=DIR``."""
+        if self.folder is None:
+            raise InputError("invalid out = None: a run's report is made from its folder; run it with out=DIR "
+                             "(frictrack.run(..., out='results')), then call report_html()")
+        if out is not None:
+            _native.write_report(os.fspath(self.folder), os.fspath(out))
+        return _native.report_html(os.fspath(self.folder))
 
     def __str__(self) -> str:
         return self.report
@@ -193,9 +171,12 @@ def run(
     standard error is a terminal.
     """
     kind, text = _source(scenario)
+    given = [] if scenario is None else ["{…}" if isinstance(scenario, Mapping) else repr(scenario)]
+    given += [f"{k}={v!r}" for k, v in overrides.items()] + ([] if out is None else [f"out={os.fspath(out)!r}"])
     with _Reporter(progress, "run") as report:
         summary, lines, histories, snapshots, wheels, warnings = _native.run(
-            kind, text, list(overrides.items()), report, None if out is None else os.fspath(out)
+            kind, text, list(overrides.items()), report, None if out is None else os.fspath(out),
+            f"frictrack.run({', '.join(given)}) (Python)",
         )
     return Run(
         json.loads(summary),
@@ -204,6 +185,7 @@ def run(
         None if wheels is None else parse_csv(wheels, COLUMNS["wheels"]),
         list(warnings),
         lines,
+        None if out is None else Path(out),
     )
 
 

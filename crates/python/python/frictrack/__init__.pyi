@@ -1,6 +1,7 @@
 """Type stubs of the frictrack package (SI units: m, s, N, J; speeds in m/s)."""
 
 import os
+from pathlib import Path
 from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
@@ -38,7 +39,8 @@ class Run:
     """One run: `summary` (dict, the keys of `frictrack run --format json`), `histories` (histories.csv: section m,
     time s, load_position m, deflection m, velocity m/s, acceleration m/s², moment N·m, friction_force N),
     `snapshots` (snapshots.csv), `wheels` (wheels.csv, None without vehicles), `losses` (losses of wheel–rail
-    contact), `warnings`, `report` (the text `frictrack run` prints; also `str(run)`)."""
+    contact), `warnings`, `report` (the text `frictrack run` prints; also `str(run)`), `folder` (the run folder
+    when run with `out`, else None)."""
 
     summary: Dict[str, Any]
     report: str
@@ -46,8 +48,11 @@ class Run:
     snapshots: Table
     wheels: Optional[Table]
     warnings: List[str]
+    folder: Optional[Path]
     @property
     def losses(self) -> Optional[Table]: ...
+    def report_html(self, out: Union[str, os.PathLike[str], None] = None) -> str:
+        """The run's report as one self-contained HTML page (also written to `out`); needs a run with `out`."""
 
 class Sweep(Table):
     """`frictrack sweep`'s CSV as a table (one row per speed), the failed runs (speed m/s, error) and the warnings
@@ -146,6 +151,11 @@ def study(
 ) -> Study:
     """Run the study preset `name` as `frictrack study` does; `deck_track` ("ballasted" or "direct-fastening") sets
     the EN 1990 deck-acceleration limit of the `hslm` study's verdicts."""
+
+def report(folder: Union[str, os.PathLike[str]], out: Union[str, os.PathLike[str], None] = None) -> Path:
+    """Write the report of a run, study or reproduce folder as one self-contained HTML file (default
+    `folder/report.html`): figures inline as SVG, tables, verdicts, warnings, scenario, command, version, commit,
+    date. Returns the path written."""
 
 def train(name: str) -> Dict[str, Any]:
     """A train's summary (name, axles, patches, length m, total_force N) and `axles_table` (offset m, force N)."""

@@ -3,6 +3,7 @@
 use super::preset::Preset;
 use super::resolution::Resolution;
 use super::study_data::{StudyData, StudyFailure, StudySummary};
+use report::provenance::Provenance;
 use scenario::Scenario;
 use scenario::error::Result;
 use serde::Serialize;
@@ -24,16 +25,21 @@ pub struct StudyFile<'a> {
     pub solver_statistics: SolverStatisticsNote,
     /// Wall time of the study (s).
     pub wall_time: f64,
-    /// The version that wrote it, and the git revision where known.
-    pub frictrack_version: &'static str,
-    /// `git rev-parse` of the working directory, if one.
-    pub git_revision: Option<String>,
+    /// The command, version, commit and date (flattened: `command`, `frictrack_version`, `git_revision`, `date`).
+    #[serde(flatten)]
+    pub provenance: &'a Provenance,
+    /// What the scenario gave warning of, as the command line printed it.
+    pub warnings: &'a [String],
+    /// The two sentences of the study's report section.
+    pub headline: &'a [String],
     /// The typed summary.
     pub summary: &'a StudySummary,
     /// The summary in lines.
     pub lines: &'a [String],
     /// The figures' file stems.
     pub plots: Vec<&'a str>,
+    /// The figures' titles, in the order of `plots`.
+    pub plot_titles: Vec<&'a str>,
     /// The scenario it ran on.
     pub scenario: &'a Scenario,
     /// The speeds it swept (m/s), where one list serves every curve.
@@ -57,13 +63,13 @@ pub struct SolverStatisticsNote {
 
 impl StudyData {
     /// The JSON beside this study's CSV: these results of `preset` at `resolution` on `base`, with the parts of
-    /// `base` it does not use (`Preset::overrides`, which the caller has already told the user), run in
-    /// `wall_time` s at `git_revision`.
+    /// `base` it does not use (`Preset::overrides`, which the caller has already told the user) and its `warnings`,
+    /// run in `wall_time` s by the command of `provenance`.
     pub fn file<'a>(
         &'a self,
         (preset, resolution, base): (Preset, Resolution, &'a Scenario),
-        scenario_parts_not_used: Vec<String>,
-        (wall_time, git_revision): (f64, Option<String>),
+        (scenario_parts_not_used, warnings): (Vec<String>, &'a [String]),
+        (wall_time, provenance): (f64, &'a Provenance),
     ) -> Result<StudyFile<'a>> {
         Ok(StudyFile {
             study: self.name,
@@ -72,11 +78,13 @@ impl StudyData {
             runs: self.runs,
             solver_statistics: SolverStatisticsNote { mean_iterations_per_step: self.mean_iterations },
             wall_time,
-            frictrack_version: env!("CARGO_PKG_VERSION"),
-            git_revision,
+            provenance,
+            warnings,
+            headline: &self.headline,
             summary: &self.summary,
             lines: &self.lines,
             plots: self.plots.iter().map(|p| p.stem.as_str()).collect(),
+            plot_titles: self.plots.iter().map(|p| p.title.as_str()).collect(),
             scenario: base,
             speeds: preset.speeds(resolution, base)?,
             study_sets: preset.sets(),

@@ -1,0 +1,130 @@
+//! Which result folder a report is asked of — a run's (`summary.json`), a study's or `reproduce`'s (`<study>.json`
+//! files, `report.md`) — and what every page says of where it came from.
+
+use super::blocks::escape;
+use super::page::Page;
+use scenario::error::{Result, StudyError};
+use serde_json::Value;
+use std::path::Path;
+
+/// What a folder holds.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ResultFolder {
+    /// A run folder: its `summary.json`.
+    Run(Value),
+    /// A study folder or a `reproduce` folder: each study's JSON in the order written (reproduce's report order),
+    /// and reproduce's `report.md` when there is one.
+    Studies(Vec<Value>, Option<String>),
+}
+
+impl ResultFolder {
+    /// Read `folder`: an error names it and says what a report is made from when it is neither kind.
+    pub fn read(folder: &Path) -> Result<Self> {
+        if !folder.is_dir() {
+            return Err(invalid(folder, "not a folder"));
+        }
+        let summary = folder.join("summary.json");
+        if summary.is_file() {
+            let value = read_json(&summary)?;
+            if value.get("report").is_some() && value.get("scenario").is_some() {
+                return Ok(Self::Run(value));
+            }
+        }
+        let mut studies = Vec::new();
+        let mut entries: Vec<_> = std::fs::read_dir(folder)
+            .map_err(|e| StudyError::Io { path: folder.display().to_string(), message: e.to_string() })?
+            .flatten()
+            .map(|e| e.path())
+            .filter(|p| p.extension().is_some_and(|e| e == "json") && p.is_file())
+            .collect();
+        entries.sort();
+        // Other JSON in the folder (unreadable, or not a study's) is not part of the report.
+        for path in entries {
+            let Ok(value) = read_json(&path) else { continue };
+            if value.get("study").and_then(Value::as_str).is_some() && value.get("summary").is_some() {
+                studies.push(value);
+            }
+        }
+        if studies.is_empty() {
+            return Err(invalid(folder, "has no summary.json of a run and no <study>.json of a study"));
+        }
+        let markdown = std::fs::read_to_string(folder.join("report.md")).ok();
+        if let Some(text) = &markdown {
+            // reproduce's order: the order its report names the studies in.
+            let place =
+                |s: &Value| text.find(&format!("{}.json", s["study"].as_str().unwrap_or(""))).unwrap_or(usize::MAX);
+            studies.sort_by_key(place);
+        }
+        Ok(Self::Studies(studies, markdown))
+    }
+
+    /// The report page of this folder's results (its figures read from `folder`).
+    pub fn page(&self, folder: &Path) -> Result<Page> {
+        match self {
+            Self::Run(summary) => super::run_page::run_page(folder, summary),
+            Self::Studies(studies, markdown) => super::study_page::studies_page(folder, studies, markdown.as_deref()),
+        }
+    }
+}
+
+/// The error for a folder a report cannot be made of.
+fn invalid(folder: &Path, why: &str) -> StudyError {
+    StudyError::InvalidField {
+        path: "DIR".into(),
+        value: folder.display().to_string(),
+        allowed: format!(
+            "{why}: a report is made of a folder written by `frictrack run --out`, `frictrack study --out` or \
+             `frictrack reproduce --out`"
+        ),
+    }
+}
+
+/// A JSON file of the folder, or an error naming it.
+fn read_json(path: &Path) -> Result<Value> {
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| StudyError::Io { path: path.display().to_string(), message: e.to_string() })?;
+    serde_json::from_str(&text).map_err(|e| StudyError::InvalidField {
+        path: path.display().to_string(),
+        value: format!("line {}, column {}", e.line(), e.column()),
+        allowed: format!("JSON as frictrack writes it ({e})"),
+    })
+}
+
+/// The SVG figures of `folder` whose stems pass `keep`, those named in `order` first (in that order), then the others
+/// by name.
+pub fn figure_stems_where(folder: &Path, order: &[&str], keep: impl Fn(&str) -> bool) -> Result<Vec<String>> {
+    let mut stems: Vec<String> = std::fs::read_dir(folder)
+        .map_err(|e| StudyError::Io { path: folder.display().to_string(), message: e.to_string() })?
+        .flatten()
+        .filter_map(|e| e.file_name().to_str()?.strip_suffix(".svg").map(String::from))
+        .filter(|s| keep(s))
+        .collect();
+    let rank = |s: &String| order.iter().position(|o| o == s).unwrap_or(order.len());
+    stems.sort_by(|a, b| rank(a).cmp(&rank(b)).then(a.cmp(b)));
+    Ok(stems)
+}
+
+/// Every SVG figure of `folder`, those named in `order` first.
+pub fn figure_stems(folder: &Path, order: &[&str]) -> Result<Vec<String>> {
+    figure_stems_where(folder, order, |_| true)
+}
+
+/// The facts a page opens with: the command, frictrack's version and commit, the date, the folder — from a result
+/// JSON's provenance fields (absent in folders written before they were kept).
+pub fn provenance_facts(json: &Value, folder: &Path) -> Vec<(String, String)> {
+    let command = json["command"].as_str();
+    let unknown = || "<span class=\"none\">not recorded</span>".to_string();
+    vec![
+        (
+            "command".into(),
+            command.filter(|c| !c.is_empty()).map_or_else(unknown, |c| format!("<code>{}</code>", escape(c))),
+        ),
+        ("frictrack".into(), json["frictrack_version"].as_str().map_or_else(unknown, escape)),
+        (
+            "commit".into(),
+            json["git_revision"].as_str().map_or_else(unknown, |c| format!("<code>{}</code>", escape(c))),
+        ),
+        ("date (UTC)".into(), json["date"].as_str().map_or_else(unknown, escape)),
+        ("folder".into(), format!("<code>{}</code>", escape(&folder.display().to_string()))),
+    ]
+}
