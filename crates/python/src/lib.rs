@@ -12,7 +12,7 @@
 //! raise `frictrack.InputError` (a `ValueError`) with the field, its value and what is allowed; nothing panics
 //! across the boundary.
 //!
-//! The wheel's `frictrack` console script runs the command line itself in the Python process ([`command_line`]), so
+//! The wheel's `frictrack` console script runs the command line itself in the Python process (`command_line`), so
 //! `pip install frictrack` gives the same command as the binary without a second executable in the wheel.
 
 #![allow(unsafe_code)] // PyO3's macros expand to the FFI's unsafe calls.
