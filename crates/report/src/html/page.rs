@@ -72,7 +72,7 @@ nav.toc ol { margin: .3rem 0; padding-left: 1.4rem; }
   div.table { overflow: visible; }
   table { font-size: 7.5pt; }
   tr { break-inside: avoid; }
-  h2, h3 { break-after: avoid; page-break-after: avoid; }
+  h2, h3, h4 { break-after: avoid; page-break-after: avoid; }
   a { color: inherit; text-decoration: none; }
 }
 "#;

@@ -65,9 +65,13 @@ fn key_results(report: &Value) -> String {
         ("window_max_upward_deflection", "max upward deflection, results window"),
     ] {
         let extreme = &report[key];
-        let at = |k: &str, unit: &str| extreme[k].as_f64().map(|v| format!("{k} {} {unit}", number(v)));
+        let at =
+            |k: &str, words: &str, unit: &str| extreme[k].as_f64().map(|v| format!("{words} {} {unit}", number(v)));
         let note: Vec<String> =
-            [at("position", "m"), at("time", "s"), at("load_position", "m")].into_iter().flatten().collect();
+            [at("position", "x =", "m"), at("time", "t =", "s"), at("load_position", "load at", "m")]
+                .into_iter()
+                .flatten()
+                .collect();
         row(what, extreme["value"].as_f64().map(|v| number(v * 1e3)), "mm", escape(&note.join(", ")));
     }
     if let Some([a, b]) = report["extremes_window"].as_array().map(Vec::as_slice) {
