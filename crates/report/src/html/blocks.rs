@@ -152,10 +152,13 @@ pub fn summary_tables(summary: &Value, units: &[(String, String)]) -> String {
     let scalars: Vec<Vec<String>> = map
         .iter()
         .filter(|(_, v)| !v.is_array() && !v.is_object())
-        .map(|(k, v)| vec![format!("<code>{}</code>", escape(k)), escape(&scalar(v))])
+        .map(|(k, v)| {
+            let unit = if v.is_number() { unit_of_field(k, units).unwrap_or_default() } else { String::new() };
+            vec![format!("<code>{}</code>", escape(k)), escape(&scalar(v)), escape(&unit)]
+        })
         .collect();
     if !scalars.is_empty() {
-        out.push_str(&table(&["quantity", "value"], &scalars));
+        out.push_str(&table(&["quantity", "value", "unit"], &scalars));
     }
     for (name, value) in map {
         match value {
@@ -216,6 +219,18 @@ fn records_table(name: &str, records: &[Value], units: &[(String, String)]) -> S
     out
 }
 
+/// The unit of a summary's field: the study's CSV column of that name, else the listed quantity it ends with
+/// (`neighbour_ballast_force_speed` is a speed, `min_wheel_force` a force; `scenario::quantities`); none for a count,
+/// a ratio, text, or a name that ends in no listed quantity.
+fn unit_of_field(field: &str, units: &[(String, String)]) -> Option<String> {
+    let listed = units.iter().find(|(name, _)| name == field).map(|(_, unit)| unit.clone());
+    let by_quantity = || {
+        let words: Vec<&str> = field.split('_').collect();
+        (0..words.len()).find_map(|i| scenario::quantities::unit_of(&words[i..].join("_")).map(String::from))
+    };
+    listed.or_else(by_quantity).filter(|unit| unit != "1" && unit != "text")
+}
+
 /// One list of records as a table of their fields (lists inside shown by their length).
 fn flat_table(name: &str, records: &[Value], units: &[(String, String)]) -> String {
     let mut columns: Vec<&str> = Vec::new();
@@ -241,8 +256,7 @@ fn flat_table(name: &str, records: &[Value], units: &[(String, String)]) -> Stri
         .collect();
     let unit = |column: &str| {
         let field = column.rsplit('.').next().unwrap_or(column);
-        let unit = units.iter().find(|(name, unit)| name == field && !unit.is_empty() && unit != "1");
-        unit.map_or_else(|| column.to_string(), |(_, unit)| format!("{column} ({unit})"))
+        unit_of_field(field, units).map_or_else(|| column.to_string(), |unit| format!("{column} ({unit})"))
     };
     let header: Vec<String> = columns.iter().map(|c| unit(c)).collect();
     let header: Vec<&str> = header.iter().map(String::as_str).collect();
@@ -289,5 +303,16 @@ mod tests {
             "{html}"
         );
         assert_eq!(html.matches("<td>EB</td>").count(), 3, "the parent's row and one led row per resonance");
+    }
+
+    #[test]
+    fn a_field_takes_the_unit_of_the_quantity_it_ends_with() {
+        let csv = [("gap".to_string(), "m".to_string())];
+        assert_eq!(unit_of_field("gap", &csv).as_deref(), Some("m"));
+        assert_eq!(unit_of_field("neighbour_ballast_force_speed", &csv).as_deref(), Some("m/s"));
+        assert_eq!(unit_of_field("min_wheel_force", &csv).as_deref(), Some("N"));
+        assert_eq!(unit_of_field("peak_deflection", &csv).as_deref(), Some("m"));
+        assert_eq!(unit_of_field("dynamic_amplification", &csv), None, "a ratio has none");
+        assert_eq!(unit_of_field("voided", &csv), None);
     }
 }
