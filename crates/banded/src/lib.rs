@@ -6,6 +6,8 @@
 //!
 //! - [`symmetric`]: [`SymmetricBanded`] storage and its [`BandedLdlt`] factorisation (factor once, solve many
 //!   times, O(n·b²) and O(n·b)), principal submatrices and the Schur condensation of leading or trailing blocks.
+//! - [`local_refactor`]: the factor brought up to date in place after a few rows of A changed, only as far as the
+//!   change reaches ([`BandedLdlt::refactor_rows_from`]).
 //! - [`local_solve`]: A⁻¹h for a right-hand side of a few neighbouring non-zeros, computed only where it is
 //!   significant ([`BandedLdlt::solve_local`]).
 //! - [`selected_inverse`]: the entries of A⁻¹ inside the band in O(n·b²) ([`BandedLdlt::inverse_band`]), for the
@@ -21,6 +23,7 @@ pub mod bordered;
 pub mod diagonals;
 pub mod error;
 pub mod general;
+pub mod local_refactor;
 pub mod local_solve;
 pub mod selected_inverse;
 pub mod symmetric;

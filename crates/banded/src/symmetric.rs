@@ -140,8 +140,13 @@ impl SymmetricBanded {
         out
     }
 
-    /// The stored lower band, b + 1 slots per row: row i is (A_{i,i−b}, …, A_ii), the slots before column 0
-    /// zero. For assembly loops that add whole band rows at a time (see [`crate::BlockRows`]).
+    /// The stored lower band, b + 1 slots per row: row i is (A_{i,i−b}, …, A_ii), the slots before column 0 zero.
+    pub fn lower_band(&self) -> &[f64] {
+        &self.data
+    }
+
+    /// The stored lower band, mutable (as [`Self::lower_band`]). For assembly loops that add whole band rows at a
+    /// time (see [`crate::BlockRows`]).
     pub fn lower_band_mut(&mut self) -> &mut [f64] {
         &mut self.data
     }
@@ -178,28 +183,9 @@ impl SymmetricBanded {
     /// The factorisation for half-bandwidth 3 (every Hermite beam matrix), unrolled: row i holds
     /// (A_{i,i−3}, A_{i,i−2}, A_{i,i−1}, A_ii) and becomes (L_{i,i−3}, L_{i,i−2}, L_{i,i−1}, D_i).
     fn factor_in_place_3(n: usize, f: &mut [f64], inverse_pivots: &mut [f64]) -> Result<()> {
-        // Rows i−1, i−2 as their L entries, and D (with 1/D) of rows i−1..i−3; missing rows are zero with D = 1.
-        let (mut r1, mut r2) = ([0.0f64; 3], [0.0f64; 3]);
-        let (mut d1, mut d2, mut d3) = (1.0f64, 1.0f64, 1.0f64);
-        let (mut e1, mut e2, mut e3) = (1.0f64, 1.0f64, 1.0f64);
+        let mut above = RowsAbove3::START;
         for (i, (row, inverse)) in f.chunks_exact_mut(4).zip(inverse_pivots.iter_mut()).take(n).enumerate() {
-            // r1 = (L_{i−1,i−4}, L_{i−1,i−3}, L_{i−1,i−2}), r2 = (L_{i−2,i−5}, L_{i−2,i−4}, L_{i−2,i−3})
-            let l3 = if i >= 3 { row[0] * e3 } else { 0.0 };
-            let l2 = if i >= 2 { (row[1] - l3 * r2[2] * d3) * e2 } else { 0.0 };
-            let l1 = if i >= 1 { (row[2] - l3 * r1[1] * d3 - l2 * r1[2] * d2) * e1 } else { 0.0 };
-            let d = row[3] - l3 * l3 * d3 - l2 * l2 * d2 - l1 * l1 * d1;
-            if !(d.is_finite() && d > 0.0) {
-                return Err(BandedError::NonPositivePivot { index: i, pivot: d });
-            }
-            let e = 1.0 / d;
-            row[0] = l3;
-            row[1] = l2;
-            row[2] = l1;
-            row[3] = d;
-            *inverse = e;
-            (r2, r1) = (r1, [l3, l2, l1]);
-            (d3, d2, d1) = (d2, d1, d);
-            (e3, e2, e1) = (e2, e1, e);
+            *inverse = above.next_row(i, row)?;
         }
         Ok(())
     }
@@ -259,6 +245,70 @@ impl SymmetricBanded {
             inverse_pivots[i] = 1.0 / d;
         }
         Ok(())
+    }
+}
+
+/// The three factor rows above row i of a half-bandwidth-3 LDLᵀ, as the b = 3 kernels carry them: the L entries of
+/// rows i − 1 and i − 2, and D (with 1/D) of rows i − 1 … i − 3; rows before the first are zero with D = 1.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct RowsAbove3 {
+    /// (L_{i−1,i−4}, L_{i−1,i−3}, L_{i−1,i−2}).
+    pub(crate) r1: [f64; 3],
+    /// (L_{i−2,i−5}, L_{i−2,i−4}, L_{i−2,i−3}).
+    pub(crate) r2: [f64; 3],
+    pub(crate) d1: f64,
+    pub(crate) d2: f64,
+    pub(crate) d3: f64,
+    pub(crate) e1: f64,
+    pub(crate) e2: f64,
+    pub(crate) e3: f64,
+}
+
+impl RowsAbove3 {
+    /// Before row 0.
+    pub(crate) const START: Self =
+        Self { r1: [0.0; 3], r2: [0.0; 3], d1: 1.0, d2: 1.0, d3: 1.0, e1: 1.0, e2: 1.0, e3: 1.0 };
+
+    /// Above row `i` of the factor `f` (rows of 4 slots: L_{i,i−3}, L_{i,i−2}, L_{i,i−1}, D_i) with its `inverse`
+    /// pivots.
+    pub(crate) fn of(f: &[f64], inverse: &[f64], i: usize) -> Self {
+        let mut above = Self::START;
+        for k in i.saturating_sub(3)..i {
+            let row = &f[4 * k..4 * k + 4];
+            above.shift([row[0], row[1], row[2]], row[3], inverse[k]);
+        }
+        above
+    }
+
+    /// Row `i` of the factor in place of row `row` of A = (A_{i,i−3}, A_{i,i−2}, A_{i,i−1}, A_ii): it becomes
+    /// (L_{i,i−3}, L_{i,i−2}, L_{i,i−1}, D_i), this state moves down a row, and 1/D_i is returned. An error names
+    /// row `i` if its pivot is not strictly positive. The one b = 3 row formula of the full factor and of the local
+    /// refactor.
+    #[inline(always)]
+    pub(crate) fn next_row(&mut self, i: usize, row: &mut [f64]) -> Result<f64> {
+        let a = [row[0], row[1], row[2], row[3]];
+        let l3 = if i >= 3 { a[0] * self.e3 } else { 0.0 };
+        let l2 = if i >= 2 { (a[1] - l3 * self.r2[2] * self.d3) * self.e2 } else { 0.0 };
+        let l1 = if i >= 1 { (a[2] - l3 * self.r1[1] * self.d3 - l2 * self.r1[2] * self.d2) * self.e1 } else { 0.0 };
+        let d = a[3] - l3 * l3 * self.d3 - l2 * l2 * self.d2 - l1 * l1 * self.d1;
+        if !(d.is_finite() && d > 0.0) {
+            return Err(BandedError::NonPositivePivot { index: i, pivot: d });
+        }
+        let e = 1.0 / d;
+        row[0] = l3;
+        row[1] = l2;
+        row[2] = l1;
+        row[3] = d;
+        self.shift([l3, l2, l1], d, e);
+        Ok(e)
+    }
+
+    /// Move down a row past the factor row (`l`, `d`, `e` = 1/d).
+    #[inline(always)]
+    fn shift(&mut self, l: [f64; 3], d: f64, e: f64) {
+        (self.r2, self.r1) = (self.r1, l);
+        (self.d3, self.d2, self.d1) = (self.d2, self.d1, d);
+        (self.e3, self.e2, self.e1) = (self.e2, self.e1, e);
     }
 }
 
