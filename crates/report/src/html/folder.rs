@@ -1,7 +1,6 @@
 //! Which result folder a report is asked of — a run's (`summary.json`), a study's or `reproduce`'s (`<study>.json`
 //! files, `report.md`) — and what every page says of where it came from.
 
-use super::blocks::escape;
 use super::page::Page;
 use scenario::error::{Result, StudyError};
 use serde_json::Value;
@@ -88,43 +87,4 @@ fn read_json(path: &Path) -> Result<Value> {
         value: format!("line {}, column {}", e.line(), e.column()),
         allowed: format!("JSON as frictrack writes it ({e})"),
     })
-}
-
-/// The SVG figures of `folder` whose stems pass `keep`, those named in `order` first (in that order), then the others
-/// by name.
-pub fn figure_stems_where(folder: &Path, order: &[&str], keep: impl Fn(&str) -> bool) -> Result<Vec<String>> {
-    let mut stems: Vec<String> = std::fs::read_dir(folder)
-        .map_err(|e| StudyError::Io { path: folder.display().to_string(), message: e.to_string() })?
-        .flatten()
-        .filter_map(|e| e.file_name().to_str()?.strip_suffix(".svg").map(String::from))
-        .filter(|s| keep(s))
-        .collect();
-    let rank = |s: &String| order.iter().position(|o| o == s).unwrap_or(order.len());
-    stems.sort_by(|a, b| rank(a).cmp(&rank(b)).then(a.cmp(b)));
-    Ok(stems)
-}
-
-/// Every SVG figure of `folder`, those named in `order` first.
-pub fn figure_stems(folder: &Path, order: &[&str]) -> Result<Vec<String>> {
-    figure_stems_where(folder, order, |_| true)
-}
-
-/// The facts a page opens with: the command, frictrack's version and commit, the date, the folder — from a result
-/// JSON's provenance fields (absent in folders written before they were kept).
-pub fn provenance_facts(json: &Value, folder: &Path) -> Vec<(String, String)> {
-    let command = json["command"].as_str();
-    let unknown = || "<span class=\"none\">not recorded</span>".to_string();
-    vec![
-        (
-            "command".into(),
-            command.filter(|c| !c.is_empty()).map_or_else(unknown, |c| format!("<code>{}</code>", escape(c))),
-        ),
-        ("frictrack".into(), json["frictrack_version"].as_str().map_or_else(unknown, escape)),
-        (
-            "commit".into(),
-            json["git_revision"].as_str().map_or_else(unknown, |c| format!("<code>{}</code>", escape(c))),
-        ),
-        ("date (UTC)".into(), json["date"].as_str().map_or_else(unknown, escape)),
-        ("folder".into(), format!("<code>{}</code>", escape(&folder.display().to_string()))),
-    ]
 }

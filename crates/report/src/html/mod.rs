@@ -2,6 +2,7 @@
 //!
 //! - [`folder`]: which folder it is — a run's, a study's, `reproduce`'s — and where it came from.
 //! - [`run_page`], [`study_page`]: what each page shows (tables, verdicts, warnings, figures, scenario, data).
+//! - [`sources`]: what a page reads of the folder besides its tables (figures in order, provenance).
 //! - [`blocks`]: the pieces (escaped text, numbers, tables, inline SVG, the scenario as TOML);
 //!   [`page`]: the document, its table of contents and its screen and print styles.
 
@@ -9,6 +10,7 @@ pub mod blocks;
 pub mod folder;
 pub mod page;
 pub mod run_page;
+pub mod sources;
 pub mod study_page;
 
 use crate::files::{check_output_file, write_atomically};

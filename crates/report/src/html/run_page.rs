@@ -2,8 +2,8 @@
 //! the text report as the command printed it, the scenario as it ran, and the files with their columns and units.
 
 use super::blocks::{escape, figure, number, pre, scenario_toml, table, warnings};
-use super::folder::{figure_stems, provenance_facts};
 use super::page::{Page, Section};
+use super::sources::{figure_stems, provenance_facts, string_list};
 use crate::run_output::FIGURE_STEMS;
 use scenario::error::Result;
 use serde_json::Value;
@@ -32,11 +32,6 @@ pub fn run_page(folder: &Path, summary: &Value) -> Result<Page> {
         facts: provenance_facts(summary, folder),
         sections,
     })
-}
-
-/// The strings of a JSON list (none if it is not one).
-pub fn string_list(value: &Value) -> Vec<String> {
-    value.as_array().map(|a| a.iter().filter_map(|s| s.as_str().map(String::from)).collect()).unwrap_or_default()
 }
 
 /// The run's key numbers with their units: what ran, the extremes (whole run and the results window), the static

@@ -3,9 +3,8 @@
 //! its per-curve lines, warnings and failed runs, its data files, and the scenario it ran on.
 
 use super::blocks::{escape, figure, number, pre, scenario_toml, summary_tables, table, warnings};
-use super::folder::provenance_facts;
 use super::page::{Page, Section};
-use super::run_page::string_list;
+use super::sources::{provenance_facts, string_list};
 use scenario::error::Result;
 use serde_json::Value;
 use std::path::Path;
