@@ -71,6 +71,18 @@ pub fn table(header: &[&str], rows: &[Vec<String>]) -> String {
     out
 }
 
+/// A file's columns — a JSON list of `{name, unit}`, as every result JSON lists them — as a (column, unit) table.
+pub fn columns_table(columns: &Value) -> String {
+    let text = |v: &Value| escape(v.as_str().unwrap_or(""));
+    let rows: Vec<Vec<String>> = columns
+        .as_array()
+        .into_iter()
+        .flatten()
+        .map(|c| vec![format!("<code>{}</code>", text(&c["name"])), text(&c["unit"])])
+        .collect();
+    table(&["column", "unit"], &rows)
+}
+
 /// The warnings of a result as a highlighted list, or a line saying there were none.
 pub fn warnings(list: &[String]) -> String {
     if list.is_empty() {

@@ -1,7 +1,7 @@
 //! The report of a run folder (`frictrack run --out DIR`): what ran and its key numbers, the warnings, every figure,
 //! the text report as the command printed it, the scenario as it ran, and the files with their columns and units.
 
-use super::blocks::{escape, figure, number, pre, scenario_toml, table, warnings};
+use super::blocks::{columns_table, escape, figure, number, pre, scalar, scenario_toml, table, warnings};
 use super::page::{Page, Section};
 use super::sources::{figure_stems, provenance_facts, string_list};
 use crate::run_output::FIGURE_STEMS;
@@ -70,7 +70,7 @@ fn key_results(report: &Value) -> String {
         row(what, extreme["value"].as_f64().map(|v| number(v * 1e3)), "mm", escape(&note.join(", ")));
     }
     if let Some([a, b]) = report["extremes_window"].as_array().map(Vec::as_slice) {
-        row("results window (load position)", Some(format!("{}–{}", scalar_f(a), scalar_f(b))), "m", String::new());
+        row("results window (load position)", Some(format!("{}–{}", scalar(a), scalar(b))), "m", String::new());
     }
     row(
         "static max downward deflection",
@@ -104,28 +104,12 @@ fn key_results(report: &Value) -> String {
     table(&["quantity", "value", "unit", "where, when"], &rows)
 }
 
-/// A JSON number as table text.
-fn scalar_f(value: &Value) -> String {
-    value.as_f64().map_or_else(|| value.to_string(), number)
-}
-
 /// The folder's CSV files with their columns and units, and the sign conventions.
 fn files(files: &Value, conventions: &Value) -> String {
     let mut out = format!("<p>Conventions: {}.</p>\n", escape(conventions.as_str().unwrap_or("")));
     let Some(map) = files.as_object() else { return out };
     for (name, meta) in map {
-        let rows: Vec<Vec<String>> = meta["columns"]
-            .as_array()
-            .into_iter()
-            .flatten()
-            .map(|c| {
-                vec![
-                    format!("<code>{}</code>", escape(c["name"].as_str().unwrap_or(""))),
-                    escape(c["unit"].as_str().unwrap_or("")),
-                ]
-            })
-            .collect();
-        out.push_str(&format!("<h4><code>{}</code></h4>\n{}", escape(name), table(&["column", "unit"], &rows)));
+        out.push_str(&format!("<h4><code>{}</code></h4>\n{}", escape(name), columns_table(&meta["columns"])));
     }
     out
 }

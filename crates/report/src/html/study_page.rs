@@ -2,7 +2,7 @@
 //! headline, its results as tables (with the verdicts its summary holds, e.g. the HSLM deck verdicts), its figures,
 //! its per-curve lines, warnings and failed runs, its data files, and the scenario it ran on.
 
-use super::blocks::{escape, figure, number, pre, scenario_toml, summary_tables, table, warnings};
+use super::blocks::{columns_table, escape, figure, number, pre, scenario_toml, summary_tables, warnings};
 use super::page::{Page, Section};
 use super::sources::{provenance_facts, string_list};
 use scenario::error::Result;
@@ -74,13 +74,7 @@ fn data(study: &Value) -> String {
         escape(&text(&study["command"])),
         escape(&text(&study["date"])),
     );
-    let rows: Vec<Vec<String>> = study["columns"]
-        .as_array()
-        .into_iter()
-        .flatten()
-        .map(|c| vec![format!("<code>{}</code>", escape(&text(&c["name"]))), escape(&text(&c["unit"]))])
-        .collect();
-    out.push_str(&table(&["column", "unit"], &rows));
+    out.push_str(&columns_table(&study["columns"]));
     out
 }
 
