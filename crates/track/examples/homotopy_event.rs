@@ -41,43 +41,57 @@ impl PartialOrd for Pending {
     }
 }
 
-fn main() {
-    let events: usize = std::env::args().nth(1).and_then(|s| s.parse().ok()).unwrap_or(100);
-    // `… EVENTS algebra`: the refactor and the local solve alone, to price the bookkeeping apart.
-    let algebra_only = std::env::args().nth(2).as_deref() == Some("algebra");
+/// The band's matrix at step STEP of the reference run with 5 kN/m, and what the events need of that step.
+struct Partition {
+    /// B = M̂ + Σ_band γ_j h_j h_jᵀ.
+    b: banded::SymmetricBanded,
+    /// The sections' rows.
+    placed: track::PlacedInteractions,
+    /// Each section's half-width a_j (N·s) and whether it is strictly inside its interval.
+    half: Vec<f64>,
+    in_band: Vec<bool>,
+    /// The step's section velocities u (m/s) and ε (m/s).
+    u: Vec<f64>,
+    epsilon: f64,
+}
+
+/// Run the reference with 5 kN/m to step STEP and build its band matrix.
+fn partition() -> Partition {
     let model = uic60_on_soft_soil().model().expect("reference model");
     let placed = DistributedFriction::new(5e3).interactions(&model).expect("friction");
     let settings = RunSettings::default();
-    // The partition of a real step: impulses, bounds and section velocities where the run is at step STEP.
     let mut state = None;
     Simulation::new(&model, &placed, &settings)
         .and_then(|s| {
             s.run_observed(&mut |view| {
                 if view.step == STEP {
-                    state = Some((
-                        view.impulses.to_vec(),
-                        view.law.lower.clone(),
-                        view.law.upper.clone(),
-                        view.section_velocities.to_vec(),
-                    ));
+                    let half: Vec<f64> =
+                        view.law.lower.iter().zip(&view.law.upper).map(|(lo, hi)| 0.5 * (hi - lo)).collect();
+                    let centre = view.law.lower.iter().zip(&view.law.upper).map(|(lo, hi)| 0.5 * (hi + lo));
+                    let inside =
+                        view.impulses.iter().zip(centre).zip(&half).map(|((p, c), a)| (p - c).abs() < a * (1.0 - 1e-9));
+                    state = Some((half.clone(), inside.collect::<Vec<bool>>(), view.section_velocities.to_vec()));
                 }
                 view.step < STEP
             })
         })
         .expect("the reference run");
-    let (p, lower, upper, u) = state.expect("the run reached the step");
-    let h = settings.time_step();
+    let (half, in_band, u) = state.expect("the run reached the step");
     let system = track::system::beam_system(&model);
-    let mut b = nscd::integrator::iteration_matrix(&system, nscd::Integration::theta(0.5, h));
-    let rows = placed.interactions().rows();
-    let scale = u.iter().fold(0.0f64, |m, x| m.max(x.abs()));
-    let epsilon = 0.4e-6 * scale;
-    let half = |j: usize| 0.5 * (upper[j] - lower[j]);
-    let in_band: Vec<bool> =
-        (0..rows.len()).map(|j| (p[j] - 0.5 * (upper[j] + lower[j])).abs() < half(j) * (1.0 - 1e-9)).collect();
-    for (j, row) in rows.iter().enumerate().filter(|(j, _)| in_band[*j]) {
-        b.add_outer(row.dofs(), row.values(), half(j) / epsilon);
+    let mut b = nscd::integrator::iteration_matrix(&system, nscd::Integration::theta(0.5, settings.time_step()));
+    let epsilon = 0.4e-6 * u.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    for (j, row) in placed.interactions().rows().iter().enumerate().filter(|(j, _)| in_band[*j]) {
+        b.add_outer(row.dofs(), row.values(), half[j] / epsilon);
     }
+    Partition { b, placed, half, in_band, u, epsilon }
+}
+
+fn main() {
+    let events: usize = std::env::args().nth(1).and_then(|s| s.parse().ok()).unwrap_or(100);
+    // `… EVENTS algebra`: the refactor and the local solve alone, to price the bookkeeping apart.
+    let algebra_only = std::env::args().nth(2).as_deref() == Some("algebra");
+    let Partition { mut b, placed, half, in_band, u, epsilon } = partition();
+    let rows = placed.interactions().rows();
     let mut factor = b.factor().expect("B is SPD");
     // Events happen where a section changes side: at the edges of the band's runs.
     let edges: Vec<usize> = (1..rows.len()).filter(|&j| in_band[j] != in_band[j - 1]).collect();
@@ -101,7 +115,7 @@ fn main() {
         let row = &rows[j];
         let sign = if flipped[j] { -1.0 } else { 1.0 };
         flipped[j] = !flipped[j];
-        b.add_outer(row.dofs(), row.values(), sign * half(j) / epsilon);
+        b.add_outer(row.dofs(), row.values(), sign * half[j] / epsilon);
         let (first, last) = (row.dofs()[0], *row.dofs().last().unwrap());
         let end = factor.refactor_rows_from(&b, first, last, 1e-14).expect("B stays SPD");
         refactored += end - first;
