@@ -1,5 +1,5 @@
 //! Which result folder a report is asked of — a run's (`summary.json`), a study's or `reproduce`'s (`<study>.json`
-//! files, `report.md`) — and what every page says of where it came from.
+//! files, `report.md`) — and which page shows it.
 
 use super::page::Page;
 use scenario::error::{Result, StudyError};
