@@ -231,13 +231,16 @@ fn records_table(name: &str, records: &[Value], units: &[(String, String)]) -> S
     out
 }
 
-/// The unit of a summary's field: the study's CSV column of that name, else the listed quantity it ends with
-/// (`neighbour_ballast_force_speed` is a speed, `min_wheel_force` a force; `scenario::quantities`); none for a count,
-/// a ratio, text, or a name that ends in no listed quantity.
+/// The unit of a summary's numeric field: the study's CSV column of that name, else the longest listed quantity
+/// (`scenario::quantities`) its name ends with, read past a trailing `_sampled` or `_refined` (how it was found, not
+/// what it is): `neighbour_ballast_force_speed` is a speed, `min_wheel_force` a force,
+/// `peak_max_upward_deflection_sampled` a deflection. None for a count, a ratio (`acceleration_over_limit`), or a
+/// name that ends in no listed quantity: a unit left out is better than a wrong one.
 fn unit_of_field(field: &str, units: &[(String, String)]) -> Option<String> {
     let listed = units.iter().find(|(name, _)| name == field).map(|(_, unit)| unit.clone());
     let by_quantity = || {
-        let words: Vec<&str> = field.split('_').collect();
+        let name = field.strip_suffix("_sampled").or_else(|| field.strip_suffix("_refined")).unwrap_or(field);
+        let words: Vec<&str> = name.split('_').collect();
         (0..words.len()).find_map(|i| scenario::quantities::unit_of(&words[i..].join("_")).map(String::from))
     };
     listed.or_else(by_quantity).filter(|unit| unit != "1" && unit != "text")
@@ -266,9 +269,13 @@ fn flat_table(name: &str, records: &[Value], units: &[(String, String)]) -> Stri
                 .collect()
         })
         .collect();
+    // A unit heads a column of numbers only (`critical_speed_location` holds words).
+    let numeric =
+        |column: &str| records.iter().filter_map(|r| r.get(column)).filter(|v| !v.is_null()).all(Value::is_number);
     let unit = |column: &str| {
         let field = column.rsplit('.').next().unwrap_or(column);
-        unit_of_field(field, units).map_or_else(|| column.to_string(), |unit| format!("{column} ({unit})"))
+        let unit = unit_of_field(field, units).filter(|_| numeric(column));
+        unit.map_or_else(|| column.to_string(), |unit| format!("{column} ({unit})"))
     };
     let header: Vec<String> = columns.iter().map(|c| unit(c)).collect();
     let header: Vec<&str> = header.iter().map(String::as_str).collect();
@@ -324,7 +331,9 @@ mod tests {
         assert_eq!(unit_of_field("neighbour_ballast_force_speed", &csv).as_deref(), Some("m/s"));
         assert_eq!(unit_of_field("min_wheel_force", &csv).as_deref(), Some("N"));
         assert_eq!(unit_of_field("peak_deflection", &csv).as_deref(), Some("m"));
+        assert_eq!(unit_of_field("peak_max_upward_deflection_sampled", &csv).as_deref(), Some("m"));
         assert_eq!(unit_of_field("dynamic_amplification", &csv), None, "a ratio has none");
+        assert_eq!(unit_of_field("acceleration_over_limit", &csv), None, "a utilisation, not an acceleration");
         assert_eq!(unit_of_field("voided", &csv), None);
     }
 }
