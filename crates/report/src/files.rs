@@ -1,6 +1,7 @@
 //! Writing result files: checked before any work starts, and written so that a finished file is never half-written
 //! (temporary file beside it, then rename). Only regular files are ever replaced: a device node, FIFO, symlink or
-//! folder at the target is refused, so `--out /dev/full` or a link to somewhere else cannot be destroyed.
+//! folder at the target is refused, so `--out /dev/full` or a link to somewhere else cannot be destroyed. Result
+//! files read back (a report's sources) are read only up to a bounded size ([`read_text`]).
 
 use scenario::error::{Result, StudyError, invalid};
 use std::io::Write;
@@ -88,4 +89,37 @@ pub fn write_figures(option: &str, plots: &[crate::plot::PlotSpec], folder: &Pat
         drawn.push(format!("{}.png/.svg", spec.stem));
     }
     Ok(drawn)
+}
+
+/// The largest result file read back (a result's JSON, a figure, report.md): 64 MiB. frictrack's own are well under a
+/// megabyte; a larger file in a result folder is not one of them, and is refused before it is read.
+pub const LARGEST_FILE: u64 = 64 << 20;
+
+/// The text of `path`, or an error naming it: unreadable, or larger than [`LARGEST_FILE`] (checked before reading).
+pub fn read_text(path: &Path) -> Result<String> {
+    let io = |e: std::io::Error| StudyError::Io { path: path.display().to_string(), message: e.to_string() };
+    let size = std::fs::metadata(path).map_err(io)?.len();
+    if size > LARGEST_FILE {
+        return Err(StudyError::InvalidField {
+            path: path.display().to_string(),
+            value: format!("{size} bytes"),
+            allowed: format!("a file frictrack wrote, at most {LARGEST_FILE} bytes"),
+        });
+    }
+    std::fs::read_to_string(path).map_err(io)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{LARGEST_FILE, read_text};
+
+    #[test]
+    fn a_file_too_large_to_be_a_result_is_refused_before_it_is_read() {
+        let path = std::env::temp_dir().join(format!("frictrack-large-{}.json", std::process::id()));
+        // Sparse: the size is set, nothing is written.
+        std::fs::File::create(&path).unwrap().set_len(LARGEST_FILE + 1).unwrap();
+        let error = read_text(&path).unwrap_err().to_string();
+        let _ = std::fs::remove_file(&path);
+        assert!(error.contains(&format!("{} bytes", LARGEST_FILE + 1)) && error.contains("at most"), "{error}");
+    }
 }

@@ -101,8 +101,7 @@ pub fn pre(text: &str) -> String {
 /// drawn); an error names the file when it is missing or is not an SVG.
 pub fn figure(folder: &Path, stem: &str, number: usize) -> Result<String> {
     let path = folder.join(format!("{stem}.svg"));
-    let text = std::fs::read_to_string(&path)
-        .map_err(|e| StudyError::Io { path: path.display().to_string(), message: e.to_string() })?;
+    let text = crate::files::read_text(&path)?;
     let start =
         text.find("<svg").filter(|_| text.trim_end().ends_with("</svg>")).ok_or_else(|| StudyError::InvalidField {
             path: path.display().to_string(),

@@ -2,6 +2,7 @@
 //! files, `report.md`) — and which page shows it.
 
 use super::page::Page;
+use crate::files::read_text;
 use scenario::error::{Result, StudyError};
 use serde_json::Value;
 use std::path::Path;
@@ -47,7 +48,7 @@ impl ResultFolder {
         if studies.is_empty() {
             return Err(invalid(folder, "has no summary.json of a run and no <study>.json of a study"));
         }
-        let markdown = std::fs::read_to_string(folder.join("report.md")).ok();
+        let markdown = Some(folder.join("report.md")).filter(|p| p.is_file()).map(|p| read_text(&p)).transpose()?;
         if let Some(text) = &markdown {
             // reproduce's order: the order its report names the studies in.
             let place =
@@ -80,8 +81,7 @@ fn invalid(folder: &Path, why: &str) -> StudyError {
 
 /// A JSON file of the folder, or an error naming it.
 fn read_json(path: &Path) -> Result<Value> {
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| StudyError::Io { path: path.display().to_string(), message: e.to_string() })?;
+    let text = read_text(path)?;
     serde_json::from_str(&text).map_err(|e| StudyError::InvalidField {
         path: path.display().to_string(),
         value: format!("line {}, column {}", e.line(), e.column()),
