@@ -19,7 +19,8 @@ pub fn studies_page(folder: &Path, studies: &[Value], markdown: Option<&str>) ->
     // One scenario for all when they share it (reproduce), else each study shows its own.
     let first = &studies[0]["scenario"];
     if studies.iter().all(|s| &s["scenario"] == first) {
-        sections.push(Section::new("scenario", "The scenario the studies ran on", pre(&scenario_toml(first))));
+        let heading = if studies.len() == 1 { "The scenario it ran on" } else { "The scenario the studies ran on" };
+        sections.push(Section::new("scenario", heading, pre(&scenario_toml(first))));
     } else {
         for (section, study) in sections.iter_mut().zip(studies) {
             let id = format!("{}-scenario", section.id);
