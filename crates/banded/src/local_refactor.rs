@@ -8,55 +8,33 @@
 //! them would change by less again (to the decay's constant) and are left as they are. The cost is the decay length
 //! times b², not the order of A (issue 53: the homotopy's event, priced before a solver is built on it).
 
-use crate::error::{BandedError, Result};
+use crate::error::Result;
 use crate::symmetric::{BandedLdlt, RowsAbove3, SymmetricBanded};
 
 impl BandedLdlt {
     /// Refactor in place after rows `first..=last` of `a` changed (this is the factor of `a` before the change, of
-    /// the same order and bandwidth): rows from `first` on are recomputed until b consecutive rows past `last`
-    /// differ from their old values by at most `drop` × their largest entry. Returns one past the last row
-    /// recomputed. An error names the row whose pivot is not strictly positive (`a` no longer positive definite);
-    /// the factor is then unusable and must be rebuilt.
+    /// the same order and bandwidth): rows from `first` on are recomputed, by the full factor's own row formula (the
+    /// same bits), until b consecutive rows past `last` differ from their old values by at most `drop` × their
+    /// largest L entry (at least 1) and `drop` × D. Returns one past the last row recomputed. An error names the row
+    /// whose pivot is not strictly positive (`a` no longer positive definite); the factor is then unusable and must
+    /// be rebuilt.
     pub fn refactor_rows_from(&mut self, a: &SymmetricBanded, first: usize, last: usize, drop: f64) -> Result<usize> {
-        let (n, b) = (self.n, self.bandwidth);
-        let w = b + 1;
+        let (n, b, w) = (self.n, self.bandwidth, self.bandwidth + 1);
         assert!(a.order() == n && a.bandwidth() == b, "the factor of another matrix");
         if b == 3 {
             return self.refactor_rows_from_3(a, first, last, drop);
         }
         let source = a.lower_band();
-        let f = &mut self.factors;
+        let mut old = vec![0.0; w];
         let mut quiet = 0;
         let mut i = first;
         while i < n {
-            let low = i.saturating_sub(b);
-            let mut moved: f64 = 0.0;
-            let mut size: f64 = 0.0;
-            for j in low..i {
-                let mut s = source[i * w + b - (i - j)];
-                for k in low.max(j.saturating_sub(b))..j {
-                    s -= f[i * w + b - (i - k)] * f[j * w + b - (j - k)] * f[k * w + b];
-                }
-                let l = s / f[j * w + b];
-                let slot = &mut f[i * w + b - (i - j)];
-                moved = moved.max((l - *slot).abs());
-                size = size.max(l.abs());
-                *slot = l;
-            }
-            let mut d = source[i * w + b];
-            for k in low..i {
-                let l = f[i * w + b - (i - k)];
-                d -= l * l * f[k * w + b];
-            }
-            if !(d.is_finite() && d > 0.0) {
-                return Err(BandedError::NonPositivePivot { index: i, pivot: d });
-            }
-            let slot = &mut f[i * w + b];
-            moved = moved.max((d - *slot).abs() / d);
-            *slot = d;
-            self.inverse_pivots[i] = 1.0 / d;
+            let slots = i * w..(i + 1) * w;
+            old.copy_from_slice(&self.factors[slots.clone()]);
+            self.factors[slots.clone()].copy_from_slice(&source[slots.clone()]);
+            SymmetricBanded::factor_row(&mut self.factors, &mut self.inverse_pivots, b, i)?;
             i += 1;
-            quiet = if moved <= drop * size.max(1.0) { quiet + 1 } else { 0 };
+            quiet = if row_is_quiet(&self.factors[slots], &old, drop) { quiet + 1 } else { 0 };
             if i > last && quiet >= b {
                 break;
             }
@@ -64,8 +42,8 @@ impl BandedLdlt {
         Ok(i)
     }
 
-    /// [`Self::refactor_rows_from`] for half-bandwidth 3: the full factor's own row formula ([`RowsAbove3`]), so the
-    /// rows recomputed are those a full factorisation gives, to the bit.
+    /// [`Self::refactor_rows_from`] for half-bandwidth 3: the rows in fixed-size arrays and the state above in
+    /// registers ([`RowsAbove3`], the b = 3 full factor's own row formula).
     fn refactor_rows_from_3(&mut self, a: &SymmetricBanded, first: usize, last: usize, drop: f64) -> Result<usize> {
         let n = self.n;
         let source = a.lower_band();
@@ -77,17 +55,24 @@ impl BandedLdlt {
             let old = [row[0], row[1], row[2], row[3]];
             row.copy_from_slice(&source[4 * i..4 * i + 4]);
             self.inverse_pivots[i] = above.next_row(i, row)?;
-            let moved = (row[0] - old[0]).abs().max((row[1] - old[1]).abs()).max((row[2] - old[2]).abs());
-            let size = row[0].abs().max(row[1].abs()).max(row[2].abs()).max(1.0);
-            let quiet_row = moved <= drop * size && (row[3] - old[3]).abs() <= drop * row[3];
             i += 1;
-            quiet = if quiet_row { quiet + 1 } else { 0 };
+            quiet = if row_is_quiet(row, &old, drop) { quiet + 1 } else { 0 };
             if i > last && quiet >= 3 {
                 break;
             }
         }
         Ok(i)
     }
+}
+
+/// Whether a recomputed factor row (L entries, then D) moved from its `old` value by at most `drop` × its largest L
+/// entry (at least 1) in L and `drop` × D in D.
+#[inline(always)]
+fn row_is_quiet(new: &[f64], old: &[f64], drop: f64) -> bool {
+    let b = new.len() - 1;
+    let moved = new[..b].iter().zip(&old[..b]).fold(0.0f64, |m, (x, y)| m.max((x - y).abs()));
+    let size = new[..b].iter().fold(1.0f64, |m, x| m.max(x.abs()));
+    moved <= drop * size && (new[b] - old[b]).abs() <= drop * new[b]
 }
 
 #[cfg(test)]

@@ -41,13 +41,62 @@ impl LocalVector {
 impl BandedLdlt {
     /// x ≈ A⁻¹h for the sparse h of (index, value) `entries` (ascending indices), into `out`: exact on the range
     /// kept, every entry left out below `drop` × max|x| (to the decay's constant). No allocation once `out` and
-    /// `scratch` have grown to the range's length.
+    /// `scratch` have grown to the range's length. For half-bandwidth 3 the substitutions keep their three
+    /// neighbours in registers instead of indexed loops, in the same order of operations (the same bits).
     pub fn solve_local(&self, entries: &[(usize, f64)], drop: f64, out: &mut LocalVector, scratch: &mut Vec<f64>) {
-        if self.bandwidth == 3 {
-            return self.solve_local_3(entries, drop, out, scratch);
+        let (b, w, f) = (self.bandwidth, self.bandwidth + 1, &self.factors);
+        if b != 3 {
+            // z_i −= Σ_{j<i} L_ij z_j over the z found so far (`done`, index j at j − first); x_i −= Σ_{k>i} L_ki x_k
+            // over the x found so far (`done` reversed: x_k at done.len() − (k − i)).
+            let forward = |i: usize, first: usize, mut s: f64, done: &[f64]| {
+                for j in i.saturating_sub(b).max(first)..i {
+                    s -= f[i * w + b - (i - j)] * done[j - first];
+                }
+                s
+            };
+            let backward = |i: usize, end: usize, mut s: f64, done: &[f64]| {
+                for k in (i + 1)..(i + 1 + b).min(end) {
+                    s -= f[k * w + b - (k - i)] * done[done.len() - (k - i)];
+                }
+                s
+            };
+            return self.substitute_locally(entries, drop, out, scratch, forward, backward);
         }
-        let (n, b, w) = (self.n, self.bandwidth, self.bandwidth + 1);
-        let f = &self.factors;
+        // z_{i−1}, z_{i−2}, z_{i−3} (zero before the first entry), then x_{i+1}, x_{i+2}, x_{i+3} (zero from the
+        // forward pass's end on).
+        let (mut z1, mut z2, mut z3) = (0.0f64, 0.0f64, 0.0f64);
+        let forward = |i: usize, _: usize, mut s: f64, _: &[f64]| {
+            let row = &f[4 * i..4 * i + 4];
+            s -= row[0] * z3;
+            s -= row[1] * z2;
+            s -= row[2] * z1;
+            (z3, z2, z1) = (z2, z1, s);
+            s
+        };
+        let (mut x1, mut x2, mut x3) = (0.0f64, 0.0f64, 0.0f64);
+        let backward = |i: usize, end: usize, mut s: f64, _: &[f64]| {
+            let below = |k: usize, slot: usize| if k < end { f[4 * k + slot] } else { 0.0 };
+            s -= below(i + 1, 2) * x1;
+            s -= below(i + 2, 1) * x2;
+            s -= below(i + 3, 0) * x3;
+            (x3, x2, x1) = (x2, x1, s);
+            s
+        };
+        self.substitute_locally(entries, drop, out, scratch, forward, backward)
+    }
+
+    /// The two substitutions of [`Self::solve_local`] and where they stop; `forward(i, first, h_i, z so far)` gives
+    /// z_i, `backward(i, forward_end, D⁻¹z_i, x so far, reversed)` gives x_i.
+    fn substitute_locally(
+        &self,
+        entries: &[(usize, f64)],
+        drop: f64,
+        out: &mut LocalVector,
+        scratch: &mut Vec<f64>,
+        mut forward: impl FnMut(usize, usize, f64, &[f64]) -> f64,
+        mut backward: impl FnMut(usize, usize, f64, &[f64]) -> f64,
+    ) {
+        let (n, b) = (self.n, self.bandwidth);
         out.values.clear();
         let Some(&(first, _)) = entries.first() else {
             out.start = 0;
@@ -66,9 +115,7 @@ impl BandedLdlt {
                 s = entries[next_entry].1;
                 next_entry += 1;
             }
-            for j in i.saturating_sub(b).max(first)..i {
-                s -= f[i * w + b - (i - j)] * scratch[j - first];
-            }
+            let s = forward(i, first, s, scratch);
             scratch.push(s);
             // Judged on D⁻¹z, what the back substitution takes: with stiff terms on some DOFs D varies by orders
             // of magnitude, and z alone would stop too early where D is small.
@@ -91,78 +138,11 @@ impl BandedLdlt {
         let mut i = forward_end;
         while i > 0 {
             i -= 1;
-            let mut s = if i >= first { scratch[i - first] } else { 0.0 };
-            let count = out.values.len();
-            for k in (i + 1)..(i + 1 + b).min(forward_end) {
-                // x_k sits at position forward_end − 1 − k of the reversed values.
-                s -= f[k * w + b - (k - i)] * out.values[count - (k - i)];
-            }
+            let s = backward(i, forward_end, if i >= first { scratch[i - first] } else { 0.0 }, &out.values);
             out.values.push(s);
             largest = largest.max(s.abs());
             quiet = if s.abs() <= drop * largest { quiet + 1 } else { 0 };
             if i < first && quiet >= b {
-                break;
-            }
-        }
-        out.values.reverse();
-        out.start = i;
-    }
-}
-
-impl BandedLdlt {
-    /// [`Self::solve_local`] for half-bandwidth 3: the same substitutions and stopping rules, in the same order of
-    /// operations (the same bits), with the three neighbours in registers instead of indexed loops.
-    fn solve_local_3(&self, entries: &[(usize, f64)], drop: f64, out: &mut LocalVector, scratch: &mut Vec<f64>) {
-        let (n, f) = (self.n, &self.factors);
-        out.values.clear();
-        let Some(&(first, _)) = entries.first() else {
-            out.start = 0;
-            return;
-        };
-        let last = entries.last().map_or(first, |e| e.0);
-        scratch.clear();
-        let (mut largest, mut quiet, mut next_entry, mut i) = (0.0f64, 0, 0, first);
-        // z_{i−1}, z_{i−2}, z_{i−3} (zero before `first`).
-        let (mut z1, mut z2, mut z3) = (0.0f64, 0.0f64, 0.0f64);
-        while i < n {
-            let mut s = 0.0;
-            if next_entry < entries.len() && entries[next_entry].0 == i {
-                s = entries[next_entry].1;
-                next_entry += 1;
-            }
-            let row = &f[4 * i..4 * i + 4];
-            s -= row[0] * z3;
-            s -= row[1] * z2;
-            s -= row[2] * z1;
-            scratch.push(s);
-            (z3, z2, z1) = (z2, z1, s);
-            let scaled = (s * self.inverse_pivots[i]).abs();
-            largest = largest.max(scaled);
-            quiet = if scaled <= drop * largest { quiet + 1 } else { 0 };
-            i += 1;
-            if i > last && quiet >= 3 {
-                break;
-            }
-        }
-        let forward_end = i;
-        for (k, z) in scratch.iter_mut().enumerate() {
-            *z *= self.inverse_pivots[first + k];
-        }
-        // x_{i+1}, x_{i+2}, x_{i+3} (zero from `forward_end` on), and L_{i+1,i}, L_{i+2,i}, L_{i+3,i} read as i falls.
-        let (mut x1, mut x2, mut x3) = (0.0f64, 0.0f64, 0.0f64);
-        let below = |k: usize, slot: usize| if k < forward_end { f[4 * k + slot] } else { 0.0 };
-        let (mut largest, mut quiet, mut i) = (0.0f64, 0, forward_end);
-        while i > 0 {
-            i -= 1;
-            let mut s = if i >= first { scratch[i - first] } else { 0.0 };
-            s -= below(i + 1, 2) * x1;
-            s -= below(i + 2, 1) * x2;
-            s -= below(i + 3, 0) * x3;
-            out.values.push(s);
-            (x3, x2, x1) = (x2, x1, s);
-            largest = largest.max(s.abs());
-            quiet = if s.abs() <= drop * largest { quiet + 1 } else { 0 };
-            if i < first && quiet >= 3 {
                 break;
             }
         }

@@ -222,28 +222,37 @@ impl SymmetricBanded {
         if b == 3 {
             return Self::factor_in_place_3(n, f, inverse_pivots);
         }
-        let w = b + 1;
         for i in 0..n {
-            let first = i.saturating_sub(b);
-            for j in first..i {
-                // L_ij D_j = A_ij − Σ_{k<j} L_ik L_jk D_k
-                let mut s = f[i * w + b - (i - j)];
-                for k in first.max(j.saturating_sub(b))..j {
-                    s -= f[i * w + b - (i - k)] * f[j * w + b - (j - k)] * f[k * w + b];
-                }
-                f[i * w + b - (i - j)] = s / f[j * w + b];
-            }
-            let mut d = f[i * w + b];
-            for k in first..i {
-                let l = f[i * w + b - (i - k)];
-                d -= l * l * f[k * w + b];
-            }
-            if !(d.is_finite() && d > 0.0) {
-                return Err(BandedError::NonPositivePivot { index: i, pivot: d });
-            }
-            f[i * w + b] = d;
-            inverse_pivots[i] = 1.0 / d;
+            Self::factor_row(f, inverse_pivots, b, i)?;
         }
+        Ok(())
+    }
+
+    /// Row i of the factor in place of row i of A, `f` holding the factor's rows above it (b + 1 slots a row):
+    /// L_ij D_j = A_ij − Σ_{k<j} L_ik L_jk D_k, D_i = A_ii − Σ_{k<i} L_ik² D_k, and 1/D_i into `inverse_pivots`. An
+    /// error names row i if D_i is not strictly positive. The one general row formula of the full factor and of the
+    /// local refactor.
+    #[inline]
+    pub(crate) fn factor_row(f: &mut [f64], inverse_pivots: &mut [f64], b: usize, i: usize) -> Result<()> {
+        let w = b + 1;
+        let first = i.saturating_sub(b);
+        for j in first..i {
+            let mut s = f[i * w + b - (i - j)];
+            for k in first.max(j.saturating_sub(b))..j {
+                s -= f[i * w + b - (i - k)] * f[j * w + b - (j - k)] * f[k * w + b];
+            }
+            f[i * w + b - (i - j)] = s / f[j * w + b];
+        }
+        let mut d = f[i * w + b];
+        for k in first..i {
+            let l = f[i * w + b - (i - k)];
+            d -= l * l * f[k * w + b];
+        }
+        if !(d.is_finite() && d > 0.0) {
+            return Err(BandedError::NonPositivePivot { index: i, pivot: d });
+        }
+        f[i * w + b] = d;
+        inverse_pivots[i] = 1.0 / d;
         Ok(())
     }
 }
