@@ -21,14 +21,18 @@ pub struct Provenance {
 impl Provenance {
     /// The provenance of a result written now by `command`, from a build at `commit`.
     pub fn now(command: String, commit: Option<&str>) -> Self {
-        let seconds = SystemTime::now().duration_since(UNIX_EPOCH).map_or(0, |d| d.as_secs());
         Self {
             frictrack_version: env!("CARGO_PKG_VERSION"),
             git_revision: commit.map(str::to_string),
             command,
-            date: utc_date_time(seconds),
+            date: utc_now(),
         }
     }
+}
+
+/// This instant, UTC, as [`utc_date_time`] writes it.
+pub fn utc_now() -> String {
+    utc_date_time(SystemTime::now().duration_since(UNIX_EPOCH).map_or(0, |d| d.as_secs()))
 }
 
 /// A command line's arguments as one line a shell runs again: an argument with anything but letters, digits and

@@ -3,7 +3,7 @@
 //! same offline and prints with each figure kept whole on its page (`break-inside: avoid`).
 
 use super::blocks::escape;
-use crate::provenance::utc_date_time;
+use crate::provenance::utc_now;
 use std::fmt::Write as _;
 
 /// A section of the page: its anchor, heading and body (HTML).
@@ -102,9 +102,7 @@ impl Page {
         for (i, section) in self.sections.iter().enumerate() {
             write_section(&mut out, section, &format!("{}", i + 1), 2);
         }
-        let written = utc_date_time(
-            std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map_or(0, |d| d.as_secs()),
-        );
+        let written = utc_now();
         let _ = writeln!(
             out,
             "<footer><p class=\"none\">Report written {written} by frictrack {}.</p></footer>\n</body>\n</html>",
