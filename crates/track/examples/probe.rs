@@ -1,12 +1,14 @@
 //! Times one reference run: `cargo run --release -p track --example probe -- <case>` with case one of
 //! `none`, `devices7`, `devices31`, `distributed1k`, `distributed10k`, `distributed5k` (default), `distributed5k-whole`,
-//! optionally followed by a step count to stop early (for instruction counts under callgrind), a solver tolerance,
+//! `soil-linear`, `soil-tensionless` (ζ = 5 %, 100 m/s unless a speed is given: the `soil_run` bench's runs, the
+//! tensionless soil through its 800 sections), optionally followed by a step count to stop early (for instruction counts under callgrind), a solver tolerance,
 //! an element count (200 m beam; default 200) and a speed (m/s; default 200). Prints the wall time of the time
 //! loop, the solver statistics and the peak resident memory of the process (VmHWM, Linux).
 
 use analytic::reference::uic60_on_soft_soil;
-use track::PlacedInteractions;
+use fem_beam::{Foundation, FoundationLaw};
 use track::{BallastOnBeam, Devices, DistributedFriction};
+use track::{FoundationSections, PlacedInteractions};
 use track::{RunSettings, Simulation};
 
 fn main() {
@@ -15,8 +17,13 @@ fn main() {
     if let Some(elements) = std::env::args().nth(4).and_then(|s| s.parse().ok()) {
         reference.mesh.elements = elements;
     }
-    let model = reference.model().expect("reference model");
     let mut settings = RunSettings::default();
+    if let Some(law) = soil_law(&case) {
+        reference.foundation =
+            Foundation { law, ..reference.foundation.with_damping_ratio(0.05, &reference.beam).expect("damping") };
+        settings.moving.speed = 100.0;
+    }
+    let model = reference.model().expect("reference model");
     if let Some(t) = std::env::args().nth(3).and_then(|s| s.parse().ok()) {
         settings.integration.solver.tolerance = t;
     }
@@ -24,7 +31,8 @@ fn main() {
         settings.moving.speed = v;
     }
     let interactions = match case.as_str() {
-        "none" => PlacedInteractions::new(),
+        "none" | "soil-linear" => PlacedInteractions::new(),
+        "soil-tensionless" => FoundationSections::default().interactions(&model).expect("soil sections"),
         "devices7" => Devices::uniform(7, 100e3).interactions(&model).expect("devices"),
         "devices31" => Devices::uniform(31, 100e3).interactions(&model).expect("devices"),
         "distributed1k" => DistributedFriction::new(1e3).interactions(&model).expect("friction"),
@@ -58,4 +66,13 @@ fn main() {
         .ok()
         .and_then(|t| t.lines().find(|l| l.starts_with("VmHWM:")).map(|l| l["VmHWM:".len()..].trim().to_string()));
     println!("peak resident memory: {}", peak.unwrap_or_else(|| "unknown".into()));
+}
+
+/// The soil law of the `soil-…` cases.
+fn soil_law(case: &str) -> Option<FoundationLaw> {
+    match case {
+        "soil-linear" => Some(FoundationLaw::Linear),
+        "soil-tensionless" => Some(FoundationLaw::Tensionless),
+        _ => None,
+    }
 }

@@ -172,19 +172,21 @@ impl BandedInteriorPoint {
         p: &mut [f64],
         tolerance: f64,
     ) -> crate::Result<Option<(usize, f64)>> {
-        // Whether the predictor applies is decided once for a law that does not vary between steps.
-        let applies = match (self.pressed_applies, problem.is_varying()) {
-            (Some(applies), false) => applies,
-            (_, varying) => {
+        // Whether the predictor applies is decided once for a law that does not vary between steps, or whose every
+        // interaction is a spring stop whose step bounds are always (0, ∞) (a soil's sections).
+        let applies = match self.pressed_applies {
+            Some(applies) => applies,
+            None => {
                 let applies = PressedSet::applies(problem);
-                self.pressed_applies = (!varying).then_some(applies);
+                let settled = !problem.is_varying() || PressedSet::applies_every_step(problem);
+                self.pressed_applies = settled.then_some(applies);
                 applies
             }
         };
         let Some(pressed) = self.pressed.as_mut().filter(|_| applies) else {
             return Ok(None);
         };
-        pressed.start(p);
+        pressed.start(problem, p);
         for round in 1..=pressed_set::MAX_ROUNDS {
             let refactored = pressed.predict(problem, u_free, p, &mut self.check)?;
             self.work.counts.factorisations += usize::from(refactored);

@@ -22,6 +22,7 @@
 use crate::integrator::IterationMatrix;
 use crate::problem::InteractionProblem;
 use banded::{BandedLdlt, BlockRows, SymmetricBanded};
+use friction::Law;
 
 /// Active-set rounds tried before the interior point takes the step.
 pub(super) const MAX_ROUNDS: usize = 4;
@@ -52,6 +53,8 @@ pub(super) struct PressedSet {
     saved: Vec<f64>,
     /// The set A the next prediction takes.
     pressed: Vec<bool>,
+    /// The DOF spans of the rows whose springs the last change of B added or took out.
+    changed: Vec<(usize, usize)>,
 }
 
 impl PressedSet {
@@ -81,6 +84,7 @@ impl PressedSet {
             hy: vec![0.0; m],
             saved: vec![0.0; m],
             pressed: vec![false; m],
+            changed: Vec::with_capacity(m),
         })
     }
 
@@ -94,8 +98,21 @@ impl PressedSet {
             })
     }
 
-    /// Start from the pressed set of `p` (p_j > 0), keeping `p` for [`PressedSet::restore`].
-    pub(super) fn start(&mut self, p: &[f64]) {
+    /// Whether every interaction is a compliant stop or a soil section — laws whose step bounds are (0, ∞) and whose
+    /// compliance is the run's at every step — so that [`PressedSet::applies`] holds for the run once it holds.
+    pub(super) fn applies_every_step(problem: &InteractionProblem) -> bool {
+        !problem.has_hertz()
+            && problem.interactions.laws().iter().all(|law| matches!(law, Law::Compliant { .. } | Law::Soil { .. }))
+    }
+
+    /// Start from the pressed set of `p` (p_j > 0), keeping `p` for [`PressedSet::restore`]; 1/d_j from the step's
+    /// law.
+    pub(super) fn start(&mut self, problem: &InteractionProblem, p: &[f64]) {
+        let (inverse, of) = &mut self.inverse_compliance;
+        if *of != problem.law.compliance {
+            of.copy_from_slice(&problem.law.compliance);
+            inverse.iter_mut().zip(of.iter()).for_each(|(i, d)| *i = 1.0 / d);
+        }
         self.saved.copy_from_slice(p);
         for (pressed, &p) in self.pressed.iter_mut().zip(p) {
             *pressed = p > 0.0;
@@ -129,11 +146,7 @@ impl PressedSet {
         u: &mut [f64],
     ) -> crate::Result<bool> {
         let law = &problem.law;
-        let (inverse, of) = &mut self.inverse_compliance;
-        if *of != law.compliance {
-            of.copy_from_slice(&law.compliance);
-            inverse.iter_mut().zip(of.iter()).for_each(|(i, d)| *i = 1.0 / d);
-        }
+        let inverse = &self.inverse_compliance.0;
         // c_j = U_free,j + b_j; the loops zip their arrays (no index checks: they run over every section a round).
         let bounds = law.lower.iter().zip(&law.upper);
         let sets = self.free_pressed.iter_mut().zip(&self.pressed);
@@ -152,25 +165,30 @@ impl PressedSet {
             Some((set, of)) if *of == m_hat && *set == self.free_pressed => false,
             Some((set, of)) if *of == m_hat => {
                 // B of the last set, with the springs of the sections that changed added or taken out: a few
-                // outer products where the whole gram would cost all of them (as exact, to round-off of B).
+                // outer products where the whole gram would cost all of them (as exact, to round-off of B), and
+                // the factor's rows recomputed from each change on until they repeat to the bit.
+                let changed = &mut self.changed;
+                changed.clear();
                 for (j, (was, &is)) in
                     set.iter_mut().zip(&self.free_pressed).enumerate().filter(|(_, (w, i))| **w != **i)
                 {
                     let sign = if is { 1.0 } else { -1.0 };
                     matrix.add_outer(rows[j].dofs(), rows[j].values(), sign * inverse[j]);
                     *was = is;
+                    if let Some(span) = rows[j].dof_span() {
+                        changed.push(span);
+                    }
                 }
+                refactor_changed_rows(matrix, &mut self.factor, changed)?;
                 true
             }
             _ => {
                 self.rows.weighted_gram_into(&problem.matrix.m_hat, &self.weights, matrix);
                 self.factored = Some((self.free_pressed.clone(), m_hat));
+                self.matrix.factor_into(&mut self.factor)?;
                 true
             }
         };
-        if refactored {
-            self.matrix.factor_into(&mut self.factor)?;
-        }
         let n = self.factor.order();
         self.rows.transpose_mul(&self.scaled, &mut self.y);
         self.factor.solve_in_place(&mut self.y[..n]);
@@ -196,6 +214,34 @@ impl PressedSet {
     pub(super) fn restore(&self, p: &mut [f64]) {
         p.copy_from_slice(&self.saved);
     }
+}
+
+/// The factor of B refactored after the rows of the DOF `spans` (ascending by section) changed: from each run of
+/// overlapping spans on, until the recomputed rows repeat their old values to the bit
+/// ([`BandedLdlt::refactor_rows_from`] with drop 0) — from there on a full factorisation would give the old rows
+/// again, so the factor is the full one's, bit for bit, at the cost of the rows the change reaches (the influence of a
+/// section's spring on M̂'s factor fades within a few elements).
+fn refactor_changed_rows(
+    matrix: &SymmetricBanded,
+    factor: &mut BandedLdlt,
+    spans: &[(usize, usize)],
+) -> crate::Result<()> {
+    let mut reached = 0;
+    let mut k = 0;
+    while k < spans.len() {
+        let (first, mut last) = spans[k];
+        k += 1;
+        while k < spans.len() && spans[k].0 <= last + 1 {
+            last = last.max(spans[k].1);
+            k += 1;
+        }
+        if last < reached {
+            continue;
+        }
+        // Rows before `reached` were recomputed from the changed B already.
+        reached = factor.refactor_rows_from(matrix, first.max(reached), last, 0.0)?;
+    }
+    Ok(())
 }
 
 #[cfg(test)]
@@ -227,6 +273,28 @@ mod tests {
         let mut problem = InteractionProblem::with_matrix(interactions, matrix).expect("M̂ is SPD");
         problem.update(0.0, &vec![0.0; n], &vec![0.0; n]);
         problem
+    }
+
+    /// The factor of B after a few sections' springs are added or taken out — in two runs far apart, and in two
+    /// overlapping spans — is, refactored from the changes on until its rows repeat, the full factorisation of the
+    /// changed B to the bit; and it stops short of the end (the change fades: the cost is local).
+    #[test]
+    fn the_local_refactor_is_the_full_factor_to_the_bit() {
+        let mut b = super::super::tests::beam_like_m_hat(200);
+        let mut factor = b.factor().expect("SPD");
+        let springs = [((40, 43), 0.7), ((41, 44), 0.4), ((300, 303), 2.5)];
+        for &((first, last), k) in &springs {
+            let dofs: Vec<usize> = (first..=last).collect();
+            b.add_outer(&dofs, &[1.0, 0.2, 0.5, -0.1], k);
+        }
+        let spans: Vec<(usize, usize)> = springs.iter().map(|s| s.0).collect();
+        super::refactor_changed_rows(&b, &mut factor, &spans).expect("still SPD");
+        assert_eq!(factor, b.factor().expect("SPD"), "the local refactor differs from the full one");
+        // One more spring: its refactor ends within a few elements of it, not at the end of the 402 rows.
+        b.add_outer(&[150, 151, 152, 153], &[1.0, 0.2, 0.5, -0.1], 3.0);
+        let end = factor.refactor_rows_from(&b, 150, 153, 0.0).expect("SPD");
+        assert!(end < 250, "the refactor after a change at row 150 ran to row {end}");
+        assert_eq!(factor, b.factor().expect("SPD"));
     }
 
     /// A step of compliant supports alone, solved again from the last step's impulses with free velocities that moved
