@@ -33,6 +33,19 @@ pub struct BlockRows {
     offsets: Vec<[usize; 4]>,
     /// Whether some row skips a column (the products then go entry by entry).
     spread: bool,
+    /// The rows grouped into blocks of up to four consecutive rows that start in the same column (a soil's or a
+    /// ballast's sections of one element): H x and Hᵀ s take the block's four columns of x or of the sum once.
+    blocks: Vec<Block>,
+}
+
+/// Up to four consecutive rows starting in column `first`: `columns[c][r]` is entry c of row `row + r` (zero past
+/// `len` rows and past a row's entries).
+#[derive(Debug, Clone, Copy)]
+struct Block {
+    first: usize,
+    row: usize,
+    len: usize,
+    columns: [[f64; 4]; 4],
 }
 
 /// The offsets of a consecutive row.
@@ -47,6 +60,7 @@ impl BlockRows {
             lens: Vec::with_capacity(rows),
             offsets: Vec::with_capacity(rows),
             spread: false,
+            blocks: Vec::with_capacity(rows),
         }
     }
 
@@ -57,6 +71,7 @@ impl BlockRows {
         self.lens.clear();
         self.offsets.clear();
         self.spread = false;
+        self.blocks.clear();
     }
 
     /// Append a row whose entries `values` (at most four) sit in columns first, first + 1, ….
@@ -64,10 +79,22 @@ impl BlockRows {
         assert!(values.len() <= 4, "BlockRows::push: {} entries, at most 4", values.len());
         let mut padded = [0.0; 7];
         padded[3..3 + values.len()].copy_from_slice(values);
+        let row = self.first.len();
         self.first.push(first);
         self.padded.push(padded);
         self.lens.push(values.len());
         self.offsets.push(CONSECUTIVE);
+        let block = match self.blocks.last_mut().filter(|b| b.first == first && b.len < 4) {
+            Some(block) => block,
+            None => {
+                self.blocks.push(Block { first, row, len: 0, columns: [[0.0; 4]; 4] });
+                self.blocks.last_mut().expect("just pushed")
+            }
+        };
+        for (column, &h) in block.columns.iter_mut().zip(values) {
+            column[block.len] = h;
+        }
+        block.len += 1;
     }
 
     /// Append a row with entries `values` (at most four) in the ascending `columns`, which may skip columns; it must
@@ -93,19 +120,37 @@ impl BlockRows {
         self.offsets[k][..self.lens[k]].iter().zip(&h[3..]).map(move |(&offset, &h)| (first + offset, h))
     }
 
-    /// out_k = H_k·x = h₀x_f + h₁x_{f+1} + h₂x_{f+2} + h₃x_{f+3} (f = first_k, summed left to right). `x` needs
-    /// three entries past the last column a row can start in (zeros where a row has fewer than four entries).
+    /// out_k = H_k·x = h₀x_f + h₁x_{f+1} + h₂x_{f+2} + h₃x_{f+3} (f = first_k, summed left to right; the padding's
+    /// zeros where a row has fewer than four entries). A row whose four slots reach past the end of `x` sums its own
+    /// entries from zero instead.
     #[inline(always)]
     pub fn mul(&self, x: &[f64], out: &mut [f64]) {
+        let by_entries = |k: usize| self.entries(k).fold(0.0, |sum, (column, h)| sum + h * x[column]);
         if self.spread {
             for (k, o) in out.iter_mut().enumerate().take(self.first.len()) {
-                *o = self.entries(k).fold(0.0, |sum, (column, h)| sum + h * x[column]);
+                *o = by_entries(k);
             }
             return;
         }
-        for ((o, &first), h) in out.iter_mut().zip(&self.first).zip(&self.padded) {
-            let x: &[f64; 4] = x[first..first + 4].try_into().expect("four entries");
-            *o = h[3] * x[0] + h[4] * x[1] + h[5] * x[2] + h[6] * x[3];
+        for block in &self.blocks {
+            let Some(out) = out.get_mut(block.row..block.row + block.len) else { break };
+            match x.get(block.first..block.first + 4) {
+                Some(&[x0, x1, x2, x3]) => {
+                    // Column after column into the four rows' sums: h₀x_f + h₁x_{f+1} + … in each, packed.
+                    let c = &block.columns;
+                    let mut y = c[0].map(|h| h * x0);
+                    for (column, x) in c[1..].iter().zip([x1, x2, x3]) {
+                        for (y, h) in y.iter_mut().zip(column) {
+                            *y += h * x;
+                        }
+                    }
+                    match <&mut [f64; 4]>::try_from(&mut *out) {
+                        Ok(whole) => *whole = y,
+                        Err(_) => out.iter_mut().zip(y).for_each(|(o, y)| *o = y),
+                    }
+                }
+                _ => out.iter_mut().enumerate().for_each(|(r, o)| *o = by_entries(block.row + r)),
+            }
         }
     }
 
@@ -120,13 +165,20 @@ impl BlockRows {
             }
             return;
         }
-        for ((&s, &first), h) in s.iter().zip(&self.first).zip(&self.padded) {
-            // Entry by entry: rows of neighbouring elements overlap by two entries, and a packed store followed by
-            // a packed load that overlaps it only in part stalls store-to-load forwarding (measured: those two
-            // instructions took 25 % of the interior point's samples), while scalar entries forward.
-            let out = &mut out[first..first + 4];
-            for a in 0..4 {
-                out[a] += s * h[3 + a];
+        for block in &self.blocks {
+            // A block's rows one after the other into the four sums held apart (the additions of a row-by-row
+            // scatter, in its order), stored entry by entry: rows of neighbouring elements overlap by two entries,
+            // and a packed store followed by a packed load that overlaps it only in part stalls store-to-load
+            // forwarding (measured: those two instructions took 25 % of the interior point's samples).
+            let out = &mut out[block.first..block.first + 4];
+            let mut sums = [out[0], out[1], out[2], out[3]];
+            for (r, &s) in s[block.row..block.row + block.len].iter().enumerate() {
+                for (sum, column) in sums.iter_mut().zip(&block.columns) {
+                    *sum += s * column[r];
+                }
+            }
+            for (o, sum) in out.iter_mut().zip(sums) {
+                *o = sum;
             }
         }
     }
@@ -223,6 +275,13 @@ mod tests {
         let s: Vec<f64> = (0..m).map(|k| (1.3 * k as f64).sin() * 1e3).collect();
         let mut hx = vec![0.0; m];
         block.mul(&x, &mut hx);
+        // Without the padding past the last column, the rows that reach past it sum their own entries: same bits.
+        let mut unpadded = vec![0.0; m];
+        block.mul(&x[..n], &mut unpadded);
+        assert_eq!(
+            hx.iter().map(|x| x.to_bits()).collect::<Vec<_>>(),
+            unpadded.iter().map(|x| x.to_bits()).collect::<Vec<_>>()
+        );
         let mut hts = vec![f64::NAN; n + 3];
         block.transpose_mul(&s, &mut hts);
         let mut gram = SymmetricBanded::zeros(n, 3);

@@ -6,6 +6,7 @@ use crate::step::{RowStart, StepWeights};
 
 /// The drift of a spring law whose force is implicit in the penetration at the step's end (docs/theory.md §9):
 /// b = b_r − (δ_k − h(1−θ)U_k)/(hθ) for the penetration δ_k (m) its spring starts from, U_k (m/s) and b_r (m/s).
+#[inline]
 pub fn compliant_drift(penetration: f64, u: f64, rheonomic: f64, h: f64, theta: f64) -> f64 {
     rheonomic - (penetration - h * (1.0 - theta) * u) / (h * theta)
 }
@@ -16,6 +17,7 @@ pub fn compliant_drift(penetration: f64, u: f64, rheonomic: f64, h: f64, theta: 
 /// a = hw(hθk + c) this is 0 ≤ p ⊥ p/a + U_{k+1} + b ≥ 0 with
 /// b = b_r − [hkδ_k − h(hkw(1−θ)U_k + c(1−w)Hv_k)]/a, for the penetration δ_k = −g_k (m), stiffness k (N/m) and
 /// damping c (N·s/m). While it presses the soil is then the foundation's own K and C.
+#[inline]
 pub fn soil_drift(start: RowStart, weights: StepWeights, stiffness: f64, damping: f64) -> f64 {
     let RowStart { gap, velocity: u, current, rheonomic } = start;
     let StepWeights { step: h, theta, force: w } = weights;

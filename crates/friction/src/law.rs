@@ -87,6 +87,7 @@ impl Law {
     }
 
     /// g₀, the gap at q = 0 (m), of a law whose state is a gap; None for friction.
+    #[inline]
     pub fn gap(&self) -> Option<f64> {
         match *self {
             Law::Coulomb { .. } => None,
@@ -126,6 +127,7 @@ impl Law {
 
     /// Whether the law holds energy in a spring (compliant stop, bilateral spring, Hertz): the energy ledger then
     /// books what it stores and loses.
+    #[inline]
     pub fn has_spring(&self) -> bool {
         matches!(self, Law::Compliant { .. } | Law::Soil { .. } | Law::Spring { .. } | Law::Hertz { .. })
     }
@@ -145,6 +147,7 @@ impl Law {
     /// - compliant stop and Hertz: [0, +∞), a bilateral spring (−∞, +∞), each with the drift of
     ///   [`compliant_drift`] from the penetration δ_k = −g_k. Their compliance is [`Law::run_compliance`]
     ///   (Hertz: its linearisation's, [`crate::hertz::HertzStep::law`]).
+    #[inline]
     pub fn step_bounds(&self, start: RowStart, weights: StepWeights, closed: bool) -> (f64, f64, f64) {
         let StepWeights { step: h, theta, .. } = weights;
         let RowStart { gap, velocity: u, rheonomic, .. } = start;
@@ -181,6 +184,7 @@ impl Law {
 
     /// The energy Φ(δ) (J) the law's spring holds at penetration δ (m): ½k⟨δ⟩₊² for a stop, ½kδ² for a bilateral
     /// spring, (2/5)C_H⟨δ⟩₊^{5/2} for Hertz ([`crate::hertz::potential`]); None for laws without a spring.
+    #[inline]
     pub fn stored_energy(&self, penetration: f64) -> Option<f64> {
         match *self {
             Law::Compliant { stiffness, .. } | Law::Soil { stiffness, .. } => {

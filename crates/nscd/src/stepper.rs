@@ -282,7 +282,7 @@ impl MoreauJean {
             self.apply_projection();
         }
         if !self.problem.interactions.is_empty() {
-            self.problem.interactions.velocities(&self.v, &mut self.u);
+            self.problem.velocities(&self.v, &mut self.u);
         }
         self.time = t1;
         self.steps += 1;
@@ -320,7 +320,7 @@ impl MoreauJean {
         if self.problem.interactions.is_empty() {
             return Ok(StepReport::default());
         }
-        self.problem.interactions.velocities(&self.v, &mut self.u_free);
+        self.problem.velocities(&self.v, &mut self.u_free);
         let mut report = self.solve_interactions(t1)?;
         // Hertz contacts: Newton on their tangent, one more solve per update (docs/theory.md §9).
         let mut newton = 0;

@@ -21,6 +21,7 @@
 
 mod dof_responses;
 mod energy;
+mod fixed_rows;
 pub mod responses;
 
 use crate::integrator::{Integration, IterationMatrix};
@@ -29,6 +30,7 @@ use crate::moving::{Interactions, MovingInteraction, MovingState};
 use crate::position::{CLOSED_GAP, PositionProjection, ProjectionReport};
 use crate::system::LinearSystem;
 use dof_responses::DofResponses;
+use fixed_rows::FixedRows;
 use friction::hertz::{HertzStep, NEWTON_TOLERANCE, PENETRATION_FLOOR};
 use friction::law::{RowStart, natural_residual};
 use friction::{InteractionSet, Law};
@@ -99,6 +101,8 @@ pub struct InteractionProblem {
     hertz: Vec<Option<HertzStep>>,
     /// The position projection of the rigid moving contacts.
     projection: PositionProjection,
+    /// The fixed rows packed for the products of every step, where each is short and on consecutive DOFs.
+    fixed_rows: Option<FixedRows>,
 }
 
 impl InteractionProblem {
@@ -153,7 +157,9 @@ impl InteractionProblem {
         let varying = !interactions.is_friction_only() || !moving.is_empty();
         let projection = PositionProjection::new(moving.len(), |k| moving[k].law().is_rigid());
         let n = matrix.order();
+        let fixed_rows = FixedRows::new(&interactions, fixed);
         let mut problem = Self {
+            fixed_rows,
             interactions,
             matrix,
             law,
@@ -211,6 +217,12 @@ impl InteractionProblem {
         let rows = self.interactions.rows();
         // The θ-method's laws start from v_k itself: one product a row, not two.
         let same = std::ptr::eq(start, v);
+        // Every fixed law with a gap (a soil's sections): its products packed, one pass each.
+        let packed = self.fixed_rows.as_mut().filter(|r| r.all_gaps);
+        if let Some(products) = packed {
+            products.update_products(q, start, v, same);
+        }
+        let packed = self.fixed_rows.as_ref().filter(|r| r.all_gaps);
         for (j, law) in self.interactions.laws().iter().enumerate() {
             let row_start = if j >= self.fixed {
                 let state = self.moving_states[j - self.fixed];
@@ -222,9 +234,14 @@ impl InteractionProblem {
                 }
             } else {
                 let Some(gap) = law.gap() else { continue };
-                let velocity = rows[j].dot(start);
-                let current = if same { velocity } else { rows[j].dot(v) };
-                RowStart { gap: gap + rows[j].dot(q), velocity, current, rheonomic: 0.0 }
+                let (at_q, velocity, current) = match packed {
+                    Some(p) => (p.at_q[j], p.at_start[j], if same { p.at_start[j] } else { p.at_v[j] }),
+                    None => {
+                        let velocity = rows[j].dot(start);
+                        (rows[j].dot(q), velocity, if same { velocity } else { rows[j].dot(v) })
+                    }
+                };
+                RowStart { gap: gap + at_q, velocity, current, rheonomic: 0.0 }
             };
             let RowStart { gap, velocity: u, rheonomic, .. } = row_start;
             if let Some(hertz) = self.hertz[j].as_mut() {
@@ -428,8 +445,20 @@ impl InteractionProblem {
             self.solve_response(p, v);
             axpy(1.0, v_free, v);
         }
-        self.interactions.velocities(v, u);
+        self.velocities(v, u);
         self.law_residual(u, p)
+    }
+
+    /// U = H v: the fixed rows' products packed where they can be ([`fixed_rows`]), the moving rows' one by one.
+    pub fn velocities(&self, v: &[f64], u: &mut [f64]) {
+        let Some(fixed) = &self.fixed_rows else {
+            return self.interactions.velocities(v, u);
+        };
+        let (at_fixed, at_moving) = u.split_at_mut(self.fixed);
+        fixed.mul(v, at_fixed);
+        for (u, row) in at_moving.iter_mut().zip(&self.interactions.rows()[self.fixed..]) {
+            *u = row.dot(v);
+        }
     }
 
     /// Absolute tolerance (m/s) for a relative tolerance: relative to the largest of |U_free,j| and |U_free,j + b_j|,
