@@ -36,7 +36,7 @@ pub use error::{NscdError, Result};
 pub use forcing::Forcing;
 pub use ledger::EnergyBalance;
 pub use moving::{Interactions, MovingInteraction, MovingState};
-pub use problem::{InteractionProblem, StepLaw};
+pub use problem::{InteractionProblem, StepLaw, pack_rows};
 pub use solver::{SolverKind, SolverSettings, StepReport, StepStatus, StepWork};
 pub use stepper::{EnergyLedger, Integration, MoreauJean};
 pub use system::{DofLayout, LinearSystem};

@@ -88,6 +88,8 @@ pub struct MoreauJean {
     work: Vec<f64>,
     work2: Vec<f64>,
     u_free: Vec<f64>,
+    /// H x of the energy terms (H v_θ, H q): m.
+    row_products: Vec<f64>,
     v_free: Vec<f64>,
     /// The position projection's Δq (n when some moving contact is rigid, else empty).
     dq: Vec<f64>,
@@ -162,6 +164,7 @@ impl MoreauJean {
             work: vec![0.0; n],
             work2: vec![0.0; n],
             u_free: vec![0.0; m],
+            row_products: vec![0.0; m],
             v_free: vec![0.0; n],
             dq: Vec::new(),
             rates: None,
@@ -184,7 +187,7 @@ impl MoreauJean {
         stepper.energy.current = kinetic + strain;
         stepper.energy.kinetic = kinetic;
         stepper.energy.strain = strain;
-        stepper.energy.spring_energy = spring_energy(&stepper.problem, &stepper.q, None);
+        stepper.energy.spring_energy = spring_energy(&stepper.problem, &stepper.q, None, &mut stepper.row_products);
         stepper.problem.update(0.0, &stepper.q, &stepper.v);
         stepper
     }
@@ -460,7 +463,7 @@ impl MoreauJean {
         } else {
             0.0
         };
-        let work = interaction_work(&self.problem.interactions, self.friction_only, &self.p, &self.work);
+        let work = interaction_work(&self.problem, self.friction_only, (&self.p, &self.work), &mut self.row_products);
         std::mem::swap(&mut self.kv, &mut self.kv_next);
         std::mem::swap(&mut self.mv, &mut self.mv_next);
         std::mem::swap(&mut self.cv, &mut self.cv_next);
@@ -476,7 +479,7 @@ impl MoreauJean {
         e.support_work += work.support;
         e.numerical_dissipation += numerical;
         if self.varying_energy {
-            e.spring_energy = spring_energy(&self.problem, &self.q, Some(&self.p));
+            e.spring_energy = spring_energy(&self.problem, &self.q, Some(&self.p), &mut self.row_products);
         }
         if self.varying_energy || self.problem.has_projection() {
             for j in self.problem.fixed_len()..self.p.len() {

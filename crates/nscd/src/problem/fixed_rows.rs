@@ -5,7 +5,20 @@
 //! h₃x_{f+3} left to right, as [`friction::InteractionRow::dot`] forms it.
 
 use banded::BlockRows;
-use friction::InteractionSet;
+use friction::{InteractionRow, InteractionSet};
+
+/// `rows` packed four entries at a time, so that [`BlockRows::mul`] gives each row's [`InteractionRow::dot`] to the
+/// bit; None unless each row is short (at most four entries) and on consecutive DOFs.
+pub fn pack_rows<'a>(rows: impl ExactSizeIterator<Item = &'a InteractionRow> + Clone) -> Option<BlockRows> {
+    if rows.len() == 0 || !rows.clone().all(|r| r.is_local() && r.len() <= 4) {
+        return None;
+    }
+    let mut block = BlockRows::with_capacity(rows.len());
+    for row in rows {
+        block.push(row.dofs()[0], row.values());
+    }
+    Some(block)
+}
 
 /// The packed fixed rows and the update phase's scratch products.
 #[derive(Debug, Clone)]
@@ -25,14 +38,7 @@ pub(super) struct FixedRows {
 impl FixedRows {
     /// The first `fixed` rows of `set` packed; None unless each is short and on consecutive DOFs.
     pub(super) fn new(set: &InteractionSet, fixed: usize) -> Option<Self> {
-        let rows = &set.rows()[..fixed];
-        if fixed == 0 || !rows.iter().all(|r| r.is_local() && r.len() <= 4) {
-            return None;
-        }
-        let mut block = BlockRows::with_capacity(fixed);
-        for row in rows {
-            block.push(row.dofs()[0], row.values());
-        }
+        let block = pack_rows(set.rows()[..fixed].iter())?;
         let all_gaps = set.laws()[..fixed].iter().all(|law| law.gap().is_some());
         let scratch = vec![0.0; if all_gaps { fixed } else { 0 }];
         Some(Self { rows: block, all_gaps, at_q: scratch.clone(), at_start: scratch.clone(), at_v: scratch })

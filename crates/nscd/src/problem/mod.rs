@@ -31,6 +31,7 @@ use crate::position::{CLOSED_GAP, PositionProjection, ProjectionReport};
 use crate::system::LinearSystem;
 use dof_responses::DofResponses;
 use fixed_rows::FixedRows;
+pub use fixed_rows::pack_rows;
 use friction::hertz::{HertzStep, NEWTON_TOLERANCE, PENETRATION_FLOOR};
 use friction::law::{RowStart, natural_residual};
 use friction::{InteractionSet, Law};
@@ -447,6 +448,18 @@ impl InteractionProblem {
         }
         self.velocities(v, u);
         self.law_residual(u, p)
+    }
+
+    /// H q of the fixed rows into `out` in one packed pass, where every fixed law has a gap and the rows pack
+    /// ([`fixed_rows`]); false (and `out` untouched) otherwise.
+    pub fn fixed_gap_products(&self, q: &[f64], out: &mut [f64]) -> bool {
+        match self.fixed_rows.as_ref().filter(|r| r.all_gaps) {
+            Some(rows) => {
+                rows.mul(q, &mut out[..self.fixed]);
+                true
+            }
+            None => false,
+        }
     }
 
     /// U = H v: the fixed rows' products packed where they can be ([`fixed_rows`]), the moving rows' one by one.

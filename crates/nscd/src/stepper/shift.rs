@@ -87,7 +87,7 @@ impl MoreauJean {
         let e = &mut self.energy;
         (e.kinetic, e.strain, e.current) = (kinetic, strain, kinetic + strain);
         e.transported += e.current - before;
-        e.spring_energy = spring_energy(&self.problem, &self.q, None);
+        e.spring_energy = spring_energy(&self.problem, &self.q, None, &mut self.row_products);
         if self.problem.is_varying() {
             self.problem.update(self.time, &self.q, &self.v);
         }

@@ -4,7 +4,7 @@
 use crate::forcing::Forcing;
 use crate::kernels::dot;
 use crate::problem::InteractionProblem;
-use friction::{InteractionKind, InteractionSet};
+use friction::InteractionKind;
 
 /// The work U_θᵀp of one step's impulses, by kind of interaction (J).
 pub(super) struct InteractionWork {
@@ -21,21 +21,23 @@ impl InteractionWork {
 
 /// Σ_j (H_j v_θ) p_j by kind, each sum in interaction order; and the compliant springs' energy is not here (see
 /// [`EnergyLedger::spring_energy`]). `friction_only`: every interaction is friction (one sum, no kind to read).
+/// `hv`: m scratch for H v_θ.
 pub(super) fn interaction_work(
-    interactions: &InteractionSet,
+    problem: &InteractionProblem,
     friction_only: bool,
-    p: &[f64],
-    v_theta: &[f64],
+    (p, v_theta): (&[f64], &[f64]),
+    hv: &mut [f64],
 ) -> InteractionWork {
     let mut work = InteractionWork { friction: 0.0, contact: 0.0, support: 0.0 };
+    problem.velocities(v_theta, hv);
     if friction_only {
-        for (row, &pj) in interactions.rows().iter().zip(p) {
-            work.friction += row.dot(v_theta) * pj;
+        for (u, &pj) in hv.iter().zip(p) {
+            work.friction += u * pj;
         }
         return work;
     }
-    for ((row, &pj), kind) in interactions.rows().iter().zip(p).zip(interactions.kinds()) {
-        let term = row.dot(v_theta) * pj;
+    for ((u, &pj), kind) in hv.iter().zip(p).zip(problem.interactions.kinds()) {
+        let term = u * pj;
         match kind {
             InteractionKind::Friction => work.friction += term,
             InteractionKind::Contact => work.contact += term,
@@ -48,9 +50,11 @@ pub(super) fn interaction_work(
 /// The energy in the springs of the compliant interactions at displacement q (J): ½k⟨δ⟩₊² of a stop, ½kδ² of a
 /// bilateral spring. A fixed interaction's penetration is δ = −(g₀ + Hq); a moving one's gap depends on where it is
 /// and on the rail's profile, so after a step (`impulses` p) its energy is read from its law
-/// ([`InteractionProblem::moving_spring_energy`]). Before the first step moving interactions count 0.
-pub(super) fn spring_energy(problem: &InteractionProblem, q: &[f64], impulses: Option<&[f64]>) -> f64 {
+/// ([`InteractionProblem::moving_spring_energy`]). Before the first step moving interactions count 0. `hq`: m
+/// scratch for H q where every fixed law has a gap (a soil's sections), taken in one packed pass.
+pub(super) fn spring_energy(problem: &InteractionProblem, q: &[f64], impulses: Option<&[f64]>, hq: &mut [f64]) -> f64 {
     let interactions = &problem.interactions;
+    let packed = problem.fixed_gap_products(q, hq);
     let mut energy = 0.0;
     for (j, (row, law)) in interactions.rows().iter().zip(interactions.laws()).enumerate() {
         if j >= problem.fixed_len() {
@@ -59,7 +63,8 @@ pub(super) fn spring_energy(problem: &InteractionProblem, q: &[f64], impulses: O
         }
         // A fixed interaction with a spring is a linear one (Hertz is refused there).
         if let (Some(gap), true) = (law.gap(), law.has_spring()) {
-            energy += law.stored_energy(-(gap + row.dot(q))).unwrap_or(0.0);
+            let hq = if packed { hq[j] } else { row.dot(q) };
+            energy += law.stored_energy(-(gap + hq)).unwrap_or(0.0);
         }
     }
     energy

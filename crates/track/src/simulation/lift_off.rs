@@ -7,6 +7,7 @@ use super::records::{Record, StepState};
 use super::results::LiftOff;
 use crate::error::Result;
 use crate::placed::{PlacedInteractions, SectionKind};
+use banded::BlockRows;
 use fem_beam::{Extreme, LiftOffZone};
 use friction::InteractionRow;
 
@@ -16,7 +17,6 @@ pub const LIFT_OFF_GAP: f64 = 1e-12;
 
 /// One foundation section as the record follows it.
 struct Followed {
-    row: InteractionRow,
     gap: f64,
     x: f64,
     /// First and last time lifted (s), and the largest gap (m) and when (s).
@@ -28,22 +28,39 @@ struct Followed {
 /// The record of the foundation sections' gaps; empty (and free) without a nonlinear foundation.
 pub(super) struct LiftOffRecord {
     sections: Vec<Followed>,
+    /// Their rows: packed where each is short and on consecutive DOFs (a soil's sections), else one by one.
+    rows: Rows,
+    /// H q of the step.
+    deflections: Vec<f64>,
+}
+
+/// The followed sections' rows, for H q.
+enum Rows {
+    Packed(BlockRows),
+    Each(Vec<InteractionRow>),
 }
 
 impl LiftOffRecord {
     /// Follow the foundation sections of `placed` (their rows, gaps and places).
     pub(super) fn new(placed: &PlacedInteractions) -> Self {
         let set = placed.interactions();
-        let sections = (0..placed.len())
+        let followed: Vec<(usize, f64)> = (0..placed.len())
             .filter(|&j| placed.kinds()[j] == SectionKind::Foundation)
-            .filter_map(|j| {
-                let gap = set.laws()[j].gap()?;
-                let row = set.rows()[j].clone();
+            .filter_map(|j| Some((j, set.laws()[j].gap()?)))
+            .collect();
+        let sections = followed
+            .iter()
+            .map(|&(j, gap)| {
                 let x = placed.positions()[j];
-                Some(Followed { row, gap, x, first: f64::NAN, last: f64::NAN, largest: (0.0, f64::NAN) })
+                Followed { gap, x, first: f64::NAN, last: f64::NAN, largest: (0.0, f64::NAN) }
             })
             .collect();
-        Self { sections }
+        let rows = followed.iter().map(|&(j, _)| &set.rows()[j]);
+        let rows = match nscd::pack_rows(rows.clone()) {
+            Some(packed) => Rows::Packed(packed),
+            None => Rows::Each(rows.cloned().collect()),
+        };
+        Self { sections, rows, deflections: vec![0.0; followed.len()] }
     }
 
     /// The zones and extremes; None without foundation sections.
@@ -79,8 +96,12 @@ impl LiftOffRecord {
 
 impl Record for LiftOffRecord {
     fn record(&mut self, step: &StepState<'_>) -> Result<()> {
-        for s in &mut self.sections {
-            let gap = s.gap + s.row.dot(step.q);
+        match &self.rows {
+            Rows::Packed(rows) => rows.mul(step.q, &mut self.deflections),
+            Rows::Each(rows) => rows.iter().zip(&mut self.deflections).for_each(|(r, d)| *d = r.dot(step.q)),
+        }
+        for (s, hq) in self.sections.iter_mut().zip(&self.deflections) {
+            let gap = s.gap + hq;
             if gap > LIFT_OFF_GAP {
                 if s.first.is_nan() {
                     s.first = step.time;
