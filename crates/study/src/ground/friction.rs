@@ -2,6 +2,7 @@
 //! iteration from the last speed's ([`stationary::solve_on_ground`]) — under the composite beam, on its deflection
 //! against the ground beneath; on the two-beam track, between the sleepers and the embankment.
 
+use crate::ground::shared_spectra::SiteSpectra;
 use crate::ground::wave_point::{FrictionPoint, GroundWave, GroundWavePoint, WAVE_STEP, WaveWindow, summary};
 use analytic::ground::{GroundedBeam, LineSupport, MovingSpectrum, StripGround, TrackOnEmbankment};
 use fem_beam::{Beam, Foundation, Train};
@@ -23,6 +24,8 @@ pub(crate) struct Friction<'a> {
     pub(crate) beam: &'a Beam,
     pub(crate) force: f64,
     pub(crate) stop: Option<&'a std::sync::atomic::AtomicBool>,
+    /// The site's spectra, shared with its other curves.
+    pub(crate) spectra: &'a SiteSpectra,
 }
 
 impl Friction<'_> {
@@ -38,13 +41,15 @@ impl Friction<'_> {
     ) -> Result<(GroundWave, GroundWavePoint)> {
         match &self.track {
             FrictionOn::Composite(grounded) => {
-                let spectrum = grounded.spectrum(speed).map_err(StudyError::from)?;
+                let spectrum = self.spectra.line(speed, || grounded.spectrum(speed).map_err(StudyError::from))?;
                 let local = grounded.local_fit(self.beam, &spectrum, speed).map_err(StudyError::from)?;
                 let track = FrictionTrack::Composite(&spectrum);
                 self.solved(track, &spectrum, local, (train, speed, positions, window), guess)
             }
             FrictionOn::RailOnEmbankment(grounded) => {
-                let spectra = grounded.interface_spectra(speed, WAVE_STEP).map_err(StudyError::from)?;
+                let spectra = self
+                    .spectra
+                    .interface(speed, || grounded.interface_spectra(speed, WAVE_STEP).map_err(StudyError::from))?;
                 let local = grounded.support.local_across_ballast(self.beam, WAVE_STEP);
                 let track = FrictionTrack::RailOnEmbankment(&spectra);
                 self.solved(track, &spectra.rail, local, (train, speed, positions, window), guess)

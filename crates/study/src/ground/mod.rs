@@ -5,13 +5,14 @@
 //! report, tables and figures ([`text`]); a train's steady wave on the ground (`frictrack stationary`, [`wave`]; one speed's in [`wave_point`]) and
 //! its report, tables and figures ([`wave_text`]); what the beam stands on, the strip or the two-beam track
 //! ([`support`]); ballast friction under the composite beam or between the sleepers and the embankment
-//! (`friction`); the sleepers lifting off the ballast of the two-beam track ([`lift_off`]); a measured record set beside it ([`measured`], its numbers in [`comparison`]).
+//! (`friction`), the spectra the curves of one site share ([`shared_spectra`]); the sleepers lifting off the ballast of the two-beam track ([`lift_off`]); a measured record set beside it ([`measured`], its numbers in [`comparison`]).
 
 pub mod comparison;
 pub(crate) mod friction;
 pub mod lift_off;
 pub mod measured;
 pub mod numbers;
+pub mod shared_spectra;
 pub mod speeds;
 pub mod support;
 pub mod text;
@@ -20,5 +21,6 @@ pub mod wave_point;
 pub mod wave_text;
 
 pub use numbers::{DispersionPoint, GroundRequest, GroundStudy, ModesPoint, StiffnessPoint, TrackKind};
+pub use shared_spectra::SiteSpectra;
 pub use speeds::SpeedPoint;
 pub use wave::{GroundWave, GroundWavePoint, GroundWaveStudy, WaveWindow};

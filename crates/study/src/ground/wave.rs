@@ -11,6 +11,7 @@
 use crate::ground::comparison::Comparison;
 use crate::ground::friction::{Friction, FrictionOn};
 use crate::ground::lift_off::LiftOff;
+use crate::ground::shared_spectra::SiteSpectra;
 use crate::ground::support::Support;
 pub use crate::ground::wave_point::{
     BallastAlong, FrictionPoint, GroundWave, GroundWavePoint, LiftOffPoint, WAVE_STEP, WaveWindow,
@@ -59,6 +60,27 @@ impl GroundWaveStudy {
         stop: Option<&std::sync::atomic::AtomicBool>,
         progress: &dyn Fn(usize),
     ) -> Result<Self> {
+        Self::sharing(scenario, speeds, window, (stop, progress), &SiteSpectra::new(scenario))
+    }
+
+    /// As [`GroundWaveStudy::of`], taking the spectra at each speed from `spectra` (sampling and keeping those it
+    /// lacks) where `scenario` is its site but for the friction, so that curves of one site at several frictions
+    /// sample each speed once.
+    pub fn sharing(
+        scenario: &Scenario,
+        speeds: &[f64],
+        window: WaveWindow,
+        (stop, progress): (Option<&std::sync::atomic::AtomicBool>, &dyn Fn(usize)),
+        spectra: &SiteSpectra,
+    ) -> Result<Self> {
+        let own;
+        let spectra = match spectra.fits(scenario) {
+            true => spectra,
+            false => {
+                own = SiteSpectra::new(scenario);
+                &own
+            }
+        };
         let (beam, strip, track) = scenario.ground_track()?;
         let train = scenario.axles_on_the_ground()?;
         let positions = window.positions(train.length())?;
@@ -88,7 +110,7 @@ impl GroundWaveStudy {
                     if let Some(lift_off) = &lift_off {
                         return lift_off.wave(&train, speed, &positions, window);
                     }
-                    let spectrum = grounded.spectrum(speed).map_err(StudyError::from)?;
+                    let spectrum = spectra.line(speed, || grounded.spectrum(speed).map_err(StudyError::from))?;
                     let wave = wave_of(&spectrum, &train, speed, &positions);
                     let point = summary(&spectrum, &train, &wave, window, &|_| 0.0);
                     Ok((wave, point))
@@ -113,7 +135,7 @@ impl GroundWaveStudy {
                     Some(on) => FrictionOn::RailOnEmbankment(GroundedBeam::new(&beam, on).map_err(StudyError::from)?),
                     None => FrictionOn::Composite(&grounded),
                 };
-                let on = Friction { track, beam: &beam, force, stop };
+                let on = Friction { track, beam: &beam, force, stop, spectra };
                 for &speed in speeds {
                     if interrupted() {
                         return Err(StudyError::Interrupted);

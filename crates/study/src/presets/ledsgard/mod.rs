@@ -130,6 +130,8 @@ pub(super) fn study(resolution: Resolution, _base: &Scenario, runner: &Runner) -
 /// The curves over `speeds` on `site`, one per friction of [`FRICTIONS`], counting progress from `before`.
 fn curves(site: &Scenario, speeds: &[f64], runner: &Runner, before: usize) -> Result<Vec<(f64, GroundWaveStudy)>> {
     let mut curves = Vec::new();
+    // The curves differ in the friction alone: each speed's spectra are sampled once for the four.
+    let spectra = crate::ground::SiteSpectra::new(site);
     for (i, friction) in FRICTIONS.into_iter().enumerate() {
         let before = before + i * speeds.len();
         let mut case = site.clone();
@@ -138,7 +140,8 @@ fn curves(site: &Scenario, speeds: &[f64], runner: &Runner, before: usize) -> Re
                 Some(scenario::DistributedSection { force_per_length: friction, ..Default::default() });
         }
         let progress = |n: usize| (runner.progress)(before + n);
-        let mut study = GroundWaveStudy::of(&case, speeds, WaveWindow::default(), runner.stop, &progress)?;
+        let mut study =
+            GroundWaveStudy::sharing(&case, speeds, WaveWindow::default(), (runner.stop, &progress), &spectra)?;
         study.train.name = "X2000".into();
         curves.push((friction, study));
     }
