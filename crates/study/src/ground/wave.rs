@@ -73,14 +73,9 @@ impl GroundWaveStudy {
         (stop, progress): (Option<&std::sync::atomic::AtomicBool>, &dyn Fn(usize)),
         spectra: &SiteSpectra,
     ) -> Result<Self> {
-        let own;
-        let spectra = match spectra.fits(scenario) {
-            true => spectra,
-            false => {
-                own = SiteSpectra::new(scenario);
-                &own
-            }
-        };
+        if !spectra.fits(scenario) {
+            return Self::sharing(scenario, speeds, window, (stop, progress), &SiteSpectra::new(scenario));
+        }
         let (beam, strip, track) = scenario.ground_track()?;
         let train = scenario.axles_on_the_ground()?;
         let positions = window.positions(train.length())?;
@@ -89,12 +84,7 @@ impl GroundWaveStudy {
         let friction = friction_on(scenario, &track)?;
         let (mut points, mut waves) = (Vec::with_capacity(speeds.len()), Vec::with_capacity(speeds.len()));
         let interrupted = || stop.is_some_and(|s| s.load(std::sync::atomic::Ordering::Relaxed));
-        let on_embankment = match &track {
-            GroundTrack::RailOnEmbankment { sleepers, embankment, .. } => {
-                Some(TrackOnEmbankment { sleepers, embankment: *embankment, ground: &strip })
-            }
-            GroundTrack::Composite => None,
-        };
+        let on_embankment = on_embankment(&track, &strip);
         let lift_off = match (&track, &on_embankment) {
             (GroundTrack::RailOnEmbankment { interface: Interface::Tensionless { preload }, .. }, Some(on)) => {
                 let grounded = GroundedBeam::new(&beam, on).map_err(StudyError::from)?;
@@ -180,4 +170,14 @@ pub fn friction_on(scenario: &Scenario, track: &GroundTrack) -> Result<Option<f6
         ));
     }
     Ok((force > 0.0).then_some(force))
+}
+
+/// The two-beam track's rail on its sleepers over the embankment on `strip`; None under the composite beam.
+fn on_embankment<'a>(track: &'a GroundTrack, strip: &'a StripGround) -> Option<TrackOnEmbankment<'a, StripGround>> {
+    match track {
+        GroundTrack::RailOnEmbankment { sleepers, embankment, .. } => {
+            Some(TrackOnEmbankment { sleepers, embankment: *embankment, ground: strip })
+        }
+        GroundTrack::Composite => None,
+    }
 }
