@@ -451,7 +451,7 @@ impl InteractionProblem {
     }
 
     /// H q of the fixed rows into `out` in one packed pass, where every fixed law has a gap and the rows pack
-    /// ([`fixed_rows`]); false (and `out` untouched) otherwise.
+    /// ([`pack_rows`]); false (and `out` untouched) otherwise.
     pub fn fixed_gap_products(&self, q: &[f64], out: &mut [f64]) -> bool {
         match self.fixed_rows.as_ref().filter(|r| r.all_gaps) {
             Some(rows) => {
@@ -462,7 +462,7 @@ impl InteractionProblem {
         }
     }
 
-    /// U = H v: the fixed rows' products packed where they can be ([`fixed_rows`]), the moving rows' one by one.
+    /// U = H v: the fixed rows' products packed where they can be ([`pack_rows`]), the moving rows' one by one.
     pub fn velocities(&self, v: &[f64], u: &mut [f64]) {
         let Some(fixed) = &self.fixed_rows else {
             return self.interactions.velocities(v, u);
