@@ -162,7 +162,7 @@ impl PressedSet {
         let m_hat = std::sync::Arc::as_ptr(&problem.matrix);
         let (rows, matrix) = (problem.interactions.rows(), &mut self.matrix);
         let refactored = match &mut self.factored {
-            Some((set, of)) if *of == m_hat && *set == self.free_pressed => false,
+            Some((set, of)) if *of == m_hat && *set == self.free_pressed => Ok(false),
             Some((set, of)) if *of == m_hat => {
                 // B of the last set, with the springs of the sections that changed added or taken out: a few
                 // outer products where the whole gram would cost all of them (as exact, to round-off of B), and
@@ -179,14 +179,21 @@ impl PressedSet {
                         changed.push(span);
                     }
                 }
-                refactor_changed_rows(matrix, &mut self.factor, changed)?;
-                true
+                changed.sort_unstable();
+                refactor_changed_rows(matrix, &mut self.factor, changed).map(|()| true)
             }
             _ => {
                 self.rows.weighted_gram_into(&problem.matrix.m_hat, &self.weights, matrix);
                 self.factored = Some((self.free_pressed.clone(), m_hat));
-                self.matrix.factor_into(&mut self.factor)?;
-                true
+                self.matrix.factor_into(&mut self.factor).map(|()| true).map_err(Into::into)
+            }
+        };
+        // A factorisation that failed leaves no factor to keep: the next prediction factors B afresh.
+        let refactored = match refactored {
+            Ok(refactored) => refactored,
+            Err(error) => {
+                self.factored = None;
+                return Err(error);
             }
         };
         let n = self.factor.order();
@@ -216,7 +223,7 @@ impl PressedSet {
     }
 }
 
-/// The factor of B refactored after the rows of the DOF `spans` (ascending by section) changed: from each run of
+/// The factor of B refactored after the rows of the DOF `spans` (ascending) changed: from each run of
 /// overlapping spans on, until the recomputed rows repeat their old values to the bit
 /// ([`BandedLdlt::refactor_rows_from`] with drop 0) — from there on a full factorisation would give the old rows
 /// again, so the factor is the full one's, bit for bit, at the cost of the rows the change reaches (the influence of a
