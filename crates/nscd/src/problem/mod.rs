@@ -219,8 +219,7 @@ impl InteractionProblem {
         // The θ-method's laws start from v_k itself: one product a row, not two.
         let same = std::ptr::eq(start, v);
         // Every fixed law with a gap (a soil's sections): its products packed, one pass each.
-        let packed = self.fixed_rows.as_mut().filter(|r| r.all_gaps);
-        if let Some(products) = packed {
+        if let Some(products) = self.fixed_rows.as_mut().filter(|r| r.all_gaps) {
             products.update_products(q, start, v, same);
         }
         let packed = self.fixed_rows.as_ref().filter(|r| r.all_gaps);
