@@ -229,6 +229,32 @@ fn projection_handed_over(c: &mut Criterion) {
     group.finish();
 }
 
+/// 5 kN/m of ballast friction at one section a node (J = 1, 199 sections 1 m apart on the reference track), by the
+/// interior point — whose active-set predictor takes the steps, ~1.2 factorisations each — and by projection, which
+/// `auto` picks for sections this far apart; and by the interior point on 400 elements (0.5 m: the law as accurate as
+/// the default five sections an element on 200, BENCHMARKS.md).
+fn one_section_a_node(c: &mut Criterion) {
+    let mut group = c.benchmark_group("one_section_a_node_5kN_per_m");
+    group.sample_size(10).warm_up_time(Duration::from_secs(1)).measurement_time(Duration::from_secs(8));
+    let friction = DistributedFriction { subdivisions: 1, ..DistributedFriction::new(5e3) };
+    for (elements, kind) in [
+        (200, nscd::SolverKind::InteriorPoint),
+        (200, nscd::SolverKind::Projection),
+        (400, nscd::SolverKind::InteriorPoint),
+    ] {
+        let mut case = uic60_on_soft_soil();
+        case.mesh.elements = elements;
+        let model = case.model().unwrap();
+        let interactions = friction.interactions(&model).unwrap();
+        let mut settings = RunSettings::default();
+        settings.integration.solver.kind = kind;
+        group.bench_function(BenchmarkId::new(kind.name(), elements), |b| {
+            b.iter(|| Simulation::new(&model, black_box(&interactions), &settings).unwrap().run().unwrap())
+        });
+    }
+    group.finish();
+}
+
 /// The set-up of a run before its first step (factoring M̂, the friction solver, the Delassus diagonal) with
 /// distributed friction on 20 000 elements of 0.01 m (80 000 sections over 40 000 DOFs): a banded solve per section
 /// made it 13 s, uninterruptible; the band of M̂⁻¹ (banded::selected_inverse) makes it one O(n·b²) pass.
@@ -253,6 +279,7 @@ criterion_group!(
     setup_with_many_sections,
     projection_handed_over,
     whole_runs,
+    one_section_a_node,
     friction_free_against_bare_solves,
     scaling,
     trains,

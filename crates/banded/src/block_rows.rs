@@ -135,6 +135,15 @@ impl BlockRows {
         for block in &self.blocks {
             let Some(out) = out.get_mut(block.row..block.row + block.len) else { break };
             match x.get(block.first..block.first + 4) {
+                // A row alone in its block (a section on a node, devices): its own sum, in the same order.
+                Some(&[x0, x1, x2, x3]) if block.len == 1 => {
+                    let c = &block.columns;
+                    let mut y = c[0][0] * x0;
+                    y += c[1][0] * x1;
+                    y += c[2][0] * x2;
+                    y += c[3][0] * x3;
+                    out[0] = y;
+                }
                 Some(&[x0, x1, x2, x3]) => {
                     // Column after column into the four rows' sums: h₀x_f + h₁x_{f+1} + … in each, packed.
                     let c = &block.columns;

@@ -1,8 +1,9 @@
 //! Times one reference run: `cargo run --release -p track --example probe -- <case>` with case one of
-//! `none`, `devices7`, `devices31`, `distributed1k`, `distributed10k`, `distributed5k` (default), `distributed5k-whole`,
+//! `none`, `devices7`, `devices31`, `devices99` (10 kN each, 2 m apart), `distributed1k`, `distributed10k`, `distributed5k` (default), `distributed5k-whole`,
+//! `nodal5k` (5 kN/m at one section a node, J = 1),
 //! `soil-linear`, `soil-tensionless` (ζ = 5 %, 100 m/s unless a speed is given: the `soil_run` bench's runs, the
 //! tensionless soil through its 800 sections), optionally followed by a step count to stop early (for instruction counts under callgrind), a solver tolerance,
-//! an element count (200 m beam; default 200) and a speed (m/s; default 200). Prints the wall time of the time
+//! an element count (200 m beam; default 200), a speed (m/s; default 200) and a solver (`auto`, `interior-point`, …). Prints the wall time of the time
 //! loop, the solver statistics and the peak resident memory of the process (VmHWM, Linux).
 
 use analytic::reference::uic60_on_soft_soil;
@@ -30,13 +31,20 @@ fn main() {
     if let Some(v) = std::env::args().nth(5).and_then(|s| s.parse().ok()) {
         settings.moving.speed = v;
     }
+    if let Some(kind) = std::env::args().nth(6).and_then(|s| s.parse().ok()) {
+        settings.integration.solver.kind = kind;
+    }
     let interactions = match case.as_str() {
         "none" | "soil-linear" => PlacedInteractions::new(),
         "soil-tensionless" => FoundationSections::default().interactions(&model).expect("soil sections"),
         "devices7" => Devices::uniform(7, 100e3).interactions(&model).expect("devices"),
         "devices31" => Devices::uniform(31, 100e3).interactions(&model).expect("devices"),
+        "devices99" => Devices::uniform(99, 10e3).interactions(&model).expect("devices"),
         "distributed1k" => DistributedFriction::new(1e3).interactions(&model).expect("friction"),
         "distributed10k" => DistributedFriction::new(10e3).interactions(&model).expect("friction"),
+        "nodal5k" => DistributedFriction { subdivisions: 1, ..DistributedFriction::new(5e3) }
+            .interactions(&model)
+            .expect("friction"),
         "distributed5k-whole" => {
             settings.integration.solver.moving_window = false;
             DistributedFriction::new(5e3).interactions(&model).expect("friction")
@@ -57,6 +65,10 @@ fn main() {
         s.mean_sections_solved,
         s.sections,
         s.wall_time
+    );
+    println!(
+        "work a step: {:.3} factorisations (max {}), {:.3} solves",
+        s.work.mean_factorisations, s.work.max_factorisations, s.work.mean_solves
     );
     println!(
         "bits: max down {:.17e}, max up {:.17e}, friction work {:.17e} J",

@@ -2,6 +2,7 @@
 //! every step, the energy identity, the solvers against each other, the steady state against the closed form.
 
 mod runs {
+    mod active_set;
     mod ballast_bodies;
     mod co_moving;
     mod common;

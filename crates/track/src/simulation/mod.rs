@@ -55,8 +55,16 @@ pub fn coupling_length(model: &BeamModel, step: f64, theta: f64) -> f64 {
 /// the interior point; a stalled projection falls back to the interior point).
 pub const FEW_SECTIONS: usize = 8;
 
-/// Resolve [`SolverKind::Auto`]: projection when there are at most [`FEW_SECTIONS`] fixed interactions or they are
-/// spaced wider than twice the coupling length (or there are none: wheel contacts alone), the banded interior point
+/// Above this many entries of the dense Delassus matrix (m² for m interactions) per DOF, projection's sweeps cost
+/// more than the interior point's active-set rounds even for sections spaced wider than twice the coupling length
+/// (callgrind, 2000-step reference runs: 99 devices 2 m apart, m²/n = 25, projection 314 M instructions against
+/// 342 M; 199 sections 1 m apart, m²/n = 99, 708 M against 487 M; BENCHMARKS.md).
+pub const DENSE_DELASSUS_PER_DOF: usize = 50;
+
+/// Resolve [`SolverKind::Auto`]: projection when there are at most [`FEW_SECTIONS`] fixed interactions, or they are
+/// spaced wider than twice the coupling length and their dense Delassus matrix has at most
+/// [`DENSE_DELASSUS_PER_DOF`] entries a DOF or there are `vehicles` (whose wheel rows keep the interior point's
+/// active set out: every row of it must be fixed) — or there are none (wheel contacts alone); the banded interior point
 /// otherwise — vehicles' wheel contacts included, whose rows it takes by a low-rank correction (measured: a quarter
 /// car on 2 kN/m of ballast friction at 100 m/s, 1.2 s against 150 s by projection; BENCHMARKS.md).
 pub fn resolve_solver(
@@ -64,6 +72,7 @@ pub fn resolve_solver(
     model: &BeamModel,
     interactions: &PlacedInteractions,
     (step, theta): (f64, f64),
+    vehicles: bool,
 ) -> SolverKind {
     if kind != SolverKind::Auto {
         return kind;
@@ -74,7 +83,13 @@ pub fn resolve_solver(
     let mut x = interactions.positions().to_vec();
     x.sort_by(f64::total_cmp);
     let spacing = x.windows(2).map(|w| w[1] - w[0]).fold(f64::INFINITY, f64::min);
-    if spacing < 2.0 * coupling_length(model, step, theta) { SolverKind::InteriorPoint } else { SolverKind::Projection }
+    let m = interactions.len();
+    let dense = !vehicles && m.saturating_mul(m) > DENSE_DELASSUS_PER_DOF.saturating_mul(model.dofs().free_len());
+    if spacing < 2.0 * coupling_length(model, step, theta) || dense {
+        SolverKind::InteriorPoint
+    } else {
+        SolverKind::Projection
+    }
 }
 
 /// A run of `model` with friction `interactions` under `settings`.

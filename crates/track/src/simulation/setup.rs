@@ -52,7 +52,7 @@ impl Simulation<'_> {
             None => None,
         };
         let moving = coupling.is_some();
-        let kind = resolve_solver(settings.integration.solver.kind, model, self.interactions, (h, theta));
+        let kind = resolve_solver(settings.integration.solver.kind, model, self.interactions, (h, theta), moving);
         // With vehicles the moving forces are none: the weights load the vehicles, the wheels the rail.
         let train = if moving {
             Train { name: String::new(), axles: Vec::new(), patches: Vec::new() }
