@@ -18,7 +18,9 @@
 //! had before the round (a proximal term: r_j = U_j + ε_j(p_j − p̄_j) = 0, i.e. c_j − ε_j p̄_j in place of c_j). A
 //! round leaves a held rigid section the velocity U_j = −ε_j(p_j − p̄_j): each round on the same set shrinks it by
 //! ~ε_j/(ε_j + λ(W_AA)), so the answer is exact once the set has settled, with no ill-conditioned B (its springs are
-//! 10⁶× a row's own mass, not infinite).
+//! 10⁶× a row's own mass, not infinite). Its impulse (H_j y − c_j)/ε_j + p̄_j is a difference of nearly equal
+//! velocities times 1/ε_j, good to ~1e-9 of itself: with rigid sections the stepper forms v from p again (one solve)
+//! instead of taking v_free − y, so that the energy identity holds at round-off.
 //!
 //! From one step to the next the set changes only at its edges (lift-off zones, stick–slip fronts), so the previous
 //! step's set is nearly this step's. Starting from it, the update j ∈ A ⇔ lo_j < p_j − r_j/(W_jj + d_j) < hi_j (at lo

@@ -198,17 +198,18 @@ impl BandedInteriorPoint {
             if active.update(problem, &self.check, p) {
                 continue;
             }
-            for ((v, &free), &y) in self.v.iter_mut().zip(v_free).zip(active.y()) {
-                *v = free - y;
-            }
-            self.v_current = true;
             let residual = problem.law_residual(&self.check, p);
             if residual <= tolerance {
                 // A held rigid section's impulse is (H y − c)/ε_j + p̄_j: a difference of nearly equal velocities
                 // times 1/ε_j ≈ 10⁶/W_jj, good to ~1e-9 of the impulse, not to round-off. v = v_free − y is that close
                 // to v_free + M̂⁻¹Hᵀp only, which the energy identity shows (2.7e-6 J over the 5 kN/m reference run
                 // at one section a node, against 5e-10 J); the stepper forms v from p instead (one solve).
-                self.v_current = !active.holds_rigid();
+                if !active.holds_rigid() {
+                    for ((v, &free), &y) in self.v.iter_mut().zip(v_free).zip(active.y()) {
+                        *v = free - y;
+                    }
+                    self.v_current = true;
+                }
                 active.record(true);
                 self.statistics.predicted += 1;
                 self.statistics.sections_solved += self.all_active.len();
@@ -221,7 +222,6 @@ impl BandedInteriorPoint {
         // Back to the previous impulses, from which the interior point starts.
         active.record(false);
         active.restore(p);
-        self.v_current = false;
         Ok(None)
     }
 
