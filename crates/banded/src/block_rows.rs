@@ -132,18 +132,28 @@ impl BlockRows {
             }
             return;
         }
+        if self.blocks.len() == self.first.len() {
+            // Every row alone in its block (sections on nodes, devices): each row's own sum, in the same order —
+            // the four-row block's sixteen products would be three quarters zeros.
+            for block in &self.blocks {
+                let Some(o) = out.get_mut(block.row) else { break };
+                *o = match x.get(block.first..block.first + 4) {
+                    Some(&[x0, x1, x2, x3]) => {
+                        let c = &block.columns;
+                        let mut y = c[0][0] * x0;
+                        y += c[1][0] * x1;
+                        y += c[2][0] * x2;
+                        y += c[3][0] * x3;
+                        y
+                    }
+                    _ => by_entries(block.row),
+                };
+            }
+            return;
+        }
         for block in &self.blocks {
             let Some(out) = out.get_mut(block.row..block.row + block.len) else { break };
             match x.get(block.first..block.first + 4) {
-                // A row alone in its block (a section on a node, devices): its own sum, in the same order.
-                Some(&[x0, x1, x2, x3]) if block.len == 1 => {
-                    let c = &block.columns;
-                    let mut y = c[0][0] * x0;
-                    y += c[1][0] * x1;
-                    y += c[2][0] * x2;
-                    y += c[3][0] * x3;
-                    out[0] = y;
-                }
                 Some(&[x0, x1, x2, x3]) => {
                     // Column after column into the four rows' sums: h₀x_f + h₁x_{f+1} + … in each, packed.
                     let c = &block.columns;
@@ -315,6 +325,30 @@ mod tests {
             }
         }
         assert!(hts[n..].iter().all(|&x| x == 0.0), "padding past the columns stays zero");
+    }
+
+    /// Every row alone in its block (one section a node: w's single entry, two DOFs apart; the last row's slots
+    /// reaching past x): H x takes the one-row path, each row's h₀x_f + h₁x_{f+1} + … to the bit, padded or not.
+    #[test]
+    fn rows_alone_in_their_blocks_are_their_own_sums() {
+        let n = 12;
+        let mut block = BlockRows::with_capacity(6);
+        let list: Vec<(usize, Vec<f64>)> =
+            (0..6).map(|k| (2 * k, vec![1.0 + 0.1 * k as f64, if k % 2 == 0 { 0.0 } else { -0.3 }])).collect();
+        for (f, v) in &list {
+            block.push(*f, v);
+        }
+        let x: Vec<f64> = (0..n + 3).map(|i| if i < n { (0.41 * i as f64).sin() } else { 0.0 }).collect();
+        let (mut padded_out, mut unpadded) = (vec![0.0; 6], vec![0.0; 6]);
+        block.mul(&x, &mut padded_out);
+        block.mul(&x[..n], &mut unpadded);
+        for (k, (f, v)) in list.iter().enumerate() {
+            let mut h = [0.0; 4];
+            h[..v.len()].copy_from_slice(v);
+            let expected = h[0] * x[*f] + h[1] * x[f + 1] + h[2] * x[f + 2] + h[3] * x[f + 3];
+            assert_eq!(padded_out[k].to_bits(), expected.to_bits(), "row {k}");
+            assert_eq!(unpadded[k].to_bits(), expected.to_bits(), "row {k} without the padding");
+        }
     }
 
     /// Rows skipping a column (a rail element's four DOFs with a sleeper's between them, half-bandwidth 4) beside

@@ -57,8 +57,8 @@ pub const FEW_SECTIONS: usize = 8;
 
 /// Above this many entries of the dense Delassus matrix (m² for m interactions) per DOF, projection's sweeps cost
 /// more than the interior point's active-set rounds even for sections spaced wider than twice the coupling length
-/// (callgrind, 2000-step reference runs: 99 devices 2 m apart, m²/n = 25, projection 314 M instructions against
-/// 342 M; 199 sections 1 m apart, m²/n = 99, 708 M against 487 M; BENCHMARKS.md).
+/// (callgrind, 2000-step reference runs: 99 devices 2 m apart, m²/n = 25, projection 309 M instructions against
+/// 337 M; 199 sections 1 m apart, m²/n = 99, 698 M against 480 M; BENCHMARKS.md).
 pub const DENSE_DELASSUS_PER_DOF: usize = 50;
 
 /// Resolve [`SolverKind::Auto`]: projection when there are at most [`FEW_SECTIONS`] fixed interactions, or they are

@@ -47,17 +47,6 @@ pub(super) const MAX_MISSES: usize = 3;
 /// round on a settled set shrinks the held sections' velocities ~10⁶-fold; B stays as well conditioned as 10⁶ allows).
 pub(super) const RIGID_HOLD: f64 = 1e-6;
 
-/// Where a section stands in the active set.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Side {
-    /// p = lo.
-    Lower,
-    /// lo < p < hi, held by its spring: r = 0.
-    Held,
-    /// p = hi.
-    Upper,
-}
-
 /// Scratch of the predictor, allocated once per run.
 #[derive(Debug)]
 pub(super) struct ActiveSet {
@@ -82,8 +71,9 @@ pub(super) struct ActiveSet {
     hy: Vec<f64>,
     /// The impulses before the prediction, restored when it fails.
     saved: Vec<f64>,
-    /// The sides the next prediction takes.
-    sides: Vec<Side>,
+    /// The sides the next prediction takes: held (lo < p < hi, r = 0), else at hi where `upper`, at lo otherwise.
+    held: Vec<bool>,
+    upper: Vec<bool>,
     /// The DOF spans of the rows whose springs the last change of B added or took out.
     changed: Vec<(usize, usize)>,
     /// Steps in a row the predictor did not take, and whether the run has rigid sections (then it gives up after
@@ -118,7 +108,8 @@ impl ActiveSet {
             y: vec![0.0; n + 3],
             hy: vec![0.0; m],
             saved: vec![0.0; m],
-            sides: vec![Side::Lower; m],
+            held: vec![false; m],
+            upper: vec![false; m],
             changed: Vec::with_capacity(m),
             misses: 0,
             rigid: problem.law.compliance.contains(&0.0),
@@ -177,15 +168,17 @@ impl ActiveSet {
             }
         }
         self.saved.copy_from_slice(p);
+        if !self.rigid {
+            // Compliant supports alone (lo = 0, hi = ∞): held where pressed.
+            for (held, &p) in self.held.iter_mut().zip(p) {
+                *held = p > 0.0;
+            }
+            return;
+        }
         let bounds = law.lower.iter().zip(&law.upper);
-        for ((side, &p), (&lo, &hi)) in self.sides.iter_mut().zip(p).zip(bounds) {
-            *side = if p <= lo {
-                Side::Lower
-            } else if p >= hi {
-                Side::Upper
-            } else {
-                Side::Held
-            };
+        for (((held, upper), &p), (&lo, &hi)) in self.held.iter_mut().zip(&mut self.upper).zip(p).zip(bounds) {
+            *held = lo < p && p < hi;
+            *upper = p >= hi;
         }
     }
 
@@ -193,22 +186,36 @@ impl ActiveSet {
     /// s = p_j(W_jj + d_j) − r_j, held where lo_j(W_jj + d_j) < s < hi_j(W_jj + d_j), at the bound it passes
     /// otherwise; whether any side changed.
     pub(super) fn update(&mut self, problem: &InteractionProblem, u: &[f64], p: &[f64]) -> bool {
+        if !self.rigid {
+            return self.update_supports(problem, u, p);
+        }
         let law = &problem.law;
         let mut changed = false;
         let terms = law.drift.iter().zip(&law.compliance).zip(law.lower.iter().zip(&law.upper));
         let state = u.iter().zip(p).zip(&problem.delassus_diagonal);
-        for ((side, ((&u, &p), &w)), ((&b, &d), (&lo, &hi))) in self.sides.iter_mut().zip(state).zip(terms) {
+        let sides = self.held.iter_mut().zip(self.upper.iter_mut());
+        for ((side, ((&u, &p), &w)), ((&b, &d), (&lo, &hi))) in sides.zip(state).zip(terms) {
             if lo < hi {
                 let s = p * w - (u + b + d * p);
-                let now = if s <= lo * w {
-                    Side::Lower
-                } else if s >= hi * w {
-                    Side::Upper
-                } else {
-                    Side::Held
-                };
-                changed |= now != *side;
-                *side = now;
+                let now = (lo * w < s && s < hi * w, s >= hi * w);
+                changed |= now.0 != *side.0 || (!now.0 && now.1 != *side.1);
+                (*side.0, *side.1) = now;
+            }
+        }
+        changed
+    }
+
+    /// [`ActiveSet::update`] for compliant supports alone (lo = 0, hi = ∞): held or at lo by the sign of s.
+    fn update_supports(&mut self, problem: &InteractionProblem, u: &[f64], p: &[f64]) -> bool {
+        let law = &problem.law;
+        let mut changed = false;
+        let terms = law.drift.iter().zip(&law.compliance).zip(law.lower.iter().zip(&law.upper));
+        let state = u.iter().zip(p).zip(&problem.delassus_diagonal);
+        for ((held, ((&u, &p), &w)), ((&b, &d), (lo, hi))) in self.held.iter_mut().zip(state).zip(terms) {
+            if lo < hi {
+                let now = p * w - (u + b + d * p) > 0.0;
+                changed |= now != *held;
+                *held = now;
             }
         }
         changed
@@ -227,47 +234,75 @@ impl ActiveSet {
         let inverse = &self.inverse_compliance.0;
         // c_j = U_free,j + b_j; the loops zip their arrays (no index checks: they run over every section a round).
         let bounds = law.lower.iter().zip(&law.upper);
-        let sets = self.free_held.iter_mut().zip(&self.sides);
         let weights = self.weights.iter_mut().zip(self.scaled.iter_mut());
         let c = u_free.iter().zip(&law.drift).map(|(u, b)| u + b);
-        let own = inverse.iter().zip(&law.compliance).zip(p.iter());
-        for ((((free_held, &side), (weight, scaled)), (&lo, &hi)), (c, ((&inverse, &d), &p))) in
-            sets.zip(weights).zip(bounds).zip(c.zip(own))
-        {
-            *free_held = lo < hi && side == Side::Held;
-            *weight = if *free_held { inverse } else { 0.0 };
-            *scaled = match (lo < hi, side) {
-                (true, Side::Held) if d == 0.0 => inverse * c - p,
-                (true, Side::Held) => inverse * c,
-                (true, Side::Lower) => -lo,
-                (true, Side::Upper) => -hi,
-                (false, _) => -p,
-            };
+        if !self.rigid {
+            // Compliant supports alone: g_j = c_j/d_j held, 0 at lo = 0 — branch-free, the soils' loop.
+            let sets = self.free_held.iter_mut().zip(&self.held);
+            for ((((free_held, &held), (weight, scaled)), (lo, hi)), (c, &inverse)) in
+                sets.zip(weights).zip(bounds).zip(c.zip(inverse.iter()))
+            {
+                *free_held = lo < hi && held;
+                *weight = if *free_held { inverse } else { 0.0 };
+                *scaled = *weight * c;
+            }
+        } else {
+            let sets = self.free_held.iter_mut().zip(self.held.iter().zip(&self.upper));
+            let own = inverse.iter().zip(&law.compliance).zip(p.iter());
+            for ((((free_held, (&held, &upper)), (weight, scaled)), (&lo, &hi)), (c, ((&inverse, &d), &p))) in
+                sets.zip(weights).zip(bounds).zip(c.zip(own))
+            {
+                *free_held = lo < hi && held;
+                *weight = if *free_held { inverse } else { 0.0 };
+                *scaled = match (lo < hi, held, upper) {
+                    (false, _, _) => -p,
+                    (true, true, _) if d == 0.0 => inverse * c - p,
+                    (true, true, _) => inverse * c,
+                    (true, false, true) => -hi,
+                    (true, false, false) => -lo,
+                };
+            }
         }
         let refactored = self.factor_held(problem)?;
         let n = self.factor.order();
         self.rows.transpose_mul(&self.scaled, &mut self.y);
         self.factor.solve_in_place(&mut self.y[..n]);
         self.rows.mul(&self.y, &mut self.hy);
+        self.outcome(problem, u_free, p, u);
+        Ok(refactored)
+    }
+
+    /// The impulses of the current sides from H y, and U = U_free − H y: p_j = (H_j y − c_j)/d_j held (+ p̄_j for a
+    /// rigid section, p̄ its impulse before the round), lo_j or hi_j at a bound.
+    fn outcome(&self, problem: &InteractionProblem, u_free: &[f64], p: &mut [f64], u: &mut [f64]) {
+        let law = &problem.law;
         let c = u_free.iter().zip(&law.drift).map(|(u, b)| u + b);
         let inverse = &self.inverse_compliance.0;
         let outcome = u.iter_mut().zip(p.iter_mut()).zip(u_free.iter().zip(&self.hy));
+        if !self.rigid {
+            // Compliant supports alone: held or at lo = 0 — the soils' loop.
+            let law_terms = c.zip(inverse.iter()).zip(law.lower.iter().zip(&law.upper)).zip(&self.held);
+            for (((u, p), (u_free, hy)), (((c, inverse), (lo, hi)), &held)) in outcome.zip(law_terms) {
+                *u = u_free - hy;
+                if lo < hi {
+                    *p = if held { (hy - c) * inverse } else { 0.0 };
+                }
+            }
+            return;
+        }
         let own = inverse.iter().zip(&law.compliance).zip(law.lower.iter().zip(&law.upper));
-        for (((u, p), (u_free, hy)), ((c, ((inverse, &d), (&lo, &hi))), &side)) in
-            outcome.zip(c.zip(own).zip(&self.sides))
-        {
+        let sections = outcome.zip(c.zip(own).zip(self.held.iter().zip(&self.upper)));
+        for (((u, p), (u_free, hy)), ((c, ((inverse, &d), (&lo, &hi))), (&held, &upper))) in sections {
             *u = u_free - hy;
             if lo < hi {
-                *p = match side {
-                    // (H y − c + ε p̄)/ε for a rigid section, p̄ its impulse before this round.
-                    Side::Held if d == 0.0 => (hy - c) * inverse + *p,
-                    Side::Held => (hy - c) * inverse,
-                    Side::Lower => lo,
-                    Side::Upper => hi,
+                *p = match (held, upper) {
+                    (true, _) if d == 0.0 => (hy - c) * inverse + *p,
+                    (true, _) => (hy - c) * inverse,
+                    (false, true) => hi,
+                    (false, false) => lo,
                 };
             }
         }
-        Ok(refactored)
     }
 
     /// B = M̂ + Hᵀ diag(weights) H of this prediction's held set factored: as it is when the set is the last factored
