@@ -153,6 +153,45 @@ fn the_active_set_gives_the_interior_points_friction_step() {
     assert_impulses_agree(&problem, &p, &reference, report.tolerance, 10.0);
 }
 
+/// Coulomb sections at the nodes and a compliant stop at the middle of every element (a frictional ballast over a
+/// tensionless soil) in one step: both kinds move sides, and the predicted impulses are the interior point's to the
+/// error the tolerance allows.
+#[test]
+fn coulomb_sections_and_compliant_stops_share_the_active_set() {
+    let elements = 60;
+    let m_hat = super::super::tests::beam_like_m_hat(elements);
+    let n = m_hat.order();
+    let mut interactions = InteractionSet::new();
+    for e in 0..elements {
+        interactions.push(
+            InteractionRow::from_entries([(2 * e, 1.0)]),
+            Law::Coulomb { capacity: 3.0 },
+            InteractionKind::Friction,
+        );
+        let row = InteractionRow::from_entries(
+            [0.5, 0.025, 0.5, -0.025].into_iter().enumerate().map(|(k, v)| (2 * e + k, v)),
+        );
+        let gap = 1e-3 * (0.37 * e as f64).sin();
+        interactions.push(row, Law::Compliant { gap, stiffness: 50.0 }, InteractionKind::Support);
+    }
+    let integration = crate::Integration::theta(0.5, 1e-2);
+    let matrix = IterationMatrix::of(m_hat, integration).expect("M̂ is SPD");
+    let mut problem = InteractionProblem::with_matrix(interactions, matrix).expect("M̂ is SPD");
+    problem.update(0.0, &vec![0.0; n], &vec![0.0; n]);
+    let (reference, p, before, report) = predicted_and_whole(&problem);
+    let law = &problem.law;
+    let side = |j: usize, x: f64| match law.upper[j].is_finite() {
+        true if x >= law.upper[j] => 1,
+        true if x <= law.lower[j] => -1,
+        _ => i32::from(x > 0.0) * 2,
+    };
+    let moved = (0..p.len()).filter(|&j| side(j, p[j]) != side(j, before[j])).count();
+    let pressed = (1..p.len()).step_by(2).filter(|&j| p[j] > 0.0).count();
+    let slipping = (0..p.len()).step_by(2).filter(|&j| side(j, p[j]) != 0).count();
+    assert!(moved > 0 && pressed > 5 && slipping > 5, "{moved} moved, {pressed} stops pressed, {slipping} slipping");
+    assert_impulses_agree(&problem, &p, &reference, report.tolerance, 10.0);
+}
+
 /// With several Coulomb sections an element (W singular), most of them stuck, on a stiff chain, the predictor misses
 /// (the held impulses are not unique and the updates wander), and after [`super::MAX_MISSES`] steps in a row the run
 /// stops trying it; every step is still solved to its tolerance by the interior point.
