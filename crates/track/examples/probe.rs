@@ -1,10 +1,11 @@
-//! Times one reference run: `cargo run --release -p track --example probe -- <case>` with case one of
-//! `none`, `devices7`, `devices31`, `devices99` (10 kN each, 2 m apart), `distributed1k`, `distributed10k`, `distributed5k` (default), `distributed5k-whole`,
-//! `nodal5k` (5 kN/m at one section a node, J = 1),
-//! `soil-linear`, `soil-tensionless` (ζ = 5 %, 100 m/s unless a speed is given: the `soil_run` bench's runs, the
-//! tensionless soil through its 800 sections), optionally followed by a step count to stop early (for instruction counts under callgrind), a solver tolerance,
-//! an element count (200 m beam; default 200), a speed (m/s; default 200) and a solver (`auto`, `interior-point`, …). Prints the wall time of the time
-//! loop, the solver statistics and the peak resident memory of the process (VmHWM, Linux).
+//! Times one reference run: `cargo run --release -p track --example probe -- <case>` with case one of `none`,
+//! `devices7`, `devices31`, `devices99` (10 kN each, 2 m apart), `distributed1k`, `distributed10k`, `distributed5k`
+//! (default), `distributed5k-whole`, `nodal5k` (5 kN/m at one section a node, J = 1), `soil-linear`,
+//! `soil-tensionless` (ζ = 5 %, 100 m/s unless a speed is given: the `soil_run` bench's runs, the tensionless soil
+//! through its 800 sections), optionally followed by a step count to stop early (for instruction counts under
+//! callgrind), a solver tolerance, an element count (200 m beam; default 200), a speed (m/s; default 200) and a solver
+//! (`auto`, `interior-point`, …). Prints the wall time of the time loop, the solver statistics and the peak resident
+//! memory of the process (VmHWM, Linux).
 
 use analytic::reference::uic60_on_soft_soil;
 use fem_beam::{Foundation, FoundationLaw};
