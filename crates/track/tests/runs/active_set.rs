@@ -4,7 +4,7 @@
 //! energy identity.
 
 use super::common::reference;
-use super::solvers_agree::same_state_difference;
+use super::solvers_agree::{same_state_difference, tight};
 use nscd::SolverKind;
 use track::{BallastOnBeam, Devices, DistributedFriction, InitialState, PlacedInteractions, RunSettings, Simulation};
 
@@ -20,10 +20,8 @@ fn nodal_friction() -> DistributedFriction {
 fn the_active_set_agrees_with_clarabel_step_by_step() {
     let model = reference();
     let interactions = nodal_friction().interactions(&model).unwrap();
-    let mut settings = RunSettings::default();
-    settings.moving.speed = 200.0;
+    let mut settings = tight(200.0);
     settings.moving.initial = InitialState::SteadyState { position: 95.0 };
-    settings.integration.solver.tolerance = 1e-10;
     let (a, b) = (SolverKind::InteriorPoint, SolverKind::Clarabel);
     same_state_difference(&model, &interactions, a, b, &settings, (60, 1e-8));
 }
@@ -39,9 +37,7 @@ fn a_run_at_one_section_a_node_is_the_projections_in_about_one_factorisation_a_s
     let model = reference();
     let interactions = nodal_friction().interactions(&model).unwrap();
     let run = |kind| {
-        let mut settings = RunSettings::default();
-        settings.moving.speed = 200.0;
-        settings.integration.solver.tolerance = 1e-10;
+        let mut settings = tight(200.0);
         settings.integration.solver.kind = kind;
         Simulation::new(&model, &interactions, &settings).unwrap().run().unwrap()
     };

@@ -12,7 +12,7 @@ use track::{InitialState, MovingLoad, RunSettings, Simulation};
 
 /// Settings at `speed` with the solvers held to 1e-10, not the default 1e-6: two exact solvers are compared step by
 /// step to 1e-8 here, which needs their own tolerance well below it.
-fn tight(speed: f64) -> RunSettings {
+pub(super) fn tight(speed: f64) -> RunSettings {
     let mut settings = RunSettings::default();
     settings.moving.speed = speed;
     settings.integration.solver.tolerance = 1e-10;
