@@ -1,0 +1,255 @@
+//! A measurement, not a solver of the product: Ralph's path search (1994) for the stationary friction wave, priced
+//! against the κ continuation ([`crate::continuation`]). The residual F of the wave with Jenkins friction is
+//! piecewise affine in W (and continuous: the play operator is), so from a start W₀ — the last speed's wave — the
+//! path F(W(t)) = (1 − t) F(W₀) is a chain of line segments, one a set of section states, joined where one section
+//! flips. Followed to t = 1 it ends at the wave at the full stiffness κ, with no line search. Measured
+//! (BENCHMARKS.md, "Ralph's path search"): it finds the same wave, but passes more flips than the continuation
+//! takes Newton iterations, and above the critical speed it can cycle among flips of no length.
+//! `PATH_SPEEDS=210,211 cargo test --release -p stationary --lib path_search -- --ignored --nocapture`
+
+use crate::error::Result;
+use crate::friction::{FrictionSections, FrictionState, SectionState};
+use crate::newton::{SetSystem, Sets};
+use crate::operator::MovingFrame;
+
+/// What a path search did.
+#[derive(Debug, Clone)]
+pub(crate) struct PathOutcome {
+    /// Where it ended.
+    pub(crate) w: Vec<f64>,
+    /// The t it reached (1: the wave, to the round-off the flips left).
+    pub(crate) t: f64,
+    /// Section flips passed.
+    pub(crate) events: usize,
+    /// Flips that passed no length of path (two sections on their bounds at once, or a flip undone).
+    pub(crate) degenerate: usize,
+    /// Flips after which t runs the other way.
+    pub(crate) reversals: usize,
+    /// Distinct sections flipped.
+    pub(crate) flipped: usize,
+}
+
+/// F(W) = A W + Σ weight_i H_iᵀ r_i − f with the forces `force` (N).
+fn residual(frame: &MovingFrame, friction: &FrictionSections, w: &[f64], force: &[f64]) -> Vec<f64> {
+    let mut r = vec![0.0; w.len()];
+    frame.matrix.mul_vec(w, &mut r);
+    friction.add_forces(force, &mut r);
+    r.iter_mut().zip(&frame.rhs).for_each(|(r, f)| *r -= f);
+    r
+}
+
+/// The states of `slipping` (sign per section, 0 where stuck) with their anchors, and the forces at `w`.
+fn state_of(friction: &FrictionSections, slipping: &[f64], w: &[f64]) -> FrictionState {
+    let n = slipping.len();
+    let (mut force, mut states) = (vec![0.0; n], vec![SectionState::Stuck { anchor: None }; n]);
+    let (mut r, mut previous, mut anchor) = (0.0, friction.rest, None);
+    for i in (0..n).rev() {
+        let here = friction.sections[i].deflection(w);
+        (r, states[i]) = match slipping[i] {
+            0.0 => (r + friction.stiffness * (here - previous), SectionState::Stuck { anchor }),
+            sign => {
+                anchor = Some(i);
+                (sign * friction.capacity, SectionState::Slipping { sign })
+            }
+        };
+        force[i] = r;
+        previous = here;
+    }
+    FrictionState { force, states }
+}
+
+/// Each section's force and trial force as α + β σ along W + σ e, the soil's states in `slipping`.
+struct Rates {
+    force: (Vec<f64>, Vec<f64>),
+    trial: (Vec<f64>, Vec<f64>),
+}
+
+fn rates(friction: &FrictionSections, slipping: &[f64], w: &[f64], e: &[f64]) -> Rates {
+    let n = slipping.len();
+    let k = friction.stiffness;
+    let mut out = Rates { force: (vec![0.0; n], vec![0.0; n]), trial: (vec![0.0; n], vec![0.0; n]) };
+    let (mut a, mut b, mut d_prev, mut e_prev) = (0.0, 0.0, friction.rest, 0.0);
+    for i in (0..n).rev() {
+        let (d, de) = (friction.sections[i].deflection(w), friction.sections[i].deflection(e));
+        let (ta, tb) = (a + k * (d - d_prev), b + k * (de - e_prev));
+        (out.trial.0[i], out.trial.1[i]) = (ta, tb);
+        (a, b) = match slipping[i] {
+            0.0 => (ta, tb),
+            sign => (sign * friction.capacity, 0.0),
+        };
+        (out.force.0[i], out.force.1[i]) = (a, b);
+        (d_prev, e_prev) = (d, de);
+    }
+    out
+}
+
+/// The first flip along W + σ e: (σ, section), skipping `skip`.
+fn first_event(friction: &FrictionSections, slipping: &[f64], r: &Rates, skip: Option<usize>) -> Option<(f64, usize)> {
+    let f_u = friction.capacity;
+    let mut best: Option<(f64, usize)> = None;
+    for i in 0..slipping.len() {
+        if Some(i) == skip {
+            continue;
+        }
+        let sigma = match slipping[i] {
+            0.0 => {
+                let (a, b) = (r.force.0[i], r.force.1[i]);
+                if b > 0.0 {
+                    (f_u - a) / b
+                } else if b < 0.0 {
+                    (-f_u - a) / b
+                } else {
+                    continue;
+                }
+            }
+            s => {
+                let (a, b) = (r.trial.0[i], r.trial.1[i]);
+                if s * b < 0.0 { (f_u - s * a) / (s * b) } else { continue }
+            }
+        };
+        let sigma = sigma.max(0.0);
+        if best.is_none_or(|(bs, _)| sigma < bs) {
+            best = Some((sigma, i));
+        }
+    }
+    best
+}
+
+/// The path from `w` to t = 1 on `frame` (friction, no soil sections), at most `limit` flips: each piece's segment
+/// W + σ e, e = ±A_P⁻¹(−F(W₀)) (A_P the sets' matrix, one factorisation a piece), to the first section that flips,
+/// where the sign of e is the one that leads into the new piece.
+pub(crate) fn path_search(frame: &MovingFrame, speed: f64, mut w: Vec<f64>, limit: usize) -> Result<PathOutcome> {
+    let friction = frame.friction.as_ref().expect("a frame with friction");
+    let start = friction.march(&w);
+    let f0 = residual(frame, friction, &w, &start.force);
+    let mut slipping: Vec<f64> = start
+        .states
+        .iter()
+        .map(|s| match s {
+            SectionState::Slipping { sign } => *sign,
+            SectionState::Stuck { .. } => 0.0,
+        })
+        .collect();
+    let direction = |state: FrictionState| -> Result<Vec<f64>> {
+        let system = SetSystem::new(frame, &Sets { pressed: Vec::new(), friction: Some(state) }, speed)?;
+        let mut d: Vec<f64> = f0.iter().map(|f| -f).collect();
+        system.solve_in_place(&mut d);
+        Ok(d)
+    };
+    let mut e = direction(start)?;
+    let mut seen = vec![false; slipping.len()];
+    let (mut t, mut delta, mut skip) = (0.0, 1.0, None);
+    let mut out = PathOutcome { w: Vec::new(), t, events: 0, degenerate: 0, reversals: 0, flipped: 0 };
+    while out.events < limit {
+        let r = rates(friction, &slipping, &w, &e);
+        let to_end = if delta > 0.0 { 1.0 - t } else { f64::INFINITY };
+        let Some((sigma, i)) = first_event(friction, &slipping, &r, skip).filter(|&(sigma, _)| sigma < to_end) else {
+            if delta > 0.0 {
+                w.iter_mut().zip(&e).for_each(|(w, e)| *w += to_end * e);
+                t = 1.0;
+            }
+            break;
+        };
+        w.iter_mut().zip(&e).for_each(|(w, e)| *w += sigma * e);
+        t += delta * sigma;
+        let was = slipping[i];
+        slipping[i] = if was == 0.0 { (r.force.0[i] + sigma * r.force.1[i]).signum() } else { 0.0 };
+        let d = direction(state_of(friction, &slipping, &w))?;
+        let next = rates(friction, &slipping, &w, &d);
+        // Into the new piece: a new slip's trial force grows past f_u, a new stick's force falls inside.
+        let inward = match slipping[i] {
+            0.0 => was * next.force.1[i] < 0.0,
+            s => s * next.trial.1[i] > 0.0,
+        };
+        let turned = if inward { 1.0 } else { -1.0 };
+        out.reversals += usize::from(turned != delta);
+        out.degenerate += usize::from(sigma == 0.0);
+        delta = turned;
+        e = d.into_iter().map(|x| delta * x).collect();
+        out.events += 1;
+        (skip, seen[i]) = (Some(i), true);
+    }
+    out.flipped = seen.iter().filter(|s| **s).count();
+    Ok(PathOutcome { w, t, ..out })
+}
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::control::Control;
+    use crate::newton::{MAX_ITERATIONS, iterate};
+    use crate::problem::{Domain, StationaryProblem};
+    use crate::solve::solve_within;
+    use crate::status::ContactGuess;
+    use analytic::reference::uic60_on_soft_soil;
+    use fem_beam::{DistributedFriction, Foundation, FoundationLaw};
+
+    fn problem(speed: f64, domain: Domain, f_u: f64) -> StationaryProblem {
+        let case = uic60_on_soft_soil();
+        StationaryProblem {
+            beam: case.beam,
+            foundation: Foundation { law: FoundationLaw::Linear, ..case.foundation },
+            load: 83.4e3,
+            speed,
+            self_weight: false,
+            friction: DistributedFriction::new(f_u),
+            domain,
+        }
+    }
+
+    #[test]
+    #[ignore = "a measurement: cargo test --release -p stationary path_search -- --ignored --nocapture"]
+    fn events_between_neighbouring_speeds() {
+        let speeds: Vec<f64> = std::env::var("PATH_SPEEDS")
+            .map(|s| s.split(',').map(|x| x.parse().expect("a speed")).collect())
+            .unwrap_or_else(|_| vec![180.0, 181.0]);
+        let f_u = 1e3;
+        let limit = std::env::var("PATH_LIMIT").map_or(50_000, |s| s.parse().expect("a count"));
+        let mut guess = ContactGuess::default();
+        let mut domain = Domain::default();
+        let first = solve_within(&problem(speeds[0], domain, f_u), &mut guess, &Control::new(None)).unwrap();
+        (domain.behind, domain.ahead) = (-first.s[0], *first.s.last().unwrap());
+        for pair in speeds.windows(2) {
+            let next = problem(pair[1], domain, f_u);
+            let frame = MovingFrame::new(&next).unwrap();
+            let w0 = guess.wave(frame.rhs.len()).expect("same domain").to_vec();
+            let clock = std::time::Instant::now();
+            let out = path_search(&frame, pair[1], w0, limit).unwrap();
+            let mut scratch = guess.clone();
+            let (polished, status) =
+                iterate(&frame, pair[1], out.w.clone(), (&mut scratch, &Control::new(None)), MAX_ITERATIONS).unwrap();
+            let spent = clock.elapsed();
+            let clock = std::time::Instant::now();
+            let wave = solve_within(&next, &mut guess, &Control::new(None)).unwrap();
+            let newton = clock.elapsed();
+            let same_domain = guess.wave(polished.len()).is_some() && wave.convergence.is_converged();
+            let difference = guess
+                .wave(polished.len())
+                .map(|n| n.iter().zip(&polished).step_by(2).fold(0.0f64, |m, (a, b)| m.max((a - b).abs())));
+            println!(
+                "{:5.1} m/s, {} sections: path {} events over {} sections ({} of no length), {} reversals, t = \
+                 {:.4}, then {} Newton iterations ({}), {:.1} ms in all ({:.0} µs an event) | κ continuation {} iterations, {:.1} ms | \
+                 max |ΔW| {:?} m (same domain {same_domain})",
+                pair[1],
+                frame.friction.as_ref().map_or(0, |f| f.sections.len()),
+                out.events,
+                out.flipped,
+                out.degenerate,
+                out.reversals,
+                out.t,
+                status.iterations(),
+                if status.is_converged() { "converged" } else { "not converged" },
+                spent.as_secs_f64() * 1e3,
+                spent.as_secs_f64() * 1e6 / out.events.max(1) as f64,
+                wave.convergence.iterations(),
+                newton.as_secs_f64() * 1e3,
+                difference,
+            );
+            // Where the path reached its end, the two methods found the same wave: both solve the equations to
+            // ROUND_OFF (1e-8 of the load); measured apart by ≤ 1.2e-8 m, 1e-7 m is ~1e-6 of the 0.1–0.3 m peaks.
+            if out.t == 1.0 && status.is_converged() && same_domain {
+                assert!(difference.expect("same domain") < 1e-7, "the path's wave differs by {difference:?} m");
+            }
+            (domain.behind, domain.ahead) = (-wave.s[0], *wave.s.last().unwrap());
+        }
+    }
+}
