@@ -19,8 +19,7 @@ pub mod ground_contact;
 pub mod krylov;
 pub mod newton;
 pub mod operator;
-#[cfg(test)]
-mod path_search;
+pub mod path_search;
 pub mod problem;
 mod reading;
 pub mod refine;

@@ -10,6 +10,7 @@ use crate::control::Control;
 use crate::error::Result;
 use crate::friction::{AnchorCoupling, FrictionSection, FrictionSections, FrictionState};
 use crate::operator::{MovingFrame, factor};
+use crate::path_search::{PATH_FLIPS, path_search};
 use crate::rows::row_add;
 use crate::status::{ContactGuess, Convergence};
 use banded::general::{GeneralBanded, GeneralLu};
@@ -69,6 +70,15 @@ pub(crate) trait SetProblem: Clone {
     fn stage_factor(&self) -> f64 {
         STAGE_FACTOR
     }
+    /// Whether [`Self::path`] can lead to this problem's wave (a track with friction on a linear soil).
+    fn takes_path(&self) -> bool {
+        false
+    }
+    /// Ralph's path from `w` ([`crate::path_search`]): where it reached the wave, that point (to the round-off of
+    /// its flips) and the flips it passed; None where it gave up or the problem has no path.
+    fn path(&self, _w: Vec<f64>, _speed: f64, _control: &Control<'_>) -> Result<(Option<Vec<f64>>, usize)> {
+        Ok((None, 0))
+    }
 }
 
 impl SetProblem for MovingFrame {
@@ -89,6 +99,18 @@ impl SetProblem for MovingFrame {
 
     fn has_friction(&self) -> bool {
         self.friction.is_some()
+    }
+
+    fn takes_path(&self) -> bool {
+        self.friction.is_some() && self.sections.is_empty()
+    }
+
+    fn path(&self, w: Vec<f64>, speed: f64, control: &Control<'_>) -> Result<(Option<Vec<f64>>, usize)> {
+        if !self.takes_path() {
+            return Ok((None, 0));
+        }
+        let out = path_search(self, speed, w, PATH_FLIPS, control)?;
+        Ok(((out.t == 1.0).then_some(out.w), out.events))
     }
 }
 

@@ -10,14 +10,14 @@ use crate::problem::StationaryProblem;
 pub enum Convergence {
     /// The pressed set repeated: the wave solves the discrete equations to round-off.
     Converged {
-        /// Newton iterations (solves).
+        /// Newton iterations and path-search flips (each one factorisation).
         iterations: usize,
         /// ‖A W − p_soil(W) − f‖∞ / ‖f‖∞ of the wave.
         residual: f64,
     },
     /// The set kept changing (or cycled) for the iteration limit.
     NotConverged {
-        /// Iterations taken.
+        /// Iterations and flips taken.
         iterations: usize,
         /// Relative residual of the last iterate.
         residual: f64,
