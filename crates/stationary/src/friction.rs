@@ -130,6 +130,13 @@ impl FrictionSections {
 
     /// The play operator's march from the front (see the module doc).
     pub fn march(&self, w: &[f64]) -> FrictionState {
+        self.march_by(w, |_, trial| (trial.abs() > self.capacity).then(|| trial.signum()))
+    }
+
+    /// The march with each section's state chosen by `slips(i, trial force)`: Some(sign) where section i slips,
+    /// None where it sticks. [`Self::march`] chooses by the law; a path through the law's pieces
+    /// ([`crate::path_search`]) by the states it holds.
+    pub fn march_by(&self, w: &[f64], slips: impl Fn(usize, f64) -> Option<f64>) -> FrictionState {
         let n = self.sections.len();
         let mut force = vec![0.0; n];
         let mut states = vec![SectionState::Stuck { anchor: None }; n];
@@ -137,12 +144,12 @@ impl FrictionSections {
         for i in (0..n).rev() {
             let here = self.sections[i].deflection(w);
             let trial = r + self.stiffness * (here - previous);
-            (r, states[i]) = if trial.abs() > self.capacity {
-                anchor = Some(i);
-                let sign = trial.signum();
-                (sign * self.capacity, SectionState::Slipping { sign })
-            } else {
-                (trial, SectionState::Stuck { anchor })
+            (r, states[i]) = match slips(i, trial) {
+                Some(sign) => {
+                    anchor = Some(i);
+                    (sign * self.capacity, SectionState::Slipping { sign })
+                }
+                None => (trial, SectionState::Stuck { anchor }),
             };
             force[i] = r;
             previous = here;

@@ -233,17 +233,24 @@ pub(crate) struct Evaluation {
     pub(crate) sets: Sets,
 }
 
-fn evaluate(frame: &MovingFrame, w: &[f64]) -> Evaluation {
-    let sets = Sets::of(frame, w);
+/// r = A W − Σ H_sᵀ k_s⟨−H_s W⟩₊ + Σ_i weight_i H_iᵀ r_i − f (N), the friction forces r_i given (those of the
+/// march at W for the residual; none without friction).
+pub(crate) fn residual(frame: &MovingFrame, w: &[f64], friction_force: Option<&[f64]>) -> Vec<f64> {
     let mut r = vec![0.0; w.len()];
     frame.matrix.mul_vec(w, &mut r);
     for s in &frame.sections {
         row_add(s.element, &s.row, -s.stiffness * (-s.deflection(w)).max(0.0), &mut r);
     }
-    if let (Some(friction), Some(state)) = (&frame.friction, &sets.friction) {
-        friction.add_forces(&state.force, &mut r);
+    if let (Some(friction), Some(force)) = (&frame.friction, friction_force) {
+        friction.add_forces(force, &mut r);
     }
     r.iter_mut().zip(&frame.rhs).for_each(|(r, f)| *r -= f);
+    r
+}
+
+fn evaluate(frame: &MovingFrame, w: &[f64]) -> Evaluation {
+    let sets = Sets::of(frame, w);
+    let r = residual(frame, w, sets.friction.as_ref().map(|state| &state.force[..]));
     let scale = frame.rhs.iter().fold(0.0f64, |m, f| m.max(f.abs())).max(f64::MIN_POSITIVE);
     let norm = r.iter().map(|x| x * x).sum::<f64>().sqrt();
     Evaluation { norm, relative: r.iter().fold(0.0f64, |m, x| m.max(x.abs())) / scale, sets }

@@ -14,7 +14,7 @@
 use crate::control::Control;
 use crate::error::Result;
 use crate::friction::{FrictionSections, FrictionState, SectionState};
-use crate::newton::{SetSystem, Sets};
+use crate::newton::{SetSystem, Sets, residual};
 use crate::operator::MovingFrame;
 
 /// The most flips a path may pass before it gives up (each a factorisation): above the 11–223 of every path from a
@@ -38,41 +38,14 @@ pub(crate) struct PathOutcome {
     pub(crate) flipped: usize,
 }
 
-/// F(W) = A W + Σ weight_i H_iᵀ r_i − f with the forces `force` (N).
-fn residual(frame: &MovingFrame, friction: &FrictionSections, w: &[f64], force: &[f64]) -> Vec<f64> {
-    let mut r = vec![0.0; w.len()];
-    frame.matrix.mul_vec(w, &mut r);
-    friction.add_forces(force, &mut r);
-    r.iter_mut().zip(&frame.rhs).for_each(|(r, f)| *r -= f);
-    r
-}
-
-/// The states of `slipping` (sign per section, 0 where stuck) with their anchors, and the forces at `w`.
-fn state_of(friction: &FrictionSections, slipping: &[f64], w: &[f64]) -> FrictionState {
-    let n = slipping.len();
-    let (mut force, mut states) = (vec![0.0; n], vec![SectionState::Stuck { anchor: None }; n]);
-    let (mut r, mut previous, mut anchor) = (0.0, friction.rest, None);
-    for i in (0..n).rev() {
-        let here = friction.sections[i].deflection(w);
-        (r, states[i]) = match slipping[i] {
-            0.0 => (r + friction.stiffness * (here - previous), SectionState::Stuck { anchor }),
-            sign => {
-                anchor = Some(i);
-                (sign * friction.capacity, SectionState::Slipping { sign })
-            }
-        };
-        force[i] = r;
-        previous = here;
-    }
-    FrictionState { force, states }
-}
-
-/// Each section's force and trial force as α + β σ along W + σ e, the soil's states in `slipping`.
+/// Each section's force and trial force as α + β σ along W + σ e: (α, β) for all sections.
 struct Rates {
     force: (Vec<f64>, Vec<f64>),
     trial: (Vec<f64>, Vec<f64>),
 }
 
+/// The march of [`FrictionSections::march_by`] along W + σ e, the states held in `slipping` (a sign where a section
+/// slips, 0 where it sticks): affine in σ until a section flips.
 fn rates(friction: &FrictionSections, slipping: &[f64], w: &[f64], e: &[f64]) -> Rates {
     let n = slipping.len();
     let k = friction.stiffness;
@@ -135,7 +108,7 @@ pub(crate) fn path_search(
 ) -> Result<PathOutcome> {
     let friction = frame.friction.as_ref().expect("a frame with friction");
     let start = friction.march(&w);
-    let f0 = residual(frame, friction, &w, &start.force);
+    let f0 = residual(frame, &w, Some(&start.force));
     let mut slipping: Vec<f64> = start
         .states
         .iter()
@@ -168,7 +141,7 @@ pub(crate) fn path_search(
         t += delta * sigma;
         let was = slipping[i];
         slipping[i] = if was == 0.0 { (r.force.0[i] + sigma * r.force.1[i]).signum() } else { 0.0 };
-        let d = direction(state_of(friction, &slipping, &w))?;
+        let d = direction(friction.march_by(&w, |j, _| (slipping[j] != 0.0).then_some(slipping[j])))?;
         let next = rates(friction, &slipping, &w, &d);
         // Into the new piece: a new slip's trial force grows past f_u, a new stick's force falls inside.
         let inward = match slipping[i] {
@@ -186,6 +159,7 @@ pub(crate) fn path_search(
     out.flipped = seen.iter().filter(|s| **s).count();
     Ok(PathOutcome { w, t, ..out })
 }
+
 #[cfg(test)]
 #[path = "path_search_tests.rs"]
 mod tests;
