@@ -4,7 +4,8 @@
 //!
 //! - **in κ**: from the soil's own stiffness up by factors of ten (or the problem's own), each stage from the last
 //!   stage's wave, the factor shrinking to its square root where a stage fails; a warm start (the previous speed's
-//!   wave) enters at [`WARM_STAGE`];
+//!   wave) enters at [`WARM_STAGE`]; a stage after a settled one that Newton does not settle within
+//!   [`NEWTON_BUDGET`] iterations is taken by Ralph's path from the settled stage ([`crate::path_search`]);
 //! - **in damping**, where that fails on a lightly damped track (undamped above the critical speed the frictionless
 //!   start is a resonance of the free-ended domain, not a wave): the whole κ continuation on the track with
 //!   ζ = [`DAMPED_START`], then the damping lowered step by step ([`DAMPING_STEPS`]) to the track's own, each from
@@ -27,8 +28,9 @@ pub const WARM_STAGE: f64 = 1e-4;
 pub const FIRST_STAGE: f64 = 1e-6;
 
 /// Newton iterations a κ stage from a settled stage gets before the path search takes it (where the problem has
-/// one, [`crate::path_search`]). Measured over 195–215 m/s undamped with 1 kN/m: the factorisations of the whole
-/// continuation for budgets of 10, 20, 30, 40 were 4404, 3696, 3768, 3661, against 8972 with Newton alone.
+/// one, [`crate::path_search`]). Measured over 195–215 m/s undamped with 1 kN/m (factorisations, time): budgets of
+/// 10, 20, 30, 40 gave 4468 (7.63 s), 4652 (7.13 s), 4835 (8.23 s), 4951 (8.16 s), against 10 162 (20.2 s) with
+/// Newton alone.
 pub const NEWTON_BUDGET: usize = 20;
 
 /// The smallest factor between κ stages before a continuation gives up.
@@ -121,10 +123,11 @@ pub(crate) fn stages<P: SetProblem>(
         let stiffness = (reached * factor).min(target);
         let last = w.clone();
         set_stiffness(&mut stage, stiffness);
-        let budget = if settled && stage.takes_path() { NEWTON_BUDGET } else { MAX_ITERATIONS };
+        let by_path = settled && stage.takes_path();
+        let budget = if by_path { NEWTON_BUDGET } else { MAX_ITERATIONS };
         let (mut next, mut status) = iterate(&stage, speed, w, (&mut *guess, control), budget)?;
         spent += status.iterations();
-        if !status.is_converged() && budget == NEWTON_BUDGET && !control.exhausted() {
+        if !status.is_converged() && by_path && !control.exhausted() {
             // Ralph's path from the settled stage, then Newton from its end (one iteration where its flips' round-off
             // leaves the states right).
             let (end, flips) = stage.path(last.clone(), speed, control)?;
