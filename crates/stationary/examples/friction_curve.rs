@@ -1,14 +1,17 @@
 //! Probe: the undamped reference track with ballast friction over a speed range, each speed from the last one's wave
 //! on the domain it grew to (as the stationary-wave study sweeps), with each speed's Newton iterations and time.
-//! `cargo run --release -p stationary --example friction_curve -- FROM TO STEP F_U`
+//! `cargo run --release -p stationary --example friction_curve -- FROM TO STEP F_U [halved]`; with `halved` each
+//! speed's error estimate too (its wave solved again on elements half as long, as the CLI does), timed apart.
 
 use analytic::reference::uic60_on_soft_soil;
 use fem_beam::{DistributedFriction, Foundation, FoundationLaw};
-use stationary::{ContactGuess, Control, Domain, StationaryProblem, solve_within};
+use stationary::{ContactGuess, Control, Domain, StationaryProblem, solve_halved, solve_within};
 
 fn main() {
-    let args: Vec<f64> = std::env::args().skip(1).map(|a| a.parse().expect("a number")).collect();
-    let [from, to, step, friction] = args[..] else { panic!("FROM TO STEP F_U") };
+    let halved = std::env::args().nth(5).is_some_and(|a| a == "halved");
+    let args: Vec<f64> = std::env::args().skip(1).take(4).map(|a| a.parse().expect("a number")).collect();
+    let [from, to, step, friction] = args[..] else { panic!("FROM TO STEP F_U [halved]") };
+    let mut estimates = std::time::Duration::ZERO;
     let case = uic60_on_soft_soil();
     let mut domain = Domain::default();
     let mut guess = ContactGuess::default();
@@ -31,6 +34,18 @@ fn main() {
             (domain.behind, domain.ahead) = (-wave.s[0], *wave.s.last().expect("nodes"));
         }
         total += spent;
+        if halved && wave.convergence.is_converged() {
+            let start = std::time::Instant::now();
+            let finer = solve_halved(&problem, &wave, &Control::new(None)).expect("a halved wave");
+            estimates += start.elapsed();
+            println!(
+                "          halved: {} its {:8.1} ms peak {:.6} mm {:?}",
+                finer.convergence.iterations(),
+                start.elapsed().as_secs_f64() * 1e3,
+                finer.max_downward().value * 1e3,
+                finer.convergence.is_converged()
+            );
+        }
         iterations += wave.convergence.iterations();
         println!(
             "{speed:7.1} m/s  {:>5} its  {:8.1} ms  peak {:.6} mm  domain {}:{}  {:?}",
@@ -42,5 +57,9 @@ fn main() {
             wave.convergence.is_converged()
         );
     }
-    println!("total {:.2} s, {iterations} iterations", total.as_secs_f64());
+    println!(
+        "total {:.2} s, {iterations} iterations; error estimates {:.2} s",
+        total.as_secs_f64(),
+        estimates.as_secs_f64()
+    );
 }
