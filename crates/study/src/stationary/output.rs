@@ -123,6 +123,9 @@ pub struct StationaryStudy {
     pub points: Vec<StationaryPoint>,
     /// The waves, where found (None where no stationary wave exists at that speed).
     pub waves: Vec<Option<StationaryWave>>,
+    /// Speeds (m/s) whose wave was found but whose error estimate was not: the wave on elements half as long did not
+    /// converge there (above the critical speed of an undamped track with friction, often).
+    pub unestimated: Vec<f64>,
 }
 
 impl StationaryStudy {
@@ -149,6 +152,7 @@ impl StationaryStudy {
         let law = first.foundation.law.name();
         let mut guess = ContactGuess::default();
         let (mut points, mut waves) = (Vec::with_capacity(speeds.len()), Vec::with_capacity(speeds.len()));
+        let mut unestimated = Vec::new();
         // Each speed starts on the domain the last one grew to, where its wave (the guess) fits.
         let mut domain = domain;
         for &speed in speeds {
@@ -164,6 +168,9 @@ impl StationaryStudy {
                     let mut point = StationaryPoint::of(&wave);
                     if estimate == ErrorEstimate::Halving && wave.convergence.is_converged() && !stopped() {
                         point.discretisation_error = peak_errors(&problem, &wave, &Control::new(stop))?;
+                        if point.discretisation_error.is_none() {
+                            unestimated.push(speed);
+                        }
                     }
                     points.push(point);
                     waves.push(Some(wave));
@@ -178,7 +185,8 @@ impl StationaryStudy {
         }
         let friction = first.friction.force_per_length;
         let rail_theory = scenario.beam.theory.unless_default();
-        Ok(Self { rail_theory, law, load: first.load, settlement: -first.far_level(), friction, points, waves })
+        let settlement = -first.far_level();
+        Ok(Self { rail_theory, law, load: first.load, settlement, friction, points, waves, unestimated })
     }
 
     /// The point whose peaks have the largest relative discretisation error over the speeds estimated, and that
@@ -190,18 +198,30 @@ impl StationaryStudy {
 
     /// Warnings for the reader: peaks whose estimated discretisation error exceeds [`ERROR_TOLERANCE`], with the
     /// element length that would bring it under (the moment converges at second order: l·√(tolerance/error)).
+    /// And the speeds whose peaks went unchecked because their error estimate failed.
     pub fn warnings(&self) -> Vec<String> {
-        let Some((point, error)) = self.largest_error().filter(|&(_, e)| e > ERROR_TOLERANCE) else {
-            return Vec::new();
-        };
-        let (speed, l) = (point.speed, point.domain.2);
-        vec![format!(
-            "domain.element_length = {l} m: the peaks are resolved only to {:.1} % at {speed} m/s (estimated from one \
-             halving of the elements); elements of {:.3} m or less bring them to {} %",
-            100.0 * error,
-            0.9 * l * (ERROR_TOLERANCE / error).sqrt(),
-            100.0 * ERROR_TOLERANCE
-        )]
+        let mut warnings = Vec::new();
+        if let Some((point, error)) = self.largest_error().filter(|&(_, e)| e > ERROR_TOLERANCE) {
+            let (speed, l) = (point.speed, point.domain.2);
+            warnings.push(format!(
+                "domain.element_length = {l} m: the peaks are resolved only to {:.1} % at {speed} m/s (estimated from \
+                 one halving of the elements); elements of {:.3} m or less bring them to {} %",
+                100.0 * error,
+                0.9 * l * (ERROR_TOLERANCE / error).sqrt(),
+                100.0 * ERROR_TOLERANCE
+            ));
+        }
+        if !self.unestimated.is_empty() {
+            warnings.push(format!(
+                "the peaks' discretisation error is not estimated at {} of {} speeds ({}): the wave on elements \
+                 half as long did not converge there; compare with a solve on shorter elements \
+                 (domain.element_length) to check them",
+                self.unestimated.len(),
+                self.points.len(),
+                listed(&self.unestimated)
+            ));
+        }
+        warnings
     }
 }
 
@@ -233,6 +253,15 @@ impl StationaryStudy {
 
 /// The peaks' discretisation errors of `wave` (of `problem`) from its solution on halved elements; None where that
 /// solve finds no wave.
+/// Up to six speeds, then how many more: "208, 210, 212 m/s" or "200, 202, 204, 206, 208, 210 m/s and 5 more".
+fn listed(speeds: &[f64]) -> String {
+    let shown: Vec<String> = speeds.iter().take(6).map(|v| format!("{v}")).collect();
+    match speeds.len() {
+        n if n > 6 => format!("{} m/s and {} more", shown.join(", "), n - 6),
+        _ => format!("{} m/s", shown.join(", ")),
+    }
+}
+
 fn peak_errors(problem: &StationaryProblem, wave: &StationaryWave, control: &Control) -> Result<Option<PeakErrors>> {
     let halved = stationary::solve_halved(problem, wave, control)?;
     Ok(halved.convergence.is_converged().then(|| PeakErrors {
@@ -301,5 +330,35 @@ impl StationaryPoint {
             domain: (domain.behind, domain.ahead, domain.element_length),
             discretisation_error: None,
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn study(points: usize, unestimated: Vec<f64>) -> StationaryStudy {
+        let point = StationaryPoint::missing(200.0, Domain::default());
+        StationaryStudy {
+            rail_theory: None,
+            law: "linear",
+            load: 83.4e3,
+            settlement: 0.0,
+            friction: 1e3,
+            points: vec![point; points],
+            waves: vec![None; points],
+            unestimated,
+        }
+    }
+
+    /// A wave whose error estimate failed is said so, by speed, not left out in silence.
+    #[test]
+    fn speeds_whose_estimate_failed_are_named_in_a_warning() {
+        assert!(study(3, Vec::new()).warnings().is_empty());
+        let warnings = study(11, vec![208.0, 210.0, 212.0]).warnings();
+        assert_eq!(warnings.len(), 1, "{warnings:?}");
+        assert!(warnings[0].contains("not estimated at 3 of 11 speeds (208, 210, 212 m/s)"), "{}", warnings[0]);
+        let many: Vec<f64> = (0..9).map(|i| 200.0 + 2.0 * i as f64).collect();
+        assert!(study(11, many).warnings()[0].contains("(200, 202, 204, 206, 208, 210 m/s and 3 more)"));
     }
 }
