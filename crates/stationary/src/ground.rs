@@ -13,7 +13,7 @@
 //! For the sets of W (each section slipping or stuck, to which anchor) the equations are linear,
 //! (I − W₁ H K) W = W_lin + W₁ H c, solved by GMRES ([`crate::krylov`]) preconditioned with the same equations on a
 //! local operator: the beam on a Winkler foundation fitted to the ground at this speed, one banded factorisation with
-//! the stuck springs and the anchors' couplings (`newton::SetSystem`): its inverse is
+//! the stuck springs and the anchors' couplings (`sets::SetSystem`): its inverse is
 //! I − Eᵀ(A + E H K Eᵀ)⁻¹ E H K (E the points' deflection DOFs of the local mesh). The sets are found by the Newton
 //! iteration and the continuation in the Jenkins stiffness of the Winkler solver, shared.
 //!
@@ -35,9 +35,10 @@ use crate::control::Control;
 use crate::error::{Result, invalid};
 use crate::friction::FrictionSections;
 use crate::krylov::gmres;
-use crate::newton::{Evaluation, MAX_ITERATIONS, SetProblem, SetSystem, Sets, iterate};
+use crate::newton::{Evaluation, MAX_ITERATIONS, SetProblem, iterate};
 use crate::operator::MovingFrame;
 use crate::problem::{Domain, StationaryProblem};
+use crate::sets::{SetSystem, Sets};
 use crate::status::{ContactGuess, Convergence};
 use crate::toeplitz::Toeplitz;
 use analytic::ground::{InterfaceSpectra, MovingSpectrum};

@@ -24,6 +24,7 @@ pub mod problem;
 mod reading;
 pub mod refine;
 mod rows;
+mod sets;
 pub mod solve;
 mod status;
 pub mod toeplitz;

@@ -14,8 +14,8 @@
 use crate::control::Control;
 use crate::error::Result;
 use crate::friction::{FrictionSections, FrictionState, SectionState};
-use crate::newton::{SetSystem, Sets, residual};
 use crate::operator::MovingFrame;
+use crate::sets::{SetSystem, Sets, residual};
 
 /// The most flips a path may pass before it gives up (each a factorisation): above the 11–223 of every path from a
 /// settled stage that arrived in the measurements, far below the > 100 000 of one that wandered.
