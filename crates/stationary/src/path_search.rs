@@ -44,6 +44,14 @@ struct Rates {
     trial: (Vec<f64>, Vec<f64>),
 }
 
+impl Rates {
+    /// The rates along −e: the slopes negated.
+    fn turned(mut self) -> Self {
+        self.force.1.iter_mut().chain(self.trial.1.iter_mut()).for_each(|b| *b = -*b);
+        self
+    }
+}
+
 /// The march of [`FrictionSections::march_by`] along W + σ e, the states held in `slipping` (a sign where a section
 /// slips, 0 where it sticks): affine in σ until a section flips.
 fn rates(friction: &FrictionSections, slipping: &[f64], w: &[f64], e: &[f64]) -> Rates {
@@ -124,11 +132,11 @@ pub(crate) fn path_search(
         Ok(d)
     };
     let mut e = direction(start)?;
+    let mut r = rates(friction, &slipping, &w, &e);
     let mut seen = vec![false; slipping.len()];
     let (mut t, mut delta, mut skip) = (0.0, 1.0, None);
     let mut out = PathOutcome { w: Vec::new(), t, events: 0, degenerate: 0, reversals: 0, flipped: 0 };
     while out.events < limit && control.next_iteration(w.len())? {
-        let r = rates(friction, &slipping, &w, &e);
         let to_end = if delta > 0.0 { 1.0 - t } else { f64::INFINITY };
         let Some((sigma, i)) = first_event(friction, &slipping, &r, skip).filter(|&(sigma, _)| sigma < to_end) else {
             if delta > 0.0 {
@@ -153,6 +161,8 @@ pub(crate) fn path_search(
         out.degenerate += usize::from(sigma == 0.0);
         delta = turned;
         e = d.into_iter().map(|x| delta * x).collect();
+        // The rates along e are those along d, their slopes turned with it (negation is exact).
+        r = if delta > 0.0 { next } else { next.turned() };
         out.events += 1;
         (skip, seen[i]) = (Some(i), true);
     }
