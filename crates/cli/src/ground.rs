@@ -4,6 +4,7 @@
 //! figures.
 
 use crate::TableFormat;
+use crate::interrupt::Kept;
 use anyhow::Result;
 use clap::Args;
 use scenario::Scenario;
@@ -38,16 +39,17 @@ pub fn run(args: &GroundArgs) -> Result<()> {
         Some(text) => GroundRequest { frequencies: crate::receptance::parse_frequencies(text)? },
         None => GroundRequest::default(),
     };
-    if let Some(folder) = &args.out {
-        check_folder(folder, "--out")?;
-    }
+    let out = match &args.out {
+        Some(folder) => Some((folder.as_path(), check_folder(folder, "--out")?)),
+        None => None,
+    };
     let runner = crate::jobs::runner(args.jobs, args.format != TableFormat::Text)?;
     let quiet = args.format != TableFormat::Text;
     let bar = crate::progress::bar("ground", None, quiet);
     let progress = |done: usize| bar.set_position(done as u64);
     let announce = |estimate: &runner::cost::Estimate| crate::progress::announce("ground", estimate);
     let runner = runner.with_progress(&progress).with_estimate(&announce).with_stop(crate::interrupt::stop_flag());
-    let study = crate::interrupt::explain(GroundStudy::of(&scenario, &request, &runner), None)?;
+    let study = crate::interrupt::explain(GroundStudy::of(&scenario, &request, &runner), Kept::Nothing(out))?;
     bar.finish_and_clear();
     for warning in &study.warnings {
         eprintln!("warning: {warning}");

@@ -28,15 +28,40 @@ pub fn stop_flag() -> &'static AtomicBool {
     &STOP
 }
 
-/// Turn an interruption into an error that says where the finished runs are and how to continue.
-pub fn explain<T>(result: scenario::Result<T>, journal: Option<&runner::Journal>) -> anyhow::Result<T> {
+/// What an interrupted command leaves behind, for [`explain`].
+#[derive(Debug, Clone, Copy)]
+pub enum Kept<'a> {
+    /// Its journal: every finished run, continued by `--resume`.
+    Journal(&'a runner::Journal),
+    /// Nothing: the command writes its files when it finishes — into this `--out` folder if one was given (and
+    /// whether the command created it).
+    Nothing(Option<(&'a std::path::Path, bool)>),
+}
+
+/// Turn an interruption into an error that says where the finished runs are and how to continue; a `--out` folder
+/// the command created and left empty is removed.
+pub fn explain<T>(result: scenario::Result<T>, kept: Kept<'_>) -> anyhow::Result<T> {
     match result {
         Err(scenario::StudyError::Interrupted) => {
-            let kept = match journal {
-                Some(j) => {
+            let kept = match kept {
+                Kept::Journal(j) => {
                     format!("finished runs are kept in {}; run the same command with --resume", j.path().display())
                 }
-                None => "nothing was kept (no --out); run it again".to_string(),
+                Kept::Nothing(None) => "nothing was kept (no --out); run it again".to_string(),
+                Kept::Nothing(Some((folder, created))) => {
+                    // remove_dir removes an empty folder only: nothing a user put there is touched.
+                    if created && std::fs::remove_dir(folder).is_ok() {
+                        format!(
+                            "nothing was written (the files are written at the end; {} removed again); run it again",
+                            folder.display()
+                        )
+                    } else {
+                        format!(
+                            "nothing was written to {} (the files are written at the end); run it again",
+                            folder.display()
+                        )
+                    }
+                }
             };
             Err(anyhow::Error::new(scenario::StudyError::Interrupted).context(format!("interrupted: {kept}")))
         }

@@ -70,14 +70,15 @@ pub fn run(args: &ReceptanceArgs) -> Result<()> {
     let frequencies = parse_frequencies(&args.frequencies)?;
     let at = args.at.unwrap_or(0.5 * scenario.mesh.length);
     let request = ReceptanceRequest { frequencies, excite: args.excite.unwrap_or(at), at };
-    if let Some(folder) = &args.out {
-        check_folder(folder, "--out")?;
-    }
+    let out = match &args.out {
+        Some(folder) => Some((folder.as_path(), check_folder(folder, "--out")?)),
+        None => None,
+    };
     let runner = crate::jobs::runner(args.jobs, args.format != TableFormat::Text)?;
     let announce = |estimate: &runner::cost::Estimate| crate::progress::announce("receptance", estimate);
     let runner = runner.with_estimate(&announce).with_stop(crate::interrupt::stop_flag());
     let study = ReceptanceStudy::of(&scenario, &request, &runner).map_err(|e| rename(e, "--frequencies"));
-    let study = crate::interrupt::explain(study, None)?;
+    let study = crate::interrupt::explain(study, crate::interrupt::Kept::Nothing(out))?;
     for warning in &study.warnings {
         eprintln!("warning: {warning}");
     }

@@ -37,7 +37,6 @@ pub fn run(args: &ReferenceArgs) -> Result<()> {
     if let Some(elements) = args.elements {
         scenario.mesh.elements = elements;
     }
-    crate::scenario_args::print_uniform_support_note(&scenario, "the closed form")?;
     // The option is `--modes` here; the library names its parameter `modes`.
     let check = ReferenceCheck::of(&scenario, args.modes).map_err(|e| match e {
         StudyError::InvalidField { path, value, allowed } if path == "modes" => {
@@ -45,6 +44,7 @@ pub fn run(args: &ReferenceArgs) -> Result<()> {
         }
         other => other,
     })?;
+    crate::scenario_args::print_uniform_support_note(&scenario, "the closed form")?;
     let report = ReferenceReport { check, wall_time: start.elapsed().as_secs_f64() };
     crate::print_output(&report, args.format)
 }

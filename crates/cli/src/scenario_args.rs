@@ -46,7 +46,11 @@ fn flag(spec: &'static OverrideSpec) -> Arg {
         .action(ArgAction::Set);
     match spec.kind {
         OverrideKind::Speed => arg.value_parser(scenario::units::parse_speed),
-        OverrideKind::Number { .. } => arg.value_parser(value_parser!(f64)),
+        // A value may start with '-' (a braking acceleration) and carry its unit (`-60m/s2`), which clap would
+        // otherwise read as a flag.
+        OverrideKind::Number { unit } => {
+            arg.allow_hyphen_values(true).value_parser(move |text: &str| scenario::units::parse_in(text, unit))
+        }
         OverrideKind::Count => arg.value_parser(value_parser!(usize)),
         OverrideKind::Solver => arg.value_parser(PossibleValuesParser::new(SolverKind::ALL.map(SolverKind::name))),
         OverrideKind::Text | OverrideKind::Pair { .. } => arg.value_parser(value_parser!(String)),
@@ -116,7 +120,7 @@ impl ScenarioArgs {
             Some(path) => Scenario::from_path(path).with_context(|| format!("reading scenario {}", path.display()))?,
             None => Scenario::default(),
         };
-        Ok(self.overrides()?.apply(s))
+        Ok(self.overrides()?.apply(s)?)
     }
 
     /// The flags as the library's [`Overrides`] (the same names as the Python package's keyword arguments).

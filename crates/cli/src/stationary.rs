@@ -3,6 +3,7 @@
 
 use crate::TableFormat;
 use crate::files::{check_output_file, prepare_output_folder, write_atomically, write_figures};
+use crate::interrupt::Kept;
 use anyhow::Result;
 use clap::Args;
 use scenario::Scenario;
@@ -57,27 +58,31 @@ fn on_the_ground(args: &StationaryArgs, scenario: &Scenario, speeds: &[f64]) -> 
             return Err(scenario::error::invalid(name, value, format!("leave it out: {why}")).into());
         }
     }
+    for &speed in speeds {
+        scenario.check_speed_on_the_ground("--speed", speed)?;
+    }
     let mut window = study::ground::WaveWindow::default();
     if let Some(text) = &args.domain {
         (window.behind, window.ahead) = behind_ahead(text)?;
     }
     let record = args.measured.as_deref().map(|path| MeasuredRecord::read(path, "--measured")).transpose()?;
     if let Some(record) = &record {
+        record.check_speeds(speeds.len(), "--measured")?;
         window = record.widened(window);
     }
-    if let Some(folder) = &args.out {
-        prepare_output_folder("--out", folder)?;
-        for name in ["stationary.json", "wave.csv", "speeds.csv", "ground-wave.png", "ground-wave.svg"] {
-            check_output_file("--out", &folder.join(name))?;
-        }
-    }
+    let out =
+        checked_folder(args, &["stationary.json", "wave.csv", "speeds.csv", "ground-wave.png", "ground-wave.svg"])?;
     let threads = std::thread::available_parallelism().map_or(1, usize::from);
     crate::progress::announce("stationary", &study::ground::wave::cost(scenario, speeds.len(), threads));
     let stop = Some(crate::interrupt::stop_flag());
     let bar = crate::progress::bar("stationary", Some(speeds.len() as u64), args.format != TableFormat::Text);
     let progress = |done: usize| bar.set_position(done as u64);
-    let mut study = study::ground::GroundWaveStudy::of(scenario, speeds, window, stop, &progress)?;
+    let study = study::ground::GroundWaveStudy::of(scenario, speeds, window, stop, &progress);
+    let mut study = crate::interrupt::explain(study, Kept::Nothing(out))?;
     bar.finish_and_clear();
+    for warning in study.warnings() {
+        eprintln!("warning: {warning}");
+    }
     if let Some(record) = &record {
         study.compare_with(record, "--measured")?;
     }
@@ -121,7 +126,7 @@ pub fn run(args: &StationaryArgs) -> Result<()> {
         distributed_friction: args.distributed_friction,
         ..Default::default()
     };
-    let scenario = overrides.apply(scenario);
+    let scenario = overrides.apply(scenario)?;
     if let (Some(path), None) = (&args.measured, &scenario.ground) {
         let why = "a measured record is compared with the steady wave on a [ground] only";
         return Err(scenario::error::invalid("--measured", path.display(), why).into());
@@ -134,19 +139,15 @@ pub fn run(args: &StationaryArgs) -> Result<()> {
         return on_the_ground(args, &scenario, &speeds);
     }
     let domain = domain(args)?;
-    if let Some(folder) = &args.out {
-        prepare_output_folder("--out", folder)?;
-        for name in ["stationary.json", "wave.csv", "speeds.csv"] {
-            check_output_file("--out", &folder.join(name))?;
-        }
-    }
+    let out = checked_folder(args, &["stationary.json", "wave.csv", "speeds.csv"])?;
     let first = scenario.stationary_problem(speeds.first().copied().unwrap_or(0.0), domain)?;
     crate::scenario_args::print_uniform_support_note(&scenario, "the stationary wave")?;
     crate::progress::announce("stationary", &runner::cost::Estimate::stationary(&first, &speeds, true));
     let stop = Some(crate::interrupt::stop_flag());
     let bar = crate::progress::bar("stationary", Some(speeds.len() as u64), args.format != TableFormat::Text);
     let progress = |done: usize| bar.set_position(done as u64);
-    let study = StationaryStudy::of_until(&scenario, &speeds, domain, ErrorEstimate::Halving, stop, &progress)?;
+    let study = StationaryStudy::of_until(&scenario, &speeds, domain, ErrorEstimate::Halving, stop, &progress);
+    let study = crate::interrupt::explain(study, Kept::Nothing(out))?;
     bar.finish_and_clear();
     for warning in study.warnings() {
         eprintln!("warning: {warning}");
@@ -171,4 +172,15 @@ pub fn run(args: &StationaryArgs) -> Result<()> {
         eprintln!("wrote {} (stationary.json, {}, {})", folder.display(), table.name, drawn.join(", "));
     }
     Ok(())
+}
+
+/// The `--out` folder, if given, created if missing and checked to take each of `files`, before any work; with
+/// whether it was created here.
+fn checked_folder<'a>(args: &'a StationaryArgs, files: &[&str]) -> Result<Option<(&'a std::path::Path, bool)>> {
+    let Some(folder) = &args.out else { return Ok(None) };
+    let created = prepare_output_folder("--out", folder)?;
+    for name in files {
+        check_output_file("--out", &folder.join(name))?;
+    }
+    Ok(Some((folder.as_path(), created)))
 }

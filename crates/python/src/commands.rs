@@ -58,7 +58,7 @@ pub(crate) fn stationary_wave(
     measured: Option<std::path::PathBuf>,
 ) -> PyResult<StationaryTexts> {
     scenario::speeds::check_count("speeds", speeds.len()).map_err(to_python)?;
-    let scenario = overrides(&keywords)?.apply(Source::of(kind, text)?.read()?);
+    let scenario = overrides(&keywords)?.apply(Source::of(kind, text)?.read()?).map_err(to_python)?;
     if scenario.ground.is_some() {
         return on_the_ground(py, &scenario, speeds, domain, progress, measured);
     }
@@ -109,6 +109,7 @@ fn on_the_ground(
     };
     let record = measured.map(|path| MeasuredRecord::read(&path, "measured")).transpose().map_err(to_python)?;
     if let Some(record) = &record {
+        record.check_speeds(speeds.len(), "measured").map_err(to_python)?;
         window = record.widened(window);
     }
     let total = speeds.len() as f64;
@@ -154,7 +155,7 @@ pub(crate) fn preset(
 ) -> PyResult<StudyTexts> {
     let preset = Preset::from_name(name).map_err(to_python)?;
     let resolution = Resolution::from_name(resolution).map_err(to_python)?;
-    let mut base = overrides(&keywords)?.apply(Source::of(kind, text)?.read()?);
+    let mut base = overrides(&keywords)?.apply(Source::of(kind, text)?.read()?).map_err(to_python)?;
     if let Some(track) = deck_track {
         base.output.deck_track = track.parse().map_err(to_python)?;
     }

@@ -29,7 +29,7 @@ pub(crate) fn receptance(
     keywords: Vec<(String, Bound<'_, PyAny>)>,
     out: Option<std::path::PathBuf>,
 ) -> PyResult<ReceptanceTexts> {
-    let scenario = overrides(&keywords)?.apply(Source::of(kind, text)?.read()?);
+    let scenario = overrides(&keywords)?.apply(Source::of(kind, text)?.read()?).map_err(to_python)?;
     let at = at.unwrap_or(0.5 * scenario.mesh.length);
     let request = ReceptanceRequest { frequencies, excite: excite.unwrap_or(at), at };
     if let Some(folder) = &out {

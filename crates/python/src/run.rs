@@ -34,7 +34,7 @@ pub(crate) fn run(
     let started = std::time::Instant::now();
     let scenario = Source::of(kind, text)?.read()?;
     let overrides = overrides(&keywords)?;
-    let scenario = recording(overrides.apply(scenario));
+    let scenario = recording(overrides.apply(scenario).map_err(to_python)?);
     let case = scenario.build().map_err(to_python)?;
     if let Some(folder) = &out {
         report::run_folder::check("out", folder, &case).map_err(to_python)?;

@@ -44,21 +44,24 @@ impl Source {
     }
 }
 
-/// The overrides `keywords` ((name, value) pairs, in order) as the library's.
+/// The overrides `keywords` ((name, value) pairs, in order) as the library's; a keyword given as None leaves the
+/// scenario's value, as an absent one does.
 pub(crate) fn overrides(keywords: &[(String, Bound<'_, PyAny>)]) -> PyResult<Overrides> {
     let mut overrides = Overrides::default();
     for (name, value) in keywords {
-        OverrideSpec::named(name).map_err(to_python)?;
-        overrides.set(name, value_of(name, value)?).map_err(to_python)?;
+        let spec = OverrideSpec::named(name).map_err(to_python)?;
+        if value.is_none() {
+            continue;
+        }
+        overrides.set(name, value_of(spec, value)?).map_err(to_python)?;
     }
     Ok(overrides)
 }
 
 /// A Python value as an override's: a number, text, or a pair of numbers. Booleans are refused (True is 1 in Python
-/// and would pass for a count).
-fn value_of(name: &str, value: &Bound<'_, PyAny>) -> PyResult<OverrideValue> {
-    let refuse =
-        |what: &str| to_python(scenario::error::invalid(name, what, "must be a number, text, or two numbers [A, B]"));
+/// and would pass for a count); anything else is refused with what `spec` takes.
+fn value_of(spec: &OverrideSpec, value: &Bound<'_, PyAny>) -> PyResult<OverrideValue> {
+    let refuse = |what: &str| to_python(scenario::error::invalid(spec.name, what, spec.takes()));
     if value.is_instance_of::<pyo3::types::PyBool>() {
         return Err(refuse("a boolean"));
     }
@@ -72,4 +75,12 @@ fn value_of(name: &str, value: &Bound<'_, PyAny>) -> PyResult<OverrideValue> {
         return Ok(OverrideValue::Pair([a, b]));
     }
     Err(refuse(&value.get_type().name().map_or_else(|_| "a value".into(), |n| n.to_string())))
+}
+
+/// A speed in m/s from a number's text with its unit (`"144km/h"`, `"40m/s"`), as the command line and `speed=`
+/// take it; refused as `InputError` naming `name`.
+#[pyfunction]
+pub(crate) fn parse_speed(name: &str, text: &str) -> PyResult<f64> {
+    let quoted = format!("\"{text}\"");
+    scenario::units::parse_speed(text).map_err(|why| to_python(scenario::error::invalid(name, quoted, why)))
 }

@@ -24,7 +24,7 @@ pub(crate) fn sweep(
     keywords: Vec<(String, Bound<'_, PyAny>)>,
     progress: Option<Bound<'_, PyAny>>,
 ) -> PyResult<SweepTexts> {
-    let scenario = overrides(&keywords)?.apply(Source::of(kind, text)?.read()?);
+    let scenario = overrides(&keywords)?.apply(Source::of(kind, text)?.read()?).map_err(to_python)?;
     scenario::speeds::check_count("speeds", speeds.len()).map_err(to_python)?;
     if speeds.is_empty() {
         return Err(to_python(scenario::error::invalid("speeds", "[]", "give at least one speed (m/s)")));

@@ -294,8 +294,34 @@ def test_speeds_may_be_one_number_and_bad_speeds_name_themselves():
     one = frictrack.stationary(None, speeds=200)
     assert [p["speed"] for p in one.points] == [200.0]
     assert [p["speed"] for p in frictrack.analytic(None, 150)] == [150.0]
-    with pytest.raises(frictrack.InputError, match="invalid speeds = 'fast'"):
+    with pytest.raises(frictrack.InputError, match='invalid speeds = "fast": `fast` is not a speed'):
         frictrack.sweep(None, "fast")
+    # Speeds with their unit, as run(speed="540km/h") takes one (stationary(speeds="144km/h") was refused).
+    assert [p["speed"] for p in frictrack.analytic(None, "720km/h")] == [200.0]
+    assert [p["speed"] for p in frictrack.analytic(None, ["360km/h", 150.0])] == [100.0, 150.0]
+
+
+def test_wrong_arguments_name_themselves(tmp_path):
+    """Each raised a bare TypeError with no argument named, or (acceleration=None) promised text and pairs it then
+    refused."""
+    folder = tmp_path / "run"
+    frictrack.run(None, speed=150.0, elements=50, out=folder)
+    for call, named in [
+        (lambda: frictrack.report(None), "folder = None"),
+        (lambda: frictrack.report(42), "folder = 42"),
+        (lambda: frictrack.report(folder, out=123), "out = 123"),
+        (lambda: frictrack.ground(None, out=123), "out = 123"),
+        (lambda: frictrack.stationary(None, 100.0, domain="ab"), "domain = 'ab'"),
+        (lambda: frictrack.stationary(None, 100.0, domain=(10, 20, 30)), r"domain = \(10, 20, 30\)"),
+        (lambda: frictrack.run(None, out=123), "out = 123"),
+        (lambda: frictrack.run(None, acceleration=[1, 2]), r"acceleration = .*must be a number in m/s²"),
+    ]:
+        with pytest.raises(frictrack.InputError, match=f"invalid {named}"):
+            call()
+    # None leaves the scenario's value, as an absent keyword does; an acceleration may carry its unit.
+    assert frictrack.run(None, speed=150.0, elements=50, acceleration=None).summary.get("speed_change") is None
+    braking = frictrack.run(None, speed=150.0, elements=50, acceleration="-20m/s2").summary["speed_change"]
+    assert braking["acceleration"] == -20.0
 
 
 def test_progress_is_told_to_a_callback():

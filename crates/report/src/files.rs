@@ -26,8 +26,10 @@ pub fn check_output_file(option: &str, path: &Path) -> Result<()> {
     check_folder_writable(option, folder_of(path))
 }
 
-/// Check that `folder` is a folder (created if missing) that accepts new files, before any run starts.
-pub fn prepare_output_folder(option: &str, folder: &Path) -> Result<()> {
+/// Check that `folder` is a folder (created if missing) that accepts new files, before any run starts; whether it
+/// was created here (an interrupted command removes a folder it created and left empty).
+pub fn prepare_output_folder(option: &str, folder: &Path) -> Result<bool> {
+    let created = std::fs::symlink_metadata(folder).is_err();
     if let Ok(meta) = std::fs::symlink_metadata(folder)
         && !meta.is_dir()
         && !(meta.file_type().is_symlink() && folder.is_dir())
@@ -36,7 +38,8 @@ pub fn prepare_output_folder(option: &str, folder: &Path) -> Result<()> {
     }
     std::fs::create_dir_all(folder)
         .map_err(|e| invalid(option, folder.display(), format!("cannot be created: {e}")))?;
-    check_folder_writable(option, folder)
+    check_folder_writable(option, folder)?;
+    Ok(created)
 }
 
 fn folder_of(path: &Path) -> &Path {

@@ -37,8 +37,8 @@ pub struct FolderSummary<'a> {
     pub provenance: &'a Provenance,
     /// The run's summary.
     pub report: &'a RunSummary,
-    /// The scenario that ran.
-    pub scenario: &'a Scenario,
+    /// The scenario that ran (without the `[foundation]` a `[ground]` replaces).
+    pub scenario: scenario::AsRan<'a>,
     /// The run's text report, as `frictrack run` prints it.
     pub text: String,
     /// Every warning the run gave (the scenario's, then the result's), as the command line prints them.
@@ -102,10 +102,11 @@ pub fn file_names(case: &Case) -> Vec<String> {
 }
 
 /// Before the run: `folder` exists (created if missing) and takes every file of [`file_names`] (none is a link, a
-/// device or a folder); `option` names where the folder was given in an error.
-pub fn check(option: &str, folder: &Path, case: &Case) -> Result<()> {
-    prepare_output_folder(option, folder)?;
-    file_names(case).iter().try_for_each(|name| check_output_file(option, &folder.join(name)))
+/// device or a folder); `option` names where the folder was given in an error. Whether the folder was created here.
+pub fn check(option: &str, folder: &Path, case: &Case) -> Result<bool> {
+    let created = prepare_output_folder(option, folder)?;
+    file_names(case).iter().try_for_each(|name| check_output_file(option, &folder.join(name)))?;
+    Ok(created)
 }
 
 /// After the run: write the folder's files, each atomically; `record` says where the run came from and what it warned
@@ -144,7 +145,7 @@ pub fn write(
         files,
         provenance: record.provenance,
         report,
-        scenario,
+        scenario: scenario::AsRan(scenario),
         text: crate::output::Output::text(report),
         warnings: record.warnings,
     };

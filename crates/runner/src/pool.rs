@@ -263,9 +263,13 @@ fn case_speed_pairs(cases: usize, speeds: &[f64]) -> Vec<(usize, f64)> {
     (0..cases).flat_map(|c| speeds.iter().map(move |&v| (c, v))).collect()
 }
 
-/// A case on a foundation fitted to the ground runs at the speed it was fitted at only: a sweep over others is refused
-/// before any run (each would fail alone).
+/// A case on a foundation fitted to the ground runs at the speed it was fitted at only, and a given speed profile sets
+/// its speeds itself: a sweep over other speeds is refused before any run (each would fail alone).
 fn check_fitted(case: &Case, speeds: &[f64]) -> Result<()> {
+    let moving = &case.settings.moving;
+    if let (Some(&v), false, None) = (speeds.first(), moving.profile.is_empty(), moving.acceleration) {
+        moving.at_speed(v)?;
+    }
     match case.ground_fit {
         Some(fit) if speeds.iter().any(|&v| v != fit.speed) => {
             Err(scenario::Scenario::sweep_on_the_ground(format!("fitted at {} m/s", fit.speed)))

@@ -10,7 +10,7 @@ use fem_beam::modal_band::BandLimit;
 use fem_beam::{AbsorbingZones, BeamModel, Foundation, FoundationLaw, Mesh};
 use nscd::SolverSettings;
 use track::PlacedInteractions;
-use track::simulation::{IntegrationSettings, MovingLoadSettings, RecordSettings};
+use track::simulation::{IntegrationSettings, MovingLoadSettings, RecordSettings, SpeedLimit};
 use track::{BallastOnBeam, DeviceLayout, Devices, DistributedFriction, FoundationSections, Quadrature};
 use track::{InitialState, Load, RunSettings};
 
@@ -222,6 +222,11 @@ impl Scenario {
                 "belongs to a tensionless or bilinear soil: a linear one needs no soil sections and no settlement",
             ));
         }
+        if f.law != FoundationLawKind::Linear && f.stiffness == 0.0 {
+            // No soil: a nonlinear law of zero stiffness would be sections that carry nothing (and a compliant stop
+            // of zero stiffness is no stop); the span rests on its supports alone (said by `soil_of_no_stiffness`).
+            return Ok(PlacedInteractions::new());
+        }
         // Unsettled: placed_on settles the soil with the sleepers under the one weight.
         let sections =
             FoundationSections { subdivisions: f.subdivisions, self_weight: false, ..FoundationSections::default() };
@@ -278,6 +283,17 @@ impl Scenario {
     /// reference case (`frictrack reference` and `analytic` on a scenario); on sleepers their long-wave continuous
     /// twin ([`Scenario::uniform_support`]).
     pub fn reference_case(&self) -> Result<analytic::reference::ReferenceCase> {
+        if self.ground.is_some() {
+            // The closed forms are of a beam on a Winkler spring; a spring fitted to the ground at one speed would
+            // answer another speed (and the static load) wrongly without saying so.
+            return Err(invalid(
+                "ground",
+                "given",
+                "the closed forms take a Winkler [foundation], not a layered [ground]: for the exact steady wave on \
+                 the ground use `frictrack stationary SCENARIO --speed V`, for its critical speed `frictrack ground \
+                 SCENARIO`",
+            ));
+        }
         finite_non_negative("load.force", self.load.force, "N")?;
         let model = self.uniform_support("the closed form")?.0.model()?;
         Ok(analytic::reference::ReferenceCase {
@@ -424,7 +440,8 @@ impl Scenario {
             (None, None) => Load::Force(self.load.force),
         };
         let travel = (initial.load_position(), reach + load.length());
-        let moving = MovingLoadSettings { speed, profile: Vec::new(), acceleration: None, load, initial };
+        let speed_limit = self.fastest_ground_wave.map_or(SpeedLimit::BarWave, SpeedLimit::FastestGroundWave);
+        let moving = MovingLoadSettings { speed, profile: Vec::new(), acceleration: None, load, initial, speed_limit };
         Ok(RunSettings {
             moving: self.load.speed_change(moving, travel)?,
             integration: IntegrationSettings {

@@ -109,6 +109,9 @@ pub fn warnings(scenario: &Scenario, case: &Case) -> Vec<Warning> {
     out.extend(deck_resolution(case));
     out.extend(sleeper_resolution(case));
     out.extend(damping_without_soil(scenario));
+    out.extend(embankment_on_the_default_soil(scenario));
+    out.extend(soil_of_no_stiffness(scenario));
+    out.extend(scenario.ground_warnings());
     out.extend(rigid_contact_damping(case));
     out.extend(timoshenko_sawtooth(case));
     out.extend(articulated_cars(scenario, case));
@@ -406,6 +409,43 @@ fn damping_without_soil(scenario: &Scenario) -> Option<Warning> {
             "is a ratio of the soil's critical damping 2√(k_f ρA), which is 0 with foundation.stiffness = 0: it damps \
              nothing; {instead}"
         ),
+    })
+}
+
+/// The two-beam track with neither a `[ground]` nor a `[foundation]` of its own: its embankment rests on the reference
+/// case's soil (k_f = 250 kN/m², undamped), a default that sets the track's stiffness and critical speed, said as
+/// every such default is.
+fn embankment_on_the_default_soil(scenario: &Scenario) -> Option<Warning> {
+    if scenario.embankment.is_none() || scenario.ground.is_some() {
+        return None;
+    }
+    let soil = &scenario.foundation;
+    if *soil != crate::FoundationSection::default() {
+        return None;
+    }
+    Some(Warning {
+        field: "foundation".into(),
+        value: "not given".into(),
+        message: format!(
+            "the [embankment] rests on the reference case's soil, k_f = {} N/m² with no damping: give the soil under \
+             it as a [foundation] (k_f, damping) or a layered [ground]",
+            crate::number::number(soil.stiffness)
+        ),
+    })
+}
+
+/// A tensionless or bilinear soil of zero stiffness: no soil at all (a span with no soil under it), so its law acts
+/// on nothing — run as such, and said.
+fn soil_of_no_stiffness(scenario: &Scenario) -> Option<Warning> {
+    let soil = &scenario.foundation;
+    if soil.law == crate::sections::FoundationLawKind::Linear || soil.stiffness != 0.0 || scenario.ground.is_some() {
+        return None;
+    }
+    Some(Warning {
+        field: "foundation.law".into(),
+        value: format!("{:?}", soil.law).to_lowercase(),
+        message: "acts on no soil with foundation.stiffness = 0: the beam rests on its supports (and sleepers) alone"
+            .into(),
     })
 }
 

@@ -177,11 +177,7 @@ impl crate::Scenario {
             return Err(missing("ground", "a [ground] section: the layered ground under the track"));
         };
         if self.foundation != crate::FoundationSection::default() {
-            return Err(invalid(
-                "foundation",
-                "given",
-                "a [ground] replaces the Winkler [foundation]: remove one of the two tables",
-            ));
+            return Err(foundation_beside_ground());
         }
         self.beam.validate()?;
         if self.beam.shear_stiffness().is_some() {
@@ -297,19 +293,27 @@ impl crate::Scenario {
         if !(speed.is_finite() && speed >= 0.0) {
             return Err(invalid("load.speed", speed, "must be finite and ≥ 0 (m/s)"));
         }
+        Self::check_speed_on(&strip, "load.speed", speed)?;
         let mut fitted = self.clone();
         fitted.ground = None;
         fitted.load.carries = Some(self.axle_share());
+        if track == GroundTrack::Composite {
+            fitted.fastest_ground_wave = Some(fastest_wave(&strip));
+        }
+        if let GroundTrack::RailOnEmbankment { interface: Interface::Tensionless { .. }, .. } = track {
+            return Err(Self::tensionless_interface_in_time());
+        }
+        // Every key of the run checked before the fit (seconds on a soft site): the run on a stand-in spring in the
+        // fit's place, built and dropped — a bad sleeper spacing is refused at once, not after the fit.
+        let stand_in = crate::FoundationSection { stiffness: 1e6, damping: Some(0.0), ..fitted.foundation.clone() };
+        Self { foundation: stand_in, ..fitted.clone() }.build()?;
         let fit = match track {
             GroundTrack::Composite => {
                 let fit = analytic::ground::GroundedBeam::new(&beam, &strip)?.fitted_foundation(speed)?;
                 fitted.beam.density += fit.co_vibrating_mass / beam.area;
                 fit
             }
-            GroundTrack::RailOnEmbankment { sleepers, embankment, interface } => {
-                if interface != Interface::Bonded {
-                    return Err(Self::tensionless_interface_in_time());
-                }
+            GroundTrack::RailOnEmbankment { sleepers, embankment, .. } => {
                 let twin = fem_beam::Sleepers { exceptions: Vec::new(), ..sleepers };
                 let track = analytic::ground::TrackOnEmbankment { sleepers: &twin, embankment, ground: &strip };
                 let fit = track.fitted_ground(&beam, speed)?;
@@ -324,6 +328,51 @@ impl crate::Scenario {
         fitted.foundation.damping = Some(fit.damping);
         Ok((fitted, fit))
     }
+}
+
+impl crate::Scenario {
+    /// Refuse, by `key`, a `speed` (m/s) on this scenario's ground that no load can mean: at or above the ground's
+    /// fastest wave ([`fastest_wave`]). Checked before any spectrum or fit is computed.
+    pub fn check_speed_on_the_ground(&self, key: &str, speed: f64) -> Result<()> {
+        let (_, strip, _) = self.track_and_ground()?;
+        Self::check_speed_on(&strip, key, speed)
+    }
+
+    fn check_speed_on(strip: &StripGround, key: &str, speed: f64) -> Result<()> {
+        let fastest = fastest_wave(strip);
+        if speed >= fastest {
+            return Err(invalid(
+                key,
+                speed,
+                format!(
+                    "must be below the ground's fastest wave, its largest compression wave speed C_p = {fastest:.0} \
+                     m/s: faster than every wave of the model no train is meant (railway speeds are below 200 m/s)"
+                ),
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// The fastest wave of `strip`'s ground (m/s): the largest compression wave speed C_p of its layers and half-space.
+pub fn fastest_wave(strip: &StripGround) -> f64 {
+    strip.profile.materials().map(|m| m.compression_wave_speed).fold(0.0, f64::max)
+}
+
+/// The refusal, by key, of a `[foundation]` table written beside a `[ground]` in the scenario's `text` — even one
+/// that repeats the defaults, which [`crate::Scenario`] could not tell from no table at all: the ground replaces the
+/// Winkler foundation, so a table there would be ignored.
+pub(crate) fn refuse_tables_beside_ground(text: &str) -> Result<()> {
+    let Ok(table) = text.parse::<toml::Table>() else { return Ok(()) };
+    if table.contains_key("foundation") {
+        return Err(foundation_beside_ground());
+    }
+    Ok(())
+}
+
+/// A `[foundation]` given beside a `[ground]`, refused by its key.
+fn foundation_beside_ground() -> crate::StudyError {
+    invalid("foundation", "given", "a [ground] replaces the Winkler [foundation]: remove one of the two tables")
 }
 
 /// A required key that is not there.

@@ -12,11 +12,14 @@
 //!   [`units`]: speeds in m/s or km/h; [`quantities`]: every output quantity with its SI unit, the one list every
 //!   table's columns take their units from, and every figure's axis its label ([`axis`]).
 //! - [`diagnostics`] and [`plausibility`]: refusals and warnings about a scenario before any run.
-//! - [`ground`]: `[ground]`, the layered ground under the track and its checks.
+//! - [`ground`]: `[ground]`, the layered ground under the track and its checks ([`ground_plausibility`]: the values
+//!   no site has, warned of); [`AsRan`]: a scenario as its
+//!   reports show it (without the `[foundation]` a ground replaces).
 //! - [`speeds`] and [`trains`]: the speed scale of a case (v_cr, default sweeps) and the train catalogue.
 //! - [`error`]: the error type of the crates above this one, every message naming the field, its value and what is
 //!   allowed; [`number`]: numbers as result files and messages print them.
 
+mod as_ran;
 pub mod axis;
 mod build;
 pub mod contact;
@@ -25,6 +28,7 @@ pub mod diagnostics;
 pub mod embankment;
 pub mod error;
 pub mod ground;
+pub mod ground_plausibility;
 pub mod load_section;
 mod long_wave_twin;
 pub mod number;
@@ -43,6 +47,7 @@ pub mod units;
 pub mod vehicle;
 mod warning;
 
+pub use as_ran::AsRan;
 pub use build::RESULT_FORMAT;
 pub use error::{Result, StudyError};
 pub use rail::RailSection;
@@ -105,6 +110,11 @@ pub struct Scenario {
     pub co_moving: Option<CoMovingSection>,
     /// What is recorded.
     pub output: OutputSection,
+    /// Set on the scenario a run in time takes for a composite beam on a `[ground]` ([`Scenario::on_fitted_foundation`]):
+    /// the ground's fastest wave (m/s), the speed limit in place of the composite beam's bar wave √(E/ρ), which is a
+    /// section convention. Not a key of the file.
+    #[serde(skip)]
+    pub fastest_ground_wave: Option<f64>,
 }
 
 /// A scenario turned into what the stepper runs.
@@ -130,7 +140,7 @@ pub struct Case {
 impl Scenario {
     /// Parse TOML; `source_name` (a file name) prefixes syntax errors with line and column.
     pub fn from_toml(text: &str, source_name: &str) -> Result<Self> {
-        toml::from_str(text).map_err(|e| {
+        let scenario: Self = toml::from_str(text).map_err(|e| {
             let offset = e.span().map_or(0, |span| span.start);
             let (line, column) = line_column(text, offset);
             let message = e.message().trim();
@@ -139,7 +149,11 @@ impl Scenario {
                 None => format!("{message}{}", did_you_mean(message)),
             };
             StudyError::Syntax { source_name: source_name.into(), line, column, message }
-        })
+        })?;
+        if scenario.ground.is_some() {
+            ground::refuse_tables_beside_ground(text)?;
+        }
+        Ok(scenario)
     }
 
     /// Parse a scenario given as JSON (a Python dict, a web form): the same keys as the TOML file, checked by the

@@ -35,8 +35,23 @@ pub struct LoadSection {
     pub acceleration: Option<f64>,
     /// `[[x, v], …]` (m, m/s): the first axle's speed over its position, changing at constant acceleration between
     /// knots (v² linear in x) and held outside them — for trains that change speed more than once; replaces `speed`.
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(skip_serializing_if = "Option::is_none", deserialize_with = "knots")]
     pub speed_profile: Option<Vec<[f64; 2]>>,
+}
+
+/// A `speed_profile`'s knots, each exactly two numbers `[x, v]`: a knot of another length is refused (an array
+/// would take the first two and drop the rest in silence).
+fn knots<'de, D: serde::Deserializer<'de>>(deserializer: D) -> std::result::Result<Option<Vec<[f64; 2]>>, D::Error> {
+    let rows = Vec::<Vec<f64>>::deserialize(deserializer)?;
+    let pair = |(i, row): (usize, Vec<f64>)| match row[..] {
+        [x, v] => Ok([x, v]),
+        _ => Err(serde::de::Error::custom(format!(
+            "knot {} has {} numbers: each knot is [x, v], a position (m) and the speed there (m/s)",
+            i + 1,
+            row.len()
+        ))),
+    };
+    rows.into_iter().enumerate().map(pair).collect::<std::result::Result<Vec<_>, _>>().map(Some)
 }
 
 impl Default for LoadSection {

@@ -201,10 +201,27 @@ impl OverrideSpec {
             (_, OverrideValue::Count(n)) => Ok(*n as f64),
             (OverrideKind::Speed, OverrideValue::Text(t)) => parse_speed(t)
                 .map_err(|_| invalid(self.name, value, "must be a speed: m/s (100, \"100m/s\") or km/h (\"360km/h\")")),
-            (OverrideKind::Speed, _) => {
-                Err(invalid(self.name, value, "must be a speed: a number (m/s) or text with its unit"))
+            (OverrideKind::Number { unit }, OverrideValue::Text(t)) if !unit.is_empty() => {
+                crate::units::parse_in(t, unit).map_err(|_| invalid(self.name, value, self.takes()))
             }
-            _ => Err(invalid(self.name, value, "must be a number")),
+            _ => Err(invalid(self.name, value, self.takes())),
+        }
+    }
+
+    /// What the override's value must be, in words (for an error about a value of another kind).
+    pub fn takes(&self) -> String {
+        match self.kind {
+            OverrideKind::Speed => {
+                "must be a speed: a number (m/s) or text with its unit (\"100m/s\", \"360km/h\")".into()
+            }
+            OverrideKind::Number { unit: "" } => "must be a number".into(),
+            OverrideKind::Number { unit } => {
+                format!("must be a number in {unit}, or text with that unit (\"-0.5{}\")", unit.replace('²', "2"))
+            }
+            OverrideKind::Count => "must be a whole number ≥ 0".into(),
+            OverrideKind::Text => "must be text".into(),
+            OverrideKind::Solver => format!("must be one of {}", SolverKind::ALL.map(SolverKind::name).join(", ")),
+            OverrideKind::Pair { unit } => format!("must be two numbers [A, B] ({unit})"),
         }
     }
 
@@ -344,8 +361,21 @@ impl Overrides {
     }
 
     /// `scenario` with the overrides applied; its title, if it has one, says which of them change what runs.
-    pub fn apply(&self, mut s: Scenario) -> Scenario {
+    /// Refused by key: a speed beside the scenario's `load.speed_profile`, which sets the speeds itself (taking the
+    /// speed would title the run with a speed it never ran at).
+    pub fn apply(&self, mut s: Scenario) -> Result<Scenario> {
         if let Some(v) = self.speed {
+            if s.load.speed_profile.is_some() {
+                return Err(invalid(
+                    "load.speed_profile",
+                    "given",
+                    format!(
+                        "sets the load's speeds itself, so the speed asked for ({} m/s) would not run: leave the \
+                         speed out, or the profile",
+                        crate::number::number(v)
+                    ),
+                ));
+            }
             s.load.speed = v;
         }
         if let Some(a) = self.acceleration {
@@ -412,7 +442,7 @@ impl Overrides {
         if !s.title.is_empty() && !changed.is_empty() {
             s.title = format!("{} (run with {})", s.title, changed.join(" "));
         }
-        s
+        Ok(s)
     }
 
     /// The overrides given that change the loads, the speed, the friction or the damping, as `--flag value`.
@@ -451,7 +481,7 @@ mod tests {
         assert!(fractional.contains("devices") && fractional.contains("whole"), "{fractional}");
         let text = o.set("device_force", OverrideValue::Text("strong".into())).unwrap_err().to_string();
         assert!(text.contains("device_force") && text.contains("number"), "{text}");
-        let scenario = o.apply(Scenario { title: "case".into(), ..Scenario::default() });
+        let scenario = o.apply(Scenario { title: "case".into(), ..Scenario::default() }).unwrap();
         assert_eq!(scenario.load.speed, 150.0);
         assert_eq!(scenario.title, "case (run with --speed 150 --devices 31)");
     }

@@ -33,22 +33,38 @@ pub fn input_warnings(scenario: &Scenario, case: &Case) -> Vec<Warning> {
     let mut out = Vec::new();
     out.extend(heavy_loads(case));
     if let Ok(SpeedScale { critical_speed: Some(v_cr), .. }) = SpeedScale::of(scenario) {
-        let v = case.settings.moving.speed;
-        if v > CRITICAL_SPEED_MULTIPLE * v_cr {
-            out.push(Warning {
-                field: "load.speed".into(),
-                value: format!("{} m/s", number(v)),
-                message: format!(
-                    "is {:.1} × the critical speed v_cr = {v_cr:.1} m/s, above {CRITICAL_SPEED_MULTIPLE} v_cr: far \
-                     beyond railway speeds and beyond where a Winkler foundation (no inertia, no waves of its own) \
-                     stands for a soil; the numbers are the model's, not the track's",
-                    v / v_cr
-                ),
-            });
-        }
+        out.extend(beyond_the_critical_speed(&case.settings.moving, v_cr));
     }
     out.extend(steep_rail(case));
     out
+}
+
+/// A speed above [`CRITICAL_SPEED_MULTIPLE`]·`v_cr` (m/s) anywhere in the run: an accelerating load's or a profile's
+/// fastest (named by the key that sets it), not only its speed at x = 0.
+fn beyond_the_critical_speed(moving: &track::simulation::MovingLoadSettings, v_cr: f64) -> Option<Warning> {
+    let v = moving.largest_speed();
+    if v <= CRITICAL_SPEED_MULTIPLE * v_cr {
+        return None;
+    }
+    let (field, value, verb) = match (moving.speed_setting(), moving.acceleration) {
+        (track::Setting::Acceleration, Some(a)) => {
+            ("load.acceleration", format!("{} m/s²", number(a)), format!("brings the load to {} m/s,", number(v)))
+        }
+        (track::Setting::SpeedProfile, _) => {
+            ("load.speed_profile", "given".into(), format!("brings the load to {} m/s,", number(v)))
+        }
+        _ => ("load.speed", format!("{} m/s", number(v)), "is".into()),
+    };
+    Some(Warning {
+        field: field.into(),
+        value,
+        message: format!(
+            "{verb} {:.1} × the critical speed v_cr = {v_cr:.1} m/s, above {CRITICAL_SPEED_MULTIPLE} v_cr: far beyond \
+             railway speeds and beyond where a Winkler foundation (no inertia, no waves of its own) stands for a soil; \
+             the numbers are the model's, not the track's",
+            v / v_cr
+        ),
+    })
 }
 
 /// Loads above [`LOAD_LIMIT`]: the single load, a train's axles as the beam carries them, vehicles' static wheel

@@ -218,3 +218,21 @@ fn reproduce_records_a_study_that_cannot_run_on_the_scenario() {
     assert_eq!(sections, 9, "{report}");
     assert!(out_dir.join("vehicle-speed.csv").exists() && !out_dir.join("discrete-vs-distributed.csv").exists());
 }
+
+/// A 20 m deck on a tensionless soil of zero stiffness (no soil under the span) stopped with "non-finite state at step
+/// 2" whatever θ or solver: its soil sections were compliant stops of zero stiffness. It runs, says the law acts on
+/// no soil, and gives the span on its supports alone — the linear deck's answer to the bit.
+#[test]
+fn a_tensionless_soil_of_zero_stiffness_is_no_soil() {
+    let dir = temporary_folder("no-soil");
+    let example = concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/hslm-bridge.toml");
+    let deck = std::fs::read_to_string(example).unwrap();
+    let tensionless =
+        write_file(&dir, "deck.toml", &deck.replace("stiffness = 0.0", "stiffness = 0.0\nlaw = \"tensionless\""));
+    let out = frictrack(&["run", &tensionless, "--format", "json"]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("warning: foundation.law = tensionless: acts on no soil"), "{stderr}");
+    let on_nothing = json(&out);
+    let linear = json(&frictrack(&["run", example, "--format", "json"]));
+    assert_eq!(on_nothing["max_downward_deflection"], linear["max_downward_deflection"]);
+}

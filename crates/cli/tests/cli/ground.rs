@@ -158,6 +158,12 @@ fn ground_on_the_two_beam_track() {
     let two_beam = numbers("ledsgard-two-beam.toml");
     assert_eq!(two_beam["track"], "rail on sleepers over the embankment");
     let value = |v: &serde_json::Value, name: &str| v[name].as_f64().unwrap();
+    // The site's loads are the X2000: the one load is its heaviest axle (181 kN), half of it on one rail — not the
+    // default 83.4 kN force the scenario does not give — and the warning and the title say so.
+    assert_eq!(value(&two_beam, "force"), 90_500.0);
+    let warnings = two_beam["warnings"].as_array().unwrap();
+    assert!(warnings.iter().any(|w| w.as_str().unwrap().contains("heaviest axle of the scenario's train")));
+    assert!(two_beam["title"].as_str().unwrap().ends_with("one 90 kN axle, not the train"), "{}", two_beam["title"]);
     let critical = value(&two_beam, "critical_speed");
     assert!((critical - 54.65).abs() < 0.01, "{critical}");
     // The composite beam's on the same site: 56.50 m/s (pinned by study/tests/ledsgard.rs), its control 104.87 m/s.

@@ -13,6 +13,7 @@ mod ground_lift_off;
 mod ground_two_beam_friction;
 mod ground_two_beam_run;
 mod ground_wave;
+mod no_silent_substitutions;
 mod receptance;
 mod report;
 mod run_out;
@@ -23,6 +24,7 @@ mod timoshenko;
 mod track_profile;
 mod trains;
 mod trust;
+mod validate_first;
 mod variable_speed;
 mod vehicles;
 

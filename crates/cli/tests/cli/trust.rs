@@ -119,3 +119,20 @@ fn clarabel_runs_and_large_receptances_are_announced_before_they_start() {
         assert_eq!(output.status.code(), Some(130), "{args:?}: {stderr}");
     }
 }
+
+/// `frictrack ground --out DIR` interrupted said "nothing was kept (no --out)" and left an empty folder: it says
+/// nothing was written and removes the folder it created, untouched; a folder that was there before stays.
+#[test]
+fn an_interrupted_ground_leaves_no_empty_folder_and_says_so() {
+    let site = concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/soft-ground.toml");
+    let dir = temporary_folder("ground-interrupted");
+    let out = dir.join("new");
+    let (output, _) = terminated_while_running(&["ground", site, "--out", out.to_str().unwrap()]);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(130), "{stderr}");
+    assert!(stderr.contains("nothing was written") && !stderr.contains("no --out"), "{stderr}");
+    assert!(!out.exists(), "{stderr}");
+    let (output, _) = terminated_while_running(&["ground", site, "--out", dir.to_str().unwrap()]);
+    assert_eq!(output.status.code(), Some(130));
+    assert!(dir.is_dir());
+}

@@ -21,6 +21,7 @@ from pathlib import Path
 from typing import Any, Callable, Dict, Mapping, Optional, Sequence, Union
 
 from . import _native
+from ._args import _domain, _jobs, _numbers, _path, _place, _speeds
 from ._progress import ProgressLike, _Reporter
 from ._report import report
 from ._tables import Table, parse_csv
@@ -54,42 +55,6 @@ def _source(scenario: ScenarioLike) -> "tuple[str, Optional[str]]":
             return "toml", scenario
         return "path", scenario
     raise TypeError(f"scenario must be None, a path, a TOML string or a dict, not {type(scenario).__name__}")
-
-
-def _numbers(name: str, values: Any, what: str, example: str) -> "list[float]":
-    """``values`` as a list of floats: one number or any iterable of numbers; anything else (text, None, a bool) is an
-    InputError naming the argument ``name``, what it takes (``what``) and an ``example``."""
-    if isinstance(values, (int, float)) and not isinstance(values, bool):
-        return [float(values)]
-    try:
-        if values is None or isinstance(values, (str, bytes, bool)):
-            raise TypeError
-        return [float(v) for v in values]
-    except (TypeError, ValueError):
-        raise InputError(f"invalid {name} = {values!r}: must be {what} or a sequence of them, e.g. {example}") from None
-
-
-def _speeds(speeds: "Union[float, Sequence[float]]") -> "list[float]":
-    """Speeds (m/s) as a list: one number or any iterable of numbers; anything else is an InputError naming it."""
-    return _numbers("speeds", speeds, "a speed in m/s", "200.0 or [100.0, 200.0]")
-
-
-def _place(name: str, value: Any) -> Optional[float]:
-    """A position along the track (m) or None; anything else is an InputError naming the argument."""
-    if value is None:
-        return None
-    if isinstance(value, (int, float)) and not isinstance(value, bool):
-        return float(value)
-    raise InputError(f"invalid {name} = {value!r}: must be a position along the track in m (a number), or None")
-
-
-def _jobs(jobs: Optional[int]) -> int:
-    """Worker threads: None or 0 for every core, else a whole number ≥ 1; anything else is an InputError."""
-    if jobs is None:
-        return 0
-    if isinstance(jobs, int) and not isinstance(jobs, bool) and jobs >= 0:
-        return jobs
-    raise InputError(f"invalid jobs = {jobs!r}: must be a whole number ≥ 1 of threads, or 0 or None for every core")
 
 
 # The overrides a receptance uses: the track's damping, mesh and absorbing zones; a load's (speed, train, friction,
@@ -139,8 +104,9 @@ class Run:
         if self.folder is None:
             raise InputError("invalid out = None: a run's report is made from its folder; run it with out=DIR "
                              "(frictrack.run(..., out='results')), then call report_html()")
-        if out is not None:
-            _native.write_report(os.fspath(self.folder), os.fspath(out))
+        target = _path("out", out, "a file path for the HTML report")
+        if target is not None:
+            _native.write_report(os.fspath(self.folder), target)
         return _native.report_html(os.fspath(self.folder))
 
     def __str__(self) -> str:
@@ -171,11 +137,12 @@ def run(
     standard error is a terminal.
     """
     kind, text = _source(scenario)
+    folder = _path("out", out, "a folder path")
     given = [] if scenario is None else ["{…}" if isinstance(scenario, Mapping) else repr(scenario)]
-    given += [f"{k}={v!r}" for k, v in overrides.items()] + ([] if out is None else [f"out={os.fspath(out)!r}"])
+    given += [f"{k}={v!r}" for k, v in overrides.items()] + ([] if folder is None else [f"out={folder!r}"])
     with _Reporter(progress, "run") as report:
         summary, lines, histories, snapshots, wheels, warnings = _native.run(
-            kind, text, list(overrides.items()), report, None if out is None else os.fspath(out),
+            kind, text, list(overrides.items()), report, folder,
             f"frictrack.run({', '.join(given)}) (Python)",
         )
     return Run(
@@ -266,10 +233,10 @@ def stationary(scenario: ScenarioLike = None, speeds: Sequence[float] = (),
     upward positive) sets a record beside the wave at one speed, as ``--measured`` does. Overrides and ``progress``
     (the fraction of speeds done) as for :func:`run`; Ctrl-C stops it before its next speed."""
     kind, text = _source(scenario)
-    behind, ahead = (None, None) if domain is None else (float(x) for x in domain)
-    length = None if element_length is None else float(element_length)
+    behind, ahead = _domain(domain)
+    length = None if element_length is None else _numbers("element_length", element_length, "a length in m", "0.25")[0]
+    record = _path("measured", measured, "a CSV file of x_m,displacement_mm")
     with _Reporter(progress, "stationary") as report:
-        record = None if measured is None else os.fspath(measured)
         points, lines, waves, warnings, columns, compared = _native.stationary(
             kind, text, _speeds(speeds), (behind, ahead, length), list(overrides.items()), report, record
         )
@@ -348,7 +315,7 @@ def receptance(scenario: ScenarioLike = None, frequencies: Sequence[float] = (),
     kind, text = _source(scenario)
     summary, table, report, warnings = _native.receptance(
         kind, text, frequencies, _place("at", at), _place("excite", excite), _jobs(jobs), list(overrides.items()),
-        None if out is None else os.fspath(out),
+        _path("out", out, "a folder path"),
     )
     for warning in warnings:
         _warnings.warn(warning, stacklevel=2)
@@ -399,7 +366,7 @@ def ground(scenario: ScenarioLike, frequencies: Optional[Sequence[float]] = None
         frequencies = _numbers("frequencies", frequencies, "a frequency in Hz", "range(1, 51)")
     kind, text = _source(scenario)
     summary, _table, report, warnings = _native.ground(
-        kind, text, frequencies, _jobs(jobs), None if out is None else os.fspath(out)
+        kind, text, frequencies, _jobs(jobs), _path("out", out, "a folder path")
     )
     for warning in warnings:
         _warnings.warn(warning, stacklevel=2)

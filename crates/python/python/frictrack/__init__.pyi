@@ -91,7 +91,7 @@ def run(
 
 def sweep(
     scenario: ScenarioLike = None,
-    speeds: Union[float, Sequence[float]] = ...,
+    speeds: Union[float, str, Sequence[Union[float, str]]] = ...,
     jobs: Optional[int] = None,
     progress: ProgressLike = None,
     **overrides: Any,
@@ -100,7 +100,7 @@ def sweep(
 
 def analytic(
     scenario: ScenarioLike = None,
-    speeds: Union[float, Sequence[float]] = ...,
+    speeds: Union[float, str, Sequence[Union[float, str]]] = ...,
     damping_ratio: Optional[float] = None,
     train: Optional[str] = None,
 ) -> List[Dict[str, Any]]:
@@ -121,7 +121,7 @@ class Stationary:
 
 def stationary(
     scenario: ScenarioLike = None,
-    speeds: Union[float, Sequence[float]] = ...,
+    speeds: Union[float, str, Sequence[Union[float, str]]] = ...,
     domain: Optional[Sequence[float]] = None,
     element_length: Optional[float] = None,
     progress: ProgressLike = None,

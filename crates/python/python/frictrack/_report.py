@@ -7,6 +7,7 @@ from pathlib import Path
 from typing import Optional, Union
 
 from . import _native
+from ._args import _path
 
 PathLike = Union[str, "os.PathLike[str]"]
 
@@ -17,10 +18,17 @@ def report(folder: PathLike, out: Optional[PathLike] = None) -> Path:
     tables and verdicts, every warning, the scenario as it ran, the command, frictrack's version and commit, the
     date, a table of contents and a print stylesheet. ``out`` defaults to ``folder/report.html``; returns the path
     written. A folder of neither kind raises :class:`InputError` naming it."""
-    written = _native.write_report(os.fspath(folder), None if out is None else os.fspath(out))
+    source = _path("folder", folder, "a result folder")
+    if source is None:
+        raise _native.InputError("invalid folder = None: must be a result folder (written by run --out, study --out, "
+                                 "reproduce --out or frictrack.run(out=...))")
+    written = _native.write_report(source, _path("out", out, "a file path for the HTML report"))
     return Path(written)
 
 
 def report_html(folder: PathLike) -> str:
     """The report of ``folder`` (as :func:`report` writes it) as HTML text."""
-    return _native.report_html(os.fspath(folder))
+    source = _path("folder", folder, "a result folder")
+    if source is None:
+        raise _native.InputError("invalid folder = None: must be a result folder")
+    return _native.report_html(source)

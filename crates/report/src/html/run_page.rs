@@ -48,7 +48,7 @@ fn key_results(report: &Value) -> String {
         "speed",
         f("speed").map(number),
         "m/s",
-        f("speed").map_or(String::new(), |v| format!("{} km/h", number(v * 3.6))),
+        f("speed").map_or(String::new(), |v| format!("{} km/h", number(v * scenario::units::KMH))),
     );
     row("load", f("load").map(|v| number(v / 1e3)), "kN", String::new());
     row("critical speed of the infinite track", f("critical_speed").map(number), "m/s", String::new());

@@ -17,14 +17,14 @@ pub fn studies_page(folder: &Path, studies: &[Value], markdown: Option<&str>) ->
         sections.push(study_section(folder, study, &mut figures)?);
     }
     // One scenario for all when they share it (reproduce), else each study shows its own.
-    let first = &studies[0]["scenario"];
-    if studies.iter().all(|s| &s["scenario"] == first) {
+    let first = scenarios_text(&studies[0]);
+    if studies.iter().all(|s| scenarios_text(s) == first) {
         let heading = if studies.len() == 1 { "The scenario it ran on" } else { "The scenario the studies ran on" };
-        sections.push(Section::new("scenario", heading, pre(&scenario_toml(first))));
+        sections.push(Section::new("scenario", heading, pre(&first)));
     } else {
         for (section, study) in sections.iter_mut().zip(studies) {
             let id = format!("{}-scenario", section.id);
-            section.children.push(Section::new(id, "Scenario", pre(&scenario_toml(&study["scenario"]))));
+            section.children.push(Section::new(id, "Scenario", pre(&scenarios_text(study))));
         }
     }
     let (title, lead) = match (studies, markdown) {
@@ -33,6 +33,16 @@ pub fn studies_page(folder: &Path, studies: &[Value], markdown: Option<&str>) ->
         _ => ("frictrack studies".to_string(), String::new()),
     };
     Ok(Page { title, lead, facts: provenance_facts(&studies[0], folder), sections })
+}
+
+/// The TOML of the scenario a study ran on, and of each further one of its own (a built-in site on two tracks).
+fn scenarios_text(study: &Value) -> String {
+    let more = study["more_scenarios"].as_array().map_or(&[][..], Vec::as_slice);
+    std::iter::once(&study["scenario"])
+        .chain(more)
+        .map(scenario_toml)
+        .collect::<Vec<_>>()
+        .join("\n# ——— and the study's next scenario ———\n\n")
 }
 
 /// One study: its headline and results, figures, lines, warnings and failures, data.

@@ -159,14 +159,25 @@ impl GroundWaveStudy {
     /// Set `record` beside the wave ([`MeasuredRecord::compare`]); `field` (the option that gave it) names the
     /// refusal where the study has more than one speed (a record is one train's passage at one speed).
     pub fn compare_with(&mut self, record: &MeasuredRecord, field: &str) -> Result<()> {
-        let [wave] = self.waves.as_slice() else {
-            return Err(invalid(
-                field,
-                &record.name,
-                format!("a record is one passage at one speed: give one speed, not {}", self.waves.len()),
-            ));
-        };
-        self.comparison = Some(record.compare(wave, self.train.length(), field)?);
+        record.check_speeds(self.waves.len(), field)?;
+        if let [wave] = self.waves.as_slice() {
+            self.comparison = Some(record.compare(wave, self.train.length(), field)?);
+        }
         Ok(())
+    }
+}
+
+impl MeasuredRecord {
+    /// Refuse, by `field`, a comparison over `speeds` speeds other than one: a record is one passage at one speed.
+    /// Checked before the waves are computed, and again by [`GroundWaveStudy::compare_with`].
+    pub fn check_speeds(&self, speeds: usize, field: &str) -> Result<()> {
+        match speeds {
+            1 => Ok(()),
+            n => Err(invalid(
+                field,
+                &self.name,
+                format!("a record is one passage at one speed: give one speed, not {n}"),
+            )),
+        }
     }
 }

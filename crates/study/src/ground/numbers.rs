@@ -152,11 +152,8 @@ impl GroundStudy {
         let beam = whole_track(&rail_or_beam, &track);
         let support = Support::of(&track, &strip);
         crate::receptance::response::check_frequencies(&request.frequencies)?;
-        let force = scenario.load.force;
-        if !(force.is_finite() && force > 0.0) {
-            return Err(invalid("load.force", force, "must be finite and > 0 (N)"));
-        }
-        let mut warnings = Vec::new();
+        let mut warnings: Vec<String> = scenario.ground_warnings().iter().map(ToString::to_string).collect();
+        let (force, title) = one_load(scenario, &mut warnings)?;
         let (modes, dispersion) = soil_modes(&strip, &request.frequencies, runner)?;
         let minimum = least_phase_velocity(&strip, &dispersion, &mut warnings)?;
         // The static case, the curve, ~12 to refine its peak.
@@ -197,7 +194,7 @@ impl GroundStudy {
         let reference = critical.map_or(winkler_critical_speed, |c| c.0);
         let equivalent_stiffness = stiffness_curves(&strip, reference, runner)?;
         Ok(Self {
-            title: scenario.title.clone(),
+            title,
             track: match track {
                 GroundTrack::Composite => TrackKind::CompositeBeam,
                 GroundTrack::RailOnEmbankment { .. } => TrackKind::RailOnEmbankment,
@@ -225,6 +222,35 @@ impl GroundStudy {
             warnings,
         })
     }
+}
+
+/// The one load the critical speed is of (N, downward, as the beam carries it) and the title its figures take: the
+/// scenario's `load.force`, or on a scenario whose loads are a train its heaviest axle — said in a warning, and in
+/// the title, so that no figure names a train that did not run.
+fn one_load(scenario: &Scenario, warnings: &mut Vec<String>) -> Result<(f64, String)> {
+    let train = match scenario.vehicle {
+        None => scenario::trains::resolve(&scenario.load)?.map(|t| scenario.on_the_beam(t)),
+        Some(_) => None,
+    };
+    let heaviest = train.as_ref().and_then(|t| t.axles.iter().map(|a| a.force).reduce(f64::max));
+    let (Some(train), Some(force)) = (train.as_ref().filter(|t| t.axles.len() > 1), heaviest) else {
+        let force = heaviest.unwrap_or(scenario.load.force);
+        if !(force.is_finite() && force > 0.0) {
+            return Err(invalid("load.force", force, "must be finite and > 0 (N)"));
+        }
+        return Ok((force, scenario.title.clone()));
+    };
+    warnings.push(format!(
+        "the critical speed and the speed curve are of one load, the heaviest axle of the scenario's train {} \
+         ({:.1} kN as the beam carries it): the train's own steady wave is the stationary wave's",
+        train.name,
+        force / 1e3
+    ));
+    let title = match scenario.title.is_empty() {
+        true => format!("one {:.0} kN axle", force / 1e3),
+        false => format!("{}: one {:.0} kN axle, not the train", scenario.title, force / 1e3),
+    };
+    Ok((force, title))
 }
 
 /// The beam the quick estimates take (the static strip stiffness, the Winkler control, the dispersion crossings): the

@@ -64,9 +64,10 @@ const FILES: [&str; 11] = [
 ];
 
 /// Create `folder` if missing and check that none of the ground's files there is a link, device or directory.
-pub fn check_folder(folder: &std::path::Path, what: &str) -> scenario::error::Result<()> {
-    report::files::prepare_output_folder(what, folder)?;
-    FILES.iter().try_for_each(|name| report::files::check_output_file(what, &folder.join(name)))
+pub fn check_folder(folder: &std::path::Path, what: &str) -> scenario::error::Result<bool> {
+    let created = report::files::prepare_output_folder(what, folder)?;
+    FILES.iter().try_for_each(|name| report::files::check_output_file(what, &folder.join(name)))?;
+    Ok(created)
 }
 
 /// Every number's unit in the JSON: the tables' columns and the single numbers.

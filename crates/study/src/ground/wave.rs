@@ -43,6 +43,8 @@ pub struct GroundWaveStudy {
     pub waves: Vec<GroundWave>,
     /// A measured record beside the wave (one speed only), where one was given.
     pub comparison: Option<Comparison>,
+    /// The scenario's ground outside what a site is ([`Scenario::ground_warnings`]), as the command line prints them.
+    pub input_warnings: Vec<String>,
     /// The ballast's friction f_u (N/m), where it has any: under the composite beam, or between the sleepers and the
     /// embankment.
     pub friction: Option<f64>,
@@ -77,6 +79,9 @@ impl GroundWaveStudy {
             return Self::sharing(scenario, speeds, window, (stop, progress), &SiteSpectra::new(scenario));
         }
         let (beam, strip, track) = scenario.ground_track()?;
+        for &speed in speeds {
+            scenario.check_speed_on_the_ground("speed", speed)?;
+        }
         let train = scenario.axles_on_the_ground()?;
         let positions = window.positions(train.length())?;
         let support = Support::of(&track, &strip);
@@ -140,7 +145,51 @@ impl GroundWaveStudy {
         let beam = (beam.bending_stiffness(), beam.mass_per_length());
         let title = scenario.title.clone();
         let strip = strip.clone();
-        Ok(Self { title, beam, strip, track: track.clone(), train, points, waves, comparison: None, friction })
+        let input_warnings = scenario.ground_warnings().iter().map(ToString::to_string).collect();
+        Ok(Self {
+            title,
+            beam,
+            strip,
+            track: track.clone(),
+            train,
+            points,
+            waves,
+            comparison: None,
+            friction,
+            input_warnings,
+        })
+    }
+}
+
+impl GroundWaveStudy {
+    /// The scenario's ground outside what a site is, then the speeds whose largest downward or upward deflection lies
+    /// at an end of the window (within a point's spacing
+    /// of it), one sentence each: the wave there is still growing towards the end, so the window's extreme is not the
+    /// wave's — widen the window on that side (`domain`).
+    pub fn warnings(&self) -> Vec<String> {
+        let mut out = self.input_warnings.clone();
+        for (point, wave) in self.points.iter().zip(&self.waves) {
+            let (Some(&first), Some(&last)) = (wave.s.first(), wave.s.last()) else { continue };
+            for (what, extreme) in
+                [("downward", &point.deflection.max_downward), ("upward", &point.deflection.max_upward)]
+            {
+                let Some(s) = extreme.position.filter(|_| extreme.value > 0.0) else { continue };
+                let side = if s - first < WAVE_STEP {
+                    "behind the train (domain A of A:B)"
+                } else if last - s < WAVE_STEP {
+                    "ahead of the train (domain B of A:B)"
+                } else {
+                    continue;
+                };
+                out.push(format!(
+                    "at {} m/s the largest {what} deflection, {:.3} mm, lies at the window's end s = {s:.2} m: the \
+                     wave still grows towards it, so the wave's own extreme lies beyond; widen the window {side}",
+                    scenario::number::number(point.speed),
+                    extreme.value * 1e3
+                ));
+            }
+        }
+        out
     }
 }
 

@@ -96,6 +96,8 @@ pub struct GroundWaveFile<'a> {
     pub force_per_length: Option<f64>,
     /// One point per speed.
     pub points: &'a [GroundWavePoint],
+    /// What the points give warning of ([`GroundWaveStudy::warnings`]), as the command line prints them.
+    pub warnings: Vec<String>,
     /// The measured record beside the wave, where one was given.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub measured: Option<&'a Comparison>,
@@ -178,6 +180,7 @@ impl GroundWaveStudy {
             axles: self.train.axles.iter().map(|a| AxleRow { offset: a.offset, force: a.force }).collect(),
             force_per_length: self.friction,
             points: &self.points,
+            warnings: self.warnings(),
             measured: self.comparison.as_ref(),
             units: units(),
             frictrack_version: env!("CARGO_PKG_VERSION"),

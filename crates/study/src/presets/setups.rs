@@ -62,6 +62,7 @@ pub(super) fn blank(runs: usize) -> StudyData {
         mean_iterations: 0.0,
         columns: Vec::new(),
         failures: Vec::new(),
+        ran_on: Vec::new(),
     }
 }
 

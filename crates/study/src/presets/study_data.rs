@@ -32,6 +32,10 @@ pub struct StudyData {
     pub mean_iterations: f64,
     /// The CSV's columns with their units, in order.
     pub columns: Vec<(String, &'static str)>,
+    /// The scenarios the study ran on where they are its own (a built-in site), not the base scenario; empty for
+    /// a study on the base scenario.
+    #[serde(skip)]
+    pub ran_on: Vec<scenario::Scenario>,
     /// The runs that failed; every other run is in the data (a failed run's CSV row, where the study writes one,
     /// has its case and speed with the values empty).
     pub failures: Vec<StudyFailure>,
@@ -81,6 +85,12 @@ impl std::fmt::Debug for StudySummary {
 }
 
 impl StudyData {
+    /// These results, run on the study's own `scenarios` (a built-in site) rather than the base scenario: the
+    /// scenarios its file reports as the ones it ran on.
+    pub fn ran_on(self, scenarios: Vec<scenario::Scenario>) -> Self {
+        Self { ran_on: scenarios, ..self }
+    }
+
     /// The summary as a JSON reader sees it (`study --format json`, `<study>.json`).
     pub fn summary_json(&self) -> serde_json::Value {
         serde_json::to_value(&self.summary).unwrap_or(serde_json::Value::Null)

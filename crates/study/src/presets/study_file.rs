@@ -40,8 +40,12 @@ pub struct StudyFile<'a> {
     pub plots: Vec<&'a str>,
     /// The figures' titles, in the order of `plots`.
     pub plot_titles: Vec<&'a str>,
-    /// The scenario it ran on.
-    pub scenario: &'a Scenario,
+    /// The scenario it ran on (without the `[foundation]` a `[ground]` replaces): the base scenario, or the first of
+    /// the study's own where it brings them ([`StudyData::ran_on`]).
+    pub scenario: scenario::AsRan<'a>,
+    /// The study's other scenarios of its own, after [`Self::scenario`]; empty for a study on the base scenario.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub more_scenarios: Vec<scenario::AsRan<'a>>,
     /// The speeds it swept (m/s), where one list serves every curve.
     pub speeds: Option<Vec<f64>>,
     /// What the study sets itself.
@@ -85,7 +89,8 @@ impl StudyData {
             lines: &self.lines,
             plots: self.plots.iter().map(|p| p.stem.as_str()).collect(),
             plot_titles: self.plots.iter().map(|p| p.title.as_str()).collect(),
-            scenario: base,
+            scenario: scenario::AsRan(self.ran_on.first().unwrap_or(base)),
+            more_scenarios: self.ran_on.iter().skip(1).map(scenario::AsRan).collect(),
             speeds: preset.speeds(resolution, base)?,
             study_sets: preset.sets(),
             scenario_parts_not_used,

@@ -28,10 +28,12 @@ pub const ON_THE_INFINITE_BEAM: &str = "on the infinite beam";
 const FILES: [&str; 4] = ["receptance.csv", "receptance.json", "receptance.png", "receptance.svg"];
 
 /// Create `folder` if missing and check that none of a receptance's files there is a link, device or directory
-/// (`what` names the folder in errors): before the work, so that a bad folder costs nothing.
-pub fn check_folder(folder: &std::path::Path, what: &str) -> scenario::error::Result<()> {
-    report::files::prepare_output_folder(what, folder)?;
-    FILES.iter().try_for_each(|name| report::files::check_output_file(what, &folder.join(name)))
+/// (`what` names the folder in errors): before the work, so that a bad folder costs nothing. Whether the folder was
+/// created here.
+pub fn check_folder(folder: &std::path::Path, what: &str) -> scenario::error::Result<bool> {
+    let created = report::files::prepare_output_folder(what, folder)?;
+    FILES.iter().try_for_each(|name| report::files::check_output_file(what, &folder.join(name)))?;
+    Ok(created)
 }
 
 impl ReceptanceStudy {

@@ -22,6 +22,7 @@ mod stepping;
 mod vehicles;
 
 pub use lift_off::LIFT_OFF_GAP;
+pub use moving_settings::SpeedLimit;
 pub use results::{
     BandAcceleration, BodyResult, FallbackCount, LiftOff, LossOfContact, RunResult, SectionHistory, SleeperPeaks,
     SleeperResults, SolverStatistics, StepView, VehicleResults, WheelHistory, WheelResult, WindowExtremes,

@@ -21,6 +21,33 @@ pub struct MovingLoadSettings {
     pub load: Load,
     /// Initial state (and with it the first axle's start position). Default rest, the load entering at x = 0.
     pub initial: InitialState,
+    /// The speed every speed of the run must stay below. Default the beam's own bar wave.
+    pub speed_limit: SpeedLimit,
+}
+
+/// The speed a load must stay below (docs/theory.md §2, §19).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub enum SpeedLimit {
+    /// The beam's bar wave speed √(E/ρ) (5.2 km/s in steel, 3.7 km/s in concrete): beyond it no beam theory holds,
+    /// and the step h = Δx/v would shrink towards round-off.
+    #[default]
+    BarWave,
+    /// The fastest wave (m/s) of a ground under a composite track-and-embankment beam, whose E and ρ are a section
+    /// convention (only EI and ρA are its own, so √(E/ρ) moves as EI is split): beyond every wave of the model no
+    /// load is meant.
+    FastestGroundWave(f64),
+}
+
+impl SpeedLimit {
+    /// The limit (m/s) on `beam`, and what it is, in words.
+    pub fn on(self, beam: &fem_beam::Beam) -> (f64, String) {
+        match self {
+            SpeedLimit::BarWave => (beam.bar_wave_speed(), "the beam's bar wave speed √(E/ρ)".into()),
+            SpeedLimit::FastestGroundWave(speed) => {
+                (speed, "the ground's fastest wave (its largest compression wave speed C_p)".into())
+            }
+        }
+    }
 }
 
 impl Default for MovingLoadSettings {
@@ -31,6 +58,7 @@ impl Default for MovingLoadSettings {
             acceleration: None,
             load: Load::default(),
             initial: InitialState::Rest,
+            speed_limit: SpeedLimit::BarWave,
         }
     }
 }

@@ -4,7 +4,7 @@
 
 pub use super::integration_settings::IntegrationSettings;
 pub use super::moving_settings::MovingLoadSettings;
-use crate::error::{Result, Setting, invalid, invalid_choice, invalid_count};
+use crate::error::{Refused, Result, Setting, TrackError, invalid, invalid_choice, invalid_count};
 use crate::vehicle::consist::{MAX_CONTACT_STEP, VehicleSettings};
 use crate::vehicle::wheel_rail::WheelRail;
 use fem_beam::{BeamModel, Motion, Train};
@@ -175,19 +175,28 @@ impl RunSettings {
             return Err(invalid(Setting::Speed, self.moving.speed, "must be finite and > 0 (m/s)"));
         }
         self.moving.validate_profile()?;
-        // Faster than the beam's bar wave speed √(E/ρ) (5.2 km/s in steel, 3.7 km/s in concrete) no beam theory holds,
+        // Faster than the beam's bar wave speed √(E/ρ) (or a composite beam's ground's fastest wave) no model holds,
         // and the step h = Δx/v would shrink towards round-off: refused, not answered.
-        let beam = model.beam();
-        let bar_wave = beam.bar_wave_speed();
-        if self.moving.largest_speed() >= bar_wave {
-            return Err(invalid(
-                self.moving.speed_setting(),
-                self.moving.largest_speed(),
-                format!(
-                    "must be below the beam's bar wave speed √(E/ρ) = {bar_wave:.0} m/s: beyond it no beam theory \
-                     holds (railway speeds are below 200 m/s)"
+        let (limit, what) = self.moving.speed_limit.on(model.beam());
+        let fastest = self.moving.largest_speed();
+        if fastest >= limit {
+            let (value, reaches) = match (self.moving.speed_setting(), self.moving.acceleration) {
+                (Setting::Acceleration, Some(a)) => {
+                    (Refused::Number(a), format!("brings the load to {fastest:.0} m/s, which "))
+                }
+                (Setting::SpeedProfile, _) => {
+                    (Refused::Choice("given"), format!("brings the load to {fastest:.0} m/s, which "))
+                }
+                _ => (Refused::Number(fastest), String::new()),
+            };
+            return Err(TrackError::Invalid {
+                setting: self.moving.speed_setting(),
+                value,
+                allowed: format!(
+                    "{reaches}must be below {what} = {limit:.0} m/s: beyond it no beam theory holds (railway speeds \
+                     are below 200 m/s)"
                 ),
-            ));
+            });
         }
         self.moving.load.validate()?;
         if self.moving.load.vehicles().is_some() {

@@ -124,7 +124,8 @@ pub(super) fn study(resolution: Resolution, _base: &Scenario, runner: &Runner) -
         summary: StudySummary::of(summary),
         plots,
         ..blank(sites.len() * FRICTIONS.len() * speeds.len() + 2)
-    })
+    }
+    .ran_on(sites.into()))
 }
 
 /// The curves over `speeds` on `site`, one per friction of [`FRICTIONS`], counting progress from `before`.
