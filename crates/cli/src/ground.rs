@@ -40,16 +40,17 @@ pub fn run(args: &GroundArgs) -> Result<()> {
         None => GroundRequest::default(),
     };
     let out = match &args.out {
-        Some(folder) => Some((folder.as_path(), check_folder(folder, "--out")?)),
+        Some(folder) => Some((folder.clone(), check_folder(folder, "--out")?)),
         None => None,
     };
+    crate::interrupt::keep(Kept::Nothing(out));
     let runner = crate::jobs::runner(args.jobs, args.format != TableFormat::Text)?;
     let quiet = args.format != TableFormat::Text;
     let bar = crate::progress::bar("ground", None, quiet);
     let progress = |done: usize| bar.set_position(done as u64);
     let announce = |estimate: &runner::cost::Estimate| crate::progress::announce("ground", estimate);
     let runner = runner.with_progress(&progress).with_estimate(&announce).with_stop(crate::interrupt::stop_flag());
-    let study = crate::interrupt::explain(GroundStudy::of(&scenario, &request, &runner), Kept::Nothing(out))?;
+    let study = crate::interrupt::explain(GroundStudy::of(&scenario, &request, &runner))?;
     bar.finish_and_clear();
     for warning in &study.warnings {
         eprintln!("warning: {warning}");

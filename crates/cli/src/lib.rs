@@ -157,8 +157,8 @@ fn end_quietly_on_a_closed_pipe() {
 /// Run one command line (`args[0]` is the program's name, as in `std::env::args_os`) to its end: print what it
 /// prints and return its exit code — 0 on success, 2 for invalid input, 130 after Ctrl-C, 1 for anything else
 /// (as `error_code` sorts them). Standard output is flushed before returning, so a caller that is not Rust's `main` (the Python
-/// console script) loses nothing. Installs the process-wide panic hook and, on the first long job, the Ctrl-C
-/// handler: meant for a process that runs this one command.
+/// console script) loses nothing. Installs the process-wide panic hook and the Ctrl-C handler
+/// ([`interrupt::stop_flag`]): meant for a process that runs this one command.
 pub fn run_command_line<I, T>(args: I) -> u8
 where
     I: IntoIterator<Item = T>,
@@ -168,6 +168,8 @@ where
     let args: Vec<OsString> = args.into_iter().map(Into::into).collect();
     let _ = COMMAND_LINE.set(args.iter().map(|a| a.to_string_lossy().into_owned()).collect());
     let cli = Cli::parse_from(args);
+    // From here on a first SIGINT/SIGTERM stops the command within interrupt::GRACE wherever it is.
+    interrupt::stop_flag();
     let result = match cli.command {
         Command::Run(args) => run::run(&args),
         Command::Sweep(args) => sweep::run(&args),

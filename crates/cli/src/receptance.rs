@@ -71,14 +71,15 @@ pub fn run(args: &ReceptanceArgs) -> Result<()> {
     let at = args.at.unwrap_or(0.5 * scenario.mesh.length);
     let request = ReceptanceRequest { frequencies, excite: args.excite.unwrap_or(at), at };
     let out = match &args.out {
-        Some(folder) => Some((folder.as_path(), check_folder(folder, "--out")?)),
+        Some(folder) => Some((folder.clone(), check_folder(folder, "--out")?)),
         None => None,
     };
+    crate::interrupt::keep(crate::interrupt::Kept::Nothing(out));
     let runner = crate::jobs::runner(args.jobs, args.format != TableFormat::Text)?;
     let announce = |estimate: &runner::cost::Estimate| crate::progress::announce("receptance", estimate);
     let runner = runner.with_estimate(&announce).with_stop(crate::interrupt::stop_flag());
     let study = ReceptanceStudy::of(&scenario, &request, &runner).map_err(|e| rename(e, "--frequencies"));
-    let study = crate::interrupt::explain(study, crate::interrupt::Kept::Nothing(out))?;
+    let study = crate::interrupt::explain(study)?;
     for warning in &study.warnings {
         eprintln!("warning: {warning}");
     }

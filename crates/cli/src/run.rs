@@ -64,9 +64,10 @@ pub fn run(args: &RunArgs) -> Result<()> {
     let case = scenario.build()?;
     let mut warnings = crate::scenario_args::print_warnings(&scenario, &case);
     let out = match &args.out {
-        Some(folder) => Some((folder.as_path(), report::run_folder::check("--out", folder, &case)?)),
+        Some(folder) => Some((folder.clone(), report::run_folder::check("--out", folder, &case)?)),
         None => None,
     };
+    crate::interrupt::keep(crate::interrupt::Kept::Nothing(out));
     let requests = match args.out.is_some() {
         true => report::run_output::snapshot_requests(&scenario, &case),
         false => Vec::new(),
@@ -80,7 +81,7 @@ pub fn run(args: &RunArgs) -> Result<()> {
     let stop = Some(crate::interrupt::stop_flag());
     let ran = report::run_output::run_with_snapshots(&case, &requests, stop, &progress);
     bar.finish_and_clear();
-    let (result, snapshots) = crate::interrupt::explain(ran, crate::interrupt::Kept::Nothing(out))?;
+    let (result, snapshots) = crate::interrupt::explain(ran)?;
     let report = RunSummary::of(&scenario, &case, &result, start)?;
     for warning in report::result_warnings::result_warnings(&case, &report) {
         eprintln!("warning: {warning}");

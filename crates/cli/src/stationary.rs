@@ -70,15 +70,14 @@ fn on_the_ground(args: &StationaryArgs, scenario: &Scenario, speeds: &[f64]) -> 
         record.check_speeds(speeds.len(), "--measured")?;
         window = record.widened(window);
     }
-    let out =
-        checked_folder(args, &["stationary.json", "wave.csv", "speeds.csv", "ground-wave.png", "ground-wave.svg"])?;
+    checked_folder(args, &["stationary.json", "wave.csv", "speeds.csv", "ground-wave.png", "ground-wave.svg"])?;
     let threads = std::thread::available_parallelism().map_or(1, usize::from);
     crate::progress::announce("stationary", &study::ground::wave::cost(scenario, speeds.len(), threads));
     let stop = Some(crate::interrupt::stop_flag());
     let bar = crate::progress::bar("stationary", Some(speeds.len() as u64), args.format != TableFormat::Text);
     let progress = |done: usize| bar.set_position(done as u64);
     let study = study::ground::GroundWaveStudy::of(scenario, speeds, window, stop, &progress);
-    let mut study = crate::interrupt::explain(study, Kept::Nothing(out))?;
+    let mut study = crate::interrupt::explain(study)?;
     bar.finish_and_clear();
     for warning in study.warnings() {
         eprintln!("warning: {warning}");
@@ -139,7 +138,7 @@ pub fn run(args: &StationaryArgs) -> Result<()> {
         return on_the_ground(args, &scenario, &speeds);
     }
     let domain = domain(args)?;
-    let out = checked_folder(args, &["stationary.json", "wave.csv", "speeds.csv"])?;
+    checked_folder(args, &["stationary.json", "wave.csv", "speeds.csv"])?;
     let first = scenario.stationary_problem(speeds.first().copied().unwrap_or(0.0), domain)?;
     crate::scenario_args::print_uniform_support_note(&scenario, "the stationary wave")?;
     crate::progress::announce("stationary", &runner::cost::Estimate::stationary(&first, &speeds, true));
@@ -147,7 +146,7 @@ pub fn run(args: &StationaryArgs) -> Result<()> {
     let bar = crate::progress::bar("stationary", Some(speeds.len() as u64), args.format != TableFormat::Text);
     let progress = |done: usize| bar.set_position(done as u64);
     let study = StationaryStudy::of_until(&scenario, &speeds, domain, ErrorEstimate::Halving, stop, &progress);
-    let study = crate::interrupt::explain(study, Kept::Nothing(out))?;
+    let study = crate::interrupt::explain(study)?;
     bar.finish_and_clear();
     for warning in study.warnings() {
         eprintln!("warning: {warning}");
@@ -174,13 +173,14 @@ pub fn run(args: &StationaryArgs) -> Result<()> {
     Ok(())
 }
 
-/// The `--out` folder, if given, created if missing and checked to take each of `files`, before any work; with
-/// whether it was created here.
-fn checked_folder<'a>(args: &'a StationaryArgs, files: &[&str]) -> Result<Option<(&'a std::path::Path, bool)>> {
-    let Some(folder) = &args.out else { return Ok(None) };
+/// The `--out` folder, if given, created if missing and checked to take each of `files`, before any work; an
+/// interruption then says nothing was written there (and removes it if it was created here and left empty).
+fn checked_folder(args: &StationaryArgs, files: &[&str]) -> Result<()> {
+    let Some(folder) = &args.out else { return Ok(()) };
     let created = prepare_output_folder("--out", folder)?;
     for name in files {
         check_output_file("--out", &folder.join(name))?;
     }
-    Ok(Some((folder.as_path(), created)))
+    crate::interrupt::keep(Kept::Nothing(Some((folder.clone(), created))));
+    Ok(())
 }

@@ -162,10 +162,8 @@ pub fn run_study(
         workers.clone().with_progress(&progress).with_journal(Some(&journal)).with_stop(crate::interrupt::stop_flag());
     let runner = if quiet { runner } else { runner.with_estimate(&announce) };
     let start = Instant::now();
-    let data = crate::interrupt::explain(
-        run_preset(preset, resolution, base, &runner),
-        crate::interrupt::Kept::Journal(&journal),
-    )?;
+    crate::interrupt::keep(crate::interrupt::Kept::in_journal(Some(&journal)));
+    let data = crate::interrupt::explain(run_preset(preset, resolution, base, &runner))?;
     let wall_time = start.elapsed().as_secs_f64();
     bar.finish_and_clear();
     write_atomically(&out.join(format!("{}.csv", preset.name())), data.csv.as_bytes())?;

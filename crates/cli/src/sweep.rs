@@ -86,8 +86,8 @@ pub fn run(args: &SweepArgs) -> Result<()> {
     // With --critical the refinement's runs follow the sweep: counted in its estimate.
     let refinements = if args.critical { runner::refinement_runs(step, tolerance, 0) } else { 0 };
     let sweeping = runner.clone().with_refinement(refinements);
-    let kept = journal.as_ref().map_or(crate::interrupt::Kept::Nothing(None), crate::interrupt::Kept::Journal);
-    let rows = crate::interrupt::explain(sweeping.speed_sweep_keeping(&case, &speeds), kept)?;
+    crate::interrupt::keep(crate::interrupt::Kept::in_journal(journal.as_ref()));
+    let rows = crate::interrupt::explain(sweeping.speed_sweep_keeping(&case, &speeds))?;
     bar.finish_and_clear();
     let (points, failed) = (finished(&rows), failures(&rows));
     let mut csv = Vec::new();
@@ -97,7 +97,7 @@ pub fn run(args: &SweepArgs) -> Result<()> {
     }
     write_csv_rows(&rows, &mut csv)?;
     let critical = if args.critical && failed.is_empty() {
-        let c = crate::interrupt::explain(critical_speed(&case, &points, tolerance, &runner), kept)?;
+        let c = crate::interrupt::explain(critical_speed(&case, &points, tolerance, &runner))?;
         if !args.quiet {
             eprintln!("{}", c.describe());
         }

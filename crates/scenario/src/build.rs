@@ -223,8 +223,7 @@ impl Scenario {
             ));
         }
         if f.law != FoundationLawKind::Linear && f.stiffness == 0.0 {
-            // No soil: a nonlinear law of zero stiffness would be sections that carry nothing (and a compliant stop
-            // of zero stiffness is no stop); the span rests on its supports alone (said by `soil_of_no_stiffness`).
+            // No soil (said by the diagnostics): sections of zero stiffness would be stops that hold nothing.
             return Ok(PlacedInteractions::new());
         }
         // Unsettled: placed_on settles the soil with the sleepers under the one weight.

@@ -21,6 +21,9 @@ use crate::error::{Result, invalid};
 use analytic::ground::{GroundProfile, SoilLayer, SoilMaterial, StripGround};
 use serde::{Deserialize, Serialize};
 
+/// The widest strip (m) a track is taken to load.
+pub const MAX_WIDTH: f64 = 100.0;
+
 /// `[ground]`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -61,6 +64,16 @@ impl GroundSection {
     pub fn strip(&self) -> Result<StripGround> {
         let width =
             self.width.ok_or_else(|| missing("ground.width", "the width 2b of the strip the track loads (m)"))?;
+        if width > MAX_WIDTH {
+            return Err(invalid(
+                "ground.width",
+                width,
+                format!(
+                    "must be at most {MAX_WIDTH} m: a track and its embankment load a strip 2–15 m wide; a wider one \
+                     is no track (its strip integrals then span the whole wave and no longer converge in time)"
+                ),
+            ));
+        }
         let layers = self
             .layers
             .iter()

@@ -32,6 +32,7 @@ pub mod ground_plausibility;
 pub mod load_section;
 mod long_wave_twin;
 pub mod number;
+mod override_values;
 pub mod overrides;
 mod parse;
 pub mod plausibility;

@@ -116,7 +116,29 @@ impl LoadSection {
     }
 }
 
+/// The refusal, by key, of a speed `v` (m/s) asked of a load whose `speed_profile` sets its speeds.
+fn profile_sets_the_speeds(v: f64) -> crate::StudyError {
+    invalid(
+        "load.speed_profile",
+        "given",
+        format!(
+            "sets the load's speeds itself, so the speed asked for ({} m/s) would not run: leave the speed out, or \
+             the profile (a sweep over speeds takes a constant acceleration)",
+            crate::number::number(v)
+        ),
+    )
+}
+
 impl LoadSection {
+    /// Set the speed (m/s) to `v` (an override's), refused by key where the `speed_profile` sets the speeds.
+    pub fn take_speed(&mut self, v: f64) -> Result<()> {
+        if self.speed_profile.is_some() {
+            return Err(profile_sets_the_speeds(v));
+        }
+        self.speed = v;
+        Ok(())
+    }
+
     /// Refuse, by key, a changing speed where `what` (a steady state in the moving frame) holds at one speed only.
     pub fn refuse_changing_speed(&self, what: &str) -> Result<()> {
         let allowed = |key: &str| {
@@ -139,15 +161,7 @@ impl LoadSection {
         }
         if let Some(knots) = &self.speed_profile {
             if moving.speed != self.speed {
-                return Err(invalid(
-                    "load.speed_profile",
-                    "given",
-                    format!(
-                        "sets the speeds itself: a run at another speed ({} m/s: a sweep's or --speed) does not \
-                         take it; leave the profile out to sweep speeds, or give a constant acceleration",
-                        moving.speed
-                    ),
-                ));
+                return Err(profile_sets_the_speeds(moving.speed));
             }
             return Ok(moving.with_profile(knots.iter().map(|&[x, v]| (x, v)).collect())?);
         }

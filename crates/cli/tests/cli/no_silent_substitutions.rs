@@ -131,7 +131,7 @@ fn an_extreme_at_the_windows_end_is_said() {
     assert!(up < -60.0 && up > -120.0, "{up}");
 }
 
-/// A ground no site has (ρ in g/cm³) is warned of by key before any spectrum, in `stationary` as in `run`.
+/// A ground no site has (ρ in g/cm³) is warned of by key before any spectrum; a strip no track loads is refused.
 #[test]
 fn a_ground_no_site_has_is_warned_of() {
     let folder = temporary_folder("absurd-ground");
@@ -139,4 +139,7 @@ fn a_ground_no_site_has_is_warned_of() {
     let out = frictrack(&["stationary", &grams, "--speed", "40"]);
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(out.status.success() && stderr.contains("warning: ground.layers[0].density = 1.5 kg/m³"), "{stderr}");
+    // A strip a kilometre wide is no track's (and kept a spectrum busy for minutes): refused by key.
+    let wide = write_file(&folder, "wide.toml", &soft_ground().replace("width = 3.0", "width = 1e6"));
+    refused(&["check", &wide], "ground.width = 1000000: must be at most 100 m");
 }

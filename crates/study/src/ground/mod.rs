@@ -1,5 +1,5 @@
 //! The ground under the track (`frictrack ground`, `frictrack.ground` in Python; docs/theory.md §19): the
-//! scenario's composite beam on its `[ground]` — the soil's Rayleigh modes and their least phase velocity, the static
+//! scenario's composite beam on its `[ground]` — the soil's Rayleigh modes and their least phase velocity ([`phase_minimum`]), the static
 //! strip stiffness and the Winkler control, the crossing of the beam's and the soil's dispersion curves, the critical
 //! speed of the track on the ground ([`numbers`]); the steady response over speeds and its peak ([`speeds`]); the
 //! report, tables and figures ([`text`]); a train's steady wave on the ground (`frictrack stationary`, [`wave`]; one speed's in [`wave_point`]) and
@@ -12,6 +12,7 @@ pub(crate) mod friction;
 pub mod lift_off;
 pub mod measured;
 pub mod numbers;
+pub mod phase_minimum;
 pub mod shared_spectra;
 pub mod speeds;
 pub mod support;

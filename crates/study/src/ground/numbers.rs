@@ -14,7 +14,6 @@
 
 use crate::ground::speeds::{SpeedPoint, critical_speed, point};
 use crate::ground::support::Support;
-use analytic::golden::golden_section;
 use analytic::ground::{GroundedBeam, LineSupport, StripGround, rayleigh_phase_velocities};
 use runner::Runner;
 use scenario::Scenario;
@@ -113,9 +112,11 @@ pub struct GroundStudy {
     pub dispersion: Vec<DispersionPoint>,
     /// Every trapped mode over frequency.
     pub modes: Vec<ModesPoint>,
-    /// The fundamental mode's least phase velocity (m/s), refined; `None` at an end of the frequencies asked.
+    /// The fundamental mode's least phase velocity (m/s): its lowest interior minimum, refined; on a homogeneous
+    /// half-space its Rayleigh speed; `None` where the curve has no minimum inside the frequencies asked
+    /// ([`super::phase_minimum::least_phase_velocity`]).
     pub minimum_phase_velocity: Option<f64>,
-    /// Where (Hz).
+    /// Where (Hz); `None` on a non-dispersive ground (every frequency) or where the minimum is undefined.
     pub minimum_phase_velocity_frequency: Option<f64>,
     /// k_w (N/m²): the Winkler spring with the ground's static deflection under one load.
     pub static_strip_stiffness: f64,
@@ -154,10 +155,11 @@ impl GroundStudy {
         crate::receptance::response::check_frequencies(&request.frequencies)?;
         let mut warnings: Vec<String> = scenario.ground_warnings().iter().map(ToString::to_string).collect();
         let (force, title) = one_load(scenario, &mut warnings)?;
+        // Said before any work: the static case, the curve, ~12 to refine its peak (the soil's modes cost little
+        // beside them).
+        runner.announce(runner::cost::Estimate::ground(SPECTRA, strip.profile.layers.len(), runner.threads()));
         let (modes, dispersion) = soil_modes(&strip, &request.frequencies, runner)?;
-        let minimum = least_phase_velocity(&strip, &dispersion, &mut warnings)?;
-        // The static case, the curve, ~12 to refine its peak.
-        runner.announce(runner::cost::Estimate::ground(SPECTRA, runner.threads()));
+        let minimum = super::phase_minimum::least_phase_velocity(&strip, &dispersion, &mut warnings)?;
         let grounded = GroundedBeam::new(&beam, &strip)?;
         let (ei, m) = (beam.bending_stiffness(), beam.mass_per_length());
         let twin_static = -grounded.spectrum(0.0)?.deflection(0.0) * force;
@@ -207,7 +209,7 @@ impl GroundStudy {
             dispersion,
             modes,
             minimum_phase_velocity: minimum.map(|p| p.1),
-            minimum_phase_velocity_frequency: minimum.map(|p| p.0),
+            minimum_phase_velocity_frequency: minimum.and_then(|p| p.0),
             static_strip_stiffness: spring,
             static_deflection,
             winkler_critical_speed,
@@ -304,33 +306,8 @@ fn soil_modes(
 }
 
 /// The fundamental mode's phase velocity at `frequency` (Hz), or +∞ where it is not trapped.
-fn fundamental(strip: &StripGround, frequency: f64) -> f64 {
+pub(super) fn fundamental(strip: &StripGround, frequency: f64) -> f64 {
     rayleigh_phase_velocities(&strip.profile, TAU * frequency).first().copied().unwrap_or(f64::INFINITY)
-}
-
-/// The least phase velocity of the sampled fundamental, refined between its neighbours (frequency, c); `None` with a
-/// warning where it lies at an end of the curve.
-fn least_phase_velocity(
-    strip: &StripGround,
-    dispersion: &[DispersionPoint],
-    warnings: &mut Vec<String>,
-) -> Result<Option<(f64, f64)>> {
-    let best =
-        (0..dispersion.len()).min_by(|&i, &j| dispersion[i].phase_velocity.total_cmp(&dispersion[j].phase_velocity));
-    let Some(i) = best.filter(|&i| i > 0 && i + 1 < dispersion.len()) else {
-        warnings.push(
-            "the fundamental mode's least phase velocity lies at an end of the frequencies asked: widen them".into(),
-        );
-        return Ok(None);
-    };
-    let (lo, hi) = (dispersion[i - 1].frequency, dispersion[i + 1].frequency);
-    let mut f = |frequency: f64| -> Result<f64> { Ok(fundamental(strip, frequency)) };
-    let found = golden_section(&mut f, lo, hi, 1e-3, false)?;
-    Ok(Some(if found.1 <= dispersion[i].phase_velocity {
-        found
-    } else {
-        (dispersion[i].frequency, dispersion[i].phase_velocity)
-    }))
 }
 
 /// Where the beam's free waves on the spring k_w, c_b(ω) = ω/((mω² − k_w)/EI)^¼ (above its cut-on √(k_w/m); the

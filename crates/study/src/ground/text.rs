@@ -321,7 +321,8 @@ impl Output for GroundStudy {
         writeln!(f, "frictrack ground{title}: {}", self.subtitle())?;
         let least = match (self.minimum_phase_velocity, self.minimum_phase_velocity_frequency) {
             (Some(c), Some(at)) => format!("{c:.2} m/s at {at:.2} Hz"),
-            _ => "undefined (see the warnings)".into(),
+            (Some(c), None) => format!("{c:.2} m/s at every frequency (not dispersive)"),
+            (None, _) => "undefined (see the warnings)".into(),
         };
         writeln!(
             f,

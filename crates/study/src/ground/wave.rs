@@ -79,9 +79,7 @@ impl GroundWaveStudy {
             return Self::sharing(scenario, speeds, window, (stop, progress), &SiteSpectra::new(scenario));
         }
         let (beam, strip, track) = scenario.ground_track()?;
-        for &speed in speeds {
-            scenario.check_speed_on_the_ground("speed", speed)?;
-        }
+        speeds.iter().try_for_each(|&v| scenario.check_speed_on_the_ground("speed", v))?;
         let train = scenario.axles_on_the_ground()?;
         let positions = window.positions(train.length())?;
         let support = Support::of(&track, &strip);
@@ -143,21 +141,9 @@ impl GroundWaveStudy {
             }
         }
         let beam = (beam.bending_stiffness(), beam.mass_per_length());
-        let title = scenario.title.clone();
-        let strip = strip.clone();
+        let (title, strip, track, comparison) = (scenario.title.clone(), strip.clone(), track.clone(), None);
         let input_warnings = scenario.ground_warnings().iter().map(ToString::to_string).collect();
-        Ok(Self {
-            title,
-            beam,
-            strip,
-            track: track.clone(),
-            train,
-            points,
-            waves,
-            comparison: None,
-            friction,
-            input_warnings,
-        })
+        Ok(Self { title, beam, strip, track, train, points, waves, comparison, friction, input_warnings })
     }
 }
 
@@ -201,7 +187,8 @@ pub fn cost(scenario: &Scenario, speeds: usize, threads: usize) -> runner::cost:
     let lifting =
         matches!(&scenario.embankment, Some(e) if e.interface == scenario::embankment::InterfaceKind::Tensionless);
     let (linear, nonlinear) = if friction || lifting { (0, speeds) } else { (speeds, 0) };
-    runner::cost::Estimate::ground_waves(linear, nonlinear, threads)
+    let layers = scenario.ground.as_ref().map_or(0, |g| g.layers.len());
+    runner::cost::Estimate::ground_waves(linear, nonlinear, layers, threads)
 }
 
 /// The ballast's f_u (N/m) of `scenario` on `track`, if it has any: under the composite beam, or between the

@@ -32,7 +32,11 @@ impl ReceptanceStudy {
         let grounded = GroundedBeam::new(&beam, support.line())?;
         let speeds = strip.profile.wave_speeds();
         let alpha = |f: f64| -> Result<Complex64> { Ok(grounded.point_receptance(TAU * f, &speeds)?) };
-        runner.announce(runner::cost::Estimate::ground_receptance(request.frequencies.len(), runner.threads()));
+        runner.announce(runner::cost::Estimate::ground_receptance(
+            request.frequencies.len(),
+            strip.profile.layers.len(),
+            runner.threads(),
+        ));
         let (points, resonances) = sampled(&request.frequencies, runner, &alpha)?;
         let (rail, on) = track_in_words(&track, strip.width);
         Ok(Self {

@@ -96,7 +96,8 @@ pub(super) fn study(resolution: Resolution, _base: &Scenario, runner: &Runner) -
     // with friction at their measured cost over a linear wave's).
     let linear = crate::ground::numbers::SPECTRA + 2 + sites.len() * speeds.len();
     let with_friction = sites.len() * (FRICTIONS.len() - 1) * speeds.len();
-    runner.announce(runner::cost::Estimate::ground_waves(linear, with_friction, runner.threads()));
+    let layers = sites[0].ground.as_ref().map_or(0, |g| g.layers.len());
+    runner.announce(runner::cost::Estimate::ground_waves(linear, with_friction, layers, runner.threads()));
     let ground = GroundStudy::of(&sites[0], &GroundRequest { frequencies: vec![5.0] }, &runner.silent())?;
     let mut measured = Vec::new();
     let mut compared_waves = Vec::new();
