@@ -112,13 +112,69 @@ fn study_and_reproduce_folders_report_each_study_in_order() {
 fn a_folder_without_results_is_refused_by_name() {
     let dir = temporary_folder("report-empty");
     std::fs::write(dir.join("notes.json"), "{\"study\": 3").unwrap();
-    for (folder, why) in [(dir.clone(), "has no summary.json of a run"), (dir.join("missing"), "not a folder")] {
+    for (folder, why) in [
+        (dir.clone(), "has no summary.json of a run, no <study>.json of a study and no command"),
+        (dir.join("missing"), "not a folder"),
+    ] {
         let out = frictrack(&["report", folder.to_str().unwrap()]);
         assert_eq!(out.status.code(), Some(2));
         let err = String::from_utf8_lossy(&out.stderr);
         assert!(err.contains(&format!("invalid DIR = {}", folder.display())) && err.contains(why), "{err}");
-        assert!(err.contains("frictrack run --out"), "{err}");
+        assert!(err.contains("frictrack run --out") && err.contains("stationary --out"), "{err}");
     }
     assert!(!dir.join("report.html").exists(), "nothing written");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The folders of `stationary`, `receptance`, `ground` and a sweep become a page too (they were refused, so none of
+/// the ground's results could become a report): their numbers with units — an extreme's value and position in
+/// columns of their own, not its JSON in one cell —, their warnings, every figure inline, self-contained.
+#[test]
+fn the_folders_of_the_other_commands_become_pages() {
+    let dir = temporary_folder("report-commands");
+    let example = |name: &str| format!("{}/../../examples/{name}", env!("CARGO_MANIFEST_DIR"));
+    let (soft, receptance) = (example("soft-ground.toml"), example("receptance.toml"));
+    let folder = |name: &str| dir.join(name).to_str().unwrap().to_string();
+    let sweep_csv = dir.join("sweep").join("sweep.csv");
+    std::fs::create_dir_all(dir.join("sweep")).unwrap();
+    let commands: [(&[&str], &str, &str); 4] = [
+        (
+            &["stationary", &soft, "--speed", "300", "--out", &folder("stationary")],
+            "stationary",
+            "frictrack stationary",
+        ),
+        (
+            &["receptance", &receptance, "--frequencies", "10:200:10", "--out", &folder("receptance")],
+            "receptance",
+            "frictrack receptance",
+        ),
+        (&["ground", &soft, "--frequencies", "2:20:2", "--out", &folder("ground")], "ground", "frictrack ground"),
+        (
+            &["sweep", "--speeds", "100:250:50", "--quiet", "--out", sweep_csv.to_str().unwrap()],
+            "sweep",
+            "frictrack sweep",
+        ),
+    ];
+    for (args, name, title) in commands {
+        let ran = frictrack(args);
+        assert!(ran.status.success(), "{args:?}: {}", String::from_utf8_lossy(&ran.stderr));
+        if name == "sweep" {
+            assert!(frictrack(&["plot", sweep_csv.to_str().unwrap()]).status.success());
+        }
+        let html = report(&[&folder(name)], &dir.join(name).join("report.html"));
+        self_contained(&html);
+        assert!(html.contains(&format!("<title>{title}")), "{name}: {}", &html[..300]);
+        assert!(html.contains("Figure 1:") && !html.contains("\"position\":"), "{name}");
+    }
+    // A run on the ground: its key results say the foundation was fitted to the ground, how, and how far its wave is
+    // from the exact one (the damping ratio was given with no word that it is the fitted dashpot's).
+    let run = folder("run");
+    assert!(frictrack(&["run", &soft, "--speed", "40", "--quiet", "--out", &run]).status.success());
+    let html = report(&[&run], &dir.join("run").join("report.html"));
+    assert!(html.contains("damping ratio ζ of the foundation fitted to the ground"), "{html}");
+    assert!(html.contains("ground: fitted spring k_f") && html.contains("fitted wave&#39;s error against the exact"));
+    // The wave at 300 m/s reaches the window's end: the page carries the warning, and the extremes' columns.
+    let html = std::fs::read_to_string(dir.join("stationary").join("report.html")).unwrap();
+    assert!(html.contains("lies at the window") && html.contains("deflection.<wbr>position (m)"));
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -247,6 +247,10 @@ fn unit_of_field(field: &str, units: &[(String, String)]) -> Option<String> {
 
 /// One list of records as a table of their fields (lists inside shown by their length).
 fn flat_table(name: &str, records: &[Value], units: &[(String, String)]) -> String {
+    // A field that is itself a record of scalars (an extreme's value, position and time) becomes a column each,
+    // `field.part`, rather than its JSON in one cell.
+    let flattened: Vec<Value> = records.iter().map(flattened).collect();
+    let records = flattened.as_slice();
     let mut columns: Vec<&str> = Vec::new();
     for record in records.iter().filter_map(Value::as_object) {
         for key in record.keys() {
@@ -272,13 +276,38 @@ fn flat_table(name: &str, records: &[Value], units: &[(String, String)]) -> Stri
     let numeric =
         |column: &str| records.iter().filter_map(|r| r.get(column)).filter(|v| !v.is_null()).all(Value::is_number);
     let unit = |column: &str| {
-        let field = column.rsplit('.').next().unwrap_or(column);
+        // `x.value` carries x's unit; `x.position` a position's.
+        let mut parts = column.rsplit('.');
+        let field = match (parts.next(), parts.next()) {
+            (Some("value"), Some(parent)) => parent,
+            (Some(last), _) => last,
+            (None, _) => column,
+        };
         let unit = unit_of_field(field, units).filter(|_| numeric(column));
         unit.map_or_else(|| column.to_string(), |unit| format!("{column} ({unit})"))
     };
     let header: Vec<String> = columns.iter().map(|c| unit(c)).collect();
     let header: Vec<&str> = header.iter().map(String::as_str).collect();
     format!("<h4><code>{}</code></h4>\n{}", escape(name), table(&header, &rows))
+}
+
+/// `record` with each field that is an object of scalars spread into fields `field.part` (nulls left out).
+fn flattened(record: &Value) -> Value {
+    let Some(map) = record.as_object() else { return record.clone() };
+    let mut out = serde_json::Map::new();
+    for (key, value) in map {
+        match value {
+            Value::Object(inner) if inner.values().all(|v| !v.is_array() && !v.is_object()) => {
+                for (part, v) in inner.iter().filter(|(_, v)| !v.is_null()) {
+                    out.insert(format!("{key}.{part}"), v.clone());
+                }
+            }
+            _ => {
+                out.insert(key.clone(), value.clone());
+            }
+        }
+    }
+    Value::Object(out)
 }
 
 #[cfg(test)]

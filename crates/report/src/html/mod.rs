@@ -1,13 +1,15 @@
 //! # A result folder as one self-contained HTML file (`frictrack report DIR`, `frictrack.report(dir)`)
 //!
-//! - [`folder`]: which folder it is — a run's, a study's, `reproduce`'s — and which page shows it.
-//! - [`run_page`], [`study_page`]: what each page shows (tables, verdicts, warnings, figures, scenario, data).
+//! - [`folder`]: which folder it is — a run's, a study's, `reproduce`'s, another command's — and which page shows it.
+//! - [`run_page`], [`study_page`], [`command_page`]: what each page shows (tables, verdicts, warnings, figures,
+//!   scenario, data).
 //! - [`sources`]: what a page reads of the folder besides its tables (figures in order, where the results came
 //!   from).
 //! - [`blocks`]: the pieces (escaped text, numbers, tables, inline SVG, the scenario as TOML);
 //!   [`page`]: the document, its table of contents and its screen and print styles.
 
 pub mod blocks;
+pub mod command_page;
 pub mod folder;
 pub mod page;
 pub mod run_page;

@@ -21,6 +21,11 @@ pub fn run_page(folder: &Path, summary: &Value) -> Result<Page> {
     for (i, stem) in figure_stems(folder, &order)?.iter().enumerate() {
         figures.push_str(&figure(folder, stem, i + 1)?);
     }
+    if figures.is_empty() {
+        figures = "<p>This folder holds no figure (a folder written before runs drew them, or with its figures \
+                   removed).</p>\n"
+            .into();
+    }
     sections.push(Section::new("figures", "Figures", figures));
     let text = summary["text"].as_str().unwrap_or("(this folder was written before runs kept their text report)");
     sections.push(Section::new("report", "The run's report", pre(text)));
@@ -52,7 +57,15 @@ fn key_results(report: &Value) -> String {
     );
     row("load", f("load").map(|v| number(v / 1e3)), "kN", String::new());
     row("critical speed of the infinite track", f("critical_speed").map(number), "m/s", String::new());
-    row("foundation damping ratio ζ", f("damping_ratio").map(number), "", String::new());
+    let fitted = report["ground_fit"].is_object();
+    let ratio =
+        if fitted { "damping ratio ζ of the foundation fitted to the ground" } else { "foundation damping ratio ζ" };
+    let of = if fitted { "the fitted dashpot c over 2√(k_f ρA)".to_string() } else { String::new() };
+    row(ratio, f("damping_ratio").map(number), "", of);
+    for fitted in ground_fit_rows(&report["ground_fit"]) {
+        let [what, value, unit, note] = fitted;
+        row(&what, Some(value), &unit, note);
+    }
     for (key, what) in [
         ("max_downward_deflection", "max downward deflection, whole run"),
         ("max_upward_deflection", "max upward deflection, whole run"),
@@ -102,6 +115,30 @@ fn key_results(report: &Value) -> String {
     row("solver iterations a step (mean)", f("mean_iterations").map(number), "", String::new());
     row("wall time", f("wall_time").map(number), "s", String::new());
     table(&["quantity", "value", "unit", "where, when"], &rows)
+}
+
+/// On a `[ground]`, the foundation the run took in its place and how far its wave is from the exact one (rows of
+/// quantity, value, unit, note); none for a run on a Winkler soil.
+fn ground_fit_rows(fit: &Value) -> Vec<[String; 4]> {
+    if !fit.is_object() {
+        return Vec::new();
+    }
+    let f = |key: &str| fit[key].as_f64();
+    let at = f("speed").map_or(String::new(), |v| format!("fitted at {} m/s", number(v)));
+    let rows = [
+        ("ground: fitted spring k_f", f("stiffness").map(number), "N/m²", at),
+        ("ground: fitted dashpot c", f("damping").map(number), "N·s/m²", String::new()),
+        ("ground: co-vibrating mass", f("co_vibrating_mass").map(number), "kg/m", "added to the beam's".into()),
+        (
+            "ground: fitted wave's error against the exact",
+            f("wave_error").map(|e| number(100.0 * e)),
+            "%",
+            f("peak_error").map_or(String::new(), |e| format!("peak {} %", number(100.0 * e))),
+        ),
+    ];
+    rows.into_iter()
+        .filter_map(|(what, value, unit, note)| Some([what.to_string(), value?, unit.to_string(), escape(&note)]))
+        .collect()
 }
 
 /// The folder's CSV files with their columns and units, and the sign conventions.

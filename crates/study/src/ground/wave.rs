@@ -161,9 +161,9 @@ impl GroundWaveStudy {
             {
                 let Some(s) = extreme.position.filter(|_| extreme.value > 0.0) else { continue };
                 let side = if s - first < WAVE_STEP {
-                    "behind the train (domain A of A:B)"
+                    "behind the train (the domain's first number)"
                 } else if last - s < WAVE_STEP {
-                    "ahead of the train (domain B of A:B)"
+                    "ahead of the train (the domain's second number)"
                 } else {
                     continue;
                 };
