@@ -137,7 +137,12 @@ pub fn write(
     if result.vehicles.is_some() {
         files.insert("wheels.csv", FileMeta::of(columns(&WHEEL_COLUMNS)));
     }
-    let title = if scenario.title.is_empty() { format!("v = {} m/s", report.speed) } else { scenario.title.clone() };
+    // An untitled run is titled by its speed: the one it ran at, or the two it changed between.
+    let title = match (&scenario.title, &report.speed_change) {
+        (t, _) if !t.is_empty() => t.clone(),
+        (_, None) => format!("v = {} m/s", report.speed),
+        (_, Some(c)) => format!("v = {:.2} → {:.2} m/s", c.start_speed, c.end_speed),
+    };
     let subtitle = report.figure_subtitle();
     let summary = FolderSummary {
         conventions: CONVENTIONS,

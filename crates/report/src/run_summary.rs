@@ -259,9 +259,17 @@ impl RunSummary {
         }
     }
 
-    /// The subtitle of the run's figures: what ran, at which speed, with which friction.
+    /// The subtitle of the run's figures: what ran, at which speed, with which friction, on which fitted ground.
     pub fn figure_subtitle(&self) -> String {
-        format!("{} {}; friction: {}", self.load_description(), self.speed_description(), self.friction_description())
+        let (load, speed, friction) = (self.load_description(), self.speed_description(), self.friction_description());
+        // A run on a [ground] ran on a fitted foundation: its figures say so, and how far its wave is from the exact.
+        let fitted = self.ground_fit.map_or(String::new(), |fit| {
+            format!(
+                "; on a foundation fitted to the ground (its wave within {:.1} % of the exact)",
+                100.0 * fit.wave_error
+            )
+        });
+        format!("{load} {speed}; friction: {friction}{fitted}")
     }
 
     /// "at 100.00 m/s (360 km/h)", or where the speed changes "from 100.00 to 80.00 m/s (braking at 2 m/s²)".

@@ -48,6 +48,24 @@ fn a_foundation_beside_a_ground_is_refused_and_not_reported() {
         serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
     assert!(summary["scenario"].get("ground").is_some(), "{}", summary["scenario"]);
     assert!(summary["scenario"].get("foundation").is_none(), "{}", summary["scenario"]);
+    // Its figures say they are of a fitted foundation, and how far its wave is from the exact (they said nothing).
+    let subtitle = summary["figures"]["subtitle"].as_str().unwrap();
+    assert!(
+        subtitle.ends_with("on a foundation fitted to the ground (its wave within 2.7 % of the exact)"),
+        "{subtitle}"
+    );
+}
+
+/// An untitled braking run's figures were titled "v = 200 m/s" while the load slowed to 179 m/s.
+#[test]
+fn a_braking_runs_figures_name_both_speeds() {
+    let folder = temporary_folder("braking-title");
+    let out = folder.join("run");
+    let ran = frictrack(&["run", "--acceleration", "-20", "--quiet", "--out", out.to_str().unwrap()]);
+    assert!(ran.status.success(), "{}", String::from_utf8_lossy(&ran.stderr));
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(summary["figures"]["title"], "v = 200.00 → 178.89 m/s");
 }
 
 /// The two-beam track with neither a `[ground]` nor a `[foundation]` stands on the reference soil: said.
