@@ -134,6 +134,7 @@ impl FemError {
                 | FemError::NoSteadyState { .. }
                 | FemError::InvalidTrain { .. }
                 | FemError::InvalidGround { .. }
+                | FemError::InvalidBand { .. }
                 | FemError::UnknownTrain { .. }
         )
     }

@@ -121,6 +121,9 @@ pub struct ExtremesSummary {
     /// Largest acceleration in the beam's modes up to a band (EN 1990 A2's deck check on a span), where computed.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub band_acceleration: Option<BandAccelerationSummary>,
+    /// Largest acceleration filtered in time (any model; a Timoshenko rail's by default), where computed.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub filtered_acceleration: Option<FilteredAccelerationSummary>,
     /// Largest downward deflection of the same loads standing at every position (m).
     pub static_max_downward_deflection: f64,
     /// max downward deflection over its static value.
@@ -146,6 +149,21 @@ pub struct BandAccelerationSummary {
     pub band: f64,
     /// The natural frequencies of the modes in the band (Hz).
     pub mode_frequencies: Vec<f64>,
+}
+
+/// The largest acceleration filtered in time: the velocity's difference over a window (docs/theory.md §10.4).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct FilteredAccelerationSummary {
+    /// Its magnitude (m/s²), node and time (the middle of its window).
+    #[serde(flatten)]
+    pub extreme: Extreme,
+    /// The band filtered to (Hz): the −3 dB point of the window used.
+    pub band: f64,
+    /// The band asked for (Hz): the same but for the window's rounding to whole steps, or higher where the step is
+    /// longer than the window asked.
+    pub band_asked: f64,
+    /// The window the velocity's difference is taken over (s).
+    pub window: f64,
 }
 
 /// How the steps of one run were solved.
@@ -385,6 +403,12 @@ impl ExtremesSummary {
                 extreme: b.extreme,
                 band: b.limit,
                 mode_frequencies: b.frequencies.clone(),
+            }),
+            filtered_acceleration: result.filtered_acceleration.as_ref().map(|f| FilteredAccelerationSummary {
+                extreme: f.extreme,
+                band: f.band,
+                band_asked: f.asked,
+                window: f.window,
             }),
             static_max_downward_deflection: statics.max_downward,
             dynamic_amplification: if statics.max_downward > 0.0 {

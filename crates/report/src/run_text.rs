@@ -395,8 +395,26 @@ fn write_accelerations(f: &mut Formatter<'_>, r: &RunSummary) -> fmt::Result {
             f,
             "  max acceleration undefined at the nodes: a Timoshenko rail's acceleration under a passing point force \
              grows without bound as the step shrinks{}",
-            if r.extremes.band_acceleration.is_some() { " (the band-limited one below is defined)" } else { "" }
+            match (&r.extremes.band_acceleration, &r.extremes.filtered_acceleration) {
+                (Some(_), _) => " (the band-limited one below is defined)",
+                (None, Some(_)) => " (the filtered one below is defined)",
+                (None, None) => "",
+            }
         )?,
+    }
+    if let Some(a) = &r.extremes.filtered_acceleration {
+        let place = a.extreme.place().map_or(String::new(), |(x, t)| format!(" at x = {x:.1} m, t = {t:.4} s"));
+        // The step can be longer than the window the band asks for: then the band is the step's, and said so.
+        let asked = match a.band < 0.9 * a.band_asked {
+            true => format!("; {:.0} Hz asked, but the step is longer than its window", a.band_asked),
+            false => String::new(),
+        };
+        writeln!(
+            f,
+            "  filtered acceleration {:.3} m/s²{place} (low-pass to {:.0} Hz, −3 dB: the velocity's change over {:.3e} \
+             s{asked})",
+            a.extreme.value, a.band, a.window
+        )?;
     }
     if let Some(b) = &r.extremes.band_acceleration {
         let place = b.extreme.place().map_or(String::new(), |(x, t)| format!(" at x = {x:.1} m, t = {t:.4} s"));

@@ -6,7 +6,6 @@ use super::{
 };
 use crate::error::{Result, StudyError, invalid};
 use crate::number::number;
-use fem_beam::modal_band::BandLimit;
 use fem_beam::{AbsorbingZones, BeamModel, Foundation, FoundationLaw, Mesh};
 use nscd::SolverSettings;
 use track::PlacedInteractions;
@@ -380,20 +379,6 @@ impl Scenario {
         IntegrationSettings { theta, spectral_radius, ..IntegrationSettings::default() }.scheme()
     }
 
-    /// The band of the band-limited acceleration its runs report ([`crate::OutputSection::acceleration_band`]): the
-    /// frequency given (finite and > 0), else on a span EN 1990's deck band of its own modes, else none.
-    pub fn acceleration_band(&self) -> Result<Option<BandLimit>> {
-        if let Some(limit) = self.output.acceleration_band {
-            if !(limit.is_finite() && limit > 0.0) {
-                return Err(invalid("output.acceleration_band", limit, "must be finite and > 0 (Hz)"));
-            }
-            return Ok(Some(BandLimit::Frequency(limit)));
-        }
-        let (k_f, sleepers) = (self.foundation.stiffness, self.sleepers.is_some());
-        let span = crate::diagnostics::span_of(&self.beam, &self.supports, k_f, sleepers, self.mesh.length);
-        Ok(span.map(|_| BandLimit::Deck))
-    }
-
     /// Run settings for a load speed `speed` (m/s), with the train resolved ([`crate::trains::resolve`]) but not yet
     /// validated (see [`Scenario::build`]).
     pub fn run_settings(&self, speed: f64) -> Result<RunSettings> {
@@ -456,6 +441,7 @@ impl Scenario {
                 extremes_window: Some(self.output.extremes_window(self.mesh.length)),
                 extremes_nodes: self.output.extremes_nodes.map(|[a, b]| (a, b)),
                 acceleration_band: self.acceleration_band()?,
+                acceleration_filter: self.acceleration_filter()?,
             },
         })
     }

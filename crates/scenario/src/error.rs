@@ -119,6 +119,7 @@ pub fn path(setting: track::Setting) -> String {
         S::Theta => "integration.theta".into(),
         S::SpectralRadius => "integration.spectral_radius".into(),
         S::AccelerationBand => "output.acceleration_band".into(),
+        S::AccelerationFilter => "output.acceleration_filter".into(),
         S::EndTime => "integration.end_time".into(),
         S::Tolerance => "integration.tolerance".into(),
         S::MaxIterations => "integration.max_iterations".into(),

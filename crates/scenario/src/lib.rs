@@ -19,6 +19,7 @@
 //! - [`error`]: the error type of the crates above this one, every message naming the field, its value and what is
 //!   allowed; [`number`]: numbers as result files and messages print them.
 
+mod acceleration_bands;
 mod as_ran;
 pub mod axis;
 mod build;
@@ -48,6 +49,7 @@ pub mod units;
 pub mod vehicle;
 mod warning;
 
+pub use acceleration_bands::TIMOSHENKO_FILTER;
 pub use as_ran::AsRan;
 pub use build::RESULT_FORMAT;
 pub use error::{Result, StudyError};

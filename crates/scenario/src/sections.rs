@@ -398,6 +398,11 @@ pub struct OutputSection {
     /// sleepers) EN 1990 A2's max(30 Hz, 1.5 f₁, f₃); elsewhere none.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub acceleration_band: Option<f64>,
+    /// The band (Hz) of the acceleration a run reports filtered in time, on a model of any size: the velocity's
+    /// difference over 0.443/band s, the filter's −3 dB point at the band (docs/theory.md §10.4). Default: on a
+    /// Timoshenko rail (whose nodal acceleration is undefined under a point force) 1000 Hz; elsewhere none.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub acceleration_filter: Option<f64>,
 }
 
 impl OutputSection {

@@ -153,6 +153,11 @@ fn check(model: &BeamModel, settings: &RunSettings, window: &CoMovingSettings) -
                        leave the band out, or run the whole track";
         return Err(invalid_choice(Setting::AccelerationBand, "given", allowed));
     }
+    if settings.record.acceleration_filter.is_some() {
+        let allowed = "a co-moving window's nodes move with the load, so a node's velocity over a window of steps is \
+                       not one point's: leave the filter out, or run the whole track";
+        return Err(invalid_choice(Setting::AccelerationFilter, "given", allowed));
+    }
     let l = mesh.element_length();
     let advance = settings.integration.load_advance;
     if settings.step_is_capped() {

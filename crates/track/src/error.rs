@@ -112,6 +112,8 @@ pub enum Setting {
     SpectralRadius,
     /// `output.acceleration_band`.
     AccelerationBand,
+    /// `output.acceleration_filter`.
+    AccelerationFilter,
     /// The run's end time (s).
     EndTime,
     /// The step solver's tolerance.
@@ -161,6 +163,7 @@ impl Setting {
             Setting::Theta => "integration.theta",
             Setting::SpectralRadius => "integration.spectral_radius",
             Setting::AccelerationBand => "output.acceleration_band",
+            Setting::AccelerationFilter => "output.acceleration_filter",
             Setting::EndTime => "end_time",
             Setting::Tolerance => "solver.tolerance",
             Setting::MaxIterations => "solver.max_iterations",

@@ -9,6 +9,7 @@
 //! Memory of a run is O(DOFs + sections) plus O(steps) per recorded section history.
 
 mod band_record;
+pub mod filtered_record;
 mod integration_settings;
 mod lift_off;
 mod moving_settings;
@@ -24,9 +25,9 @@ mod vehicles;
 pub use lift_off::LIFT_OFF_GAP;
 pub use moving_settings::SpeedLimit;
 pub use results::{
-    BandAcceleration, BodyResult, FallbackCount, LiftOff, LossOfContact, RunResult, SectionHistory, SleeperPeaks,
-    SleeperResults, SolverStatistics, StepView, VehicleResults, WheelHistory, WheelResult, WindowExtremes,
-    WorkStatistics,
+    BandAcceleration, BodyResult, FallbackCount, FilteredAcceleration, LiftOff, LossOfContact, RunResult,
+    SectionHistory, SleeperPeaks, SleeperResults, SolverStatistics, StepView, VehicleResults, WheelHistory,
+    WheelResult, WindowExtremes, WorkStatistics,
 };
 pub(crate) use settings::counts_for_extremes;
 pub use settings::{InitialState, IntegrationSettings, Load, MovingLoadSettings, RecordSettings, RunSettings};
@@ -182,12 +183,18 @@ impl<'a> Simulation<'a> {
             .acceleration_band
             .map(|limit| band_record::BandRecord::new(self.model, limit, record.extremes_nodes))
             .transpose()?;
+        let mut filtered = record
+            .acceleration_filter
+            .map(|band| filtered_record::FilteredRecord::new(self.model, band, h, record.extremes_nodes));
         let mut tally = SolverTally::default();
         let clock = Instant::now();
         let mut records: Vec<&mut dyn Record> =
             vec![&mut tally, &mut deflections, &mut sections, &mut lift_off, &mut sleepers];
         if let Some(band) = band.as_mut() {
             records.push(band);
+        }
+        if let Some(filtered) = filtered.as_mut() {
+            records.push(filtered);
         }
         run.run(total_steps, &mut records, observer, &mut |_, _| Ok(()))?;
         let wall_time = clock.elapsed().as_secs_f64();
@@ -204,6 +211,7 @@ impl<'a> Simulation<'a> {
                 .bounds_point_load_acceleration()
                 .then_some(deflections.acceleration),
             band_acceleration: band.map(band_record::BandRecord::finish),
+            filtered_acceleration: filtered.map(filtered_record::FilteredRecord::finish),
             window: deflections.window,
             energy: stepper.energy,
             global_norm: if t_on > 0.0 { deflections.norm_integral / t_on } else { 0.0 },

@@ -151,6 +151,20 @@ pub struct BandAcceleration {
     pub frequencies: Vec<f64>,
 }
 
+/// The largest acceleration filtered in time ([`crate::simulation::RecordSettings::acceleration_filter`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct FilteredAcceleration {
+    /// Its magnitude (m/s²), node and time (the middle of its window).
+    pub extreme: Extreme,
+    /// The band asked for (Hz).
+    pub asked: f64,
+    /// The band filtered to (Hz): the −3 dB point 0.443/T of the window used, the band asked for to within the
+    /// rounding of T to whole steps — below it where the step is longer than the window asked.
+    pub band: f64,
+    /// The window T the velocity's difference is taken over (s): a whole number of steps, ≈ 0.443/band.
+    pub window: f64,
+}
+
 /// What a run reports (docs/theory.md §6).
 #[derive(Debug, Clone, PartialEq)]
 pub struct RunResult {
@@ -163,6 +177,9 @@ pub struct RunResult {
     pub max_acceleration: Option<Extreme>,
     /// The largest band-limited acceleration, where [`crate::simulation::RecordSettings::acceleration_band`] asks.
     pub band_acceleration: Option<BandAcceleration>,
+    /// The largest acceleration filtered in time, where [`crate::simulation::RecordSettings::acceleration_filter`]
+    /// asks.
+    pub filtered_acceleration: Option<FilteredAcceleration>,
     /// The extremes while the load was inside [`crate::simulation::RecordSettings::extremes_window`], if one was set.
     pub window: Option<WindowExtremes>,
     /// Energy terms.
