@@ -158,7 +158,7 @@ fn end_quietly_on_a_closed_pipe() {
 /// prints and return its exit code — 0 on success, 2 for invalid input, 130 after Ctrl-C, 1 for anything else
 /// (as `error_code` sorts them). Standard output is flushed before returning, so a caller that is not Rust's `main` (the Python
 /// console script) loses nothing. Installs the process-wide panic hook and the Ctrl-C handler
-/// ([`interrupt::stop_flag`]): meant for a process that runs this one command.
+/// (`interrupt::stop_flag`): meant for a process that runs this one command.
 pub fn run_command_line<I, T>(args: I) -> u8
 where
     I: IntoIterator<Item = T>,

@@ -7,8 +7,8 @@
 //! transfer function is sinc(π f T) = sin(π f T)/(π f T): 1 at f = 0, −3 dB at f = 0.443/T, 0 at 1/T. A band f_b
 //! sets T = 0.443/f_b, held exactly whatever the step: v(t − T) is interpolated linearly between the steps around it,
 //! so that runs refined in h filter alike — the window the result states. A step h longer than T cannot be filtered
-//! finer: the window is then h, and the band the step's (0.443/h), said. Unlike the modal band
-//! ([`super::band_record`]) it needs no eigenproblem, so it is defined on every track: on a Timoshenko rail, whose
+//! finer: the window is then h, and the band the step's (0.443/h), said. Unlike the modal band (`band_record`,
+//! [`fem_beam::modal_band`]) it needs no eigenproblem, so it is defined on every track: on a Timoshenko rail, whose
 //! nodal acceleration under a passing point force grows without bound as the step shrinks, the velocity stays
 //! bounded and a_T converges under refinement with T held. At T = h it is the step's mean acceleration, exactly.
 

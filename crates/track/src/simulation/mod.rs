@@ -8,6 +8,7 @@
 //!
 //! Memory of a run is O(DOFs + sections) plus O(steps) per recorded section history.
 
+mod acceleration_checks;
 mod band_record;
 pub mod filtered_record;
 mod integration_settings;

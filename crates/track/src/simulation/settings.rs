@@ -387,51 +387,7 @@ impl RunSettings {
                 return Err(invalid(Setting::ExtremesNodes, if a.is_finite() { b } else { a }, allowed));
             }
         }
-        if let Some(band) = self.record.acceleration_filter {
-            self.validate_filter(model, band)?;
-        }
-        if let Some(band) = self.record.acceleration_band
-            && model.mass().order() > BeamModel::MAX_MODAL_DOFS
-        {
-            // The band's eigenproblem is dense: refused before the run, with the filter that takes any size.
-            return Err(crate::TrackError::Beam(fem_beam::FemError::InvalidBand {
-                value: band.to_string(),
-                allowed: format!(
-                    "its modes are solved densely, for at most {} free DOFs, and this model has {}: use fewer \
-                     elements, or output.acceleration_filter (a filter in time, any size)",
-                    BeamModel::MAX_MODAL_DOFS,
-                    model.mass().order()
-                ),
-            }));
-        }
-        Ok(())
-    }
-
-    /// The filter's band (finite, > 0), its window within the run, and the velocities it keeps within
-    /// [`Self::MAX_FILTER_VALUES`] — checked before anything is allocated.
-    fn validate_filter(&self, model: &BeamModel, band: f64) -> Result<()> {
-        if !(band.is_finite() && band > 0.0) {
-            return Err(invalid(Setting::AccelerationFilter, band, "must be finite and > 0 (Hz)"));
-        }
-        let window = super::filtered_record::HALF_POWER / band;
-        let run = self.crossing_time(model.mesh().length);
-        if window > run {
-            let allowed =
-                format!("filters over a window of 0.443/band = {window:.4e} s, longer than the run ({run:.4e} s)");
-            return Err(invalid(Setting::AccelerationFilter, band, allowed));
-        }
-        let kept = super::filtered_record::FilteredRecord::kept(band, self.time_step());
-        let values = kept.saturating_mul(model.dofs().free_len());
-        if values > Self::MAX_FILTER_VALUES {
-            let allowed = format!(
-                "keeps {kept} steps' velocities of {} DOFs over its window ({values} numbers, at most {}): raise \
-                 the band or lengthen the load advance",
-                model.dofs().free_len(),
-                Self::MAX_FILTER_VALUES
-            );
-            return Err(invalid(Setting::AccelerationFilter, band, allowed));
-        }
-        Ok(())
+        self.validate_accelerations(model)
     }
 
     /// The end time, and the steps and recorded samples the run would take on a beam of `length` (m).
@@ -480,8 +436,6 @@ impl RunSettings {
     /// The most time steps a run may take (checked before anything is allocated): 2·10⁷, about 100 s without
     /// friction and over an hour with distributed friction on the reference mesh.
     pub const MAX_STEPS: usize = 20_000_000;
-    /// The most velocities (numbers) the filtered acceleration's window may keep: 400 MB.
-    pub const MAX_FILTER_VALUES: usize = 50_000_000;
 
     /// The most history samples (steps × recorded sections) a run may keep: 5·10⁷, about 2 GB.
     pub const MAX_RECORDED_SAMPLES: usize = 50_000_000;
