@@ -122,6 +122,11 @@ pub struct SleepersSummary {
     /// Under ballast bodies: the largest subgrade force (N), where and when.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub max_subgrade_force: Option<Extreme>,
+    /// The sleepers' largest |acceleration| where the results are read (m/s², the step's mean), where and when.
+    pub max_sleeper_acceleration: Extreme,
+    /// Under ballast bodies: their largest |acceleration| (m/s²), where and when.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub max_ballast_acceleration: Option<Extreme>,
     /// The sleepers of `[[sleepers.exceptions]]`.
     pub exceptions: Vec<ExceptionalSleeper>,
     /// The deflection under the load over a bay.
@@ -170,6 +175,8 @@ impl SleepersSummary {
             max_pad_force: largest(|p| Some(p.pad_force)),
             max_ballast_force: largest(|p| Some(p.ballast_force)),
             max_subgrade_force: s.ballast_body.map(|_| largest(|p| p.subgrade_force)),
+            max_sleeper_acceleration: largest(|p| Some(p.acceleration)),
+            max_ballast_acceleration: s.ballast_body.map(|_| largest(|p| p.ballast_acceleration)),
             bay: BayProfile::of(results, read, &exceptions.iter().map(|e| e.x).collect::<Vec<_>>()),
             exceptions,
             element_length: model.mesh().element_length(),
@@ -262,6 +269,16 @@ pub(crate) fn write_sleepers(f: &mut std::fmt::Formatter<'_>, s: &SleepersSummar
         "    largest forces on the sleepers at x = {a:.1}–{b:.1} m: pad {}, ballast {}{subgrade}",
         force(&s.max_pad_force),
         force(&s.max_ballast_force)
+    )?;
+    let acceleration = |e: &Extreme| match e.place() {
+        Some((x, t)) => format!("{:.3} m/s² at x = {x:.1} m, t = {t:.4} s", e.value),
+        None => "none".into(),
+    };
+    let body = s.max_ballast_acceleration.map_or(String::new(), |e| format!(", ballast bodies {}", acceleration(&e)));
+    writeln!(
+        f,
+        "    largest accelerations there (the step's mean): sleepers {}{body}",
+        acceleration(&s.max_sleeper_acceleration)
     )?;
     if let (Some(above), Some(mid)) = (s.bay.above_sleeper, s.bay.mid_span) {
         writeln!(

@@ -346,6 +346,11 @@ pub struct SleeperPeaks {
     pub subgrade_force: Option<(f64, f64)>,
     /// The sleeper's lowest position (m, downward positive).
     pub lowest: f64,
+    /// The sleeper's largest |acceleration| (m/s², the step's mean (ż_{k+1} − ż_k)/h: a lumped mass between springs,
+    /// bounded under refinement) and when (s).
+    pub acceleration: (f64, f64),
+    /// Under a ballast body: its largest |acceleration| (m/s²) and when (s); None on rigidly founded ballast.
+    pub ballast_acceleration: Option<(f64, f64)>,
     /// Where the ballast cannot pull: the largest gap under the sleeper (m; a voided sleeper's starts at its void, a
     /// tensionless one's stays 0 while it presses). None for bonded ballast.
     pub largest_gap: Option<f64>,

@@ -1,5 +1,6 @@
 //! What a run on sleepers records of them (docs/theory.md §18): for each sleeper the largest force in its pad and in
-//! the ballast under it (N, compression positive), its lowest position and, where the ballast cannot pull, the
+//! the ballast under it (N, compression positive), its lowest position, its largest acceleration (and a ballast
+//! body's) and, where the ballast cannot pull, the
 //! largest gap that opened under it; and the rail's deflection under the first load at every step, from which the
 //! report reads its variation over a bay (above a sleeper against mid-span).
 //!
@@ -73,6 +74,8 @@ impl<'m> SleeperRecord<'m> {
                         ballast_force: (0.0, f64::NAN),
                         subgrade_force: support.subgrade.map(|_| (0.0, f64::NAN)),
                         lowest: 0.0,
+                        acceleration: (0.0, f64::NAN),
+                        ballast_acceleration: support.subgrade.map(|_| (0.0, f64::NAN)),
                         largest_gap: unilateral.then_some(0.0),
                         first_contact: None,
                     },
@@ -141,6 +144,16 @@ impl Record for SleeperRecord<'_> {
                 p.ballast_force = (ballast, s.time);
             }
             p.lowest = p.lowest.max(-z);
+            let acceleration = ((dz - s.previous_v[f.z]) / s.h).abs();
+            if acceleration > p.acceleration.0 {
+                p.acceleration = (acceleration, s.time);
+            }
+            if let (Some(d), Some(peak)) = (f.y, p.ballast_acceleration.as_mut()) {
+                let acceleration = ((dy - s.previous_v[d]) / s.h).abs();
+                if acceleration > peak.0 {
+                    *peak = (acceleration, s.time);
+                }
+            }
         }
         let x = s.load.position(s.time);
         if let Some(w) = self.deflection_at(x, &s.q[..s.beam]) {
