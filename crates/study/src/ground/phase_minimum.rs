@@ -28,16 +28,24 @@ pub fn least_phase_velocity(
     warnings: &mut Vec<String>,
 ) -> Result<Option<(Option<f64>, f64)>> {
     let c: Vec<f64> = dispersion.iter().map(|p| p.phase_velocity).collect();
-    let (low, high) = c.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| (a.min(v), b.max(v)));
-    if c.is_empty() {
-        return Ok(None);
-    }
-    if high - low <= FLAT * high {
+    let low = c.iter().copied().fold(f64::INFINITY, f64::min);
+    let Some(&first) = c.first() else { return Ok(None) };
+    // One material from the surface down: the Rayleigh wave is not dispersive (the samples agree to round-off).
+    let mut materials = strip.profile.materials();
+    let homogeneous = materials.next().is_some_and(|top| materials.all(|m| m == top));
+    if homogeneous && c.iter().all(|&v| (v - first).abs() <= FLAT * first) {
         return Ok(Some((None, low)));
     }
-    let interior = (1..c.len().saturating_sub(1))
-        .filter(|&i| c[i] <= c[i - 1] && c[i] <= c[i + 1])
-        .min_by(|&i, &j| c[i].total_cmp(&c[j]));
+    if c.len() < 3 {
+        warnings.push(format!(
+            "the fundamental mode's least phase velocity needs its curve at three frequencies or more (given {}): \
+             undefined",
+            c.len()
+        ));
+        return Ok(None);
+    }
+    let interior =
+        (1..c.len() - 1).filter(|&i| c[i] <= c[i - 1] && c[i] <= c[i + 1]).min_by(|&i, &j| c[i].total_cmp(&c[j]));
     let Some(i) = interior else {
         let end = if c[0] < c[c.len() - 1] { "lowest" } else { "highest" };
         warnings.push(format!(
@@ -82,14 +90,21 @@ mod tests {
         StripGround { width: 3.0, profile: GroundProfile::half_space(soil) }
     }
 
-    /// A flat curve (a homogeneous half-space) is its own minimum at every frequency, with no warning; a curve still
-    /// falling at an end has none inside, and says widening helps.
+    /// A flat curve of a homogeneous half-space is its own minimum at every frequency, with no warning; one sample
+    /// of a layered ground is no curve to find a minimum on; a curve still falling at an end has none inside, and
+    /// says widening helps.
     #[test]
     fn flat_and_monotone_curves() {
         let mut warnings = Vec::new();
         let flat = points(&[(1.0, 93.5), (2.0, 93.5), (3.0, 93.5)]);
         assert_eq!(least_phase_velocity(&half_space(), &flat, &mut warnings).unwrap(), Some((None, 93.5)));
         assert!(warnings.is_empty(), "{warnings:?}");
+        let mut layered = half_space();
+        let crust = SoilMaterial { shear_wave_speed: 150.0, ..layered.profile.half_space };
+        layered.profile.layers.push(analytic::ground::SoilLayer { thickness: 2.0, material: crust });
+        assert_eq!(least_phase_velocity(&layered, &points(&[(5.0, 93.5)]), &mut warnings).unwrap(), None);
+        assert!(warnings[0].contains("three frequencies or more (given 1)"), "{warnings:?}");
+        warnings.clear();
         let falling = points(&[(1.0, 93.0), (2.0, 80.0), (3.0, 70.0)]);
         assert_eq!(least_phase_velocity(&half_space(), &falling, &mut warnings).unwrap(), None);
         assert!(warnings[0].contains("highest frequency asked") && warnings[0].contains("widen them"), "{warnings:?}");
