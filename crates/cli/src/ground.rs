@@ -4,7 +4,6 @@
 //! figures.
 
 use crate::TableFormat;
-use crate::interrupt::Kept;
 use anyhow::Result;
 use clap::Args;
 use scenario::Scenario;
@@ -39,11 +38,7 @@ pub fn run(args: &GroundArgs) -> Result<()> {
         Some(text) => GroundRequest { frequencies: crate::receptance::parse_frequencies(text)? },
         None => GroundRequest::default(),
     };
-    let out = match &args.out {
-        Some(folder) => Some((folder.clone(), check_folder(folder, "--out")?)),
-        None => None,
-    };
-    crate::interrupt::keep(Kept::Nothing(out));
+    crate::interrupt::keep_nothing_in(args.out.as_deref(), |folder| check_folder(folder, "--out"))?;
     let runner = crate::jobs::runner(args.jobs, args.format != TableFormat::Text)?;
     let quiet = args.format != TableFormat::Text;
     let bar = crate::progress::bar("ground", None, quiet);

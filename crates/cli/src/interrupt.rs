@@ -70,6 +70,20 @@ pub fn keep(kept: Kept) {
     *KEPT.lock().unwrap_or_else(|poisoned| poisoned.into_inner()) = Some(kept);
 }
 
+/// Check the `--out` folder `out`, if given, with `check` (which creates it if missing and says whether it did), and
+/// say that an interruption from now on leaves nothing written there ([`Kept::Nothing`]).
+pub fn keep_nothing_in(
+    out: Option<&std::path::Path>,
+    check: impl FnOnce(&std::path::Path) -> scenario::Result<bool>,
+) -> anyhow::Result<()> {
+    let out = match out {
+        Some(folder) => Some((folder.to_path_buf(), check(folder)?)),
+        None => None,
+    };
+    keep(Kept::Nothing(out));
+    Ok(())
+}
+
 /// What was kept, in words; a `--out` folder the command created and left empty is removed on the way.
 fn what_is_kept() -> String {
     let kept = KEPT.lock().unwrap_or_else(|poisoned| poisoned.into_inner()).clone();

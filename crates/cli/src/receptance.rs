@@ -70,11 +70,7 @@ pub fn run(args: &ReceptanceArgs) -> Result<()> {
     let frequencies = parse_frequencies(&args.frequencies)?;
     let at = args.at.unwrap_or(0.5 * scenario.mesh.length);
     let request = ReceptanceRequest { frequencies, excite: args.excite.unwrap_or(at), at };
-    let out = match &args.out {
-        Some(folder) => Some((folder.clone(), check_folder(folder, "--out")?)),
-        None => None,
-    };
-    crate::interrupt::keep(crate::interrupt::Kept::Nothing(out));
+    crate::interrupt::keep_nothing_in(args.out.as_deref(), |folder| check_folder(folder, "--out"))?;
     let runner = crate::jobs::runner(args.jobs, args.format != TableFormat::Text)?;
     let announce = |estimate: &runner::cost::Estimate| crate::progress::announce("receptance", estimate);
     let runner = runner.with_estimate(&announce).with_stop(crate::interrupt::stop_flag());

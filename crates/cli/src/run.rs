@@ -63,11 +63,7 @@ pub fn run(args: &RunArgs) -> Result<()> {
     }
     let case = scenario.build()?;
     let mut warnings = crate::scenario_args::print_warnings(&scenario, &case);
-    let out = match &args.out {
-        Some(folder) => Some((folder.clone(), report::run_folder::check("--out", folder, &case)?)),
-        None => None,
-    };
-    crate::interrupt::keep(crate::interrupt::Kept::Nothing(out));
+    crate::interrupt::keep_nothing_in(args.out.as_deref(), |folder| report::run_folder::check("--out", folder, &case))?;
     let requests = match args.out.is_some() {
         true => report::run_output::snapshot_requests(&scenario, &case),
         false => Vec::new(),

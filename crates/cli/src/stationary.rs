@@ -3,7 +3,6 @@
 
 use crate::TableFormat;
 use crate::files::{check_output_file, prepare_output_folder, write_atomically, write_figures};
-use crate::interrupt::Kept;
 use anyhow::Result;
 use clap::Args;
 use scenario::Scenario;
@@ -58,9 +57,7 @@ fn on_the_ground(args: &StationaryArgs, scenario: &Scenario, speeds: &[f64]) -> 
             return Err(scenario::error::invalid(name, value, format!("leave it out: {why}")).into());
         }
     }
-    for &speed in speeds {
-        scenario.check_speed_on_the_ground("--speed", speed)?;
-    }
+    scenario.check_speeds_on_the_ground("--speed", speeds)?;
     let mut window = study::ground::WaveWindow::default();
     if let Some(text) = &args.domain {
         (window.behind, window.ahead) = behind_ahead(text)?;
@@ -176,11 +173,9 @@ pub fn run(args: &StationaryArgs) -> Result<()> {
 /// The `--out` folder, if given, created if missing and checked to take each of `files`, before any work; an
 /// interruption then says nothing was written there (and removes it if it was created here and left empty).
 fn checked_folder(args: &StationaryArgs, files: &[&str]) -> Result<()> {
-    let Some(folder) = &args.out else { return Ok(()) };
-    let created = prepare_output_folder("--out", folder)?;
-    for name in files {
-        check_output_file("--out", &folder.join(name))?;
-    }
-    crate::interrupt::keep(Kept::Nothing(Some((folder.clone(), created))));
-    Ok(())
+    crate::interrupt::keep_nothing_in(args.out.as_deref(), |folder| {
+        let created = prepare_output_folder("--out", folder)?;
+        files.iter().try_for_each(|name| check_output_file("--out", &folder.join(name)))?;
+        Ok(created)
+    })
 }

@@ -221,7 +221,7 @@ impl Scenario {
                 "belongs to a tensionless or bilinear soil: a linear one needs no soil sections and no settlement",
             ));
         }
-        if f.law != FoundationLawKind::Linear && f.stiffness == 0.0 {
+        if f.is_nonlinear_without_soil() {
             // No soil (said by the diagnostics): sections of zero stiffness would be stops that hold nothing.
             return Ok(PlacedInteractions::new());
         }

@@ -438,7 +438,7 @@ fn embankment_on_the_default_soil(scenario: &Scenario) -> Option<Warning> {
 /// on nothing — run as such, and said.
 fn soil_of_no_stiffness(scenario: &Scenario) -> Option<Warning> {
     let soil = &scenario.foundation;
-    if soil.law == crate::sections::FoundationLawKind::Linear || soil.stiffness != 0.0 || scenario.ground.is_some() {
+    if !soil.is_nonlinear_without_soil() || scenario.ground.is_some() {
         return None;
     }
     Some(Warning {

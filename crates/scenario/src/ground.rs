@@ -344,11 +344,11 @@ impl crate::Scenario {
 }
 
 impl crate::Scenario {
-    /// Refuse, by `key`, a `speed` (m/s) on this scenario's ground that no load can mean: at or above the ground's
-    /// fastest wave ([`fastest_wave`]). Checked before any spectrum or fit is computed.
-    pub fn check_speed_on_the_ground(&self, key: &str, speed: f64) -> Result<()> {
+    /// Refuse, by `key`, any of `speeds` (m/s) on this scenario's ground that no load can mean: at or above the
+    /// ground's fastest wave ([`fastest_wave`]). Checked before any spectrum or fit is computed.
+    pub fn check_speeds_on_the_ground(&self, key: &str, speeds: &[f64]) -> Result<()> {
         let (_, strip, _) = self.track_and_ground()?;
-        Self::check_speed_on(&strip, key, speed)
+        speeds.iter().try_for_each(|&speed| Self::check_speed_on(&strip, key, speed))
     }
 
     fn check_speed_on(strip: &StripGround, key: &str, speed: f64) -> Result<()> {

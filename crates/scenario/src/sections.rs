@@ -51,6 +51,14 @@ fn is_one(value: &usize) -> bool {
     *value == 1
 }
 
+impl FoundationSection {
+    /// A tensionless or bilinear soil of zero stiffness: no soil at all, so its law has nothing to act on (the run
+    /// places no soil sections, and says so).
+    pub fn is_nonlinear_without_soil(&self) -> bool {
+        self.law != FoundationLawKind::Linear && self.stiffness == 0.0
+    }
+}
+
 impl Default for FoundationSection {
     fn default() -> Self {
         Self {

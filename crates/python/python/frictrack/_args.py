@@ -28,10 +28,10 @@ def _speeds(speeds: "Union[float, str, Sequence[Union[float, str]]]") -> "list[f
     """Speeds (m/s) as a list: one speed or any iterable of them, each a number (m/s) or text with its unit
     (``"144km/h"``, ``"40m/s"``) as ``run(speed=...)`` takes it; anything else is an InputError naming it."""
     if isinstance(speeds, str):
-        return [_native.parse_speed("speeds", speeds)]
+        speeds = [speeds]
     if isinstance(speeds, (list, tuple)) and any(isinstance(v, str) for v in speeds):
-        return [_native.parse_speed("speeds", v) if isinstance(v, str) else _numbers("speeds", v, "a speed in m/s",
-                "200.0")[0] for v in speeds]
+        return [_native.parse_speed("speeds", v) if isinstance(v, str)
+                else _numbers("speeds", v, "a speed in m/s", "200.0")[0] for v in speeds]
     return _numbers("speeds", speeds, "a speed in m/s or text with its unit", '200.0, "144km/h" or [100.0, 200.0]')
 
 

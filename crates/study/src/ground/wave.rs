@@ -79,7 +79,7 @@ impl GroundWaveStudy {
             return Self::sharing(scenario, speeds, window, (stop, progress), &SiteSpectra::new(scenario));
         }
         let (beam, strip, track) = scenario.ground_track()?;
-        speeds.iter().try_for_each(|&v| scenario.check_speed_on_the_ground("speed", v))?;
+        scenario.check_speeds_on_the_ground("speed", speeds)?;
         let train = scenario.axles_on_the_ground()?;
         let positions = window.positions(train.length())?;
         let support = Support::of(&track, &strip);

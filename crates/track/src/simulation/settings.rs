@@ -183,14 +183,15 @@ impl RunSettings {
         let (limit, what) = self.moving.speed_limit.on(model.beam());
         let fastest = self.moving.largest_speed();
         if fastest >= limit {
-            let (value, reaches) = match (self.moving.speed_setting(), self.moving.acceleration) {
-                (Setting::Acceleration, Some(a)) => {
-                    (Refused::Number(a), format!("brings the load to {fastest:.0} m/s, which "))
-                }
-                (Setting::SpeedProfile, _) => {
-                    (Refused::Choice("given"), format!("brings the load to {fastest:.0} m/s, which "))
-                }
-                _ => (Refused::Number(fastest), String::new()),
+            // A changing speed is named by its key and value; the speed it reaches is said beside them.
+            let value = match (self.moving.speed_setting(), self.moving.acceleration) {
+                (Setting::Acceleration, Some(a)) => Refused::Number(a),
+                (Setting::SpeedProfile, _) => Refused::Choice("given"),
+                _ => Refused::Number(fastest),
+            };
+            let reaches = match !self.moving.profile.is_empty() {
+                true => format!("brings the load to {fastest:.0} m/s, which "),
+                false => String::new(),
             };
             return Err(TrackError::Invalid {
                 setting: self.moving.speed_setting(),
