@@ -12,9 +12,9 @@ use report::run_summary::RunSummary;
 use scenario::overrides::{OVERRIDES, OverrideKind};
 
 /// What a run returns to Python: the summary (JSON text, as `frictrack run --format json`), its text report (as
-/// `frictrack run` prints it), `histories.csv`, `snapshots.csv`, `wheels.csv` (None without vehicles) and the
-/// warnings the command line prints.
-type RunTexts = (String, String, String, String, Option<String>, Vec<String>);
+/// `frictrack run` prints it), `histories.csv`, `snapshots.csv`, `wheels.csv` (None without vehicles),
+/// `sleepers.csv` (None where no recorded section is over a sleeper) and the warnings the command line prints.
+type RunTexts = (String, String, String, String, Option<String>, Option<String>, Vec<String>);
 
 /// Run the scenario (`kind` "reference", "path", "toml" or "json" with its `text`) with the keyword `overrides`,
 /// telling `progress` (a callable of the fraction done), if given; with `out`, the run folder is written there as
@@ -61,12 +61,13 @@ pub(crate) fn run(
             report::run_folder::write(folder, (&scenario, &case), (&summary, record), &result, &snapshots)?;
         }
         let wheels = result.vehicles.as_ref().map(report::vehicle_output::wheels_csv);
-        let tables = (histories_csv(&result), snapshots_csv(&snapshots), wheels);
+        let sleepers = report::sleeper_output::sleepers_csv(result.sleepers.as_ref());
+        let tables = (histories_csv(&result), snapshots_csv(&snapshots), wheels, sleepers);
         Ok::<_, scenario::error::StudyError>((json, text, tables, after))
     })?;
-    let (json, text, (histories, snapshots, wheels), after) = outcome.map_err(to_python)?;
+    let (json, text, (histories, snapshots, wheels, sleepers), after) = outcome.map_err(to_python)?;
     warnings.extend(after);
-    Ok((json, text, histories, snapshots, wheels, warnings))
+    Ok((json, text, histories, snapshots, wheels, sleepers, warnings))
 }
 
 /// The names `run` takes as keyword overrides (the command line's flags, with underscores).
@@ -100,8 +101,8 @@ pub(crate) fn trains() -> Vec<String> {
     fem_beam::Train::catalogue()
 }
 
-/// The columns of the tables with their units, as the library writes them: a run's "histories", "snapshots" and
-/// "wheels", a stationary wave's "stationary_wave" (on a ground "ground_wave"), a receptance's "receptance" and the ground's "dispersion",
+/// The columns of the tables with their units, as the library writes them: a run's "histories", "snapshots",
+/// "wheels" and "sleepers", a stationary wave's "stationary_wave" (on a ground "ground_wave"), a receptance's "receptance" and the ground's "dispersion",
 /// "ground_speeds" and "equivalent_stiffness" (name, unit) lists.
 #[pyfunction]
 pub(crate) fn columns() -> Vec<(&'static str, Vec<(&'static str, &'static str)>)> {
@@ -109,6 +110,7 @@ pub(crate) fn columns() -> Vec<(&'static str, Vec<(&'static str, &'static str)>)
         ("histories", report::run_output::HISTORY_COLUMNS.to_vec()),
         ("snapshots", report::run_output::SNAPSHOT_COLUMNS.to_vec()),
         ("wheels", report::vehicle_output::WHEEL_COLUMNS.to_vec()),
+        ("sleepers", report::sleeper_output::SLEEPER_COLUMNS.to_vec()),
         ("stationary_wave", study::stationary::output::WAVE_COLUMNS.to_vec()),
         ("ground_wave", study::ground::wave_text::LIFT_OFF_WAVE_COLUMNS.to_vec()),
         ("receptance", study::receptance::text::RECEPTANCE_COLUMNS.to_vec()),

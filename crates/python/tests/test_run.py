@@ -77,6 +77,11 @@ def test_a_run_is_the_command_lines_to_the_bit(args, kwargs):
             assert len(run.losses) > 10
     else:
         assert run.wheels is None and run.losses is None
+    if (folder / "sleepers.csv").exists():
+        same_table(run.sleepers, folder / "sleepers.csv")
+        assert run.sleepers.units["sleeper_acceleration"] == "m/s²" and run.sleepers.units["pad_force"] == "N"
+    else:
+        assert run.sleepers is None
     if "timoshenko" in (scenario or ""):
         assert run.summary["rail_theory"].startswith("Timoshenko")
     if "acceleration" in kwargs:
@@ -87,6 +92,21 @@ def test_a_run_is_the_command_lines_to_the_bit(args, kwargs):
     # The text report is the command line's, by the same library code (but the wall time's line).
     text = subprocess.run([cli(), "run", *args], capture_output=True, text=True).stdout
     assert without_wall_time_line(str(run)) == without_wall_time_line(text)
+
+
+def test_a_recorded_sleeper_is_the_command_lines_table(tmp_path):
+    """A section over a sleeper (30.3 m, voided sleeper 50) records it: `Run.sleepers` is `sleepers.csv` to the
+    bit, with units; a section between sleepers records none."""
+    text = (EXAMPLES / "voided-sleeper.toml").read_text().replace("[output]", "[output]\nsections = [30.3]")
+    scenario = tmp_path / "recorded.toml"
+    scenario.write_text(text)
+    run = frictrack.run(text, progress=False)
+    _, folder = cli_run([str(scenario)])
+    same_table(run.sleepers, folder / "sleepers.csv")
+    assert set(run.sleepers["sleeper"]) == {50.0} and run.sleepers.units["sleeper_ballast_force"] == "N"
+    # The void closes: the ballast under it carries nothing until the wheel has pushed the gap shut.
+    assert run.sleepers["sleeper_ballast_force"][0] == 0.0 < run.sleepers["sleeper_ballast_force"].max()
+    assert frictrack.run(EXAMPLES / "voided-sleeper.toml", progress=False).sleepers is None
 
 
 def without_wall_time_line(text):

@@ -137,6 +137,10 @@ pub fn write(
     if result.vehicles.is_some() {
         files.insert("wheels.csv", FileMeta::of(columns(&WHEEL_COLUMNS)));
     }
+    let sleepers = crate::sleeper_output::sleepers_csv(result.sleepers.as_ref());
+    if sleepers.is_some() {
+        files.insert("sleepers.csv", FileMeta::of(columns(&crate::sleeper_output::SLEEPER_COLUMNS)));
+    }
     // An untitled run is titled by its speed: the one it ran at, or the two it changed between.
     let title = match (&scenario.title, &report.speed_change) {
         (t, _) if !t.is_empty() => t.clone(),
@@ -161,6 +165,9 @@ pub fn write(
     write_atomically(&folder.join("summary.json"), text.as_bytes())?;
     write_atomically(&folder.join("histories.csv"), histories_csv(result).as_bytes())?;
     write_atomically(&folder.join("snapshots.csv"), snapshots_csv(snapshots).as_bytes())?;
+    if let Some(table) = sleepers {
+        write_atomically(&folder.join("sleepers.csv"), table.as_bytes())?;
+    }
     let exceptions: Vec<(f64, String)> =
         report.sleepers.iter().flat_map(|s| &s.exceptions).map(|e| (e.x, e.what.clone())).collect();
     for mut spec in run_plots(&RunCurves::of(result, snapshots), &title, load, &exceptions) {

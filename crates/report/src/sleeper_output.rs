@@ -5,9 +5,52 @@
 
 use fem_beam::{BallastContact, BeamModel, Extreme, Layer, Sleepers};
 use scenario::axis::{Axis, Shown};
+use scenario::quantities::unit;
 use serde::Serialize;
+use std::fmt::Write as _;
 use track::simulation::{SleeperPeaks, SleeperResults};
 use track::{PlacedInteractions, SectionKind};
+
+/// Columns of `sleepers.csv`, the histories of the sleepers under recorded sections: name and unit. One row per
+/// sleeper and step; the sleeper numbered from 0 as in `[[sleepers.exceptions]]`, its deflection upward, its
+/// acceleration the step's mean, the forces compression positive from the settled state.
+pub const SLEEPER_COLUMNS: [crate::columns::Column; 9] = [
+    ("section", unit("section")),
+    ("sleeper", unit("sleeper")),
+    ("x", unit("x")),
+    ("time", unit("time")),
+    ("load_position", unit("load_position")),
+    ("sleeper_deflection", unit("sleeper_deflection")),
+    ("sleeper_acceleration", unit("sleeper_acceleration")),
+    ("pad_force", unit("pad_force")),
+    ("sleeper_ballast_force", unit("sleeper_ballast_force")),
+];
+
+/// `sleepers.csv` ([`SLEEPER_COLUMNS`]) of the recorded sleepers; None where no recorded section is over a sleeper.
+pub fn sleepers_csv(results: Option<&SleeperResults>) -> Option<String> {
+    let histories = &results?.histories;
+    if histories.is_empty() {
+        return None;
+    }
+    let mut out = SLEEPER_COLUMNS.iter().map(|(name, _)| *name).collect::<Vec<_>>().join(",") + "\n";
+    for h in histories {
+        for k in 0..h.time.len() {
+            let values = [
+                h.section,
+                h.index as f64,
+                h.x,
+                h.time[k],
+                h.load_position[k],
+                h.deflection[k],
+                h.acceleration[k],
+                h.pad_force[k],
+                h.ballast_force[k],
+            ];
+            let _ = writeln!(out, "{}", scenario::number::row(&values));
+        }
+    }
+    Some(out)
+}
 
 /// Bins of the bay (positions of the load between two sleepers) the deflection under the load is averaged over.
 pub const BAY_BINS: usize = 20;
@@ -122,11 +165,15 @@ pub struct SleepersSummary {
     /// Under ballast bodies: the largest subgrade force (N), where and when.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub max_subgrade_force: Option<Extreme>,
-    /// The sleepers' largest |acceleration| where the results are read (m/s², the step's mean), where and when.
+    /// The sleepers' largest |acceleration| where the results are read (m/s²), where and when: low-pass filtered
+    /// like the rail's where the run filters (`acceleration_band`), else the step's mean.
     pub max_sleeper_acceleration: Extreme,
-    /// Under ballast bodies: their largest |acceleration| (m/s²), where and when.
+    /// Under ballast bodies: their largest |acceleration| (m/s², as the sleepers'), where and when.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub max_ballast_acceleration: Option<Extreme>,
+    /// The band (Hz, −3 dB) the accelerations are filtered to, 0.443/T of the window T (s); None: the step's mean.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub acceleration_band: Option<f64>,
     /// The sleepers of `[[sleepers.exceptions]]`.
     pub exceptions: Vec<ExceptionalSleeper>,
     /// The deflection under the load over a bay.
@@ -177,6 +224,7 @@ impl SleepersSummary {
             max_subgrade_force: s.ballast_body.map(|_| largest(|p| p.subgrade_force)),
             max_sleeper_acceleration: largest(|p| Some(p.acceleration)),
             max_ballast_acceleration: s.ballast_body.map(|_| largest(|p| p.ballast_acceleration)),
+            acceleration_band: results.acceleration_window.map(|t| track::simulation::filtered_record::HALF_POWER / t),
             bay: BayProfile::of(results, read, &exceptions.iter().map(|e| e.x).collect::<Vec<_>>()),
             exceptions,
             element_length: model.mesh().element_length(),
@@ -275,9 +323,10 @@ pub(crate) fn write_sleepers(f: &mut std::fmt::Formatter<'_>, s: &SleepersSummar
         None => "none".into(),
     };
     let body = s.max_ballast_acceleration.map_or(String::new(), |e| format!(", ballast bodies {}", acceleration(&e)));
+    let how = s.acceleration_band.map_or("the step's mean".into(), |band| format!("low-pass to {band:.0} Hz"));
     writeln!(
         f,
-        "    largest accelerations there (the step's mean): sleepers {}{body}",
+        "    largest accelerations there ({how}): sleepers {}{body}",
         acceleration(&s.max_sleeper_acceleration)
     )?;
     if let (Some(above), Some(mid)) = (s.bay.above_sleeper, s.bay.mid_span) {

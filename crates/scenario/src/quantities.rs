@@ -124,6 +124,11 @@ pub const QUANTITIES: &[(&str, &str)] = &[
     ("lifted_length", "m"),
     ("preload", "m"),
     ("ballast_force", "N/m"),
+    ("sleeper", "1"),
+    ("sleeper_deflection", "m"),
+    ("sleeper_acceleration", "m/s²"),
+    ("pad_force", "N"),
+    ("sleeper_ballast_force", "N"),
     // The solvers and the study's set-ups.
     ("status", "text"),
     ("iterations", "1"),

@@ -17,6 +17,7 @@ mod no_silent_substitutions;
 mod receptance;
 mod report;
 mod run_out;
+mod sleeper_accelerations;
 mod soil;
 mod stationary;
 mod sweeps;

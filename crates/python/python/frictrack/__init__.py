@@ -69,6 +69,8 @@ class Run:
     ``histories``: the recorded sections over time (``histories.csv``), a :class:`Table`.
     ``snapshots``: the beam's deflection and moment at the requested instants (``snapshots.csv``).
     ``wheels``: each wheel over time (``wheels.csv``), or ``None`` without vehicles.
+    ``sleepers``: the sleepers under the recorded sections over time (``sleepers.csv``: deflection m, acceleration
+    m/s², pad and ballast forces N), or ``None`` where no recorded section is over a sleeper.
     ``losses``: each loss of wheel–rail contact (from ``summary["vehicles"]["losses"]``), or ``None``.
     ``warnings``: what the command line would print as warnings.
     ``report``: the text report ``frictrack run`` prints (also ``str(run)``).
@@ -77,13 +79,14 @@ class Run:
 
     def __init__(self, summary: Dict[str, Any], histories: Table, snapshots: Table,
                  wheels: Optional[Table], warnings: "list[str]", report: str = "",
-                 folder: "Optional[os.PathLike[str]]" = None) -> None:
+                 folder: "Optional[os.PathLike[str]]" = None, sleepers: Optional[Table] = None) -> None:
         self.summary = summary
         self.folder = folder
         self.report = report
         self.histories = histories
         self.snapshots = snapshots
         self.wheels = wheels
+        self.sleepers = sleepers
         self.warnings = warnings
 
     @property
@@ -131,7 +134,8 @@ def run(
 
     The run is ``frictrack run SCENARIO --format json --out DIR``: mid-span is recorded when the scenario names no
     section. With ``out`` (a folder, created if missing) the run folder is written there as that command writes it:
-    ``summary.json``, ``histories.csv``, ``snapshots.csv``, ``wheels.csv`` with vehicles, and the figures (PNG, SVG). It releases the GIL (other threads run meanwhile) and stops within a step on Ctrl-C
+    ``summary.json``, ``histories.csv``, ``snapshots.csv``, ``wheels.csv`` with vehicles, ``sleepers.csv`` with
+    sleepers under recorded sections, and the figures (PNG, SVG). It releases the GIL (other threads run meanwhile) and stops within a step on Ctrl-C
     (KeyboardInterrupt). Bad input raises :class:`InputError` naming the field. ``progress``: a callable of the
     fraction done, ``True`` for a tqdm bar, ``False`` for none; by default a tqdm bar where tqdm is installed and
     standard error is a terminal.
@@ -141,7 +145,7 @@ def run(
     given = [] if scenario is None else ["{…}" if isinstance(scenario, Mapping) else repr(scenario)]
     given += [f"{k}={v!r}" for k, v in overrides.items()] + ([] if folder is None else [f"out={folder!r}"])
     with _Reporter(progress, "run") as report:
-        summary, lines, histories, snapshots, wheels, warnings = _native.run(
+        summary, lines, histories, snapshots, wheels, sleepers, warnings = _native.run(
             kind, text, list(overrides.items()), report, folder,
             f"frictrack.run({', '.join(given)}) (Python)",
         )
@@ -153,6 +157,7 @@ def run(
         list(warnings),
         lines,
         None if out is None else Path(out),
+        None if sleepers is None else parse_csv(sleepers, COLUMNS["sleepers"]),
     )
 
 

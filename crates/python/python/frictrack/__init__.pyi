@@ -38,8 +38,8 @@ class Table:
 class Run:
     """One run: `summary` (dict, the keys of `frictrack run --format json`), `histories` (histories.csv: section m,
     time s, load_position m, deflection m, velocity m/s, acceleration m/s², moment N·m, friction_force N),
-    `snapshots` (snapshots.csv), `wheels` (wheels.csv, None without vehicles), `losses` (losses of wheel–rail
-    contact), `warnings`, `report` (the text `frictrack run` prints; also `str(run)`), `folder` (the run folder
+    `snapshots` (snapshots.csv), `wheels` (wheels.csv, None without vehicles), `sleepers` (sleepers.csv: the
+    sleepers under recorded sections, None where none is), `losses` (losses of wheel–rail contact), `warnings`, `report` (the text `frictrack run` prints; also `str(run)`), `folder` (the run folder
     when run with `out`, else None)."""
 
     summary: Dict[str, Any]
@@ -47,6 +47,7 @@ class Run:
     histories: Table
     snapshots: Table
     wheels: Optional[Table]
+    sleepers: Optional[Table]
     warnings: List[str]
     folder: Optional[Path]
     @property

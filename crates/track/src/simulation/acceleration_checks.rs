@@ -1,6 +1,6 @@
 //! The checks of the accelerations a run is asked to record besides the nodal one, before anything is allocated:
 //! the modal band's dense eigenproblem within [`BeamModel::MAX_MODAL_DOFS`], the filter in time's band, window and
-//! the velocities it keeps ([`super::filtered_record`]).
+//! the velocities it keeps ([`super::velocity_window`]).
 
 use super::settings::RunSettings;
 use crate::error::{Result, Setting, invalid};
@@ -38,20 +38,22 @@ impl RunSettings {
         if !(band.is_finite() && band > 0.0) {
             return Err(invalid(Setting::AccelerationFilter, band, "must be finite and > 0 (Hz)"));
         }
-        let window = super::filtered_record::HALF_POWER / band;
+        let window = super::velocity_window::HALF_POWER / band;
         let run = self.crossing_time(model.mesh().length);
         if window > run {
             let allowed =
                 format!("filters over a window of 0.443/band = {window:.4e} s, longer than the run ({run:.4e} s)");
             return Err(invalid(Setting::AccelerationFilter, band, allowed));
         }
-        let kept = super::filtered_record::FilteredRecord::kept(band, self.time_step());
-        let values = kept.saturating_mul(model.dofs().free_len());
+        let kept = super::velocity_window::VelocityWindow::kept(band, self.time_step());
+        // The rail's window keeps every free DOF, the sleepers' their own and their ballast bodies' ([`super::sleeper_record`]).
+        let sleepers = model.sleepers().map_or(0, |(_, nodes)| 2 * nodes.len());
+        let values = kept.saturating_mul(model.dofs().free_len() + sleepers);
         if values > Self::MAX_FILTER_VALUES {
             let allowed = format!(
                 "keeps {kept} steps' velocities of {} DOFs over its window ({values} numbers, at most {}): raise \
                  the band or lengthen the load advance",
-                model.dofs().free_len(),
+                model.dofs().free_len() + sleepers,
                 Self::MAX_FILTER_VALUES
             );
             return Err(invalid(Setting::AccelerationFilter, band, allowed));

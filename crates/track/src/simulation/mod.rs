@@ -22,13 +22,14 @@ pub(crate) mod setup;
 mod sleeper_record;
 mod stepping;
 mod vehicles;
+mod velocity_window;
 
 pub use lift_off::LIFT_OFF_GAP;
 pub use moving_settings::SpeedLimit;
 pub use results::{
     BandAcceleration, BodyResult, FallbackCount, FilteredAcceleration, LiftOff, LossOfContact, RunResult,
-    SectionHistory, SleeperPeaks, SleeperResults, SolverStatistics, StepView, VehicleResults, WheelHistory,
-    WheelResult, WindowExtremes, WorkStatistics,
+    SectionHistory, SleeperHistory, SleeperPeaks, SleeperResults, SolverStatistics, StepView, VehicleResults,
+    WheelHistory, WheelResult, WindowExtremes, WorkStatistics,
 };
 pub(crate) use settings::counts_for_extremes;
 pub use settings::{InitialState, IntegrationSettings, Load, MovingLoadSettings, RecordSettings, RunSettings};
@@ -178,7 +179,9 @@ impl<'a> Simulation<'a> {
         let mut deflections = DeflectionRecord::new(self.model, record, q0, start, crossing_steps);
         let mut sections = SectionRecords::new(self.model, self.interactions, &record.sections, total_steps);
         let mut lift_off = lift_off::LiftOffRecord::new(self.interactions);
-        let mut sleepers = sleeper_record::SleeperRecord::new(self.model, self.interactions);
+        let filter = record.acceleration_filter.map(|band| (band, h));
+        let recorded = (record.sections.as_slice(), total_steps);
+        let mut sleepers = sleeper_record::SleeperRecord::new(self.model, self.interactions, recorded, filter);
         sections.start((q0, v0), &run.setup.load, start)?;
         let mut band = record
             .acceleration_band

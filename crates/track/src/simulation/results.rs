@@ -346,10 +346,11 @@ pub struct SleeperPeaks {
     pub subgrade_force: Option<(f64, f64)>,
     /// The sleeper's lowest position (m, downward positive).
     pub lowest: f64,
-    /// The sleeper's largest |acceleration| (m/s², the step's mean (ż_{k+1} − ż_k)/h: a lumped mass between springs,
-    /// bounded under refinement) and when (s).
+    /// The sleeper's largest |acceleration| (m/s²) and when (s): filtered in time like the rail's where the run
+    /// filters it ([`SleeperResults::acceleration_window`]), else the step's mean (ż_{k+1} − ż_k)/h.
     pub acceleration: (f64, f64),
-    /// Under a ballast body: its largest |acceleration| (m/s²) and when (s); None on rigidly founded ballast.
+    /// Under a ballast body: its largest |acceleration| (m/s², as `acceleration`) and when (s); None on rigidly
+    /// founded ballast.
     pub ballast_acceleration: Option<(f64, f64)>,
     /// Where the ballast cannot pull: the largest gap under the sleeper (m; a voided sleeper's starts at its void, a
     /// tensionless one's stays 0 while it presses). None for bonded ballast.
@@ -369,4 +370,33 @@ pub struct SleeperResults {
     pub first: f64,
     /// (first load's position (m), the rail's deflection under it (m, upward)) after every step it was on the rail.
     pub under_load: Vec<(f64, f64)>,
+    /// The window T (s) the sleepers' accelerations are filtered over — the rail's filter in time
+    /// ([`crate::simulation::RecordSettings::acceleration_filter`]) —, None where the run does not filter (then they
+    /// are the step's mean).
+    pub acceleration_window: Option<f64>,
+    /// The histories of the sleepers under recorded sections (a section whose nearest node carries a sleeper).
+    pub histories: Vec<SleeperHistory>,
+}
+
+/// One sleeper's history under a recorded section, after every step (from t = h; forces as [`SleeperPeaks`]).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct SleeperHistory {
+    /// The recorded section's position (m), and the sleeper's number (0-based) and place (m).
+    pub section: f64,
+    /// See `section`.
+    pub index: usize,
+    /// See `section`.
+    pub x: f64,
+    /// Times t_k (s) and the first load's position then (m).
+    pub time: Vec<f64>,
+    /// See `time`.
+    pub load_position: Vec<f64>,
+    /// The sleeper's displacement z (m, upward) and its step's mean acceleration (ż_{k+1} − ż_k)/h (m/s², upward).
+    pub deflection: Vec<f64>,
+    /// See `deflection`.
+    pub acceleration: Vec<f64>,
+    /// The pad and ballast forces (N, compression positive, from the settled state).
+    pub pad_force: Vec<f64>,
+    /// See `pad_force`.
+    pub ballast_force: Vec<f64>,
 }
