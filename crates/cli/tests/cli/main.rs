@@ -17,7 +17,7 @@ mod no_silent_substitutions;
 mod receptance;
 mod report;
 mod run_out;
-mod sleeper_accelerations;
+mod sleeper_convergence;
 mod soil;
 mod stationary;
 mod sweeps;
