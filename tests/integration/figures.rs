@@ -164,8 +164,10 @@ fn wheel_forces_are_drawn_a_panel_per_vehicle() {
     let _ = std::fs::remove_dir_all(&folder);
 }
 
-/// A legend label too long for its column even at 13 px goes on two lines: nothing is painted in the image's
-/// rightmost 4 px (a label running off the image paints there — the 11 px single line this replaced did).
+/// A legend label too long for its column wraps onto more lines at the legend's one font size: nothing is painted in
+/// the image's rightmost 4 px (a label running off the image paints there — the 11 px single line this replaced
+/// did), and the long label's lines and the short one are written at the same size (a long label shrunk to 13 px
+/// beside 17 px ones read as two legends).
 #[test]
 fn long_legend_labels_wrap_instead_of_running_off_the_image() {
     let mut spec = PlotSpec::new(
@@ -195,6 +197,12 @@ fn long_legend_labels_wrap_instead_of_running_off_the_image() {
         .count();
     assert_eq!(painted, 0, "the legend reaches the image's edge");
     let svg = std::fs::read_to_string(svg).unwrap();
-    assert!(svg.lines().any(|l| l.trim() == "over the dipped joint at 100 m"), "the label's second line");
+    let texts: Vec<&str> = svg.split("<text").skip(1).collect();
+    let legend: Vec<&&str> =
+        texts.iter().filter(|t| ["wheel 1", "joint at", "\nshort\n"].iter().any(|w| t.contains(w))).collect();
+    assert!(legend.len() >= 3, "the long label on two lines or more, and the short one: {legend:?}");
+    let size = |t: &str| attribute(&format!("<text{t}"), "font-size");
+    assert!(legend.iter().all(|t| size(t) == size(legend[0])), "one font size: {legend:?}");
+    assert!(svg.contains("at 100 m"), "a number kept with its unit");
     let _ = std::fs::remove_dir_all(&folder);
 }

@@ -25,6 +25,7 @@ pub mod mesh_ripple;
 pub mod output;
 pub mod palette;
 pub mod plot;
+mod plot_text;
 pub mod provenance;
 pub mod result_warnings;
 pub mod run_folder;

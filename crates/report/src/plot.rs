@@ -10,6 +10,7 @@
 
 use crate::axis_grid::{self, GridAxis};
 pub use crate::palette::{GREY, Palette, color};
+use crate::plot_text::{LEGEND_SIZE, fitting_size, legend_lines, subtitle_lines};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use scenario::axis::Axis;
@@ -255,55 +256,6 @@ fn ranges(spec: &PlotSpec) -> Option<((f64, f64), (f64, f64))> {
     Some(((x0 - x_pad, x1 + x_pad), (y0 - pad, y1 + pad)))
 }
 
-/// The font size ≤ `size` (px) at which `text` fits in `width` px: `size` scaled down by the measured overflow (text
-/// width is proportional to the size), never below 60 % of it (beyond that a title must be shortened at its source).
-fn fitting_size<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, text: &str, size: f64, width: f64) -> f64 {
-    match area.estimate_text_size(text, &("sans-serif", size).into_font().into()) {
-        Ok((measured, _)) if f64::from(measured) > width => (size * width / f64::from(measured)).max(0.6 * size),
-        _ => size,
-    }
-}
-
-/// Font size of subtitles (px), and the most lines one takes before its last line shrinks to fit.
-const SUBTITLE_SIZE: f64 = 17.0;
-const SUBTITLE_LINES: usize = 3;
-
-/// The subtitle's lines and their font sizes: wrapped at spaces into lines of at most `width` px at
-/// [`SUBTITLE_SIZE`] (measured with 5 % to spare: the drawn text runs a little wider than its estimate), at most
-/// [`SUBTITLE_LINES`], the last one shrinking to fit what remains.
-fn subtitle_lines<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, text: &str, width: f64) -> Vec<(String, f64)> {
-    let room = 0.95 * width;
-    let fits = |line: &str| {
-        area.estimate_text_size(line, &("sans-serif", SUBTITLE_SIZE).into_font().into())
-            .is_ok_and(|(w, _)| f64::from(w) <= room)
-    };
-    let mut lines: Vec<String> = Vec::new();
-    let mut words = text.split(' ').filter(|w| !w.is_empty()).peekable();
-    while words.peek().is_some() {
-        let mut line = String::new();
-        if lines.len() + 1 == SUBTITLE_LINES {
-            line = words.by_ref().collect::<Vec<_>>().join(" ");
-        } else {
-            while let Some(word) = words.peek() {
-                let longer = if line.is_empty() { (*word).to_string() } else { format!("{line} {word}") };
-                if !line.is_empty() && !fits(&longer) {
-                    break;
-                }
-                line = longer;
-                words.next();
-            }
-        }
-        lines.push(line);
-    }
-    lines
-        .into_iter()
-        .map(|line| {
-            let size = fitting_size(area, &line, SUBTITLE_SIZE, room);
-            (line, size)
-        })
-        .collect()
-}
-
 fn draw<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, spec: &PlotSpec) -> std::result::Result<Layout, String> {
     let err = |e: &dyn std::fmt::Display| e.to_string();
     root.fill(&WHITE).map_err(|e| err(&e))?;
@@ -401,10 +353,13 @@ fn draw_panel<DB: DrawingBackend>(
         // across the segment, truncated to whole pixels — at width 2 the offsets of a steep or diagonal segment
         // (|±1·sin| < 1) truncate to 0 and it came out 1 px thin beside its 2 px neighbours; at 3 every direction
         // keeps 2 px or more.
-        let width = if 2 * s.points.len() > columns { 1 } else { 3 };
-        let style = spec.palette.color(s.color).stroke_width(width);
+        // A dense but smooth curve (a wave of a few hundred extrema sampled every step) is thinned to its extrema
+        // and every k-th point in between, and drawn 3 px like the rest.
         let line: Vec<(f64, f64)> =
             s.points.iter().map(|&(x, y)| (tx(x), ty(y))).filter(|(x, y)| x.is_finite() && y.is_finite()).collect();
+        let line = thinned(line, columns);
+        let width = if 2 * line.len() > columns { 1 } else { 3 };
+        let style = spec.palette.color(s.color).stroke_width(width);
         match s.stroke {
             Stroke::Solid => chart.draw_series(LineSeries::new(line.clone(), style)).map(|_| ()),
             Stroke::Dashed => chart.draw_series(DashedLineSeries::new(line.clone(), 9, 6, style)).map(|_| ()),
@@ -425,37 +380,42 @@ fn draw_panel<DB: DrawingBackend>(
     Ok(PanelLayout { plot: (px.start, py.start, px.end, py.end), legend: (lx.start, ly.start, lx.end, ly.end) })
 }
 
-/// The legend column: one entry per labelled curve (its stroke and marker), then the key of strokes and marks.
+/// `line` as drawn over `columns` px: unchanged where it has at most columns/2 points or is not smooth (more than
+/// columns/8 extrema: a chattering force, which only a 1 px stroke draws faithfully); else its first and last
+/// points, every extremum and every k-th point between, k such that at most columns/2 points remain — the peaks
+/// kept to the bit.
+fn thinned(line: Vec<(f64, f64)>, columns: usize) -> Vec<(f64, f64)> {
+    let extremum = |i: usize| {
+        let (before, after) = (line[i].1 - line[i - 1].1, line[i + 1].1 - line[i].1);
+        before * after < 0.0
+    };
+    let extrema = (1..line.len().saturating_sub(1)).filter(|&i| extremum(i)).count();
+    if 2 * line.len() <= columns || 8 * extrema > columns {
+        return line;
+    }
+    // Room for the stride's points beside the extrema, the ends and the rounding of the stride.
+    let room = (columns / 2).saturating_sub(extrema + 3).max(2);
+    let stride = line.len().div_ceil(room).max(1);
+    let last = line.len() - 1;
+    (0..line.len()).filter(|&i| i == 0 || i == last || i % stride == 0 || extremum(i)).map(|i| line[i]).collect()
+}
+
+/// The legend column: one entry per labelled curve (its stroke and marker), then the key of strokes and marks (a
+/// triangle in each of the marks' colours), every text at one size.
 fn draw_legend<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     spec: &PlotSpec,
 ) -> std::result::Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
     let room = f64::from(area.dim_in_pixel().0) - 64.0;
-    // Each text at 17 px, or smaller down to 13 px where that fits the column, else on two lines (split at the space
-    // that balances them), each as large as fits; the rows below move down by the second line.
+    const LINE: i32 = 18;
+    // The text beside a sample at `y`, on as many lines as it needs; the extra height it took (px).
     let write = |text: &str, y: i32| -> std::result::Result<i32, DrawingAreaErrorKind<DB::ErrorType>> {
-        let width = |t: &str| -> std::result::Result<f64, DrawingAreaErrorKind<DB::ErrorType>> {
-            Ok(f64::from(area.estimate_text_size(t, &("sans-serif", 17).into_text_style(area))?.0))
-        };
-        let size = |w: f64| if w > room { (17.0 * room / w).floor() } else { 17.0 };
-        let one = size(width(text)?);
-        let split = || {
-            text.match_indices(' ')
-                .map(|(i, _)| (&text[..i], &text[i + 1..]))
-                .min_by_key(|(a, b)| a.chars().count().abs_diff(b.chars().count()))
-        };
-        match if one < 13.0 { split() } else { None } {
-            Some((first, second)) => {
-                let two = size(width(first)?.max(width(second)?)).max(11.0);
-                area.draw(&Text::new(first, (58, y - 9), ("sans-serif", two).into_font()))?;
-                area.draw(&Text::new(second, (58, y - 9 + 18), ("sans-serif", two).into_font()))?;
-                Ok(18)
-            }
-            _ => {
-                area.draw(&Text::new(text, (58, y - 9), ("sans-serif", one.max(11.0)).into_font()))?;
-                Ok(0)
-            }
+        let lines = legend_lines(area, text, room);
+        for (k, line) in lines.iter().enumerate() {
+            let at = (58, y - 8 + LINE * k as i32);
+            area.draw(&Text::new(line.as_str(), at, ("sans-serif", LEGEND_SIZE).into_font()))?;
         }
+        Ok(LINE * (lines.len().max(1) as i32 - 1))
     };
     let sample = |y: i32, stroke: Stroke| -> Vec<Vec<(i32, i32)>> {
         match stroke {
@@ -481,7 +441,18 @@ fn draw_legend<DB: DrawingBackend>(
         y += 26 + write(text, y)?;
     }
     if !spec.marks.is_empty() && !spec.mark_label.is_empty() {
-        area.draw(&TriangleMarker::new((30, y), 9, BLACK.filled()))?;
+        // The marks' colours in order of first appearance, a triangle each (up to three side by side).
+        let mut colors: Vec<usize> = Vec::new();
+        for m in &spec.marks {
+            if !colors.contains(&m.color) {
+                colors.push(m.color);
+            }
+        }
+        let count = colors.len().min(3) as i32;
+        for (k, &c) in colors.iter().take(3).enumerate() {
+            let x = 30 + 14 * k as i32 - 7 * (count - 1);
+            area.draw(&TriangleMarker::new((x, y), 9, spec.palette.color(c).filled()))?;
+        }
         write(&spec.mark_label, y)?;
     }
     Ok(())

@@ -27,8 +27,10 @@ use std::f64::consts::TAU;
 const SPEEDS: usize = 24;
 /// The moving-load spectra [`GroundStudy::of`] samples: the static case, its speeds and ~12 to refine the peak.
 pub const SPECTRA: usize = 1 + SPEEDS + 12;
-/// Wavenumbers of each k_eq curve, log-spaced over [`WAVENUMBERS`] (rad/m).
-const STIFFNESS_POINTS: usize = 81;
+/// Wavenumbers of each k_eq curve, log-spaced over [`WAVENUMBERS`] (rad/m): 140 a decade, so that the peaks of the
+/// higher modes a fast load crosses above 0.5 rad/m (a peak and its dip 0.04 decades apart on the soft site) take
+/// ≥ 6 points between them (at 81 they took 2: a sawtooth).
+const STIFFNESS_POINTS: usize = 321;
 const WAVENUMBERS: (f64, f64) = (0.01, 2.0);
 
 /// What to compute: the frequencies (Hz) of the dispersion curves.

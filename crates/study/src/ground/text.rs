@@ -194,7 +194,13 @@ impl GroundStudy {
             figure.series.push(Self::line(format!("critical speed on the ground, {v:.1} m/s"), 4, v, span, false));
         }
         let v = self.winkler_critical_speed;
-        figure.series.push(Self::line(format!("Winkler control on k_w, {v:.1} m/s"), 5, v, span, false));
+        figure.series.push(Self::line(
+            format!("Winkler control (beam on the static strip stiffness), {v:.1} m/s"),
+            6,
+            v,
+            span,
+            false,
+        ));
         if let (Some(f), Some(c)) = (self.minimum_phase_velocity_frequency, self.minimum_phase_velocity) {
             figure.marks.push(Mark { color: 1, point: (f, c) });
         }
@@ -207,7 +213,7 @@ impl GroundStudy {
         figure.mark_label = match (self.minimum_phase_velocity.is_some(), figure.marks.len()) {
             (_, 0) => String::new(),
             (true, 1) => "the soil's least phase velocity".into(),
-            (true, _) => "least phase velocity; where a beam's curve meets the soil's".into(),
+            (true, _) => "the soil's least phase velocity; where a beam's curve meets the soil's".into(),
             (false, _) => "where a beam's curve meets the soil's".into(),
         };
         figure
@@ -230,7 +236,7 @@ impl GroundStudy {
                 .collect()
         };
         [
-            (self.static_strip_stiffness, "beam on the static strip stiffness k_w", Stroke::Solid),
+            (self.static_strip_stiffness, "beam on the static strip stiffness", Stroke::Solid),
             (0.0, "free beam (no stiffness under it)", Stroke::Dashed),
         ]
         .into_iter()
@@ -270,7 +276,13 @@ impl GroundStudy {
             figure.series.push(Self::line(format!("critical speed on the ground, {v:.1} m/s"), 4, v, (0.0, top), true));
         }
         let v = self.winkler_critical_speed;
-        figure.series.push(Self::line(format!("Winkler control on k_w, {v:.1} m/s"), 5, v, (0.0, top), true));
+        figure.series.push(Self::line(
+            format!("Winkler control (beam on the static strip stiffness), {v:.1} m/s"),
+            6,
+            v,
+            (0.0, top),
+            true,
+        ));
         if let Some(c) = self.minimum_phase_velocity {
             figure.series.push(Self::line(format!("soil's least phase velocity, {c:.1} m/s"), 3, c, (0.0, top), true));
         }

@@ -277,7 +277,8 @@ impl GroundWaveStudy {
             let inside =
                 wave.s.iter().zip(&wave.deflection).filter(|(s, _)| (from - MARGIN..=to + MARGIN).contains(*s));
             let points = inside.map(|(s, w)| (*s, w * 1e3)).collect();
-            let label = format!("v = {:.1} m/s ({:.0} km/h)", wave.speed, wave.speed * scenario::units::KMH);
+            let computed = if self.comparison.is_some() { "computed, " } else { "" };
+            let label = format!("{computed}v = {:.1} m/s ({:.0} km/h)", wave.speed, wave.speed * scenario::units::KMH);
             figure.series.push(Series {
                 label: Some(label),
                 color: i + 1,
@@ -289,7 +290,12 @@ impl GroundWaveStudy {
         if let Some(c) = &self.comparison {
             let name =
                 std::path::Path::new(&c.record).file_name().map_or(c.record.clone(), |n| n.to_string_lossy().into());
-            let label = format!("measured ({name}; placed at {})", placement(c));
+            let label = format!(
+                "measured ({name}; placed at {}); RMS misfit {:.2} mm of the record's RMS {:.2} mm",
+                placement(c),
+                c.rms_misfit * 1e3,
+                c.rms_measured * 1e3
+            );
             figure.series.push(Series {
                 label: Some(label),
                 color: 0,
