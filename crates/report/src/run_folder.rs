@@ -91,13 +91,15 @@ impl FileMeta {
     }
 }
 
-/// The files a run of `case` writes into its folder.
+/// The files a run of `case` may write into its folder (on sleepers `sleepers.csv` and the bay's figure are written
+/// only where there is something to put in them).
 pub fn file_names(case: &Case) -> Vec<String> {
     let files = ["summary.json", "histories.csv", "snapshots.csv"].map(String::from).into_iter();
     let figures = FIGURE_STEMS.iter().flat_map(|f| [format!("{f}.png"), format!("{f}.svg")]);
     let wheel_files = ["wheels.csv", "wheel-forces.png", "wheel-forces.svg"].map(String::from).into_iter();
     let wheel_files = wheel_files.filter(|_| case.settings.moving.load.vehicles().is_some());
-    let bay_files = ["bay.png", "bay.svg"].map(String::from).into_iter().filter(|_| case.model.sleepers().is_some());
+    let bay_files = ["bay.png", "bay.svg", "sleepers.csv"].map(String::from);
+    let bay_files = bay_files.into_iter().filter(|_| case.model.sleepers().is_some());
     files.chain(figures).chain(wheel_files).chain(bay_files).collect()
 }
 
@@ -165,8 +167,9 @@ pub fn write(
     write_atomically(&folder.join("summary.json"), text.as_bytes())?;
     write_atomically(&folder.join("histories.csv"), histories_csv(result).as_bytes())?;
     write_atomically(&folder.join("snapshots.csv"), snapshots_csv(snapshots).as_bytes())?;
-    if let Some(table) = sleepers {
-        write_atomically(&folder.join("sleepers.csv"), table.as_bytes())?;
+    match sleepers {
+        Some(table) => write_atomically(&folder.join("sleepers.csv"), table.as_bytes())?,
+        None => remove_stale(folder, &["sleepers.csv"])?,
     }
     let exceptions: Vec<(f64, String)> =
         report.sleepers.iter().flat_map(|s| &s.exceptions).map(|e| (e.x, e.what.clone())).collect();
@@ -182,10 +185,28 @@ pub fn write(
         spec.subtitle = format!("{subtitle}; {}", spec.subtitle);
         crate::plot::render(&spec, folder)?;
     }
-    if let Some(sleepers) = &report.sleepers {
-        let mut spec = crate::sleeper_output::bay_plot(sleepers, &title);
-        spec.subtitle = format!("{subtitle}; {}; {}", sleepers.track, spec.subtitle);
-        crate::plot::render(&spec, folder)?;
+    let bay = report.sleepers.as_ref().and_then(|s| Some((s, crate::sleeper_output::bay_plot(s, &title)?)));
+    match bay {
+        Some((sleepers, mut spec)) => {
+            spec.subtitle = format!("{subtitle}; {}; {}", sleepers.track, spec.subtitle);
+            crate::plot::render(&spec, folder)?;
+        }
+        None => remove_stale(folder, &["bay.png", "bay.svg"])?,
+    }
+    Ok(())
+}
+
+/// Remove `names` from `folder` where an earlier run left them and this one writes none: a report made from the
+/// folder must not show another run's file as this one's.
+fn remove_stale(folder: &Path, names: &[&str]) -> Result<()> {
+    for name in names {
+        let path = folder.join(name);
+        if path.is_file() {
+            std::fs::remove_file(&path).map_err(|e| scenario::error::StudyError::Io {
+                path: path.display().to_string(),
+                message: e.to_string(),
+            })?;
+        }
     }
     Ok(())
 }

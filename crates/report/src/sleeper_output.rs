@@ -85,7 +85,8 @@ pub fn track_in_words(model: &BeamModel) -> Option<String> {
     let n = |x: f64| scenario::number::significant(x, 4);
     let (beam, soil) = (&below.beam, &below.foundation);
     Some(format!(
-        "{sleepers} over an embankment of EI {} MN·m², {} t/m (half under this rail), on k_f {} MN/m², c {} kN·s/m²",
+        "{sleepers} over an embankment of EI {} MN·m², {} t/m (half under this rail), on soil of {} MN/m² and {} \
+         kN·s/m²",
         n(2.0 * beam.bending_stiffness() / 1e6),
         n(2.0 * beam.mass_per_length() / 1e3),
         n(2.0 * soil.stiffness / 1e6),
@@ -130,7 +131,14 @@ pub struct BayProfile {
     /// a void or a softer ballast there is not the track's bay. False when there are none, or when no other bay is
     /// read (then every bay is averaged).
     pub exceptions_left_out: bool,
+    /// The load's steps a bay, a/(v h): below [`MIN_STEPS_PER_BAY`] the bins are sampled too sparsely for a profile
+    /// (the figure is not drawn, and the text says why).
+    pub steps_per_bay: f64,
 }
+
+/// The fewest load steps a bay the bay's profile is drawn from: one a bin (a load advance ≤ a/20, what the sleeper
+/// passing frequency needs too), so that every bin is sampled whatever the load's phase against the sleepers.
+pub const MIN_STEPS_PER_BAY: f64 = BAY_BINS as f64;
 
 /// The sleepers under one run.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -271,6 +279,12 @@ fn exceptional(s: &Sleepers, results: &SleeperResults) -> Vec<ExceptionalSleeper
 }
 
 impl BayProfile {
+    /// Whether the load takes [`MIN_STEPS_PER_BAY`] steps a bay, up to the round-off of its positions (0.6/0.03 m
+    /// reads 19.999 999…).
+    pub fn profiled(&self) -> bool {
+        self.steps_per_bay >= MIN_STEPS_PER_BAY * (1.0 - 1e-6)
+    }
+
     /// The mean downward deflection under the load in each of [`BAY_BINS`] bins of the bay, over the load's positions
     /// in `read` (m) outside the bays beside the sleepers at `exceptions` (m), where any remain.
     fn of(results: &SleeperResults, read: [f64; 2], exceptions: &[f64]) -> Self {
@@ -289,7 +303,18 @@ impl BayProfile {
         let bins: Vec<(f64, Option<f64>)> = (0..BAY_BINS)
             .map(|j| (j as f64 / BAY_BINS as f64, (sums[j].1 > 0).then(|| sums[j].0 / sums[j].1 as f64)))
             .collect();
-        Self { above_sleeper: bins[0].1, mid_span: bins[BAY_BINS / 2].1, bins, exceptions_left_out: left_out }
+        // The load's advance a step, from its first two positions on the rail.
+        let advance = match results.under_load.as_slice() {
+            [(a, _), (b, _), ..] => (b - a).abs(),
+            _ => f64::INFINITY,
+        };
+        Self {
+            above_sleeper: bins[0].1,
+            mid_span: bins[BAY_BINS / 2].1,
+            bins,
+            exceptions_left_out: left_out,
+            steps_per_bay: results.spacing / advance,
+        }
     }
 }
 
@@ -329,7 +354,15 @@ pub(crate) fn write_sleepers(f: &mut std::fmt::Formatter<'_>, s: &SleepersSummar
         "    largest accelerations there ({how}): sleepers {}{body}",
         acceleration(&s.max_sleeper_acceleration)
     )?;
-    if let (Some(above), Some(mid)) = (s.bay.above_sleeper, s.bay.mid_span) {
+    if !s.bay.profiled() {
+        writeln!(
+            f,
+            "    deflection under the load over a bay: not profiled — the load takes {:.1} steps a bay ({MIN_STEPS_PER_BAY} \
+             needed, one a bin: a load advance ≤ {:.4} m)",
+            s.bay.steps_per_bay,
+            s.spacing / MIN_STEPS_PER_BAY
+        )?;
+    } else if let (Some(above), Some(mid)) = (s.bay.above_sleeper, s.bay.mid_span) {
         writeln!(
             f,
             "    deflection under the load (mean over the bays there{}): {:.4} mm above a sleeper, {:.4} mm at mid-span \
@@ -365,8 +398,13 @@ pub(crate) fn write_sleepers(f: &mut std::fmt::Formatter<'_>, s: &SleepersSummar
 
 /// The figure `bay` of a run on sleepers: the rail's mean downward deflection under the first load (mm) against the
 /// load's distance from the sleeper behind it (m), over the bays where the results are read, at the mesh's nodes —
-/// above a sleeper at both ends (the first bin drawn again at a), mid-span in the middle; the sleepers marked.
-pub fn bay_plot(s: &SleepersSummary, title: &str) -> crate::plot::PlotSpec {
+/// above a sleeper at both ends (the first bin drawn again at a), mid-span in the middle; the sleepers marked. None
+/// where the load takes fewer than [`MIN_STEPS_PER_BAY`] steps a bay, or fewer than three points (the sleeper and
+/// two nodes) were sampled: a profile of two or three scattered bins is no profile (the text says so).
+pub fn bay_plot(s: &SleepersSummary, title: &str) -> Option<crate::plot::PlotSpec> {
+    if !s.bay.profiled() || s.bay.above_sleeper.is_none() {
+        return None;
+    }
     use crate::plot::{Mark, PlotSpec, Series, Stroke};
     let mut spec = PlotSpec::new(
         "bay",
@@ -392,12 +430,19 @@ pub fn bay_plot(s: &SleepersSummary, title: &str) -> crate::plot::PlotSpec {
         spec.mark_label = "above a sleeper".into();
     }
     let [a, b] = s.read_region;
-    let label = format!("on the nodes (every {} m)", scenario::number::significant(s.element_length, 6));
+    let change = match (s.bay.mid_span, s.bay.above_sleeper) {
+        (Some(mid), Some(above)) => format!("; mid-span {:+.2} % from above a sleeper", (mid / above - 1.0) * 100.0),
+        _ => String::new(),
+    };
+    let label = format!("on the nodes (every {} m){change}", scenario::number::significant(s.element_length, 6));
     // What the means are over, for the subtitle (its caller puts the run's line before it).
     spec.subtitle = format!(
         "mean over the load at x = {a:.1}–{b:.1} m{}",
         if s.bay.exceptions_left_out { " but the bays beside the exceptional sleepers" } else { "" }
     );
+    if points.len() < 4 {
+        return None;
+    }
     spec.series.push(Series { label: Some(label), color: 0, stroke: Stroke::Solid, markers: true, points });
-    spec
+    Some(spec)
 }

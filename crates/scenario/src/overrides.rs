@@ -366,8 +366,16 @@ impl Overrides {
     fn changes_of_the_case(&self) -> Vec<String> {
         // Six significant digits: `--speed 185km/h` is 51.3889 m/s in a title, not 51.38888888888889.
         let number = |flag: &str, v: Option<f64>| v.map(|v| format!("{flag} {}", crate::number::significant(v, 6)));
+        // A speed with its unit and in km/h: `--speed 185km/h` titles "--speed 51.3889 m/s (185 km/h)".
+        let speed = self.speed.map(|v| {
+            format!(
+                "--speed {} m/s ({} km/h)",
+                crate::number::significant(v, 6),
+                crate::number::significant(v * crate::units::KMH, 4)
+            )
+        });
         [
-            number("--speed", self.speed),
+            speed,
             number("--acceleration", self.acceleration),
             self.train.as_ref().map(|t| format!("--train {t}")),
             self.devices.map(|n| format!("--devices {n}")),
@@ -400,7 +408,7 @@ mod tests {
         assert!(text.contains("device_force") && text.contains("number"), "{text}");
         let scenario = o.apply(Scenario { title: "case".into(), ..Scenario::default() }).unwrap();
         assert_eq!(scenario.load.speed, 150.0);
-        assert_eq!(scenario.title, "case (run with --speed 150 --devices 31)");
+        assert_eq!(scenario.title, "case (run with --speed 150 m/s (540 km/h) --devices 31)");
     }
 
     /// A value of `kind` that is not the default of its field.

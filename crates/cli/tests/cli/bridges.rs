@@ -125,10 +125,10 @@ fn titles_name_the_train_and_speed_that_ran() {
     let out = frictrack(&args);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let header = String::from_utf8_lossy(&out.stdout).lines().next().unwrap_or_default().to_string();
-    assert!(header.contains("HSLM-A1 (run with --speed 80 --train hslm-a3): train hslm-a3"), "{header}");
+    assert!(header.contains("HSLM-A1 (run with --speed 80 m/s (288 km/h) --train hslm-a3): train hslm-a3"), "{header}");
     for figure in ["histories-deflection", "histories-moment", "snapshots-deflection", "snapshots-moment"] {
         let svg = std::fs::read_to_string(dir.join(format!("{figure}.svg"))).unwrap();
-        assert!(svg.contains("(run with --speed 80 --train hslm-a3)"), "{figure}: title");
+        assert!(svg.contains("(run with --speed 80 m/s (288 km/h) --train hslm-a3)"), "{figure}: title");
         assert!(svg.contains("train hslm-a3 (46 axles"), "{figure}: subtitle");
         assert!(svg.contains("at 80.00 m/s (288 km/h); friction: none"), "{figure}: subtitle");
     }

@@ -74,3 +74,29 @@ fn a_voided_sleeper_over_the_embankment() {
     assert_eq!(out.status.code(), Some(2), "{stderr}");
     assert!(stderr.contains("embankment.interface = tensionless") && stderr.contains("[[sleepers.exceptions]]"));
 }
+
+/// The bay's profile is drawn only where the step samples every bin of it: the example's load advance (0.1 m, 6.5
+/// steps a 0.65 m bay) is refused a figure — it drew a triangle of three scattered bins, the sleeper missing — and the
+/// text says why and what advance would do; at 0.0325 m (20 steps a bay, one a bin) it is drawn. A figure left by the earlier run in the
+/// same folder goes when a run draws none. The subtitle's soil is in words (it read "k _f").
+#[test]
+fn the_bays_profile_needs_a_step_a_bin() {
+    let folder = temporary_folder("two-beam-bay");
+    let site = write_file(&folder, "site.toml", &one_load(""));
+    let out = folder.join("run");
+    let run = |advance: &str| {
+        let args = ["run", site.as_str(), "--speed", "185km/h", "--load-advance", advance, "--out"];
+        frictrack(&[&args[..], &[out.to_str().unwrap()]].concat())
+    };
+    let fine = run("0.0325");
+    assert!(fine.status.success() && out.join("bay.png").is_file() && out.join("bay.svg").is_file());
+    let svg = std::fs::read_to_string(out.join("bay.svg")).unwrap();
+    assert!(svg.contains("on soil of") && !svg.contains("k_f"), "the soil in words");
+    let coarse = run("0.1");
+    let stdout = String::from_utf8_lossy(&coarse.stdout);
+    assert!(
+        stdout.contains("not profiled — the load takes 6.5 steps a bay") && stdout.contains("≤ 0.0325 m"),
+        "{stdout}"
+    );
+    assert!(!out.join("bay.png").exists() && !out.join("bay.svg").exists(), "the earlier run's figure is gone");
+}
