@@ -206,3 +206,46 @@ fn long_legend_labels_wrap_instead_of_running_off_the_image() {
     assert!(svg.contains("at 100 m"), "a number kept with its unit");
     let _ = std::fs::remove_dir_all(&folder);
 }
+
+/// A y label written upward never runs past its panel's plot: on three stacked snapshot panels (their plots ~200 px
+/// high) "deflection w (mm, upward > 0)" at 21 px was ~300 px long and reached into the heading above; it is set
+/// smaller to fit (its width estimated at 0.55 em a character, DejaVu Sans's average advance: the 0.62 em above is a
+/// bound for text that must stay inside the image, too generous to compare a fitted length with).
+#[test]
+fn a_panels_y_label_fits_its_panel() {
+    let axis = |name: &str, quantity: &str| Axis::new(name, quantity, Shown::Milli);
+    let mut figure = PlotSpec::new("panels", "three panels", &axis("x", "x"), &axis("deflection w", "deflection"));
+    for i in 0..3 {
+        let mut panel = PlotSpec::new(format!("p{i}"), format!("panel {i}"), &axis("x", "x"), &figure_y());
+        panel.series.push(report::plot::Series {
+            label: Some("curve".into()),
+            color: 1,
+            stroke: report::plot::Stroke::Solid,
+            markers: false,
+            points: vec![(0.0, 0.0), (1.0, -1.0)],
+        });
+        figure.panels.push(panel);
+    }
+    let folder = std::env::temp_dir().join(format!("frictrack-figures-panels-{}", std::process::id()));
+    std::fs::create_dir_all(&folder).unwrap();
+    let (_, svg, layout) = render(&figure, &folder).unwrap();
+    let svg = std::fs::read_to_string(svg).unwrap();
+    let label = figure.panels[0].y_label.clone();
+    let sizes: Vec<f64> = svg
+        .split("<text")
+        .filter(|t| t.split_once('>').is_some_and(|(_, text)| text.trim().starts_with(&label.replace('>', "&gt;"))))
+        .map(|t| number(&format!("<text{t}"), "font-size"))
+        .collect();
+    assert_eq!(sizes.len(), 3, "{label}");
+    for (size, panel) in sizes.iter().zip(&layout.panels) {
+        let height = f64::from(panel.plot.3 - panel.plot.1);
+        let length = 0.55 * size * label.chars().count() as f64;
+        assert!(length <= height, "{length:.0} px of label beside {height} px of plot");
+    }
+    let _ = std::fs::remove_dir_all(&folder);
+}
+
+/// The snapshots' y axis: the deflection, upward positive.
+fn figure_y() -> Axis {
+    Axis::noted("deflection w", "deflection", Shown::Milli, "upward > 0")
+}

@@ -327,6 +327,10 @@ fn draw_panel<DB: DrawingBackend>(
         move |v: &f64| if log { axis_grid::log_tick(*v, plain) } else { axis_grid::tick(*v, step) }
     };
     let (x_format, y_format) = (label(log_x, x_step, x_plain), label(log_y, y_step, y_plain));
+    // The axes' descriptions at 21 px, smaller where the y one (written upward) would run past a short panel's plot
+    // (a stacked snapshot's: "deflection w (mm, upward > 0)" was taller than its 200 px).
+    let plot_height = f64::from(chart.plotting_area().dim_in_pixel().1);
+    let description = fitting_size(&chart_area, &spec.y_label, 21.0, 0.95 * plot_height);
     chart
         .configure_mesh()
         .x_desc(spec.x_label.as_str())
@@ -334,7 +338,7 @@ fn draw_panel<DB: DrawingBackend>(
         .x_label_formatter(&x_format)
         .y_label_formatter(&y_format)
         .label_style(("sans-serif", 18))
-        .axis_desc_style(("sans-serif", 21))
+        .axis_desc_style(("sans-serif", description))
         .light_line_style(RGBColor(235, 235, 235))
         .bold_line_style(RGBColor(205, 205, 205))
         .draw()

@@ -67,4 +67,22 @@ fn ledsgard_with_and_without_ballast_friction() {
     let stems: Vec<&str> = data.plots.iter().map(|p| p.stem.as_str()).collect();
     assert_eq!(stems, ["ledsgard-speeds", "ledsgard-speeds-two-beam", "ledsgard-70-kmh", "ledsgard-185-kmh"]);
     assert_eq!(data.headline.len(), 3);
+    figures_say_what_they_show(&data.plots);
+}
+
+/// The figures pasted alone: the two-beam track's four curves, within 0.10 % of each other, are drawn as one that
+/// says so (three hid under the fourth), with none of the composite beam's critical speeds; the Winkler control at
+/// 378 km/h, beyond the speeds computed (280 km/h), is named in the subtitle rather than stretching the axis; the
+/// computed wave's legend says it is computed and the record's gives the RMS misfit.
+fn figures_say_what_they_show(plots: &[report::plot::PlotSpec]) {
+    let labels = |i: usize| -> Vec<String> { plots[i].series.iter().filter_map(|s| s.label.clone()).collect() };
+    let two_beam = labels(1);
+    assert_eq!(two_beam.len(), 1, "{two_beam:?}");
+    assert!(two_beam[0].contains("f_u = 0, 1, 2, 5 kN/m: one curve (within 0.10 % of each other)"), "{two_beam:?}");
+    let composite = labels(0);
+    assert_eq!(composite.len(), 5, "four curves and the critical speed: {composite:?}");
+    assert!(!composite.iter().any(|l| l.contains("Winkler")) && plots[0].subtitle.contains("Winkler control"));
+    assert!(plots[0].subtitle.contains("378 km/h (beyond the speeds computed)"), "{}", plots[0].subtitle);
+    let wave = labels(3);
+    assert!(wave[0].starts_with("computed, v = 51.4 m/s") && wave[1].contains("RMS misfit 2.23 mm"), "{wave:?}");
 }

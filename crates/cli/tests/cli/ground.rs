@@ -59,6 +59,23 @@ fn ground_reports_the_critical_speeds_and_writes_its_files() {
         assert!(out.join(format!("{stem}.png")).is_file() && out.join(format!("{stem}.svg")).is_file(), "{stem}");
     }
     keq_peaks_are_resolved(&std::fs::read_to_string(out.join("equivalent_stiffness.csv")).unwrap());
+    dispersion_figure_reads_alone(&std::fs::read_to_string(out.join("ground-dispersion.svg")).unwrap());
+}
+
+/// The dispersion figure: the legend's triangles in the marks' colours (the least phase velocity's orange on the
+/// soil's mode, the crossings' green on the beam's curves; it drew one black triangle for both), the Winkler control
+/// in reddish purple (it was vermillion beside the fundamental mode's orange), its spring named in words (the figure
+/// read "k _w": Unicode has no subscript w).
+fn dispersion_figure_reads_alone(svg: &str) {
+    let legend_triangle = |fill: &str| {
+        svg.split("<polygon").skip(1).any(|p| {
+            let x = p.split("points=\"").nth(1).and_then(|v| v.split(',').next()?.parse::<f64>().ok());
+            p.contains(&format!("fill=\"{fill}\"")) && x.is_some_and(|x| x > 900.0)
+        })
+    };
+    assert!(legend_triangle("#E69F00") && legend_triangle("#009E73"), "the marks' colours in the legend");
+    assert!(svg.contains("Winkler control (beam on the static") && !svg.contains("k_w"), "the spring in words");
+    assert!(svg.contains("stroke=\"#CC79A7\"") && !svg.contains("stroke=\"#D55E00\""), "the Winkler line's colour");
 }
 
 /// The k_eq curves resolve their peaks: at the fastest speed a load crosses the soil's higher modes above 0.3 rad/m,
