@@ -121,28 +121,8 @@ pub fn write(
     snapshots: &[Snapshot],
 ) -> Result<()> {
     let load = position_noun(&case.settings.moving.load);
-    let columns = |list: &[(&'static str, &'static str)]| crate::columns::listed(list.iter().copied());
-    let requested: Vec<String> = snapshots
-        .iter()
-        .map(|s| match s.requested {
-            SnapshotAt::Time(t) => format!("time {t} s"),
-            SnapshotAt::LoadPosition(x) => format!("{load} at {x} m"),
-        })
-        .collect();
-    let mut files = BTreeMap::from([
-        (
-            "histories.csv",
-            FileMeta { sections: Some(scenario.output.sections.clone()), ..FileMeta::of(columns(&HISTORY_COLUMNS)) },
-        ),
-        ("snapshots.csv", FileMeta { requested: Some(requested), ..FileMeta::of(columns(&SNAPSHOT_COLUMNS)) }),
-    ]);
-    if result.vehicles.is_some() {
-        files.insert("wheels.csv", FileMeta::of(columns(&WHEEL_COLUMNS)));
-    }
     let sleepers = crate::sleeper_output::sleepers_csv(result.sleepers.as_ref());
-    if sleepers.is_some() {
-        files.insert("sleepers.csv", FileMeta::of(columns(&crate::sleeper_output::SLEEPER_COLUMNS)));
-    }
+    let files = files_written(scenario, (result, snapshots), load, sleepers.is_some());
     // An untitled run is titled by its speed: the one it ran at, or the two it changed between.
     let title = match (&scenario.title, &report.speed_change) {
         (t, _) if !t.is_empty() => t.clone(),
@@ -194,6 +174,39 @@ pub fn write(
         None => remove_stale(folder, &["bay.png", "bay.svg"])?,
     }
     Ok(())
+}
+
+/// The CSV files a run writes with their columns (and the recorded sections, the snapshots asked for), as
+/// summary.json lists them; `load` names what moves ("load", "first axle"); `sleepers` whether `sleepers.csv` is
+/// written.
+fn files_written(
+    scenario: &Scenario,
+    (result, snapshots): (&RunResult, &[Snapshot]),
+    load: &str,
+    sleepers: bool,
+) -> BTreeMap<&'static str, FileMeta> {
+    let columns = |list: &[(&'static str, &'static str)]| crate::columns::listed(list.iter().copied());
+    let requested: Vec<String> = snapshots
+        .iter()
+        .map(|s| match s.requested {
+            SnapshotAt::Time(t) => format!("time {t} s"),
+            SnapshotAt::LoadPosition(x) => format!("{load} at {x} m"),
+        })
+        .collect();
+    let mut files = BTreeMap::from([
+        (
+            "histories.csv",
+            FileMeta { sections: Some(scenario.output.sections.clone()), ..FileMeta::of(columns(&HISTORY_COLUMNS)) },
+        ),
+        ("snapshots.csv", FileMeta { requested: Some(requested), ..FileMeta::of(columns(&SNAPSHOT_COLUMNS)) }),
+    ]);
+    if result.vehicles.is_some() {
+        files.insert("wheels.csv", FileMeta::of(columns(&WHEEL_COLUMNS)));
+    }
+    if sleepers {
+        files.insert("sleepers.csv", FileMeta::of(columns(&crate::sleeper_output::SLEEPER_COLUMNS)));
+    }
+    files
 }
 
 /// Remove `names` from `folder` where an earlier run left them and this one writes none: a report made from the

@@ -303,10 +303,16 @@ pub fn run_plots(curves: &RunCurves, title: &str, load: &str, exceptions: &[(f64
         let shapes: Vec<(f64, &[[f64; 3]])> = curves.instants.iter().map(|(_, at, p)| (*at, p.as_slice())).collect();
         let extent =
             shapes.first().map_or(0.0, |(_, p)| p.last().map_or(0.0, |l| l[0]) - p.first().map_or(0.0, |f| f[0]));
+        // Where their waves overlap (a train's), each instant a panel over the whole beam: drawn together they hide
+        // each other.
+        let loads: Vec<f64> = shapes.iter().map(|(at, _)| *at).collect();
         if let Some(half) = crate::snapshot_zoom::zoom_half_width(&shapes, extent) {
-            let loads: Vec<f64> = shapes.iter().map(|(at, _)| *at).collect();
             for spec in &mut plots[drawn - 2..] {
                 *spec = crate::snapshot_zoom::zoomed(spec.clone(), &loads, half);
+            }
+        } else if crate::snapshot_zoom::overlapping(&shapes) {
+            for spec in &mut plots[drawn - 2..] {
+                *spec = crate::snapshot_zoom::stacked(spec.clone(), &loads);
             }
         }
     }

@@ -23,6 +23,38 @@ pub fn zoom_half_width(instants: &[(f64, &[[f64; 3]])], extent: f64) -> Option<f
     (!instants.is_empty() && 2.0 * half * instants.len() as f64 <= NARROW * extent).then_some(half)
 }
 
+/// A curve hides another where both reach this fraction of the largest deflection of all the instants.
+const HIDES: f64 = 0.25;
+/// Stack the instants in panels of their own where one's region of large deflection ([`HIDES`]) overlaps another's
+/// by more than this fraction of the shorter: drawn together, the curves interleave and hide each other.
+const OVERLAP: f64 = 0.25;
+
+/// Whether the snapshots' large deflections overlap along the beam ([`HIDES`], [`OVERLAP`]): a train's waves, 100 m
+/// long, at instants 40 m apart — not a single wheel's bowls, whose small residue at a void each later snapshot
+/// keeps. `instants` as for [`zoom_half_width`].
+pub fn overlapping(instants: &[(f64, &[[f64; 3]])]) -> bool {
+    let largest = instants.iter().flat_map(|(_, points)| points.iter()).fold(0.0f64, |m, p| m.max(p[1].abs()));
+    let regions: Vec<(f64, f64)> = instants
+        .iter()
+        .filter_map(|(_, points)| {
+            let xs = points.iter().filter(|p| largest > 0.0 && p[1].abs() >= HIDES * largest).map(|p| p[0]);
+            xs.fold(None, |r: Option<(f64, f64)>, x| Some(r.map_or((x, x), |(a, b)| (a.min(x), b.max(x)))))
+        })
+        .collect();
+    regions.iter().enumerate().any(|(i, a)| {
+        regions[i + 1..].iter().any(|b| {
+            let common = a.1.min(b.1) - a.0.max(b.0);
+            common > OVERLAP * (a.1 - a.0).min(b.1 - b.0)
+        })
+    })
+}
+
+/// `spec` (one curve per instant, in the order of `loads`, each marked at its load; reference lines after them) as
+/// one panel per instant over the whole beam, the panels' y ranges shared (the instants compare at a glance).
+pub fn stacked(spec: PlotSpec, loads: &[f64]) -> PlotSpec {
+    PlotSpec { panel_y: PanelY::SharedPerQuantity, ..zoomed(spec, loads, f64::INFINITY) }
+}
+
 /// `spec` (one curve per instant, in the order of `loads`, each marked at its load; reference lines after them)
 /// as one panel per instant over [load − half, load + half], each with its own ranges.
 pub fn zoomed(spec: PlotSpec, loads: &[f64], half: f64) -> PlotSpec {
@@ -53,7 +85,7 @@ pub fn zoomed(spec: PlotSpec, loads: &[f64], half: f64) -> PlotSpec {
 
 #[cfg(test)]
 mod tests {
-    use super::{zoom_half_width, zoomed};
+    use super::{overlapping, stacked, zoom_half_width, zoomed};
     use crate::plot::{Mark, PanelY, PlotSpec, Series, Stroke};
     use scenario::axis::{Axis, Shown};
 
@@ -94,5 +126,34 @@ mod tests {
             assert_eq!(panel.title, format!("load at {at} m"));
             assert_eq!(panel.series.len(), if at == 100.0 { 2 } else { 1 }, "{}", panel.title);
         }
+    }
+
+    /// A train's waves, 30 m wide bowls 40 m apart on 200 m (each above a quarter of the largest within ±35 m),
+    /// overlap and are stacked, a panel each over the whole beam with the y range shared; bowls 3 m wide 50 m apart
+    /// do not overlap.
+    #[test]
+    fn overlapping_waves_are_stacked_over_the_whole_beam() {
+        let at = [60.0, 100.0, 140.0];
+        let wide: Vec<Vec<[f64; 3]>> = at.iter().map(|&a| bowl(a, 30.0)).collect();
+        let instants: Vec<(f64, &[[f64; 3]])> = at.iter().zip(&wide).map(|(&a, s)| (a, s.as_slice())).collect();
+        assert!(overlapping(&instants) && zoom_half_width(&instants, 200.0).is_none());
+        let narrow: Vec<Vec<[f64; 3]>> = [50.0, 100.0, 150.0].iter().map(|&a| bowl(a, 3.0)).collect();
+        let apart: Vec<(f64, &[[f64; 3]])> =
+            [50.0, 100.0, 150.0].iter().zip(&narrow).map(|(&a, s)| (a, s.as_slice())).collect();
+        assert!(!overlapping(&apart));
+        let (x, w) = (Axis::new("x", "x", Shown::Si), Axis::new("w", "deflection", Shown::Milli));
+        let mut spec = PlotSpec::new("snapshots", "deflected shape", &x, &w);
+        for (i, shape) in wide.iter().enumerate() {
+            spec.series.push(Series {
+                label: Some(format!("load at {} m", at[i])),
+                color: 1 + i,
+                stroke: Stroke::Solid,
+                markers: false,
+                points: shape.iter().map(|p| (p[0], p[1])).collect(),
+            });
+        }
+        let stacked = stacked(spec, &at);
+        assert_eq!((stacked.panels.len(), stacked.panel_y), (3, PanelY::SharedPerQuantity));
+        assert!(stacked.panels.iter().all(|p| p.series[0].points.len() == 801), "the whole beam in each panel");
     }
 }

@@ -99,6 +99,7 @@ pub const QUANTITIES: &[(&str, &str)] = &[
     ("measured_max_upward", "m"),
     ("computed_max_downward", "m"),
     ("computed_max_upward", "m"),
+    ("deflection_at_185_km_per_h", "m"),
     // The rail's profile.
     ("irregularity", "m"),
     ("psd", "m²/(rad/m)"),

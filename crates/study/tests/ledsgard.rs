@@ -22,7 +22,7 @@ fn ledsgard_with_and_without_ballast_friction() {
     assert!(data.columns.iter().all(|(_, unit)| *unit != "unknown"), "{:?}", data.columns);
     let summary = serde_json::to_value(&data.summary).unwrap();
     let curves = summary["curves"].as_array().unwrap();
-    let at_185: Vec<f64> = curves.iter().map(|c| 1e3 * c["at_185_km_per_h"].as_f64().unwrap()).collect();
+    let at_185: Vec<f64> = curves.iter().map(|c| 1e3 * c["deflection_at_185_km_per_h"].as_f64().unwrap()).collect();
     for (got, quoted) in at_185.iter().zip([8.78, 8.67, 8.54, 8.10]) {
         assert!((got - quoted).abs() < 0.005, "{at_185:?}");
     }
@@ -42,7 +42,7 @@ fn ledsgard_with_and_without_ballast_friction() {
         two_beam.iter().zip([(12.12, 9.23), (12.12, 9.23), (12.12, 9.23), (12.11, 9.22)])
     {
         let peak = 1e3 * curve["max_downward_deflection"].as_f64().unwrap();
-        let at_185 = 1e3 * curve["at_185_km_per_h"].as_f64().unwrap();
+        let at_185 = 1e3 * curve["deflection_at_185_km_per_h"].as_f64().unwrap();
         assert!((peak - quoted_peak).abs() < 0.005 && (at_185 - quoted_185).abs() < 0.005, "{curve}");
         assert!((curve["speed"].as_f64().unwrap() * 3.6 - 240.0).abs() < 1e-9, "{curve}");
     }
@@ -68,6 +68,13 @@ fn ledsgard_with_and_without_ballast_friction() {
     assert_eq!(stems, ["ledsgard-speeds", "ledsgard-speeds-two-beam", "ledsgard-70-kmh", "ledsgard-185-kmh"]);
     assert_eq!(data.headline.len(), 3);
     figures_say_what_they_show(&data.plots);
+    // Every number of a curve has a unit, found as the HTML report finds it (a suffix of its name a listed quantity):
+    // the deflection at 185 km/h was `at_185_km_per_h`, a column without unit.
+    for key in curves[0].as_object().unwrap().keys().filter(|k| curves[0][k.as_str()].is_number()) {
+        let words: Vec<&str> = key.split('_').collect();
+        let unit = (0..words.len()).find_map(|i| scenario::quantities::unit_of(&words[i..].join("_")));
+        assert!(unit.is_some(), "{key} has no unit");
+    }
 }
 
 /// The figures pasted alone: the two-beam track's four curves, within 0.10 % of each other, are drawn as one that

@@ -288,26 +288,25 @@ impl GroundWaveStudy {
             });
         }
         if let Some(c) = &self.comparison {
-            let name =
-                std::path::Path::new(&c.record).file_name().map_or(c.record.clone(), |n| n.to_string_lossy().into());
-            let label = format!(
-                "measured ({name}; placed at {}); RMS misfit {:.2} mm of the record's RMS {:.2} mm",
-                placement(c),
-                c.rms_misfit * 1e3,
-                c.rms_measured * 1e3
-            );
-            figure.series.push(Series {
-                label: Some(label),
-                color: 0,
-                stroke: Stroke::Dashed,
-                markers: false,
-                points: placed,
-            });
+            figure.series.push(measured_series(c, placed));
         }
         figure.marks = self.train.axles.iter().map(|a| Mark { color: 0, point: (-a.offset, 0.0) }).collect();
         figure.mark_label = "axles".into();
         figure
     }
+}
+
+/// The record placed at s = d·x + c (`placed`: s m, w mm), dashed black, its legend naming the file, the placement
+/// and the RMS misfit.
+fn measured_series(c: &Comparison, placed: Vec<(f64, f64)>) -> Series {
+    let name = std::path::Path::new(&c.record).file_name().map_or(c.record.clone(), |n| n.to_string_lossy().into());
+    let label = format!(
+        "measured ({name}; placed at {}); RMS misfit {:.2} mm of the record's RMS {:.2} mm",
+        placement(c),
+        c.rms_misfit * 1e3,
+        c.rms_measured * 1e3
+    );
+    Series { label: Some(label), color: 0, stroke: Stroke::Dashed, markers: false, points: placed }
 }
 
 /// A speed's line on the sleepers' lift-off.

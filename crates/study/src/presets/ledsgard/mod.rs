@@ -62,7 +62,7 @@ pub struct LedsgardCurve {
     /// At (m/s).
     pub speed: f64,
     /// The deepest deflection at 185 km/h (m), where the record is.
-    pub at_185_km_per_h: f64,
+    pub deflection_at_185_km_per_h: f64,
 }
 
 /// The record beside the computed wave at one speed.
@@ -180,7 +180,7 @@ fn curve((friction, study): &(f64, GroundWaveStudy)) -> LedsgardCurve {
         force_per_length: *friction,
         max_downward_deflection: deepest.deflection.max_downward.value,
         speed: deepest.speed,
-        at_185_km_per_h: at_185,
+        deflection_at_185_km_per_h: at_185,
     }
 }
 
@@ -228,7 +228,7 @@ fn lines(summary: &LedsgardSummary) -> Vec<String> {
                 c.force_per_length / 1e3,
                 c.max_downward_deflection * 1e3,
                 c.speed * KMH,
-                c.at_185_km_per_h * 1e3
+                c.deflection_at_185_km_per_h * 1e3
             ));
         }
     }
