@@ -45,7 +45,7 @@ def same_table(table, csv_path):
     expected = np.genfromtxt(csv_path, delimiter=",", names=True)
     assert list(expected.dtype.names) == table.columns
     for name in table.columns:
-        assert np.array_equal(np.atleast_1d(expected[name]), table[name]), name
+        assert np.array_equal(np.atleast_1d(expected[name]), table[name], equal_nan=True), name
 
 
 @pytest.mark.parametrize(

@@ -13,8 +13,9 @@ use track::{PlacedInteractions, SectionKind};
 
 /// Columns of `sleepers.csv`, the histories of the sleepers under recorded sections: name and unit. One row per
 /// sleeper and step; the sleeper numbered from 0 as in `[[sleepers.exceptions]]`, its deflection upward, its
-/// acceleration the step's mean, the forces compression positive from the settled state.
-pub const SLEEPER_COLUMNS: [crate::columns::Column; 9] = [
+/// acceleration the step's mean, the forces compression positive from the settled state; a ballast body's acceleration
+/// (the step's mean) under it, an empty field on rigidly founded ballast.
+pub const SLEEPER_COLUMNS: [crate::columns::Column; 10] = [
     ("section", unit("section")),
     ("sleeper", unit("sleeper")),
     ("x", unit("x")),
@@ -24,6 +25,7 @@ pub const SLEEPER_COLUMNS: [crate::columns::Column; 9] = [
     ("sleeper_acceleration", unit("sleeper_acceleration")),
     ("pad_force", unit("pad_force")),
     ("sleeper_ballast_force", unit("sleeper_ballast_force")),
+    ("ballast_body_acceleration", unit("ballast_body_acceleration")),
 ];
 
 /// `sleepers.csv` ([`SLEEPER_COLUMNS`]) of the recorded sleepers; None where no recorded section is over a sleeper.
@@ -45,8 +47,9 @@ pub fn sleepers_csv(results: Option<&SleeperResults>) -> Option<String> {
                 h.acceleration[k],
                 h.pad_force[k],
                 h.ballast_force[k],
+                h.ballast_acceleration.as_ref().map_or(f64::NAN, |a| a[k]),
             ];
-            let _ = writeln!(out, "{}", scenario::number::row(&values));
+            let _ = writeln!(out, "{}", scenario::number::row_with_gaps(&values));
         }
     }
     Some(out)

@@ -24,10 +24,10 @@ pub fn zoom_half_width(instants: &[(f64, &[[f64; 3]])], extent: f64) -> Option<f
 }
 
 /// A curve hides another where both reach this fraction of the largest deflection of all the instants.
-const HIDES: f64 = 0.25;
+pub const HIDES: f64 = 0.25;
 /// Stack the instants in panels of their own where one's region of large deflection ([`HIDES`]) overlaps another's
 /// by more than this fraction of the shorter: drawn together, the curves interleave and hide each other.
-const OVERLAP: f64 = 0.25;
+pub const OVERLAP: f64 = 0.25;
 
 /// Whether the snapshots' large deflections overlap along the beam ([`HIDES`], [`OVERLAP`]): a train's waves, 100 m
 /// long, at instants 40 m apart — not a single wheel's bowls, whose small residue at a void each later snapshot

@@ -130,6 +130,7 @@ pub const QUANTITIES: &[(&str, &str)] = &[
     ("sleeper_acceleration", "m/s²"),
     ("pad_force", "N"),
     ("sleeper_ballast_force", "N"),
+    ("ballast_body_acceleration", "m/s²"),
     // The solvers and the study's set-ups.
     ("status", "text"),
     ("iterations", "1"),

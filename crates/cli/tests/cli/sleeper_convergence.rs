@@ -77,9 +77,13 @@ fn a_recorded_sleeper_keeps_its_history() {
     let csv = std::fs::read_to_string(out.join("sleepers.csv")).unwrap();
     let mut lines = csv.lines();
     let header = "section,sleeper,x,time,load_position,sleeper_deflection,sleeper_acceleration,pad_force,\
-                  sleeper_ballast_force";
+                  sleeper_ballast_force,ballast_body_acceleration";
     assert_eq!(lines.next(), Some(header));
-    let rows: Vec<Vec<f64>> = lines.map(|l| l.split(',').map(|v| v.parse().unwrap()).collect()).collect();
+    // Rigidly founded ballast: the ballast body's column is empty.
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|v| if v.is_empty() { f64::NAN } else { v.parse().unwrap() }).collect())
+        .collect();
+    assert!(rows.iter().all(|r| r.len() == 10 && r[9].is_nan()), "no ballast body");
     assert!(rows.iter().all(|r| r[0] == 30.3 && r[1] == 50.0 && (r[2] - 30.3).abs() < 1e-9), "one sleeper");
     let summary: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
@@ -120,4 +124,27 @@ fn the_pad_force_converges_to_one_value_whatever_the_schemes_damping() {
     assert!((error(default) - 0.142).abs() < 0.005, "{default} N: {:+.3} %", error(default));
     let coarse = ["0", "0.8"].map(|r| error(pad_force(&path, "0.03", &["--spectral-radius", r]).0));
     assert!((coarse[0] + 0.106).abs() < 0.005 && (coarse[1] - 0.216).abs() < 0.005, "{coarse:?}");
+}
+
+/// Under a ballast body (examples/ballast-body.toml, Zhai's two layers) a recorded sleeper's history holds the body's
+/// acceleration too; read over that sleeper alone, the run's largest body acceleration (the step's mean on this
+/// Euler–Bernoulli rail) is the history's largest magnitude, to the bit.
+#[test]
+fn a_recorded_sleeper_keeps_its_ballast_bodys_acceleration() {
+    let folder = temporary_folder("ballast-body-history");
+    let example = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/ballast-body.toml"));
+    let text =
+        example.unwrap().replace("extremes_nodes = [20.0, 40.0]", "extremes_nodes = [30.2, 30.4]\nsections = [30.3]");
+    let path = folder.join("body.toml");
+    std::fs::write(&path, text).unwrap();
+    let out = folder.join("run");
+    let ran = frictrack(&["run", path.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    assert!(ran.status.success(), "{}", String::from_utf8_lossy(&ran.stderr));
+    let csv = std::fs::read_to_string(out.join("sleepers.csv")).unwrap();
+    let body: Vec<f64> = csv.lines().skip(1).map(|l| l.rsplit(',').next().unwrap().parse().unwrap()).collect();
+    assert!(!body.is_empty() && body.iter().all(|a| a.is_finite()), "the body's column is filled");
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    let largest = summary["report"]["sleepers"]["max_ballast_acceleration"]["value"].as_f64();
+    assert_eq!(largest, Some(body.iter().fold(0.0, |m: f64, a| m.max(a.abs()))));
 }

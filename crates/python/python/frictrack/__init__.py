@@ -70,7 +70,8 @@ class Run:
     ``snapshots``: the beam's deflection and moment at the requested instants (``snapshots.csv``).
     ``wheels``: each wheel over time (``wheels.csv``), or ``None`` without vehicles.
     ``sleepers``: the sleepers under the recorded sections over time (``sleepers.csv``: deflection m, acceleration
-    m/s², pad and ballast forces N), or ``None`` where no recorded section is over a sleeper.
+    m/s², pad and ballast forces N, a ballast body's acceleration m/s² or NaN without one), or ``None`` where no
+    recorded section is over a sleeper.
     ``losses``: each loss of wheel–rail contact (from ``summary["vehicles"]["losses"]``), or ``None``.
     ``warnings``: what the command line would print as warnings.
     ``report``: the text report ``frictrack run`` prints (also ``str(run)``).

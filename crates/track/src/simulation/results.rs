@@ -399,4 +399,6 @@ pub struct SleeperHistory {
     pub pad_force: Vec<f64>,
     /// See `pad_force`.
     pub ballast_force: Vec<f64>,
+    /// Under a ballast body: its step's mean acceleration (m/s², upward); None on rigidly founded ballast.
+    pub ballast_acceleration: Option<Vec<f64>>,
 }

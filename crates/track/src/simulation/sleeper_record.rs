@@ -110,6 +110,7 @@ impl<'m> SleeperRecord<'m> {
                         section,
                         index: i,
                         x: mesh.node_x(node),
+                        ballast_acceleration: support.subgrade.map(|_| Vec::with_capacity(steps)),
                         ..SleeperHistory::reserved(steps)
                     }),
                 });
@@ -194,9 +195,13 @@ impl Followed {
             h.time.push(s.time);
             h.load_position.push(s.load.position(s.time));
             h.deflection.push(state.z);
-            h.acceleration.push((s.v[self.z] - s.previous_v[self.z]) / s.h);
+            let step_mean = |d: usize| (s.v[d] - s.previous_v[d]) / s.h;
+            h.acceleration.push(step_mean(self.z));
             h.pad_force.push(state.pad);
             h.ballast_force.push(state.ballast);
+            if let (Some(series), Some(d)) = (h.ballast_acceleration.as_mut(), self.y) {
+                series.push(step_mean(d));
+            }
         }
     }
 }
