@@ -7,6 +7,7 @@ mod limits;
 mod receptance_in_time;
 mod recipes;
 mod references;
+mod resolution_check;
 mod static_shape;
 mod study_curves;
 

@@ -105,6 +105,12 @@ fn what_is_kept() -> String {
     }
 }
 
+/// The error of a command interrupted after its main work was reported: `what` says what stands.
+pub fn interrupted_after(what: &str) -> anyhow::Error {
+    SAID.store(true, Ordering::SeqCst);
+    anyhow::Error::new(scenario::StudyError::Interrupted).context(format!("interrupted: {what}"))
+}
+
 /// Turn an interruption into an error that says what was kept ([`keep`]) and how to continue.
 pub fn explain<T>(result: scenario::Result<T>) -> anyhow::Result<T> {
     match result {

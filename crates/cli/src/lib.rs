@@ -18,6 +18,7 @@ mod receptance;
 mod reference;
 mod report_cmd;
 mod reproduce;
+mod resolution_check;
 mod run;
 mod scenario_args;
 mod stationary;

@@ -6,6 +6,7 @@
 //! ([`report::vehicle_output`]).
 
 use crate::Format;
+use crate::resolution_check::Checked;
 use crate::scenario_args::ScenarioArgs;
 use anyhow::Result;
 use clap::Args;
@@ -39,6 +40,10 @@ pub struct RunArgs {
     /// a 120 m window over 1000 m) instead of across the finite beam.
     #[arg(long)]
     co_moving: bool,
+    /// Also run the refined twin (elements and load advance halved; about 4× the run's cost) and report every
+    /// outcome's estimated discretisation error beside it.
+    #[arg(long)]
+    check_resolution: bool,
 }
 
 /// Execute `frictrack run`.
@@ -56,6 +61,13 @@ pub fn run(args: &RunArgs) -> Result<()> {
         scenario.co_moving = Some(scenario::CoMovingSection::default());
     }
     if let Some(section) = scenario.co_moving.clone() {
+        if args.check_resolution {
+            anyhow::bail!(scenario::error::invalid(
+                "--check-resolution",
+                "given",
+                "is for a run across the finite beam: a run through a co-moving window is not checked",
+            ));
+        }
         return crate::co_moving::run(&scenario, &section, args.format, args.out.as_deref());
     }
     if args.out.is_some() {
@@ -63,6 +75,11 @@ pub fn run(args: &RunArgs) -> Result<()> {
     }
     let case = scenario.build()?;
     let mut warnings = crate::scenario_args::print_warnings(&scenario, &case);
+    let quiet = args.quiet || args.format == Format::Json;
+    let twins = match args.check_resolution {
+        true => Some(crate::resolution_check::twins(&scenario, quiet)?),
+        false => None,
+    };
     crate::interrupt::keep_nothing_in(args.out.as_deref(), |folder| report::run_folder::check("--out", folder, &case))?;
     let requests = match args.out.is_some() {
         true => report::run_output::snapshot_requests(&scenario, &case),
@@ -72,13 +89,20 @@ pub fn run(args: &RunArgs) -> Result<()> {
     if !args.quiet {
         crate::progress::announce("this run", &runner::cost::Estimate::run(runner::cost::RunCost::of(&case)));
     }
-    let bar = crate::progress::steps_bar(steps as u64, args.quiet || args.format == Format::Json);
+    let bar = crate::progress::steps_bar(steps as u64, quiet);
     let progress = |fraction: f64| bar.set_position((fraction * steps) as u64);
     let stop = Some(crate::interrupt::stop_flag());
     let ran = report::run_output::run_with_snapshots(&case, &requests, stop, &progress);
     bar.finish_and_clear();
     let (result, snapshots) = crate::interrupt::explain(ran)?;
-    let report = RunSummary::of(&scenario, &case, &result, start)?;
+    let mut report = RunSummary::of(&scenario, &case, &result, start)?;
+    let mut check_interrupted = false;
+    if let Some(twins) = &twins {
+        match crate::resolution_check::check(twins, &scenario, &report, quiet)? {
+            Checked::Done(check) => report.resolution_check = Some(check),
+            Checked::Interrupted => check_interrupted = true,
+        }
+    }
     for warning in report::result_warnings::result_warnings(&case, &report) {
         eprintln!("warning: {warning}");
         warnings.push(warning.to_string());
@@ -95,6 +119,9 @@ pub fn run(args: &RunArgs) -> Result<()> {
             let wheels = if result.vehicles.is_some() { ", wheels.csv" } else { "" };
             println!("  wrote {}/summary.json, histories.csv, snapshots.csv{wheels} and figures", out.display());
         }
+    }
+    if check_interrupted {
+        return Err(crate::interrupt::interrupted_after("the run's report stands without its resolution check"));
     }
     Ok(())
 }

@@ -7,6 +7,7 @@ use crate::interruptible;
 use crate::scenario_input::{Source, overrides};
 use pyo3::prelude::*;
 use report::output::Output;
+use report::resolution_check::twins::{Twin, Twins};
 use report::run_output::{histories_csv, recording, run_with_snapshots, snapshot_requests, snapshots_csv};
 use report::run_summary::RunSummary;
 use scenario::overrides::{OVERRIDES, OverrideKind};
@@ -21,7 +22,8 @@ type RunTexts = (String, String, String, String, Option<String>, Option<String>,
 /// `frictrack run --out` writes it (its files checked before the run starts), its `command` (the Python call, in
 /// words) recorded beside the build's commit and the date.
 #[pyfunction]
-#[pyo3(signature = (kind, text, keywords, progress=None, out=None, command=String::new()))]
+#[pyo3(signature = (kind, text, keywords, progress=None, out=None, command=String::new(), check_resolution=false))]
+#[allow(clippy::too_many_arguments)]
 pub(crate) fn run(
     py: Python<'_>,
     kind: &str,
@@ -30,12 +32,15 @@ pub(crate) fn run(
     progress: Option<Bound<'_, PyAny>>,
     out: Option<std::path::PathBuf>,
     command: String,
+    check_resolution: bool,
 ) -> PyResult<RunTexts> {
     let started = std::time::Instant::now();
     let scenario = Source::of(kind, text)?.read()?;
     let overrides = overrides(&keywords)?;
     let scenario = recording(overrides.apply(scenario).map_err(to_python)?);
     let case = scenario.build().map_err(to_python)?;
+    // The twins of check_resolution are built (their sizes checked) before any work.
+    let twins = check_resolution.then(|| Twins::of(&scenario)).transpose().map_err(to_python)?;
     if let Some(folder) = &out {
         report::run_folder::check("out", folder, &case).map_err(to_python)?;
     }
@@ -47,7 +52,14 @@ pub(crate) fn run(
         told.announce("frictrack.run", &runner::cost::Estimate::run(runner::cost::RunCost::of(&case)));
         let requests = snapshot_requests(&scenario, &case);
         let (result, snapshots) = run_with_snapshots(&case, &requests, Some(stop), &|f| told.set(f))?;
-        let summary = RunSummary::of(&scenario, &case, &result, started)?;
+        let mut summary = RunSummary::of(&scenario, &case, &result, started)?;
+        if let Some(twins) = &twins {
+            let mut started = |twin: &Twin| {
+                told.announce(&twin.label(), &runner::cost::Estimate::run(runner::cost::RunCost::of(&twin.case)));
+            };
+            let check = twins.check(&scenario, &summary, Some(stop), &mut started, &|f| told.set(f))?;
+            summary.resolution_check = Some(check);
+        }
         let mut after: Vec<String> =
             report::result_warnings::result_warnings(&case, &summary).iter().map(ToString::to_string).collect();
         after.extend(summary.fallback_warning());

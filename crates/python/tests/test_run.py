@@ -400,3 +400,25 @@ def test_a_keyword_that_is_no_override_is_named_as_such():
     """`co_moving=True` was told its value must be a number; the name is what is wrong."""
     with pytest.raises(frictrack.InputError, match="invalid override = co_moving: is not one of speed"):
         frictrack.run(co_moving=True)
+
+
+def test_check_resolution_estimates_each_outcomes_error_from_twins_at_other_resolutions():
+    """`check_resolution=True` is `run --check-resolution`: the summary holds the three resolutions (the run's among
+    them) and every outcome's values there, with the run's error or None where the values do not converge."""
+    run = frictrack.run(elements=60, load_advance=0.4, speed=150, check_resolution=True, progress=False)
+    check = run.summary["resolution_check"]
+    assert [r["elements"] for r in check["resolutions"]] == [30, 60, 120]
+    assert check["run"] == 1 and check["resolutions"][1]["load_advance"] == 0.4
+    by_name = {o["name"]: o for o in check["outcomes"]}
+    window = by_name["window_max_downward_deflection"]
+    assert window["values"][1] == run.summary["window_max_downward_deflection"]["value"]
+    assert window["convergence"]["kind"] in {"settled", "monotone", "alternating", "not_contracting"}
+    assert all((o["error"] is None) == (o["convergence"]["kind"] == "not_contracting") for o in check["outcomes"])
+    assert "resolution check" in run.report
+    assert "resolution_check" not in frictrack.run(elements=60, load_advance=0.4, speed=150, progress=False).summary
+
+
+@pytest.mark.parametrize("bad", [1, "yes", None, 0.5])
+def test_check_resolution_takes_only_a_bool(bad):
+    with pytest.raises(frictrack.InputError, match=r"check_resolution = .*True or False"):
+        frictrack.run(check_resolution=bad, progress=False)

@@ -27,6 +27,7 @@ pub mod palette;
 pub mod plot;
 mod plot_text;
 pub mod provenance;
+pub mod resolution_check;
 pub mod result_warnings;
 pub mod run_folder;
 pub mod run_output;

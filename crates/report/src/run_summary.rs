@@ -106,6 +106,9 @@ pub struct RunSummary {
     /// How the text report names the extremes window (words only: not in the JSON).
     #[serde(skip)]
     pub window: crate::window_wording::WindowWording,
+    /// With `--check-resolution`: every outcome against the run's refined twin, with its estimated error.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub resolution_check: Option<crate::resolution_check::ResolutionCheck>,
 }
 
 /// The extremes of one run: over the whole run and every recorded node, over the window of load positions, the
@@ -372,6 +375,7 @@ impl RunSummary {
                 read,
             ),
             window: crate::window_wording::WindowWording::of(scenario, case),
+            resolution_check: None,
         })
     }
 }

@@ -77,6 +77,9 @@ fn write_text(f: &mut Formatter<'_>, r: &RunSummary) -> fmt::Result {
     if let Some(v) = &r.vehicles {
         write_vehicles(f, v)?;
     }
+    if let Some(check) = &r.resolution_check {
+        crate::resolution_check::write_check(f, check)?;
+    }
     writeln!(
         f,
         "  wall time {:.3} s (the time loop {:.3} s; set-up, statics and the static envelope the rest)",

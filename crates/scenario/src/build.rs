@@ -10,7 +10,7 @@ use fem_beam::{AbsorbingZones, BeamModel, Foundation, FoundationLaw, Mesh};
 use nscd::SolverSettings;
 use track::PlacedInteractions;
 use track::simulation::{IntegrationSettings, MovingLoadSettings, RecordSettings, SpeedLimit};
-use track::{BallastOnBeam, DeviceLayout, Devices, DistributedFriction, FoundationSections, Quadrature};
+use track::{BallastOnBeam, Devices, DistributedFriction, FoundationSections, Quadrature};
 use track::{InitialState, Load, RunSettings};
 
 fn finite_positive(path: &str, value: f64, unit: &str) -> Result<()> {
@@ -314,25 +314,7 @@ impl Scenario {
     fn interactions(&self, model: &BeamModel) -> Result<PlacedInteractions> {
         let mut interactions = PlacedInteractions::new();
         if let Some(d) = &self.friction.devices {
-            let layout = match (d.count, &d.positions) {
-                (Some(count), None) => DeviceLayout::Uniform { count },
-                (None, Some(positions)) => {
-                    if let Some(&x) =
-                        positions.iter().find(|x| !(x.is_finite() && (0.0..=model.mesh().length).contains(*x)))
-                    {
-                        return Err(invalid("friction.devices.positions", x, "every position must lie on the beam"));
-                    }
-                    DeviceLayout::Positions(positions.clone())
-                }
-                (Some(count), Some(_)) => {
-                    return Err(invalid(
-                        "friction.devices.count",
-                        count,
-                        "give friction.devices.count or positions, not both",
-                    ));
-                }
-                (None, None) => return Err(invalid("friction.devices", "{}", "give count or positions")),
-            };
+            let layout = d.layout(model.mesh().length)?;
             // The layout's own checks (e.g. the count against the mesh) come first, then the force.
             let mut devices = Devices { layout, force: 0.0 };
             devices.validate(model)?;

@@ -3,6 +3,7 @@
 mod absurd_inputs;
 mod bad_inputs;
 mod bridges;
+mod check_resolution;
 mod co_moving;
 mod examples;
 mod failures;

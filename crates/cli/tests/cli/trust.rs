@@ -82,7 +82,7 @@ fn terminated_while_running(args: &[&str]) -> (std::process::Output, Duration) {
 
 /// Send SIGTERM to `child` and wait for it to end (failing after 20 s): its output and how long it took to stop,
 /// polled every 20 ms.
-fn terminate(mut child: std::process::Child) -> (std::process::Output, Duration) {
+pub(crate) fn terminate(mut child: std::process::Child) -> (std::process::Output, Duration) {
     let sent = Instant::now();
     assert!(Command::new("kill").args(["-TERM", &child.id().to_string()]).status().unwrap().success());
     loop {

@@ -123,7 +123,7 @@ class Run:
 
 def run(
     scenario: ScenarioLike = None, *, progress: ProgressLike = None, out: "str | os.PathLike[str] | None" = None,
-    **overrides: Any,
+    check_resolution: bool = False, **overrides: Any,
 ) -> Run:
     """Run ``scenario`` (a TOML file path, a TOML string, a dict with the file's keys, or ``None`` for the reference
     case) with keyword ``overrides`` named as the command line's flags: ``speed`` (m/s, or text with its unit such as
@@ -140,15 +140,23 @@ def run(
     (KeyboardInterrupt). Bad input raises :class:`InputError` naming the field. ``progress``: a callable of the
     fraction done, ``True`` for a tqdm bar, ``False`` for none; by default a tqdm bar where tqdm is installed and
     standard error is a terminal.
+
+    ``check_resolution=True`` is ``frictrack run --check-resolution``: the run's twins at other resolutions (one
+    coarser and one finer, or two finer) run after it, about 4–20 times its cost, and ``summary["resolution_check"]``
+    holds each outcome's values at the three resolutions, how they converge and the run's estimated error (``None``
+    where they do not converge).
     """
+    if not isinstance(check_resolution, bool):
+        raise InputError(f"invalid check_resolution = {check_resolution!r}: True or False")
     kind, text = _source(scenario)
     folder = _path("out", out, "a folder path")
     given = [] if scenario is None else ["{…}" if isinstance(scenario, Mapping) else repr(scenario)]
     given += [f"{k}={v!r}" for k, v in overrides.items()] + ([] if folder is None else [f"out={folder!r}"])
+    given += ["check_resolution=True"] if check_resolution else []
     with _Reporter(progress, "run") as report:
         summary, lines, histories, snapshots, wheels, sleepers, warnings = _native.run(
             kind, text, list(overrides.items()), report, folder,
-            f"frictrack.run({', '.join(given)}) (Python)",
+            f"frictrack.run({', '.join(given)}) (Python)", check_resolution,
         )
     return Run(
         json.loads(summary),

@@ -85,10 +85,12 @@ def run(
     extremes_window: Sequence[float] = ...,
     progress: ProgressLike = None,
     out: Union[str, os.PathLike, None] = None,
+    check_resolution: bool = False,
 ) -> Run:
     """One run of `scenario` (a TOML path, a TOML string, a dict, or None for the reference case) with overrides named
     as the command line's flags; with `out`, the run folder `frictrack run --out` writes (summary.json, CSVs,
-    figures); releases the GIL, stops on Ctrl-C, raises InputError naming bad input."""
+    figures); with `check_resolution`, each outcome's error estimated from twins at other resolutions
+    (summary["resolution_check"]); releases the GIL, stops on Ctrl-C, raises InputError naming bad input."""
 
 def sweep(
     scenario: ScenarioLike = None,

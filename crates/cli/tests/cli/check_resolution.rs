@@ -1,0 +1,87 @@
+//! `run --check-resolution`: each outcome at three resolutions and the run's estimated error, in text and JSON;
+//! twins that cannot be built refused before any work; an interruption during the twins keeps the run's report.
+
+use crate::{frictrack, json};
+use std::process::{Command, Stdio};
+use std::time::Duration;
+
+#[test]
+fn the_check_reports_each_outcome_at_three_resolutions_with_the_runs_error() {
+    let args = ["run", "--elements", "60", "--load-advance", "0.4", "--speed", "150", "--check-resolution"];
+    let v = json(&frictrack(&[&args[..], &["--format", "json"]].concat()));
+    let check = &v["resolution_check"];
+    let elements: Vec<u64> =
+        check["resolutions"].as_array().unwrap().iter().map(|r| r["elements"].as_u64().unwrap()).collect();
+    assert_eq!(elements, [30, 60, 120], "a coarser and a finer twin");
+    assert_eq!(check["run"], 1);
+    let outcomes = check["outcomes"].as_array().unwrap();
+    let window = outcomes.iter().find(|o| o["name"] == "window_max_downward_deflection").unwrap();
+    assert_eq!(window["values"][1], v["window_max_downward_deflection"]["value"], "the run's own value in the middle");
+    assert_eq!(window["unit"], "m");
+    for o in outcomes {
+        let undefined = o["convergence"]["kind"] == "not_contracting";
+        assert_eq!(o["error"].is_null(), undefined, "{o}");
+        assert_eq!(o["relative"].is_null(), undefined || o["values"][1] == 0.0, "{o}");
+    }
+    let text = frictrack(&args);
+    assert!(text.status.success());
+    let stdout = String::from_utf8_lossy(&text.stdout);
+    assert!(stdout.contains("resolution check: each outcome at three resolutions"), "{stdout}");
+    assert!(stdout.contains("elements × load advance: 30 × 0.8 m"), "{stdout}");
+    assert!(stdout.contains("window_max_downward_deflection"), "{stdout}");
+    let plain = json(&frictrack(&["run", "--elements", "60", "--load-advance", "0.4", "--format", "json"]));
+    assert!(plain.get("resolution_check").is_none(), "no check unless asked");
+}
+
+#[test]
+fn an_odd_mesh_is_checked_against_two_finer_twins() {
+    let v = json(&frictrack(&[
+        "run",
+        "--elements",
+        "51",
+        "--load-advance",
+        "0.4",
+        "--check-resolution",
+        "--format",
+        "json",
+    ]));
+    let check = &v["resolution_check"];
+    let elements: Vec<u64> =
+        check["resolutions"].as_array().unwrap().iter().map(|r| r["elements"].as_u64().unwrap()).collect();
+    assert_eq!(elements, [51, 102, 204]);
+    assert_eq!(check["run"], 0);
+}
+
+#[test]
+fn twins_that_cannot_be_built_or_run_are_refused_before_any_work() {
+    // 600 000 elements: the finer twin's 1 200 000 exceed the mesh's limit — said at once, not after the run.
+    let started = std::time::Instant::now();
+    let out = frictrack(&["run", "--elements", "600000", "--load-advance", "0.0003", "--check-resolution"]);
+    assert_eq!(out.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("--check-resolution") && stderr.contains("mesh.elements = 1200000"), "{stderr}");
+    assert!(started.elapsed() < Duration::from_secs(20), "refused after {:?}", started.elapsed());
+    let out = frictrack(&["run", "--co-moving", "--check-resolution"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--check-resolution"));
+}
+
+/// SIGTERM while the twins run (201 elements: two finer twins, ~20 times the run's 0.2 s) stops them; the run's own
+/// report is printed without the check, and the exit code is 130.
+#[test]
+fn an_interruption_during_the_twins_keeps_the_runs_report() {
+    let child = Command::new(env!("CARGO_BIN_EXE_frictrack"))
+        .args(["run", "--elements", "201", "--load-advance", "0.2", "--distributed-friction", "5000"])
+        .arg("--check-resolution")
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    std::thread::sleep(Duration::from_millis(1500));
+    let (output, stopped) = crate::trust::terminate(child);
+    assert!(stopped < Duration::from_secs(2), "took {stopped:?}");
+    assert_eq!(output.status.code(), Some(130));
+    let (stdout, stderr) = (String::from_utf8_lossy(&output.stdout), String::from_utf8_lossy(&output.stderr));
+    assert!(stdout.contains("max downward deflection") && !stdout.contains("resolution check"), "{stdout}");
+    assert!(stderr.contains("the run's report stands without its resolution check"), "{stderr}");
+}
