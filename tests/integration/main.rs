@@ -1,5 +1,6 @@
 //! Workspace-level integration tests: results that cross crate boundaries or cover a whole field.
 
+mod accuracy;
 mod figures;
 mod infinite_track;
 mod layers;

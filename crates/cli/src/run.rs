@@ -40,10 +40,14 @@ pub struct RunArgs {
     /// a 120 m window over 1000 m) instead of across the finite beam.
     #[arg(long)]
     co_moving: bool,
-    /// Also run the refined twin (elements and load advance halved; about 4× the run's cost) and report every
-    /// outcome's estimated discretisation error beside it.
+    /// Also run the scenario's twins at other resolutions (elements and load advance doubled and halved; about 4¼
+    /// times the run's cost) and report every outcome's estimated discretisation error.
     #[arg(long)]
     check_resolution: bool,
+    /// Refine (elements and load advance halved together) until every outcome's estimated error is within this
+    /// relative tolerance, e.g. 0.01 for 1 %, and report the finest run with its errors.
+    #[arg(long, value_name = "TOL", conflicts_with = "check_resolution", allow_negative_numbers = true)]
+    accuracy: Option<f64>,
 }
 
 /// Execute `frictrack run`.
@@ -60,14 +64,8 @@ pub fn run(args: &RunArgs) -> Result<()> {
     if args.co_moving && scenario.co_moving.is_none() {
         scenario.co_moving = Some(scenario::CoMovingSection::default());
     }
+    check_resolution_flags(args, scenario.co_moving.is_some())?;
     if let Some(section) = scenario.co_moving.clone() {
-        if args.check_resolution {
-            anyhow::bail!(scenario::error::invalid(
-                "--check-resolution",
-                "given",
-                "is for a run across the finite beam: a run through a co-moving window is not checked",
-            ));
-        }
         return crate::co_moving::run(&scenario, &section, args.format, args.out.as_deref());
     }
     if args.out.is_some() {
@@ -81,28 +79,24 @@ pub fn run(args: &RunArgs) -> Result<()> {
         false => None,
     };
     crate::interrupt::keep_nothing_in(args.out.as_deref(), |folder| report::run_folder::check("--out", folder, &case))?;
-    let requests = match args.out.is_some() {
-        true => report::run_output::snapshot_requests(&scenario, &case),
-        false => Vec::new(),
-    };
-    let steps = case.settings.step_count(scenario.mesh.length);
-    if !args.quiet {
-        crate::progress::announce("this run", &runner::cost::Estimate::run(runner::cost::RunCost::of(&case)));
-    }
-    let bar = crate::progress::steps_bar(steps as u64, quiet);
-    let progress = |fraction: f64| bar.set_position((fraction * steps) as u64);
-    let stop = Some(crate::interrupt::stop_flag());
-    let ran = report::run_output::run_with_snapshots(&case, &requests, stop, &progress);
-    bar.finish_and_clear();
-    let (result, snapshots) = crate::interrupt::explain(ran)?;
-    let mut report = RunSummary::of(&scenario, &case, &result, start)?;
-    let mut check_interrupted = false;
-    if let Some(twins) = &twins {
-        match crate::resolution_check::check(twins, &scenario, &report, quiet)? {
-            Checked::Done(check) => report.resolution_check = Some(check),
-            Checked::Interrupted => check_interrupted = true,
+    let (scenario, case, result, snapshots, report, check_interrupted) = match args.accuracy {
+        Some(tolerance) => {
+            let refined = crate::resolution_check::refine(&scenario, tolerance, args.out.is_some(), quiet)?;
+            let interrupted = refined.summary.accuracy.as_ref().is_some_and(|a| a.status.interrupted());
+            (refined.scenario, refined.case, refined.result, refined.snapshots, refined.summary, interrupted)
         }
-    }
+        None => {
+            let (result, snapshots, mut report) = run_once(&scenario, &case, args.out.is_some(), quiet, start)?;
+            let mut interrupted = false;
+            if let Some(twins) = &twins {
+                match crate::resolution_check::check(twins, &scenario, &report, quiet)? {
+                    Checked::Done(check) => report.resolution_check = Some(check),
+                    Checked::Interrupted => interrupted = true,
+                }
+            }
+            (scenario, case, result, snapshots, report, interrupted)
+        }
+    };
     for warning in report::result_warnings::result_warnings(&case, &report) {
         eprintln!("warning: {warning}");
         warnings.push(warning.to_string());
@@ -121,7 +115,55 @@ pub fn run(args: &RunArgs) -> Result<()> {
         }
     }
     if check_interrupted {
-        return Err(crate::interrupt::interrupted_after("the run's report stands without its resolution check"));
+        let what = match args.accuracy {
+            Some(_) => "the finest run finished is reported above, with what its refinement reached",
+            None => "the run's report stands without its resolution check",
+        };
+        return Err(crate::interrupt::interrupted_after(what));
     }
     Ok(())
+}
+
+/// `--accuracy` is a relative error in (0, 1), and neither it nor `--check-resolution` is given for a run through a
+/// co-moving window (`co_moving`).
+fn check_resolution_flags(args: &RunArgs, co_moving: bool) -> Result<()> {
+    if let Some(tolerance) = args.accuracy {
+        report::resolution_check::accuracy::validate_tolerance("--accuracy", tolerance)?;
+    }
+    let given = [(args.check_resolution, "--check-resolution"), (args.accuracy.is_some(), "--accuracy")];
+    match given.into_iter().find_map(|(given, flag)| given.then_some(flag)).filter(|_| co_moving) {
+        Some(flag) => Err(scenario::error::invalid(
+            flag,
+            "given",
+            "is for a run across the finite beam: a run through a co-moving window is not checked",
+        )
+        .into()),
+        None => Ok(()),
+    }
+}
+
+/// One run of `case` (of `scenario`), with snapshots where a folder is written, a progress bar unless `quiet`: its
+/// result, snapshots and summary (wall time from `start`).
+fn run_once(
+    scenario: &scenario::Scenario,
+    case: &scenario::Case,
+    out: bool,
+    quiet: bool,
+    start: Instant,
+) -> Result<(track::RunResult, Vec<track::Snapshot>, RunSummary)> {
+    let requests = match out {
+        true => report::run_output::snapshot_requests(scenario, case),
+        false => Vec::new(),
+    };
+    let steps = case.settings.step_count(scenario.mesh.length);
+    if !quiet {
+        crate::progress::announce("this run", &runner::cost::Estimate::run(runner::cost::RunCost::of(case)));
+    }
+    let bar = crate::progress::steps_bar(steps as u64, quiet);
+    let progress = |fraction: f64| bar.set_position((fraction * steps) as u64);
+    let ran = report::run_output::run_with_snapshots(case, &requests, Some(crate::interrupt::stop_flag()), &progress);
+    bar.finish_and_clear();
+    let (result, snapshots) = crate::interrupt::explain(ran)?;
+    let report = RunSummary::of(scenario, case, &result, start)?;
+    Ok((result, snapshots, report))
 }

@@ -7,6 +7,7 @@ use crate::interruptible;
 use crate::scenario_input::{Source, overrides};
 use pyo3::prelude::*;
 use report::output::Output;
+use report::resolution_check::accuracy::{LEVEL_SECONDS, Target, refine};
 use report::resolution_check::twins::{Twin, Twins};
 use report::run_output::{histories_csv, recording, run_with_snapshots, snapshot_requests, snapshots_csv};
 use report::run_summary::RunSummary;
@@ -22,7 +23,7 @@ type RunTexts = (String, String, String, String, Option<String>, Option<String>,
 /// `frictrack run --out` writes it (its files checked before the run starts), its `command` (the Python call, in
 /// words) recorded beside the build's commit and the date.
 #[pyfunction]
-#[pyo3(signature = (kind, text, keywords, progress=None, out=None, command=String::new(), check_resolution=false))]
+#[pyo3(signature = (kind, text, keywords, progress=None, out=None, command=String::new(), check_resolution=false, accuracy=None))]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn run(
     py: Python<'_>,
@@ -33,11 +34,15 @@ pub(crate) fn run(
     out: Option<std::path::PathBuf>,
     command: String,
     check_resolution: bool,
+    accuracy: Option<f64>,
 ) -> PyResult<RunTexts> {
     let started = std::time::Instant::now();
     let scenario = Source::of(kind, text)?.read()?;
     let overrides = overrides(&keywords)?;
     let scenario = recording(overrides.apply(scenario).map_err(to_python)?);
+    if let Some(tolerance) = accuracy {
+        report::resolution_check::accuracy::validate_tolerance("accuracy", tolerance).map_err(to_python)?;
+    }
     let case = scenario.build().map_err(to_python)?;
     // The twins of check_resolution are built (their sizes checked) before any work.
     let twins = check_resolution.then(|| Twins::of(&scenario)).transpose().map_err(to_python)?;
@@ -49,17 +54,35 @@ pub(crate) fn run(
     let before = warnings.clone();
     let provenance = report::provenance::Provenance::now(command, frictrack_cli::COMMIT);
     let outcome = interruptible::run_reporting(py, progress, move |stop, told| {
-        told.announce("frictrack.run", &runner::cost::Estimate::run(runner::cost::RunCost::of(&case)));
-        let requests = snapshot_requests(&scenario, &case);
-        let (result, snapshots) = run_with_snapshots(&case, &requests, Some(stop), &|f| told.set(f))?;
-        let mut summary = RunSummary::of(&scenario, &case, &result, started)?;
-        if let Some(twins) = &twins {
-            let mut started = |twin: &Twin| {
-                told.announce(&twin.label(), &runner::cost::Estimate::run(runner::cost::RunCost::of(&twin.case)));
-            };
-            let check = twins.check(&scenario, &summary, Some(stop), &mut started, &|f| told.set(f))?;
-            summary.resolution_check = Some(check);
-        }
+        let (scenario, case, result, snapshots, summary) = match accuracy {
+            Some(tolerance) => {
+                let mut started = |twin: &Twin| {
+                    told.announce(&twin.label(), &runner::cost::Estimate::run(runner::cost::RunCost::of(&twin.case)));
+                };
+                let target = Target { tolerance, level_seconds: LEVEL_SECONDS };
+                let refined =
+                    refine(&scenario, target, &snapshot_requests, Some(stop), &mut started, &|f| told.set(f))?;
+                if refined.summary.accuracy.as_ref().is_some_and(|a| a.status.interrupted()) {
+                    return Err(scenario::error::StudyError::Interrupted);
+                }
+                (refined.scenario, refined.case, refined.result, refined.snapshots, refined.summary)
+            }
+            None => {
+                told.announce("frictrack.run", &runner::cost::Estimate::run(runner::cost::RunCost::of(&case)));
+                let requests = snapshot_requests(&scenario, &case);
+                let (result, snapshots) = run_with_snapshots(&case, &requests, Some(stop), &|f| told.set(f))?;
+                let mut summary = RunSummary::of(&scenario, &case, &result, started)?;
+                if let Some(twins) = &twins {
+                    let mut started = |twin: &Twin| {
+                        let estimate = runner::cost::Estimate::run(runner::cost::RunCost::of(&twin.case));
+                        told.announce(&twin.label(), &estimate);
+                    };
+                    let check = twins.check(&scenario, &summary, Some(stop), &mut started, &|f| told.set(f))?;
+                    summary.resolution_check = Some(check);
+                }
+                (scenario, case, result, snapshots, summary)
+            }
+        };
         let mut after: Vec<String> =
             report::result_warnings::result_warnings(&case, &summary).iter().map(ToString::to_string).collect();
         after.extend(summary.fallback_warning());

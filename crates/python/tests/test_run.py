@@ -422,3 +422,26 @@ def test_check_resolution_estimates_each_outcomes_error_from_twins_at_other_reso
 def test_check_resolution_takes_only_a_bool(bad):
     with pytest.raises(frictrack.InputError, match=r"check_resolution = .*True or False"):
         frictrack.run(check_resolution=bad, progress=False)
+
+
+def test_accuracy_refines_until_every_outcome_is_within_it():
+    """`accuracy=0.05` is `run --accuracy 0.05`: the finest run's summary, its check over the last three
+    resolutions and whether the tolerance was reached."""
+    run = frictrack.run(elements=50, load_advance=0.8, accuracy=0.05, progress=False)
+    accuracy = run.summary["accuracy"]
+    assert accuracy["status"]["kind"] == "reached" and accuracy["tolerance"] == 0.05
+    check = run.summary["resolution_check"]
+    assert check["run"] == 2 and check["resolutions"][2]["elements"] == accuracy["resolutions"][-1]["elements"]
+    assert all(o["error"] <= 0.05 * abs(o["values"][2]) for o in check["outcomes"])
+    assert "accuracy 5 %: reached" in run.report
+
+
+@pytest.mark.parametrize("bad", [0, -0.01, float("nan"), 1, 1.5, "1%", True])
+def test_a_bad_accuracy_is_refused_naming_it(bad):
+    with pytest.raises(frictrack.InputError, match=r"invalid accuracy = .*relative error in \(0, 1\)"):
+        frictrack.run(accuracy=bad, progress=False)
+
+
+def test_accuracy_and_check_resolution_are_not_given_together():
+    with pytest.raises(frictrack.InputError, match="check_resolution"):
+        frictrack.run(accuracy=0.01, check_resolution=True, progress=False)

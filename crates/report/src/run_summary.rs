@@ -106,9 +106,12 @@ pub struct RunSummary {
     /// How the text report names the extremes window (words only: not in the JSON).
     #[serde(skip)]
     pub window: crate::window_wording::WindowWording,
-    /// With `--check-resolution`: every outcome against the run's refined twin, with its estimated error.
+    /// With `--check-resolution` or `--accuracy`: every outcome at three resolutions, with the run's estimated error.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub resolution_check: Option<crate::resolution_check::ResolutionCheck>,
+    /// With `--accuracy`: the tolerance, whether it was reached and the resolutions run (this summary is the finest's).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub accuracy: Option<crate::resolution_check::accuracy::Accuracy>,
 }
 
 /// The extremes of one run: over the whole run and every recorded node, over the window of load positions, the
@@ -376,6 +379,7 @@ impl RunSummary {
             ),
             window: crate::window_wording::WindowWording::of(scenario, case),
             resolution_check: None,
+            accuracy: None,
         })
     }
 }

@@ -80,6 +80,9 @@ fn write_text(f: &mut Formatter<'_>, r: &RunSummary) -> fmt::Result {
     if let Some(check) = &r.resolution_check {
         crate::resolution_check::write_check(f, check)?;
     }
+    if let Some(accuracy) = &r.accuracy {
+        crate::resolution_check::write_accuracy(f, accuracy)?;
+    }
     writeln!(
         f,
         "  wall time {:.3} s (the time loop {:.3} s; set-up, statics and the static envelope the rest)",

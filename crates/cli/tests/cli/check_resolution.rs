@@ -85,3 +85,50 @@ fn an_interruption_during_the_twins_keeps_the_runs_report() {
     assert!(stdout.contains("max downward deflection") && !stdout.contains("resolution check"), "{stdout}");
     assert!(stderr.contains("the run's report stands without its resolution check"), "{stderr}");
 }
+
+#[test]
+fn accuracy_refines_until_every_outcome_is_within_it_and_says_so() {
+    let v = json(&frictrack(&[
+        "run",
+        "--elements",
+        "50",
+        "--load-advance",
+        "0.8",
+        "--accuracy",
+        "0.05",
+        "--format",
+        "json",
+    ]));
+    let accuracy = &v["accuracy"];
+    assert_eq!(accuracy["tolerance"], 0.05);
+    assert_eq!(accuracy["status"]["kind"], "reached");
+    let resolutions = accuracy["resolutions"].as_array().unwrap();
+    assert!(resolutions.len() >= 3);
+    assert_eq!(v["resolution_check"]["run"], 2);
+    let finest = resolutions.last().unwrap();
+    assert_eq!(v["resolution_check"]["resolutions"][2]["elements"], finest["elements"]);
+    for o in v["resolution_check"]["outcomes"].as_array().unwrap() {
+        let (error, value) = (o["error"].as_f64().unwrap(), o["values"][2].as_f64().unwrap());
+        assert!(error <= 0.05 * value.abs(), "{o}");
+    }
+    let text = String::from_utf8(
+        frictrack(&["run", "--elements", "50", "--load-advance", "0.8", "--accuracy", "0.05"]).stdout,
+    )
+    .unwrap();
+    assert!(text.contains("accuracy 5 %: reached at"), "{text}");
+}
+
+#[test]
+fn a_bad_accuracy_is_refused_by_key() {
+    for bad in ["0", "-0.01", "NaN", "1", "1.5", "1%", "inf"] {
+        let out = frictrack(&["run", "--accuracy", bad]);
+        assert_eq!(out.status.code(), Some(2), "{bad}");
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(stderr.contains("--accuracy"), "{bad}: {stderr}");
+    }
+    let out = frictrack(&["run", "--accuracy", "0.01", "--check-resolution"]);
+    assert_eq!(out.status.code(), Some(2));
+    let out = frictrack(&["run", "--co-moving", "--accuracy", "0.01"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("invalid --accuracy"));
+}

@@ -123,7 +123,7 @@ class Run:
 
 def run(
     scenario: ScenarioLike = None, *, progress: ProgressLike = None, out: "str | os.PathLike[str] | None" = None,
-    check_resolution: bool = False, **overrides: Any,
+    check_resolution: bool = False, accuracy: Optional[float] = None, **overrides: Any,
 ) -> Run:
     """Run ``scenario`` (a TOML file path, a TOML string, a dict with the file's keys, or ``None`` for the reference
     case) with keyword ``overrides`` named as the command line's flags: ``speed`` (m/s, or text with its unit such as
@@ -145,18 +145,31 @@ def run(
     coarser and one finer, or two finer) run after it, about 4–20 times its cost, and ``summary["resolution_check"]``
     holds each outcome's values at the three resolutions, how they converge and the run's estimated error (``None``
     where they do not converge).
+
+    ``accuracy=TOL`` is ``frictrack run --accuracy TOL``: the run refined (elements and load advance halved together)
+    until every outcome's estimated error is within TOL of its value (0.01: 1 %); the result is the finest run's,
+    its ``summary["resolution_check"]`` the last three resolutions and ``summary["accuracy"]`` the tolerance, whether
+    it was reached (``status``: ``reached`` or ``not_reached`` with ``why`` and the ``outcomes`` above TOL) and every
+    resolution run.
     """
     if not isinstance(check_resolution, bool):
         raise InputError(f"invalid check_resolution = {check_resolution!r}: True or False")
+    if accuracy is not None and (isinstance(accuracy, bool) or not isinstance(accuracy, (int, float))):
+        raise InputError(f"invalid accuracy = {accuracy!r}: a relative error in (0, 1): 0.01 asks for every outcome "
+                         "within 1 %")
+    if accuracy is not None and check_resolution:
+        raise InputError("invalid check_resolution = True beside accuracy: accuracy checks every resolution it runs")
     kind, text = _source(scenario)
     folder = _path("out", out, "a folder path")
     given = [] if scenario is None else ["{…}" if isinstance(scenario, Mapping) else repr(scenario)]
     given += [f"{k}={v!r}" for k, v in overrides.items()] + ([] if folder is None else [f"out={folder!r}"])
     given += ["check_resolution=True"] if check_resolution else []
+    given += [] if accuracy is None else [f"accuracy={accuracy!r}"]
     with _Reporter(progress, "run") as report:
         summary, lines, histories, snapshots, wheels, sleepers, warnings = _native.run(
             kind, text, list(overrides.items()), report, folder,
             f"frictrack.run({', '.join(given)}) (Python)", check_resolution,
+            None if accuracy is None else float(accuracy),
         )
     return Run(
         json.loads(summary),

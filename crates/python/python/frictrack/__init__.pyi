@@ -86,11 +86,13 @@ def run(
     progress: ProgressLike = None,
     out: Union[str, os.PathLike, None] = None,
     check_resolution: bool = False,
+    accuracy: Optional[float] = None,
 ) -> Run:
     """One run of `scenario` (a TOML path, a TOML string, a dict, or None for the reference case) with overrides named
     as the command line's flags; with `out`, the run folder `frictrack run --out` writes (summary.json, CSVs,
     figures); with `check_resolution`, each outcome's error estimated from twins at other resolutions
-    (summary["resolution_check"]); releases the GIL, stops on Ctrl-C, raises InputError naming bad input."""
+    (summary["resolution_check"]); with `accuracy`, refined until every outcome is within it (summary["accuracy"]);
+    releases the GIL, stops on Ctrl-C, raises InputError naming bad input."""
 
 def sweep(
     scenario: ScenarioLike = None,

@@ -3,22 +3,35 @@
 //! twice as long and one with them half as long (or, where the coarser twin cannot be built, two finer ones) — and its
 //! error estimated from the three with the order they show ([`estimate`]).
 //!
+//! - [`accuracy`]: `run --accuracy TOL`, the run refined until every outcome's estimated error is within TOL;
 //! - [`estimate`]: one outcome's error from three resolutions (observed order, Roache's safety factor, undefined where
 //!   the values do not converge);
 //! - [`outcomes`]: the outcomes of a run that are checked;
 //! - [`twins`]: the twins built (before any work) and run;
 //! - `text`: the check's lines in a run's text report.
 
+pub mod accuracy;
 pub mod estimate;
 pub mod outcomes;
 mod text;
 pub mod twins;
 
-pub(crate) use text::write_check;
+pub(crate) use text::{write_accuracy, write_check};
 
 use crate::run_summary::RunSummary;
 use estimate::{Convergence, Sequence};
 use serde::Serialize;
+
+impl Resolution {
+    /// The resolution of `scenario`, whose run took `summary.wall_time`.
+    pub fn of(scenario: &scenario::Scenario, summary: &RunSummary) -> Self {
+        Self {
+            elements: scenario.mesh.elements,
+            load_advance: scenario.integration.load_advance,
+            wall_time: summary.wall_time,
+        }
+    }
+}
 
 /// One resolution of the check.
 #[derive(Debug, Clone, PartialEq, Serialize)]

@@ -39,3 +39,28 @@ pub(crate) fn write_check(f: &mut Formatter<'_>, c: &ResolutionCheck) -> Result 
     }
     Ok(())
 }
+
+/// The line of `run --accuracy`: reached or not, at which resolution, after how many.
+pub(crate) fn write_accuracy(f: &mut Formatter<'_>, a: &super::accuracy::Accuracy) -> Result {
+    let finest = a.resolutions.last().map_or(String::new(), |r| format!("{} × {} m", r.elements, r.load_advance));
+    let tolerance = format!("{} %", 100.0 * a.tolerance);
+    let runs = format!("{} resolutions, {:.1} s in all", a.resolutions.len(), a.wall_time);
+    match &a.status {
+        super::accuracy::AccuracyStatus::Reached => writeln!(
+            f,
+            "  accuracy {tolerance}: reached at {finest} ({runs}): every outcome's estimated error is within {tolerance}"
+        ),
+        super::accuracy::AccuracyStatus::Interrupted { outcomes } => writeln!(
+            f,
+            "  accuracy {tolerance}: NOT reached — interrupted after {finest} ({runs}); above {tolerance} or \
+             undefined there: {}",
+            outcomes.join(", ")
+        ),
+        super::accuracy::AccuracyStatus::NotReached { why, outcomes } => writeln!(
+            f,
+            "  accuracy {tolerance}: NOT reached — stopped at {finest} ({runs}): {why}; above {tolerance} or \
+             undefined: {}",
+            outcomes.join(", ")
+        ),
+    }
+}

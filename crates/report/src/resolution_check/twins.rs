@@ -23,7 +23,8 @@ pub struct Twin {
 }
 
 impl Twin {
-    fn built(scenario: &Scenario, level: i32) -> Result<Self> {
+    /// The twin of `scenario` `level` halvings finer, built.
+    pub(crate) fn built(scenario: &Scenario, level: i32) -> Result<Self> {
         let twin = scenario.twin(level)?;
         let case = twin.build()?;
         Ok(Self { level, scenario: twin, case })
@@ -32,9 +33,10 @@ impl Twin {
     /// How the twin is named in progress lines: "the coarser twin (40 elements, load advance 0.2 m)".
     pub fn label(&self) -> String {
         let which = match self.level {
-            -1 => "the coarser twin",
-            1 => "the finer twin",
-            _ => "the twice finer twin",
+            -1 => "the coarser twin".to_string(),
+            0 => "the resolution given".to_string(),
+            1 => "the finer twin".to_string(),
+            n => format!("the twin {n} halvings finer"),
         };
         format!(
             "{which} ({} elements, load advance {} m)",
@@ -81,11 +83,7 @@ impl Twins {
             let (result, _) = crate::run_output::run_with_snapshots(&twin.case, &[], stop, progress)?;
             summaries.push(RunSummary::of(&twin.scenario, &twin.case, &result, start)?);
         }
-        let resolution = |s: &Scenario, summary: &RunSummary| Resolution {
-            elements: s.mesh.elements,
-            load_advance: s.integration.load_advance,
-            wall_time: summary.wall_time,
-        };
+        let resolution = Resolution::of;
         let ([a, b], [ta, tb]) = ([&summaries[0], &summaries[1]], [&self.0[0], &self.0[1]]);
         let (all, resolutions) = match self.run_index() {
             1 => ([a, run, b], [resolution(&ta.scenario, a), resolution(scenario, run), resolution(&tb.scenario, b)]),
