@@ -24,6 +24,7 @@ mod scenario_args;
 mod stationary;
 mod study_cmd;
 mod sweep;
+mod sweep_check;
 mod track_profile;
 mod trains;
 

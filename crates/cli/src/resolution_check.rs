@@ -32,13 +32,19 @@ pub enum Checked {
 
 /// A progress bar for each twin or resolution in turn: `started` opens the next (closing the last), `progress`
 /// moves it, `close` ends the last.
-struct Bars {
+pub struct Bars {
     bar: RefCell<Option<(ProgressBar, f64)>>,
     quiet: bool,
 }
 
 impl Bars {
-    fn started(&self, twin: &Twin) {
+    /// No bar yet; none at all if `quiet`.
+    pub fn new(quiet: bool) -> Self {
+        Self { bar: RefCell::new(None), quiet }
+    }
+
+    /// The bar of `twin`, which starts now (the last one closed).
+    pub fn started(&self, twin: &Twin) {
         if !self.quiet {
             eprintln!("running {}", twin.label());
         }
@@ -49,13 +55,15 @@ impl Bars {
         }
     }
 
-    fn progress(&self, fraction: f64) {
+    /// The running twin's fraction done.
+    pub fn progress(&self, fraction: f64) {
         if let Some((bar, steps)) = &*self.bar.borrow() {
             bar.set_position((fraction * steps) as u64);
         }
     }
 
-    fn close(&self) {
+    /// Close the last bar.
+    pub fn close(&self) {
         if let Some((bar, _)) = self.bar.take() {
             bar.finish_and_clear();
         }
@@ -64,7 +72,7 @@ impl Bars {
 
 /// Run `twins` of `scenario` after its run `run`, with a progress bar each unless `quiet`.
 pub fn check(twins: &Twins, scenario: &scenario::Scenario, run: &RunSummary, quiet: bool) -> Result<Checked> {
-    let bars = Bars { bar: RefCell::new(None), quiet };
+    let bars = Bars::new(quiet);
     let stop = Some(crate::interrupt::stop_flag());
     let checked = twins.check(scenario, run, stop, &mut |twin| bars.started(twin), &|f| bars.progress(f));
     bars.close();
@@ -88,7 +96,7 @@ pub fn refine(scenario: &scenario::Scenario, tolerance: f64, out: bool, quiet: b
             LEVEL_SECONDS
         );
     }
-    let bars = Bars { bar: RefCell::new(None), quiet };
+    let bars = Bars::new(quiet);
     let requests = |s: &scenario::Scenario, c: &scenario::Case| match out {
         true => report::run_output::snapshot_requests(s, c),
         false => Vec::new(),

@@ -45,6 +45,10 @@ pub struct SweepArgs {
     /// No progress or summary on standard error.
     #[arg(long)]
     quiet: bool,
+    /// Also check the run at the sweep's peak (the refined critical speed with --critical, else the speed of the
+    /// largest max downward deflection) against its twins at other resolutions, and report its errors.
+    #[arg(long, conflicts_with = "shard")]
+    check_resolution: bool,
 }
 
 /// Execute `frictrack sweep`.
@@ -69,6 +73,9 @@ pub fn run(args: &SweepArgs) -> Result<()> {
     }
     if let Some(out) = &args.out {
         check_outputs(out)?;
+    }
+    if let (true, Some(&first)) = (args.check_resolution, speeds.first()) {
+        crate::sweep_check::refuse_early(&scenario, first)?;
     }
     let journal =
         args.out.as_deref().map(|out| runner::Journal::open(&journal_beside(out), args.resume)).transpose()?;
@@ -105,20 +112,16 @@ pub fn run(args: &SweepArgs) -> Result<()> {
     } else {
         None
     };
+    let checked = match args.check_resolution && failed.is_empty() {
+        true => crate::sweep_check::at_peak(&scenario, &points, critical.as_ref(), args.quiet)?,
+        false => None,
+    };
     match &args.out {
-        Some(path) => write_files(path, &csv, &scenario, (&points, &failed), critical.as_ref(), shard.is_none())?,
-        None => {
-            print!("{}", String::from_utf8(csv)?);
-            // A comment line after the data (pandas: comment="#"), so that --quiet never loses the answer.
-            if let Some(c) = &critical {
-                println!("# critical_speed {}", serde_json::to_string(c)?);
-            }
-            for f in &failed {
-                println!("# failed_run {}", serde_json::to_string(f)?);
-            }
-            let units = runner::csv_columns_of(&scenario).map(|(name, unit, _)| (*name, *unit));
-            println!("# {}", report::columns::units_line(units));
+        Some(path) => {
+            let notes = (critical.as_ref(), checked.as_ref());
+            write_files(path, &csv, &scenario, (&points, &failed), notes, shard.is_none())?
         }
+        None => print_csv(csv, &scenario, &failed, (critical.as_ref(), checked.as_ref()))?,
     }
     if !failed.is_empty() {
         return Err(failed_runs(&failed, rows.len(), args.critical, journal.as_ref()));
@@ -126,6 +129,29 @@ pub fn run(args: &SweepArgs) -> Result<()> {
     if let Some(j) = journal {
         j.remove()?;
     }
+    Ok(())
+}
+
+/// The CSV on standard output, then comment lines (pandas: comment="#") so that --quiet never loses the answer: the
+/// critical speed, the check at the peak, the failed runs and the columns' units.
+fn print_csv(
+    csv: Vec<u8>,
+    scenario: &scenario::Scenario,
+    failed: &[FailedRun],
+    (critical, checked): (Option<&runner::CriticalSpeed>, Option<&report::resolution_check::point::PointCheck>),
+) -> Result<()> {
+    print!("{}", String::from_utf8(csv)?);
+    if let Some(c) = critical {
+        println!("# critical_speed {}", serde_json::to_string(c)?);
+    }
+    if let Some(c) = checked {
+        println!("# resolution_check {}", serde_json::to_string(c)?);
+    }
+    for f in failed {
+        println!("# failed_run {}", serde_json::to_string(f)?);
+    }
+    let units = runner::csv_columns_of(scenario).map(|(name, unit, _)| (*name, *unit));
+    println!("# {}", report::columns::units_line(units));
     Ok(())
 }
 
@@ -161,13 +187,13 @@ fn check_outputs(out: &std::path::Path) -> Result<()> {
 
 /// Write the sweep's files at `path`: the CSV (`csv`), its figures (a whole sweep of ≥ 2 finished runs; a shard's
 /// few speeds are drawn by `plot` after merge) and its metadata (columns with units, the critical speed, the
-/// `failed` runs, the scenario).
+/// `failed` runs, the scenario, the check at the peak).
 fn write_files(
     path: &std::path::Path,
     csv: &[u8],
     scenario: &scenario::Scenario,
     (points, failed): (&[runner::SweepPoint], &[runner::FailedRun]),
-    critical: Option<&runner::CriticalSpeed>,
+    (critical, checked): (Option<&runner::CriticalSpeed>, Option<&report::resolution_check::point::PointCheck>),
     whole: bool,
 ) -> Result<()> {
     write_atomically(path, csv)?;
@@ -178,7 +204,8 @@ fn write_files(
         crate::files::write_figures("--out", &plots, path.parent().unwrap_or(std::path::Path::new(".")))?;
     }
     let name = path.file_name().map(|n| n.to_string_lossy().into_owned());
-    let metadata = report::sweep_file::SweepFile::of(name, scenario, critical, failed);
+    let mut metadata = report::sweep_file::SweepFile::of(name, scenario, critical, failed);
+    metadata.resolution_check = checked.map(serde_json::to_value).transpose()?;
     write_atomically(&metadata_beside(path), serde_json::to_string_pretty(&metadata)?.as_bytes())?;
     Ok(())
 }

@@ -25,6 +25,10 @@ pub struct SweepFile {
     pub frictrack_version: String,
     /// The scenario swept.
     pub scenario: Scenario,
+    /// With `sweep --check-resolution`: the check at the speed of the sweep's peak
+    /// ([`crate::resolution_check::point::PointCheck`], as JSON).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub resolution_check: Option<serde_json::Value>,
 }
 
 /// A refined critical speed and what it is, in words.
@@ -60,6 +64,7 @@ impl SweepFile {
             failures: failed.to_vec(),
             frictrack_version: env!("CARGO_PKG_VERSION").to_string(),
             scenario: scenario.clone(),
+            resolution_check: None,
         }
     }
 

@@ -132,3 +132,30 @@ fn a_bad_accuracy_is_refused_by_key() {
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("invalid --accuracy"));
 }
+
+#[test]
+fn a_sweep_checks_the_run_at_its_peak() {
+    let base = ["sweep", "--speeds", "150:250:25", "--elements", "100", "--load-advance", "0.2", "--check-resolution"];
+    let out = frictrack(&base);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let line = stdout.lines().find_map(|l| l.strip_prefix("# resolution_check ")).expect("a check line after the CSV");
+    let check: serde_json::Value = serde_json::from_str(line).unwrap();
+    // The largest max downward deflection of 150–250 m/s is at 200 m/s (v_cr = 205.6 m/s).
+    assert_eq!(check["speed"], 200.0);
+    assert_eq!(check["point"], "the speed of the largest max downward deflection");
+    assert_eq!(check["check"]["outcomes"][0]["name"], "max_downward_deflection");
+    assert!(String::from_utf8_lossy(&out.stderr).contains("checking the run at the speed of the largest"));
+    // With --critical, the refined critical speed is the point checked, recorded in OUT.json.
+    let dir = crate::temporary_folder("sweep-check");
+    let csv = dir.join("sweep.csv");
+    let out = frictrack(&[&base[..], &["--critical", "--quiet", "--out", csv.to_str().unwrap()]].concat());
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let meta: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("sweep.json")).unwrap()).unwrap();
+    assert_eq!(meta["resolution_check"]["point"], "the refined critical speed");
+    assert_eq!(meta["resolution_check"]["speed"], meta["critical_speed"]["result"]["speed"]);
+    let refused = frictrack(&[&base[..], &["--shard", "1/2", "--out", csv.to_str().unwrap()]].concat());
+    assert_eq!(refused.status.code(), Some(2));
+    std::fs::remove_dir_all(dir).unwrap();
+}

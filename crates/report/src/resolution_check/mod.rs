@@ -7,12 +7,14 @@
 //! - [`estimate`]: one outcome's error from three resolutions (observed order, Roache's safety factor, undefined where
 //!   the values do not converge);
 //! - [`outcomes`]: the outcomes of a run that are checked;
+//! - [`point`]: the check at one point of a sweep (the speed of the peak it reports);
 //! - [`twins`]: the twins built (before any work) and run;
 //! - `text`: the check's lines in a run's text report.
 
 pub mod accuracy;
 pub mod estimate;
 pub mod outcomes;
+pub mod point;
 mod text;
 pub mod twins;
 

@@ -64,3 +64,9 @@ pub(crate) fn write_accuracy(f: &mut Formatter<'_>, a: &super::accuracy::Accurac
         ),
     }
 }
+
+impl std::fmt::Display for super::ResolutionCheck {
+    fn fmt(&self, f: &mut Formatter<'_>) -> Result {
+        write_check(f, self)
+    }
+}
