@@ -83,6 +83,11 @@ pub fn run(args: &RunArgs) -> Result<()> {
         Some(tolerance) => {
             let refined = crate::resolution_check::refine(&scenario, tolerance, args.out.is_some(), quiet)?;
             let interrupted = refined.summary.accuracy.as_ref().is_some_and(|a| a.status.interrupted());
+            // What is recorded warns of the scenario as it ran (the resolution given was refined).
+            warnings = scenario::diagnostics::warnings(&refined.scenario, &refined.case)
+                .iter()
+                .map(ToString::to_string)
+                .collect();
             (refined.scenario, refined.case, refined.result, refined.snapshots, refined.summary, interrupted)
         }
         None => {

@@ -159,3 +159,22 @@ fn a_sweep_checks_the_run_at_its_peak() {
     assert_eq!(refused.status.code(), Some(2));
     std::fs::remove_dir_all(dir).unwrap();
 }
+
+/// The HTML report of a refined run shows how close it is, and its folder records the warnings of the scenario as it
+/// ran — not the coarse mesh it started from.
+#[test]
+fn a_refined_run_folder_reports_how_close_it_is() {
+    let dir = crate::temporary_folder("accuracy-report");
+    let out = dir.join("run");
+    let args = ["run", "--elements", "60", "--load-advance", "0.4", "--accuracy", "0.1", "--quiet"];
+    let ran = frictrack(&[&args[..], &["--out", out.to_str().unwrap()]].concat());
+    assert!(ran.status.success(), "{}", String::from_utf8_lossy(&ran.stderr));
+    assert!(String::from_utf8_lossy(&ran.stderr).contains("use at least 81 elements"), "warned of the mesh given");
+    let summary = std::fs::read_to_string(out.join("summary.json")).unwrap();
+    assert!(!summary.contains("use at least 81 elements"), "the record warns of the mesh that ran");
+    assert!(frictrack(&["report", out.to_str().unwrap()]).status.success());
+    let html = std::fs::read_to_string(out.join("report.html")).unwrap();
+    assert!(html.contains("How close it is") && html.contains("Asked for 10 %: reached"), "no check section");
+    assert!(html.contains("<code>window_max_downward_deflection</code>") && html.contains("(the run)"));
+    std::fs::remove_dir_all(dir).unwrap();
+}

@@ -12,6 +12,7 @@ pub mod blocks;
 pub mod command_page;
 pub mod folder;
 pub mod page;
+pub mod resolution_table;
 pub mod run_page;
 pub mod sources;
 pub mod study_page;

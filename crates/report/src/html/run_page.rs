@@ -14,6 +14,9 @@ pub fn run_page(folder: &Path, summary: &Value) -> Result<Page> {
     let report = &summary["report"];
     let title = summary["figures"]["title"].as_str().unwrap_or("frictrack run").to_string();
     let mut sections = vec![Section::new("results", "Key results", key_results(report))];
+    if let Some(check) = super::resolution_table::resolution_section(report) {
+        sections.push(Section::new("resolution", "How close it is", check));
+    }
     let list: Vec<String> = string_list(&summary["warnings"]);
     sections.push(Section::new("warnings", format!("Warnings ({})", list.len()), warnings(&list)));
     let mut figures = String::new();
