@@ -24,16 +24,7 @@ pub fn at_peak(
     critical: Option<&CriticalSpeed>,
     quiet: bool,
 ) -> Result<Option<PointCheck>> {
-    let (speed, point) = match critical {
-        Some(c) => (c.speed, "the refined critical speed"),
-        None => match points
-            .iter()
-            .max_by(|a, b| a.deflection.max_downward.value.total_cmp(&b.deflection.max_downward.value))
-        {
-            Some(p) => (p.speed, "the speed of the largest max downward deflection"),
-            None => return Ok(None),
-        },
-    };
+    let Some((speed, point)) = PointCheck::peak_of(points, critical) else { return Ok(None) };
     if !quiet {
         eprintln!("--check-resolution: checking the run at {point}, {speed:.2} m/s, against its twins");
     }

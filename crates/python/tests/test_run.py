@@ -445,3 +445,12 @@ def test_a_bad_accuracy_is_refused_naming_it(bad):
 def test_accuracy_and_check_resolution_are_not_given_together():
     with pytest.raises(frictrack.InputError, match="check_resolution"):
         frictrack.run(accuracy=0.01, check_resolution=True, progress=False)
+
+
+def test_a_sweep_checks_the_run_at_its_peak():
+    sweep = frictrack.sweep(speeds=[150, 200, 250], elements=100, load_advance=0.2, check_resolution=True,
+                            progress=False)
+    assert sweep.resolution_check["speed"] == 200.0
+    assert sweep.resolution_check["point"] == "the speed of the largest max downward deflection"
+    assert sweep.resolution_check["check"]["outcomes"][0]["name"] == "max_downward_deflection"
+    assert frictrack.sweep(speeds=[150, 200], elements=100, load_advance=0.2, progress=False).resolution_check is None

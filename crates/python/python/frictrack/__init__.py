@@ -186,27 +186,35 @@ def run(
 class Sweep(Table):
     """A sweep's table (``frictrack sweep``'s CSV: one row per speed, SI units in ``units``), its ``failures``,
     (speed m/s, error) for each run that failed (its row is NaN), and its ``warnings``, what the command line warns
-    for the runs at the lowest and highest speed (e.g. a load advance too coarse there)."""
+    for the runs at the lowest and highest speed (e.g. a load advance too coarse there); with ``check_resolution``,
+    ``resolution_check``: the run at the sweep's peak checked against its twins (``speed``, ``point``, ``check`` as
+    in a run's summary), else ``None``."""
 
-    def __init__(self, table: Table, failures: "list[tuple[float, str]]", warnings: "list[str]") -> None:
+    def __init__(self, table: Table, failures: "list[tuple[float, str]]", warnings: "list[str]",
+                 resolution_check: Optional[Dict[str, Any]] = None) -> None:
         super().__init__(table.data, table.units)
         self.failures = failures
         self.warnings = warnings
+        self.resolution_check = resolution_check
 
 
 def sweep(scenario: ScenarioLike = None, speeds: Sequence[float] = (), jobs: Optional[int] = None,
-          progress: ProgressLike = None, **overrides: Any) -> Sweep:
+          progress: ProgressLike = None, check_resolution: bool = False, **overrides: Any) -> Sweep:
     """One run per speed of ``speeds`` (m/s), on ``jobs`` worker threads (``None``: all cores), as ``frictrack
     sweep``: the same CSV as a table (``speed``, ``max_downward_deflection``, … with their units). A failed run
     leaves a NaN row and is listed in ``failures``; the others are kept. The scenario, overrides and ``progress``
-    (the fraction of runs done) are as for :func:`run`."""
+    (the fraction of runs done) are as for :func:`run`. ``check_resolution=True`` is ``frictrack sweep
+    --check-resolution``: the run at the speed of the largest max downward deflection checked against its twins
+    (``resolution_check``)."""
+    if not isinstance(check_resolution, bool):
+        raise InputError(f"invalid check_resolution = {check_resolution!r}: True or False")
     kind, text = _source(scenario)
     with _Reporter(progress, "sweep") as report:
-        csv, failures, warnings = _native.sweep(
-            kind, text, _speeds(speeds), _jobs(jobs), list(overrides.items()), report
+        csv, failures, warnings, checked = _native.sweep(
+            kind, text, _speeds(speeds), _jobs(jobs), list(overrides.items()), report, check_resolution
         )
     return Sweep(parse_csv(csv, dict(_native.sweep_columns())), [(float(v), str(e)) for v, e in failures],
-                 list(warnings))
+                 list(warnings), None if checked is None else json.loads(checked))
 
 
 def analytic(scenario: ScenarioLike = None, speeds: Sequence[float] = (), damping_ratio: Optional[float] = None,

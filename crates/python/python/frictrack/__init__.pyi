@@ -57,10 +57,11 @@ class Run:
 
 class Sweep(Table):
     """`frictrack sweep`'s CSV as a table (one row per speed), the failed runs (speed m/s, error) and the warnings
-    for the swept speeds."""
+    for the swept speeds; with check_resolution, the check at the sweep's peak."""
 
     failures: List[Tuple[float, str]]
     warnings: List[str]
+    resolution_check: Optional[Dict[str, Any]]
 
 def run(
     scenario: ScenarioLike = None,
@@ -99,9 +100,11 @@ def sweep(
     speeds: Union[float, str, Sequence[Union[float, str]]] = ...,
     jobs: Optional[int] = None,
     progress: ProgressLike = None,
+    check_resolution: bool = False,
     **overrides: Any,
 ) -> Sweep:
-    """One run per speed (m/s) on `jobs` threads (None: all cores), as `frictrack sweep`."""
+    """One run per speed (m/s) on `jobs` threads (None: all cores), as `frictrack sweep`; with `check_resolution`,
+    the run at the sweep's peak checked against its twins (Sweep.resolution_check)."""
 
 def analytic(
     scenario: ScenarioLike = None,

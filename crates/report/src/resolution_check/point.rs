@@ -23,6 +23,21 @@ pub struct PointCheck {
 }
 
 impl PointCheck {
+    /// The point of a sweep to check: the refined critical speed where there is one, else the speed of the largest
+    /// max downward deflection of the finished `points` (m/s, and the point in words); None without any.
+    pub fn peak_of(
+        points: &[runner::SweepPoint],
+        critical: Option<&runner::CriticalSpeed>,
+    ) -> Option<(f64, &'static str)> {
+        if let Some(c) = critical {
+            return Some((c.speed, "the refined critical speed"));
+        }
+        let largest = |a: &&runner::SweepPoint, b: &&runner::SweepPoint| {
+            a.deflection.max_downward.value.total_cmp(&b.deflection.max_downward.value)
+        };
+        points.iter().max_by(largest).map(|p| (p.speed, "the speed of the largest max downward deflection"))
+    }
+
     /// `scenario` at `speed` (m/s; the point named `point`), its twins built before the run, then run — each run
     /// `started` first, its progress to `progress`, stoppable by `stop`.
     pub fn at(
