@@ -66,7 +66,16 @@ fn accuracy_line(accuracy: &Value) -> Option<String> {
     let tolerance = accuracy["tolerance"].as_f64()? * 100.0;
     let runs = accuracy["resolutions"].as_array().map_or(0, Vec::len);
     let status = &accuracy["status"];
-    Some(match status["kind"].as_str() {
+    let diverging: Vec<&str> =
+        accuracy["diverging"].as_array().into_iter().flatten().filter_map(Value::as_str).collect();
+    let diverging = match diverging.is_empty() {
+        true => String::new(),
+        false => format!(
+            " Diverging under refinement (undefined, their differences growing with each halving): {}.",
+            diverging.join(", ")
+        ),
+    };
+    let line = match status["kind"].as_str() {
         Some("reached") => format!("Asked for {} %: reached after {runs} resolutions.", number(tolerance)),
         _ => format!(
             "Asked for {} %: not reached after {runs} resolutions ({}); above it or undefined: {}.",
@@ -80,5 +89,6 @@ fn accuracy_line(accuracy: &Value) -> Option<String> {
                 .collect::<Vec<_>>()
                 .join(", ")
         ),
-    })
+    };
+    Some(line + &diverging)
 }

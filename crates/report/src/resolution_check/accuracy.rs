@@ -63,6 +63,9 @@ pub struct Accuracy {
     pub tolerance: f64,
     /// Reached or not, and why.
     pub status: AccuracyStatus,
+    /// The outcomes that diverge under refinement (over the last four resolutions their differences keep one sign
+    /// and grow ×[`DIVERGING_GROWTH`] or more each halving): undefined, left out of the tolerance.
+    pub diverging: Vec<String>,
     /// Every resolution run, coarsest first (the answer is the last's).
     pub resolutions: Vec<Resolution>,
     /// Wall time of all of them (s).
@@ -84,18 +87,46 @@ pub struct Refined {
     pub summary: RunSummary,
 }
 
-/// One resolution run: its twin (level, scenario, case) and its summary, result and snapshots.
-struct Level {
+/// The finest resolution run so far, whole: its twin, results and snapshots (the coarser ones keep their summaries
+/// only).
+struct Finest {
     twin: Twin,
-    summary: RunSummary,
     result: RunResult,
     snapshots: Vec<Snapshot>,
 }
 
-/// The outcomes of `check` (the finest at index 2) not within `tolerance`.
-fn outside(check: &ResolutionCheck, tolerance: f64) -> Vec<String> {
+/// A difference that grows by this factor or more, twice in a row and of one sign, diverges.
+pub const DIVERGING_GROWTH: f64 = 1.5;
+
+/// Whether four values, each at a resolution a halving finer than the last, diverge: their differences keep one
+/// sign and grow by [`DIVERGING_GROWTH`] or more each halving.
+pub fn diverges(q: [f64; 4]) -> bool {
+    let d = [q[1] - q[0], q[2] - q[1], q[3] - q[2]];
+    d[0] * d[1] > 0.0
+        && d[1] * d[2] > 0.0
+        && d[1].abs() >= DIVERGING_GROWTH * d[0].abs()
+        && d[2].abs() >= DIVERGING_GROWTH * d[1].abs()
+}
+
+/// The outcomes of the last summaries (coarsest first) that diverge under refinement: over the last four
+/// resolutions their differences keep one sign and grow by [`DIVERGING_GROWTH`] or more each halving.
+fn diverging(summaries: &[RunSummary]) -> Vec<String> {
+    let Some(four) = summaries.len().checked_sub(4).map(|from| &summaries[from..]) else { return Vec::new() };
+    let lists: Vec<Vec<super::outcomes::Outcome>> = four.iter().map(super::outcomes::outcomes).collect();
+    lists[3]
+        .iter()
+        .filter(|(name, _, _)| {
+            let values: Option<Vec<f64>> = lists.iter().map(|l| l.iter().find(|o| o.0 == *name).map(|o| o.2)).collect();
+            values.is_some_and(|q| diverges([q[0], q[1], q[2], q[3]]))
+        })
+        .map(|(name, _, _)| name.clone())
+        .collect()
+}
+
+/// The outcomes of `check` (the finest at index 2) not within `tolerance`, leaving out those `diverging`.
+fn outside(check: &ResolutionCheck, tolerance: f64, diverging: &[String]) -> Vec<String> {
     let within = |o: &super::OutcomeCheck| o.error.is_some_and(|e| e <= tolerance * o.values[2].abs());
-    check.outcomes.iter().filter(|o| !within(o)).map(|o| o.name.clone()).collect()
+    check.outcomes.iter().filter(|o| !within(o) && !diverging.contains(&o.name)).map(|o| o.name.clone()).collect()
 }
 
 /// What is not within the tolerance before three resolutions have run: every outcome.
@@ -144,66 +175,97 @@ pub fn refine(
     validate_tolerance("accuracy", tolerance)?;
     let begun = Instant::now();
     let first = if Twin::built(scenario, -1).is_ok() { -1 } else { 0 };
-    let mut levels: Vec<Level> = Vec::new();
+    let mut done = Done { resolutions: Vec::new(), summaries: Vec::new(), tolerance, begun };
     let mut twin = Twin::built(scenario, first)?;
+    let mut last: Option<Finest> = None;
     loop {
         started(&twin);
         let start = Instant::now();
         let asked = requests(&twin.scenario, &twin.case);
         let (result, snapshots) = match crate::run_output::run_with_snapshots(&twin.case, &asked, stop, progress) {
-            Err(StudyError::Interrupted) if !levels.is_empty() => {
-                let check = (levels.len() >= 3).then(|| check_of(&levels[levels.len() - 3..]));
-                let outcomes = check.as_ref().map_or_else(too_few, |c| outside(c, tolerance));
-                return Ok(finish(levels, check, tolerance, AccuracyStatus::Interrupted { outcomes }, begun));
+            Err(StudyError::Interrupted) if last.is_some() => {
+                let finest = last.take().expect("a finished resolution");
+                return Ok(done.finish(finest, |outcomes| AccuracyStatus::Interrupted { outcomes }));
             }
             ran => ran?,
         };
         let summary = RunSummary::of(&twin.scenario, &twin.case, &result, start)?;
-        levels.push(Level { twin, summary, result, snapshots });
-        let check = (levels.len() >= 3).then(|| check_of(&levels[levels.len() - 3..]));
-        let not_within = check.as_ref().map_or_else(too_few, |c| outside(c, tolerance));
-        if not_within.is_empty() {
-            return Ok(finish(levels, check, tolerance, AccuracyStatus::Reached, begun));
+        done.resolutions.push(Resolution::of(&twin.scenario, &summary));
+        done.summaries.push(summary);
+        let finest = Finest { twin, result, snapshots };
+        if done.not_within().is_empty() {
+            return Ok(done.finish(finest, |_| AccuracyStatus::Reached));
         }
-        twin = match next(scenario, levels.last().map_or(0, |l| l.twin.level + 1), level_seconds) {
+        twin = match next(scenario, finest.twin.level + 1, level_seconds) {
             Ok(twin) => twin,
             Err(why) if why == "interrupted" => return Err(StudyError::Interrupted),
-            Err(why) => {
-                let status = AccuracyStatus::NotReached { why, outcomes: not_within };
-                return Ok(finish(levels, check, tolerance, status, begun));
-            }
+            Err(why) => return Ok(done.finish(finest, |outcomes| AccuracyStatus::NotReached { why, outcomes })),
         };
+        last = Some(finest);
     }
 }
 
-/// The check of three successive levels, the finest the run.
-fn check_of(three: &[Level]) -> ResolutionCheck {
-    let resolution = |l: &Level| Resolution::of(&l.twin.scenario, &l.summary);
-    ResolutionCheck::of(
-        [&three[0].summary, &three[1].summary, &three[2].summary],
-        [resolution(&three[0]), resolution(&three[1]), resolution(&three[2])],
-        2,
-    )
+/// The resolutions a refinement has run, coarsest first, and what it aims at.
+struct Done {
+    resolutions: Vec<Resolution>,
+    summaries: Vec<RunSummary>,
+    tolerance: f64,
+    begun: Instant,
 }
 
-/// The finest level as the answer, with its check and the accuracy.
-fn finish(
-    mut levels: Vec<Level>,
-    check: Option<ResolutionCheck>,
-    tolerance: f64,
-    status: AccuracyStatus,
-    begun: Instant,
-) -> Refined {
-    let resolutions = levels.iter().map(|l| Resolution::of(&l.twin.scenario, &l.summary)).collect();
-    let finest = levels.pop().expect("at least one level ran");
-    let mut summary = finest.summary;
-    summary.resolution_check = check;
-    summary.accuracy = Some(Accuracy { tolerance, status, resolutions, wall_time: begun.elapsed().as_secs_f64() });
-    Refined {
-        scenario: finest.twin.scenario,
-        case: finest.twin.case,
-        result: finest.result,
-        snapshots: finest.snapshots,
-        summary,
+impl Done {
+    /// The check of the last three resolutions, the finest the run; None before three have run.
+    fn check(&self) -> Option<ResolutionCheck> {
+        let from = self.summaries.len().checked_sub(3)?;
+        let (s, r) = (&self.summaries[from..], &self.resolutions[from..]);
+        Some(ResolutionCheck::of([&s[0], &s[1], &s[2]], [r[0].clone(), r[1].clone(), r[2].clone()], 2))
+    }
+
+    /// The outcomes not yet within the tolerance (those diverging left out: no refinement brings them in).
+    fn not_within(&self) -> Vec<String> {
+        let diverging = diverging(&self.summaries);
+        self.check().map_or_else(too_few, |c| outside(&c, self.tolerance, &diverging))
+    }
+
+    /// The finest run `finest` as the answer, with its check and the accuracy, whose status `status` makes of the
+    /// outcomes not within the tolerance.
+    fn finish(mut self, finest: Finest, status: impl FnOnce(Vec<String>) -> AccuracyStatus) -> Refined {
+        let status = status(self.not_within());
+        let check = self.check();
+        let diverging = diverging(&self.summaries);
+        let mut summary = self.summaries.pop().expect("at least one resolution ran");
+        summary.resolution_check = check;
+        summary.accuracy = Some(Accuracy {
+            tolerance: self.tolerance,
+            status,
+            diverging,
+            resolutions: self.resolutions,
+            wall_time: self.begun.elapsed().as_secs_f64(),
+        });
+        let Finest { twin, result, snapshots } = finest;
+        Refined { scenario: twin.scenario, case: twin.case, result, snapshots, summary }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn values_whose_differences_double_diverge_and_shrinking_or_turning_ones_do_not() {
+        // The step acceleration under ballast friction: 1954, 3983, 7935 m/s² at 1600, 3200, 6400 elements.
+        assert!(diverges([1000.0, 1954.0, 3983.0, 7935.0]));
+        assert!(!diverges([1.0, 1.5, 1.75, 1.875]), "converging at first order");
+        assert!(!diverges([1.0, 1.1, 1.3, 1.2]), "turning back");
+        assert!(!diverges([1.0, 1.1, 1.25, 1.4]), "growing by less than 1.5");
+        assert!(!diverges([1.0, 1.0, 1.0, 1.0]));
+    }
+
+    #[test]
+    fn a_tolerance_is_a_relative_error_between_zero_and_one() {
+        assert!(validate_tolerance("accuracy", 0.01).is_ok());
+        for bad in [0.0, 1.0, -0.5, f64::NAN] {
+            assert!(validate_tolerance("accuracy", bad).unwrap_err().to_string().contains("invalid accuracy"));
+        }
     }
 }

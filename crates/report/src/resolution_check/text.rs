@@ -45,6 +45,14 @@ pub(crate) fn write_accuracy(f: &mut Formatter<'_>, a: &super::accuracy::Accurac
     let finest = a.resolutions.last().map_or(String::new(), |r| format!("{} × {} m", r.elements, r.load_advance));
     let tolerance = format!("{} %", 100.0 * a.tolerance);
     let runs = format!("{} resolutions, {:.1} s in all", a.resolutions.len(), a.wall_time);
+    if !a.diverging.is_empty() {
+        writeln!(
+            f,
+            "  diverging under refinement (undefined; their differences grow with each halving, left out of the \
+             tolerance): {}",
+            a.diverging.join(", ")
+        )?;
+    }
     match &a.status {
         super::accuracy::AccuracyStatus::Reached => writeln!(
             f,
