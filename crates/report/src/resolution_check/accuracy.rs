@@ -135,20 +135,21 @@ fn too_few() -> Vec<String> {
 }
 
 /// The twin of `scenario` `level` halvings finer, built, if it is within the limits and `level_seconds`; else why
-/// not.
-fn next(scenario: &Scenario, level: i32, level_seconds: f64) -> std::result::Result<Twin, String> {
-    let twin = Twin::built(scenario, level).map_err(|e| match e {
-        StudyError::Interrupted => "interrupted".to_string(),
-        e => format!("the next resolution cannot be built: {e}"),
-    })?;
+/// not (`Ok(Err(why))`). An interruption while it is built (a ground fitted) is the error.
+fn next(scenario: &Scenario, level: i32, level_seconds: f64) -> Result<std::result::Result<Twin, String>> {
+    let twin = match Twin::built(scenario, level) {
+        Ok(twin) => twin,
+        Err(StudyError::Interrupted) => return Err(StudyError::Interrupted),
+        Err(e) => return Ok(Err(format!("the next resolution cannot be built: {e}"))),
+    };
     let seconds = runner::cost::RunCost::of(&twin.case).seconds;
-    match seconds <= level_seconds {
+    Ok(match seconds <= level_seconds {
         true => Ok(twin),
         false => Err(format!(
             "the next resolution ({} elements, load advance {} m) would take ~{seconds:.1} s, beyond {level_seconds} s",
             twin.scenario.mesh.elements, twin.scenario.integration.load_advance
         )),
-    }
+    })
 }
 
 /// How far a refinement goes: the relative error asked for, and the longest estimated run of one resolution it
@@ -174,9 +175,13 @@ pub fn refine(
     let Target { tolerance, level_seconds } = target;
     validate_tolerance("accuracy", tolerance)?;
     let begun = Instant::now();
-    let first = if Twin::built(scenario, -1).is_ok() { -1 } else { 0 };
     let mut done = Done { resolutions: Vec::new(), summaries: Vec::new(), tolerance, begun };
-    let mut twin = Twin::built(scenario, first)?;
+    // One halving coarser where that twin can be built (a quarter of a run), else the resolution given.
+    let mut twin = match Twin::built(scenario, -1) {
+        Ok(coarser) => coarser,
+        Err(StudyError::Interrupted) => return Err(StudyError::Interrupted),
+        Err(_) => Twin::built(scenario, 0)?,
+    };
     let mut last: Option<Finest> = None;
     loop {
         started(&twin);
@@ -196,9 +201,8 @@ pub fn refine(
         if done.not_within().is_empty() {
             return Ok(done.finish(finest, |_| AccuracyStatus::Reached));
         }
-        twin = match next(scenario, finest.twin.level + 1, level_seconds) {
+        twin = match next(scenario, finest.twin.level + 1, level_seconds)? {
             Ok(twin) => twin,
-            Err(why) if why == "interrupted" => return Err(StudyError::Interrupted),
             Err(why) => return Ok(done.finish(finest, |outcomes| AccuracyStatus::NotReached { why, outcomes })),
         };
         last = Some(finest);
