@@ -29,6 +29,9 @@ pub(crate) fn write_check(f: &mut Formatter<'_>, c: &ResolutionCheck) -> Result 
                     Convergence::Monotone { order } if Sequence(o.values).asymptotic() => {
                         format!("order {order:.2}, Richardson × 1.25")
                     }
+                    Convergence::Monotone { order } if order < super::estimate::MIN_ORDER => {
+                        format!("order {order:.2}, the smaller of Richardson × 1.25 and 3 × the spread")
+                    }
                     Convergence::Monotone { order } => format!("order {order:.2}, 3 × the spread"),
                     _ => "alternating, 3 × the spread".to_string(),
                 };
@@ -76,5 +79,46 @@ pub(crate) fn write_accuracy(f: &mut Formatter<'_>, a: &super::accuracy::Accurac
 impl std::fmt::Display for super::ResolutionCheck {
     fn fmt(&self, f: &mut Formatter<'_>) -> Result {
         write_check(f, self)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::estimate::Sequence;
+    use super::super::{OutcomeCheck, Resolution, ResolutionCheck};
+
+    fn outcome(name: &str, values: [f64; 3]) -> OutcomeCheck {
+        let s = Sequence(values);
+        let error = s.error_of(1);
+        OutcomeCheck {
+            name: name.into(),
+            unit: "m",
+            values,
+            convergence: s.convergence(),
+            error,
+            relative: error.map(|e| e / values[1]),
+        }
+    }
+
+    #[test]
+    fn each_outcome_says_which_rule_gave_its_error_or_that_it_has_none() {
+        let resolution = |elements| Resolution { elements, load_advance: 0.1, wall_time: 0.5 };
+        let check = ResolutionCheck {
+            resolutions: [resolution(50), resolution(100), resolution(200)],
+            run: 1,
+            outcomes: vec![
+                outcome("first_order", [1.4, 1.2, 1.1]),
+                outcome("slow", [1.0, 1.1, 1.187]),
+                outcome("alternating", [1.1, 0.95, 1.025]),
+                outcome("growing", [1.0, 1.1, 1.3]),
+            ],
+        };
+        let text = check.to_string();
+        let line = |name: &str| text.lines().find(|l| l.contains(name)).unwrap().to_string();
+        assert!(line("first_order").ends_with("order 1.00, Richardson × 1.25"), "{text}");
+        assert!(line("slow").contains("the smaller of Richardson × 1.25 and 3 × the spread"), "{text}");
+        assert!(line("alternating").ends_with("alternating, 3 × the spread"), "{text}");
+        assert!(line("growing").ends_with("undefined (not converging at these resolutions)"), "{text}");
+        assert!(text.contains("50 × 0.1 m (0.50 s), 100 × 0.1 m (the run)"), "{text}");
     }
 }
