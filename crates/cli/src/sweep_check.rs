@@ -5,15 +5,11 @@
 
 use anyhow::{Context, Result};
 use report::resolution_check::point::PointCheck;
-use report::resolution_check::twins::Twins;
 use runner::{CriticalSpeed, SweepPoint};
 
 /// Refuse before the sweep a check whose twins cannot be built (at the sweep's first speed `speed`).
 pub fn refuse_early(scenario: &scenario::Scenario, speed: f64) -> Result<()> {
-    let mut first = scenario.clone();
-    first.load.speed = speed;
-    Twins::of(&first).context("--check-resolution: the twins at the sweep's speeds")?;
-    Ok(())
+    PointCheck::refuse_early(scenario, speed).context("--check-resolution: the twins at the sweep's speeds")
 }
 
 /// The check at the sweep's peak; None where no run finished. Progress and the check's lines on standard error

@@ -54,14 +54,15 @@ pub(crate) fn run(
     let before = warnings.clone();
     let provenance = report::provenance::Provenance::now(command, frictrack_cli::COMMIT);
     let outcome = interruptible::run_reporting(py, progress, move |stop, told| {
+        // Each twin or resolution announced as it starts, when it is long.
+        let mut announce = |twin: &Twin| {
+            told.announce(&twin.label(), &runner::cost::Estimate::run(runner::cost::RunCost::of(&twin.case)));
+        };
         let (scenario, case, result, snapshots, summary) = match accuracy {
             Some(tolerance) => {
-                let mut started = |twin: &Twin| {
-                    told.announce(&twin.label(), &runner::cost::Estimate::run(runner::cost::RunCost::of(&twin.case)));
-                };
                 let target = Target { tolerance, level_seconds: LEVEL_SECONDS };
                 let refined =
-                    refine(&scenario, target, &snapshot_requests, Some(stop), &mut started, &|f| told.set(f))?;
+                    refine(&scenario, target, &snapshot_requests, Some(stop), &mut announce, &|f| told.set(f))?;
                 if refined.summary.accuracy.as_ref().is_some_and(|a| a.status.interrupted()) {
                     return Err(scenario::error::StudyError::Interrupted);
                 }
@@ -73,11 +74,7 @@ pub(crate) fn run(
                 let (result, snapshots) = run_with_snapshots(&case, &requests, Some(stop), &|f| told.set(f))?;
                 let mut summary = RunSummary::of(&scenario, &case, &result, started)?;
                 if let Some(twins) = &twins {
-                    let mut started = |twin: &Twin| {
-                        let estimate = runner::cost::Estimate::run(runner::cost::RunCost::of(&twin.case));
-                        told.announce(&twin.label(), &estimate);
-                    };
-                    let check = twins.check(&scenario, &summary, Some(stop), &mut started, &|f| told.set(f))?;
+                    let check = twins.check(&scenario, &summary, Some(stop), &mut announce, &|f| told.set(f))?;
                     summary.resolution_check = Some(check);
                 }
                 (scenario, case, result, snapshots, summary)

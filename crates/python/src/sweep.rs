@@ -6,7 +6,7 @@ use crate::interruptible;
 use crate::scenario_input::{Source, overrides};
 use pyo3::prelude::*;
 use report::resolution_check::point::PointCheck;
-use report::resolution_check::twins::{Twin, Twins};
+use report::resolution_check::twins::Twin;
 use runner::{Runner, failures, finished, write_csv_rows};
 
 /// The sweep's CSV (`frictrack sweep`'s), the failed runs as (speed m/s, error) pairs, the warnings the command
@@ -37,9 +37,7 @@ pub(crate) fn sweep(
     let case = scenario.build().map_err(to_python)?;
     if check_resolution {
         // The twins at the first speed, built before any work: a twin beyond the limits is refused now.
-        let mut first = scenario.clone();
-        first.load.speed = speeds[0];
-        Twins::of(&first).map_err(to_python)?;
+        PointCheck::refuse_early(&scenario, speeds[0]).map_err(to_python)?;
     }
     let warnings = scenario::diagnostics::sweep_warnings(&scenario, &speeds).map_err(to_python)?;
     let warnings = warnings.iter().map(ToString::to_string).collect();

@@ -198,7 +198,7 @@ pub fn refine(
         done.resolutions.push(Resolution::of(&twin.scenario, &summary));
         done.summaries.push(summary);
         let finest = Finest { twin, result, snapshots };
-        if done.not_within().is_empty() {
+        if done.reached() {
             return Ok(done.finish(finest, |_| AccuracyStatus::Reached));
         }
         twin = match next(scenario, finest.twin.level + 1, level_seconds)? {
@@ -225,18 +225,22 @@ impl Done {
         Some(ResolutionCheck::of([&s[0], &s[1], &s[2]], [r[0].clone(), r[1].clone(), r[2].clone()], 2))
     }
 
-    /// The outcomes not yet within the tolerance (those diverging left out: no refinement brings them in).
-    fn not_within(&self) -> Vec<String> {
-        let diverging = diverging(&self.summaries);
-        self.check().map_or_else(too_few, |c| outside(&c, self.tolerance, &diverging))
+    /// The outcomes not yet within the tolerance of `check` (the last three resolutions'), those `diverging` left out:
+    /// no refinement brings them in.
+    fn not_within(&self, check: Option<&ResolutionCheck>, diverging: &[String]) -> Vec<String> {
+        check.map_or_else(too_few, |c| outside(c, self.tolerance, diverging))
+    }
+
+    /// Whether every outcome is within the tolerance (or diverging).
+    fn reached(&self) -> bool {
+        self.not_within(self.check().as_ref(), &diverging(&self.summaries)).is_empty()
     }
 
     /// The finest run `finest` as the answer, with its check and the accuracy, whose status `status` makes of the
     /// outcomes not within the tolerance.
     fn finish(mut self, finest: Finest, status: impl FnOnce(Vec<String>) -> AccuracyStatus) -> Refined {
-        let status = status(self.not_within());
-        let check = self.check();
-        let diverging = diverging(&self.summaries);
+        let (check, diverging) = (self.check(), diverging(&self.summaries));
+        let status = status(self.not_within(check.as_ref(), &diverging));
         let mut summary = self.summaries.pop().expect("at least one resolution ran");
         summary.resolution_check = check;
         summary.accuracy = Some(Accuracy {

@@ -38,6 +38,12 @@ impl PointCheck {
         points.iter().max_by(largest).map(|p| (p.speed, "the speed of the largest max downward deflection"))
     }
 
+    /// Refuse, before a sweep starts, a check whose twins cannot be built: they are built at its first speed `speed`
+    /// (m/s) and dropped.
+    pub fn refuse_early(scenario: &Scenario, speed: f64) -> Result<()> {
+        Twins::of(&at_speed(scenario, speed)).map(|_| ())
+    }
+
     /// `scenario` at `speed` (m/s; the point named `point`), its twins built before the run, then run — each run
     /// `started` first, its progress to `progress`, stoppable by `stop`.
     pub fn at(
@@ -48,8 +54,7 @@ impl PointCheck {
         started: &mut dyn FnMut(&Twin),
         progress: &dyn Fn(f64),
     ) -> Result<Self> {
-        let mut at_speed = scenario.clone();
-        at_speed.load.speed = speed;
+        let at_speed = at_speed(scenario, speed);
         let twins = Twins::of(&at_speed)?;
         let run = Twin::built(&at_speed, 0)?;
         started(&run);
@@ -59,4 +64,11 @@ impl PointCheck {
         let check = twins.check(&at_speed, &summary, stop, started, progress)?;
         Ok(Self { speed, point: point.to_string(), check })
     }
+}
+
+/// `scenario` with its load at `speed` (m/s).
+fn at_speed(scenario: &Scenario, speed: f64) -> Scenario {
+    let mut at = scenario.clone();
+    at.load.speed = speed;
+    at
 }
