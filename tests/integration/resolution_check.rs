@@ -131,7 +131,10 @@ fn the_check_brackets_the_error_of_a_linear_track() {
 fn the_check_brackets_the_error_of_ballast_friction() {
     let mut friction = reference(100, 0.1);
     friction.friction.distributed = friction_of(5e3);
-    assert_brackets("friction", &friction, 6, &["max_acceleration"]);
+    // The acceleration filtered to 1 kHz (the default under ballast friction) is the step's mean on the run and its
+    // coarser twin, whose steps (0.5 and 1 ms) are longer than its window (0.44 ms): undefined at this size, as the
+    // step's is at any (docs/theory.md §10.4).
+    assert_brackets("friction", &friction, 6, &["max_acceleration", "filtered_acceleration"]);
 }
 
 #[test]

@@ -115,6 +115,12 @@ impl MovingBeam {
         self.wave_speed_limit
     }
 
+    /// β = (k_f/4EI)^¼ (1/m), the reciprocal of the track's bending length: the static deflection under a force F is
+    /// Fβ/(2k_f) and the foundation's peak reaction Fβ/2 per metre (Hetényi 1946); 0 on k_f = 0.
+    pub fn bending_wavenumber(&self) -> f64 {
+        (self.foundation.stiffness / (4.0 * self.bending_stiffness)).powf(0.25)
+    }
+
     /// q D = q(ρIv² − EI) (m²) at `speed`: 0 for Euler–Bernoulli.
     fn shear_term(&self, speed: f64) -> f64 {
         self.shear_compliance * (self.rotary_inertia * speed * speed - self.bending_stiffness)

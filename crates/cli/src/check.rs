@@ -35,7 +35,9 @@ pub fn run(args: &CheckArgs) -> Result<()> {
 }
 
 fn check(path: &std::path::Path) -> Result<()> {
-    let scenario = Scenario::from_path(path)?;
+    let mut scenario = Scenario::from_path(path)?;
+    // A single run's accuracy is checked as `run` takes it; the rest as any run builds it.
+    scenario.take_accuracy()?;
     if scenario.ground.is_some() {
         return check_on_the_ground(path, &scenario);
     }

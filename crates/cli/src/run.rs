@@ -64,7 +64,8 @@ pub fn run(args: &RunArgs) -> Result<()> {
     if args.co_moving && scenario.co_moving.is_none() {
         scenario.co_moving = Some(scenario::CoMovingSection::default());
     }
-    check_resolution_flags(args, scenario.co_moving.is_some())?;
+    let accuracy = tolerance(args, &mut scenario)?;
+    check_resolution_flags(args, accuracy, scenario.co_moving.is_some())?;
     if let Some(section) = scenario.co_moving.clone() {
         return crate::co_moving::run(&scenario, &section, args.format, args.out.as_deref());
     }
@@ -79,7 +80,7 @@ pub fn run(args: &RunArgs) -> Result<()> {
         false => None,
     };
     crate::interrupt::keep_nothing_in(args.out.as_deref(), |folder| report::run_folder::check("--out", folder, &case))?;
-    let (scenario, case, result, snapshots, report, check_interrupted) = match args.accuracy {
+    let (scenario, case, result, snapshots, report, check_interrupted) = match accuracy.map(|(t, _)| t) {
         Some(tolerance) => {
             let refined = crate::resolution_check::refine(&scenario, tolerance, args.out.is_some(), quiet)?;
             let interrupted = refined.summary.accuracy.as_ref().is_some_and(|a| a.status.interrupted());
@@ -120,7 +121,7 @@ pub fn run(args: &RunArgs) -> Result<()> {
         }
     }
     if check_interrupted {
-        let what = match args.accuracy {
+        let what = match accuracy {
             Some(_) => "the finest run finished is reported above, with what its refinement reached",
             None => "the run's report stands without its resolution check",
         };
@@ -129,13 +130,20 @@ pub fn run(args: &RunArgs) -> Result<()> {
     Ok(())
 }
 
-/// `--accuracy` is a relative error in (0, 1), and neither it nor `--check-resolution` is given for a run through a
+/// The tolerance the run refines to and where it was asked — `--accuracy`, else the scenario's
+/// `integration.accuracy` (taken out of `scenario`: the refinement builds it at each resolution) — checked; None for a
+/// run at the resolution given.
+fn tolerance(args: &RunArgs, scenario: &mut scenario::Scenario) -> Result<Option<(f64, &'static str)>> {
+    let asked = args.accuracy.map(|t| (t, "--accuracy"));
+    let check = args.check_resolution.then_some("--check-resolution");
+    let tolerance = scenario.take_run_tolerance(asked, check)?;
+    Ok(tolerance.map(|t| (t, if asked.is_some() { "--accuracy" } else { "integration.accuracy" })))
+}
+
+/// Neither a refinement (`accuracy`, with where it was asked) nor `--check-resolution` is asked of a run through a
 /// co-moving window (`co_moving`).
-fn check_resolution_flags(args: &RunArgs, co_moving: bool) -> Result<()> {
-    if let Some(tolerance) = args.accuracy {
-        report::resolution_check::accuracy::validate_tolerance("--accuracy", tolerance)?;
-    }
-    let given = [(args.check_resolution, "--check-resolution"), (args.accuracy.is_some(), "--accuracy")];
+fn check_resolution_flags(args: &RunArgs, accuracy: Option<(f64, &str)>, co_moving: bool) -> Result<()> {
+    let given = [(args.check_resolution, "--check-resolution"), (accuracy.is_some(), accuracy.map_or("", |a| a.1))];
     match given.into_iter().find_map(|(given, flag)| given.then_some(flag)).filter(|_| co_moving) {
         Some(flag) => Err(scenario::error::invalid(
             flag,

@@ -39,10 +39,10 @@ pub(crate) fn run(
     let started = std::time::Instant::now();
     let scenario = Source::of(kind, text)?.read()?;
     let overrides = overrides(&keywords)?;
-    let scenario = recording(overrides.apply(scenario).map_err(to_python)?);
-    if let Some(tolerance) = accuracy {
-        report::resolution_check::accuracy::validate_tolerance("accuracy", tolerance).map_err(to_python)?;
-    }
+    let mut scenario = recording(overrides.apply(scenario).map_err(to_python)?);
+    // accuracy=, else the scenario's integration.accuracy (taken out: the refinement builds it at each resolution).
+    let check = check_resolution.then_some("check_resolution=True");
+    let accuracy = scenario.take_run_tolerance(accuracy.map(|t| (t, "accuracy")), check).map_err(to_python)?;
     let case = scenario.build().map_err(to_python)?;
     // The twins of check_resolution are built (their sizes checked) before any work.
     let twins = check_resolution.then(|| Twins::of(&scenario)).transpose().map_err(to_python)?;

@@ -32,6 +32,7 @@ fn finite_non_negative(path: &str, value: f64, unit: &str) -> Result<()> {
 impl Scenario {
     /// Check every value that the lower layers do not already name by its path.
     pub fn validate(&self) -> Result<()> {
+        self.refuse_accuracy()?;
         match &self.ground {
             Some(_) => self.track_and_ground().map(|_| ()),
             None => self.build().map(|_| ()),
@@ -42,6 +43,7 @@ impl Scenario {
     /// refuses degenerate meshes and mechanisms ([`crate::diagnostics::refuse_degenerate`]). On a `[ground]`, the
     /// model on the foundation fitted to it at `load.speed` ([`Scenario::on_fitted_foundation`]).
     pub fn model(&self) -> Result<BeamModel> {
+        self.refuse_accuracy()?;
         if self.ground.is_some() {
             return self.on_fitted_foundation()?.0.model();
         }

@@ -186,6 +186,7 @@ impl crate::Scenario {
     /// [`Self::ground_track`] with the sleepers' exceptions kept (a run in time takes them; the long-wave twin leaves
     /// them out).
     pub(crate) fn track_and_ground(&self) -> Result<(fem_beam::Beam, analytic::ground::StripGround, GroundTrack)> {
+        self.refuse_accuracy()?;
         let Some(ground) = &self.ground else {
             return Err(missing("ground", "a [ground] section: the layered ground under the track"));
         };

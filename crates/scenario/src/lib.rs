@@ -16,10 +16,14 @@
 //!   no site has, warned of); [`AsRan`]: a scenario as its
 //!   reports show it (without the `[foundation]` a ground replaces).
 //! - [`speeds`] and [`trains`]: the speed scale of a case (v_cr, default sweeps) and the train catalogue.
+//! - [`accuracy_key`]: `[integration] accuracy`, taken by a single run, refused by every other use;
+//!   [`accuracy_law`]: the ballast friction's law a refinement (`run --accuracy`) runs, the cheapest for an accuracy.
 //! - [`error`]: the error type of the crates above this one, every message naming the field, its value and what is
 //!   allowed; [`number`]: numbers as result files and messages print them.
 
 mod acceleration_bands;
+pub mod accuracy_key;
+pub mod accuracy_law;
 mod as_ran;
 pub mod axis;
 mod build;
@@ -51,7 +55,7 @@ pub mod units;
 pub mod vehicle;
 mod warning;
 
-pub use acceleration_bands::TIMOSHENKO_FILTER;
+pub use acceleration_bands::DEFAULT_ACCELERATION_FILTER;
 pub use as_ran::AsRan;
 pub use build::RESULT_FORMAT;
 pub use error::{Result, StudyError};

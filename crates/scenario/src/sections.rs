@@ -291,6 +291,10 @@ pub struct IntegrationSection {
     pub static_start: Option<f64>,
     /// Run until this time (s) instead of stopping when the load leaves.
     pub end_time: Option<f64>,
+    /// A single run's accuracy: refine until every outcome's estimated error is within this relative tolerance
+    /// ([`crate::accuracy_key`]; a run's `--accuracy` in the scenario).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub accuracy: Option<f64>,
 }
 
 impl Default for IntegrationSection {
@@ -308,6 +312,7 @@ impl Default for IntegrationSection {
             steady_start: None,
             static_start: None,
             end_time: None,
+            accuracy: None,
         }
     }
 }

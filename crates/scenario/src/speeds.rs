@@ -33,6 +33,8 @@ pub struct SpeedScale {
     pub critical_speed: Option<f64>,
     /// The sweep step (m/s).
     pub step: f64,
+    /// β = (k_f/4EI)^¼ of the same track (1/m; [`MovingBeam::bending_wavenumber`]); `None` without a foundation.
+    pub bending_wavenumber: Option<f64>,
 }
 
 /// v_cr of the reference case divided by its sweep step of 10 m/s.
@@ -45,19 +47,27 @@ impl SpeedScale {
     /// sleepers their long-wave twin), none on a beam without any support (k_f = 0, no sleepers).
     pub fn of(scenario: &Scenario) -> Result<Self> {
         if scenario.sleepers.is_none() && scenario.foundation.stiffness <= 0.0 {
-            return Ok(Self { critical_speed: None, step: 10.0 });
+            return Ok(Self { critical_speed: None, step: 10.0, bending_wavenumber: None });
         }
         let sleepers = scenario.sleepers.as_ref().map(|s| s.sleepers()).transpose()?;
         if let (Some(embankment), Some(sleepers)) = (&scenario.embankment, &sleepers) {
             // The two-beam track's long wave: both rails, their sleepers and the embankment as one beam on the soil.
             let one = embankment.embankment()?.whole_track(&scenario.beam, sleepers);
             let soil = fem_beam::Foundation::linear(scenario.foundation.stiffness, 0.0);
-            let critical = MovingBeam::new(&one, &soil)?.critical_speed();
-            return Ok(Self { critical_speed: Some(critical), step: nice(critical / STEPS_TO_CRITICAL) });
+            return Ok(Self::of_beam(&MovingBeam::new(&one, &soil)?));
         }
         let foundation = fem_beam::Foundation::linear(scenario.foundation.stiffness, 0.0);
-        let critical = MovingBeam::of_track(&scenario.beam, &foundation, sleepers.as_ref())?.critical_speed();
-        Ok(Self { critical_speed: Some(critical), step: nice(critical / STEPS_TO_CRITICAL) })
+        Ok(Self::of_beam(&MovingBeam::of_track(&scenario.beam, &foundation, sleepers.as_ref())?))
+    }
+
+    /// The scale of a track whose moving frame is `beam`.
+    fn of_beam(beam: &MovingBeam) -> Self {
+        let critical = beam.critical_speed();
+        Self {
+            critical_speed: Some(critical),
+            step: nice(critical / STEPS_TO_CRITICAL),
+            bending_wavenumber: Some(beam.bending_wavenumber()),
+        }
     }
 
     /// The default sweep: one step to 1.46·v_cr, rounded to the step (10–300 m/s by 10 for the reference case).

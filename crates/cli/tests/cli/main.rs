@@ -1,6 +1,7 @@
 //! Runs the `frictrack` binary and checks its output and exit codes.
 
 mod absurd_inputs;
+mod accuracy_key;
 mod bad_inputs;
 mod bridges;
 mod check_resolution;
@@ -8,6 +9,7 @@ mod co_moving;
 mod examples;
 mod failures;
 mod figures;
+mod friction_acceleration;
 mod ground;
 mod ground_friction;
 mod ground_lift_off;

@@ -149,8 +149,10 @@ def run(
     ``accuracy=TOL`` is ``frictrack run --accuracy TOL``: the run refined (elements and load advance halved together)
     until every outcome's estimated error is within TOL of its value (0.01: 1 %); the result is the finest run's,
     its ``summary["resolution_check"]`` the last three resolutions and ``summary["accuracy"]`` the tolerance, whether
-    it was reached (``status``: ``reached`` or ``not_reached`` with ``why`` and the ``outcomes`` above TOL) and every
-    resolution run.
+    it was reached (``status``: ``reached`` or ``not_reached`` with ``why`` and the ``outcomes`` above TOL), every
+    resolution run, the outcomes that diverge and, with ballast friction, the ``law`` it ran (one section a node where
+    the friction is light and the law the default). A scenario's ``[integration] accuracy`` asks the same;
+    ``accuracy=`` overrides it.
     """
     if not isinstance(check_resolution, bool):
         raise InputError(f"invalid check_resolution = {check_resolution!r}: True or False")

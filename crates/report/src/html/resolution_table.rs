@@ -48,6 +48,7 @@ fn outcome_row(o: &Value) -> Vec<String> {
             format!("monotone, order {}", o["convergence"]["order"].as_f64().map_or(String::new(), number))
         }
         Some("not_contracting") => "not converging".to_string(),
+        Some("scattered") => "scattered about a floor (3 × the spread)".to_string(),
         Some(kind) => kind.to_string(),
         None => String::new(),
     };

@@ -11,7 +11,9 @@
 //! error is taken as F_s = 3 times the spread of the three values (the data range of Eça & Hoekstra 2014, "A
 //! procedure for the estimation of the numerical uncertainty of CFD calculations based on grid refinement studies",
 //! J. Comput. Phys. 262; for p < ½ the smaller of the two). Differences that do not shrink leave the error undefined:
-//! the outcome is not converging at these resolutions, and no number is given.
+//! the outcome is not converging at these resolutions, and no number is given — unless a fourth, coarser value shows
+//! the three turning within a floor of scatter the refinement has reached ([`Sequence::scattered_error`]; `run
+//! --accuracy` has it), where the error is again three times their spread.
 
 use serde::Serialize;
 
@@ -45,6 +47,13 @@ pub enum Convergence {
     Alternating,
     /// The differences do not shrink: not converging at these resolutions; no error is estimated.
     NotContracting,
+    /// The differences do not shrink but turn, and the three values scatter within the change from `earlier` (the
+    /// value one halving coarser) to the first of them: a floor of scatter reached (stick and slip starting between steps,
+    /// the solvers' tolerances), the error three times their spread ([`Sequence::scattered_error`]).
+    Scattered {
+        /// The value one halving coarser than the three.
+        earlier: f64,
+    },
 }
 
 /// One outcome at three resolutions, each refined by halving the one before.
@@ -81,6 +90,21 @@ impl Sequence {
         Some(q2 + (q2 - q1) * r / (1.0 - r))
     }
 
+    /// With `earlier`, the value one halving coarser than the three: where the three do not contract but turn (their
+    /// differences change sign), and their spread is no larger than the change from `earlier` to the first of them,
+    /// they scatter about a floor the refinement
+    /// has reached, and the error of each is three times their spread (Eça & Hoekstra's data range, for values that
+    /// show no order); None where they contract (the three-value rules hold), drift one way, or scatter wider than
+    /// that change (not converging).
+    pub fn scattered_error(&self, earlier: f64) -> Option<f64> {
+        let spread = self.spread();
+        let [q0, q1, q2] = self.0;
+        let turning = (q1 - q0) * (q2 - q1) < 0.0;
+        let settled_from_earlier = spread <= (q0 - earlier).abs();
+        (self.convergence() == Convergence::NotContracting && turning && settled_from_earlier)
+            .then_some(SPREAD_SAFETY * spread)
+    }
+
     /// The spread of the three values (max − min).
     fn spread(&self) -> f64 {
         let [q0, q1, q2] = self.0;
@@ -92,6 +116,7 @@ impl Sequence {
         let q = self.0[level];
         match self.convergence() {
             Convergence::NotContracting => None,
+            Convergence::Scattered { .. } => Some(SPREAD_SAFETY * self.spread()),
             Convergence::Settled => Some(self.spread()),
             Convergence::Monotone { order } if order < MIN_ORDER => {
                 let richardson = SAFETY * (q - self.extrapolated()?).abs();
@@ -153,6 +178,20 @@ mod tests {
             assert_eq!(s.convergence(), Convergence::NotContracting, "{s:?}");
             assert_eq!(s.error_of(1), None);
         }
+    }
+
+    #[test]
+    fn values_that_scatter_within_the_change_before_them_take_three_times_their_spread() {
+        // The friction work under 5 kN/m ballast friction at 1600, 3200, 6400 elements: turning, not shrinking.
+        let s = Sequence([370_990.0, 370_717.0, 371_095.0]);
+        assert_eq!(s.convergence(), Convergence::NotContracting);
+        // Reached from 2 000 J below: a floor of 378 J, the error 3 × 378 J.
+        assert_eq!(s.scattered_error(369_000.0), Some(SPREAD_SAFETY * 378.0));
+        // Reached from 300 J away: the scatter is as wide as the change before it, not a floor.
+        assert_eq!(s.scattered_error(370_690.0), None);
+        // Differences of one sign that grow drift, whatever came before; contracting ones keep the three-value rules.
+        assert_eq!(Sequence([1.0, 1.1, 1.3]).scattered_error(0.0), None);
+        assert_eq!(Sequence([1.4, 1.2, 1.1]).scattered_error(2.0), None);
     }
 
     #[test]

@@ -102,6 +102,23 @@ impl ResolutionCheck {
         Self { resolutions, run, outcomes }
     }
 
+    /// The check with `earlier`, the run's summary one halving coarser than the three: an outcome whose three values do
+    /// not contract but turn within the change from its earlier value is [`Convergence::Scattered`] about a floor,
+    /// its error three times their spread ([`Sequence::scattered_error`]).
+    pub fn with_earlier(mut self, earlier: &RunSummary) -> Self {
+        let list = outcomes::outcomes(earlier);
+        for o in &mut self.outcomes {
+            let Some(value) = list.iter().find(|e| e.0 == o.name).map(|e| e.2) else { continue };
+            if let Some(error) = Sequence(o.values).scattered_error(value) {
+                o.convergence = Convergence::Scattered { earlier: value };
+                o.error = Some(error);
+                let run_value = o.values[self.run];
+                o.relative = (run_value != 0.0).then(|| error / run_value.abs());
+            }
+        }
+        self
+    }
+
     /// The largest relative error estimated, and its outcome.
     pub fn worst(&self) -> Option<&OutcomeCheck> {
         self.outcomes
