@@ -103,7 +103,7 @@ impl ResolutionCheck {
     }
 
     /// The check with `earlier`, the run's summary one halving coarser than the three: an outcome whose three values do
-    /// not contract but turn within the change from its earlier value is [`Convergence::Scattered`] about a floor,
+    /// not contract but spread over no more than the change from its earlier value is [`Convergence::Scattered`] about a floor,
     /// its error three times their spread ([`Sequence::scattered_error`]).
     pub fn with_earlier(mut self, earlier: &RunSummary) -> Self {
         let list = outcomes::outcomes(earlier);
