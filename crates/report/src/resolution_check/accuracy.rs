@@ -5,7 +5,7 @@
 //!
 //! It starts one halving *below* the scenario's resolution where that twin can be built (a quarter of a run's cost),
 //! so that the scenario's own resolution and one finer already give the first estimate; light ballast friction on
-//! the default law runs one section a node ([`scenario::accuracy_law`]: as accurate, a fifth to a tenth of the cost).
+//! the default law runs one section a node ([`scenario::accuracy_law`]: as accurate, and cheaper).
 
 use super::twins::Twin;
 use super::{Resolution, ResolutionCheck};
