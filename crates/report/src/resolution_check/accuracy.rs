@@ -174,15 +174,12 @@ pub fn refine(
     let Target { tolerance, level_seconds } = target;
     validate_tolerance("accuracy", tolerance)?;
     let begun = Instant::now();
-    let mut twin = first(scenario)?;
-    let (cheaper, law) = scenario.with_accuracy_law(&twin.case).unzip();
+    let (cheaper, law) = scenario.with_accuracy_law().unzip();
     let scenario = match (&cheaper, law) {
-        (Some(cheaper), Some(law)) if law.chosen => {
-            twin = first(cheaper)?;
-            cheaper
-        }
+        (Some(cheaper), Some(law)) if law.chosen => cheaper,
         _ => scenario,
     };
+    let mut twin = first(scenario)?;
     let mut done = Done { resolutions: Vec::new(), summaries: Vec::new(), tolerance, law, begun };
     let mut last: Option<Finest> = None;
     loop {
