@@ -32,7 +32,6 @@ fn finite_non_negative(path: &str, value: f64, unit: &str) -> Result<()> {
 impl Scenario {
     /// Check every value that the lower layers do not already name by its path.
     pub fn validate(&self) -> Result<()> {
-        self.refuse_accuracy()?;
         match &self.ground {
             Some(_) => self.track_and_ground().map(|_| ()),
             None => self.build().map(|_| ()),

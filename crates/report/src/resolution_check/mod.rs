@@ -88,7 +88,7 @@ impl ResolutionCheck {
                 let sequence = Sequence(values);
                 let error = sequence.error_of(run);
                 let value = values[run];
-                let relative = error.filter(|_| value != 0.0).map(|e| e / value.abs());
+                let relative = relative(error, value);
                 Some(OutcomeCheck {
                     name: name.clone(),
                     unit,
@@ -112,8 +112,7 @@ impl ResolutionCheck {
             if let Some(error) = Sequence(o.values).scattered_error(value) {
                 o.convergence = Convergence::Scattered { earlier: value };
                 o.error = Some(error);
-                let run_value = o.values[self.run];
-                o.relative = (run_value != 0.0).then(|| error / run_value.abs());
+                o.relative = relative(o.error, o.values[self.run]);
             }
         }
         self
@@ -131,4 +130,9 @@ impl ResolutionCheck {
     pub fn undefined(&self) -> impl Iterator<Item = &OutcomeCheck> {
         self.outcomes.iter().filter(|o| o.error.is_none())
     }
+}
+
+/// `error` relative to |`value`|; None where the error is undefined or the value is 0.
+fn relative(error: Option<f64>, value: f64) -> Option<f64> {
+    error.filter(|_| value != 0.0).map(|e| e / value.abs())
 }
